@@ -1,0 +1,96 @@
+#pragma once
+// Result of RenderGraph compilation: which passes run and in what order, why the others were
+// culled, transient lifetimes and their memory placement after aliasing, and the barriers to emit.
+// Pure data; the executor (graph_executor.h) turns it into Vulkan commands.
+
+#include "graph/graph_decl.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace candela::graph {
+
+enum class CullReason : uint8_t {
+    None,       // the pass runs
+    Disabled,   // switched off at run time
+    LostInput,  // reads (or preserves) a version whose producer is disabled or lost its own input
+    NoOutput,   // contributes to no imported/exported resource and declares no side effect
+};
+const char* cullReasonName(CullReason reason);
+
+struct PassInfo {
+    uint32_t pass = kInvalidIndex;  // index into GraphDecl::passes
+    CullReason cullReason = CullReason::None;
+    std::string cullDetail;         // human-readable, names the resource and pass that caused it
+};
+
+// Memory a resource needs, as the device reports it (or a size model in tests).
+struct MemoryRequirement {
+    VkDeviceSize size = 0;
+    VkDeviceSize alignment = 1;
+    uint32_t memoryTypeBits = ~0u;
+};
+using MemoryRequirementsFn = std::function<MemoryRequirement(const ResourceDecl&)>;
+
+// Default size model: texel size × texels over all mips and layers, 256-byte alignment (tests,
+// and anywhere no device is at hand).
+MemoryRequirement estimateMemoryRequirement(const ResourceDecl& resource);
+
+// Where a transient lives. Images and buffers never share a heap (no bufferImageGranularity issue).
+struct Placement {
+    uint32_t heap = kInvalidIndex;
+    VkDeviceSize offset = 0;
+    VkDeviceSize size = 0;
+};
+
+struct Heap {
+    ResourceKind kind = ResourceKind::Texture;
+    VkDeviceSize size = 0;
+    VkDeviceSize alignment = 1;  // max alignment of its residents
+    uint32_t memoryTypeBits = ~0u;
+    std::vector<uint32_t> residents;  // resource indices, in first-use order
+};
+
+struct Lifetime {
+    uint32_t first = kInvalidIndex;  // index into CompiledGraph::order of the first pass using it
+    uint32_t last = kInvalidIndex;   // ... and of the last one (end of graph for exported)
+    bool used() const { return first != kInvalidIndex; }
+};
+
+// One barrier on one whole resource. For images src.layout → dst.layout is the transition.
+// `aliasedFrom` names the transient whose memory this resource takes over (kInvalidIndex if none):
+// src then describes that resource's last use and the old layout is UNDEFINED.
+struct Barrier {
+    uint32_t resource = kInvalidIndex;
+    ResourceState src;
+    ResourceState dst;
+    uint32_t aliasedFrom = kInvalidIndex;
+};
+
+struct CompileOptions {
+    MemoryRequirementsFn memoryRequirements;  // empty: estimateMemoryRequirement
+    bool aliasing = true;                     // false: every transient gets its own heap
+};
+
+struct CompiledGraph {
+    std::vector<uint32_t> order;              // pass indices that run, in execution order
+    std::vector<PassInfo> passes;             // one per declared pass, indexed like GraphDecl::passes
+    std::vector<Lifetime> lifetimes;          // one per declared resource
+    std::vector<Placement> placements;        // one per resource; heap == kInvalidIndex if not transient/used
+    std::vector<Heap> heaps;
+    std::vector<std::vector<Barrier>> barriers;  // barriers[i]: before order[i]
+    std::vector<Barrier> finalBarriers;          // after the last pass (imported/exported final states)
+    std::vector<ResourceState> finalStates;      // one per resource: state after the graph ran
+    VkDeviceSize bytesRequested = 0;             // sum of transient sizes
+    VkDeviceSize bytesAllocated = 0;             // sum of heap sizes after aliasing
+    std::vector<std::string> steps;              // names of the compile steps, in the order they ran
+};
+
+// Runs the compile steps: validate → cull → order → lifetimes → aliasing → barriers.
+// Throws GraphError (naming the pass and the resource) on cycles, reads of versions nobody
+// writes, two passes writing the same version, and invalid handles. Makes no Vulkan calls
+// (memoryRequirements is the caller's; the executor passes one that asks the device).
+CompiledGraph compileGraph(const GraphDecl& decl, const CompileOptions& options = {});
+
+}  // namespace candela::graph

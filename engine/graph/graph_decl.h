@@ -1,0 +1,56 @@
+#pragma once
+// The declared graph as plain data: what RenderGraph's setup phase records and what compile()
+// consumes. Unit tests may build a GraphDecl directly (including malformed ones: cycles, reads of
+// versions nobody writes) to exercise the compile steps.
+
+#include "graph/graph_types.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace candela::graph {
+
+struct ResourceDecl {
+    std::string name;
+    ResourceKind kind = ResourceKind::Texture;
+    TextureDesc texture;  // kind == Texture
+    BufferDesc buffer;    // kind == Buffer
+    // Imported resources live outside the graph (persistent): never aliased, their contents at
+    // version 0 are valid, and every pass writing them is an output of the graph.
+    bool imported = false;
+    // Exported transients are outputs too (their writers are kept) and live to the end of the graph.
+    bool exported = false;
+    ResourceState initialState;               // imported only: how it was last used before the graph
+    std::optional<ResourceState> finalState;  // imported/exported: state required after the graph
+    uint32_t versionCount = 1;                // versions handed out so far (v0 exists on creation)
+};
+
+// One access of a pass to one version of a resource.
+// Reads name the version read. Writes name the version they produce (> 0); they consume the
+// version before it (contents kept if mode == Preserve, ordering only if Discard).
+struct AccessDecl {
+    uint32_t resource = kInvalidIndex;
+    uint32_t version = 0;
+    Usage usage = Usage::Sampled;
+    VkPipelineStageFlags2 stageOverride = 0;  // 0: derived from the pass type
+    WriteMode mode = WriteMode::Preserve;     // writes only
+    // Attachments only: clear value applied when the pass begins rendering (mode must be Discard).
+    std::optional<VkClearValue> clear;
+};
+
+struct PassDecl {
+    std::string name;
+    PassType type = PassType::Graphics;
+    bool sideEffect = false;  // kept even when no output depends on it (e.g. readback to host)
+    bool enabled = true;      // runtime toggle; disabled passes are culled like unused ones
+    std::vector<AccessDecl> reads;
+    std::vector<AccessDecl> writes;
+};
+
+struct GraphDecl {
+    std::vector<ResourceDecl> resources;
+    std::vector<PassDecl> passes;
+};
+
+}  // namespace candela::graph

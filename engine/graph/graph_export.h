@@ -1,0 +1,24 @@
+#pragma once
+// Export of a compiled graph for people and tools: Graphviz dot and JSON. Both list the passes in
+// execution order, the resources with their lifetimes and aliasing (heap, offset, size), the
+// barriers, the culled passes with their reasons, and per-pass GPU times when measured.
+
+#include "graph/compiled_graph.h"
+
+#include <string>
+#include <vector>
+
+namespace candela::graph {
+
+// Per-pass timings of one execution, indexed like GraphDecl::passes. A negative value means the
+// pass did not run or was not measured.
+struct GraphTimings {
+    std::vector<double> gpuMs;
+};
+
+std::string exportDot(const GraphDecl& decl, const CompiledGraph& compiled,
+                      const GraphTimings* timings = nullptr);
+std::string exportJson(const GraphDecl& decl, const CompiledGraph& compiled,
+                       const GraphTimings* timings = nullptr);
+
+}  // namespace candela::graph
