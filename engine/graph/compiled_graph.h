@@ -31,7 +31,8 @@ struct MemoryRequirement {
     VkDeviceSize alignment = 1;
     uint32_t memoryTypeBits = ~0u;
 };
-using MemoryRequirementsFn = std::function<MemoryRequirement(const ResourceDecl&)>;
+// Called with the resource's index in GraphDecl::resources and its declaration.
+using MemoryRequirementsFn = std::function<MemoryRequirement(uint32_t resource, const ResourceDecl&)>;
 
 // Default size model: texel size × texels over all mips and layers, 256-byte alignment (tests,
 // and anywhere no device is at hand).

@@ -100,6 +100,11 @@ public:
     BufferId importBuffer(std::string name, const BufferDesc& desc, const ResourceState& initial,
                           std::optional<ResourceState> final = std::nullopt);
 
+    // Creates a transient outside any pass (e.g. a target several passes write in turn). Same
+    // rules as PassBuilder::createTexture: allocated only if a surviving pass uses it.
+    TextureId createTexture(std::string name, const TextureDesc& desc);
+    BufferId createBuffer(std::string name, const BufferDesc& desc);
+
     // Marks a transient as an output: its writers are kept and it lives to the end of the graph.
     void exportTexture(TextureId texture, std::optional<ResourceState> final = std::nullopt);
     void exportBuffer(BufferId buffer, std::optional<ResourceState> final = std::nullopt);

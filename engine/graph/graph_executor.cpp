@@ -1,0 +1,203 @@
+#include "graph/graph_executor.h"
+
+#include "vk/commands.h"
+#include "vk/context.h"
+
+#include <algorithm>
+#include <string>
+
+namespace candela::graph {
+
+void ImportBindings::bind(TextureId texture, VkImage image, VkImageView view) { mImages[texture.index] = {image, view}; }
+void ImportBindings::bind(BufferId buffer, VkBuffer handle) { mBuffers[buffer.index] = handle; }
+
+const ImportBindings::ImageBinding* ImportBindings::image(uint32_t resource) const {
+    auto it = mImages.find(resource);
+    return it == mImages.end() ? nullptr : &it->second;
+}
+
+VkBuffer ImportBindings::buffer(uint32_t resource) const {
+    auto it = mBuffers.find(resource);
+    return it == mBuffers.end() ? VK_NULL_HANDLE : it->second;
+}
+
+uint32_t PassContext::resolve(uint32_t index, ResourceKind kind) const {
+    const GraphDecl& decl = mGraph->declaration();
+    if (index >= decl.resources.size() || decl.resources[index].kind != kind)
+        throw GraphError(std::string("pass '") + passName() + "' uses an invalid resource handle");
+    return index;
+}
+
+VkImage PassContext::image(TextureId texture) const {
+    const uint32_t r = resolve(texture.index, ResourceKind::Texture);
+    if (mGraph->declaration().resources[r].imported) return mImports->image(r)->image;
+    return mTransients->image(r);
+}
+
+VkImageView PassContext::view(TextureId texture) const {
+    const uint32_t r = resolve(texture.index, ResourceKind::Texture);
+    if (mGraph->declaration().resources[r].imported) return mImports->image(r)->view;
+    return mTransients->view(r);
+}
+
+VkBuffer PassContext::buffer(BufferId buffer) const {
+    const uint32_t r = resolve(buffer.index, ResourceKind::Buffer);
+    if (mGraph->declaration().resources[r].imported) return mImports->buffer(r);
+    return mTransients->buffer(r);
+}
+
+const TextureDesc& PassContext::desc(TextureId texture) const {
+    return mGraph->declaration().resources[resolve(texture.index, ResourceKind::Texture)].texture;
+}
+
+VkExtent2D PassContext::extent(TextureId texture) const {
+    const TextureDesc& d = desc(texture);
+    return {d.width, d.height};
+}
+
+void PassContext::beginRendering() const {
+    std::vector<VkRenderingAttachmentInfo> colors;
+    VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    bool hasDepth = false;
+    VkExtent2D extent{0, 0};
+    const auto attachment = [&](const AccessDecl& a, VkImageLayout layout, bool write) {
+        const TextureId id{a.resource, a.version};
+        if (extent.width == 0) extent = this->extent(id);
+        VkRenderingAttachmentInfo info{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                       .imageView = view(id),
+                                       .imageLayout = layout,
+                                       .loadOp = VK_ATTACHMENT_LOAD_OP_LOAD,
+                                       .storeOp = write ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_NONE};
+        if (a.clear) {
+            info.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+            info.clearValue = *a.clear;
+        } else if (write && a.mode == WriteMode::Discard) {
+            info.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+        }
+        return info;
+    };
+    for (const AccessDecl& a : mPass->writes) {
+        if (a.usage == Usage::ColorAttachment) colors.push_back(attachment(a, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, true));
+        if (a.usage == Usage::DepthAttachment) {
+            depth = attachment(a, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
+            hasDepth = true;
+        }
+    }
+    for (const AccessDecl& a : mPass->reads)
+        if (a.usage == Usage::DepthRead) {
+            depth = attachment(a, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
+            hasDepth = true;
+        }
+    const VkRenderingInfo info{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                               .renderArea = {{0, 0}, extent},
+                               .layerCount = 1,
+                               .colorAttachmentCount = static_cast<uint32_t>(colors.size()),
+                               .pColorAttachments = colors.data(),
+                               .pDepthAttachment = hasDepth ? &depth : nullptr};
+    vkCmdBeginRendering(mCmd, &info);
+    vk::setViewportAndScissor(mCmd, extent);
+}
+
+void PassContext::endRendering() const { vkCmdEndRendering(mCmd); }
+
+namespace {
+
+struct BarrierBatch {
+    std::vector<VkImageMemoryBarrier2> images;
+    std::vector<VkBufferMemoryBarrier2> buffers;
+
+    void add(const ExecuteInputs& in, const Barrier& b) {
+        const ResourceDecl& r = in.graph.declaration().resources[b.resource];
+        if (r.kind == ResourceKind::Texture) {
+            const auto* imported = r.imported ? in.imports.image(b.resource) : nullptr;
+            images.push_back({.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
+                              .srcStageMask = b.src.stages,
+                              .srcAccessMask = b.src.access,
+                              .dstStageMask = b.dst.stages,
+                              .dstAccessMask = b.dst.access,
+                              .oldLayout = b.src.layout,
+                              .newLayout = b.dst.layout,
+                              .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                              .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                              .image = imported ? imported->image : in.transients.image(b.resource),
+                              .subresourceRange = {vk::aspectOf(r.texture.format), 0, VK_REMAINING_MIP_LEVELS, 0,
+                                                   VK_REMAINING_ARRAY_LAYERS}});
+        } else {
+            buffers.push_back({.sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2,
+                               .srcStageMask = b.src.stages,
+                               .srcAccessMask = b.src.access,
+                               .dstStageMask = b.dst.stages,
+                               .dstAccessMask = b.dst.access,
+                               .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                               .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                               .buffer = r.imported ? in.imports.buffer(b.resource) : in.transients.buffer(b.resource),
+                               .offset = 0,
+                               .size = VK_WHOLE_SIZE});
+        }
+    }
+
+    void emit(VkCommandBuffer cmd) const {
+        if (images.empty() && buffers.empty()) return;
+        const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+                                          .bufferMemoryBarrierCount = static_cast<uint32_t>(buffers.size()),
+                                          .pBufferMemoryBarriers = buffers.data(),
+                                          .imageMemoryBarrierCount = static_cast<uint32_t>(images.size()),
+                                          .pImageMemoryBarriers = images.data()};
+        vkCmdPipelineBarrier2(cmd, &dependency);
+    }
+};
+
+void emitBarriers(const ExecuteInputs& in, const std::vector<Barrier>& barriers) {
+    if (!in.emitBarriers) return;
+    BarrierBatch batch;
+    for (const Barrier& b : barriers) batch.add(in, b);
+    batch.emit(in.cmd);
+}
+
+}  // namespace
+
+ExecutionRecord executeGraph(const ExecuteInputs& in) {
+    if (!in.graph.isCompiled()) throw GraphError("executeGraph: the graph was not compiled");
+    const GraphDecl& decl = in.graph.declaration();
+    const CompiledGraph& compiled = in.graph.compiled();
+    for (uint32_t r = 0; r < decl.resources.size(); ++r) {
+        const ResourceDecl& res = decl.resources[r];
+        if (!res.imported || !compiled.lifetimes[r].used()) continue;
+        const bool bound = res.kind == ResourceKind::Texture ? in.imports.image(r) != nullptr
+                                                             : in.imports.buffer(r) != VK_NULL_HANDLE;
+        if (!bound) throw GraphError("imported resource '" + res.name + "' has no Vulkan object bound");
+    }
+
+    ExecutionRecord record;
+    record.passCount = static_cast<uint32_t>(decl.passes.size());
+    PassContext ctx;
+    ctx.mContext = &in.context;
+    ctx.mGraph = &in.graph;
+    ctx.mImports = &in.imports;
+    ctx.mTransients = &in.transients;
+    ctx.mDescriptors = &in.descriptors;
+    ctx.mCmd = in.cmd;
+
+    for (size_t i = 0; i < compiled.order.size(); ++i) {
+        const uint32_t pass = compiled.order[i];
+        ctx.mPass = &decl.passes[pass];
+        emitBarriers(in, compiled.barriers[i]);
+        in.context.beginLabel(in.cmd, ctx.passName());
+        const auto begin = in.timestamps ? in.timestamps->write(in.cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT) : std::nullopt;
+        if (const ExecuteFn& fn = in.graph.callback(pass)) fn(ctx);
+        const auto end = in.timestamps ? in.timestamps->write(in.cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT) : std::nullopt;
+        if (begin && end) record.queries.push_back({pass, {*begin, *end}});
+        in.context.endLabel(in.cmd);
+    }
+    emitBarriers(in, compiled.finalBarriers);
+    return record;
+}
+
+GraphTimings ExecutionRecord::timings(vk::TimestampPool& timestamps) const {
+    GraphTimings out;
+    out.gpuMs.assign(passCount, -1.0);
+    for (const auto& [pass, range] : queries) out.gpuMs[pass] = timestamps.elapsedMs(range.first, range.second);
+    return out;
+}
+
+}  // namespace candela::graph

@@ -1,0 +1,53 @@
+#pragma once
+// TransientPool: the Vulkan images, buffers and heap memory behind a compiled graph's transient
+// resources, placed as the aliasing step decided. One pool per frame slot (frames in flight never
+// share transient memory). Objects are reused across frames while the graph's transient set is
+// unchanged, and handed to deferred deletion when it changes.
+
+#include "graph/compiled_graph.h"
+#include "vk/buffer.h"
+#include "vk/image.h"
+
+#include <string>
+#include <vector>
+
+namespace candela::graph {
+
+// Vulkan usage flags a resource needs, from every access the declared graph makes of it.
+VkImageUsageFlags imageUsageOf(const GraphDecl& decl, uint32_t resource);
+VkBufferUsageFlags bufferUsageOf(const GraphDecl& decl, uint32_t resource);
+
+// A MemoryRequirementsFn asking the device (vkGetDevice{Image,Buffer}MemoryRequirements: no
+// object is created) for each transient of `decl`. `decl` must outlive the function's use.
+MemoryRequirementsFn deviceMemoryRequirements(vk::Context& context, const GraphDecl& decl);
+
+class TransientPool {
+public:
+    explicit TransientPool(vk::Context& context) : mContext(&context) {}
+    ~TransientPool() { release(); }
+    TransientPool(const TransientPool&) = delete;
+    TransientPool& operator=(const TransientPool&) = delete;
+
+    // Makes sure every used transient of `compiled` exists, bound to its placement in heap memory.
+    void realize(const GraphDecl& decl, const CompiledGraph& compiled);
+
+    VkImage image(uint32_t resource) const { return mImages.at(resource).handle(); }
+    VkImageView view(uint32_t resource) const { return mImages.at(resource).view(); }
+    VkBuffer buffer(uint32_t resource) const { return mBuffers.at(resource).handle(); }
+
+    // Heap bytes currently held, and how many times the pool was (re)built.
+    VkDeviceSize heapBytes() const;
+    uint32_t rebuilds() const { return mRebuilds; }
+
+private:
+    void release();
+
+    vk::Context* mContext;
+    std::string mSignature;
+    std::vector<vk::Allocation> mHeaps;
+    std::vector<vk::Image> mImages;    // indexed by resource; empty for non-transients
+    std::vector<vk::Buffer> mBuffers;  // indexed by resource
+    uint32_t mRebuilds = 0;
+};
+
+}  // namespace candela::graph

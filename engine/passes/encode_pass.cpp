@@ -1,0 +1,38 @@
+#include "passes/encode_pass.h"
+
+#include "graph/graph_executor.h"
+
+namespace candela::passes {
+
+using namespace graph;
+
+EncodePass::EncodePass(vk::Context& context, VkFormat targetFormat)
+    : mPipeline(vk::Pipeline::graphics(context, "fullscreen.vert", "encode.frag", {.colorFormats = {targetFormat}})),
+      mSampler(vk::createSampler(context, {.filter = VK_FILTER_NEAREST, .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {}
+
+TextureId EncodePass::add(RenderGraph& graph, TextureId hdr, TextureId target) const {
+    struct Data {
+        TextureId hdr;
+        TextureId target;
+    };
+    const Data& data = graph.addPass<Data>(
+        "encode", PassType::Graphics,
+        [&](PassBuilder& builder, Data& d) {
+            d.hdr = builder.read(hdr, Usage::Sampled, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            d.target = builder.write(target, Usage::ColorAttachment, WriteMode::Discard);
+        },
+        [this](const Data& d, PassContext& ctx) {
+            const VkDescriptorSet set =
+                vk::DescriptorWriter(mPipeline.program(), 0)
+                    .image("hdrImage", ctx.view(d.hdr), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, mSampler.get())
+                    .commit(ctx.context(), ctx.descriptors());
+            ctx.beginRendering();
+            mPipeline.bind(ctx.cmd());
+            vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.layout(), 0, 1, &set, 0, nullptr);
+            vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+            ctx.endRendering();
+        });
+    return data.target;
+}
+
+}  // namespace candela::passes

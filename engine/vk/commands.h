@@ -1,0 +1,36 @@
+#pragma once
+// Command recording helpers: a one-shot command buffer submitted and waited for (uploads, tests),
+// and small recording utilities shared by passes.
+
+#include "vk/handle.h"
+
+namespace candela::vk {
+
+// Records one command buffer on the graphics queue, submits it and waits for completion.
+// Owns its pool and fence; begin() may be called again after submitAndWait().
+class OneShotCommands {
+public:
+    explicit OneShotCommands(Context& context);
+    VkCommandBuffer begin();
+    // Ends the command buffer, submits it to the graphics queue and waits for it to complete.
+    void submitAndWait();
+
+private:
+    Context* mContext;
+    CommandPool mPool;
+    Fence mFence;
+    VkCommandBuffer mCmd = VK_NULL_HANDLE;
+};
+
+// One pipeline barrier on a whole image (all mips and layers).
+void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkPipelineStageFlags2 srcStages,
+                  VkAccessFlags2 srcAccess, VkImageLayout oldLayout, VkPipelineStageFlags2 dstStages,
+                  VkAccessFlags2 dstAccess, VkImageLayout newLayout);
+
+// Sets viewport and scissor to the whole of `extent`.
+void setViewportAndScissor(VkCommandBuffer cmd, VkExtent2D extent);
+
+Fence createFence(Context& context, bool signaled);
+CommandPool createCommandPool(Context& context, uint32_t family, VkCommandPoolCreateFlags flags);
+
+}  // namespace candela::vk

@@ -1,0 +1,309 @@
+#include "vk/context.h"
+
+#include "core/check.h"
+#include "core/log.h"
+#include "vk/device_select.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <set>
+
+namespace candela::vk {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+bool envFlag(const char* name) {
+    const char* value = std::getenv(name);
+    return value && *value && std::strcmp(value, "0") != 0;
+}
+
+std::string versionString(uint32_t version) {
+    return std::to_string(VK_API_VERSION_MAJOR(version)) + "." + std::to_string(VK_API_VERSION_MINOR(version)) + "." +
+           std::to_string(VK_API_VERSION_PATCH(version));
+}
+
+// Why a device cannot run Candela, or "" if it can.
+std::string unsuitableReason(VkPhysicalDevice device) {
+    VkPhysicalDeviceProperties properties;
+    vkGetPhysicalDeviceProperties(device, &properties);
+    if (properties.apiVersion < VK_API_VERSION_1_3) return "Vulkan " + versionString(properties.apiVersion) + " < 1.3";
+    VkPhysicalDeviceVulkan13Features features13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &features13};
+    vkGetPhysicalDeviceFeatures2(device, &features);
+    if (!features13.dynamicRendering) return "no dynamicRendering";
+    if (!features13.synchronization2) return "no synchronization2";
+    if (!features13.maintenance4) return "no maintenance4";
+    uint32_t count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+    try {
+        chooseQueueFamilies(families);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return {};
+}
+
+}  // namespace
+
+Context::InstanceOwner::~InstanceOwner() {
+    if (handle) vkDestroyInstance(handle, nullptr);
+}
+Context::MessengerOwner::~MessengerOwner() {
+    if (!handle) return;
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+    if (destroy) destroy(instance, handle, nullptr);
+}
+Context::DeviceOwner::~DeviceOwner() {
+    if (handle) vkDestroyDevice(handle, nullptr);
+}
+
+Context::Context(const ContextDesc& desc)
+    : mValidation(desc.validation || envFlag("CANDELA_VALIDATE")),
+      mPrintValidation(desc.printValidationMessages),
+      mOnValidation(desc.onValidationMessage) {
+    const auto step = [](const char* part, auto&& run) {
+        try {
+            run();
+        } catch (const UserError&) {
+            throw;
+        } catch (const std::exception& e) {
+            throw std::runtime_error(std::string("Vulkan start-up failed in ") + part + ": " + e.what());
+        }
+    };
+    step("instance creation", [&] { createInstance(desc); });
+    step("device selection", [&] { pickPhysicalDevice(desc); });
+    step("device creation", [&] { createDevice(); });
+    step("memory allocator", [&] { mAllocator = std::make_unique<MemoryAllocator>(mPhysicalDevice, mDevice.handle); });
+}
+
+Context::~Context() {
+    waitIdleAndCollect();
+    if (mLiveObjects.load() != 0)
+        log::warn("vk::Context destroyed with " + std::to_string(mLiveObjects.load()) + " live Vulkan objects");
+}
+
+void Context::createInstance(const ContextDesc& desc) {
+    uint32_t layerCount = 0;
+    VK_CHECK(vkEnumerateInstanceLayerProperties(&layerCount, nullptr));
+    std::vector<VkLayerProperties> layers(layerCount);
+    VK_CHECK(vkEnumerateInstanceLayerProperties(&layerCount, layers.data()));
+    uint32_t extensionCount = 0;
+    VK_CHECK(vkEnumerateInstanceExtensionProperties(nullptr, &extensionCount, nullptr));
+    std::vector<VkExtensionProperties> available(extensionCount);
+    VK_CHECK(vkEnumerateInstanceExtensionProperties(nullptr, &extensionCount, available.data()));
+    const auto hasExtension = [&](const char* name) {
+        return std::any_of(available.begin(), available.end(),
+                           [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+    };
+
+    std::vector<const char*> enabledLayers;
+    std::vector<const char*> extensions;
+    for (const std::string& e : desc.instanceExtensions) extensions.push_back(e.c_str());
+    if (mValidation) {
+        const bool found = std::any_of(layers.begin(), layers.end(), [](const VkLayerProperties& l) {
+            return std::strcmp(l.layerName, kValidationLayer) == 0;
+        });
+        if (!found)
+            throw UserError("validation requested but VK_LAYER_KHRONOS_validation is not installed "
+                            "(Debian package vulkan-validationlayers)");
+        enabledLayers.push_back(kValidationLayer);
+        extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
+    }
+    mDebugUtils = hasExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME) || mValidation;
+    if (mDebugUtils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    VkInstanceCreateFlags flags = 0;
+    if (hasExtension(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME)) {
+        // Lets portability drivers (MoltenVK) be enumerated; harmless elsewhere.
+        extensions.push_back(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
+        flags |= VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR;
+    }
+
+    const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+    const VkValidationFeaturesEXT validationFeatures{
+        .sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT,
+        .enabledValidationFeatureCount = 1,
+        .pEnabledValidationFeatures = enables};
+    const VkDebugUtilsMessengerCreateInfoEXT messengerInfo{
+        .sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT,
+        .pNext = mValidation ? &validationFeatures : nullptr,
+        .messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT,
+        .messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                       VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT,
+        .pfnUserCallback = &Context::debugCallback,
+        .pUserData = this};
+    const VkApplicationInfo app{.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
+                                .pApplicationName = "candela",
+                                .applicationVersion = VK_MAKE_API_VERSION(0, 0, 1, 0),
+                                .pEngineName = "candela",
+                                .engineVersion = VK_MAKE_API_VERSION(0, 0, 1, 0),
+                                .apiVersion = VK_API_VERSION_1_3};
+    const VkInstanceCreateInfo info{.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
+                                    // Chaining the messenger info also reports messages from instance creation.
+                                    .pNext = mDebugUtils ? &messengerInfo : nullptr,
+                                    .flags = flags,
+                                    .pApplicationInfo = &app,
+                                    .enabledLayerCount = static_cast<uint32_t>(enabledLayers.size()),
+                                    .ppEnabledLayerNames = enabledLayers.data(),
+                                    .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
+                                    .ppEnabledExtensionNames = extensions.data()};
+    VK_CHECK(vkCreateInstance(&info, nullptr, &mInstance.handle));
+    for (const char* l : enabledLayers) mReport.enabledLayers.emplace_back(l);
+
+    if (mDebugUtils) {
+        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(mInstance.handle, "vkCreateDebugUtilsMessengerEXT"));
+        VkDebugUtilsMessengerCreateInfoEXT plain = messengerInfo;
+        plain.pNext = nullptr;
+        mMessenger.instance = mInstance.handle;
+        if (create) VK_CHECK(create(mInstance.handle, &plain, nullptr, &mMessenger.handle));
+    }
+}
+
+void Context::pickPhysicalDevice(const ContextDesc& desc) {
+    uint32_t count = 0;
+    VK_CHECK(vkEnumeratePhysicalDevices(mInstance.handle, &count, nullptr));
+    std::vector<VkPhysicalDevice> devices(count);
+    VK_CHECK(vkEnumeratePhysicalDevices(mInstance.handle, &count, devices.data()));
+    std::vector<DeviceCandidate> candidates;
+    for (VkPhysicalDevice device : devices) {
+        VkPhysicalDeviceProperties properties;
+        vkGetPhysicalDeviceProperties(device, &properties);
+        candidates.push_back({properties.deviceName, properties.deviceType, properties.apiVersion, unsuitableReason(device)});
+    }
+    const DeviceChoice choice = chooseDevice(candidates, desc.deviceSelector);
+    mPhysicalDevice = devices[choice.index];
+    vkGetPhysicalDeviceProperties(mPhysicalDevice, &mProperties);
+    mReport.name = mProperties.deviceName;
+    mReport.type = deviceTypeName(mProperties.deviceType);
+    mReport.reason = choice.reason;
+    mReport.apiVersion = mProperties.apiVersion;
+    VkPhysicalDeviceDriverProperties driver{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    VkPhysicalDeviceProperties2 properties2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, .pNext = &driver};
+    vkGetPhysicalDeviceProperties2(mPhysicalDevice, &properties2);
+    mReport.driverName = driver.driverName;
+    mReport.driverInfo = driver.driverInfo;
+}
+
+void Context::createDevice() {
+    uint32_t count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(mPhysicalDevice, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(mPhysicalDevice, &count, families.data());
+    const QueueFamilyChoice queues = chooseQueueFamilies(families);
+
+    const float priority = 1.0f;
+    std::vector<VkDeviceQueueCreateInfo> queueInfos;
+    for (uint32_t family : std::set<uint32_t>{queues.graphics, queues.compute, queues.transfer})
+        queueInfos.push_back({.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO,
+                              .queueFamilyIndex = family,
+                              .queueCount = 1,
+                              .pQueuePriorities = &priority});
+
+    VkPhysicalDeviceFeatures supported{};
+    vkGetPhysicalDeviceFeatures(mPhysicalDevice, &supported);
+    VkPhysicalDeviceVulkan13Features features13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+                                                .synchronization2 = VK_TRUE,
+                                                .dynamicRendering = VK_TRUE,
+                                                .maintenance4 = VK_TRUE};
+    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &features13};
+    mReport.enabledFeatures = {"dynamicRendering", "synchronization2", "maintenance4"};
+    if (supported.samplerAnisotropy) {
+        features.features.samplerAnisotropy = VK_TRUE;
+        mReport.enabledFeatures.emplace_back("samplerAnisotropy");
+    }
+
+    const VkDeviceCreateInfo info{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
+                                  .pNext = &features,
+                                  .queueCreateInfoCount = static_cast<uint32_t>(queueInfos.size()),
+                                  .pQueueCreateInfos = queueInfos.data()};
+    VK_CHECK(vkCreateDevice(mPhysicalDevice, &info, nullptr, &mDevice.handle));
+
+    mGraphics = {VK_NULL_HANDLE, queues.graphics};
+    mCompute = {VK_NULL_HANDLE, queues.compute};
+    mTransfer = {VK_NULL_HANDLE, queues.transfer};
+    for (QueueInfo* q : {&mGraphics, &mCompute, &mTransfer}) vkGetDeviceQueue(mDevice.handle, q->family, 0, &q->queue);
+
+    mReport.graphicsFamily = queues.graphics;
+    mReport.computeFamily = queues.compute;
+    mReport.transferFamily = queues.transfer;
+    mReport.timestampValidBits = families[queues.graphics].timestampValidBits;
+    mReport.timestampPeriodNs = mReport.timestampValidBits ? mProperties.limits.timestampPeriod : 0.0f;
+
+    if (mDebugUtils) {
+        mSetObjectName = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+            vkGetInstanceProcAddr(mInstance.handle, "vkSetDebugUtilsObjectNameEXT"));
+        mCmdBeginLabel = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+            vkGetInstanceProcAddr(mInstance.handle, "vkCmdBeginDebugUtilsLabelEXT"));
+        mCmdEndLabel = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
+            vkGetInstanceProcAddr(mInstance.handle, "vkCmdEndDebugUtilsLabelEXT"));
+    }
+}
+
+VkBool32 VKAPI_PTR Context::debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                          VkDebugUtilsMessageTypeFlagsEXT, const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                          void* user) {
+    auto* self = static_cast<Context*>(user);
+    ValidationMessage message{severity, data && data->pMessage ? data->pMessage : "(no message)"};
+    ++self->mValidationCount;
+    {
+        std::lock_guard lock(self->mValidationMutex);
+        self->mValidationMessages.push_back(message);
+    }
+    if (self->mPrintValidation)
+        log::error(std::string(severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "validation error: "
+                                                                                        : "validation warning: ") +
+                   message.text);
+    if (self->mOnValidation) self->mOnValidation(message);
+    return VK_FALSE;
+}
+
+std::vector<ValidationMessage> Context::validationMessages() const {
+    std::lock_guard lock(mValidationMutex);
+    return mValidationMessages;
+}
+
+void Context::defer(std::function<void()> destroy) { mDeferred.emplace_back(mFrame, std::move(destroy)); }
+
+void Context::collect(uint64_t completedFrame) {
+    // Destructors may defer more work; swap out first so new entries are kept for later.
+    std::vector<std::pair<uint64_t, std::function<void()>>> pending;
+    pending.swap(mDeferred);
+    for (auto& [frame, destroy] : pending) {
+        if (frame <= completedFrame)
+            destroy();
+        else
+            mDeferred.emplace_back(frame, std::move(destroy));
+    }
+}
+
+void Context::waitIdleAndCollect() {
+    if (!mDevice.handle) return;
+    VK_CHECK(vkDeviceWaitIdle(mDevice.handle));
+    while (!mDeferred.empty()) collect(~0ull);
+}
+
+void Context::setName(VkObjectType type, uint64_t object, const char* name) const {
+    if (!mSetObjectName || !name || !object) return;
+    const VkDebugUtilsObjectNameInfoEXT info{.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT,
+                                             .objectType = type,
+                                             .objectHandle = object,
+                                             .pObjectName = name};
+    VK_CHECK(mSetObjectName(mDevice.handle, &info));
+}
+
+void Context::beginLabel(VkCommandBuffer cmd, const char* name) const {
+    if (!mCmdBeginLabel) return;
+    const VkDebugUtilsLabelEXT label{.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT, .pLabelName = name};
+    mCmdBeginLabel(cmd, &label);
+}
+
+void Context::endLabel(VkCommandBuffer cmd) const {
+    if (mCmdEndLabel) mCmdEndLabel(cmd);
+}
+
+}  // namespace candela::vk

@@ -1,0 +1,153 @@
+#pragma once
+// vk::Context: the Vulkan instance, the chosen device and its queues, the memory allocator and the
+// deferred deletion queue. One per process (tests may create several in sequence).
+//
+// Start-up runs in a fixed order (instance → debug messenger → physical device → device →
+// allocator); each part is a member in that order, so a failure unwinds what was started and
+// destruction runs in reverse. The error names the part that failed.
+
+#include "vk/memory.h"
+
+#include <vulkan/vulkan_core.h>
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace candela::vk {
+
+struct ValidationMessage {
+    VkDebugUtilsMessageSeverityFlagBitsEXT severity;
+    std::string text;
+};
+
+struct ContextDesc {
+    // Khronos validation layer with synchronization validation. Also on when CANDELA_VALIDATE=1.
+    bool validation = false;
+    // "" picks the best device; an index or a case-insensitive name substring picks one (--device).
+    std::string deviceSelector;
+    // Instance extensions a window system needs (e.g. from glfwGetRequiredInstanceExtensions).
+    std::vector<std::string> instanceExtensions;
+    // Called for every validation warning or error (after it is counted and printed).
+    std::function<void(const ValidationMessage&)> onValidationMessage;
+    // Print validation messages to stderr.
+    bool printValidationMessages = true;
+};
+
+struct QueueInfo {
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t family = ~0u;
+};
+
+// What `candela info` prints about the chosen device.
+struct DeviceReport {
+    std::string name;
+    std::string type;
+    std::string reason;            // why it was chosen
+    uint32_t apiVersion = 0;
+    std::string driverName, driverInfo;
+    std::vector<std::string> enabledFeatures;
+    std::vector<std::string> enabledExtensions;
+    std::vector<std::string> enabledLayers;
+    uint32_t graphicsFamily = 0, computeFamily = 0, transferFamily = 0;
+    float timestampPeriodNs = 0;   // 0: the graphics queue has no timestamps
+    uint32_t timestampValidBits = 0;
+};
+
+class Context {
+public:
+    explicit Context(const ContextDesc& desc);
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    VkInstance instance() const { return mInstance.handle; }
+    VkPhysicalDevice physicalDevice() const { return mPhysicalDevice; }
+    VkDevice device() const { return mDevice.handle; }
+    const QueueInfo& graphicsQueue() const { return mGraphics; }  // graphics + compute + transfer
+    const QueueInfo& computeQueue() const { return mCompute; }    // may be the graphics queue
+    const QueueInfo& transferQueue() const { return mTransfer; }  // may be the graphics queue
+    const VkPhysicalDeviceProperties& properties() const { return mProperties; }
+    const DeviceReport& report() const { return mReport; }
+    MemoryAllocator& allocator() { return *mAllocator; }
+    bool validationEnabled() const { return mValidation; }
+
+    // Validation messages (warnings and errors) seen since creation.
+    uint32_t validationMessageCount() const { return mValidationCount.load(); }
+    std::vector<ValidationMessage> validationMessages() const;
+
+    // Deferred destruction: `destroy` runs once the GPU has finished every frame submitted up to
+    // now (see collect). Resource destructors use this, so a resource may be dropped while a
+    // frame in flight still uses it.
+    void defer(std::function<void()> destroy);
+    // Number of the frame being recorded; incremented by FrameRing at each submit.
+    uint64_t currentFrame() const { return mFrame; }
+    void advanceFrame() { ++mFrame; }
+    // Runs deferred destructions queued at or before frame `completedFrame`.
+    void collect(uint64_t completedFrame);
+    // Waits for the device to go idle and runs every deferred destruction.
+    void waitIdleAndCollect();
+
+    // Live Vulkan objects created through the device layer (images, buffers, views, pipelines...).
+    // Tests use it to prove that building and destroying resources leaks nothing.
+    int64_t liveObjects() const { return mLiveObjects.load(); }
+    void countCreated() { ++mLiveObjects; }
+    void countDestroyed() { --mLiveObjects; }
+
+    // Gives `object` a debug name (shown by validation messages and debuggers) when available.
+    void setName(VkObjectType type, uint64_t object, const char* name) const;
+    // Debug labels around command ranges (pass names in captures and validation messages).
+    void beginLabel(VkCommandBuffer cmd, const char* name) const;
+    void endLabel(VkCommandBuffer cmd) const;
+
+private:
+    struct InstanceOwner {
+        VkInstance handle = VK_NULL_HANDLE;
+        ~InstanceOwner();
+    };
+    struct MessengerOwner {
+        VkInstance instance = VK_NULL_HANDLE;
+        VkDebugUtilsMessengerEXT handle = VK_NULL_HANDLE;
+        ~MessengerOwner();
+    };
+    struct DeviceOwner {
+        VkDevice handle = VK_NULL_HANDLE;
+        ~DeviceOwner();
+    };
+
+    void createInstance(const ContextDesc& desc);
+    void pickPhysicalDevice(const ContextDesc& desc);
+    void createDevice();
+    static VkBool32 VKAPI_PTR debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                            VkDebugUtilsMessageTypeFlagsEXT types,
+                                            const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+
+    // Members in start-up order: destruction runs in reverse.
+    bool mValidation = false;
+    bool mPrintValidation = true;
+    bool mDebugUtils = false;
+    std::function<void(const ValidationMessage&)> mOnValidation;
+    std::atomic<uint32_t> mValidationCount{0};
+    mutable std::mutex mValidationMutex;
+    std::vector<ValidationMessage> mValidationMessages;
+    InstanceOwner mInstance;
+    MessengerOwner mMessenger;
+    VkPhysicalDevice mPhysicalDevice = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties mProperties{};
+    DeviceReport mReport;
+    DeviceOwner mDevice;
+    QueueInfo mGraphics, mCompute, mTransfer;
+    PFN_vkSetDebugUtilsObjectNameEXT mSetObjectName = nullptr;
+    PFN_vkCmdBeginDebugUtilsLabelEXT mCmdBeginLabel = nullptr;
+    PFN_vkCmdEndDebugUtilsLabelEXT mCmdEndLabel = nullptr;
+    std::unique_ptr<MemoryAllocator> mAllocator;
+    std::atomic<int64_t> mLiveObjects{0};
+    uint64_t mFrame = 0;
+    std::vector<std::pair<uint64_t, std::function<void()>>> mDeferred;
+};
+
+}  // namespace candela::vk

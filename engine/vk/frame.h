@@ -1,0 +1,52 @@
+#pragma once
+// FrameRing: frames in flight. Each slot owns a command buffer, a fence, a descriptor allocator and
+// a timestamp pool. begin() waits until the slot's previous frame has completed, runs the deferred
+// destructions that are now safe and recycles the slot's pools; submit() sends the frame.
+
+#include "vk/descriptors.h"
+#include "vk/handle.h"
+#include "vk/timestamps.h"
+
+#include <memory>
+#include <vector>
+
+namespace candela::vk {
+
+struct FrameSlot {
+    CommandPool pool;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    Fence fence;
+    std::unique_ptr<DescriptorAllocator> descriptors;
+    std::unique_ptr<TimestampPool> timestamps;
+    uint64_t frame = 0;        // number of the frame last recorded in this slot
+    bool submitted = false;
+};
+
+class FrameRing {
+public:
+    FrameRing(Context& context, uint32_t framesInFlight = 2, uint32_t timestampCapacity = 256);
+    ~FrameRing();
+    FrameRing(const FrameRing&) = delete;
+    FrameRing& operator=(const FrameRing&) = delete;
+
+    // Starts recording the next frame; returns its slot (command buffer already begun).
+    FrameSlot& begin();
+    // Ends and submits the current frame to the graphics queue, with optional semaphores (swapchain).
+    void submit(const std::vector<VkSemaphoreSubmitInfo>& waits = {},
+                const std::vector<VkSemaphoreSubmitInfo>& signals = {});
+    // Waits for the current slot's frame (after submit), e.g. to read back results.
+    void waitCurrent();
+    // Waits for every submitted frame and runs all deferred destructions.
+    void waitIdle();
+
+    uint32_t slotCount() const { return static_cast<uint32_t>(mSlots.size()); }
+    uint32_t currentSlot() const { return mCurrent; }
+
+private:
+    void collectCompleted();
+    Context* mContext;
+    std::vector<FrameSlot> mSlots;
+    uint32_t mCurrent = 0;
+};
+
+}  // namespace candela::vk

@@ -1,0 +1,73 @@
+#pragma once
+// Move-only RAII image with its default view (all mips and layers; a cube view for cube maps;
+// none for transfer-only images),
+// plus ImageView (a Handle) for views of single mips or layers. Destruction is deferred through the context.
+
+#include "vk/handle.h"
+#include "vk/memory.h"
+
+#include <vulkan/vulkan_core.h>
+
+#include <cstdint>
+
+namespace candela::vk {
+
+class Context;
+
+struct ImageDesc {
+    uint32_t width = 1;
+    uint32_t height = 1;
+    uint32_t depth = 1;
+    uint32_t mipLevels = 1;
+    uint32_t arrayLayers = 1;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkImageUsageFlags usage = 0;
+    bool cube = false;  // arrayLayers must be a multiple of 6
+    MemoryUsage memory = MemoryUsage::GpuOnly;
+    const char* name = nullptr;
+
+    // e.g. ImageDesc::renderTarget(w, h, VK_FORMAT_R16G16B16A16_SFLOAT)
+    static ImageDesc renderTarget(uint32_t width, uint32_t height, VkFormat format);
+};
+
+VkImageCreateInfo imageCreateInfo(const ImageDesc& desc);
+// The view type of an image's default view: cube (array), 3D, 2D array or 2D.
+VkImageViewType defaultViewType(const ImageDesc& desc);
+VkImageAspectFlags aspectOf(VkFormat format);
+
+using ImageView = ImageViewHandle;
+
+class Image {
+public:
+    Image() = default;
+    // Creates the image with its own (sub-allocated) memory and its default view.
+    Image(Context& context, const ImageDesc& desc);
+    // Creates the image bound to memory owned by someone else (who must outlive the image's use).
+    Image(Context& context, const ImageDesc& desc, const ExternalMemory& memory);
+    ~Image();
+    Image(Image&& other) noexcept;
+    Image& operator=(Image&& other) noexcept;
+    Image(const Image&) = delete;
+    Image& operator=(const Image&) = delete;
+
+    VkImage handle() const { return mImage; }
+    VkImageView view() const { return mView.get(); }
+    const ImageDesc& desc() const { return mDesc; }
+    VkImageAspectFlags aspect() const { return aspectOf(mDesc.format); }
+    explicit operator bool() const { return mImage != VK_NULL_HANDLE; }
+
+    // A view of mips [baseMip, baseMip + mipCount) and layers [baseLayer, baseLayer + layerCount).
+    ImageView createView(VkImageViewType type, uint32_t baseMip, uint32_t mipCount, uint32_t baseLayer,
+                         uint32_t layerCount) const;
+
+private:
+    void create(Context& context, const ImageDesc& desc);
+    void release();
+    Context* mContext = nullptr;
+    VkImage mImage = VK_NULL_HANDLE;
+    Allocation mAllocation;  // empty for external memory
+    ImageView mView;
+    ImageDesc mDesc;
+};
+
+}  // namespace candela::vk

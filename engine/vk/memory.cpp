@@ -1,0 +1,177 @@
+#include "vk/memory.h"
+
+#include "core/check.h"
+
+#include <stdexcept>
+
+namespace candela::vk {
+namespace {
+
+VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) { return (value + alignment - 1) / alignment * alignment; }
+
+VkMemoryPropertyFlags requiredFlags(MemoryUsage usage) {
+    switch (usage) {
+        case MemoryUsage::GpuOnly: return 0;
+        case MemoryUsage::Upload: return VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+        case MemoryUsage::Readback: return VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT;
+    }
+    return 0;
+}
+
+VkMemoryPropertyFlags preferredFlags(MemoryUsage usage) {
+    switch (usage) {
+        case MemoryUsage::GpuOnly: return VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+        case MemoryUsage::Upload: return 0;
+        case MemoryUsage::Readback: return VK_MEMORY_PROPERTY_HOST_CACHED_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    }
+    return 0;
+}
+
+}  // namespace
+
+MemoryAllocator::MemoryAllocator(VkPhysicalDevice physicalDevice, VkDevice device, VkDeviceSize blockSize)
+    : mPhysicalDevice(physicalDevice), mDevice(device), mBlockSize(blockSize) {
+    vkGetPhysicalDeviceMemoryProperties(mPhysicalDevice, &mProperties);
+}
+
+MemoryAllocator::~MemoryAllocator() {
+    for (auto& block : mBlocks)
+        if (block) vkFreeMemory(mDevice, block->memory, nullptr);
+}
+
+uint32_t MemoryAllocator::findMemoryType(uint32_t typeBits, MemoryUsage usage) const {
+    const VkMemoryPropertyFlags required = requiredFlags(usage);
+    const VkMemoryPropertyFlags preferred = preferredFlags(usage);
+    uint32_t best = ~0u;
+    int bestScore = -1;
+    for (uint32_t i = 0; i < mProperties.memoryTypeCount; ++i) {
+        if (!(typeBits & (1u << i))) continue;
+        const VkMemoryPropertyFlags flags = mProperties.memoryTypes[i].propertyFlags;
+        if ((flags & required) != required) continue;
+        const int score = __builtin_popcount(flags & preferred);
+        if (score > bestScore) best = i, bestScore = score;
+    }
+    if (best == ~0u) throw std::runtime_error("no Vulkan memory type fits the resource's requirements");
+    return best;
+}
+
+VkDeviceMemory MemoryAllocator::allocateDeviceMemory(VkDeviceSize size, uint32_t memoryType, std::byte** mapped) {
+    const VkMemoryAllocateInfo info{
+        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, .allocationSize = size, .memoryTypeIndex = memoryType};
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VK_CHECK(vkAllocateMemory(mDevice, &info, nullptr, &memory));
+    *mapped = nullptr;
+    if (mProperties.memoryTypes[memoryType].propertyFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) {
+        void* pointer = nullptr;
+        const VkResult result = vkMapMemory(mDevice, memory, 0, VK_WHOLE_SIZE, 0, &pointer);
+        if (result != VK_SUCCESS) {
+            vkFreeMemory(mDevice, memory, nullptr);
+            VK_CHECK(result);
+        }
+        *mapped = static_cast<std::byte*>(pointer);
+    }
+    mStats.deviceMemoryBytes += size;
+    ++mStats.deviceMemoryObjects;
+    return memory;
+}
+
+bool MemoryAllocator::tryAllocateFromBlock(Block& block, const VkMemoryRequirements& requirements, Allocation& out) {
+    for (auto it = block.freeRanges.begin(); it != block.freeRanges.end(); ++it) {
+        const VkDeviceSize rangeStart = it->first, rangeSize = it->second;
+        const VkDeviceSize start = alignUp(rangeStart, requirements.alignment);
+        if (start + requirements.size > rangeStart + rangeSize) continue;
+        // Split the free range into the part before (alignment padding) and the part after.
+        const VkDeviceSize end = start + requirements.size, rangeEnd = rangeStart + rangeSize;
+        block.freeRanges.erase(it);
+        if (start > rangeStart) block.freeRanges[rangeStart] = start - rangeStart;
+        if (rangeEnd > end) block.freeRanges[end] = rangeEnd - end;
+        out.memory = block.memory;
+        out.offset = start;
+        out.size = requirements.size;
+        out.mapped = block.mapped ? block.mapped + start : nullptr;
+        out.memoryType = block.memoryType;
+        ++block.liveAllocations;
+        return true;
+    }
+    return false;
+}
+
+Allocation MemoryAllocator::allocate(const VkMemoryRequirements& requirements, MemoryUsage usage, ResourceTiling tiling) {
+    const uint32_t type = findMemoryType(requirements.memoryTypeBits, usage);
+    Allocation out;
+    out.coherent = (mProperties.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT) != 0;
+
+    if (requirements.size > mBlockSize / 2) {
+        out.memory = allocateDeviceMemory(requirements.size, type, &out.mapped);
+        out.size = requirements.size;
+        out.memoryType = type;
+    } else {
+        bool placed = false;
+        for (uint32_t i = 0; i < mBlocks.size() && !placed; ++i) {
+            Block* block = mBlocks[i].get();
+            if (!block || block->memoryType != type || block->tiling != tiling) continue;
+            if (tryAllocateFromBlock(*block, requirements, out)) out.block = i, placed = true;
+        }
+        if (!placed) {
+            auto block = std::make_unique<Block>();
+            block->memory = allocateDeviceMemory(mBlockSize, type, &block->mapped);
+            block->size = mBlockSize;
+            block->memoryType = type;
+            block->tiling = tiling;
+            block->freeRanges[0] = mBlockSize;
+            tryAllocateFromBlock(*block, requirements, out);
+            uint32_t index = 0;
+            while (index < mBlocks.size() && mBlocks[index]) ++index;
+            if (index == mBlocks.size()) mBlocks.emplace_back();
+            mBlocks[index] = std::move(block);
+            out.block = index;
+        }
+    }
+    mStats.allocatedBytes += out.size;
+    ++mStats.liveAllocations;
+    return out;
+}
+
+void MemoryAllocator::free(const Allocation& allocation) {
+    if (!allocation) return;
+    mStats.allocatedBytes -= allocation.size;
+    --mStats.liveAllocations;
+    if (allocation.block == ~0u) {
+        vkFreeMemory(mDevice, allocation.memory, nullptr);
+        mStats.deviceMemoryBytes -= allocation.size;
+        --mStats.deviceMemoryObjects;
+        return;
+    }
+    Block& block = *mBlocks.at(allocation.block);
+    --block.liveAllocations;
+    VkDeviceSize start = allocation.offset, size = allocation.size;
+    // Coalesce with the free neighbours on both sides.
+    auto next = block.freeRanges.lower_bound(start);
+    if (next != block.freeRanges.end() && next->first == start + size) {
+        size += next->second;
+        next = block.freeRanges.erase(next);
+    }
+    if (next != block.freeRanges.begin()) {
+        auto prev = std::prev(next);
+        if (prev->first + prev->second == start) {
+            start = prev->first;
+            size += prev->second;
+            block.freeRanges.erase(prev);
+        }
+    }
+    block.freeRanges[start] = size;
+}
+
+void MemoryAllocator::trim() {
+    for (auto& block : mBlocks) {
+        if (!block || block->liveAllocations != 0) continue;
+        vkFreeMemory(mDevice, block->memory, nullptr);
+        mStats.deviceMemoryBytes -= block->size;
+        --mStats.deviceMemoryObjects;
+        block.reset();
+    }
+}
+
+MemoryStats MemoryAllocator::stats() const { return mStats; }
+
+}  // namespace candela::vk

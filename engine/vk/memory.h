@@ -1,0 +1,97 @@
+#pragma once
+// MemoryAllocator: sub-allocates device memory from large blocks, so small resources do not each
+// cost a vkAllocateMemory (drivers cap the count; maxMemoryAllocationCount is often 4096).
+// Vulkan Memory Allocator is not packaged in Debian 12; this is a deliberately small first-fit
+// block allocator (see docs/hand-written.md).
+//
+// Blocks are kept per (memory type, linear/optimal) so buffers and optimally tiled images never
+// share a block and bufferImageGranularity cannot bite. Requests larger than half a block get a
+// dedicated allocation. Host-visible memory is mapped persistently.
+// Not thread-safe: one owner thread (the renderer's).
+
+#include <vulkan/vulkan_core.h>
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace candela::vk {
+
+enum class MemoryUsage : uint8_t {
+    GpuOnly,   // device-local
+    Upload,    // host-visible, coherent, for staging and per-frame constants
+    Readback,  // host-visible, preferably cached, for reading results back
+};
+
+enum class ResourceTiling : uint8_t { Linear, Optimal };  // buffers are Linear
+
+struct Allocation {
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkDeviceSize offset = 0;
+    VkDeviceSize size = 0;
+    std::byte* mapped = nullptr;  // null unless host-visible
+    uint32_t memoryType = 0;
+    uint32_t block = ~0u;  // index of the owning block; ~0u for dedicated allocations
+    bool coherent = true;
+    explicit operator bool() const { return memory != VK_NULL_HANDLE; }
+};
+
+// Memory a resource is bound to but does not own (aliased transients of the render graph).
+struct ExternalMemory {
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkDeviceSize offset = 0;
+};
+
+struct MemoryStats {
+    uint64_t deviceMemoryBytes = 0;  // bytes held in VkDeviceMemory objects (blocks + dedicated)
+    uint32_t deviceMemoryObjects = 0;
+    uint64_t allocatedBytes = 0;     // bytes handed out to resources
+    uint32_t liveAllocations = 0;
+};
+
+class MemoryAllocator {
+public:
+    MemoryAllocator(VkPhysicalDevice physicalDevice, VkDevice device, VkDeviceSize blockSize = 64ull << 20);
+    ~MemoryAllocator();
+    MemoryAllocator(const MemoryAllocator&) = delete;
+    MemoryAllocator& operator=(const MemoryAllocator&) = delete;
+
+    // Allocates memory satisfying `requirements` for `usage`. Throws VulkanError (naming the
+    // failing call and result) when device memory is exhausted.
+    Allocation allocate(const VkMemoryRequirements& requirements, MemoryUsage usage, ResourceTiling tiling);
+    // Returns memory to its block (or frees a dedicated allocation). Empty allocations are ignored.
+    // Precondition: no pending GPU work uses it (callers free through the deferred deletion queue).
+    void free(const Allocation& allocation);
+
+    // Frees blocks that hold no allocation. Called after deferred deletions are collected.
+    void trim();
+
+    MemoryStats stats() const;
+    const VkPhysicalDeviceMemoryProperties& properties() const { return mProperties; }
+    // Index of the best memory type for `usage` among `typeBits`; throws if none fits.
+    uint32_t findMemoryType(uint32_t typeBits, MemoryUsage usage) const;
+
+private:
+    struct Block {
+        VkDeviceMemory memory = VK_NULL_HANDLE;
+        VkDeviceSize size = 0;
+        uint32_t memoryType = 0;
+        ResourceTiling tiling = ResourceTiling::Linear;
+        std::byte* mapped = nullptr;
+        std::map<VkDeviceSize, VkDeviceSize> freeRanges;  // offset → size, coalesced
+        uint32_t liveAllocations = 0;
+    };
+
+    VkDeviceMemory allocateDeviceMemory(VkDeviceSize size, uint32_t memoryType, std::byte** mapped);
+    bool tryAllocateFromBlock(Block& block, const VkMemoryRequirements& requirements, Allocation& out);
+
+    VkPhysicalDevice mPhysicalDevice;
+    VkDevice mDevice;
+    VkDeviceSize mBlockSize;
+    VkPhysicalDeviceMemoryProperties mProperties{};
+    std::vector<std::unique_ptr<Block>> mBlocks;  // null entries are freed blocks (indices stay stable)
+    MemoryStats mStats;
+};
+
+}  // namespace candela::vk

@@ -1,0 +1,157 @@
+#include "vk/pipeline.h"
+
+#include "core/check.h"
+#include "shader/builtin_shaders.h"
+
+#include <stdexcept>
+
+namespace candela::vk {
+
+Program::Program(Context& context, const std::vector<std::string_view>& shaderNames) {
+    std::vector<shader::ShaderReflection> reflections;
+    for (std::string_view name : shaderNames) {
+        mName += (mName.empty() ? "" : "+") + std::string(name);
+        const std::span<const uint32_t> spirv = shader::builtinShader(name);
+        if (spirv.empty()) throw std::runtime_error("no built-in shader named '" + std::string(name) + "'");
+        reflections.push_back(shader::reflectSpirv(spirv, std::string(name)));
+        const VkShaderModuleCreateInfo info{.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
+                                            .codeSize = spirv.size_bytes(),
+                                            .pCode = spirv.data()};
+        VkShaderModule module = VK_NULL_HANDLE;
+        VK_CHECK(vkCreateShaderModule(context.device(), &info, nullptr, &module));
+        mStages.push_back({reflections.back().stage, ShaderModule(context, module)});
+    }
+    mReflection = shader::mergeReflections(reflections);
+
+    uint32_t setCount = 0;
+    for (const shader::DescriptorBinding& b : mReflection.bindings) setCount = std::max(setCount, b.set + 1);
+    std::vector<VkDescriptorSetLayout> rawLayouts;
+    for (uint32_t set = 0; set < setCount; ++set) {
+        std::vector<VkDescriptorSetLayoutBinding> bindings;
+        for (const shader::DescriptorBinding& b : mReflection.bindings)
+            if (b.set == set)
+                bindings.push_back({.binding = b.binding, .descriptorType = b.type, .descriptorCount = b.count,
+                                    .stageFlags = b.stages});
+        const VkDescriptorSetLayoutCreateInfo info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
+                                                   .bindingCount = static_cast<uint32_t>(bindings.size()),
+                                                   .pBindings = bindings.data()};
+        VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+        VK_CHECK(vkCreateDescriptorSetLayout(context.device(), &info, nullptr, &layout));
+        mSetLayouts.emplace_back(context, layout);
+        rawLayouts.push_back(layout);
+    }
+    const VkPushConstantRange range{.stageFlags = mReflection.pushConstants.stages,
+                                    .offset = 0,
+                                    .size = mReflection.pushConstants.size};
+    const VkPipelineLayoutCreateInfo info{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+                                          .setLayoutCount = static_cast<uint32_t>(rawLayouts.size()),
+                                          .pSetLayouts = rawLayouts.data(),
+                                          .pushConstantRangeCount = range.size > 0 ? 1u : 0u,
+                                          .pPushConstantRanges = &range};
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VK_CHECK(vkCreatePipelineLayout(context.device(), &info, nullptr, &layout));
+    mLayout = PipelineLayout(context, layout);
+}
+
+Pipeline Pipeline::compute(Context& context, std::string_view shaderName) {
+    Pipeline out;
+    out.mProgram = Program(context, {shaderName});
+    out.mBindPoint = VK_PIPELINE_BIND_POINT_COMPUTE;
+    const VkComputePipelineCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
+        .stage = {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                  .stage = VK_SHADER_STAGE_COMPUTE_BIT,
+                  .module = out.mProgram.stages().front().module.get(),
+                  .pName = "main"},
+        .layout = out.mProgram.layout()};
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+    out.mPipeline = PipelineHandle(context, pipeline);
+    return out;
+}
+
+Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std::string_view fragmentShader,
+                            const GraphicsPipelineDesc& desc) {
+    Pipeline out;
+    out.mProgram = Program(context, {vertexShader, fragmentShader});
+    out.mBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+
+    std::vector<VkPipelineShaderStageCreateInfo> stages;
+    for (const Program::Stage& s : out.mProgram.stages())
+        stages.push_back({.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                          .stage = s.stage,
+                          .module = s.module.get(),
+                          .pName = "main"});
+    const VkPipelineVertexInputStateCreateInfo vertexInput{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO,
+        .vertexBindingDescriptionCount = static_cast<uint32_t>(desc.vertexBindings.size()),
+        .pVertexBindingDescriptions = desc.vertexBindings.data(),
+        .vertexAttributeDescriptionCount = static_cast<uint32_t>(desc.vertexAttributes.size()),
+        .pVertexAttributeDescriptions = desc.vertexAttributes.data()};
+    const VkPipelineInputAssemblyStateCreateInfo inputAssembly{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO, .topology = desc.topology};
+    const VkPipelineViewportStateCreateInfo viewport{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO, .viewportCount = 1, .scissorCount = 1};
+    const VkPipelineRasterizationStateCreateInfo raster{.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
+                                                        .polygonMode = VK_POLYGON_MODE_FILL,
+                                                        .cullMode = desc.cullMode,
+                                                        .frontFace = desc.frontFace,
+                                                        .lineWidth = 1.0f};
+    const VkPipelineMultisampleStateCreateInfo multisample{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO, .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
+    const VkPipelineDepthStencilStateCreateInfo depth{.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
+                                                      .depthTestEnable = desc.depthTest,
+                                                      .depthWriteEnable = desc.depthWrite,
+                                                      .depthCompareOp = desc.depthCompare};
+    std::vector<VkPipelineColorBlendAttachmentState> blends(
+        desc.colorFormats.size(),
+        {.blendEnable = desc.alphaBlend,
+         .srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA,
+         .dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
+         .colorBlendOp = VK_BLEND_OP_ADD,
+         .srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
+         .dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
+         .alphaBlendOp = VK_BLEND_OP_ADD,
+         .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                           VK_COLOR_COMPONENT_A_BIT});
+    const VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
+                                                    .attachmentCount = static_cast<uint32_t>(blends.size()),
+                                                    .pAttachments = blends.data()};
+    const VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    const VkPipelineDynamicStateCreateInfo dynamic{.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
+                                                   .dynamicStateCount = 2,
+                                                   .pDynamicStates = dynamicStates};
+    const VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
+                                                  .colorAttachmentCount = static_cast<uint32_t>(desc.colorFormats.size()),
+                                                  .pColorAttachmentFormats = desc.colorFormats.data(),
+                                                  .depthAttachmentFormat = desc.depthFormat};
+    const VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
+                                            .pNext = &rendering,
+                                            .stageCount = static_cast<uint32_t>(stages.size()),
+                                            .pStages = stages.data(),
+                                            .pVertexInputState = &vertexInput,
+                                            .pInputAssemblyState = &inputAssembly,
+                                            .pViewportState = &viewport,
+                                            .pRasterizationState = &raster,
+                                            .pMultisampleState = &multisample,
+                                            .pDepthStencilState = &depth,
+                                            .pColorBlendState = &blend,
+                                            .pDynamicState = &dynamic,
+                                            .layout = out.mProgram.layout()};
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateGraphicsPipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+    out.mPipeline = PipelineHandle(context, pipeline);
+    return out;
+}
+
+void Pipeline::bind(VkCommandBuffer cmd) const { vkCmdBindPipeline(cmd, mBindPoint, mPipeline.get()); }
+
+void Pipeline::pushConstants(VkCommandBuffer cmd, const void* data, uint32_t size) const {
+    const shader::PushConstantBlock& block = mProgram.reflection().pushConstants;
+    if (size != block.size)
+        throw std::logic_error(mProgram.name() + ": push constants of " + std::to_string(size) + " bytes, shader declares " +
+                               std::to_string(block.size));
+    vkCmdPushConstants(cmd, mProgram.layout(), block.stages, 0, size, data);
+}
+
+}  // namespace candela::vk

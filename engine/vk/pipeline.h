@@ -1,0 +1,81 @@
+#pragma once
+// Program: shader modules plus the descriptor-set layouts and pipeline layout derived from their
+// SPIR-V reflection. Pipeline: a compute or graphics pipeline built from a Program (dynamic
+// rendering, dynamic viewport and scissor). Both move-only; destruction is deferred.
+
+#include "shader/reflection.h"
+#include "vk/handle.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace candela::vk {
+
+class Program {
+public:
+    Program() = default;
+    // Reflects the named built-in shaders ("NAME.STAGE") and builds their layouts. Throws if a
+    // shader is missing or the stages disagree on a binding.
+    Program(Context& context, const std::vector<std::string_view>& shaderNames);
+
+    const shader::ShaderReflection& reflection() const { return mReflection; }
+    VkPipelineLayout layout() const { return mLayout.get(); }
+    // Layout of descriptor set `set` (an empty layout for sets the shaders do not use).
+    VkDescriptorSetLayout setLayout(uint32_t set) const { return mSetLayouts.at(set).get(); }
+    uint32_t setCount() const { return static_cast<uint32_t>(mSetLayouts.size()); }
+    const std::string& name() const { return mName; }
+
+    struct Stage {
+        VkShaderStageFlagBits stage;
+        ShaderModule module;
+    };
+    const std::vector<Stage>& stages() const { return mStages; }
+
+private:
+    std::string mName;
+    shader::ShaderReflection mReflection;
+    std::vector<Stage> mStages;
+    std::vector<DescriptorSetLayout> mSetLayouts;
+    PipelineLayout mLayout;
+};
+
+struct GraphicsPipelineDesc {
+    std::vector<VkFormat> colorFormats;
+    VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+    VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
+    VkFrontFace frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    bool depthTest = false;
+    bool depthWrite = false;
+    VkCompareOp depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse-Z
+    bool alphaBlend = false;
+    std::vector<VkVertexInputBindingDescription> vertexBindings;
+    std::vector<VkVertexInputAttributeDescription> vertexAttributes;
+};
+
+class Pipeline {
+public:
+    Pipeline() = default;
+    static Pipeline compute(Context& context, std::string_view shaderName);
+    static Pipeline graphics(Context& context, std::string_view vertexShader, std::string_view fragmentShader,
+                             const GraphicsPipelineDesc& desc);
+
+    VkPipeline handle() const { return mPipeline.get(); }
+    VkPipelineBindPoint bindPoint() const { return mBindPoint; }
+    const Program& program() const { return mProgram; }
+    VkPipelineLayout layout() const { return mProgram.layout(); }
+
+    // Binds the pipeline on `cmd`.
+    void bind(VkCommandBuffer cmd) const;
+    // Pushes `size` bytes of constants to every stage that declares the block.
+    // Precondition: size equals the reflected push-constant block size.
+    void pushConstants(VkCommandBuffer cmd, const void* data, uint32_t size) const;
+
+private:
+    Program mProgram;
+    PipelineHandle mPipeline;
+    VkPipelineBindPoint mBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+};
+
+}  // namespace candela::vk

@@ -1,0 +1,38 @@
+#pragma once
+// GPU timestamps for one frame: a query pool reset at the start of the frame, pairs written around
+// passes, results read after the frame's fence. Absent (enabled() false) when the queue has no
+// timestamp support.
+
+#include "vk/handle.h"
+
+#include <optional>
+#include <vector>
+
+namespace candela::vk {
+
+class TimestampPool {
+public:
+    TimestampPool(Context& context, uint32_t capacity);
+    bool enabled() const { return static_cast<bool>(mPool); }
+
+    // Records the reset of all queries; must precede any write in the frame.
+    void reset(VkCommandBuffer cmd);
+    // Writes a timestamp after `stage` and returns its index, or nullopt when disabled or full.
+    std::optional<uint32_t> write(VkCommandBuffer cmd, VkPipelineStageFlags2 stage);
+    // Milliseconds between two written queries. Precondition: the frame's work has completed.
+    // Returns a negative value if the results are not available.
+    double elapsedMs(uint32_t begin, uint32_t end);
+    // Fetches all results written this frame. Call once after the fence wait.
+    void fetch();
+
+private:
+    Context* mContext;
+    QueryPool mPool;
+    uint32_t mCapacity;
+    uint32_t mUsed = 0;
+    double mPeriodNs = 0.0;
+    uint64_t mMask = ~0ull;
+    std::vector<uint64_t> mResults;  // value, availability pairs
+};
+
+}  // namespace candela::vk

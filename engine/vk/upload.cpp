@@ -1,0 +1,83 @@
+#include "vk/upload.h"
+
+#include "core/check.h"
+#include "vk/commands.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace candela::vk {
+
+VkDeviceSize Uploader::stage(std::span<const std::byte> data) {
+    // 16-byte alignment satisfies every texel size's copy offset rule.
+    const VkDeviceSize offset = (mStaging.size() + 15) & ~VkDeviceSize(15);
+    mStaging.resize(offset + data.size());
+    std::memcpy(mStaging.data() + offset, data.data(), data.size());
+    return offset;
+}
+
+void Uploader::buffer(const Buffer& dst, std::span<const std::byte> data, VkDeviceSize offset) {
+    if (data.empty()) return;
+    mBufferCopies.push_back({dst.handle(), offset, stage(data), data.size()});
+}
+
+void Uploader::image(const Image& dst, std::span<const std::byte> data, uint32_t mip, uint32_t layer,
+                     VkImageLayout finalLayout) {
+    const ImageDesc& d = dst.desc();
+    const VkExtent3D extent{std::max(1u, d.width >> mip), std::max(1u, d.height >> mip), std::max(1u, d.depth >> mip)};
+    mImageCopies.push_back({dst.handle(), dst.aspect(), extent, mip, layer, stage(data), finalLayout});
+}
+
+void Uploader::submitAndWait() {
+    if (mStaging.empty()) return;
+    Buffer staging(*mContext, {.size = mStaging.size(),
+                               .usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                               .memory = MemoryUsage::Upload,
+                               .name = "upload staging"});
+    std::memcpy(staging.mapped(), mStaging.data(), mStaging.size());
+    staging.flush();
+
+    OneShotCommands commands(*mContext);
+    VkCommandBuffer cmd = commands.begin();
+    for (const BufferCopy& c : mBufferCopies) {
+        const VkBufferCopy region{c.stagingOffset, c.dstOffset, c.size};
+        vkCmdCopyBuffer(cmd, staging.handle(), c.buffer, 1, &region);
+    }
+    std::vector<VkImage> images;
+    for (const ImageCopy& c : mImageCopies)
+        if (std::find(images.begin(), images.end(), c.image) == images.end()) {
+            images.push_back(c.image);
+            imageBarrier(cmd, c.image, c.aspect, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_UNDEFINED,
+                         VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+        }
+    for (const ImageCopy& c : mImageCopies) {
+        const VkBufferImageCopy region{.bufferOffset = c.stagingOffset,
+                                       .imageSubresource = {c.aspect, c.mip, c.layer, 1},
+                                       .imageExtent = c.extent};
+        vkCmdCopyBufferToImage(cmd, staging.handle(), c.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    }
+    for (VkImage image : images) {
+        const ImageCopy& c = *std::find_if(mImageCopies.begin(), mImageCopies.end(),
+                                           [&](const ImageCopy& x) { return x.image == image; });
+        imageBarrier(cmd, image, c.aspect, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                     VK_ACCESS_2_MEMORY_READ_BIT, c.finalLayout);
+    }
+    if (!mBufferCopies.empty()) {
+        const VkMemoryBarrier2 barrier{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                                       .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
+                                       .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                       .dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                                       .dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT};
+        const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1,
+                                          .pMemoryBarriers = &barrier};
+        vkCmdPipelineBarrier2(cmd, &dependency);
+    }
+    commands.submitAndWait();
+    mStaging.clear();
+    mBufferCopies.clear();
+    mImageCopies.clear();
+}
+
+}  // namespace candela::vk

@@ -1,0 +1,155 @@
+// The `candela` executable end to end: exit codes, one-line errors, and the files it writes.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <stb_image.h>
+#include <tinyexr.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+struct Result {
+    int exitCode = -1;
+    std::string stderrText;
+};
+
+// Runs candela with `args` (shell syntax); captures stderr only.
+Result run(const std::string& args) {
+    const std::string command = std::string(CANDELA_EXECUTABLE) + " " + args + " 2>&1 >/dev/null";
+    FILE* pipe = popen(command.c_str(), "r");
+    Result result;
+    std::array<char, 4096> buffer;
+    while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) result.stderrText.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+std::filesystem::path tempDir() {
+    auto dir = std::filesystem::temp_directory_path() / ("candela_cli_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+// A bad-input row: the arguments, and a fragment the one-line error must contain.
+struct BadInput {
+    const char* name;
+    const char* args;
+    const char* fragment;
+};
+
+class BadInputTest : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(BadInputTest, OneLineErrorAndNonZeroExit) {
+    const BadInput& row = GetParam();
+    const Result r = run(row.args);
+    EXPECT_NE(r.exitCode, 0) << row.args;
+    EXPECT_NE(r.exitCode, -1) << "crashed: " << row.args;
+    ASSERT_FALSE(r.stderrText.empty());
+    EXPECT_EQ(r.stderrText.find('\n'), r.stderrText.size() - 1) << "expected one line, got:\n" << r.stderrText;
+    EXPECT_NE(r.stderrText.find("candela: error: "), std::string::npos) << r.stderrText;
+    EXPECT_NE(r.stderrText.find(row.fragment), std::string::npos) << r.stderrText;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Catalogue, BadInputTest,
+    ::testing::Values(BadInput{"UnknownOption", "render --frobnicate", "unknown option '--frobnicate'"},
+                      BadInput{"UnknownCommand", "explode", "unknown command 'explode'"},
+                      BadInput{"ZeroWidth", "render --width 0 --out /tmp/candela_zero.png", "at least 1x1"},
+                      BadInput{"ZeroHeight", "render --height 0 --out /tmp/candela_zero.png", "at least 1x1"},
+                      BadInput{"NegativeWidth", "render --width -5", "--width: expected a whole number"},
+                      BadInput{"TrailingGarbageHeight", "render --height 12abc", "--height: expected a whole number"},
+                      BadInput{"WidthBeyondUint32", "render --width 99999999999", "--width: expected a whole number"},
+                      BadInput{"WidthBeyondDeviceLimit", "render --width 1000000 --out /tmp/candela_big.png", "exceeds the device limit"},
+                      BadInput{"UnwritableOutput", "render --out /nonexistent-dir/x.png", "/nonexistent-dir/x.png: cannot write"},
+                      BadInput{"UnknownExtension", "render --out /tmp/candela.bmp", "unknown output format '.bmp'"},
+                      BadInput{"NoExtension", "render --out /tmp/candela_noext", "unknown output format '(none)'"},
+                      BadInput{"OutputIsDirectory", "render --out /tmp", "/tmp: "},
+                      BadInput{"MissingValue", "render --width", "--width needs a value"},
+                      BadInput{"DeviceNameMatchesNothing", "render --device no-such-gpu --out /tmp/candela_dev.png", "matches no Vulkan device"},
+                      BadInput{"DeviceIndexOutOfRange", "render --device 42 --out /tmp/candela_dev.png", "no such device index"},
+                      BadInput{"InfoDeviceMatchesNothing", "info --device no-such-gpu", "matches no Vulkan device"},
+                      BadInput{"SwitchWithValue", "render --validate=yes", "--validate takes no value"},
+                      BadInput{"UnknownPassToDisable", "render --disable-pass nosuchpass --out /tmp/candela_np.png", "nosuchpass"}),
+    [](const ::testing::TestParamInfo<BadInput>& row) { return std::string(row.param.name); });
+
+TEST(Cli, HelpExitsZero) { EXPECT_EQ(run("--help").exitCode, 0); }
+
+TEST(Cli, RenderWritesPngAndGraphExports) {
+    const auto dir = tempDir();
+    const auto png = dir / "frame.png", json = dir / "graph.json", dot = dir / "graph.dot";
+    const Result r = run("render --validate --width 40 --height 30 --out " + png.string() + " --graph-json " +
+                         json.string() + " --graph-dot " + dot.string());
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* pixels = stbi_load(png.c_str(), &w, &h, &channels, 4);
+    ASSERT_NE(pixels, nullptr);
+    stbi_image_free(pixels);
+    EXPECT_EQ(w, 40);
+    EXPECT_EQ(h, 30);
+
+    std::ifstream in(json);
+    const nlohmann::json graph = nlohmann::json::parse(in);
+    ASSERT_EQ(graph["order"].size(), 3u);
+    EXPECT_EQ(graph["order"][0], "pattern");
+    EXPECT_EQ(graph["order"][2], "readback");
+    std::ifstream dotIn(dot);
+    const std::string dotText((std::istreambuf_iterator<char>(dotIn)), std::istreambuf_iterator<char>());
+    EXPECT_NE(dotText.find("digraph"), std::string::npos);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, FloatOutputsCullTheEncodePass) {
+    const auto dir = tempDir();
+    for (const char* name : {"frame.exr", "frame.pfm"}) {
+        const auto out = dir / name, json = dir / "graph.json";
+        const Result r = run("render --validate --width 24 --height 16 --out " + out.string() + " --graph-json " +
+                             json.string());
+        ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+        if (out.extension() == ".pfm") {
+            EXPECT_EQ(std::filesystem::file_size(out), std::string("PF\n24 16\n-1.0\n").size() + 24u * 16u * 12u);
+        } else {
+            float* rgba = nullptr;
+            int w = 0, h = 0;
+            const char* error = nullptr;
+            ASSERT_EQ(LoadEXR(&rgba, &w, &h, out.c_str(), &error), TINYEXR_SUCCESS) << (error ? error : "");
+            EXPECT_EQ(w, 24);
+            EXPECT_EQ(h, 16);
+            // Pixel (0,0) of the pattern: 1/16-intensity red-magenta, alpha 1; HDR values survive.
+            EXPECT_GT(rgba[0], 0.0f);
+            EXPECT_FLOAT_EQ(rgba[3], 1.0f);
+            float maxValue = 0.0f;
+            for (int i = 0; i < w * h * 4; ++i) maxValue = std::max(maxValue, rgba[i]);
+            EXPECT_GT(maxValue, 4.0f);
+            free(rgba);
+        }
+        std::ifstream in(json);
+        const nlohmann::json graph = nlohmann::json::parse(in);
+        bool sawCulledEncode = false;
+        for (const auto& pass : graph["passes"])
+            if (pass["name"] == "encode") sawCulledEncode = pass["culled"].get<bool>();
+        EXPECT_TRUE(sawCulledEncode);
+    }
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, InfoListsDevicesAndTheChoice) {
+    const std::string command = std::string(CANDELA_EXECUTABLE) + " info 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buffer;
+    while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
+    EXPECT_EQ(pclose(pipe), 0);
+    EXPECT_NE(out.find("chosen:"), std::string::npos) << out;
+    EXPECT_NE(out.find("why:"), std::string::npos) << out;
+    EXPECT_NE(out.find("features enabled: dynamicRendering synchronization2 maintenance4"), std::string::npos) << out;
+}
+
+}  // namespace
