@@ -1,0 +1,228 @@
+// RenderGraph and PassBuilder: record the declaration (GraphDecl) and hand it to compileGraph().
+
+#include "graph/render_graph.h"
+
+#include "graph/compile_steps.h"
+
+#include <algorithm>
+
+namespace candela::graph {
+
+using detail::quoted;
+
+namespace {
+
+const char* kindName(ResourceKind kind) { return kind == ResourceKind::Texture ? "texture" : "buffer"; }
+
+// Checks that (kind, index, version) names an existing version of an existing resource.
+// `what` describes the use for the message, e.g. "pass 'tonemap' reads".
+const ResourceDecl& checkHandle(const GraphDecl& decl, const std::string& what, ResourceKind kind,
+                                uint32_t index, uint32_t version) {
+    if (index >= decl.resources.size())
+        throw GraphError(what + " an invalid " + kindName(kind) + " handle (index " +
+                         (index == kInvalidIndex ? std::string("none") : std::to_string(index)) + ")");
+    const ResourceDecl& resource = decl.resources[index];
+    if (resource.kind != kind)
+        throw GraphError(what + " " + quoted(resource.name) + " through a " + kindName(kind) +
+                         " handle, but it is a " + kindName(resource.kind));
+    if (version >= resource.versionCount)
+        throw GraphError(what + " " + quoted(resource.name) + " (version " + std::to_string(version) +
+                         "), which does not exist yet (latest is " +
+                         std::to_string(resource.versionCount - 1) + ")");
+    return resource;
+}
+
+ResourceDecl makeTexture(std::string name, const TextureDesc& desc) {
+    ResourceDecl resource;
+    resource.name = std::move(name);
+    resource.kind = ResourceKind::Texture;
+    resource.texture = desc;
+    return resource;
+}
+
+ResourceDecl makeBuffer(std::string name, const BufferDesc& desc) {
+    ResourceDecl resource;
+    resource.name = std::move(name);
+    resource.kind = ResourceKind::Buffer;
+    resource.buffer = desc;
+    return resource;
+}
+
+}  // namespace
+
+TextureId PassBuilder::createTexture(std::string name, const TextureDesc& desc) {
+    return {mGraph.addResource(makeTexture(std::move(name), desc)), 0};
+}
+
+BufferId PassBuilder::createBuffer(std::string name, const BufferDesc& desc) {
+    return {mGraph.addResource(makeBuffer(std::move(name), desc)), 0};
+}
+
+TextureId PassBuilder::read(TextureId texture, Usage usage, VkPipelineStageFlags2 stageOverride) {
+    mGraph.addRead(mPass, ResourceKind::Texture, texture.index, texture.version, usage, stageOverride);
+    return texture;
+}
+
+BufferId PassBuilder::read(BufferId buffer, Usage usage, VkPipelineStageFlags2 stageOverride) {
+    mGraph.addRead(mPass, ResourceKind::Buffer, buffer.index, buffer.version, usage, stageOverride);
+    return buffer;
+}
+
+TextureId PassBuilder::write(TextureId texture, Usage usage, WriteMode mode,
+                             VkPipelineStageFlags2 stageOverride) {
+    const AccessDecl& access = mGraph.addWrite(mPass, ResourceKind::Texture, texture.index,
+                                               texture.version, usage, mode, stageOverride);
+    return {texture.index, access.version};
+}
+
+BufferId PassBuilder::write(BufferId buffer, Usage usage, WriteMode mode, VkPipelineStageFlags2 stageOverride) {
+    const AccessDecl& access = mGraph.addWrite(mPass, ResourceKind::Buffer, buffer.index, buffer.version,
+                                               usage, mode, stageOverride);
+    return {buffer.index, access.version};
+}
+
+TextureId PassBuilder::writeColor(TextureId texture, std::optional<VkClearColorValue> clear) {
+    AccessDecl& access = mGraph.addWrite(mPass, ResourceKind::Texture, texture.index, texture.version,
+                                         Usage::ColorAttachment,
+                                         clear ? WriteMode::Discard : WriteMode::Preserve, 0);
+    if (clear) {
+        VkClearValue value{};
+        value.color = *clear;
+        access.clear = value;
+    }
+    return {texture.index, access.version};
+}
+
+TextureId PassBuilder::writeDepth(TextureId texture, std::optional<float> clearDepth) {
+    AccessDecl& access = mGraph.addWrite(mPass, ResourceKind::Texture, texture.index, texture.version,
+                                         Usage::DepthAttachment,
+                                         clearDepth ? WriteMode::Discard : WriteMode::Preserve, 0);
+    if (clearDepth) {
+        VkClearValue value{};
+        value.depthStencil = {*clearDepth, 0};
+        access.clear = value;
+    }
+    return {texture.index, access.version};
+}
+
+void PassBuilder::sideEffect() { mGraph.mDecl.passes[mPass].sideEffect = true; }
+
+TextureId RenderGraph::importTexture(std::string name, const TextureDesc& desc, const ResourceState& initial,
+                                     std::optional<ResourceState> final) {
+    ResourceDecl resource = makeTexture(std::move(name), desc);
+    resource.imported = true;
+    resource.initialState = initial;
+    resource.finalState = final;
+    return {addResource(std::move(resource)), 0};
+}
+
+BufferId RenderGraph::importBuffer(std::string name, const BufferDesc& desc, const ResourceState& initial,
+                                   std::optional<ResourceState> final) {
+    ResourceDecl resource = makeBuffer(std::move(name), desc);
+    resource.imported = true;
+    resource.initialState = initial;
+    resource.finalState = final;
+    return {addResource(std::move(resource)), 0};
+}
+
+TextureId RenderGraph::createTexture(std::string name, const TextureDesc& desc) {
+    return {addResource(makeTexture(std::move(name), desc)), 0};
+}
+
+BufferId RenderGraph::createBuffer(std::string name, const BufferDesc& desc) {
+    return {addResource(makeBuffer(std::move(name), desc)), 0};
+}
+
+void RenderGraph::exportTexture(TextureId texture, std::optional<ResourceState> final) {
+    checkHandle(mDecl, "exportTexture received", ResourceKind::Texture, texture.index, texture.version);
+    mDecl.resources[texture.index].exported = true;
+    if (final) mDecl.resources[texture.index].finalState = final;
+}
+
+void RenderGraph::exportBuffer(BufferId buffer, std::optional<ResourceState> final) {
+    checkHandle(mDecl, "exportBuffer received", ResourceKind::Buffer, buffer.index, buffer.version);
+    mDecl.resources[buffer.index].exported = true;
+    if (final) mDecl.resources[buffer.index].finalState = final;
+}
+
+void RenderGraph::setPassEnabled(std::string_view name, bool enabled) {
+    bool found = false;
+    for (PassDecl& pass : mDecl.passes) {
+        if (pass.name != name) continue;
+        pass.enabled = enabled;
+        found = true;
+    }
+    if (!found) throw GraphError("setPassEnabled: no pass named " + quoted(std::string(name)));
+}
+
+const CompiledGraph& RenderGraph::compile(const CompileOptions& options) {
+    // A failed compile must not leave the previous result looking current.
+    mIsCompiled = false;
+    mCompiled = compileGraph(mDecl, options);
+    mIsCompiled = true;
+    return mCompiled;
+}
+
+std::optional<uint32_t> RenderGraph::findPass(std::string_view name) const {
+    for (uint32_t p = 0; p < mDecl.passes.size(); ++p)
+        if (mDecl.passes[p].name == name) return p;
+    return std::nullopt;
+}
+
+std::optional<uint32_t> RenderGraph::findResource(std::string_view name) const {
+    for (uint32_t r = 0; r < mDecl.resources.size(); ++r)
+        if (mDecl.resources[r].name == name) return r;
+    return std::nullopt;
+}
+
+uint32_t RenderGraph::beginPass(std::string name, PassType type) {
+    PassDecl pass;
+    pass.name = std::move(name);
+    pass.type = type;
+    mDecl.passes.push_back(std::move(pass));
+    mCallbacks.emplace_back();
+    mPassData.emplace_back();
+    return static_cast<uint32_t>(mDecl.passes.size() - 1);
+}
+
+uint32_t RenderGraph::addResource(ResourceDecl resource) {
+    mDecl.resources.push_back(std::move(resource));
+    return static_cast<uint32_t>(mDecl.resources.size() - 1);
+}
+
+AccessDecl& RenderGraph::addRead(uint32_t pass, ResourceKind kind, uint32_t index, uint32_t version, Usage usage,
+                                 VkPipelineStageFlags2 stageOverride) {
+    const std::string what = "pass " + quoted(mDecl.passes[pass].name) + " reads";
+    const ResourceDecl& resource = checkHandle(mDecl, what, kind, index, version);
+    if (usageWrites(usage))
+        throw GraphError(what + " " + quoted(resource.name) + " with writing usage " + usageName(usage) +
+                         " (use write())");
+    AccessDecl access;
+    access.resource = index;
+    access.version = version;
+    access.usage = usage;
+    access.stageOverride = stageOverride;
+    return mDecl.passes[pass].reads.emplace_back(access);
+}
+
+// `version` is the consumed handle's version; the access produces version + 1.
+AccessDecl& RenderGraph::addWrite(uint32_t pass, ResourceKind kind, uint32_t index, uint32_t version, Usage usage,
+                                  WriteMode mode, VkPipelineStageFlags2 stageOverride) {
+    const std::string what = "pass " + quoted(mDecl.passes[pass].name) + " writes";
+    checkHandle(mDecl, what, kind, index, version);
+    ResourceDecl& resource = mDecl.resources[index];
+    if (!usageWrites(usage))
+        throw GraphError(what + " " + quoted(resource.name) + " with read-only usage " + usageName(usage) +
+                         " (use read())");
+    AccessDecl access;
+    access.resource = index;
+    access.version = version + 1;
+    access.usage = usage;
+    access.stageOverride = stageOverride;
+    access.mode = mode;
+    // Writing an older version is allowed here; validate reports the clash with its first producer.
+    resource.versionCount = std::max(resource.versionCount, access.version + 1);
+    return mDecl.passes[pass].writes.emplace_back(access);
+}
+
+}  // namespace candela::graph
