@@ -5,6 +5,7 @@
 #include "graph/compile_steps.h"
 
 #include <nlohmann/json.hpp>
+#include <vulkan/vulkan.hpp>
 
 #include <cstdio>
 #include <utility>
@@ -15,92 +16,27 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-const char* layoutName(VkImageLayout layout) {
-    switch (layout) {
-    case VK_IMAGE_LAYOUT_UNDEFINED: return "UNDEFINED";
-    case VK_IMAGE_LAYOUT_GENERAL: return "GENERAL";
-    case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL: return "COLOR_ATTACHMENT_OPTIMAL";
-    case VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL: return "DEPTH_STENCIL_ATTACHMENT_OPTIMAL";
-    case VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL: return "DEPTH_STENCIL_READ_ONLY_OPTIMAL";
-    case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL: return "SHADER_READ_ONLY_OPTIMAL";
-    case VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL: return "TRANSFER_SRC_OPTIMAL";
-    case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL: return "TRANSFER_DST_OPTIMAL";
-    case VK_IMAGE_LAYOUT_PREINITIALIZED: return "PREINITIALIZED";
-    case VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL: return "DEPTH_ATTACHMENT_OPTIMAL";
-    case VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL: return "DEPTH_READ_ONLY_OPTIMAL";
-    case VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL: return "READ_ONLY_OPTIMAL";
-    case VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL: return "ATTACHMENT_OPTIMAL";
-    case VK_IMAGE_LAYOUT_PRESENT_SRC_KHR: return "PRESENT_SRC_KHR";
-    default: return "OTHER";
+// Enum and flag names come from Vulkan-Hpp's to_string ("ColorAttachmentOptimal",
+// "R16G16B16A16Sfloat"); flag sets become lists of names.
+std::string layoutName(VkImageLayout layout) { return vk::to_string(static_cast<vk::ImageLayout>(layout)); }
+std::string formatName(VkFormat format) { return vk::to_string(static_cast<vk::Format>(format)); }
+
+template <class Flags>
+Json flagNames(Flags flags) {
+    std::string text = vk::to_string(flags);  // "{ A | B }", or "{}" when empty
+    Json names = Json::array();
+    if (text.size() <= 4) return names;
+    text = text.substr(2, text.size() - 4);
+    for (size_t start = 0;;) {
+        const size_t bar = text.find(" | ", start);
+        names.push_back(text.substr(start, bar - start));
+        if (bar == std::string::npos) break;
+        start = bar + 3;
     }
+    return names;
 }
-
-struct FlagName {
-    VkFlags64 bit;
-    const char* name;
-};
-
-constexpr FlagName kStageNames[] = {
-    {VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, "TOP_OF_PIPE"},
-    {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, "DRAW_INDIRECT"},
-    {VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT, "VERTEX_INPUT"},
-    {VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, "VERTEX_SHADER"},
-    {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, "FRAGMENT_SHADER"},
-    {VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT, "EARLY_FRAGMENT_TESTS"},
-    {VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, "LATE_FRAGMENT_TESTS"},
-    {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, "COLOR_ATTACHMENT_OUTPUT"},
-    {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, "COMPUTE_SHADER"},
-    {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, "ALL_TRANSFER"},
-    {VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, "BOTTOM_OF_PIPE"},
-    {VK_PIPELINE_STAGE_2_HOST_BIT, "HOST"},
-    {VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT, "ALL_GRAPHICS"},
-    {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, "ALL_COMMANDS"},
-    {VK_PIPELINE_STAGE_2_COPY_BIT, "COPY"},
-    {VK_PIPELINE_STAGE_2_RESOLVE_BIT, "RESOLVE"},
-    {VK_PIPELINE_STAGE_2_BLIT_BIT, "BLIT"},
-    {VK_PIPELINE_STAGE_2_CLEAR_BIT, "CLEAR"},
-    {VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT, "INDEX_INPUT"},
-    {VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT, "VERTEX_ATTRIBUTE_INPUT"},
-};
-
-constexpr FlagName kAccessNames[] = {
-    {VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT, "INDIRECT_COMMAND_READ"},
-    {VK_ACCESS_2_INDEX_READ_BIT, "INDEX_READ"},
-    {VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT, "VERTEX_ATTRIBUTE_READ"},
-    {VK_ACCESS_2_UNIFORM_READ_BIT, "UNIFORM_READ"},
-    {VK_ACCESS_2_SHADER_READ_BIT, "SHADER_READ"},
-    {VK_ACCESS_2_SHADER_WRITE_BIT, "SHADER_WRITE"},
-    {VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT, "COLOR_ATTACHMENT_READ"},
-    {VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, "COLOR_ATTACHMENT_WRITE"},
-    {VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT, "DEPTH_STENCIL_ATTACHMENT_READ"},
-    {VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, "DEPTH_STENCIL_ATTACHMENT_WRITE"},
-    {VK_ACCESS_2_TRANSFER_READ_BIT, "TRANSFER_READ"},
-    {VK_ACCESS_2_TRANSFER_WRITE_BIT, "TRANSFER_WRITE"},
-    {VK_ACCESS_2_HOST_READ_BIT, "HOST_READ"},
-    {VK_ACCESS_2_HOST_WRITE_BIT, "HOST_WRITE"},
-    {VK_ACCESS_2_MEMORY_READ_BIT, "MEMORY_READ"},
-    {VK_ACCESS_2_MEMORY_WRITE_BIT, "MEMORY_WRITE"},
-    {VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, "SHADER_SAMPLED_READ"},
-    {VK_ACCESS_2_SHADER_STORAGE_READ_BIT, "SHADER_STORAGE_READ"},
-    {VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, "SHADER_STORAGE_WRITE"},
-};
-
-// Names of the set bits; bits without a name appear as hex so nothing is silently dropped.
-template <size_t N>
-std::vector<std::string> flagNames(VkFlags64 flags, const FlagName (&names)[N]) {
-    std::vector<std::string> result;
-    for (const FlagName& entry : names) {
-        if ((flags & entry.bit) == 0) continue;
-        result.emplace_back(entry.name);
-        flags &= ~entry.bit;
-    }
-    if (flags != 0) {
-        char hex[32];
-        std::snprintf(hex, sizeof(hex), "0x%llx", static_cast<unsigned long long>(flags));
-        result.emplace_back(hex);
-    }
-    return result;
-}
+Json stageNames(VkPipelineStageFlags2 stages) { return flagNames(vk::PipelineStageFlags2(stages)); }
+Json accessNames(VkAccessFlags2 access) { return flagNames(vk::AccessFlags2(access)); }
 
 Json optionalIndex(uint32_t value) { return value == kInvalidIndex ? Json(nullptr) : Json(value); }
 
@@ -128,10 +64,10 @@ Json accessesJson(const GraphDecl& decl, const std::vector<AccessDecl>& accesses
 Json barrierJson(const GraphDecl& decl, const Barrier& barrier, const std::string& before) {
     return {{"before", before},
             {"resource", decl.resources[barrier.resource].name},
-            {"srcStages", flagNames(barrier.src.stages, kStageNames)},
-            {"srcAccess", flagNames(barrier.src.access, kAccessNames)},
-            {"dstStages", flagNames(barrier.dst.stages, kStageNames)},
-            {"dstAccess", flagNames(barrier.dst.access, kAccessNames)},
+            {"srcStages", stageNames(barrier.src.stages)},
+            {"srcAccess", accessNames(barrier.src.access)},
+            {"dstStages", stageNames(barrier.dst.stages)},
+            {"dstAccess", accessNames(barrier.dst.access)},
             {"oldLayout", layoutName(barrier.src.layout)},
             {"newLayout", layoutName(barrier.dst.layout)},
             {"aliasedFrom", barrier.aliasedFrom == kInvalidIndex
@@ -153,7 +89,7 @@ std::string resourceLabel(const ResourceDecl& resource, const Lifetime& lifetime
     std::string label = dotEscape(resource.name) + "\\n";
     if (resource.kind == ResourceKind::Texture) {
         label += std::to_string(resource.texture.width) + "x" + std::to_string(resource.texture.height) +
-                 " fmt " + std::to_string(resource.texture.format);
+                 " " + formatName(resource.texture.format);
     } else {
         label += std::to_string(resource.buffer.size) + " bytes";
     }
@@ -269,7 +205,7 @@ std::string exportJson(const GraphDecl& decl, const CompiledGraph& compiled, con
              {"exported", resource.exported},
              {"width", texture ? Json(resource.texture.width) : Json(nullptr)},
              {"height", texture ? Json(resource.texture.height) : Json(nullptr)},
-             {"format", texture ? Json(static_cast<int>(resource.texture.format)) : Json(nullptr)},
+             {"format", texture ? Json(formatName(resource.texture.format)) : Json(nullptr)},
              {"size", placed ? placement.size : estimateMemoryRequirement(resource).size},
              {"first", optionalIndex(compiled.lifetimes[r].first)},
              {"last", optionalIndex(compiled.lifetimes[r].last)},

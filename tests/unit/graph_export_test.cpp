@@ -72,7 +72,7 @@ TEST(GraphExport, JsonDescribesPassesResourcesHeapsAndBarriers) {
     EXPECT_EQ(hdr["kind"], "texture");
     EXPECT_EQ(hdr["width"], 64);
     EXPECT_EQ(hdr["height"], 32);
-    EXPECT_EQ(hdr["format"], static_cast<int>(VK_FORMAT_R16G16B16A16_SFLOAT));
+    EXPECT_EQ(hdr["format"], "R16G16B16A16Sfloat");
     EXPECT_EQ(hdr["size"], 64 * 32 * 8);
     EXPECT_EQ(hdr["first"], 0);
     EXPECT_EQ(hdr["last"], 1);
@@ -92,16 +92,16 @@ TEST(GraphExport, JsonDescribesPassesResourcesHeapsAndBarriers) {
     ASSERT_EQ(barriers.size(), 4u);
     EXPECT_EQ(barriers[1]["before"], "tonemap");
     EXPECT_EQ(barriers[1]["resource"], "hdr");
-    EXPECT_EQ(barriers[1]["srcStages"], (nlohmann::json{"COLOR_ATTACHMENT_OUTPUT"}));
-    EXPECT_EQ(barriers[1]["srcAccess"], (nlohmann::json{"COLOR_ATTACHMENT_WRITE"}));
-    EXPECT_EQ(barriers[1]["dstStages"], (nlohmann::json{"VERTEX_SHADER", "FRAGMENT_SHADER"}));
-    EXPECT_EQ(barriers[1]["dstAccess"], (nlohmann::json{"SHADER_SAMPLED_READ"}));
-    EXPECT_EQ(barriers[1]["oldLayout"], "COLOR_ATTACHMENT_OPTIMAL");
-    EXPECT_EQ(barriers[1]["newLayout"], "SHADER_READ_ONLY_OPTIMAL");
+    EXPECT_EQ(barriers[1]["srcStages"], (nlohmann::json{"ColorAttachmentOutput"}));
+    EXPECT_EQ(barriers[1]["srcAccess"], (nlohmann::json{"ColorAttachmentWrite"}));
+    EXPECT_EQ(barriers[1]["dstStages"], (nlohmann::json{"VertexShader", "FragmentShader"}));
+    EXPECT_EQ(barriers[1]["dstAccess"], (nlohmann::json{"ShaderSampledRead"}));
+    EXPECT_EQ(barriers[1]["oldLayout"], "ColorAttachmentOptimal");
+    EXPECT_EQ(barriers[1]["newLayout"], "ShaderReadOnlyOptimal");
     EXPECT_TRUE(barriers[1]["aliasedFrom"].is_null());
     EXPECT_EQ(barriers[3]["before"], "end");
     EXPECT_EQ(barriers[3]["resource"], "target");
-    EXPECT_EQ(barriers[3]["newLayout"], "PRESENT_SRC_KHR");
+    EXPECT_EQ(barriers[3]["newLayout"], "PresentSrcKHR");
 
     EXPECT_EQ(json["steps"],
               (nlohmann::json{"validate", "cull", "order", "lifetimes", "aliasing", "barriers"}));
