@@ -185,7 +185,7 @@ ExecutionRecord executeGraph(const ExecuteInputs& in) {
         in.context.beginLabel(in.cmd, ctx.passName());
         const auto begin = in.timestamps ? in.timestamps->write(in.cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT) : std::nullopt;
         if (const ExecuteFn& fn = in.graph.callback(pass)) fn(ctx);
-        const auto end = in.timestamps ? in.timestamps->write(in.cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT) : std::nullopt;
+        const auto end = in.timestamps ? in.timestamps->write(in.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT) : std::nullopt;
         if (begin && end) record.queries.push_back({pass, {*begin, *end}});
         in.context.endLabel(in.cmd);
     }
