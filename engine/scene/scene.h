@@ -1,0 +1,148 @@
+#pragma once
+// The CPU-side scene: flattened geometry, materials, textures, lights and cameras, as the glTF
+// loader and the built-in scenes produce it and the GPU upload consumes it. Plain data, no Vulkan.
+// Conventions follow glTF 2.0: right-handed, +Y up, metres, linear colour factors, counter-
+// clockwise front faces.
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace candela::scene {
+
+// One vertex of the flattened scene (all primitives share one array). 80 bytes.
+struct Vertex {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};
+    glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};  // xyz unit tangent, w = ±1 bitangent sign (glTF)
+    glm::vec2 uv0{0.0f};
+    glm::vec2 uv1{0.0f};
+    glm::vec4 color{1.0f};  // COLOR_0, linear; white when absent
+};
+static_assert(sizeof(Vertex) == 80);
+
+struct Aabb {
+    glm::vec3 min{1e30f};
+    glm::vec3 max{-1e30f};
+    bool valid() const { return min.x <= max.x && min.y <= max.y && min.z <= max.z; }
+    void extend(const glm::vec3& p) {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+    void extend(const Aabb& other) {
+        if (other.valid()) extend(other.min), extend(other.max);
+    }
+};
+
+// A decoded image. Pixels are RGBA8 (16-bit sources are reduced to 8 bits; see loader docs).
+struct Image {
+    std::string name;
+    uint32_t width = 0;
+    uint32_t height = 0;
+    std::vector<uint8_t> rgba8;  // width × height × 4, top row first
+    bool srgb = false;           // true when used as base colour or emissive (sRGB-encoded)
+};
+
+enum class Filter : uint8_t { Nearest, Linear };
+enum class Wrap : uint8_t { Repeat, MirroredRepeat, ClampToEdge };
+
+struct Sampler {
+    Filter magFilter = Filter::Linear;
+    Filter minFilter = Filter::Linear;
+    Filter mipFilter = Filter::Linear;
+    bool mipmaps = true;  // false for glTF NEAREST/LINEAR min filters (no mip sampling)
+    Wrap wrapU = Wrap::Repeat;
+    Wrap wrapV = Wrap::Repeat;
+};
+
+// KHR_texture_transform, applied as uv' = offset + R(rotation) * (scale * uv).
+struct TextureTransform {
+    glm::vec2 offset{0.0f};
+    float rotation = 0.0f;  // radians
+    glm::vec2 scale{1.0f};
+    bool identity() const { return offset == glm::vec2(0.0f) && rotation == 0.0f && scale == glm::vec2(1.0f); }
+};
+
+struct TextureRef {
+    int image = -1;    // index into Scene::images; -1 = no texture
+    int sampler = -1;  // index into Scene::samplers; -1 = default sampler
+    uint32_t texCoord = 0;  // 0 or 1 (after KHR_texture_transform's texCoord override)
+    TextureTransform transform;
+    bool present() const { return image >= 0; }
+};
+
+enum class AlphaMode : uint8_t { Opaque, Mask, Blend };
+
+struct Material {
+    std::string name;
+    glm::vec4 baseColorFactor{1.0f};
+    float metallicFactor = 1.0f;
+    float roughnessFactor = 1.0f;
+    glm::vec3 emissiveFactor{0.0f};
+    float emissiveStrength = 1.0f;  // KHR_materials_emissive_strength
+    float normalScale = 1.0f;
+    float occlusionStrength = 1.0f;
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    bool doubleSided = false;
+    bool unlit = false;  // KHR_materials_unlit
+    TextureRef baseColor;          // sRGB
+    TextureRef metallicRoughness;  // linear: G = roughness, B = metallic
+    TextureRef normal;             // linear, tangent space
+    TextureRef occlusion;          // linear, R channel
+    TextureRef emissive;           // sRGB
+};
+
+// One drawn primitive instance: an index range of Scene::indices (into Scene::vertices) with the
+// world transform of its node. Non-triangle-list topologies are converted to lists on load.
+struct Draw {
+    uint32_t firstIndex = 0;
+    uint32_t indexCount = 0;
+    uint32_t material = 0;  // index into Scene::materials (a default material is appended if needed)
+    glm::mat4 world{1.0f};
+    bool flipWinding = false;  // det(world) < 0: the front face is clockwise
+    Aabb bounds;               // world space
+};
+
+enum class LightType : uint8_t { Directional, Point, Spot };
+
+// KHR_lights_punctual, in world space. Units: candela (point/spot), lux (directional).
+struct Light {
+    LightType type = LightType::Point;
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+    float range = 0.0f;  // 0 = infinite
+    float innerConeAngle = 0.0f;
+    float outerConeAngle = 0.7853982f;  // π/4
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // unit, the way the light shines
+};
+
+struct Camera {
+    std::string name;
+    bool perspective = true;
+    float yfov = 0.8f;         // radians (perspective)
+    float aspectRatio = 0.0f;  // 0: use the viewport's
+    float znear = 0.01f;
+    float zfar = 0.0f;         // 0: infinite
+    float xmag = 1.0f, ymag = 1.0f;  // orthographic half extents
+    glm::mat4 world{1.0f};     // camera-to-world (looks down its local −Z)
+};
+
+struct Scene {
+    std::string source;  // file path, or "built-in: NAME"
+    std::vector<Vertex> vertices;
+    std::vector<uint32_t> indices;
+    std::vector<Draw> draws;
+    std::vector<Material> materials;
+    std::vector<Image> images;
+    std::vector<Sampler> samplers;
+    std::vector<Light> lights;
+    std::vector<Camera> cameras;
+    Aabb bounds;  // world space, over all draws
+    std::vector<std::string> warnings;  // non-fatal problems met while loading
+};
+
+}  // namespace candela::scene
