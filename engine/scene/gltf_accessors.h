@@ -1,0 +1,42 @@
+#pragma once
+// Internal to the glTF loader: bounds-checked reading of bufferViews and accessors. Every byte range
+// is checked against its buffer with overflow-safe arithmetic before anything is read, so a
+// malformed file yields a UserError, never an out-of-bounds read.
+
+#include "scene/gltf_context.h"
+
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <initializer_list>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace tinygltf {
+class Model;
+}
+
+namespace candela::scene::gltf {
+
+// The bytes of bufferView `view` once it is known to lie inside its buffer. `what` names the
+// referrer in messages ("image 2"). The span borrows the model's buffer.
+std::span<const uint8_t> bufferViewBytes(const LoadContext& ctx, const tinygltf::Model& model, int view,
+                                         const std::string& what);
+
+// Reads accessor `accessor` as count × vec4 (components beyond the accessor's type are 0). `types`
+// lists the accepted accessor types (TINYGLTF_TYPE_VEC3, ...). Every glTF component type is read;
+// normalized integers map to [0, 1] or [-1, 1] as the specification says, other integers convert
+// to float unchanged (KHR_mesh_quantization). Sparse substitution is applied. An accessor without
+// a bufferView reads as zeros. `what` names the use in messages ("mesh 0 primitive 1 POSITION").
+std::vector<glm::vec4> readVectors(const LoadContext& ctx, const tinygltf::Model& model, int accessor,
+                                   std::initializer_list<int> types, const std::string& what);
+
+// Reads an index accessor: SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT (sparse allowed).
+std::vector<uint32_t> readIndices(const LoadContext& ctx, const tinygltf::Model& model, int accessor,
+                                  const std::string& what);
+
+// The `count` of accessor `accessor` after checking the index. Used to size vertex arrays.
+size_t accessorCount(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& what);
+
+}  // namespace candela::scene::gltf

@@ -1,0 +1,31 @@
+#pragma once
+// Internal to the glTF loader: reads a .gltf or .glb file into a tinygltf::Model, safely.
+// tinygltf 2.7 trusts the file more than we do, so this layer
+//  - validates the GLB container itself and hands tinygltf a re-packed, well-formed copy;
+//  - resolves every external URI itself (no absolute paths, no '..' leaving the model's folder,
+//    no URI schemes, no current-directory fallback);
+//  - receives URI images through its own image-loader callback, which checks the declared size with
+//    stbi_info_from_memory and keeps the encoded bytes; ImageTable decodes only the images that
+//    materials use. Images stored in bufferViews are not touched here (tinygltf does not
+//    range-check those bufferViews); ImageTable checks the view first.
+
+#include "scene/gltf_context.h"
+#include "scene/gltf_images.h"
+
+#include <tiny_gltf.h>
+
+#include <filesystem>
+#include <map>
+
+namespace candela::scene::gltf {
+
+struct ParsedFile {
+    tinygltf::Model model;
+    std::map<int, std::vector<uint8_t>> uriImages;  // glTF image index → encoded bytes, for URI images
+};
+
+// Parses `path` (JSON or GLB, told apart by content). Throws UserError via ctx for anything
+// malformed, missing or escaping the model's folder. tinygltf's warnings go to ctx.warn.
+ParsedFile parseGltfFile(const LoadContext& ctx, const std::filesystem::path& path, uint32_t maxImageDimension);
+
+}  // namespace candela::scene::gltf

@@ -1,0 +1,101 @@
+#include "scene/gltf_loader.h"
+
+#include "core/check.h"
+#include "scene/gltf_file.h"
+#include "scene/gltf_images.h"
+#include "scene/gltf_materials.h"
+#include "scene/gltf_nodes.h"
+
+#include <algorithm>
+#include <array>
+#include <new>
+#include <string_view>
+
+namespace candela::scene {
+namespace gltf {
+
+// A file with thousands of line primitives must not bury the first, informative warnings.
+constexpr size_t kMaxWarnings = 64;
+constexpr size_t kMaxMessageLength = 400;
+
+namespace {
+
+// Messages quote names and URIs from the file: keep them one line and of sane length.
+std::string printable(std::string text) {
+    for (char& c : text)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) c = '?';
+    if (text.size() > kMaxMessageLength) text = text.substr(0, kMaxMessageLength) + "...";
+    return text;
+}
+
+}  // namespace
+
+void LoadContext::fail(const std::string& problem) const { throw UserError(path + ": " + printable(problem)); }
+
+void LoadContext::warn(const std::string& text) const {
+    const std::string message = printable(text);
+    if (std::find(warnings->begin(), warnings->end(), message) != warnings->end()) return;
+    if (warnings->size() < kMaxWarnings) warnings->push_back(message);
+    else if (warnings->size() == kMaxWarnings) warnings->push_back("further warnings suppressed");
+}
+
+std::string label(const char* kind, int index, const std::string& name) {
+    std::string out = std::string(kind) + " " + std::to_string(index);
+    if (!name.empty()) out += " ('" + (name.size() > 64 ? name.substr(0, 64) + "..." : name) + "')";
+    return out;
+}
+
+}  // namespace gltf
+
+namespace {
+
+constexpr std::array<std::string_view, 5> kSupportedExtensions = {
+    "KHR_materials_emissive_strength", "KHR_texture_transform", "KHR_materials_unlit",
+    "KHR_lights_punctual", "KHR_mesh_quantization"};
+
+bool supported(const std::string& extension) {
+    return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), extension) != kSupportedExtensions.end();
+}
+
+void checkAsset(const gltf::LoadContext& ctx, const tinygltf::Model& model) {
+    const std::string& version = model.asset.version;
+    if (version.rfind("2.", 0) != 0) ctx.fail("unsupported glTF version '" + version + "' (expected 2.x)");
+    for (const std::string& extension : model.extensionsRequired)
+        if (!supported(extension)) ctx.fail("requires unsupported extension " + extension);
+    for (const std::string& extension : model.extensionsUsed)
+        if (!supported(extension) && std::find(model.extensionsRequired.begin(), model.extensionsRequired.end(),
+                                               extension) == model.extensionsRequired.end())
+            ctx.warn("extension " + extension + " is not supported (ignored)");
+    if (!model.animations.empty()) ctx.warn("animations are not supported (ignored)");
+    if (!model.skins.empty()) ctx.warn("skins are not supported (ignored; meshes drawn in bind pose)");
+    for (const tinygltf::Mesh& mesh : model.meshes)
+        for (const tinygltf::Primitive& primitive : mesh.primitives)
+            if (!primitive.targets.empty()) return ctx.warn("morph targets are not supported (ignored)");
+}
+
+void loadInto(const gltf::LoadContext& ctx, const std::filesystem::path& path, const LoadOptions& options,
+              Scene& scene) {
+    gltf::ParsedFile parsed = gltf::parseGltfFile(ctx, path, options.maxImageDimension);
+    const tinygltf::Model& model = parsed.model;
+    checkAsset(ctx, model);
+    gltf::loadSamplers(ctx, model, scene);
+    gltf::ImageTable images(ctx, model, std::move(parsed.uriImages), options.maxImageDimension, scene);
+    gltf::loadMaterials(ctx, model, images, scene);
+    gltf::loadNodes(ctx, model, scene);
+}
+
+}  // namespace
+
+Scene loadGltf(const std::filesystem::path& path, const LoadOptions& options) {
+    Scene scene;
+    scene.source = path.string();
+    const gltf::LoadContext ctx{path.string(), &scene.warnings};
+    try {
+        loadInto(ctx, path, options, scene);
+    } catch (const std::bad_alloc&) {
+        ctx.fail("out of memory");
+    }
+    return scene;
+}
+
+}  // namespace candela::scene

@@ -1,0 +1,38 @@
+#pragma once
+// Internal to the glTF loader: one mesh primitive → vertices and a triangle list in the Scene.
+
+#include "scene/gltf_context.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace tinygltf {
+class Model;
+}
+
+namespace candela::scene::gltf {
+
+struct PrimitiveGeometry {
+    bool drawable = false;  // false: skipped (points, lines, no POSITION, no triangles), with a warning
+    uint32_t firstIndex = 0;
+    uint32_t indexCount = 0;
+    Aabb bounds;  // local (mesh) space
+};
+
+// Reads primitive `primitive` of mesh `mesh` (both indices valid) and appends it to scene.vertices
+// and scene.indices as a triangle list, with absolute indices. Strips and fans are converted;
+// normals are computed flat when absent; tangents are generated (MikkTSpace) when `material` has a
+// normal texture and the primitive has no TANGENT, splitting vertices whose corners disagree.
+// Throws UserError (via ctx) on malformed data: out-of-range accessors or indices, non-finite
+// positions, attribute counts that differ from POSITION's.
+PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model& model, int mesh, int primitive,
+                                  const Material& material, Scene& scene);
+
+// Converts an index sequence of glTF topology `mode` (TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN)
+// to a triangle list with the winding the specification defines. Strip and fan triangles that
+// repeat an index (degenerate stitching) are dropped; a partial trailing list triangle is dropped.
+std::vector<uint32_t> toTriangleList(int mode, std::span<const uint32_t> indices);
+
+}  // namespace candela::scene::gltf

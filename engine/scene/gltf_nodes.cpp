@@ -1,0 +1,245 @@
+#include "scene/gltf_nodes.h"
+
+#include "scene/gltf_mesh.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace candela::scene::gltf {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+bool allFinite(const std::vector<double>& values) {
+    for (double v : values)
+        if (!std::isfinite(v)) return false;
+    return true;
+}
+
+glm::dmat4 localTransform(const LoadContext& ctx, const tinygltf::Node& node, const std::string& what) {
+    if (!node.matrix.empty()) {
+        if (node.matrix.size() != 16) ctx.fail(what + ": matrix must have 16 numbers");
+        if (!allFinite(node.matrix)) ctx.fail(what + ": matrix is not finite");
+        return glm::make_mat4(node.matrix.data());  // glTF matrices are column-major, as GLM's
+    }
+    glm::dmat4 m(1.0);
+    if (!allFinite(node.translation) || !allFinite(node.rotation) || !allFinite(node.scale))
+        ctx.fail(what + ": transform is not finite");
+    if (!node.translation.empty()) {
+        if (node.translation.size() != 3) ctx.fail(what + ": translation must have 3 numbers");
+        m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+    }
+    if (!node.rotation.empty()) {
+        if (node.rotation.size() != 4) ctx.fail(what + ": rotation must have 4 numbers");
+        // glTF stores quaternions as x, y, z, w.
+        glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+        const double length = glm::length(q);
+        if (length > 0.0) m *= glm::mat4_cast(q / length);
+    }
+    if (!node.scale.empty()) {
+        if (node.scale.size() != 3) ctx.fail(what + ": scale must have 3 numbers");
+        m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+    }
+    return m;
+}
+
+Aabb transformBounds(const Aabb& local, const glm::mat4& world) {
+    Aabb out;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
+                          (corner & 4) ? local.max.z : local.min.z);
+        out.extend(glm::vec3(world * glm::vec4(p, 1.0f)));
+    }
+    return out;
+}
+
+// glTF cameras ignore scale: keep rotation and translation so the view matrix is a rigid inverse.
+bool rigid(const glm::dmat4& world, glm::mat4& out) {
+    glm::dmat4 m = world;
+    for (int c = 0; c < 3; ++c) {
+        const double length = glm::length(glm::dvec3(m[c]));
+        if (!(length > 0.0) || !std::isfinite(length)) return false;
+        m[c] /= length;
+    }
+    out = glm::mat4(m);
+    return true;
+}
+
+class NodeWalker {
+public:
+    NodeWalker(const LoadContext& ctx, const tinygltf::Model& model, Scene& scene)
+        : mCtx(ctx), mModel(model), mScene(scene), mGltfMaterials(scene.materials.size()) {}
+
+    void walk(const std::vector<int>& roots) {
+        const size_t count = mModel.nodes.size();
+        std::vector<uint8_t> visited(count, 0), onPath(count, 0);
+        struct Item {
+            int node;
+            glm::dmat4 parent;
+            bool exit;
+        };
+        std::vector<Item> stack;
+        for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, glm::dmat4(1.0), false});
+        while (!stack.empty()) {
+            const Item item = stack.back();
+            stack.pop_back();
+            if (item.exit) {
+                onPath[size_t(item.node)] = 0;
+                continue;
+            }
+            if (item.node < 0 || size_t(item.node) >= count) mCtx.fail("node " + std::to_string(item.node) + " does not exist");
+            const tinygltf::Node& node = mModel.nodes[size_t(item.node)];
+            const std::string what = label("node", item.node, node.name);
+            if (onPath[size_t(item.node)]) mCtx.fail(what + ": cycle in the node hierarchy");
+            if (visited[size_t(item.node)])
+                mCtx.fail(what + ": reached twice (a node must have at most one parent and appear once in the scene)");
+            visited[size_t(item.node)] = onPath[size_t(item.node)] = 1;
+            const glm::dmat4 world = item.parent * localTransform(mCtx, node, what);
+            visit(node, what, world);
+            stack.push_back({item.node, glm::dmat4(1.0), true});
+            for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world, false});
+        }
+    }
+
+private:
+    void visit(const tinygltf::Node& node, const std::string& what, const glm::dmat4& world) {
+        if (node.mesh >= 0) addMesh(node.mesh, what, world);
+        if (node.camera >= 0) addCamera(node, what, world);
+        if (auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end()) addLight(it->second, what, world);
+    }
+
+    uint32_t materialIndex(int material, const std::string& what) {
+        if (material >= 0) {
+            if (size_t(material) >= mGltfMaterials) mCtx.fail(what + ": material " + std::to_string(material) + " does not exist");
+            return uint32_t(material);
+        }
+        if (mDefaultMaterial < 0) {
+            mDefaultMaterial = int(mScene.materials.size());
+            mScene.materials.push_back(Material{.name = "default"});
+        }
+        return uint32_t(mDefaultMaterial);
+    }
+
+    void addMesh(int meshIndex, const std::string& what, const glm::dmat4& world) {
+        if (size_t(meshIndex) >= mModel.meshes.size()) mCtx.fail(what + ": mesh " + std::to_string(meshIndex) + " does not exist");
+        const glm::mat4 worldF(world);
+        const bool flip = glm::determinant(glm::dmat3(world)) < 0.0;
+        const auto& primitives = mModel.meshes[size_t(meshIndex)].primitives;
+        for (size_t p = 0; p < primitives.size(); ++p) {
+            const uint32_t material = materialIndex(primitives[p].material, label("mesh", meshIndex) + " primitive " + std::to_string(p));
+            auto cached = mGeometry.find({meshIndex, int(p)});
+            if (cached == mGeometry.end())
+                cached = mGeometry.emplace(std::pair{meshIndex, int(p)},
+                                           appendPrimitive(mCtx, mModel, meshIndex, int(p), mScene.materials[material], mScene))
+                             .first;
+            const PrimitiveGeometry& geometry = cached->second;
+            if (!geometry.drawable) continue;
+            Draw draw{.firstIndex = geometry.firstIndex,
+                      .indexCount = geometry.indexCount,
+                      .material = material,
+                      .world = worldF,
+                      .flipWinding = flip,
+                      .bounds = transformBounds(geometry.bounds, worldF)};
+            mScene.bounds.extend(draw.bounds);
+            mScene.draws.push_back(draw);
+        }
+    }
+
+    void addCamera(const tinygltf::Node& node, const std::string& what, const glm::dmat4& world) {
+        if (size_t(node.camera) >= mModel.cameras.size()) mCtx.fail(what + ": camera " + std::to_string(node.camera) + " does not exist");
+        const tinygltf::Camera& source = mModel.cameras[size_t(node.camera)];
+        const std::string cameraWhat = label("camera", node.camera, source.name);
+        Camera camera;
+        camera.name = !source.name.empty() ? source.name : !node.name.empty() ? node.name : "camera " + std::to_string(node.camera);
+        if (!rigid(world, camera.world)) return mCtx.warn(cameraWhat + ": degenerate node transform, camera skipped");
+        bool valid = false;
+        if (source.type == "perspective") {
+            const auto& p = source.perspective;
+            camera.perspective = true;
+            camera.yfov = float(p.yfov);
+            camera.aspectRatio = float(p.aspectRatio);
+            camera.znear = float(p.znear);
+            camera.zfar = float(p.zfar);
+            valid = p.yfov > 0.0 && p.yfov < kPi && p.znear > 0.0 && p.aspectRatio >= 0.0 &&
+                    (p.zfar == 0.0 || p.zfar > p.znear) && std::isfinite(p.zfar) && std::isfinite(p.aspectRatio);
+        } else if (source.type == "orthographic") {
+            const auto& o = source.orthographic;
+            camera.perspective = false;
+            camera.xmag = float(o.xmag);
+            camera.ymag = float(o.ymag);
+            camera.znear = float(o.znear);
+            camera.zfar = float(o.zfar);
+            valid = o.xmag != 0.0 && o.ymag != 0.0 && o.znear >= 0.0 && o.zfar > o.znear && std::isfinite(o.xmag) &&
+                    std::isfinite(o.ymag) && std::isfinite(o.zfar);
+        }
+        if (!valid) return mCtx.warn(cameraWhat + ": invalid " + source.type + " parameters, camera skipped");
+        mScene.cameras.push_back(camera);
+    }
+
+    void addLight(const tinygltf::Value& extension, const std::string& what, const glm::dmat4& world) {
+        const tinygltf::Value& index = extension.Has("light") ? extension.Get("light") : tinygltf::Value();
+        const double i = index.IsNumber() ? index.GetNumberAsDouble() : -1.0;
+        if (!(i >= 0.0 && i < double(mModel.lights.size()) && i == std::floor(i)))
+            mCtx.fail(what + ": KHR_lights_punctual light index is missing or out of range");
+        const tinygltf::Light& source = mModel.lights[size_t(i)];
+        const std::string lightWhat = label("light", int(i), source.name);
+        Light light;
+        if (source.type == "directional") light.type = LightType::Directional;
+        else if (source.type == "point") light.type = LightType::Point;
+        else if (source.type == "spot") light.type = LightType::Spot;
+        else return mCtx.warn(lightWhat + ": unknown type '" + source.type + "', light skipped");
+        if (source.color.size() == 3 && allFinite(source.color))
+            light.color = glm::max(glm::vec3(float(source.color[0]), float(source.color[1]), float(source.color[2])), glm::vec3(0.0f));
+        else if (!source.color.empty())
+            mCtx.warn(lightWhat + ": color must be 3 finite numbers, using white");
+        if (!std::isfinite(source.intensity) || !std::isfinite(source.range) || !std::isfinite(source.spot.innerConeAngle) ||
+            !std::isfinite(source.spot.outerConeAngle))
+            mCtx.fail(lightWhat + ": parameters are not finite");
+        light.intensity = float(std::max(source.intensity, 0.0));
+        light.range = float(std::max(source.range, 0.0));
+        // 0 <= inner < outer <= π/2, as the extension requires.
+        light.outerConeAngle = float(std::clamp(source.spot.outerConeAngle, 1e-4, kPi / 2));
+        light.innerConeAngle = float(std::clamp(source.spot.innerConeAngle, 0.0, double(light.outerConeAngle) * 0.9999));
+        light.position = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+        const glm::dvec3 direction = glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0);
+        const double length = glm::length(direction);
+        light.direction = length > 0.0 && std::isfinite(length) ? glm::vec3(direction / length) : glm::vec3(0.0f, 0.0f, -1.0f);
+        mScene.lights.push_back(light);
+    }
+
+    const LoadContext& mCtx;
+    const tinygltf::Model& mModel;
+    Scene& mScene;
+    size_t mGltfMaterials;
+    int mDefaultMaterial = -1;
+    std::map<std::pair<int, int>, PrimitiveGeometry> mGeometry;  // (mesh, primitive) → converted once
+};
+
+}  // namespace
+
+void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, Scene& scene) {
+    std::vector<int> roots;
+    if (model.scenes.empty()) {
+        // No scene: draw every parentless node rather than nothing.
+        std::vector<uint8_t> isChild(model.nodes.size(), 0);
+        for (const tinygltf::Node& node : model.nodes)
+            for (int child : node.children)
+                if (child >= 0 && size_t(child) < model.nodes.size()) isChild[size_t(child)] = 1;
+        for (size_t i = 0; i < model.nodes.size(); ++i)
+            if (!isChild[i]) roots.push_back(int(i));
+        if (!model.nodes.empty()) ctx.warn("no scene defined: drawing every root node");
+    } else {
+        const int index = model.defaultScene >= 0 ? model.defaultScene : 0;
+        if (size_t(index) >= model.scenes.size()) ctx.fail("scene " + std::to_string(index) + " does not exist");
+        roots = model.scenes[size_t(index)].nodes;
+    }
+    NodeWalker(ctx, model, scene).walk(roots);
+}
+
+}  // namespace candela::scene::gltf

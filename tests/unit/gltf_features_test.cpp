@@ -1,0 +1,508 @@
+// One positive test per loader feature, each on a tiny glTF written by the test itself.
+#include "gltf_test_util.h"
+
+#include "scene/gltf_mesh.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace candela::scene::test {
+namespace {
+
+constexpr float kEps = 1e-6f;
+
+void expectVec(const glm::vec3& actual, const glm::vec3& expected, float eps = kEps) {
+    EXPECT_NEAR(actual.x, expected.x, eps);
+    EXPECT_NEAR(actual.y, expected.y, eps);
+    EXPECT_NEAR(actual.z, expected.z, eps);
+}
+
+bool hasWarning(const Scene& scene, const std::string& fragment) {
+    for (const std::string& w : scene.warnings)
+        if (w.find(fragment) != std::string::npos) return true;
+    return false;
+}
+
+// The vertices of draw `d`'s triangles, in index order.
+std::vector<Vertex> corners(const Scene& scene, size_t d = 0) {
+    std::vector<Vertex> out;
+    const Draw& draw = scene.draws.at(d);
+    for (uint32_t i = 0; i < draw.indexCount; ++i) out.push_back(scene.vertices.at(scene.indices.at(draw.firstIndex + i)));
+    return out;
+}
+
+TEST(GltfFeatures, TriangleInAllThreeContainers) {
+    TempDir dir;
+    GltfBuilder b;
+    b.addTriangle();
+    for (const fs::path& path : {b.writeGltf(dir / "a"), b.writeGlb(dir / "b"), b.writeEmbedded(dir / "c")}) {
+        SCOPED_TRACE(path.string());
+        const Scene scene = loadGltf(path);
+        EXPECT_EQ(scene.source, path.string());
+        ASSERT_EQ(scene.vertices.size(), 3u);
+        EXPECT_EQ(scene.indices, (std::vector<uint32_t>{0, 1, 2}));
+        ASSERT_EQ(scene.draws.size(), 1u);
+        EXPECT_EQ(scene.draws[0].indexCount, 3u);
+        EXPECT_FALSE(scene.draws[0].flipWinding);
+        ASSERT_EQ(scene.materials.size(), 1u);  // the appended default material
+        EXPECT_EQ(scene.materials[0].name, "default");
+        EXPECT_EQ(scene.draws[0].material, 0u);
+        expectVec(scene.vertices[1].position, {1, 0, 0});
+        expectVec(scene.vertices[2].normal, {0, 0, 1});
+        expectVec(scene.bounds.min, {0, 0, 0});
+        expectVec(scene.bounds.max, {1, 1, 0});
+        EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    }
+}
+
+TEST(GltfFeatures, StripAndFanIndexConversion) {
+    const std::vector<uint32_t> five = {0, 1, 2, 3, 4};
+    EXPECT_EQ(gltf::toTriangleList(kStrip, five), (std::vector<uint32_t>{0, 1, 2, 1, 3, 2, 2, 3, 4}));
+    EXPECT_EQ(gltf::toTriangleList(kFan, five), (std::vector<uint32_t>{1, 2, 0, 2, 3, 0, 3, 4, 0}));
+    EXPECT_EQ(gltf::toTriangleList(kTriangles, five), (std::vector<uint32_t>{0, 1, 2}));
+    // Stitching with repeated indices produces degenerate triangles, which are dropped.
+    EXPECT_EQ(gltf::toTriangleList(kStrip, std::vector<uint32_t>{0, 1, 2, 2, 3}), (std::vector<uint32_t>{0, 1, 2}));
+    EXPECT_TRUE(gltf::toTriangleList(kStrip, std::vector<uint32_t>{0, 1}).empty());
+    EXPECT_TRUE(gltf::toTriangleList(kFan, std::vector<uint32_t>{}).empty());
+}
+
+TEST(GltfFeatures, StripAndFanFilesKeepCounterClockwiseWinding) {
+    TempDir dir;
+    GltfBuilder b;
+    // A zig-zag strip and a fan of a unit square, all in the XY plane facing +Z; no normals, so the
+    // flat normals reveal each triangle's winding.
+    const int strip = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, 0}, "VEC3", 3);
+    const int fan = b.addFloats({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, "VEC3", 3);
+    const int m0 = b.addMesh({{"POSITION", strip}}, -1, -1, kStrip);
+    const int m1 = b.addMesh({{"POSITION", fan}}, b.addIndices({0, 1, 2, 3}), -1, kFan);
+    b.setScene({b.addNode({{"mesh", m0}}), b.addNode({{"mesh", m1}})});
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    ASSERT_EQ(scene.draws.size(), 2u);
+    EXPECT_EQ(scene.draws[0].indexCount, 9u);
+    EXPECT_EQ(scene.draws[1].indexCount, 6u);
+    for (size_t d = 0; d < 2; ++d)
+        for (const Vertex& v : corners(scene, d)) expectVec(v.normal, {0, 0, 1});
+}
+
+TEST(GltfFeatures, SparseAccessorsWithAndWithoutBufferView) {
+    TempDir dir;
+    GltfBuilder b;
+    const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
+    const int idx = b.addView(std::vector<uint8_t>{1, 0, 0, 0});
+    const int val = b.addView(std::vector<float>{5, 6, 7});
+    b.doc["accessors"][pos]["sparse"] = {{"count", 1}, {"indices", {{"bufferView", idx}, {"componentType", kUnsignedByte}}}, {"values", {{"bufferView", val}}}};
+    // TEXCOORD_0 with no bufferView: zeros, then one sparse value at vertex 2.
+    const int uv = b.addAccessor(-1, kFloat, 3, "VEC2");
+    const int uvIdx = b.addView(std::vector<uint32_t>{2});
+    const int uvVal = b.addView(std::vector<float>{0.5f, 0.25f});
+    b.doc["accessors"][uv]["sparse"] = {{"count", 1}, {"indices", {{"bufferView", uvIdx}, {"componentType", kUnsignedInt}}}, {"values", {{"bufferView", uvVal}}}};
+    b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}, {"TEXCOORD_0", uv}})}})});
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const std::vector<Vertex> v = corners(scene);
+    ASSERT_EQ(v.size(), 3u);
+    expectVec(v[0].position, {0, 0, 0});
+    expectVec(v[1].position, {5, 6, 7});
+    expectVec(v[2].position, {0, 1, 0});
+    EXPECT_EQ(v[0].uv0, glm::vec2(0.0f));
+    EXPECT_EQ(v[1].uv0, glm::vec2(0.0f));
+    EXPECT_EQ(v[2].uv0, glm::vec2(0.5f, 0.25f));
+}
+
+TEST(GltfFeatures, NormalizedIntegerTexcoordsAndColors) {
+    TempDir dir;
+    GltfBuilder b;
+    const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
+    // VEC2 of UNSIGNED_BYTE padded to a 4-byte stride, as vertex attributes must be.
+    const int uvView = b.addView(std::vector<uint8_t>{0, 0, 99, 99, 128, 255, 99, 99, 255, 64, 99, 99}, 4);
+    const int uv = b.addAccessor(uvView, kUnsignedByte, 3, "VEC2", true);
+    const int colorView = b.addView(std::vector<uint16_t>{65535, 0, 32768, 0, 0, 65535, 0, 0, 0, 0, 0, 0}, 8);
+    const int color = b.addAccessor(colorView, kUnsignedShort, 3, "VEC3", true);
+    b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}, {"TEXCOORD_0", uv}, {"COLOR_0", color}})}})});
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const std::vector<Vertex> v = corners(scene);
+    ASSERT_EQ(v.size(), 3u);
+    EXPECT_EQ(v[0].uv0, glm::vec2(0.0f, 0.0f));
+    EXPECT_FLOAT_EQ(v[1].uv0.x, 128.0f / 255.0f);
+    EXPECT_FLOAT_EQ(v[1].uv0.y, 1.0f);
+    EXPECT_FLOAT_EQ(v[2].uv0.x, 1.0f);
+    EXPECT_FLOAT_EQ(v[2].uv0.y, 64.0f / 255.0f);
+    EXPECT_FLOAT_EQ(v[0].color.r, 1.0f);
+    EXPECT_FLOAT_EQ(v[0].color.b, 32768.0f / 65535.0f);
+    EXPECT_FLOAT_EQ(v[0].color.a, 1.0f);  // VEC3 colour: opaque
+    EXPECT_FLOAT_EQ(v[1].color.g, 1.0f);
+    EXPECT_EQ(v[2].color, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+}
+
+TEST(GltfFeatures, MeshQuantizationIntegersAndNodeScale) {
+    TempDir dir;
+    GltfBuilder b;
+    b.doc["extensionsUsed"] = {"KHR_mesh_quantization"};
+    b.doc["extensionsRequired"] = {"KHR_mesh_quantization"};
+    // SHORT positions (not normalized) padded to 8 bytes; the node scale dequantizes them.
+    const int posView = b.addView(std::vector<int16_t>{0, 0, 0, 0, 1000, 0, 0, 0, 0, -2000, 0, 0}, 8);
+    const int pos = b.addAccessor(posView, kShort, 3, "VEC3");
+    // Normalized BYTE normals (VEC3 padded to 4): 127 → 1, −128 → −1 (clamped).
+    const int nView = b.addView(std::vector<int8_t>{0, 0, 127, 0, 0, 0, -128, 0, 0, 127, 0, 0}, 4);
+    const int normal = b.addAccessor(nView, kByte, 3, "VEC3", true);
+    const int uvView = b.addView(std::vector<int16_t>{-32768, 32767, 0, 16384, 0, 0});
+    const int uv = b.addAccessor(uvView, kShort, 3, "VEC2", true);
+    const int mesh = b.addMesh({{"POSITION", pos}, {"NORMAL", normal}, {"TEXCOORD_0", uv}}, b.addIndices({0, 1, 2}));
+    b.setScene({b.addNode({{"mesh", mesh}, {"scale", {0.001, 0.001, 0.001}}})});
+    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    EXPECT_TRUE(scene.warnings.empty());
+    const std::vector<Vertex> v = corners(scene);
+    ASSERT_EQ(v.size(), 3u);
+    expectVec(v[1].position, {1000, 0, 0});
+    expectVec(v[2].position, {0, -2000, 0});
+    expectVec(v[0].normal, {0, 0, 1});
+    expectVec(v[1].normal, {0, 0, -1});
+    expectVec(v[2].normal, {0, 1, 0});
+    EXPECT_FLOAT_EQ(v[0].uv0.x, -1.0f);
+    EXPECT_FLOAT_EQ(v[0].uv0.y, 1.0f);
+    EXPECT_FLOAT_EQ(v[1].uv0.y, 16384.0f / 32767.0f);
+    expectVec(scene.bounds.min, {0, -2, 0}, 1e-5f);
+    expectVec(scene.bounds.max, {1, 0, 0}, 1e-5f);
+}
+
+TEST(GltfFeatures, NegativeScaleFlipsWinding) {
+    TempDir dir;
+    GltfBuilder b;
+    b.addTriangle();
+    const int a = b.addNode({{"mesh", 0}, {"scale", {-1, 1, 1}}});
+    const int c = b.addNode({{"mesh", 0}, {"scale", {-1, -1, 1}}});  // two mirrors: a rotation
+    const int d = b.addNode({{"children", {b.addNode({{"mesh", 0}})}}, {"scale", {1, 1, -2}}});  // inherited
+    b.setScene({0, a, c, d});
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    ASSERT_EQ(scene.draws.size(), 4u);
+    EXPECT_FALSE(scene.draws[0].flipWinding);
+    EXPECT_TRUE(scene.draws[1].flipWinding);
+    EXPECT_FALSE(scene.draws[2].flipWinding);
+    EXPECT_TRUE(scene.draws[3].flipWinding);
+    // One primitive, converted once and shared by all four draws.
+    EXPECT_EQ(scene.vertices.size(), 3u);
+    for (const Draw& draw : scene.draws) EXPECT_EQ(draw.firstIndex, 0u);
+    expectVec(scene.draws[1].bounds.min, {-1, 0, 0});
+    expectVec(scene.draws[1].bounds.max, {0, 1, 0});
+}
+
+TEST(GltfFeatures, MatrixAndTrsGiveTheSameWorldTransform) {
+    TempDir dir;
+    GltfBuilder b;
+    b.addTriangle();
+    const glm::dquat q = glm::angleAxis(0.7, glm::normalize(glm::dvec3(1, 2, 3)));
+    const glm::dmat4 m = glm::translate(glm::dmat4(1), glm::dvec3(1, -2, 3)) * glm::mat4_cast(q) *
+                         glm::scale(glm::dmat4(1), glm::dvec3(2, 3, 4));
+    std::vector<double> matrix(16);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) matrix[size_t(c * 4 + r)] = m[c][r];
+    const int trs = b.addNode({{"mesh", 0}, {"translation", {1, -2, 3}}, {"rotation", {q.x, q.y, q.z, q.w}}, {"scale", {2, 3, 4}}});
+    const int mat = b.addNode({{"mesh", 0}, {"matrix", matrix}});
+    // A child composes with its parent: parent translates, child rotates 90° about Z.
+    const int child = b.addNode({{"mesh", 0}, {"rotation", {0, 0, std::sqrt(0.5), std::sqrt(0.5)}}});
+    const int parent = b.addNode({{"translation", {10, 0, 0}}, {"children", {child}}});
+    b.setScene({trs, mat, parent});
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    ASSERT_EQ(scene.draws.size(), 3u);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) {
+            EXPECT_NEAR(scene.draws[0].world[c][r], float(m[c][r]), 1e-5f);
+            EXPECT_NEAR(scene.draws[1].world[c][r], float(m[c][r]), 1e-5f);
+        }
+    const glm::vec4 p = scene.draws[2].world * glm::vec4(1, 0, 0, 1);  // (1,0,0) → (0,1,0) → (10,1,0)
+    expectVec(glm::vec3(p), {10, 1, 0}, 1e-6f);
+}
+
+TEST(GltfFeatures, MissingNormalsAreFlatPerTriangle) {
+    TempDir dir;
+    GltfBuilder b;
+    // Two triangles sharing edge (0,1): one in the XY plane facing +Z, one in the XZ plane facing +Y.
+    const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}, "VEC3", 3);
+    const int mesh = b.addMesh({{"POSITION", pos}}, b.addIndices({0, 1, 2, 1, 0, 3}));
+    b.setScene({b.addNode({{"mesh", mesh}})});
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    EXPECT_EQ(scene.vertices.size(), 6u);  // de-indexed: each triangle owns its corners
+    const std::vector<Vertex> v = corners(scene);
+    ASSERT_EQ(v.size(), 6u);
+    for (int i = 0; i < 3; ++i) expectVec(v[size_t(i)].normal, {0, 0, 1});
+    for (int i = 3; i < 6; ++i) expectVec(v[size_t(i)].normal, {0, 1, 0});
+}
+
+TEST(GltfFeatures, MaterialFactorsModesAndExtensions) {
+    TempDir dir;
+    GltfBuilder b;
+    b.addTriangle();
+    b.doc["extensionsUsed"] = {"KHR_materials_emissive_strength", "KHR_materials_unlit"};
+    b.doc["materials"] = Json::array({
+        {{"name", "m0"}, {"alphaMode", "MASK"}, {"alphaCutoff", 0.3}, {"doubleSided", true},
+         {"emissiveFactor", {0.1, 0.2, 0.3}},
+         {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.25, 1, 0.75}}, {"metallicFactor", 0.2}, {"roughnessFactor", 0.6}}},
+         {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 5.0}}}, {"KHR_materials_unlit", Json::object()}}}},
+        {{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"metallicFactor", 7}}}}});
+    b.doc["meshes"][0]["primitives"][0]["material"] = 1;
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    ASSERT_EQ(scene.materials.size(), 2u);  // no default needed
+    const Material& m = scene.materials[0];
+    EXPECT_EQ(m.name, "m0");
+    EXPECT_EQ(m.alphaMode, AlphaMode::Mask);
+    EXPECT_FLOAT_EQ(m.alphaCutoff, 0.3f);
+    EXPECT_TRUE(m.doubleSided);
+    EXPECT_TRUE(m.unlit);
+    EXPECT_FLOAT_EQ(m.emissiveStrength, 5.0f);
+    EXPECT_EQ(m.baseColorFactor, glm::vec4(0.5f, 0.25f, 1.0f, 0.75f));
+    EXPECT_FLOAT_EQ(m.metallicFactor, 0.2f);
+    EXPECT_FLOAT_EQ(m.roughnessFactor, 0.6f);
+    expectVec(m.emissiveFactor, {0.1f, 0.2f, 0.3f});
+    EXPECT_FALSE(m.baseColor.present());
+    const Material& n = scene.materials[1];
+    EXPECT_EQ(n.name, "material 1");
+    EXPECT_EQ(n.alphaMode, AlphaMode::Blend);
+    EXPECT_FALSE(n.unlit);
+    EXPECT_FALSE(n.doubleSided);
+    EXPECT_FLOAT_EQ(n.emissiveStrength, 1.0f);
+    EXPECT_FLOAT_EQ(n.metallicFactor, 1.0f);  // 7 clamped to the allowed [0, 1]
+    EXPECT_EQ(scene.draws[0].material, 1u);
+}
+
+// A triangle whose material uses `png` for all five textures, plus samplers.
+GltfBuilder fiveTextureModel(const Bytes& png) {
+    GltfBuilder b;
+    const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
+    const int uv = b.addFloats({0, 0, 1, 0, 0, 1}, "VEC2", 2);
+    b.doc["images"] = Json::array({{{"bufferView", b.addView(png.data(), png.size())}, {"mimeType", "image/png"}, {"name", "tex"}}});
+    b.doc["samplers"] = Json::array({{{"magFilter", 9728}, {"minFilter", 9984}, {"wrapS", 33071}, {"wrapT", 33648}},
+                                     {{"minFilter", 9729}},
+                                     Json::object()});
+    b.doc["textures"] = Json::array({{{"source", 0}, {"sampler", 0}}, {{"source", 0}, {"sampler", 1}}, {{"source", 0}}});
+    b.doc["materials"] = Json::array({{
+        {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicRoughnessTexture", {{"index", 1}}}}},
+        {"normalTexture", {{"index", 2}, {"scale", 0.5}}},
+        {"occlusionTexture", {{"index", 1}, {"strength", 0.25}}},
+        {"emissiveTexture", {{"index", 2}, {"texCoord", 1},
+                             {"extensions", {{"KHR_texture_transform", {{"offset", {0.5, 0.25}}, {"rotation", 0.5}, {"scale", {2, 3}}, {"texCoord", 0}}}}}}},
+    }});
+    b.doc["extensionsUsed"] = {"KHR_texture_transform"};
+    const int mesh = b.addMesh({{"POSITION", pos}, {"TEXCOORD_0", uv}}, b.addIndices({0, 1, 2}), 0);
+    b.setScene({b.addNode({{"mesh", mesh}})});
+    return b;
+}
+
+TEST(GltfFeatures, TexturesSamplersAndTextureTransform) {
+    TempDir dir;
+    const Scene scene = loadGltf(fiveTextureModel(smallPng({10, 20, 30, 40})).writeGlb(dir.path()));
+    // One image used as sRGB (base colour, emissive) and linear (the rest): two entries.
+    ASSERT_EQ(scene.images.size(), 2u);
+    const Material& m = scene.materials.at(0);
+    const Image& srgb = scene.images.at(size_t(m.baseColor.image));
+    const Image& linear = scene.images.at(size_t(m.metallicRoughness.image));
+    EXPECT_TRUE(srgb.srgb);
+    EXPECT_FALSE(linear.srgb);
+    EXPECT_EQ(m.emissive.image, m.baseColor.image);
+    EXPECT_EQ(m.normal.image, m.metallicRoughness.image);
+    EXPECT_EQ(m.occlusion.image, m.metallicRoughness.image);
+    EXPECT_EQ(srgb.name, "tex");
+    EXPECT_EQ(srgb.width, 2u);
+    EXPECT_EQ(srgb.height, 2u);
+    ASSERT_EQ(srgb.rgba8.size(), 16u);
+    EXPECT_EQ(srgb.rgba8, linear.rgba8);
+    EXPECT_EQ((std::vector<uint8_t>(srgb.rgba8.begin(), srgb.rgba8.begin() + 8)), (std::vector<uint8_t>{10, 20, 30, 40, 255, 255, 255, 255}));
+
+    EXPECT_EQ(m.baseColor.sampler, 0);
+    EXPECT_EQ(m.metallicRoughness.sampler, 1);
+    EXPECT_EQ(m.normal.sampler, -1);
+    EXPECT_FLOAT_EQ(m.normalScale, 0.5f);
+    EXPECT_FLOAT_EQ(m.occlusionStrength, 0.25f);
+    // KHR_texture_transform, with its texCoord overriding the textureInfo's.
+    EXPECT_EQ(m.emissive.texCoord, 0u);
+    EXPECT_EQ(m.emissive.transform.offset, glm::vec2(0.5f, 0.25f));
+    EXPECT_FLOAT_EQ(m.emissive.transform.rotation, 0.5f);
+    EXPECT_EQ(m.emissive.transform.scale, glm::vec2(2.0f, 3.0f));
+    EXPECT_TRUE(m.baseColor.transform.identity());
+
+    ASSERT_EQ(scene.samplers.size(), 3u);
+    const Sampler& s0 = scene.samplers[0];
+    EXPECT_EQ(s0.magFilter, Filter::Nearest);
+    EXPECT_EQ(s0.minFilter, Filter::Nearest);
+    EXPECT_EQ(s0.mipFilter, Filter::Nearest);
+    EXPECT_TRUE(s0.mipmaps);
+    EXPECT_EQ(s0.wrapU, Wrap::ClampToEdge);
+    EXPECT_EQ(s0.wrapV, Wrap::MirroredRepeat);
+    EXPECT_EQ(scene.samplers[1].minFilter, Filter::Linear);
+    EXPECT_FALSE(scene.samplers[1].mipmaps);  // LINEAR: no mip sampling
+    EXPECT_TRUE(scene.samplers[2].mipmaps);   // undefined: trilinear default
+    EXPECT_EQ(scene.samplers[2].wrapU, Wrap::Repeat);
+}
+
+TEST(GltfFeatures, SixteenBitPngRoundedTo8Bits) {
+    TempDir dir;
+    // RGBA16, big-endian samples: 0x8080 → 128, 0x00FF → 1, 0xFFFF → 255, 0x7F80 → 127 (round(v / 257)).
+    Bytes pixels = {0x80, 0x80, 0x00, 0xFF, 0xFF, 0xFF, 0x7F, 0x80};
+    const Scene scene = loadGltf(fiveTextureModel(makePng(1, 1, 16, 6, pixels)).writeGlb(dir.path()));
+    ASSERT_EQ(scene.images.size(), 2u);
+    EXPECT_EQ(scene.images[0].rgba8, (std::vector<uint8_t>{128, 1, 255, 127}));
+}
+
+TEST(GltfFeatures, ExternalImageFilesAndDotSegmentsInsideTheFolder) {
+    TempDir dir;
+    GltfBuilder b = fiveTextureModel(smallPng());
+    b.doc["images"][0] = {{"uri", "textures/../textures/my%20tex.png"}};
+    writeFile(dir / "textures" / "my tex.png", smallPng({1, 2, 3, 4}));
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    ASSERT_EQ(scene.images.size(), 2u);
+    EXPECT_EQ(scene.images[0].rgba8[0], 1);
+    EXPECT_EQ(scene.images[0].name, "textures/../textures/my%20tex.png");
+}
+
+TEST(GltfFeatures, ImagesBehindOptionalExtensionsAreNotDecoded) {
+    // EXT_texture_webp-style file: texture.source is the PNG fallback, the WebP image (which
+    // stb_image cannot read) is only named by the extension; a second texture has no source at all.
+    TempDir dir;
+    GltfBuilder b = fiveTextureModel(smallPng());
+    writeFile(dir / "pic.webp", std::string("RIFF....WEBPVP8 not really"));
+    writeFile(dir / "ok.png", smallPng({7, 7, 7, 255}));
+    b.doc["images"] = Json::array({{{"uri", "pic.webp"}}, {{"uri", "ok.png"}}});
+    b.doc["textures"] = Json::array({{{"source", 1}, {"extensions", {{"EXT_texture_webp", {{"source", 0}}}}}},
+                                     {{"extensions", {{"KHR_texture_basisu", {{"source", 0}}}}}},
+                                     {{"source", 1}}});
+    b.doc["extensionsUsed"] = {"EXT_texture_webp", "KHR_texture_basisu", "KHR_texture_transform"};
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const Material& m = scene.materials.at(0);
+    ASSERT_TRUE(m.baseColor.present());
+    EXPECT_EQ(scene.images.at(size_t(m.baseColor.image)).rgba8[0], 7);
+    EXPECT_FALSE(m.metallicRoughness.present());  // texture 1: no PNG/JPEG source
+    EXPECT_TRUE(hasWarning(scene, "material 0 metallicRoughnessTexture: texture 1 has no PNG/JPEG source (ignored)"));
+    EXPECT_TRUE(hasWarning(scene, "extension EXT_texture_webp is not supported (ignored)"));
+    EXPECT_TRUE(hasWarning(scene, "extension KHR_texture_basisu is not supported (ignored)"));
+    EXPECT_EQ(scene.images.size(), 2u);  // image 1 as sRGB and as linear; the WebP never decoded
+}
+
+TEST(GltfFeatures, LightsInWorldSpace) {
+    TempDir dir;
+    GltfBuilder b;
+    b.addTriangle();
+    b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    b.doc["extensions"]["KHR_lights_punctual"]["lights"] = Json::array({
+        {{"type", "directional"}, {"color", {1, 0.5, 0.25}}, {"intensity", 3}},
+        {{"type", "point"}, {"intensity", 100}, {"range", 5}},
+        {{"type", "spot"}, {"spot", {{"innerConeAngle", 0.1}, {"outerConeAngle", 0.4}}}},
+    });
+    auto light = [](int i) { return Json{{"KHR_lights_punctual", {{"light", i}}}}; };
+    // Rotated 90° about +Y: local −Z becomes world −X.
+    const int sun = b.addNode({{"extensions", light(0)}, {"rotation", {0, std::sqrt(0.5), 0, std::sqrt(0.5)}}});
+    const int bulb = b.addNode({{"extensions", light(1)}, {"translation", {1, 2, 3}}});
+    const int spotChild = b.addNode({{"extensions", light(2)}, {"translation", {0, 1, 0}}});
+    // A scaled, translated parent: positions scale, directions stay unit.
+    const int parent = b.addNode({{"translation", {0, 0, 5}}, {"scale", {2, 2, 2}}, {"rotation", {std::sqrt(0.5), 0, 0, std::sqrt(0.5)}}, {"children", {spotChild}}});
+    b.setScene({0, sun, bulb, parent});
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    ASSERT_EQ(scene.lights.size(), 3u);
+    EXPECT_EQ(scene.lights[0].type, LightType::Directional);
+    expectVec(scene.lights[0].direction, {-1, 0, 0});
+    expectVec(scene.lights[0].color, {1, 0.5f, 0.25f});
+    EXPECT_FLOAT_EQ(scene.lights[0].intensity, 3.0f);
+    EXPECT_EQ(scene.lights[1].type, LightType::Point);
+    expectVec(scene.lights[1].position, {1, 2, 3});
+    EXPECT_FLOAT_EQ(scene.lights[1].range, 5.0f);
+    EXPECT_FLOAT_EQ(scene.lights[1].intensity, 100.0f);
+    const Light& spot = scene.lights[2];
+    EXPECT_EQ(spot.type, LightType::Spot);
+    // Parent rotates 90° about +X: local (0,1,0)·2 → (0,0,2), plus (0,0,5); −Z → +Y.
+    expectVec(spot.position, {0, 0, 7}, 1e-5f);
+    expectVec(spot.direction, {0, 1, 0}, 1e-6f);
+    EXPECT_FLOAT_EQ(spot.innerConeAngle, 0.1f);
+    EXPECT_FLOAT_EQ(spot.outerConeAngle, 0.4f);
+}
+
+TEST(GltfFeatures, CamerasInWorldSpaceWithoutScale) {
+    TempDir dir;
+    GltfBuilder b;
+    b.addTriangle();
+    b.doc["cameras"] = Json::array({
+        {{"type", "perspective"}, {"name", "persp"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}, {"aspectRatio", 1.5}}}},
+        {{"type", "orthographic"}, {"orthographic", {{"xmag", 2}, {"ymag", 3}, {"znear", 0.5}, {"zfar", 50}}}},
+    });
+    const int c0 = b.addNode({{"camera", 0}, {"translation", {1, 2, 3}}, {"scale", {4, 4, 4}}, {"rotation", {0, std::sqrt(0.5), 0, std::sqrt(0.5)}}});
+    const int c1 = b.addNode({{"camera", 1}, {"name", "orthoNode"}});
+    b.setScene({0, c0, c1});
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    ASSERT_EQ(scene.cameras.size(), 2u);
+    const Camera& p = scene.cameras[0];
+    EXPECT_EQ(p.name, "persp");
+    EXPECT_TRUE(p.perspective);
+    EXPECT_FLOAT_EQ(p.yfov, 0.5f);
+    EXPECT_FLOAT_EQ(p.aspectRatio, 1.5f);
+    EXPECT_FLOAT_EQ(p.znear, 0.1f);
+    EXPECT_FLOAT_EQ(p.zfar, 0.0f);  // absent: infinite
+    expectVec(glm::vec3(p.world[3]), {1, 2, 3});
+    expectVec(glm::vec3(p.world[0]), {0, 0, -1});  // scale removed, rotation kept
+    expectVec(-glm::vec3(p.world[2]), {-1, 0, 0});  // looks down local −Z → world −X
+    const Camera& o = scene.cameras[1];
+    EXPECT_EQ(o.name, "orthoNode");
+    EXPECT_FALSE(o.perspective);
+    EXPECT_FLOAT_EQ(o.xmag, 2.0f);
+    EXPECT_FLOAT_EQ(o.ymag, 3.0f);
+    EXPECT_FLOAT_EQ(o.zfar, 50.0f);
+}
+
+TEST(GltfFeatures, PointsAndLinesSkippedWithWarnings) {
+    TempDir dir;
+    GltfBuilder b;
+    b.addTriangle();
+    const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}, "VEC3", 3);
+    b.doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", pos}}}, {"mode", kPoints}});
+    b.doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", pos}}}, {"mode", kLines}});
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    EXPECT_EQ(scene.draws.size(), 1u);
+    EXPECT_TRUE(hasWarning(scene, "mesh 0 primitive 1: POINTS skipped"));
+    EXPECT_TRUE(hasWarning(scene, "mesh 0 primitive 2: LINES skipped"));
+    EXPECT_EQ(scene.warnings.size(), 2u);
+}
+
+TEST(GltfFeatures, OptionalUnsupportedExtensionWarnsAndLoads) {
+    TempDir dir;
+    GltfBuilder b;
+    b.addTriangle();
+    b.doc["extensionsUsed"] = {"EXT_made_up", "KHR_texture_transform"};
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    EXPECT_EQ(scene.draws.size(), 1u);
+    EXPECT_EQ(scene.warnings, (std::vector<std::string>{"extension EXT_made_up is not supported (ignored)"}));
+}
+
+TEST(GltfFeatures, DefaultSceneAndSceneless) {
+    TempDir dir;
+    GltfBuilder b;
+    b.addTriangle();
+    const int second = b.addNode({{"mesh", 0}, {"translation", {5, 0, 0}}});
+    b.doc["scenes"] = Json::array({{{"nodes", {0}}}, {{"nodes", {second}}}});
+    b.doc["scene"] = 1;
+    Scene scene = loadGltf(b.writeGltf(dir / "a"));
+    ASSERT_EQ(scene.draws.size(), 1u);
+    expectVec(scene.bounds.min, {5, 0, 0});
+    // Without scenes every parentless node is drawn, with a warning.
+    b.doc.erase("scenes");
+    b.doc.erase("scene");
+    scene = loadGltf(b.writeGltf(dir / "b"));
+    EXPECT_EQ(scene.draws.size(), 2u);
+    expectVec(scene.bounds.min, {0, 0, 0});
+    expectVec(scene.bounds.max, {6, 1, 0});
+    EXPECT_TRUE(hasWarning(scene, "no scene defined"));
+}
+
+TEST(GltfFeatures, UnindexedPrimitiveAndNonFiniteNormalRepaired) {
+    TempDir dir;
+    GltfBuilder b;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1}, "VEC3", 3);
+    const int nrm = b.addFloats({0, 0, 2, 0, 0, 1, nan, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3", 3);
+    b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}, {"NORMAL", nrm}})}})});
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    EXPECT_EQ(scene.indices, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5}));
+    expectVec(scene.vertices[0].normal, {0, 0, 1});  // normalized
+    expectVec(scene.vertices[2].normal, {0, 0, 1});  // NaN replaced
+    EXPECT_TRUE(hasWarning(scene, "1 non-finite attribute values replaced by defaults"));
+}
+
+}  // namespace
+}  // namespace candela::scene::test
