@@ -1,0 +1,35 @@
+#include "passes/brdf_probe_pass.h"
+
+#include "graph/graph_executor.h"
+
+namespace candela::passes {
+
+using namespace graph;
+
+BrdfProbePass::BrdfProbePass(vk::Context& context) : mPipeline(vk::Pipeline::compute(context, "brdf_probe.comp")) {}
+
+TextureId BrdfProbePass::add(RenderGraph& graph, float intensity) const {
+    struct Data {
+        TextureId probe;
+    };
+    const shading::BrdfProbeParams params{.intensity = intensity};
+    const Data& data = graph.addPass<Data>(
+        "brdf_probe", PassType::Compute,
+        [&](PassBuilder& builder, Data& d) {
+            const TextureId probe = builder.createTexture("brdf_probe", {.width = kWidth, .height = kHeight, .format = kFormat});
+            d.probe = builder.write(probe, Usage::StorageWrite, WriteMode::Discard);
+        },
+        [this, params](const Data& d, PassContext& ctx) {
+            const VkDescriptorSet set = vk::DescriptorWriter(mPipeline.program(), 0)
+                                            .image("outImage", ctx.view(d.probe), VK_IMAGE_LAYOUT_GENERAL)
+                                            .commit(ctx.context(), ctx.descriptors());
+            mPipeline.bind(ctx.cmd());
+            vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, mPipeline.layout(), 0, 1, &set, 0, nullptr);
+            mPipeline.pushConstants(ctx.cmd(), &params, sizeof(params));
+            const uint32_t group = CANDELA_BRDF_PROBE_GROUP_SIZE;
+            vkCmdDispatch(ctx.cmd(), (kWidth + group - 1) / group, (kHeight + group - 1) / group, 1);
+        });
+    return data.probe;
+}
+
+}  // namespace candela::passes

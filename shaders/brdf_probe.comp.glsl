@@ -1,0 +1,25 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// The BRDF probe: one invocation per combination of the grid in shared/brdf_probe.h evaluates the
+// forward pass's brdfTimesCosine (shared/brdf.h) and stores rgb = f · N·L · intensity and
+// a = the combination's linear index (y · width + x), so a test can check every value against its
+// double-precision reference and that both sides enumerated the same combination.
+#include "shared/brdf.h"
+#include "shared/brdf_probe.h"
+
+layout(local_size_x = CANDELA_BRDF_PROBE_GROUP_SIZE, local_size_y = CANDELA_BRDF_PROBE_GROUP_SIZE) in;
+
+layout(set = 0, binding = 0, rgba32f) uniform writeonly image2D outImage;
+
+layout(push_constant) uniform Push {
+    BrdfProbeParams params;
+};
+
+void main() {
+    uvec2 texel = gl_GlobalInvocationID.xy;
+    if (any(greaterThanEqual(texel, uvec2(CANDELA_BRDF_PROBE_WIDTH, CANDELA_BRDF_PROBE_HEIGHT)))) return;
+    BrdfProbeSample s = brdfProbeSample(texel);
+    vec3 radiance = brdfTimesCosine(s.N, s.V, s.L, s.baseColor, s.metallic, s.perceptualRoughness, s.model);
+    float index = float(texel.y * CANDELA_BRDF_PROBE_WIDTH + texel.x);
+    imageStore(outImage, ivec2(texel), vec4(radiance * params.intensity, index));
+}

@@ -1,0 +1,126 @@
+#pragma once
+// Double-precision CPU reference of the forward pass's BRDFs (shaders/shared/brdf.h), written
+// independently of that file in the textbook form, with the same documented clamps so that the two
+// can be compared value for value:
+//   - perceptual roughness clamped to [0.045, 1] (a = roughness²);
+//   - N·L ≤ 0 → 0 (light behind the surface);
+//   - N·V clamped to ≥ 1e-4 (grazing and back-facing views);
+//   - half vector H = normalize(V + L); when |V + L| ≤ 1e-6 (V = −L) H = N and no specular term;
+//   - N·H and V·H clamped to [0, 1];
+//   - Blinn-Phong shininess 2 / max(r⁴, 1e-4) − 2 with r the clamped roughness.
+// Header-only, used by tests/unit/brdf_test.cpp and tests/gpu/brdf_probe_test.cpp.
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+namespace candela::test::reference {
+
+inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kMinRoughness = 0.045;
+inline constexpr double kMinNoV = 1e-4;
+inline constexpr double kMinHalfVectorLength = 1e-6;
+inline constexpr double kMinBlinnPhongRoughness4 = 1e-4;
+
+// Shading models, numbered like CANDELA_SHADING_* in shaders/shared/brdf.h.
+enum Model : uint32_t {
+    kPbr = 0,             // Cook-Torrance, height-correlated Smith-GGX visibility
+    kPbrSchlickGgx = 1,   // Cook-Torrance, Schlick-GGX geometry with k = (r+1)²/8
+    kBlinnPhong = 2,      // the original project's Blinn-Phong
+};
+
+inline double clampRoughness(double perceptualRoughness) { return std::clamp(perceptualRoughness, kMinRoughness, 1.0); }
+
+// GGX / Trowbridge-Reitz: D = a² / (π ((N·H)² (a² − 1) + 1)²).
+inline double distributionGgx(double NoH, double a) {
+    const double a2 = a * a;
+    const double d = NoH * NoH * (a2 - 1.0) + 1.0;
+    return a2 / (kPi * d * d);
+}
+
+// Height-correlated Smith-GGX visibility:
+// V = 0.5 / (N·L √((N·V)² (1 − a²) + a²) + N·V √((N·L)² (1 − a²) + a²)).
+inline double visibilitySmithGgxCorrelated(double NoV, double NoL, double a) {
+    const double a2 = a * a;
+    return 0.5 / (NoL * std::sqrt(NoV * NoV * (1.0 - a2) + a2) + NoV * std::sqrt(NoL * NoL * (1.0 - a2) + a2));
+}
+
+// Schlick-GGX: G1(n) = n / (n (1 − k) + k), k = (r + 1)² / 8, G = G1(N·V) G1(N·L),
+// V = G / (4 N·V N·L). Preconditions: N·V > 0, N·L > 0.
+inline double visibilitySchlickGgx(double NoV, double NoL, double roughness) {
+    const double k = (roughness + 1.0) * (roughness + 1.0) / 8.0;
+    const auto g1 = [k](double n) { return n / (n * (1.0 - k) + k); };
+    return g1(NoV) * g1(NoL) / (4.0 * NoV * NoL);
+}
+
+// Fresnel-Schlick: F = F0 + (1 − F0)(1 − V·H)⁵.
+inline glm::dvec3 fresnelSchlick(double VoH, const glm::dvec3& f0) {
+    return f0 + (glm::dvec3(1.0) - f0) * std::pow(1.0 - VoH, 5.0);
+}
+
+// f(V, L) · (N·L) for unit N, V, L (V towards the viewer, L towards the light).
+inline glm::dvec3 brdfTimesCosine(const glm::dvec3& N, const glm::dvec3& V, const glm::dvec3& L,
+                                  const glm::dvec3& baseColor, double metallic, double perceptualRoughness,
+                                  uint32_t model) {
+    const double NoL = glm::dot(N, L);
+    if (NoL <= 0.0) return glm::dvec3(0.0);
+    const double NoV = std::max(glm::dot(N, V), kMinNoV);
+    const glm::dvec3 sum = V + L;
+    const double sumLength = glm::length(sum);
+    const bool hasHalfVector = sumLength > kMinHalfVectorLength;
+    const double specularWeight = hasHalfVector ? 1.0 : 0.0;
+    const glm::dvec3 H = hasHalfVector ? sum / sumLength : N;
+    const double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0);
+    const double VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
+    const double roughness = clampRoughness(perceptualRoughness);
+
+    if (model == kBlinnPhong) {
+        const double shininess = 2.0 / std::max(std::pow(roughness, 4.0), kMinBlinnPhongRoughness4) - 2.0;
+        return (baseColor + glm::dvec3(std::pow(NoH, shininess) * specularWeight)) * NoL;
+    }
+    const double a = roughness * roughness;
+    const glm::dvec3 f0 = glm::dvec3(0.04) * (1.0 - metallic) + baseColor * metallic;
+    const glm::dvec3 F = fresnelSchlick(VoH, f0);
+    const double D = distributionGgx(NoH, a);
+    const double Vis = model == kPbrSchlickGgx ? visibilitySchlickGgx(NoV, NoL, roughness)
+                                               : visibilitySmithGgxCorrelated(NoV, NoL, a);
+    const glm::dvec3 specular = F * D * Vis * specularWeight;
+    const glm::dvec3 diffuse = (glm::dvec3(1.0) - F) * (1.0 - metallic) * baseColor / kPi;
+    return (diffuse + specular) * NoL;
+}
+
+// The metric of the BRDF comparisons: relative error |got − expected| / |expected| where
+// |expected| ≥ floor, absolute error |got − expected| below it (where relative error means nothing).
+// Keeps the maxima and a description of the input of each, for the test's messages.
+struct ErrorStats {
+    double floor = 1e-6;
+    double maxRelative = 0.0;
+    double maxAbsolute = 0.0;
+    std::string worstRelative;  // description of the input with the largest relative error
+    std::string worstAbsolute;
+    uint64_t compared = 0;
+    uint64_t relativeCount = 0;  // values at or above the floor
+
+    // `describe()` returns a description of the input; called only when a maximum changes.
+    template <class Describe>
+    void add(double got, double expected, Describe&& describe) {
+        ++compared;
+        const double difference = std::abs(got - expected);
+        if (std::abs(expected) >= floor) {
+            ++relativeCount;
+            const double relative = difference / std::abs(expected);
+            if (relative > maxRelative || std::isnan(relative)) {
+                maxRelative = std::isnan(relative) ? INFINITY : relative;
+                worstRelative = describe();
+            }
+        } else if (difference > maxAbsolute || std::isnan(difference)) {
+            maxAbsolute = std::isnan(difference) ? INFINITY : difference;
+            worstAbsolute = describe();
+        }
+    }
+};
+
+}  // namespace candela::test::reference
