@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <functional>
 #include <map>
 
@@ -61,13 +62,48 @@ uint32_t parseDimension(const std::string& flag, const std::string& value) {
     return static_cast<uint32_t>(number);
 }
 
+float parseNumber(const std::string& flag, const std::string& value) {
+    size_t used = 0;
+    float number = 0.0f;
+    try {
+        number = std::stof(value, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (value.empty() || used != value.size() || !std::isfinite(number))
+        throw UserError(flag + ": expected a number, got '" + value + "'");
+    return number;
+}
+
+std::array<float, 3> parseTriple(const std::string& flag, const std::string& value) {
+    std::array<float, 3> out{};
+    size_t start = 0;
+    for (int i = 0; i < 3; ++i) {
+        const size_t comma = value.find(',', start);
+        if ((i < 2) != (comma != std::string::npos))
+            throw UserError(flag + ": expected three comma-separated numbers, got '" + value + "'");
+        out[i] = parseNumber(flag, value.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        start = comma + 1;
+    }
+    return out;
+}
+
+std::array<float, 3> parseHexColor(const std::string& flag, const std::string& value) {
+    const bool ok = value.size() == 7 && value[0] == '#' &&
+                    std::all_of(value.begin() + 1, value.end(), [](unsigned char c) { return std::isxdigit(c); });
+    if (!ok) throw UserError(flag + ": expected #rrggbb, got '" + value + "'");
+    std::array<float, 3> out{};
+    for (int i = 0; i < 3; ++i) out[i] = static_cast<float>(std::stoi(value.substr(1 + 2 * i, 2), nullptr, 16)) / 255.0f;
+    return out;
+}
+
 Command parseCommandLine(const std::vector<std::string>& args) {
     Command command;
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") return command;
     const std::string& name = args[0];
     FlagTable table;
-    if (name == "render") {
-        command.kind = Command::Kind::Render;
+    if (name == "render" || name == "bench") {
+        command.kind = name == "render" ? Command::Kind::Render : Command::Kind::Bench;
         RenderOptions& o = command.render;
         addCommon(table, o.common);
         table.withValue["--out"] = [&](const std::string& v) { o.out = v; };
@@ -76,11 +112,45 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         table.withValue["--graph-dot"] = [&](const std::string& v) { o.graphDot = v; };
         table.withValue["--graph-json"] = [&](const std::string& v) { o.graphJson = v; };
         table.withValue["--disable-pass"] = [&](const std::string& v) { o.disabledPasses.push_back(v); };
+        table.withValue["--scene"] = [&](const std::string& v) { o.scene = v; };
+        table.withValue["--camera"] = [&](const std::string& v) { o.camera = parseDimension("--camera", v); };
+        table.withValue["--camera-orbit"] = [&](const std::string& v) { o.cameraOrbit = parseTriple("--camera-orbit", v); };
+        table.withValue["--target"] = [&](const std::string& v) { o.target = parseTriple("--target", v); };
+        table.withValue["--fov"] = [&](const std::string& v) {
+            o.fovDegrees = parseNumber("--fov", v);
+            if (o.fovDegrees <= 0.0f || o.fovDegrees >= 180.0f)
+                throw UserError("--fov: expected degrees between 0 and 180, got '" + v + "'");
+        };
+        table.withValue["--shading"] = [&](const std::string& v) {
+            if (v != "pbr" && v != "pbr-schlick-ggx" && v != "blinn-phong")
+                throw UserError("--shading: unknown model '" + v + "' (pbr, pbr-schlick-ggx, blinn-phong)");
+            o.shading = v;
+        };
+        table.withValue["--tonemap"] = [&](const std::string& v) {
+            if (v != "pbr-neutral" && v != "aces" && v != "agx" && v != "reinhard" && v != "linear")
+                throw UserError("--tonemap: unknown operator '" + v + "' (pbr-neutral, aces, agx, reinhard, linear)");
+            o.tonemap = v;
+        };
+        table.withValue["--exposure"] = [&](const std::string& v) { o.exposureEv = parseNumber("--exposure", v); };
+        table.withValue["--background"] = [&](const std::string& v) {
+            if (v != "transparent" && v != "skybox") parseHexColor("--background", v);
+            o.background = v;
+        };
+        table.switches["--dither"] = [&] { o.dither = true; };
+        table.switches["--no-default-lights"] = [&] { o.defaultLights = false; };
+        table.switches["--explain"] = [&] { o.explain = true; };
+        if (command.kind == Command::Kind::Bench) {
+            table.withValue["--frames"] = [&](const std::string& v) {
+                o.frames = parseDimension("--frames", v);
+                if (o.frames == 0) throw UserError("--frames: need at least 1 frame");
+            };
+            table.switches["--json"] = [&] { o.json = true; };
+        }
     } else if (name == "info") {
         command.kind = Command::Kind::Info;
         addCommon(table, command.info.common);
     } else {
-        throw UserError("unknown command '" + name + "' (commands: render, info; see candela --help)");
+        throw UserError("unknown command '" + name + "' (commands: render, bench, info; see candela --help)");
     }
     bool help = false;
     table.switches["--help"] = [&] { help = true; };
@@ -94,6 +164,8 @@ std::string usageText() {
 
 usage:
   candela render [options]   render a frame headless and write it to a file
+  candela bench [options]    render N frames and report frame and pass times, also as ratios to a
+                             calibration pass run in the same process
   candela info [options]     list the Vulkan devices, the one chosen and why, and the features enabled
 
 render options:
@@ -103,6 +175,25 @@ render options:
   --graph-dot FILE      write the compiled render graph as Graphviz dot
   --graph-json FILE     write the compiled render graph as JSON (passes, resources, barriers, timings)
   --disable-pass NAME   switch a pass off (repeatable); passes that lose their input are culled too
+  --scene FILE          a glTF 2.0 scene (.gltf or .glb) [the built-in 7x7 sphere grid]
+  --camera INDEX        use the scene's glTF camera INDEX
+  --camera-orbit T,P,R  orbit camera: azimuth T and polar angle P in degrees, distance R in metres
+                        (eye = target + R(sin P sin T, cos P, sin P cos T); R <= 0 frames the scene)
+                        [0,90,0: from +Z, framing the scene bounds]
+  --target X,Y,Z        point the orbit camera looks at [the centre of the scene bounds]
+  --fov DEGREES         vertical field of view of the orbit camera [45]
+  --shading MODEL       pbr (height-correlated Smith GGX), pbr-schlick-ggx (the original project's
+                        geometry term) or blinn-phong (the original project's first shader) [pbr]
+  --tonemap OP          pbr-neutral, aces (Hill's RRT+ODT fit), agx, reinhard or linear [pbr-neutral]
+  --exposure EV         exposure in stops [0]
+  --background BG       transparent (alpha 0 in PNG), #rrggbb, or skybox (needs an environment) [#262626]
+  --dither              dither the 8-bit output
+  --no-default-lights   a scene without punctual lights normally gets a default key and fill light
+  --explain             print which passes and shader variants were left out, and why
+
+bench options: the render options that choose the scene, camera and shading, and
+  --frames N            frames to measure after warm-up [20]
+  --json                machine-readable output
 
 common options:
   --device SEL          device index or case-insensitive name substring (see candela info)

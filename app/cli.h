@@ -2,6 +2,7 @@
 // Command-line parsing for the `candela` executable. Pure (no Vulkan), unit-tested.
 // Every malformed argument throws candela::UserError with a one-line message naming the flag.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,6 +17,20 @@ struct CommonOptions {
 
 struct RenderOptions {
     CommonOptions common;
+    std::string scene;                // --scene FILE (.gltf/.glb); empty: the built-in sphere grid
+    std::optional<uint32_t> camera;   // --camera INDEX (glTF camera)
+    std::optional<std::array<float, 3>> cameraOrbit;  // --camera-orbit THETA,PHI,RADIUS
+    std::optional<std::array<float, 3>> target;       // --target X,Y,Z
+    float fovDegrees = 45.0f;         // --fov DEGREES (vertical)
+    std::string shading = "pbr";      // --shading pbr|pbr-schlick-ggx|blinn-phong
+    std::string tonemap = "pbr-neutral";  // --tonemap pbr-neutral|aces|agx|reinhard|linear
+    float exposureEv = 0.0f;          // --exposure EV
+    std::string background = "#262626";  // --background transparent|#rrggbb|skybox
+    bool dither = false;              // --dither
+    bool defaultLights = true;        // --no-default-lights turns off the key/fill lights of light-less scenes
+    bool explain = false;             // --explain
+    uint32_t frames = 20;             // bench: --frames N
+    bool json = false;                // bench: --json
     std::string out = "candela.png";  // --out FILE (.png, .exr, .pfm)
     uint32_t width = 1280;            // --width W
     uint32_t height = 720;            // --height H
@@ -29,8 +44,8 @@ struct InfoOptions {
 };
 
 struct Command {
-    enum class Kind { Help, Render, Info } kind = Kind::Help;
-    RenderOptions render;
+    enum class Kind { Help, Render, Info, Bench } kind = Kind::Help;
+    RenderOptions render;  // render and bench
     InfoOptions info;
 };
 
@@ -42,5 +57,11 @@ std::string usageText();
 
 // Parses a decimal integer in [0, 2^32): "--width" and "abc" → UserError naming the flag.
 uint32_t parseDimension(const std::string& flag, const std::string& value);
+// Parses a finite decimal number; anything else → UserError naming the flag.
+float parseNumber(const std::string& flag, const std::string& value);
+// Parses "A,B,C" (three finite numbers).
+std::array<float, 3> parseTriple(const std::string& flag, const std::string& value);
+// Parses "#rrggbb" into sRGB-encoded components in [0,1].
+std::array<float, 3> parseHexColor(const std::string& flag, const std::string& value);
 
 }  // namespace candela::app

@@ -1,12 +1,15 @@
 // The `candela` executable: parses the command line and runs a subcommand. Every error reaches the
 // user as one line on stderr and a non-zero exit code.
 
-#include "cli.h"
+#include "commands.h"
 #include "core/check.h"
 #include "core/log.h"
 #include "graph/graph_export.h"
 #include "io/image_file.h"
 #include "renderer.h"
+#include "scene/builtin_scenes.h"
+#include "scene/gltf_loader.h"
+#include "shared/tonemap.h"
 #include "vk/context.h"
 #include "vk/device_select.h"
 
@@ -15,17 +18,49 @@
 #include <iostream>
 
 namespace candela::app {
-namespace {
 
 vk::ContextDesc contextDesc(const CommonOptions& common) {
     log::setVerbose(common.verbose);
     return {.validation = common.validate, .deviceSelector = common.device};
 }
 
+scene::Scene loadScene(const RenderOptions& options) {
+    scene::Scene scene = options.scene.empty() ? scene::makeSphereGrid() : scene::loadGltf(options.scene);
+    for (const std::string& warning : scene.warnings) log::warn(options.scene + ": " + warning);
+    return scene;
+}
+
+namespace {
+
 void writeText(const std::string& path, const std::string& text) {
     std::ofstream out(path, std::ios::binary);
     out << text;
     if (!out) throw UserError(path + ": cannot write");
+}
+
+}  // namespace
+
+RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& scene) {
+    RenderSettings settings{.width = options.width, .height = options.height, .scene = &scene};
+    settings.disabledPasses = options.disabledPasses;
+    settings.defaultLights = options.defaultLights;
+    if (options.camera) settings.camera.gltfCamera = *options.camera;
+    if (options.cameraOrbit) settings.camera.orbit = glm::vec3((*options.cameraOrbit)[0], (*options.cameraOrbit)[1], (*options.cameraOrbit)[2]);
+    if (options.target) settings.camera.target = glm::vec3((*options.target)[0], (*options.target)[1], (*options.target)[2]);
+    settings.camera.fovYDegrees = options.fovDegrees;
+    settings.shading = options.shading == "blinn-phong"       ? passes::ShadingModel::BlinnPhong
+                       : options.shading == "pbr-schlick-ggx" ? passes::ShadingModel::PbrSchlickGgx
+                                                              : passes::ShadingModel::Pbr;
+    settings.tonemap.op = *passes::parseTonemap(options.tonemap);  // validated by the parser
+    settings.tonemap.exposureEv = options.exposureEv;
+    settings.tonemap.dither = options.dither;
+    if (options.background == "skybox")
+        throw UserError("--background skybox: there is no environment to show (image-based lighting is not in yet)");
+    if (options.background != "transparent") {
+        const std::array<float, 3> srgb = parseHexColor("--background", options.background);
+        settings.tonemap.background = shading::srgbDecode(glm::vec3(srgb[0], srgb[1], srgb[2]));
+    }
+    return settings;
 }
 
 int runRender(const RenderOptions& options) {
@@ -34,14 +69,16 @@ int runRender(const RenderOptions& options) {
     for (const std::string& path : {options.graphDot, options.graphJson})
         if (!path.empty()) io::checkWritable(path);
 
+    const scene::Scene scene = loadScene(options);
+    RenderSettings settings = renderSettings(options, scene);
+    settings.floatOutput = io::isFloatFormat(format);
+
     vk::Context context(contextDesc(options.common));
     Renderer renderer(context);
-    const RenderSettings settings{.width = options.width,
-                                  .height = options.height,
-                                  .floatOutput = io::isFloatFormat(format),
-                                  .disabledPasses = options.disabledPasses};
     renderer.validateSettings(settings);
     const CapturedFrame frame = renderer.capture(settings);
+    if (options.explain)
+        for (const std::string& line : renderer.explain()) std::printf("%s\n", line.c_str());
 
     switch (format) {
         case io::ImageFileFormat::Png: io::writePng(options.out, frame.width, frame.height, frame.rgba8); break;
@@ -68,10 +105,13 @@ int runRender(const RenderOptions& options) {
     return 0;
 }
 
+namespace {
 std::string apiVersion(uint32_t v) {
     return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) + "." +
            std::to_string(VK_API_VERSION_PATCH(v));
 }
+
+}  // namespace
 
 int runInfo(const InfoOptions& options) {
     vk::Context context(contextDesc(options.common));
@@ -106,7 +146,6 @@ int runInfo(const InfoOptions& options) {
     return 0;
 }
 
-}  // namespace
 }  // namespace candela::app
 
 int main(int argc, char** argv) {
@@ -117,6 +156,7 @@ int main(int argc, char** argv) {
             case app::Command::Kind::Help: std::fputs(app::usageText().c_str(), stdout); return 0;
             case app::Command::Kind::Render: return app::runRender(command.render);
             case app::Command::Kind::Info: return app::runInfo(command.info);
+            case app::Command::Kind::Bench: return app::runBench(command.render);
         }
     } catch (const UserError& e) {
         log::error(e.what());

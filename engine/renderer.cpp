@@ -23,7 +23,7 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 Renderer::Renderer(vk::Context& context, uint32_t framesInFlight)
     : mContext(context), mFrames(context, framesInFlight), mPattern(context), mEncode(context, kLdrFormat),
-      mGraph(std::make_unique<RenderGraph>()) {
+      mForward(context), mTonemap(context), mGraph(std::make_unique<RenderGraph>()) {
     for (uint32_t i = 0; i < mFrames.slotCount(); ++i) mTransients.push_back(std::make_unique<TransientPool>(context));
 }
 
@@ -45,8 +45,91 @@ uint32_t Renderer::transientRebuilds() const {
     return total;
 }
 
+std::vector<scene::Light> Renderer::defaultLights() {
+    scene::Light key, fill;
+    key.type = fill.type = scene::LightType::Directional;
+    key.intensity = 3.0f;  // lux
+    key.direction = glm::normalize(glm::vec3(-0.5f, -0.7f, -0.6f));
+    fill.intensity = 1.0f;
+    fill.direction = glm::normalize(glm::vec3(0.7f, -0.2f, -0.5f));
+    fill.color = glm::vec3(0.9f, 0.95f, 1.0f);
+    return {key, fill};
+}
+
+void Renderer::prepareScene(const RenderSettings& settings) {
+    if (!settings.scene) return;
+    const bool addLights = settings.defaultLights && settings.scene->lights.empty();
+    if (settings.scene == mUploaded && addLights == mUploadedDefaultLights) return;
+    // The previous scene's buffers may still be used by a frame in flight: wait first.
+    mFrames.waitIdle();
+    // Software rasterizers pay ~1000× for anisotropic filtering (minutes per frame on lavapipe):
+    // keep it for GPUs.
+    const bool cpuDevice = mContext.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    mGpuScene = std::make_unique<scene::GpuScene>(mContext, *settings.scene,
+                                                  addLights ? defaultLights() : std::vector<scene::Light>{},
+                                                  cpuDevice ? 1.0f : 8.0f);
+    mForward.setScene(*mGpuScene);
+    mUploaded = settings.scene;
+    mUploadedDefaultLights = addLights;
+}
+
+void Renderer::applyToggles(RenderGraph& graph, const std::vector<std::string>& disabledPasses) {
+    for (const std::string& name : disabledPasses) {
+        if (!graph.findPass(name)) {
+            std::string names;
+            for (const PassDecl& p : graph.declaration().passes) names += (names.empty() ? "" : ", ") + p.name;
+            throw UserError("cannot disable pass '" + name + "': no such pass (passes: " + names + ")");
+        }
+        graph.setPassEnabled(name, false);
+    }
+}
+
+FrameTiming Renderer::execute(RenderGraph& graph, const ImportBindings& imports, bool emitBarriers) {
+    graph.compile({.memoryRequirements = deviceMemoryRequirements(mContext, graph.declaration())});
+    vk::FrameSlot& slot = mFrames.begin();
+    TransientPool& transients = *mTransients[mFrames.currentSlot()];
+    transients.realize(graph.declaration(), graph.compiled());
+    const ExecutionRecord record = executeGraph({.context = mContext,
+                                                 .graph = graph,
+                                                 .imports = imports,
+                                                 .transients = transients,
+                                                 .cmd = slot.cmd,
+                                                 .descriptors = *slot.descriptors,
+                                                 .timestamps = slot.timestamps.get(),
+                                                 .emitBarriers = emitBarriers});
+    FrameTiming timing;
+    const auto submitted = std::chrono::steady_clock::now();
+    mFrames.submit();
+    mFrames.waitCurrent();
+    timing.submitWaitMs = msSince(submitted);
+    timing.timings = record.timings(*slot.timestamps);
+    return timing;
+}
+
+FrameTiming Renderer::renderFrame(const RenderSettings& settings) {
+    validateSettings(settings);
+    prepareScene(settings);
+    mGraph = std::make_unique<RenderGraph>();
+    RenderGraph& graph = *mGraph;
+    const TextureId output = settings.scene ? buildSceneGraph(graph, settings) : buildPatternGraph(graph, settings);
+    // Without a readback the frame's result is kept alive as an exported output, as a swapchain
+    // image would be.
+    graph.exportTexture(output);
+    applyToggles(graph, settings.disabledPasses);
+    return execute(graph, ImportBindings{}, settings.emitBarriers);
+}
+
+FrameTiming Renderer::renderCalibration(uint32_t width, uint32_t height) {
+    validateSettings({.width = width, .height = height});
+    if (!mCalibration) mCalibration = std::make_unique<passes::CalibrationPass>(mContext);
+    mGraph = std::make_unique<RenderGraph>();
+    mCalibration->add(*mGraph, width, height);
+    return execute(*mGraph, ImportBindings{}, true);
+}
+
 CapturedFrame Renderer::capture(const RenderSettings& settings) {
     validateSettings(settings);
+    prepareScene(settings);
     const VkDeviceSize texel = settings.floatOutput ? 8 : 4;  // RGBA16F or RGBA8
     const VkDeviceSize bytes = texel * settings.width * settings.height;
     if (!mReadback || mReadback.size() != bytes)
@@ -55,50 +138,24 @@ CapturedFrame Renderer::capture(const RenderSettings& settings) {
                                           .memory = vk::MemoryUsage::Readback,
                                           .name = "readback"});
 
-    vk::FrameSlot& slot = mFrames.begin();
     mGraph = std::make_unique<RenderGraph>();
     RenderGraph& graph = *mGraph;
-    const BufferId readback =
-        graph.importBuffer("readback", {.size = bytes}, ResourceState{}, passes::hostReadState());
-    const TextureId hdr = mPattern.add(graph, settings.width, settings.height, settings.exposure);
-    const TextureId ldr = graph.createTexture("ldr", {.width = settings.width, .height = settings.height, .format = kLdrFormat});
-    const TextureId encoded = mEncode.add(graph, hdr, ldr);
-    passes::addReadbackPass(graph, settings.floatOutput ? hdr : encoded, readback);
-    for (const std::string& name : settings.disabledPasses) {
-        if (!graph.findPass(name)) {
-            std::string names;
-            for (const PassDecl& p : graph.declaration().passes) names += (names.empty() ? "" : ", ") + p.name;
-            throw UserError("cannot disable pass '" + name + "': no such pass (passes: " + names + ")");
-        }
-        graph.setPassEnabled(name, false);
-    }
-
-    graph.compile({.memoryRequirements = deviceMemoryRequirements(mContext, graph.declaration())});
-    TransientPool& transients = *mTransients[mFrames.currentSlot()];
-    transients.realize(graph.declaration(), graph.compiled());
+    const BufferId readback = graph.importBuffer("readback", {.size = bytes}, ResourceState{}, passes::hostReadState());
+    const TextureId output = settings.scene ? buildSceneGraph(graph, settings) : buildPatternGraph(graph, settings);
+    passes::addReadbackPass(graph, settings.floatOutput ? mHdr : output, readback);
+    applyToggles(graph, settings.disabledPasses);
     ImportBindings imports;
     imports.bind(readback, mReadback.handle());
-    const ExecutionRecord record = executeGraph({.context = mContext,
-                                                 .graph = graph,
-                                                 .imports = imports,
-                                                 .transients = transients,
-                                                 .cmd = slot.cmd,
-                                                 .descriptors = *slot.descriptors,
-                                                 .timestamps = slot.timestamps.get(),
-                                                 .emitBarriers = settings.emitBarriers});
+    const FrameTiming timing = execute(graph, imports, settings.emitBarriers);
 
     CapturedFrame frame;
     frame.width = settings.width;
     frame.height = settings.height;
-    const auto submitted = std::chrono::steady_clock::now();
-    mFrames.submit();
-    mFrames.waitCurrent();
-    frame.submitWaitMs = msSince(submitted);
-    frame.timings = record.timings(*slot.timestamps);
-
-    const bool producedOutput = graph.compiled().passes[*graph.findPass("readback")].cullReason == CullReason::None;
-    if (!producedOutput) throw UserError("nothing to capture: the readback pass was culled (" +
-                                         graph.compiled().passes[*graph.findPass("readback")].cullDetail + ")");
+    frame.submitWaitMs = timing.submitWaitMs;
+    frame.timings = timing.timings;
+    const PassInfo& readbackInfo = graph.compiled().passes[*graph.findPass("readback")];
+    if (readbackInfo.cullReason != CullReason::None)
+        throw UserError("nothing to capture: the readback pass was culled (" + readbackInfo.cullDetail + ")");
     const auto readStart = std::chrono::steady_clock::now();
     mReadback.invalidate();
     const size_t texels = static_cast<size_t>(settings.width) * settings.height;
@@ -112,6 +169,57 @@ CapturedFrame Renderer::capture(const RenderSettings& settings) {
     }
     frame.readbackMs = msSince(readStart);
     return frame;
+}
+
+TextureId Renderer::buildPatternGraph(RenderGraph& graph, const RenderSettings& settings) {
+    mHdr = mPattern.add(graph, settings.width, settings.height, settings.patternExposure);
+    const TextureId ldr = graph.createTexture("ldr", {.width = settings.width, .height = settings.height, .format = kLdrFormat});
+    return mEncode.add(graph, mHdr, ldr);
+}
+
+TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& settings) {
+    const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
+    const scene::ViewSetup view = resolveView(*settings.scene, settings.camera, aspect);
+    const passes::ForwardPass::Output forward =
+        mForward.add(graph, settings.width, settings.height, view, settings.shading);
+    // UNORM target: the tonemap shader encodes sRGB itself, which also lets it dither.
+    const TextureId ldr = graph.createTexture(
+        "ldr", {.width = settings.width, .height = settings.height, .format = VK_FORMAT_R8G8B8A8_UNORM});
+    mHdr = forward.hdr;
+    return mTonemap.add(graph, forward.hdr, ldr, settings.tonemap);
+}
+
+scene::ViewSetup Renderer::resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect) {
+    if (camera.gltfCamera) {
+        if (*camera.gltfCamera >= scene.cameras.size())
+            throw UserError("--camera " + std::to_string(*camera.gltfCamera) + ": the scene has " +
+                            std::to_string(scene.cameras.size()) + " cameras");
+        return scene::cameraView(scene.cameras[*camera.gltfCamera], aspect);
+    }
+    const glm::vec3 angles = camera.orbit.value_or(glm::vec3(0.0f, 90.0f, 0.0f));
+    scene::OrbitCamera orbit = scene::OrbitCamera::framing(scene.bounds, aspect, angles.x, angles.y, camera.fovYDegrees);
+    if (angles.z > 0.0f) {
+        orbit.radius = angles.z;
+        orbit.znear = angles.z * 1e-3f;
+    }
+    if (camera.target) orbit.target = *camera.target;
+    return orbit.view(aspect);
+}
+
+std::vector<std::string> Renderer::explain() const {
+    std::vector<std::string> lines;
+    const graph::GraphDecl& decl = mGraph->declaration();
+    for (uint32_t p = 0; p < decl.passes.size(); ++p) {
+        const graph::PassInfo& info = mGraph->compiled().passes[p];
+        if (info.cullReason != graph::CullReason::None)
+            lines.push_back("left out: pass '" + decl.passes[p].name + "' (" + info.cullDetail + ")");
+    }
+    if (mUploaded && mGraph->findPass("forward")) {
+        if (mUploadedDefaultLights)
+            lines.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
+        for (const std::string& line : mForward.explanation()) lines.push_back(line);
+    }
+    return lines;
 }
 
 }  // namespace candela

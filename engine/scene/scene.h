@@ -12,7 +12,7 @@
 
 namespace candela::scene {
 
-// One vertex of the flattened scene (all primitives share one array). 80 bytes.
+// One vertex of the flattened scene (all primitives share one array). 72 bytes.
 struct Vertex {
     glm::vec3 position{0.0f};
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
@@ -21,7 +21,7 @@ struct Vertex {
     glm::vec2 uv1{0.0f};
     glm::vec4 color{1.0f};  // COLOR_0, linear; white when absent
 };
-static_assert(sizeof(Vertex) == 80);
+static_assert(sizeof(Vertex) == 72);
 
 struct Aabb {
     glm::vec3 min{1e30f};

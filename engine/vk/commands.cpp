@@ -2,6 +2,9 @@
 
 #include "core/check.h"
 
+#include <algorithm>
+#include <initializer_list>
+
 namespace candela::vk {
 
 Fence createFence(Context& context, bool signaled) {
@@ -69,6 +72,60 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
                                       .imageMemoryBarrierCount = 1,
                                       .pImageMemoryBarriers = &barrier};
     vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
+namespace {
+VkImageMemoryBarrier2 mipBarrier(VkImage image, VkImageAspectFlags aspect, uint32_t mip, uint32_t mipCount,
+                                 uint32_t layer, VkPipelineStageFlags2 srcStages, VkAccessFlags2 srcAccess,
+                                 VkImageLayout oldLayout, VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess,
+                                 VkImageLayout newLayout) {
+    return {.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
+            .srcStageMask = srcStages,
+            .srcAccessMask = srcAccess,
+            .dstStageMask = dstStages,
+            .dstAccessMask = dstAccess,
+            .oldLayout = oldLayout,
+            .newLayout = newLayout,
+            .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+            .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+            .image = image,
+            .subresourceRange = {aspect, mip, mipCount, layer, 1}};
+}
+
+void barriers(VkCommandBuffer cmd, std::initializer_list<VkImageMemoryBarrier2> list) {
+    const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+                                      .imageMemoryBarrierCount = static_cast<uint32_t>(list.size()),
+                                      .pImageMemoryBarriers = list.begin()};
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+}  // namespace
+
+void recordMipChain(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkExtent3D baseExtent,
+                    uint32_t baseMip, uint32_t mipLevels, uint32_t layer, VkImageLayout finalLayout) {
+    const auto corner = [&](uint32_t level) {
+        return VkOffset3D{static_cast<int32_t>(std::max(1u, baseExtent.width >> level)),
+                          static_cast<int32_t>(std::max(1u, baseExtent.height >> level)),
+                          static_cast<int32_t>(std::max(1u, baseExtent.depth >> level))};
+    };
+    for (uint32_t level = baseMip + 1; level < mipLevels; ++level) {
+        barriers(cmd, {mipBarrier(image, aspect, level - 1, 1, layer, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                                  VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                  VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+                                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL)});
+        const VkImageBlit blit{.srcSubresource = {aspect, level - 1, layer, 1},
+                               .srcOffsets = {{0, 0, 0}, corner(level - 1)},
+                               .dstSubresource = {aspect, level, layer, 1},
+                               .dstOffsets = {{0, 0, 0}, corner(level)}};
+        vkCmdBlitImage(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                       &blit, VK_FILTER_LINEAR);
+    }
+    // Every mip but the last was a blit source; the last one is still a transfer destination.
+    barriers(cmd, {mipBarrier(image, aspect, baseMip, mipLevels - 1 - baseMip, layer, VK_PIPELINE_STAGE_2_BLIT_BIT,
+                              VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                              VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT, finalLayout),
+                   mipBarrier(image, aspect, mipLevels - 1, 1, layer, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                              VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                              VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT, finalLayout)});
 }
 
 void setViewportAndScissor(VkCommandBuffer cmd, VkExtent2D extent) {

@@ -27,6 +27,13 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
                   VkAccessFlags2 srcAccess, VkImageLayout oldLayout, VkPipelineStageFlags2 dstStages,
                   VkAccessFlags2 dstAccess, VkImageLayout newLayout);
 
+// Fills mips baseMip+1 .. mipLevels-1 of one layer by successive linear blits from baseMip, then
+// moves mips baseMip .. mipLevels-1 of that layer to `finalLayout` (visible to all later stages).
+// Precondition: those mips are in TRANSFER_DST_OPTIMAL with baseMip written by transfer; the image
+// has TRANSFER_SRC|DST usage and its format supports linear blits.
+void recordMipChain(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkExtent3D baseExtent,
+                    uint32_t baseMip, uint32_t mipLevels, uint32_t layer, VkImageLayout finalLayout);
+
 // Sets viewport and scissor to the whole of `extent`.
 void setViewportAndScissor(VkCommandBuffer cmd, VkExtent2D extent);
 

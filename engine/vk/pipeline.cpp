@@ -53,7 +53,21 @@ Program::Program(Context& context, const std::vector<std::string_view>& shaderNa
     mLayout = PipelineLayout(context, layout);
 }
 
-Pipeline Pipeline::compute(Context& context, std::string_view shaderName) {
+namespace {
+// Maps constant_id i to specialization[i].
+struct Specialization {
+    std::vector<VkSpecializationMapEntry> entries;
+    VkSpecializationInfo info{};
+    explicit Specialization(const std::vector<uint32_t>& values) {
+        for (uint32_t i = 0; i < values.size(); ++i) entries.push_back({i, i * 4u, 4u});
+        info = {static_cast<uint32_t>(entries.size()), entries.data(), values.size() * 4u, values.data()};
+    }
+    const VkSpecializationInfo* get() const { return entries.empty() ? nullptr : &info; }
+};
+}  // namespace
+
+Pipeline Pipeline::compute(Context& context, std::string_view shaderName, const std::vector<uint32_t>& specialization) {
+    const Specialization constants(specialization);
     Pipeline out;
     out.mProgram = Program(context, {shaderName});
     out.mBindPoint = VK_PIPELINE_BIND_POINT_COMPUTE;
@@ -62,7 +76,8 @@ Pipeline Pipeline::compute(Context& context, std::string_view shaderName) {
         .stage = {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
                   .stage = VK_SHADER_STAGE_COMPUTE_BIT,
                   .module = out.mProgram.stages().front().module.get(),
-                  .pName = "main"},
+                  .pName = "main",
+                  .pSpecializationInfo = constants.get()},
         .layout = out.mProgram.layout()};
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
@@ -76,12 +91,14 @@ Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std
     out.mProgram = Program(context, {vertexShader, fragmentShader});
     out.mBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
 
+    const Specialization constants(desc.specialization);
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     for (const Program::Stage& s : out.mProgram.stages())
         stages.push_back({.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
                           .stage = s.stage,
                           .module = s.module.get(),
-                          .pName = "main"});
+                          .pName = "main",
+                          .pSpecializationInfo = constants.get()});
     const VkPipelineVertexInputStateCreateInfo vertexInput{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO,
         .vertexBindingDescriptionCount = static_cast<uint32_t>(desc.vertexBindings.size()),
@@ -105,8 +122,8 @@ Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std
                                                       .depthCompareOp = desc.depthCompare};
     std::vector<VkPipelineColorBlendAttachmentState> blends(
         desc.colorFormats.size(),
-        {.blendEnable = desc.alphaBlend,
-         .srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA,
+        {.blendEnable = desc.premultipliedBlend,
+         .srcColorBlendFactor = VK_BLEND_FACTOR_ONE,
          .dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
          .colorBlendOp = VK_BLEND_OP_ADD,
          .srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
@@ -117,9 +134,10 @@ Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std
     const VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
                                                     .attachmentCount = static_cast<uint32_t>(blends.size()),
                                                     .pAttachments = blends.data()};
-    const VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    const VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+                                            VK_DYNAMIC_STATE_CULL_MODE, VK_DYNAMIC_STATE_FRONT_FACE};
     const VkPipelineDynamicStateCreateInfo dynamic{.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
-                                                   .dynamicStateCount = 2,
+                                                   .dynamicStateCount = desc.dynamicCullMode ? 4u : 2u,
                                                    .pDynamicStates = dynamicStates};
     const VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
                                                   .colorAttachmentCount = static_cast<uint32_t>(desc.colorFormats.size()),

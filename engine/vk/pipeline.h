@@ -49,7 +49,12 @@ struct GraphicsPipelineDesc {
     bool depthTest = false;
     bool depthWrite = false;
     VkCompareOp depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse-Z
-    bool alphaBlend = false;
+    bool premultipliedBlend = false;  // colour = src + (1 − src.a)·dst, alpha likewise
+    // Cull mode and front face set per draw with vkCmdSetCullMode/FrontFace (Vulkan 1.3 core);
+    // cullMode and frontFace above are then ignored.
+    bool dynamicCullMode = false;
+    // Specialization constant values, constant_id = index (32-bit each: bool as 0/1, uint, float bits).
+    std::vector<uint32_t> specialization;
     std::vector<VkVertexInputBindingDescription> vertexBindings;
     std::vector<VkVertexInputAttributeDescription> vertexAttributes;
 };
@@ -57,7 +62,8 @@ struct GraphicsPipelineDesc {
 class Pipeline {
 public:
     Pipeline() = default;
-    static Pipeline compute(Context& context, std::string_view shaderName);
+    static Pipeline compute(Context& context, std::string_view shaderName,
+                            const std::vector<uint32_t>& specialization = {});
     static Pipeline graphics(Context& context, std::string_view vertexShader, std::string_view fragmentShader,
                              const GraphicsPipelineDesc& desc);
 

@@ -14,7 +14,7 @@ Sampler createSampler(Context& context, const SamplerDesc& desc) {
     const VkSamplerCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
         .magFilter = desc.filter,
-        .minFilter = desc.filter,
+        .minFilter = desc.minFilter,
         .mipmapMode = desc.mipmapMode,
         .addressModeU = desc.addressU,
         .addressModeV = desc.addressV,

@@ -6,7 +6,8 @@
 namespace candela::vk {
 
 struct SamplerDesc {
-    VkFilter filter = VK_FILTER_LINEAR;
+    VkFilter filter = VK_FILTER_LINEAR;     // magnification
+    VkFilter minFilter = VK_FILTER_LINEAR;  // minification
     VkSamplerMipmapMode mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
     VkSamplerAddressMode addressU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     VkSamplerAddressMode addressV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;

@@ -22,10 +22,11 @@ void Uploader::buffer(const Buffer& dst, std::span<const std::byte> data, VkDevi
 }
 
 void Uploader::image(const Image& dst, std::span<const std::byte> data, uint32_t mip, uint32_t layer,
-                     VkImageLayout finalLayout) {
+                     VkImageLayout finalLayout, bool generateMips) {
     const ImageDesc& d = dst.desc();
     const VkExtent3D extent{std::max(1u, d.width >> mip), std::max(1u, d.height >> mip), std::max(1u, d.depth >> mip)};
-    mImageCopies.push_back({dst.handle(), dst.aspect(), extent, mip, layer, stage(data), finalLayout});
+    mImageCopies.push_back({dst.handle(), dst.aspect(), extent, mip, layer, stage(data), finalLayout, generateMips,
+                            d.mipLevels, {d.width, d.height, d.depth}});
 }
 
 void Uploader::submitAndWait() {
@@ -48,7 +49,7 @@ void Uploader::submitAndWait() {
         if (std::find(images.begin(), images.end(), c.image) == images.end()) {
             images.push_back(c.image);
             imageBarrier(cmd, c.image, c.aspect, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_UNDEFINED,
-                         VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                         VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
         }
     for (const ImageCopy& c : mImageCopies) {
@@ -60,6 +61,10 @@ void Uploader::submitAndWait() {
     for (VkImage image : images) {
         const ImageCopy& c = *std::find_if(mImageCopies.begin(), mImageCopies.end(),
                                            [&](const ImageCopy& x) { return x.image == image; });
+        if (c.generateMips && c.mipLevels > c.mip + 1) {
+            recordMipChain(cmd, c.image, c.aspect, c.baseExtent, c.mip, c.mipLevels, c.layer, c.finalLayout);
+            continue;
+        }
         imageBarrier(cmd, image, c.aspect, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                      VK_ACCESS_2_MEMORY_READ_BIT, c.finalLayout);

@@ -18,8 +18,11 @@ public:
     // Queues a copy of `data` into `dst` at `offset`. dst needs VK_BUFFER_USAGE_TRANSFER_DST_BIT.
     void buffer(const Buffer& dst, std::span<const std::byte> data, VkDeviceSize offset = 0);
     // Queues tightly packed texels for mip `mip`, layer `layer` of `dst` (TRANSFER_DST usage).
-    // After submit the whole image is in `finalLayout`, visible to every later stage.
-    void image(const Image& dst, std::span<const std::byte> data, uint32_t mip, uint32_t layer, VkImageLayout finalLayout);
+    // With `generateMips`, mips 1.. are then filtered down from `mip` by linear blits (dst needs
+    // TRANSFER_SRC usage and a format that supports linear blits). After submit the whole image
+    // is in `finalLayout`, visible to every later stage.
+    void image(const Image& dst, std::span<const std::byte> data, uint32_t mip, uint32_t layer, VkImageLayout finalLayout,
+               bool generateMips = false);
 
     // Records and submits all queued copies and waits for them. Staging memory is released.
     void submitAndWait();
@@ -32,6 +35,9 @@ private:
         uint32_t mip, layer;
         VkDeviceSize stagingOffset;
         VkImageLayout finalLayout;
+        bool generateMips;
+        uint32_t mipLevels;
+        VkExtent3D baseExtent;
     };
     struct BufferCopy {
         VkBuffer buffer;

@@ -98,7 +98,9 @@ TEST(Cli, RenderWritesPngAndGraphExports) {
     std::ifstream in(json);
     const nlohmann::json graph = nlohmann::json::parse(in);
     ASSERT_EQ(graph["order"].size(), 3u);
-    EXPECT_EQ(graph["order"][0], "pattern");
+    // The default scene's frame graph: forward → tonemap → readback.
+    EXPECT_EQ(graph["order"][0], "forward");
+    EXPECT_EQ(graph["order"][1], "tonemap");
     EXPECT_EQ(graph["order"][2], "readback");
     std::ifstream dotIn(dot);
     const std::string dotText((std::istreambuf_iterator<char>(dotIn)), std::istreambuf_iterator<char>());
@@ -106,36 +108,40 @@ TEST(Cli, RenderWritesPngAndGraphExports) {
     std::filesystem::remove_all(dir);
 }
 
-TEST(Cli, FloatOutputsCullTheEncodePass) {
+TEST(Cli, FloatOutputsCullTheTonemapPass) {
     const auto dir = tempDir();
     for (const char* name : {"frame.exr", "frame.pfm"}) {
         const auto out = dir / name, json = dir / "graph.json";
-        const Result r = run("render --validate --width 24 --height 16 --out " + out.string() + " --graph-json " +
+        const Result r = run("render --validate --width 96 --height 64 --out " + out.string() + " --graph-json " +
                              json.string());
         ASSERT_EQ(r.exitCode, 0) << r.stderrText;
         if (out.extension() == ".pfm") {
-            EXPECT_EQ(std::filesystem::file_size(out), std::string("PF\n24 16\n-1.0\n").size() + 24u * 16u * 12u);
+            EXPECT_EQ(std::filesystem::file_size(out), std::string("PF\n96 64\n-1.0\n").size() + 96u * 64u * 12u);
         } else {
             float* rgba = nullptr;
             int w = 0, h = 0;
             const char* error = nullptr;
             ASSERT_EQ(LoadEXR(&rgba, &w, &h, out.c_str(), &error), TINYEXR_SUCCESS) << (error ? error : "");
-            EXPECT_EQ(w, 24);
-            EXPECT_EQ(h, 16);
-            // Pixel (0,0) of the pattern: 1/16-intensity red-magenta, alpha 1; HDR values survive.
-            EXPECT_GT(rgba[0], 0.0f);
-            EXPECT_FLOAT_EQ(rgba[3], 1.0f);
-            float maxValue = 0.0f;
-            for (int i = 0; i < w * h * 4; ++i) maxValue = std::max(maxValue, rgba[i]);
-            EXPECT_GT(maxValue, 4.0f);
+            EXPECT_EQ(w, 96);
+            EXPECT_EQ(h, 64);
+            // The HDR image: background pixels have coverage 0; the lit spheres have coverage 1
+            // and radiance (specular highlights of 300 cd lights) beyond 1.
+            EXPECT_FLOAT_EQ(rgba[3], 0.0f);
+            float maxValue = 0.0f, maxAlpha = 0.0f;
+            for (int i = 0; i < w * h * 4; ++i) {
+                if (i % 4 == 3) maxAlpha = std::max(maxAlpha, rgba[i]);
+                else maxValue = std::max(maxValue, rgba[i]);
+            }
+            EXPECT_FLOAT_EQ(maxAlpha, 1.0f);
+            EXPECT_GT(maxValue, 1.0f);
             free(rgba);
         }
         std::ifstream in(json);
         const nlohmann::json graph = nlohmann::json::parse(in);
-        bool sawCulledEncode = false;
+        bool sawCulledTonemap = false;
         for (const auto& pass : graph["passes"])
-            if (pass["name"] == "encode") sawCulledEncode = pass["culled"].get<bool>();
-        EXPECT_TRUE(sawCulledEncode);
+            if (pass["name"] == "tonemap") sawCulledTonemap = pass["culled"].get<bool>();
+        EXPECT_TRUE(sawCulledTonemap);
     }
     std::filesystem::remove_all(dir);
 }

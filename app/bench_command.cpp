@@ -1,0 +1,102 @@
+// `candela bench`: frame time and per-pass GPU time of a scene, each also as a ratio to the
+// calibration pass (passes/calibration_pass.h) run in the same process, because absolute times
+// on a shared CPU vary by up to 2× between runs. Frames and calibration runs are interleaved so
+// that drift affects both alike.
+
+#include "commands.h"
+
+#include "core/log.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
+namespace candela::app {
+namespace {
+
+double median(std::vector<double> values) {
+    if (values.empty()) return -1.0;
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
+}
+
+double minimum(const std::vector<double>& values) {
+    return values.empty() ? -1.0 : *std::min_element(values.begin(), values.end());
+}
+
+}  // namespace
+
+int runBench(const RenderOptions& options) {
+    const scene::Scene scene = loadScene(options);
+    const RenderSettings settings = renderSettings(options, scene);
+    vk::Context context(contextDesc(options.common));
+    Renderer renderer(context);
+    renderer.validateSettings(settings);
+
+    // Warm-up: pipelines, transient pools, scene upload.
+    for (int i = 0; i < 2; ++i) {
+        renderer.renderFrame(settings);
+        renderer.renderCalibration(settings.width, settings.height);
+    }
+    std::vector<double> frameMs, calibrationMs, calibrationGpuMs;
+    std::map<std::string, std::vector<double>> passGpuMs;
+    std::vector<std::string> passOrder;
+    for (uint32_t i = 0; i < options.frames; ++i) {
+        const FrameTiming frame = renderer.renderFrame(settings);
+        frameMs.push_back(frame.submitWaitMs);
+        const graph::GraphDecl& decl = renderer.lastGraph().declaration();
+        for (uint32_t pass : renderer.lastGraph().compiled().order) {
+            const std::string& name = decl.passes[pass].name;
+            if (i == 0) passOrder.push_back(name);
+            if (frame.timings.gpuMs[pass] >= 0.0) passGpuMs[name].push_back(frame.timings.gpuMs[pass]);
+        }
+        const FrameTiming calibration = renderer.renderCalibration(settings.width, settings.height);
+        calibrationMs.push_back(calibration.submitWaitMs);
+        const uint32_t calibrationPass = *renderer.lastGraph().findPass("calibration");
+        if (calibration.timings.gpuMs[calibrationPass] >= 0.0) calibrationGpuMs.push_back(calibration.timings.gpuMs[calibrationPass]);
+    }
+
+    const double calibration = median(calibrationMs), calibrationGpu = median(calibrationGpuMs);
+    nlohmann::ordered_json out;
+    out["scene"] = scene.source;
+    out["device"] = context.report().name;
+    out["width"] = settings.width;
+    out["height"] = settings.height;
+    out["frames"] = options.frames;
+    out["calibration"] = {{"medianMs", calibration}, {"minMs", minimum(calibrationMs)}, {"gpuMedianMs", calibrationGpu}};
+    out["frame"] = {{"medianMs", median(frameMs)},
+                    {"minMs", minimum(frameMs)},
+                    {"medianRatio", median(frameMs) / calibration},
+                    {"minRatio", minimum(frameMs) / minimum(calibrationMs)}};
+    nlohmann::ordered_json passes = nlohmann::ordered_json::array();
+    for (const std::string& name : passOrder) {
+        const double gpu = median(passGpuMs[name]);
+        passes.push_back({{"name", name},
+                          {"gpuMedianMs", gpu},
+                          {"ratioToCalibrationGpu", gpu >= 0.0 && calibrationGpu > 0.0 ? gpu / calibrationGpu : -1.0}});
+    }
+    out["passes"] = passes;
+
+    if (options.json) {
+        std::printf("%s\n", out.dump(2).c_str());
+    } else {
+        std::printf("%s at %ux%u on %s, %u frames (CPU wall time around submit+wait)\n", scene.source.c_str(),
+                    settings.width, settings.height, context.report().name.c_str(), options.frames);
+        std::printf("  calibration: median %.2f ms, min %.2f ms (GPU %.2f ms)\n", calibration, minimum(calibrationMs),
+                    calibrationGpu);
+        std::printf("  frame:       median %.2f ms (%.2fx calibration), min %.2f ms (%.2fx)\n", median(frameMs),
+                    median(frameMs) / calibration, minimum(frameMs), minimum(frameMs) / minimum(calibrationMs));
+        for (const auto& p : passes)
+            std::printf("  pass %-12s GPU median %.2f ms (%.2fx calibration GPU)\n", p["name"].get<std::string>().c_str(),
+                        p["gpuMedianMs"].get<double>(), p["ratioToCalibrationGpu"].get<double>());
+    }
+    if (context.validationMessageCount() > 0) {
+        log::error(std::to_string(context.validationMessageCount()) + " validation messages");
+        return 3;
+    }
+    return 0;
+}
+
+}  // namespace candela::app

@@ -1,0 +1,21 @@
+#pragma once
+// The `candela` subcommands. Each returns the process exit code; user errors are thrown as
+// candela::UserError and reported by main().
+
+#include "cli.h"
+#include "renderer.h"
+#include "scene/scene.h"
+#include "vk/context.h"
+
+namespace candela::app {
+
+int runRender(const RenderOptions& options);
+int runBench(const RenderOptions& options);
+int runInfo(const InfoOptions& options);
+
+// Shared by render and bench: the context description and the render settings the flags choose.
+vk::ContextDesc contextDesc(const CommonOptions& common);
+scene::Scene loadScene(const RenderOptions& options);
+RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& scene);
+
+}  // namespace candela::app

@@ -1,0 +1,162 @@
+#include "passes/forward_pass.h"
+
+#include "graph/graph_executor.h"
+#include "shared/brdf.h"
+#include "shared/scene_data.h"
+
+#include <algorithm>
+
+namespace candela::passes {
+
+using namespace graph;
+
+std::string ForwardPass::Variant::name() const {
+    std::string out = unlit ? "unlit" : model == ShadingModel::BlinnPhong ? "blinn-phong"
+                                    : model == ShadingModel::PbrSchlickGgx ? "pbr-schlick-ggx"
+                                                                           : "pbr";
+    if (normalMap) out += "+normal-map";
+    if (!unlit && !lights) out += "+no-lights";
+    if (alphaMask) out += "+alpha-mask";
+    if (blend) out += "+blend";
+    return out;
+}
+
+ForwardPass::ForwardPass(vk::Context& context) : mContext(context) {}
+
+const vk::Pipeline& ForwardPass::pipeline(const Variant& v) {
+    auto it = mPipelines.find(v);
+    if (it != mPipelines.end()) return it->second;
+    const vk::GraphicsPipelineDesc desc{
+        .colorFormats = {kHdrFormat},
+        .depthFormat = kDepthFormat,
+        .depthTest = true,
+        .depthWrite = !v.blend,
+        .depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL,
+        .premultipliedBlend = v.blend,
+        .dynamicCullMode = true,
+        .specialization = {v.normalMap, v.lights, v.unlit, v.alphaMask, static_cast<uint32_t>(v.model)},
+        .vertexBindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}},
+        .vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
+                             {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
+                             {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, tangent)},
+                             {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv0)},
+                             {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv1)},
+                             {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, color)}}};
+    return mPipelines.emplace(v, vk::Pipeline::graphics(mContext, "forward.vert", "forward.frag", desc)).first->second;
+}
+
+ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingModel model) const {
+    const scene::Material& m = mScene->scene().materials[draw.material];
+    Variant v;
+    v.unlit = m.unlit;
+    v.normalMap = !m.unlit && m.normal.present();
+    v.lights = !m.unlit && mScene->lightCount() > 0;
+    v.alphaMask = m.alphaMode == scene::AlphaMode::Mask;
+    v.blend = m.alphaMode == scene::AlphaMode::Blend;
+    v.model = m.unlit ? ShadingModel::Pbr : model;
+    return v;
+}
+
+void ForwardPass::setScene(const scene::GpuScene& gpuScene) {
+    mScene = &gpuScene;
+    mSets = std::make_unique<vk::DescriptorAllocator>(mContext);
+    mMaterialSets.clear();
+    // Every variant has the same set layouts, so sets written for one pipeline fit them all.
+    const vk::Pipeline& any = pipeline(Variant{});
+    mSceneSet = vk::DescriptorWriter(any.program(), 0)
+                    .buffer("Lights", gpuScene.lightBuffer())
+                    .buffer("Draws", gpuScene.drawBuffer())
+                    .buffer("Materials", gpuScene.materialBuffer())
+                    .commit(mContext, *mSets);
+    static constexpr const char* kSlots[CANDELA_TEX_COUNT] = {"baseColorTexture", "metallicRoughnessTexture",
+                                                               "normalTexture", "occlusionTexture", "emissiveTexture"};
+    for (uint32_t material = 0; material < gpuScene.scene().materials.size(); ++material) {
+        vk::DescriptorWriter writer(any.program(), 1);
+        for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
+            const scene::GpuScene::Binding b = gpuScene.texture(material, slot);
+            writer.image(kSlots[slot], b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
+        }
+        mMaterialSets.push_back(writer.commit(mContext, *mSets));
+    }
+}
+
+ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
+                                     ShadingModel model) {
+    const scene::Scene& scene = mScene->scene();
+    std::vector<DrawItem> opaque, blended;
+    std::map<std::string, uint32_t> variantCounts;
+    for (uint32_t i = 0; i < scene.draws.size(); ++i) {
+        const scene::Draw& draw = scene.draws[i];
+        const Variant v = variantOf(draw, model);
+        ++variantCounts[v.name()];
+        const glm::vec3 centre = 0.5f * (draw.bounds.min + draw.bounds.max);
+        (v.blend ? blended : opaque).push_back({i, &pipeline(v), glm::length(centre - view.eye)});
+    }
+    // Opaque grouped by pipeline (fewer binds); blended back to front.
+    std::stable_sort(opaque.begin(), opaque.end(), [](const DrawItem& a, const DrawItem& b) { return a.pipeline < b.pipeline; });
+    std::stable_sort(blended.begin(), blended.end(), [](const DrawItem& a, const DrawItem& b) { return a.depth > b.depth; });
+    std::vector<DrawItem> items = std::move(opaque);
+    items.insert(items.end(), blended.begin(), blended.end());
+
+    mExplanation.clear();
+    std::string used = "forward: " + std::to_string(scene.draws.size()) + " draws; variants:";
+    for (const auto& [name, count] : variantCounts) used += " " + name + " ×" + std::to_string(count);
+    mExplanation.push_back(used);
+    if (mScene->lightCount() == 0) mExplanation.emplace_back("left out: light loop (no punctual lights)");
+    if (std::none_of(scene.materials.begin(), scene.materials.end(), [](const scene::Material& m) { return m.normal.present(); }))
+        mExplanation.emplace_back("left out: normal mapping / TBN work (no material has a normal texture)");
+    if (std::none_of(scene.materials.begin(), scene.materials.end(), [](const scene::Material& m) { return m.unlit; }))
+        mExplanation.emplace_back("left out: unlit variant (no KHR_materials_unlit material)");
+
+    struct Data {
+        TextureId hdr;
+        TextureId depth;
+    };
+    shading::ForwardPush push{};
+    push.viewProjection = view.viewProjection;
+    push.eye = glm::vec4(view.eye, 1.0f);
+    push.counts = glm::uvec4(mScene->lightCount(), 0, 0, 0);
+    const scene::GpuScene* gpuScene = mScene;
+    const VkDescriptorSet sceneSet = mSceneSet;
+    const std::vector<VkDescriptorSet>* materialSets = &mMaterialSets;
+    const Data& data = graph.addPass<Data>(
+        "forward", PassType::Graphics,
+        [&](PassBuilder& builder, Data& d) {
+            const TextureId hdr = builder.createTexture("hdr", {.width = width, .height = height, .format = kHdrFormat});
+            const TextureId depth = builder.createTexture("depth", {.width = width, .height = height, .format = kDepthFormat});
+            d.hdr = builder.writeColor(hdr, VkClearColorValue{{0.0f, 0.0f, 0.0f, 0.0f}});
+            d.depth = builder.writeDepth(depth, 0.0f);  // reverse-Z: far = 0
+        },
+        [items, frameConstants = push, gpuScene, sceneSet, materialSets](const Data&, PassContext& ctx) {
+            shading::ForwardPush constants = frameConstants;
+            VkCommandBuffer cmd = ctx.cmd();
+            ctx.beginRendering();
+            const VkDeviceSize offset = 0;
+            const VkBuffer vertices = gpuScene->vertexBuffer();
+            vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
+            vkCmdBindIndexBuffer(cmd, gpuScene->indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
+            const vk::Pipeline* bound = nullptr;
+            for (const DrawItem& item : items) {
+                const scene::Draw& draw = gpuScene->scene().draws[item.draw];
+                if (item.pipeline != bound) {
+                    bound = item.pipeline;
+                    bound->bind(cmd);
+                    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 0, 1, &sceneSet, 0,
+                                            nullptr);
+                }
+                vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 1, 1,
+                                        &(*materialSets)[draw.material], 0, nullptr);
+                const bool doubleSided = gpuScene->scene().materials[draw.material].doubleSided;
+                vkCmdSetCullMode(cmd, doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
+                // glTF fronts are counter-clockwise; a mirroring transform turns them clockwise.
+                vkCmdSetFrontFace(cmd, draw.flipWinding ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
+                constants.counts.y = item.draw;
+                bound->pushConstants(cmd, &constants, sizeof(constants));
+                vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, 0, 0);
+            }
+            ctx.endRendering();
+        });
+    return {data.hdr, data.depth};
+}
+
+}  // namespace candela::passes

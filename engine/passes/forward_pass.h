@@ -1,0 +1,72 @@
+#pragma once
+// Forward pass (graphics): draws a GpuScene into an HDR target (RGBA16F, alpha = coverage,
+// premultiplied) with a reverse-Z depth buffer — opaque and alpha-masked draws first, then
+// alpha-blended ones sorted back to front. Each draw uses a pipeline variant chosen by
+// specialization constants, so what a draw does not use costs nothing.
+
+#include "graph/render_graph.h"
+#include "scene/camera.h"
+#include "scene/gpu_scene.h"
+#include "vk/descriptors.h"
+#include "vk/pipeline.h"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace candela::passes {
+
+enum class ShadingModel : uint32_t { Pbr = 0, PbrSchlickGgx = 1, BlinnPhong = 2 };
+
+class ForwardPass {
+public:
+    explicit ForwardPass(vk::Context& context);
+
+    // Binds the scene's buffers and textures into persistent descriptor sets. Call once per
+    // GpuScene; precondition: the GPU no longer uses the previous scene's sets.
+    void setScene(const scene::GpuScene& scene);
+
+    struct Output {
+        graph::TextureId hdr;
+        graph::TextureId depth;
+    };
+    // Adds the pass drawing the current scene as seen from `view`. Returns the written targets.
+    Output add(graph::RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
+               ShadingModel model);
+
+    // What the last add() used and left out, one line each, for `--explain`.
+    const std::vector<std::string>& explanation() const { return mExplanation; }
+
+    static constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+private:
+    struct Variant {
+        bool normalMap = false;
+        bool lights = false;
+        bool unlit = false;
+        bool alphaMask = false;
+        bool blend = false;
+        ShadingModel model = ShadingModel::Pbr;
+        auto operator<=>(const Variant&) const = default;
+        std::string name() const;
+    };
+    struct DrawItem {
+        uint32_t draw;
+        const vk::Pipeline* pipeline;
+        float depth;  // view distance, for sorting blended draws
+    };
+    const vk::Pipeline& pipeline(const Variant& variant);
+    Variant variantOf(const scene::Draw& draw, ShadingModel model) const;
+
+    vk::Context& mContext;
+    std::map<Variant, vk::Pipeline> mPipelines;
+    const scene::GpuScene* mScene = nullptr;
+    std::unique_ptr<vk::DescriptorAllocator> mSets;
+    VkDescriptorSet mSceneSet = VK_NULL_HANDLE;
+    std::vector<VkDescriptorSet> mMaterialSets;
+    std::vector<std::string> mExplanation;
+};
+
+}  // namespace candela::passes

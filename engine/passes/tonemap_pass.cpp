@@ -1,0 +1,88 @@
+#include "passes/tonemap_pass.h"
+
+#include "graph/graph_executor.h"
+#include "shared/tonemap.h"
+
+#include <cmath>
+
+namespace candela::passes {
+
+using namespace graph;
+
+namespace {
+bool isSrgbFormat(VkFormat format) {
+    return format == VK_FORMAT_R8G8B8A8_SRGB || format == VK_FORMAT_B8G8R8A8_SRGB || format == VK_FORMAT_A8B8G8R8_SRGB_PACK32;
+}
+
+constexpr struct {
+    Tonemap op;
+    const char* name;
+} kNames[] = {{Tonemap::PbrNeutral, "pbr-neutral"},
+              {Tonemap::Aces, "aces"},
+              {Tonemap::Agx, "agx"},
+              {Tonemap::Reinhard, "reinhard"},
+              {Tonemap::Linear, "linear"}};
+}  // namespace
+
+std::optional<Tonemap> parseTonemap(std::string_view name) {
+    for (const auto& entry : kNames)
+        if (name == entry.name) return entry.op;
+    return std::nullopt;
+}
+
+const char* tonemapName(Tonemap op) {
+    for (const auto& entry : kNames)
+        if (op == entry.op) return entry.name;
+    return "?";
+}
+
+TonemapPass::TonemapPass(vk::Context& context)
+    : mContext(context),
+      mSampler(vk::createSampler(context, {.filter = VK_FILTER_NEAREST, .minFilter = VK_FILTER_NEAREST, .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {}
+
+const vk::Pipeline& TonemapPass::pipelineFor(VkFormat format) {
+    auto it = mPipelines.find(format);
+    if (it == mPipelines.end())
+        it = mPipelines.emplace(format, vk::Pipeline::graphics(mContext, "fullscreen.vert", "tonemap.frag",
+                                                               {.colorFormats = {format}}))
+                 .first;
+    return it->second;
+}
+
+TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, const TonemapSettings& settings) {
+    struct Data {
+        TextureId hdr;
+        TextureId target;
+    };
+    const VkFormat format = graph.declaration().resources[target.index].texture.format;
+    const vk::Pipeline* pipeline = &pipelineFor(format);
+    shading::TonemapParams params{};
+    params.background = settings.background ? glm::vec4(*settings.background, 1.0f) : glm::vec4(0.0f);
+    params.exposureScale = std::exp2(settings.exposureEv);
+    params.op = static_cast<uint32_t>(settings.op);
+    params.encodeSrgb = isSrgbFormat(format) ? 0u : 1u;
+    params.dither = settings.dither ? 1u : 0u;
+    const vk::Sampler* sampler = &mSampler;
+    const Data& data = graph.addPass<Data>(
+        "tonemap", PassType::Graphics,
+        [&](PassBuilder& builder, Data& d) {
+            d.hdr = builder.read(hdr, Usage::Sampled, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            d.target = builder.write(target, Usage::ColorAttachment, WriteMode::Discard);
+        },
+        [pipeline, sampler, params](const Data& d, PassContext& ctx) {
+            const VkDescriptorSet set =
+                vk::DescriptorWriter(pipeline->program(), 0)
+                    .image("hdrImage", ctx.view(d.hdr), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, sampler->get())
+                    .commit(ctx.context(), ctx.descriptors());
+            ctx.beginRendering();
+            pipeline->bind(ctx.cmd());
+            vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->layout(), 0, 1, &set, 0,
+                                    nullptr);
+            pipeline->pushConstants(ctx.cmd(), &params, sizeof(params));
+            vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+            ctx.endRendering();
+        });
+    return data.target;
+}
+
+}  // namespace candela::passes

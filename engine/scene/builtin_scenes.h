@@ -1,0 +1,17 @@
+#pragma once
+// Scenes that need no files.
+
+#include "scene/scene.h"
+
+namespace candela::scene {
+
+// The original project's showcase: a 7×7 grid of UV spheres (radius 1, 2.5 m apart) in the XY
+// plane facing +Z, metallic rising left → right (0 → 1) and roughness bottom → top (0.05 → 1),
+// base colour a dark red, lit by 4 white point lights of 300 cd in front of the grid's corners.
+Scene makeSphereGrid();
+
+// Appends a UV sphere (sectors around Y, stacks from +Y to −Y) with normals, tangents along +φ
+// and UVs, to `scene`'s vertex and index arrays; returns the first index and index count.
+std::pair<uint32_t, uint32_t> appendUvSphere(Scene& scene, float radius, uint32_t sectors, uint32_t stacks);
+
+}  // namespace candela::scene

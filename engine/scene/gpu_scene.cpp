@@ -1,0 +1,160 @@
+#include "scene/gpu_scene.h"
+
+#include "scene/texture_transform.h"
+#include "shared/scene_data.h"
+#include "vk/upload.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace candela::scene {
+namespace {
+
+using namespace shading;
+
+VkSamplerAddressMode addressMode(Wrap wrap) {
+    switch (wrap) {
+        case Wrap::Repeat: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+        case Wrap::MirroredRepeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+        case Wrap::ClampToEdge: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    }
+    return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+}
+
+VkFilter filterOf(Filter f) { return f == Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR; }
+
+template <class T>
+vk::Buffer storageBuffer(vk::Context& context, vk::Uploader& uploader, const std::vector<T>& items, const char* name,
+                         VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
+    // Zero-sized buffers are invalid: keep one (unused) element.
+    const VkDeviceSize size = std::max<VkDeviceSize>(items.size() * sizeof(T), sizeof(T));
+    vk::Buffer buffer(context, {.size = size, .usage = usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, .name = name});
+    uploader.buffer(buffer, std::as_bytes(std::span(items)));
+    return buffer;
+}
+
+UvTransform uvTransform(const TextureRef& ref) {
+    // Rows of the affine KHR_texture_transform matrix (the loader's convention, shared with tangent
+    // generation), plus the texture coordinate set in r0.w.
+    const glm::mat3 m = textureTransformMatrix(ref.transform);
+    UvTransform out;
+    out.r0 = glm::vec4(m[0][0], m[1][0], m[2][0], static_cast<float>(ref.texCoord));
+    out.r1 = glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f);
+    return out;
+}
+
+MaterialData materialData(const Material& m) {
+    MaterialData out{};
+    out.baseColorFactor = m.baseColorFactor;
+    out.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f);
+    out.params = glm::vec4(m.metallicFactor, m.roughnessFactor, m.normalScale, m.occlusionStrength);
+    const float mode = m.alphaMode == AlphaMode::Mask ? float(CANDELA_ALPHA_MASK)
+                       : m.alphaMode == AlphaMode::Blend ? float(CANDELA_ALPHA_BLEND)
+                                                         : float(CANDELA_ALPHA_OPAQUE);
+    out.alpha = glm::vec4(m.alphaCutoff, mode, 0.0f, 0.0f);
+    const TextureRef* refs[] = {&m.baseColor, &m.metallicRoughness, &m.normal, &m.occlusion, &m.emissive};
+    for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) out.uv[slot] = uvTransform(*refs[slot]);
+    return out;
+}
+
+LightData lightData(const Light& l) {
+    LightData out{};
+    const float type = l.type == LightType::Directional ? float(CANDELA_LIGHT_DIRECTIONAL)
+                       : l.type == LightType::Spot    ? float(CANDELA_LIGHT_SPOT)
+                                                      : float(CANDELA_LIGHT_POINT);
+    out.positionRange = glm::vec4(l.position, l.range);
+    out.directionType = glm::vec4(glm::normalize(l.direction), type);
+    out.color = glm::vec4(l.color * l.intensity, 0.0f);
+    const float cosOuter = std::cos(l.outerConeAngle), cosInner = std::cos(l.innerConeAngle);
+    const float scale = 1.0f / std::max(cosInner - cosOuter, 1e-4f);
+    out.cone = glm::vec4(scale, -cosOuter * scale, 0.0f, 0.0f);
+    return out;
+}
+
+vk::Image solidTexture(vk::Context& context, vk::Uploader& uploader, std::array<uint8_t, 4> rgba, VkFormat format,
+                       const char* name) {
+    vk::Image image(context, {.format = format,
+                              .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                              .name = name});
+    uploader.image(image, std::as_bytes(std::span(rgba)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    return image;
+}
+
+}  // namespace
+
+GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights, float maxAnisotropy)
+    : mScene(&scene) {
+    vk::Uploader uploader(context);
+    mVertices = storageBuffer(context, uploader, scene.vertices, "vertices", VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    mIndices = storageBuffer(context, uploader, scene.indices, "indices", VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+
+    std::vector<LightData> lights;
+    for (const Light& l : scene.lights) lights.push_back(lightData(l));
+    for (const Light& l : extraLights) lights.push_back(lightData(l));
+    mLightCount = static_cast<uint32_t>(lights.size());
+    mLights = storageBuffer(context, uploader, lights, "lights");
+
+    std::vector<DrawData> draws;
+    for (const Draw& d : scene.draws) {
+        DrawData data{};
+        data.world = d.world;
+        data.normalMatrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(d.world))));
+        data.material = glm::uvec4(d.material, 0, 0, 0);
+        draws.push_back(data);
+    }
+    mDraws = storageBuffer(context, uploader, draws, "draws");
+
+    std::vector<MaterialData> materials;
+    for (const Material& m : scene.materials) materials.push_back(materialData(m));
+    mMaterials = storageBuffer(context, uploader, materials, "materials");
+
+    for (const Image& source : scene.images) {
+        const uint32_t mips = std::bit_width(std::max(source.width, source.height));
+        vk::Image image(context, {.width = source.width,
+                                  .height = source.height,
+                                  .mipLevels = mips,
+                                  .format = source.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
+                                  .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                           VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                  .name = source.name.c_str()});
+        uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                       /*generateMips=*/true);
+        mImages.push_back(std::move(image));
+    }
+    mWhite = solidTexture(context, uploader, {255, 255, 255, 255}, VK_FORMAT_R8G8B8A8_UNORM, "default white");
+    mFlatNormal = solidTexture(context, uploader, {128, 128, 255, 255}, VK_FORMAT_R8G8B8A8_UNORM, "default normal");
+    uploader.submitAndWait();
+
+    for (const Sampler& s : scene.samplers)
+        mSamplers.push_back(vk::createSampler(context, {.filter = filterOf(s.magFilter),
+                                                        .minFilter = filterOf(s.minFilter),
+                                                        .mipmapMode = s.mipFilter == Filter::Nearest
+                                                                          ? VK_SAMPLER_MIPMAP_MODE_NEAREST
+                                                                          : VK_SAMPLER_MIPMAP_MODE_LINEAR,
+                                                        .addressU = addressMode(s.wrapU),
+                                                        .addressV = addressMode(s.wrapV),
+                                                        .maxAnisotropy = maxAnisotropy,
+                                                        .maxLod = s.mipmaps ? VK_LOD_CLAMP_NONE : 0.0f}));
+    mDefaultSampler = vk::createSampler(context, {.addressU = VK_SAMPLER_ADDRESS_MODE_REPEAT,
+                                                  .addressV = VK_SAMPLER_ADDRESS_MODE_REPEAT,
+                                                  .maxAnisotropy = maxAnisotropy});
+
+    for (const Material& m : scene.materials) {
+        const TextureRef* refs[] = {&m.baseColor, &m.metallicRoughness, &m.normal, &m.occlusion, &m.emissive};
+        std::array<Binding, 5> bindings{};
+        for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
+            const TextureRef& ref = *refs[slot];
+            const bool has = ref.present() && static_cast<size_t>(ref.image) < mImages.size();
+            bindings[slot].view = has ? mImages[ref.image].view()
+                                      : (slot == CANDELA_TEX_NORMAL ? mFlatNormal.view() : mWhite.view());
+            const bool hasSampler = ref.sampler >= 0 && static_cast<size_t>(ref.sampler) < mSamplers.size();
+            bindings[slot].sampler = hasSampler ? mSamplers[ref.sampler].get() : mDefaultSampler.get();
+        }
+        mBindings.push_back(bindings);
+    }
+}
+
+GpuScene::Binding GpuScene::texture(uint32_t material, int slot) const { return mBindings.at(material)[slot]; }
+
+}  // namespace candela::scene

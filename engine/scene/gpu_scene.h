@@ -1,0 +1,52 @@
+#pragma once
+// GpuScene: a scene::Scene uploaded to the device — vertex and index buffers, storage buffers of
+// lights, draws and materials (shared/scene_data.h layouts), textures with generated mip chains,
+// samplers, and 1×1 defaults for absent textures. Immutable after upload; re-upload on change.
+
+#include "scene/scene.h"
+#include "vk/buffer.h"
+#include "vk/image.h"
+#include "vk/sampler.h"
+
+#include <array>
+#include <vector>
+
+namespace candela::scene {
+
+class GpuScene {
+public:
+    // Uploads `scene` (one batched submit) with `extraLights` appended to its lights, and samplers
+    // limited to `maxAnisotropy`. Precondition: scene.draws reference valid ranges and materials
+    // (the loader guarantees it). `scene` must outlive the GpuScene.
+    GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights = {},
+             float maxAnisotropy = 8.0f);
+
+    VkBuffer vertexBuffer() const { return mVertices.handle(); }
+    VkBuffer indexBuffer() const { return mIndices.handle(); }
+    VkBuffer lightBuffer() const { return mLights.handle(); }
+    VkBuffer drawBuffer() const { return mDraws.handle(); }
+    VkBuffer materialBuffer() const { return mMaterials.handle(); }
+    uint32_t lightCount() const { return mLightCount; }
+
+    // The view and sampler bound to texture slot `slot` (CANDELA_TEX_*) of material `material`:
+    // the material's texture, or a 1×1 default (white, or a flat normal for the normal slot).
+    struct Binding {
+        VkImageView view;
+        VkSampler sampler;
+    };
+    Binding texture(uint32_t material, int slot) const;
+
+    const Scene& scene() const { return *mScene; }
+
+private:
+    const Scene* mScene;
+    vk::Buffer mVertices, mIndices, mLights, mDraws, mMaterials;
+    uint32_t mLightCount = 0;
+    std::vector<vk::Image> mImages;
+    std::vector<vk::Sampler> mSamplers;
+    vk::Sampler mDefaultSampler;
+    vk::Image mWhite, mFlatNormal;
+    std::vector<std::array<Binding, 5>> mBindings;  // per material, per slot
+};
+
+}  // namespace candela::scene

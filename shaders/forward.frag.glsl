@@ -1,0 +1,107 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Forward pass fragment stage: glTF metallic-roughness material lit by punctual lights with the
+// BRDFs of shared/brdf.h. Variants are specialization constants, so what a draw does not use
+// costs nothing: no normal map → no TBN work; no lights → no light loop; unlit → no BRDF.
+#include "shared/brdf.h"
+#include "shared/scene_data.h"
+
+layout(constant_id = 0) const bool kNormalMap = false;
+layout(constant_id = 1) const bool kLights = true;
+layout(constant_id = 2) const bool kUnlit = false;
+layout(constant_id = 3) const bool kAlphaMask = false;
+layout(constant_id = 4) const uint kShadingModel = CANDELA_SHADING_PBR;
+
+layout(std430, set = 0, binding = 0) readonly buffer Lights {
+    LightData lights[];
+};
+layout(std430, set = 0, binding = 1) readonly buffer Draws {
+    DrawData draws[];
+};
+layout(std430, set = 0, binding = 2) readonly buffer Materials {
+    MaterialData materials[];
+};
+layout(set = 1, binding = 0) uniform sampler2D baseColorTexture;
+layout(set = 1, binding = 1) uniform sampler2D metallicRoughnessTexture;
+layout(set = 1, binding = 2) uniform sampler2D normalTexture;
+layout(set = 1, binding = 3) uniform sampler2D occlusionTexture;
+layout(set = 1, binding = 4) uniform sampler2D emissiveTexture;
+layout(push_constant) uniform Push {
+    ForwardPush push;
+};
+
+layout(location = 0) in vec3 inWorldPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec4 inTangent;
+layout(location = 3) in vec4 inColor;
+layout(location = 4) in vec2 inTexUv[CANDELA_TEX_COUNT];  // per texture slot, transformed (see forward.vert)
+
+layout(location = 0) out vec4 outColor;
+
+vec4 sampleSlot(sampler2D tex, int slot) {
+    return texture(tex, inTexUv[slot]);
+}
+
+// Shading normal: interpolated normal (or the face normal when it degenerates), flipped for back
+// faces of double-sided materials, perturbed by the normal map when the variant has one.
+vec3 shadingNormal(MaterialData m) {
+    vec3 faceNormal = normalize(cross(dFdx(inWorldPosition), dFdy(inWorldPosition)));
+    vec3 n = dot(inNormal, inNormal) > 1e-12f ? normalize(inNormal) : faceNormal;
+    if (!gl_FrontFacing) n = -n;
+    if (kNormalMap) {
+        vec3 t = inTangent.xyz - n * dot(n, inTangent.xyz);
+        if (dot(t, t) > 1e-12f) {
+            t = normalize(t);
+            vec3 b = cross(n, t) * (inTangent.w < 0.0f ? -1.0f : 1.0f);
+            vec3 tangentNormal = sampleSlot(normalTexture, CANDELA_TEX_NORMAL).xyz * 2.0f - 1.0f;
+            tangentNormal.xy *= m.params.z;
+            vec3 mapped = mat3(t, b, n) * tangentNormal;
+            if (dot(mapped, mapped) > 1e-12f) n = normalize(mapped);
+        }
+    }
+    return n;
+}
+
+void main() {
+    MaterialData m = materials[draws[push.counts.y].material.x];
+    vec4 baseColor = m.baseColorFactor * inColor * sampleSlot(baseColorTexture, CANDELA_TEX_BASE_COLOR);
+    if (kAlphaMask && baseColor.a < m.alpha.x) discard;
+    float alpha = m.alpha.y == float(CANDELA_ALPHA_BLEND) ? baseColor.a : 1.0f;
+
+    if (kUnlit) {
+        outColor = vec4(baseColor.rgb * alpha, alpha);
+        return;
+    }
+
+    vec4 mr = sampleSlot(metallicRoughnessTexture, CANDELA_TEX_METALLIC_ROUGHNESS);
+    float metallic = clamp(m.params.x * mr.b, 0.0f, 1.0f);
+    float roughness = clamp(m.params.y * mr.g, 0.0f, 1.0f);
+    vec3 n = shadingNormal(m);
+    vec3 v = normalize(push.eye.xyz - inWorldPosition);
+
+    vec3 color = vec3(0.0f);
+    if (kLights) {
+        for (uint i = 0u; i < push.counts.x; ++i) {
+            LightData light = lights[i];
+            vec3 l;
+            float attenuation = 1.0f;
+            if (light.directionType.w == float(CANDELA_LIGHT_DIRECTIONAL)) {
+                l = -light.directionType.xyz;
+            } else {
+                vec3 toLight = light.positionRange.xyz - inWorldPosition;
+                float distance2 = dot(toLight, toLight);
+                l = toLight * inversesqrt(max(distance2, 1e-30f));
+                attenuation = rangeAttenuation(distance2, light.positionRange.w);
+                if (light.directionType.w == float(CANDELA_LIGHT_SPOT))
+                    attenuation *= spotAttenuation(-l, light.directionType.xyz, light.cone);
+            }
+            color += brdfTimesCosine(n, v, l, baseColor.rgb, metallic, roughness, kShadingModel) * light.color.rgb *
+                     attenuation;
+        }
+    }
+    // Occlusion applies to indirect light only (glTF): it is sampled where ambient/IBL light is added.
+    color += m.emissive.rgb * sampleSlot(emissiveTexture, CANDELA_TEX_EMISSIVE).rgb;
+    // Radiance can exceed half-float range with extreme lights: keep it finite.
+    color = min(color, vec3(60000.0f));
+    outColor = vec4(color * alpha, alpha);
+}

@@ -1,0 +1,43 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Forward pass vertex stage: world-space position, normal and tangent of one drawn primitive.
+#include "shared/scene_data.h"
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec4 inTangent;
+layout(location = 3) in vec2 inUv0;
+layout(location = 4) in vec2 inUv1;
+layout(location = 5) in vec4 inColor;
+
+layout(std430, set = 0, binding = 1) readonly buffer Draws {
+    DrawData draws[];
+};
+layout(std430, set = 0, binding = 2) readonly buffer Materials {
+    MaterialData materials[];
+};
+layout(push_constant) uniform Push {
+    ForwardPush push;
+};
+
+layout(location = 0) out vec3 outWorldPosition;
+layout(location = 1) out vec3 outNormal;
+layout(location = 2) out vec4 outTangent;
+layout(location = 3) out vec4 outColor;
+// Texture coordinates of each material texture slot, after KHR_texture_transform. Transformed here
+// rather than per pixel so that their screen-space derivatives (mip selection) come from plain
+// interpolants: a fragment-stage transform built from storage-buffer loads gave wrong derivatives
+// at triangle edges on lavapipe, whose helper invocations skip those loads.
+layout(location = 4) out vec2 outTexUv[CANDELA_TEX_COUNT];
+
+void main() {
+    DrawData draw = draws[push.counts.y];
+    vec4 world = draw.world * vec4(inPosition, 1.0f);
+    outWorldPosition = world.xyz;
+    outNormal = mat3(draw.normalMatrix) * inNormal;
+    outTangent = vec4(mat3(draw.world) * inTangent.xyz, inTangent.w);
+    outColor = inColor;
+    MaterialData material = materials[draw.material.x];
+    for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) outTexUv[slot] = transformUv(material.uv[slot], inUv0, inUv1);
+    gl_Position = push.viewProjection * world;
+}

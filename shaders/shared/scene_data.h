@@ -1,0 +1,96 @@
+// GPU-side scene structures shared by forward.*.glsl and the C++ upload (std430 storage buffers
+// and push constants; every member is a vec4/uvec4/mat4, so the GLSL layout and the C++ struct
+// agree without padding rules).
+#ifndef CANDELA_SHARED_SCENE_DATA_H
+#define CANDELA_SHARED_SCENE_DATA_H
+
+#include "shared/compat.h"
+
+CANDELA_NAMESPACE_BEGIN
+
+#define CANDELA_LIGHT_DIRECTIONAL 0u
+#define CANDELA_LIGHT_POINT 1u
+#define CANDELA_LIGHT_SPOT 2u
+
+#define CANDELA_ALPHA_OPAQUE 0u
+#define CANDELA_ALPHA_MASK 1u
+#define CANDELA_ALPHA_BLEND 2u
+
+// Texture slots of a material, in binding order of descriptor set 1.
+#define CANDELA_TEX_BASE_COLOR 0
+#define CANDELA_TEX_METALLIC_ROUGHNESS 1
+#define CANDELA_TEX_NORMAL 2
+#define CANDELA_TEX_OCCLUSION 3
+#define CANDELA_TEX_EMISSIVE 4
+#define CANDELA_TEX_COUNT 5
+
+// One punctual light (KHR_lights_punctual), world space.
+struct LightData {
+    vec4 positionRange;   // xyz position, w range (0 = infinite)
+    vec4 directionType;   // xyz unit direction the light travels, w type (CANDELA_LIGHT_*)
+    vec4 color;           // rgb = colour × intensity, w unused
+    vec4 cone;            // x = 1/max(cos inner − cos outer, 1e-4), y = −cos outer × x (spot)
+};
+
+// One drawn primitive instance.
+struct DrawData {
+    mat4 world;
+    mat4 normalMatrix;  // inverse transpose of world's upper 3×3 (as a mat4)
+    uvec4 material;     // x: index into the material array
+};
+
+// KHR_texture_transform of one texture slot as a 2×3 matrix: uv' = (dot(r0.xy, uv) + r0.z,
+// dot(r1.xy, uv) + r1.z); r0.w = texCoord set (0 or 1).
+struct UvTransform {
+    vec4 r0;
+    vec4 r1;
+};
+
+struct MaterialData {
+    vec4 baseColorFactor;
+    vec4 emissive;        // rgb = emissiveFactor × emissiveStrength
+    vec4 params;          // x metallic, y roughness, z normalScale, w occlusionStrength
+    vec4 alpha;           // x alphaCutoff, y alphaMode (as float), zw unused
+    UvTransform uv[CANDELA_TEX_COUNT];
+};
+
+// Push constants of forward.vert/frag: the view and which draw this is (96 bytes, within the
+// 128 bytes every device guarantees).
+struct ForwardPush {
+    mat4 viewProjection;
+    vec4 eye;     // xyz: camera position (world)
+    uvec4 counts; // x: light count, y: draw index, zw: unused
+};
+
+// Applies a texture slot's transform to the vertex's texture coordinate sets.
+CANDELA_FN vec2 transformUv(UvTransform t, vec2 uv0, vec2 uv1) {
+    vec2 uv = t.r0.w > 0.5f ? uv1 : uv0;
+    return vec2(dot(vec2(t.r0.x, t.r0.y), uv) + t.r0.z, dot(vec2(t.r1.x, t.r1.y), uv) + t.r1.z);
+}
+
+// KHR_lights_punctual range attenuation: smooth window to 0 at `range` (0 = none), times 1/d².
+CANDELA_FN float rangeAttenuation(float distance2, float range) {
+    float inverseSquare = 1.0f / max(distance2, 1e-8f);
+    if (range <= 0.0f) return inverseSquare;
+    float ratio = distance2 / (range * range);
+    float window = clamp(1.0f - ratio * ratio, 0.0f, 1.0f);
+    return window * window * inverseSquare;
+}
+
+// KHR_lights_punctual spot cone falloff (smoothstep-like as in the specification's sample code).
+CANDELA_FN float spotAttenuation(vec3 lightToSurface, vec3 spotDirection, vec4 cone) {
+    float cd = dot(spotDirection, lightToSurface);
+    float attenuation = clamp(cd * cone.x + cone.y, 0.0f, 1.0f);
+    return attenuation * attenuation;
+}
+
+CANDELA_NAMESPACE_END
+
+#ifdef __cplusplus
+static_assert(sizeof(candela::shading::LightData) == 64);
+static_assert(sizeof(candela::shading::DrawData) == 144);
+static_assert(sizeof(candela::shading::MaterialData) == 64 + 32 * CANDELA_TEX_COUNT);
+static_assert(sizeof(candela::shading::ForwardPush) == 96);
+#endif
+
+#endif

@@ -1,0 +1,38 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Exposure, tone mapping, background compositing and sRGB encoding of the HDR frame.
+// The HDR image's alpha is coverage (geometry writes 1, blended surfaces their alpha, the clear 0);
+// its RGB is premultiplied by coverage.
+#include "shared/tonemap.h"
+
+layout(set = 0, binding = 0) uniform sampler2D hdrImage;
+layout(push_constant) uniform Push {
+    TonemapParams params;
+};
+
+layout(location = 0) out vec4 outColor;
+
+// Triangular dither in [-1, 1) LSB from an integer hash of the pixel.
+float ditherNoise(uvec2 p) {
+    uint h = p.x * 1973u + p.y * 9277u + 89173u;
+    h = (h << 13u) ^ h;
+    h = h * (h * h * 15731u + 789221u) + 1376312589u;
+    float a = float(h & 0xffffu) / 65536.0f;
+    float b = float((h >> 16u) & 0xffffu) / 65536.0f;
+    return a + b - 1.0f;
+}
+
+void main() {
+    vec4 hdr = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0);
+    float coverage = clamp(hdr.a, 0.0f, 1.0f);
+    vec3 radiance = coverage > 0.0f ? hdr.rgb / coverage : vec3(0.0f);
+    vec3 display = applyTonemap(radiance * params.exposureScale, params.op);
+    float alpha = coverage;
+    if (params.background.a > 0.0f) {
+        display = mix(params.background.rgb, display, coverage);
+        alpha = 1.0f;
+    }
+    if (params.encodeSrgb != 0u) display = srgbEncode(display);
+    if (params.dither != 0u) display += vec3(ditherNoise(uvec2(gl_FragCoord.xy)) / 255.0f);
+    outColor = vec4(display, alpha);
+}

@@ -1,0 +1,51 @@
+// The scene frame graph (forward → tonemap → readback) on the built-in sphere grid.
+#include "gpu_test.h"
+
+#include "io/image_file.h"
+#include "renderer.h"
+#include "scene/builtin_scenes.h"
+#include "shared/tonemap.h"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace candela::test {
+namespace {
+
+// Writes captures next to the test binary when CANDELA_TEST_OUTPUT is set (for looking at them).
+void maybeWrite(const char* name, const CapturedFrame& frame) {
+    if (const char* dir = std::getenv("CANDELA_TEST_OUTPUT"))
+        io::writePng(std::string(dir) + "/" + name, frame.width, frame.height, frame.rgba8);
+}
+
+TEST_F(GpuTest, SphereGridRendersFiniteHdrAndCullsTonemapForFloatOutput) {
+    const scene::Scene grid = scene::makeSphereGrid();
+    Renderer renderer(context());
+    const CapturedFrame hdr = renderer.capture({.width = 160, .height = 90, .floatOutput = true, .scene = &grid});
+    size_t covered = 0;
+    for (size_t i = 0; i < hdr.rgba32f.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(hdr.rgba32f[i])) << "texel " << i / 4;
+        if (i % 4 == 3 && hdr.rgba32f[i] > 0.5f) ++covered;
+    }
+    // 49 unit spheres framed by the grid's bounding sphere cover about 12% of a 16:9 image.
+    EXPECT_GT(covered, hdr.rgba32f.size() / 4 * 8 / 100);
+    EXPECT_LT(covered, hdr.rgba32f.size() / 4 * 16 / 100);
+    const graph::RenderGraph& g = renderer.lastGraph();
+    EXPECT_EQ(g.compiled().passes[*g.findPass("tonemap")].cullReason, graph::CullReason::NoOutput);
+}
+
+TEST_F(GpuTest, SphereGridPngHasLitSpheresOnTheBackground) {
+    const scene::Scene grid = scene::makeSphereGrid();
+    Renderer renderer(context());
+    RenderSettings settings{.width = 960, .height = 540, .scene = &grid};
+    settings.tonemap.background = shading::srgbDecode(glm::vec3(0x26 / 255.0f));
+    const CapturedFrame frame = renderer.capture(settings);
+    maybeWrite("sphere_grid.png", frame);
+    ASSERT_EQ(frame.rgba8.size(), 960u * 540u * 4u);
+    // Corner pixel: the default background #262626.
+    EXPECT_EQ(frame.rgba8[0], 0x26);
+    EXPECT_EQ(frame.rgba8[3], 255);
+}
+
+}  // namespace
+}  // namespace candela::test
