@@ -1,0 +1,123 @@
+// Golden-image tests: the default scene and glTF sample models rendered on lavapipe with the
+// validation layer on, compared with approved images in tests/golden/.
+//
+// Metric (stated once, applied to every case): a pixel differs when any RGBA channel differs by
+// more than 3 levels (of 255); a case fails when more than 0.1% of its pixels differ or any channel
+// differs by more than 24 levels. lavapipe is deterministic on one machine; the slack absorbs LLVM
+// code generation differences between CPUs.
+//
+// On failure, or when a golden is missing, the render and an amplified difference image are
+// written to ${build}/tests/gpu/golden_out/; tools/approve-goldens.sh copies renders you have
+// looked at into tests/golden/.
+
+#include "gpu_test.h"
+
+#include "io/image_file.h"
+#include "renderer.h"
+#include "scene/builtin_scenes.h"
+#include "scene/gltf_loader.h"
+#include "shared/tonemap.h"
+
+#include <stb_image.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+namespace candela::test {
+namespace {
+
+struct GoldenCase {
+    const char* name;
+    const char* model;  // path under ../shared/assets/models, or "" for the built-in sphere grid
+    glm::vec3 orbit{0.0f, 90.0f, 0.0f};  // θ°, φ°, r (0: frame the bounds)
+};
+
+constexpr uint32_t kWidth = 256, kHeight = 192;
+constexpr int kPixelThreshold = 3;
+constexpr int kMaxDifference = 24;
+constexpr double kMaxDifferingShare = 0.001;
+
+const GoldenCase kCases[] = {
+    {"default_scene", ""},
+    {"damaged_helmet", "DamagedHelmet/glTF-Binary/DamagedHelmet.glb", {-30.0f, 80.0f, 0.0f}},
+    {"metal_rough_spheres", "MetalRoughSpheresNoTextures/glTF/MetalRoughSpheresNoTextures.gltf"},
+    {"normal_tangent", "NormalTangentTest/glTF/NormalTangentTest.gltf"},
+    {"normal_tangent_mirror", "NormalTangentMirrorTest/glTF/NormalTangentMirrorTest.gltf"},
+    {"alpha_blend_mode", "AlphaBlendModeTest/glTF-Binary/AlphaBlendModeTest.glb"},
+    {"texture_settings", "TextureSettingsTest/glTF/TextureSettingsTest.gltf"},
+    {"orientation", "OrientationTest/glTF/OrientationTest.gltf", {20.0f, 70.0f, 0.0f}},
+    {"negative_scale", "NegativeScaleTest/glTF-Binary/NegativeScaleTest.glb"},
+    {"vertex_color", "VertexColorTest/glTF/VertexColorTest.gltf"},
+    {"texture_transform", "TextureTransformTest/glTF/TextureTransformTest.gltf"},
+    {"emissive_strength", "EmissiveStrengthTest/glTF-Binary/EmissiveStrengthTest.glb"},
+    {"mesh_primitive_modes", "MeshPrimitiveModes/glTF/MeshPrimitiveModes.gltf"},
+    {"triangle_without_indices", "TriangleWithoutIndices/glTF/TriangleWithoutIndices.gltf"},
+    {"unlit", "UnlitTest/glTF/UnlitTest.gltf"},
+};
+
+class GoldenTest : public GpuTest, public ::testing::WithParamInterface<GoldenCase> {};
+
+void writeDiff(const std::filesystem::path& path, const std::vector<uint8_t>& a, const uint8_t* b) {
+    std::vector<uint8_t> diff(a.size());
+    for (size_t i = 0; i < a.size(); i += 4) {
+        int d = 0;
+        for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(int(a[i + c]) - int(b[i + c])));
+        const uint8_t v = static_cast<uint8_t>(std::min(255, d * 16));
+        diff[i] = v, diff[i + 1] = d > kPixelThreshold ? 0 : v, diff[i + 2] = d > kPixelThreshold ? 0 : v, diff[i + 3] = 255;
+    }
+    io::writePng(path, kWidth, kHeight, diff);
+}
+
+TEST_P(GoldenTest, MatchesApprovedImage) {
+    const GoldenCase& c = GetParam();
+    scene::Scene scene;
+    if (*c.model) {
+        const std::filesystem::path path = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models" / c.model;
+        if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared asset missing: " << path;
+        scene = scene::loadGltf(path);
+    } else {
+        scene = scene::makeSphereGrid();
+    }
+    RenderSettings settings{.width = kWidth, .height = kHeight, .scene = &scene};
+    settings.camera.orbit = c.orbit;
+    settings.tonemap.background = shading::srgbDecode(glm::vec3(0x26 / 255.0f));
+    Renderer renderer(context());
+    const CapturedFrame frame = renderer.capture(settings);
+
+    const std::filesystem::path outDir = CANDELA_GOLDEN_OUT;
+    std::filesystem::create_directories(outDir);
+    const std::filesystem::path golden = std::filesystem::path(CANDELA_GOLDEN_DIR) / (std::string(c.name) + ".png");
+    const std::filesystem::path actual = outDir / (std::string(c.name) + ".actual.png");
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* expected = stbi_load(golden.c_str(), &w, &h, &channels, 4);
+    if (!expected) {
+        io::writePng(actual, kWidth, kHeight, frame.rgba8);
+        FAIL() << "no golden " << golden << "; look at " << actual << " and approve it with tools/approve-goldens.sh";
+    }
+    ASSERT_EQ(w, int(kWidth));
+    ASSERT_EQ(h, int(kHeight));
+    size_t differing = 0;
+    int maxDifference = 0;
+    for (size_t i = 0; i < frame.rgba8.size(); i += 4) {
+        int d = 0;
+        for (int ch = 0; ch < 4; ++ch) d = std::max(d, std::abs(int(frame.rgba8[i + ch]) - int(expected[i + ch])));
+        maxDifference = std::max(maxDifference, d);
+        differing += d > kPixelThreshold;
+    }
+    const double share = double(differing) / (kWidth * kHeight);
+    const bool pass = share <= kMaxDifferingShare && maxDifference <= kMaxDifference;
+    if (!pass) {
+        io::writePng(actual, kWidth, kHeight, frame.rgba8);
+        writeDiff(outDir / (std::string(c.name) + ".diff.png"), frame.rgba8, expected);
+    }
+    stbi_image_free(expected);
+    EXPECT_TRUE(pass) << c.name << ": " << differing << " pixels (" << share * 100.0 << "%) differ by more than "
+                      << kPixelThreshold << " levels; max difference " << maxDifference << "; see " << outDir;
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, GoldenTest, ::testing::ValuesIn(kCases),
+                         [](const ::testing::TestParamInfo<GoldenCase>& row) { return std::string(row.param.name); });
+
+}  // namespace
+}  // namespace candela::test
