@@ -14,13 +14,11 @@
 //   - absolute 1e-9 · intensity below the floor.
 // And: no NaN or Inf anywhere in the output, at intensity 1 and 1e6.
 #include "gpu_test.h"
+#include "graph_runner.h"
 
 #include "../unit/brdf_reference.h"
-#include "graph/graph_executor.h"
 #include "passes/brdf_probe_pass.h"
 #include "passes/readback_pass.h"
-#include "vk/buffer.h"
-#include "vk/frame.h"
 
 #include <cmath>
 #include <cstring>
@@ -43,37 +41,14 @@ constexpr double kFloor = 1e-6;
 // Builds the graph brdf_probe → readback (into an imported host-visible buffer), compiles it,
 // realizes its transients, executes it in a frame slot and returns the probe image's texels.
 std::vector<glm::vec4> runProbe(vk::Context& context, float intensity) {
-    vk::FrameRing frames(context, 1);
-    graph::TransientPool transients(context);
     const BrdfProbePass probe(context);
-    const VkDeviceSize bytes = sizeof(glm::vec4) * BrdfProbePass::kWidth * BrdfProbePass::kHeight;
-    const vk::Buffer readback(context, {.size = bytes,
-                                        .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                        .memory = vk::MemoryUsage::Readback,
-                                        .name = "brdf probe readback"});
-
-    vk::FrameSlot& slot = frames.begin();
+    GraphRunner runner(context);
     graph::RenderGraph graph;
-    const graph::BufferId target =
-        graph.importBuffer("readback", {.size = bytes}, graph::ResourceState{}, passes::hostReadState());
+    const VkDeviceSize bytes = sizeof(glm::vec4) * BrdfProbePass::kWidth * BrdfProbePass::kHeight;
+    const graph::BufferId target = runner.readbackBuffer(graph, "brdf probe readback", bytes);
     passes::addReadbackPass(graph, probe.add(graph, intensity), target);
-    graph.compile({.memoryRequirements = graph::deviceMemoryRequirements(context, graph.declaration())});
-    transients.realize(graph.declaration(), graph.compiled());
-    graph::ImportBindings imports;
-    imports.bind(target, readback.handle());
-    graph::executeGraph({.context = context,
-                         .graph = graph,
-                         .imports = imports,
-                         .transients = transients,
-                         .cmd = slot.cmd,
-                         .descriptors = *slot.descriptors});
-    frames.submit();
-    frames.waitCurrent();
-
-    readback.invalidate();
-    std::vector<glm::vec4> texels(size_t(BrdfProbePass::kWidth) * BrdfProbePass::kHeight);
-    std::memcpy(texels.data(), readback.mapped(), bytes);
-    return texels;
+    runner.run(graph);
+    return runner.read<glm::vec4>(target);
 }
 
 std::string describe(const shading::BrdfProbeSample& s, uint32_t x, uint32_t y, int channel, float got, double expected) {

@@ -47,5 +47,14 @@ TEST_F(GpuTest, SphereGridPngHasLitSpheresOnTheBackground) {
     EXPECT_EQ(frame.rgba8[3], 255);
 }
 
+TEST_F(GpuTest, TransparentBackgroundWritesAlphaZeroOutsideGeometry) {
+    const scene::Scene grid = scene::makeSphereGrid();
+    Renderer renderer(context());
+    const CapturedFrame frame = renderer.capture({.width = 160, .height = 90, .scene = &grid});  // no background
+    EXPECT_EQ(frame.rgba8[3], 0);  // corner: background
+    const size_t centre = (size_t(45) * 160 + 80) * 4;  // the middle sphere
+    EXPECT_EQ(frame.rgba8[centre + 3], 255);
+}
+
 }  // namespace
 }  // namespace candela::test
