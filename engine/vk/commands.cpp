@@ -53,32 +53,10 @@ void OneShotCommands::submitAndWait() {
     VK_CHECK(vkResetFences(mContext->device(), 1, &fence));
 }
 
-void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkPipelineStageFlags2 srcStages,
-                  VkAccessFlags2 srcAccess, VkImageLayout oldLayout, VkPipelineStageFlags2 dstStages,
-                  VkAccessFlags2 dstAccess, VkImageLayout newLayout) {
-    const VkImageMemoryBarrier2 barrier{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
-                                        .srcStageMask = srcStages,
-                                        .srcAccessMask = srcAccess,
-                                        .dstStageMask = dstStages,
-                                        .dstAccessMask = dstAccess,
-                                        .oldLayout = oldLayout,
-                                        .newLayout = newLayout,
-                                        .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                                        .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                                        .image = image,
-                                        .subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0,
-                                                             VK_REMAINING_ARRAY_LAYERS}};
-    const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
-                                      .imageMemoryBarrierCount = 1,
-                                      .pImageMemoryBarriers = &barrier};
-    vkCmdPipelineBarrier2(cmd, &dependency);
-}
-
 namespace {
-VkImageMemoryBarrier2 mipBarrier(VkImage image, VkImageAspectFlags aspect, uint32_t mip, uint32_t mipCount,
-                                 uint32_t layer, VkPipelineStageFlags2 srcStages, VkAccessFlags2 srcAccess,
-                                 VkImageLayout oldLayout, VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess,
-                                 VkImageLayout newLayout) {
+VkImageMemoryBarrier2 rangeBarrier(VkImage image, VkImageSubresourceRange range, VkPipelineStageFlags2 srcStages,
+                                   VkAccessFlags2 srcAccess, VkImageLayout oldLayout, VkPipelineStageFlags2 dstStages,
+                                   VkAccessFlags2 dstAccess, VkImageLayout newLayout) {
     return {.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
             .srcStageMask = srcStages,
             .srcAccessMask = srcAccess,
@@ -89,7 +67,15 @@ VkImageMemoryBarrier2 mipBarrier(VkImage image, VkImageAspectFlags aspect, uint3
             .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
             .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
             .image = image,
-            .subresourceRange = {aspect, mip, mipCount, layer, 1}};
+            .subresourceRange = range};
+}
+
+VkImageMemoryBarrier2 mipBarrier(VkImage image, VkImageAspectFlags aspect, uint32_t mip, uint32_t mipCount,
+                                 uint32_t layer, VkPipelineStageFlags2 srcStages, VkAccessFlags2 srcAccess,
+                                 VkImageLayout oldLayout, VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess,
+                                 VkImageLayout newLayout) {
+    return rangeBarrier(image, {aspect, mip, mipCount, layer, 1}, srcStages, srcAccess, oldLayout, dstStages, dstAccess,
+                        newLayout);
 }
 
 void barriers(VkCommandBuffer cmd, std::initializer_list<VkImageMemoryBarrier2> list) {
@@ -99,6 +85,13 @@ void barriers(VkCommandBuffer cmd, std::initializer_list<VkImageMemoryBarrier2> 
     vkCmdPipelineBarrier2(cmd, &dependency);
 }
 }  // namespace
+
+void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkPipelineStageFlags2 srcStages,
+                  VkAccessFlags2 srcAccess, VkImageLayout oldLayout, VkPipelineStageFlags2 dstStages,
+                  VkAccessFlags2 dstAccess, VkImageLayout newLayout) {
+    barriers(cmd, {rangeBarrier(image, {aspect, 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS}, srcStages,
+                                srcAccess, oldLayout, dstStages, dstAccess, newLayout)});
+}
 
 void recordMipChain(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkExtent3D baseExtent,
                     uint32_t baseMip, uint32_t mipLevels, uint32_t layer, VkImageLayout finalLayout) {

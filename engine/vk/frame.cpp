@@ -41,16 +41,19 @@ void FrameRing::collectCompleted() {
     if (completed >= 0) mContext->collect(static_cast<uint64_t>(completed));
 }
 
+void FrameRing::waitSlot(FrameSlot& slot) {
+    if (!slot.submitted) return;
+    VkFence fence = slot.fence.get();
+    VK_CHECK(vkWaitForFences(mContext->device(), 1, &fence, VK_TRUE, UINT64_MAX));
+    VK_CHECK(vkResetFences(mContext->device(), 1, &fence));
+    slot.submitted = false;
+    slot.timestamps->fetch();
+}
+
 FrameSlot& FrameRing::begin() {
     mCurrent = (mCurrent + 1) % mSlots.size();
     FrameSlot& slot = mSlots[mCurrent];
-    if (slot.submitted) {
-        VkFence fence = slot.fence.get();
-        VK_CHECK(vkWaitForFences(mContext->device(), 1, &fence, VK_TRUE, UINT64_MAX));
-        VK_CHECK(vkResetFences(mContext->device(), 1, &fence));
-        slot.submitted = false;
-        slot.timestamps->fetch();
-    }
+    waitSlot(slot);
     collectCompleted();
     slot.descriptors->reset();
     VK_CHECK(vkResetCommandPool(mContext->device(), slot.pool.get(), 0));
@@ -79,26 +82,12 @@ void FrameRing::submit(const std::vector<VkSemaphoreSubmitInfo>& waits, const st
 }
 
 void FrameRing::waitCurrent() {
-    FrameSlot& slot = mSlots[mCurrent];
-    if (!slot.submitted) return;
-    VkFence fence = slot.fence.get();
-    VK_CHECK(vkWaitForFences(mContext->device(), 1, &fence, VK_TRUE, UINT64_MAX));
-    VK_CHECK(vkResetFences(mContext->device(), 1, &fence));
-    slot.submitted = false;
-    slot.timestamps->fetch();
+    waitSlot(mSlots[mCurrent]);
     collectCompleted();
 }
 
 void FrameRing::waitIdle() {
-    for (uint32_t i = 0; i < mSlots.size(); ++i) {
-        FrameSlot& slot = mSlots[i];
-        if (!slot.submitted) continue;
-        VkFence fence = slot.fence.get();
-        VK_CHECK(vkWaitForFences(mContext->device(), 1, &fence, VK_TRUE, UINT64_MAX));
-        VK_CHECK(vkResetFences(mContext->device(), 1, &fence));
-        slot.submitted = false;
-        slot.timestamps->fetch();
-    }
+    for (FrameSlot& slot : mSlots) waitSlot(slot);
     mContext->waitIdleAndCollect();
 }
 

@@ -44,6 +44,8 @@ public:
 
 private:
     void collectCompleted();
+    // Waits for the slot's submitted frame (if any) and fetches its timestamps.
+    void waitSlot(FrameSlot& slot);
     Context* mContext;
     std::vector<FrameSlot> mSlots;
     uint32_t mCurrent = 0;

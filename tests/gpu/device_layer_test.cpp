@@ -17,6 +17,18 @@
 namespace candela::test {
 namespace {
 
+// Makes copy results visible to host reads after the fence.
+void copiesToHostBarrier(VkCommandBuffer cmd) {
+    const VkMemoryBarrier2 toHost{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                                  .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
+                                  .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                  .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
+                                  .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT};
+    const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1,
+                                      .pMemoryBarriers = &toHost};
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
 TEST_F(GpuTest, SmallBuffersShareDeviceMemoryBlocks) {
     const uint32_t before = context().allocator().stats().deviceMemoryObjects;
     std::vector<vk::Buffer> buffers;
@@ -68,14 +80,7 @@ TEST_F(GpuTest, UploadedBufferAndImageReadBackIdentical) {
                                    .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                                    .imageExtent = {w, h, 1}};
     vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle(), 1, &region);
-    const VkMemoryBarrier2 toHost{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-                                  .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
-                                  .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                  .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
-                                  .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT};
-    const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1,
-                                      .pMemoryBarriers = &toHost};
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    copiesToHostBarrier(cmd);
     commands.submitAndWait();
     readback.invalidate();
     EXPECT_EQ(std::memcmp(readback.mapped(), words.data(), words.size() * 4), 0);
@@ -114,12 +119,6 @@ TEST(VkCheck, ErrorNamesCallFileLineAndResult) {
     }
 }
 
-}  // namespace
-}  // namespace candela::test
-
-namespace candela::test {
-namespace {
-
 TEST_F(GpuTest, GeneratedMipChainAveragesTheLevelAbove) {
     // 4×4 UNORM image: left half 0, right half 200 → mip 1 (2×2) is 0 | 200, mip 2 (1×1) is 100.
     const uint32_t size = 4;
@@ -142,14 +141,7 @@ TEST_F(GpuTest, GeneratedMipChainAveragesTheLevelAbove) {
         {.bufferOffset = 0, .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 1, 0, 1}, .imageExtent = {2, 2, 1}},
         {.bufferOffset = 16, .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 2, 0, 1}, .imageExtent = {1, 1, 1}}};
     vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle(), 2, regions);
-    const VkMemoryBarrier2 toHost{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-                                  .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
-                                  .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                  .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
-                                  .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT};
-    const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1,
-                                      .pMemoryBarriers = &toHost};
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    copiesToHostBarrier(cmd);
     commands.submitAndWait();
     readback.invalidate();
     const auto* bytes = reinterpret_cast<const uint8_t*>(readback.mapped());

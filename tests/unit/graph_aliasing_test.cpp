@@ -1,7 +1,7 @@
 // Steps "lifetimes" and "aliasing": transients alive at the same time never share bytes, the
 // others may; alignment, resource kinds and memory types are respected.
 
-#include "graph/render_graph.h"
+#include "graph_test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -11,22 +11,6 @@
 namespace candela::graph {
 namespace {
 
-struct NoData {};
-
-template <class Setup>
-void addPass(RenderGraph& graph, const std::string& name, PassType type, Setup setup) {
-    graph.addPass<NoData>(
-        name, type, [&](PassBuilder& b, NoData&) { setup(b); }, [](const NoData&, PassContext&) {});
-}
-
-// "p3" from ("p", 3). (Appending avoids GCC 12's -Wrestrict false positive on literal + temporary.)
-std::string indexed(const char* prefix, int index) {
-    std::string name = prefix;
-    name += std::to_string(index);
-    return name;
-}
-
-const TextureDesc kColor{.width = 64, .height = 64, .format = VK_FORMAT_R8G8B8A8_UNORM};
 constexpr VkDeviceSize kColorBytes = 64 * 64 * 4;
 
 // Checks the aliasing invariants on any compiled graph.

@@ -1,7 +1,7 @@
 // Step "barriers": the exact synchronization2 barriers planned for RAW, WAR, WAW, layout changes,
 // repeated readers, imported initial/final states and memory taken over from aliased transients.
 
-#include "graph/render_graph.h"
+#include "graph_test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -10,23 +10,6 @@
 
 namespace candela::graph {
 namespace {
-
-struct NoData {};
-
-template <class Setup>
-void addPass(RenderGraph& graph, const std::string& name, PassType type, Setup setup) {
-    graph.addPass<NoData>(
-        name, type, [&](PassBuilder& b, NoData&) { setup(b); }, [](const NoData&, PassContext&) {});
-}
-
-// "p3" from ("p", 3). (Appending avoids GCC 12's -Wrestrict false positive on literal + temporary.)
-std::string indexed(const char* prefix, int index) {
-    std::string name = prefix;
-    name += std::to_string(index);
-    return name;
-}
-
-const TextureDesc kColor{.width = 64, .height = 64, .format = VK_FORMAT_R8G8B8A8_UNORM};
 
 constexpr VkPipelineStageFlags2 kNoStage = VK_PIPELINE_STAGE_2_NONE;
 constexpr VkPipelineStageFlags2 kColorOut = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;

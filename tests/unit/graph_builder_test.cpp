@@ -1,6 +1,6 @@
 // RenderGraph / PassBuilder: what the setup phase records, and how it rejects misuse.
 
-#include "graph/render_graph.h"
+#include "graph_test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -8,16 +8,6 @@
 
 namespace candela::graph {
 namespace {
-
-struct NoData {};
-
-template <class Setup>
-void addPass(RenderGraph& graph, const std::string& name, PassType type, Setup setup) {
-    graph.addPass<NoData>(
-        name, type, [&](PassBuilder& b, NoData&) { setup(b); }, [](const NoData&, PassContext&) {});
-}
-
-const TextureDesc kColor{.width = 64, .height = 64, .format = VK_FORMAT_R8G8B8A8_UNORM};
 
 // Runs `fn`, expects a GraphError and returns its message.
 template <class Fn>

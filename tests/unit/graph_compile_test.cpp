@@ -1,6 +1,6 @@
 // compileGraph as a whole: the named steps, empty graphs, and a synthetic graph of realistic size.
 
-#include "graph/render_graph.h"
+#include "graph_test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -8,21 +8,6 @@
 
 namespace candela::graph {
 namespace {
-
-struct NoData {};
-
-template <class Setup>
-void addPass(RenderGraph& graph, const std::string& name, PassType type, Setup setup) {
-    graph.addPass<NoData>(
-        name, type, [&](PassBuilder& b, NoData&) { setup(b); }, [](const NoData&, PassContext&) {});
-}
-
-// "p3" from ("p", 3). (Appending avoids GCC 12's -Wrestrict false positive on literal + temporary.)
-std::string indexed(const char* prefix, int index) {
-    std::string name = prefix;
-    name += std::to_string(index);
-    return name;
-}
 
 const std::vector<std::string> kSteps{"validate", "cull", "order", "lifetimes", "aliasing", "barriers"};
 

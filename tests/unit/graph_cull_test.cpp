@@ -1,6 +1,6 @@
 // Step "cull": reference counting from the outputs, disabled passes and their lost-input cascade.
 
-#include "graph/render_graph.h"
+#include "graph_test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -8,22 +8,6 @@
 
 namespace candela::graph {
 namespace {
-
-struct NoData {};
-
-template <class Setup>
-void addPass(RenderGraph& graph, const std::string& name, PassType type, Setup setup) {
-    graph.addPass<NoData>(
-        name, type, [&](PassBuilder& b, NoData&) { setup(b); }, [](const NoData&, PassContext&) {});
-}
-
-const TextureDesc kColor{.width = 64, .height = 64, .format = VK_FORMAT_R8G8B8A8_UNORM};
-
-std::vector<std::string> orderNames(const RenderGraph& graph) {
-    std::vector<std::string> names;
-    for (uint32_t p : graph.compiled().order) names.push_back(graph.declaration().passes[p].name);
-    return names;
-}
 
 const PassInfo& info(const RenderGraph& graph, const std::string& pass) {
     return graph.compiled().passes.at(*graph.findPass(pass));

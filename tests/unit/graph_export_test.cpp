@@ -1,7 +1,7 @@
 // exportJson / exportDot: machine-readable and Graphviz views of a compiled graph.
 
 #include "graph/graph_export.h"
-#include "graph/render_graph.h"
+#include "graph_test_util.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -11,26 +11,18 @@
 namespace candela::graph {
 namespace {
 
-struct NoData {};
-
-template <class Setup>
-void addPass(RenderGraph& graph, const std::string& name, PassType type, Setup setup) {
-    graph.addPass<NoData>(
-        name, type, [&](PassBuilder& b, NoData&) { setup(b); }, [](const NoData&, PassContext&) {});
-}
-
-const TextureDesc kColor{.width = 64, .height = 32, .format = VK_FORMAT_R16G16B16A16_SFLOAT};
+const TextureDesc kHdr{.width = 64, .height = 32, .format = VK_FORMAT_R16G16B16A16_SFLOAT};
 
 // target ← tonemap ← hdr ← lighting, plus "debug" (culled: no output) reading hdr.
 void buildGraph(RenderGraph& graph) {
     const TextureId target =
-        graph.importTexture("target", kColor, {}, ResourceState{0, 0, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR});
+        graph.importTexture("target", kHdr, {}, ResourceState{0, 0, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR});
     TextureId hdr;
     addPass(graph, "lighting", PassType::Graphics,
-            [&](PassBuilder& b) { hdr = b.writeColor(b.createTexture("hdr", kColor), VkClearColorValue{}); });
+            [&](PassBuilder& b) { hdr = b.writeColor(b.createTexture("hdr", kHdr), VkClearColorValue{}); });
     addPass(graph, "debug", PassType::Compute, [&](PassBuilder& b) {
         b.read(hdr, Usage::Sampled);
-        b.write(b.createTexture("histogram", kColor), Usage::StorageWrite);
+        b.write(b.createTexture("histogram", kHdr), Usage::StorageWrite);
     });
     addPass(graph, "tonemap", PassType::Graphics, [&](PassBuilder& b) {
         b.read(hdr, Usage::Sampled);
