@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds the release preset with tests, and runs the whole suite:
 # unit tests (no GPU), GPU tests on lavapipe under the Khronos validation layer with
-# synchronization validation, and CLI tests of the real executable.
+# synchronization validation, and CLI tests of the real executable. Then builds the unit tests
+# with AddressSanitizer + UndefinedBehaviorSanitizer and runs them again (loaders on malformed
+# input, graph compilation).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/install-deps.sh
 cmake --preset release >/dev/null
 cmake --build --preset release -j"$(nproc)"
 ctest --preset release -j"$(nproc)" --timeout 600
+cmake --preset asan >/dev/null
+cmake --build --preset asan -j"$(nproc)" --target candela_unit_tests
+ctest --preset asan -j"$(nproc)" --timeout 600 -L unit
