@@ -42,18 +42,26 @@ vec4 sampleSlot(sampler2D tex, int slot) {
     return texture(tex, inTexUv[slot]);
 }
 
-// Shading normal: interpolated normal (or the face normal when it degenerates), flipped for back
-// faces of double-sided materials, perturbed by the normal map when the variant has one.
+// Shading normal: interpolated normal flipped for back faces of double-sided materials (or, where
+// it degenerates, the face normal on the viewer's side), perturbed by the normal map when the
+// variant has one.
 vec3 shadingNormal(MaterialData m) {
+    // The sign of dFdx × dFdy depends on the framebuffer's y direction (in Vulkan's y-down one it
+    // points away from the viewer), not on the winding: orient it toward the eye explicitly.
     vec3 faceNormal = normalize(cross(dFdx(inWorldPosition), dFdy(inWorldPosition)));
-    vec3 n = dot(inNormal, inNormal) > 1e-12f ? normalize(inNormal) : faceNormal;
-    if (!gl_FrontFacing) n = -n;
+    if (dot(faceNormal, push.eye.xyz - inWorldPosition) < 0.0f) faceNormal = -faceNormal;
+    vec3 n = faceNormal;
+    if (dot(inNormal, inNormal) > 1e-12f) n = gl_FrontFacing ? normalize(inNormal) : -normalize(inNormal);
     if (kNormalMap) {
+        // Sampled outside the branch below: implicit-LOD sampling needs uniform control flow.
+        vec3 tangentNormal = sampleSlot(normalTexture, CANDELA_TEX_NORMAL).xyz * 2.0f - 1.0f;
         vec3 t = inTangent.xyz - n * dot(n, inTangent.xyz);
-        if (dot(t, t) > 1e-12f) {
+        // Relative to the tangent's own length, which scales with the draw's transform: an absolute
+        // threshold let the rounding residual of a tangent along the normal through at scale 1e4
+        // (an arbitrary tangent frame) and would drop valid tangents of scenes scaled by 1e-6.
+        if (dot(t, t) > 1e-6f * dot(inTangent.xyz, inTangent.xyz)) {
             t = normalize(t);
             vec3 b = cross(n, t) * (inTangent.w < 0.0f ? -1.0f : 1.0f);
-            vec3 tangentNormal = sampleSlot(normalTexture, CANDELA_TEX_NORMAL).xyz * 2.0f - 1.0f;
             tangentNormal.xy *= m.params.z;
             vec3 mapped = mat3(t, b, n) * tangentNormal;
             if (dot(mapped, mapped) > 1e-12f) n = normalize(mapped);

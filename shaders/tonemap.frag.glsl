@@ -5,6 +5,13 @@
 // its RGB is premultiplied by coverage.
 #include "shared/tonemap.h"
 
+// Specialization constants: llvmpipe executes both sides of uniform branches, so the operator and
+// the output options are compiled in rather than selected at run time.
+layout(constant_id = 0) const uint kOperator = CANDELA_TONEMAP_PBR_NEUTRAL;
+layout(constant_id = 1) const bool kEncodeSrgb = true;
+layout(constant_id = 2) const bool kDither = false;
+layout(constant_id = 3) const bool kBackground = true;
+
 layout(set = 0, binding = 0) uniform sampler2D hdrImage;
 layout(push_constant) uniform Push {
     TonemapParams params;
@@ -26,13 +33,13 @@ void main() {
     vec4 hdr = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0);
     float coverage = clamp(hdr.a, 0.0f, 1.0f);
     vec3 radiance = coverage > 0.0f ? hdr.rgb / coverage : vec3(0.0f);
-    vec3 display = applyTonemap(radiance * params.exposureScale, params.op);
+    vec3 display = applyTonemap(radiance * params.exposureScale, kOperator);
     float alpha = coverage;
-    if (params.background.a > 0.0f) {
+    if (kBackground) {
         display = mix(params.background.rgb, display, coverage);
         alpha = 1.0f;
     }
-    if (params.encodeSrgb != 0u) display = srgbEncode(display);
-    if (params.dither != 0u) display += vec3(ditherNoise(uvec2(gl_FragCoord.xy)) / 255.0f);
+    if (kEncodeSrgb) display = srgbEncode(display);
+    if (kDither) display += vec3(ditherNoise(uvec2(gl_FragCoord.xy)) / 255.0f);
     outColor = vec4(display, alpha);
 }

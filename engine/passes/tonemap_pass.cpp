@@ -40,11 +40,13 @@ TonemapPass::TonemapPass(vk::Context& context)
     : mContext(context),
       mSampler(vk::createSampler(context, {.filter = VK_FILTER_NEAREST, .minFilter = VK_FILTER_NEAREST, .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {}
 
-const vk::Pipeline& TonemapPass::pipelineFor(VkFormat format) {
-    auto it = mPipelines.find(format);
+const vk::Pipeline& TonemapPass::pipelineFor(VkFormat format, const std::vector<uint32_t>& specialization) {
+    const auto key = std::make_pair(format, specialization);
+    auto it = mPipelines.find(key);
     if (it == mPipelines.end())
-        it = mPipelines.emplace(format, vk::Pipeline::graphics(mContext, "fullscreen.vert", "tonemap.frag",
-                                                               {.colorFormats = {format}}))
+        it = mPipelines
+                 .emplace(key, vk::Pipeline::graphics(mContext, "fullscreen.vert", "tonemap.frag",
+                                                      {.colorFormats = {format}, .specialization = specialization}))
                  .first;
     return it->second;
 }
@@ -55,13 +57,12 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
         TextureId target;
     };
     const VkFormat format = graph.declaration().resources[target.index].texture.format;
-    const vk::Pipeline* pipeline = &pipelineFor(format);
+    const vk::Pipeline* pipeline =
+        &pipelineFor(format, {static_cast<uint32_t>(settings.op), isSrgbFormat(format) ? 0u : 1u, settings.dither ? 1u : 0u,
+                              settings.background ? 1u : 0u});
     shading::TonemapParams params{};
     params.background = settings.background ? glm::vec4(*settings.background, 1.0f) : glm::vec4(0.0f);
     params.exposureScale = std::exp2(settings.exposureEv);
-    params.op = static_cast<uint32_t>(settings.op);
-    params.encodeSrgb = isSrgbFormat(format) ? 0u : 1u;
-    params.dither = settings.dither ? 1u : 0u;
     const vk::Sampler* sampler = &mSampler;
     const Data& data = graph.addPass<Data>(
         "tonemap", PassType::Graphics,

@@ -11,6 +11,8 @@
 #include <map>
 #include <optional>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace candela::passes {
 
@@ -38,9 +40,10 @@ public:
                          const TonemapSettings& settings);
 
 private:
-    const vk::Pipeline& pipelineFor(VkFormat format);
+    // Pipelines by target format and specialization (operator, sRGB encode, dither, background).
+    const vk::Pipeline& pipelineFor(VkFormat format, const std::vector<uint32_t>& specialization);
     vk::Context& mContext;
-    std::map<VkFormat, vk::Pipeline> mPipelines;  // one per target format
+    std::map<std::pair<VkFormat, std::vector<uint32_t>>, vk::Pipeline> mPipelines;
     vk::Sampler mSampler;
 };
 

@@ -14,13 +14,12 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_TONEMAP_REINHARD 3u
 #define CANDELA_TONEMAP_LINEAR 4u
 
-// Push constants of tonemap.frag (std430).
+// Push constants of tonemap.frag (std430). The operator, sRGB encoding, dithering and whether a
+// background is composited are specialization constants of the pipeline.
 struct TonemapParams {
-    vec4 background;      // linear display RGB of a solid background, and a = 1 to use it (0: keep coverage as alpha)
+    vec4 background;      // rgb: linear display colour of a solid background (when composited)
     float exposureScale;  // 2^EV
-    uint op;              // CANDELA_TONEMAP_*
-    uint encodeSrgb;      // 1: the shader applies the sRGB OETF (UNORM target); 0: the target's _SRGB format does
-    uint dither;          // 1: add ±1 LSB triangular dither before 8-bit quantization
+    float pad0, pad1, pad2;
 };
 
 // Khronos PBR Neutral (https://github.com/KhronosGroup/ToneMapping, reference implementation).

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -45,17 +46,79 @@ struct BadInput {
     const char* fragment;
 };
 
-class BadInputTest : public ::testing::TestWithParam<BadInput> {};
+void writeFile(const std::filesystem::path& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary) << bytes;
+}
+
+void appendU32(std::string& out, uint32_t v) {
+    for (int i = 0; i < 4; ++i) out += char(v >> (8 * i));
+}
+
+// The scene files the bad-input rows name as {dir}/NAME, written into a fresh temporary folder:
+//   triangle.gltf (+ triangle.bin)  a valid one-triangle scene without cameras
+//   truncated.glb                   the same triangle as GLB, cut to half its length
+//   syntax.gltf                     a JSON syntax error (trailing comma)
+//   scene.obj                       a Wavefront OBJ triangle (not glTF)
+//   folder.gltf/                    a directory
+std::filesystem::path writeSceneFiles() {
+    const auto dir = std::filesystem::temp_directory_path() / ("candela_cli_scenes_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir / "folder.gltf");
+    const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    const std::string bin(reinterpret_cast<const char*>(positions), sizeof positions);
+    const std::string json =
+        R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+        R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],)"
+        R"("bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"byteLength":36%s}]})";
+    auto withUri = [&](const std::string& uri) {
+        std::string out = json;
+        return out.replace(out.find("%s"), 2, uri);
+    };
+    writeFile(dir / "triangle.bin", bin);
+    writeFile(dir / "triangle.gltf", withUri(R"(,"uri":"triangle.bin")"));
+    std::string chunk = withUri("");
+    while (chunk.size() % 4) chunk += ' ';
+    std::string glb;
+    appendU32(glb, 0x46546C67);  // "glTF"
+    appendU32(glb, 2);
+    appendU32(glb, uint32_t(12 + 8 + chunk.size() + 8 + bin.size()));
+    appendU32(glb, uint32_t(chunk.size()));
+    appendU32(glb, 0x4E4F534A);  // "JSON"
+    glb += chunk;
+    appendU32(glb, uint32_t(bin.size()));
+    appendU32(glb, 0x004E4942);  // "BIN"
+    glb += bin;
+    writeFile(dir / "truncated.glb", glb.substr(0, glb.size() / 2));
+    writeFile(dir / "syntax.gltf", R"({"asset": {"version": "2.0"},})");
+    writeFile(dir / "scene.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    return dir;
+}
+
+// Replaces every "{dir}" in `text` with `dir`.
+std::string expand(std::string text, const std::string& dir) {
+    for (size_t at = text.find("{dir}"); at != std::string::npos; at = text.find("{dir}", at + dir.size()))
+        text.replace(at, 5, dir);
+    return text;
+}
+
+class BadInputTest : public ::testing::TestWithParam<BadInput> {
+protected:
+    static void SetUpTestSuite() { sDir = writeSceneFiles(); }
+    static void TearDownTestSuite() { std::filesystem::remove_all(sDir); }
+    static inline std::filesystem::path sDir;
+};
 
 TEST_P(BadInputTest, OneLineErrorAndNonZeroExit) {
     const BadInput& row = GetParam();
-    const Result r = run(row.args);
-    EXPECT_NE(r.exitCode, 0) << row.args;
-    EXPECT_NE(r.exitCode, -1) << "crashed: " << row.args;
+    const std::string args = expand(row.args, sDir.string()), fragment = expand(row.fragment, sDir.string());
+    const Result r = run(args);
+    EXPECT_NE(r.exitCode, 0) << args;
+    EXPECT_NE(r.exitCode, -1) << "crashed: " << args;
     ASSERT_FALSE(r.stderrText.empty());
     EXPECT_EQ(r.stderrText.find('\n'), r.stderrText.size() - 1) << "expected one line, got:\n" << r.stderrText;
     EXPECT_NE(r.stderrText.find("candela: error: "), std::string::npos) << r.stderrText;
-    EXPECT_NE(r.stderrText.find(row.fragment), std::string::npos) << r.stderrText;
+    EXPECT_NE(r.stderrText.find(fragment), std::string::npos) << r.stderrText;
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -77,7 +140,23 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"DeviceIndexOutOfRange", "render --device 42 --out /tmp/candela_dev.png", "no such device index"},
                       BadInput{"InfoDeviceMatchesNothing", "info --device no-such-gpu", "matches no Vulkan device"},
                       BadInput{"SwitchWithValue", "render --validate=yes", "--validate takes no value"},
-                      BadInput{"UnknownPassToDisable", "render --disable-pass nosuchpass --out /tmp/candela_np.png", "nosuchpass"}),
+                      BadInput{"UnknownPassToDisable", "render --disable-pass nosuchpass --out /tmp/candela_np.png", "nosuchpass"},
+                      // Scenes ({dir}: the files of writeSceneFiles) and the scene, camera and image options.
+                      BadInput{"SceneMissing", "render --scene {dir}/missing.gltf --out {dir}/x.png", "{dir}/missing.gltf: cannot open: No such file"},
+                      BadInput{"SceneIsDirectory", "render --scene {dir}/folder.gltf --out {dir}/x.png", "{dir}/folder.gltf: is a directory"},
+                      BadInput{"SceneTruncatedGlb", "render --scene {dir}/truncated.glb --out {dir}/x.png", "{dir}/truncated.glb: truncated GLB: header says"},
+                      BadInput{"SceneJsonSyntaxError", "render --scene {dir}/syntax.gltf --out {dir}/x.png", "{dir}/syntax.gltf: invalid glTF: [json.exception.parse_error.101] parse error at line 1, column 30"},
+                      // The loader tells .gltf from .glb by content and ignores the extension (a glTF file
+                      // named .obj loads): an OBJ file fails as JSON that does not parse.
+                      BadInput{"SceneNotGltf", "render --scene {dir}/scene.obj --out {dir}/x.png", "{dir}/scene.obj: invalid glTF: [json.exception.parse_error.101] parse error at line 1, column 1"},
+                      BadInput{"CameraBeyondSceneCameras", "render --scene {dir}/triangle.gltf --camera 3 --out {dir}/x.png", "--camera 3: the scene has 0 cameras"},
+                      BadInput{"CameraOrbitTwoNumbers", "render --camera-orbit 30,45 --out {dir}/x.png", "--camera-orbit: expected three comma-separated numbers, got '30,45'"},
+                      BadInput{"FovZero", "render --fov 0 --out {dir}/x.png", "--fov: expected degrees between 0 and 180, got '0'"},
+                      BadInput{"TonemapUnknown", "render --tonemap filmic --out {dir}/x.png", "--tonemap: unknown operator 'filmic'"},
+                      BadInput{"ShadingUnknown", "render --shading lambert --out {dir}/x.png", "--shading: unknown model 'lambert'"},
+                      BadInput{"BackgroundFiveHexDigits", "render --background '#12345' --out {dir}/x.png", "--background: expected #rrggbb, got '#12345'"},
+                      BadInput{"BackgroundSkybox", "render --background skybox --out {dir}/x.png", "--background skybox: there is no environment to show"},
+                      BadInput{"ExposureNan", "render --exposure nan --out {dir}/x.png", "--exposure: expected a number, got 'nan'"}),
     [](const ::testing::TestParamInfo<BadInput>& row) { return std::string(row.param.name); });
 
 TEST(Cli, HelpExitsZero) { EXPECT_EQ(run("--help").exitCode, 0); }
