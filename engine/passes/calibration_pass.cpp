@@ -1,6 +1,6 @@
 #include "passes/calibration_pass.h"
 
-#include "graph/graph_executor.h"
+#include "passes/fullscreen.h"
 #include "vk/upload.h"
 
 #include <glm/gtc/packing.hpp>
@@ -76,11 +76,7 @@ TextureId CalibrationPass::add(RenderGraph& graph, uint32_t width, uint32_t heig
                                             .image("prefilteredMap", mPrefiltered.view(), layout, mSampler.get())
                                             .image("brdfLut", mLut.view(), layout, mSampler.get())
                                             .commit(ctx.context(), ctx.descriptors());
-            ctx.beginRendering();
-            mPipeline.bind(ctx.cmd());
-            vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.layout(), 0, 1, &set, 0, nullptr);
-            vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
-            ctx.endRendering();
+            drawFullscreenTriangle(ctx, mPipeline, set);
         });
     graph.exportTexture(data.target);
     return data.target;

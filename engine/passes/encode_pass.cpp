@@ -1,6 +1,6 @@
 #include "passes/encode_pass.h"
 
-#include "graph/graph_executor.h"
+#include "passes/fullscreen.h"
 
 namespace candela::passes {
 
@@ -26,11 +26,7 @@ TextureId EncodePass::add(RenderGraph& graph, TextureId hdr, TextureId target) c
                 vk::DescriptorWriter(mPipeline.program(), 0)
                     .image("hdrImage", ctx.view(d.hdr), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, mSampler.get())
                     .commit(ctx.context(), ctx.descriptors());
-            ctx.beginRendering();
-            mPipeline.bind(ctx.cmd());
-            vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.layout(), 0, 1, &set, 0, nullptr);
-            vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
-            ctx.endRendering();
+            drawFullscreenTriangle(ctx, mPipeline, set);
         });
     return data.target;
 }

@@ -1,6 +1,6 @@
 #include "passes/tonemap_pass.h"
 
-#include "graph/graph_executor.h"
+#include "passes/fullscreen.h"
 #include "shared/tonemap.h"
 
 #include <cmath>
@@ -75,13 +75,7 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
                 vk::DescriptorWriter(pipeline->program(), 0)
                     .image("hdrImage", ctx.view(d.hdr), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, sampler->get())
                     .commit(ctx.context(), ctx.descriptors());
-            ctx.beginRendering();
-            pipeline->bind(ctx.cmd());
-            vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->layout(), 0, 1, &set, 0,
-                                    nullptr);
-            pipeline->pushConstants(ctx.cmd(), &params, sizeof(params));
-            vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
-            ctx.endRendering();
+            drawFullscreenTriangle(ctx, *pipeline, set, &params, sizeof(params));
         });
     return data.target;
 }

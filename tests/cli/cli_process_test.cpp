@@ -225,6 +225,23 @@ TEST(Cli, FloatOutputsCullTheTonemapPass) {
     std::filesystem::remove_all(dir);
 }
 
+TEST(Cli, BenchReportsFrameAndPassesAsRatiosToCalibration) {
+    const std::string command = std::string(CANDELA_EXECUTABLE) + " bench --validate --frames 2 --width 48 --height 32 --json";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buffer;
+    while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
+    ASSERT_EQ(pclose(pipe), 0) << out;
+    const nlohmann::json report = nlohmann::json::parse(out);
+    EXPECT_EQ(report["frames"], 2);
+    EXPECT_GT(report["calibration"]["medianMs"].get<double>(), 0.0);
+    const double ratio = report["frame"]["medianRatio"].get<double>();
+    EXPECT_NEAR(ratio, report["frame"]["medianMs"].get<double>() / report["calibration"]["medianMs"].get<double>(), 1e-9);
+    ASSERT_EQ(report["passes"].size(), 2u);
+    EXPECT_EQ(report["passes"][0]["name"], "forward");
+    EXPECT_EQ(report["passes"][1]["name"], "tonemap");
+}
+
 TEST(Cli, InfoListsDevicesAndTheChoice) {
     const std::string command = std::string(CANDELA_EXECUTABLE) + " info 2>&1";
     FILE* pipe = popen(command.c_str(), "r");

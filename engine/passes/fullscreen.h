@@ -1,0 +1,21 @@
+#pragma once
+// The draw shared by full-screen passes (fullscreen.vert.glsl + a fragment shader): begin
+// rendering on the pass's declared attachments, bind the pipeline and descriptor set 0, push
+// constants if any, draw one triangle covering the viewport, end rendering.
+
+#include "graph/graph_executor.h"
+#include "vk/pipeline.h"
+
+namespace candela::passes {
+
+inline void drawFullscreenTriangle(const graph::PassContext& ctx, const vk::Pipeline& pipeline, VkDescriptorSet set,
+                                   const void* pushConstants = nullptr, uint32_t pushSize = 0) {
+    ctx.beginRendering();
+    pipeline.bind(ctx.cmd());
+    vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 0, 1, &set, 0, nullptr);
+    if (pushConstants) pipeline.pushConstants(ctx.cmd(), pushConstants, pushSize);
+    vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+    ctx.endRendering();
+}
+
+}  // namespace candela::passes
