@@ -33,7 +33,6 @@ int runBench(const RenderOptions& options) {
     const RenderSettings settings = renderSettings(options, scene);
     vk::Context context(contextDesc(options.common));
     Renderer renderer(context);
-    renderer.validateSettings(settings);
 
     // Warm-up: pipelines, transient pools, scene upload.
     for (int i = 0; i < 2; ++i) {

@@ -75,7 +75,6 @@ int runRender(const RenderOptions& options) {
 
     vk::Context context(contextDesc(options.common));
     Renderer renderer(context);
-    renderer.validateSettings(settings);
     const CapturedFrame frame = renderer.capture(settings);
     if (options.explain)
         for (const std::string& line : renderer.explain()) std::printf("%s\n", line.c_str());

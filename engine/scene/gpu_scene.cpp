@@ -25,8 +25,8 @@ VkSamplerAddressMode addressMode(Wrap wrap) {
 VkFilter filterOf(Filter f) { return f == Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR; }
 
 template <class T>
-vk::Buffer storageBuffer(vk::Context& context, vk::Uploader& uploader, const std::vector<T>& items, const char* name,
-                         VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
+vk::Buffer uploadedBuffer(vk::Context& context, vk::Uploader& uploader, const std::vector<T>& items, const char* name,
+                          VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
     // Zero-sized buffers are invalid: keep one (unused) element.
     const VkDeviceSize size = std::max<VkDeviceSize>(items.size() * sizeof(T), sizeof(T));
     vk::Buffer buffer(context, {.size = size, .usage = usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, .name = name});
@@ -86,14 +86,14 @@ vk::Image solidTexture(vk::Context& context, vk::Uploader& uploader, std::array<
 GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights, float maxAnisotropy)
     : mScene(&scene) {
     vk::Uploader uploader(context);
-    mVertices = storageBuffer(context, uploader, scene.vertices, "vertices", VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-    mIndices = storageBuffer(context, uploader, scene.indices, "indices", VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    mVertices = uploadedBuffer(context, uploader, scene.vertices, "vertices", VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    mIndices = uploadedBuffer(context, uploader, scene.indices, "indices", VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
     std::vector<LightData> lights;
     for (const Light& l : scene.lights) lights.push_back(lightData(l));
     for (const Light& l : extraLights) lights.push_back(lightData(l));
     mLightCount = static_cast<uint32_t>(lights.size());
-    mLights = storageBuffer(context, uploader, lights, "lights");
+    mLights = uploadedBuffer(context, uploader, lights, "lights");
 
     std::vector<DrawData> draws;
     for (const Draw& d : scene.draws) {
@@ -103,11 +103,11 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
         data.material = glm::uvec4(d.material, 0, 0, 0);
         draws.push_back(data);
     }
-    mDraws = storageBuffer(context, uploader, draws, "draws");
+    mDraws = uploadedBuffer(context, uploader, draws, "draws");
 
     std::vector<MaterialData> materials;
     for (const Material& m : scene.materials) materials.push_back(materialData(m));
-    mMaterials = storageBuffer(context, uploader, materials, "materials");
+    mMaterials = uploadedBuffer(context, uploader, materials, "materials");
 
     for (const Image& source : scene.images) {
         const uint32_t mips = std::bit_width(std::max(source.width, source.height));
