@@ -30,7 +30,8 @@ double minimum(const std::vector<double>& values) {
 
 int runBench(const RenderOptions& options) {
     const scene::Scene scene = loadScene(options);
-    const RenderSettings settings = renderSettings(options, scene);
+    const std::optional<scene::Environment> environment = loadEnvironment(options);
+    const RenderSettings settings = renderSettings(options, scene, environment);
     vk::Context context(contextDesc(options.common));
     Renderer renderer(context);
 

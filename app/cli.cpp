@@ -133,9 +133,44 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         };
         table.withValue["--exposure"] = [&](const std::string& v) { o.exposureEv = parseNumber("--exposure", v); };
         table.withValue["--background"] = [&](const std::string& v) {
-            if (v != "transparent" && v != "skybox") parseHexColor("--background", v);
+            if (v != "auto" && v != "transparent" && v != "skybox") parseHexColor("--background", v);
             o.background = v;
         };
+        table.withValue["--env"] = [&](const std::string& v) {
+            if (v.empty()) throw UserError("--env: expected a file, sky or none");
+            o.env = v;
+        };
+        table.withValue["--env-rotation"] = [&](const std::string& v) {
+            o.iblLook.rotationDegrees = parseNumber("--env-rotation", v);
+        };
+        table.withValue["--env-intensity"] = [&](const std::string& v) {
+            o.iblLook.intensity = parseNumber("--env-intensity", v);
+            if (o.iblLook.intensity < 0.0f) throw UserError("--env-intensity: must be ≥ 0, got '" + v + "'");
+        };
+        table.withValue["--skybox-blur"] = [&](const std::string& v) {
+            o.iblLook.skyboxBlur = parseNumber("--skybox-blur", v);
+            if (o.iblLook.skyboxBlur < 0.0f || o.iblLook.skyboxBlur > 1.0f)
+                throw UserError("--skybox-blur: expected 0 (sharp) to 1, got '" + v + "'");
+        };
+        table.switches["--no-multiscatter"] = [&] { o.iblLook.multiscatter = false; };
+        table.withValue["--irradiance"] = [&](const std::string& v) {
+            o.iblQuality.irradiance = ibl::parseIrradianceMode("--irradiance", v);
+        };
+        table.withValue["--ibl-cache"] = [&](const std::string& v) {
+            if (v.empty()) throw UserError("--ibl-cache: expected a directory");
+            o.iblCache = v;
+        };
+        const std::pair<const char*, uint32_t ibl::IblQuality::*> qualityFlags[] = {
+            {"--ibl-cube-size", &ibl::IblQuality::cubeSize},
+            {"--ibl-levels", &ibl::IblQuality::specularLevels},
+            {"--ibl-prefilter-samples", &ibl::IblQuality::prefilterSamples},
+            {"--ibl-sh-size", &ibl::IblQuality::shSourceSize},
+            {"--ibl-irradiance-size", &ibl::IblQuality::irradianceSize},
+            {"--ibl-irradiance-samples", &ibl::IblQuality::irradianceSamples},
+            {"--ibl-lut-size", &ibl::IblQuality::lutSize},
+            {"--ibl-lut-samples", &ibl::IblQuality::lutSamples}};
+        for (const auto& [flag, member] : qualityFlags)
+            table.withValue[flag] = [&o, flag, member](const std::string& v) { o.iblQuality.*member = parseDimension(flag, v); };
         table.switches["--dither"] = [&] { o.dither = true; };
         table.switches["--no-default-lights"] = [&] { o.defaultLights = false; };
         table.switches["--explain"] = [&] { o.explain = true; };
@@ -156,6 +191,11 @@ Command parseCommandLine(const std::vector<std::string>& args) {
     table.switches["--help"] = [&] { help = true; };
     parseFlags(name, args, 1, table);
     if (help) command.kind = Command::Kind::Help;
+    if (command.kind == Command::Kind::Render || command.kind == Command::Kind::Bench) {
+        command.render.iblQuality.validate();
+        if (command.render.env == "none" && command.render.background == "skybox")
+            throw UserError("--background skybox: there is no environment to show (--env none)");
+    }
     return command;
 }
 
@@ -186,7 +226,23 @@ render options:
                         geometry term) or blinn-phong (the original project's first shader) [pbr]
   --tonemap OP          pbr-neutral, aces (Hill's RRT+ODT fit), agx, reinhard or linear [pbr-neutral]
   --exposure EV         exposure in stops [0]
-  --background BG       transparent (alpha 0 in PNG), #rrggbb, or skybox (needs an environment) [#262626]
+  --background BG       auto, skybox, transparent (alpha 0 in PNG) or #rrggbb
+                        [auto: the skybox with an environment, #262626 without]
+  --env ENV             image-based lighting from an equirectangular .hdr or .exr file, the built-in
+                        procedural sky (sky), or none [sky]. Orientation: the glTF Sample Viewer's
+                        (the image centre faces +X, top row +Y); see docs/environments.md
+  --env-rotation DEG    turn the environment about +Y (from +X towards +Z) [0]
+  --env-intensity K     scale the environment's radiance [1]
+  --skybox-blur B       show the environment behind the scene blurred like roughness B, 0..1 [0]
+  --no-multiscatter     single-scattering split sum only (no Fdez-Aguera energy compensation)
+  --irradiance MODE     diffuse irradiance as sh9 (9 spherical-harmonic coefficients) or cube [sh9]
+  --ibl-cache DIR       keep precomputed IBL maps in DIR, keyed by environment content and quality
+  --ibl-cube-size N     environment cube face size, 2^k from 16 to 2048 [256]
+  --ibl-levels N        specular roughness levels (mips) [6]
+  --ibl-prefilter-samples N   GGX samples per specular texel [64]
+  --ibl-sh-size N       face size of the cube mip projected onto SH9 [32]
+  --ibl-irradiance-size N, --ibl-irradiance-samples N   irradiance cube (cube mode) [32, 256]
+  --ibl-lut-size N, --ibl-lut-samples N                  BRDF LUT size and samples [128, 512]
   --dither              dither the 8-bit output
   --no-default-lights   a scene without punctual lights normally gets a default key and fill light
   --explain             print which passes and shader variants were left out, and why

@@ -2,6 +2,8 @@
 // Command-line parsing for the `candela` executable. Pure (no Vulkan), unit-tested.
 // Every malformed argument throws candela::UserError with a one-line message naming the flag.
 
+#include "ibl/ibl_settings.h"
+
 #include <array>
 #include <optional>
 #include <string>
@@ -25,7 +27,11 @@ struct RenderOptions {
     std::string shading = "pbr";      // --shading pbr|pbr-schlick-ggx|blinn-phong
     std::string tonemap = "pbr-neutral";  // --tonemap pbr-neutral|aces|agx|reinhard|linear
     float exposureEv = 0.0f;          // --exposure EV
-    std::string background = "#262626";  // --background transparent|#rrggbb|skybox
+    std::string background = "auto";  // --background auto|transparent|#rrggbb|skybox
+    std::string env = "sky";          // --env FILE|sky|none (sky: the built-in procedural sky)
+    ibl::IblQuality iblQuality;       // --irradiance, --ibl-cube-size, --ibl-prefilter-samples, ...
+    ibl::IblLook iblLook;             // --env-rotation, --env-intensity, --skybox-blur, --no-multiscatter
+    std::string iblCache;             // --ibl-cache DIR
     bool dither = false;              // --dither
     bool defaultLights = true;        // --no-default-lights turns off the key/fill lights of light-less scenes
     bool explain = false;             // --explain

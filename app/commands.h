@@ -4,8 +4,11 @@
 
 #include "cli.h"
 #include "renderer.h"
+#include "scene/environment.h"
 #include "scene/scene.h"
 #include "vk/context.h"
+
+#include <optional>
 
 namespace candela::app {
 
@@ -16,6 +19,10 @@ int runInfo(const InfoOptions& options);
 // Shared by render and bench: the context description and the render settings the flags choose.
 vk::ContextDesc contextDesc(const CommonOptions& common);
 scene::Scene loadScene(const RenderOptions& options);
-RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& scene);
+// The environment --env asks for: a file, the procedural sky, or none (nullopt). Warnings are logged.
+std::optional<scene::Environment> loadEnvironment(const RenderOptions& options);
+// Precondition: `scene` and `environment` outlive the settings.
+RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& scene,
+                              const std::optional<scene::Environment>& environment);
 
 }  // namespace candela::app

@@ -9,6 +9,7 @@
 #include "renderer.h"
 #include "scene/builtin_scenes.h"
 #include "scene/gltf_loader.h"
+#include "scene/procedural_sky.h"
 #include "shared/tonemap.h"
 #include "vk/context.h"
 #include "vk/device_select.h"
@@ -30,6 +31,13 @@ scene::Scene loadScene(const RenderOptions& options) {
     return scene;
 }
 
+std::optional<scene::Environment> loadEnvironment(const RenderOptions& options) {
+    if (options.env == "none") return std::nullopt;
+    scene::Environment env = options.env == "sky" ? scene::makeProceduralSky() : scene::loadEnvironment(options.env);
+    for (const std::string& warning : env.warnings) log::warn(warning);
+    return env;
+}
+
 namespace {
 
 void writeText(const std::string& path, const std::string& text) {
@@ -40,7 +48,8 @@ void writeText(const std::string& path, const std::string& text) {
 
 }  // namespace
 
-RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& scene) {
+RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& scene,
+                              const std::optional<scene::Environment>& environment) {
     RenderSettings settings{.width = options.width, .height = options.height, .scene = &scene};
     settings.disabledPasses = options.disabledPasses;
     settings.defaultLights = options.defaultLights;
@@ -54,12 +63,21 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
     settings.tonemap.op = *passes::parseTonemap(options.tonemap);  // validated by the parser
     settings.tonemap.exposureEv = options.exposureEv;
     settings.tonemap.dither = options.dither;
-    if (options.background == "skybox")
-        throw UserError("--background skybox: there is no environment to show (image-based lighting is not in yet)");
-    if (options.background != "transparent") {
-        const std::array<float, 3> srgb = parseHexColor("--background", options.background);
+    settings.environment = environment ? &*environment : nullptr;
+    settings.iblQuality = options.iblQuality;
+    settings.ibl = options.iblLook;
+    settings.iblCacheDir = options.iblCache;
+    // With an environment the skybox is the background unless another one is asked for.
+    const std::string background =
+        options.background == "auto" ? (environment ? "skybox" : "#262626") : options.background;
+    settings.ibl.skybox = background == "skybox";
+    if (background != "transparent" && background != "skybox") {
+        const std::array<float, 3> srgb = parseHexColor("--background", background);
         settings.tonemap.background = shading::srgbDecode(glm::vec3(srgb[0], srgb[1], srgb[2]));
     }
+    // The default key and fill lights stand in for an environment: with one, light-less scenes
+    // are lit by it alone.
+    if (environment) settings.defaultLights = false;
     return settings;
 }
 
@@ -70,7 +88,8 @@ int runRender(const RenderOptions& options) {
         if (!path.empty()) io::checkWritable(path);
 
     const scene::Scene scene = loadScene(options);
-    RenderSettings settings = renderSettings(options, scene);
+    const std::optional<scene::Environment> environment = loadEnvironment(options);
+    RenderSettings settings = renderSettings(options, scene, environment);
     settings.floatOutput = io::isFloatFormat(format);
 
     vk::Context context(contextDesc(options.common));

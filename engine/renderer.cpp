@@ -6,7 +6,9 @@
 
 #include <glm/gtc/packing.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 
 namespace candela {
@@ -23,7 +25,8 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 Renderer::Renderer(vk::Context& context, uint32_t framesInFlight)
     : mContext(context), mFrames(context, framesInFlight), mPattern(context), mEncode(context, kLdrFormat),
-      mForward(context), mTonemap(context), mGraph(std::make_unique<RenderGraph>()) {
+      mForward(context), mTonemap(context), mIbl(context), mGraph(std::make_unique<RenderGraph>()) {
+    mForward.setIblMaps(mIbl);
     for (uint32_t i = 0; i < mFrames.slotCount(); ++i) mTransients.push_back(std::make_unique<TransientPool>(context));
 }
 
@@ -73,6 +76,19 @@ void Renderer::prepareScene(const RenderSettings& settings) {
     mUploadedDefaultLights = addLights;
 }
 
+void Renderer::prepareEnvironment(const RenderSettings& settings) {
+    if (!settings.scene) return;
+    if (settings.environment == mEnvironment && settings.iblQuality == mIblQuality && settings.iblCacheDir == mIblCacheDir)
+        return;
+    settings.iblQuality.validate();
+    // The maps may be read by a frame in flight: wait before replacing them.
+    mFrames.waitIdle();
+    if (mIbl.setEnvironment(settings.environment, settings.iblQuality, settings.iblCacheDir)) mForward.setIblMaps(mIbl);
+    mEnvironment = settings.environment;
+    mIblQuality = settings.iblQuality;
+    mIblCacheDir = settings.iblCacheDir;
+}
+
 void Renderer::applyToggles(RenderGraph& graph, const std::vector<std::string>& disabledPasses) {
     for (const std::string& name : disabledPasses) {
         if (!graph.findPass(name)) {
@@ -102,6 +118,8 @@ FrameTiming Renderer::execute(RenderGraph& graph, const ImportBindings& imports,
     mFrames.submit();
     mFrames.waitCurrent();
     timing.submitWaitMs = msSince(submitted);
+    if (mIblInGraph) mIbl.frameCompleted(graph);
+    mIblInGraph = false;
     timing.timings = record.timings(*slot.timestamps);
     return timing;
 }
@@ -109,14 +127,17 @@ FrameTiming Renderer::execute(RenderGraph& graph, const ImportBindings& imports,
 FrameTiming Renderer::renderFrame(const RenderSettings& settings) {
     validateSettings(settings);
     prepareScene(settings);
+    prepareEnvironment(settings);
     mGraph = std::make_unique<RenderGraph>();
     RenderGraph& graph = *mGraph;
-    const TextureId output = settings.scene ? buildSceneGraph(graph, settings) : buildPatternGraph(graph, settings);
+    ImportBindings imports;
+    const TextureId output =
+        settings.scene ? buildSceneGraph(graph, settings, imports) : buildPatternGraph(graph, settings);
     // Without a readback the frame's result is kept alive as an exported output, as a swapchain
     // image would be.
     graph.exportTexture(output);
     applyToggles(graph, settings.disabledPasses);
-    return execute(graph, ImportBindings{}, settings.emitBarriers);
+    return execute(graph, imports, settings.emitBarriers);
 }
 
 FrameTiming Renderer::renderCalibration(uint32_t width, uint32_t height) {
@@ -127,9 +148,25 @@ FrameTiming Renderer::renderCalibration(uint32_t width, uint32_t height) {
     return execute(*mGraph, ImportBindings{}, true);
 }
 
+FrameTiming Renderer::precomputeIbl(const scene::Environment& environment, const ibl::IblQuality& quality) {
+    quality.validate();
+    mFrames.waitIdle();
+    mIbl.setEnvironment(&environment, quality, {}, /*force=*/true);
+    mForward.setIblMaps(mIbl);
+    mEnvironment = &environment;
+    mIblQuality = quality;
+    mIblCacheDir.clear();
+    mGraph = std::make_unique<RenderGraph>();
+    ImportBindings imports;
+    mIbl.addToGraph(*mGraph, imports);
+    mIblInGraph = true;
+    return execute(*mGraph, imports, true);
+}
+
 CapturedFrame Renderer::capture(const RenderSettings& settings) {
     validateSettings(settings);
     prepareScene(settings);
+    prepareEnvironment(settings);
     const VkDeviceSize texel = settings.floatOutput ? 8 : 4;  // RGBA16F or RGBA8
     const VkDeviceSize bytes = texel * settings.width * settings.height;
     if (!mReadback || mReadback.size() != bytes)
@@ -141,11 +178,12 @@ CapturedFrame Renderer::capture(const RenderSettings& settings) {
     mGraph = std::make_unique<RenderGraph>();
     RenderGraph& graph = *mGraph;
     const BufferId readback = graph.importBuffer("readback", {.size = bytes}, ResourceState{}, passes::hostReadState());
-    const TextureId output = settings.scene ? buildSceneGraph(graph, settings) : buildPatternGraph(graph, settings);
-    passes::addReadbackPass(graph, settings.floatOutput ? mHdr : output, readback);
-    applyToggles(graph, settings.disabledPasses);
     ImportBindings imports;
     imports.bind(readback, mReadback.handle());
+    const TextureId output =
+        settings.scene ? buildSceneGraph(graph, settings, imports) : buildPatternGraph(graph, settings);
+    passes::addReadbackPass(graph, settings.floatOutput ? mHdr : output, readback);
+    applyToggles(graph, settings.disabledPasses);
     const FrameTiming timing = execute(graph, imports, settings.emitBarriers);
 
     CapturedFrame frame;
@@ -177,16 +215,37 @@ TextureId Renderer::buildPatternGraph(RenderGraph& graph, const RenderSettings& 
     return mEncode.add(graph, mHdr, ldr);
 }
 
-TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& settings) {
+TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& settings, ImportBindings& imports) {
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
     const scene::ViewSetup view = resolveView(*settings.scene, settings.camera, aspect);
+    std::optional<passes::ForwardPass::Ibl> ibl;
+    if (mIbl.hasEnvironment()) {
+        const float theta = glm::radians(settings.ibl.rotationDegrees);
+        const float maxLod = float(mIbl.specularLevels() - 1);
+        ibl = passes::ForwardPass::Ibl{
+            .maps = mIbl.addToGraph(graph, imports),
+            .params = {.rotation = glm::vec4(std::cos(theta), std::sin(theta), 0.0f, 0.0f),
+                       .params = glm::vec4(settings.ibl.intensity, maxLod,
+                                           std::clamp(settings.ibl.skyboxBlur, 0.0f, 1.0f) * maxLod,
+                                           float(mIbl.lutSize()))},
+            .irradianceSh = mIbl.quality().irradiance == ibl::IrradianceMode::Sh9,
+            .multiscatter = settings.ibl.multiscatter};
+    }
     const passes::ForwardPass::Output forward =
-        mForward.add(graph, settings.width, settings.height, view, settings.shading);
+        mForward.add(graph, settings.width, settings.height, view, settings.shading, ibl ? &*ibl : nullptr);
+    mHdr = forward.hdr;
+    mIblInGraph = ibl.has_value();
+    mSkyboxInGraph = ibl && settings.ibl.skybox;
+    if (mSkyboxInGraph) {
+        if (!mSkybox) mSkybox = std::make_unique<passes::SkyboxPass>(mContext);
+        mHdr = mSkybox->add(graph, view, {.hdr = forward.hdr, .depth = forward.depth, .specular = ibl->maps.specular,
+                                          .specularView = mIbl.specularView(), .sampler = mIbl.sampler(),
+                                          .params = ibl->params});
+    }
     // UNORM target: the tonemap shader encodes sRGB itself, which also lets it dither.
     const TextureId ldr = graph.createTexture(
         "ldr", {.width = settings.width, .height = settings.height, .format = VK_FORMAT_R8G8B8A8_UNORM});
-    mHdr = forward.hdr;
-    return mTonemap.add(graph, forward.hdr, ldr, settings.tonemap);
+    return mTonemap.add(graph, mHdr, ldr, settings.tonemap);
 }
 
 scene::ViewSetup Renderer::resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect) {
@@ -218,6 +277,9 @@ std::vector<std::string> Renderer::explain() const {
         if (mUploadedDefaultLights)
             lines.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
         for (const std::string& line : mForward.explanation()) lines.push_back(line);
+        for (const std::string& line : mIbl.explanation()) lines.push_back(line);
+        if (mIbl.hasEnvironment() && !mSkyboxInGraph)
+            lines.emplace_back("left out: skybox (the background is not the environment)");
     }
     return lines;
 }

@@ -3,22 +3,27 @@
 // it on the device, and reads the result back (headless capture). Owns the passes' pipelines, the
 // uploaded scene, the frames in flight with their transient pools, and the readback buffer.
 //
-// Scene frame graph:  forward (HDR + depth) → tonemap (8-bit) → readback.
+// Scene frame graph:  [ibl precompute, only when the environment or its quality changed] →
+//                     forward (HDR + depth) → [skybox] → tonemap (8-bit) → readback.
 // Test-pattern graph: pattern (compute, HDR) → encode (graphics, 8-bit sRGB) → readback.
 // For a float capture the readback reads the HDR image directly, so tonemap/encode are culled.
 
 #include "graph/graph_executor.h"
 #include "graph/render_graph.h"
+#include "ibl/ibl_maps.h"
+#include "ibl/ibl_settings.h"
 #include "passes/calibration_pass.h"
 #include "passes/encode_pass.h"
 #include "passes/forward_pass.h"
 #include "passes/pattern_pass.h"
+#include "passes/skybox_pass.h"
 #include "passes/tonemap_pass.h"
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
 #include "vk/buffer.h"
 #include "vk/frame.h"
 
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -47,6 +52,12 @@ struct RenderSettings {
     // it is visible before image-based lighting exists; false leaves it unlit.
     bool defaultLights = true;
     passes::TonemapSettings tonemap;
+    // Image-based lighting: the environment (null: none; read during the call only, hashed when the
+    // pointer or the quality changes), what to precompute and how to look it up.
+    const scene::Environment* environment = nullptr;
+    ibl::IblQuality iblQuality;
+    ibl::IblLook ibl;
+    std::filesystem::path iblCacheDir;  // empty: no on-disk cache
     float patternExposure = 1.0f;  // test pattern only
     std::vector<std::string> disabledPasses;  // runtime toggles by pass name
     bool emitBarriers = true;  // testing hook: false records no barriers (sync validation must object)
@@ -84,6 +95,10 @@ public:
     // Renders one frame without reading it back (benchmarks): the 8-bit result is an exported
     // output of the graph, as a swapchain image would be. Waits for the GPU.
     FrameTiming renderFrame(const RenderSettings& settings);
+    // Runs the IBL precompute passes alone for `environment` at `quality` — always, even when the
+    // maps are current; no cache — and waits. The maps then serve the following frames (read them
+    // back through iblMaps()). Throws UserError for an invalid quality.
+    FrameTiming precomputeIbl(const scene::Environment& environment, const ibl::IblQuality& quality);
     // Runs the calibration pass alone at width × height (see passes/calibration_pass.h).
     FrameTiming renderCalibration(uint32_t width, uint32_t height);
 
@@ -98,12 +113,16 @@ public:
     std::vector<std::string> explain() const;
     // Transient-pool rebuilds so far (tests: stays constant while the graph is unchanged).
     uint32_t transientRebuilds() const;
+    // The image-based-lighting maps (tests and reports read them back).
+    ibl::IblMaps& iblMaps() { return mIbl; }
 
 private:
     // Declare the frame's passes; return the 8-bit result and set mHdr to the HDR image.
-    graph::TextureId buildSceneGraph(graph::RenderGraph& graph, const RenderSettings& settings);
+    graph::TextureId buildSceneGraph(graph::RenderGraph& graph, const RenderSettings& settings,
+                                     graph::ImportBindings& imports);
     graph::TextureId buildPatternGraph(graph::RenderGraph& graph, const RenderSettings& settings);
     void prepareScene(const RenderSettings& settings);
+    void prepareEnvironment(const RenderSettings& settings);
     static void applyToggles(graph::RenderGraph& graph, const std::vector<std::string>& disabledPasses);
     FrameTiming execute(graph::RenderGraph& graph, const graph::ImportBindings& imports, bool emitBarriers);
 
@@ -114,11 +133,19 @@ private:
     passes::EncodePass mEncode;
     passes::ForwardPass mForward;
     passes::TonemapPass mTonemap;
+    ibl::IblMaps mIbl;
+    std::unique_ptr<passes::SkyboxPass> mSkybox;  // created with the first environment
     std::unique_ptr<passes::CalibrationPass> mCalibration;  // created by the first renderCalibration
     graph::TextureId mHdr;  // HDR image of the graph being built
     const scene::Scene* mUploaded = nullptr;
     bool mUploadedDefaultLights = false;
     std::unique_ptr<scene::GpuScene> mGpuScene;
+    // What mIbl was last set up with (the environment is re-hashed only when these change).
+    const scene::Environment* mEnvironment = nullptr;
+    ibl::IblQuality mIblQuality;
+    std::filesystem::path mIblCacheDir;
+    bool mIblInGraph = false;   // the last scene graph used image-based lighting
+    bool mSkyboxInGraph = false;
     vk::Buffer mReadback;
     std::unique_ptr<graph::RenderGraph> mGraph;
 };

@@ -2,8 +2,10 @@
 #extension GL_GOOGLE_include_directive : require
 // Forward pass fragment stage: glTF metallic-roughness material lit by punctual lights with the
 // BRDFs of shared/brdf.h. Variants are specialization constants, so what a draw does not use
-// costs nothing: no normal map → no TBN work; no lights → no light loop; unlit → no BRDF.
+// costs nothing: no normal map → no TBN work; no lights → no light loop; unlit → no BRDF; no
+// environment → no image-based lighting (shared/ibl.h: split sum, multiscatter, specular occlusion).
 #include "shared/brdf.h"
+#include "shared/ibl.h"
 #include "shared/scene_data.h"
 
 layout(constant_id = 0) const bool kNormalMap = false;
@@ -11,6 +13,9 @@ layout(constant_id = 1) const bool kLights = true;
 layout(constant_id = 2) const bool kUnlit = false;
 layout(constant_id = 3) const bool kAlphaMask = false;
 layout(constant_id = 4) const uint kShadingModel = CANDELA_SHADING_PBR;
+layout(constant_id = 5) const bool kIbl = false;
+layout(constant_id = 6) const bool kIrradianceSh = true;  // else the irradiance cube
+layout(constant_id = 7) const bool kMultiscatter = true;
 
 layout(std430, set = 0, binding = 0) readonly buffer Lights {
     LightData lights[];
@@ -26,6 +31,13 @@ layout(set = 1, binding = 1) uniform sampler2D metallicRoughnessTexture;
 layout(set = 1, binding = 2) uniform sampler2D normalTexture;
 layout(set = 1, binding = 3) uniform sampler2D occlusionTexture;
 layout(set = 1, binding = 4) uniform sampler2D emissiveTexture;
+// Image-based lighting (always bound; placeholders when the frame has no environment).
+layout(set = 2, binding = 0) uniform samplerCube specularCube;
+layout(set = 2, binding = 1) uniform samplerCube irradianceCube;
+layout(set = 2, binding = 2) uniform sampler2D brdfLut;
+layout(std140, set = 2, binding = 3) uniform IrradianceSh {
+    vec4 sh[9];  // convolved, /π: irradiance(n)/π = Σ sh[i] · Y_i(n)
+};
 layout(push_constant) uniform Push {
     ForwardPush push;
 };
@@ -70,6 +82,31 @@ vec3 shadingNormal(MaterialData m) {
     return n;
 }
 
+// Diffuse and specular light from the environment (split sum). Occlusion (glTF: indirect light
+// only) darkens the diffuse term and, through specular occlusion, the specular one.
+vec3 imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float metallic, float roughness) {
+    float ao = 1.0f + m.params.w * (sampleSlot(occlusionTexture, CANDELA_TEX_OCCLUSION).r - 1.0f);
+    float NoV = clamp(dot(n, v), CANDELA_MIN_NOV, 1.0f);
+    vec3 r = iblLookupDirection(reflect(-v, n), push.ibl.rotation);
+    vec3 nEnv = iblLookupDirection(n, push.ibl.rotation);
+    // Roughness 0 reads mip 0 (the environment) exactly; the mips in between are linearly blended.
+    vec3 prefiltered = textureLod(specularCube, r, roughness * push.ibl.params.y).rgb;
+    vec3 irradiance;
+    if (kIrradianceSh) {
+        irradiance = vec3(0.0f);
+        for (uint i = 0u; i < 9u; ++i) irradiance += sh[i].rgb * shBasis(i, nEnv);
+        irradiance = max(irradiance, vec3(0.0f));  // order-2 ringing can dip below 0
+    } else {
+        irradiance = textureLod(irradianceCube, nEnv, 0.0f).rgb;
+    }
+    vec2 lut = textureLod(brdfLut, brdfLutUv(NoV, roughness, push.ibl.params.w), 0.0f).rg;
+    vec3 f0 = mix(vec3(0.04f), baseColor, metallic);
+    vec3 diffuseColor = baseColor * (1.0f - metallic);
+    vec3 light = iblShade(prefiltered, irradiance, lut, f0, diffuseColor, kMultiscatter, ao,
+                          specularOcclusion(NoV, ao, roughness));
+    return light * push.ibl.params.x;
+}
+
 void main() {
     MaterialData m = materials[draws[push.counts.y].material.x];
     vec4 baseColor = m.baseColorFactor * inColor * sampleSlot(baseColorTexture, CANDELA_TEX_BASE_COLOR);
@@ -107,7 +144,7 @@ void main() {
                      attenuation;
         }
     }
-    // Occlusion applies to indirect light only (glTF): it is sampled where ambient/IBL light is added.
+    if (kIbl) color += imageBasedLight(m, n, v, baseColor.rgb, metallic, roughness);
     color += m.emissive.rgb * sampleSlot(emissiveTexture, CANDELA_TEX_EMISSIVE).rgb;
     // Radiance can exceed half-float range with extreme lights: keep it finite.
     color = min(color, vec3(60000.0f));

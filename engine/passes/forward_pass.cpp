@@ -18,6 +18,7 @@ std::string ForwardPass::Variant::name() const {
     if (!unlit && !lights) out += "+no-lights";
     if (alphaMask) out += "+alpha-mask";
     if (blend) out += "+blend";
+    if (ibl && !unlit) out += std::string("+ibl-") + (irradianceSh ? "sh9" : "cube") + (multiscatter ? "" : "-single-scatter");
     return out;
 }
 
@@ -32,9 +33,10 @@ const vk::Pipeline& ForwardPass::pipeline(const Variant& v) {
         .depthTest = true,
         .depthWrite = !v.blend,
         .depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL,
-        .premultipliedBlend = v.blend,
+        .blend = v.blend ? vk::BlendMode::Premultiplied : vk::BlendMode::None,
         .dynamicCullMode = true,
-        .specialization = {v.normalMap, v.lights, v.unlit, v.alphaMask, static_cast<uint32_t>(v.model)},
+        .specialization = {v.normalMap, v.lights, v.unlit, v.alphaMask, static_cast<uint32_t>(v.model), v.ibl,
+                           v.irradianceSh, v.multiscatter},
         .vertexBindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}},
         .vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
@@ -45,7 +47,7 @@ const vk::Pipeline& ForwardPass::pipeline(const Variant& v) {
     return mPipelines.emplace(v, vk::Pipeline::graphics(mContext, "forward.vert", "forward.frag", desc)).first->second;
 }
 
-ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingModel model) const {
+ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl) const {
     const scene::Material& m = mScene->scene().materials[draw.material];
     Variant v;
     v.unlit = m.unlit;
@@ -54,6 +56,9 @@ ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingMode
     v.alphaMask = m.alphaMode == scene::AlphaMode::Mask;
     v.blend = m.alphaMode == scene::AlphaMode::Blend;
     v.model = m.unlit ? ShadingModel::Pbr : model;
+    v.ibl = !m.unlit && ibl;
+    v.irradianceSh = !v.ibl || ibl->irradianceSh;
+    v.multiscatter = !v.ibl || ibl->multiscatter;
     return v;
 }
 
@@ -80,14 +85,25 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene) {
     }
 }
 
+void ForwardPass::setIblMaps(const ibl::IblMaps& maps) {
+    mIblSets = std::make_unique<vk::DescriptorAllocator>(mContext);
+    mIblSet = vk::DescriptorWriter(pipeline(Variant{}).program(), 2)
+                  .image("specularCube", maps.specularView(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, maps.sampler())
+                  .image("irradianceCube", maps.irradianceCubeView(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                         maps.sampler())
+                  .image("brdfLut", maps.lutView(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, maps.sampler())
+                  .buffer("IrradianceSh", maps.shBuffer())
+                  .commit(mContext, *mIblSets);
+}
+
 ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
-                                     ShadingModel model) {
+                                     ShadingModel model, const Ibl* ibl) {
     const scene::Scene& scene = mScene->scene();
     std::vector<DrawItem> opaque, blended;
     std::map<std::string, uint32_t> variantCounts;
     for (uint32_t i = 0; i < scene.draws.size(); ++i) {
         const scene::Draw& draw = scene.draws[i];
-        const Variant v = variantOf(draw, model);
+        const Variant v = variantOf(draw, model, ibl);
         ++variantCounts[v.name()];
         const glm::vec3 centre = 0.5f * (draw.bounds.min + draw.bounds.max);
         (v.blend ? blended : opaque).push_back({i, &pipeline(v), glm::length(centre - view.eye)});
@@ -116,8 +132,10 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
     push.viewProjection = view.viewProjection;
     push.eye = glm::vec4(view.eye, 1.0f);
     push.counts = glm::uvec4(mScene->lightCount(), 0, 0, 0);
+    if (ibl) push.ibl = ibl->params;
     const scene::GpuScene* gpuScene = mScene;
     const VkDescriptorSet sceneSet = mSceneSet;
+    const VkDescriptorSet iblSet = mIblSet;
     const std::vector<VkDescriptorSet>* materialSets = &mMaterialSets;
     const Data& data = graph.addPass<Data>(
         "forward", PassType::Graphics,
@@ -126,8 +144,14 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
             const TextureId depth = builder.createTexture("depth", {.width = width, .height = height, .format = kDepthFormat});
             d.hdr = builder.writeColor(hdr, VkClearColorValue{{0.0f, 0.0f, 0.0f, 0.0f}});
             d.depth = builder.writeDepth(depth, 0.0f);  // reverse-Z: far = 0
+            if (!ibl) return;
+            builder.read(ibl->maps.specular, Usage::Sampled, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            builder.read(ibl->maps.lut, Usage::Sampled, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            if (ibl->maps.irradianceCube.valid())
+                builder.read(ibl->maps.irradianceCube, Usage::Sampled, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            if (ibl->maps.sh.valid()) builder.read(ibl->maps.sh, Usage::Uniform, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
         },
-        [items, frameConstants = push, gpuScene, sceneSet, materialSets](const Data&, PassContext& ctx) {
+        [items, frameConstants = push, gpuScene, sceneSet, iblSet, materialSets](const Data&, PassContext& ctx) {
             shading::ForwardPush constants = frameConstants;
             VkCommandBuffer cmd = ctx.cmd();
             ctx.beginRendering();
@@ -142,6 +166,8 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
                     bound = item.pipeline;
                     bound->bind(cmd);
                     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 0, 1, &sceneSet, 0,
+                                            nullptr);
+                    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 2, 1, &iblSet, 0,
                                             nullptr);
                 }
                 vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 1, 1,

@@ -5,6 +5,8 @@
 // specialization constants, so what a draw does not use costs nothing.
 
 #include "graph/render_graph.h"
+#include "ibl/ibl_maps.h"
+#include "shared/ibl.h"
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
 #include "vk/descriptors.h"
@@ -31,9 +33,22 @@ public:
         graph::TextureId hdr;
         graph::TextureId depth;
     };
-    // Adds the pass drawing the current scene as seen from `view`. Returns the written targets.
+    // Writes the image-based-lighting descriptor set (set 2) from `maps` (its placeholders when it
+    // has no environment). Call at start and whenever maps.setEnvironment returned true;
+    // precondition: the GPU no longer uses the previous set.
+    void setIblMaps(const ibl::IblMaps& maps);
+
+    // Image-based lighting of one frame: the imported maps to read and how to read them.
+    struct Ibl {
+        ibl::IblMaps::GraphMaps maps;
+        shading::IblParams params;
+        bool irradianceSh = true;
+        bool multiscatter = true;
+    };
+    // Adds the pass drawing the current scene as seen from `view`, lit by the scene's lights and,
+    // when `ibl` is given, the environment. Returns the written targets.
     Output add(graph::RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
-               ShadingModel model);
+               ShadingModel model, const Ibl* ibl = nullptr);
 
     // What the last add() used and left out, one line each, for `--explain`.
     const std::vector<std::string>& explanation() const { return mExplanation; }
@@ -49,6 +64,9 @@ private:
         bool alphaMask = false;
         bool blend = false;
         ShadingModel model = ShadingModel::Pbr;
+        bool ibl = false;
+        bool irradianceSh = true;
+        bool multiscatter = true;
         auto operator<=>(const Variant&) const = default;
         std::string name() const;
     };
@@ -58,7 +76,7 @@ private:
         float depth;  // view distance, for sorting blended draws
     };
     const vk::Pipeline& pipeline(const Variant& variant);
-    Variant variantOf(const scene::Draw& draw, ShadingModel model) const;
+    Variant variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl) const;
 
     vk::Context& mContext;
     std::map<Variant, vk::Pipeline> mPipelines;
@@ -66,6 +84,8 @@ private:
     std::unique_ptr<vk::DescriptorAllocator> mSets;
     VkDescriptorSet mSceneSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> mMaterialSets;
+    std::unique_ptr<vk::DescriptorAllocator> mIblSets;
+    VkDescriptorSet mIblSet = VK_NULL_HANDLE;
     std::vector<std::string> mExplanation;
 };
 

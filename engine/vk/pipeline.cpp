@@ -120,14 +120,15 @@ Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std
                                                       .depthTestEnable = desc.depthTest,
                                                       .depthWriteEnable = desc.depthWrite,
                                                       .depthCompareOp = desc.depthCompare};
+    const bool under = desc.blend == BlendMode::Under;
     std::vector<VkPipelineColorBlendAttachmentState> blends(
         desc.colorFormats.size(),
-        {.blendEnable = desc.premultipliedBlend,
-         .srcColorBlendFactor = VK_BLEND_FACTOR_ONE,
-         .dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
+        {.blendEnable = desc.blend != BlendMode::None,
+         .srcColorBlendFactor = under ? VK_BLEND_FACTOR_ONE_MINUS_DST_ALPHA : VK_BLEND_FACTOR_ONE,
+         .dstColorBlendFactor = under ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
          .colorBlendOp = VK_BLEND_OP_ADD,
-         .srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
-         .dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
+         .srcAlphaBlendFactor = under ? VK_BLEND_FACTOR_ONE_MINUS_DST_ALPHA : VK_BLEND_FACTOR_ONE,
+         .dstAlphaBlendFactor = under ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
          .alphaBlendOp = VK_BLEND_OP_ADD,
          .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
                            VK_COLOR_COMPONENT_A_BIT});

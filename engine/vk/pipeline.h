@@ -40,6 +40,12 @@ private:
     PipelineLayout mLayout;
 };
 
+enum class BlendMode : uint8_t {
+    None,
+    Premultiplied,  // colour = src + (1 − src.a)·dst, alpha likewise ("over")
+    Under,          // colour = dst + (1 − dst.a)·src, alpha likewise (draws behind what is there)
+};
+
 struct GraphicsPipelineDesc {
     std::vector<VkFormat> colorFormats;
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
@@ -49,7 +55,7 @@ struct GraphicsPipelineDesc {
     bool depthTest = false;
     bool depthWrite = false;
     VkCompareOp depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse-Z
-    bool premultipliedBlend = false;  // colour = src + (1 − src.a)·dst, alpha likewise
+    BlendMode blend = BlendMode::None;
     // Cull mode and front face set per draw with vkCmdSetCullMode/FrontFace (Vulkan 1.3 core);
     // cullMode and frontFace above are then ignored.
     bool dynamicCullMode = false;

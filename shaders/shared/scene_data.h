@@ -5,6 +5,7 @@
 #define CANDELA_SHARED_SCENE_DATA_H
 
 #include "shared/compat.h"
+#include "shared/ibl.h"
 
 CANDELA_NAMESPACE_BEGIN
 
@@ -54,12 +55,13 @@ struct MaterialData {
     UvTransform uv[CANDELA_TEX_COUNT];
 };
 
-// Push constants of forward.vert/frag: the view and which draw this is (96 bytes, within the
-// 128 bytes every device guarantees).
+// Push constants of forward.vert/frag: the view, which draw this is and the environment lookup
+// (128 bytes: exactly what every device guarantees).
 struct ForwardPush {
     mat4 viewProjection;
     vec4 eye;     // xyz: camera position (world)
     uvec4 counts; // x: light count, y: draw index, zw: unused
+    IblParams ibl;
 };
 
 // Applies a texture slot's transform to the vertex's texture coordinate sets.
@@ -90,7 +92,7 @@ CANDELA_NAMESPACE_END
 static_assert(sizeof(candela::shading::LightData) == 64);
 static_assert(sizeof(candela::shading::DrawData) == 144);
 static_assert(sizeof(candela::shading::MaterialData) == 64 + 32 * CANDELA_TEX_COUNT);
-static_assert(sizeof(candela::shading::ForwardPush) == 96);
+static_assert(sizeof(candela::shading::ForwardPush) == 128);
 #endif
 
 #endif

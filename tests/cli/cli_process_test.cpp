@@ -19,17 +19,23 @@ namespace {
 struct Result {
     int exitCode = -1;
     std::string stderrText;
+    std::string stdoutText;
 };
 
-// Runs candela with `args` (shell syntax); captures stderr only.
+// Runs candela with `args` (shell syntax); captures stderr and stdout.
 Result run(const std::string& args) {
-    const std::string command = std::string(CANDELA_EXECUTABLE) + " " + args + " 2>&1 >/dev/null";
+    const auto stdoutFile =
+        std::filesystem::temp_directory_path() / ("candela_cli_stdout_" + std::to_string(::getpid()) + ".txt");
+    const std::string command = std::string(CANDELA_EXECUTABLE) + " " + args + " 2>&1 >" + stdoutFile.string();
     FILE* pipe = popen(command.c_str(), "r");
     Result result;
     std::array<char, 4096> buffer;
     while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) result.stderrText.append(buffer.data(), n);
     const int status = pclose(pipe);
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream out(stdoutFile);
+    result.stdoutText.assign(std::istreambuf_iterator<char>(out), std::istreambuf_iterator<char>());
+    std::filesystem::remove(stdoutFile);
     return result;
 }
 
@@ -76,6 +82,7 @@ std::filesystem::path writeSceneFiles() {
         return out.replace(out.find("%s"), 2, uri);
     };
     writeFile(dir / "triangle.bin", bin);
+    writeFile(dir / "truncated.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 8\n\x01\x02");
     writeFile(dir / "triangle.gltf", withUri(R"(,"uri":"triangle.bin")"));
     std::string chunk = withUri("");
     while (chunk.size() % 4) chunk += ' ';
@@ -155,7 +162,17 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"TonemapUnknown", "render --tonemap filmic --out {dir}/x.png", "--tonemap: unknown operator 'filmic'"},
                       BadInput{"ShadingUnknown", "render --shading lambert --out {dir}/x.png", "--shading: unknown model 'lambert'"},
                       BadInput{"BackgroundFiveHexDigits", "render --background '#12345' --out {dir}/x.png", "--background: expected #rrggbb, got '#12345'"},
-                      BadInput{"BackgroundSkybox", "render --background skybox --out {dir}/x.png", "--background skybox: there is no environment to show"},
+                      BadInput{"BackgroundSkyboxWithoutEnvironment", "render --env none --background skybox --out {dir}/x.png", "--background skybox: there is no environment to show (--env none)"},
+                      // Environments and image-based lighting.
+                      BadInput{"EnvironmentMissing", "render --env {dir}/missing.hdr --out {dir}/x.png", "{dir}/missing.hdr: "},
+                      BadInput{"EnvironmentTruncated", "render --env {dir}/truncated.hdr --out {dir}/x.png", "{dir}/truncated.hdr: "},
+                      BadInput{"EnvironmentIntensityNegative", "render --env-intensity -1 --out {dir}/x.png", "--env-intensity: must be ≥ 0, got '-1'"},
+                      BadInput{"EnvironmentRotationNotANumber", "render --env-rotation east --out {dir}/x.png", "--env-rotation: expected a number, got 'east'"},
+                      BadInput{"IrradianceUnknown", "render --irradiance sh16 --out {dir}/x.png", "--irradiance 'sh16': expected sh9 or cube"},
+                      BadInput{"IblCubeSizeNotPowerOfTwo", "render --ibl-cube-size 100 --out {dir}/x.png", "--ibl-cube-size 100: must be a power of two from 16 to 2048"},
+                      BadInput{"IblShSizeAboveCube", "render --ibl-cube-size 64 --ibl-sh-size 128 --out {dir}/x.png", "--ibl-sh-size 128: must be a power of two from 1 to 64"},
+                      BadInput{"IblPrefilterSamplesZero", "render --ibl-prefilter-samples 0 --out {dir}/x.png", "--ibl-prefilter-samples 0: must be from 1 to 65536"},
+                      BadInput{"SkyboxBlurAboveOne", "render --skybox-blur 2 --out {dir}/x.png", "--skybox-blur: expected 0 (sharp) to 1, got '2'"},
                       BadInput{"ExposureNan", "render --exposure nan --out {dir}/x.png", "--exposure: expected a number, got 'nan'"}),
     [](const ::testing::TestParamInfo<BadInput>& row) { return std::string(row.param.name); });
 
@@ -164,8 +181,8 @@ TEST(Cli, HelpExitsZero) { EXPECT_EQ(run("--help").exitCode, 0); }
 TEST(Cli, RenderWritesPngAndGraphExports) {
     const auto dir = tempDir();
     const auto png = dir / "frame.png", json = dir / "graph.json", dot = dir / "graph.dot";
-    const Result r = run("render --validate --width 40 --height 30 --out " + png.string() + " --graph-json " +
-                         json.string() + " --graph-dot " + dot.string());
+    const Result r = run("render --env none --validate --width 40 --height 30 --out " + png.string() +
+                         " --graph-json " + json.string() + " --graph-dot " + dot.string());
     ASSERT_EQ(r.exitCode, 0) << r.stderrText;
     int w = 0, h = 0, channels = 0;
     stbi_uc* pixels = stbi_load(png.c_str(), &w, &h, &channels, 4);
@@ -177,7 +194,7 @@ TEST(Cli, RenderWritesPngAndGraphExports) {
     std::ifstream in(json);
     const nlohmann::json graph = nlohmann::json::parse(in);
     ASSERT_EQ(graph["order"].size(), 3u);
-    // The default scene's frame graph: forward → tonemap → readback.
+    // The default scene's frame graph without an environment: forward → tonemap → readback.
     EXPECT_EQ(graph["order"][0], "forward");
     EXPECT_EQ(graph["order"][1], "tonemap");
     EXPECT_EQ(graph["order"][2], "readback");
@@ -191,8 +208,8 @@ TEST(Cli, FloatOutputsCullTheTonemapPass) {
     const auto dir = tempDir();
     for (const char* name : {"frame.exr", "frame.pfm"}) {
         const auto out = dir / name, json = dir / "graph.json";
-        const Result r = run("render --validate --width 96 --height 64 --out " + out.string() + " --graph-json " +
-                             json.string());
+        const Result r = run("render --env none --validate --width 96 --height 64 --out " + out.string() +
+                             " --graph-json " + json.string());
         ASSERT_EQ(r.exitCode, 0) << r.stderrText;
         if (out.extension() == ".pfm") {
             EXPECT_EQ(std::filesystem::file_size(out), std::string("PF\n96 64\n-1.0\n").size() + 96u * 64u * 12u);
@@ -237,9 +254,37 @@ TEST(Cli, BenchReportsFrameAndPassesAsRatiosToCalibration) {
     EXPECT_GT(report["calibration"]["medianMs"].get<double>(), 0.0);
     const double ratio = report["frame"]["medianRatio"].get<double>();
     EXPECT_NEAR(ratio, report["frame"]["medianMs"].get<double>() / report["calibration"]["medianMs"].get<double>(), 1e-9);
-    ASSERT_EQ(report["passes"].size(), 2u);
+    // Measured frames come after the warm-up, which ran the IBL precompute: they hold none.
+    ASSERT_EQ(report["passes"].size(), 3u);
     EXPECT_EQ(report["passes"][0]["name"], "forward");
-    EXPECT_EQ(report["passes"][1]["name"], "tonemap");
+    EXPECT_EQ(report["passes"][1]["name"], "skybox");
+    EXPECT_EQ(report["passes"][2]["name"], "tonemap");
+}
+
+TEST(Cli, DefaultRenderIsLitByTheProceduralSkyWithPrecomputeFirst) {
+    const auto dir = tempDir();
+    const auto png = dir / "frame.png", json = dir / "graph.json";
+    const Result r = run("render --validate --explain --width 40 --height 30 --out " + png.string() + " --graph-json " +
+                         json.string());
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    std::ifstream in(json);
+    const nlohmann::json graph = nlohmann::json::parse(in);
+    std::vector<std::string> order;
+    for (const auto& name : graph["order"]) order.push_back(name.get<std::string>());
+    auto position = [&](const std::string& name) {
+        return static_cast<size_t>(std::find(order.begin(), order.end(), name) - order.begin());
+    };
+    ASSERT_EQ(order.size(), 8u) << graph["order"].dump();
+    for (const char* precompute : {"ibl_brdf_lut", "ibl_cubemap", "ibl_prefilter", "ibl_irradiance_sh"})
+        EXPECT_LT(position(precompute), position("forward")) << precompute;
+    EXPECT_LT(position("ibl_cubemap"), position("ibl_prefilter"));
+    EXPECT_LT(position("ibl_cubemap"), position("ibl_irradiance_sh"));
+    EXPECT_EQ(position("skybox"), position("forward") + 1);
+    EXPECT_EQ(position("tonemap"), position("skybox") + 1);
+    EXPECT_NE(r.stdoutText.find("ibl: environment 'procedural sky'"), std::string::npos) << r.stdoutText;
+    EXPECT_NE(r.stdoutText.find("ibl: maps computed by this frame's precompute passes"), std::string::npos) << r.stdoutText;
+    EXPECT_NE(r.stdoutText.find("left out: irradiance cube"), std::string::npos) << r.stdoutText;
+    std::filesystem::remove_all(dir);
 }
 
 TEST(Cli, InfoListsDevicesAndTheChoice) {

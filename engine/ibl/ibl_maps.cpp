@@ -1,0 +1,304 @@
+#include "ibl/ibl_maps.h"
+
+#include "core/check.h"
+#include "core/log.h"
+#include "graph/graph_executor.h"
+#include "passes/ibl_brdf_lut_pass.h"
+#include "passes/ibl_cubemap_pass.h"
+#include "passes/ibl_irradiance_cube_pass.h"
+#include "passes/ibl_irradiance_sh_pass.h"
+#include "passes/ibl_prefilter_pass.h"
+#include "vk/context.h"
+#include "vk/sampler.h"
+#include "vk/upload.h"
+
+#include <bit>
+#include <span>
+
+namespace candela::ibl {
+
+using namespace graph;
+
+namespace {
+
+constexpr ResourceState kSampledState{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+constexpr ResourceState kUniformState{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_UNIFORM_READ_BIT,
+                                      VK_IMAGE_LAYOUT_UNDEFINED};
+constexpr VkDeviceSize kShBytes = passes::IblIrradianceShPass::kBytes;
+
+std::span<const std::byte> zeros(size_t bytes) {
+    static const std::vector<std::byte> buffer(4096);
+    return {buffer.data(), bytes};
+}
+
+TextureDesc graphDesc(const vk::ImageDesc& d) {
+    return {.width = d.width, .height = d.height, .mipLevels = d.mipLevels, .arrayLayers = d.arrayLayers,
+            .format = d.format, .cube = d.cube};
+}
+
+std::vector<VkImageView> rawViews(const std::vector<vk::ImageView>& views) {
+    std::vector<VkImageView> out;
+    for (const vk::ImageView& v : views) out.push_back(v.get());
+    return out;
+}
+
+}  // namespace
+
+IblMaps::IblMaps(vk::Context& context)
+    : mContext(context),
+      mSampler(vk::createSampler(context, {})),
+      mNearest(vk::createSampler(context, {.filter = VK_FILTER_NEAREST, .minFilter = VK_FILTER_NEAREST,
+                                           .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {
+    createPlaceholders();
+}
+
+IblMaps::~IblMaps() = default;
+
+void IblMaps::createPlaceholders() {
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    mPlaceholderCube = vk::Image(mContext, {.width = 1, .height = 1, .arrayLayers = 6, .format = kSpecularFormat,
+                                            .usage = usage, .cube = true, .name = "ibl_placeholder_cube"});
+    mPlaceholderLut = vk::Image(mContext, {.format = kLutFormat, .usage = usage, .name = "ibl_placeholder_lut"});
+    mPlaceholderSh = vk::Buffer(mContext, {.size = kShBytes,
+                                           .usage = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                           .name = "ibl_placeholder_sh"});
+    vk::Uploader upload(mContext);
+    for (uint32_t face = 0; face < 6; ++face)
+        upload.image(mPlaceholderCube, zeros(8), 0, face, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    upload.image(mPlaceholderLut, zeros(4), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    upload.buffer(mPlaceholderSh, zeros(kShBytes));
+    upload.submitAndWait();
+}
+
+VkImageView IblMaps::specularView() const { return mSpecular.image ? mSpecular.image.view() : mPlaceholderCube.view(); }
+VkImageView IblMaps::irradianceCubeView() const {
+    return mIrradianceCube.image ? mIrradianceCube.image.view() : mPlaceholderCube.view();
+}
+VkImageView IblMaps::lutView() const { return mLut.image ? mLut.image.view() : mPlaceholderLut.view(); }
+VkBuffer IblMaps::shBuffer() const { return mSh ? mSh.handle() : mPlaceholderSh.handle(); }
+uint32_t IblMaps::lutSize() const { return mLut.image ? mLut.image.desc().width : 1; }
+
+void IblMaps::createMaps(const IblQuality& q) {
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
+                                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    auto makeCube = [&](Target& target, uint32_t size, uint32_t mips, const char* name) {
+        if (target.image && target.image.desc().width == size && target.image.desc().mipLevels == mips) return false;
+        target.image = vk::Image(mContext, {.width = size, .height = size, .mipLevels = mips, .arrayLayers = 6,
+                                            .format = kSpecularFormat, .usage = usage, .cube = true, .name = name});
+        target.mipViews.clear();
+        for (uint32_t m = 0; m < mips; ++m)
+            target.mipViews.push_back(target.image.createView(VK_IMAGE_VIEW_TYPE_2D_ARRAY, m, 1, 0, 6));
+        return true;
+    };
+    makeCube(mSpecular, q.cubeSize, q.levels(), "ibl_specular");
+    if (q.irradiance == IrradianceMode::Cube) {
+        makeCube(mIrradianceCube, q.irradianceSize, 1, "ibl_irradiance");
+        mSh = {};
+    } else {
+        mIrradianceCube = {};
+        if (!mSh)
+            mSh = vk::Buffer(mContext, {.size = kShBytes,
+                                        .usage = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                                 VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                        .name = "ibl_sh"});
+    }
+    if (!mLut.image || mLut.image.desc().width != q.lutSize) {
+        mLut.image = vk::Image(mContext, {.width = q.lutSize, .height = q.lutSize, .format = kLutFormat, .usage = usage,
+                                          .name = "ibl_brdf_lut"});
+        mLutComputedFor.clear();
+    }
+    mLutPending = mLutComputedFor != q.lutCanonical();
+}
+
+void IblMaps::createPrecomputeInputs(const scene::Environment& env) {
+    mEquirect = vk::Image(mContext, {.width = env.width, .height = env.height, .format = kFloatCubeFormat,
+                                     .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                     .name = "ibl_equirect"});
+    std::vector<float> rgba(env.texelCount() * 4);
+    for (size_t i = 0; i < env.texelCount(); ++i) {
+        rgba[i * 4 + 0] = env.rgb[i * 3 + 0];
+        rgba[i * 4 + 1] = env.rgb[i * 3 + 1];
+        rgba[i * 4 + 2] = env.rgb[i * 3 + 2];
+        rgba[i * 4 + 3] = 1.0f;
+    }
+    vk::Uploader upload(mContext);
+    upload.image(mEquirect, std::as_bytes(std::span(rgba)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    upload.submitAndWait();
+
+    const uint32_t size = mQuality.cubeSize;
+    const uint32_t mips = static_cast<uint32_t>(std::bit_width(size));
+    mFloatCube.image = vk::Image(mContext, {.width = size, .height = size, .mipLevels = mips, .arrayLayers = 6,
+                                            .format = kFloatCubeFormat,
+                                            .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
+                                            .cube = true, .name = "ibl_float_cube"});
+    mFloatCube.mipViews.clear();
+    for (uint32_t m = 0; m < mips; ++m)
+        mFloatCube.mipViews.push_back(mFloatCube.image.createView(VK_IMAGE_VIEW_TYPE_2D_ARRAY, m, 1, 0, 6));
+}
+
+void IblMaps::ensurePasses() {
+    if (mCubemapPass) return;
+    mCubemapPass = std::make_unique<passes::IblCubemapPass>(mContext);
+    mPrefilterPass = std::make_unique<passes::IblPrefilterPass>(mContext);
+    mShPass = std::make_unique<passes::IblIrradianceShPass>(mContext);
+    mIrradianceCubePass = std::make_unique<passes::IblIrradianceCubePass>(mContext);
+    mLutPass = std::make_unique<passes::IblBrdfLutPass>(mContext);
+}
+
+bool IblMaps::setEnvironment(const scene::Environment* env, const IblQuality& quality,
+                             const std::filesystem::path& cacheDir, bool force) {
+    if (!env) {
+        if (mSource == MapsSource::None) return false;
+        mSource = MapsSource::None;
+        mSpecular = {};
+        mIrradianceCube = {};
+        mSh = {};
+        mEquirect = {};
+        mFloatCube = {};
+        mCacheFile.clear();
+        mCacheNote.clear();
+        return true;  // the LUT stays: it does not depend on the environment
+    }
+    quality.validate();
+    const uint64_t hash = scene::contentHash(*env);
+    if (!force && mSource != MapsSource::None && hash == mEnvironmentHash && quality == mQuality &&
+        cacheDir == mCacheDir)
+        return false;
+    mQuality = quality;
+    mLevels = quality.levels();
+    mEnvironmentHash = hash;
+    mEnvironmentName = env->source;
+    mEquirectWidth = env->width;
+    mEquirectHeight = env->height;
+    mCacheDir = cacheDir;
+    mCacheFile.clear();
+    mCacheNote.clear();
+    createMaps(quality);
+    if (force) mLutPending = true;
+    mEquirect = {};
+    mFloatCube = {};
+    if (!cacheDir.empty() && loadCache()) {
+        mSource = MapsSource::Cache;
+        return true;
+    }
+    createPrecomputeInputs(*env);
+    ensurePasses();
+    const uint32_t floatMips = mFloatCube.image.desc().mipLevels;
+    mPrefilterPass->prepare(mLevels, quality.prefilterSamples, quality.cubeSize, floatMips, quality.filteredSampling);
+    if (quality.irradiance == IrradianceMode::Cube)
+        mIrradianceCubePass->prepare(quality.irradianceSamples, quality.cubeSize, floatMips, quality.filteredSampling);
+    mSource = MapsSource::Pending;
+    mMapsInitialized = false;
+    return true;
+}
+
+IblMaps::GraphMaps IblMaps::addToGraph(RenderGraph& graph, ImportBindings& imports) {
+    if (!hasEnvironment()) throw std::logic_error("IblMaps::addToGraph without an environment");
+    GraphMaps maps;
+    const bool computeMaps = mSource == MapsSource::Pending;
+    mPrecomputeAdded = computeMaps;
+    mLutAdded = mLutPending;
+    mLastFrame = {.precompute = computeMaps, .lut = mLutPending, .source = mSource};
+    const ResourceState mapsInitial = computeMaps ? ResourceState{} : kSampledState;
+    maps.specular = graph.importTexture("ibl_specular", graphDesc(mSpecular.image.desc()), mapsInitial, kSampledState);
+    if (mIrradianceCube.image)
+        maps.irradianceCube = graph.importTexture("ibl_irradiance", graphDesc(mIrradianceCube.image.desc()),
+                                                  mapsInitial, kSampledState);
+    if (mSh)
+        maps.sh = graph.importBuffer("ibl_sh", {.size = kShBytes}, computeMaps ? ResourceState{} : kUniformState,
+                                     kUniformState);
+    maps.lut = graph.importTexture("ibl_brdf_lut", graphDesc(mLut.image.desc()),
+                                   mLutPending ? ResourceState{} : kSampledState, kSampledState);
+    imports.bind(maps.specular, mSpecular.image.handle(), mSpecular.image.view());
+    if (maps.irradianceCube.valid())
+        imports.bind(maps.irradianceCube, mIrradianceCube.image.handle(), mIrradianceCube.image.view());
+    if (maps.sh.valid()) imports.bind(maps.sh, mSh.handle());
+    imports.bind(maps.lut, mLut.image.handle(), mLut.image.view());
+    if (computeMaps || mLutPending) ensurePasses();
+    if (mLutPending) maps.lut = mLutPass->add(graph, maps.lut, mQuality.lutSize, mQuality.lutSamples);
+    if (!computeMaps) return maps;
+
+    const uint32_t size = mQuality.cubeSize;
+    const TextureId equirect = graph.importTexture("ibl_equirect", graphDesc(mEquirect.desc()),
+                                                   {VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+    TextureId cube = graph.importTexture("ibl_float_cube", graphDesc(mFloatCube.image.desc()), ResourceState{});
+    imports.bind(equirect, mEquirect.handle(), mEquirect.view());
+    imports.bind(cube, mFloatCube.image.handle(), mFloatCube.image.view());
+    const passes::IblCubemapPass::Outputs resampled =
+        mCubemapPass->add(graph, {.equirect = equirect,
+                                  .equirectSampler = mNearest.get(),
+                                  .equirectWidth = mEquirectWidth,
+                                  .equirectHeight = mEquirectHeight,
+                                  .cube = cube,
+                                  .faceSize = size,
+                                  .mipViews = rawViews(mFloatCube.mipViews),
+                                  .specular = maps.specular,
+                                  .specularMip0View = mSpecular.mipViews[0].get()});
+    cube = resampled.cube;
+    maps.specular = mPrefilterPass->add(graph, {.source = cube,
+                                                .sourceSampler = mSampler.get(),
+                                                .sourceFaceSize = size,
+                                                .specular = resampled.specular,
+                                                .mipViews = rawViews(mSpecular.mipViews)});
+    if (mQuality.irradiance == IrradianceMode::Sh9)
+        maps.sh = mShPass->add(graph, {.source = cube,
+                                       .sourceSampler = mSampler.get(),
+                                       .sourceFaceSize = size,
+                                       .projectedFaceSize = mQuality.shSourceSize,
+                                       .coefficients = maps.sh});
+    else
+        maps.irradianceCube = mIrradianceCubePass->add(graph, {.source = cube,
+                                                               .sourceSampler = mSampler.get(),
+                                                               .irradiance = maps.irradianceCube,
+                                                               .storageView = mIrradianceCube.mipViews[0].get(),
+                                                               .faceSize = mQuality.irradianceSize});
+    return maps;
+}
+
+namespace {
+bool passRan(const RenderGraph& graph, const char* name) {
+    const std::optional<uint32_t> pass = graph.findPass(name);
+    return pass && graph.compiled().passes[*pass].cullReason == CullReason::None;
+}
+}  // namespace
+
+void IblMaps::frameCompleted(const RenderGraph& graph) {
+    if (mLutAdded && passRan(graph, "ibl_brdf_lut")) {
+        mLutComputedFor = mQuality.lutCanonical();
+        mLutPending = false;
+    }
+    mLutAdded = false;
+    if (!mPrecomputeAdded) return;
+    mPrecomputeAdded = false;
+    if (!passRan(graph, "ibl_prefilter")) return;  // e.g. a pass was disabled: compute again next frame
+    mSource = MapsSource::Computed;
+    mEquirect = {};
+    mFloatCube = {};
+    if (!mCacheDir.empty() && !mLutPending) writeCache();
+}
+
+std::vector<std::string> IblMaps::explanation() const {
+    std::vector<std::string> lines;
+    if (!hasEnvironment()) {
+        lines.emplace_back("left out: image-based lighting (no environment): no precompute, no skybox, no IBL shading");
+        return lines;
+    }
+    lines.push_back("ibl: environment '" + mEnvironmentName + "' (" + std::to_string(mEquirectWidth) + "x" +
+                    std::to_string(mEquirectHeight) + "), " + mQuality.canonical());
+    if (mLastFrame.precompute)
+        lines.emplace_back("ibl: maps computed by this frame's precompute passes");
+    else if (mLastFrame.source == MapsSource::Cache)
+        lines.push_back("left out: IBL precompute (maps loaded from the cache " + mCacheFile.string() + ")");
+    else
+        lines.emplace_back("left out: IBL precompute (environment and quality unchanged; maps imported)");
+    if (!mLastFrame.lut) lines.emplace_back("left out: BRDF LUT pass (LUT settings unchanged)");
+    lines.emplace_back(mQuality.irradiance == IrradianceMode::Sh9
+                           ? "left out: irradiance cube (irradiance from SH9; --irradiance cube)"
+                           : "left out: SH9 projection (irradiance from the cube; --irradiance sh9)");
+    if (!mCacheNote.empty()) lines.push_back("ibl cache: " + mCacheNote);
+    return lines;
+}
+
+}  // namespace candela::ibl

@@ -1,0 +1,29 @@
+#pragma once
+// Sample tables of the IBL filtering passes, built on the CPU once per setting and read by every
+// texel: for each sample its direction in the texel's tangent frame (z = the texel's direction) and
+// the source mip it reads (filtered importance sampling), so the shaders only rotate, fetch and sum.
+// Uses the sampling functions of shaders/shared/ibl.h, so CPU and GPU agree by construction. Pure.
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace candela::ibl {
+
+struct SampleTable {
+    std::vector<glm::vec4> samples;  // xyz: unit direction in tangent space (z ≥ 0), w: source lod
+    float totalWeight = 0.0f;        // prefilter: Σ z (the n·l weights); irradiance: sample count
+};
+
+// GGX-prefilter samples for perceptual roughness > 0 (n = v): `count` Hammersley half vectors,
+// reflected, those below the horizon dropped. With `filtered`, lod = the source mip matching the
+// sample's solid angle (Křivánek & Colbert, +1 bias), else 0 (plain importance sampling).
+// sourceFaceSize: face size of the source cube's mip 0; sourceMips: its mip count.
+SampleTable prefilterSamples(float roughness, uint32_t count, uint32_t sourceFaceSize, uint32_t sourceMips,
+                             bool filtered);
+
+// Cosine-weighted hemisphere samples for irradiance (each weight 1).
+SampleTable irradianceSamples(uint32_t count, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered);
+
+}  // namespace candela::ibl

@@ -1,0 +1,58 @@
+#include "ibl/ibl_settings.h"
+
+#include "core/check.h"
+
+#include <algorithm>
+#include <bit>
+
+namespace candela::ibl {
+
+namespace {
+void requirePowerOfTwo(const char* name, uint32_t value, uint32_t min, uint32_t max) {
+    if (!std::has_single_bit(value) || value < min || value > max)
+        throw UserError(std::string(name) + " " + std::to_string(value) + ": must be a power of two from " +
+                        std::to_string(min) + " to " + std::to_string(max));
+}
+void requireRange(const char* name, uint32_t value, uint32_t min, uint32_t max) {
+    if (value < min || value > max)
+        throw UserError(std::string(name) + " " + std::to_string(value) + ": must be from " + std::to_string(min) +
+                        " to " + std::to_string(max));
+}
+}  // namespace
+
+IrradianceMode parseIrradianceMode(std::string_view flag, std::string_view value) {
+    if (value == "sh9") return IrradianceMode::Sh9;
+    if (value == "cube") return IrradianceMode::Cube;
+    throw UserError(std::string(flag) + " '" + std::string(value) + "': expected sh9 or cube");
+}
+
+const char* irradianceModeName(IrradianceMode mode) { return mode == IrradianceMode::Sh9 ? "sh9" : "cube"; }
+
+void IblQuality::validate() const {
+    requirePowerOfTwo("--ibl-cube-size", cubeSize, 16, 2048);
+    requireRange("--ibl-levels", specularLevels, 2, 16);
+    requireRange("--ibl-prefilter-samples", prefilterSamples, 1, 65536);
+    requirePowerOfTwo("--ibl-sh-size", shSourceSize, 1, cubeSize);
+    requirePowerOfTwo("--ibl-irradiance-size", irradianceSize, 1, 512);
+    requireRange("--ibl-irradiance-samples", irradianceSamples, 1, 65536);
+    requireRange("--ibl-lut-size", lutSize, 2, 1024);
+    requireRange("--ibl-lut-samples", lutSamples, 1, 65536);
+}
+
+uint32_t IblQuality::levels() const {
+    return std::min(specularLevels, static_cast<uint32_t>(std::bit_width(cubeSize)));
+}
+
+std::string IblQuality::lutCanonical() const {
+    return "lut=" + std::to_string(lutSize) + "x" + std::to_string(lutSamples);
+}
+
+std::string IblQuality::canonical() const {
+    std::string irradianceText = irradiance == IrradianceMode::Sh9
+                                     ? "sh9:" + std::to_string(shSourceSize)
+                                     : "cube:" + std::to_string(irradianceSize) + "x" + std::to_string(irradianceSamples);
+    return "v1 cube=" + std::to_string(cubeSize) + " levels=" + std::to_string(levels()) +
+           " prefilter=" + std::to_string(prefilterSamples) + (filteredSampling ? "" : ":unfiltered") + " irradiance=" + irradianceText + " " + lutCanonical();
+}
+
+}  // namespace candela::ibl

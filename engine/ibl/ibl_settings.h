@@ -1,0 +1,53 @@
+#pragma once
+// Settings of image-based lighting. IblQuality decides what the precompute passes compute (a change
+// reruns them, and it is part of the on-disk cache key); IblLook only changes how the maps are read
+// at shading time (rotation, intensity, skybox), so changing it reruns nothing. Pure data.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace candela::ibl {
+
+enum class IrradianceMode : uint8_t { Sh9, Cube };
+
+// Parses "sh9" / "cube"; throws UserError naming `flag` otherwise.
+IrradianceMode parseIrradianceMode(std::string_view flag, std::string_view value);
+const char* irradianceModeName(IrradianceMode mode);
+
+struct IblQuality {
+    uint32_t cubeSize = 256;          // face size of the float environment cube and of specular mip 0 (2^k, 16..2048)
+    uint32_t specularLevels = 6;      // roughness levels 0, 1/(L−1) … 1 (at most log2(cubeSize) + 1)
+    uint32_t prefilterSamples = 64;   // GGX samples per specular texel
+    // Filtered importance sampling (each sample reads the source mip matching its solid angle);
+    // false: plain importance sampling from mip 0, the brute-force comparison of `ibl-report`.
+    bool filteredSampling = true;
+    IrradianceMode irradiance = IrradianceMode::Sh9;
+    uint32_t shSourceSize = 32;       // face size of the cube mip projected onto SH9 (2^k ≤ cubeSize)
+    uint32_t irradianceSize = 32;     // face size of the irradiance cube (cube mode)
+    uint32_t irradianceSamples = 256; // cosine samples per irradiance texel (cube mode)
+    uint32_t lutSize = 128;           // BRDF LUT is lutSize² (≥ 2)
+    uint32_t lutSamples = 512;        // GGX samples per LUT texel
+
+    // Throws UserError naming the first invalid member ("--ibl-cube-size 100: must be a power of two …").
+    void validate() const;
+    // Specular mips actually used: min(specularLevels, log2(cubeSize) + 1).
+    uint32_t levels() const;
+    // The canonical text of every member (the cache key's settings part), e.g.
+    // "v1 cube=256 levels=6 prefilter=64 irradiance=sh9:32 lut=128x512". Members that the mode does
+    // not use are left out, so they do not split the cache.
+    std::string canonical() const;
+    // The part that only the BRDF LUT depends on.
+    std::string lutCanonical() const;
+    bool operator==(const IblQuality&) const = default;
+};
+
+struct IblLook {
+    float rotationDegrees = 0.0f;  // turns the environment about +Y (shared/environment.h)
+    float intensity = 1.0f;        // scales the environment's radiance (lighting and skybox)
+    bool skybox = true;            // draw the environment behind the scene
+    float skyboxBlur = 0.0f;       // 0 = sharp … 1 = the roughness-1 mip
+    bool multiscatter = true;      // Fdez-Agüera energy compensation
+};
+
+}  // namespace candela::ibl

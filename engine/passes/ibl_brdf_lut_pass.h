@@ -1,0 +1,25 @@
+#pragma once
+// IBL precompute pass "ibl_brdf_lut" (compute): the split-sum BRDF LUT, RG16F, A and B of
+// E_ss = f0·A + B for N·V and perceptual roughness from 0 to 1 (shaders/ibl_brdf_lut.comp). It
+// depends only on its own size and sample count, not on the environment.
+
+#include "graph/render_graph.h"
+#include "vk/pipeline.h"
+
+namespace candela::passes {
+
+class IblBrdfLutPass {
+public:
+    explicit IblBrdfLutPass(vk::Context& context);
+
+    // Adds the pass writing all of `lut` (kFormat, size × size; contents discarded) with `samples`
+    // GGX samples per texel. Returns its new version. The pass object must outlive execution.
+    graph::TextureId add(graph::RenderGraph& graph, graph::TextureId lut, uint32_t size, uint32_t samples) const;
+
+    static constexpr VkFormat kFormat = VK_FORMAT_R16G16_SFLOAT;
+
+private:
+    vk::Pipeline mPipeline;
+};
+
+}  // namespace candela::passes

@@ -1,0 +1,62 @@
+#include "passes/ibl_cubemap_pass.h"
+
+#include "passes/compute.h"
+#include "shared/ibl.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace candela::passes {
+
+using namespace graph;
+
+IblCubemapPass::IblCubemapPass(vk::Context& context)
+    : mResample(vk::Pipeline::compute(context, "ibl_cubemap.comp")),
+      mDownsample(vk::Pipeline::compute(context, "ibl_cube_downsample.comp")) {}
+
+uint32_t IblCubemapPass::supersampleFactor(uint32_t faceSize, uint32_t equirectWidth, uint32_t equirectHeight) {
+    // Solid angle of a cube texel (4π / 6N², on average) over an equirect texel at the equator (2π² / WH).
+    const double ratio = double(equirectWidth) * equirectHeight / (3.0 * 3.14159265358979 * double(faceSize) * faceSize);
+    return std::clamp(static_cast<uint32_t>(std::ceil(std::sqrt(ratio))), 1u, 8u);
+}
+
+IblCubemapPass::Outputs IblCubemapPass::add(RenderGraph& graph, const Inputs& in) const {
+    struct Data {
+        TextureId equirect;
+        TextureId cube;
+        TextureId specular;
+    };
+    const Data& data = graph.addPass<Data>(
+        "ibl_cubemap", PassType::Compute,
+        [&](PassBuilder& builder, Data& d) {
+            d.equirect = builder.read(in.equirect, Usage::Sampled);
+            d.cube = builder.write(in.cube, Usage::StorageReadWrite, WriteMode::Discard);
+            d.specular = builder.write(in.specular, Usage::StorageWrite, WriteMode::Discard);
+        },
+        [this, in](const Data& d, PassContext& ctx) {
+            const shading::IblCubemapPush push{
+                .faceSize = in.faceSize,
+                .supersample = supersampleFactor(in.faceSize, in.equirectWidth, in.equirectHeight)};
+            const VkDescriptorSet set =
+                vk::DescriptorWriter(mResample.program(), 0)
+                    .image("equirect", ctx.view(d.equirect), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, in.equirectSampler)
+                    .image("cubeMip0", in.mipViews[0], VK_IMAGE_LAYOUT_GENERAL)
+                    .image("specularMip0", in.specularMip0View, VK_IMAGE_LAYOUT_GENERAL)
+                    .commit(ctx.context(), ctx.descriptors());
+            const uint32_t groups = groupCount(in.faceSize, CANDELA_IBL_GROUP);
+            dispatchCompute(ctx, mResample, set, &push, sizeof(push), groups, groups, 6);
+            for (uint32_t mip = 1; mip < in.mipViews.size(); ++mip) {
+                computeWriteToReadBarrier(ctx.cmd());
+                const shading::IblDownsamplePush down{.dstFaceSize = std::max(in.faceSize >> mip, 1u)};
+                const VkDescriptorSet mipSet = vk::DescriptorWriter(mDownsample.program(), 0)
+                                                   .image("srcMip", in.mipViews[mip - 1], VK_IMAGE_LAYOUT_GENERAL)
+                                                   .image("dstMip", in.mipViews[mip], VK_IMAGE_LAYOUT_GENERAL)
+                                                   .commit(ctx.context(), ctx.descriptors());
+                const uint32_t mipGroups = groupCount(down.dstFaceSize, CANDELA_IBL_GROUP);
+                dispatchCompute(ctx, mDownsample, mipSet, &down, sizeof(down), mipGroups, mipGroups, 6);
+            }
+        });
+    return {data.cube, data.specular};
+}
+
+}  // namespace candela::passes

@@ -1,0 +1,57 @@
+#include "passes/ibl_irradiance_cube_pass.h"
+
+#include "ibl/ibl_sample_tables.h"
+#include "passes/compute.h"
+#include "shared/ibl.h"
+#include "vk/upload.h"
+
+#include <span>
+
+namespace candela::passes {
+
+using namespace graph;
+
+IblIrradianceCubePass::IblIrradianceCubePass(vk::Context& context)
+    : mContext(context), mPipeline(vk::Pipeline::compute(context, "ibl_irradiance_cube.comp")) {}
+
+void IblIrradianceCubePass::prepare(uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered) {
+    const ibl::SampleTable table = ibl::irradianceSamples(samples, sourceFaceSize, sourceMips, filtered);
+    mSampleCount = static_cast<uint32_t>(table.samples.size());
+    mInverseWeight = 1.0f / table.totalWeight;
+    mTable = vk::Buffer(mContext, {.size = table.samples.size() * sizeof(glm::vec4),
+                                   .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                   .name = "ibl_irradiance_samples"});
+    vk::Uploader upload(mContext);
+    upload.buffer(mTable, std::as_bytes(std::span(table.samples)));
+    upload.submitAndWait();
+}
+
+TextureId IblIrradianceCubePass::add(RenderGraph& graph, const Inputs& in) const {
+    struct Data {
+        TextureId source;
+        TextureId irradiance;
+    };
+    const Data& data = graph.addPass<Data>(
+        "ibl_irradiance_cube", PassType::Compute,
+        [&](PassBuilder& builder, Data& d) {
+            d.source = builder.read(in.source, Usage::Sampled);
+            d.irradiance = builder.write(in.irradiance, Usage::StorageWrite, WriteMode::Discard);
+        },
+        [this, in](const Data& d, PassContext& ctx) {
+            const shading::IblFilterPush push{.faceSize = in.faceSize,
+                                              .firstSample = 0,
+                                              .sampleCount = mSampleCount,
+                                              .inverseWeight = mInverseWeight};
+            const VkDescriptorSet set =
+                vk::DescriptorWriter(mPipeline.program(), 0)
+                    .image("source", ctx.view(d.source), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, in.sourceSampler)
+                    .image("dstMip", in.storageView, VK_IMAGE_LAYOUT_GENERAL)
+                    .buffer("SampleTable", mTable.handle())
+                    .commit(ctx.context(), ctx.descriptors());
+            const uint32_t groups = groupCount(in.faceSize, CANDELA_IBL_GROUP);
+            dispatchCompute(ctx, mPipeline, set, &push, sizeof(push), groups, groups, 6);
+        });
+    return data.irradiance;
+}
+
+}  // namespace candela::passes

@@ -1,0 +1,38 @@
+#pragma once
+// IBL precompute pass "ibl_irradiance_cube" (compute): diffuse irradiance E(n)/π as a small RGBA16F
+// cube, by cosine importance sampling with filtered importance sampling from the float environment
+// cube (shaders/ibl_irradiance_cube.comp).
+
+#include "graph/render_graph.h"
+#include "vk/buffer.h"
+#include "vk/pipeline.h"
+
+namespace candela::passes {
+
+class IblIrradianceCubePass {
+public:
+    explicit IblIrradianceCubePass(vk::Context& context);
+
+    // Builds and uploads the sample table (waits). Call before add() whenever the arguments change;
+    // precondition: the GPU no longer uses the previous table.
+    void prepare(uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered);
+
+    struct Inputs {
+        graph::TextureId source;  // float environment cube
+        VkSampler sourceSampler;
+        graph::TextureId irradiance;  // RGBA16F cube, one mip, contents discarded
+        VkImageView storageView;      // 2D-array storage view of it (caller-owned)
+        uint32_t faceSize;
+    };
+    // Adds the pass; returns the irradiance cube's new version. The pass object must outlive execution.
+    graph::TextureId add(graph::RenderGraph& graph, const Inputs& inputs) const;
+
+private:
+    vk::Context& mContext;
+    vk::Pipeline mPipeline;
+    vk::Buffer mTable;
+    uint32_t mSampleCount = 0;
+    float mInverseWeight = 0.0f;
+};
+
+}  // namespace candela::passes

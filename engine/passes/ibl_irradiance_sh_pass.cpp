@@ -1,0 +1,39 @@
+#include "passes/ibl_irradiance_sh_pass.h"
+
+#include "passes/compute.h"
+#include "shared/ibl.h"
+
+#include <bit>
+
+namespace candela::passes {
+
+using namespace graph;
+
+IblIrradianceShPass::IblIrradianceShPass(vk::Context& context)
+    : mPipeline(vk::Pipeline::compute(context, "ibl_irradiance_sh.comp")) {}
+
+BufferId IblIrradianceShPass::add(RenderGraph& graph, const Inputs& in) const {
+    struct Data {
+        TextureId source;
+        BufferId coefficients;
+    };
+    const Data& data = graph.addPass<Data>(
+        "ibl_irradiance_sh", PassType::Compute,
+        [&](PassBuilder& builder, Data& d) {
+            d.source = builder.read(in.source, Usage::Sampled);
+            d.coefficients = builder.write(in.coefficients, Usage::StorageWrite, WriteMode::Discard);
+        },
+        [this, in](const Data& d, PassContext& ctx) {
+            const uint32_t lod = std::countr_zero(in.sourceFaceSize) - std::countr_zero(in.projectedFaceSize);
+            const shading::IblShPush push{.faceSize = in.projectedFaceSize, .lod = float(lod)};
+            const VkDescriptorSet set =
+                vk::DescriptorWriter(mPipeline.program(), 0)
+                    .image("source", ctx.view(d.source), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, in.sourceSampler)
+                    .buffer("ShCoefficients", ctx.buffer(d.coefficients))
+                    .commit(ctx.context(), ctx.descriptors());
+            dispatchCompute(ctx, mPipeline, set, &push, sizeof(push), 1, 1, 1);
+        });
+    return data.coefficients;
+}
+
+}  // namespace candela::passes

@@ -1,0 +1,68 @@
+#include "passes/ibl_prefilter_pass.h"
+
+#include "ibl/ibl_sample_tables.h"
+#include "passes/compute.h"
+#include "shared/ibl.h"
+#include "vk/upload.h"
+
+#include <algorithm>
+#include <span>
+
+namespace candela::passes {
+
+using namespace graph;
+
+IblPrefilterPass::IblPrefilterPass(vk::Context& context)
+    : mContext(context), mPipeline(vk::Pipeline::compute(context, "ibl_prefilter.comp")) {}
+
+void IblPrefilterPass::prepare(uint32_t levels, uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips,
+                               bool filtered) {
+    std::vector<glm::vec4> all;
+    mRanges.assign(levels, {});
+    for (uint32_t mip = 1; mip < levels; ++mip) {
+        const ibl::SampleTable table =
+            ibl::prefilterSamples(float(mip) / float(levels - 1), samples, sourceFaceSize, sourceMips, filtered);
+        mRanges[mip] = {static_cast<uint32_t>(all.size()), static_cast<uint32_t>(table.samples.size()),
+                        table.totalWeight > 0.0f ? 1.0f / table.totalWeight : 0.0f};
+        all.insert(all.end(), table.samples.begin(), table.samples.end());
+    }
+    if (all.empty()) all.emplace_back(0.0f);
+    mTable = vk::Buffer(mContext, {.size = all.size() * sizeof(glm::vec4),
+                                   .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                   .name = "ibl_prefilter_samples"});
+    vk::Uploader upload(mContext);
+    upload.buffer(mTable, std::as_bytes(std::span(all)));
+    upload.submitAndWait();
+}
+
+TextureId IblPrefilterPass::add(RenderGraph& graph, const Inputs& in) const {
+    struct Data {
+        TextureId source;
+        TextureId specular;
+    };
+    const Data& data = graph.addPass<Data>(
+        "ibl_prefilter", PassType::Compute,
+        [&](PassBuilder& builder, Data& d) {
+            d.source = builder.read(in.source, Usage::Sampled);
+            d.specular = builder.write(in.specular, Usage::StorageWrite, WriteMode::Preserve);  // keeps mip 0
+        },
+        [this, in](const Data& d, PassContext& ctx) {
+            for (uint32_t mip = 1; mip < in.mipViews.size() && mip < mRanges.size(); ++mip) {
+                const shading::IblFilterPush push{.faceSize = std::max(in.sourceFaceSize >> mip, 1u),
+                                                  .firstSample = mRanges[mip].first,
+                                                  .sampleCount = mRanges[mip].count,
+                                                  .inverseWeight = mRanges[mip].inverseWeight};
+                const VkDescriptorSet set =
+                    vk::DescriptorWriter(mPipeline.program(), 0)
+                        .image("source", ctx.view(d.source), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, in.sourceSampler)
+                        .image("dstMip", in.mipViews[mip], VK_IMAGE_LAYOUT_GENERAL)
+                        .buffer("SampleTable", mTable.handle())
+                        .commit(ctx.context(), ctx.descriptors());
+                const uint32_t groups = groupCount(push.faceSize, CANDELA_IBL_GROUP);
+                dispatchCompute(ctx, mPipeline, set, &push, sizeof(push), groups, groups, 6);
+            }
+        });
+    return data.specular;
+}
+
+}  // namespace candela::passes

@@ -1,0 +1,45 @@
+#pragma once
+// IBL precompute pass "ibl_prefilter" (compute): mips 1… of the specular cube — mip m is the
+// environment convolved with the GGX lobe of perceptual roughness m / (levels − 1), by GGX
+// importance sampling with filtered importance sampling from the float cube's mips
+// (shaders/ibl_prefilter.comp; samples from engine/ibl/ibl_sample_tables.h). Mip 0 (roughness 0,
+// the environment itself) is written by the cubemap pass.
+
+#include "graph/render_graph.h"
+#include "vk/buffer.h"
+#include "vk/pipeline.h"
+
+#include <vector>
+
+namespace candela::passes {
+
+class IblPrefilterPass {
+public:
+    explicit IblPrefilterPass(vk::Context& context);
+
+    // Builds and uploads the sample tables of every mip (waits for the upload). Call before add()
+    // whenever the arguments change; precondition: the GPU no longer uses the previous tables.
+    void prepare(uint32_t levels, uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered);
+
+    struct Inputs {
+        graph::TextureId source;    // float environment cube (sampled with all its mips)
+        VkSampler sourceSampler;    // trilinear, clamp
+        uint32_t sourceFaceSize;
+        graph::TextureId specular;  // RGBA16F cube, one mip per level, mip 0 already written
+        std::vector<VkImageView> mipViews;  // storage 2D-array view per specular mip (caller-owned)
+    };
+    // Adds the pass; returns the specular cube's new version. The pass object must outlive execution.
+    graph::TextureId add(graph::RenderGraph& graph, const Inputs& inputs) const;
+
+private:
+    struct MipRange {
+        uint32_t first, count;
+        float inverseWeight;
+    };
+    vk::Context& mContext;
+    vk::Pipeline mPipeline;
+    vk::Buffer mTable;
+    std::vector<MipRange> mRanges;  // index = mip; mip 0 unused
+};
+
+}  // namespace candela::passes

@@ -1,0 +1,34 @@
+#pragma once
+// Skybox pass "skybox" (graphics): draws the environment behind the scene into the HDR target —
+// a full-screen triangle at the far plane, depth-tested against the forward pass's depth (read
+// only), so only uncovered pixels shade, and blended under what is there, so partly covered
+// (alpha-blended) pixels keep their coverage (shaders/skybox.frag). Reads the specular cube at the
+// blur level's mip.
+
+#include "graph/render_graph.h"
+#include "scene/camera.h"
+#include "shared/ibl.h"
+#include "vk/pipeline.h"
+
+namespace candela::passes {
+
+class SkyboxPass {
+public:
+    explicit SkyboxPass(vk::Context& context);
+
+    struct Inputs {
+        graph::TextureId hdr;       // RGBA16F, premultiplied, alpha = coverage
+        graph::TextureId depth;     // D32 reverse-Z, 0 = nothing drawn
+        graph::TextureId specular;  // specular cube (imported)
+        VkImageView specularView;   // its cube view (caller-owned)
+        VkSampler sampler;          // trilinear
+        shading::IblParams params;  // params.z = skybox lod
+    };
+    // Adds the pass; returns the HDR target's new version. The pass object must outlive execution.
+    graph::TextureId add(graph::RenderGraph& graph, const scene::ViewSetup& view, const Inputs& inputs) const;
+
+private:
+    vk::Pipeline mPipeline;
+};
+
+}  // namespace candela::passes

@@ -1,0 +1,235 @@
+// Image-based lighting, shared by the precompute compute shaders, the forward and skybox shaders and
+// the C++ side (push-constant structs, CPU tests of the shading algebra). A double-precision
+// reference of the integrals lives in engine/ibl/ibl_reference.h, written independently.
+//
+// Maps (all in the environment's own frame, rotation 0; lookups turn world directions by the
+// environment rotation first, see iblLookupDirection):
+//   specular cube   RGBA16F, mip m holds the GGX-prefiltered radiance for perceptual roughness
+//                   m / (levels − 1) (split-sum first term, n = v = r); mip 0 is the environment itself
+//   irradiance      cosine-weighted average radiance E(n)/π, as 9 SH coefficients (already convolved
+//                   with the clamped cosine) or as a small RGBA16F cube
+//   BRDF LUT        RG16F, u = N·V, v = perceptual roughness, both sampled at texel centres from 0 to 1
+//                   inclusive; R = A, G = B of the split sum: single-scattering albedo E_ss = f0·A + B,
+//                   and A + B is the directional albedo of a white metal, E(μ), which carries the
+//                   multiple-scattering compensation.
+#ifndef CANDELA_SHARED_IBL_H
+#define CANDELA_SHARED_IBL_H
+
+#include "shared/compat.h"
+
+CANDELA_NAMESPACE_BEGIN
+
+#ifndef CANDELA_PI
+#define CANDELA_PI 3.14159265358979f
+#endif
+#define CANDELA_HALF_MAX 65504.0f
+#define CANDELA_IBL_GROUP 8u       // 8×8 invocations per workgroup in the per-texel passes
+#define CANDELA_IBL_SH_GROUP 64u   // invocations of the single SH-projection workgroup
+
+// ---- Push constants of the precompute passes ----
+
+// ibl_cubemap.comp: equirectangular → cube mip 0.
+struct IblCubemapPush {
+    uint faceSize;
+    uint supersample;  // k: k×k bilinear taps per cube texel (k ≥ 1), for sources finer than the cube
+    uint pad0, pad1;
+};
+
+// ibl_cube_downsample.comp: 2×2 box filter from one mip to the next.
+struct IblDownsamplePush {
+    uint dstFaceSize;
+    uint pad0, pad1, pad2;
+};
+
+// ibl_prefilter.comp (one dispatch per mip) and ibl_irradiance_cube.comp: sample table entries
+// [firstSample, firstSample + sampleCount) of engine/ibl/ibl_sample_tables.h.
+struct IblFilterPush {
+    uint faceSize;        // of the mip written
+    uint firstSample;
+    uint sampleCount;
+    float inverseWeight;  // 1 / the table's total weight
+};
+
+// ibl_irradiance_sh.comp: projection of one source mip onto SH9.
+struct IblShPush {
+    uint faceSize;  // of the source mip read
+    float lod;      // that mip's level
+    uint pad0, pad1;
+};
+
+// ibl_brdf_lut.comp
+struct IblLutPush {
+    uint size;
+    uint samples;
+    uint pad0, pad1;
+};
+
+// Runtime lookup parameters, shared by the forward and skybox passes (push constants).
+struct IblParams {
+    vec4 rotation;  // x = cos θ, y = sin θ of the environment rotation about +Y; zw unused
+    vec4 params;    // x = intensity, y = specular max lod (levels − 1), z = skybox lod, w = LUT size
+};
+
+// skybox.frag
+struct SkyboxPush {
+    mat4 inverseViewProjection;
+    vec4 eye;  // xyz: camera position (world)
+    IblParams ibl;
+};
+
+// ---- Directions ----
+
+// The direction through the centre of texel coordinates `uv` ∈ [0,1]² of cube face `face`
+// (Vulkan/OpenGL order +X, −X, +Y, −Y, +Z, −Z). Not normalized.
+CANDELA_FN vec3 cubeFaceDirection(uint face, vec2 uv) {
+    float s = uv.x * 2.0f - 1.0f;
+    float t = uv.y * 2.0f - 1.0f;
+    if (face == 0u) return vec3(1.0f, -t, -s);
+    if (face == 1u) return vec3(-1.0f, -t, s);
+    if (face == 2u) return vec3(s, 1.0f, t);
+    if (face == 3u) return vec3(s, -1.0f, -t);
+    if (face == 4u) return vec3(s, -t, 1.0f);
+    return vec3(-s, -t, -1.0f);
+}
+
+// Solid angle of the cube-face rectangle [x0,x1]×[y0,y1] (face coordinates in [−1,1]) via the
+// area element atan(xy / sqrt(x² + y² + 1)).
+CANDELA_FN float cubeAreaElement(float x, float y) {
+    return atan(x * y, sqrt(x * x + y * y + 1.0f));
+}
+CANDELA_FN float cubeTexelSolidAngle(uint x, uint y, uint faceSize) {
+    float inv = 1.0f / float(faceSize);
+    float x0 = 2.0f * float(x) * inv - 1.0f;
+    float y0 = 2.0f * float(y) * inv - 1.0f;
+    float x1 = x0 + 2.0f * inv;
+    float y1 = y0 + 2.0f * inv;
+    return cubeAreaElement(x0, y0) - cubeAreaElement(x0, y1) - cubeAreaElement(x1, y0) + cubeAreaElement(x1, y1);
+}
+
+// World direction → the environment's own frame (see shared/environment.h: direction d samples
+// what R·d sampled at rotation 0; R turns by θ about +Y).
+CANDELA_FN vec3 iblLookupDirection(vec3 d, vec4 rotation) {
+    return vec3(d.x * rotation.x + d.z * rotation.y, d.y, -d.x * rotation.y + d.z * rotation.x);
+}
+
+// ---- Sampling ----
+
+// Hammersley point i of n in [0,1)².
+CANDELA_FN vec2 hammersley(uint i, uint n) {
+    uint bits = i;
+    bits = (bits << 16u) | (bits >> 16u);
+    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+    return vec2((float(i) + 0.5f) / float(n), float(bits) * 2.3283064365386963e-10f);
+}
+
+// An orthonormal basis around unit n (Duff et al. 2017, branchless, no singularity).
+CANDELA_FN mat3 basisAround(vec3 n) {
+    float sz = n.z >= 0.0f ? 1.0f : -1.0f;
+    float a = -1.0f / (sz + n.z);
+    float b = n.x * n.y * a;
+    vec3 t = vec3(1.0f + sz * n.x * n.x * a, sz * b, -sz * n.x);
+    vec3 bt = vec3(b, sz + n.y * n.y * a, -n.y);
+    return mat3(t, bt, n);
+}
+
+// GGX half-vector sample in tangent space (z = normal) for α = roughness², with cos²θ_h (so that
+// the caller can evaluate D without cancellation): returns (h, cos²θ).
+CANDELA_FN vec4 sampleGgxHalfVector(vec2 xi, float alpha) {
+    float a2 = alpha * alpha;
+    float cos2 = (1.0f - xi.y) / (1.0f + (a2 - 1.0f) * xi.y);
+    float sin2 = a2 * xi.y / (1.0f + (a2 - 1.0f) * xi.y);
+    float cosTheta = sqrt(cos2);
+    float sinTheta = sqrt(sin2);
+    float phi = 2.0f * CANDELA_PI * xi.x;
+    return vec4(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta, cos2);
+}
+
+// GGX D from cos²θ_h and sin²θ_h without cancellation.
+CANDELA_FN float ggxD(float cos2, float sin2, float alpha) {
+    float a2 = alpha * alpha;
+    float d = cos2 * a2 + sin2;
+    return a2 / (CANDELA_PI * d * d);
+}
+
+// Cosine-weighted hemisphere sample in tangent space.
+CANDELA_FN vec3 sampleCosine(vec2 xi) {
+    float r = sqrt(xi.y);
+    float phi = 2.0f * CANDELA_PI * xi.x;
+    return vec3(r * cos(phi), r * sin(phi), sqrt(max(1.0f - xi.y, 0.0f)));
+}
+
+// Source mip for a sample of probability density `pdf` (per steradian) among `samples`, by filtered
+// importance sampling (Křivánek & Colbert 2008): the mip whose texel covers the sample's share of
+// the sphere, with their +1 bias.
+CANDELA_FN float filteredLod(float pdf, uint samples, float texelSolidAngle, float maxLod) {
+    float sampleSolidAngle = 1.0f / (float(samples) * max(pdf, 1e-8f));
+    return clamp(0.5f * log2(sampleSolidAngle / texelSolidAngle) + 1.0f, 0.0f, maxLod);
+}
+
+// ---- Spherical harmonics (real, order 2; basis order Y00, Y1−1, Y10, Y11, Y2−2, Y2−1, Y20, Y21, Y22) ----
+
+CANDELA_FN float shBasis(uint i, vec3 d) {
+    if (i == 0u) return 0.282094792f;
+    if (i == 1u) return 0.488602512f * d.y;
+    if (i == 2u) return 0.488602512f * d.z;
+    if (i == 3u) return 0.488602512f * d.x;
+    if (i == 4u) return 1.092548431f * d.x * d.y;
+    if (i == 5u) return 1.092548431f * d.y * d.z;
+    if (i == 6u) return 0.315391565f * (3.0f * d.z * d.z - 1.0f);
+    if (i == 7u) return 1.092548431f * d.x * d.z;
+    return 0.546274215f * (d.x * d.x - d.y * d.y);
+}
+
+// Clamped-cosine convolution divided by π per band (Ramamoorthi & Hanrahan 2001): Â_l / π.
+CANDELA_FN float shCosineBand(uint i) {
+    return i == 0u ? 1.0f : (i < 4u ? 2.0f / 3.0f : 0.25f);
+}
+
+// ---- Shading ----
+
+// Where the LUT stores (N·V, roughness): texel centres span 0..1 inclusive.
+CANDELA_FN vec2 brdfLutUv(float NoV, float roughness, float size) {
+    return (vec2(NoV, roughness) * (size - 1.0f) + 0.5f) / size;
+}
+
+// Specular occlusion from ambient occlusion (Lagarde & de Rousiers 2014, as Filament does).
+CANDELA_FN float specularOcclusion(float NoV, float ao, float roughness) {
+    return clamp(pow(NoV + ao, exp2(-16.0f * roughness - 1.0f)) - 1.0f + ao, 0.0f, 1.0f);
+}
+
+// Split-sum image-based lighting of one surface point (radiance toward the viewer):
+//   specular  prefiltered · E_ss, E_ss = f0·A + B
+//   diffuse   irradiance · diffuseColor · (1 − E_ss)  (what single scattering did not reflect)
+// With multiscatter (Fdez-Agüera 2019, "A Multiple-Scattering Microfacet Model for Real-Time IBL"):
+// the energy lost by single scattering, E_ms = 1 − (A + B), returns as
+//   F_ms·E_ms, F_ms = E_ss·F_avg / (1 − E_ms·F_avg), F_avg = f0 + (1 − f0)/21,
+// lit by the irradiance, and the diffuse weight becomes (1 − E_ss − F_ms·E_ms). Under a uniform
+// white environment a white surface then reflects exactly 1 (white furnace).
+CANDELA_FN vec3 iblShade(vec3 prefiltered, vec3 irradiance, vec2 lut, vec3 f0, vec3 diffuseColor, bool multiscatter,
+                         float diffuseOcclusion, float specularOcclusionFactor) {
+    vec3 singleScatter = f0 * lut.x + lut.y;
+    vec3 multiScatter = vec3(0.0f);
+    if (multiscatter) {
+        float lost = 1.0f - (lut.x + lut.y);
+        vec3 averageFresnel = f0 + (vec3(1.0f) - f0) * (1.0f / 21.0f);
+        vec3 fms = singleScatter * averageFresnel / (vec3(1.0f) - lost * averageFresnel);
+        multiScatter = fms * lost;
+    }
+    vec3 diffuseWeight = diffuseColor * max(vec3(1.0f) - singleScatter - multiScatter, vec3(0.0f));
+    vec3 specular = prefiltered * singleScatter * specularOcclusionFactor;
+    vec3 diffuse = (multiScatter + diffuseWeight) * irradiance * diffuseOcclusion;
+    return specular + diffuse;
+}
+
+CANDELA_NAMESPACE_END
+
+#ifdef __cplusplus
+static_assert(sizeof(candela::shading::IblFilterPush) == 16);
+static_assert(sizeof(candela::shading::IblParams) == 32);
+static_assert(sizeof(candela::shading::SkyboxPush) == 112);
+#endif
+
+#endif
