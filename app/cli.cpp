@@ -156,6 +156,9 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         table.withValue["--irradiance"] = [&](const std::string& v) {
             o.iblQuality.irradiance = ibl::parseIrradianceMode("--irradiance", v);
         };
+        table.withValue["--ibl-lod-bias"] = [&](const std::string& v) {
+            o.iblQuality.lodBias = parseNumber("--ibl-lod-bias", v);
+        };
         table.withValue["--ibl-cache"] = [&](const std::string& v) {
             if (v.empty()) throw UserError("--ibl-cache: expected a directory");
             o.iblCache = v;
@@ -184,8 +187,32 @@ Command parseCommandLine(const std::vector<std::string>& args) {
     } else if (name == "info") {
         command.kind = Command::Kind::Info;
         addCommon(table, command.info.common);
+    } else if (name == "ibl-report") {
+        command.kind = Command::Kind::IblReport;
+        IblReportOptions& o = command.iblReport;
+        addCommon(table, o.common);
+        table.withValue["--env"] = [&](const std::string& v) {
+            if (v.empty() || v == "none") throw UserError("--env: ibl-report needs an environment (a file or sky)");
+            o.env = v;
+        };
+        table.withValue["--out"] = [&](const std::string& v) {
+            if (v.empty()) throw UserError("--out: expected a directory");
+            o.out = v;
+        };
+        table.withValue["--repeats"] = [&](const std::string& v) {
+            o.repeats = parseDimension("--repeats", v);
+            if (o.repeats == 0) throw UserError("--repeats: need at least 1");
+        };
+        table.withValue["--width"] = [&](const std::string& v) { o.width = parseDimension("--width", v); };
+        table.withValue["--height"] = [&](const std::string& v) { o.height = parseDimension("--height", v); };
+        table.withValue["--reference-samples"] = [&](const std::string& v) {
+            o.referenceSamples = parseDimension("--reference-samples", v);
+            if (o.referenceSamples < 16) throw UserError("--reference-samples: need at least 16");
+        };
+        table.switches["--quick"] = [&] { o.quick = true; };
     } else {
-        throw UserError("unknown command '" + name + "' (commands: render, bench, info; see candela --help)");
+        throw UserError("unknown command '" + name +
+                        "' (commands: render, bench, ibl-report, info; see candela --help)");
     }
     bool help = false;
     table.switches["--help"] = [&] { help = true; };
@@ -206,6 +233,8 @@ usage:
   candela render [options]   render a frame headless and write it to a file
   candela bench [options]    render N frames and report frame and pass times, also as ratios to a
                              calibration pass run in the same process
+  candela ibl-report [opts]  sweep the IBL quality settings: precompute time against the error of the
+                             maps and of the final image, as CSV, markdown and log-log plots
   candela info [options]     list the Vulkan devices, the one chosen and why, and the features enabled
 
 render options:
@@ -239,10 +268,12 @@ render options:
   --ibl-cache DIR       keep precomputed IBL maps in DIR, keyed by environment content and quality
   --ibl-cube-size N     environment cube face size, 2^k from 16 to 2048 [256]
   --ibl-levels N        specular roughness levels (mips) [6]
-  --ibl-prefilter-samples N   GGX samples per specular texel [64]
+  --ibl-prefilter-samples N   GGX samples per texel of the first rough specular mip; 4x more per
+                        coarser mip, at most 4096 [32]
+  --ibl-lod-bias B      filtered-importance-sampling lod bias (more: less noise, more blur) [0.5]
   --ibl-sh-size N       face size of the cube mip projected onto SH9 [32]
   --ibl-irradiance-size N, --ibl-irradiance-samples N   irradiance cube (cube mode) [32, 256]
-  --ibl-lut-size N, --ibl-lut-samples N                  BRDF LUT size and samples [128, 512]
+  --ibl-lut-size N, --ibl-lut-samples N                  BRDF LUT size and samples [128, 256]
   --dither              dither the 8-bit output
   --no-default-lights   a scene without punctual lights normally gets a default key and fill light
   --explain             print which passes and shader variants were left out, and why
@@ -250,6 +281,14 @@ render options:
 bench options: the render options that choose the scene, camera and shading, and
   --frames N            frames to measure after warm-up [20]
   --json                machine-readable output
+
+ibl-report options:
+  --env ENV             an .hdr/.exr file or sky [sky]
+  --out DIR             where report.csv, report.md and the plots go [ibl-report]
+  --repeats N           precompute runs per setting; the median is reported [3]
+  --quick               a reduced sweep (smoke tests)
+  --width W, --height H size of the end-to-end images [320 x 180]
+  --reference-samples N samples per pixel of the ground-truth render [4096]
 
 common options:
   --device SEL          device index or case-insensitive name substring (see candela info)

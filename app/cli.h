@@ -49,10 +49,22 @@ struct InfoOptions {
     CommonOptions common;
 };
 
+struct IblReportOptions {
+    CommonOptions common;
+    std::string env = "sky";            // --env FILE|sky
+    std::string out = "ibl-report";     // --out DIR (created)
+    uint32_t repeats = 3;               // --repeats N: precompute runs per setting (median)
+    bool quick = false;                 // --quick: a reduced sweep (tests, smoke runs)
+    uint32_t width = 320;               // --width, --height: end-to-end image size
+    uint32_t height = 180;
+    uint32_t referenceSamples = 4096;   // --reference-samples N: per pixel of the ground-truth render
+};
+
 struct Command {
-    enum class Kind { Help, Render, Info, Bench } kind = Kind::Help;
+    enum class Kind { Help, Render, Info, Bench, IblReport } kind = Kind::Help;
     RenderOptions render;  // render and bench
     InfoOptions info;
+    IblReportOptions iblReport;
 };
 
 // Parses argv[1..]. No arguments or --help → Kind::Help.

@@ -15,6 +15,7 @@ namespace candela::app {
 int runRender(const RenderOptions& options);
 int runBench(const RenderOptions& options);
 int runInfo(const InfoOptions& options);
+int runIblReport(const IblReportOptions& options);
 
 // Shared by render and bench: the context description and the render settings the flags choose.
 vk::ContextDesc contextDesc(const CommonOptions& common);

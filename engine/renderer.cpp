@@ -163,6 +163,12 @@ FrameTiming Renderer::precomputeIbl(const scene::Environment& environment, const
     return execute(*mGraph, imports, true);
 }
 
+void Renderer::setReferenceEnvironment(const scene::Environment& environment) {
+    mFrames.waitIdle();
+    mIbl.setReferenceEnvironment(environment);
+    mForward.setIblMaps(mIbl);
+}
+
 CapturedFrame Renderer::capture(const RenderSettings& settings) {
     validateSettings(settings);
     prepareScene(settings);
@@ -229,7 +235,8 @@ TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& se
                                            std::clamp(settings.ibl.skyboxBlur, 0.0f, 1.0f) * maxLod,
                                            float(mIbl.lutSize()))},
             .irradianceSh = mIbl.quality().irradiance == ibl::IrradianceMode::Sh9,
-            .multiscatter = settings.ibl.multiscatter};
+            .multiscatter = settings.ibl.multiscatter,
+            .referenceSamples = settings.ibl.referenceSamples};
     }
     const passes::ForwardPass::Output forward =
         mForward.add(graph, settings.width, settings.height, view, settings.shading, ibl ? &*ibl : nullptr);

@@ -99,6 +99,9 @@ public:
     // maps are current; no cache — and waits. The maps then serve the following frames (read them
     // back through iblMaps()). Throws UserError for an invalid quality.
     FrameTiming precomputeIbl(const scene::Environment& environment, const ibl::IblQuality& quality);
+    // Gives the ground truth (RenderSettings::ibl.referenceSamples > 0) its environment; see
+    // ibl::IblMaps::setReferenceEnvironment. Waits for the GPU.
+    void setReferenceEnvironment(const scene::Environment& environment);
     // Runs the calibration pass alone at width × height (see passes/calibration_pass.h).
     FrameTiming renderCalibration(uint32_t width, uint32_t height);
 

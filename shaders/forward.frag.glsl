@@ -5,6 +5,7 @@
 // costs nothing: no normal map → no TBN work; no lights → no light loop; unlit → no BRDF; no
 // environment → no image-based lighting (shared/ibl.h: split sum, multiscatter, specular occlusion).
 #include "shared/brdf.h"
+#include "shared/environment.h"
 #include "shared/ibl.h"
 #include "shared/scene_data.h"
 
@@ -16,6 +17,10 @@ layout(constant_id = 4) const uint kShadingModel = CANDELA_SHADING_PBR;
 layout(constant_id = 5) const bool kIbl = false;
 layout(constant_id = 6) const bool kIrradianceSh = true;  // else the irradiance cube
 layout(constant_id = 7) const bool kMultiscatter = true;
+// > 0: ground truth for `candela ibl-report` — integrate the reflectance equation against the
+// environment (the specular cube's mip 0) per pixel with this many GGX and as many cosine samples,
+// instead of the split sum.
+layout(constant_id = 8) const uint kReferenceSamples = 0u;
 
 layout(std430, set = 0, binding = 0) readonly buffer Lights {
     LightData lights[];
@@ -37,6 +42,14 @@ layout(set = 2, binding = 1) uniform samplerCube irradianceCube;
 layout(set = 2, binding = 2) uniform sampler2D brdfLut;
 layout(std140, set = 2, binding = 3) uniform IrradianceSh {
     vec4 sh[9];  // convolved, /π: irradiance(n)/π = Σ sh[i] · Y_i(n)
+};
+// Ground truth only (kReferenceSamples > 0): the environment as an equirectangular map (nearest
+// texels; alpha 0 marks the brightest texels, which are summed explicitly instead of sampled) and
+// the list of those texels: referenceTexels[0].x = count, then per texel (direction in the
+// environment's frame, solid angle) and (radiance, 0).
+layout(set = 2, binding = 4) uniform sampler2D referenceEquirect;
+layout(std430, set = 2, binding = 5) readonly buffer ReferenceTexels {
+    vec4 referenceTexels[];
 };
 layout(push_constant) uniform Push {
     ForwardPush push;
@@ -107,6 +120,63 @@ vec3 imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float metal
     return light * push.ibl.params.x;
 }
 
+// Radiance of the environment in world direction `d` for the ground truth: its equirectangular
+// texel (piecewise constant), 0 for the texels summed explicitly.
+vec3 referenceRadiance(vec3 d) {
+    vec2 uv = directionToEquirectUv(iblLookupDirection(d, push.ibl.rotation), 0.0f);
+    ivec2 size = textureSize(referenceEquirect, 0);
+    vec4 texel = texelFetch(referenceEquirect, clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1), 0);
+    return texel.rgb * texel.a;
+}
+
+// Ground truth: the reflectance equation of the forward pass's BRDF (single scattering: Cook-Torrance
+// GGX with height-correlated Smith visibility and Schlick Fresnel, Lambert weighted by
+// (1 − F)(1 − metallic)) against the environment. The brightest texels (a sun, lamps) are summed
+// one by one — no sampler finds a 0.5° sun — and the rest is integrated by Monte Carlo: GGX
+// half-vector samples for the specular lobe, cosine samples for the diffuse one, over a per-pixel
+// rotated Hammersley set.
+vec3 referenceImageBasedLight(vec3 n, vec3 v, vec3 baseColor, float metallic, float roughness) {
+    float alpha = roughness * roughness;
+    float NoV = clamp(dot(n, v), CANDELA_MIN_NOV, 1.0f);
+    vec3 f0 = mix(vec3(0.04f), baseColor, metallic);
+    mat3 frame = basisAround(n);
+    uvec2 p = uvec2(gl_FragCoord.xy);
+    uint hash = (p.x * 1973u + p.y * 9277u + 26699u) * 0x9E3779B9u;
+    vec2 shift = vec2(float(hash & 0xFFFFu), float(hash >> 16u)) / 65536.0f;
+    vec3 specular = vec3(0.0f);
+    vec3 diffuse = vec3(0.0f);
+    for (uint i = 0u; i < kReferenceSamples; ++i) {
+        vec2 xi = fract(hammersley(i, kReferenceSamples) + shift);
+        vec3 h = frame * sampleGgxHalfVector(xi, alpha).xyz;
+        float VoH = dot(v, h);
+        vec3 l = 2.0f * VoH * h - v;
+        float NoL = dot(n, l);
+        if (NoL > 0.0f && VoH > 0.0f) {
+            float NoH = max(dot(n, h), 1e-6f);
+            vec3 radiance = referenceRadiance(l);
+            specular += radiance * fresnelSchlick(VoH, f0) *
+                        (visibilitySmithGgxCorrelated(NoV, NoL, alpha) * 4.0f * NoL * VoH / NoH);
+        }
+        vec3 ld = frame * sampleCosine(xi);
+        vec3 hd = normalize(v + ld);
+        vec3 radianceD = referenceRadiance(ld);
+        diffuse += radianceD * (vec3(1.0f) - fresnelSchlick(dot(v, hd), f0));
+    }
+    diffuse *= baseColor * (1.0f - metallic);
+    vec3 sampled = (specular + diffuse) / float(kReferenceSamples);
+    // Environment frame → world: the inverse rotation.
+    vec4 inverseRotation = vec4(push.ibl.rotation.x, -push.ibl.rotation.y, 0.0f, 0.0f);
+    vec3 summed = vec3(0.0f);
+    uint count = uint(referenceTexels[0].x);
+    for (uint i = 0u; i < count; ++i) {
+        vec4 directionSolidAngle = referenceTexels[1u + 2u * i];
+        vec3 l = iblLookupDirection(directionSolidAngle.xyz, inverseRotation);
+        summed += brdfTimesCosine(n, v, l, baseColor, metallic, roughness, CANDELA_SHADING_PBR) *
+                  referenceTexels[2u + 2u * i].rgb * directionSolidAngle.w;
+    }
+    return (sampled + summed) * push.ibl.params.x;  // no occlusion texture in the report's scene
+}
+
 void main() {
     MaterialData m = materials[draws[push.counts.y].material.x];
     vec4 baseColor = m.baseColorFactor * inColor * sampleSlot(baseColorTexture, CANDELA_TEX_BASE_COLOR);
@@ -144,7 +214,10 @@ void main() {
                      attenuation;
         }
     }
-    if (kIbl) color += imageBasedLight(m, n, v, baseColor.rgb, metallic, roughness);
+    if (kIbl) {
+        if (kReferenceSamples > 0u) color += referenceImageBasedLight(n, v, baseColor.rgb, metallic, roughness);
+        else color += imageBasedLight(m, n, v, baseColor.rgb, metallic, roughness);
+    }
     color += m.emissive.rgb * sampleSlot(emissiveTexture, CANDELA_TEX_EMISSIVE).rgb;
     // Radiance can exceed half-float range with extreme lights: keep it finite.
     color = min(color, vec3(60000.0f));

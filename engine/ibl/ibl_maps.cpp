@@ -12,8 +12,12 @@
 #include "vk/sampler.h"
 #include "vk/upload.h"
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <span>
+
+#include "shared/environment.h"
 
 namespace candela::ibl {
 
@@ -63,11 +67,71 @@ void IblMaps::createPlaceholders() {
     mPlaceholderSh = vk::Buffer(mContext, {.size = kShBytes,
                                            .usage = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                            .name = "ibl_placeholder_sh"});
+    mPlaceholderEquirect = vk::Image(mContext, {.format = kFloatCubeFormat, .usage = usage, .name = "ibl_placeholder_equirect"});
+    mPlaceholderTexels = vk::Buffer(mContext, {.size = 16,
+                                               .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                               .name = "ibl_placeholder_reference_texels"});
     vk::Uploader upload(mContext);
     for (uint32_t face = 0; face < 6; ++face)
         upload.image(mPlaceholderCube, zeros(8), 0, face, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     upload.image(mPlaceholderLut, zeros(4), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     upload.buffer(mPlaceholderSh, zeros(kShBytes));
+    upload.image(mPlaceholderEquirect, zeros(16), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    upload.buffer(mPlaceholderTexels, zeros(16));
+    upload.submitAndWait();
+}
+
+VkImageView IblMaps::referenceEquirectView() const {
+    return mReferenceEquirect ? mReferenceEquirect.view() : mPlaceholderEquirect.view();
+}
+VkBuffer IblMaps::referenceTexelBuffer() const {
+    return mReferenceTexels ? mReferenceTexels.handle() : mPlaceholderTexels.handle();
+}
+
+void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
+    // Texel luminance and solid angle (rows of equal latitude share one).
+    const auto luminance = [&](size_t i) {
+        return 0.2126f * env.rgb[i * 3] + 0.7152f * env.rgb[i * 3 + 1] + 0.0722f * env.rgb[i * 3 + 2];
+    };
+    std::vector<double> rowSolidAngle(env.height);
+    double totalSolidAngle = 0, totalPower = 0;
+    for (uint32_t y = 0; y < env.height; ++y) {
+        rowSolidAngle[y] = (2.0 * 3.14159265358979 / env.width) *
+                           (std::cos(3.14159265358979 * y / env.height) - std::cos(3.14159265358979 * (y + 1) / env.height));
+        for (uint32_t x = 0; x < env.width; ++x) totalPower += luminance(size_t(y) * env.width + x) * rowSolidAngle[y];
+        totalSolidAngle += rowSolidAngle[y] * env.width;
+    }
+    const double threshold = 20.0 * totalPower / totalSolidAngle;
+    std::vector<uint32_t> bright;
+    for (uint32_t i = 0; i < env.texelCount(); ++i)
+        if (luminance(i) > threshold) bright.push_back(i);
+    std::sort(bright.begin(), bright.end(), [&](uint32_t a, uint32_t b) { return luminance(a) > luminance(b); });
+    if (bright.size() > kMaxReferenceTexels) bright.resize(kMaxReferenceTexels);
+
+    std::vector<float> rgba(env.texelCount() * 4);
+    for (size_t i = 0; i < env.texelCount(); ++i) {
+        for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = env.rgb[i * 3 + c];
+        rgba[i * 4 + 3] = 1.0f;
+    }
+    std::vector<glm::vec4> texels{glm::vec4(float(bright.size()), 0, 0, 0)};
+    for (uint32_t i : bright) {
+        rgba[size_t(i) * 4 + 3] = 0.0f;
+        const uint32_t x = i % env.width, y = i / env.width;
+        const glm::vec3 direction = shading::equirectUvToDirection(
+            glm::vec2((x + 0.5f) / float(env.width), (y + 0.5f) / float(env.height)), 0.0f);
+        texels.emplace_back(direction, float(rowSolidAngle[y]));
+        texels.emplace_back(env.rgb[size_t(i) * 3], env.rgb[size_t(i) * 3 + 1], env.rgb[size_t(i) * 3 + 2], 0.0f);
+    }
+    mReferenceEquirect = vk::Image(mContext, {.width = env.width, .height = env.height, .format = kFloatCubeFormat,
+                                              .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                              .name = "ibl_reference_equirect"});
+    mReferenceTexels = vk::Buffer(mContext, {.size = texels.size() * sizeof(glm::vec4),
+                                             .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                             .name = "ibl_reference_texels"});
+    mReferenceTexelCount = static_cast<uint32_t>(bright.size());
+    vk::Uploader upload(mContext);
+    upload.image(mReferenceEquirect, std::as_bytes(std::span(rgba)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    upload.buffer(mReferenceTexels, std::as_bytes(std::span(texels)));
     upload.submitAndWait();
 }
 
@@ -83,13 +147,12 @@ void IblMaps::createMaps(const IblQuality& q) {
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
                                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     auto makeCube = [&](Target& target, uint32_t size, uint32_t mips, const char* name) {
-        if (target.image && target.image.desc().width == size && target.image.desc().mipLevels == mips) return false;
+        if (target.image && target.image.desc().width == size && target.image.desc().mipLevels == mips) return;
         target.image = vk::Image(mContext, {.width = size, .height = size, .mipLevels = mips, .arrayLayers = 6,
                                             .format = kSpecularFormat, .usage = usage, .cube = true, .name = name});
         target.mipViews.clear();
         for (uint32_t m = 0; m < mips; ++m)
             target.mipViews.push_back(target.image.createView(VK_IMAGE_VIEW_TYPE_2D_ARRAY, m, 1, 0, 6));
-        return true;
     };
     makeCube(mSpecular, q.cubeSize, q.levels(), "ibl_specular");
     if (q.irradiance == IrradianceMode::Cube) {
@@ -185,11 +248,12 @@ bool IblMaps::setEnvironment(const scene::Environment* env, const IblQuality& qu
     createPrecomputeInputs(*env);
     ensurePasses();
     const uint32_t floatMips = mFloatCube.image.desc().mipLevels;
-    mPrefilterPass->prepare(mLevels, quality.prefilterSamples, quality.cubeSize, floatMips, quality.filteredSampling);
+    mPrefilterPass->prepare(mLevels, quality.prefilterSamples, quality.cubeSize, floatMips, quality.filteredSampling,
+                            quality.lodBias);
     if (quality.irradiance == IrradianceMode::Cube)
-        mIrradianceCubePass->prepare(quality.irradianceSamples, quality.cubeSize, floatMips, quality.filteredSampling);
+        mIrradianceCubePass->prepare(quality.irradianceSamples, quality.cubeSize, floatMips, quality.filteredSampling,
+                            quality.lodBias);
     mSource = MapsSource::Pending;
-    mMapsInitialized = false;
     return true;
 }
 

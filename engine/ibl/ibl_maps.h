@@ -73,7 +73,19 @@ public:
     VkImageView lutView() const;
     VkBuffer shBuffer() const;
     VkSampler sampler() const { return mSampler.get(); }  // trilinear, clamp to edge
+    VkSampler nearestSampler() const { return mNearest.get(); }
     uint32_t lutSize() const;
+
+    // The ground truth of `ibl-report` (RenderSettings::ibl.referenceSamples > 0) reads the
+    // environment itself: an RGBA32F equirectangular copy whose alpha is 0 for the brightest texels
+    // (at most kMaxReferenceTexels, each more than 20× the mean luminance), and the list of those
+    // texels, which the shader sums explicitly. Uploads and waits; precondition: the GPU no longer
+    // uses the previous ones. Placeholders stand in until it is called.
+    void setReferenceEnvironment(const scene::Environment& environment);
+    VkImageView referenceEquirectView() const;
+    VkBuffer referenceTexelBuffer() const;
+    uint32_t referenceTexelCount() const { return mReferenceTexelCount; }
+    static constexpr uint32_t kMaxReferenceTexels = 4096;
 
     struct GraphMaps {
         graph::TextureId specular;
@@ -125,6 +137,12 @@ private:
     vk::Image mPlaceholderCube;
     vk::Image mPlaceholderLut;
     vk::Buffer mPlaceholderSh;
+    vk::Image mPlaceholderEquirect;
+    vk::Buffer mPlaceholderTexels;
+    // Ground truth (setReferenceEnvironment).
+    vk::Image mReferenceEquirect;
+    vk::Buffer mReferenceTexels;
+    uint32_t mReferenceTexelCount = 0;
     // Maps.
     Target mSpecular;
     Target mIrradianceCube;
@@ -148,7 +166,6 @@ private:
     MapsSource mSource = MapsSource::None;
     bool mLutPending = false;
     std::string mLutComputedFor;  // lutCanonical() of the LUT's contents
-    bool mMapsInitialized = false;  // maps hold valid contents (state = shader read) 
     bool mPrecomputeAdded = false;  // the last addToGraph added precompute passes
     bool mLutAdded = false;
     struct LastFrame {  // what the last addToGraph did, for explanation()

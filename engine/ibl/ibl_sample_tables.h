@@ -18,12 +18,13 @@ struct SampleTable {
 
 // GGX-prefilter samples for perceptual roughness > 0 (n = v): `count` Hammersley half vectors,
 // reflected, those below the horizon dropped. With `filtered`, lod = the source mip matching the
-// sample's solid angle (Křivánek & Colbert, +1 bias), else 0 (plain importance sampling).
+// sample's solid angle plus `lodBias` (Křivánek & Colbert use +1), else 0 (plain importance sampling).
 // sourceFaceSize: face size of the source cube's mip 0; sourceMips: its mip count.
 SampleTable prefilterSamples(float roughness, uint32_t count, uint32_t sourceFaceSize, uint32_t sourceMips,
-                             bool filtered);
+                             bool filtered, float lodBias);
 
 // Cosine-weighted hemisphere samples for irradiance (each weight 1).
-SampleTable irradianceSamples(uint32_t count, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered);
+SampleTable irradianceSamples(uint32_t count, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered,
+                              float lodBias);
 
 }  // namespace candela::ibl

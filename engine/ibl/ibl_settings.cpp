@@ -37,6 +37,8 @@ void IblQuality::validate() const {
     requireRange("--ibl-irradiance-samples", irradianceSamples, 1, 65536);
     requireRange("--ibl-lut-size", lutSize, 2, 1024);
     requireRange("--ibl-lut-samples", lutSamples, 1, 65536);
+    if (!(lodBias >= -4.0f && lodBias <= 4.0f))
+        throw UserError("--ibl-lod-bias " + std::to_string(lodBias) + ": must be from -4 to 4");
 }
 
 uint32_t IblQuality::levels() const {
@@ -51,8 +53,8 @@ std::string IblQuality::canonical() const {
     std::string irradianceText = irradiance == IrradianceMode::Sh9
                                      ? "sh9:" + std::to_string(shSourceSize)
                                      : "cube:" + std::to_string(irradianceSize) + "x" + std::to_string(irradianceSamples);
-    return "v1 cube=" + std::to_string(cubeSize) + " levels=" + std::to_string(levels()) +
-           " prefilter=" + std::to_string(prefilterSamples) + (filteredSampling ? "" : ":unfiltered") + " irradiance=" + irradianceText + " " + lutCanonical();
+    return "v2 cube=" + std::to_string(cubeSize) + " levels=" + std::to_string(levels()) +
+           " prefilter=" + std::to_string(prefilterSamples) + (filteredSampling ? ":bias" + std::to_string(lodBias).substr(0, 5) : ":unfiltered") + " irradiance=" + irradianceText + " " + lutCanonical();
 }
 
 }  // namespace candela::ibl

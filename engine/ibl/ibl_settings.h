@@ -18,23 +18,28 @@ const char* irradianceModeName(IrradianceMode mode);
 struct IblQuality {
     uint32_t cubeSize = 256;          // face size of the float environment cube and of specular mip 0 (2^k, 16..2048)
     uint32_t specularLevels = 6;      // roughness levels 0, 1/(L−1) … 1 (at most log2(cubeSize) + 1)
-    uint32_t prefilterSamples = 64;   // GGX samples per specular texel
+    // GGX samples per texel of specular mip 1 (roughness 1/(levels−1)); each coarser mip, with 4×
+    // fewer texels, takes 4× more (at most 4096), so every level costs the same.
+    uint32_t prefilterSamples = 32;
     // Filtered importance sampling (each sample reads the source mip matching its solid angle);
     // false: plain importance sampling from mip 0, the brute-force comparison of `ibl-report`.
     bool filteredSampling = true;
+    // Added to the filtered-importance-sampling lod (Křivánek & Colbert: +1). Larger: less noise
+    // from small bright sources, more blur (a smooth gradient regresses toward its mean).
+    float lodBias = 0.5f;
     IrradianceMode irradiance = IrradianceMode::Sh9;
     uint32_t shSourceSize = 32;       // face size of the cube mip projected onto SH9 (2^k ≤ cubeSize)
     uint32_t irradianceSize = 32;     // face size of the irradiance cube (cube mode)
     uint32_t irradianceSamples = 256; // cosine samples per irradiance texel (cube mode)
     uint32_t lutSize = 128;           // BRDF LUT is lutSize² (≥ 2)
-    uint32_t lutSamples = 512;        // GGX samples per LUT texel
+    uint32_t lutSamples = 256;        // visible-normal samples per LUT texel
 
     // Throws UserError naming the first invalid member ("--ibl-cube-size 100: must be a power of two …").
     void validate() const;
     // Specular mips actually used: min(specularLevels, log2(cubeSize) + 1).
     uint32_t levels() const;
     // The canonical text of every member (the cache key's settings part), e.g.
-    // "v1 cube=256 levels=6 prefilter=64 irradiance=sh9:32 lut=128x512". Members that the mode does
+    // "v1 cube=256 levels=6 prefilter=32:bias0.500 irradiance=sh9:32 lut=128x256". Members that the mode does
     // not use are left out, so they do not split the cache.
     std::string canonical() const;
     // The part that only the BRDF LUT depends on.
@@ -48,6 +53,9 @@ struct IblLook {
     bool skybox = true;            // draw the environment behind the scene
     float skyboxBlur = 0.0f;       // 0 = sharp … 1 = the roughness-1 mip
     bool multiscatter = true;      // Fdez-Agüera energy compensation
+    // > 0: shade with the ground truth (the reflectance equation integrated per pixel with this many
+    // samples per lobe) instead of the split sum; for `ibl-report`. Slow.
+    uint32_t referenceSamples = 0;
 };
 
 }  // namespace candela::ibl

@@ -18,7 +18,8 @@ std::string ForwardPass::Variant::name() const {
     if (!unlit && !lights) out += "+no-lights";
     if (alphaMask) out += "+alpha-mask";
     if (blend) out += "+blend";
-    if (ibl && !unlit) out += std::string("+ibl-") + (irradianceSh ? "sh9" : "cube") + (multiscatter ? "" : "-single-scatter");
+    if (ibl && !unlit) out += std::string("+ibl-") + (irradianceSh ? "sh9" : "cube") + (multiscatter ? "" : "-single-scatter") +
+               (referenceSamples ? "-reference" + std::to_string(referenceSamples) : "");
     return out;
 }
 
@@ -36,7 +37,7 @@ const vk::Pipeline& ForwardPass::pipeline(const Variant& v) {
         .blend = v.blend ? vk::BlendMode::Premultiplied : vk::BlendMode::None,
         .dynamicCullMode = true,
         .specialization = {v.normalMap, v.lights, v.unlit, v.alphaMask, static_cast<uint32_t>(v.model), v.ibl,
-                           v.irradianceSh, v.multiscatter},
+                           v.irradianceSh, v.multiscatter, v.referenceSamples},
         .vertexBindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}},
         .vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
@@ -59,6 +60,7 @@ ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingMode
     v.ibl = !m.unlit && ibl;
     v.irradianceSh = !v.ibl || ibl->irradianceSh;
     v.multiscatter = !v.ibl || ibl->multiscatter;
+    v.referenceSamples = v.ibl ? ibl->referenceSamples : 0;
     return v;
 }
 
@@ -93,6 +95,9 @@ void ForwardPass::setIblMaps(const ibl::IblMaps& maps) {
                          maps.sampler())
                   .image("brdfLut", maps.lutView(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, maps.sampler())
                   .buffer("IrradianceSh", maps.shBuffer())
+                  .image("referenceEquirect", maps.referenceEquirectView(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                         maps.nearestSampler())
+                  .buffer("ReferenceTexels", maps.referenceTexelBuffer())
                   .commit(mContext, *mIblSets);
 }
 

@@ -44,6 +44,9 @@ public:
         shading::IblParams params;
         bool irradianceSh = true;
         bool multiscatter = true;
+        // > 0: ground truth instead of the split sum (`ibl-report`): the reflectance equation
+        // integrated per pixel with this many samples per lobe from the specular cube's mip 0.
+        uint32_t referenceSamples = 0;
     };
     // Adds the pass drawing the current scene as seen from `view`, lit by the scene's lights and,
     // when `ibl` is given, the environment. Returns the written targets.
@@ -67,6 +70,7 @@ private:
         bool ibl = false;
         bool irradianceSh = true;
         bool multiscatter = true;
+        uint32_t referenceSamples = 0;
         auto operator<=>(const Variant&) const = default;
         std::string name() const;
     };

@@ -14,8 +14,9 @@ using namespace graph;
 IblIrradianceCubePass::IblIrradianceCubePass(vk::Context& context)
     : mContext(context), mPipeline(vk::Pipeline::compute(context, "ibl_irradiance_cube.comp")) {}
 
-void IblIrradianceCubePass::prepare(uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered) {
-    const ibl::SampleTable table = ibl::irradianceSamples(samples, sourceFaceSize, sourceMips, filtered);
+void IblIrradianceCubePass::prepare(uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered,
+                 float lodBias) {
+    const ibl::SampleTable table = ibl::irradianceSamples(samples, sourceFaceSize, sourceMips, filtered, lodBias);
     mSampleCount = static_cast<uint32_t>(table.samples.size());
     mInverseWeight = 1.0f / table.totalWeight;
     mTable = vk::Buffer(mContext, {.size = table.samples.size() * sizeof(glm::vec4),

@@ -15,7 +15,8 @@ public:
 
     // Builds and uploads the sample table (waits). Call before add() whenever the arguments change;
     // precondition: the GPU no longer uses the previous table.
-    void prepare(uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered);
+    void prepare(uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered,
+                 float lodBias);
 
     struct Inputs {
         graph::TextureId source;  // float environment cube

@@ -16,12 +16,15 @@ IblPrefilterPass::IblPrefilterPass(vk::Context& context)
     : mContext(context), mPipeline(vk::Pipeline::compute(context, "ibl_prefilter.comp")) {}
 
 void IblPrefilterPass::prepare(uint32_t levels, uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips,
-                               bool filtered) {
+                               bool filtered, float lodBias) {
     std::vector<glm::vec4> all;
     mRanges.assign(levels, {});
-    for (uint32_t mip = 1; mip < levels; ++mip) {
+    // Each coarser level has 4× fewer texels and a wider lobe: 4× the samples keeps every level's
+    // cost equal and its noise down where small bright sources are spread widest.
+    uint32_t count = samples;
+    for (uint32_t mip = 1; mip < levels; ++mip, count = std::min(count * 4, kMaxSamples)) {
         const ibl::SampleTable table =
-            ibl::prefilterSamples(float(mip) / float(levels - 1), samples, sourceFaceSize, sourceMips, filtered);
+            ibl::prefilterSamples(float(mip) / float(levels - 1), count, sourceFaceSize, sourceMips, filtered, lodBias);
         mRanges[mip] = {static_cast<uint32_t>(all.size()), static_cast<uint32_t>(table.samples.size()),
                         table.totalWeight > 0.0f ? 1.0f / table.totalWeight : 0.0f};
         all.insert(all.end(), table.samples.begin(), table.samples.end());

@@ -17,9 +17,11 @@ class IblPrefilterPass {
 public:
     explicit IblPrefilterPass(vk::Context& context);
 
-    // Builds and uploads the sample tables of every mip (waits for the upload). Call before add()
-    // whenever the arguments change; precondition: the GPU no longer uses the previous tables.
-    void prepare(uint32_t levels, uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered);
+    // Builds and uploads the sample tables of every mip (waits for the upload): `samples` at mip 1,
+    // 4× more at each coarser mip, at most kMaxSamples. Call before add() whenever the arguments
+    // change; precondition: the GPU no longer uses the previous tables.
+    void prepare(uint32_t levels, uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered,
+                 float lodBias);
 
     struct Inputs {
         graph::TextureId source;    // float environment cube (sampled with all its mips)
@@ -28,6 +30,8 @@ public:
         graph::TextureId specular;  // RGBA16F cube, one mip per level, mip 0 already written
         std::vector<VkImageView> mipViews;  // storage 2D-array view per specular mip (caller-owned)
     };
+    static constexpr uint32_t kMaxSamples = 4096;
+
     // Adds the pass; returns the specular cube's new version. The pass object must outlive execution.
     graph::TextureId add(graph::RenderGraph& graph, const Inputs& inputs) const;
 

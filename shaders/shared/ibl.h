@@ -147,6 +147,29 @@ CANDELA_FN vec4 sampleGgxHalfVector(vec2 xi, float alpha) {
     return vec4(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta, cos2);
 }
 
+// GGX visible-normal sample (Heitz 2018, "Sampling the GGX Distribution of Visible Normals") in
+// tangent space for view direction `v` (z ≥ 0) and α = roughness². With this density the estimator
+// of f·cos/pdf for the specular BRDF is F · G2/G1(v), bounded by 1: low variance even at grazing views.
+CANDELA_FN vec3 sampleGgxVisibleNormal(vec3 v, float alpha, vec2 xi) {
+    vec3 vh = normalize(vec3(alpha * v.x, alpha * v.y, v.z));
+    float lengthSquared = vh.x * vh.x + vh.y * vh.y;
+    vec3 t1 = lengthSquared > 0.0f ? vec3(-vh.y, vh.x, 0.0f) * (1.0f / sqrt(lengthSquared)) : vec3(1.0f, 0.0f, 0.0f);
+    vec3 t2 = cross(vh, t1);
+    float r = sqrt(xi.x);
+    float phi = 2.0f * CANDELA_PI * xi.y;
+    float p1 = r * cos(phi);
+    float s = 0.5f * (1.0f + vh.z);
+    float p2 = (1.0f - s) * sqrt(max(1.0f - p1 * p1, 0.0f)) + s * r * sin(phi);
+    vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(1.0f - p1 * p1 - p2 * p2, 0.0f)) * vh;
+    return normalize(vec3(alpha * nh.x, alpha * nh.y, max(nh.z, 1e-6f)));
+}
+
+// Smith G1 for GGX: 2 n·x / (n·x + sqrt(α² + (1 − α²)(n·x)²)).
+CANDELA_FN float smithG1(float NoX, float alpha) {
+    float a2 = alpha * alpha;
+    return 2.0f * NoX / (NoX + sqrt(a2 + (1.0f - a2) * NoX * NoX));
+}
+
 // GGX D from cos²θ_h and sin²θ_h without cancellation.
 CANDELA_FN float ggxD(float cos2, float sin2, float alpha) {
     float a2 = alpha * alpha;
@@ -163,10 +186,10 @@ CANDELA_FN vec3 sampleCosine(vec2 xi) {
 
 // Source mip for a sample of probability density `pdf` (per steradian) among `samples`, by filtered
 // importance sampling (Křivánek & Colbert 2008): the mip whose texel covers the sample's share of
-// the sphere, with their +1 bias.
-CANDELA_FN float filteredLod(float pdf, uint samples, float texelSolidAngle, float maxLod) {
+// the sphere, plus `bias` (they use +1: a footprint of 4× the sample's share, less noise, more blur).
+CANDELA_FN float filteredLod(float pdf, uint samples, float texelSolidAngle, float maxLod, float bias) {
     float sampleSolidAngle = 1.0f / (float(samples) * max(pdf, 1e-8f));
-    return clamp(0.5f * log2(sampleSolidAngle / texelSolidAngle) + 1.0f, 0.0f, maxLod);
+    return clamp(0.5f * log2(sampleSolidAngle / texelSolidAngle) + bias, 0.0f, maxLod);
 }
 
 // ---- Spherical harmonics (real, order 2; basis order Y00, Y1−1, Y10, Y11, Y2−2, Y2−1, Y20, Y21, Y22) ----

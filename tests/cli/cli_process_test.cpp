@@ -172,6 +172,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"IblCubeSizeNotPowerOfTwo", "render --ibl-cube-size 100 --out {dir}/x.png", "--ibl-cube-size 100: must be a power of two from 16 to 2048"},
                       BadInput{"IblShSizeAboveCube", "render --ibl-cube-size 64 --ibl-sh-size 128 --out {dir}/x.png", "--ibl-sh-size 128: must be a power of two from 1 to 64"},
                       BadInput{"IblPrefilterSamplesZero", "render --ibl-prefilter-samples 0 --out {dir}/x.png", "--ibl-prefilter-samples 0: must be from 1 to 65536"},
+                      BadInput{"IblReportWithoutEnvironment", "ibl-report --env none --out {dir}/r", "--env: ibl-report needs an environment"},
+                      BadInput{"IblReportZeroRepeats", "ibl-report --repeats 0 --out {dir}/r", "--repeats: need at least 1"},
+                      BadInput{"IblReportUnwritableOut", "ibl-report --out /proc/candela-report", "/proc/candela-report: cannot create the report folder"},
                       BadInput{"SkyboxBlurAboveOne", "render --skybox-blur 2 --out {dir}/x.png", "--skybox-blur: expected 0 (sharp) to 1, got '2'"},
                       BadInput{"ExposureNan", "render --exposure nan --out {dir}/x.png", "--exposure: expected a number, got 'nan'"}),
     [](const ::testing::TestParamInfo<BadInput>& row) { return std::string(row.param.name); });
@@ -284,6 +287,37 @@ TEST(Cli, DefaultRenderIsLitByTheProceduralSkyWithPrecomputeFirst) {
     EXPECT_NE(r.stdoutText.find("ibl: environment 'procedural sky'"), std::string::npos) << r.stdoutText;
     EXPECT_NE(r.stdoutText.find("ibl: maps computed by this frame's precompute passes"), std::string::npos) << r.stdoutText;
     EXPECT_NE(r.stdoutText.find("left out: irradiance cube"), std::string::npos) << r.stdoutText;
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, IblReportWritesTablesAndPlotsWithTheDefaultMarked) {
+    const auto dir = tempDir() / "ibl-report";
+    const Result r = run("ibl-report --quick --repeats 1 --width 32 --height 18 --reference-samples 64 --out " +
+                         dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    for (const char* file : {"report.csv", "report.md", "specular.png", "irradiance.png", "lut.png", "image.png",
+                             "ground_truth.exr", "default.png"})
+        EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+    std::ifstream csv(dir / "report.csv");
+    std::string header, line;
+    std::getline(csv, header);
+    EXPECT_NE(header.find("precompute_ms"), std::string::npos);
+    EXPECT_NE(header.find("rmse_r0.20"), std::string::npos) << "errors per roughness level";
+    size_t rows = 0;
+    while (std::getline(csv, line)) {
+        ++rows;
+        EXPECT_EQ(line.find("nan"), std::string::npos) << line;
+        EXPECT_EQ(line.find("inf"), std::string::npos) << line;
+    }
+    EXPECT_GE(rows, 7u);
+    std::ifstream md(dir / "report.md");
+    const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("(default)"), std::string::npos);
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* plot = stbi_load((dir / "specular.png").c_str(), &w, &h, &channels, 4);
+    ASSERT_NE(plot, nullptr);
+    stbi_image_free(plot);
+    EXPECT_EQ(w, 960);
     std::filesystem::remove_all(dir);
 }
 

@@ -1,5 +1,6 @@
 // Golden-image tests: the default scene and glTF sample models rendered on lavapipe with the
-// validation layer on, compared with approved images in tests/golden/.
+// validation layer on — lit by their lights, or by an environment (image-based lighting at the
+// default quality, skybox behind) — compared with approved images in tests/golden/.
 //
 // Metric (stated once, applied to every case): a pixel differs when any RGBA channel differs by
 // more than 3 levels (of 255); a case fails when more than 0.1% of its pixels differ or any channel
@@ -16,12 +17,14 @@
 #include "renderer.h"
 #include "scene/builtin_scenes.h"
 #include "scene/gltf_loader.h"
+#include "scene/procedural_sky.h"
 #include "shared/tonemap.h"
 
 #include <stb_image.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace candela::test {
@@ -31,6 +34,10 @@ struct GoldenCase {
     const char* name;
     const char* model;  // path under ../shared/assets/models, or "" for the built-in sphere grid
     glm::vec3 orbit{0.0f, 90.0f, 0.0f};  // θ°, φ°, r (0: frame the bounds)
+    // Image-based lighting: "" none (the scene's or the default lights), "sky" the procedural sky,
+    // else a file under ../shared/assets/environments, shown as the skybox, without default lights.
+    const char* environment = "";
+    float environmentRotation = 0.0f;
 };
 
 constexpr uint32_t kWidth = 256, kHeight = 192;
@@ -54,6 +61,12 @@ const GoldenCase kCases[] = {
     {"mesh_primitive_modes", "MeshPrimitiveModes/glTF/MeshPrimitiveModes.gltf"},
     {"triangle_without_indices", "TriangleWithoutIndices/glTF/TriangleWithoutIndices.gltf"},
     {"unlit", "UnlitTest/glTF/UnlitTest.gltf"},
+    {"ibl_damaged_helmet", "DamagedHelmet/glTF-Binary/DamagedHelmet.glb", {-30.0f, 80.0f, 0.0f}, "studio_small_03_1k.hdr"},
+    {"ibl_metal_rough_spheres", "MetalRoughSpheresNoTextures/glTF/MetalRoughSpheresNoTextures.gltf",
+     {0.0f, 90.0f, 0.0f}, "venice_sunset_1k.hdr", 90.0f},
+    {"ibl_default_scene_studio", "", {0.0f, 90.0f, 0.0f}, "studio_small_03_1k.hdr"},
+    {"ibl_default_scene_venice", "", {0.0f, 90.0f, 0.0f}, "venice_sunset_1k.hdr", 180.0f},
+    {"ibl_default_scene_sky", "", {0.0f, 90.0f, 0.0f}, "sky"},
 };
 
 class GoldenTest : public GpuTest, public ::testing::WithParamInterface<GoldenCase> {};
@@ -79,9 +92,22 @@ TEST_P(GoldenTest, MatchesApprovedImage) {
     } else {
         scene = scene::makeSphereGrid();
     }
+    std::optional<scene::Environment> environment;
+    if (std::string(c.environment) == "sky") {
+        environment = scene::makeProceduralSky();
+    } else if (*c.environment) {
+        const std::filesystem::path path = std::filesystem::path(CANDELA_SHARED_ASSETS) / "environments" / c.environment;
+        if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared asset missing: " << path;
+        environment = scene::loadEnvironment(path);
+    }
     RenderSettings settings{.width = kWidth, .height = kHeight, .scene = &scene};
     settings.camera.orbit = c.orbit;
     settings.tonemap.background = shading::srgbDecode(glm::vec3(0x26 / 255.0f));
+    if (environment) {
+        settings.environment = &*environment;
+        settings.defaultLights = false;
+        settings.ibl.rotationDegrees = c.environmentRotation;
+    }
     Renderer renderer(context());
     const CapturedFrame frame = renderer.capture(settings);
 

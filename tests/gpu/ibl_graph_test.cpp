@@ -1,0 +1,185 @@
+// What the frame graph leaves out, asserted from the compiled graph (never from timings): no
+// environment → no precompute, no skybox, no IBL shading; an unchanged environment → no precompute;
+// changing only how maps are read (rotation, intensity) → no precompute; changing the quality →
+// precompute without the LUT when the LUT's settings did not change; the on-disk cache replaces
+// the precompute of a later run and a corrupt cache file is recomputed.
+
+#include "gpu_test.h"
+
+#include "ibl/ibl_cache_file.h"
+#include "renderer.h"
+#include "scene/builtin_scenes.h"
+#include "scene/procedural_sky.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace candela::test {
+namespace {
+
+// Names of the passes that ran (declared and not culled) in the renderer's last graph.
+std::vector<std::string> ranPasses(const Renderer& renderer) {
+    std::vector<std::string> names;
+    const graph::RenderGraph& graph = renderer.lastGraph();
+    for (uint32_t p = 0; p < graph.declaration().passes.size(); ++p)
+        if (graph.compiled().passes[p].cullReason == graph::CullReason::None)
+            names.push_back(graph.declaration().passes[p].name);
+    return names;
+}
+
+bool has(const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+bool anyIbl(const std::vector<std::string>& names) {
+    return std::any_of(names.begin(), names.end(), [](const std::string& n) { return n.rfind("ibl_", 0) == 0; });
+}
+
+bool explains(const Renderer& renderer, const std::string& fragment) {
+    const std::vector<std::string> lines = renderer.explain();
+    return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(fragment) != std::string::npos; });
+}
+
+class IblGraphTest : public GpuTest {
+protected:
+    RenderSettings settings(const scene::Environment* environment) {
+        RenderSettings s{.width = 48, .height = 32, .scene = &mScene};
+        s.environment = environment;
+        s.iblQuality.cubeSize = 32;  // small maps: these tests are about the graph
+        s.iblQuality.shSourceSize = 8;
+        s.iblQuality.lutSize = 16;
+        s.iblQuality.lutSamples = 16;
+        s.iblQuality.prefilterSamples = 8;
+        return s;
+    }
+    scene::Scene mScene = scene::makeSphereGrid();
+    scene::Environment mSky = scene::makeProceduralSky({.width = 64, .height = 32});
+};
+
+TEST_F(IblGraphTest, NoEnvironmentRunsNoPrecomputeNoSkyboxNoIblShading) {
+    Renderer renderer(context());
+    renderer.capture(settings(nullptr));
+    const std::vector<std::string> passes = ranPasses(renderer);
+    EXPECT_FALSE(anyIbl(passes));
+    EXPECT_FALSE(has(passes, "skybox"));
+    EXPECT_FALSE(renderer.lastGraph().findPass("skybox").has_value()) << "not even declared";
+    EXPECT_TRUE(explains(renderer, "left out: image-based lighting"));
+    EXPECT_TRUE(explains(renderer, "variants: pbr ×49")) << "the forward variant without IBL work";
+}
+
+TEST_F(IblGraphTest, PrecomputeRunsOnceThenOnlyWhenEnvironmentOrQualityChanges) {
+    Renderer renderer(context());
+    RenderSettings s = settings(&mSky);
+    renderer.capture(s);
+    std::vector<std::string> passes = ranPasses(renderer);
+    for (const char* name : {"ibl_brdf_lut", "ibl_cubemap", "ibl_prefilter", "ibl_irradiance_sh", "forward", "skybox"})
+        EXPECT_TRUE(has(passes, name)) << name;
+    EXPECT_FALSE(has(passes, "ibl_irradiance_cube"));
+    EXPECT_TRUE(explains(renderer, "ibl: maps computed by this frame's precompute passes"));
+    EXPECT_TRUE(explains(renderer, "variants: pbr+ibl-sh9 ×49"));
+
+    // Same environment: the maps are imported, no precompute pass is even declared.
+    renderer.capture(s);
+    passes = ranPasses(renderer);
+    EXPECT_FALSE(anyIbl(passes));
+    for (const graph::PassDecl& pass : renderer.lastGraph().declaration().passes)
+        EXPECT_NE(pass.name.rfind("ibl_", 0), 0u) << pass.name;
+    EXPECT_TRUE(explains(renderer, "left out: IBL precompute (environment and quality unchanged"));
+
+    // Reading the maps differently changes no map.
+    s.ibl.rotationDegrees = 40.0f;
+    s.ibl.intensity = 2.0f;
+    s.ibl.skyboxBlur = 0.5f;
+    renderer.capture(s);
+    EXPECT_FALSE(anyIbl(ranPasses(renderer)));
+
+    // Another prefilter setting: precompute again, but the LUT's settings did not change.
+    s.iblQuality.prefilterSamples = 16;
+    renderer.capture(s);
+    passes = ranPasses(renderer);
+    EXPECT_TRUE(has(passes, "ibl_prefilter"));
+    EXPECT_FALSE(has(passes, "ibl_brdf_lut"));
+    EXPECT_TRUE(explains(renderer, "left out: BRDF LUT pass"));
+
+    // Another environment (new content): precompute, still no LUT.
+    scene::Environment other = scene::makeProceduralSky({.width = 64, .height = 32, .sunAzimuthDegrees = 120.0f});
+    s.environment = &other;
+    renderer.capture(s);
+    passes = ranPasses(renderer);
+    EXPECT_TRUE(has(passes, "ibl_cubemap"));
+    EXPECT_FALSE(has(passes, "ibl_brdf_lut"));
+
+    // Irradiance as a cube: its pass replaces the SH projection.
+    s.iblQuality.irradiance = ibl::IrradianceMode::Cube;
+    renderer.capture(s);
+    passes = ranPasses(renderer);
+    EXPECT_TRUE(has(passes, "ibl_irradiance_cube"));
+    EXPECT_FALSE(has(passes, "ibl_irradiance_sh"));
+    EXPECT_TRUE(explains(renderer, "left out: SH9 projection"));
+
+    // Environment off again: nothing of IBL remains.
+    s.environment = nullptr;
+    renderer.capture(s);
+    EXPECT_FALSE(anyIbl(ranPasses(renderer)));
+    EXPECT_FALSE(has(ranPasses(renderer), "skybox"));
+}
+
+TEST_F(IblGraphTest, SkyboxToggleLeavesOutOnlyTheSkybox) {
+    Renderer renderer(context());
+    RenderSettings s = settings(&mSky);
+    s.ibl.skybox = false;
+    renderer.capture(s);
+    EXPECT_FALSE(renderer.lastGraph().findPass("skybox").has_value());
+    EXPECT_TRUE(has(ranPasses(renderer), "ibl_prefilter"));
+    EXPECT_TRUE(explains(renderer, "left out: skybox"));
+}
+
+TEST_F(IblGraphTest, CacheReplacesThePrecomputeOfALaterRunAndACorruptFileIsRecomputed) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("candela_ibl_cache_test_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    RenderSettings s = settings(&mSky);
+    s.iblCacheDir = dir;
+    std::vector<uint8_t> computed;
+    {
+        Renderer renderer(context());
+        computed = renderer.capture(s).rgba8;
+        EXPECT_TRUE(has(ranPasses(renderer), "ibl_prefilter"));
+        ASSERT_FALSE(renderer.iblMaps().cacheFile().empty());
+        EXPECT_TRUE(std::filesystem::exists(renderer.iblMaps().cacheFile()));
+    }
+    std::filesystem::path file;
+    {
+        Renderer renderer(context());
+        const std::vector<uint8_t> cached = renderer.capture(s).rgba8;
+        EXPECT_FALSE(anyIbl(ranPasses(renderer))) << "maps loaded from the cache";
+        EXPECT_TRUE(explains(renderer, "maps loaded from the cache"));
+        EXPECT_EQ(renderer.iblMaps().source(), ibl::MapsSource::Cache);
+        EXPECT_TRUE(cached == computed) << "the cached maps render exactly like the computed ones";
+        file = renderer.iblMaps().cacheFile();
+    }
+    {
+        // Flip one byte in the middle: the checksum fails, the maps are recomputed and rewritten.
+        std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+        f.seekp(static_cast<std::streamoff>(std::filesystem::file_size(file) / 2));
+        f.put('\x5a');
+    }
+    {
+        Renderer renderer(context());
+        const std::vector<uint8_t> recomputed = renderer.capture(s).rgba8;
+        EXPECT_TRUE(has(ranPasses(renderer), "ibl_prefilter"));
+        EXPECT_TRUE(explains(renderer, "ibl cache: "));
+        EXPECT_TRUE(recomputed == computed);
+        std::string reason;
+        EXPECT_TRUE(ibl::readCacheFile(file, {scene::contentHash(mSky), s.iblQuality.canonical()}, &reason).has_value())
+            << reason;
+    }
+    std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace candela::test
