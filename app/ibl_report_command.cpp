@@ -155,6 +155,27 @@ void writePreview(const std::filesystem::path& path, const CapturedFrame& frame)
     io::writePng(path, frame.width, frame.height, rgba);
 }
 
+// Where an image differs from the reference: |x − ref| / (ref + 1% of the mean) per pixel, as grey
+// levels with 1.0 (100%) white; red where the image is brighter, blue where it is darker than 10%.
+void writeErrorMap(const std::filesystem::path& path, const CapturedFrame& frame, const std::vector<float>& reference) {
+    auto luminance = [](const float* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; };
+    double sum = 0, n = 0;
+    for (size_t i = 0; i + 3 < reference.size(); i += 4)
+        if (reference[i + 3] >= 1.0f) sum += luminance(&reference[i]), ++n;
+    const double floor = n > 0 ? 0.01 * sum / n : 1e-6;
+    std::vector<uint8_t> rgba(frame.rgba32f.size(), 0);
+    for (size_t i = 0; i + 3 < reference.size(); i += 4) {
+        rgba[i + 3] = 255;
+        if (reference[i + 3] < 1.0f) continue;
+        const double r = luminance(&reference[i]), g = luminance(&frame.rgba32f[i]);
+        const double e = std::min(std::abs(g - r) / (r + floor), 1.0);
+        const auto level = static_cast<uint8_t>(e * 255.0);
+        rgba[i] = rgba[i + 1] = rgba[i + 2] = level;
+        if (e > 0.1) rgba[g > r ? i + 0 : i + 2] = 255;
+    }
+    io::writePng(path, frame.width, frame.height, rgba);
+}
+
 const ibl::CachedImage* findImage(const std::vector<ibl::CachedImage>& images, const std::string& prefix) {
     for (const ibl::CachedImage& image : images)
         if (image.name.rfind(prefix, 0) == 0) return &image;
@@ -252,6 +273,7 @@ int runIblReport(const IblReportOptions& options) {
         if (setting.quality == ibl::IblQuality{}) {
             io::writeExr(out / "default.exr", image.width, image.height, image.rgba32f);
             writePreview(out / "default.png", image);
+            writeErrorMap(out / "default_error.png", image, truth.rgba32f);
         }
         std::printf("%-24s %-10s precompute %8.1f ms = %5.2fx calibration (setup %6.1f ms); specular RMSE %.2e mean %.2e; "
                     "irradiance RMSE %.2e; LUT max %.1e; image RMSE %.2e mean %.2e\n",

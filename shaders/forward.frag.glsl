@@ -46,7 +46,8 @@ layout(std140, set = 2, binding = 3) uniform IrradianceSh {
 // Ground truth only (kReferenceSamples > 0): the environment as an equirectangular map (nearest
 // texels; alpha 0 marks the brightest texels, which are summed explicitly instead of sampled) and
 // the list of those texels: referenceTexels[0].x = count, then per texel (direction in the
-// environment's frame, solid angle) and (radiance, 0).
+// environment's frame, solid angle) and (radiance, 0); referenceTexels[0].y = the mean texel
+// solid angle.
 layout(set = 2, binding = 4) uniform sampler2D referenceEquirect;
 layout(std430, set = 2, binding = 5) readonly buffer ReferenceTexels {
     vec4 referenceTexels[];
@@ -121,24 +122,27 @@ vec3 imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float metal
 }
 
 // Radiance of the environment in world direction `d` for the ground truth: its equirectangular
-// texel (piecewise constant), 0 for the texels summed explicitly.
-vec3 referenceRadiance(vec3 d) {
+// texel (piecewise constant); with `skipSummed`, 0 for the texels summed explicitly.
+vec3 referenceRadiance(vec3 d, bool skipSummed) {
     vec2 uv = directionToEquirectUv(iblLookupDirection(d, push.ibl.rotation), 0.0f);
     ivec2 size = textureSize(referenceEquirect, 0);
     vec4 texel = texelFetch(referenceEquirect, clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1), 0);
-    return texel.rgb * texel.a;
+    return skipSummed ? texel.rgb * texel.a : texel.rgb;
 }
 
 // Ground truth: the reflectance equation of the forward pass's BRDF (single scattering: Cook-Torrance
 // GGX with height-correlated Smith visibility and Schlick Fresnel, Lambert weighted by
-// (1 − F)(1 − metallic)) against the environment. The brightest texels (a sun, lamps) are summed
-// one by one — no sampler finds a 0.5° sun — and the rest is integrated by Monte Carlo: GGX
-// half-vector samples for the specular lobe, cosine samples for the diffuse one, over a per-pixel
-// rotated Hammersley set.
+// (1 − F)(1 − metallic)) against the environment's texels. The brightest texels (a sun, lamps) are
+// summed one by one — no sampler finds a 0.5° sun — and the rest is integrated by Monte Carlo:
+// cosine samples for the diffuse lobe, GGX half-vector samples for the specular one, over a
+// per-pixel rotated Hammersley set. A texel summed as a point is only right for lobes much wider
+// than a texel, so a specular lobe narrower than 64 texels samples the whole map instead (such a
+// lobe finds the bright texels by itself).
 vec3 referenceImageBasedLight(vec3 n, vec3 v, vec3 baseColor, float metallic, float roughness) {
     float alpha = roughness * roughness;
     float NoV = clamp(dot(n, v), CANDELA_MIN_NOV, 1.0f);
     vec3 f0 = mix(vec3(0.04f), baseColor, metallic);
+    bool sumSpecular = CANDELA_PI * alpha * alpha > 64.0f * referenceTexels[0].y;
     mat3 frame = basisAround(n);
     uvec2 p = uvec2(gl_FragCoord.xy);
     uint hash = (p.x * 1973u + p.y * 9277u + 26699u) * 0x9E3779B9u;
@@ -153,14 +157,12 @@ vec3 referenceImageBasedLight(vec3 n, vec3 v, vec3 baseColor, float metallic, fl
         float NoL = dot(n, l);
         if (NoL > 0.0f && VoH > 0.0f) {
             float NoH = max(dot(n, h), 1e-6f);
-            vec3 radiance = referenceRadiance(l);
-            specular += radiance * fresnelSchlick(VoH, f0) *
+            specular += referenceRadiance(l, sumSpecular) * fresnelSchlick(VoH, f0) *
                         (visibilitySmithGgxCorrelated(NoV, NoL, alpha) * 4.0f * NoL * VoH / NoH);
         }
         vec3 ld = frame * sampleCosine(xi);
         vec3 hd = normalize(v + ld);
-        vec3 radianceD = referenceRadiance(ld);
-        diffuse += radianceD * (vec3(1.0f) - fresnelSchlick(dot(v, hd), f0));
+        diffuse += referenceRadiance(ld, true) * (vec3(1.0f) - fresnelSchlick(dot(v, hd), f0));
     }
     diffuse *= baseColor * (1.0f - metallic);
     vec3 sampled = (specular + diffuse) / float(kReferenceSamples);
@@ -171,8 +173,17 @@ vec3 referenceImageBasedLight(vec3 n, vec3 v, vec3 baseColor, float metallic, fl
     for (uint i = 0u; i < count; ++i) {
         vec4 directionSolidAngle = referenceTexels[1u + 2u * i];
         vec3 l = iblLookupDirection(directionSolidAngle.xyz, inverseRotation);
-        summed += brdfTimesCosine(n, v, l, baseColor, metallic, roughness, CANDELA_SHADING_PBR) *
-                  referenceTexels[2u + 2u * i].rgb * directionSolidAngle.w;
+        float NoL = dot(n, l);
+        if (NoL <= 0.0f) continue;
+        vec3 h = normalize(v + l);
+        vec3 F = fresnelSchlick(dot(v, h), f0);
+        vec3 f = (vec3(1.0f) - F) * (1.0f - metallic) * baseColor * (1.0f / CANDELA_PI);
+        if (sumSpecular) {
+            vec3 nxh = cross(n, h);
+            float NoH = clamp(dot(n, h), 0.0f, 1.0f);
+            f += F * (distributionGgx(NoH, dot(nxh, nxh), alpha) * visibilitySmithGgxCorrelated(NoV, NoL, alpha));
+        }
+        summed += f * NoL * referenceTexels[2u + 2u * i].rgb * directionSolidAngle.w;
     }
     return (sampled + summed) * push.ibl.params.x;  // no occlusion texture in the report's scene
 }

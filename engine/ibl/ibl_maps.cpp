@@ -113,7 +113,8 @@ void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
         for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = env.rgb[i * 3 + c];
         rgba[i * 4 + 3] = 1.0f;
     }
-    std::vector<glm::vec4> texels{glm::vec4(float(bright.size()), 0, 0, 0)};
+    // Header: count, and the mean texel solid angle (the shader's rule for narrow lobes).
+    std::vector<glm::vec4> texels{glm::vec4(float(bright.size()), float(totalSolidAngle / env.texelCount()), 0, 0)};
     for (uint32_t i : bright) {
         rgba[size_t(i) * 4 + 3] = 0.0f;
         const uint32_t x = i % env.width, y = i / env.width;
