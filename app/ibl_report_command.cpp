@@ -241,8 +241,8 @@ int runIblReport(const IblReportOptions& options) {
     io::writeExr(out / "ground_truth.exr", truth.width, truth.height, truth.rgba32f);
     writePreview(out / "ground_truth.png", truth);
     std::printf("ground truth: %u samples per lobe per pixel and %u texels summed, %.0f ms; a quarter of the samples "
-                "differs by %.2e (relative RMSE)\n", options.referenceSamples, renderer.iblMaps().referenceTexelCount(),
-                truthMs, convergence.rmse);
+                "differs by %.2e relative RMSE, %.2e mean relative error\n", options.referenceSamples,
+                renderer.iblMaps().referenceTexelCount(), truthMs, convergence.rmse, convergence.meanRelative);
 
     std::vector<Result> results;
     for (const Setting& setting : sweep(options.quick)) {

@@ -45,9 +45,8 @@ layout(std140, set = 2, binding = 3) uniform IrradianceSh {
 };
 // Ground truth only (kReferenceSamples > 0): the environment as an equirectangular map (nearest
 // texels; alpha 0 marks the brightest texels, which are summed explicitly instead of sampled) and
-// the list of those texels: referenceTexels[0].x = count, then per texel (direction in the
-// environment's frame, solid angle) and (radiance, 0); referenceTexels[0].y = the mean texel
-// solid angle.
+// the list of those texels: referenceTexels[0] = (count, width, height, 0), then per texel
+// (x, y, 0, 0) and (radiance, 0).
 layout(set = 2, binding = 4) uniform sampler2D referenceEquirect;
 layout(std430, set = 2, binding = 5) readonly buffer ReferenceTexels {
     vec4 referenceTexels[];
@@ -133,16 +132,23 @@ vec3 referenceRadiance(vec3 d, bool skipSummed) {
 // Ground truth: the reflectance equation of the forward pass's BRDF (single scattering: Cook-Torrance
 // GGX with height-correlated Smith visibility and Schlick Fresnel, Lambert weighted by
 // (1 − F)(1 − metallic)) against the environment's texels. The brightest texels (a sun, lamps) are
-// summed one by one — no sampler finds a 0.5° sun — and the rest is integrated by Monte Carlo:
-// cosine samples for the diffuse lobe, GGX half-vector samples for the specular one, over a
-// per-pixel rotated Hammersley set. A texel summed as a point is only right for lobes much wider
-// than a texel, so a specular lobe narrower than 64 texels samples the whole map instead (such a
-// lobe finds the bright texels by itself).
+// summed — no sampler finds a 0.5° sun — each as k × k sub-texels with their exact solid angles, k
+// chosen so a sub-texel is at most half the specular lobe's width; the rest is integrated by Monte
+// Carlo: cosine samples for the diffuse lobe, GGX half-vector samples for the specular one, over a
+// per-pixel rotated Hammersley set. When the lobe would need more than kMaxSubdivision (many bright
+// texels: large lamps) the specular lobe samples the whole map instead — a lobe that narrow finds
+// large bright regions by itself.
 vec3 referenceImageBasedLight(vec3 n, vec3 v, vec3 baseColor, float metallic, float roughness) {
     float alpha = roughness * roughness;
     float NoV = clamp(dot(n, v), CANDELA_MIN_NOV, 1.0f);
     vec3 f0 = mix(vec3(0.04f), baseColor, metallic);
-    bool sumSpecular = CANDELA_PI * alpha * alpha > 64.0f * referenceTexels[0].y;
+    uint count = uint(referenceTexels[0].x);
+    vec2 size = referenceTexels[0].yz;
+    uint maxSubdivision = count <= 64u ? 16u : (count <= 512u ? 4u : 1u);
+    float texelAngle = CANDELA_PI / size.y;
+    uint subdivision = uint(clamp(ceil(2.0f * texelAngle / max(alpha, 1e-4f)), 1.0f, 1024.0f));
+    bool sumSpecular = subdivision <= maxSubdivision;
+    subdivision = min(subdivision, maxSubdivision);
     mat3 frame = basisAround(n);
     uvec2 p = uvec2(gl_FragCoord.xy);
     uint hash = (p.x * 1973u + p.y * 9277u + 26699u) * 0x9E3779B9u;
@@ -169,21 +175,29 @@ vec3 referenceImageBasedLight(vec3 n, vec3 v, vec3 baseColor, float metallic, fl
     // Environment frame → world: the inverse rotation.
     vec4 inverseRotation = vec4(push.ibl.rotation.x, -push.ibl.rotation.y, 0.0f, 0.0f);
     vec3 summed = vec3(0.0f);
-    uint count = uint(referenceTexels[0].x);
+    float k = float(subdivision);
     for (uint i = 0u; i < count; ++i) {
-        vec4 directionSolidAngle = referenceTexels[1u + 2u * i];
-        vec3 l = iblLookupDirection(directionSolidAngle.xyz, inverseRotation);
-        float NoL = dot(n, l);
-        if (NoL <= 0.0f) continue;
-        vec3 h = normalize(v + l);
-        vec3 F = fresnelSchlick(dot(v, h), f0);
-        vec3 f = (vec3(1.0f) - F) * (1.0f - metallic) * baseColor * (1.0f / CANDELA_PI);
-        if (sumSpecular) {
-            vec3 nxh = cross(n, h);
-            float NoH = clamp(dot(n, h), 0.0f, 1.0f);
-            f += F * (distributionGgx(NoH, dot(nxh, nxh), alpha) * visibilitySmithGgxCorrelated(NoV, NoL, alpha));
+        vec2 texel = referenceTexels[1u + 2u * i].xy;
+        vec3 radiance = referenceTexels[2u + 2u * i].rgb;
+        for (uint sy = 0u; sy < subdivision; ++sy) {
+            float v0 = (texel.y + float(sy) / k) / size.y, v1 = (texel.y + float(sy + 1u) / k) / size.y;
+            float solidAngle = (CANDELA_TWO_PI / (size.x * k)) * (cos(CANDELA_PI * v0) - cos(CANDELA_PI * v1));
+            for (uint sx = 0u; sx < subdivision; ++sx) {
+                vec2 uv = vec2((texel.x + (float(sx) + 0.5f) / k) / size.x, 0.5f * (v0 + v1));
+                vec3 l = iblLookupDirection(equirectUvToDirection(uv, 0.0f), inverseRotation);
+                float NoL = dot(n, l);
+                if (NoL <= 0.0f) continue;
+                vec3 h = normalize(v + l);
+                vec3 F = fresnelSchlick(dot(v, h), f0);
+                vec3 f = (vec3(1.0f) - F) * (1.0f - metallic) * baseColor * (1.0f / CANDELA_PI);
+                if (sumSpecular) {
+                    vec3 nxh = cross(n, h);
+                    float NoH = clamp(dot(n, h), 0.0f, 1.0f);
+                    f += F * (distributionGgx(NoH, dot(nxh, nxh), alpha) * visibilitySmithGgxCorrelated(NoV, NoL, alpha));
+                }
+                summed += f * NoL * radiance * solidAngle;
+            }
         }
-        summed += f * NoL * referenceTexels[2u + 2u * i].rgb * directionSolidAngle.w;
     }
     return (sampled + summed) * push.ibl.params.x;  // no occlusion texture in the report's scene
 }

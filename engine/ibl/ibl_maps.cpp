@@ -12,12 +12,12 @@
 #include "vk/sampler.h"
 #include "vk/upload.h"
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <span>
-
-#include "shared/environment.h"
 
 namespace candela::ibl {
 
@@ -113,14 +113,10 @@ void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
         for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = env.rgb[i * 3 + c];
         rgba[i * 4 + 3] = 1.0f;
     }
-    // Header: count, and the mean texel solid angle (the shader's rule for narrow lobes).
-    std::vector<glm::vec4> texels{glm::vec4(float(bright.size()), float(totalSolidAngle / env.texelCount()), 0, 0)};
+    std::vector<glm::vec4> texels{glm::vec4(float(bright.size()), float(env.width), float(env.height), 0)};
     for (uint32_t i : bright) {
         rgba[size_t(i) * 4 + 3] = 0.0f;
-        const uint32_t x = i % env.width, y = i / env.width;
-        const glm::vec3 direction = shading::equirectUvToDirection(
-            glm::vec2((x + 0.5f) / float(env.width), (y + 0.5f) / float(env.height)), 0.0f);
-        texels.emplace_back(direction, float(rowSolidAngle[y]));
+        texels.emplace_back(float(i % env.width), float(i / env.width), 0.0f, 0.0f);
         texels.emplace_back(env.rgb[size_t(i) * 3], env.rgb[size_t(i) * 3 + 1], env.rgb[size_t(i) * 3 + 2], 0.0f);
     }
     mReferenceEquirect = vk::Image(mContext, {.width = env.width, .height = env.height, .format = kFloatCubeFormat,
