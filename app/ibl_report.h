@@ -1,0 +1,83 @@
+#pragma once
+// `candela ibl-report`: the data of one report and the files it writes (CSV, markdown, log-log
+// plots, previews). The measuring is in ibl_report_command.cpp.
+
+#include "ibl/ibl_errors.h"
+#include "ibl/ibl_settings.h"
+#include "renderer.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace candela::app::report {
+
+struct Setting {
+    std::string group;  // series of the plots
+    std::string label;
+    ibl::IblQuality quality;
+};
+
+struct ImageError {
+    double rmse = -1;          // relative luminance RMSE over covered pixels (dominated by highlights)
+    double meanRelative = -1;  // mean |x − ref| / (ref + 1% of the mean) (every pixel alike)
+    double maxRelative = -1;   // max |x − ref| / (ref + 1% of the mean)
+};
+
+struct Result {
+    Setting setting;
+    double wallMs = 0;        // median precompute submit+wait
+    double gpuMs = 0;         // median sum of the precompute passes' GPU timestamps
+    double setupMs = 0;       // median CPU time before submit (upload, hashing, sample tables)
+    double ratio = 0;         // median of precompute / an interleaved calibration run
+    std::vector<ibl::LevelErrors> specular;
+    ibl::ErrorStats irradiance;
+    ibl::LutErrors lut;
+    ImageError image;
+    double specularRmse() const {  // mean relative RMSE over the roughness > 0 levels
+        double sum = 0;
+        int n = 0;
+        for (const ibl::LevelErrors& level : specular)
+            if (level.roughness > 0) sum += level.stats.rmse, ++n;
+        return n ? sum / n : -1;
+    }
+    double specularMeanRelative() const {  // mean over the roughness > 0 levels
+        double sum = 0;
+        int n = 0;
+        for (const ibl::LevelErrors& level : specular)
+            if (level.roughness > 0) sum += level.stats.meanRelative, ++n;
+        return n ? sum / n : -1;
+    }
+    double specularMax() const {
+        double m = 0;
+        for (const ibl::LevelErrors& level : specular)
+            if (level.roughness > 0) m = std::max(m, level.stats.maxRelative);
+        return m;
+    }
+};
+
+// What the report describes besides the rows.
+struct Context {
+    std::string environment;  // source and size
+    std::string device;
+    double calibrationMs = 0;  // 1280×720 calibration pass, median
+    uint32_t repeats = 0;
+    uint32_t width = 0, height = 0;  // end-to-end images
+    uint32_t referenceSamples = 0;
+    ImageError convergence;  // the ground truth against itself at a quarter of the samples
+};
+
+// Relative luminance errors of `image` against `reference` over pixels both cover fully.
+ImageError imageError(const std::vector<float>& image, const std::vector<float>& reference);
+// A quick look at a linear frame: exposure 1, Reinhard, sRGB-encoded 8-bit PNG.
+void writePreview(const std::filesystem::path& path, const CapturedFrame& frame);
+// Per-pixel relative error against `reference` as a PNG (see the definition).
+void writeErrorMap(const std::filesystem::path& path, const CapturedFrame& frame, const std::vector<float>& reference);
+
+// report.csv, report.md and specular/irradiance/lut/image.png in `out`. Throws UserError naming a
+// file that cannot be written.
+void writeCsv(const std::filesystem::path& out, const std::vector<Result>& results);
+void writeMarkdown(const std::filesystem::path& out, const Context& context, const std::vector<Result>& results);
+void writePlots(const std::filesystem::path& out, const std::vector<Result>& results);
+
+}  // namespace candela::app::report

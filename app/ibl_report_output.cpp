@@ -1,0 +1,187 @@
+// `candela ibl-report`'s files: CSV, markdown, log-log plots with the Pareto front, previews.
+
+#include "ibl_report.h"
+
+#include "core/check.h"
+#include "io/image_file.h"
+#include "io/plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace candela::app::report {
+namespace {
+
+std::string fixed(double v, int digits) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", digits, v);
+    return buffer;
+}
+std::string sci(double v) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.3g", v);
+    return buffer;
+}
+
+
+}  // namespace
+
+ImageError imageError(const std::vector<float>& image, const std::vector<float>& reference) {
+    auto luminance = [](const float* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; };
+    double sumRef = 0, sumSq = 0, n = 0;
+    for (size_t i = 0; i + 3 < reference.size(); i += 4) {
+        if (reference[i + 3] < 1.0f || image[i + 3] < 1.0f) continue;
+        const double r = luminance(&reference[i]), g = luminance(&image[i]);
+        sumRef += r;
+        sumSq += (g - r) * (g - r);
+        ++n;
+    }
+    ImageError e;
+    if (n == 0 || sumRef <= 0) return e;
+    const double mean = sumRef / n;
+    e.rmse = std::sqrt(sumSq / n) / mean;
+    e.maxRelative = 0;
+    double sumRelative = 0;
+    for (size_t i = 0; i + 3 < reference.size(); i += 4) {
+        if (reference[i + 3] < 1.0f || image[i + 3] < 1.0f) continue;
+        const double r = luminance(&reference[i]), g = luminance(&image[i]);
+        const double relative = std::abs(g - r) / (r + 0.01 * mean);
+        e.maxRelative = std::max(e.maxRelative, relative);
+        sumRelative += relative;
+    }
+    e.meanRelative = sumRelative / n;
+    return e;
+}
+
+void writePreview(const std::filesystem::path& path, const CapturedFrame& frame) {
+    std::vector<uint8_t> rgba(frame.rgba32f.size());
+    for (size_t i = 0; i < rgba.size(); ++i) {
+        const float x = i % 4 == 3 ? frame.rgba32f[i] : frame.rgba32f[i] / (1.0f + frame.rgba32f[i]);
+        const float encoded = i % 4 == 3 ? x : (x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f);
+        rgba[i] = static_cast<uint8_t>(std::clamp(encoded, 0.0f, 1.0f) * 255.0f + 0.5f);
+    }
+    io::writePng(path, frame.width, frame.height, rgba);
+}
+
+// Where an image differs from the reference: |x − ref| / (ref + 1% of the mean) per pixel, as grey
+// levels with 1.0 (100%) white; red where the image is brighter, blue where it is darker than 10%.
+void writeErrorMap(const std::filesystem::path& path, const CapturedFrame& frame, const std::vector<float>& reference) {
+    auto luminance = [](const float* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; };
+    double sum = 0, n = 0;
+    for (size_t i = 0; i + 3 < reference.size(); i += 4)
+        if (reference[i + 3] >= 1.0f) sum += luminance(&reference[i]), ++n;
+    const double floor = n > 0 ? 0.01 * sum / n : 1e-6;
+    std::vector<uint8_t> rgba(frame.rgba32f.size(), 0);
+    for (size_t i = 0; i + 3 < reference.size(); i += 4) {
+        rgba[i + 3] = 255;
+        if (reference[i + 3] < 1.0f) continue;
+        const double r = luminance(&reference[i]), g = luminance(&frame.rgba32f[i]);
+        const double e = std::min(std::abs(g - r) / (r + floor), 1.0);
+        const auto level = static_cast<uint8_t>(e * 255.0);
+        rgba[i] = rgba[i + 1] = rgba[i + 2] = level;
+        if (e > 0.1) rgba[g > r ? i + 0 : i + 2] = 255;
+    }
+    io::writePng(path, frame.width, frame.height, rgba);
+}
+
+void writeCsv(const std::filesystem::path& out, const std::vector<Result>& results) {
+    // One row per setting, errors per roughness level at the end.
+    std::ofstream csv(out / "report.csv");
+    csv << "group,setting,cube,levels,prefilter_samples,filtered,irradiance,sh_size,irradiance_samples,lut_size,"
+           "lut_samples,precompute_ms,precompute_gpu_ms,setup_ms,ratio_to_calibration,specular_rmse,specular_mean_relative,"
+           "specular_max,irradiance_rmse,irradiance_mean_relative,irradiance_max,lut_max_a,lut_max_b,lut_rms_a,lut_rms_b,image_rmse,image_mean_relative,image_max";
+    for (const ibl::LevelErrors& level : results.front().specular)
+        csv << ",rmse_r" << fixed(level.roughness, 2) << ",mean_r" << fixed(level.roughness, 2) << ",max_r"
+            << fixed(level.roughness, 2);
+    csv << "\n";
+    for (const Result& r : results) {
+        const ibl::IblQuality& q = r.setting.quality;
+        csv << '"' << r.setting.group << "\"," << r.setting.label << ',' << q.cubeSize << ',' << q.levels() << ','
+            << q.prefilterSamples << ',' << (q.filteredSampling ? 1 : 0) << ',' << ibl::irradianceModeName(q.irradiance)
+            << ',' << q.shSourceSize << ',' << q.irradianceSamples << ',' << q.lutSize << ',' << q.lutSamples << ','
+            << fixed(r.wallMs, 2) << ',' << fixed(r.gpuMs, 2) << ',' << fixed(r.setupMs, 2) << ','
+            << fixed(r.ratio, 3) << ',' << sci(r.specularRmse()) << ',' << sci(r.specularMeanRelative()) << ','
+            << sci(r.specularMax()) << ',' << sci(r.irradiance.rmse) << ',' << sci(r.irradiance.meanRelative) << ','
+            << sci(r.irradiance.maxRelative) << ',' << sci(r.lut.maxA) << ','
+            << sci(r.lut.maxB) << ',' << sci(r.lut.rmsA) << ',' << sci(r.lut.rmsB) << ',' << sci(r.image.rmse) << ','
+            << sci(r.image.meanRelative) << ',' << sci(r.image.maxRelative);
+        for (const ibl::LevelErrors& level : r.specular)
+            csv << ',' << sci(level.stats.rmse) << ',' << sci(level.stats.meanRelative) << ',' << sci(level.stats.maxRelative);
+        csv << "\n";
+    }
+    if (!csv) throw UserError((out / "report.csv").string() + ": cannot write");
+
+}
+
+void writeMarkdown(const std::filesystem::path& out, const Context& c, const std::vector<Result>& results) {
+    std::ostringstream md;
+    md << "# IBL quality report\n\nEnvironment: " << c.environment << ". Device: " << c.device << ". Calibration pass (1280x720): "
+       << fixed(c.calibrationMs, 1) << " ms. Precompute times are the median of " << c.repeats
+       << " runs of submit+wait, each next to a calibration run (× calibration: median of the ratios). Errors "
+          "are relative luminance errors against the double-precision reference (ibl/ibl_errors.h): RMSE "
+          "(dominated by the brightest values), mean relative and max relative error (each value against its "
+          "reference plus 1% of the mean). Specular: averaged over the roughness > 0 levels, 128 texels each "
+          "(max: the worst level); irradiance: 256 directions; LUT: max absolute error of A and B; image: the "
+          "default scene (multiscatter off, no skybox) at "
+       << c.width << "x" << c.height << " against the ground truth (" << c.referenceSamples
+       << " samples per lobe per pixel, the brightest texels summed; a quarter of the samples differs by "
+       << sci(c.convergence.rmse) << " relative RMSE, " << sci(c.convergence.meanRelative)
+       << " mean relative error).\n\n";
+    md << "| group | setting | precompute ms | × calibration | specular RMSE | specular mean rel. | specular max | "
+          "irradiance RMSE | irradiance mean rel. | LUT max | image RMSE | image mean rel. |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    const ibl::IblQuality defaults;
+    for (const Result& r : results)
+        md << "| " << r.setting.group << " | " << r.setting.label << (r.setting.quality == defaults ? " (default)" : "")
+           << " | " << fixed(r.wallMs, 1) << " | " << fixed(r.ratio, 2) << " | " << sci(r.specularRmse()) << " | "
+           << sci(r.specularMeanRelative()) << " | " << sci(r.specularMax()) << " | " << sci(r.irradiance.rmse) << " | "
+           << sci(r.irradiance.meanRelative) << " | "
+           << sci(std::max(r.lut.maxA, r.lut.maxB)) << " | " << sci(r.image.rmse) << " | " << sci(r.image.meanRelative) << " |\n";
+    md << "\nPlots: specular.png, irradiance.png, lut.png, image.png (error against precompute time, log-log, "
+          "Pareto front marked, the default ringed).\n";
+    std::ofstream file(out / "report.md");
+    file << md.str();
+    if (!file) throw UserError((out / "report.md").string() + ": cannot write");
+
+}
+
+void writePlots(const std::filesystem::path& out, const std::vector<Result>& results) {
+    const ibl::IblQuality defaults;
+    // One plot per error measure, every setting, series by group.
+    auto plot = [&](const char* file, const char* title, const char* yLabel, auto&& error,
+                    const std::vector<std::string>& groups) {
+        io::PlotSpec spec{.title = title,
+                          .xLabel = "precompute time / calibration pass (median of interleaved runs)",
+                          .yLabel = yLabel};
+        spec.series = groups;
+        spec.series.push_back("other groups");
+        for (const Result& r : results) {
+            const auto g = std::find(groups.begin(), groups.end(), r.setting.group);
+            const bool isDefault = r.setting.quality == defaults;
+            if (g == groups.end() && !isDefault) continue;
+            if (isDefault) spec.highlight = spec.points.size();
+            spec.points.push_back({r.ratio, error(r), isDefault ? "default" : r.setting.label,
+                                   uint32_t(g - groups.begin())});
+        }
+        io::writeLogLogPlot(out / file, spec);
+    };
+    const std::vector<std::string> specularGroups{"prefilter, filtered IS", "prefilter, plain IS", "cube size"};
+    plot("specular.png", "Specular prefilter: error vs time", "mean relative error (roughness > 0 levels)",
+         [](const Result& r) { return r.specularMeanRelative(); }, specularGroups);
+    plot("irradiance.png", "Irradiance: error vs time", "mean relative error",
+         [](const Result& r) { return r.irradiance.meanRelative; },
+         {"irradiance SH9", "irradiance cube"});
+    plot("lut.png", "BRDF LUT: error vs time", "max absolute error of A, B",
+         [](const Result& r) { return std::max(r.lut.maxA, r.lut.maxB); }, {"BRDF LUT"});
+    std::vector<std::string> allGroups;
+    for (const Result& r : results)
+        if (std::find(allGroups.begin(), allGroups.end(), r.setting.group) == allGroups.end())
+            allGroups.push_back(r.setting.group);
+    plot("image.png", "Default scene: image error vs precompute time", "mean relative error vs ground truth",
+         [](const Result& r) { return r.image.meanRelative; }, allGroups);
+}
+
+}  // namespace candela::app::report
