@@ -53,7 +53,8 @@ IblMaps::IblMaps(vk::Context& context)
     : mContext(context),
       mSampler(vk::createSampler(context, {})),
       mNearest(vk::createSampler(context, {.filter = VK_FILTER_NEAREST, .minFilter = VK_FILTER_NEAREST,
-                                           .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {
+                                           .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})),
+      mNearestMip(vk::createSampler(context, {.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {
     createPlaceholders();
 }
 
@@ -299,7 +300,7 @@ IblMaps::GraphMaps IblMaps::addToGraph(RenderGraph& graph, ImportBindings& impor
                                   .specularMip0View = mSpecular.mipViews[0].get()});
     cube = resampled.cube;
     maps.specular = mPrefilterPass->add(graph, {.source = cube,
-                                                .sourceSampler = mSampler.get(),
+                                                .sourceSampler = mNearestMip.get(),
                                                 .sourceFaceSize = size,
                                                 .specular = resampled.specular,
                                                 .mipViews = rawViews(mSpecular.mipViews)});

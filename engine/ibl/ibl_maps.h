@@ -133,6 +133,7 @@ private:
     vk::Context& mContext;
     vk::Sampler mSampler;
     vk::Sampler mNearest;
+    vk::Sampler mNearestMip;  // bilinear within a mip, the nearest mip: the prefilter's source
     // Placeholders.
     vk::Image mPlaceholderCube;
     vk::Image mPlaceholderLut;

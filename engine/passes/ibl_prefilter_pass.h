@@ -25,7 +25,7 @@ public:
 
     struct Inputs {
         graph::TextureId source;    // float environment cube (sampled with all its mips)
-        VkSampler sourceSampler;    // trilinear, clamp
+        VkSampler sourceSampler;    // bilinear within the nearest mip (see IblMaps), clamp
         uint32_t sourceFaceSize;
         graph::TextureId specular;  // RGBA16F cube, one mip per level, mip 0 already written
         std::vector<VkImageView> mipViews;  // storage 2D-array view per specular mip (caller-owned)
