@@ -60,14 +60,8 @@ CachedImage IblMaps::readImage(const char* name, const vk::Image& image) {
     vk::imageBarrier(cmd, image.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                      VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    const VkMemoryBarrier2 hostRead{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-                                    .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
-                                    .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                    .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
-                                    .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT};
-    const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1,
-                                      .pMemoryBarriers = &hostRead};
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                      VK_ACCESS_2_HOST_READ_BIT);
     commands.submitAndWait();
     staging.invalidate();
     out.data.resize(bytes);
@@ -88,14 +82,8 @@ std::vector<CachedImage> IblMaps::readBack() {
         VkCommandBuffer cmd = commands.begin();
         const VkBufferCopy region{0, 0, mSh.size()};
         vkCmdCopyBuffer(cmd, mSh.handle(), staging.handle(), 1, &region);
-        const VkMemoryBarrier2 hostRead{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-                                        .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
-                                        .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                        .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
-                                        .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT};
-        const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1,
-                                          .pMemoryBarriers = &hostRead};
-        vkCmdPipelineBarrier2(cmd, &dependency);
+        vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
         commands.submitAndWait();
         staging.invalidate();
         CachedImage sh{.name = "irradiance_sh", .format = VK_FORMAT_R32G32B32A32_SFLOAT, .texelBytes = 16,

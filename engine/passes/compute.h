@@ -2,6 +2,7 @@
 // Small recording helpers shared by the compute passes.
 
 #include "graph/graph_executor.h"
+#include "vk/commands.h"
 #include "vk/pipeline.h"
 
 namespace candela::passes {
@@ -20,15 +21,8 @@ inline void dispatchCompute(const graph::PassContext& ctx, const vk::Pipeline& p
 // Makes compute-shader writes visible to compute-shader reads within one pass (between dispatches
 // that the graph sees as one pass, e.g. successive mips of one image).
 inline void computeWriteToReadBarrier(VkCommandBuffer cmd) {
-    const VkMemoryBarrier2 barrier{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-                                   .srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                   .srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                                   .dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                   .dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
-    const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
-                                      .memoryBarrierCount = 1,
-                                      .pMemoryBarriers = &barrier};
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }
 
 }  // namespace candela::passes

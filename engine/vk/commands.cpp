@@ -93,6 +93,18 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
                                 srcAccess, oldLayout, dstStages, dstAccess, newLayout)});
 }
 
+void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkAccessFlags2 srcAccess,
+                   VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess) {
+    const VkMemoryBarrier2 barrier{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                                   .srcStageMask = srcStages,
+                                   .srcAccessMask = srcAccess,
+                                   .dstStageMask = dstStages,
+                                   .dstAccessMask = dstAccess};
+    const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1,
+                                      .pMemoryBarriers = &barrier};
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
 void recordMipChain(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkExtent3D baseExtent,
                     uint32_t baseMip, uint32_t mipLevels, uint32_t layer, VkImageLayout finalLayout) {
     const auto corner = [&](uint32_t level) {

@@ -27,6 +27,11 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
                   VkAccessFlags2 srcAccess, VkImageLayout oldLayout, VkPipelineStageFlags2 dstStages,
                   VkAccessFlags2 dstAccess, VkImageLayout newLayout);
 
+// One global memory barrier (no image layout change): makes `srcAccess` in `srcStages` visible to
+// `dstAccess` in `dstStages`, e.g. transfer writes to host reads before a readback.
+void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkAccessFlags2 srcAccess,
+                   VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess);
+
 // Fills mips baseMip+1 .. mipLevels-1 of one layer by successive linear blits from baseMip, then
 // moves mips baseMip .. mipLevels-1 of that layer to `finalLayout` (visible to all later stages).
 // Precondition: those mips are in TRANSFER_DST_OPTIMAL with baseMip written by transfer; the image

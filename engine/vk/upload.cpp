@@ -70,14 +70,8 @@ void Uploader::submitAndWait() {
                      VK_ACCESS_2_MEMORY_READ_BIT, c.finalLayout);
     }
     if (!mBufferCopies.empty()) {
-        const VkMemoryBarrier2 barrier{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-                                       .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
-                                       .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                       .dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                                       .dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT};
-        const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1,
-                                          .pMemoryBarriers = &barrier};
-        vkCmdPipelineBarrier2(cmd, &dependency);
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
     }
     commands.submitAndWait();
     mStaging.clear();

@@ -6,12 +6,13 @@
 #include "core/check.h"
 #include "scene/environment.h"
 
+#include "temp_dir.h"
+
 #include <gtest/gtest.h>
 #include <tinyexr.h>
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -35,27 +36,7 @@ inline fs::path sharedEnvironments() {
     return {};
 }
 
-// A fresh folder under the system temp directory, removed with everything in it on destruction.
-class EnvTempDir {
-public:
-    EnvTempDir() {
-        static std::atomic<int> counter{0};
-        mPath = fs::temp_directory_path() / ("candela_env_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-        fs::remove_all(mPath);
-        fs::create_directories(mPath);
-    }
-    ~EnvTempDir() {
-        std::error_code ec;
-        fs::remove_all(mPath, ec);
-    }
-    EnvTempDir(const EnvTempDir&) = delete;
-    EnvTempDir& operator=(const EnvTempDir&) = delete;
-    const fs::path& path() const { return mPath; }
-    fs::path operator/(const std::string& name) const { return mPath / name; }
-
-private:
-    fs::path mPath;
-};
+using EnvTempDir = candela::test::TempDir;
 
 inline void writeBytes(const fs::path& path, const Bytes& bytes) {
     fs::create_directories(path.parent_path());

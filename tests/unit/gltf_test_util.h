@@ -6,12 +6,13 @@
 #include "core/check.h"
 #include "scene/gltf_loader.h"
 
+#include "temp_dir.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -41,28 +42,7 @@ inline fs::path sharedModels() {
     return {};
 }
 
-// A fresh folder under the system temp directory, removed with everything in it on destruction.
-class TempDir {
-public:
-    TempDir() {
-        static std::atomic<int> counter{0};
-        mPath = fs::temp_directory_path() /
-                ("candela_gltf_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-        fs::remove_all(mPath);
-        fs::create_directories(mPath);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(mPath, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const fs::path& path() const { return mPath; }
-    fs::path operator/(const std::string& name) const { return mPath / name; }
-
-private:
-    fs::path mPath;
-};
+using candela::test::TempDir;
 
 inline void writeFile(const fs::path& path, const void* data, size_t size) {
     fs::create_directories(path.parent_path());

@@ -8,10 +8,11 @@
 #include "core/check.h"
 #include "ibl/ibl_cache_file.h"
 
+#include "temp_dir.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -32,34 +33,15 @@ using candela::test::expectOneLineErrorNamingFile;
 constexpr uint64_t kHash = 0x0123456789abcdefull;
 const std::string kSettings = "cube=256 prefilter=64 irradiance=sh9 lut=32";
 
-// A fresh folder under the system temp directory, removed with everything in it on destruction.
-class TempDir {
-public:
-    TempDir() {
-        static std::atomic<int> counter{0};
-        mPath = fs::temp_directory_path() / ("candela_ibl_cache_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-        fs::remove_all(mPath);
-        fs::create_directories(mPath);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(mPath, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    fs::path operator/(const std::string& name) const { return mPath / name; }
-    const fs::path& path() const { return mPath; }
+using candela::test::TempDir;
 
-    std::vector<std::string> files() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(mPath)) names.push_back(entry.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-
-private:
-    fs::path mPath;
-};
+// The names of the files in `dir`, sorted.
+std::vector<std::string> fileNames(const TempDir& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir.path())) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
 
 void writeBytes(const fs::path& path, const Bytes& bytes) {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
@@ -443,7 +425,7 @@ TEST(IblCacheFileWrite, FailedRenameThrowsAndRemovesTheTemporary) {
     } catch (const UserError& e) {
         expectOneLineErrorNamingFile(path, e.what(), "cannot rename the temporary file");
     }
-    EXPECT_EQ(dir.files(), std::vector<std::string>{"a.cibl"});
+    EXPECT_EQ(fileNames(dir), std::vector<std::string>{"a.cibl"});
 }
 
 TEST(IblCacheFileWrite, InvalidImagesAreRejectedAndNothingIsWritten) {
@@ -467,7 +449,7 @@ TEST(IblCacheFileWrite, InvalidImagesAreRejectedAndNothingIsWritten) {
     images[2].name.clear();
     expectInvalid(images, "image name length 0 is not in 1..64");
     expectInvalid(std::vector<CachedImage>(17, tinyImages()[0]), "17 images, more than 16");
-    EXPECT_TRUE(dir.files().empty());
+    EXPECT_TRUE(fileNames(dir).empty());
 }
 
 }  // namespace

@@ -2,12 +2,12 @@
 
 #include "io/plot.h"
 
+#include "temp_dir.h"
+
 #include <gtest/gtest.h>
 #include <stb_image.h>
 
 #include <cmath>
-#include <filesystem>
-#include <unistd.h>
 
 namespace candela::io {
 namespace {
@@ -24,7 +24,8 @@ TEST(Plot, ParetoFrontKeepsThePointsNoOtherBeatsOnBothAxes) {
 }
 
 TEST(Plot, WritesAPngOfTheRequestedSizeWithSomethingDrawn) {
-    const auto path = std::filesystem::temp_directory_path() / ("candela_plot_" + std::to_string(::getpid()) + ".png");
+    const test::TempDir dir("candela_plot");
+    const auto path = dir / "plot.png";
     PlotSpec spec{.title = "error vs time", .xLabel = "ms", .yLabel = "error", .series = {"a", "b"}};
     spec.points = {{.x = 10, .y = 0.5, .label = "8"}, {.x = 100, .y = 0.05, .label = "64", .series = 1},
                    {.x = 1000, .y = 0.04, .label = "512", .series = 1}};
@@ -40,7 +41,6 @@ TEST(Plot, WritesAPngOfTheRequestedSizeWithSomethingDrawn) {
         red += pixels[i * 4] > 200 && pixels[i * 4 + 1] < 40 && pixels[i * 4 + 2] < 40;
     EXPECT_GT(red, 20u);
     stbi_image_free(pixels);
-    std::filesystem::remove(path);
 }
 
 }  // namespace
