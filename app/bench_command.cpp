@@ -6,6 +6,7 @@
 #include "commands.h"
 
 #include "core/log.h"
+#include "statistics.h"
 
 #include <nlohmann/json.hpp>
 
@@ -15,12 +16,6 @@
 
 namespace candela::app {
 namespace {
-
-double median(std::vector<double> values) {
-    if (values.empty()) return -1.0;
-    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-    return values[values.size() / 2];
-}
 
 double minimum(const std::vector<double>& values) {
     return values.empty() ? -1.0 : *std::min_element(values.begin(), values.end());

@@ -18,12 +18,6 @@ struct Setting {
     ibl::IblQuality quality;
 };
 
-struct ImageError {
-    double rmse = -1;          // relative luminance RMSE over covered pixels (dominated by highlights)
-    double meanRelative = -1;  // mean |x − ref| / (ref + 1% of the mean) (every pixel alike)
-    double maxRelative = -1;   // max |x − ref| / (ref + 1% of the mean)
-};
-
 struct Result {
     Setting setting;
     double wallMs = 0;        // median precompute submit+wait
@@ -33,7 +27,7 @@ struct Result {
     std::vector<ibl::LevelErrors> specular;
     ibl::ErrorStats irradiance;
     ibl::LutErrors lut;
-    ImageError image;
+    ibl::ErrorStats image;  // relative luminance errors of the default scene against the ground truth
     double specularRmse() const {  // mean relative RMSE over the roughness > 0 levels
         double sum = 0;
         int n = 0;
@@ -64,14 +58,16 @@ struct Context {
     uint32_t repeats = 0;
     uint32_t width = 0, height = 0;  // end-to-end images
     uint32_t referenceSamples = 0;
-    ImageError convergence;  // the ground truth against itself at a quarter of the samples
+    ibl::ErrorStats convergence;  // the ground truth against itself at a quarter of the samples
 };
 
-// Relative luminance errors of `image` against `reference` over pixels both cover fully.
-ImageError imageError(const std::vector<float>& image, const std::vector<float>& reference);
+// Relative luminance errors (ibl::errorStats) of `image` against `reference` (RGBA floats) over the
+// pixels both cover fully.
+ibl::ErrorStats imageError(const std::vector<float>& image, const std::vector<float>& reference);
 // A quick look at a linear frame: exposure 1, Reinhard, sRGB-encoded 8-bit PNG.
 void writePreview(const std::filesystem::path& path, const CapturedFrame& frame);
-// Per-pixel relative error against `reference` as a PNG (see the definition).
+// Per-pixel relative error against `reference` as a PNG: |x − ref| / (ref + 1% of the mean) as grey
+// levels (1.0 white), red where the image is brighter and blue where it is darker by more than 10%.
 void writeErrorMap(const std::filesystem::path& path, const CapturedFrame& frame, const std::vector<float>& reference);
 
 // report.csv, report.md and specular/irradiance/lut/image.png in `out`. Throws UserError naming a

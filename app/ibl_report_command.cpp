@@ -11,6 +11,7 @@
 #include "core/check.h"
 #include "core/log.h"
 #include "ibl_report.h"
+#include "statistics.h"
 #include "io/image_file.h"
 #include "scene/builtin_scenes.h"
 #include "scene/procedural_sky.h"
@@ -26,14 +27,8 @@
 namespace candela::app {
 namespace {
 
-using report::ImageError;
 using report::Result;
 using report::Setting;
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? -1 : v[v.size() / 2];
-}
 
 std::vector<Setting> sweep(bool quick) {
     std::vector<Setting> settings;
@@ -124,7 +119,7 @@ int runIblReport(const IblReportOptions& options) {
     const CapturedFrame truth = renderer.capture(frame);
     const double truthMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - truthStart).count();
     frame.ibl.referenceSamples = options.referenceSamples / 4;
-    const ImageError convergence = report::imageError(renderer.capture(frame).rgba32f, truth.rgba32f);
+    const ibl::ErrorStats convergence = report::imageError(renderer.capture(frame).rgba32f, truth.rgba32f);
     frame.ibl.referenceSamples = 0;
     io::writeExr(out / "ground_truth.exr", truth.width, truth.height, truth.rgba32f);
     report::writePreview(out / "ground_truth.png", truth);

@@ -26,34 +26,28 @@ std::string sci(double v) {
     return buffer;
 }
 
+// Luminance of the pixels two RGBA float images both cover fully (alpha 1), and which pixels.
+struct CoveredPixels {
+    std::vector<double> image, reference;
+    std::vector<size_t> pixel;
+};
+
+CoveredPixels coveredPixels(const std::vector<float>& image, const std::vector<float>& reference) {
+    CoveredPixels out;
+    for (size_t i = 0; i + 3 < reference.size() && i + 3 < image.size(); i += 4) {
+        if (reference[i + 3] < 1.0f || image[i + 3] < 1.0f) continue;
+        out.image.push_back(ibl::luminance({image[i], image[i + 1], image[i + 2]}));
+        out.reference.push_back(ibl::luminance({reference[i], reference[i + 1], reference[i + 2]}));
+        out.pixel.push_back(i / 4);
+    }
+    return out;
+}
 
 }  // namespace
 
-ImageError imageError(const std::vector<float>& image, const std::vector<float>& reference) {
-    auto luminance = [](const float* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; };
-    double sumRef = 0, sumSq = 0, n = 0;
-    for (size_t i = 0; i + 3 < reference.size(); i += 4) {
-        if (reference[i + 3] < 1.0f || image[i + 3] < 1.0f) continue;
-        const double r = luminance(&reference[i]), g = luminance(&image[i]);
-        sumRef += r;
-        sumSq += (g - r) * (g - r);
-        ++n;
-    }
-    ImageError e;
-    if (n == 0 || sumRef <= 0) return e;
-    const double mean = sumRef / n;
-    e.rmse = std::sqrt(sumSq / n) / mean;
-    e.maxRelative = 0;
-    double sumRelative = 0;
-    for (size_t i = 0; i + 3 < reference.size(); i += 4) {
-        if (reference[i + 3] < 1.0f || image[i + 3] < 1.0f) continue;
-        const double r = luminance(&reference[i]), g = luminance(&image[i]);
-        const double relative = std::abs(g - r) / (r + 0.01 * mean);
-        e.maxRelative = std::max(e.maxRelative, relative);
-        sumRelative += relative;
-    }
-    e.meanRelative = sumRelative / n;
-    return e;
+ibl::ErrorStats imageError(const std::vector<float>& image, const std::vector<float>& reference) {
+    const CoveredPixels pixels = coveredPixels(image, reference);
+    return ibl::errorStats(pixels.image, pixels.reference);
 }
 
 void writePreview(const std::filesystem::path& path, const CapturedFrame& frame) {
@@ -66,22 +60,18 @@ void writePreview(const std::filesystem::path& path, const CapturedFrame& frame)
     io::writePng(path, frame.width, frame.height, rgba);
 }
 
-// Where an image differs from the reference: |x − ref| / (ref + 1% of the mean) per pixel, as grey
-// levels with 1.0 (100%) white; red where the image is brighter, blue where it is darker than 10%.
 void writeErrorMap(const std::filesystem::path& path, const CapturedFrame& frame, const std::vector<float>& reference) {
-    auto luminance = [](const float* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; };
-    double sum = 0, n = 0;
-    for (size_t i = 0; i + 3 < reference.size(); i += 4)
-        if (reference[i + 3] >= 1.0f) sum += luminance(&reference[i]), ++n;
-    const double floor = n > 0 ? 0.01 * sum / n : 1e-6;
+    const CoveredPixels pixels = coveredPixels(frame.rgba32f, reference);
+    double sum = 0;
+    for (double r : pixels.reference) sum += r;
+    const double floor = pixels.reference.empty() ? 1e-6 : 0.01 * sum / double(pixels.reference.size());
     std::vector<uint8_t> rgba(frame.rgba32f.size(), 0);
-    for (size_t i = 0; i + 3 < reference.size(); i += 4) {
-        rgba[i + 3] = 255;
-        if (reference[i + 3] < 1.0f) continue;
-        const double r = luminance(&reference[i]), g = luminance(&frame.rgba32f[i]);
+    for (size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 255;
+    for (size_t k = 0; k < pixels.pixel.size(); ++k) {
+        const double r = pixels.reference[k], g = pixels.image[k];
         const double e = std::min(std::abs(g - r) / (r + floor), 1.0);
-        const auto level = static_cast<uint8_t>(e * 255.0);
-        rgba[i] = rgba[i + 1] = rgba[i + 2] = level;
+        const size_t i = pixels.pixel[k] * 4;
+        rgba[i] = rgba[i + 1] = rgba[i + 2] = static_cast<uint8_t>(e * 255.0);
         if (e > 0.1) rgba[g > r ? i + 0 : i + 2] = 255;
     }
     io::writePng(path, frame.width, frame.height, rgba);

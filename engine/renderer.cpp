@@ -80,13 +80,18 @@ void Renderer::prepareEnvironment(const RenderSettings& settings) {
     if (!settings.scene) return;
     if (settings.environment == mEnvironment && settings.iblQuality == mIblQuality && settings.iblCacheDir == mIblCacheDir)
         return;
-    settings.iblQuality.validate();
+    useEnvironment(settings.environment, settings.iblQuality, settings.iblCacheDir, false);
+}
+
+void Renderer::useEnvironment(const scene::Environment* environment, const ibl::IblQuality& quality,
+                              const std::filesystem::path& cacheDir, bool force) {
+    quality.validate();
     // The maps may be read by a frame in flight: wait before replacing them.
     mFrames.waitIdle();
-    if (mIbl.setEnvironment(settings.environment, settings.iblQuality, settings.iblCacheDir)) mForward.setIblMaps(mIbl);
-    mEnvironment = settings.environment;
-    mIblQuality = settings.iblQuality;
-    mIblCacheDir = settings.iblCacheDir;
+    if (mIbl.setEnvironment(environment, quality, cacheDir, force)) mForward.setIblMaps(mIbl);
+    mEnvironment = environment;
+    mIblQuality = quality;
+    mIblCacheDir = cacheDir;
 }
 
 void Renderer::applyToggles(RenderGraph& graph, const std::vector<std::string>& disabledPasses) {
@@ -149,13 +154,7 @@ FrameTiming Renderer::renderCalibration(uint32_t width, uint32_t height) {
 }
 
 FrameTiming Renderer::precomputeIbl(const scene::Environment& environment, const ibl::IblQuality& quality) {
-    quality.validate();
-    mFrames.waitIdle();
-    mIbl.setEnvironment(&environment, quality, {}, /*force=*/true);
-    mForward.setIblMaps(mIbl);
-    mEnvironment = &environment;
-    mIblQuality = quality;
-    mIblCacheDir.clear();
+    useEnvironment(&environment, quality, {}, /*force=*/true);
     mGraph = std::make_unique<RenderGraph>();
     ImportBindings imports;
     mIbl.addToGraph(*mGraph, imports);

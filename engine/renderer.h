@@ -126,6 +126,9 @@ private:
     graph::TextureId buildPatternGraph(graph::RenderGraph& graph, const RenderSettings& settings);
     void prepareScene(const RenderSettings& settings);
     void prepareEnvironment(const RenderSettings& settings);
+    // Waits for the GPU and gives the maps this environment and quality (see IblMaps::setEnvironment).
+    void useEnvironment(const scene::Environment* environment, const ibl::IblQuality& quality,
+                        const std::filesystem::path& cacheDir, bool force);
     static void applyToggles(graph::RenderGraph& graph, const std::vector<std::string>& disabledPasses);
     FrameTiming execute(graph::RenderGraph& graph, const graph::ImportBindings& imports, bool emitBarriers);
 

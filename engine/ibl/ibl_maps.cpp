@@ -3,6 +3,8 @@
 #include "core/check.h"
 #include "core/log.h"
 #include "graph/graph_executor.h"
+#include "ibl/ibl_errors.h"
+#include "ibl/ibl_reference.h"
 #include "passes/ibl_brdf_lut_pass.h"
 #include "passes/ibl_cubemap_pass.h"
 #include "passes/ibl_irradiance_cube_pass.h"
@@ -16,7 +18,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <cmath>
 #include <span>
 
 namespace candela::ibl {
@@ -39,6 +40,22 @@ std::span<const std::byte> zeros(size_t bytes) {
 TextureDesc graphDesc(const vk::ImageDesc& d) {
     return {.width = d.width, .height = d.height, .mipLevels = d.mipLevels, .arrayLayers = d.arrayLayers,
             .format = d.format, .cube = d.cube};
+}
+
+// A 2D-array view of each mip of a cube (all 6 layers), for storage writes.
+std::vector<vk::ImageView> mipViews(const vk::Image& cube) {
+    std::vector<vk::ImageView> views;
+    for (uint32_t m = 0; m < cube.desc().mipLevels; ++m)
+        views.push_back(cube.createView(VK_IMAGE_VIEW_TYPE_2D_ARRAY, m, 1, 0, 6));
+    return views;
+}
+
+// The environment's RGB texels as RGBA (alpha 1), the layout of the RGBA32F upload.
+std::vector<float> rgbaTexels(const scene::Environment& env) {
+    std::vector<float> rgba(env.texelCount() * 4, 1.0f);
+    for (size_t i = 0; i < env.texelCount(); ++i)
+        for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = env.rgb[i * 3 + c];
+    return rgba;
 }
 
 std::vector<VkImageView> rawViews(const std::vector<vk::ImageView>& views) {
@@ -90,17 +107,14 @@ VkBuffer IblMaps::referenceTexelBuffer() const {
 }
 
 void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
-    // Texel luminance and solid angle (rows of equal latitude share one).
     const auto luminance = [&](size_t i) {
-        return 0.2126f * env.rgb[i * 3] + 0.7152f * env.rgb[i * 3 + 1] + 0.0722f * env.rgb[i * 3 + 2];
+        return ibl::luminance({env.rgb[i * 3], env.rgb[i * 3 + 1], env.rgb[i * 3 + 2]});
     };
-    std::vector<double> rowSolidAngle(env.height);
     double totalSolidAngle = 0, totalPower = 0;
     for (uint32_t y = 0; y < env.height; ++y) {
-        rowSolidAngle[y] = (2.0 * 3.14159265358979 / env.width) *
-                           (std::cos(3.14159265358979 * y / env.height) - std::cos(3.14159265358979 * (y + 1) / env.height));
-        for (uint32_t x = 0; x < env.width; ++x) totalPower += luminance(size_t(y) * env.width + x) * rowSolidAngle[y];
-        totalSolidAngle += rowSolidAngle[y] * env.width;
+        const double solidAngle = reference::texelSolidAngle(y, env.width, env.height);
+        for (uint32_t x = 0; x < env.width; ++x) totalPower += luminance(size_t(y) * env.width + x) * solidAngle;
+        totalSolidAngle += solidAngle * env.width;
     }
     const double threshold = 20.0 * totalPower / totalSolidAngle;
     std::vector<uint32_t> bright;
@@ -109,11 +123,7 @@ void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
     std::sort(bright.begin(), bright.end(), [&](uint32_t a, uint32_t b) { return luminance(a) > luminance(b); });
     if (bright.size() > kMaxReferenceTexels) bright.resize(kMaxReferenceTexels);
 
-    std::vector<float> rgba(env.texelCount() * 4);
-    for (size_t i = 0; i < env.texelCount(); ++i) {
-        for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = env.rgb[i * 3 + c];
-        rgba[i * 4 + 3] = 1.0f;
-    }
+    std::vector<float> rgba = rgbaTexels(env);
     std::vector<glm::vec4> texels{glm::vec4(float(bright.size()), float(env.width), float(env.height), 0)};
     for (uint32_t i : bright) {
         rgba[size_t(i) * 4 + 3] = 0.0f;
@@ -148,9 +158,7 @@ void IblMaps::createMaps(const IblQuality& q) {
         if (target.image && target.image.desc().width == size && target.image.desc().mipLevels == mips) return;
         target.image = vk::Image(mContext, {.width = size, .height = size, .mipLevels = mips, .arrayLayers = 6,
                                             .format = kSpecularFormat, .usage = usage, .cube = true, .name = name});
-        target.mipViews.clear();
-        for (uint32_t m = 0; m < mips; ++m)
-            target.mipViews.push_back(target.image.createView(VK_IMAGE_VIEW_TYPE_2D_ARRAY, m, 1, 0, 6));
+        target.mipViews = mipViews(target.image);
     };
     makeCube(mSpecular, q.cubeSize, q.levels(), "ibl_specular");
     if (q.irradiance == IrradianceMode::Cube) {
@@ -176,13 +184,7 @@ void IblMaps::createPrecomputeInputs(const scene::Environment& env) {
     mEquirect = vk::Image(mContext, {.width = env.width, .height = env.height, .format = kFloatCubeFormat,
                                      .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                      .name = "ibl_equirect"});
-    std::vector<float> rgba(env.texelCount() * 4);
-    for (size_t i = 0; i < env.texelCount(); ++i) {
-        rgba[i * 4 + 0] = env.rgb[i * 3 + 0];
-        rgba[i * 4 + 1] = env.rgb[i * 3 + 1];
-        rgba[i * 4 + 2] = env.rgb[i * 3 + 2];
-        rgba[i * 4 + 3] = 1.0f;
-    }
+    const std::vector<float> rgba = rgbaTexels(env);
     vk::Uploader upload(mContext);
     upload.image(mEquirect, std::as_bytes(std::span(rgba)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     upload.submitAndWait();
@@ -193,9 +195,7 @@ void IblMaps::createPrecomputeInputs(const scene::Environment& env) {
                                             .format = kFloatCubeFormat,
                                             .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
                                             .cube = true, .name = "ibl_float_cube"});
-    mFloatCube.mipViews.clear();
-    for (uint32_t m = 0; m < mips; ++m)
-        mFloatCube.mipViews.push_back(mFloatCube.image.createView(VK_IMAGE_VIEW_TYPE_2D_ARRAY, m, 1, 0, 6));
+    mFloatCube.mipViews = mipViews(mFloatCube.image);
 }
 
 void IblMaps::ensurePasses() {

@@ -12,7 +12,7 @@ namespace candela::passes {
 using namespace graph;
 
 IblIrradianceCubePass::IblIrradianceCubePass(vk::Context& context)
-    : mContext(context), mPipeline(vk::Pipeline::compute(context, "ibl_irradiance_cube.comp")) {}
+    : mContext(context), mPipeline(vk::Pipeline::compute(context, "ibl_filter_cube.comp", {/*kWeightByCosine=*/0})) {}
 
 void IblIrradianceCubePass::prepare(uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered,
                  float lodBias) {

@@ -1,7 +1,7 @@
 #pragma once
 // IBL precompute pass "ibl_irradiance_cube" (compute): diffuse irradiance E(n)/π as a small RGBA16F
 // cube, by cosine importance sampling with filtered importance sampling from the float environment
-// cube (shaders/ibl_irradiance_cube.comp).
+// cube (shaders/ibl_filter_cube.comp, equal weights).
 
 #include "graph/render_graph.h"
 #include "vk/buffer.h"

@@ -13,7 +13,7 @@ namespace candela::passes {
 using namespace graph;
 
 IblPrefilterPass::IblPrefilterPass(vk::Context& context)
-    : mContext(context), mPipeline(vk::Pipeline::compute(context, "ibl_prefilter.comp")) {}
+    : mContext(context), mPipeline(vk::Pipeline::compute(context, "ibl_filter_cube.comp", {/*kWeightByCosine=*/1})) {}
 
 void IblPrefilterPass::prepare(uint32_t levels, uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips,
                                bool filtered, float lodBias) {

@@ -41,7 +41,7 @@ struct IblDownsamplePush {
     uint pad0, pad1, pad2;
 };
 
-// ibl_prefilter.comp (one dispatch per mip) and ibl_irradiance_cube.comp: sample table entries
+// ibl_filter_cube.comp (the prefilter: one dispatch per mip; the irradiance cube): sample table entries
 // [firstSample, firstSample + sampleCount) of engine/ibl/ibl_sample_tables.h.
 struct IblFilterPush {
     uint faceSize;        // of the mip written

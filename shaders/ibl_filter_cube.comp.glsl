@@ -1,12 +1,16 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// IBL precompute: one mip (≥ 1) of the specular cube — the environment convolved with the GGX lobe
-// of that mip's roughness (split-sum first term, n = v = r, weighted by n·l). The samples (GGX
-// half vectors reflected about n, with the source mip that filtered importance sampling assigns
-// to each) come from a table built once on the CPU (engine/ibl/ibl_sample_tables.h); the shader
-// rotates them into the texel's frame, fetches and sums. Mip 0 is written by ibl_cubemap.comp.
-// Output is clamped to the half-float maximum.
+// IBL precompute: one mip of a filtered cube from the float environment cube, by summing a table
+// of samples built once on the CPU (engine/ibl/ibl_sample_tables.h): each entry is a direction in
+// the texel's tangent frame (z = the texel's direction) and the source mip that filtered
+// importance sampling assigns to it; the shader rotates, fetches and sums. Output is clamped to
+// the half-float maximum.
+//   specular prefilter (kWeightByCosine): GGX half vectors reflected about n (n = v = r), weighted
+//     by n·l — the split sum's first term, one roughness per mip (mip 0 is ibl_cubemap.comp's);
+//   irradiance cube: cosine-distributed samples, equal weights — E(n)/π.
 #include "shared/ibl.h"
+
+layout(constant_id = 0) const bool kWeightByCosine = true;
 
 layout(local_size_x = CANDELA_IBL_GROUP, local_size_y = CANDELA_IBL_GROUP) in;
 
@@ -28,7 +32,8 @@ void main() {
     vec3 sum = vec3(0.0f);
     for (uint i = 0u; i < push.sampleCount; ++i) {
         vec4 s = samples[push.firstSample + i];
-        sum += textureLod(source, frame * s.xyz, s.w).rgb * s.z;
+        vec3 radiance = textureLod(source, frame * s.xyz, s.w).rgb;
+        sum += kWeightByCosine ? radiance * s.z : radiance;
     }
     imageStore(dstMip, ivec3(id), vec4(min(sum * push.inverseWeight, vec3(CANDELA_HALF_MAX)), 1.0f));
 }
