@@ -26,7 +26,7 @@ double minimum(const std::vector<double>& values) {
 int runBench(const RenderOptions& options) {
     const scene::Scene scene = loadScene(options);
     const std::optional<scene::Environment> environment = loadEnvironment(options);
-    const RenderSettings settings = renderSettings(options, scene, environment);
+    const RenderSettings settings = renderSettings(options, scene, environment ? &*environment : nullptr);
     vk::Context context(contextDesc(options.common));
     Renderer renderer(context);
 

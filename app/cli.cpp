@@ -15,6 +15,7 @@ namespace {
 struct FlagTable {
     std::map<std::string, std::function<void(const std::string&)>> withValue;
     std::map<std::string, std::function<void()>> switches;
+    std::function<void(const std::string&)> positional;  // null: no positional arguments
 };
 
 void addCommon(FlagTable& table, CommonOptions& common) {
@@ -40,6 +41,10 @@ void parseFlags(const std::string& command, const std::vector<std::string>& args
         if (it == table.withValue.end()) {
             if (flag.rfind("-", 0) == 0)
                 throw UserError("unknown option '" + flag + "' for 'candela " + command + "' (see candela --help)");
+            if (table.positional) {
+                table.positional(flag);
+                continue;
+            }
             throw UserError("unexpected argument '" + flag + "' for 'candela " + command + "' (see candela --help)");
         }
         if (inlineValue) {
@@ -102,11 +107,11 @@ Command parseCommandLine(const std::vector<std::string>& args) {
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") return command;
     const std::string& name = args[0];
     FlagTable table;
-    if (name == "render" || name == "bench") {
-        command.kind = name == "render" ? Command::Kind::Render : Command::Kind::Bench;
+    if (name == "render" || name == "bench" || name == "view") {
+        command.kind = name == "render" ? Command::Kind::Render : name == "bench" ? Command::Kind::Bench : Command::Kind::View;
         RenderOptions& o = command.render;
         addCommon(table, o.common);
-        table.withValue["--out"] = [&](const std::string& v) { o.out = v; };
+        if (command.kind != Command::Kind::View) table.withValue["--out"] = [&](const std::string& v) { o.out = v; };
         table.withValue["--width"] = [&](const std::string& v) { o.width = parseDimension("--width", v); };
         table.withValue["--height"] = [&](const std::string& v) { o.height = parseDimension("--height", v); };
         table.withValue["--graph-dot"] = [&](const std::string& v) { o.graphDot = v; };
@@ -184,6 +189,23 @@ Command parseCommandLine(const std::vector<std::string>& args) {
             };
             table.switches["--json"] = [&] { o.json = true; };
         }
+        if (command.kind == Command::Kind::View) {
+            o.frames = 0;
+            table.positional = [&](const std::string& v) {
+                if (!o.scene.empty()) throw UserError("unexpected argument '" + v + "': the scene is already " + o.scene);
+                o.scene = v;
+            };
+            table.withValue["--frames"] = [&](const std::string& v) {
+                o.frames = parseDimension("--frames", v);
+                if (o.frames == 0) throw UserError("--frames: need at least 1 frame");
+            };
+            table.withValue["--screenshot"] = [&](const std::string& v) {
+                if (v.empty()) throw UserError("--screenshot: expected a .png file");
+                o.screenshot = v;
+            };
+            table.switches["--no-vsync"] = [&] { o.vsync = false; };
+            table.switches["--no-ui"] = [&] { o.ui = false; };
+        }
     } else if (name == "info") {
         command.kind = Command::Kind::Info;
         addCommon(table, command.info.common);
@@ -212,13 +234,15 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         table.switches["--quick"] = [&] { o.quick = true; };
     } else {
         throw UserError("unknown command '" + name +
-                        "' (commands: render, bench, ibl-report, info; see candela --help)");
+                        "' (commands: render, view, bench, ibl-report, info; see candela --help)");
     }
     bool help = false;
     table.switches["--help"] = [&] { help = true; };
     parseFlags(name, args, 1, table);
     if (help) command.kind = Command::Kind::Help;
-    if (command.kind == Command::Kind::Render || command.kind == Command::Kind::Bench) {
+    if (command.kind == Command::Kind::View && !command.render.screenshot.empty() && command.render.frames == 0)
+        throw UserError("--screenshot: also give --frames N (the frame to save; the viewer then exits)");
+    if (command.kind == Command::Kind::Render || command.kind == Command::Kind::Bench || command.kind == Command::Kind::View) {
         command.render.iblQuality.validate();
         if (command.render.env == "none" && command.render.background == "skybox")
             throw UserError("--background skybox: there is no environment to show (--env none)");
@@ -231,6 +255,8 @@ std::string usageText() {
 
 usage:
   candela render [options]   render a frame headless and write it to a file
+  candela view [SCENE] [options]
+                             open the interactive viewer (window, orbit camera, ImGui panels)
   candela bench [options]    render N frames and report frame and pass times, also as ratios to a
                              calibration pass run in the same process
   candela ibl-report [opts]  sweep the IBL quality settings: precompute time against the error of the
@@ -277,6 +303,17 @@ render options:
   --dither              dither the 8-bit output
   --no-default-lights   a scene without punctual lights normally gets a default key and fill light
   --explain             print which passes and shader variants were left out, and why
+
+view options: the render options (except --out, --width and --height: the window's size), and
+  SCENE                 a .gltf/.glb file (same as --scene) [the built-in sphere grid]
+  --width W, --height H initial window size [1280 x 720]
+  --frames N            render N frames, then exit [run until the window is closed]
+  --screenshot FILE     save the last of the --frames N frames, UI included, as PNG
+  --no-vsync            present without waiting for the display (mailbox or immediate)
+  --no-ui               hide the ImGui panels (the ImGui pass is left out)
+  mouse and keys: right-drag rotate, middle-drag pan, wheel zoom, F frame the scene, R reset the
+  camera, P or F12 screenshot (candela-screenshot.png), Esc quit; drop a .gltf/.glb to open it,
+  an .hdr/.exr to light the scene with it
 
 bench options: the render options that choose the scene, camera and shading, and
   --frames N            frames to measure after warm-up [20]

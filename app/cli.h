@@ -35,7 +35,10 @@ struct RenderOptions {
     bool dither = false;              // --dither
     bool defaultLights = true;        // --no-default-lights turns off the key/fill lights of light-less scenes
     bool explain = false;             // --explain
-    uint32_t frames = 20;             // bench: --frames N
+    uint32_t frames = 20;             // bench: --frames N; view: frames to render before exiting (0: until closed)
+    std::string screenshot;           // view: --screenshot FILE (saves the last of --frames N)
+    bool vsync = true;                // view: --no-vsync
+    bool ui = true;                   // view: --no-ui
     bool json = false;                // bench: --json
     std::string out = "candela.png";  // --out FILE (.png, .exr, .pfm)
     uint32_t width = 1280;            // --width W
@@ -61,8 +64,8 @@ struct IblReportOptions {
 };
 
 struct Command {
-    enum class Kind { Help, Render, Info, Bench, IblReport } kind = Kind::Help;
-    RenderOptions render;  // render and bench
+    enum class Kind { Help, Render, View, Info, Bench, IblReport } kind = Kind::Help;
+    RenderOptions render;  // render, view and bench
     InfoOptions info;
     IblReportOptions iblReport;
 };

@@ -14,6 +14,7 @@ namespace candela::app {
 
 int runRender(const RenderOptions& options);
 int runBench(const RenderOptions& options);
+int runView(const RenderOptions& options);
 int runInfo(const InfoOptions& options);
 int runIblReport(const IblReportOptions& options);
 
@@ -24,6 +25,6 @@ scene::Scene loadScene(const RenderOptions& options);
 std::optional<scene::Environment> loadEnvironment(const RenderOptions& options);
 // Precondition: `scene` and `environment` outlive the settings.
 RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& scene,
-                              const std::optional<scene::Environment>& environment);
+                              const scene::Environment* environment);
 
 }  // namespace candela::app

@@ -49,7 +49,7 @@ void writeText(const std::string& path, const std::string& text) {
 }  // namespace
 
 RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& scene,
-                              const std::optional<scene::Environment>& environment) {
+                              const scene::Environment* environment) {
     RenderSettings settings{.width = options.width, .height = options.height, .scene = &scene};
     settings.disabledPasses = options.disabledPasses;
     settings.defaultLights = options.defaultLights;
@@ -63,7 +63,7 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
     settings.tonemap.op = *passes::parseTonemap(options.tonemap);  // validated by the parser
     settings.tonemap.exposureEv = options.exposureEv;
     settings.tonemap.dither = options.dither;
-    settings.environment = environment ? &*environment : nullptr;
+    settings.environment = environment;
     settings.iblQuality = options.iblQuality;
     settings.ibl = options.iblLook;
     settings.iblCacheDir = options.iblCache;
@@ -89,7 +89,7 @@ int runRender(const RenderOptions& options) {
 
     const scene::Scene scene = loadScene(options);
     const std::optional<scene::Environment> environment = loadEnvironment(options);
-    RenderSettings settings = renderSettings(options, scene, environment);
+    RenderSettings settings = renderSettings(options, scene, environment ? &*environment : nullptr);
     settings.floatOutput = io::isFloatFormat(format);
 
     vk::Context context(contextDesc(options.common));
@@ -173,6 +173,7 @@ int main(int argc, char** argv) {
         switch (command.kind) {
             case app::Command::Kind::Help: std::fputs(app::usageText().c_str(), stdout); return 0;
             case app::Command::Kind::Render: return app::runRender(command.render);
+            case app::Command::Kind::View: return app::runView(command.render);
             case app::Command::Kind::Info: return app::runInfo(command.info);
             case app::Command::Kind::Bench: return app::runBench(command.render);
             case app::Command::Kind::IblReport: return app::runIblReport(command.iblReport);

@@ -4,6 +4,7 @@
 #include "passes/readback_pass.h"
 #include "vk/context.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
 #include <algorithm>
@@ -94,9 +95,10 @@ void Renderer::useEnvironment(const scene::Environment* environment, const ibl::
     mIblCacheDir = cacheDir;
 }
 
-void Renderer::applyToggles(RenderGraph& graph, const std::vector<std::string>& disabledPasses) {
-    for (const std::string& name : disabledPasses) {
+void Renderer::applyToggles(RenderGraph& graph, const RenderSettings& settings) {
+    for (const std::string& name : settings.disabledPasses) {
         if (!graph.findPass(name)) {
+            if (!settings.unknownPassIsError) continue;
             std::string names;
             for (const PassDecl& p : graph.declaration().passes) names += (names.empty() ? "" : ", ") + p.name;
             throw UserError("cannot disable pass '" + name + "': no such pass (passes: " + names + ")");
@@ -105,27 +107,54 @@ void Renderer::applyToggles(RenderGraph& graph, const std::vector<std::string>& 
     }
 }
 
-FrameTiming Renderer::execute(RenderGraph& graph, const ImportBindings& imports, bool emitBarriers) {
+std::chrono::steady_clock::time_point Renderer::submit(RenderGraph& graph, const ImportBindings& imports,
+                                                       bool emitBarriers, const PresentTarget* present) {
     graph.compile({.memoryRequirements = deviceMemoryRequirements(mContext, graph.declaration())});
     vk::FrameSlot& slot = mFrames.begin();
     TransientPool& transients = *mTransients[mFrames.currentSlot()];
     transients.realize(graph.declaration(), graph.compiled());
-    const ExecutionRecord record = executeGraph({.context = mContext,
-                                                 .graph = graph,
-                                                 .imports = imports,
-                                                 .transients = transients,
-                                                 .cmd = slot.cmd,
-                                                 .descriptors = *slot.descriptors,
-                                                 .timestamps = slot.timestamps.get(),
-                                                 .emitBarriers = emitBarriers});
-    FrameTiming timing;
+    ExecutionRecord record = executeGraph({.context = mContext,
+                                           .graph = graph,
+                                           .imports = imports,
+                                           .transients = transients,
+                                           .cmd = slot.cmd,
+                                           .descriptors = *slot.descriptors,
+                                           .timestamps = slot.timestamps.get(),
+                                           .emitBarriers = emitBarriers});
+    std::vector<std::string> names;
+    for (uint32_t pass : graph.compiled().order) names.push_back(graph.declaration().passes[pass].name);
+    slot.completed = [this, record = std::move(record), order = graph.compiled().order,
+                      names = std::move(names)](vk::FrameSlot& done) {
+        mCompletedTimings = record.timings(*done.timestamps);
+        mCompletedTimes.clear();
+        for (size_t i = 0; i < order.size(); ++i)
+            mCompletedTimes.push_back({names[i], order[i] < mCompletedTimings.gpuMs.size() ? mCompletedTimings.gpuMs[order[i]] : -1.0});
+    };
     const auto submitted = std::chrono::steady_clock::now();
-    mFrames.submit();
-    mFrames.waitCurrent();
-    timing.submitWaitMs = msSince(submitted);
+    if (present)
+        mFrames.submit({{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
+                         .semaphore = present->acquired,
+                         .stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT}},
+                       {{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
+                         .semaphore = present->rendered,
+                         .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT}});
+    else
+        mFrames.submit();
+    return submitted;
+}
+
+void Renderer::finishIblFrame(const RenderGraph& graph) {
     if (mIblInGraph) mIbl.frameCompleted(graph);
     mIblInGraph = false;
-    timing.timings = record.timings(*slot.timestamps);
+}
+
+FrameTiming Renderer::execute(RenderGraph& graph, const ImportBindings& imports, bool emitBarriers) {
+    const auto submitted = submit(graph, imports, emitBarriers);
+    mFrames.waitCurrent();
+    FrameTiming timing;
+    timing.submitWaitMs = msSince(submitted);
+    finishIblFrame(graph);
+    timing.timings = mCompletedTimings;
     return timing;
 }
 
@@ -141,7 +170,7 @@ FrameTiming Renderer::renderFrame(const RenderSettings& settings) {
     // Without a readback the frame's result is kept alive as an exported output, as a swapchain
     // image would be.
     graph.exportTexture(output);
-    applyToggles(graph, settings.disabledPasses);
+    applyToggles(graph, settings);
     return execute(graph, imports, settings.emitBarriers);
 }
 
@@ -174,11 +203,7 @@ CapturedFrame Renderer::capture(const RenderSettings& settings) {
     prepareEnvironment(settings);
     const VkDeviceSize texel = settings.floatOutput ? 8 : 4;  // RGBA16F or RGBA8
     const VkDeviceSize bytes = texel * settings.width * settings.height;
-    if (!mReadback || mReadback.size() != bytes)
-        mReadback = vk::Buffer(mContext, {.size = bytes,
-                                          .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                          .memory = vk::MemoryUsage::Readback,
-                                          .name = "readback"});
+    readbackBuffer(bytes);
 
     mGraph = std::make_unique<RenderGraph>();
     RenderGraph& graph = *mGraph;
@@ -188,7 +213,7 @@ CapturedFrame Renderer::capture(const RenderSettings& settings) {
     const TextureId output =
         settings.scene ? buildSceneGraph(graph, settings, imports) : buildPatternGraph(graph, settings);
     passes::addReadbackPass(graph, settings.floatOutput ? mHdr : output, readback);
-    applyToggles(graph, settings.disabledPasses);
+    applyToggles(graph, settings);
     const FrameTiming timing = execute(graph, imports, settings.emitBarriers);
 
     CapturedFrame frame;
@@ -214,13 +239,67 @@ CapturedFrame Renderer::capture(const RenderSettings& settings) {
     return frame;
 }
 
+vk::Buffer& Renderer::readbackBuffer(VkDeviceSize bytes) {
+    if (!mReadback || mReadback.size() != bytes)
+        mReadback = vk::Buffer(mContext, {.size = bytes,
+                                          .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                          .memory = vk::MemoryUsage::Readback,
+                                          .name = "readback"});
+    return mReadback;
+}
+
+void Renderer::renderToTarget(const RenderSettings& settings, const PresentTarget& target, const OverlayFn& overlay,
+                              CapturedFrame* screenshot) {
+    validateSettings(settings);
+    if (!settings.scene) throw UserError("renderToTarget needs a scene");
+    prepareScene(settings);
+    prepareEnvironment(settings);
+    mGraph = std::make_unique<RenderGraph>();
+    RenderGraph& graph = *mGraph;
+    ImportBindings imports;
+    // The image's old contents are discarded; the semaphore wait (at colour-attachment output)
+    // orders the first write after the presentation engine has released it.
+    const ResourceState acquiredState{.stages = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT};
+    const ResourceState presentState{.stages = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                     .layout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR};
+    const TextureId swapchain = graph.importTexture(
+        "swapchain", {.width = settings.width, .height = settings.height, .format = target.format}, acquiredState,
+        presentState);
+    imports.bind(swapchain, target.image, target.view);
+    TextureId output = buildSceneGraph(graph, settings, imports, swapchain);
+    if (overlay) output = overlay(graph, output);
+    std::optional<BufferId> readback;
+    const VkDeviceSize bytes = VkDeviceSize(4) * settings.width * settings.height;
+    if (screenshot) {
+        readback = graph.importBuffer("readback", {.size = bytes}, ResourceState{}, passes::hostReadState());
+        imports.bind(*readback, readbackBuffer(bytes).handle());
+        passes::addReadbackPass(graph, output, *readback);
+    }
+    applyToggles(graph, settings);
+    submit(graph, imports, settings.emitBarriers, &target);
+    if (!screenshot && !mIblInGraph) return;
+    mFrames.waitCurrent();
+    finishIblFrame(graph);
+    if (!screenshot) return;
+    screenshot->width = settings.width;
+    screenshot->height = settings.height;
+    screenshot->timings = mCompletedTimings;
+    mReadback.invalidate();
+    screenshot->rgba8.resize(bytes);
+    std::memcpy(screenshot->rgba8.data(), mReadback.mapped(), bytes);
+    const bool bgra = target.format == VK_FORMAT_B8G8R8A8_UNORM || target.format == VK_FORMAT_B8G8R8A8_SRGB;
+    if (bgra)
+        for (size_t i = 0; i < bytes; i += 4) std::swap(screenshot->rgba8[i], screenshot->rgba8[i + 2]);
+}
+
 TextureId Renderer::buildPatternGraph(RenderGraph& graph, const RenderSettings& settings) {
     mHdr = mPattern.add(graph, settings.width, settings.height, settings.patternExposure);
     const TextureId ldr = graph.createTexture("ldr", {.width = settings.width, .height = settings.height, .format = kLdrFormat});
     return mEncode.add(graph, mHdr, ldr);
 }
 
-TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& settings, ImportBindings& imports) {
+TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& settings, ImportBindings& imports,
+                                   std::optional<TextureId> target) {
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
     const scene::ViewSetup view = resolveView(*settings.scene, settings.camera, aspect);
     std::optional<passes::ForwardPass::Ibl> ibl;
@@ -249,12 +328,22 @@ TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& se
                                           .params = ibl->params});
     }
     // UNORM target: the tonemap shader encodes sRGB itself, which also lets it dither.
-    const TextureId ldr = graph.createTexture(
-        "ldr", {.width = settings.width, .height = settings.height, .format = VK_FORMAT_R8G8B8A8_UNORM});
+    const TextureId ldr = target ? *target
+                                 : graph.createTexture("ldr", {.width = settings.width,
+                                                               .height = settings.height,
+                                                               .format = VK_FORMAT_R8G8B8A8_UNORM});
     return mTonemap.add(graph, mHdr, ldr, settings.tonemap);
 }
 
 scene::ViewSetup Renderer::resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect) {
+    if (camera.orbitCamera) {
+        scene::ViewSetup view = camera.orbitCamera->view(aspect);
+        if (camera.lensShiftX != 0.0f) {
+            view.projection = glm::translate(glm::mat4(1.0f), glm::vec3(camera.lensShiftX, 0.0f, 0.0f)) * view.projection;
+            view.viewProjection = view.projection * view.view;
+        }
+        return view;
+    }
     if (camera.gltfCamera) {
         if (*camera.gltfCamera >= scene.cameras.size())
             throw UserError("--camera " + std::to_string(*camera.gltfCamera) + ": the scene has " +

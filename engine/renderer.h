@@ -23,7 +23,9 @@
 #include "vk/buffer.h"
 #include "vk/frame.h"
 
+#include <chrono>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -38,6 +40,11 @@ struct CameraSettings {
     std::optional<glm::vec3> orbit;         // --camera-orbit θ°,φ°,r (r ≤ 0: frame the bounds)
     std::optional<glm::vec3> target;        // --target X,Y,Z
     float fovYDegrees = 45.0f;              // --fov
+    // An interactive camera (the viewer's), used as is; overrides the three above.
+    std::optional<scene::OrbitCamera> orbitCamera;
+    // Moves the image centre right by this many NDC units (off-axis projection): the viewer
+    // centres the scene in the part of the window its side panel leaves free.
+    float lensShiftX = 0.0f;
 };
 
 struct RenderSettings {
@@ -60,6 +67,9 @@ struct RenderSettings {
     std::filesystem::path iblCacheDir;  // empty: no on-disk cache
     float patternExposure = 1.0f;  // test pattern only
     std::vector<std::string> disabledPasses;  // runtime toggles by pass name
+    // false: a disabled pass this frame does not declare is ignored (the viewer keeps toggles
+    // across scene and environment changes); true: it is a UserError (the command line).
+    bool unknownPassIsError = true;
     bool emitBarriers = true;  // testing hook: false records no barriers (sync validation must object)
 };
 
@@ -71,6 +81,26 @@ struct CapturedFrame {
     graph::GraphTimings timings;  // per declared pass; negative where not run/measured
     double submitWaitMs = 0.0;    // CPU wall time from submit to the fence
     double readbackMs = 0.0;      // CPU time to copy (and convert) the pixels out of the buffer
+};
+
+// A presentable image to render into (a vk::Swapchain image): the tonemap writes it, the overlay
+// draws over it, and it ends in PRESENT_SRC_KHR. The frame waits on `acquired` before writing it
+// and signals `rendered` when done.
+struct PresentTarget {
+    VkImage image = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkSemaphore acquired = VK_NULL_HANDLE;
+    VkSemaphore rendered = VK_NULL_HANDLE;
+};
+
+// Adds passes that draw over the finished 8-bit frame (the UI); returns the target's new version.
+using OverlayFn = std::function<graph::TextureId(graph::RenderGraph& graph, graph::TextureId target)>;
+
+// GPU time of one pass of a completed frame.
+struct PassTime {
+    std::string name;
+    double gpuMs = -1.0;  // negative: the pass did not run or was not measured
 };
 
 struct FrameTiming {
@@ -95,6 +125,17 @@ public:
     // Renders one frame without reading it back (benchmarks): the 8-bit result is an exported
     // output of the graph, as a swapchain image would be. Waits for the GPU.
     FrameTiming renderFrame(const RenderSettings& settings);
+    // Renders one frame of the scene into `target` (settings.width × height must be its size) and
+    // submits it without waiting for the GPU: up to framesInFlight frames are in flight, and the
+    // caller presents. With `screenshot`, the finished image (overlay included) is also read back
+    // into it as sRGB RGBA8 (this waits for the frame). Throws UserError as capture() does.
+    void renderToTarget(const RenderSettings& settings, const PresentTarget& target, const OverlayFn& overlay,
+                        CapturedFrame* screenshot = nullptr);
+    // Per-pass GPU times of the latest frame known to be complete, in execution order.
+    const std::vector<PassTime>& completedPassTimes() const { return mCompletedTimes; }
+    // Waits for every frame in flight.
+    void waitIdle() { mFrames.waitIdle(); }
+
     // Runs the IBL precompute passes alone for `environment` at `quality` — always, even when the
     // maps are current; no cache — and waits. The maps then serve the following frames (read them
     // back through iblMaps()). Throws UserError for an invalid quality.
@@ -121,16 +162,26 @@ public:
 
 private:
     // Declare the frame's passes; return the 8-bit result and set mHdr to the HDR image.
+    // `target`: the 8-bit image the tonemap writes (default: a new transient).
     graph::TextureId buildSceneGraph(graph::RenderGraph& graph, const RenderSettings& settings,
-                                     graph::ImportBindings& imports);
+                                     graph::ImportBindings& imports, std::optional<graph::TextureId> target = {});
     graph::TextureId buildPatternGraph(graph::RenderGraph& graph, const RenderSettings& settings);
     void prepareScene(const RenderSettings& settings);
     void prepareEnvironment(const RenderSettings& settings);
     // Waits for the GPU and gives the maps this environment and quality (see IblMaps::setEnvironment).
     void useEnvironment(const scene::Environment* environment, const ibl::IblQuality& quality,
                         const std::filesystem::path& cacheDir, bool force);
-    static void applyToggles(graph::RenderGraph& graph, const std::vector<std::string>& disabledPasses);
+    static void applyToggles(graph::RenderGraph& graph, const RenderSettings& settings);
+    // Compiles the graph, records it into the next frame slot and submits it (waiting on and
+    // signalling the present target's semaphores if given). Returns when it was submitted.
+    std::chrono::steady_clock::time_point submit(graph::RenderGraph& graph, const graph::ImportBindings& imports,
+                                                 bool emitBarriers, const PresentTarget* present = nullptr);
+    // submit(), then waits for the frame.
     FrameTiming execute(graph::RenderGraph& graph, const graph::ImportBindings& imports, bool emitBarriers);
+    // After the frame with the IBL precompute completed: lets the maps drop what only it needed.
+    void finishIblFrame(const graph::RenderGraph& graph);
+    // The readback buffer, (re)created for `bytes`.
+    vk::Buffer& readbackBuffer(VkDeviceSize bytes);
 
     vk::Context& mContext;
     vk::FrameRing mFrames;
@@ -153,6 +204,8 @@ private:
     bool mIblInGraph = false;   // the last scene graph used image-based lighting
     bool mSkyboxInGraph = false;
     vk::Buffer mReadback;
+    std::vector<PassTime> mCompletedTimes;
+    graph::GraphTimings mCompletedTimings;  // of the latest completed frame, by declared pass
     std::unique_ptr<graph::RenderGraph> mGraph;
 };
 

@@ -15,6 +15,13 @@ Fence createFence(Context& context, bool signaled) {
     return Fence(context, fence);
 }
 
+Semaphore createSemaphore(Context& context) {
+    const VkSemaphoreCreateInfo info{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    VkSemaphore semaphore = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateSemaphore(context.device(), &info, nullptr, &semaphore));
+    return Semaphore(context, semaphore);
+}
+
 CommandPool createCommandPool(Context& context, uint32_t family, VkCommandPoolCreateFlags flags) {
     const VkCommandPoolCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO, .flags = flags, .queueFamilyIndex = family};

@@ -43,6 +43,7 @@ void recordMipChain(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspec
 void setViewportAndScissor(VkCommandBuffer cmd, VkExtent2D extent);
 
 Fence createFence(Context& context, bool signaled);
+Semaphore createSemaphore(Context& context);
 CommandPool createCommandPool(Context& context, uint32_t family, VkCommandPoolCreateFlags flags);
 
 }  // namespace candela::vk

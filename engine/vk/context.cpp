@@ -24,8 +24,34 @@ std::string versionString(uint32_t version) {
            std::to_string(VK_API_VERSION_PATCH(version));
 }
 
+std::vector<VkQueueFamilyProperties> queueFamilies(VkPhysicalDevice device) {
+    uint32_t count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+    return families;
+}
+
+// Which queue families can present (empty when presentation is not needed).
+std::vector<bool> presentFamilies(VkInstance instance, VkPhysicalDevice device, const PresentSupportFn& presentSupport) {
+    std::vector<bool> present;
+    if (!presentSupport) return present;
+    const uint32_t count = static_cast<uint32_t>(queueFamilies(device).size());
+    for (uint32_t family = 0; family < count; ++family) present.push_back(presentSupport(instance, device, family));
+    return present;
+}
+
+bool hasDeviceExtension(VkPhysicalDevice device, const char* name) {
+    uint32_t count = 0;
+    VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr));
+    std::vector<VkExtensionProperties> extensions(count);
+    VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data()));
+    return std::any_of(extensions.begin(), extensions.end(),
+                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
 // Why a device cannot run Candela, or "" if it can.
-std::string unsuitableReason(VkPhysicalDevice device) {
+std::string unsuitableReason(VkInstance instance, VkPhysicalDevice device, const PresentSupportFn& presentSupport) {
     VkPhysicalDeviceProperties properties;
     vkGetPhysicalDeviceProperties(device, &properties);
     if (properties.apiVersion < VK_API_VERSION_1_3) return "Vulkan " + versionString(properties.apiVersion) + " < 1.3";
@@ -35,12 +61,9 @@ std::string unsuitableReason(VkPhysicalDevice device) {
     if (!features13.dynamicRendering) return "no dynamicRendering";
     if (!features13.synchronization2) return "no synchronization2";
     if (!features13.maintenance4) return "no maintenance4";
-    uint32_t count = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
-    std::vector<VkQueueFamilyProperties> families(count);
-    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+    if (presentSupport && !hasDeviceExtension(device, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) return "no VK_KHR_swapchain";
     try {
-        chooseQueueFamilies(families);
+        chooseQueueFamilies(queueFamilies(device), presentFamilies(instance, device, presentSupport));
     } catch (const std::exception& e) {
         return e.what();
     }
@@ -77,7 +100,7 @@ Context::Context(const ContextDesc& desc)
     };
     step("instance creation", [&] { createInstance(desc); });
     step("device selection", [&] { pickPhysicalDevice(desc); });
-    step("device creation", [&] { createDevice(); });
+    step("device creation", [&] { createDevice(desc); });
     step("memory allocator", [&] { mAllocator = std::make_unique<MemoryAllocator>(mPhysicalDevice, mDevice.handle); });
 }
 
@@ -173,7 +196,7 @@ void Context::pickPhysicalDevice(const ContextDesc& desc) {
     for (VkPhysicalDevice device : devices) {
         VkPhysicalDeviceProperties properties;
         vkGetPhysicalDeviceProperties(device, &properties);
-        candidates.push_back({properties.deviceName, properties.deviceType, properties.apiVersion, unsuitableReason(device)});
+        candidates.push_back({properties.deviceName, properties.deviceType, properties.apiVersion, unsuitableReason(mInstance.handle, device, desc.presentSupport)});
     }
     const DeviceChoice choice = chooseDevice(candidates, desc.deviceSelector);
     mPhysicalDevice = devices[choice.index];
@@ -189,12 +212,10 @@ void Context::pickPhysicalDevice(const ContextDesc& desc) {
     mReport.driverInfo = driver.driverInfo;
 }
 
-void Context::createDevice() {
-    uint32_t count = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(mPhysicalDevice, &count, nullptr);
-    std::vector<VkQueueFamilyProperties> families(count);
-    vkGetPhysicalDeviceQueueFamilyProperties(mPhysicalDevice, &count, families.data());
-    const QueueFamilyChoice queues = chooseQueueFamilies(families);
+void Context::createDevice(const ContextDesc& desc) {
+    const std::vector<VkQueueFamilyProperties> families = queueFamilies(mPhysicalDevice);
+    const QueueFamilyChoice queues =
+        chooseQueueFamilies(families, presentFamilies(mInstance.handle, mPhysicalDevice, desc.presentSupport));
 
     const float priority = 1.0f;
     std::vector<VkDeviceQueueCreateInfo> queueInfos;
@@ -217,10 +238,15 @@ void Context::createDevice() {
         mReport.enabledFeatures.emplace_back("samplerAnisotropy");
     }
 
+    std::vector<const char*> extensions;
+    if (desc.presentSupport) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    for (const char* e : extensions) mReport.enabledExtensions.emplace_back(e);
     const VkDeviceCreateInfo info{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
                                   .pNext = &features,
                                   .queueCreateInfoCount = static_cast<uint32_t>(queueInfos.size()),
-                                  .pQueueCreateInfos = queueInfos.data()};
+                                  .pQueueCreateInfos = queueInfos.data(),
+                                  .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
+                                  .ppEnabledExtensionNames = extensions.data()};
     VK_CHECK(vkCreateDevice(mPhysicalDevice, &info, nullptr, &mDevice.handle));
 
     mGraphics = {VK_NULL_HANDLE, queues.graphics};

@@ -25,6 +25,10 @@ struct ValidationMessage {
     std::string text;
 };
 
+// Whether queue family `family` of `device` can present to the window system in use
+// (e.g. glfwGetPhysicalDevicePresentationSupport).
+using PresentSupportFn = std::function<bool(VkInstance instance, VkPhysicalDevice device, uint32_t family)>;
+
 struct ContextDesc {
     // Khronos validation layer with synchronization validation. Also on when CANDELA_VALIDATE=1.
     bool validation = false;
@@ -32,6 +36,9 @@ struct ContextDesc {
     std::string deviceSelector;
     // Instance extensions a window system needs (e.g. from glfwGetRequiredInstanceExtensions).
     std::vector<std::string> instanceExtensions;
+    // Set when frames will be presented to a window: the graphics queue must be able to present,
+    // devices without VK_KHR_swapchain are unsuitable, and the extension is enabled.
+    PresentSupportFn presentSupport;
     // Called for every validation warning or error (after it is counted and printed).
     std::function<void(const ValidationMessage&)> onValidationMessage;
     // Print validation messages to stderr.
@@ -121,7 +128,7 @@ private:
 
     void createInstance(const ContextDesc& desc);
     void pickPhysicalDevice(const ContextDesc& desc);
-    void createDevice();
+    void createDevice(const ContextDesc& desc);
     static VkBool32 VKAPI_PTR debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                             VkDebugUtilsMessageTypeFlagsEXT types,
                                             const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);

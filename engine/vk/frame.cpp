@@ -4,6 +4,7 @@
 #include "vk/commands.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace candela::vk {
 
@@ -48,6 +49,7 @@ void FrameRing::waitSlot(FrameSlot& slot) {
     VK_CHECK(vkResetFences(mContext->device(), 1, &fence));
     slot.submitted = false;
     slot.timestamps->fetch();
+    if (slot.completed) std::exchange(slot.completed, nullptr)(slot);
 }
 
 FrameSlot& FrameRing::begin() {

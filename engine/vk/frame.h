@@ -7,6 +7,7 @@
 #include "vk/handle.h"
 #include "vk/timestamps.h"
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct FrameSlot {
     std::unique_ptr<TimestampPool> timestamps;
     uint64_t frame = 0;        // number of the frame last recorded in this slot
     bool submitted = false;
+    // Runs once when the slot's submitted frame is known to be complete (its fence was waited for
+    // by begin(), waitCurrent() or waitIdle()), after its timestamps were fetched. Cleared after.
+    std::function<void(FrameSlot&)> completed;
 };
 
 class FrameRing {

@@ -1,7 +1,7 @@
 #pragma once
 // Handle<T>: move-only owner of one Vulkan object destroyed with vkDestroyXxx(device, handle, nullptr).
 // Destruction goes through Context::defer, so an object may be dropped while frames in flight
-// still use it. Used for samplers, views, layouts, pipelines, pools, fences and query pools.
+// still use it. Used for samplers, views, layouts, pipelines, pools, fences, semaphores and query pools.
 
 #include "vk/context.h"
 
@@ -61,6 +61,7 @@ using DescriptorPool = Handle<VkDescriptorPool, vkDestroyDescriptorPool>;
 using PipelineHandle = Handle<VkPipeline, vkDestroyPipeline>;
 using CommandPool = Handle<VkCommandPool, vkDestroyCommandPool>;
 using Fence = Handle<VkFence, vkDestroyFence>;
+using Semaphore = Handle<VkSemaphore, vkDestroySemaphore>;
 using QueryPool = Handle<VkQueryPool, vkDestroyQueryPool>;
 
 }  // namespace candela::vk

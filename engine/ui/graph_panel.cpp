@@ -1,0 +1,88 @@
+// The render-graph panel: every declared pass of the last frame in execution order (culled ones
+// after, greyed, with the reason), an enabled checkbox per pass (effective next frame), its GPU
+// time, the resources it reads and writes, the transient memory before and after aliasing, and
+// export of the graph as dot and JSON.
+
+#include "graph/graph_export.h"
+#include "ui/panels.h"
+#include "ui/viewer.h"
+
+#include <imgui.h>
+
+#include <string>
+
+namespace candela::ui {
+
+namespace {
+
+std::string accessText(const graph::GraphDecl& decl, const graph::AccessDecl& access) {
+    return decl.resources[access.resource].name + " v" + std::to_string(access.version) + " (" +
+           graph::usageName(access.usage) + ")";
+}
+
+double mib(VkDeviceSize bytes) { return double(bytes) / (1024.0 * 1024.0); }
+
+}  // namespace
+
+void drawGraphPanel(Viewer& viewer) {
+    const graph::RenderGraph& graph = viewer.renderer().lastGraph();
+    if (!graph.isCompiled()) return;
+    const graph::GraphDecl& decl = graph.declaration();
+    const graph::CompiledGraph& compiled = graph.compiled();
+    const std::vector<PassTime>& times = viewer.renderer().completedPassTimes();
+    const auto gpuMs = [&](const std::string& name) {
+        for (const PassTime& t : times)
+            if (t.name == name) return t.gpuMs;
+        return -1.0;
+    };
+
+    std::vector<uint32_t> rows = compiled.order;
+    for (uint32_t p = 0; p < decl.passes.size(); ++p)
+        if (compiled.passes[p].cullReason != graph::CullReason::None) rows.push_back(p);
+
+    if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+        ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthFixed, 70.0f);
+        ImGui::TableHeadersRow();
+        for (uint32_t p : rows) {
+            const graph::PassDecl& pass = decl.passes[p];
+            const graph::PassInfo& info = compiled.passes[p];
+            const bool culled = info.cullReason != graph::CullReason::None;
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::PushID(int(p));
+            bool enabled = viewer.passEnabled(pass.name);
+            if (ImGui::Checkbox("##enabled", &enabled)) viewer.setPassEnabled(pass.name, enabled);
+            ImGui::SameLine();
+            if (culled) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+            const bool open = ImGui::TreeNodeEx(pass.name.c_str(), ImGuiTreeNodeFlags_SpanAvailWidth);
+            if (culled) {
+                ImGui::PopStyleColor();
+                if (ImGui::IsItemHovered()) ImGui::SetTooltip("culled: %s", info.cullDetail.c_str());
+            }
+            if (open) {
+                if (culled) ImGui::TextDisabled("culled: %s", info.cullDetail.c_str());
+                for (const graph::AccessDecl& a : pass.reads) ImGui::BulletText("reads %s", accessText(decl, a).c_str());
+                for (const graph::AccessDecl& a : pass.writes) ImGui::BulletText("writes %s", accessText(decl, a).c_str());
+                ImGui::TreePop();
+            }
+            ImGui::PopID();
+            ImGui::TableNextColumn();
+            const double ms = gpuMs(pass.name);
+            if (culled)
+                ImGui::TextDisabled("%s", graph::cullReasonName(info.cullReason));
+            else if (ms >= 0.0)
+                ImGui::Text("%.2f", ms);
+            else
+                ImGui::TextDisabled("-");
+        }
+        ImGui::EndTable();
+    }
+    ImGui::TextWrapped("transient memory: %.1f MiB requested, %.1f MiB allocated after aliasing (%zu heaps)",
+                mib(compiled.bytesRequested), mib(compiled.bytesAllocated), compiled.heaps.size());
+    if (ImGui::Button("Export dot")) viewer.exportGraph("candela-graph.dot", false);
+    ImGui::SameLine();
+    if (ImGui::Button("Export JSON")) viewer.exportGraph("candela-graph.json", true);
+}
+
+}  // namespace candela::ui

@@ -1,0 +1,14 @@
+#pragma once
+// The viewer's ImGui panels, one file each. Each draws its section of the side panel for the
+// current frame and acts through the Viewer's actions. Precondition: inside ImGui::NewFrame() /
+// ImGui::Render().
+
+namespace candela::ui {
+
+class Viewer;
+
+void drawGraphPanel(Viewer& viewer);      // graph_panel.cpp: passes, toggles, times, resources, memory, export
+void drawCameraPanel(Viewer& viewer);     // camera_panel.cpp: position, target, field of view, near plane, speeds
+void drawStatsPanel(Viewer& viewer);      // stats_panel.cpp: frame time, pass times, draws and triangles
+
+}  // namespace candela::ui

@@ -1,0 +1,343 @@
+#include "ui/viewer.h"
+
+#include "core/check.h"
+#include "core/log.h"
+#include "graph/graph_export.h"
+#include "io/image_file.h"
+#include "passes/imgui_pass.h"
+#include "scene/gltf_loader.h"
+#include "ui/panels.h"
+#include "vk/swapchain.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_vulkan.h>
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+
+namespace candela::ui {
+
+// The Dear ImGui context and its GLFW platform backend (the Vulkan side is passes::ImGuiPass).
+class ImGuiContextOwner {
+public:
+    explicit ImGuiContextOwner(GLFWwindow* window) {
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;  // no imgui.ini in the user's working directory
+        ImGui::StyleColorsDark();
+        ImGui::GetStyle().WindowRounding = 0.0f;
+        // Chains to the window's own drop, scroll and key callbacks installed before it.
+        ImGui_ImplGlfw_InitForVulkan(window, true);
+    }
+    ~ImGuiContextOwner() {
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+    }
+    ImGuiContextOwner(const ImGuiContextOwner&) = delete;
+    ImGuiContextOwner& operator=(const ImGuiContextOwner&) = delete;
+};
+
+namespace {
+
+double msBetween(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+// The side panel's width for a window `width` pixels wide.
+float sidePanelWidth(float width) { return std::min(420.0f, width * 0.45f); }
+
+std::string lowerExtension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+}  // namespace
+
+Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
+    : mUi(desc.ui), mScene(std::move(content.scene)), mEnvironment(std::move(content.environment)),
+      mSettings(std::move(content.settings)) {
+    mWindow = std::make_unique<Window>(desc.window);
+    vk::ContextDesc contextDesc = desc.context;
+    for (const std::string& e : Window::requiredInstanceExtensions()) contextDesc.instanceExtensions.push_back(e);
+    contextDesc.presentSupport = Window::presentSupport;
+    mContext = std::make_unique<vk::Context>(contextDesc);
+    mSwapchain = std::make_unique<vk::Swapchain>(*mContext, mWindow->createSurface(mContext->instance()), desc.vsync);
+    mRenderer = std::make_unique<Renderer>(*mContext, desc.framesInFlight);
+    if (mUi) mImGui = std::make_unique<ImGuiContextOwner>(mWindow->handle());
+
+    mSettings.unknownPassIsError = false;
+    mSettings.floatOutput = false;
+    const float aspect = visibleAspect();
+    if (!mSettings.camera.orbitCamera) {
+        // Start from the view the command line chose (framing the scene by default).
+        mCamera = scene::OrbitCamera::framing(mScene.bounds, aspect, 0.0f, 90.0f, mSettings.camera.fovYDegrees);
+        if (mSettings.camera.orbit) {
+            mCamera = scene::OrbitCamera::framing(mScene.bounds, aspect, mSettings.camera.orbit->x,
+                                                  mSettings.camera.orbit->y, mSettings.camera.fovYDegrees);
+            if (mSettings.camera.orbit->z > 0.0f) {
+                mCamera.radius = mSettings.camera.orbit->z;
+                mCamera.znear = mCamera.radius * 1e-3f;
+            }
+        }
+        if (mSettings.camera.target) mCamera.target = *mSettings.camera.target;
+        if (mSettings.camera.gltfCamera && *mSettings.camera.gltfCamera < mScene.cameras.size()) {
+            // Orbit about the point the glTF camera looks at, at the depth of the scene's centre.
+            const glm::mat4& world = mScene.cameras[*mSettings.camera.gltfCamera].world;
+            const glm::vec3 eye(world[3]);
+            const glm::vec3 forward = -glm::normalize(glm::vec3(world[2]));
+            const float depth = std::max(glm::dot(mCamera.target - eye, forward), mCamera.radius * 0.1f);
+            mCamera.target = eye + forward * depth;
+            setEye(mCamera, eye);
+        }
+    } else {
+        mCamera = *mSettings.camera.orbitCamera;
+    }
+    mInitialCamera = mCamera;
+    mLastFrame = std::chrono::steady_clock::now();
+}
+
+Viewer::~Viewer() {
+    if (mRenderer) mRenderer->waitIdle();
+    mImGuiPass.reset();
+}
+
+uint32_t Viewer::swapchainRecreations() const { return mSwapchain->recreations(); }
+VkExtent2D Viewer::swapchainExtent() const { return mSwapchain->extent(); }
+
+void Viewer::setStatus(std::string line, bool error) {
+    if (error)
+        log::error(line);
+    else
+        log::info(line);
+    mStatus = std::move(line);
+    mStatusIsError = error;
+}
+
+void Viewer::setPassEnabled(const std::string& pass, bool enabled) {
+    auto& disabled = mSettings.disabledPasses;
+    disabled.erase(std::remove(disabled.begin(), disabled.end(), pass), disabled.end());
+    if (!enabled) disabled.push_back(pass);
+}
+
+bool Viewer::passEnabled(const std::string& pass) const {
+    const auto& disabled = mSettings.disabledPasses;
+    return std::find(disabled.begin(), disabled.end(), pass) == disabled.end();
+}
+
+bool Viewer::openFile(const std::filesystem::path& path) {
+    const std::string ext = lowerExtension(path);
+    try {
+        if (ext == ".gltf" || ext == ".glb") {
+            scene::Scene loaded = scene::loadGltf(path);
+            for (const std::string& warning : loaded.warnings) log::warn(path.string() + ": " + warning);
+            // The renderer notices a new scene by address: it waits for the frames in flight and
+            // uploads the new one at the next frame.
+            mRenderer->waitIdle();
+            mScene = std::move(loaded);
+            mCamera = mInitialCamera =
+                scene::OrbitCamera::framing(mScene.bounds, visibleAspect(), 0.0f, 90.0f, mCamera.fovYDegrees);
+            mSettings.camera.gltfCamera.reset();
+            setStatus("opened " + path.string());
+            return true;
+        }
+        if (ext == ".hdr" || ext == ".pic" || ext == ".exr") {
+            // A new object (new address) while the old one is alive: the renderer hashes it and
+            // runs the precompute in the next frame.
+            auto loaded = std::make_unique<scene::Environment>(scene::loadEnvironment(path));
+            for (const std::string& warning : loaded->warnings) log::warn(warning);
+            mRenderer->waitIdle();
+            mEnvironment = std::move(loaded);
+            // Show it: the skybox becomes the background, as `--env` does with the default background.
+            mSettings.ibl.skybox = true;
+            mSettings.tonemap.background.reset();
+            setStatus("environment " + path.string());
+            return true;
+        }
+        setStatus(path.string() + ": not a scene (.gltf, .glb) or an environment (.hdr, .exr)", true);
+    } catch (const std::exception& e) {
+        setStatus(e.what(), true);
+    }
+    return false;
+}
+
+void Viewer::requestScreenshot(const std::filesystem::path& path) { mScreenshot = path; }
+
+float Viewer::visibleAspect() const {
+    const VkExtent2D extent = mSwapchain->valid() ? mSwapchain->extent() : mWindow->framebufferSize();
+    if (extent.height == 0 || extent.width == 0) return 16.0f / 9.0f;
+    const float panel = mUi ? sidePanelWidth(float(extent.width)) : 0.0f;
+    return (float(extent.width) - panel) / float(extent.height);
+}
+
+void Viewer::frameScene() {
+    const float aspect = visibleAspect();
+    const scene::OrbitCamera framed =
+        scene::OrbitCamera::framing(mScene.bounds, aspect, mCamera.thetaDegrees, mCamera.phiDegrees, mCamera.fovYDegrees);
+    mCamera.target = framed.target;
+    mCamera.radius = framed.radius;
+    mCamera.znear = framed.znear;
+}
+
+void Viewer::resetCamera() { mCamera = mInitialCamera; }
+
+void Viewer::setVsync(bool vsync) { mSwapchain->setVsync(vsync); }
+bool Viewer::vsync() const { return mSwapchain->vsync(); }
+
+bool Viewer::exportGraph(const std::filesystem::path& path, bool json) {
+    const graph::RenderGraph& graph = mRenderer->lastGraph();
+    // The latest completed frame may be an older graph than the last declared one: match by name.
+    graph::GraphTimings timings;
+    for (const graph::PassDecl& pass : graph.declaration().passes) {
+        double ms = -1.0;
+        for (const PassTime& t : mRenderer->completedPassTimes())
+            if (t.name == pass.name) ms = t.gpuMs;
+        timings.gpuMs.push_back(ms);
+    }
+    const std::string text = json ? graph::exportJson(graph.declaration(), graph.compiled(), &timings)
+                                  : graph::exportDot(graph.declaration(), graph.compiled(), &timings);
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out) {
+        setStatus(path.string() + ": cannot write", true);
+        return false;
+    }
+    setStatus("wrote " + path.string());
+    return true;
+}
+
+void Viewer::handleInput() {
+    for (const std::string& path : mWindow->takeDroppedFiles()) openFile(path);
+    const bool uiWantsKeys = mUi && ImGui::GetIO().WantCaptureKeyboard;
+    for (int key : mWindow->takeKeyPresses()) {
+        if (uiWantsKeys) continue;
+        if (key == GLFW_KEY_F) frameScene();
+        if (key == GLFW_KEY_R) resetCamera();
+        if (key == GLFW_KEY_F12 || key == GLFW_KEY_P) requestScreenshot("candela-screenshot.png");
+        if (key == GLFW_KEY_ESCAPE) mWindow->requestClose();
+    }
+    const bool uiWantsMouse = mUi && ImGui::GetIO().WantCaptureMouse;
+    const glm::vec2 cursor = mWindow->cursor();
+    PointerInput input;
+    input.delta = mLastCursor ? cursor - *mLastCursor : glm::vec2(0.0f);
+    input.scroll = mWindow->takeScroll();
+    input.viewportHeight = float(std::max(1u, mSwapchain->extent().height));
+    if (!uiWantsMouse) {
+        input.rotate = mWindow->mouseButton(GLFW_MOUSE_BUTTON_RIGHT);
+        input.pan = mWindow->mouseButton(GLFW_MOUSE_BUTTON_MIDDLE);
+        applyPointer(mCamera, input, mSpeeds);
+    }
+    mLastCursor = cursor;
+}
+
+void Viewer::drawUi() {
+    ImGui_ImplVulkan_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    mPanelWidth = sidePanelWidth(viewport->WorkSize.x);
+    ImGui::SetNextWindowPos(viewport->WorkPos, ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(mPanelWidth, viewport->WorkSize.y), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    ImGui::Begin("Candela", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::TextUnformatted(mScene.source.c_str());
+    if (!mStatus.empty())
+        ImGui::TextColored(mStatusIsError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.6f, 0.9f, 0.6f, 1.0f), "%s",
+                           mStatus.c_str());
+    if (ImGui::CollapsingHeader("Render graph", ImGuiTreeNodeFlags_DefaultOpen)) drawGraphPanel(*this);
+    if (ImGui::CollapsingHeader("Camera")) drawCameraPanel(*this);
+    if (ImGui::CollapsingHeader("Frame stats", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(*this);
+    ImGui::End();
+    ImGui::Render();
+}
+
+bool Viewer::ensureSwapchain(VkExtent2D extent) {
+    const VkExtent2D current = mSwapchain->extent();
+    if (mSwapchain->valid() && !mRecreate && !mSwapchain->needsRecreate() && current.width == extent.width &&
+        current.height == extent.height)
+        return true;
+    if (!mSwapchain->recreate(extent)) return false;
+    mRecreate = false;
+    if (mUi) {
+        if (!mImGuiPass || mImGuiPass->format() != mSwapchain->format()) {
+            mImGuiPass.reset();
+            mImGuiPass = std::make_unique<passes::ImGuiPass>(*mContext, mSwapchain->format(), mSwapchain->minImageCount(),
+                                                             mSwapchain->imageCount());
+        }
+        ImGui_ImplVulkan_SetMinImageCount(std::max(2u, mSwapchain->minImageCount()));
+    }
+    return true;
+}
+
+bool Viewer::frame() {
+    mWindow->pollEvents();
+    if (mWindow->shouldClose()) return false;
+    const VkExtent2D extent = mSimulatedMinimized ? VkExtent2D{0, 0} : mWindow->framebufferSize();
+    if (extent.width == 0 || extent.height == 0 || !ensureSwapchain(extent)) {
+        // Minimized: nothing to draw into. Block on events rather than spin.
+        ++mFramesSkipped;
+        mWindow->waitEvents();
+        return true;
+    }
+    const std::optional<vk::SwapchainImage> image = mSwapchain->acquire();
+    if (!image) {
+        mRecreate = true;
+        return true;
+    }
+    if (mUi) drawUi();
+    handleInput();
+
+    RenderSettings settings = mSettings;
+    settings.width = mSwapchain->extent().width;
+    settings.height = mSwapchain->extent().height;
+    settings.scene = &mScene;
+    settings.environment = mEnvironment.get();
+    if (!mEnvironment) settings.ibl.skybox = false;
+    settings.camera.orbitCamera = mCamera;
+    settings.camera.lensShiftX = mUi ? mPanelWidth / float(settings.width) : 0.0f;
+    const PresentTarget target{.image = image->image,
+                               .view = image->view,
+                               .format = mSwapchain->format(),
+                               .acquired = image->acquired,
+                               .rendered = image->rendered};
+    OverlayFn overlay;
+    if (mUi && mImGuiPass)
+        overlay = [this](graph::RenderGraph& graph, graph::TextureId texture) { return mImGuiPass->add(graph, texture); };
+    std::optional<CapturedFrame> shot;
+    if (mScreenshot && mSwapchain->canReadBack()) shot.emplace();
+    mRenderer->renderToTarget(settings, target, overlay, shot ? &*shot : nullptr);
+    if (!mSwapchain->present(*image)) mRecreate = true;
+    ++mFramesRendered;
+
+    if (mScreenshot) {
+        const std::filesystem::path path = *std::exchange(mScreenshot, std::nullopt);
+        if (!shot) {
+            setStatus("screenshot: this swapchain's images cannot be copied from", true);
+        } else {
+            try {
+                io::writePng(path, shot->width, shot->height, shot->rgba8);
+                mLastScreenshot = path.string();
+                setStatus("saved " + path.string());
+            } catch (const std::exception& e) {
+                setStatus(e.what(), true);
+            }
+        }
+    }
+    const auto now = std::chrono::steady_clock::now();
+    mCpuFrameMs = msBetween(mLastFrame, now);
+    mLastFrame = now;
+    return true;
+}
+
+void Viewer::run(uint32_t maxFrames) {
+    while (frame())
+        if (maxFrames > 0 && mFramesRendered >= maxFrames) break;
+    mRenderer->waitIdle();
+}
+
+}  // namespace candela::ui

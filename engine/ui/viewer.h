@@ -1,0 +1,139 @@
+#pragma once
+// Viewer: the interactive window of `candela view`. Owns, in start-up order (destruction runs in
+// reverse): the window, the Vulkan context (with presentation), the swapchain, the renderer, the
+// Dear ImGui context and its pass. Each frame(): events → UI → camera → render graph (scene
+// passes + ImGui) into the acquired swapchain image → present; frames stay in flight.
+//
+// The UI's controls call the public actions below; tests and scripted runs call the same ones.
+
+#include "renderer.h"
+#include "scene/environment.h"
+#include "scene/scene.h"
+#include "ui/orbit_controls.h"
+#include "ui/window.h"
+#include "vk/context.h"
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace candela::vk {
+class Swapchain;
+}
+namespace candela::passes {
+class ImGuiPass;
+}
+
+namespace candela::ui {
+
+class ImGuiContextOwner;
+
+struct ViewerDesc {
+    vk::ContextDesc context;  // the viewer adds the window's extensions and presentation support
+    WindowDesc window;
+    bool vsync = true;
+    bool ui = true;           // draw the ImGui panels (the ImGui pass is left out when off)
+    uint32_t framesInFlight = 2;
+};
+
+// What the viewer shows at start: the scene and environment (owned by the viewer from now on) and
+// the render settings the command line chose (their scene/environment pointers are ignored).
+struct ViewerContent {
+    scene::Scene scene;
+    std::unique_ptr<scene::Environment> environment;  // null: no image-based lighting
+    RenderSettings settings;
+};
+
+class Viewer {
+public:
+    // Throws UserError when no window can be opened or no device can present to it.
+    Viewer(const ViewerDesc& desc, ViewerContent content);
+    ~Viewer();
+    Viewer(const Viewer&) = delete;
+    Viewer& operator=(const Viewer&) = delete;
+
+    // One iteration of the loop. Returns false once the window was asked to close. While the
+    // window is minimized (0 × 0) it renders nothing and blocks on events instead of spinning.
+    bool frame();
+    // Runs frames until the window closes, or `maxFrames` have been rendered (0: no limit).
+    void run(uint32_t maxFrames = 0);
+
+    // --- Actions (UI controls, keys, drops and tests use these) ---
+    // Enables or disables a pass by name from the next frame on (the render-graph panel's checkbox).
+    void setPassEnabled(const std::string& pass, bool enabled);
+    bool passEnabled(const std::string& pass) const;
+    // Loads a dropped file: .gltf/.glb replaces the scene, .hdr/.exr the environment (the IBL
+    // precompute runs in the next frame). Errors are shown in the UI, not thrown. Returns success.
+    bool openFile(const std::filesystem::path& path);
+    // Saves the next rendered frame (UI included) as PNG.
+    void requestScreenshot(const std::filesystem::path& path);
+    void frameScene();   // F: frame the scene's bounds from the current direction
+    void resetCamera();  // R: the initial view
+    void setVsync(bool vsync);
+    bool vsync() const;
+    // Writes the last frame's graph (with the latest measured GPU times) as JSON or Graphviz dot.
+    bool exportGraph(const std::filesystem::path& path, bool json);
+    // Testing hook: treat the window as minimized (a window system without a window manager, such
+    // as Xvfb, ignores iconify requests). Same code path as a real 0 × 0 framebuffer.
+    void simulateMinimized(bool minimized) { mSimulatedMinimized = minimized; }
+
+    // --- State (panels and tests read it) ---
+    Window& window() { return *mWindow; }
+    vk::Context& context() { return *mContext; }
+    Renderer& renderer() { return *mRenderer; }
+    RenderSettings& settings() { return mSettings; }
+    scene::OrbitCamera& camera() { return mCamera; }
+    OrbitSpeeds& speeds() { return mSpeeds; }
+    const scene::Scene& scene() const { return mScene; }
+    const scene::Environment* environment() const { return mEnvironment.get(); }
+    uint64_t framesRendered() const { return mFramesRendered; }
+    // Frames skipped because the window was minimized.
+    uint64_t framesSkipped() const { return mFramesSkipped; }
+    uint32_t swapchainRecreations() const;
+    VkExtent2D swapchainExtent() const;
+    // The last screenshot written ("" if none) and the last status or error line.
+    const std::string& lastScreenshot() const { return mLastScreenshot; }
+    const std::string& status() const { return mStatus; }
+    double cpuFrameMs() const { return mCpuFrameMs; }
+
+private:
+    void handleInput();
+    void drawUi();
+    bool ensureSwapchain(VkExtent2D extent);
+    void setStatus(std::string line, bool error = false);
+    // Width / height of the part of the window the side panel leaves free.
+    float visibleAspect() const;
+
+    // Start-up order; destruction runs in reverse.
+    std::unique_ptr<Window> mWindow;
+    std::unique_ptr<vk::Context> mContext;
+    std::unique_ptr<vk::Swapchain> mSwapchain;
+    std::unique_ptr<Renderer> mRenderer;
+    std::unique_ptr<ImGuiContextOwner> mImGui;
+    std::unique_ptr<passes::ImGuiPass> mImGuiPass;
+
+    bool mUi = true;
+    float mPanelWidth = 0.0f;  // pixels covered by the side panel (0 without UI)
+    bool mRecreate = false;
+    bool mSimulatedMinimized = false;
+    scene::Scene mScene;
+    std::unique_ptr<scene::Environment> mEnvironment;
+    RenderSettings mSettings;
+    scene::OrbitCamera mCamera;
+    scene::OrbitCamera mInitialCamera;
+    OrbitSpeeds mSpeeds;
+    std::optional<glm::vec2> mLastCursor;
+    std::optional<std::filesystem::path> mScreenshot;
+    std::string mLastScreenshot;
+    std::string mStatus;
+    bool mStatusIsError = false;
+    uint64_t mFramesRendered = 0;
+    uint64_t mFramesSkipped = 0;
+    double mCpuFrameMs = 0.0;
+    std::chrono::steady_clock::time_point mLastFrame;
+};
+
+}  // namespace candela::ui
