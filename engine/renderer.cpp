@@ -95,6 +95,29 @@ void Renderer::useEnvironment(const scene::Environment* environment, const ibl::
     mIblCacheDir = cacheDir;
 }
 
+void Renderer::applySceneParameters() {
+    const shader::ShaderReflection& reflection = mForward.reflection();
+    const auto elements = [&](const char* buffer) -> std::span<const shader::BlockMember> {
+        for (const shader::DescriptorBinding& b : reflection.bindings)
+            if (b.name == buffer && b.members.size() == 1) return b.members[0].elementMembers;
+        return {};
+    };
+    // The scene's values with the user's applied, compared with what the buffers hold.
+    std::vector<shading::LightData> lights = mGpuScene->sceneLights();
+    std::vector<shading::MaterialData> materials = mGpuScene->sceneMaterials();
+    for (size_t i = 0; i < lights.size(); ++i)
+        mParameters.apply("forward", "Lights[" + std::to_string(i) + "]", elements("Lights"), lights[i]);
+    for (size_t i = 0; i < materials.size(); ++i)
+        mParameters.apply("forward", "Materials[" + std::to_string(i) + "]", elements("Materials"), materials[i]);
+    const auto same = [](const auto& a, const auto& b) {
+        return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
+    };
+    if (same(lights, mGpuScene->lights()) && same(materials, mGpuScene->materials())) return;
+    // The buffers may be read by frames in flight.
+    mFrames.waitIdle();
+    mGpuScene->rewrite(lights, materials);
+}
+
 void Renderer::applyToggles(RenderGraph& graph, const RenderSettings& settings) {
     for (const std::string& name : settings.disabledPasses) {
         if (!graph.findPass(name)) {
@@ -309,15 +332,18 @@ TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& se
         ibl = passes::ForwardPass::Ibl{
             .maps = mIbl.addToGraph(graph, imports),
             .params = {.rotation = glm::vec4(std::cos(theta), std::sin(theta), 0.0f, 0.0f),
-                       .params = glm::vec4(settings.ibl.intensity, maxLod,
-                                           std::clamp(settings.ibl.skyboxBlur, 0.0f, 1.0f) * maxLod,
-                                           float(mIbl.lutSize()))},
+                       .intensity = settings.ibl.intensity,
+                       .maxLod = maxLod,
+                       .skyboxLod = std::clamp(settings.ibl.skyboxBlur, 0.0f, 1.0f) * maxLod,
+                       .lutSize = float(mIbl.lutSize())},
             .irradianceSh = mIbl.quality().irradiance == ibl::IrradianceMode::Sh9,
             .multiscatter = settings.ibl.multiscatter,
             .referenceSamples = settings.ibl.referenceSamples};
     }
-    const passes::ForwardPass::Output forward =
-        mForward.add(graph, settings.width, settings.height, view, settings.shading, ibl ? &*ibl : nullptr);
+    mParameters.beginFrame();
+    applySceneParameters();
+    const passes::ForwardPass::Output forward = mForward.add(graph, settings.width, settings.height, view,
+                                                             settings.shading, ibl ? &*ibl : nullptr, &mParameters);
     mHdr = forward.hdr;
     mIblInGraph = ibl.has_value();
     mSkyboxInGraph = ibl && settings.ibl.skybox;
@@ -325,14 +351,15 @@ TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& se
         if (!mSkybox) mSkybox = std::make_unique<passes::SkyboxPass>(mContext);
         mHdr = mSkybox->add(graph, view, {.hdr = forward.hdr, .depth = forward.depth, .specular = ibl->maps.specular,
                                           .specularView = mIbl.specularView(), .sampler = mIbl.sampler(),
-                                          .params = ibl->params});
+                                          .params = ibl->params},
+                              &mParameters);
     }
     // UNORM target: the tonemap shader encodes sRGB itself, which also lets it dither.
     const TextureId ldr = target ? *target
                                  : graph.createTexture("ldr", {.width = settings.width,
                                                                .height = settings.height,
                                                                .format = VK_FORMAT_R8G8B8A8_UNORM});
-    return mTonemap.add(graph, mHdr, ldr, settings.tonemap);
+    return mTonemap.add(graph, mHdr, ldr, settings.tonemap, &mParameters);
 }
 
 scene::ViewSetup Renderer::resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect) {

@@ -20,6 +20,7 @@
 #include "passes/tonemap_pass.h"
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
+#include "shader/parameter_registry.h"
 #include "vk/buffer.h"
 #include "vk/frame.h"
 
@@ -157,6 +158,10 @@ public:
     std::vector<std::string> explain() const;
     // Transient-pool rebuilds so far (tests: stays constant while the graph is unchanged).
     uint32_t transientRebuilds() const;
+    // The reflected shader parameters of the recent frames and the user's values for them: the
+    // forward, skybox and tonemap push constants, and each light and material ("forward",
+    // "Lights[i]" / "Materials[i]"). Values set here apply from the next frame.
+    shader::ParameterRegistry& parameters() { return mParameters; }
     // The image-based-lighting maps (tests and reports read them back).
     ibl::IblMaps& iblMaps() { return mIbl; }
 
@@ -168,6 +173,9 @@ private:
     graph::TextureId buildPatternGraph(graph::RenderGraph& graph, const RenderSettings& settings);
     void prepareScene(const RenderSettings& settings);
     void prepareEnvironment(const RenderSettings& settings);
+    // Runs the scene's lights and materials through the parameter registry; rewrites their buffers
+    // (after waiting for the GPU) when the user changed one.
+    void applySceneParameters();
     // Waits for the GPU and gives the maps this environment and quality (see IblMaps::setEnvironment).
     void useEnvironment(const scene::Environment* environment, const ibl::IblQuality& quality,
                         const std::filesystem::path& cacheDir, bool force);
@@ -203,6 +211,7 @@ private:
     std::filesystem::path mIblCacheDir;
     bool mIblInGraph = false;   // the last scene graph used image-based lighting
     bool mSkyboxInGraph = false;
+    shader::ParameterRegistry mParameters;
     vk::Buffer mReadback;
     std::vector<PassTime> mCompletedTimes;
     graph::GraphTimings mCompletedTimings;  // of the latest completed frame, by declared pass

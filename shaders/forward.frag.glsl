@@ -87,7 +87,7 @@ vec3 shadingNormal(MaterialData m) {
         if (dot(t, t) > 1e-6f * dot(inTangent.xyz, inTangent.xyz)) {
             t = normalize(t);
             vec3 b = cross(n, t) * (inTangent.w < 0.0f ? -1.0f : 1.0f);
-            tangentNormal.xy *= m.params.z;
+            tangentNormal.xy *= m.normalScale;
             vec3 mapped = mat3(t, b, n) * tangentNormal;
             if (dot(mapped, mapped) > 1e-12f) n = normalize(mapped);
         }
@@ -98,12 +98,12 @@ vec3 shadingNormal(MaterialData m) {
 // Diffuse and specular light from the environment (split sum). Occlusion (glTF: indirect light
 // only) darkens the diffuse term and, through specular occlusion, the specular one.
 vec3 imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float metallic, float roughness) {
-    float ao = 1.0f + m.params.w * (sampleSlot(occlusionTexture, CANDELA_TEX_OCCLUSION).r - 1.0f);
+    float ao = 1.0f + m.occlusionStrength * (sampleSlot(occlusionTexture, CANDELA_TEX_OCCLUSION).r - 1.0f);
     float NoV = clamp(dot(n, v), CANDELA_MIN_NOV, 1.0f);
     vec3 r = iblLookupDirection(reflect(-v, n), push.ibl.rotation);
     vec3 nEnv = iblLookupDirection(n, push.ibl.rotation);
     // Roughness 0 reads mip 0 (the environment) exactly; the mips in between are linearly blended.
-    vec3 prefiltered = textureLod(specularCube, r, roughness * push.ibl.params.y).rgb;
+    vec3 prefiltered = textureLod(specularCube, r, roughness * push.ibl.maxLod).rgb;
     vec3 irradiance;
     if (kIrradianceSh) {
         irradiance = vec3(0.0f);
@@ -112,12 +112,12 @@ vec3 imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float metal
     } else {
         irradiance = textureLod(irradianceCube, nEnv, 0.0f).rgb;
     }
-    vec2 lut = textureLod(brdfLut, brdfLutUv(NoV, roughness, push.ibl.params.w), 0.0f).rg;
+    vec2 lut = textureLod(brdfLut, brdfLutUv(NoV, roughness, push.ibl.lutSize), 0.0f).rg;
     vec3 f0 = mix(vec3(0.04f), baseColor, metallic);
     vec3 diffuseColor = baseColor * (1.0f - metallic);
     vec3 light = iblShade(prefiltered, irradiance, lut, f0, diffuseColor, kMultiscatter, ao,
                           specularOcclusion(NoV, ao, roughness));
-    return light * push.ibl.params.x;
+    return light * push.ibl.intensity;
 }
 
 // Radiance of the environment in world direction `d` for the ground truth: its equirectangular
@@ -199,14 +199,14 @@ vec3 referenceImageBasedLight(vec3 n, vec3 v, vec3 baseColor, float metallic, fl
             }
         }
     }
-    return (sampled + summed) * push.ibl.params.x;  // no occlusion texture in the report's scene
+    return (sampled + summed) * push.ibl.intensity;  // no occlusion texture in the report's scene
 }
 
 void main() {
     MaterialData m = materials[draws[push.counts.y].material.x];
     vec4 baseColor = m.baseColorFactor * inColor * sampleSlot(baseColorTexture, CANDELA_TEX_BASE_COLOR);
-    if (kAlphaMask && baseColor.a < m.alpha.x) discard;
-    float alpha = m.alpha.y == float(CANDELA_ALPHA_BLEND) ? baseColor.a : 1.0f;
+    if (kAlphaMask && baseColor.a < m.alphaCutoff) discard;
+    float alpha = m.alphaMode == float(CANDELA_ALPHA_BLEND) ? baseColor.a : 1.0f;
 
     if (kUnlit) {
         outColor = vec4(baseColor.rgb * alpha, alpha);
@@ -214,8 +214,8 @@ void main() {
     }
 
     vec4 mr = sampleSlot(metallicRoughnessTexture, CANDELA_TEX_METALLIC_ROUGHNESS);
-    float metallic = clamp(m.params.x * mr.b, 0.0f, 1.0f);
-    float roughness = clamp(m.params.y * mr.g, 0.0f, 1.0f);
+    float metallic = clamp(m.metallic * mr.b, 0.0f, 1.0f);
+    float roughness = clamp(m.roughness * mr.g, 0.0f, 1.0f);
     vec3 n = shadingNormal(m);
     vec3 v = normalize(push.eye.xyz - inWorldPosition);
 
@@ -235,7 +235,7 @@ void main() {
                 if (light.directionType.w == float(CANDELA_LIGHT_SPOT))
                     attenuation *= spotAttenuation(-l, light.directionType.xyz, light.cone);
             }
-            color += brdfTimesCosine(n, v, l, baseColor.rgb, metallic, roughness, kShadingModel) * light.color.rgb *
+            color += brdfTimesCosine(n, v, l, baseColor.rgb, metallic, roughness, kShadingModel) * (light.color * light.intensity) *
                      attenuation;
         }
     }

@@ -19,6 +19,6 @@ void main() {
     // A point on the near plane (reverse-Z: depth 1) through this pixel; the view ray is from the eye.
     vec4 nearPoint = push.inverseViewProjection * vec4(inUv * 2.0f - 1.0f, 1.0f, 1.0f);
     vec3 direction = normalize(nearPoint.xyz / nearPoint.w - push.eye.xyz);
-    vec3 radiance = textureLod(specularCube, iblLookupDirection(direction, push.ibl.rotation), push.ibl.params.z).rgb;
-    outColor = vec4(min(radiance * push.ibl.params.x, vec3(60000.0f)), 1.0f);
+    vec3 radiance = textureLod(specularCube, iblLookupDirection(direction, push.ibl.rotation), push.ibl.skyboxLod).rgb;
+    outColor = vec4(min(radiance * push.ibl.intensity, vec3(60000.0f)), 1.0f);
 }

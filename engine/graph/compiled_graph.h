@@ -23,6 +23,11 @@ struct PassInfo {
     uint32_t pass = kInvalidIndex;  // index into GraphDecl::passes
     CullReason cullReason = CullReason::None;
     std::string cullDetail;         // human-readable, names the resource and pass that caused it
+    // A disabled pass whose writes all preserve their contents (it only adds to them): later
+    // passes read what it would have drawn over, instead of being culled.
+    bool bypassed = false;
+    // Resources this pass draws over whose producer does not run: cleared (AccessDecl::clearIfLost).
+    std::vector<uint32_t> clearedLostInputs;
 };
 
 // Memory a resource needs, as the device reports it (or a size model in tests).

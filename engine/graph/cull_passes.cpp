@@ -1,5 +1,12 @@
 // Step "cull": decides which passes run. First availability (disabled passes and everything that
 // needs their results), then reference counting from the outputs over the dependency graph.
+//
+// Two refinements keep switched-off passes from taking the frame down with them:
+//  - A disabled pass that only adds to what it writes (every write preserves) is bypassed: a pass
+//    needing its result needs what it would have drawn over instead (switching off the skybox
+//    leaves the scene on a black background rather than culling the tonemap).
+//  - A write declared with clearIfLost (PassBuilder::drawOver) survives the loss of its input:
+//    the attachment is cleared instead (the UI stays up when the tonemap is switched off).
 
 #include "graph/compile_steps.h"
 
@@ -21,30 +28,72 @@ bool isRoot(const GraphDecl& decl, const PassDecl& pass) {
     return false;
 }
 
+bool bypassable(const PassDecl& pass) {
+    if (pass.writes.empty()) return false;
+    for (const AccessDecl& access : pass.writes)
+        if (access.mode != WriteMode::Preserve) return false;
+    return true;
+}
+
+// The passes that actually provide what a consumer of `edge.pass` needs: the pass itself, or —
+// through a bypassed pass — the producers of everything it would have drawn over (none where the
+// chain starts at an imported version; all of its writes, as an edge names one resource per pass).
+// Precondition: producers visited first.
+void providers(const GraphDecl& decl, const GraphAnalysis& analysis, const CompiledGraph& compiled,
+               const PassEdge& edge, std::vector<uint32_t>& out) {
+    if (!compiled.passes[edge.pass].bypassed) {
+        out.push_back(edge.pass);
+        return;
+    }
+    for (const AccessDecl& write : decl.passes[edge.pass].writes) {
+        const uint32_t before = analysis.producers[write.resource][write.version - 1];
+        if (before != kInvalidIndex) providers(decl, analysis, compiled, {before, write.resource}, out);
+    }
+}
+
+bool clearsIfLost(const PassDecl& pass, uint32_t resource) {
+    for (const AccessDecl& access : pass.writes)
+        if (access.resource == resource && access.clearIfLost) return true;
+    return false;
+}
+
 }  // namespace
 
 void cullPasses(const GraphDecl& decl, const GraphAnalysis& analysis, CompiledGraph& compiled) {
     // Producers come first in topological order, so their verdict is known when a consumer is visited.
+    std::vector<uint32_t> provided;
     for (uint32_t p : analysis.topological) {
         PassInfo& info = compiled.passes[p];
         if (!decl.passes[p].enabled) {
             info.cullReason = CullReason::Disabled;
-            info.cullDetail = "disabled";
+            info.bypassed = bypassable(decl.passes[p]);
+            info.cullDetail = info.bypassed ? "disabled (bypassed: later passes read what it would have drawn over)"
+                                            : "disabled";
             continue;
         }
         for (const PassEdge& dependency : analysis.dependencies[p]) {
-            const CullReason producerReason = compiled.passes[dependency.pass].cullReason;
-            if (!culledUnavailable(producerReason)) continue;
-            info.cullReason = CullReason::LostInput;
-            info.cullDetail = "input " + quoted(decl.resources[dependency.resource].name) +
-                              " lost: its producer " + quoted(decl.passes[dependency.pass].name) +
-                              (producerReason == CullReason::Disabled ? " is disabled"
-                                                                      : " was culled (lost input)");
-            break;
+            provided.clear();
+            providers(decl, analysis, compiled, dependency, provided);
+            for (uint32_t producer : provided) {
+                const CullReason producerReason = compiled.passes[producer].cullReason;
+                if (!culledUnavailable(producerReason)) continue;
+                if (clearsIfLost(decl.passes[p], dependency.resource)) {
+                    info.clearedLostInputs.push_back(dependency.resource);
+                    continue;
+                }
+                info.cullReason = CullReason::LostInput;
+                info.cullDetail = "input " + quoted(decl.resources[dependency.resource].name) +
+                                  " lost: its producer " + quoted(decl.passes[producer].name) +
+                                  (producerReason == CullReason::Disabled ? " is disabled"
+                                                                          : " was culled (lost input)");
+                break;
+            }
+            if (info.cullReason != CullReason::None) break;
         }
     }
 
-    // Keep every available pass an output depends on, following dependencies backwards.
+    // Keep every available pass an output depends on, following dependencies backwards (through
+    // bypassed passes to what they would have drawn over).
     std::vector<bool> kept(decl.passes.size(), false);
     std::vector<uint32_t> stack;
     for (uint32_t p = 0; p < decl.passes.size(); ++p) {
@@ -57,9 +106,13 @@ void cullPasses(const GraphDecl& decl, const GraphAnalysis& analysis, CompiledGr
         const uint32_t p = stack.back();
         stack.pop_back();
         for (const PassEdge& dependency : analysis.dependencies[p]) {
-            if (kept[dependency.pass]) continue;
-            kept[dependency.pass] = true;
-            stack.push_back(dependency.pass);
+            provided.clear();
+            providers(decl, analysis, compiled, dependency, provided);
+            for (uint32_t producer : provided) {
+                if (kept[producer] || compiled.passes[producer].cullReason != CullReason::None) continue;
+                kept[producer] = true;
+                stack.push_back(producer);
+            }
         }
     }
     for (uint32_t p = 0; p < decl.passes.size(); ++p) {

@@ -37,6 +37,9 @@ struct AccessDecl {
     WriteMode mode = WriteMode::Preserve;     // writes only
     // Attachments only: clear value applied when the pass begins rendering (mode must be Discard).
     std::optional<VkClearValue> clear;
+    // Preserving attachment writes only: when the pass that should produce the consumed version
+    // does not run, clear to this value instead of culling this pass (overlays such as the UI).
+    std::optional<VkClearValue> clearIfLost;
 };
 
 struct PassDecl {

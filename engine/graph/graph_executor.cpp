@@ -55,6 +55,16 @@ VkExtent2D PassContext::extent(TextureId texture) const {
     return {d.width, d.height};
 }
 
+std::optional<VkClearValue> PassContext::lostContentsClear(TextureId written) const {
+    const PassInfo& info = mGraph->compiled().passes[static_cast<size_t>(mPass - mGraph->declaration().passes.data())];
+    for (const AccessDecl& a : mPass->writes)
+        if (a.resource == written.index && a.version == written.version && a.clearIfLost &&
+            std::find(info.clearedLostInputs.begin(), info.clearedLostInputs.end(), a.resource) !=
+                info.clearedLostInputs.end())
+            return a.clearIfLost;
+    return std::nullopt;
+}
+
 void PassContext::beginRendering() const {
     std::vector<VkRenderingAttachmentInfo> colors;
     VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
@@ -71,6 +81,9 @@ void PassContext::beginRendering() const {
         if (a.clear) {
             info.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
             info.clearValue = *a.clear;
+        } else if (const std::optional<VkClearValue> fallback = write ? lostContentsClear(id) : std::nullopt) {
+            info.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+            info.clearValue = *fallback;
         } else if (write && a.mode == WriteMode::Discard) {
             info.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
         }

@@ -50,6 +50,11 @@ public:
     const TextureDesc& desc(TextureId texture) const;
     VkExtent2D extent(TextureId texture) const;
 
+    // For an attachment the pass draws over (PassBuilder::drawOver) whose producer did not run:
+    // the value to clear it to before drawing; nullopt when its contents are there to load.
+    // beginRendering() applies it; passes with their own render pass clear it themselves.
+    std::optional<VkClearValue> lostContentsClear(TextureId written) const;
+
     // Begins dynamic rendering on the pass's declared colour/depth attachments (load op from the
     // declaration: clear, load, or don't-care for discarding writes) and sets viewport and scissor
     // to the first attachment's size.

@@ -93,6 +93,15 @@ TextureId PassBuilder::writeColor(TextureId texture, std::optional<VkClearColorV
     return {texture.index, access.version};
 }
 
+TextureId PassBuilder::drawOver(TextureId texture, VkClearColorValue fallback) {
+    AccessDecl& access = mGraph.addWrite(mPass, ResourceKind::Texture, texture.index, texture.version,
+                                         Usage::ColorAttachment, WriteMode::Preserve, 0);
+    VkClearValue value{};
+    value.color = fallback;
+    access.clearIfLost = value;
+    return {texture.index, access.version};
+}
+
 TextureId PassBuilder::writeDepth(TextureId texture, std::optional<float> clearDepth) {
     AccessDecl& access = mGraph.addWrite(mPass, ResourceKind::Texture, texture.index, texture.version,
                                          Usage::DepthAttachment,

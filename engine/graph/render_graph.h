@@ -57,6 +57,10 @@ public:
     // Colour/depth attachments of a graphics pass, in declaration order. With a clear value the
     // previous contents are discarded and cleared; without, they are loaded (preserved).
     TextureId writeColor(TextureId texture, std::optional<VkClearColorValue> clear);
+    // A colour attachment drawn over (loaded), which keeps the pass alive when the producer of
+    // `texture` does not run: the attachment is then cleared to `fallback`. For overlays, such as
+    // the UI, that must stay visible whatever else is switched off.
+    TextureId drawOver(TextureId texture, VkClearColorValue fallback);
     TextureId writeDepth(TextureId texture, std::optional<float> clearDepth);
 
     // Keeps the pass alive even if no output depends on it.

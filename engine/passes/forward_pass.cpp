@@ -102,7 +102,7 @@ void ForwardPass::setIblMaps(const ibl::IblMaps& maps) {
 }
 
 ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
-                                     ShadingModel model, const Ibl* ibl) {
+                                     ShadingModel model, const Ibl* ibl, shader::ParameterRegistry* parameters) {
     const scene::Scene& scene = mScene->scene();
     std::vector<DrawItem> opaque, blended;
     std::map<std::string, uint32_t> variantCounts;
@@ -138,6 +138,7 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
     push.eye = glm::vec4(view.eye, 1.0f);
     push.counts = glm::uvec4(mScene->lightCount(), 0, 0, 0);
     if (ibl) push.ibl = ibl->params;
+    if (parameters) parameters->apply("forward", "Push", reflection().pushConstants.members, push);
     const scene::GpuScene* gpuScene = mScene;
     const VkDescriptorSet sceneSet = mSceneSet;
     const VkDescriptorSet iblSet = mIblSet;

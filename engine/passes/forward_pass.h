@@ -5,6 +5,7 @@
 // specialization constants, so what a draw does not use costs nothing.
 
 #include "graph/render_graph.h"
+#include "shader/parameter_registry.h"
 #include "ibl/ibl_maps.h"
 #include "shared/ibl.h"
 #include "scene/camera.h"
@@ -50,8 +51,11 @@ public:
     };
     // Adds the pass drawing the current scene as seen from `view`, lit by the scene's lights and,
     // when `ibl` is given, the environment. Returns the written targets.
+    // With `parameters`, the user's values for the per-frame push constants apply ("forward", "Push").
     Output add(graph::RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
-               ShadingModel model, const Ibl* ibl = nullptr);
+               ShadingModel model, const Ibl* ibl = nullptr, shader::ParameterRegistry* parameters = nullptr);
+    // The reflection of the forward shaders (every variant shares the layout).
+    const shader::ShaderReflection& reflection() { return pipeline(Variant{}).program().reflection(); }
 
     // What the last add() used and left out, one line each, for `--explain`.
     const std::vector<std::string>& explanation() const { return mExplanation; }

@@ -98,7 +98,8 @@ TextureId ImGuiPass::add(RenderGraph& graph, TextureId target) {
     VkRenderPass renderPass = mRenderPass;
     const Data& data = graph.addPass<Data>(
         "imgui", PassType::Graphics,
-        [&](PassBuilder& builder, Data& d) { d.target = builder.writeColor(target, std::nullopt); },
+        // Drawn over the frame; kept (on black) when the passes before it are switched off.
+        [&](PassBuilder& builder, Data& d) { d.target = builder.drawOver(target, VkClearColorValue{{0.0f, 0.0f, 0.0f, 1.0f}}); },
         [device, renderPass](const Data& d, PassContext& ctx) {
             ImDrawData* drawData = ImGui::GetDrawData();
             if (!drawData) return;
@@ -120,6 +121,11 @@ TextureId ImGuiPass::add(RenderGraph& graph, TextureId target) {
                                               .framebuffer = handle,
                                               .renderArea = {{0, 0}, extent}};
             vkCmdBeginRenderPass(ctx.cmd(), &begin, VK_SUBPASS_CONTENTS_INLINE);
+            if (const std::optional<VkClearValue> clear = ctx.lostContentsClear(d.target)) {
+                const VkClearAttachment attachment{VK_IMAGE_ASPECT_COLOR_BIT, 0, *clear};
+                const VkClearRect rect{{{0, 0}, extent}, 0, 1};
+                vkCmdClearAttachments(ctx.cmd(), 1, &attachment, 1, &rect);
+            }
             ImGui_ImplVulkan_RenderDrawData(drawData, ctx.cmd());
             vkCmdEndRenderPass(ctx.cmd());
         });

@@ -19,15 +19,17 @@ SkyboxPass::SkyboxPass(vk::Context& context)
                                         .depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL,
                                         .blend = vk::BlendMode::Under})) {}
 
-TextureId SkyboxPass::add(RenderGraph& graph, const scene::ViewSetup& view, const Inputs& in) const {
+TextureId SkyboxPass::add(RenderGraph& graph, const scene::ViewSetup& view, const Inputs& in,
+                          shader::ParameterRegistry* parameters) const {
     struct Data {
         TextureId hdr;
         TextureId depth;
         TextureId specular;
     };
-    const shading::SkyboxPush push{.inverseViewProjection = glm::inverse(view.viewProjection),
+    shading::SkyboxPush push{.inverseViewProjection = glm::inverse(view.viewProjection),
                                    .eye = glm::vec4(view.eye, 1.0f),
                                    .ibl = in.params};
+    if (parameters) parameters->apply("skybox", "Push", mPipeline.program().reflection().pushConstants.members, push);
     const Data& data = graph.addPass<Data>(
         "skybox", PassType::Graphics,
         [&](PassBuilder& builder, Data& d) {

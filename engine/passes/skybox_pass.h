@@ -6,6 +6,7 @@
 // blur level's mip.
 
 #include "graph/render_graph.h"
+#include "shader/parameter_registry.h"
 #include "scene/camera.h"
 #include "shared/ibl.h"
 #include "vk/pipeline.h"
@@ -22,10 +23,12 @@ public:
         graph::TextureId specular;  // specular cube (imported)
         VkImageView specularView;   // its cube view (caller-owned)
         VkSampler sampler;          // trilinear
-        shading::IblParams params;  // params.z = skybox lod
+        shading::IblParams params;  // skyboxLod: the mip shown
     };
     // Adds the pass; returns the HDR target's new version. The pass object must outlive execution.
-    graph::TextureId add(graph::RenderGraph& graph, const scene::ViewSetup& view, const Inputs& inputs) const;
+    // With `parameters`, the user's values for its push constants apply ("skybox", "Push").
+    graph::TextureId add(graph::RenderGraph& graph, const scene::ViewSetup& view, const Inputs& inputs,
+                         shader::ParameterRegistry* parameters = nullptr) const;
 
 private:
     vk::Pipeline mPipeline;

@@ -51,7 +51,8 @@ const vk::Pipeline& TonemapPass::pipelineFor(VkFormat format, const std::vector<
     return it->second;
 }
 
-TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, const TonemapSettings& settings) {
+TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, const TonemapSettings& settings,
+                           shader::ParameterRegistry* parameters) {
     struct Data {
         TextureId hdr;
         TextureId target;
@@ -62,7 +63,8 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
                               settings.background ? 1u : 0u});
     shading::TonemapParams params{};
     params.background = settings.background ? glm::vec4(*settings.background, 1.0f) : glm::vec4(0.0f);
-    params.exposureScale = std::exp2(settings.exposureEv);
+    params.exposureEv = settings.exposureEv;
+    if (parameters) parameters->apply("tonemap", "Push", pipeline->program().reflection().pushConstants.members, params);
     const vk::Sampler* sampler = &mSampler;
     const Data& data = graph.addPass<Data>(
         "tonemap", PassType::Graphics,

@@ -3,6 +3,7 @@
 // encoding of the HDR frame into an 8-bit target (full-screen triangle).
 
 #include "graph/render_graph.h"
+#include "shader/parameter_registry.h"
 #include "vk/pipeline.h"
 #include "vk/sampler.h"
 
@@ -36,8 +37,9 @@ public:
 
     // Adds the pass: samples `hdr` (RGBA16F, alpha = coverage), writes all of `target` (same size;
     // an _SRGB format is encoded by the hardware, a UNORM one by the shader). Returns its new version.
+    // With `parameters`, the user's values for its push constants apply ("tonemap", "Push").
     graph::TextureId add(graph::RenderGraph& graph, graph::TextureId hdr, graph::TextureId target,
-                         const TonemapSettings& settings);
+                         const TonemapSettings& settings, shader::ParameterRegistry* parameters = nullptr);
 
 private:
     // Pipelines by target format and specialization (operator, sRGB encode, dither, background).

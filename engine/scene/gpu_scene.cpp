@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <stdexcept>
 
 namespace candela::scene {
 namespace {
@@ -48,11 +49,15 @@ MaterialData materialData(const Material& m) {
     MaterialData out{};
     out.baseColorFactor = m.baseColorFactor;
     out.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f);
-    out.params = glm::vec4(m.metallicFactor, m.roughnessFactor, m.normalScale, m.occlusionStrength);
+    out.metallic = m.metallicFactor;
+    out.roughness = m.roughnessFactor;
+    out.normalScale = m.normalScale;
+    out.occlusionStrength = m.occlusionStrength;
     const float mode = m.alphaMode == AlphaMode::Mask ? float(CANDELA_ALPHA_MASK)
                        : m.alphaMode == AlphaMode::Blend ? float(CANDELA_ALPHA_BLEND)
                                                          : float(CANDELA_ALPHA_OPAQUE);
-    out.alpha = glm::vec4(m.alphaCutoff, mode, 0.0f, 0.0f);
+    out.alphaCutoff = m.alphaCutoff;
+    out.alphaMode = mode;
     const TextureRef* refs[] = {&m.baseColor, &m.metallicRoughness, &m.normal, &m.occlusion, &m.emissive};
     for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) out.uv[slot] = uvTransform(*refs[slot]);
     return out;
@@ -65,7 +70,8 @@ LightData lightData(const Light& l) {
                                                       : float(CANDELA_LIGHT_POINT);
     out.positionRange = glm::vec4(l.position, l.range);
     out.directionType = glm::vec4(glm::normalize(l.direction), type);
-    out.color = glm::vec4(l.color * l.intensity, 0.0f);
+    out.color = l.color;
+    out.intensity = l.intensity;
     const float cosOuter = std::cos(l.outerConeAngle), cosInner = std::cos(l.innerConeAngle);
     const float scale = 1.0f / std::max(cosInner - cosOuter, 1e-4f);
     out.cone = glm::vec4(scale, -cosOuter * scale, 0.0f, 0.0f);
@@ -84,12 +90,12 @@ vk::Image solidTexture(vk::Context& context, vk::Uploader& uploader, std::array<
 }  // namespace
 
 GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights, float maxAnisotropy)
-    : mScene(&scene) {
+    : mScene(&scene), mContext(&context) {
     vk::Uploader uploader(context);
     mVertices = uploadedBuffer(context, uploader, scene.vertices, "vertices", VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     mIndices = uploadedBuffer(context, uploader, scene.indices, "indices", VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
-    std::vector<LightData> lights;
+    std::vector<LightData>& lights = mSceneLights;
     for (const Light& l : scene.lights) lights.push_back(lightData(l));
     for (const Light& l : extraLights) lights.push_back(lightData(l));
     mLightCount = static_cast<uint32_t>(lights.size());
@@ -105,9 +111,11 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     }
     mDraws = uploadedBuffer(context, uploader, draws, "draws");
 
-    std::vector<MaterialData> materials;
+    std::vector<MaterialData>& materials = mSceneMaterials;
     for (const Material& m : scene.materials) materials.push_back(materialData(m));
     mMaterials = uploadedBuffer(context, uploader, materials, "materials");
+    mLightData = mSceneLights;
+    mMaterialData = mSceneMaterials;
 
     for (const Image& source : scene.images) {
         const uint32_t mips = std::bit_width(std::max(source.width, source.height));
@@ -153,6 +161,17 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
         }
         mBindings.push_back(bindings);
     }
+}
+
+void GpuScene::rewrite(const std::vector<LightData>& lights, const std::vector<MaterialData>& materials) {
+    if (lights.size() != mSceneLights.size() || materials.size() != mSceneMaterials.size())
+        throw std::invalid_argument("GpuScene::rewrite: the light and material counts cannot change");
+    vk::Uploader uploader(*mContext);
+    if (!lights.empty()) uploader.buffer(mLights, std::as_bytes(std::span(lights)));
+    if (!materials.empty()) uploader.buffer(mMaterials, std::as_bytes(std::span(materials)));
+    uploader.submitAndWait();
+    mLightData = lights;
+    mMaterialData = materials;
 }
 
 GpuScene::Binding GpuScene::texture(uint32_t material, int slot) const { return mBindings.at(material)[slot]; }

@@ -1,9 +1,11 @@
 #pragma once
 // GpuScene: a scene::Scene uploaded to the device — vertex and index buffers, storage buffers of
 // lights, draws and materials (shared/scene_data.h layouts), textures with generated mip chains,
-// samplers, and 1×1 defaults for absent textures. Immutable after upload; re-upload on change.
+// samplers, and 1×1 defaults for absent textures. Geometry and textures are immutable after
+// upload (re-upload on change); the light and material buffers can be rewritten (live edits).
 
 #include "scene/scene.h"
+#include "shared/scene_data.h"
 #include "vk/buffer.h"
 #include "vk/image.h"
 #include "vk/sampler.h"
@@ -28,6 +30,16 @@ public:
     VkBuffer materialBuffer() const { return mMaterials.handle(); }
     uint32_t lightCount() const { return mLightCount; }
 
+    // The lights and materials as the scene defines them, and as the buffers hold them now
+    // (shared/scene_data.h layouts).
+    const std::vector<shading::LightData>& sceneLights() const { return mSceneLights; }
+    const std::vector<shading::MaterialData>& sceneMaterials() const { return mSceneMaterials; }
+    const std::vector<shading::LightData>& lights() const { return mLightData; }
+    const std::vector<shading::MaterialData>& materials() const { return mMaterialData; }
+    // Rewrites both buffers (same element counts as the scene's) and waits for the copy.
+    // Precondition: no frame in flight reads them (the caller waits for the GPU).
+    void rewrite(const std::vector<shading::LightData>& lights, const std::vector<shading::MaterialData>& materials);
+
     // The view and sampler bound to texture slot `slot` (CANDELA_TEX_*) of material `material`:
     // the material's texture, or a 1×1 default (white, or a flat normal for the normal slot).
     struct Binding {
@@ -42,6 +54,9 @@ private:
     const Scene* mScene;
     vk::Buffer mVertices, mIndices, mLights, mDraws, mMaterials;
     uint32_t mLightCount = 0;
+    vk::Context* mContext;
+    std::vector<shading::LightData> mSceneLights, mLightData;
+    std::vector<shading::MaterialData> mSceneMaterials, mMaterialData;
     std::vector<vk::Image> mImages;
     std::vector<vk::Sampler> mSamplers;
     vk::Sampler mDefaultSampler;

@@ -3,6 +3,7 @@
 #include <spirv_cross/spirv_cross_c.h>
 
 #include <algorithm>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -41,9 +42,13 @@ BaseType baseTypeOf(spvc_basetype type) {
     }
 }
 
+using AnnotationMap = std::map<std::string, Annotation>;
+
 void collectMembers(spvc_compiler compiler, spvc_type_id structId, const std::string& prefix, uint32_t baseOffset,
-                    std::vector<BlockMember>& out) {
+                    const AnnotationMap& annotations, std::vector<BlockMember>& out) {
     spvc_type type = spvc_compiler_get_type_handle(compiler, structId);
+    const char* structName = spvc_compiler_get_name(compiler, structId);
+    const std::string typeName = structName ? structName : "";
     const unsigned count = spvc_type_get_num_member_types(type);
     for (unsigned i = 0; i < count; ++i) {
         const spvc_type_id memberId = spvc_type_get_member_type(type, i);
@@ -56,7 +61,7 @@ void collectMembers(spvc_compiler compiler, spvc_type_id structId, const std::st
         const std::string name = prefix + (rawName && *rawName ? rawName : "_m" + std::to_string(i));
         const unsigned dims = spvc_type_get_num_array_dimensions(member);
         if (spvc_type_get_basetype(member) == SPVC_BASETYPE_STRUCT && dims == 0) {
-            collectMembers(compiler, memberId, name + ".", baseOffset + offset, out);
+            collectMembers(compiler, memberId, name + ".", baseOffset + offset, annotations, out);
             continue;
         }
         BlockMember m{.name = name,
@@ -64,13 +69,47 @@ void collectMembers(spvc_compiler compiler, spvc_type_id structId, const std::st
                       .size = static_cast<uint32_t>(size),
                       .type = baseTypeOf(spvc_type_get_basetype(member)),
                       .vectorSize = spvc_type_get_vector_size(member),
-                      .columns = spvc_type_get_columns(member)};
-        for (unsigned d = 0; d < dims; ++d) m.arraySize *= std::max(1u, spvc_type_get_array_dimension(member, d));
+                      .columns = spvc_type_get_columns(member),
+                      .structName = typeName};
+        if (const auto it = annotations.find(typeName + "." + (rawName ? rawName : "")); it != annotations.end())
+            m.annotation = it->second;
+        for (unsigned d = 0; d < dims; ++d) m.arraySize *= spvc_type_get_array_dimension(member, d);
+        if (dims > 0) {
+            unsigned stride = 0;
+            spvc_compiler_type_struct_member_array_stride(compiler, type, i, &stride);
+            m.arrayStride = stride;
+            if (spvc_type_get_basetype(member) == SPVC_BASETYPE_STRUCT)
+                collectMembers(compiler, spvc_type_get_base_type_id(member), "", 0, annotations, m.elementMembers);
+        }
         out.push_back(std::move(m));
     }
 }
 
 }  // namespace
+
+std::vector<std::string> embeddedSources(std::span<const uint32_t> spirv) {
+    // Instruction stream after the 5-word header: (word count << 16 | opcode), operands.
+    constexpr uint32_t kOpSourceContinued = 2, kOpSource = 3;
+    std::vector<std::string> sources;
+    const auto literal = [&](size_t first, size_t end) {
+        std::string text;
+        for (size_t w = first; w < end; ++w)
+            for (int b = 0; b < 4; ++b) {
+                const char c = static_cast<char>((spirv[w] >> (8 * b)) & 0xffu);
+                if (c == '\0') return text;
+                text += c;
+            }
+        return text;
+    };
+    for (size_t at = 5; at < spirv.size();) {
+        const uint32_t count = spirv[at] >> 16, opcode = spirv[at] & 0xffffu;
+        if (count == 0 || at + count > spirv.size()) break;  // malformed: stop, never read past the end
+        if (opcode == kOpSource && count > 4) sources.push_back(literal(at + 4, at + count));  // language, version, file, text
+        if (opcode == kOpSourceContinued && count > 1 && !sources.empty()) sources.back() += literal(at + 1, at + count);
+        at += count;
+    }
+    return sources;
+}
 
 ShaderReflection reflectSpirv(std::span<const uint32_t> spirv, const std::string& debugName) {
     SpvcContext context;
@@ -83,6 +122,9 @@ ShaderReflection reflectSpirv(std::span<const uint32_t> spirv, const std::string
             SPVC_SUCCESS)
         throw std::runtime_error("cannot reflect shader " + debugName + ": " +
                                  spvc_context_get_last_error_string(context.handle));
+
+    AnnotationMap annotations;
+    for (const std::string& source : embeddedSources(spirv)) annotations.merge(parseAnnotations(source));
 
     ShaderReflection out;
     out.stage = stageOf(spvc_compiler_get_execution_model(compiler));
@@ -116,7 +158,7 @@ ShaderReflection reflectSpirv(std::span<const uint32_t> spirv, const std::string
             for (unsigned d = 0; d < spvc_type_get_num_array_dimensions(type); ++d)
                 binding.count *= std::max(1u, spvc_type_get_array_dimension(type, d));
             if (kind.vk == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER || kind.vk == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
-                collectMembers(compiler, list[i].base_type_id, "", 0, binding.members);
+                collectMembers(compiler, list[i].base_type_id, "", 0, annotations, binding.members);
             out.bindings.push_back(std::move(binding));
         }
     }
@@ -133,7 +175,7 @@ ShaderReflection reflectSpirv(std::span<const uint32_t> spirv, const std::string
                                                &size);
         out.pushConstants.size = static_cast<uint32_t>(size);
         out.pushConstants.stages = out.stage;
-        collectMembers(compiler, push[0].base_type_id, "", 0, out.pushConstants.members);
+        collectMembers(compiler, push[0].base_type_id, "", 0, annotations, out.pushConstants.members);
     }
     return out;
 }

@@ -3,6 +3,8 @@
 // the members of uniform/push-constant blocks. Pipeline layouts are built from this, so no binding
 // is written twice (once in GLSL, once in C++).
 
+#include "shader/annotations.h"
+
 #include <vulkan/vulkan_core.h>
 
 #include <cstdint>
@@ -22,7 +24,12 @@ struct BlockMember {
     BaseType type = BaseType::Other;
     uint32_t vectorSize = 1;  // components per column
     uint32_t columns = 1;
-    uint32_t arraySize = 1;   // 1 for non-arrays
+    uint32_t arraySize = 1;   // 1 for non-arrays; 0 for a runtime-sized array
+    std::string structName;   // the struct or block that declares the member ("TonemapParams")
+    Annotation annotation;    // from the GLSL comments kept in the SPIR-V (see annotations.h)
+    // Arrays of structs: the element's members (offsets from the element's start) and the stride.
+    std::vector<BlockMember> elementMembers;
+    uint32_t arrayStride = 0;
 };
 
 struct DescriptorBinding {
@@ -47,7 +54,11 @@ struct ShaderReflection {
     PushConstantBlock pushConstants;
 };
 
-// Reflects one SPIR-V module. Throws std::runtime_error naming `debugName` if it cannot be parsed.
+// The GLSL source texts embedded in a SPIR-V module (OpSource/OpSourceContinued, present when it
+// was compiled with debug information: glslangValidator -g), main file and included headers.
+std::vector<std::string> embeddedSources(std::span<const uint32_t> spirv);
+
+// Reflects one SPIR-V module; block members carry the annotations of its embedded sources. Throws std::runtime_error naming `debugName` if it cannot be parsed.
 ShaderReflection reflectSpirv(std::span<const uint32_t> spirv, const std::string& debugName);
 
 // Merges the reflection of the stages of one pipeline: bindings with the same (set, binding) are

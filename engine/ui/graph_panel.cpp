@@ -52,7 +52,11 @@ void drawGraphPanel(Viewer& viewer) {
             ImGui::TableNextColumn();
             ImGui::PushID(int(p));
             bool enabled = viewer.passEnabled(pass.name);
+            // The UI's own pass cannot be switched off from the UI (--no-ui leaves it out).
+            const bool self = pass.name == "imgui";
+            if (self) ImGui::BeginDisabled();
             if (ImGui::Checkbox("##enabled", &enabled)) viewer.setPassEnabled(pass.name, enabled);
+            if (self) ImGui::EndDisabled();
             ImGui::SameLine();
             if (culled) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
             const bool open = ImGui::TreeNodeEx(pass.name.c_str(), ImGuiTreeNodeFlags_SpanAvailWidth);

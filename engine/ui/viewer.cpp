@@ -6,6 +6,7 @@
 #include "io/image_file.h"
 #include "passes/imgui_pass.h"
 #include "scene/gltf_loader.h"
+#include "scene/picking.h"
 #include "ui/panels.h"
 #include "vk/swapchain.h"
 
@@ -231,6 +232,15 @@ void Viewer::handleInput() {
         input.rotate = mWindow->mouseButton(GLFW_MOUSE_BUTTON_RIGHT);
         input.pan = mWindow->mouseButton(GLFW_MOUSE_BUTTON_MIDDLE);
         applyPointer(mCamera, input, mSpeeds);
+        // A left click (press and release without moving) picks the mesh's material.
+        const bool left = mWindow->mouseButton(GLFW_MOUSE_BUTTON_LEFT);
+        if (left && !mPressedAt) mPressedAt = cursor;
+        if (!left && mPressedAt) {
+            if (glm::length(cursor - *mPressedAt) < 3.0f) pickMaterial(cursor);
+            mPressedAt.reset();
+        }
+    } else {
+        mPressedAt.reset();
     }
     mLastCursor = cursor;
 }
@@ -245,13 +255,17 @@ void Viewer::drawUi() {
     ImGui::SetNextWindowSize(ImVec2(mPanelWidth, viewport->WorkSize.y), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin("Candela", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushItemWidth(mPanelWidth * 0.55f);
     ImGui::TextUnformatted(mScene.source.c_str());
     if (!mStatus.empty())
         ImGui::TextColored(mStatusIsError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.6f, 0.9f, 0.6f, 1.0f), "%s",
                            mStatus.c_str());
     if (ImGui::CollapsingHeader("Render graph", ImGuiTreeNodeFlags_DefaultOpen)) drawGraphPanel(*this);
+    if (ImGui::CollapsingHeader("Shader parameters", ImGuiTreeNodeFlags_DefaultOpen)) drawParameterPanel(*this);
+    if (ImGui::CollapsingHeader("Materials")) drawMaterialPanel(*this);
     if (ImGui::CollapsingHeader("Camera")) drawCameraPanel(*this);
     if (ImGui::CollapsingHeader("Frame stats", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(*this);
+    ImGui::PopItemWidth();
     ImGui::End();
     ImGui::Render();
 }
@@ -274,6 +288,32 @@ bool Viewer::ensureSwapchain(VkExtent2D extent) {
     return true;
 }
 
+RenderSettings Viewer::frameSettings(VkExtent2D extent) const {
+    RenderSettings settings = mSettings;
+    settings.width = extent.width;
+    settings.height = extent.height;
+    settings.scene = &mScene;
+    settings.environment = mEnvironment.get();
+    if (!mEnvironment) settings.ibl.skybox = false;
+    settings.camera.orbitCamera = mCamera;
+    settings.camera.lensShiftX = mUi ? mPanelWidth / float(std::max(1u, extent.width)) : 0.0f;
+    return settings;
+}
+
+bool Viewer::pickMaterial(const glm::vec2& pixel) {
+    const VkExtent2D extent = mSwapchain->extent();
+    if (extent.width == 0 || extent.height == 0) return false;
+    const RenderSettings settings = frameSettings(extent);
+    const scene::ViewSetup view =
+        Renderer::resolveView(mScene, settings.camera, float(extent.width) / float(extent.height));
+    const glm::vec2 ndc(2.0f * (pixel.x + 0.5f) / float(extent.width) - 1.0f,
+                        2.0f * (pixel.y + 0.5f) / float(extent.height) - 1.0f);
+    const std::optional<scene::Pick> pick = scene::pickDraw(mScene, scene::viewRay(view, ndc));
+    if (!pick) return false;
+    mSelectedMaterial = mScene.draws[pick->draw].material;
+    return true;
+}
+
 bool Viewer::frame() {
     mWindow->pollEvents();
     if (mWindow->shouldClose()) return false;
@@ -292,14 +332,7 @@ bool Viewer::frame() {
     if (mUi) drawUi();
     handleInput();
 
-    RenderSettings settings = mSettings;
-    settings.width = mSwapchain->extent().width;
-    settings.height = mSwapchain->extent().height;
-    settings.scene = &mScene;
-    settings.environment = mEnvironment.get();
-    if (!mEnvironment) settings.ibl.skybox = false;
-    settings.camera.orbitCamera = mCamera;
-    settings.camera.lensShiftX = mUi ? mPanelWidth / float(settings.width) : 0.0f;
+    const RenderSettings settings = frameSettings(mSwapchain->extent());
     const PresentTarget target{.image = image->image,
                                .view = image->view,
                                .format = mSwapchain->format(),

@@ -74,6 +74,11 @@ public:
     void resetCamera();  // R: the initial view
     void setVsync(bool vsync);
     bool vsync() const;
+    // The material inspector's selection; pickMaterial selects the material of the mesh under
+    // window position `pixel` (returns false if no mesh is there).
+    void selectMaterial(uint32_t material) { mSelectedMaterial = material; }
+    uint32_t selectedMaterial() const { return mSelectedMaterial; }
+    bool pickMaterial(const glm::vec2& pixel);
     // Writes the last frame's graph (with the latest measured GPU times) as JSON or Graphviz dot.
     bool exportGraph(const std::filesystem::path& path, bool json);
     // Testing hook: treat the window as minimized (a window system without a window manager, such
@@ -106,6 +111,8 @@ private:
     void setStatus(std::string line, bool error = false);
     // Width / height of the part of the window the side panel leaves free.
     float visibleAspect() const;
+    // The settings of the next frame: the scene, environment and camera of the viewer.
+    RenderSettings frameSettings(VkExtent2D extent) const;
 
     // Start-up order; destruction runs in reverse.
     std::unique_ptr<Window> mWindow;
@@ -133,6 +140,8 @@ private:
     uint64_t mFramesRendered = 0;
     uint64_t mFramesSkipped = 0;
     double mCpuFrameMs = 0.0;
+    uint32_t mSelectedMaterial = 0;
+    std::optional<glm::vec2> mPressedAt;  // where the left button went down (a click picks)
     std::chrono::steady_clock::time_point mLastFrame;
 };
 

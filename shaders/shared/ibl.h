@@ -66,14 +66,17 @@ struct IblLutPush {
 
 // Runtime lookup parameters, shared by the forward and skybox passes (push constants).
 struct IblParams {
-    vec4 rotation;  // x = cos θ, y = sin θ of the environment rotation about +Y; zw unused
-    vec4 params;    // x = intensity, y = specular max lod (levels − 1), z = skybox lod, w = LUT size
+    /*Ignore*/ vec4 rotation;        // x = cos θ, y = sin θ of the environment rotation about +Y; zw unused
+    /*Range(0, 4)*/ float intensity;  // scales the environment's radiance
+    /*Ignore*/ float maxLod;         // specular levels − 1
+    /*Range(0, 8)*/ float skyboxLod;  // specular mip shown by the skybox (blur)
+    /*Ignore*/ float lutSize;        // BRDF LUT texels per side
 };
 
 // skybox.frag
 struct SkyboxPush {
-    mat4 inverseViewProjection;
-    vec4 eye;  // xyz: camera position (world)
+    /*Ignore*/ mat4 inverseViewProjection;
+    /*Ignore*/ vec4 eye;  // xyz: camera position (world)
     IblParams ibl;
 };
 

@@ -1,6 +1,8 @@
 // GPU-side scene structures shared by forward.*.glsl and the C++ upload (std430 storage buffers
-// and push constants; every member is a vec4/uvec4/mat4, so the GLSL layout and the C++ struct
-// agree without padding rules).
+// and push constants; members are grouped in 16-byte vec4/uvec4/mat4 units — a vec3 followed by a
+// float, or four floats — so the GLSL layout and the C++ struct agree without padding rules).
+// The /*Color*/, /*Range(MIN, MAX)*/ and /*Ignore*/ comments are UI annotations: the viewer's
+// parameter panels are generated from the SPIR-V reflection of these structs (shader/annotations.h).
 #ifndef CANDELA_SHARED_SCENE_DATA_H
 #define CANDELA_SHARED_SCENE_DATA_H
 
@@ -27,10 +29,11 @@ CANDELA_NAMESPACE_BEGIN
 
 // One punctual light (KHR_lights_punctual), world space.
 struct LightData {
-    vec4 positionRange;   // xyz position, w range (0 = infinite)
-    vec4 directionType;   // xyz unit direction the light travels, w type (CANDELA_LIGHT_*)
-    vec4 color;           // rgb = colour × intensity, w unused
-    vec4 cone;            // x = 1/max(cos inner − cos outer, 1e-4), y = −cos outer × x (spot)
+    /*Ignore*/ vec4 positionRange;   // xyz position, w range (0 = infinite)
+    /*Ignore*/ vec4 directionType;   // xyz unit direction the light travels, w type (CANDELA_LIGHT_*)
+    /*Color*/ vec3 color;            // linear RGB
+    /*Range(0, 1000)*/ float intensity;  // candela (point, spot) or lux (directional)
+    /*Ignore*/ vec4 cone;            // x = 1/max(cos inner − cos outer, 1e-4), y = −cos outer × x (spot)
 };
 
 // One drawn primitive instance.
@@ -48,19 +51,25 @@ struct UvTransform {
 };
 
 struct MaterialData {
-    vec4 baseColorFactor;
-    vec4 emissive;        // rgb = emissiveFactor × emissiveStrength
-    vec4 params;          // x metallic, y roughness, z normalScale, w occlusionStrength
-    vec4 alpha;           // x alphaCutoff, y alphaMode (as float), zw unused
-    UvTransform uv[CANDELA_TEX_COUNT];
+    /*Color*/ vec4 baseColorFactor;  // linear RGBA
+    /*Color*/ vec4 emissive;         // rgb = emissiveFactor × emissiveStrength, w unused
+    /*Range(0, 1)*/ float metallic;
+    /*Range(0, 1)*/ float roughness;
+    /*Range(0, 2)*/ float normalScale;
+    /*Range(0, 1)*/ float occlusionStrength;
+    /*Range(0, 1)*/ float alphaCutoff;
+    /*Ignore*/ float alphaMode;      // CANDELA_ALPHA_* as float
+    /*Ignore*/ float pad0;
+    /*Ignore*/ float pad1;
+    /*Ignore*/ UvTransform uv[CANDELA_TEX_COUNT];
 };
 
 // Push constants of forward.vert/frag: the view, which draw this is and the environment lookup
 // (128 bytes: exactly what every device guarantees).
 struct ForwardPush {
-    mat4 viewProjection;
-    vec4 eye;     // xyz: camera position (world)
-    uvec4 counts; // x: light count, y: draw index, zw: unused
+    /*Ignore*/ mat4 viewProjection;
+    /*Ignore*/ vec4 eye;     // xyz: camera position (world)
+    /*Ignore*/ uvec4 counts; // x: light count, y: draw index, zw: unused
     IblParams ibl;
 };
 

@@ -17,9 +17,9 @@ CANDELA_NAMESPACE_BEGIN
 // Push constants of tonemap.frag (std430). The operator, sRGB encoding, dithering and whether a
 // background is composited are specialization constants of the pipeline.
 struct TonemapParams {
-    vec4 background;      // rgb: linear display colour of a solid background (when composited)
-    float exposureScale;  // 2^EV
-    float pad0, pad1, pad2;
+    /*Color*/ vec4 background;      // rgb: linear display colour of a solid background (when composited)
+    /*Range(-10, 10)*/ float exposureEv;  // exposure in stops: radiance × 2^EV
+    /*Ignore*/ float pad0, pad1, pad2;
 };
 
 // Khronos PBR Neutral (https://github.com/KhronosGroup/ToneMapping, reference implementation).

@@ -185,3 +185,78 @@ TEST(GraphCull, WriteAfterReadIsNotADependency) {
 
 }  // namespace
 }  // namespace candela::graph
+
+namespace candela::graph {
+namespace {
+
+// lighting → hdr v1 → sky (draws over hdr) → v2 → haze (draws over) → v3 → tonemap → target v1
+// → ui (draws over target, clear if lost) → target v2.
+struct OverlayChain {
+    TextureId target;
+    explicit OverlayChain(RenderGraph& graph) {
+        target = graph.importTexture("target", kColor, {});
+        TextureId hdr;
+        addPass(graph, "lighting", PassType::Graphics,
+                [&](PassBuilder& b) { hdr = b.writeColor(b.createTexture("hdr", kColor), VkClearColorValue{}); });
+        addPass(graph, "sky", PassType::Graphics, [&](PassBuilder& b) { hdr = b.writeColor(hdr, std::nullopt); });
+        addPass(graph, "haze", PassType::Graphics, [&](PassBuilder& b) { hdr = b.writeColor(hdr, std::nullopt); });
+        addPass(graph, "tonemap", PassType::Graphics, [&](PassBuilder& b) {
+            b.read(hdr, Usage::Sampled);
+            target = b.writeColor(target, VkClearColorValue{});
+        });
+        addPass(graph, "ui", PassType::Graphics,
+                [&](PassBuilder& b) { b.drawOver(target, VkClearColorValue{{0.0f, 0.0f, 0.0f, 1.0f}}); });
+    }
+};
+
+TEST(GraphCull, DisabledOverlayIsBypassed) {
+    RenderGraph graph;
+    OverlayChain chain(graph);
+    graph.setPassEnabled("sky", false);
+    graph.compile();
+    EXPECT_EQ(orderNames(graph), (std::vector<std::string>{"lighting", "haze", "tonemap", "ui"}));
+    EXPECT_EQ(info(graph, "sky").cullReason, CullReason::Disabled);
+    EXPECT_TRUE(info(graph, "sky").bypassed);
+    EXPECT_EQ(info(graph, "sky").cullDetail, "disabled (bypassed: later passes read what it would have drawn over)");
+    EXPECT_TRUE(info(graph, "ui").clearedLostInputs.empty());
+}
+
+TEST(GraphCull, BypassFollowsAChainOfOverlays) {
+    RenderGraph graph;
+    OverlayChain chain(graph);
+    graph.setPassEnabled("sky", false);
+    graph.setPassEnabled("haze", false);
+    graph.compile();
+    EXPECT_EQ(orderNames(graph), (std::vector<std::string>{"lighting", "tonemap", "ui"}));
+}
+
+TEST(GraphCull, BypassDoesNotHideALostBase) {
+    RenderGraph graph;
+    OverlayChain chain(graph);
+    graph.setPassEnabled("lighting", false);  // a discarding write: not bypassable
+    graph.setPassEnabled("sky", false);
+    graph.compile();
+    EXPECT_FALSE(info(graph, "lighting").bypassed);
+    EXPECT_EQ(info(graph, "haze").cullReason, CullReason::LostInput);
+    EXPECT_EQ(info(graph, "haze").cullDetail, "input 'hdr' lost: its producer 'lighting' is disabled");
+    EXPECT_EQ(info(graph, "tonemap").cullReason, CullReason::LostInput);
+    // The UI stays, on a cleared target.
+    EXPECT_EQ(orderNames(graph), (std::vector<std::string>{"ui"}));
+    EXPECT_EQ(info(graph, "ui").clearedLostInputs, (std::vector<uint32_t>{*graph.findResource("target")}));
+}
+
+TEST(GraphCull, DrawOverSurvivesItsProducerBeingSwitchedOff) {
+    RenderGraph graph;
+    OverlayChain chain(graph);
+    graph.setPassEnabled("tonemap", false);
+    graph.compile();
+    EXPECT_EQ(orderNames(graph), (std::vector<std::string>{"ui"}));
+    EXPECT_EQ(info(graph, "ui").cullReason, CullReason::None);
+    EXPECT_EQ(info(graph, "ui").clearedLostInputs.size(), 1u);
+    // What fed the tonemap contributes to nothing now.
+    EXPECT_EQ(info(graph, "lighting").cullReason, CullReason::NoOutput);
+    EXPECT_EQ(info(graph, "sky").cullReason, CullReason::NoOutput);
+}
+
+}  // namespace
+}  // namespace candela::graph

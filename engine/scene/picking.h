@@ -1,0 +1,31 @@
+#pragma once
+// Picking: which draw of a scene a ray hits first (the material inspector's click on a mesh).
+// CPU ray casting against the scene's triangles (bounding boxes first); pure, no GPU.
+
+#include "scene/camera.h"
+#include "scene/scene.h"
+
+#include <glm/glm.hpp>
+
+#include <optional>
+
+namespace candela::scene {
+
+struct Ray {
+    glm::vec3 origin{0.0f};
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // unit
+};
+
+// The ray through pixel centre-relative position `ndc` ∈ [-1, 1]² (x right, y down, Vulkan's clip
+// space) of `view` (perspective, reverse-Z).
+Ray viewRay(const ViewSetup& view, const glm::vec2& ndc);
+
+struct Pick {
+    uint32_t draw = 0;    // index into Scene::draws
+    float distance = 0.0f;
+};
+
+// The nearest draw whose triangles (both faces) the ray hits, if any.
+std::optional<Pick> pickDraw(const Scene& scene, const Ray& ray);
+
+}  // namespace candela::scene

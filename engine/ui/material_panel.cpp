@@ -1,0 +1,61 @@
+// The material inspector: the scene's materials (pick one from the list, or left-click a mesh),
+// what the selected one uses, and its factors — the reflected members of the forward shaders'
+// MaterialData, edited live through the parameter registry ("forward", "Materials[i]").
+
+#include "ui/panels.h"
+#include "ui/parameter_widgets.h"
+#include "ui/viewer.h"
+
+#include <imgui.h>
+
+#include <string>
+
+namespace candela::ui {
+
+namespace {
+
+std::string materialLabel(const scene::Scene& scene, uint32_t i) {
+    const std::string& name = scene.materials[i].name;
+    return std::to_string(i) + ": " + (name.empty() ? std::string("(unnamed)") : name);
+}
+
+const char* alphaModeName(scene::AlphaMode mode) {
+    switch (mode) {
+        case scene::AlphaMode::Mask: return "mask";
+        case scene::AlphaMode::Blend: return "blend";
+        default: return "opaque";
+    }
+}
+
+}  // namespace
+
+void drawMaterialPanel(Viewer& viewer) {
+    const scene::Scene& scene = viewer.scene();
+    if (scene.materials.empty()) {
+        ImGui::TextDisabled("the scene has no materials");
+        return;
+    }
+    uint32_t selected = std::min<uint32_t>(viewer.selectedMaterial(), uint32_t(scene.materials.size() - 1));
+    if (ImGui::BeginCombo("material", materialLabel(scene, selected).c_str())) {
+        for (uint32_t i = 0; i < scene.materials.size(); ++i)
+            if (ImGui::Selectable(materialLabel(scene, i).c_str(), i == selected)) viewer.selectMaterial(i);
+        ImGui::EndCombo();
+    }
+    ImGui::TextDisabled("or left-click a mesh");
+    const scene::Material& m = scene.materials[selected];
+    std::string textures;
+    const std::pair<const char*, const scene::TextureRef*> slots[] = {{"base colour", &m.baseColor},
+                                                                      {"metallic-roughness", &m.metallicRoughness},
+                                                                      {"normal", &m.normal},
+                                                                      {"occlusion", &m.occlusion},
+                                                                      {"emissive", &m.emissive}};
+    for (const auto& [name, ref] : slots)
+        if (ref->present()) textures += (textures.empty() ? "" : ", ") + std::string(name);
+    ImGui::TextWrapped("textures: %s", textures.empty() ? "none" : textures.c_str());
+    ImGui::Text("alpha: %s%s%s", alphaModeName(m.alphaMode), m.doubleSided ? ", double-sided" : "", m.unlit ? ", unlit" : "");
+    shader::ParameterRegistry& registry = viewer.renderer().parameters();
+    if (const auto* block = registry.find("forward", "Materials[" + std::to_string(selected) + "]"))
+        drawParameterBlock(registry, *block);
+}
+
+}  // namespace candela::ui

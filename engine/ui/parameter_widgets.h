@@ -1,0 +1,15 @@
+#pragma once
+// ImGui widgets for the members of a reflected parameter block, chosen by type and annotation:
+// /*Color*/ vec3/vec4 → colour editor, /*Range(MIN, MAX)*/ → slider, other floats → drag, ints →
+// drag, bools → checkbox; /*Ignore*/ members are never shown (ParameterRegistry drops them).
+// Shared by the shader-parameter panel and the material inspector.
+
+#include "shader/parameter_registry.h"
+
+namespace candela::ui {
+
+// Draws one widget per member of `block`; an edit sets the value in `registry` (effective next
+// frame). A member with a user value gets a reset button. Returns true if anything was edited.
+bool drawParameterBlock(shader::ParameterRegistry& registry, const shader::ParameterRegistry::Block& block);
+
+}  // namespace candela::ui

@@ -1,0 +1,237 @@
+// The viewer under a private Xvfb on lavapipe, with validation (synchronization included): opens,
+// renders with the UI, toggles a pass as the checkbox does, edits reflected parameters, survives
+// resizes and a minimize, saves screenshots, opens dropped files, picks a material, exits 0.
+
+#include "../unit/temp_dir.h"
+#include "scene/builtin_scenes.h"
+#include "scene/procedural_sky.h"
+#include "ui/viewer.h"
+#include "xvfb.h"
+
+#include <gtest/gtest.h>
+#include <stb_image.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+namespace candela {
+namespace {
+
+const ::testing::Environment* const gXvfb = ::testing::AddGlobalTestEnvironment(new test::XvfbEnvironment);
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<uint8_t> rgba;
+    // Mean of R+G+B over the columns [x0, x1).
+    double mean(int x0, int x1) const {
+        double sum = 0.0;
+        for (int y = 0; y < height; ++y)
+            for (int x = x0; x < x1; ++x)
+                for (int c = 0; c < 3; ++c) sum += rgba[(size_t(y) * width + x) * 4 + c];
+        return sum / (double(height) * (x1 - x0) * 3.0);
+    }
+};
+
+Image readPng(const std::filesystem::path& path) {
+    Image image;
+    int channels = 0;
+    stbi_uc* pixels = stbi_load(path.c_str(), &image.width, &image.height, &channels, 4);
+    if (!pixels) return image;
+    image.rgba.assign(pixels, pixels + size_t(image.width) * image.height * 4);
+    stbi_image_free(pixels);
+    return image;
+}
+
+class ViewerTest : public ::testing::Test {
+protected:
+    void open(bool ui = true, bool environment = true) {
+        ui::ViewerContent content;
+        content.scene = scene::makeSphereGrid();
+        if (environment) content.environment = std::make_unique<scene::Environment>(scene::makeProceduralSky());
+        content.settings.ibl.skybox = environment;
+        content.settings.tonemap.background = environment ? std::nullopt : std::optional(glm::vec3(0.02f));
+        content.settings.iblQuality.cubeSize = 64;  // keeps the precompute short; the maps are not under test
+        content.settings.iblQuality.prefilterSamples = 8;
+        mViewer = std::make_unique<ui::Viewer>(
+            ui::ViewerDesc{.context = {.validation = true}, .window = {.width = 480, .height = 300}, .ui = ui},
+            std::move(content));
+    }
+    void TearDown() override {
+        if (!mViewer) return;
+        mViewer->renderer().waitIdle();
+        for (const vk::ValidationMessage& m : mViewer->context().validationMessages()) ADD_FAILURE() << "validation: " << m.text;
+    }
+    void frames(int n) {
+        for (int i = 0; i < n; ++i) ASSERT_TRUE(mViewer->frame());
+    }
+    Image screenshot(const std::string& name) {
+        const std::filesystem::path path = mDir / name;
+        mViewer->requestScreenshot(path);
+        frames(1);
+        EXPECT_EQ(mViewer->lastScreenshot(), path.string());
+        return readPng(path);
+    }
+    const graph::PassInfo* passInfo(const std::string& name) {
+        const graph::RenderGraph& graph = mViewer->renderer().lastGraph();
+        const std::optional<uint32_t> pass = graph.findPass(name);
+        return pass ? &graph.compiled().passes[*pass] : nullptr;
+    }
+    bool ran(const std::string& name) {
+        const graph::PassInfo* info = passInfo(name);
+        return info && info->cullReason == graph::CullReason::None;
+    }
+
+    test::TempDir mDir{"candela_viewer"};
+    std::unique_ptr<ui::Viewer> mViewer;
+};
+
+TEST_F(ViewerTest, RendersFramesWithTheUiAsAGraphPass) {
+    open();
+    frames(3);
+    EXPECT_EQ(mViewer->framesRendered(), 3u);
+    EXPECT_TRUE(ran("forward"));
+    EXPECT_TRUE(ran("skybox"));
+    EXPECT_TRUE(ran("tonemap"));
+    EXPECT_TRUE(ran("imgui"));
+    // The imgui pass draws last, over the tonemapped image, into the swapchain image.
+    const graph::RenderGraph& graph = mViewer->renderer().lastGraph();
+    EXPECT_EQ(graph.declaration().passes[graph.compiled().order.back()].name, "imgui");
+    // GPU times of completed frames reach the panels.
+    EXPECT_FALSE(mViewer->renderer().completedPassTimes().empty());
+}
+
+TEST_F(ViewerTest, WithoutUiThereIsNoImGuiPass) {
+    open(/*ui=*/false);
+    frames(2);
+    EXPECT_FALSE(mViewer->renderer().lastGraph().findPass("imgui").has_value());
+}
+
+TEST_F(ViewerTest, TogglingAPassCullsItInTheCompiledGraph) {
+    open();
+    frames(1);
+    const Image before = screenshot("before.png");
+    mViewer->setPassEnabled("skybox", false);  // what the render-graph panel's checkbox calls
+    frames(1);
+    ASSERT_NE(passInfo("skybox"), nullptr);
+    EXPECT_EQ(passInfo("skybox")->cullReason, graph::CullReason::Disabled);
+    EXPECT_TRUE(ran("forward"));
+    const Image after = screenshot("after.png");
+    // Without the skybox the background is black: the scene half of the window gets darker.
+    ASSERT_EQ(before.width, after.width);
+    EXPECT_LT(after.mean(before.width / 2, before.width), before.mean(before.width / 2, before.width) - 20.0);
+    mViewer->setPassEnabled("skybox", true);
+    frames(1);
+    EXPECT_TRUE(ran("skybox"));
+}
+
+TEST_F(ViewerTest, EditingAReflectedParameterChangesThePixels) {
+    open(/*ui=*/true, /*environment=*/false);
+    frames(2);
+    shader::ParameterRegistry& registry = mViewer->renderer().parameters();
+    const shader::ParameterRegistry::Block* tonemap = registry.find("tonemap", "Push");
+    ASSERT_NE(tonemap, nullptr);
+    const auto exposure = std::find_if(tonemap->members.begin(), tonemap->members.end(),
+                                       [](const shader::BlockMember& m) { return m.name == "params.exposureEv"; });
+    ASSERT_NE(exposure, tonemap->members.end()) << "the panel would not show the exposure";
+    EXPECT_EQ(exposure->annotation.min, -10.0f);
+    const Image before = screenshot("before.png");
+    const float ev = 2.0f;
+    registry.set("tonemap", "Push", *exposure, std::as_bytes(std::span(&ev, 1)));  // what the slider calls
+    frames(1);
+    const Image brighter = screenshot("brighter.png");
+    EXPECT_GT(brighter.mean(before.width / 2, before.width), before.mean(before.width / 2, before.width) + 5.0);
+
+    // A light's intensity (a storage-buffer element) and a material's base colour go the same way.
+    registry.reset("tonemap", "Push", "params.exposureEv");
+    for (int i = 0; i < 4; ++i) {
+        const std::string light = "Lights[" + std::to_string(i) + "]";
+        const shader::ParameterRegistry::Block* block = registry.find("forward", light);
+        ASSERT_NE(block, nullptr) << light;
+        for (const shader::BlockMember& m : block->members)
+            if (m.name == "intensity") {
+                const float zero = 0.0f;
+                registry.set("forward", light, m, std::as_bytes(std::span(&zero, 1)));
+            }
+    }
+    frames(1);
+    const Image unlit = screenshot("unlit.png");
+    EXPECT_LT(unlit.mean(before.width / 2, before.width), before.mean(before.width / 2, before.width) - 5.0);
+}
+
+TEST_F(ViewerTest, SurvivesResizesAndAMinimize) {
+    open();
+    frames(1);
+    for (int i = 0; i < 20; ++i) {
+        const uint32_t width = 200 + 37 * uint32_t(i % 7), height = 150 + 23 * uint32_t(i % 5);
+        mViewer->window().setSize(width, height);
+        frames(2);  // the first may still see the old size: X delivers the resize asynchronously
+        EXPECT_EQ(mViewer->swapchainExtent().width, mViewer->window().framebufferSize().width);
+        EXPECT_EQ(mViewer->swapchainExtent().height, mViewer->window().framebufferSize().height);
+    }
+    EXPECT_GE(mViewer->swapchainRecreations(), 10u);
+    // Minimize: nothing is rendered, and frame() blocks on events rather than spinning.
+    mViewer->window().iconify();
+    mViewer->simulateMinimized(true);  // Xvfb has no window manager to honour the iconify
+    const uint64_t rendered = mViewer->framesRendered();
+    frames(3);
+    EXPECT_EQ(mViewer->framesRendered(), rendered);
+    EXPECT_EQ(mViewer->framesSkipped(), 3u);
+    mViewer->simulateMinimized(false);
+    mViewer->window().restore();
+    frames(2);
+    EXPECT_EQ(mViewer->framesRendered(), rendered + 2);
+}
+
+TEST_F(ViewerTest, ScreenshotHasTheSceneAndThePanel) {
+    open();
+    frames(1);
+    const Image shot = screenshot("shot.png");
+    ASSERT_EQ(shot.width, int(mViewer->swapchainExtent().width));
+    ASSERT_EQ(shot.height, int(mViewer->swapchainExtent().height));
+    // The panel (left) is the dark ImGui theme; the scene (right) has the bright sky.
+    EXPECT_LT(shot.mean(0, shot.width / 5), 90.0);
+    EXPECT_GT(shot.mean(shot.width * 3 / 4, shot.width), 100.0);
+}
+
+TEST_F(ViewerTest, DroppedFilesReplaceTheSceneOrTheEnvironment) {
+    open(/*ui=*/true, /*environment=*/false);
+    frames(1);
+    EXPECT_FALSE(mViewer->renderer().lastGraph().findPass("skybox").has_value());
+    // A bad file is reported in the UI and changes nothing.
+    const std::filesystem::path bad = mDir / "broken.glb";
+    { std::ofstream(bad) << "not a glb"; }
+    EXPECT_FALSE(mViewer->openFile(bad));
+    EXPECT_NE(mViewer->status().find("broken.glb"), std::string::npos);
+    EXPECT_FALSE(mViewer->openFile(mDir / "notes.txt"));
+    frames(1);
+
+    const std::filesystem::path assets = CANDELA_SHARED_ASSETS;
+    const std::filesystem::path hdr = assets / "environments" / "venice_sunset_1k.hdr";
+    const std::filesystem::path glb = assets / "models" / "BoxTextured" / "glTF-Binary" / "BoxTextured.glb";
+    if (!std::filesystem::exists(hdr) || !std::filesystem::exists(glb)) GTEST_SKIP() << "shared assets not found";
+    ASSERT_TRUE(mViewer->openFile(hdr)) << mViewer->status();
+    frames(1);
+    EXPECT_TRUE(mViewer->renderer().lastGraph().findPass("ibl_cubemap").has_value()) << "the precompute ran";
+    EXPECT_TRUE(ran("skybox"));
+    frames(1);
+    EXPECT_FALSE(mViewer->renderer().lastGraph().findPass("ibl_cubemap").has_value()) << "and only once";
+    ASSERT_TRUE(mViewer->openFile(glb)) << mViewer->status();
+    frames(1);
+    EXPECT_EQ(mViewer->scene().source, glb.string());
+}
+
+TEST_F(ViewerTest, ClickingAMeshSelectsItsMaterial) {
+    open(/*ui=*/false);
+    frames(1);
+    const VkExtent2D extent = mViewer->swapchainExtent();
+    // The middle sphere of the 7×7 grid is under the centre of the window.
+    ASSERT_TRUE(mViewer->pickMaterial({extent.width / 2.0f, extent.height / 2.0f}));
+    EXPECT_EQ(mViewer->selectedMaterial(), 24u);
+    EXPECT_FALSE(mViewer->pickMaterial({2.0f, 2.0f}));  // the corner shows the background
+}
+
+}  // namespace
+}  // namespace candela
