@@ -69,3 +69,81 @@ TEST(Reflection, GarbageIsAnErrorNotACrash) {
 
 }  // namespace
 }  // namespace candela::shader
+
+namespace candela::shader {
+namespace {
+
+TEST(ReflectionAnnotations, SourcesAreKeptInTheBuiltSpirv) {
+    const std::vector<std::string> sources = embeddedSources(builtinShader("tonemap.frag"));
+    ASSERT_GE(sources.size(), 2u);  // the shader and its headers
+    EXPECT_NE(sources[0].find("void main()"), std::string::npos);
+    const bool hasHeader = std::any_of(sources.begin(), sources.end(), [](const std::string& s) {
+        return s.find("struct TonemapParams") != std::string::npos;
+    });
+    EXPECT_TRUE(hasHeader);
+}
+
+TEST(ReflectionAnnotations, PushConstantMembersCarryTheirAnnotations) {
+    const ShaderReflection r = reflectSpirv(builtinShader("tonemap.frag"), "tonemap.frag");
+    const BlockMember* background = member(r.pushConstants.members, "params.background");
+    const BlockMember* exposure = member(r.pushConstants.members, "params.exposureEv");
+    const BlockMember* pad = member(r.pushConstants.members, "params.pad0");
+    ASSERT_TRUE(background && exposure && pad);
+    EXPECT_EQ(background->structName, "TonemapParams");
+    EXPECT_TRUE(background->annotation.color);
+    EXPECT_EQ(background->offset, 0u);
+    EXPECT_EQ(background->vectorSize, 4u);
+    EXPECT_EQ(exposure->offset, 16u);
+    EXPECT_EQ(exposure->annotation.min, -10.0f);
+    EXPECT_EQ(exposure->annotation.max, 10.0f);
+    EXPECT_TRUE(pad->annotation.ignore);
+}
+
+TEST(ReflectionAnnotations, StorageBufferElementsOfTheForwardShader) {
+    const ShaderReflection r = reflectSpirv(builtinShader("forward.frag"), "forward.frag");
+    const auto binding = [&](const std::string& name) -> const DescriptorBinding* {
+        for (const DescriptorBinding& b : r.bindings)
+            if (b.name == name) return &b;
+        return nullptr;
+    };
+    const DescriptorBinding* lights = binding("Lights");
+    ASSERT_NE(lights, nullptr);
+    ASSERT_EQ(lights->members.size(), 1u);
+    const BlockMember& array = lights->members[0];
+    EXPECT_EQ(array.arraySize, 0u);  // runtime-sized
+    EXPECT_EQ(array.arrayStride, 64u);
+    const BlockMember* color = member(array.elementMembers, "color");
+    const BlockMember* intensity = member(array.elementMembers, "intensity");
+    const BlockMember* position = member(array.elementMembers, "positionRange");
+    ASSERT_TRUE(color && intensity && position);
+    EXPECT_TRUE(color->annotation.color);
+    EXPECT_EQ(color->offset, 32u);
+    EXPECT_EQ(color->vectorSize, 3u);
+    EXPECT_EQ(intensity->offset, 44u);
+    EXPECT_EQ(intensity->annotation.max, 1000.0f);
+    EXPECT_TRUE(position->annotation.ignore);
+
+    const DescriptorBinding* materials = binding("Materials");
+    ASSERT_NE(materials, nullptr);
+    const BlockMember* roughness = member(materials->members[0].elementMembers, "roughness");
+    ASSERT_NE(roughness, nullptr);
+    EXPECT_EQ(roughness->offset, 36u);
+    EXPECT_EQ(roughness->annotation.min, 0.0f);
+    EXPECT_EQ(roughness->annotation.max, 1.0f);
+    // The forward push constants: the camera is set by code, the IBL intensity is a slider.
+    EXPECT_TRUE(member(r.pushConstants.members, "push.viewProjection")->annotation.ignore);
+    EXPECT_EQ(member(r.pushConstants.members, "push.ibl.intensity")->annotation.max, 4.0f);
+}
+
+TEST(ReflectionAnnotations, TruncatedOrGarbageSpirvYieldsNoSources) {
+    const std::span<const uint32_t> spirv = builtinShader("tonemap.frag");
+    for (size_t words : {size_t(0), size_t(3), size_t(5), spirv.size() / 3, spirv.size() / 2})
+        EXPECT_NO_THROW(embeddedSources(spirv.subspan(0, words)));
+    const uint32_t zeroCount[] = {0x07230203, 0, 0, 0, 0, 0x00000003u, 1, 2};
+    EXPECT_TRUE(embeddedSources(zeroCount).empty());
+    const uint32_t overlong[] = {0x07230203, 0, 0, 0, 0, (100u << 16) | 3u, 2, 460};
+    EXPECT_TRUE(embeddedSources(overlong).empty());
+}
+
+}  // namespace
+}  // namespace candela::shader
