@@ -26,8 +26,8 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 Renderer::Renderer(vk::Context& context, uint32_t framesInFlight)
     : mContext(context), mFrames(context, framesInFlight), mPattern(context), mEncode(context, kLdrFormat),
-      mForward(context), mTonemap(context), mIbl(context), mGraph(std::make_unique<RenderGraph>()) {
-    mForward.setIblMaps(mIbl);
+      mForward(context), mTonemap(context), mIbl(std::make_unique<ibl::IblMaps>(context)), mGraph(std::make_unique<RenderGraph>()) {
+    mForward.setIblMaps(*mIbl);
     for (uint32_t i = 0; i < mFrames.slotCount(); ++i) mTransients.push_back(std::make_unique<TransientPool>(context));
 }
 
@@ -89,7 +89,7 @@ void Renderer::useEnvironment(const scene::Environment* environment, const ibl::
     quality.validate();
     // The maps may be read by a frame in flight: wait before replacing them.
     mFrames.waitIdle();
-    if (mIbl.setEnvironment(environment, quality, cacheDir, force)) mForward.setIblMaps(mIbl);
+    if (mIbl->setEnvironment(environment, quality, cacheDir, force)) mForward.setIblMaps(*mIbl);
     mEnvironment = environment;
     mIblQuality = quality;
     mIblCacheDir = cacheDir;
@@ -116,6 +116,15 @@ void Renderer::applySceneParameters() {
     // The buffers may be read by frames in flight.
     mFrames.waitIdle();
     mGpuScene->rewrite(lights, materials);
+}
+
+void Renderer::shadersReplaced(const std::vector<std::string>& names) {
+    if (std::none_of(names.begin(), names.end(), [](const std::string& n) { return n.rfind("ibl_", 0) == 0; })) return;
+    mFrames.waitIdle();
+    mIbl = std::make_unique<ibl::IblMaps>(mContext);
+    mForward.setIblMaps(*mIbl);
+    // Recomputed (never read from the cache) by the next frame, with the new shaders.
+    if (mEnvironment) useEnvironment(mEnvironment, mIblQuality, mIblCacheDir, /*force=*/true);
 }
 
 void Renderer::applyToggles(RenderGraph& graph, const RenderSettings& settings) {
@@ -167,7 +176,7 @@ std::chrono::steady_clock::time_point Renderer::submit(RenderGraph& graph, const
 }
 
 void Renderer::finishIblFrame(const RenderGraph& graph) {
-    if (mIblInGraph) mIbl.frameCompleted(graph);
+    if (mIblInGraph) mIbl->frameCompleted(graph);
     mIblInGraph = false;
 }
 
@@ -209,15 +218,15 @@ FrameTiming Renderer::precomputeIbl(const scene::Environment& environment, const
     useEnvironment(&environment, quality, {}, /*force=*/true);
     mGraph = std::make_unique<RenderGraph>();
     ImportBindings imports;
-    mIbl.addToGraph(*mGraph, imports);
+    mIbl->addToGraph(*mGraph, imports);
     mIblInGraph = true;
     return execute(*mGraph, imports, true);
 }
 
 void Renderer::setReferenceEnvironment(const scene::Environment& environment) {
     mFrames.waitIdle();
-    mIbl.setReferenceEnvironment(environment);
-    mForward.setIblMaps(mIbl);
+    mIbl->setReferenceEnvironment(environment);
+    mForward.setIblMaps(*mIbl);
 }
 
 CapturedFrame Renderer::capture(const RenderSettings& settings) {
@@ -326,17 +335,17 @@ TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& se
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
     const scene::ViewSetup view = resolveView(*settings.scene, settings.camera, aspect);
     std::optional<passes::ForwardPass::Ibl> ibl;
-    if (mIbl.hasEnvironment()) {
+    if (mIbl->hasEnvironment()) {
         const float theta = glm::radians(settings.ibl.rotationDegrees);
-        const float maxLod = float(mIbl.specularLevels() - 1);
+        const float maxLod = float(mIbl->specularLevels() - 1);
         ibl = passes::ForwardPass::Ibl{
-            .maps = mIbl.addToGraph(graph, imports),
+            .maps = mIbl->addToGraph(graph, imports),
             .params = {.rotation = glm::vec4(std::cos(theta), std::sin(theta), 0.0f, 0.0f),
                        .intensity = settings.ibl.intensity,
                        .maxLod = maxLod,
                        .skyboxLod = std::clamp(settings.ibl.skyboxBlur, 0.0f, 1.0f) * maxLod,
-                       .lutSize = float(mIbl.lutSize())},
-            .irradianceSh = mIbl.quality().irradiance == ibl::IrradianceMode::Sh9,
+                       .lutSize = float(mIbl->lutSize())},
+            .irradianceSh = mIbl->quality().irradiance == ibl::IrradianceMode::Sh9,
             .multiscatter = settings.ibl.multiscatter,
             .referenceSamples = settings.ibl.referenceSamples};
     }
@@ -350,7 +359,7 @@ TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& se
     if (mSkyboxInGraph) {
         if (!mSkybox) mSkybox = std::make_unique<passes::SkyboxPass>(mContext);
         mHdr = mSkybox->add(graph, view, {.hdr = forward.hdr, .depth = forward.depth, .specular = ibl->maps.specular,
-                                          .specularView = mIbl.specularView(), .sampler = mIbl.sampler(),
+                                          .specularView = mIbl->specularView(), .sampler = mIbl->sampler(),
                                           .params = ibl->params},
                               &mParameters);
     }
@@ -399,8 +408,8 @@ std::vector<std::string> Renderer::explain() const {
         if (mUploadedDefaultLights)
             lines.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
         for (const std::string& line : mForward.explanation()) lines.push_back(line);
-        for (const std::string& line : mIbl.explanation()) lines.push_back(line);
-        if (mIbl.hasEnvironment() && !mSkyboxInGraph)
+        for (const std::string& line : mIbl->explanation()) lines.push_back(line);
+        if (mIbl->hasEnvironment() && !mSkyboxInGraph)
             lines.emplace_back("left out: skybox (the background is not the environment)");
     }
     return lines;

@@ -136,6 +136,10 @@ public:
     const std::vector<PassTime>& completedPassTimes() const { return mCompletedTimes; }
     // Waits for every frame in flight.
     void waitIdle() { mFrames.waitIdle(); }
+    // After shaders were replaced (hot reload): the frame passes rebuild their pipelines at their
+    // next use by themselves; a replaced IBL shader also discards the maps, so that the next frame
+    // runs the precompute with it.
+    void shadersReplaced(const std::vector<std::string>& names);
 
     // Runs the IBL precompute passes alone for `environment` at `quality` — always, even when the
     // maps are current; no cache — and waits. The maps then serve the following frames (read them
@@ -163,7 +167,7 @@ public:
     // "Lights[i]" / "Materials[i]"). Values set here apply from the next frame.
     shader::ParameterRegistry& parameters() { return mParameters; }
     // The image-based-lighting maps (tests and reports read them back).
-    ibl::IblMaps& iblMaps() { return mIbl; }
+    ibl::IblMaps& iblMaps() { return *mIbl; }
 
 private:
     // Declare the frame's passes; return the 8-bit result and set mHdr to the HDR image.
@@ -198,7 +202,7 @@ private:
     passes::EncodePass mEncode;
     passes::ForwardPass mForward;
     passes::TonemapPass mTonemap;
-    ibl::IblMaps mIbl;
+    std::unique_ptr<ibl::IblMaps> mIbl;
     std::unique_ptr<passes::SkyboxPass> mSkybox;  // created with the first environment
     std::unique_ptr<passes::CalibrationPass> mCalibration;  // created by the first renderCalibration
     graph::TextureId mHdr;  // HDR image of the graph being built

@@ -9,7 +9,7 @@ packages=(
   libspirv-cross-c-shared-dev
   libglm-dev libstb-dev libtinyexr-dev nlohmann-json3-dev
   libgtest-dev
-  libglfw3-dev libimgui-dev xvfb xauth
+  libglfw3-dev libimgui-dev glslang-dev xvfb xauth
 )
 
 missing=()

@@ -27,7 +27,10 @@ ForwardPass::ForwardPass(vk::Context& context) : mContext(context) {}
 
 const vk::Pipeline& ForwardPass::pipeline(const Variant& v) {
     auto it = mPipelines.find(v);
-    if (it != mPipelines.end()) return it->second;
+    if (it != mPipelines.end()) {
+        it->second.refresh(mContext);  // a shader replaced at run time (hot reload)
+        return it->second;
+    }
     const vk::GraphicsPipelineDesc desc{
         .colorFormats = {kHdrFormat},
         .depthFormat = kDepthFormat,

@@ -11,7 +11,8 @@ namespace candela::passes {
 using namespace graph;
 
 SkyboxPass::SkyboxPass(vk::Context& context)
-    : mPipeline(vk::Pipeline::graphics(context, "fullscreen.vert", "skybox.frag",
+    : mContext(context),
+      mPipeline(vk::Pipeline::graphics(context, "fullscreen.vert", "skybox.frag",
                                        {.colorFormats = {ForwardPass::kHdrFormat},
                                         .depthFormat = ForwardPass::kDepthFormat,
                                         .depthTest = true,
@@ -20,7 +21,8 @@ SkyboxPass::SkyboxPass(vk::Context& context)
                                         .blend = vk::BlendMode::Under})) {}
 
 TextureId SkyboxPass::add(RenderGraph& graph, const scene::ViewSetup& view, const Inputs& in,
-                          shader::ParameterRegistry* parameters) const {
+                          shader::ParameterRegistry* parameters) {
+    mPipeline.refresh(mContext);  // a shader replaced at run time (hot reload)
     struct Data {
         TextureId hdr;
         TextureId depth;

@@ -28,9 +28,10 @@ public:
     // Adds the pass; returns the HDR target's new version. The pass object must outlive execution.
     // With `parameters`, the user's values for its push constants apply ("skybox", "Push").
     graph::TextureId add(graph::RenderGraph& graph, const scene::ViewSetup& view, const Inputs& inputs,
-                         shader::ParameterRegistry* parameters = nullptr) const;
+                         shader::ParameterRegistry* parameters = nullptr);
 
 private:
+    vk::Context& mContext;
     vk::Pipeline mPipeline;
 };
 

@@ -43,6 +43,7 @@ TonemapPass::TonemapPass(vk::Context& context)
 const vk::Pipeline& TonemapPass::pipelineFor(VkFormat format, const std::vector<uint32_t>& specialization) {
     const auto key = std::make_pair(format, specialization);
     auto it = mPipelines.find(key);
+    if (it != mPipelines.end()) it->second.refresh(mContext);  // a shader replaced at run time (hot reload)
     if (it == mPipelines.end())
         it = mPipelines
                  .emplace(key, vk::Pipeline::graphics(mContext, "fullscreen.vert", "tonemap.frag",

@@ -7,6 +7,7 @@
 #include "passes/imgui_pass.h"
 #include "scene/gltf_loader.h"
 #include "scene/picking.h"
+#include "shader/shader_library.h"
 #include "ui/panels.h"
 #include "vk/swapchain.h"
 
@@ -45,7 +46,8 @@ public:
 
 namespace {
 
-double msBetween(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
+template <class TimePoint>
+double msBetween(TimePoint a, TimePoint b) {
     return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
@@ -71,6 +73,8 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
     mSwapchain = std::make_unique<vk::Swapchain>(*mContext, mWindow->createSurface(mContext->instance()), desc.vsync);
     mRenderer = std::make_unique<Renderer>(*mContext, desc.framesInFlight);
     if (mUi) mImGui = std::make_unique<ImGuiContextOwner>(mWindow->handle());
+    mHotReload = std::make_unique<ShaderHotReload>(desc.shaderDir.empty() ? std::filesystem::path(CANDELA_SHADER_SOURCE_DIR)
+                                                                          : desc.shaderDir);
 
     mSettings.unknownPassIsError = false;
     mSettings.floatOutput = false;
@@ -106,6 +110,8 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
 Viewer::~Viewer() {
     if (mRenderer) mRenderer->waitIdle();
     mImGuiPass.reset();
+    // Replaced shaders are process-wide: later renderers start from the built-in ones again.
+    shader::restoreBuiltinShaders();
 }
 
 uint32_t Viewer::swapchainRecreations() const { return mSwapchain->recreations(); }
@@ -260,6 +266,11 @@ void Viewer::drawUi() {
     if (!mStatus.empty())
         ImGui::TextColored(mStatusIsError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.6f, 0.9f, 0.6f, 1.0f), "%s",
                            mStatus.c_str());
+    for (const std::string& error : mHotReload->errors()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", error.c_str());
+        ImGui::PopStyleColor();
+    }
     if (ImGui::CollapsingHeader("Render graph", ImGuiTreeNodeFlags_DefaultOpen)) drawGraphPanel(*this);
     if (ImGui::CollapsingHeader("Shader parameters", ImGuiTreeNodeFlags_DefaultOpen)) drawParameterPanel(*this);
     if (ImGui::CollapsingHeader("Materials")) drawMaterialPanel(*this);
@@ -329,6 +340,13 @@ bool Viewer::frame() {
         mRecreate = true;
         return true;
     }
+    if (const std::vector<std::string> replaced = mHotReload->poll(); !replaced.empty()) {
+        mRenderer->shadersReplaced(replaced);
+        mReloadSaved = mHotReload->lastSave();
+        std::string names;
+        for (const std::string& n : replaced) names += (names.empty() ? "" : ", ") + n;
+        setStatus("reloaded " + names);
+    }
     if (mUi) drawUi();
     handleInput();
 
@@ -346,6 +364,13 @@ bool Viewer::frame() {
     mRenderer->renderToTarget(settings, target, overlay, shot ? &*shot : nullptr);
     if (!mSwapchain->present(*image)) mRecreate = true;
     ++mFramesRendered;
+    if (mReloadSaved) {
+        // The first frame with the new shaders: its pixels exist once the GPU is done with it.
+        mRenderer->waitIdle();
+        mReloadLatencyMs = msBetween(*mReloadSaved, std::chrono::system_clock::now());
+        mReloadSaved.reset();
+        setStatus(mStatus + " (" + std::to_string(int(mReloadLatencyMs)) + " ms from save to new pixels)");
+    }
 
     if (mScreenshot) {
         const std::filesystem::path path = *std::exchange(mScreenshot, std::nullopt);

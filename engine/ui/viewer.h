@@ -9,6 +9,7 @@
 #include "renderer.h"
 #include "scene/environment.h"
 #include "scene/scene.h"
+#include "ui/hot_reload.h"
 #include "ui/orbit_controls.h"
 #include "ui/window.h"
 #include "vk/context.h"
@@ -37,6 +38,9 @@ struct ViewerDesc {
     bool vsync = true;
     bool ui = true;           // draw the ImGui panels (the ImGui pass is left out when off)
     uint32_t framesInFlight = 2;
+    // Hot reload of the shaders' GLSL from this folder; empty: the shaders/ folder of the source
+    // tree the viewer was built from (when it exists).
+    std::filesystem::path shaderDir;
 };
 
 // What the viewer shows at start: the scene and environment (owned by the viewer from now on) and
@@ -103,6 +107,10 @@ public:
     const std::string& lastScreenshot() const { return mLastScreenshot; }
     const std::string& status() const { return mStatus; }
     double cpuFrameMs() const { return mCpuFrameMs; }
+    // Hot reload: the watcher (its errors are shown in the UI) and the time from the last reloaded
+    // file's save to the first frame drawn with it having completed on the GPU (negative: none yet).
+    const ShaderHotReload& hotReload() const { return *mHotReload; }
+    double lastReloadLatencyMs() const { return mReloadLatencyMs; }
 
 private:
     void handleInput();
@@ -121,6 +129,9 @@ private:
     std::unique_ptr<Renderer> mRenderer;
     std::unique_ptr<ImGuiContextOwner> mImGui;
     std::unique_ptr<passes::ImGuiPass> mImGuiPass;
+    std::unique_ptr<ShaderHotReload> mHotReload;
+    std::optional<std::chrono::system_clock::time_point> mReloadSaved;  // a reload waiting for its first frame
+    double mReloadLatencyMs = -1.0;
 
     bool mUi = true;
     float mPanelWidth = 0.0f;  // pixels covered by the side panel (0 without UI)

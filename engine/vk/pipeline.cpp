@@ -1,7 +1,8 @@
 #include "vk/pipeline.h"
 
 #include "core/check.h"
-#include "shader/builtin_shaders.h"
+#include "core/log.h"
+#include "shader/shader_library.h"
 
 #include <stdexcept>
 
@@ -11,8 +12,9 @@ Program::Program(Context& context, const std::vector<std::string_view>& shaderNa
     std::vector<shader::ShaderReflection> reflections;
     for (std::string_view name : shaderNames) {
         mName += (mName.empty() ? "" : "+") + std::string(name);
-        const std::span<const uint32_t> spirv = shader::builtinShader(name);
+        const std::span<const uint32_t> spirv = shader::shaderSpirv(name);
         if (spirv.empty()) throw std::runtime_error("no built-in shader named '" + std::string(name) + "'");
+        mSources.emplace_back(std::string(name), shader::shaderGeneration(name));
         reflections.push_back(shader::reflectSpirv(spirv, std::string(name)));
         const VkShaderModuleCreateInfo info{.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
                                             .codeSize = spirv.size_bytes(),
@@ -53,6 +55,12 @@ Program::Program(Context& context, const std::vector<std::string_view>& shaderNa
     mLayout = PipelineLayout(context, layout);
 }
 
+bool Program::stale() const {
+    for (const auto& [name, generation] : mSources)
+        if (shader::shaderGeneration(name) != generation) return true;
+    return false;
+}
+
 namespace {
 // Maps constant_id i to specialization[i].
 struct Specialization {
@@ -71,6 +79,8 @@ Pipeline Pipeline::compute(Context& context, std::string_view shaderName, const 
     Pipeline out;
     out.mProgram = Program(context, {shaderName});
     out.mBindPoint = VK_PIPELINE_BIND_POINT_COMPUTE;
+    out.mShaderNames = {std::string(shaderName)};
+    out.mDesc.specialization = specialization;
     const VkComputePipelineCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
         .stage = {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
@@ -90,6 +100,8 @@ Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std
     Pipeline out;
     out.mProgram = Program(context, {vertexShader, fragmentShader});
     out.mBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    out.mShaderNames = {std::string(vertexShader), std::string(fragmentShader)};
+    out.mDesc = desc;
 
     const Specialization constants(desc.specialization);
     std::vector<VkPipelineShaderStageCreateInfo> stages;
@@ -161,6 +173,21 @@ Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std
     VK_CHECK(vkCreateGraphicsPipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
     out.mPipeline = PipelineHandle(context, pipeline);
     return out;
+}
+
+std::string Pipeline::refresh(Context& context) {
+    if (!mPipeline || !mProgram.stale()) return {};
+    try {
+        *this = mBindPoint == VK_PIPELINE_BIND_POINT_COMPUTE
+                    ? compute(context, mShaderNames[0], mDesc.specialization)
+                    : graphics(context, mShaderNames[0], mShaderNames[1], mDesc);
+        return {};
+    } catch (const std::exception& e) {
+        // Keep the old pipeline; remember the new generations so the failure is not retried each frame.
+        for (auto& source : mProgram.mSources) source.second = shader::shaderGeneration(source.first);
+        log::error(std::string("rebuilding ") + mProgram.name() + ": " + e.what());
+        return mProgram.name() + ": " + e.what();
+    }
 }
 
 void Pipeline::bind(VkCommandBuffer cmd) const { vkCmdBindPipeline(cmd, mBindPoint, mPipeline.get()); }

@@ -14,9 +14,10 @@ namespace candela::vk {
 
 class Program {
 public:
+    friend class Pipeline;
     Program() = default;
-    // Reflects the named built-in shaders ("NAME.STAGE") and builds their layouts. Throws if a
-    // shader is missing or the stages disagree on a binding.
+    // Reflects the named shaders ("NAME.STAGE", their current SPIR-V: shader_library.h) and builds
+    // their layouts. Throws if a shader is missing or the stages disagree on a binding.
     Program(Context& context, const std::vector<std::string_view>& shaderNames);
 
     const shader::ShaderReflection& reflection() const { return mReflection; }
@@ -25,6 +26,8 @@ public:
     VkDescriptorSetLayout setLayout(uint32_t set) const { return mSetLayouts.at(set).get(); }
     uint32_t setCount() const { return static_cast<uint32_t>(mSetLayouts.size()); }
     const std::string& name() const { return mName; }
+    // Whether a shader was replaced (hot reload) since this program was built.
+    bool stale() const;
 
     struct Stage {
         VkShaderStageFlagBits stage;
@@ -34,6 +37,7 @@ public:
 
 private:
     std::string mName;
+    std::vector<std::pair<std::string, uint64_t>> mSources;  // shader name, generation built from
     shader::ShaderReflection mReflection;
     std::vector<Stage> mStages;
     std::vector<DescriptorSetLayout> mSetLayouts;
@@ -78,6 +82,12 @@ public:
     const Program& program() const { return mProgram; }
     VkPipelineLayout layout() const { return mProgram.layout(); }
 
+    // Rebuilds the pipeline from the current SPIR-V of its shaders if one was replaced since it was
+    // built (hot reload). The old pipeline is dropped through the deferred deletion queue, so frames
+    // in flight may still use it. If the rebuild fails, the old pipeline stays and the error is
+    // returned (and not retried until the shader changes again); "" otherwise.
+    std::string refresh(Context& context);
+
     // Binds the pipeline on `cmd`.
     void bind(VkCommandBuffer cmd) const;
     // Pushes `size` bytes of constants to every stage that declares the block.
@@ -88,6 +98,9 @@ private:
     Program mProgram;
     PipelineHandle mPipeline;
     VkPipelineBindPoint mBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    // How it was made, for refresh().
+    std::vector<std::string> mShaderNames;
+    GraphicsPipelineDesc mDesc;  // graphics; compute uses its specialization only
 };
 
 }  // namespace candela::vk

@@ -14,7 +14,9 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <chrono>
 #include <fstream>
+#include <iterator>
 #include <memory>
 
 namespace candela {
@@ -25,13 +27,14 @@ const ::testing::Environment* const gXvfb = ::testing::AddGlobalTestEnvironment(
 struct Image {
     int width = 0, height = 0;
     std::vector<uint8_t> rgba;
-    // Mean of R+G+B over the columns [x0, x1).
-    double mean(int x0, int x1) const {
+    // Mean of R+G+B (or of channel `channel`) over the columns [x0, x1).
+    double mean(int x0, int x1, int channel = -1) const {
         double sum = 0.0;
         for (int y = 0; y < height; ++y)
             for (int x = x0; x < x1; ++x)
-                for (int c = 0; c < 3; ++c) sum += rgba[(size_t(y) * width + x) * 4 + c];
-        return sum / (double(height) * (x1 - x0) * 3.0);
+                for (int c = 0; c < 3; ++c)
+                    if (channel < 0 || c == channel) sum += rgba[(size_t(y) * width + x) * 4 + c];
+        return sum / (double(height) * (x1 - x0) * (channel < 0 ? 3.0 : 1.0));
     }
 };
 
@@ -47,7 +50,7 @@ Image readPng(const std::filesystem::path& path) {
 
 class ViewerTest : public ::testing::Test {
 protected:
-    void open(bool ui = true, bool environment = true) {
+    void open(bool ui = true, bool environment = true, const std::filesystem::path& shaderDir = {}) {
         ui::ViewerContent content;
         content.scene = scene::makeSphereGrid();
         if (environment) content.environment = std::make_unique<scene::Environment>(scene::makeProceduralSky());
@@ -56,7 +59,10 @@ protected:
         content.settings.iblQuality.cubeSize = 64;  // keeps the precompute short; the maps are not under test
         content.settings.iblQuality.prefilterSamples = 8;
         mViewer = std::make_unique<ui::Viewer>(
-            ui::ViewerDesc{.context = {.validation = true}, .window = {.width = 480, .height = 300}, .ui = ui},
+            ui::ViewerDesc{.context = {.validation = true},
+                           .window = {.width = 480, .height = 300},
+                           .ui = ui,
+                           .shaderDir = shaderDir},
             std::move(content));
     }
     void TearDown() override {
@@ -231,6 +237,75 @@ TEST_F(ViewerTest, ClickingAMeshSelectsItsMaterial) {
     ASSERT_TRUE(mViewer->pickMaterial({extent.width / 2.0f, extent.height / 2.0f}));
     EXPECT_EQ(mViewer->selectedMaterial(), 24u);
     EXPECT_FALSE(mViewer->pickMaterial({2.0f, 2.0f}));  // the corner shows the background
+}
+
+// Rewrites `file` with `from` replaced by `to`; its modification time changes (on file systems
+// whose clock is too coarse to show it, it is moved 1 ms on).
+void editFile(const std::filesystem::path& file, const std::string& from, const std::string& to) {
+    std::ifstream in(file);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    const auto before = std::filesystem::last_write_time(file);
+    std::ofstream(file, std::ios::trunc) << text;
+    if (std::filesystem::last_write_time(file) == before)
+        std::filesystem::last_write_time(file, before + std::chrono::milliseconds(1));
+}
+
+TEST_F(ViewerTest, HotReloadRebuildsPipelinesAndKeepsTheOldOnesOnErrors) {
+    // A copy of the shaders, so the test never touches the source tree.
+    const std::filesystem::path shaders = mDir / "shaders";
+    std::filesystem::copy(CANDELA_SHADER_SOURCE_DIR, shaders, std::filesystem::copy_options::recursive);
+    open(/*ui=*/true, /*environment=*/false, shaders);
+    ASSERT_TRUE(mViewer->hotReload().enabled());
+    frames(1);
+    const Image before = screenshot("before.png");
+    const int right = before.width * 3 / 4;
+
+    // The tonemap writes pure red: the scene half turns red.
+    editFile(shaders / "tonemap.frag.glsl", "outColor = vec4(display, alpha);", "outColor = vec4(1.0, 0.0, 0.0, 1.0);");
+    frames(1);
+    EXPECT_TRUE(mViewer->hotReload().errors().empty());
+    EXPECT_GT(mViewer->lastReloadLatencyMs(), -1.0);  // from the save to the GPU finishing the frame
+    const Image red = screenshot("red.png");
+    const size_t centre = (size_t(red.height / 2) * red.width + right) * 4;
+    EXPECT_EQ(red.rgba[centre + 0], 255);
+    EXPECT_EQ(red.rgba[centre + 1], 0);
+
+    // A compile error is reported with file and line; the red pipeline keeps running.
+    editFile(shaders / "tonemap.frag.glsl", "outColor = vec4(1.0, 0.0, 0.0, 1.0);", "outColor = vec4(1.0, 0.0, 0.0, 1.0) + undefinedThing;");
+    frames(1);
+    ASSERT_EQ(mViewer->hotReload().errors().size(), 1u);
+    const std::string error = mViewer->hotReload().errors()[0];
+    EXPECT_NE(error.find("tonemap.frag.glsl:"), std::string::npos) << error;
+    EXPECT_NE(error.find("undefinedThing"), std::string::npos) << error;
+    const Image stillRed = screenshot("still_red.png");
+    EXPECT_EQ(stillRed.rgba[centre + 0], 255);
+    EXPECT_EQ(stillRed.rgba[centre + 1], 0);
+
+    // A changed descriptor layout is refused too (the sets would not match).
+    editFile(shaders / "tonemap.frag.glsl", " + undefinedThing;", ";");
+    editFile(shaders / "tonemap.frag.glsl", "layout(set = 0, binding = 0) uniform sampler2D hdrImage;",
+             "layout(set = 0, binding = 0) uniform sampler2D hdrImage;\nlayout(set = 0, binding = 1) uniform sampler2D extra;");
+    frames(1);
+    ASSERT_EQ(mViewer->hotReload().errors().size(), 1u);
+    EXPECT_NE(mViewer->hotReload().errors()[0].find("descriptor bindings changed"), std::string::npos);
+
+    // A header edit reaches every shader that includes it.
+    editFile(shaders / "tonemap.frag.glsl", "\nlayout(set = 0, binding = 1) uniform sampler2D extra;", "");
+    editFile(shaders / "tonemap.frag.glsl", "outColor = vec4(1.0, 0.0, 0.0, 1.0);", "outColor = vec4(display, alpha);");
+    frames(1);
+    EXPECT_TRUE(mViewer->hotReload().errors().empty());
+    const Image restored = screenshot("restored.png");
+    EXPECT_NEAR(restored.mean(right, before.width), before.mean(right, before.width), 1.0);
+    editFile(shaders / "shared" / "tonemap.h", "CANDELA_FN vec3 applyTonemap(vec3 color, uint op) {",
+             "CANDELA_FN vec3 applyTonemap(vec3 color, uint op) {\n    return vec3(0.0f, 1.0f, 0.0f);");
+    frames(1);
+    EXPECT_TRUE(mViewer->hotReload().errors().empty());
+    const Image green = screenshot("green.png");  // spheres green on the grey background
+    EXPECT_GT(green.mean(right, green.width, 1), before.mean(right, before.width, 1) + 30.0);
+    EXPECT_LT(green.mean(right, green.width, 0), before.mean(right, before.width, 0) - 10.0);
 }
 
 }  // namespace

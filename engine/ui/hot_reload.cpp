@@ -1,0 +1,131 @@
+#include "ui/hot_reload.h"
+
+#include "core/log.h"
+#include "shader/builtin_shaders.h"
+#include "shader/glsl_compiler.h"
+#include "shader/reflection.h"
+#include "shader/shader_library.h"
+
+#include <algorithm>
+#include <system_error>
+
+namespace candela::ui {
+
+namespace {
+
+// "forward.frag.glsl" → "forward.frag" when that is a built-in shader, else "".
+std::string shaderNameOf(const std::filesystem::path& file) {
+    if (file.extension() != ".glsl") return {};
+    const std::string name = file.stem().string();
+    return shader::builtinShader(name).empty() ? std::string() : name;
+}
+
+// Why `replacement` cannot stand in for `original` without rebuilding descriptor sets, or "".
+std::string layoutChange(const shader::ShaderReflection& original, const shader::ShaderReflection& replacement) {
+    if (original.pushConstants.size != replacement.pushConstants.size)
+        return "its push constants changed size (" + std::to_string(original.pushConstants.size) + " → " +
+               std::to_string(replacement.pushConstants.size) + " bytes)";
+    const auto key = [](const shader::DescriptorBinding& b) { return std::tuple(b.set, b.binding, b.type, b.count); };
+    std::vector<std::tuple<uint32_t, uint32_t, VkDescriptorType, uint32_t>> a, b;
+    for (const auto& binding : original.bindings) a.push_back(key(binding));
+    for (const auto& binding : replacement.bindings) b.push_back(key(binding));
+    if (a != b) return "its descriptor bindings changed";
+    return {};
+}
+
+}  // namespace
+
+ShaderHotReload::ShaderHotReload(std::filesystem::path shaderDir) : mDir(std::move(shaderDir)) {
+    std::error_code ec;
+    mEnabled = !mDir.empty() && std::filesystem::is_directory(mDir, ec);
+    if (mEnabled) scan(mTimes);
+}
+
+void ShaderHotReload::scan(std::map<std::filesystem::path, std::filesystem::file_time_type>& out) const {
+    std::error_code ec;
+    for (auto it = std::filesystem::recursive_directory_iterator(mDir, ec);
+         !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
+        const std::filesystem::path& path = it->path();
+        if (path.extension() != ".glsl" && path.extension() != ".h") continue;
+        std::error_code timeError;
+        const auto time = std::filesystem::last_write_time(path, timeError);
+        if (!timeError) out[path] = time;
+    }
+}
+
+bool ShaderHotReload::reload(const std::string& name, const std::filesystem::path& file) {
+    shader::CompileResult result = shader::compileGlsl(file, mDir);
+    mIncludes[name] = std::set<std::filesystem::path>(result.includes.begin(), result.includes.end());
+    if (!result.ok()) {
+        mErrors[name] = result.errors;
+        for (const std::string& e : result.errors) log::error("hot reload: " + e);
+        return false;
+    }
+    try {
+        const std::string change = layoutChange(shader::reflectSpirv(shader::builtinShader(name), name),
+                                                shader::reflectSpirv(result.spirv, name));
+        if (!change.empty()) {
+            mErrors[name] = {file.string() + ": " + change + "; restart the viewer to use it"};
+            log::error("hot reload: " + mErrors[name].front());
+            return false;
+        }
+    } catch (const std::exception& e) {
+        mErrors[name] = {file.string() + ": " + e.what()};
+        return false;
+    }
+    shader::replaceShader(name, std::move(result.spirv));
+    mErrors.erase(name);
+    log::info("hot reload: " + name + " replaced");
+    return true;
+}
+
+std::vector<std::string> ShaderHotReload::poll() {
+    std::vector<std::string> replaced;
+    if (!mEnabled) return replaced;
+    std::map<std::filesystem::path, std::filesystem::file_time_type> now;
+    scan(now);
+    std::vector<std::filesystem::path> saved;
+    auto newest = std::filesystem::file_time_type::min();
+    for (const auto& [path, time] : now) {
+        const auto it = mTimes.find(path);
+        if (it != mTimes.end() && it->second == time) continue;
+        saved.push_back(path);
+        newest = std::max(newest, time);
+    }
+    mTimes = std::move(now);
+    if (saved.empty()) return replaced;
+
+    // The shaders to recompile: saved shaders, and those including a saved header (every shader
+    // when a header's readers are not known yet).
+    std::map<std::string, std::filesystem::path> todo;
+    for (const std::filesystem::path& path : saved) {
+        if (const std::string name = shaderNameOf(path); !name.empty()) {
+            todo[name] = path;
+            continue;
+        }
+        for (const auto& [file, time] : mTimes) {
+            const std::string name = shaderNameOf(file);
+            if (name.empty()) continue;
+            const auto includes = mIncludes.find(name);
+            const bool reads = includes == mIncludes.end() ||
+                               std::any_of(includes->second.begin(), includes->second.end(), [&](const auto& header) {
+                                   std::error_code ec;
+                                   return std::filesystem::equivalent(header, path, ec);
+                               });
+            if (reads) todo[name] = file;
+        }
+    }
+    for (const auto& [name, file] : todo)
+        if (reload(name, file)) replaced.push_back(name);
+    if (!replaced.empty())
+        mLastSave = std::chrono::file_clock::to_sys(newest);
+    return replaced;
+}
+
+std::vector<std::string> ShaderHotReload::errors() const {
+    std::vector<std::string> all;
+    for (const auto& [name, errors] : mErrors) all.insert(all.end(), errors.begin(), errors.end());
+    return all;
+}
+
+}  // namespace candela::ui

@@ -1,0 +1,48 @@
+#pragma once
+// Shader hot reload for the viewer: watches a shaders/ folder (NAME.STAGE.glsl and the headers
+// they include). A saved shader — or a saved header, for every shader that includes it — is
+// recompiled with glslang; if it compiles and keeps its descriptor and push-constant layout it
+// replaces the built-in SPIR-V (shader/shader_library.h) and the pipelines using it are rebuilt at
+// their next use. Otherwise its errors (FILE:LINE: message) are kept for the UI and the old
+// pipelines keep running.
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace candela::ui {
+
+class ShaderHotReload {
+public:
+    // `shaderDir`: the folder holding the built-in shaders' sources. Watches nothing if it does
+    // not exist (an installed binary without its sources).
+    explicit ShaderHotReload(std::filesystem::path shaderDir);
+
+    // Looks for saved files (one stat per file) and handles them. Returns the shaders ("NAME.STAGE")
+    // replaced by this call.
+    std::vector<std::string> poll();
+
+    bool enabled() const { return mEnabled; }
+    const std::filesystem::path& folder() const { return mDir; }
+    // The current compile errors of every shader that failed its last reload, in file order.
+    std::vector<std::string> errors() const;
+    // When the newest file handled by the last poll() that replaced something was saved.
+    std::optional<std::chrono::system_clock::time_point> lastSave() const { return mLastSave; }
+
+private:
+    void scan(std::map<std::filesystem::path, std::filesystem::file_time_type>& out) const;
+    bool reload(const std::string& name, const std::filesystem::path& file);
+
+    std::filesystem::path mDir;
+    bool mEnabled = false;
+    std::map<std::filesystem::path, std::filesystem::file_time_type> mTimes;
+    std::map<std::string, std::set<std::filesystem::path>> mIncludes;  // shader → headers it read
+    std::map<std::string, std::vector<std::string>> mErrors;           // shader → errors
+    std::optional<std::chrono::system_clock::time_point> mLastSave;
+};
+
+}  // namespace candela::ui
