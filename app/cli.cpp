@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include "core/check.h"
+#include "passes/debug_view.h"
 
 #include <algorithm>
 #include <cctype>
@@ -130,6 +131,14 @@ Command parseCommandLine(const std::vector<std::string>& args) {
             if (v != "pbr" && v != "pbr-schlick-ggx" && v != "blinn-phong")
                 throw UserError("--shading: unknown model '" + v + "' (pbr, pbr-schlick-ggx, blinn-phong)");
             o.shading = v;
+        };
+        table.withValue["--debug-view"] = [&](const std::string& v) {
+            if (!passes::parseDebugView(v)) {
+                std::string names;
+                for (passes::DebugView view : passes::allDebugViews()) names += std::string(names.empty() ? "" : ", ") + passes::debugViewName(view);
+                throw UserError("--debug-view: unknown view '" + v + "' (" + names + ")");
+            }
+            o.debugView = v;
         };
         table.withValue["--tonemap"] = [&](const std::string& v) {
             if (v != "pbr-neutral" && v != "aces" && v != "agx" && v != "reinhard" && v != "linear")
@@ -279,6 +288,9 @@ render options:
   --fov DEGREES         vertical field of view of the orbit camera [45]
   --shading MODEL       pbr (height-correlated Smith GGX), pbr-schlick-ggx (the original project's
                         geometry term) or blinn-phong (the original project's first shader) [pbr]
+  --debug-view NAME     show a material input or a shading term instead of the image: base-color,
+                        geometric-normal, mapped-normal, roughness, metallic, occlusion, emissive,
+                        d, g, f (GGX terms toward the first light), diffuse, specular [none]
   --tonemap OP          pbr-neutral, aces (Hill's RRT+ODT fit), agx, reinhard or linear [pbr-neutral]
   --exposure EV         exposure in stops [0]
   --background BG       auto, skybox, transparent (alpha 0 in PNG) or #rrggbb

@@ -25,6 +25,7 @@ struct RenderOptions {
     std::optional<std::array<float, 3>> target;       // --target X,Y,Z
     float fovDegrees = 45.0f;         // --fov DEGREES (vertical)
     std::string shading = "pbr";      // --shading pbr|pbr-schlick-ggx|blinn-phong
+    std::string debugView = "none";   // --debug-view NAME (passes::parseDebugView)
     std::string tonemap = "pbr-neutral";  // --tonemap pbr-neutral|aces|agx|reinhard|linear
     float exposureEv = 0.0f;          // --exposure EV
     std::string background = "auto";  // --background auto|transparent|#rrggbb|skybox

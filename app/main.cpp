@@ -61,6 +61,7 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
                        : options.shading == "pbr-schlick-ggx" ? passes::ShadingModel::PbrSchlickGgx
                                                               : passes::ShadingModel::Pbr;
     settings.tonemap.op = *passes::parseTonemap(options.tonemap);  // validated by the parser
+    settings.debugView = *passes::parseDebugView(options.debugView);
     settings.tonemap.exposureEv = options.exposureEv;
     settings.tonemap.dither = options.dither;
     settings.environment = environment;

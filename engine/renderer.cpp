@@ -2,6 +2,7 @@
 
 #include "core/check.h"
 #include "passes/readback_pass.h"
+#include "shared/tonemap.h"
 #include "vk/context.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -351,11 +352,13 @@ TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& se
     }
     mParameters.beginFrame();
     applySceneParameters();
-    const passes::ForwardPass::Output forward = mForward.add(graph, settings.width, settings.height, view,
-                                                             settings.shading, ibl ? &*ibl : nullptr, &mParameters);
+    const passes::ForwardPass::Output forward =
+        mForward.add(graph, settings.width, settings.height, view, settings.shading, ibl ? &*ibl : nullptr, &mParameters,
+                     settings.debugView);
+    mDebugView = settings.debugView;
     mHdr = forward.hdr;
     mIblInGraph = ibl.has_value();
-    mSkyboxInGraph = ibl && settings.ibl.skybox;
+    mSkyboxInGraph = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;
     if (mSkyboxInGraph) {
         if (!mSkybox) mSkybox = std::make_unique<passes::SkyboxPass>(mContext);
         mHdr = mSkybox->add(graph, view, {.hdr = forward.hdr, .depth = forward.depth, .specular = ibl->maps.specular,
@@ -368,7 +371,16 @@ TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& se
                                  : graph.createTexture("ldr", {.width = settings.width,
                                                                .height = settings.height,
                                                                .format = VK_FORMAT_R8G8B8A8_UNORM});
-    return mTonemap.add(graph, mHdr, ldr, settings.tonemap, &mParameters);
+    passes::TonemapSettings tonemap = settings.tonemap;
+    // Debug views have no skybox: where it was the background, a neutral grey (#262626) is.
+    if (settings.debugView != passes::DebugView::None && ibl && settings.ibl.skybox && !tonemap.background)
+        tonemap.background = shading::srgbDecode(glm::vec3(38.0f / 255.0f));
+    if (settings.debugView != passes::DebugView::None && !passes::debugViewIsLight(settings.debugView)) {
+        tonemap.op = passes::Tonemap::Linear;  // data as it is
+        tonemap.exposureEv = 0.0f;
+        tonemap.dither = false;
+    }
+    return mTonemap.add(graph, mHdr, ldr, tonemap, &mParameters);
 }
 
 scene::ViewSetup Renderer::resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect) {
@@ -409,8 +421,14 @@ std::vector<std::string> Renderer::explain() const {
             lines.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
         for (const std::string& line : mForward.explanation()) lines.push_back(line);
         for (const std::string& line : mIbl->explanation()) lines.push_back(line);
+        if (mDebugView != passes::DebugView::None)
+            lines.push_back(std::string("debug view: ") + passes::debugViewName(mDebugView) +
+                            (passes::debugViewIsLight(mDebugView) ? " (tonemapped as the image is)"
+                                                                  : " (shown as data: linear tonemap at exposure 0)"));
         if (mIbl->hasEnvironment() && !mSkyboxInGraph)
-            lines.emplace_back("left out: skybox (the background is not the environment)");
+            lines.emplace_back(mDebugView != passes::DebugView::None
+                                   ? "left out: skybox (debug view)"
+                                   : "left out: skybox (the background is not the environment)");
     }
     return lines;
 }

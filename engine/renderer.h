@@ -56,6 +56,9 @@ struct RenderSettings {
     const scene::Scene* scene = nullptr;
     CameraSettings camera;
     passes::ShadingModel shading = passes::ShadingModel::Pbr;
+    // A debug view of the forward pass instead of the shaded image (a variant of the frame graph:
+    // no skybox; data views are tonemapped linearly at exposure 0, see passes::DebugView).
+    passes::DebugView debugView = passes::DebugView::None;
     // A scene without punctual lights gets a default key and fill light (directional), so that
     // it is visible before image-based lighting exists; false leaves it unlit.
     bool defaultLights = true;
@@ -215,6 +218,7 @@ private:
     std::filesystem::path mIblCacheDir;
     bool mIblInGraph = false;   // the last scene graph used image-based lighting
     bool mSkyboxInGraph = false;
+    passes::DebugView mDebugView = passes::DebugView::None;  // of the last scene graph
     shader::ParameterRegistry mParameters;
     vk::Buffer mReadback;
     std::vector<PassTime> mCompletedTimes;

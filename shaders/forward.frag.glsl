@@ -8,6 +8,7 @@
 #include "shared/environment.h"
 #include "shared/ibl.h"
 #include "shared/scene_data.h"
+#include "shared/tonemap.h"
 
 layout(constant_id = 0) const bool kNormalMap = false;
 layout(constant_id = 1) const bool kLights = true;
@@ -21,6 +22,8 @@ layout(constant_id = 7) const bool kMultiscatter = true;
 // environment (the specular cube's mip 0) per pixel with this many GGX and as many cosine samples,
 // instead of the split sum.
 layout(constant_id = 8) const uint kReferenceSamples = 0u;
+// A debug view (CANDELA_DEBUG_*) instead of the shaded colour.
+layout(constant_id = 9) const uint kDebugView = CANDELA_DEBUG_NONE;
 
 layout(std430, set = 0, binding = 0) readonly buffer Lights {
     LightData lights[];
@@ -69,15 +72,15 @@ vec4 sampleSlot(sampler2D tex, int slot) {
 
 // Shading normal: interpolated normal flipped for back faces of double-sided materials (or, where
 // it degenerates, the face normal on the viewer's side), perturbed by the normal map when the
-// variant has one.
-vec3 shadingNormal(MaterialData m) {
+// variant has one and `mapped` is set.
+vec3 shadingNormal(MaterialData m, bool mapped) {
     // The sign of dFdx × dFdy depends on the framebuffer's y direction (in Vulkan's y-down one it
     // points away from the viewer), not on the winding: orient it toward the eye explicitly.
     vec3 faceNormal = normalize(cross(dFdx(inWorldPosition), dFdy(inWorldPosition)));
     if (dot(faceNormal, push.eye.xyz - inWorldPosition) < 0.0f) faceNormal = -faceNormal;
     vec3 n = faceNormal;
     if (dot(inNormal, inNormal) > 1e-12f) n = gl_FrontFacing ? normalize(inNormal) : -normalize(inNormal);
-    if (kNormalMap) {
+    if (kNormalMap && mapped) {
         // Sampled outside the branch below: implicit-LOD sampling needs uniform control flow.
         vec3 tangentNormal = sampleSlot(normalTexture, CANDELA_TEX_NORMAL).xyz * 2.0f - 1.0f;
         vec3 t = inTangent.xyz - n * dot(n, inTangent.xyz);
@@ -95,10 +98,14 @@ vec3 shadingNormal(MaterialData m) {
     return n;
 }
 
+float occlusion(MaterialData m) {
+    return 1.0f + m.occlusionStrength * (sampleSlot(occlusionTexture, CANDELA_TEX_OCCLUSION).r - 1.0f);
+}
+
 // Diffuse and specular light from the environment (split sum). Occlusion (glTF: indirect light
 // only) darkens the diffuse term and, through specular occlusion, the specular one.
-vec3 imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float metallic, float roughness) {
-    float ao = 1.0f + m.occlusionStrength * (sampleSlot(occlusionTexture, CANDELA_TEX_OCCLUSION).r - 1.0f);
+BrdfLobes imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float metallic, float roughness) {
+    float ao = occlusion(m);
     float NoV = clamp(dot(n, v), CANDELA_MIN_NOV, 1.0f);
     vec3 r = iblLookupDirection(reflect(-v, n), push.ibl.rotation);
     vec3 nEnv = iblLookupDirection(n, push.ibl.rotation);
@@ -115,9 +122,11 @@ vec3 imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float metal
     vec2 lut = textureLod(brdfLut, brdfLutUv(NoV, roughness, push.ibl.lutSize), 0.0f).rg;
     vec3 f0 = mix(vec3(0.04f), baseColor, metallic);
     vec3 diffuseColor = baseColor * (1.0f - metallic);
-    vec3 light = iblShade(prefiltered, irradiance, lut, f0, diffuseColor, kMultiscatter, ao,
-                          specularOcclusion(NoV, ao, roughness));
-    return light * push.ibl.intensity;
+    BrdfLobes light = iblShadeLobes(prefiltered, irradiance, lut, f0, diffuseColor, kMultiscatter, ao,
+                                    specularOcclusion(NoV, ao, roughness));
+    light.diffuse *= push.ibl.intensity;
+    light.specular *= push.ibl.intensity;
+    return light;
 }
 
 // Radiance of the environment in world direction `d` for the ground truth: its equirectangular
@@ -202,13 +211,49 @@ vec3 referenceImageBasedLight(vec3 n, vec3 v, vec3 baseColor, float metallic, fl
     return (sampled + summed) * push.ibl.intensity;  // no occlusion texture in the report's scene
 }
 
+// Direction to punctual light `light` from the surface and its attenuation there.
+vec3 lightDirection(LightData light, out float attenuation) {
+    attenuation = 1.0f;
+    if (light.directionType.w == float(CANDELA_LIGHT_DIRECTIONAL)) return -light.directionType.xyz;
+    vec3 toLight = light.positionRange.xyz - inWorldPosition;
+    float distance2 = dot(toLight, toLight);
+    vec3 l = toLight * inversesqrt(max(distance2, 1e-30f));
+    attenuation = rangeAttenuation(distance2, light.positionRange.w);
+    if (light.directionType.w == float(CANDELA_LIGHT_SPOT)) attenuation *= spotAttenuation(-l, light.directionType.xyz, light.cone);
+    return l;
+}
+
+// Data shown as its value: the debug variants are paired with the linear tonemap at exposure 0,
+// which sRGB-encodes, so the value is decoded here and reaches the 8-bit output as value × 255.
+vec3 asData(vec3 value) { return srgbDecode(clamp(value, vec3(0.0f), vec3(1.0f))); }
+
+// The GGX terms toward the first punctual light (black without one): D relative to its peak
+// (D · π a², 1 where the half vector meets the normal), Smith's G (visibility × 4 N·L N·V), and
+// Schlick's F.
+vec3 termTowardFirstLight(vec3 n, vec3 v, vec3 baseColor, float metallic, float perceptualRoughness) {
+    if (!kLights || push.counts.x == 0u) return vec3(0.0f);
+    float attenuation;
+    vec3 l = lightDirection(lights[0], attenuation);
+    float NoL = dot(n, l);
+    if (NoL <= 0.0f) return vec3(0.0f);
+    float NoV = max(dot(n, v), CANDELA_MIN_NOV);
+    vec3 h = normalize(v + l);
+    float NoH = clamp(dot(n, h), 0.0f, 1.0f);
+    float roughness = clampRoughness(perceptualRoughness);
+    float a = roughness * roughness;
+    vec3 NxH = cross(n, h);
+    if (kDebugView == CANDELA_DEBUG_D) return vec3(distributionGgx(NoH, dot(NxH, NxH), a) * CANDELA_PI * a * a);
+    if (kDebugView == CANDELA_DEBUG_G) return vec3(visibilitySmithGgxCorrelated(NoV, NoL, a) * 4.0f * NoL * NoV);
+    return fresnelSchlick(clamp(dot(v, h), 0.0f, 1.0f), mix(vec3(0.04f), baseColor, metallic));
+}
+
 void main() {
     MaterialData m = materials[draws[push.counts.y].material.x];
     vec4 baseColor = m.baseColorFactor * inColor * sampleSlot(baseColorTexture, CANDELA_TEX_BASE_COLOR);
     if (kAlphaMask && baseColor.a < m.alphaCutoff) discard;
     float alpha = m.alphaMode == float(CANDELA_ALPHA_BLEND) ? baseColor.a : 1.0f;
 
-    if (kUnlit) {
+    if (kUnlit && kDebugView == CANDELA_DEBUG_NONE) {
         outColor = vec4(baseColor.rgb * alpha, alpha);
         return;
     }
@@ -216,34 +261,52 @@ void main() {
     vec4 mr = sampleSlot(metallicRoughnessTexture, CANDELA_TEX_METALLIC_ROUGHNESS);
     float metallic = clamp(m.metallic * mr.b, 0.0f, 1.0f);
     float roughness = clamp(m.roughness * mr.g, 0.0f, 1.0f);
-    vec3 n = shadingNormal(m);
+    vec3 n = shadingNormal(m, true);
     vec3 v = normalize(push.eye.xyz - inWorldPosition);
 
-    vec3 color = vec3(0.0f);
-    if (kLights) {
+    BrdfLobes lit;
+    lit.diffuse = vec3(0.0f);
+    lit.specular = vec3(0.0f);
+    vec3 reference = vec3(0.0f);
+    if (kLights && !kUnlit) {
         for (uint i = 0u; i < push.counts.x; ++i) {
             LightData light = lights[i];
-            vec3 l;
-            float attenuation = 1.0f;
-            if (light.directionType.w == float(CANDELA_LIGHT_DIRECTIONAL)) {
-                l = -light.directionType.xyz;
-            } else {
-                vec3 toLight = light.positionRange.xyz - inWorldPosition;
-                float distance2 = dot(toLight, toLight);
-                l = toLight * inversesqrt(max(distance2, 1e-30f));
-                attenuation = rangeAttenuation(distance2, light.positionRange.w);
-                if (light.directionType.w == float(CANDELA_LIGHT_SPOT))
-                    attenuation *= spotAttenuation(-l, light.directionType.xyz, light.cone);
-            }
-            color += brdfTimesCosine(n, v, l, baseColor.rgb, metallic, roughness, kShadingModel) * (light.color * light.intensity) *
-                     attenuation;
+            float attenuation;
+            vec3 l = lightDirection(light, attenuation);
+            BrdfLobes lobes = brdfLobesTimesCosine(n, v, l, baseColor.rgb, metallic, roughness, kShadingModel);
+            vec3 radiance = (light.color * light.intensity) * attenuation;
+            lit.diffuse += lobes.diffuse * radiance;
+            lit.specular += lobes.specular * radiance;
         }
     }
-    if (kIbl) {
-        if (kReferenceSamples > 0u) color += referenceImageBasedLight(n, v, baseColor.rgb, metallic, roughness);
-        else color += imageBasedLight(m, n, v, baseColor.rgb, metallic, roughness);
+    if (kIbl && !kUnlit) {
+        if (kReferenceSamples > 0u) {
+            reference = referenceImageBasedLight(n, v, baseColor.rgb, metallic, roughness);
+        } else {
+            BrdfLobes environment = imageBasedLight(m, n, v, baseColor.rgb, metallic, roughness);
+            lit.diffuse += environment.diffuse;
+            lit.specular += environment.specular;
+        }
     }
-    color += m.emissive.rgb * sampleSlot(emissiveTexture, CANDELA_TEX_EMISSIVE).rgb;
+    vec3 emissive = m.emissive.rgb * sampleSlot(emissiveTexture, CANDELA_TEX_EMISSIVE).rgb;
+
+    if (kDebugView != CANDELA_DEBUG_NONE) {
+        vec3 value = vec3(0.0f);
+        if (kDebugView == CANDELA_DEBUG_BASE_COLOR) value = baseColor.rgb;
+        else if (kDebugView == CANDELA_DEBUG_GEOMETRIC_NORMAL) value = asData(shadingNormal(m, false) * 0.5f + 0.5f);
+        else if (kDebugView == CANDELA_DEBUG_MAPPED_NORMAL) value = asData(n * 0.5f + 0.5f);
+        else if (kDebugView == CANDELA_DEBUG_ROUGHNESS) value = asData(vec3(roughness));
+        else if (kDebugView == CANDELA_DEBUG_METALLIC) value = asData(vec3(metallic));
+        else if (kDebugView == CANDELA_DEBUG_OCCLUSION) value = asData(vec3(occlusion(m)));
+        else if (kDebugView == CANDELA_DEBUG_EMISSIVE) value = emissive;
+        else if (kDebugView == CANDELA_DEBUG_DIFFUSE) value = lit.diffuse;
+        else if (kDebugView == CANDELA_DEBUG_SPECULAR) value = lit.specular;
+        else value = asData(termTowardFirstLight(n, v, baseColor.rgb, metallic, roughness));
+        outColor = vec4(min(value, vec3(60000.0f)) * alpha, alpha);
+        return;
+    }
+
+    vec3 color = lit.diffuse + lit.specular + reference + emissive;
     // Radiance can exceed half-float range with extreme lights: keep it finite.
     color = min(color, vec3(60000.0f));
     outColor = vec4(color * alpha, alpha);

@@ -10,6 +10,8 @@ namespace candela::passes {
 
 using namespace graph;
 
+static_assert(uint32_t(DebugView::Specular) == CANDELA_DEBUG_SPECULAR && uint32_t(DebugView::D) == CANDELA_DEBUG_D);
+
 std::string ForwardPass::Variant::name() const {
     std::string out = unlit ? "unlit" : model == ShadingModel::BlinnPhong ? "blinn-phong"
                                     : model == ShadingModel::PbrSchlickGgx ? "pbr-schlick-ggx"
@@ -20,6 +22,7 @@ std::string ForwardPass::Variant::name() const {
     if (blend) out += "+blend";
     if (ibl && !unlit) out += std::string("+ibl-") + (irradianceSh ? "sh9" : "cube") + (multiscatter ? "" : "-single-scatter") +
                (referenceSamples ? "-reference" + std::to_string(referenceSamples) : "");
+    if (debugView != DebugView::None) out += std::string("+debug-") + debugViewName(debugView);
     return out;
 }
 
@@ -40,7 +43,7 @@ const vk::Pipeline& ForwardPass::pipeline(const Variant& v) {
         .blend = v.blend ? vk::BlendMode::Premultiplied : vk::BlendMode::None,
         .dynamicCullMode = true,
         .specialization = {v.normalMap, v.lights, v.unlit, v.alphaMask, static_cast<uint32_t>(v.model), v.ibl,
-                           v.irradianceSh, v.multiscatter, v.referenceSamples},
+                           v.irradianceSh, v.multiscatter, v.referenceSamples, static_cast<uint32_t>(v.debugView)},
         .vertexBindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}},
         .vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
@@ -51,7 +54,8 @@ const vk::Pipeline& ForwardPass::pipeline(const Variant& v) {
     return mPipelines.emplace(v, vk::Pipeline::graphics(mContext, "forward.vert", "forward.frag", desc)).first->second;
 }
 
-ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl) const {
+ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl,
+                                            DebugView debugView) const {
     const scene::Material& m = mScene->scene().materials[draw.material];
     Variant v;
     v.unlit = m.unlit;
@@ -64,6 +68,7 @@ ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingMode
     v.irradianceSh = !v.ibl || ibl->irradianceSh;
     v.multiscatter = !v.ibl || ibl->multiscatter;
     v.referenceSamples = v.ibl ? ibl->referenceSamples : 0;
+    v.debugView = debugView;
     return v;
 }
 
@@ -105,13 +110,14 @@ void ForwardPass::setIblMaps(const ibl::IblMaps& maps) {
 }
 
 ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
-                                     ShadingModel model, const Ibl* ibl, shader::ParameterRegistry* parameters) {
+                                     ShadingModel model, const Ibl* ibl, shader::ParameterRegistry* parameters,
+                                     DebugView debugView) {
     const scene::Scene& scene = mScene->scene();
     std::vector<DrawItem> opaque, blended;
     std::map<std::string, uint32_t> variantCounts;
     for (uint32_t i = 0; i < scene.draws.size(); ++i) {
         const scene::Draw& draw = scene.draws[i];
-        const Variant v = variantOf(draw, model, ibl);
+        const Variant v = variantOf(draw, model, ibl, debugView);
         ++variantCounts[v.name()];
         const glm::vec3 centre = 0.5f * (draw.bounds.min + draw.bounds.max);
         (v.blend ? blended : opaque).push_back({i, &pipeline(v), glm::length(centre - view.eye)});

@@ -5,6 +5,7 @@
 // specialization constants, so what a draw does not use costs nothing.
 
 #include "graph/render_graph.h"
+#include "passes/debug_view.h"
 #include "shader/parameter_registry.h"
 #include "ibl/ibl_maps.h"
 #include "shared/ibl.h"
@@ -14,6 +15,8 @@
 #include "vk/pipeline.h"
 
 #include <map>
+#include <optional>
+#include <string_view>
 #include <memory>
 #include <string>
 #include <vector>
@@ -21,6 +24,7 @@
 namespace candela::passes {
 
 enum class ShadingModel : uint32_t { Pbr = 0, PbrSchlickGgx = 1, BlinnPhong = 2 };
+
 
 class ForwardPass {
 public:
@@ -53,7 +57,8 @@ public:
     // when `ibl` is given, the environment. Returns the written targets.
     // With `parameters`, the user's values for the per-frame push constants apply ("forward", "Push").
     Output add(graph::RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
-               ShadingModel model, const Ibl* ibl = nullptr, shader::ParameterRegistry* parameters = nullptr);
+               ShadingModel model, const Ibl* ibl = nullptr, shader::ParameterRegistry* parameters = nullptr,
+               DebugView debugView = DebugView::None);
     // The reflection of the forward shaders (every variant shares the layout).
     const shader::ShaderReflection& reflection() { return pipeline(Variant{}).program().reflection(); }
 
@@ -75,6 +80,7 @@ private:
         bool irradianceSh = true;
         bool multiscatter = true;
         uint32_t referenceSamples = 0;
+        DebugView debugView = DebugView::None;
         auto operator<=>(const Variant&) const = default;
         std::string name() const;
     };
@@ -84,7 +90,7 @@ private:
         float depth;  // view distance, for sorting blended draws
     };
     const vk::Pipeline& pipeline(const Variant& variant);
-    Variant variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl) const;
+    Variant variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl, DebugView debugView) const;
 
     vk::Context& mContext;
     std::map<Variant, vk::Pipeline> mPipelines;

@@ -275,6 +275,7 @@ void Viewer::drawUi() {
     if (ImGui::CollapsingHeader("Shader parameters", ImGuiTreeNodeFlags_DefaultOpen)) drawParameterPanel(*this);
     if (ImGui::CollapsingHeader("Materials")) drawMaterialPanel(*this);
     if (ImGui::CollapsingHeader("Camera")) drawCameraPanel(*this);
+    if (ImGui::CollapsingHeader("Debug view")) drawDebugViewPanel(*this);
     if (ImGui::CollapsingHeader("Frame stats", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(*this);
     ImGui::PopItemWidth();
     ImGui::End();

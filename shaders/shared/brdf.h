@@ -62,12 +62,21 @@ CANDELA_FN vec3 fresnelSchlick(float VoH, vec3 f0) {
     return f0 + (vec3(1.0f) - f0) * (x2 * x2 * x);
 }
 
-// Reflected radiance per unit incident radiance from direction L: f(V, L) · (N·L).
-// N, V, L unit vectors; V points to the viewer, L to the light.
-CANDELA_FN vec3 brdfTimesCosine(vec3 N, vec3 V, vec3 L, vec3 baseColor, float metallic, float perceptualRoughness,
-                                uint model) {
+// The diffuse and specular parts of a reflection (the debug views show them apart).
+struct BrdfLobes {
+    vec3 diffuse;
+    vec3 specular;
+};
+
+// Reflected radiance per unit incident radiance from direction L, f(V, L) · (N·L), as its diffuse
+// and specular lobes. N, V, L unit vectors; V points to the viewer, L to the light.
+CANDELA_FN BrdfLobes brdfLobesTimesCosine(vec3 N, vec3 V, vec3 L, vec3 baseColor, float metallic,
+                                          float perceptualRoughness, uint model) {
+    BrdfLobes lobes;
+    lobes.diffuse = vec3(0.0f);
+    lobes.specular = vec3(0.0f);
     float NoL = dot(N, L);
-    if (NoL <= 0.0f) return vec3(0.0f);
+    if (NoL <= 0.0f) return lobes;
     float NoV = max(dot(N, V), CANDELA_MIN_NOV);
     vec3 H = V + L;
     float lengthH = length(H);
@@ -83,7 +92,9 @@ CANDELA_FN vec3 brdfTimesCosine(vec3 N, vec3 V, vec3 L, vec3 baseColor, float me
         float shininess = 2.0f / max(pow(clampRoughness(perceptualRoughness), 4.0f), 1e-4f) - 2.0f;
         // GLSL's pow(0, y ≤ 0) is undefined (lavapipe returns 0, C++ 1): roughness 1 gives shininess 0.
         float specular = shininess > 0.0f ? pow(NoH, shininess) : 1.0f;
-        return (baseColor + vec3(specular * specularWeight)) * NoL;
+        lobes.diffuse = baseColor * NoL;
+        lobes.specular = vec3(specular * specularWeight * NoL);
+        return lobes;
     }
     float roughness = clampRoughness(perceptualRoughness);
     float a = roughness * roughness;
@@ -93,9 +104,16 @@ CANDELA_FN vec3 brdfTimesCosine(vec3 N, vec3 V, vec3 L, vec3 baseColor, float me
     float D = distributionGgx(NoH, NoH > 0.0f ? dot(NxH, NxH) : 1.0f, a);  // 1 where N·H was clamped to 0
     float Vis = model == CANDELA_SHADING_PBR_SCHLICK_GGX ? visibilitySchlickGgx(NoV, NoL, roughness)
                                                           : visibilitySmithGgxCorrelated(NoV, NoL, a);
-    vec3 specular = F * (D * Vis * specularWeight);
-    vec3 diffuse = (vec3(1.0f) - F) * (1.0f - metallic) * baseColor * (1.0f / CANDELA_PI);
-    return (diffuse + specular) * NoL;
+    lobes.specular = F * (D * Vis * specularWeight) * NoL;
+    lobes.diffuse = (vec3(1.0f) - F) * (1.0f - metallic) * baseColor * (1.0f / CANDELA_PI) * NoL;
+    return lobes;
+}
+
+// f(V, L) · (N·L): both lobes.
+CANDELA_FN vec3 brdfTimesCosine(vec3 N, vec3 V, vec3 L, vec3 baseColor, float metallic, float perceptualRoughness,
+                                uint model) {
+    BrdfLobes lobes = brdfLobesTimesCosine(N, V, L, baseColor, metallic, perceptualRoughness, model);
+    return lobes.diffuse + lobes.specular;
 }
 
 CANDELA_NAMESPACE_END

@@ -15,6 +15,7 @@
 #ifndef CANDELA_SHARED_IBL_H
 #define CANDELA_SHARED_IBL_H
 
+#include "shared/brdf.h"
 #include "shared/compat.h"
 
 CANDELA_NAMESPACE_BEGIN
@@ -234,8 +235,8 @@ CANDELA_FN float specularOcclusion(float NoV, float ao, float roughness) {
 //   F_ms·E_ms, F_ms = E_ss·F_avg / (1 − E_ms·F_avg), F_avg = f0 + (1 − f0)/21,
 // lit by the irradiance, and the diffuse weight becomes (1 − E_ss − F_ms·E_ms). Under a uniform
 // white environment a white surface then reflects exactly 1 (white furnace).
-CANDELA_FN vec3 iblShade(vec3 prefiltered, vec3 irradiance, vec2 lut, vec3 f0, vec3 diffuseColor, bool multiscatter,
-                         float diffuseOcclusion, float specularOcclusionFactor) {
+CANDELA_FN BrdfLobes iblShadeLobes(vec3 prefiltered, vec3 irradiance, vec2 lut, vec3 f0, vec3 diffuseColor,
+                                   bool multiscatter, float diffuseOcclusion, float specularOcclusionFactor) {
     vec3 singleScatter = f0 * lut.x + lut.y;
     vec3 multiScatter = vec3(0.0f);
     if (multiscatter) {
@@ -245,9 +246,17 @@ CANDELA_FN vec3 iblShade(vec3 prefiltered, vec3 irradiance, vec2 lut, vec3 f0, v
         multiScatter = fms * lost;
     }
     vec3 diffuseWeight = diffuseColor * max(vec3(1.0f) - singleScatter - multiScatter, vec3(0.0f));
-    vec3 specular = prefiltered * singleScatter * specularOcclusionFactor;
-    vec3 diffuse = (multiScatter + diffuseWeight) * irradiance * diffuseOcclusion;
-    return specular + diffuse;
+    BrdfLobes lobes;
+    lobes.specular = prefiltered * singleScatter * specularOcclusionFactor;
+    lobes.diffuse = (multiScatter + diffuseWeight) * irradiance * diffuseOcclusion;
+    return lobes;
+}
+
+CANDELA_FN vec3 iblShade(vec3 prefiltered, vec3 irradiance, vec2 lut, vec3 f0, vec3 diffuseColor, bool multiscatter,
+                         float diffuseOcclusion, float specularOcclusionFactor) {
+    BrdfLobes lobes = iblShadeLobes(prefiltered, irradiance, lut, f0, diffuseColor, multiscatter, diffuseOcclusion,
+                                    specularOcclusionFactor);
+    return lobes.specular + lobes.diffuse;
 }
 
 CANDELA_NAMESPACE_END

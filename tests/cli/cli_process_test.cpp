@@ -176,7 +176,13 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"IblReportZeroRepeats", "ibl-report --repeats 0 --out {dir}/r", "--repeats: need at least 1"},
                       BadInput{"IblReportUnwritableOut", "ibl-report --out /proc/candela-report", "/proc/candela-report: cannot create the report folder"},
                       BadInput{"SkyboxBlurAboveOne", "render --skybox-blur 2 --out {dir}/x.png", "--skybox-blur: expected 0 (sharp) to 1, got '2'"},
-                      BadInput{"ExposureNan", "render --exposure nan --out {dir}/x.png", "--exposure: expected a number, got 'nan'"}),
+                      BadInput{"ExposureNan", "render --exposure nan --out {dir}/x.png", "--exposure: expected a number, got 'nan'"},
+                      BadInput{"DebugViewUnknown", "render --debug-view normals --out {dir}/x.png",
+                               "--debug-view: unknown view 'normals' (base-color, geometric-normal, mapped-normal, roughness, "
+                               "metallic, occlusion, emissive, d, g, f, diffuse, specular)"},
+                      BadInput{"ViewScreenshotWithoutFrames", "view --screenshot {dir}/x.png",
+                               "--screenshot: also give --frames N (the frame to save; the viewer then exits)"},
+                      BadInput{"ViewTwoScenes", "view a.glb b.glb", "unexpected argument 'b.glb': the scene is already a.glb"}),
     [](const ::testing::TestParamInfo<BadInput>& row) { return std::string(row.param.name); });
 
 TEST(Cli, HelpExitsZero) { EXPECT_EQ(run("--help").exitCode, 0); }

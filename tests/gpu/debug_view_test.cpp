@@ -1,0 +1,123 @@
+// Debug views of the forward pass (passes/debug_view.h) on the built-in sphere grid: data is shown
+// as its value, the lobes add up to the image, and the graph variant leaves out the skybox.
+#include "gpu_test.h"
+
+#include "renderer.h"
+#include "scene/builtin_scenes.h"
+#include "scene/procedural_sky.h"
+#include "shared/tonemap.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace candela::test {
+namespace {
+
+constexpr uint32_t kWidth = 480, kHeight = 270;
+
+class DebugViewTest : public GpuTest {
+protected:
+    CapturedFrame render(passes::DebugView view, bool floatOutput = false) {
+        RenderSettings settings{.width = kWidth, .height = kHeight, .floatOutput = floatOutput, .scene = &mGrid};
+        settings.debugView = view;
+        return renderer().capture(settings);
+    }
+    Renderer& renderer() {
+        if (!mRenderer) mRenderer = std::make_unique<Renderer>(context());
+        return *mRenderer;
+    }
+    // The pixel at the centre of the sphere of `row` (0: bottom) and `column` (0: left).
+    glm::ivec2 sphereCentre(int row, int column) const {
+        const scene::Draw& draw = mGrid.draws[size_t(row) * 7 + size_t(column)];
+        const glm::vec3 centre = 0.5f * (draw.bounds.min + draw.bounds.max);
+        const scene::ViewSetup view = Renderer::resolveView(mGrid, {}, float(kWidth) / float(kHeight));
+        const glm::vec4 clip = view.viewProjection * glm::vec4(centre, 1.0f);
+        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+        return {int((ndc.x * 0.5f + 0.5f) * kWidth), int((ndc.y * 0.5f + 0.5f) * kHeight)};
+    }
+    static const uint8_t* pixel(const CapturedFrame& frame, glm::ivec2 p) {
+        return frame.rgba8.data() + (size_t(p.y) * frame.width + size_t(p.x)) * 4;
+    }
+
+    scene::Scene mGrid = scene::makeSphereGrid();
+    std::unique_ptr<Renderer> mRenderer;
+};
+
+TEST_F(DebugViewTest, MetallicAndRoughnessAreShownAsTheirValues) {
+    const CapturedFrame metallic = render(passes::DebugView::Metallic);
+    const CapturedFrame roughness = render(passes::DebugView::Roughness);
+    for (int row = 0; row < 7; ++row)
+        for (int column = 0; column < 7; ++column) {
+            const scene::Material& m = mGrid.materials[mGrid.draws[size_t(row) * 7 + size_t(column)].material];
+            const glm::ivec2 p = sphereCentre(row, column);
+            EXPECT_NEAR(pixel(metallic, p)[0], 255.0f * m.metallicFactor, 1.0f) << row << "," << column;
+            EXPECT_NEAR(pixel(roughness, p)[1], 255.0f * m.roughnessFactor, 1.0f) << row << "," << column;
+        }
+}
+
+TEST_F(DebugViewTest, NormalsFaceTheCameraAtSphereCentresAndBaseColourIsTheFactor) {
+    const CapturedFrame normals = render(passes::DebugView::GeometricNormal);
+    const CapturedFrame mapped = render(passes::DebugView::MappedNormal);  // no normal maps: the same
+    const CapturedFrame base = render(passes::DebugView::BaseColor);
+    const scene::ViewSetup view = Renderer::resolveView(mGrid, {}, float(kWidth) / float(kHeight));
+    const glm::ivec2 p = sphereCentre(3, 3);
+    const glm::vec3 n = glm::normalize(view.eye - glm::vec3(0.0f));  // the middle sphere sits at the origin
+    // Within the tessellated sphere's interpolated normals (≈ 0.05) of the true one; an sRGB-encoded
+    // 0.5 would read 188, not 128.
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(pixel(normals, p)[c], 255.0f * (n[c] * 0.5f + 0.5f), 8.0f) << c;
+        EXPECT_EQ(pixel(mapped, p)[c], pixel(normals, p)[c]);
+    }
+    const glm::vec3 srgb = shading::srgbEncode(glm::vec3(mGrid.materials[0].baseColorFactor));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(pixel(base, p)[c], 255.0f * srgb[c], 1.0f) << c;
+}
+
+TEST_F(DebugViewTest, DiffuseAndSpecularAddUpToTheImage) {
+    const CapturedFrame image = render(passes::DebugView::None, true);
+    const CapturedFrame diffuse = render(passes::DebugView::Diffuse, true);
+    const CapturedFrame specular = render(passes::DebugView::Specular, true);
+    size_t compared = 0;
+    double worst = 0.0;
+    for (size_t i = 0; i < image.rgba32f.size(); ++i) {
+        if (i % 4 == 3) continue;
+        const double sum = double(diffuse.rgba32f[i]) + specular.rgba32f[i];
+        worst = std::max(worst, std::abs(sum - image.rgba32f[i]) / (std::abs(image.rgba32f[i]) + 1e-2));
+        ++compared;
+    }
+    EXPECT_GT(compared, 0u);
+    EXPECT_LT(worst, 4e-3);  // three half-float roundings
+}
+
+TEST_F(DebugViewTest, GgxTermsStayInTheirRanges) {
+    const CapturedFrame d = render(passes::DebugView::D);
+    const CapturedFrame g = render(passes::DebugView::G);
+    const CapturedFrame f = render(passes::DebugView::F);
+    // Dielectric, smooth: F at least F0 = 0.04 where the first light reaches; G close to 1 facing it.
+    const glm::ivec2 p = sphereCentre(0, 0);
+    EXPECT_GE(pixel(f, p)[0], uint8_t(0.04f * 255.0f) - 1);
+    EXPECT_GT(pixel(g, p)[0], 200);
+    // D relative to its peak: the highlight of the smoothest row reaches 1 somewhere.
+    uint8_t peak = 0;
+    for (size_t i = 0; i < d.rgba8.size(); i += 4) peak = std::max(peak, d.rgba8[i]);
+    EXPECT_EQ(peak, 255);
+}
+
+TEST_F(DebugViewTest, IsAGraphVariantWithoutTheSkybox) {
+    const scene::Environment sky = scene::makeProceduralSky();
+    RenderSettings settings{.width = 64, .height = 36, .scene = &mGrid};
+    settings.environment = &sky;
+    settings.iblQuality.cubeSize = 64;
+    settings.debugView = passes::DebugView::Roughness;
+    renderer().capture(settings);
+    EXPECT_FALSE(renderer().lastGraph().findPass("skybox").has_value());
+    const std::vector<std::string> lines = renderer().explain();
+    EXPECT_NE(std::find(lines.begin(), lines.end(), "debug view: roughness (shown as data: linear tonemap at exposure 0)"),
+              lines.end());
+    settings.debugView = passes::DebugView::None;
+    renderer().capture(settings);
+    EXPECT_TRUE(renderer().lastGraph().findPass("skybox").has_value());
+}
+
+}  // namespace
+}  // namespace candela::test
