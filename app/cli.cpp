@@ -214,6 +214,29 @@ Command parseCommandLine(const std::vector<std::string>& args) {
             };
             table.switches["--no-vsync"] = [&] { o.vsync = false; };
             table.switches["--no-ui"] = [&] { o.ui = false; };
+            table.withValue["--shaders"] = [&](const std::string& v) {
+                if (v.empty()) throw UserError("--shaders: expected the folder holding the shaders' GLSL");
+                o.shaderDir = v;
+            };
+            table.withValue["--panels"] = [&](const std::string& v) {
+                static const std::vector<std::string> known = {"graph", "parameters", "materials", "environment",
+                                                               "camera", "debug", "stats"};
+                o.panels.clear();
+                size_t start = 0;
+                while (start <= v.size()) {
+                    const size_t comma = std::min(v.find(',', start), v.size());
+                    const std::string panel = v.substr(start, comma - start);
+                    if (std::find(known.begin(), known.end(), panel) == known.end())
+                        throw UserError("--panels: unknown panel '" + panel +
+                                        "' (graph, parameters, materials, environment, camera, debug, stats)");
+                    o.panels.push_back(panel);
+                    start = comma + 1;
+                }
+            };
+            table.withValue["--ibl-report"] = [&](const std::string& v) {
+                if (v.empty()) throw UserError("--ibl-report: expected a report.csv written by candela ibl-report");
+                o.iblReport = v;
+            };
         }
     } else if (name == "info") {
         command.kind = Command::Kind::Info;
@@ -323,6 +346,10 @@ view options: the render options (except --out, --width and --height: the window
   --screenshot FILE     save the last of the --frames N frames, UI included, as PNG
   --no-vsync            present without waiting for the display (mailbox or immediate)
   --no-ui               hide the ImGui panels (the ImGui pass is left out)
+  --panels LIST         panels open at start, comma-separated: graph, parameters, materials,
+                        environment, camera, debug, stats [graph,parameters,stats]
+  --shaders DIR         hot-reload the shaders from DIR [the source tree's shaders/ folder]
+  --ibl-report FILE     show this ibl-report CSV's figures in the environment panel too
   mouse and keys: right-drag rotate, middle-drag pan, wheel zoom, F frame the scene, R reset the
   camera, P or F12 screenshot (candela-screenshot.png), Esc quit; drop a .gltf/.glb to open it,
   an .hdr/.exr to light the scene with it

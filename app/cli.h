@@ -40,6 +40,9 @@ struct RenderOptions {
     std::string screenshot;           // view: --screenshot FILE (saves the last of --frames N)
     bool vsync = true;                // view: --no-vsync
     bool ui = true;                   // view: --no-ui
+    std::string shaderDir;            // view: --shaders DIR (hot reload; default: the source tree's shaders/)
+    std::string iblReport;            // view: --ibl-report FILE (an ibl-report CSV for the environment panel)
+    std::vector<std::string> panels = {"graph", "parameters", "stats"};  // view: --panels A,B,... (open at start)
     bool json = false;                // bench: --json
     std::string out = "candela.png";  // --out FILE (.png, .exr, .pfm)
     uint32_t width = 1280;            // --width W

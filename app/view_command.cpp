@@ -33,6 +33,9 @@ int runView(const RenderOptions& options) {
                    .height = options.height};
     desc.vsync = options.vsync;
     desc.ui = options.ui;
+    desc.shaderDir = options.shaderDir;
+    desc.iblReport = options.iblReport;
+    desc.openPanels = std::set<std::string>(options.panels.begin(), options.panels.end());
     ui::Viewer viewer(desc, std::move(content));
     if (options.frames > 0) {
         // frame() also returns true for frames not rendered (minimized window): count rendered ones.

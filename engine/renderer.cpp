@@ -128,6 +128,10 @@ void Renderer::shadersReplaced(const std::vector<std::string>& names) {
     if (mEnvironment) useEnvironment(mEnvironment, mIblQuality, mIblCacheDir, /*force=*/true);
 }
 
+void Renderer::recomputeIbl() {
+    if (mEnvironment) useEnvironment(mEnvironment, mIblQuality, {}, /*force=*/true);
+}
+
 void Renderer::applyToggles(RenderGraph& graph, const RenderSettings& settings) {
     for (const std::string& name : settings.disabledPasses) {
         if (!graph.findPass(name)) {

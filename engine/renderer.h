@@ -143,6 +143,9 @@ public:
     // next use by themselves; a replaced IBL shader also discards the maps, so that the next frame
     // runs the precompute with it.
     void shadersReplaced(const std::vector<std::string>& names);
+    // Runs the IBL precompute again in the next frame (not from the cache), for the environment and
+    // quality of the last frame.
+    void recomputeIbl();
 
     // Runs the IBL precompute passes alone for `environment` at `quality` — always, even when the
     // maps are current; no cache — and waits. The maps then serve the following frames (read them

@@ -7,6 +7,7 @@
 #include "passes/imgui_pass.h"
 #include "scene/gltf_loader.h"
 #include "scene/picking.h"
+#include "scene/procedural_sky.h"
 #include "shader/shader_library.h"
 #include "ui/panels.h"
 #include "vk/swapchain.h"
@@ -104,6 +105,9 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
         mCamera = *mSettings.camera.orbitCamera;
     }
     mInitialCamera = mCamera;
+    mOpenPanels = desc.openPanels;
+    if (!desc.iblReport.empty()) mIblReports.push_back(loadIblReport(desc.iblReport));
+    for (IblReportTable& table : builtinIblReports()) mIblReports.push_back(std::move(table));
     mLastFrame = std::chrono::steady_clock::now();
 }
 
@@ -196,6 +200,23 @@ void Viewer::resetCamera() { mCamera = mInitialCamera; }
 void Viewer::setVsync(bool vsync) { mSwapchain->setVsync(vsync); }
 bool Viewer::vsync() const { return mSwapchain->vsync(); }
 
+void Viewer::useProceduralSky() {
+    mRenderer->waitIdle();
+    mEnvironment = std::make_unique<scene::Environment>(scene::makeProceduralSky());
+    mSettings.ibl.skybox = true;
+    mSettings.tonemap.background.reset();
+    setStatus("environment: procedural sky");
+}
+
+void Viewer::useNoEnvironment() {
+    mRenderer->waitIdle();
+    mEnvironment.reset();
+    if (!mSettings.tonemap.background) mSettings.tonemap.background = glm::vec3(0.0194f);  // #262626
+    setStatus("environment: none");
+}
+
+void Viewer::recomputeIbl() { mRenderer->recomputeIbl(); }
+
 bool Viewer::exportGraph(const std::filesystem::path& path, bool json) {
     const graph::RenderGraph& graph = mRenderer->lastGraph();
     // The latest completed frame may be an older graph than the last declared one: match by name.
@@ -271,12 +292,21 @@ void Viewer::drawUi() {
         ImGui::TextWrapped("%s", error.c_str());
         ImGui::PopStyleColor();
     }
-    if (ImGui::CollapsingHeader("Render graph", ImGuiTreeNodeFlags_DefaultOpen)) drawGraphPanel(*this);
-    if (ImGui::CollapsingHeader("Shader parameters", ImGuiTreeNodeFlags_DefaultOpen)) drawParameterPanel(*this);
-    if (ImGui::CollapsingHeader("Materials")) drawMaterialPanel(*this);
-    if (ImGui::CollapsingHeader("Camera")) drawCameraPanel(*this);
-    if (ImGui::CollapsingHeader("Debug view")) drawDebugViewPanel(*this);
-    if (ImGui::CollapsingHeader("Frame stats", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(*this);
+    const struct {
+        const char* key;
+        const char* title;
+        void (*draw)(Viewer&);
+    } panels[] = {{"graph", "Render graph", drawGraphPanel},
+                  {"parameters", "Shader parameters", drawParameterPanel},
+                  {"materials", "Materials", drawMaterialPanel},
+                  {"environment", "Environment / IBL", drawEnvironmentPanel},
+                  {"camera", "Camera", drawCameraPanel},
+                  {"debug", "Debug view", drawDebugViewPanel},
+                  {"stats", "Frame stats", drawStatsPanel}};
+    for (const auto& panel : panels) {
+        ImGui::SetNextItemOpen(mOpenPanels.count(panel.key) > 0, ImGuiCond_Once);
+        if (ImGui::CollapsingHeader(panel.title)) panel.draw(*this);
+    }
     ImGui::PopItemWidth();
     ImGui::End();
     ImGui::Render();
@@ -362,7 +392,15 @@ bool Viewer::frame() {
         overlay = [this](graph::RenderGraph& graph, graph::TextureId texture) { return mImGuiPass->add(graph, texture); };
     std::optional<CapturedFrame> shot;
     if (mScreenshot && mSwapchain->canReadBack()) shot.emplace();
+    const auto renderStart = std::chrono::steady_clock::now();
     mRenderer->renderToTarget(settings, target, overlay, shot ? &*shot : nullptr);
+    if (mRenderer->lastGraph().findPass("ibl_cubemap")) {
+        // The renderer waited for the precompute frame: its pass times are in.
+        mPrecomputeMs = msBetween(renderStart, std::chrono::steady_clock::now());
+        mPrecomputeGpuMs = 0.0;
+        for (const PassTime& t : mRenderer->completedPassTimes())
+            if (t.name.rfind("ibl_", 0) == 0 && t.gpuMs > 0.0) mPrecomputeGpuMs += t.gpuMs;
+    }
     if (!mSwapchain->present(*image)) mRecreate = true;
     ++mFramesRendered;
     if (mReloadSaved) {

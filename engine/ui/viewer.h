@@ -10,6 +10,7 @@
 #include "scene/environment.h"
 #include "scene/scene.h"
 #include "ui/hot_reload.h"
+#include "ui/ibl_report_table.h"
 #include "ui/orbit_controls.h"
 #include "ui/window.h"
 #include "vk/context.h"
@@ -18,6 +19,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,10 @@ struct ViewerDesc {
     // Hot reload of the shaders' GLSL from this folder; empty: the shaders/ folder of the source
     // tree the viewer was built from (when it exists).
     std::filesystem::path shaderDir;
+    // An ibl-report CSV shown in the environment panel before the compiled-in ones (empty: none).
+    std::filesystem::path iblReport;
+    // The panels open at start: graph, parameters, materials, environment, camera, debug, stats.
+    std::set<std::string> openPanels = {"graph", "parameters", "stats"};
 };
 
 // What the viewer shows at start: the scene and environment (owned by the viewer from now on) and
@@ -78,6 +84,11 @@ public:
     void resetCamera();  // R: the initial view
     void setVsync(bool vsync);
     bool vsync() const;
+    // The environment panel's buttons: the built-in sky, no environment, and a fresh precompute of
+    // the current one (with RenderSettings::iblQuality) in the next frame.
+    void useProceduralSky();
+    void useNoEnvironment();
+    void recomputeIbl();
     // The material inspector's selection; pickMaterial selects the material of the mesh under
     // window position `pixel` (returns false if no mesh is there).
     void selectMaterial(uint32_t material) { mSelectedMaterial = material; }
@@ -111,6 +122,11 @@ public:
     // file's save to the first frame drawn with it having completed on the GPU (negative: none yet).
     const ShaderHotReload& hotReload() const { return *mHotReload; }
     double lastReloadLatencyMs() const { return mReloadLatencyMs; }
+    // The last IBL precompute: wall time of its frame and the GPU time of its passes (negative: none).
+    double lastPrecomputeMs() const { return mPrecomputeMs; }
+    double lastPrecomputeGpuMs() const { return mPrecomputeGpuMs; }
+    const std::vector<IblReportTable>& iblReports() const { return mIblReports; }
+    int& selectedIblReport() { return mSelectedIblReport; }
 
 private:
     void handleInput();
@@ -135,6 +151,7 @@ private:
 
     bool mUi = true;
     float mPanelWidth = 0.0f;  // pixels covered by the side panel (0 without UI)
+    std::set<std::string> mOpenPanels;
     bool mRecreate = false;
     bool mSimulatedMinimized = false;
     scene::Scene mScene;
@@ -152,6 +169,10 @@ private:
     uint64_t mFramesSkipped = 0;
     double mCpuFrameMs = 0.0;
     uint32_t mSelectedMaterial = 0;
+    std::vector<IblReportTable> mIblReports;
+    int mSelectedIblReport = 0;
+    double mPrecomputeMs = -1.0;
+    double mPrecomputeGpuMs = -1.0;
     std::optional<glm::vec2> mPressedAt;  // where the left button went down (a click picks)
     std::chrono::steady_clock::time_point mLastFrame;
 };

@@ -229,6 +229,29 @@ TEST_F(ViewerTest, DroppedFilesReplaceTheSceneOrTheEnvironment) {
     EXPECT_EQ(mViewer->scene().source, glb.string());
 }
 
+TEST_F(ViewerTest, EnvironmentPanelActions) {
+    open(/*ui=*/true, /*environment=*/false);
+    frames(1);
+    mViewer->useProceduralSky();
+    frames(1);
+    EXPECT_TRUE(mViewer->renderer().lastGraph().findPass("ibl_cubemap").has_value());
+    EXPECT_GT(mViewer->lastPrecomputeMs(), 0.0);
+    EXPECT_TRUE(ran("skybox"));
+    frames(1);
+    EXPECT_FALSE(mViewer->renderer().lastGraph().findPass("ibl_cubemap").has_value());
+    mViewer->recomputeIbl();  // the recompute button, same settings
+    frames(1);
+    EXPECT_TRUE(mViewer->renderer().lastGraph().findPass("ibl_cubemap").has_value());
+    mViewer->settings().iblQuality.prefilterSamples = 16;  // a setting picked from the table
+    frames(1);
+    EXPECT_TRUE(mViewer->renderer().lastGraph().findPass("ibl_prefilter").has_value());
+    EXPECT_FALSE(mViewer->iblReports().empty());
+    mViewer->useNoEnvironment();
+    frames(1);
+    EXPECT_FALSE(mViewer->renderer().lastGraph().findPass("skybox").has_value());
+    EXPECT_FALSE(mViewer->renderer().lastGraph().findPass("ibl_prefilter").has_value());
+}
+
 TEST_F(ViewerTest, ClickingAMeshSelectsItsMaterial) {
     open(/*ui=*/false);
     frames(1);

@@ -1,0 +1,69 @@
+// The ibl-report figures the viewer's environment panel shows (ui/ibl_report_table.h).
+#include "core/check.h"
+#include "ui/ibl_report_table.h"
+
+#include <gtest/gtest.h>
+
+namespace candela::ui {
+namespace {
+
+TEST(IblReportTable, CompiledInReportsParseAndHaveTheDefault) {
+    const std::vector<IblReportTable> reports = builtinIblReports();
+    ASSERT_EQ(reports.size(), 3u);
+    EXPECT_EQ(reports[0].name, "sky");
+    for (const IblReportTable& report : reports) {
+        EXPECT_EQ(report.rows.size(), 30u) << report.name;
+        const IblReportRow* row = report.find(ibl::IblQuality{});
+        ASSERT_NE(row, nullptr) << report.name << ": the default settings were measured";
+        EXPECT_EQ(row->group, "prefilter, filtered IS");
+        EXPECT_GT(row->ratioToCalibration, 1.0);
+        EXPECT_GT(row->specularMeanRelative, 0.0);
+    }
+    // docs/ibl.md: the sky's default precompute is 4.33× the calibration pass, specular error 0.0745.
+    const IblReportRow* sky = reports[0].find(ibl::IblQuality{});
+    EXPECT_NEAR(sky->ratioToCalibration, 4.333, 1e-3);
+    EXPECT_NEAR(sky->specularMeanRelative, 0.0745, 1e-4);
+}
+
+TEST(IblReportTable, RowsMapToTheSettingsTheyMeasured) {
+    const IblReportTable sky = builtinIblReports()[0];
+    ibl::IblQuality q;
+    q.prefilterSamples = 1024;
+    q.filteredSampling = false;
+    const IblReportRow* plain = sky.find(q);
+    ASSERT_NE(plain, nullptr);
+    EXPECT_EQ(plain->group, "prefilter, plain IS");
+    q = {};
+    q.irradiance = ibl::IrradianceMode::Cube;
+    q.irradianceSamples = 64;
+    ASSERT_NE(sky.find(q), nullptr);
+    EXPECT_EQ(sky.find(q)->setting, "cube:64");
+    q = {};
+    q.lodBias = 2.0f;  // not swept: matched by the rest
+    EXPECT_EQ(sky.find(q), sky.find(ibl::IblQuality{}));
+    q.cubeSize = 32;  // not measured
+    EXPECT_EQ(sky.find(q), nullptr);
+}
+
+TEST(IblReportTable, MalformedReportsAreOneLineErrors) {
+    EXPECT_THROW(parseIblReport("", "empty.csv"), UserError);
+    try {
+        parseIblReport("group,setting\nx,y\n", "short.csv");
+        FAIL();
+    } catch (const UserError& e) {
+        EXPECT_STREQ(e.what(), "short.csv: not an ibl-report CSV (no column 'cube')");
+    }
+    std::string csv(builtinIblReportCsv()[0].second);
+    const size_t line = csv.find('\n');
+    std::string broken = csv.substr(0, line + 1) + "\"g\",s,abc,6,32,1,sh9,32,256,128,256\n";
+    try {
+        parseIblReport(broken, "broken.csv");
+        FAIL();
+    } catch (const UserError& e) {
+        EXPECT_STREQ(e.what(), "broken.csv: line 2: cube 'abc' is not a number");
+    }
+    EXPECT_THROW(loadIblReport("/nonexistent/report.csv"), UserError);
+}
+
+}  // namespace
+}  // namespace candela::ui
