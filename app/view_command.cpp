@@ -5,11 +5,33 @@
 #include "core/check.h"
 #include "core/log.h"
 #include "io/image_file.h"
+#include "statistics.h"
 #include "ui/viewer.h"
 
 #include <cstdio>
 
 namespace candela::app {
+
+namespace {
+
+// After a scripted run: the median frame time after warm-up (the first frames include the IBL
+// precompute and pipeline creation) as a ratio to calibration passes run around the measurement.
+void printFrameSummary(ui::Viewer& viewer, const RenderOptions& options) {
+    const std::vector<double>& times = viewer.frameTimesMs();
+    const size_t warmUp = std::min<size_t>(5, times.size() / 2);
+    if (times.size() <= warmUp) return;
+    std::vector<double> calibration;
+    for (int i = 0; i < 3; ++i) calibration.push_back(viewer.calibrationMs());
+    const double frame = median(std::vector<double>(times.begin() + long(warmUp), times.end()));
+    const double yardstick = median(calibration);
+    const VkExtent2D extent = viewer.swapchainExtent();
+    std::printf("viewer %ux%u, UI %s, %s: median frame %.1f ms over %zu frames (after %zu warm-up); calibration %.1f ms; "
+                "frame = %.2fx calibration\n",
+                extent.width, extent.height, options.ui ? "on" : "off", viewer.vsync() ? "vsync" : "no vsync", frame,
+                times.size() - warmUp, warmUp, yardstick, frame / yardstick);
+}
+
+}  // namespace
 
 int runView(const RenderOptions& options) {
     if (!options.screenshot.empty()) {
@@ -45,6 +67,7 @@ int runView(const RenderOptions& options) {
         while (viewer.framesRendered() < options.frames && viewer.frame()) {
         }
         viewer.renderer().waitIdle();
+        printFrameSummary(viewer, options);
     } else {
         viewer.run();
     }

@@ -54,7 +54,9 @@ void ShaderHotReload::scan(std::map<std::filesystem::path, std::filesystem::file
 }
 
 bool ShaderHotReload::reload(const std::string& name, const std::filesystem::path& file) {
+    const auto start = std::chrono::steady_clock::now();
     shader::CompileResult result = shader::compileGlsl(file, mDir);
+    const double compileMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     mIncludes[name] = std::set<std::filesystem::path>(result.includes.begin(), result.includes.end());
     if (!result.ok()) {
         mErrors[name] = result.errors;
@@ -75,7 +77,7 @@ bool ShaderHotReload::reload(const std::string& name, const std::filesystem::pat
     }
     shader::replaceShader(name, std::move(result.spirv));
     mErrors.erase(name);
-    log::info("hot reload: " + name + " replaced");
+    log::info("hot reload: " + name + " replaced (compiled in " + std::to_string(int(compileMs)) + " ms)");
     return true;
 }
 

@@ -427,8 +427,17 @@ bool Viewer::frame() {
     }
     const auto now = std::chrono::steady_clock::now();
     mCpuFrameMs = msBetween(mLastFrame, now);
+    mFrameTimes.push_back(mCpuFrameMs);
     mLastFrame = now;
     return true;
+}
+
+double Viewer::calibrationMs() {
+    const VkExtent2D extent = mSwapchain->valid() ? mSwapchain->extent() : mWindow->framebufferSize();
+    mRenderer->waitIdle();
+    const double ms = mRenderer->renderCalibration(std::max(1u, extent.width), std::max(1u, extent.height)).submitWaitMs;
+    mLastFrame = std::chrono::steady_clock::now();  // the calibration is not part of a frame's time
+    return ms;
 }
 
 void Viewer::run(uint32_t maxFrames) {

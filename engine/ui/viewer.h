@@ -118,6 +118,12 @@ public:
     const std::string& lastScreenshot() const { return mLastScreenshot; }
     const std::string& status() const { return mStatus; }
     double cpuFrameMs() const { return mCpuFrameMs; }
+    // Wall time between consecutive rendered frames, every frame so far (frames in flight: the
+    // throughput, not one frame's latency).
+    const std::vector<double>& frameTimesMs() const { return mFrameTimes; }
+    // Runs the calibration pass (passes/calibration_pass.h) at the window's size and returns its
+    // submit+wait time: the yardstick for the frame times on this machine. Waits for the GPU.
+    double calibrationMs();
     // Hot reload: the watcher (its errors are shown in the UI) and the time from the last reloaded
     // file's save to the first frame drawn with it having completed on the GPU (negative: none yet).
     const ShaderHotReload& hotReload() const { return *mHotReload; }
@@ -168,6 +174,7 @@ private:
     uint64_t mFramesRendered = 0;
     uint64_t mFramesSkipped = 0;
     double mCpuFrameMs = 0.0;
+    std::vector<double> mFrameTimes;
     uint32_t mSelectedMaterial = 0;
     std::vector<IblReportTable> mIblReports;
     int mSelectedIblReport = 0;
