@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds the release preset with tests, and runs the whole suite:
 # unit tests (no GPU), GPU tests on lavapipe under the Khronos validation layer with
-# synchronization validation, and CLI tests of the real executable. Then builds the unit tests
-# with AddressSanitizer + UndefinedBehaviorSanitizer and runs them again (loaders on malformed
-# input, graph compilation).
+# synchronization validation, CLI tests of the real executable, and the viewer under Xvfb. Then
+# builds with AddressSanitizer + UndefinedBehaviorSanitizer and runs the unit tests (loaders on
+# malformed input, graph compilation) and the CLI tests (the bad-input catalogue against the
+# sanitized executable) again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/install-deps.sh
@@ -11,5 +12,5 @@ cmake --preset release >/dev/null
 cmake --build --preset release -j"$(nproc)"
 ctest --preset release -j"$(nproc)" --timeout 600
 cmake --preset asan >/dev/null
-cmake --build --preset asan -j"$(nproc)" --target candela_unit_tests
-ctest --preset asan -j"$(nproc)" --timeout 600 -L unit
+cmake --build --preset asan -j"$(nproc)" --target candela_unit_tests candela candela_cli_tests
+ctest --preset asan -j"$(nproc)" --timeout 600 -L 'unit|cli'
