@@ -23,6 +23,10 @@ void addCommon(FlagTable& table, CommonOptions& common) {
     table.withValue["--device"] = [&](const std::string& v) { common.device = v; };
     table.switches["--validate"] = [&] { common.validate = true; };
     table.switches["--verbose"] = [&] { common.verbose = true; };
+    table.withValue["--memory-budget"] = [&](const std::string& v) {
+        common.memoryBudgetMib = parseDimension("--memory-budget", v);
+        if (common.memoryBudgetMib == 0) throw UserError("--memory-budget: need at least 1 MiB");
+    };
 }
 
 void parseFlags(const std::string& command, const std::vector<std::string>& args, size_t first, const FlagTable& table) {
@@ -370,6 +374,9 @@ common options:
   --device SEL          device index or case-insensitive name substring (see candela info)
   --validate            Khronos validation with synchronization validation (also CANDELA_VALIDATE=1)
   --verbose             print progress and timings
+  --memory-budget MIB   allocate at most MIB MiB of device memory (simulates a small device: what does
+                        not fit is an error naming the resource, exit code 4, or a lower IBL resolution
+                        with a warning)
 )";
 }
 

@@ -15,6 +15,7 @@ struct CommonOptions {
     std::string device;     // --device INDEX|NAME
     bool validate = false;  // --validate
     bool verbose = false;   // --verbose
+    uint32_t memoryBudgetMib = 0;  // --memory-budget MIB (0: the device's memory)
 };
 
 struct RenderOptions {

@@ -22,7 +22,9 @@ namespace candela::app {
 
 vk::ContextDesc contextDesc(const CommonOptions& common) {
     log::setVerbose(common.verbose);
-    return {.validation = common.validate, .deviceSelector = common.device};
+    return {.validation = common.validate,
+            .deviceSelector = common.device,
+            .deviceMemoryBudget = uint64_t(common.memoryBudgetMib) << 20};
 }
 
 scene::Scene loadScene(const RenderOptions& options) {
@@ -182,6 +184,9 @@ int main(int argc, char** argv) {
     } catch (const UserError& e) {
         log::error(e.what());
         return 2;
+    } catch (const OutOfDeviceMemory& e) {
+        log::error(std::string("out of device memory: ") + e.what());
+        return 4;
     } catch (const std::exception& e) {
         log::error(e.what());
         return 1;

@@ -1,6 +1,7 @@
 #include "renderer.h"
 
 #include "core/check.h"
+#include "core/log.h"
 #include "passes/readback_pass.h"
 #include "shared/tonemap.h"
 #include "vk/context.h"
@@ -90,7 +91,25 @@ void Renderer::useEnvironment(const scene::Environment* environment, const ibl::
     quality.validate();
     // The maps may be read by a frame in flight: wait before replacing them.
     mFrames.waitIdle();
-    if (mIbl->setEnvironment(environment, quality, cacheDir, force)) mForward.setIblMaps(*mIbl);
+    // Out of device memory: degrade to a lower cube resolution (with a warning) rather than fail.
+    ibl::IblQuality effective = quality;
+    for (;;) {
+        try {
+            if (mIbl->setEnvironment(environment, effective, cacheDir, force)) mForward.setIblMaps(*mIbl);
+            break;
+        } catch (const OutOfDeviceMemory& e) {
+            if (effective.cubeSize <= 32) throw;
+            mIbl = std::make_unique<ibl::IblMaps>(mContext);  // drop what the failed attempt allocated
+            mForward.setIblMaps(*mIbl);
+            mFrames.waitIdle();
+            effective.cubeSize /= 2;
+            effective.shSourceSize = std::min(effective.shSourceSize, effective.cubeSize);
+            effective.irradianceSize = std::min(effective.irradianceSize, effective.cubeSize);
+            log::warn(std::string("not enough device memory for the IBL maps (") + e.what() +
+                      "): lowering the environment cube to " + std::to_string(effective.cubeSize) + " texels");
+            force = true;
+        }
+    }
     mEnvironment = environment;
     mIblQuality = quality;
     mIblCacheDir = cacheDir;

@@ -1,5 +1,7 @@
 #include "core/check.h"
 
+#include <cstdio>
+
 #include <string>
 
 namespace candela {
@@ -57,6 +59,17 @@ void throwVulkanError(const char* expression, const char* file, int line, VkResu
     std::string message = std::string(expression) + " failed at " + file + ":" + std::to_string(line) + ": " +
                           (name ? std::string(name) : "VkResult(" + std::to_string(static_cast<int>(result)) + ")");
     throw VulkanError(std::move(message), result);
+}
+
+std::string formatBytes(uint64_t bytes) {
+    char text[32];
+    if (bytes < 1024)
+        std::snprintf(text, sizeof(text), "%llu B", static_cast<unsigned long long>(bytes));
+    else if (bytes < (1u << 20))
+        std::snprintf(text, sizeof(text), "%.1f KiB", double(bytes) / 1024.0);
+    else
+        std::snprintf(text, sizeof(text), "%.1f MiB", double(bytes) / (1024.0 * 1024.0));
+    return text;
 }
 
 }  // namespace candela

@@ -23,6 +23,17 @@ private:
     VkResult mResult;
 };
 
+// Device memory could not be allocated: the device is out of memory, or the budget set with
+// ContextDesc::deviceMemoryBudget (--memory-budget) would be exceeded. The message names the
+// resource once a resource's constructor has added it. Front ends exit with code 4.
+class OutOfDeviceMemory : public VulkanError {
+public:
+    explicit OutOfDeviceMemory(std::string message) : VulkanError(std::move(message), VK_ERROR_OUT_OF_DEVICE_MEMORY) {}
+};
+
+// "144 B", "12.0 KiB", "12.5 MiB"
+std::string formatBytes(uint64_t bytes);
+
 // An error caused by the user's input (flags, files): the message is one line naming the
 // problem (and the file, if any). Front ends print it and exit non-zero.
 class UserError : public std::runtime_error {

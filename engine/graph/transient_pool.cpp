@@ -122,9 +122,20 @@ void TransientPool::realize(const GraphDecl& decl, const CompiledGraph& compiled
     mBuffers.resize(decl.resources.size());
     for (const Heap& heap : compiled.heaps) {
         const VkMemoryRequirements requirements{heap.size, heap.alignment, heap.memoryTypeBits};
-        mHeaps.push_back(mContext->allocator().allocate(
-            requirements, vk::MemoryUsage::GpuOnly,
-            heap.kind == ResourceKind::Texture ? vk::ResourceTiling::Optimal : vk::ResourceTiling::Linear));
+        try {
+            mHeaps.push_back(mContext->allocator().allocate(
+                requirements, vk::MemoryUsage::GpuOnly,
+                heap.kind == ResourceKind::Texture ? vk::ResourceTiling::Optimal : vk::ResourceTiling::Linear));
+        } catch (const OutOfDeviceMemory& e) {
+            // Name what the heap was for: the transients placed in it.
+            std::string residents;
+            for (uint32_t r = 0; r < decl.resources.size(); ++r)
+                if (compiled.placements[r].heap == mHeaps.size())
+                    residents += (residents.empty() ? "" : ", ") + decl.resources[r].name;
+            release();
+            throw OutOfDeviceMemory("cannot allocate the render graph's transient heap of " + formatBytes(heap.size) +
+                                    " (for " + residents + "): " + e.what());
+        }
     }
     for (uint32_t r = 0; r < decl.resources.size(); ++r) {
         const Placement& p = compiled.placements[r];

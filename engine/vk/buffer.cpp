@@ -24,7 +24,12 @@ Buffer::Buffer(Context& context, const BufferDesc& desc) {
     try {
         VkMemoryRequirements requirements;
         vkGetBufferMemoryRequirements(context.device(), mBuffer, &requirements);
-        mAllocation = context.allocator().allocate(requirements, desc.memory, ResourceTiling::Linear);
+        try {
+            mAllocation = context.allocator().allocate(requirements, desc.memory, ResourceTiling::Linear);
+        } catch (const OutOfDeviceMemory& e) {
+            throw OutOfDeviceMemory("cannot allocate " + formatBytes(requirements.size) + " for buffer '" +
+                                    (desc.name ? desc.name : "unnamed") + "': " + e.what());
+        }
         VK_CHECK(vkBindBufferMemory(context.device(), mBuffer, mAllocation.memory, mAllocation.offset));
     } catch (...) {
         release();

@@ -101,7 +101,10 @@ Context::Context(const ContextDesc& desc)
     step("instance creation", [&] { createInstance(desc); });
     step("device selection", [&] { pickPhysicalDevice(desc); });
     step("device creation", [&] { createDevice(desc); });
-    step("memory allocator", [&] { mAllocator = std::make_unique<MemoryAllocator>(mPhysicalDevice, mDevice.handle); });
+    step("memory allocator", [&] {
+        mAllocator = std::make_unique<MemoryAllocator>(mPhysicalDevice, mDevice.handle);
+        mAllocator->setBudget(desc.deviceMemoryBudget);
+    });
 }
 
 Context::~Context() {

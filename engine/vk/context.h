@@ -36,6 +36,9 @@ struct ContextDesc {
     std::string deviceSelector;
     // Instance extensions a window system needs (e.g. from glfwGetRequiredInstanceExtensions).
     std::vector<std::string> instanceExtensions;
+    // Caps the device memory Candela allocates (bytes; 0: none), to simulate small devices
+    // (--memory-budget). Beyond it allocations fail with OutOfDeviceMemory.
+    uint64_t deviceMemoryBudget = 0;
     // Set when frames will be presented to a window: the graphics queue must be able to present,
     // devices without VK_KHR_swapchain are unsuitable, and the extension is enabled.
     PresentSupportFn presentSupport;

@@ -72,7 +72,12 @@ Image::Image(Context& context, const ImageDesc& desc) {
     try {
         VkMemoryRequirements requirements;
         vkGetImageMemoryRequirements(context.device(), mImage, &requirements);
-        mAllocation = context.allocator().allocate(requirements, desc.memory, ResourceTiling::Optimal);
+        try {
+            mAllocation = context.allocator().allocate(requirements, desc.memory, ResourceTiling::Optimal);
+        } catch (const OutOfDeviceMemory& e) {
+            throw OutOfDeviceMemory("cannot allocate " + formatBytes(requirements.size) + " for image '" +
+                                    (desc.name ? desc.name : "unnamed") + "': " + e.what());
+        }
         VK_CHECK(vkBindImageMemory(context.device(), mImage, mAllocation.memory, mAllocation.offset));
         if (desc.usage & kViewUsages) mView = createView(defaultViewType(desc), 0, desc.mipLevels, 0, desc.arrayLayers);
     } catch (...) {

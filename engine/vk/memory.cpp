@@ -2,6 +2,7 @@
 
 #include "core/check.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace candela::vk {
@@ -58,8 +59,15 @@ uint32_t MemoryAllocator::findMemoryType(uint32_t typeBits, MemoryUsage usage) c
 VkDeviceMemory MemoryAllocator::allocateDeviceMemory(VkDeviceSize size, uint32_t memoryType, std::byte** mapped) {
     const VkMemoryAllocateInfo info{
         .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, .allocationSize = size, .memoryTypeIndex = memoryType};
+    if (mBudget > 0 && mStats.deviceMemoryBytes + size > mBudget)
+        throw OutOfDeviceMemory("the device-memory budget of " + formatBytes(mBudget) + " is exhausted (" +
+                                formatBytes(mStats.deviceMemoryBytes) + " in use, " + formatBytes(size) + " more asked)");
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    VK_CHECK(vkAllocateMemory(mDevice, &info, nullptr, &memory));
+    const VkResult allocated = vkAllocateMemory(mDevice, &info, nullptr, &memory);
+    if (allocated == VK_ERROR_OUT_OF_DEVICE_MEMORY || allocated == VK_ERROR_OUT_OF_HOST_MEMORY)
+        throw OutOfDeviceMemory(std::string("vkAllocateMemory of ") + formatBytes(size) + ": " + vkResultName(allocated) +
+                                " (" + formatBytes(mStats.deviceMemoryBytes) + " already in use)");
+    VK_CHECK(allocated);
     *mapped = nullptr;
     if (mProperties.memoryTypes[memoryType].propertyFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) {
         void* pointer = nullptr;
@@ -101,7 +109,11 @@ Allocation MemoryAllocator::allocate(const VkMemoryRequirements& requirements, M
     Allocation out;
     out.coherent = (mProperties.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT) != 0;
 
-    if (requirements.size > mBlockSize / 2) {
+    // Under a budget, blocks are an eighth of it (at least 1 MiB) so that one block cannot take it all.
+    const VkDeviceSize blockSize =
+        mBudget > 0 ? std::clamp<VkDeviceSize>(alignUp(mBudget / 8, VkDeviceSize(1) << 20), VkDeviceSize(1) << 20, mBlockSize)
+                    : mBlockSize;
+    if (requirements.size > blockSize / 2) {
         out.memory = allocateDeviceMemory(requirements.size, type, &out.mapped);
         out.size = requirements.size;
         out.memoryType = type;
@@ -114,11 +126,21 @@ Allocation MemoryAllocator::allocate(const VkMemoryRequirements& requirements, M
         }
         if (!placed) {
             auto block = std::make_unique<Block>();
-            block->memory = allocateDeviceMemory(mBlockSize, type, &block->mapped);
-            block->size = mBlockSize;
+            try {
+                block->memory = allocateDeviceMemory(blockSize, type, &block->mapped);
+            } catch (const OutOfDeviceMemory&) {
+                // No room for a whole block: the request alone may still fit.
+                out.memory = allocateDeviceMemory(requirements.size, type, &out.mapped);
+                out.size = requirements.size;
+                out.memoryType = type;
+                mStats.allocatedBytes += out.size;
+                ++mStats.liveAllocations;
+                return out;
+            }
+            block->size = blockSize;
             block->memoryType = type;
             block->tiling = tiling;
-            block->freeRanges[0] = mBlockSize;
+            block->freeRanges[0] = blockSize;
             tryAllocateFromBlock(*block, requirements, out);
             uint32_t index = 0;
             while (index < mBlocks.size() && mBlocks[index]) ++index;

@@ -57,12 +57,18 @@ public:
     MemoryAllocator(const MemoryAllocator&) = delete;
     MemoryAllocator& operator=(const MemoryAllocator&) = delete;
 
-    // Allocates memory satisfying `requirements` for `usage`. Throws VulkanError (naming the
-    // failing call and result) when device memory is exhausted.
+    // Allocates memory satisfying `requirements` for `usage`. Throws OutOfDeviceMemory when the
+    // device has no memory left or the budget would be exceeded (a small request that does not fit
+    // a new block is tried once more as a dedicated allocation of its own size).
     Allocation allocate(const VkMemoryRequirements& requirements, MemoryUsage usage, ResourceTiling tiling);
     // Returns memory to its block (or frees a dedicated allocation). Empty allocations are ignored.
     // Precondition: no pending GPU work uses it (callers free through the deferred deletion queue).
     void free(const Allocation& allocation);
+
+    // Caps the bytes held in VkDeviceMemory objects (0: no cap) — to simulate small devices and
+    // test what happens when memory runs out. New blocks are then an eighth of the budget.
+    void setBudget(VkDeviceSize bytes) { mBudget = bytes; }
+    VkDeviceSize budget() const { return mBudget; }
 
     // Frees blocks that hold no allocation. Called after deferred deletions are collected.
     void trim();
@@ -89,6 +95,7 @@ private:
     VkPhysicalDevice mPhysicalDevice;
     VkDevice mDevice;
     VkDeviceSize mBlockSize;
+    VkDeviceSize mBudget = 0;
     VkPhysicalDeviceMemoryProperties mProperties{};
     std::vector<std::unique_ptr<Block>> mBlocks;  // null entries are freed blocks (indices stay stable)
     MemoryStats mStats;

@@ -187,6 +187,24 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(Cli, HelpExitsZero) { EXPECT_EQ(run("--help").exitCode, 0); }
 
+// A device-memory budget too small for anything is one line naming the resource and exit code 4;
+// one too small only for the default IBL maps lowers their resolution with a warning.
+TEST(Cli, MemoryBudgetExhaustedOrDegraded) {
+    const std::filesystem::path png = tempDir() / "budget.png";
+    const Result tiny = run("render --memory-budget 1 --width 64 --height 36 --out " + png.string());
+    EXPECT_EQ(tiny.exitCode, 4) << tiny.stderrText;
+    EXPECT_EQ(tiny.stderrText.find('\n'), tiny.stderrText.size() - 1) << tiny.stderrText;
+    EXPECT_NE(tiny.stderrText.find("candela: error: out of device memory: cannot allocate "), std::string::npos) << tiny.stderrText;
+    EXPECT_NE(tiny.stderrText.find("the device-memory budget of 1.0 MiB is exhausted"), std::string::npos) << tiny.stderrText;
+    EXPECT_FALSE(std::filesystem::exists(png));
+
+    const Result small = run("render --validate --memory-budget 8 --width 64 --height 36 --out " + png.string());
+    EXPECT_EQ(small.exitCode, 0) << small.stderrText;
+    EXPECT_NE(small.stderrText.find("lowering the environment cube to 64 texels"), std::string::npos) << small.stderrText;
+    EXPECT_EQ(small.stderrText.find("validation"), std::string::npos) << small.stderrText;
+    EXPECT_TRUE(std::filesystem::exists(png));
+}
+
 TEST(Cli, RenderWritesPngAndGraphExports) {
     const auto dir = tempDir();
     const auto png = dir / "frame.png", json = dir / "graph.json", dot = dir / "graph.dot";
