@@ -268,9 +268,27 @@ Command parseCommandLine(const std::vector<std::string>& args) {
             if (o.referenceSamples < 16) throw UserError("--reference-samples: need at least 16");
         };
         table.switches["--quick"] = [&] { o.quick = true; };
+    } else if (name == "soak") {
+        command.kind = Command::Kind::Soak;
+        SoakOptions& o = command.soak;
+        addCommon(table, o.common);
+        const std::pair<const char*, uint32_t SoakOptions::*> counts[] = {{"--frames", &SoakOptions::frames},
+                                                                        {"--switch-every", &SoakOptions::switchEvery},
+                                                                        {"--sample-every", &SoakOptions::sampleEvery},
+                                                                        {"--width", &SoakOptions::width},
+                                                                        {"--height", &SoakOptions::height}};
+        for (const auto& [flag, member] : counts)
+            table.withValue[flag] = [&o, flag, member](const std::string& v) {
+                o.*member = parseDimension(flag, v);
+                if (o.*member == 0) throw UserError(std::string(flag) + ": must be at least 1");
+            };
+        table.withValue["--out"] = [&](const std::string& v) {
+            if (v.empty()) throw UserError("--out: expected a .csv file");
+            o.out = v;
+        };
     } else {
         throw UserError("unknown command '" + name +
-                        "' (commands: render, view, bench, ibl-report, info; see candela --help)");
+                        "' (commands: render, view, bench, ibl-report, soak, info; see candela --help)");
     }
     bool help = false;
     table.switches["--help"] = [&] { help = true; };
@@ -297,6 +315,8 @@ usage:
                              calibration pass run in the same process
   candela ibl-report [opts]  sweep the IBL quality settings: precompute time against the error of the
                              maps and of the final image, as CSV, markdown and log-log plots
+  candela soak [options]     render many frames headless, switching the environment, and report host
+                             and device memory over time (leaks show as growth after warm-up)
   candela info [options]     list the Vulkan devices, the one chosen and why, and the features enabled
 
 render options:
@@ -369,6 +389,14 @@ ibl-report options:
   --quick               a reduced sweep (smoke tests)
   --width W, --height H size of the end-to-end images [320 x 180]
   --reference-samples N samples per pixel of the ground-truth render [4096]
+
+soak options:
+  --frames N            frames to render [10000]
+  --switch-every K      frames per environment (4 procedural skies, cycled; each switch reruns the
+                        IBL precompute) [100]
+  --sample-every K      frames between memory samples [100]
+  --width W, --height H frame size [320 x 180]
+  --out FILE            also write the samples as CSV
 
 common options:
   --device SEL          device index or case-insensitive name substring (see candela info)

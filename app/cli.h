@@ -68,11 +68,22 @@ struct IblReportOptions {
     uint32_t referenceSamples = 4096;   // --reference-samples N: per pixel of the ground-truth render
 };
 
+struct SoakOptions {
+    CommonOptions common;
+    uint32_t frames = 10000;     // --frames N
+    uint32_t switchEvery = 100;  // --switch-every K: frames per environment
+    uint32_t sampleEvery = 100;  // --sample-every K
+    uint32_t width = 320;        // --width, --height
+    uint32_t height = 180;
+    std::string out;             // --out FILE.csv (optional)
+};
+
 struct Command {
-    enum class Kind { Help, Render, View, Info, Bench, IblReport } kind = Kind::Help;
+    enum class Kind { Help, Render, View, Info, Bench, IblReport, Soak } kind = Kind::Help;
     RenderOptions render;  // render, view and bench
     InfoOptions info;
     IblReportOptions iblReport;
+    SoakOptions soak;
 };
 
 // Parses argv[1..]. No arguments or --help → Kind::Help.

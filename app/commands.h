@@ -17,6 +17,7 @@ int runBench(const RenderOptions& options);
 int runView(const RenderOptions& options);
 int runInfo(const InfoOptions& options);
 int runIblReport(const IblReportOptions& options);
+int runSoak(const SoakOptions& options);
 
 // Shared by render and bench: the context description and the render settings the flags choose.
 vk::ContextDesc contextDesc(const CommonOptions& common);

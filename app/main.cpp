@@ -180,6 +180,7 @@ int main(int argc, char** argv) {
             case app::Command::Kind::Info: return app::runInfo(command.info);
             case app::Command::Kind::Bench: return app::runBench(command.render);
             case app::Command::Kind::IblReport: return app::runIblReport(command.iblReport);
+            case app::Command::Kind::Soak: return app::runSoak(command.soak);
         }
     } catch (const UserError& e) {
         log::error(e.what());

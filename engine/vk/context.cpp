@@ -314,6 +314,8 @@ void Context::waitIdleAndCollect() {
     if (!mDevice.handle) return;
     VK_CHECK(vkDeviceWaitIdle(mDevice.handle));
     while (!mDeferred.empty()) collect(~0ull);
+    // A quiet point (scene or environment change, shutdown): give empty memory blocks back.
+    if (mAllocator) mAllocator->trim();
 }
 
 void Context::setName(VkObjectType type, uint64_t object, const char* name) const {

@@ -99,7 +99,7 @@ public:
     void advanceFrame() { ++mFrame; }
     // Runs deferred destructions queued at or before frame `completedFrame`.
     void collect(uint64_t completedFrame);
-    // Waits for the device to go idle and runs every deferred destruction.
+    // Waits for the device to go idle, runs every deferred destruction and frees empty memory blocks.
     void waitIdleAndCollect();
 
     // Live Vulkan objects created through the device layer (images, buffers, views, pipelines...).

@@ -70,7 +70,7 @@ public:
     void setBudget(VkDeviceSize bytes) { mBudget = bytes; }
     VkDeviceSize budget() const { return mBudget; }
 
-    // Frees blocks that hold no allocation. Called after deferred deletions are collected.
+    // Frees blocks that hold no allocation. Context::waitIdleAndCollect calls it.
     void trim();
 
     MemoryStats stats() const;

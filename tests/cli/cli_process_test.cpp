@@ -182,7 +182,9 @@ INSTANTIATE_TEST_SUITE_P(
                                "metallic, occlusion, emissive, d, g, f, diffuse, specular)"},
                       BadInput{"ViewScreenshotWithoutFrames", "view --screenshot {dir}/x.png",
                                "--screenshot: also give --frames N (the frame to save; the viewer then exits)"},
-                      BadInput{"ViewTwoScenes", "view a.glb b.glb", "unexpected argument 'b.glb': the scene is already a.glb"}),
+                      BadInput{"ViewTwoScenes", "view a.glb b.glb", "unexpected argument 'b.glb': the scene is already a.glb"},
+                      BadInput{"SoakZeroFrames", "soak --frames 0", "--frames: must be at least 1"},
+                      BadInput{"MemoryBudgetZero", "render --memory-budget 0 --out {dir}/x.png", "--memory-budget: need at least 1 MiB"}),
     [](const ::testing::TestParamInfo<BadInput>& row) { return std::string(row.param.name); });
 
 TEST(Cli, HelpExitsZero) { EXPECT_EQ(run("--help").exitCode, 0); }
