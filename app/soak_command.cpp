@@ -23,7 +23,7 @@ int runSoak(const SoakOptions& options) {
     if (!options.out.empty()) {
         io::checkWritable(options.out);
         csv.open(options.out);
-        csv << "frame,rss_bytes,live_vulkan_objects,device_memory_bytes,live_allocations,frame_ms\n";
+        csv << "frame,rss_bytes,heap_bytes,live_vulkan_objects,device_memory_bytes,live_allocations,frame_ms\n";
     }
     const scene::Scene grid = scene::makeSphereGrid();
     const std::vector<scene::Environment> environments = soakEnvironments();
@@ -33,17 +33,18 @@ int runSoak(const SoakOptions& options) {
     settings.defaultLights = false;
     std::printf("soak: %u frames at %ux%u, environment switched every %u frames (%zu procedural skies)\n",
                 options.frames, options.width, options.height, options.switchEvery, environments.size());
-    std::printf("%8s %10s %12s %14s %12s %10s\n", "frame", "RSS MiB", "Vk objects", "device MiB", "allocations", "frame ms");
+    std::printf("%8s %10s %10s %12s %14s %12s %10s\n", "frame", "RSS MiB", "heap MiB", "Vk objects", "device MiB",
+                "allocations", "frame ms");
     const std::vector<SoakSample> samples =
         runSoak(renderer, context, settings, environments,
                 {.frames = options.frames, .switchEvery = options.switchEvery, .sampleEvery = options.sampleEvery},
                 [&](const SoakSample& s) {
-                    std::printf("%8u %10.1f %12lld %14.1f %12u %10.2f\n", s.frame, mib(s.residentBytes),
-                                static_cast<long long>(s.liveVulkanObjects), mib(s.deviceMemoryBytes), s.liveAllocations,
-                                s.lastFrameMs);
+                    std::printf("%8u %10.1f %10.1f %12lld %14.1f %12u %10.2f\n", s.frame, mib(s.residentBytes),
+                                mib(s.heapBytes), static_cast<long long>(s.liveVulkanObjects), mib(s.deviceMemoryBytes),
+                                s.liveAllocations, s.lastFrameMs);
                     std::fflush(stdout);
                     if (csv)
-                        csv << s.frame << ',' << s.residentBytes << ',' << s.liveVulkanObjects << ','
+                        csv << s.frame << ',' << s.residentBytes << ',' << s.heapBytes << ',' << s.liveVulkanObjects << ','
                             << s.deviceMemoryBytes << ',' << s.liveAllocations << ',' << s.lastFrameMs << '\n';
                 });
     if (!options.out.empty() && !csv) throw UserError(options.out + ": cannot write");
@@ -57,8 +58,10 @@ int runSoak(const SoakOptions& options) {
         }
     if (first && first != &samples.back()) {
         const SoakSample& last = samples.back();
-        std::printf("after warm-up (frame %u → %u): RSS %+.1f MiB, Vulkan objects %+lld, device memory %+.1f MiB\n",
+        std::printf("after warm-up (frame %u → %u): RSS %+.1f MiB, heap %+.1f MiB, Vulkan objects %+lld, device memory "
+                    "%+.1f MiB\n",
                     first->frame, last.frame, mib(last.residentBytes) - mib(first->residentBytes),
+                    mib(last.heapBytes) - mib(first->heapBytes),
                     static_cast<long long>(last.liveVulkanObjects - first->liveVulkanObjects),
                     mib(last.deviceMemoryBytes) - mib(first->deviceMemoryBytes));
     }

@@ -18,6 +18,7 @@ std::vector<SoakSample> runSoak(Renderer& renderer, vk::Context& context, Render
         const vk::MemoryStats memory = context.allocator().stats();
         samples.push_back({.frame = rendered,
                            .residentBytes = residentBytes(),
+                           .heapBytes = heapInUseBytes(),
                            .liveVulkanObjects = context.liveObjects(),
                            .deviceMemoryBytes = memory.deviceMemoryBytes,
                            .liveAllocations = memory.liveAllocations,

@@ -20,6 +20,7 @@ struct SoakOptions {
 struct SoakSample {
     uint32_t frame = 0;            // frames rendered so far
     uint64_t residentBytes = 0;    // host RSS
+    uint64_t heapBytes = 0;        // C heap in live allocations (not the allocator's cache)
     int64_t liveVulkanObjects = 0; // created through the device layer and not destroyed
     uint64_t deviceMemoryBytes = 0;  // held in VkDeviceMemory objects
     uint32_t liveAllocations = 0;

@@ -1,6 +1,6 @@
 // A short soak (engine/soak.h): frames with the environment switched every 50 frames. After one
 // cycle through the environments, live Vulkan objects and device memory must stay exactly where
-// they are, and host memory (RSS) must not keep growing.
+// they are, and the C heap must not keep growing.
 #include "gpu_test.h"
 
 #include "scene/builtin_scenes.h"
@@ -26,8 +26,9 @@ TEST_F(GpuTest, SoakKeepsObjectsAndMemoryFlatAfterWarmUp) {
         EXPECT_EQ(samples[i].deviceMemoryBytes, reference.deviceMemoryBytes) << "frame " << samples[i].frame;
         EXPECT_EQ(samples[i].liveAllocations, reference.liveAllocations) << "frame " << samples[i].frame;
     }
-    // Host memory moves with the allocator's and the validation layer's caches; it must not trend up.
-    EXPECT_LT(double(samples.back().residentBytes), double(reference.residentBytes) + 16.0 * (1 << 20));
+    // The C heap in live allocations must not grow (the RSS moves in steps with memory the driver
+    // maps outside the heap: reported by `candela soak`, not a pass/fail figure).
+    EXPECT_LT(double(samples.back().heapBytes), double(reference.heapBytes) + 2.0 * (1 << 20));
 }
 
 }  // namespace
