@@ -99,8 +99,7 @@ void Renderer::useEnvironment(const scene::Environment* environment, const ibl::
             break;
         } catch (const OutOfDeviceMemory& e) {
             if (effective.cubeSize <= 32) throw;
-            mIbl = std::make_unique<ibl::IblMaps>(mContext);  // drop what the failed attempt allocated
-            mForward.setIblMaps(*mIbl);
+            resetIblMaps();  // drops (and, once collected, frees) what the failed attempt allocated
             mFrames.waitIdle();
             effective.cubeSize /= 2;
             effective.shSourceSize = std::min(effective.shSourceSize, effective.cubeSize);
@@ -140,11 +139,21 @@ void Renderer::applySceneParameters() {
 
 void Renderer::shadersReplaced(const std::vector<std::string>& names) {
     if (std::none_of(names.begin(), names.end(), [](const std::string& n) { return n.rfind("ibl_", 0) == 0; })) return;
+    resetIblMaps();
+    // Recomputed (never read from the cache) by the next frame, with the new shaders.
+    if (mEnvironment) useEnvironment(mEnvironment, mIblQuality, mIblCacheDir, /*force=*/true);
+}
+
+void Renderer::resetIblMaps() {
     mFrames.waitIdle();
     mIbl = std::make_unique<ibl::IblMaps>(mContext);
     mForward.setIblMaps(*mIbl);
-    // Recomputed (never read from the cache) by the next frame, with the new shaders.
-    if (mEnvironment) useEnvironment(mEnvironment, mIblQuality, mIblCacheDir, /*force=*/true);
+}
+
+double Renderer::completedPassMs(std::string_view pass) const {
+    for (const PassTime& t : mCompletedTimes)
+        if (t.name == pass) return t.gpuMs;
+    return -1.0;
 }
 
 void Renderer::recomputeIbl() {
@@ -259,13 +268,11 @@ CapturedFrame Renderer::capture(const RenderSettings& settings) {
     prepareEnvironment(settings);
     const VkDeviceSize texel = settings.floatOutput ? 8 : 4;  // RGBA16F or RGBA8
     const VkDeviceSize bytes = texel * settings.width * settings.height;
-    readbackBuffer(bytes);
 
     mGraph = std::make_unique<RenderGraph>();
     RenderGraph& graph = *mGraph;
-    const BufferId readback = graph.importBuffer("readback", {.size = bytes}, ResourceState{}, passes::hostReadState());
     ImportBindings imports;
-    imports.bind(readback, mReadback.handle());
+    const BufferId readback = importReadback(graph, imports, bytes);
     const TextureId output =
         settings.scene ? buildSceneGraph(graph, settings, imports) : buildPatternGraph(graph, settings);
     passes::addReadbackPass(graph, settings.floatOutput ? mHdr : output, readback);
@@ -295,13 +302,15 @@ CapturedFrame Renderer::capture(const RenderSettings& settings) {
     return frame;
 }
 
-vk::Buffer& Renderer::readbackBuffer(VkDeviceSize bytes) {
+BufferId Renderer::importReadback(RenderGraph& graph, ImportBindings& imports, VkDeviceSize bytes) {
     if (!mReadback || mReadback.size() != bytes)
         mReadback = vk::Buffer(mContext, {.size = bytes,
                                           .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                           .memory = vk::MemoryUsage::Readback,
                                           .name = "readback"});
-    return mReadback;
+    const BufferId readback = graph.importBuffer("readback", {.size = bytes}, ResourceState{}, passes::hostReadState());
+    imports.bind(readback, mReadback.handle());
+    return readback;
 }
 
 void Renderer::renderToTarget(const RenderSettings& settings, const PresentTarget& target, const OverlayFn& overlay,
@@ -324,12 +333,9 @@ void Renderer::renderToTarget(const RenderSettings& settings, const PresentTarge
     imports.bind(swapchain, target.image, target.view);
     TextureId output = buildSceneGraph(graph, settings, imports, swapchain);
     if (overlay) output = overlay(graph, output);
-    std::optional<BufferId> readback;
     const VkDeviceSize bytes = VkDeviceSize(4) * settings.width * settings.height;
     if (screenshot) {
-        readback = graph.importBuffer("readback", {.size = bytes}, ResourceState{}, passes::hostReadState());
-        imports.bind(*readback, readbackBuffer(bytes).handle());
-        passes::addReadbackPass(graph, output, *readback);
+        passes::addReadbackPass(graph, output, importReadback(graph, imports, bytes));
     }
     applyToggles(graph, settings);
     submit(graph, imports, settings.emitBarriers, &target);

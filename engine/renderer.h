@@ -30,6 +30,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace candela {
@@ -137,6 +138,8 @@ public:
                         CapturedFrame* screenshot = nullptr);
     // Per-pass GPU times of the latest frame known to be complete, in execution order.
     const std::vector<PassTime>& completedPassTimes() const { return mCompletedTimes; }
+    // The GPU time of the pass named `pass` in that frame; negative if it did not run there.
+    double completedPassMs(std::string_view pass) const;
     // Waits for every frame in flight.
     void waitIdle() { mFrames.waitIdle(); }
     // After shaders were replaced (hot reload): the frame passes rebuild their pipelines at their
@@ -198,8 +201,10 @@ private:
     FrameTiming execute(graph::RenderGraph& graph, const graph::ImportBindings& imports, bool emitBarriers);
     // After the frame with the IBL precompute completed: lets the maps drop what only it needed.
     void finishIblFrame(const graph::RenderGraph& graph);
-    // The readback buffer, (re)created for `bytes`.
-    vk::Buffer& readbackBuffer(VkDeviceSize bytes);
+    // Imports the readback buffer, (re)created for `bytes`, into `graph` (final state: host read).
+    graph::BufferId importReadback(graph::RenderGraph& graph, graph::ImportBindings& imports, VkDeviceSize bytes);
+    // New, empty IBL maps (after waiting for the frames in flight), bound to the forward pass.
+    void resetIblMaps();
 
     vk::Context& mContext;
     vk::FrameRing mFrames;

@@ -29,12 +29,6 @@ void drawGraphPanel(Viewer& viewer) {
     if (!graph.isCompiled()) return;
     const graph::GraphDecl& decl = graph.declaration();
     const graph::CompiledGraph& compiled = graph.compiled();
-    const std::vector<PassTime>& times = viewer.renderer().completedPassTimes();
-    const auto gpuMs = [&](const std::string& name) {
-        for (const PassTime& t : times)
-            if (t.name == name) return t.gpuMs;
-        return -1.0;
-    };
 
     std::vector<uint32_t> rows = compiled.order;
     for (uint32_t p = 0; p < decl.passes.size(); ++p)
@@ -72,7 +66,7 @@ void drawGraphPanel(Viewer& viewer) {
             }
             ImGui::PopID();
             ImGui::TableNextColumn();
-            const double ms = gpuMs(pass.name);
+            const double ms = viewer.renderer().completedPassMs(pass.name);
             if (culled)
                 ImGui::TextDisabled("%s", graph::cullReasonName(info.cullReason));
             else if (ms >= 0.0)

@@ -221,12 +221,7 @@ bool Viewer::exportGraph(const std::filesystem::path& path, bool json) {
     const graph::RenderGraph& graph = mRenderer->lastGraph();
     // The latest completed frame may be an older graph than the last declared one: match by name.
     graph::GraphTimings timings;
-    for (const graph::PassDecl& pass : graph.declaration().passes) {
-        double ms = -1.0;
-        for (const PassTime& t : mRenderer->completedPassTimes())
-            if (t.name == pass.name) ms = t.gpuMs;
-        timings.gpuMs.push_back(ms);
-    }
+    for (const graph::PassDecl& pass : graph.declaration().passes) timings.gpuMs.push_back(mRenderer->completedPassMs(pass.name));
     const std::string text = json ? graph::exportJson(graph.declaration(), graph.compiled(), &timings)
                                   : graph::exportDot(graph.declaration(), graph.compiled(), &timings);
     std::ofstream out(path, std::ios::binary);
