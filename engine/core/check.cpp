@@ -67,8 +67,10 @@ std::string formatBytes(uint64_t bytes) {
         std::snprintf(text, sizeof(text), "%llu B", static_cast<unsigned long long>(bytes));
     else if (bytes < (1u << 20))
         std::snprintf(text, sizeof(text), "%.1f KiB", double(bytes) / 1024.0);
-    else
+    else if (bytes < (1ull << 30))
         std::snprintf(text, sizeof(text), "%.1f MiB", double(bytes) / (1024.0 * 1024.0));
+    else
+        std::snprintf(text, sizeof(text), "%.1f GiB", double(bytes) / (1024.0 * 1024.0 * 1024.0));
     return text;
 }
 

@@ -31,7 +31,7 @@ public:
     explicit OutOfDeviceMemory(std::string message) : VulkanError(std::move(message), VK_ERROR_OUT_OF_DEVICE_MEMORY) {}
 };
 
-// "144 B", "12.0 KiB", "12.5 MiB"
+// "144 B", "12.0 KiB", "12.5 MiB", "1.5 GiB"
 std::string formatBytes(uint64_t bytes);
 
 // An error caused by the user's input (flags, files): the message is one line naming the

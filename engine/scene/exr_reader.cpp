@@ -4,6 +4,7 @@
 
 #include <tinyexr.h>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
@@ -53,6 +54,42 @@ struct ImageGuard {
     ImageGuard(const ImageGuard&) = delete;
     ImageGuard& operator=(const ImageGuard&) = delete;
 };
+
+uint32_t le32(const uint8_t* p) { return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24; }
+
+// tinyexr 1.0.1's PIZ decoder copies a chunk's bitmap (whose extent the chunk's first four bytes
+// give) without checking that the chunk holds it: a heap over-read found by fuzzing
+// (tests/fuzz/regressions/exr/). So the chunks of a PIZ file are checked here before tinyexr
+// decodes them: every offset-table entry must name a chunk inside the file, and a compressed
+// chunk must hold its bitmap range, bitmap and Huffman length. Scanline files only; the offset
+// table follows the header (8 bytes of magic and version, then header_len bytes).
+void checkPizChunks(std::span<const uint8_t> bytes, const EXRHeader& header, int64_t width, int64_t height,
+                    const std::string& source) {
+    if (header.compression_type != TINYEXR_COMPRESSIONTYPE_PIZ) return;
+    constexpr int64_t kLinesPerChunk = 32;
+    uint64_t bytesPerLine = 0;
+    for (int c = 0; c < header.num_channels; ++c)
+        bytesPerLine += uint64_t(width) * (header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF ? 2 : 4);
+    const int64_t chunks = (height + kLinesPerChunk - 1) / kLinesPerChunk;
+    const uint64_t table = 8 + uint64_t(header.header_len);
+    for (int64_t i = 0; i < chunks; ++i) {
+        const std::string chunk = "chunk " + std::to_string(i);
+        const uint64_t entry = table + uint64_t(i) * 8;
+        if (entry + 8 > bytes.size()) fail(source, "truncated EXR offset table");
+        const uint64_t offset = uint64_t(le32(&bytes[entry])) | uint64_t(le32(&bytes[entry + 4])) << 32;
+        if (offset > bytes.size() || bytes.size() - offset < 8) fail(source, "EXR " + chunk + " lies outside the file");
+        const uint64_t size = le32(&bytes[offset + 4]);
+        if (size > bytes.size() - offset - 8) fail(source, "EXR " + chunk + " runs past the end of the file");
+        const uint64_t lines = uint64_t(std::min(kLinesPerChunk, height - i * kLinesPerChunk));
+        if (size == lines * bytesPerLine) continue;  // stored uncompressed
+        const uint8_t* data = &bytes[offset + 8];
+        if (size < 8) fail(source, "corrupt PIZ data in EXR " + chunk);
+        const uint32_t minNonZero = uint32_t(data[0]) | uint32_t(data[1]) << 8;
+        const uint32_t maxNonZero = uint32_t(data[2]) | uint32_t(data[3]) << 8;
+        const uint64_t bitmap = minNonZero <= maxNonZero ? maxNonZero - minNonZero + 1 : 0;
+        if (4 + bitmap + 4 > size) fail(source, "corrupt PIZ data in EXR " + chunk + " (bitmap past the chunk's end)");
+    }
+}
 
 }  // namespace
 
@@ -107,6 +144,7 @@ Environment decodeExr(std::span<const uint8_t> bytes, const std::string& source,
         rgb = {grey, grey, grey};
     }
 
+    checkPizChunks(bytes, header, width, height, source);
     ImageGuard loaded(header.num_channels);
     EXRImage& image = loaded.image;
     if (LoadEXRImageFromMemory(&image, &header, bytes.data(), bytes.size(), &error) != TINYEXR_SUCCESS) {

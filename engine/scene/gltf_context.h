@@ -18,6 +18,10 @@ struct LoadContext {
     void warn(const std::string& message) const;
 };
 
+// `value` as a float. Fails via ctx ("WHAT is beyond single precision") when it is not finite or
+// too large for a float (converting it would be undefined behaviour).
+float toFloat(const LoadContext& ctx, double value, const std::string& what);
+
 // "mesh 2 ('Cube') primitive 0" style labels for messages: the index, and the name if there is one.
 std::string label(const char* kind, int index, const std::string& name = {});
 

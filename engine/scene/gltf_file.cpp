@@ -1,6 +1,7 @@
 #include "scene/gltf_file.h"
 
 #include "core/check.h"
+#include "scene/gltf_schema.h"
 
 #include <algorithm>
 #include <cctype>
@@ -82,7 +83,9 @@ std::string oneLine(std::string text, const std::string& base) {
     return out.empty() ? std::string("unknown error") : out;
 }
 
-std::vector<uint8_t> readFile(const LoadContext& ctx, const std::filesystem::path& path) {
+}  // namespace
+
+std::vector<uint8_t> readGltfFile(const LoadContext& ctx, const std::filesystem::path& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) ctx.fail("is a directory");
     std::ifstream in(path, std::ios::binary);
@@ -99,9 +102,11 @@ std::vector<uint8_t> readFile(const LoadContext& ctx, const std::filesystem::pat
     return bytes;
 }
 
+namespace {
+
 // Checks the GLB container and returns an equivalent, canonical GLB (JSON chunk, optional BIN
 // chunk, both padded to 4 bytes) whose lengths tinygltf can trust.
-std::vector<uint8_t> repackGlb(const LoadContext& ctx, const std::vector<uint8_t>& file) {
+std::vector<uint8_t> repackGlb(const LoadContext& ctx, std::span<const uint8_t> file) {
     if (file.size() < 12) ctx.fail("truncated GLB: " + std::to_string(file.size()) + " bytes, the header needs 12");
     const uint32_t version = readU32(&file[4]);
     const uint32_t length = readU32(&file[8]);
@@ -120,6 +125,9 @@ std::vector<uint8_t> repackGlb(const LoadContext& ctx, const std::vector<uint8_t
             ctx.fail("corrupt GLB: chunk " + std::to_string(index) + " claims " + std::to_string(chunkLength) +
                      " bytes, only " + std::to_string(length - offset - 8) + " remain");
         const uint8_t* data = &file[offset + 8];
+        if (chunkLength % 4 != 0)
+            ctx.warn("GLB chunk " + std::to_string(index) + " length " + std::to_string(chunkLength) +
+                     " is not a multiple of 4 (tolerated)");
         if (index == 0) {
             if (chunkType != kChunkJson) ctx.fail("corrupt GLB: the first chunk is not JSON");
             json = std::string_view(reinterpret_cast<const char*>(data), chunkLength);
@@ -259,8 +267,10 @@ bool loadImageCallback(tinygltf::Image* image, const int index, std::string*, st
 
 }  // namespace
 
-ParsedFile parseGltfFile(const LoadContext& ctx, const std::filesystem::path& path, uint32_t maxImageDimension) {
-    const std::vector<uint8_t> file = readFile(ctx, path);
+ParsedFile parseGltf(const LoadContext& ctx, std::span<const uint8_t> file, const std::filesystem::path& path,
+                     uint32_t maxImageDimension) {
+    if (file.empty()) ctx.fail("empty file");
+    if (file.size() >= std::numeric_limits<uint32_t>::max()) ctx.fail("file larger than 4 GiB");
     const bool binary = file.size() >= 4 && readU32(file.data()) == kGlbMagic;
     std::vector<uint8_t> glb;
     if (binary) glb = repackGlb(ctx, file);
@@ -269,6 +279,7 @@ ParsedFile parseGltfFile(const LoadContext& ctx, const std::filesystem::path& pa
                                          : std::string_view(reinterpret_cast<const char*>(file.data()), file.size());
     if (jsonDepth(json, kMaxJsonDepth) > kMaxJsonDepth)
         ctx.fail("invalid glTF: JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    checkGltfJson(ctx, json);
 
     ParsedFile parsed;
     FsState fs;

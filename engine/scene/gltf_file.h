@@ -14,8 +14,11 @@
 
 #include <tiny_gltf.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
+#include <span>
+#include <vector>
 
 namespace candela::scene::gltf {
 
@@ -24,8 +27,14 @@ struct ParsedFile {
     std::map<int, std::vector<uint8_t>> uriImages;  // glTF image index → encoded bytes, for URI images
 };
 
-// Parses `path` (JSON or GLB, told apart by content). Throws UserError via ctx for anything
-// malformed, missing or escaping the model's folder. tinygltf's warnings go to ctx.warn.
-ParsedFile parseGltfFile(const LoadContext& ctx, const std::filesystem::path& path, uint32_t maxImageDimension);
+// Reads the whole file at `path` (failing via ctx when it is missing, a directory, empty or 4 GiB
+// or larger: tinygltf takes lengths as 32 bits).
+std::vector<uint8_t> readGltfFile(const LoadContext& ctx, const std::filesystem::path& path);
+
+// Parses `file` (JSON or GLB, told apart by content), the contents of a file at `path`: `path`'s
+// folder is where relative URIs are resolved. Throws UserError via ctx for anything malformed,
+// missing or escaping that folder. tinygltf's warnings go to ctx.warn. Borrows `file` for the call.
+ParsedFile parseGltf(const LoadContext& ctx, std::span<const uint8_t> file, const std::filesystem::path& path,
+                     uint32_t maxImageDimension);
 
 }  // namespace candela::scene::gltf

@@ -2,6 +2,8 @@
 
 #include "scene/gltf_accessors.h"
 
+#include "core/check.h"
+
 #include <stb_image.h>
 #include <tiny_gltf.h>
 
@@ -89,23 +91,46 @@ DecodedImage decodeImage(const LoadContext& ctx, std::span<const uint8_t> bytes,
 }
 
 ImageTable::ImageTable(const LoadContext& ctx, const tinygltf::Model& model,
-                       std::map<int, std::vector<uint8_t>> uriImages, uint32_t maxDimension, Scene& scene)
-    : mCtx(ctx), mModel(model), mEncoded(std::move(uriImages)), mMaxDimension(maxDimension), mScene(scene) {}
+                       std::map<int, std::vector<uint8_t>> uriImages, const LoadOptions& options, Scene& scene)
+    : mCtx(ctx), mModel(model), mEncoded(std::move(uriImages)), mOptions(options), mScene(scene) {}
+
+std::span<const uint8_t> ImageTable::encoded(int index, const std::string& what) {
+    // URI images were read while parsing; the rest must come from a bufferView.
+    if (auto it = mEncoded.find(index); it != mEncoded.end()) return it->second;
+    const tinygltf::Image& image = mModel.images[size_t(index)];
+    if (image.bufferView < 0) mCtx.fail(what + ": no image data");
+    return bufferViewBytes(mCtx, mModel, image.bufferView, what);
+}
+
+uint64_t ImageTable::declaredBytes(int index) {
+    const std::string what = label("image", index, mModel.images[size_t(index)].name);
+    const auto [width, height] = checkImageHeader(mCtx, encoded(index, what), what, mOptions.maxImageDimension);
+    const uint64_t bytes = uint64_t(width) * height * 4;
+    if (bytes > mOptions.maxImageBytes)
+        mCtx.fail(what + ": " + std::to_string(width) + "x" + std::to_string(height) + " decodes to " + formatBytes(bytes) +
+                  " of RGBA8, above the limit of " + formatBytes(mOptions.maxImageBytes) + " per image");
+    return bytes;
+}
+
+void ImageTable::checkDecodedSize(const std::set<std::pair<int, bool>>& uses) {
+    uint64_t total = 0;
+    for (const auto& [image, srgb] : uses) {
+        if (image < 0 || size_t(image) >= mModel.images.size()) continue;
+        total += declaredBytes(image);
+    }
+    if (total > mOptions.maxTotalImageBytes)
+        mCtx.fail("decoded images would take " + formatBytes(total) + ", above the limit of " +
+                  formatBytes(mOptions.maxTotalImageBytes) + " per scene");
+}
 
 DecodedImage& ImageTable::decoded(int index) {
     auto it = mDecoded.find(index);
     if (it != mDecoded.end()) return it->second;
-    const tinygltf::Image& image = mModel.images[size_t(index)];
-    const std::string what = label("image", index, image.name);
-    // URI images were read while parsing; the rest must come from a bufferView.
-    if (auto encoded = mEncoded.find(index); encoded != mEncoded.end()) {
-        DecodedImage& out = mDecoded[index] = decodeImage(mCtx, encoded->second, what, mMaxDimension);
-        mEncoded.erase(encoded);
-        return out;
-    }
-    if (image.bufferView < 0) mCtx.fail(what + ": no image data");
-    const std::span<const uint8_t> bytes = bufferViewBytes(mCtx, mModel, image.bufferView, what);
-    return mDecoded[index] = decodeImage(mCtx, bytes, what, mMaxDimension);
+    const std::string what = label("image", index, mModel.images[size_t(index)].name);
+    declaredBytes(index);  // the per-image limit, before any pixel is decoded
+    DecodedImage& out = mDecoded[index] = decodeImage(mCtx, encoded(index, what), what, mOptions.maxImageDimension);
+    mEncoded.erase(index);
+    return out;
 }
 
 int ImageTable::resolve(int index, bool srgb) {

@@ -3,10 +3,12 @@
 // that maps (glTF image, sRGB or linear use) to Scene::images entries.
 
 #include "scene/gltf_context.h"
+#include "scene/gltf_loader.h"
 #include "scene/scene.h"
 
 #include <cstdint>
 #include <map>
+#include <set>
 #include <span>
 #include <string>
 #include <utility>
@@ -38,12 +40,17 @@ DecodedImage decodeImage(const LoadContext& ctx, std::span<const uint8_t> bytes,
 
 // Creates Scene::images entries on demand, decoding only the images materials use. An image used
 // both as sRGB (base colour, emissive) and as linear data becomes two entries. `uriImages` holds
-// the encoded bytes of images given by URI (glTF image index → file contents). Borrows ctx, model
-// and scene for its lifetime.
+// the encoded bytes of images given by URI (glTF image index → file contents). Borrows ctx, model,
+// options and scene for its lifetime.
 class ImageTable {
 public:
     ImageTable(const LoadContext& ctx, const tinygltf::Model& model, std::map<int, std::vector<uint8_t>> uriImages,
-               uint32_t maxDimension, Scene& scene);
+               const LoadOptions& options, Scene& scene);
+
+    // Fails, before anything is decoded, when the entries `uses` ((glTF image, srgb) pairs) would
+    // exceed the options' per-image or per-scene decoded size. Indices out of range are skipped
+    // (resolve's callers report them).
+    void checkDecodedSize(const std::set<std::pair<int, bool>>& uses);
 
     // The Scene::images index for glTF image `image` used with the given encoding; decodes it on first
     // use (bufferView images are range-checked here). Precondition: 0 <= image < model.images.size().
@@ -51,12 +58,16 @@ public:
 
 private:
     DecodedImage& decoded(int image);
+    // The encoded bytes of glTF image `image` (bufferView images are range-checked here).
+    std::span<const uint8_t> encoded(int image, const std::string& what);
+    // The RGBA8 bytes the image's header declares; fails above the per-image limit.
+    uint64_t declaredBytes(int image);
 
     const LoadContext& mCtx;
     const tinygltf::Model& mModel;
     std::map<int, std::vector<uint8_t>> mEncoded;
     std::map<int, DecodedImage> mDecoded;
-    uint32_t mMaxDimension;
+    const LoadOptions& mOptions;
     Scene& mScene;
     std::map<std::pair<int, bool>, int> mEntries;  // (glTF image, srgb) → Scene::images index
 };

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <new>
 #include <string_view>
 
@@ -37,6 +39,11 @@ void LoadContext::warn(const std::string& text) const {
     if (std::find(warnings->begin(), warnings->end(), message) != warnings->end()) return;
     if (warnings->size() < kMaxWarnings) warnings->push_back(message);
     else if (warnings->size() == kMaxWarnings) warnings->push_back("further warnings suppressed");
+}
+
+float toFloat(const LoadContext& ctx, double value, const std::string& what) {
+    if (!(std::abs(value) <= double(std::numeric_limits<float>::max()))) ctx.fail(what + " is beyond single precision");
+    return float(value);
 }
 
 std::string label(const char* kind, int index, const std::string& name) {
@@ -73,29 +80,42 @@ void checkAsset(const gltf::LoadContext& ctx, const tinygltf::Model& model) {
             if (!primitive.targets.empty()) return ctx.warn("morph targets are not supported (ignored)");
 }
 
-void loadInto(const gltf::LoadContext& ctx, const std::filesystem::path& path, const LoadOptions& options,
-              Scene& scene) {
-    gltf::ParsedFile parsed = gltf::parseGltfFile(ctx, path, options.maxImageDimension);
+void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, const std::filesystem::path& path,
+              const LoadOptions& options, Scene& scene) {
+    gltf::ParsedFile parsed = gltf::parseGltf(ctx, bytes, path, options.maxImageDimension);
     const tinygltf::Model& model = parsed.model;
     checkAsset(ctx, model);
     gltf::loadSamplers(ctx, model, scene);
-    gltf::ImageTable images(ctx, model, std::move(parsed.uriImages), options.maxImageDimension, scene);
+    gltf::ImageTable images(ctx, model, std::move(parsed.uriImages), options, scene);
     gltf::loadMaterials(ctx, model, images, scene);
     gltf::loadNodes(ctx, model, scene);
 }
 
 }  // namespace
 
-Scene loadGltf(const std::filesystem::path& path, const LoadOptions& options) {
+Scene loadGltfFromMemory(std::span<const uint8_t> bytes, const std::filesystem::path& path,
+                         const LoadOptions& options) {
     Scene scene;
     scene.source = path.string();
     const gltf::LoadContext ctx{path.string(), &scene.warnings};
     try {
-        loadInto(ctx, path, options, scene);
+        loadInto(ctx, bytes, path, options, scene);
     } catch (const std::bad_alloc&) {
         ctx.fail("out of memory");
     }
     return scene;
+}
+
+Scene loadGltf(const std::filesystem::path& path, const LoadOptions& options) {
+    std::vector<std::string> unused;
+    const gltf::LoadContext ctx{path.string(), &unused};
+    std::vector<uint8_t> bytes;
+    try {
+        bytes = gltf::readGltfFile(ctx, path);
+    } catch (const std::bad_alloc&) {
+        ctx.fail("out of memory");
+    }
+    return loadGltfFromMemory(bytes, path, options);
 }
 
 }  // namespace candela::scene

@@ -4,13 +4,21 @@
 
 #include "scene/scene.h"
 
+#include <cstdint>
 #include <filesystem>
+#include <span>
 
 namespace candela::scene {
 
 struct LoadOptions {
     // Images whose declared width or height exceeds this are rejected before decoding.
     uint32_t maxImageDimension = 16384;
+    // Decoded (RGBA8) bytes allowed per image and for all of a scene's images together (an image
+    // used both as colour and as data counts twice). Both are checked from the sizes the image
+    // headers declare, before any pixel is decoded: a small file that would decompress to
+    // gigabytes (a decompression bomb) fails at once with the sizes in the message.
+    uint64_t maxImageBytes = uint64_t(256) << 20;
+    uint64_t maxTotalImageBytes = uint64_t(2) << 30;
 };
 
 // Loads `path`. Throws candela::UserError with one line "PATH: problem" for anything malformed
@@ -18,5 +26,10 @@ struct LoadOptions {
 // folder, unsupported required extensions, NaN positions...). Non-fatal issues (unsupported
 // optional extensions, skipped points/lines) go to Scene::warnings.
 Scene loadGltf(const std::filesystem::path& path, const LoadOptions& options = {});
+
+// As loadGltf, for a file's contents already in memory: `path` names the file in messages and its
+// folder is where relative URIs (buffers, images) are read from. Borrows `bytes` for the call.
+Scene loadGltfFromMemory(std::span<const uint8_t> bytes, const std::filesystem::path& path,
+                         const LoadOptions& options = {});
 
 }  // namespace candela::scene

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
+#include <set>
 
 namespace candela::scene::gltf {
 namespace {
@@ -23,7 +25,8 @@ Wrap wrapMode(const LoadContext& ctx, int wrap, const std::string& what) {
 std::optional<double> number(const tinygltf::Value& object, const char* key) {
     if (!object.Has(key)) return std::nullopt;
     const tinygltf::Value& v = object.Get(key);
-    if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble())) return std::nullopt;
+    // Values a float cannot hold are treated as missing, like non-finite ones.
+    if (!v.IsNumber() || !(std::abs(v.GetNumberAsDouble()) <= std::numeric_limits<float>::max())) return std::nullopt;
     return v.GetNumberAsDouble();
 }
 
@@ -32,7 +35,8 @@ std::optional<glm::vec2> vec2(const tinygltf::Value& object, const char* key) {
     const tinygltf::Value& v = object.Get(key);
     if (v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber()) return std::nullopt;
     const glm::dvec2 d(v.Get(0).GetNumberAsDouble(), v.Get(1).GetNumberAsDouble());
-    if (!std::isfinite(d.x) || !std::isfinite(d.y)) return std::nullopt;
+    constexpr double kMax = std::numeric_limits<float>::max();
+    if (!(std::abs(d.x) <= kMax) || !(std::abs(d.y) <= kMax)) return std::nullopt;
     return glm::vec2(d);
 }
 
@@ -80,6 +84,22 @@ TextureRef textureRef(const LoadContext& ctx, const tinygltf::Model& model, Imag
     return ref;
 }
 
+// Every (glTF image, srgb) pair the materials' textures name, skipping indices out of range.
+std::set<std::pair<int, bool>> imageUses(const tinygltf::Model& model) {
+    std::set<std::pair<int, bool>> uses;
+    auto add = [&](int texture, bool srgb) {
+        if (texture >= 0 && size_t(texture) < model.textures.size()) uses.insert({model.textures[size_t(texture)].source, srgb});
+    };
+    for (const tinygltf::Material& m : model.materials) {
+        add(m.pbrMetallicRoughness.baseColorTexture.index, true);
+        add(m.emissiveTexture.index, true);
+        add(m.pbrMetallicRoughness.metallicRoughnessTexture.index, false);
+        add(m.normalTexture.index, false);
+        add(m.occlusionTexture.index, false);
+    }
+    return uses;
+}
+
 }  // namespace
 
 void loadSamplers(const LoadContext& ctx, const tinygltf::Model& model, Scene& scene) {
@@ -113,6 +133,7 @@ void loadSamplers(const LoadContext& ctx, const tinygltf::Model& model, Scene& s
 }
 
 void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images, Scene& scene) {
+    images.checkDecodedSize(imageUses(model));
     for (size_t i = 0; i < model.materials.size(); ++i) {
         const tinygltf::Material& m = model.materials[i];
         const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;

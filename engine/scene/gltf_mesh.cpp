@@ -54,30 +54,35 @@ Attributes readAttributes(const LoadContext& ctx, const tinygltf::Model& model, 
     const bool rgb = !colors.empty() && model.accessors[size_t(primitive.attributes.at("COLOR_0"))].type == TINYGLTF_TYPE_VEC3;
 
     // Non-finite attributes (other than positions) are repaired, not fatal: exporters do write them.
-    size_t repaired = 0;
-    auto orDefault = [&](const glm::vec4& v, const glm::vec4& fallback) {
+    // Counted per attribute: TEXCOORD_0, TEXCOORD_1, COLOR_0, NORMAL, TANGENT.
+    std::array<size_t, 5> repaired{};
+    auto orDefault = [&](size_t attribute, const glm::vec4& v, const glm::vec4& fallback) {
         if (finite(v)) return v;
-        ++repaired;
+        ++repaired[attribute];
         return fallback;
     };
     for (size_t i = 0; i < count; ++i) {
         Vertex& v = vertices[i];
-        if (!uv0.empty()) v.uv0 = glm::vec2(orDefault(uv0[i], glm::vec4(0.0f)));
-        if (!uv1.empty()) v.uv1 = glm::vec2(orDefault(uv1[i], glm::vec4(0.0f)));
-        if (!colors.empty()) v.color = orDefault(rgb ? glm::vec4(glm::vec3(colors[i]), 1.0f) : colors[i], glm::vec4(1.0f));
+        if (!uv0.empty()) v.uv0 = glm::vec2(orDefault(0, uv0[i], glm::vec4(0.0f)));
+        if (!uv1.empty()) v.uv1 = glm::vec2(orDefault(1, uv1[i], glm::vec4(0.0f)));
+        if (!colors.empty()) v.color = orDefault(2, rgb ? glm::vec4(glm::vec3(colors[i]), 1.0f) : colors[i], glm::vec4(1.0f));
         if (!normals.empty()) {
-            const glm::vec3 n(orDefault(normals[i], glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)));
+            const glm::vec3 n(orDefault(3, normals[i], glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)));
             // Zero-length normals stay zero (the shader copes); others are made unit length.
             v.normal = glm::dot(n, n) > 0.0f ? glm::normalize(n) : n;
         }
         if (!tangents.empty() && !normals.empty()) {
-            const glm::vec4 t = orDefault(tangents[i], glm::vec4(0.0f));
+            const glm::vec4 t = orDefault(4, tangents[i], glm::vec4(0.0f));
             const glm::vec3 xyz(t);
             v.tangent = glm::dot(xyz, xyz) > 0.0f ? glm::vec4(glm::normalize(xyz), t.w < 0.0f ? -1.0f : 1.0f)
                                                   : fallbackTangent(v.normal);
         }
     }
-    if (repaired) ctx.warn(what + ": " + std::to_string(repaired) + " non-finite attribute values replaced by defaults");
+    constexpr std::array<const char*, 5> kNames = {"TEXCOORD_0", "TEXCOORD_1", "COLOR_0", "NORMAL", "TANGENT"};
+    for (size_t a = 0; a < repaired.size(); ++a)
+        if (repaired[a])
+            ctx.warn(what + " " + kNames[a] + ": " + std::to_string(repaired[a]) + " non-finite value" +
+                     (repaired[a] == 1 ? "" : "s") + " replaced by the default");
     return {!normals.empty(), !tangents.empty(), {!uv0.empty(), !uv1.empty()}};
 }
 
@@ -154,6 +159,20 @@ std::vector<uint32_t> toTriangleList(int mode, std::span<const uint32_t> in) {
     return out;
 }
 
+size_t dropZeroAreaTriangles(std::span<const Vertex> vertices, std::vector<uint32_t>& indices) {
+    size_t kept = 0;
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const glm::dvec3 a(vertices[indices[t]].position), b(vertices[indices[t + 1]].position),
+            c(vertices[indices[t + 2]].position);
+        if (glm::cross(b - a, c - a) == glm::dvec3(0.0)) continue;
+        for (size_t k = 0; k < 3; ++k) indices[kept + k] = indices[t + k];
+        kept += 3;
+    }
+    const size_t dropped = (indices.size() - kept) / 3;
+    indices.resize(kept);
+    return dropped;
+}
+
 PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model& model, int meshIndex, int primitiveIndex,
                                   const Material& material, Scene& scene) {
     const tinygltf::Mesh& mesh = model.meshes[size_t(meshIndex)];
@@ -194,6 +213,8 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
     if (mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
         ctx.warn(what + ": " + std::to_string(indices.size()) + " indices is not a multiple of 3 (extra dropped)");
     indices = toTriangleList(mode, indices);
+    if (const size_t dropped = dropZeroAreaTriangles(vertices, indices))
+        ctx.warn(what + ": " + std::to_string(dropped) + " zero-area triangle" + (dropped == 1 ? "" : "s") + " dropped");
     if (indices.empty()) {
         ctx.warn(what + ": no triangles, skipped");
         return {};

@@ -35,4 +35,9 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
 // repeat an index (degenerate stitching) are dropped; a partial trailing list triangle is dropped.
 std::vector<uint32_t> toTriangleList(int mode, std::span<const uint32_t> indices);
 
+// Removes the triangles of a triangle list whose corners are collinear or coincide (exactly zero
+// area: they cover no pixel and give no normal or tangent); returns how many were removed.
+// Precondition: every index < vertices.size().
+size_t dropZeroAreaTriangles(std::span<const Vertex> vertices, std::vector<uint32_t>& indices);
+
 }  // namespace candela::scene::gltf

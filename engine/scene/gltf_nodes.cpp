@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <limits>
 #include <map>
 
 namespace candela::scene::gltf {
@@ -101,6 +103,8 @@ public:
                 mCtx.fail(what + ": reached twice (a node must have at most one parent and appear once in the scene)");
             visited[size_t(item.node)] = onPath[size_t(item.node)] = 1;
             const glm::dmat4 world = item.parent * localTransform(mCtx, node, what);
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r) toFloat(mCtx, world[c][r], what + ": world transform");
             visit(node, what, world);
             stack.push_back({item.node, glm::dmat4(1.0), true});
             for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world, false});
@@ -129,7 +133,12 @@ private:
     void addMesh(int meshIndex, const std::string& what, const glm::dmat4& world) {
         if (size_t(meshIndex) >= mModel.meshes.size()) mCtx.fail(what + ": mesh " + std::to_string(meshIndex) + " does not exist");
         const glm::mat4 worldF(world);
-        const bool flip = glm::determinant(glm::dmat3(world)) < 0.0;
+        // A zero scale on any axis (here or inherited) flattens the mesh to nothing visible and
+        // leaves no normal matrix; its draws are left out.
+        const float det = glm::determinant(glm::mat3(worldF));
+        if (det == 0.0f || !std::isfinite(det))
+            return mCtx.warn(what + ": zero scale (a singular world transform); its mesh is not drawn");
+        const bool flip = det < 0.0f;
         const auto& primitives = mModel.meshes[size_t(meshIndex)].primitives;
         for (size_t p = 0; p < primitives.size(); ++p) {
             const uint32_t material = materialIndex(primitives[p].material, label("mesh", meshIndex) + " primitive " + std::to_string(p));
@@ -159,8 +168,15 @@ private:
         camera.name = !source.name.empty() ? source.name : !node.name.empty() ? node.name : "camera " + std::to_string(node.camera);
         if (!rigid(world, camera.world)) return mCtx.warn(cameraWhat + ": degenerate node transform, camera skipped");
         bool valid = false;
+        auto fits = [](std::initializer_list<double> values) {
+            for (double v : values)
+                if (!(std::abs(v) <= double(std::numeric_limits<float>::max()))) return false;
+            return true;
+        };
         if (source.type == "perspective") {
             const auto& p = source.perspective;
+            if (!fits({p.yfov, p.aspectRatio, p.znear, p.zfar}))
+                return mCtx.warn(cameraWhat + ": parameters beyond single precision, camera skipped");
             camera.perspective = true;
             camera.yfov = float(p.yfov);
             camera.aspectRatio = float(p.aspectRatio);
@@ -170,6 +186,8 @@ private:
                     (p.zfar == 0.0 || p.zfar > p.znear) && std::isfinite(p.zfar) && std::isfinite(p.aspectRatio);
         } else if (source.type == "orthographic") {
             const auto& o = source.orthographic;
+            if (!fits({o.xmag, o.ymag, o.znear, o.zfar}))
+                return mCtx.warn(cameraWhat + ": parameters beyond single precision, camera skipped");
             camera.perspective = false;
             camera.xmag = float(o.xmag);
             camera.ymag = float(o.ymag);
@@ -195,14 +213,17 @@ private:
         else if (source.type == "spot") light.type = LightType::Spot;
         else return mCtx.warn(lightWhat + ": unknown type '" + source.type + "', light skipped");
         if (source.color.size() == 3 && allFinite(source.color))
-            light.color = glm::max(glm::vec3(float(source.color[0]), float(source.color[1]), float(source.color[2])), glm::vec3(0.0f));
+            light.color = glm::max(glm::vec3(toFloat(mCtx, source.color[0], lightWhat + " color"),
+                                             toFloat(mCtx, source.color[1], lightWhat + " color"),
+                                             toFloat(mCtx, source.color[2], lightWhat + " color")),
+                                   glm::vec3(0.0f));
         else if (!source.color.empty())
             mCtx.warn(lightWhat + ": color must be 3 finite numbers, using white");
         if (!std::isfinite(source.intensity) || !std::isfinite(source.range) || !std::isfinite(source.spot.innerConeAngle) ||
             !std::isfinite(source.spot.outerConeAngle))
             mCtx.fail(lightWhat + ": parameters are not finite");
-        light.intensity = float(std::max(source.intensity, 0.0));
-        light.range = float(std::max(source.range, 0.0));
+        light.intensity = toFloat(mCtx, std::max(source.intensity, 0.0), lightWhat + " intensity");
+        light.range = toFloat(mCtx, std::max(source.range, 0.0), lightWhat + " range");
         // 0 <= inner < outer <= π/2, as the extension requires.
         light.outerConeAngle = float(std::clamp(source.spot.outerConeAngle, 1e-4, kPi / 2));
         light.innerConeAngle = float(std::clamp(source.spot.innerConeAngle, 0.0, double(light.outerConeAngle) * 0.9999));

@@ -233,6 +233,11 @@ std::vector<glm::vec4> generateTangents(std::span<const glm::vec3> positions, st
         }
     }
     for (size_t c = triangleCount * 3; c < indices.size(); ++c) out[c] = fallbackTangent(normals[indices[c]]);
+    // Float overflow in the sums above (positions near the float range, slivers) must not reach the
+    // GPU as NaN: such corners take the fallback too.
+    for (size_t c = 0; c < out.size(); ++c)
+        if (!std::isfinite(out[c].x) || !std::isfinite(out[c].y) || !std::isfinite(out[c].z))
+            out[c] = fallbackTangent(normals[indices[c]]);
     return out;
 }
 

@@ -111,7 +111,7 @@ std::vector<BadCase> badCases() {
             writeFile(dir / "m.gltf", json);
             return dir / "m.gltf";
         }, "JSON nested deeper than 512 levels");
-    add("JsonRootNotObject", [](const fs::path& dir) { writeFile(dir / "m.gltf", std::string("[1, 2, 3]")); return dir / "m.gltf"; }, "not a JSON object");
+    add("JsonRootNotObject", [](const fs::path& dir) { writeFile(dir / "m.gltf", std::string("[1, 2, 3]")); return dir / "m.gltf"; }, "expected a JSON object");
     add("JsonMissingAsset", edited([](GltfBuilder& b) { b.doc.erase("asset"); }), "asset");
     add("JsonVersion1", edited([](GltfBuilder& b) { b.doc["asset"]["version"] = "1.0"; }), "unsupported glTF version '1.0'");
     add("JsonComponentTypeString", edited([](GltfBuilder& b) { b.doc["accessors"][0]["componentType"] = "FLOAT"; }), "componentType");
@@ -265,7 +265,7 @@ std::vector<BadCase> badCases() {
     add("MaterialMissing", edited([](GltfBuilder& b) { b.doc["meshes"][0]["primitives"][0]["material"] = 3; }), "material 3 does not exist");
     add("CameraMissing", edited([](GltfBuilder& b) { b.doc["nodes"][0]["camera"] = 4; }), "camera 4 does not exist");
     add("LightMissing", edited([](GltfBuilder& b) { b.doc["nodes"][0]["extensions"] = {{"KHR_lights_punctual", {{"light", 2}}}}; }), "KHR_lights_punctual light index is missing or out of range");
-    add("MatrixWrongLength", edited([](GltfBuilder& b) { b.doc["nodes"][0]["matrix"] = std::vector<double>(15, 1.0); }), "matrix must have 16 numbers");
+    add("MatrixWrongLength", edited([](GltfBuilder& b) { b.doc["nodes"][0]["matrix"] = std::vector<double>(15, 1.0); }), "nodes[0].matrix: expected an array of 16 numbers");
     add("InvalidMode", edited([](GltfBuilder& b) { b.doc["meshes"][0]["primitives"][0]["mode"] = 9; }), "invalid mode 9");
     add("RequiredExtensionUnsupported", edited([](GltfBuilder& b) {
             b.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};

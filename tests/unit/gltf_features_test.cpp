@@ -501,7 +501,7 @@ TEST(GltfFeatures, UnindexedPrimitiveAndNonFiniteNormalRepaired) {
     EXPECT_EQ(scene.indices, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5}));
     expectVec(scene.vertices[0].normal, {0, 0, 1});  // normalized
     expectVec(scene.vertices[2].normal, {0, 0, 1});  // NaN replaced
-    EXPECT_TRUE(hasWarning(scene, "1 non-finite attribute values replaced by defaults"));
+    EXPECT_TRUE(hasWarning(scene, "NORMAL: 1 non-finite value replaced by the default"));
 }
 
 }  // namespace
