@@ -1,0 +1,123 @@
+#include "fuzz_targets.h"
+
+#include "core/check.h"
+#include "scene/environment.h"
+#include "scene/exr_reader.h"
+#include "scene/gltf_loader.h"
+#include "scene/hdr_reader.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <span>
+#include <string>
+
+namespace candela::fuzz {
+namespace {
+
+// Limits well inside libFuzzer's default 2 GiB memory limit: an input may legitimately declare
+// any size up to them, and the readers must refuse anything larger before allocating it.
+constexpr uint32_t kMaxImageDimension = 256;  // larger images cost decode time, not coverage
+constexpr uint32_t kMaxEnvWidth = 2048, kMaxEnvHeight = 1024;
+
+[[noreturn]] void violated(const std::string& what) {
+    std::fprintf(stderr, "fuzz invariant violated: %s\n", what.c_str());
+    std::abort();
+}
+
+template <typename V>
+bool finite(const V& v) {
+    for (int i = 0; i < V::length(); ++i)
+        if (!std::isfinite(v[i])) return false;
+    return true;
+}
+
+bool finite(const glm::mat4& m) { return finite(m[0]) && finite(m[1]) && finite(m[2]) && finite(m[3]); }
+
+void checkTexture(const scene::Scene& s, const scene::TextureRef& t, const std::string& what) {
+    if (t.image < -1 || t.image >= int(s.images.size())) violated(what + ": image index out of range");
+    if (t.sampler < -1 || t.sampler >= int(s.samplers.size())) violated(what + ": sampler index out of range");
+    if (t.texCoord > 1) violated(what + ": texCoord > 1");
+    if (!finite(t.transform.offset) || !finite(t.transform.scale) || !std::isfinite(t.transform.rotation))
+        violated(what + ": texture transform not finite");
+}
+
+void checkScene(const scene::Scene& s) {
+    for (size_t i = 0; i < s.vertices.size(); ++i) {
+        const scene::Vertex& v = s.vertices[i];
+        const std::string what = "vertex " + std::to_string(i) + " ";
+        if (!finite(v.position)) violated(what + "position not finite");
+        if (!finite(v.normal)) violated(what + "normal not finite");
+        if (!finite(v.tangent)) violated(what + "tangent not finite");
+        if (!finite(v.uv0) || !finite(v.uv1)) violated(what + "texture coordinates not finite");
+        if (!finite(v.color)) violated(what + "colour not finite");
+    }
+    for (uint32_t index : s.indices)
+        if (index >= s.vertices.size()) violated("index " + std::to_string(index) + " >= vertex count");
+    for (const scene::Draw& d : s.draws) {
+        if (uint64_t(d.firstIndex) + d.indexCount > s.indices.size()) violated("draw index range past the end");
+        if (d.indexCount % 3 != 0) violated("draw index count not a multiple of 3");
+        if (d.material >= s.materials.size()) violated("draw material out of range");
+        if (!finite(d.world)) violated("draw transform not finite");
+    }
+    for (size_t i = 0; i < s.materials.size(); ++i) {
+        const scene::Material& m = s.materials[i];
+        const std::string what = "material " + std::to_string(i);
+        if (!finite(m.baseColorFactor) || !std::isfinite(m.metallicFactor) || !std::isfinite(m.roughnessFactor) ||
+            !finite(m.emissiveFactor) || !std::isfinite(m.emissiveStrength) || !std::isfinite(m.normalScale) ||
+            !std::isfinite(m.occlusionStrength) || !std::isfinite(m.alphaCutoff))
+            violated(what + ": factor not finite");
+        for (const scene::TextureRef* t : {&m.baseColor, &m.metallicRoughness, &m.normal, &m.occlusion, &m.emissive})
+            checkTexture(s, *t, what);
+    }
+    for (const scene::Image& image : s.images)
+        if (image.width == 0 || image.height == 0 || image.rgba8.size() != size_t(image.width) * image.height * 4)
+            violated("image '" + image.name + "': pixel array does not match its size");
+    for (const scene::Light& l : s.lights)
+        if (!finite(l.color) || !std::isfinite(l.intensity) || !std::isfinite(l.range) || !finite(l.position) ||
+            !finite(l.direction) || !std::isfinite(l.innerConeAngle) || !std::isfinite(l.outerConeAngle))
+            violated("light not finite");
+    for (const scene::Camera& c : s.cameras)
+        if (!finite(c.world) || !std::isfinite(c.yfov) || !std::isfinite(c.znear) || !std::isfinite(c.zfar) ||
+            !std::isfinite(c.aspectRatio) || !std::isfinite(c.xmag) || !std::isfinite(c.ymag))
+            violated("camera not finite");
+    if (!s.draws.empty() && (!s.bounds.valid() || !finite(s.bounds.min) || !finite(s.bounds.max)))
+        violated("scene bounds invalid");
+}
+
+void checkEnvironment(const scene::Environment& env) {
+    if (env.width == 0 || env.height == 0 || env.width > kMaxEnvWidth || env.height > kMaxEnvHeight)
+        violated("environment size out of range");
+    if (env.rgb.size() != env.texelCount() * 3) violated("environment texel array does not match its size");
+    for (float v : env.rgb)
+        if (!std::isfinite(v) || v < 0.0f) violated("environment texel not finite or negative after sanitizing");
+}
+
+void decodeEnvironment(scene::Environment (*decode)(std::span<const uint8_t>, const std::string&,
+                                                    const scene::EnvironmentLoadOptions&),
+                       const uint8_t* data, size_t size) {
+    const scene::EnvironmentLoadOptions options{.maxWidth = kMaxEnvWidth, .maxHeight = kMaxEnvHeight};
+    try {
+        scene::Environment env = decode(std::span<const uint8_t>(data, size), "fuzz", options);
+        scene::sanitizeEnvironment(env);
+        checkEnvironment(env);
+    } catch (const UserError&) {
+    }
+}
+
+}  // namespace
+
+void fuzzGltf(const uint8_t* data, size_t size, const std::filesystem::path& uriFolder) {
+    try {
+        const scene::Scene s = scene::loadGltfFromMemory(std::span<const uint8_t>(data, size), uriFolder / "fuzz.gltf",
+                                                         scene::LoadOptions{.maxImageDimension = kMaxImageDimension});
+        checkScene(s);
+    } catch (const UserError&) {
+    }
+}
+
+void fuzzHdr(const uint8_t* data, size_t size) { decodeEnvironment(&scene::decodeHdr, data, size); }
+
+void fuzzExr(const uint8_t* data, size_t size) { decodeEnvironment(&scene::decodeExr, data, size); }
+
+}  // namespace candela::fuzz
