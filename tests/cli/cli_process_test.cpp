@@ -1,10 +1,10 @@
 // The `candela` executable end to end: exit codes, one-line errors, and the files it writes.
+#include "run_candela.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <stb_image.h>
 #include <tinyexr.h>
-
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <array>
@@ -16,28 +16,8 @@
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    std::string stderrText;
-    std::string stdoutText;
-};
-
-// Runs candela with `args` (shell syntax); captures stderr and stdout.
-Result run(const std::string& args) {
-    const auto stdoutFile =
-        std::filesystem::temp_directory_path() / ("candela_cli_stdout_" + std::to_string(::getpid()) + ".txt");
-    const std::string command = std::string(CANDELA_EXECUTABLE) + " " + args + " 2>&1 >" + stdoutFile.string();
-    FILE* pipe = popen(command.c_str(), "r");
-    Result result;
-    std::array<char, 4096> buffer;
-    while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) result.stderrText.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream out(stdoutFile);
-    result.stdoutText.assign(std::istreambuf_iterator<char>(out), std::istreambuf_iterator<char>());
-    std::filesystem::remove(stdoutFile);
-    return result;
-}
+using candela::test::Result;
+using candela::test::run;
 
 std::filesystem::path tempDir() {
     auto dir = std::filesystem::temp_directory_path() / ("candela_cli_" + std::to_string(::getpid()));

@@ -1,0 +1,623 @@
+// The bad-input catalogue: every class of malformed scene or environment file we know of, each
+// row fed to the real `candela render` and held to its stated outcome —
+//   Error:   exit code 2 and exactly one stderr line "candela: error: FILE: problem" naming the
+//            file and containing the row's fragment (no crash, hang or partial output);
+//   Warning: exit code 0, the image written at its size, and a "candela: warning:" line naming
+//            the file and containing the fragment; `visible` says whether the scene still shows
+//            something (pixels unlike the background) or draws nothing.
+// Rows marked `fixedIn6` needed a change to the loaders when the catalogue was written (the count
+// is in docs/robustness.md). Under the asan preset the same rows run against the sanitized
+// executable, so each is also free of out-of-bounds reads and undefined behaviour.
+#include "run_candela.h"
+
+#include "environment_test_util.h"
+#include "gltf_test_util.h"
+
+#include <stb_image.h>
+#include <zlib.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+namespace candela::scene::test {
+namespace {
+
+enum class Outcome { Error, Warning };
+
+struct Row {
+    std::string kind;   // the class of malformed input
+    std::string name;
+    std::function<fs::path(const fs::path& dir)> make;  // writes the input; returns the file to open
+    Outcome outcome;
+    std::string fragment;  // the error or warning line contains this
+    bool visible = true;   // Warning rows: the image shows the scene (false: nothing is drawn)
+    bool fixedIn6 = false;
+};
+
+void PrintTo(const Row& row, std::ostream* os) { *os << row.kind << " / " << row.name; }
+
+constexpr float kNan = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+// ---- inputs ----------------------------------------------------------------------------------------
+
+GltfBuilder triangle() {
+    GltfBuilder b;
+    b.addTriangle();
+    return b;
+}
+
+// The triangle with `positions` (3 vertices) and `normals`.
+GltfBuilder triangleWith(const std::vector<float>& positions, const std::vector<float>& normals) {
+    GltfBuilder b;
+    const int pos = b.addFloats(positions, "VEC3", 3);
+    const int nrm = b.addFloats(normals, "VEC3", 3);
+    b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}, {"NORMAL", nrm}}, b.addIndices({0, 1, 2}))}})});
+    return b;
+}
+
+// A textured triangle whose base colour comes from image 0 (a URI, or `png` in a bufferView).
+GltfBuilder textured(const std::string& uri, const Bytes& png = {}) {
+    GltfBuilder b;
+    const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
+    const int uv = b.addFloats({0, 0, 1, 0, 0, 1}, "VEC2", 2);
+    b.doc["materials"] = Json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+    b.doc["textures"] = Json::array({{{"source", 0}}});
+    if (!uri.empty()) b.doc["images"] = Json::array({{{"uri", uri}}});
+    else b.doc["images"] = Json::array({{{"bufferView", b.addView(png.data(), png.size())}, {"mimeType", "image/png"}}});
+    b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}, {"TEXCOORD_0", uv}}, b.addIndices({0, 1, 2}), 0)}})});
+    return b;
+}
+
+using Make = std::function<fs::path(const fs::path&)>;
+
+// The triangle's .gltf (+ .bin) after `edit` changed its JSON.
+Make gltfEdited(std::function<void(Json&)> edit, std::function<GltfBuilder()> base = triangle) {
+    return [edit, base](const fs::path& dir) {
+        const GltfBuilder b = base();
+        Json json = b.withBuffer("model.bin");
+        edit(json);
+        writeFile(dir / "model.bin", b.bin);
+        writeFile(dir / "model.gltf", json.dump());
+        return dir / "model.gltf";
+    };
+}
+
+// A model's .glb with its bytes changed by `edit`.
+Make glbEdited(std::function<void(Bytes&)> edit, std::function<GltfBuilder()> base = triangle) {
+    return [edit, base](const fs::path& dir) {
+        Bytes glb = base().glbBytes();
+        edit(glb);
+        writeFile(dir / "model.glb", glb);
+        return dir / "model.glb";
+    };
+}
+
+// A model written as .gltf + .bin (+ whatever `extra` writes beside it).
+Make gltfOf(std::function<GltfBuilder()> make, std::function<void(const fs::path&)> extra = {}) {
+    return [make, extra](const fs::path& dir) {
+        if (extra) extra(dir);
+        return make().writeGltf(dir);
+    };
+}
+
+void setU32(Bytes& bytes, size_t at, uint32_t v) {
+    for (int i = 0; i < 4; ++i) bytes[at + size_t(i)] = uint8_t(v >> (8 * i));
+}
+
+uint32_t u32(const Bytes& bytes, size_t at) {
+    return uint32_t(bytes[at]) | uint32_t(bytes[at + 1]) << 8 | uint32_t(bytes[at + 2]) << 16 | uint32_t(bytes[at + 3]) << 24;
+}
+
+// A zlib-compressed (really compressed, unlike makePng's stored blocks) 8-bit grey PNG of zeros:
+// a few hundred KiB that decode to width × height × 4 bytes of RGBA8.
+Bytes bombPng(uint32_t width, uint32_t height) {
+    Bytes png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    Bytes ihdr;
+    putU32BigEndian(ihdr, width);
+    putU32BigEndian(ihdr, height);
+    ihdr.insert(ihdr.end(), {8, 0, 0, 0, 0});
+    pngChunk(png, "IHDR", ihdr);
+    z_stream z{};
+    deflateInit(&z, 9);
+    const std::vector<uint8_t> row(width + 1, 0);  // filter byte + pixels
+    Bytes idat(1 << 16), out;
+    for (uint32_t y = 0; y < height; ++y) {
+        z.next_in = const_cast<uint8_t*>(row.data());
+        z.avail_in = uInt(row.size());
+        const int flush = y + 1 == height ? Z_FINISH : Z_NO_FLUSH;
+        do {
+            z.next_out = idat.data();
+            z.avail_out = uInt(idat.size());
+            deflate(&z, flush);
+            out.insert(out.end(), idat.data(), idat.data() + (idat.size() - z.avail_out));
+        } while (z.avail_out == 0);
+    }
+    deflateEnd(&z);
+    pngChunk(png, "IDAT", out);
+    pngChunk(png, "IEND", {});
+    return png;
+}
+
+// A small valid Radiance file (RLE scanlines), as the environment tests write it.
+Bytes goodHdr() { return HdrWriter{}.write(testTexels(64, 32), 64, 32); }
+
+// A small valid OpenEXR file (half RGB, ZIP).
+Bytes goodExr(float special = 1.0f) {
+    auto plane = [&](float base) {
+        ExrChannel c{"", TINYEXR_PIXELTYPE_HALF, std::vector<float>(64 * 32, base)};
+        c.values[5] = special;  // texel 5 of every channel
+        return c;
+    };
+    ExrChannel r = plane(0.5f), g = plane(0.4f), b = plane(0.3f);
+    r.name = "R", g.name = "G", b.name = "B";
+    return makeExr(64, 32, {r, g, b});
+}
+
+Make bytesAs(const std::string& name, std::function<Bytes()> bytes) {
+    return [name, bytes](const fs::path& dir) {
+        writeFile(dir / name, bytes());
+        return dir / name;
+    };
+}
+
+Make truncated(const std::string& name, std::function<Bytes()> bytes, size_t keep) {
+    return bytesAs(name, [bytes, keep] {
+        Bytes b = bytes();
+        b.resize(std::min(keep, b.size()));
+        return b;
+    });
+}
+
+// Offset of the first byte after the line that starts with `prefix` in a Radiance header.
+size_t afterLine(const Bytes& hdr, const std::string& prefix) {
+    const std::string text(hdr.begin(), hdr.end());
+    return text.find('\n', text.find(prefix)) + 1;
+}
+
+// The offset of `attribute`'s value in an EXR header (after its name, type name and size).
+size_t exrAttribute(const Bytes& exr, const std::string& attribute) {
+    const std::string text(exr.begin(), exr.end());
+    const size_t at = text.find(attribute + '\0');
+    const size_t typeEnd = text.find('\0', at + attribute.size() + 1);
+    return typeEnd + 1 + 4;
+}
+
+// ---- the catalogue ---------------------------------------------------------------------------------
+
+std::vector<Row> catalogue() {
+    std::vector<Row> rows;
+    auto error = [&](std::string kind, std::string name, Make make, std::string fragment, bool fixed = false) {
+        rows.push_back({std::move(kind), std::move(name), std::move(make), Outcome::Error, std::move(fragment), true, fixed});
+    };
+    auto warning = [&](std::string kind, std::string name, Make make, std::string fragment, bool visible,
+                       bool fixed = false) {
+        rows.push_back({std::move(kind), std::move(name), std::move(make), Outcome::Warning, std::move(fragment), visible, fixed});
+    };
+
+    // -- Truncation at many offsets.
+    const size_t glbSize = triangle().glbBytes().size();
+    const size_t glbJson = 20 + u32(triangle().glbBytes(), 12);  // first byte after the JSON chunk
+    for (size_t keep : {size_t(0), size_t(3)})
+        error("truncated", "Glb" + std::to_string(keep), truncated("m.glb", [] { return triangle().glbBytes(); }, keep),
+              keep == 0 ? "empty file" : "invalid glTF");
+    for (size_t keep : {size_t(4), size_t(11)})
+        error("truncated", "Glb" + std::to_string(keep), truncated("m.glb", [] { return triangle().glbBytes(); }, keep),
+              "truncated GLB: " + std::to_string(keep) + " bytes, the header needs 12");
+    for (size_t keep : {size_t(12), size_t(19), size_t(20), size_t(60), glbJson, glbJson + 4, glbJson + 8, glbSize - 1})
+        error("truncated", "Glb" + std::to_string(keep), truncated("m.glb", [] { return triangle().glbBytes(); }, keep),
+              "truncated GLB: header says " + std::to_string(glbSize) + " bytes, file has " + std::to_string(keep));
+    const size_t jsonSize = triangle().withBuffer("model.bin").dump().size();
+    for (size_t keep : {size_t(1), size_t(17), jsonSize / 2, jsonSize - 1})
+        error("truncated", "Gltf" + std::to_string(keep), [keep](const fs::path& dir) {
+            const GltfBuilder b = triangle();
+            writeFile(dir / "model.bin", b.bin);
+            writeFile(dir / "model.gltf", b.withBuffer("model.bin").dump().substr(0, keep));
+            return dir / "model.gltf";
+        }, "parse error");
+    for (size_t keep : {size_t(0), size_t(40), size_t(77)})
+        error("truncated", "Bin" + std::to_string(keep), [keep](const fs::path& dir) {
+            const fs::path path = triangle().writeGltf(dir);
+            fs::resize_file(dir / "model.bin", keep);
+            return path;
+        }, keep == 0 ? "cannot read 'model.bin': empty file" : "File size mismatch : model.bin");
+    for (size_t keep : {size_t(8), size_t(20), size_t(45), smallPng().size() - 20})
+        error("truncated", "Png" + std::to_string(keep), [keep](const fs::path& dir) {
+            Bytes png = smallPng();
+            png.resize(keep);
+            return textured("", png).writeGlb(dir);
+        }, "image 0: cannot decode image");
+    const size_t hdrHeader = afterLine(goodHdr(), "-Y");
+    auto hdrCut = [](size_t keep) -> std::string {
+        if (keep < 2) return "not a Radiance HDR file";
+        if (keep < 11) return "truncated header (no end of the first line)";
+        if (keep < 35) return "truncated header (no blank line ending it)";
+        return "";
+    };
+    for (size_t keep : {size_t(1), size_t(5), size_t(20)})
+        error("truncated", "Hdr" + std::to_string(keep), truncated("env.hdr", goodHdr, keep), hdrCut(keep));
+    error("truncated", "HdrInResolutionLine", truncated("env.hdr", goodHdr, hdrHeader - 4), "no resolution line after the header");
+    for (size_t keep : {hdrHeader, hdrHeader + 3, hdrHeader + 100, goodHdr().size() - 1})
+        error("truncated", "Hdr" + std::to_string(keep), truncated("env.hdr", goodHdr, keep),
+              "truncated: the file ends (" + std::to_string(keep) + " bytes) inside scanline");
+    const size_t exrSize = goodExr().size();
+    for (const auto& [keep, fragment] : std::vector<std::pair<size_t, std::string>>{
+             {3, "not an OpenEXR file (bad magic number)"}, {8, "invalid EXR header: Insufficient data size"},
+             {40, "invalid EXR header"}, {200, "invalid EXR header"}, {exrSize / 2, "invalid EXR header"},
+             {exrSize - 1, "cannot decode EXR pixels"}})
+        error("truncated", "Exr" + std::to_string(keep), truncated("env.exr", [] { return goodExr(); }, keep), fragment);
+
+    // -- Wrong magic.
+    error("wrong magic", "Glb", glbEdited([](Bytes& g) { g[3] = 'X'; }), "invalid glTF");
+    error("wrong magic", "Hdr", bytesAs("env.hdr", [] { Bytes b = goodHdr(); b[1] = '!'; return b; }), "not a Radiance");
+    error("wrong magic", "Exr", bytesAs("env.exr", [] { Bytes b = goodExr(); b[0] = 0x77; return b; }), "not an OpenEXR");
+    error("wrong magic", "Png", [](const fs::path& dir) {
+        Bytes png = smallPng();
+        png[1] = 'Q';
+        return textured("", png).writeGlb(dir);
+    }, "image 0: cannot decode image");
+    error("wrong magic", "NeitherEnvironment", bytesAs("env.png", [] { return smallPng(); }), "unknown environment format");
+
+    // -- Wrong chunk and section lengths.
+    error("chunk length", "GlbJsonTooLong", glbEdited([](Bytes& g) { setU32(g, 12, 0x7FFFFFF0); }), "chunk 0 claims 2147483632 bytes");
+    error("chunk length", "GlbBinTooLong", glbEdited([](Bytes& g) { setU32(g, 20 + u32(g, 12), 0xFFFFFFFF); }), "chunk 1 claims 4294967295 bytes");
+    error("chunk length", "GlbBinShort", glbEdited([](Bytes& g) { setU32(g, 20 + u32(g, 12), 8); }), "corrupt GLB: chunk");
+    error("chunk length", "GlbTotalShort", glbEdited([](Bytes& g) { setU32(g, 8, 16); }), "truncated GLB: chunk header");
+    error("chunk length", "GlbTotalLong", glbEdited([](Bytes& g) { setU32(g, 8, u32(g, 8) + 64); }), "truncated GLB: header says");
+    warning("chunk length", "GlbJsonUnpadded", glbEdited([](Bytes& g) {
+        // JSON chunk length not a multiple of 4 (the trailing padding space left out of it).
+        const uint32_t json = u32(g, 12);
+        ASSERT_EQ(g[20 + json - 1], ' ');
+        setU32(g, 12, json - 1);
+        g.erase(g.begin() + 20 + json - 1);
+        setU32(g, 8, uint32_t(g.size()));
+    }), "not a multiple of 4", true, true);
+    error("chunk length", "PngIhdrLength", [](const fs::path& dir) {
+        Bytes png = smallPng();
+        png[11] = 200;  // IHDR length 13 → 200
+        return textured("", png).writeGlb(dir);
+    }, "image 0: cannot decode image");
+    error("chunk length", "HdrRleRunPastRow", bytesAs("env.hdr", [] {
+        Bytes b = goodHdr();
+        b[afterLine(b, "-Y") + 4] = 128 + 127;  // first run of row 0 longer than the 64 texels left
+        return b;
+    }), "RLE run of 127 at x = 0 overflows scanline 0 (width 64)");
+    error("chunk length", "HdrRleWidthMismatch", bytesAs("env.hdr", [] {
+        Bytes b = goodHdr();
+        b[afterLine(b, "-Y") + 3] = 65;  // the scanline marker says 65 texels, the header 64
+        return b;
+    }), "scanline 0: RLE length 65 does not match the width 64");
+    error("chunk length", "ExrChannelListSize", bytesAs("env.exr", [] {
+        Bytes b = goodExr();
+        setU32(b, exrAttribute(b, "channels") - 4, 100000);
+        return b;
+    }), "invalid EXR header");
+    error("chunk length", "ExrOffsetTablePastEnd", bytesAs("env.exr", [] {
+        Bytes b = goodExr();
+        const std::string text(b.begin(), b.end());
+        // The offset table follows the header's terminating NUL; point its first entry past the end.
+        size_t headerEnd = 8;
+        while (b[headerEnd] != 0) {  // attributes: name\0 type\0 size value
+            headerEnd = text.find('\0', headerEnd) + 1;
+            headerEnd = text.find('\0', headerEnd) + 1;
+            headerEnd += 4 + u32(b, headerEnd);
+        }
+        setU32(b, headerEnd + 1, 0x7FFFFFF0);
+        return b;
+    }), "cannot decode EXR pixels: Invalid offset value");
+
+    // -- JSON type errors.
+    error("JSON type", "VersionNumber", gltfEdited([](Json& j) { j["asset"]["version"] = 2; }), "version");
+    error("JSON type", "CountString", gltfEdited([](Json& j) { j["accessors"][0]["count"] = "3"; }), "count");
+    error("JSON type", "ComponentTypeString", gltfEdited([](Json& j) { j["accessors"][0]["componentType"] = "FLOAT"; }), "componentType");
+    error("JSON type", "AccessorsNotArray", gltfEdited([](Json& j) { j["accessors"] = {{"a", 1}}; }), "accessors");
+    error("JSON type", "AttributesNotObject", gltfEdited([](Json& j) { j["meshes"][0]["primitives"][0]["attributes"] = 5; }), "attributes");
+    error("JSON type", "ChildrenStrings", gltfEdited([](Json& j) {
+        j["nodes"].push_back({{"children", {"0"}}});
+    }), "children");
+    error("JSON type", "TranslationTwoNumbers", gltfEdited([](Json& j) { j["nodes"][0]["translation"] = {1, 2}; }), "translation", true);
+    error("JSON type", "ScaleStrings", gltfEdited([](Json& j) { j["nodes"][0]["scale"] = {"1", "1", "1"}; }), "scale", true);
+    error("JSON type", "RotationFiveNumbers", gltfEdited([](Json& j) { j["nodes"][0]["rotation"] = {0, 0, 0, 1, 0}; }), "rotation", true);
+    error("JSON type", "BaseColorFactorThree", gltfEdited([](Json& j) {
+        j["materials"] = Json::array({{{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1}}}}}});
+        j["meshes"][0]["primitives"][0]["material"] = 0;
+    }), "baseColorFactor", true);
+    error("JSON type", "SceneString", gltfEdited([](Json& j) { j["scene"] = "0"; }), "scene");
+    error("JSON type", "RootArray", bytesAs("m.gltf", [] { return toBytes("[1, 2, 3]"); }), "the document: expected a JSON object", true);
+
+    // -- Out-of-range indices and byte ranges.
+    error("out of range", "AccessorIndex", gltfEdited([](Json& j) { j["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 99; }), "accessor 99 does not exist");
+    error("out of range", "AccessorNegative", gltfEdited([](Json& j) { j["meshes"][0]["primitives"][0]["indices"] = -4; }), "-4");
+    error("out of range", "BufferViewIndex", gltfEdited([](Json& j) { j["accessors"][0]["bufferView"] = 17; }), "bufferView 17 does not exist");
+    error("out of range", "BufferIndex", gltfEdited([](Json& j) { j["bufferViews"][0]["buffer"] = 5; }), "buffer 5, which does not exist");
+    error("out of range", "AccessorPastView", gltfEdited([](Json& j) { j["accessors"][0]["byteOffset"] = 4; }), "run past the end of bufferView 0");
+    error("out of range", "AccessorCountHuge", gltfEdited([](Json& j) { j["accessors"][0]["count"] = 1000000000000000ull; }), "run past the end of bufferView");
+    error("out of range", "ViewPastBuffer", gltfEdited([](Json& j) { j["bufferViews"][0]["byteLength"] = 10000; }), "lies outside buffer 0");
+    error("out of range", "ViewOffsetOverflow", gltfEdited([](Json& j) { j["bufferViews"][0]["byteOffset"] = std::numeric_limits<uint64_t>::max() - 8; }), "lies outside buffer 0");
+    error("out of range", "VertexIndex", gltfOf([] {
+        GltfBuilder b;
+        const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
+        b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}}, b.addIndices({0, 1, 7}))}})});
+        return b;
+    }), "index 7 (element 2) >= vertex count 3");
+    error("out of range", "SparseIndex", gltfOf([] {
+        GltfBuilder b = triangle();
+        const int idx = b.addView(std::vector<uint16_t>{5, 0});
+        const int val = b.addView(std::vector<float>{1, 2, 3});
+        b.doc["accessors"][0]["sparse"] = {{"count", 1}, {"indices", {{"bufferView", idx}, {"componentType", kUnsignedShort}}}, {"values", {{"bufferView", val}}}};
+        return b;
+    }), "sparse: index 5 >= count 3");
+    error("out of range", "MaterialIndex", gltfEdited([](Json& j) { j["meshes"][0]["primitives"][0]["material"] = 3; }), "material 3 does not exist");
+    error("out of range", "TextureIndex", gltfEdited([](Json& j) {
+        j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["index"] = 5;
+    }, [] { return textured("", smallPng()); }), "texture 5 does not exist");
+    error("out of range", "ImageIndex", gltfEdited([](Json& j) { j["textures"][0]["source"] = 3; }, [] { return textured("", smallPng()); }), "names image 3, which does not exist");
+    error("out of range", "SamplerIndex", gltfEdited([](Json& j) { j["textures"][0]["sampler"] = 7; }, [] { return textured("", smallPng()); }), "sampler 7");
+    error("out of range", "ImageViewPastBuffer", gltfEdited([](Json& j) {
+        j["bufferViews"][j["images"][0]["bufferView"].get<int>()]["byteLength"] = 1 << 20;
+    }, [] { return textured("", smallPng()); }), "lies outside buffer 0");
+    error("out of range", "ChildIndex", gltfEdited([](Json& j) { j["nodes"][0]["children"] = {9}; }), "node 9 does not exist");
+    error("out of range", "SceneIndex", gltfEdited([](Json& j) { j["scene"] = 3; }), "scene 3 does not exist");
+    error("out of range", "MeshIndex", gltfEdited([](Json& j) { j["nodes"][0]["mesh"] = 4; }), "mesh 4 does not exist");
+    error("out of range", "CameraIndex", gltfEdited([](Json& j) { j["nodes"][0]["camera"] = 4; }), "camera 4 does not exist");
+    error("out of range", "LightIndex", gltfEdited([](Json& j) { j["nodes"][0]["extensions"] = {{"KHR_lights_punctual", {{"light", 2}}}}; }), "KHR_lights_punctual light index");
+
+    // -- Cyclic or shared node hierarchies.
+    error("node graph", "Cycle", gltfEdited([](Json& j) {
+        j["nodes"][0]["children"] = {1};
+        j["nodes"].push_back({{"children", {0}}});
+    }), "cycle in the node hierarchy");
+    error("node graph", "SelfCycle", gltfEdited([](Json& j) { j["nodes"][0]["children"] = {0}; }), "node 0: cycle in the node hierarchy");
+    error("node graph", "SharedChild", gltfEdited([](Json& j) {
+        j["nodes"].push_back({{"children", {0}}});
+        j["nodes"].push_back({{"children", {0}}});
+        j["scenes"][0]["nodes"] = {1, 2};
+    }), "node 0: reached twice");
+    error("node graph", "RootListedTwice", gltfEdited([](Json& j) { j["scenes"][0]["nodes"] = {0, 0}; }), "node 0: reached twice");
+    error("node graph", "RootAlsoChild", gltfEdited([](Json& j) {
+        j["nodes"].push_back({{"children", {0}}});
+        j["scenes"][0]["nodes"] = {0, 1};
+    }), "node 0: reached twice");
+
+    // -- Absurd image dimensions.
+    error("absurd size", "PngHuge", [](const fs::path& dir) {
+        writeFile(dir / "huge.png", makePng(100000, 100000, 8, 6, {}, true));
+        return textured("huge.png").writeGltf(dir);
+    }, "image 0: image size 100000x100000 exceeds the limit of 16384 pixels per side");
+    error("absurd size", "PngZero", [](const fs::path& dir) {
+        return textured("", makePng(0, 0, 8, 6, {}, true)).writeGlb(dir);
+    }, "image 0: cannot decode image");
+    error("absurd size", "HdrHuge", bytesAs("env.hdr", [] { return toBytes("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 100000 +X 200000\n"); }),
+          "image size 200000x100000 exceeds the limit 16384x8192");
+    error("absurd size", "HdrZero", bytesAs("env.hdr", [] { return toBytes("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 0 +X 64\n"); }),
+          "zero image size 64x0");
+    error("absurd size", "ExrHuge", bytesAs("env.exr", [] {
+        Bytes b = goodExr();
+        for (const char* window : {"dataWindow", "displayWindow"}) setU32(b, exrAttribute(b, window) + 8, 999999);  // xMax
+        return b;
+    }), "exceeds the limit");
+    error("absurd size", "ExrInvertedWindow", bytesAs("env.exr", [] {
+        Bytes b = goodExr();
+        setU32(b, exrAttribute(b, "dataWindow"), 100);  // xMin > xMax
+        return b;
+    }), "empty or inverted EXR data window (100,0)-(63,31)");
+
+    // -- Decompression bombs: small files that would decode to far more memory.
+    error("decompression bomb", "Png16kSquare", [](const fs::path& dir) {
+        // ≈ 260 KiB of PNG that decodes to 16384 × 16384 RGBA8 = 1 GiB.
+        writeFile(dir / "bomb.png", bombPng(16384, 16384));
+        return textured("bomb.png").writeGltf(dir);
+    }, "decodes to 1.0 GiB", true);
+    error("decompression bomb", "PngManyImagesOverBudget", [](const fs::path& dir) {
+        // Nine 8192² images of 64 KiB each: 9 × 256 MiB decoded, over the scene's 2 GiB.
+        writeFile(dir / "bomb.png", bombPng(8192, 8192));
+        GltfBuilder b = textured("bomb.png");
+        for (int i = 1; i < 9; ++i) {
+            b.doc["images"].push_back({{"uri", "bomb.png"}});
+            b.doc["textures"].push_back({{"source", i}});
+            b.doc["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", i}}}}}});
+        }
+        return b.writeGltf(dir);
+    }, "decoded images would take", true);
+    error("decompression bomb", "ExrZipHuge", bytesAs("env.exr", [] {
+        // A 64 × 32 ZIP file that declares 65536 × 32768 texels (24 GiB of float RGB).
+        Bytes b = goodExr();
+        for (const char* window : {"dataWindow", "displayWindow"}) {
+            setU32(b, exrAttribute(b, window) + 8, 65535);
+            setU32(b, exrAttribute(b, window) + 12, 32767);
+        }
+        return b;
+    }), "exceeds the limit");
+
+    // -- URIs escaping the model's folder.
+    auto escaping = [&](std::string name, std::string uri, std::string fragment) {
+        error("URI escapes", std::move(name), [uri](const fs::path& dir) {
+            const GltfBuilder b = triangle();
+            writeFile(dir / "outside.bin", b.bin);  // exists: only the folder rule can refuse it
+            writeFile(dir / "in" / "m.gltf", b.withBuffer(uri).dump());
+            return dir / "in" / "m.gltf";
+        }, std::move(fragment));
+    };
+    escaping("DotDot", "../outside.bin", "URI '../outside.bin' escapes the model's folder");
+    escaping("PercentDotDot", "%2e%2e/outside.bin", "escapes the model's folder");
+    escaping("NestedDotDot", "sub/../../outside.bin", "escapes the model's folder");
+    escaping("FileScheme", "file:///etc/passwd", "uses an unsupported URI scheme");
+    escaping("HttpScheme", "http://example.com/outside.bin", "uses an unsupported URI scheme");
+    escaping("PercentNul", "outside.bin%00.png", "contains a NUL character");
+    error("URI escapes", "Absolute", [](const fs::path& dir) {
+        const GltfBuilder b = triangle();
+        writeFile(dir / "abs.bin", b.bin);
+        writeFile(dir / "m.gltf", b.withBuffer(fs::absolute(dir / "abs.bin").string()).dump());
+        return dir / "m.gltf";
+    }, "is an absolute path");
+    error("URI escapes", "ImageDotDot", [](const fs::path& dir) {
+        writeFile(dir / "x.png", smallPng());
+        return textured("sub/../../x.png").writeGltf(dir / "in");
+    }, "escapes the model's folder");
+
+    // -- NaN and Inf.
+    error("NaN/Inf", "PositionNan", gltfOf([] { return triangleWith({0, 0, 0, 1, kNan, 0, 0, 1, 0}, {0, 0, 1, 0, 0, 1, 0, 0, 1}); }),
+          "POSITION: vertex 1 is not finite");
+    error("NaN/Inf", "PositionInf", gltfOf([] { return triangleWith({0, 0, 0, 1, 0, 0, kInf, 1, 0}, {0, 0, 1, 0, 0, 1, 0, 0, 1}); }),
+          "POSITION: vertex 2 is not finite");
+    warning("NaN/Inf", "NormalNan", gltfOf([] { return triangleWith({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, kNan, 0, 1, 0, 0, 1}); }),
+            "NORMAL: 1 non-finite value replaced by the default", true);
+    warning("NaN/Inf", "NormalInfAndZero", gltfOf([] { return triangleWith({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, kInf, 0, 0, 0, 0, 0, 1}); }),
+            "NORMAL: 1 non-finite value replaced by the default", true);
+    warning("NaN/Inf", "TexcoordNan", gltfOf([] {
+        GltfBuilder b;
+        const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
+        const int uv = b.addFloats({0, 0, kNan, 0, 0, 1}, "VEC2", 2);
+        b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}, {"TEXCOORD_0", uv}}, b.addIndices({0, 1, 2}))}})});
+        return b;
+    }), "TEXCOORD_0: 1 non-finite value replaced by the default", true);
+    // JSON has no NaN or Inf: a literal too large for a double is a parse error, and one too large
+    // for a float (the precision Candela renders in) fails where it is converted.
+    auto withNode = [](std::string node) {
+        return [node](const fs::path& dir) {
+            const fs::path path = triangle().writeGltf(dir);
+            std::string json = triangle().withBuffer("model.bin").dump();
+            json.replace(json.find("{\"mesh\":0}"), 10, node);
+            writeFile(path, json);
+            return path;
+        };
+    };
+    error("NaN/Inf", "TranslationBeyondDouble", withNode("{\"mesh\":0,\"translation\":[1e999,0,0]}"), "number overflow parsing '1e999'");
+    error("NaN/Inf", "TranslationBeyondFloat", withNode("{\"mesh\":0,\"translation\":[1e300,0,0]}"),
+          "node 0: world transform is beyond single precision", true);
+    error("NaN/Inf", "MatrixBeyondFloat", withNode("{\"mesh\":0,\"matrix\":[1,0,0,0,0,1,0,0,0,0,1,0,0,0,-1e300,1]}"),
+          "node 0: world transform is beyond single precision", true);
+    error("NaN/Inf", "ScaleProductBeyondFloat", [](const fs::path& dir) {
+        // Each scale fits a float; the child's world scale 1e40 does not.
+        const fs::path path = triangle().writeGltf(dir);
+        Json j = triangle().withBuffer("model.bin");
+        j["nodes"][0]["scale"] = {1e20, 1e20, 1e20};
+        j["nodes"].push_back({{"children", {0}}, {"scale", {1e20, 1e20, 1e20}}});
+        j["scenes"][0]["nodes"] = {1};
+        writeFile(path, j.dump());
+        return path;
+    }, "node 0: world transform is beyond single precision", true);
+    error("NaN/Inf", "LightIntensityBeyondFloat", [](const fs::path& dir) {
+        const fs::path path = triangle().writeGltf(dir);
+        Json j = triangle().withBuffer("model.bin");
+        j["extensionsUsed"] = {"KHR_lights_punctual"};
+        j["extensions"]["KHR_lights_punctual"]["lights"] = Json::array({{{"type", "point"}, {"intensity", 1e300}}});
+        j["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+        j["scenes"][0]["nodes"] = {0, 1};
+        writeFile(path, j.dump());
+        return path;
+    }, "light 0 intensity is beyond single precision", true);
+    warning("NaN/Inf", "CameraBeyondFloat", [](const fs::path& dir) {
+        const fs::path path = triangle().writeGltf(dir);
+        Json j = triangle().withBuffer("model.bin");
+        j["cameras"] = Json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}, {"zfar", 1e300}}}}});
+        j["nodes"].push_back({{"camera", 0}, {"translation", {0, 0, 3}}});
+        j["scenes"][0]["nodes"] = {0, 1};
+        writeFile(path, j.dump());
+        return path;
+    }, "camera 0: parameters beyond single precision, camera skipped", true, true);
+    warning("NaN/Inf", "ExrTexelsNanInf", bytesAs("env.exr", [] { return goodExr(kNan); }), "replaced", true);
+    warning("NaN/Inf", "ExrTexelInf", bytesAs("env.exr", [] { return goodExr(kInf); }), "replaced", true);
+    warning("NaN/Inf", "ExrTexelNegative", bytesAs("env.exr", [] { return goodExr(-4.0f); }), "replaced", true);
+
+    // -- Degenerate geometry.
+    warning("degenerate", "ZeroAreaTriangle", gltfOf([] {
+        GltfBuilder b;  // one real triangle and one with all three corners on a line
+        const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0, 2, 0, 0, 3, 0, 0}, "VEC3", 3);
+        b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}}, b.addIndices({0, 1, 2, 1, 3, 4}))}})});
+        return b;
+    }), "zero-area", true, true);
+    warning("degenerate", "AllTrianglesZeroArea", gltfOf([] {
+        GltfBuilder b;
+        const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 2, 0, 0}, "VEC3", 3);
+        b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}}, b.addIndices({0, 1, 2}))}})});
+        return b;
+    }), "zero-area", false, true);
+    warning("degenerate", "ZeroScale", gltfEdited([](Json& j) { j["nodes"][0]["scale"] = {0, 0, 0}; }), "zero scale", false, true);
+    warning("degenerate", "ZeroScaleOneAxis", gltfEdited([](Json& j) { j["nodes"][0]["scale"] = {1, 0, 1}; }), "zero scale", false, true);
+    warning("degenerate", "ZeroScaleParent", gltfEdited([](Json& j) {
+        j["nodes"].push_back({{"children", {0}}, {"scale", {0, 0, 0}}});
+        j["scenes"][0]["nodes"] = {1};
+    }), "zero scale", false, true);
+    return rows;
+}
+
+// ---- the test --------------------------------------------------------------------------------------
+
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    for (size_t at = 0; at < text.size();) {
+        const size_t end = text.find('\n', at);
+        out.push_back(text.substr(at, end == std::string::npos ? std::string::npos : end - at));
+        at = end == std::string::npos ? text.size() : end + 1;
+    }
+    return out;
+}
+
+class Catalogue : public testing::TestWithParam<Row> {};
+
+TEST_P(Catalogue, StatedOutcomeAndExitCode) {
+    const Row& row = GetParam();
+    candela::test::TempDir dir("candela_catalogue");
+    const fs::path file = row.make(dir.path());
+    ASSERT_FALSE(HasFatalFailure());
+    const std::string ext = file.extension().string();
+    const bool environment = ext == ".hdr" || ext == ".exr" || ext == ".png";
+    const fs::path out = dir / "out.png";
+    const std::string args =
+        "render --width 48 --height 32 --out '" + out.string() + "' " +
+        (environment ? "--ibl-cube-size 16 --ibl-sh-size 16 --env '" + file.string() + "'"
+                     : "--env none --camera-orbit 0,90,0 --scene '" + file.string() + "'");
+    const candela::test::Result r = candela::test::run(args);
+    RecordProperty("stderr", r.stderrText);
+    ASSERT_NE(r.exitCode, -1) << "crashed: candela " << args;
+    const std::vector<std::string> stderrLines = lines(r.stderrText);
+
+    if (row.outcome == Outcome::Error) {
+        EXPECT_EQ(r.exitCode, 2) << r.stderrText;
+        ASSERT_EQ(stderrLines.size(), 1u) << "expected one line:\n" << r.stderrText;
+        EXPECT_EQ(stderrLines[0].rfind("candela: error: " + file.string() + ": ", 0), 0u) << stderrLines[0];
+        EXPECT_NE(stderrLines[0].find(row.fragment), std::string::npos) << stderrLines[0] << "\nexpected: " << row.fragment;
+        EXPECT_FALSE(fs::exists(out)) << "an image was written";
+        return;
+    }
+    EXPECT_EQ(r.exitCode, 0) << r.stderrText;
+    bool named = false;
+    for (const std::string& line : stderrLines) {
+        EXPECT_EQ(line.rfind("candela: warning: ", 0), 0u) << line;
+        named = named || (line.find(file.string()) != std::string::npos && line.find(row.fragment) != std::string::npos);
+    }
+    EXPECT_TRUE(named) << "no warning naming the file and '" << row.fragment << "':\n" << r.stderrText;
+    int width = 0, height = 0, channels = 0;
+    uint8_t* pixels = stbi_load(out.c_str(), &width, &height, &channels, 4);
+    ASSERT_NE(pixels, nullptr) << "no image written";
+    EXPECT_EQ(width, 48);
+    EXPECT_EQ(height, 32);
+    int unlikeBackground = 0;
+    for (int i = 0; i < width * height; ++i)
+        if (std::memcmp(pixels + 4 * i, pixels, 4) != 0) ++unlikeBackground;
+    stbi_image_free(pixels);
+    if (row.visible) EXPECT_GT(unlikeBackground, 0) << "the scene does not show";
+    else EXPECT_EQ(unlikeBackground, 0) << "expected nothing drawn";
+}
+
+INSTANTIATE_TEST_SUITE_P(Files, Catalogue, testing::ValuesIn(catalogue()), [](const testing::TestParamInfo<Row>& param) {
+    std::string kind;
+    for (char c : param.param.kind)
+        if (std::isalnum(static_cast<unsigned char>(c))) kind += c;
+    return kind + "_" + param.param.name;
+});
+
+// The figures docs/robustness.md quotes: rows per outcome and how many needed a fix.
+TEST(CatalogueSummary, CountsRows) {
+    const std::vector<Row> rows = catalogue();
+    const auto errors = std::count_if(rows.begin(), rows.end(), [](const Row& r) { return r.outcome == Outcome::Error; });
+    const auto fixed = std::count_if(rows.begin(), rows.end(), [](const Row& r) { return r.fixedIn6; });
+    std::printf("bad-input catalogue: %zu rows (%td errors, %td warnings), %td needed a fix\n", rows.size(), errors,
+                std::ptrdiff_t(rows.size()) - errors, fixed);
+    EXPECT_GE(rows.size(), 100u);
+}
+
+}  // namespace
+}  // namespace candela::scene::test

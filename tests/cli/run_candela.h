@@ -1,0 +1,39 @@
+#pragma once
+// Runs the real `candela` executable (CANDELA_EXECUTABLE) for the CLI tests.
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace candela::test {
+
+struct Result {
+    int exitCode = -1;
+    std::string stderrText;
+    std::string stdoutText;
+};
+
+// Runs candela with `args` (shell syntax); captures stderr and stdout.
+inline Result run(const std::string& args) {
+    const auto stdoutFile =
+        std::filesystem::temp_directory_path() / ("candela_cli_stdout_" + std::to_string(::getpid()) + ".txt");
+    const std::string command = std::string(CANDELA_EXECUTABLE) + " " + args + " 2>&1 >" + stdoutFile.string();
+    FILE* pipe = popen(command.c_str(), "r");
+    Result result;
+    std::array<char, 4096> buffer;
+    while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) result.stderrText.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream out(stdoutFile);
+    result.stdoutText.assign(std::istreambuf_iterator<char>(out), std::istreambuf_iterator<char>());
+    std::filesystem::remove(stdoutFile);
+    return result;
+}
+
+}  // namespace candela::test
