@@ -61,7 +61,8 @@ uint32_t le32(const uint8_t* p) { return uint32_t(p[0]) | uint32_t(p[1]) << 8 | 
 // give) without checking that the chunk holds it: a heap over-read found by fuzzing
 // (tests/fuzz/regressions/exr/). So the chunks of a PIZ file are checked here before tinyexr
 // decodes them: every offset-table entry must name a chunk inside the file, and a compressed
-// chunk must hold its bitmap range, bitmap and Huffman length. Scanline files only; the offset
+// chunk must hold its bitmap range, bitmap and a Huffman block with its header and a bit count
+// that is not negative. Scanline files only; the offset
 // table follows the header (8 bytes of magic and version, then header_len bytes).
 void checkPizChunks(std::span<const uint8_t> bytes, const EXRHeader& header, int64_t width, int64_t height,
                     const std::string& source) {
@@ -88,6 +89,15 @@ void checkPizChunks(std::span<const uint8_t> bytes, const EXRHeader& header, int
         const uint32_t maxNonZero = uint32_t(data[2]) | uint32_t(data[3]) << 8;
         const uint64_t bitmap = minNonZero <= maxNonZero ? maxNonZero - minNonZero + 1 : 0;
         if (4 + bitmap + 4 > size) fail(source, "corrupt PIZ data in EXR " + chunk + " (bitmap past the chunk's end)");
+        // Then the Huffman block: its length, and a 20-byte header whose fourth word is the bit
+        // count. tinyexr reads that header without checking the length and computes with a
+        // negative bit count in signed overflow (a second fuzz finding).
+        const uint8_t* huffman = data + 4 + bitmap;
+        const int32_t length = int32_t(le32(huffman));
+        if (length < 20 || uint64_t(length) > size - (4 + bitmap + 4))
+            fail(source, "corrupt PIZ data in EXR " + chunk + " (Huffman block length " + std::to_string(length) + ")");
+        if (int32_t(le32(huffman + 4 + 12)) < 0)
+            fail(source, "corrupt PIZ data in EXR " + chunk + " (negative Huffman bit count)");
     }
 }
 

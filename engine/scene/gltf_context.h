@@ -18,6 +18,9 @@ struct LoadContext {
     void warn(const std::string& message) const;
 };
 
+// True when `value` is finite and a float can hold it (|value| <= FLT_MAX).
+bool fitsFloat(double value);
+
 // `value` as a float. Fails via ctx ("WHAT is beyond single precision") when it is not finite or
 // too large for a float (converting it would be undefined behaviour).
 float toFloat(const LoadContext& ctx, double value, const std::string& what);

@@ -41,8 +41,10 @@ void LoadContext::warn(const std::string& text) const {
     else if (warnings->size() == kMaxWarnings) warnings->push_back("further warnings suppressed");
 }
 
+bool fitsFloat(double value) { return std::abs(value) <= double(std::numeric_limits<float>::max()); }
+
 float toFloat(const LoadContext& ctx, double value, const std::string& what) {
-    if (!(std::abs(value) <= double(std::numeric_limits<float>::max()))) ctx.fail(what + " is beyond single precision");
+    if (!fitsFloat(value)) ctx.fail(what + " is beyond single precision");
     return float(value);
 }
 

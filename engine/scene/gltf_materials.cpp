@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <set>
 
@@ -26,7 +25,7 @@ std::optional<double> number(const tinygltf::Value& object, const char* key) {
     if (!object.Has(key)) return std::nullopt;
     const tinygltf::Value& v = object.Get(key);
     // Values a float cannot hold are treated as missing, like non-finite ones.
-    if (!v.IsNumber() || !(std::abs(v.GetNumberAsDouble()) <= std::numeric_limits<float>::max())) return std::nullopt;
+    if (!v.IsNumber() || !fitsFloat(v.GetNumberAsDouble())) return std::nullopt;
     return v.GetNumberAsDouble();
 }
 
@@ -35,8 +34,7 @@ std::optional<glm::vec2> vec2(const tinygltf::Value& object, const char* key) {
     const tinygltf::Value& v = object.Get(key);
     if (v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber()) return std::nullopt;
     const glm::dvec2 d(v.Get(0).GetNumberAsDouble(), v.Get(1).GetNumberAsDouble());
-    constexpr double kMax = std::numeric_limits<float>::max();
-    if (!(std::abs(d.x) <= kMax) || !(std::abs(d.y) <= kMax)) return std::nullopt;
+    if (!fitsFloat(d.x) || !fitsFloat(d.y)) return std::nullopt;
     return glm::vec2(d);
 }
 

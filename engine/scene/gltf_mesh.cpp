@@ -69,13 +69,12 @@ Attributes readAttributes(const LoadContext& ctx, const tinygltf::Model& model, 
         if (!normals.empty()) {
             const glm::vec3 n(orDefault(3, normals[i], glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)));
             // Zero-length normals stay zero (the shader copes); others are made unit length.
-            v.normal = glm::dot(n, n) > 0.0f ? glm::normalize(n) : n;
+            v.normal = normalizeOrZero(n);
         }
         if (!tangents.empty() && !normals.empty()) {
             const glm::vec4 t = orDefault(4, tangents[i], glm::vec4(0.0f));
-            const glm::vec3 xyz(t);
-            v.tangent = glm::dot(xyz, xyz) > 0.0f ? glm::vec4(glm::normalize(xyz), t.w < 0.0f ? -1.0f : 1.0f)
-                                                  : fallbackTangent(v.normal);
+            const glm::vec3 xyz = normalizeOrZero(glm::vec3(t));
+            v.tangent = xyz != glm::vec3(0.0f) ? glm::vec4(xyz, t.w < 0.0f ? -1.0f : 1.0f) : fallbackTangent(v.normal);
         }
     }
     constexpr std::array<const char*, 5> kNames = {"TEXCOORD_0", "TEXCOORD_1", "COLOR_0", "NORMAL", "TANGENT"};

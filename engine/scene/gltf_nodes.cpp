@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
-#include <limits>
 #include <map>
 
 namespace candela::scene::gltf {
@@ -168,11 +167,7 @@ private:
         camera.name = !source.name.empty() ? source.name : !node.name.empty() ? node.name : "camera " + std::to_string(node.camera);
         if (!rigid(world, camera.world)) return mCtx.warn(cameraWhat + ": degenerate node transform, camera skipped");
         bool valid = false;
-        auto fits = [](std::initializer_list<double> values) {
-            for (double v : values)
-                if (!(std::abs(v) <= double(std::numeric_limits<float>::max()))) return false;
-            return true;
-        };
+        auto fits = [](std::initializer_list<double> values) { return std::all_of(values.begin(), values.end(), fitsFloat); };
         if (source.type == "perspective") {
             const auto& p = source.perspective;
             if (!fits({p.yfov, p.aspectRatio, p.znear, p.zfar}))

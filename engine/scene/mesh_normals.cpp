@@ -2,9 +2,17 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace candela::scene {
+
+glm::vec3 normalizeOrZero(const glm::vec3& v) {
+    const float largest = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+    if (largest == 0.0f) return v;
+    const glm::vec3 scaled = v / largest;  // largest component ±1: dot in [1, 3]
+    return scaled / std::sqrt(glm::dot(scaled, scaled));
+}
 
 glm::vec3 faceNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
     // Double precision: millimetre-sized triangles would underflow the float cross product.

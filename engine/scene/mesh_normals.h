@@ -15,6 +15,11 @@ namespace candela::scene {
 // triangle is dropped. Precondition: every index < vertices.size().
 void makeFlatNormals(std::vector<Vertex>& vertices, std::vector<uint32_t>& indices);
 
+// `v` scaled to unit length without overflow or underflow (its length may be anywhere in the float
+// range, where dot(v, v) would overflow to Inf or underflow to 0); zero stays zero.
+// Precondition: v is finite.
+glm::vec3 normalizeOrZero(const glm::vec3& v);
+
 // The unit normal of triangle (a, b, c) by the right-hand rule, or +Z if it has no area.
 glm::vec3 faceNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
 

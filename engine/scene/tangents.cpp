@@ -1,5 +1,7 @@
 #include "scene/tangents.h"
 
+#include "scene/mesh_normals.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -89,8 +91,8 @@ void growGroup(std::vector<Triangle>& tris, int groupIndex, Group& group, std::v
 }  // namespace
 
 glm::vec4 fallbackTangent(const glm::vec3& normal) {
-    if (!notZero(normal)) return glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
-    const glm::vec3 n = glm::normalize(normal);
+    const glm::vec3 n = normalizeOrZero(normal);
+    if (n == glm::vec3(0.0f)) return glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
     // The axis least aligned with n, made orthogonal to it.
     const glm::vec3 a = std::fabs(n.x) < 0.9f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
     return glm::vec4(glm::normalize(a - n * glm::dot(n, a)), 1.0f);

@@ -312,23 +312,23 @@ std::vector<Row> catalogue() {
     error("JSON type", "CountString", gltfEdited([](Json& j) { j["accessors"][0]["count"] = "3"; }), "count");
     error("JSON type", "ComponentTypeString", gltfEdited([](Json& j) { j["accessors"][0]["componentType"] = "FLOAT"; }), "componentType");
     error("JSON type", "AccessorsNotArray", gltfEdited([](Json& j) { j["accessors"] = {{"a", 1}}; }), "accessors");
-    error("JSON type", "AttributesNotObject", gltfEdited([](Json& j) { j["meshes"][0]["primitives"][0]["attributes"] = 5; }), "attributes");
+    error("JSON type", "AttributesNotObject", gltfEdited([](Json& j) { j["meshes"][0]["primitives"][0]["attributes"] = 5; }), "attributes", true);
     error("JSON type", "ChildrenStrings", gltfEdited([](Json& j) {
         j["nodes"].push_back({{"children", {"0"}}});
-    }), "children");
-    error("JSON type", "TranslationTwoNumbers", gltfEdited([](Json& j) { j["nodes"][0]["translation"] = {1, 2}; }), "translation", true);
+    }), "children", true);
+    error("JSON type", "TranslationTwoNumbers", gltfEdited([](Json& j) { j["nodes"][0]["translation"] = {1, 2}; }), "translation");
     error("JSON type", "ScaleStrings", gltfEdited([](Json& j) { j["nodes"][0]["scale"] = {"1", "1", "1"}; }), "scale", true);
-    error("JSON type", "RotationFiveNumbers", gltfEdited([](Json& j) { j["nodes"][0]["rotation"] = {0, 0, 0, 1, 0}; }), "rotation", true);
+    error("JSON type", "RotationFiveNumbers", gltfEdited([](Json& j) { j["nodes"][0]["rotation"] = {0, 0, 0, 1, 0}; }), "rotation");
     error("JSON type", "BaseColorFactorThree", gltfEdited([](Json& j) {
         j["materials"] = Json::array({{{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1}}}}}});
         j["meshes"][0]["primitives"][0]["material"] = 0;
     }), "baseColorFactor", true);
-    error("JSON type", "SceneString", gltfEdited([](Json& j) { j["scene"] = "0"; }), "scene");
-    error("JSON type", "RootArray", bytesAs("m.gltf", [] { return toBytes("[1, 2, 3]"); }), "the document: expected a JSON object", true);
+    error("JSON type", "SceneString", gltfEdited([](Json& j) { j["scene"] = "0"; }), "scene", true);
+    error("JSON type", "RootArray", bytesAs("m.gltf", [] { return toBytes("[1, 2, 3]"); }), "the document: expected a JSON object");
 
     // -- Out-of-range indices and byte ranges.
     error("out of range", "AccessorIndex", gltfEdited([](Json& j) { j["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 99; }), "accessor 99 does not exist");
-    error("out of range", "AccessorNegative", gltfEdited([](Json& j) { j["meshes"][0]["primitives"][0]["indices"] = -4; }), "-4");
+    error("out of range", "AccessorNegative", gltfEdited([](Json& j) { j["meshes"][0]["primitives"][0]["indices"] = -4; }), "-4", true);
     error("out of range", "BufferViewIndex", gltfEdited([](Json& j) { j["accessors"][0]["bufferView"] = 17; }), "bufferView 17 does not exist");
     error("out of range", "BufferIndex", gltfEdited([](Json& j) { j["bufferViews"][0]["buffer"] = 5; }), "buffer 5, which does not exist");
     error("out of range", "AccessorPastView", gltfEdited([](Json& j) { j["accessors"][0]["byteOffset"] = 4; }), "run past the end of bufferView 0");
