@@ -78,6 +78,9 @@ void checkPizChunks(std::span<const uint8_t> bytes, const EXRHeader& header, int
         const uint64_t entry = table + uint64_t(i) * 8;
         if (entry + 8 > bytes.size()) fail(source, "truncated EXR offset table");
         const uint64_t offset = uint64_t(le32(&bytes[entry])) | uint64_t(le32(&bytes[entry + 4])) << 32;
+        // An entry pointing into the header or the table itself (0 for an unfinished file) would
+        // make tinyexr rebuild the table by walking chunk headers, which this check cannot follow.
+        if (offset < table + uint64_t(chunks) * 8) fail(source, "EXR offset table entry " + std::to_string(i) + " points into the header");
         if (offset > bytes.size() || bytes.size() - offset < 8) fail(source, "EXR " + chunk + " lies outside the file");
         const uint64_t size = le32(&bytes[offset + 4]);
         if (size > bytes.size() - offset - 8) fail(source, "EXR " + chunk + " runs past the end of the file");
