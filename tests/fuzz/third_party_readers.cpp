@@ -1,9 +1,7 @@
-// The fuzz build compiles tinygltf, stb_image and tinyexr from Debian's headers instead of linking
-// Debian's shared libraries (the same sources and version), so that coverage instrumentation and
-// the sanitizers reach inside the third-party parsers too.
+// The fuzz build compiles tinygltf and stb_image from Debian's headers instead of linking Debian's
+// shared libraries (the same sources and version), so that coverage instrumentation and the
+// sanitizers reach inside the third-party parsers too. tinyexr is in tinyexr_reader.cpp.
 #define TINYGLTF_IMPLEMENTATION
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_IMPLEMENTATION
-#define TINYEXR_IMPLEMENTATION
 #include <tiny_gltf.h>  // includes stb_image.h and stb_image_write.h, with their implementations
-#include <tinyexr.h>
