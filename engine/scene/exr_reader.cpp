@@ -84,8 +84,12 @@ void checkPizChunks(std::span<const uint8_t> bytes, const EXRHeader& header, int
         if (offset > bytes.size() || bytes.size() - offset < 8) fail(source, "EXR " + chunk + " lies outside the file");
         const uint64_t size = le32(&bytes[offset + 4]);
         if (size > bytes.size() - offset - 8) fail(source, "EXR " + chunk + " runs past the end of the file");
-        const uint64_t lines = uint64_t(std::min(kLinesPerChunk, height - i * kLinesPerChunk));
-        if (size == lines * bytesPerLine) continue;  // stored uncompressed
+        // tinyexr takes the chunk's line count from the line number the chunk itself states, and
+        // decodes a chunk whose size equals those lines uncompressed as stored (no PIZ).
+        const int64_t line = int32_t(le32(&bytes[offset]));
+        const int64_t lines = std::min(line + kLinesPerChunk, int64_t(header.data_window.max_y) + 1) - line;
+        if (lines <= 0) continue;  // tinyexr refuses the chunk
+        if (size == uint64_t(lines) * bytesPerLine) continue;
         const uint8_t* data = &bytes[offset + 8];
         if (size < 8) fail(source, "corrupt PIZ data in EXR " + chunk);
         const uint32_t minNonZero = uint32_t(data[0]) | uint32_t(data[1]) << 8;
