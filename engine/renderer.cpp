@@ -129,7 +129,8 @@ void Renderer::applySceneParameters() {
     for (size_t i = 0; i < materials.size(); ++i)
         mParameters.apply("forward", "Materials[" + std::to_string(i) + "]", elements("Materials"), materials[i]);
     const auto same = [](const auto& a, const auto& b) {
-        return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
+        // (memcmp with an empty vector's null data() is undefined even for 0 bytes.)
+        return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
     };
     if (same(lights, mGpuScene->lights()) && same(materials, mGpuScene->materials())) return;
     // The buffers may be read by frames in flight.
