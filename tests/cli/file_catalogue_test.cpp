@@ -57,19 +57,6 @@ GltfBuilder triangleWith(const std::vector<float>& positions, const std::vector<
     return b;
 }
 
-// A textured triangle whose base colour comes from image 0 (a URI, or `png` in a bufferView).
-GltfBuilder textured(const std::string& uri, const Bytes& png = {}) {
-    GltfBuilder b;
-    const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
-    const int uv = b.addFloats({0, 0, 1, 0, 0, 1}, "VEC2", 2);
-    b.doc["materials"] = Json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
-    b.doc["textures"] = Json::array({{{"source", 0}}});
-    if (!uri.empty()) b.doc["images"] = Json::array({{{"uri", uri}}});
-    else b.doc["images"] = Json::array({{{"bufferView", b.addView(png.data(), png.size())}, {"mimeType", "image/png"}}});
-    b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}, {"TEXCOORD_0", uv}}, b.addIndices({0, 1, 2}), 0)}})});
-    return b;
-}
-
 using Make = std::function<fs::path(const fs::path&)>;
 
 // The triangle's .gltf (+ .bin) after `edit` changed its JSON.
@@ -100,10 +87,6 @@ Make gltfOf(std::function<GltfBuilder()> make, std::function<void(const fs::path
         if (extra) extra(dir);
         return make().writeGltf(dir);
     };
-}
-
-void setU32(Bytes& bytes, size_t at, uint32_t v) {
-    for (int i = 0; i < 4; ++i) bytes[at + size_t(i)] = uint8_t(v >> (8 * i));
 }
 
 uint32_t u32(const Bytes& bytes, size_t at) {
@@ -226,7 +209,7 @@ std::vector<Row> catalogue() {
         error("truncated", "Png" + std::to_string(keep), [keep](const fs::path& dir) {
             Bytes png = smallPng();
             png.resize(keep);
-            return textured("", png).writeGlb(dir);
+            return texturedTriangle("", png).writeGlb(dir);
         }, "image 0: cannot decode image");
     const size_t hdrHeader = afterLine(goodHdr(), "-Y");
     auto hdrCut = [](size_t keep) -> std::string {
@@ -255,7 +238,7 @@ std::vector<Row> catalogue() {
     error("wrong magic", "Png", [](const fs::path& dir) {
         Bytes png = smallPng();
         png[1] = 'Q';
-        return textured("", png).writeGlb(dir);
+        return texturedTriangle("", png).writeGlb(dir);
     }, "image 0: cannot decode image");
     error("wrong magic", "NeitherEnvironment", bytesAs("env.png", [] { return smallPng(); }), "unknown environment format");
 
@@ -276,7 +259,7 @@ std::vector<Row> catalogue() {
     error("chunk length", "PngIhdrLength", [](const fs::path& dir) {
         Bytes png = smallPng();
         png[11] = 200;  // IHDR length 13 → 200
-        return textured("", png).writeGlb(dir);
+        return texturedTriangle("", png).writeGlb(dir);
     }, "image 0: cannot decode image");
     error("chunk length", "HdrRleRunPastRow", bytesAs("env.hdr", [] {
         Bytes b = goodHdr();
@@ -351,12 +334,12 @@ std::vector<Row> catalogue() {
     error("out of range", "MaterialIndex", gltfEdited([](Json& j) { j["meshes"][0]["primitives"][0]["material"] = 3; }), "material 3 does not exist");
     error("out of range", "TextureIndex", gltfEdited([](Json& j) {
         j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["index"] = 5;
-    }, [] { return textured("", smallPng()); }), "texture 5 does not exist");
-    error("out of range", "ImageIndex", gltfEdited([](Json& j) { j["textures"][0]["source"] = 3; }, [] { return textured("", smallPng()); }), "names image 3, which does not exist");
-    error("out of range", "SamplerIndex", gltfEdited([](Json& j) { j["textures"][0]["sampler"] = 7; }, [] { return textured("", smallPng()); }), "sampler 7");
+    }, [] { return texturedTriangle("", smallPng()); }), "texture 5 does not exist");
+    error("out of range", "ImageIndex", gltfEdited([](Json& j) { j["textures"][0]["source"] = 3; }, [] { return texturedTriangle("", smallPng()); }), "names image 3, which does not exist");
+    error("out of range", "SamplerIndex", gltfEdited([](Json& j) { j["textures"][0]["sampler"] = 7; }, [] { return texturedTriangle("", smallPng()); }), "sampler 7");
     error("out of range", "ImageViewPastBuffer", gltfEdited([](Json& j) {
         j["bufferViews"][j["images"][0]["bufferView"].get<int>()]["byteLength"] = 1 << 20;
-    }, [] { return textured("", smallPng()); }), "lies outside buffer 0");
+    }, [] { return texturedTriangle("", smallPng()); }), "lies outside buffer 0");
     error("out of range", "ChildIndex", gltfEdited([](Json& j) { j["nodes"][0]["children"] = {9}; }), "node 9 does not exist");
     error("out of range", "SceneIndex", gltfEdited([](Json& j) { j["scene"] = 3; }), "scene 3 does not exist");
     error("out of range", "MeshIndex", gltfEdited([](Json& j) { j["nodes"][0]["mesh"] = 4; }), "mesh 4 does not exist");
@@ -383,10 +366,10 @@ std::vector<Row> catalogue() {
     // -- Absurd image dimensions.
     error("absurd size", "PngHuge", [](const fs::path& dir) {
         writeFile(dir / "huge.png", makePng(100000, 100000, 8, 6, {}, true));
-        return textured("huge.png").writeGltf(dir);
+        return texturedTriangle("huge.png").writeGltf(dir);
     }, "image 0: image size 100000x100000 exceeds the limit of 16384 pixels per side");
     error("absurd size", "PngZero", [](const fs::path& dir) {
-        return textured("", makePng(0, 0, 8, 6, {}, true)).writeGlb(dir);
+        return texturedTriangle("", makePng(0, 0, 8, 6, {}, true)).writeGlb(dir);
     }, "image 0: cannot decode image");
     error("absurd size", "HdrHuge", bytesAs("env.hdr", [] { return toBytes("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 100000 +X 200000\n"); }),
           "image size 200000x100000 exceeds the limit 16384x8192");
@@ -407,12 +390,12 @@ std::vector<Row> catalogue() {
     error("decompression bomb", "Png16kSquare", [](const fs::path& dir) {
         // ≈ 260 KiB of PNG that decodes to 16384 × 16384 RGBA8 = 1 GiB.
         writeFile(dir / "bomb.png", bombPng(16384, 16384));
-        return textured("bomb.png").writeGltf(dir);
+        return texturedTriangle("bomb.png").writeGltf(dir);
     }, "decodes to 1.0 GiB", true);
     error("decompression bomb", "PngManyImagesOverBudget", [](const fs::path& dir) {
         // Nine 8192² images of 64 KiB each: 9 × 256 MiB decoded, over the scene's 2 GiB.
         writeFile(dir / "bomb.png", bombPng(8192, 8192));
-        GltfBuilder b = textured("bomb.png");
+        GltfBuilder b = texturedTriangle("bomb.png");
         for (int i = 1; i < 9; ++i) {
             b.doc["images"].push_back({{"uri", "bomb.png"}});
             b.doc["textures"].push_back({{"source", i}});
@@ -453,7 +436,7 @@ std::vector<Row> catalogue() {
     }, "is an absolute path");
     error("URI escapes", "ImageDotDot", [](const fs::path& dir) {
         writeFile(dir / "x.png", smallPng());
-        return textured("sub/../../x.png").writeGltf(dir / "in");
+        return texturedTriangle("sub/../../x.png").writeGltf(dir / "in");
     }, "escapes the model's folder");
 
     // -- NaN and Inf.
@@ -488,35 +471,23 @@ std::vector<Row> catalogue() {
           "node 0: world transform is beyond single precision", true);
     error("NaN/Inf", "MatrixBeyondFloat", withNode("{\"mesh\":0,\"matrix\":[1,0,0,0,0,1,0,0,0,0,1,0,0,0,-1e300,1]}"),
           "node 0: world transform is beyond single precision", true);
-    error("NaN/Inf", "ScaleProductBeyondFloat", [](const fs::path& dir) {
+    error("NaN/Inf", "ScaleProductBeyondFloat", gltfEdited([](Json& j) {
         // Each scale fits a float; the child's world scale 1e40 does not.
-        const fs::path path = triangle().writeGltf(dir);
-        Json j = triangle().withBuffer("model.bin");
         j["nodes"][0]["scale"] = {1e20, 1e20, 1e20};
         j["nodes"].push_back({{"children", {0}}, {"scale", {1e20, 1e20, 1e20}}});
         j["scenes"][0]["nodes"] = {1};
-        writeFile(path, j.dump());
-        return path;
-    }, "node 0: world transform is beyond single precision", true);
-    error("NaN/Inf", "LightIntensityBeyondFloat", [](const fs::path& dir) {
-        const fs::path path = triangle().writeGltf(dir);
-        Json j = triangle().withBuffer("model.bin");
+    }), "node 0: world transform is beyond single precision", true);
+    error("NaN/Inf", "LightIntensityBeyondFloat", gltfEdited([](Json& j) {
         j["extensionsUsed"] = {"KHR_lights_punctual"};
         j["extensions"]["KHR_lights_punctual"]["lights"] = Json::array({{{"type", "point"}, {"intensity", 1e300}}});
         j["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
         j["scenes"][0]["nodes"] = {0, 1};
-        writeFile(path, j.dump());
-        return path;
-    }, "light 0 intensity is beyond single precision", true);
-    warning("NaN/Inf", "CameraBeyondFloat", [](const fs::path& dir) {
-        const fs::path path = triangle().writeGltf(dir);
-        Json j = triangle().withBuffer("model.bin");
+    }), "light 0 intensity is beyond single precision", true);
+    warning("NaN/Inf", "CameraBeyondFloat", gltfEdited([](Json& j) {
         j["cameras"] = Json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}, {"zfar", 1e300}}}}});
         j["nodes"].push_back({{"camera", 0}, {"translation", {0, 0, 3}}});
         j["scenes"][0]["nodes"] = {0, 1};
-        writeFile(path, j.dump());
-        return path;
-    }, "camera 0: parameters beyond single precision, camera skipped", true, true);
+    }), "camera 0: parameters beyond single precision, camera skipped", true, true);
     warning("NaN/Inf", "ExrTexelsNanInf", bytesAs("env.exr", [] { return goodExr(kNan); }), "replaced", true);
     warning("NaN/Inf", "ExrTexelInf", bytesAs("env.exr", [] { return goodExr(kInf); }), "replaced", true);
     warning("NaN/Inf", "ExrTexelNegative", bytesAs("env.exr", [] { return goodExr(-4.0f); }), "replaced", true);

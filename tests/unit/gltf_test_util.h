@@ -239,6 +239,25 @@ struct GltfBuilder {
     }
 };
 
+// Writes `v` little-endian over bytes[at, at + 4).
+inline void setU32(Bytes& bytes, size_t at, uint32_t v) {
+    for (int i = 0; i < 4; ++i) bytes[at + size_t(i)] = uint8_t(v >> (8 * i));
+}
+
+// A textured triangle whose base colour image is `uri` (a URI) or a bufferView holding `png`.
+inline GltfBuilder texturedTriangle(const std::string& uri, const Bytes& png = {}) {
+    GltfBuilder b;
+    const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
+    const int uv = b.addFloats({0, 0, 1, 0, 0, 1}, "VEC2", 2);
+    b.doc["materials"] = Json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+    b.doc["textures"] = Json::array({{{"source", 0}}});
+    if (!uri.empty()) b.doc["images"] = Json::array({{{"uri", uri}}});
+    else b.doc["images"] = Json::array({{{"bufferView", b.addView(png.data(), png.size())}, {"mimeType", "image/png"}}});
+    const int mesh = b.addMesh({{"POSITION", pos}, {"TEXCOORD_0", uv}}, b.addIndices({0, 1, 2}), 0);
+    b.setScene({b.addNode({{"mesh", mesh}})});
+    return b;
+}
+
 // Loads and returns the UserError's message, or "" if the load succeeded. Any other exception
 // comes back as "UNEXPECTED ...", which no expectation matches.
 inline std::string loadError(const fs::path& path, const LoadOptions& options = {}) {
