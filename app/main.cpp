@@ -188,6 +188,9 @@ int main(int argc, char** argv) {
     } catch (const OutOfDeviceMemory& e) {
         log::error(std::string("out of device memory: ") + e.what());
         return 4;
+    } catch (const InternalError& e) {
+        log::error(std::string("internal error (a bug in Candela, please report it): ") + e.what());
+        return 1;
     } catch (const std::exception& e) {
         log::error(e.what());
         return 1;

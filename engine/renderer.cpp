@@ -28,8 +28,7 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 Renderer::Renderer(vk::Context& context, uint32_t framesInFlight)
     : mContext(context), mFrames(context, framesInFlight), mPattern(context), mEncode(context, kLdrFormat),
-      mForward(context), mTonemap(context), mIbl(std::make_unique<ibl::IblMaps>(context)), mGraph(std::make_unique<RenderGraph>()) {
-    mForward.setIblMaps(*mIbl);
+      mForward(context), mTonemap(context), mIbl(std::make_unique<ibl::IblMaps>(context)) {
     for (uint32_t i = 0; i < mFrames.slotCount(); ++i) mTransients.push_back(std::make_unique<TransientPool>(context));
 }
 
@@ -95,7 +94,7 @@ void Renderer::useEnvironment(const scene::Environment* environment, const ibl::
     ibl::IblQuality effective = quality;
     for (;;) {
         try {
-            if (mIbl->setEnvironment(environment, effective, cacheDir, force)) mForward.setIblMaps(*mIbl);
+            mIbl->setEnvironment(environment, effective, cacheDir, force);
             break;
         } catch (const OutOfDeviceMemory& e) {
             if (effective.cubeSize <= 32) throw;
@@ -148,7 +147,6 @@ void Renderer::shadersReplaced(const std::vector<std::string>& names) {
 void Renderer::resetIblMaps() {
     mFrames.waitIdle();
     mIbl = std::make_unique<ibl::IblMaps>(mContext);
-    mForward.setIblMaps(*mIbl);
 }
 
 double Renderer::completedPassMs(std::string_view pass) const {
@@ -161,7 +159,32 @@ void Renderer::recomputeIbl() {
     if (mEnvironment) useEnvironment(mEnvironment, mIblQuality, {}, /*force=*/true);
 }
 
-void Renderer::applyToggles(RenderGraph& graph, const RenderSettings& settings) {
+Frame Renderer::beginFrame(const RenderSettings& settings, const PresentTarget* present) {
+    Frame frame;  // started now: a precompute's frame time includes the environment's upload
+    validateSettings(settings);
+    if (present && !settings.scene) throw UserError("rendering to a window needs a scene");
+    prepareScene(settings);
+    prepareEnvironment(settings);
+    std::optional<TextureId> target;
+    if (present) {
+        // The image's old contents are discarded; the semaphore wait (at colour-attachment output)
+        // orders the first write after the presentation engine has released it.
+        const ResourceState acquiredState{.stages = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT};
+        const ResourceState presentState{.stages = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                         .layout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR};
+        target = frame.graph->importTexture(
+            "swapchain", {.width = settings.width, .height = settings.height, .format = present->format},
+            acquiredState, presentState);
+        frame.imports.bind(*target, present->image, present->view);
+    }
+    if (settings.scene) buildSceneGraph(frame, settings, target);
+    else buildPatternGraph(frame, settings);
+    return frame;
+}
+
+std::chrono::steady_clock::time_point Renderer::submit(Frame frame, const RenderSettings& settings,
+                                                       const PresentTarget* present) {
+    RenderGraph& graph = *frame.graph;
     for (const std::string& name : settings.disabledPasses) {
         if (!graph.findPass(name)) {
             if (!settings.unknownPassIsError) continue;
@@ -171,30 +194,30 @@ void Renderer::applyToggles(RenderGraph& graph, const RenderSettings& settings) 
         }
         graph.setPassEnabled(name, false);
     }
-}
-
-std::chrono::steady_clock::time_point Renderer::submit(RenderGraph& graph, const ImportBindings& imports,
-                                                       bool emitBarriers, const PresentTarget* present) {
     graph.compile({.memoryRequirements = deviceMemoryRequirements(mContext, graph.declaration())});
     vk::FrameSlot& slot = mFrames.begin();
     TransientPool& transients = *mTransients[mFrames.currentSlot()];
     transients.realize(graph.declaration(), graph.compiled());
     ExecutionRecord record = executeGraph({.context = mContext,
                                            .graph = graph,
-                                           .imports = imports,
+                                           .imports = frame.imports,
                                            .transients = transients,
                                            .cmd = slot.cmd,
                                            .descriptors = *slot.descriptors,
                                            .timestamps = slot.timestamps.get(),
-                                           .emitBarriers = emitBarriers});
+                                           .emitBarriers = settings.emitBarriers});
     std::vector<std::string> names;
     for (uint32_t pass : graph.compiled().order) names.push_back(graph.declaration().passes[pass].name);
-    slot.completed = [this, record = std::move(record), order = graph.compiled().order,
-                      names = std::move(names)](vk::FrameSlot& done) {
+    slot.completed = [this, record = std::move(record), order = graph.compiled().order, names = std::move(names),
+                      precompute = std::make_pair(frame.precomputeBegin, frame.precomputeEnd)](vk::FrameSlot& done) {
         mCompletedTimings = record.timings(*done.timestamps);
         mCompletedTimes.clear();
         for (size_t i = 0; i < order.size(); ++i)
             mCompletedTimes.push_back({names[i], order[i] < mCompletedTimings.gpuMs.size() ? mCompletedTimings.gpuMs[order[i]] : -1.0});
+        if (precompute.first == precompute.second) return;
+        mLastPrecompute.gpuMs = 0.0;
+        for (uint32_t pass = precompute.first; pass < precompute.second; ++pass)
+            mLastPrecompute.gpuMs += std::max(mCompletedTimings.gpuMs[pass], 0.0);
     };
     const auto submitted = std::chrono::steady_clock::now();
     if (present)
@@ -203,146 +226,114 @@ std::chrono::steady_clock::time_point Renderer::submit(RenderGraph& graph, const
                          .stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT}},
                        {{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
                          .semaphore = present->rendered,
-                         .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT}});
+                         .stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT}});
     else
         mFrames.submit();
+    mLast = std::move(frame);
     return submitted;
 }
 
-void Renderer::finishIblFrame(const RenderGraph& graph) {
-    if (mIblInGraph) mIbl->frameCompleted(graph);
-    mIblInGraph = false;
+void Renderer::finishFrame() {
+    if (!mLast.ibl) return;
+    mIbl->frameCompleted(*mLast.graph);
+    if (mLast.precomputeBegin != mLast.precomputeEnd) mLastPrecompute.frameMs = msSince(mLast.started);
 }
 
-FrameTiming Renderer::execute(RenderGraph& graph, const ImportBindings& imports, bool emitBarriers) {
-    const auto submitted = submit(graph, imports, emitBarriers);
+FrameTiming Renderer::execute(Frame frame, const RenderSettings& settings) {
+    const auto submitted = submit(std::move(frame), settings);
     mFrames.waitCurrent();
     FrameTiming timing;
     timing.submitWaitMs = msSince(submitted);
-    finishIblFrame(graph);
+    finishFrame();
     timing.timings = mCompletedTimings;
     return timing;
 }
 
 FrameTiming Renderer::renderFrame(const RenderSettings& settings) {
-    validateSettings(settings);
-    prepareScene(settings);
-    prepareEnvironment(settings);
-    mGraph = std::make_unique<RenderGraph>();
-    RenderGraph& graph = *mGraph;
-    ImportBindings imports;
-    const TextureId output =
-        settings.scene ? buildSceneGraph(graph, settings, imports) : buildPatternGraph(graph, settings);
+    Frame frame = beginFrame(settings);
     // Without a readback the frame's result is kept alive as an exported output, as a swapchain
     // image would be.
-    graph.exportTexture(output);
-    applyToggles(graph, settings);
-    return execute(graph, imports, settings.emitBarriers);
+    frame.graph->exportTexture(frame.ldr);
+    return execute(std::move(frame), settings);
 }
 
 FrameTiming Renderer::renderCalibration(uint32_t width, uint32_t height) {
     validateSettings({.width = width, .height = height});
     if (!mCalibration) mCalibration = std::make_unique<passes::CalibrationPass>(mContext);
-    mGraph = std::make_unique<RenderGraph>();
-    mCalibration->add(*mGraph, width, height);
-    return execute(*mGraph, ImportBindings{}, true);
+    Frame frame;
+    mCalibration->add(*frame.graph, width, height);
+    return execute(std::move(frame), {});
 }
 
 FrameTiming Renderer::precomputeIbl(const scene::Environment& environment, const ibl::IblQuality& quality) {
     useEnvironment(&environment, quality, {}, /*force=*/true);
-    mGraph = std::make_unique<RenderGraph>();
-    ImportBindings imports;
-    mIbl->addToGraph(*mGraph, imports);
-    mIblInGraph = true;
-    return execute(*mGraph, imports, true);
+    Frame frame;
+    frame.ibl = true;
+    mIbl->addToGraph(*frame.graph, frame.imports);
+    frame.precomputeEnd = static_cast<uint32_t>(frame.graph->declaration().passes.size());
+    return execute(std::move(frame), {});
 }
 
 void Renderer::setReferenceEnvironment(const scene::Environment& environment) {
     mFrames.waitIdle();
     mIbl->setReferenceEnvironment(environment);
-    mForward.setIblMaps(*mIbl);
 }
 
 CapturedFrame Renderer::capture(const RenderSettings& settings) {
-    validateSettings(settings);
-    prepareScene(settings);
-    prepareEnvironment(settings);
+    Frame frame = beginFrame(settings);
     const VkDeviceSize texel = settings.floatOutput ? 8 : 4;  // RGBA16F or RGBA8
     const VkDeviceSize bytes = texel * settings.width * settings.height;
+    passes::addReadbackPass(*frame.graph, settings.floatOutput ? frame.hdr : frame.ldr, importReadback(frame, bytes));
+    const FrameTiming timing = execute(std::move(frame), settings);
 
-    mGraph = std::make_unique<RenderGraph>();
-    RenderGraph& graph = *mGraph;
-    ImportBindings imports;
-    const BufferId readback = importReadback(graph, imports, bytes);
-    const TextureId output =
-        settings.scene ? buildSceneGraph(graph, settings, imports) : buildPatternGraph(graph, settings);
-    passes::addReadbackPass(graph, settings.floatOutput ? mHdr : output, readback);
-    applyToggles(graph, settings);
-    const FrameTiming timing = execute(graph, imports, settings.emitBarriers);
-
-    CapturedFrame frame;
-    frame.width = settings.width;
-    frame.height = settings.height;
-    frame.submitWaitMs = timing.submitWaitMs;
-    frame.timings = timing.timings;
-    const PassInfo& readbackInfo = graph.compiled().passes[*graph.findPass("readback")];
+    CapturedFrame captured;
+    captured.width = settings.width;
+    captured.height = settings.height;
+    captured.submitWaitMs = timing.submitWaitMs;
+    captured.timings = timing.timings;
+    const PassInfo& readbackInfo = mLast.graph->compiled().passes[*mLast.graph->findPass("readback")];
     if (readbackInfo.cullReason != CullReason::None)
         throw UserError("nothing to capture: the readback pass was culled (" + readbackInfo.cullDetail + ")");
     const auto readStart = std::chrono::steady_clock::now();
     mReadback.invalidate();
     const size_t texels = static_cast<size_t>(settings.width) * settings.height;
     if (settings.floatOutput) {
-        frame.rgba32f.resize(texels * 4);
+        captured.rgba32f.resize(texels * 4);
         const auto* half = reinterpret_cast<const uint16_t*>(mReadback.mapped());
-        for (size_t i = 0; i < texels * 4; ++i) frame.rgba32f[i] = glm::unpackHalf1x16(half[i]);
+        for (size_t i = 0; i < texels * 4; ++i) captured.rgba32f[i] = glm::unpackHalf1x16(half[i]);
     } else {
-        frame.rgba8.resize(texels * 4);
-        std::memcpy(frame.rgba8.data(), mReadback.mapped(), frame.rgba8.size());
+        captured.rgba8.resize(texels * 4);
+        std::memcpy(captured.rgba8.data(), mReadback.mapped(), captured.rgba8.size());
     }
-    frame.readbackMs = msSince(readStart);
-    return frame;
+    captured.readbackMs = msSince(readStart);
+    return captured;
 }
 
-BufferId Renderer::importReadback(RenderGraph& graph, ImportBindings& imports, VkDeviceSize bytes) {
+BufferId Renderer::importReadback(Frame& frame, VkDeviceSize bytes) {
     if (!mReadback || mReadback.size() != bytes)
         mReadback = vk::Buffer(mContext, {.size = bytes,
                                           .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                           .memory = vk::MemoryUsage::Readback,
                                           .name = "readback"});
-    const BufferId readback = graph.importBuffer("readback", {.size = bytes}, ResourceState{}, passes::hostReadState());
-    imports.bind(readback, mReadback.handle());
+    const BufferId readback =
+        frame.graph->importBuffer("readback", {.size = bytes}, ResourceState{}, passes::hostReadState());
+    frame.imports.bind(readback, mReadback.handle());
     return readback;
 }
 
 void Renderer::renderToTarget(const RenderSettings& settings, const PresentTarget& target, const OverlayFn& overlay,
                               CapturedFrame* screenshot) {
-    validateSettings(settings);
-    if (!settings.scene) throw UserError("renderToTarget needs a scene");
-    prepareScene(settings);
-    prepareEnvironment(settings);
-    mGraph = std::make_unique<RenderGraph>();
-    RenderGraph& graph = *mGraph;
-    ImportBindings imports;
-    // The image's old contents are discarded; the semaphore wait (at colour-attachment output)
-    // orders the first write after the presentation engine has released it.
-    const ResourceState acquiredState{.stages = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT};
-    const ResourceState presentState{.stages = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                                     .layout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR};
-    const TextureId swapchain = graph.importTexture(
-        "swapchain", {.width = settings.width, .height = settings.height, .format = target.format}, acquiredState,
-        presentState);
-    imports.bind(swapchain, target.image, target.view);
-    TextureId output = buildSceneGraph(graph, settings, imports, swapchain);
-    if (overlay) output = overlay(graph, output);
+    Frame frame = beginFrame(settings, &target);
+    TextureId output = frame.ldr;
+    if (overlay) output = overlay(*frame.graph, output);
     const VkDeviceSize bytes = VkDeviceSize(4) * settings.width * settings.height;
-    if (screenshot) {
-        passes::addReadbackPass(graph, output, importReadback(graph, imports, bytes));
-    }
-    applyToggles(graph, settings);
-    submit(graph, imports, settings.emitBarriers, &target);
-    if (!screenshot && !mIblInGraph) return;
+    if (screenshot) passes::addReadbackPass(*frame.graph, output, importReadback(frame, bytes));
+    const bool ibl = frame.ibl;
+    submit(std::move(frame), settings, &target);
+    // The IBL maps learn that a precompute completed before the next frame is built.
+    if (!screenshot && !ibl) return;
     mFrames.waitCurrent();
-    finishIblFrame(graph);
+    finishFrame();
     if (!screenshot) return;
     screenshot->width = settings.width;
     screenshot->height = settings.height;
@@ -355,22 +346,27 @@ void Renderer::renderToTarget(const RenderSettings& settings, const PresentTarge
         for (size_t i = 0; i < bytes; i += 4) std::swap(screenshot->rgba8[i], screenshot->rgba8[i + 2]);
 }
 
-TextureId Renderer::buildPatternGraph(RenderGraph& graph, const RenderSettings& settings) {
-    mHdr = mPattern.add(graph, settings.width, settings.height, settings.patternExposure);
+void Renderer::buildPatternGraph(Frame& frame, const RenderSettings& settings) {
+    RenderGraph& graph = *frame.graph;
+    frame.hdr = mPattern.add(graph, settings.width, settings.height, settings.patternExposure);
     const TextureId ldr = graph.createTexture("ldr", {.width = settings.width, .height = settings.height, .format = kLdrFormat});
-    return mEncode.add(graph, mHdr, ldr);
+    frame.ldr = mEncode.add(graph, frame.hdr, ldr);
 }
 
-TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& settings, ImportBindings& imports,
-                                   std::optional<TextureId> target) {
+void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std::optional<TextureId> target) {
+    RenderGraph& graph = *frame.graph;
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
     const scene::ViewSetup view = resolveView(*settings.scene, settings.camera, aspect);
     std::optional<passes::ForwardPass::Ibl> ibl;
     if (mIbl->hasEnvironment()) {
         const float theta = glm::radians(settings.ibl.rotationDegrees);
         const float maxLod = float(mIbl->specularLevels() - 1);
+        frame.ibl = true;
+        frame.precomputeBegin = static_cast<uint32_t>(graph.declaration().passes.size());
+        const passes::IblHandles maps = mIbl->addToGraph(graph, frame.imports, settings.ibl.referenceSamples > 0);
+        frame.precomputeEnd = static_cast<uint32_t>(graph.declaration().passes.size());
         ibl = passes::ForwardPass::Ibl{
-            .maps = mIbl->addToGraph(graph, imports),
+            .maps = maps,
             .params = {.rotation = glm::vec4(std::cos(theta), std::sin(theta), 0.0f, 0.0f),
                        .intensity = settings.ibl.intensity,
                        .maxLod = maxLod,
@@ -385,16 +381,14 @@ TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& se
     const passes::ForwardPass::Output forward =
         mForward.add(graph, settings.width, settings.height, view, settings.shading, ibl ? &*ibl : nullptr, &mParameters,
                      settings.debugView);
-    mDebugView = settings.debugView;
-    mHdr = forward.hdr;
-    mIblInGraph = ibl.has_value();
-    mSkyboxInGraph = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;
-    if (mSkyboxInGraph) {
+    frame.debugView = settings.debugView;
+    frame.hdr = forward.hdr;
+    frame.skybox = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;
+    if (frame.skybox) {
         if (!mSkybox) mSkybox = std::make_unique<passes::SkyboxPass>(mContext);
-        mHdr = mSkybox->add(graph, view, {.hdr = forward.hdr, .depth = forward.depth, .specular = ibl->maps.specular,
-                                          .specularView = mIbl->specularView(), .sampler = mIbl->sampler(),
-                                          .params = ibl->params},
-                              &mParameters);
+        frame.hdr = mSkybox->add(graph, view,
+                                 {.hdr = forward.hdr, .depth = forward.depth, .specular = ibl->maps.specular, .params = ibl->params},
+                                 &mParameters);
     }
     // UNORM target: the tonemap shader encodes sRGB itself, which also lets it dither.
     const TextureId ldr = target ? *target
@@ -410,7 +404,7 @@ TextureId Renderer::buildSceneGraph(RenderGraph& graph, const RenderSettings& se
         tonemap.exposureEv = 0.0f;
         tonemap.dither = false;
     }
-    return mTonemap.add(graph, mHdr, ldr, tonemap, &mParameters);
+    frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemap, &mParameters);
 }
 
 scene::ViewSetup Renderer::resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect) {
@@ -440,23 +434,23 @@ scene::ViewSetup Renderer::resolveView(const scene::Scene& scene, const CameraSe
 
 std::vector<std::string> Renderer::explain() const {
     std::vector<std::string> lines;
-    const graph::GraphDecl& decl = mGraph->declaration();
+    const graph::GraphDecl& decl = mLast.graph->declaration();
     for (uint32_t p = 0; p < decl.passes.size(); ++p) {
-        const graph::PassInfo& info = mGraph->compiled().passes[p];
+        const graph::PassInfo& info = mLast.graph->compiled().passes[p];
         if (info.cullReason != graph::CullReason::None)
             lines.push_back("left out: pass '" + decl.passes[p].name + "' (" + info.cullDetail + ")");
     }
-    if (mUploaded && mGraph->findPass("forward")) {
+    if (mUploaded && mLast.graph->findPass("forward")) {
         if (mUploadedDefaultLights)
             lines.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
         for (const std::string& line : mForward.explanation()) lines.push_back(line);
         for (const std::string& line : mIbl->explanation()) lines.push_back(line);
-        if (mDebugView != passes::DebugView::None)
-            lines.push_back(std::string("debug view: ") + passes::debugViewName(mDebugView) +
-                            (passes::debugViewIsLight(mDebugView) ? " (tonemapped as the image is)"
-                                                                  : " (shown as data: linear tonemap at exposure 0)"));
-        if (mIbl->hasEnvironment() && !mSkyboxInGraph)
-            lines.emplace_back(mDebugView != passes::DebugView::None
+        if (mLast.debugView != passes::DebugView::None)
+            lines.push_back(std::string("debug view: ") + passes::debugViewName(mLast.debugView) +
+                            (passes::debugViewIsLight(mLast.debugView) ? " (tonemapped as the image is)"
+                                                                       : " (shown as data: linear tonemap at exposure 0)"));
+        if (mLast.ibl && !mLast.skybox)
+            lines.emplace_back(mLast.debugView != passes::DebugView::None
                                    ? "left out: skybox (debug view)"
                                    : "left out: skybox (the background is not the environment)");
     }

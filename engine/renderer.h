@@ -113,6 +113,30 @@ struct FrameTiming {
     graph::GraphTimings timings;  // per declared pass of that frame's graph
 };
 
+// The last IBL precompute: the frame that ran it, from the start of its building to its fence, and
+// the GPU time of its precompute passes. Negative before any.
+struct PrecomputeTime {
+    double frameMs = -1.0;
+    double gpuMs = -1.0;
+};
+
+// One frame as built: its graph with the Vulkan objects bound to the imported resources, the
+// handles of its results and what it scheduled. Each entry point builds one (Renderer's
+// beginFrame), adds its ending (readback, overlay, export) and submits it; the renderer then
+// keeps it as the last frame, for export, --explain and finishing the IBL precompute.
+struct Frame {
+    std::unique_ptr<graph::RenderGraph> graph = std::make_unique<graph::RenderGraph>();
+    graph::ImportBindings imports;
+    graph::TextureId hdr;  // linear HDR (RGBA16F): the scene after forward and skybox, or the test pattern
+    graph::TextureId ldr;  // the 8-bit image: tonemapped scene, or encoded pattern
+    bool ibl = false;      // image-based lighting: the maps are imported
+    bool skybox = false;
+    passes::DebugView debugView = passes::DebugView::None;
+    // The IBL precompute passes added: declared pass indices [precomputeBegin, precomputeEnd).
+    uint32_t precomputeBegin = 0, precomputeEnd = 0;
+    std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
+};
+
 class Renderer {
 public:
     // Precondition: `context` outlives the renderer.
@@ -138,6 +162,8 @@ public:
                         CapturedFrame* screenshot = nullptr);
     // Per-pass GPU times of the latest frame known to be complete, in execution order.
     const std::vector<PassTime>& completedPassTimes() const { return mCompletedTimes; }
+    // The last IBL precompute that completed.
+    const PrecomputeTime& lastPrecompute() const { return mLastPrecompute; }
     // The GPU time of the pass named `pass` in that frame; negative if it did not run there.
     double completedPassMs(std::string_view pass) const;
     // Waits for every frame in flight.
@@ -164,7 +190,7 @@ public:
     static scene::ViewSetup resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect);
 
     // The graph of the last frame (declaration and compiled result), for export and inspection.
-    const graph::RenderGraph& lastGraph() const { return *mGraph; }
+    const graph::RenderGraph& lastGraph() const { return *mLast.graph; }
     // The key and fill lights added to scenes without lights (see RenderSettings::defaultLights).
     static std::vector<scene::Light> defaultLights();
     // Which passes and variants the last frame left out and why (`--explain`).
@@ -179,11 +205,13 @@ public:
     ibl::IblMaps& iblMaps() { return *mIbl; }
 
 private:
-    // Declare the frame's passes; return the 8-bit result and set mHdr to the HDR image.
-    // `target`: the 8-bit image the tonemap writes (default: a new transient).
-    graph::TextureId buildSceneGraph(graph::RenderGraph& graph, const RenderSettings& settings,
-                                     graph::ImportBindings& imports, std::optional<graph::TextureId> target = {});
-    graph::TextureId buildPatternGraph(graph::RenderGraph& graph, const RenderSettings& settings);
+    // The start every entry point shares: checks the settings, uploads a changed scene or
+    // environment and declares the frame's passes (the scene, or the test pattern without one) in a
+    // new graph. With `present`, the tonemap writes the imported presentable image; otherwise a
+    // new transient. Throws UserError as capture() does.
+    Frame beginFrame(const RenderSettings& settings, const PresentTarget* present = nullptr);
+    void buildSceneGraph(Frame& frame, const RenderSettings& settings, std::optional<graph::TextureId> target);
+    void buildPatternGraph(Frame& frame, const RenderSettings& settings);
     void prepareScene(const RenderSettings& settings);
     void prepareEnvironment(const RenderSettings& settings);
     // Runs the scene's lights and materials through the parameter registry; rewrites their buffers
@@ -192,18 +220,19 @@ private:
     // Waits for the GPU and gives the maps this environment and quality (see IblMaps::setEnvironment).
     void useEnvironment(const scene::Environment* environment, const ibl::IblQuality& quality,
                         const std::filesystem::path& cacheDir, bool force);
-    static void applyToggles(graph::RenderGraph& graph, const RenderSettings& settings);
-    // Compiles the graph, records it into the next frame slot and submits it (waiting on and
-    // signalling the present target's semaphores if given). Returns when it was submitted.
-    std::chrono::steady_clock::time_point submit(graph::RenderGraph& graph, const graph::ImportBindings& imports,
-                                                 bool emitBarriers, const PresentTarget* present = nullptr);
-    // submit(), then waits for the frame.
-    FrameTiming execute(graph::RenderGraph& graph, const graph::ImportBindings& imports, bool emitBarriers);
-    // After the frame with the IBL precompute completed: lets the maps drop what only it needed.
-    void finishIblFrame(const graph::RenderGraph& graph);
-    // Imports the readback buffer, (re)created for `bytes`, into `graph` (final state: host read).
-    graph::BufferId importReadback(graph::RenderGraph& graph, graph::ImportBindings& imports, VkDeviceSize bytes);
-    // New, empty IBL maps (after waiting for the frames in flight), bound to the forward pass.
+    // Applies the settings' pass toggles, compiles the frame's graph, records it into the next frame
+    // slot and submits it (waiting on and signalling the present target's semaphores if given); it
+    // becomes the last frame. Returns when it was submitted.
+    std::chrono::steady_clock::time_point submit(Frame frame, const RenderSettings& settings,
+                                                 const PresentTarget* present = nullptr);
+    // submit(), then waits for the frame and finishes it.
+    FrameTiming execute(Frame frame, const RenderSettings& settings);
+    // After the last frame completed: the IBL maps take over what its precompute computed, and its
+    // time is recorded.
+    void finishFrame();
+    // Imports the readback buffer, (re)created for `bytes`, into `frame` (final state: host read).
+    graph::BufferId importReadback(Frame& frame, VkDeviceSize bytes);
+    // New, empty IBL maps (after waiting for the frames in flight).
     void resetIblMaps();
 
     vk::Context& mContext;
@@ -216,7 +245,6 @@ private:
     std::unique_ptr<ibl::IblMaps> mIbl;
     std::unique_ptr<passes::SkyboxPass> mSkybox;  // created with the first environment
     std::unique_ptr<passes::CalibrationPass> mCalibration;  // created by the first renderCalibration
-    graph::TextureId mHdr;  // HDR image of the graph being built
     const scene::Scene* mUploaded = nullptr;
     bool mUploadedDefaultLights = false;
     std::unique_ptr<scene::GpuScene> mGpuScene;
@@ -224,14 +252,12 @@ private:
     const scene::Environment* mEnvironment = nullptr;
     ibl::IblQuality mIblQuality;
     std::filesystem::path mIblCacheDir;
-    bool mIblInGraph = false;   // the last scene graph used image-based lighting
-    bool mSkyboxInGraph = false;
-    passes::DebugView mDebugView = passes::DebugView::None;  // of the last scene graph
     shader::ParameterRegistry mParameters;
     vk::Buffer mReadback;
     std::vector<PassTime> mCompletedTimes;
     graph::GraphTimings mCompletedTimings;  // of the latest completed frame, by declared pass
-    std::unique_ptr<graph::RenderGraph> mGraph;
+    PrecomputeTime mLastPrecompute;
+    Frame mLast;  // the last frame submitted
 };
 
 }  // namespace candela

@@ -41,6 +41,14 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// Candela broke a contract between two of its own parts — a pass naming a descriptor binding its
+// shader does not declare, push constants of the wrong size, an object placed in memory too small
+// for it. A bug, never the user's input: front ends report it as an internal error.
+class InternalError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 [[noreturn]] void throwVulkanError(const char* expression, const char* file, int line, VkResult result);
 
 }  // namespace candela

@@ -56,4 +56,17 @@ struct GraphDecl {
     std::vector<PassDecl> passes;
 };
 
+// How one pass uses one resource: every access it declared to it merged into one state (stages
+// and accesses or-ed; differing layouts fall back to GENERAL, since one layout must serve every use
+// within the pass). The barrier planner waits for and transitions into exactly this state, and
+// PassContext reports its layout to the pass. Precondition: `pass` declares an access to `resource`.
+ResourceState passAccessState(const GraphDecl& decl, const PassDecl& pass, uint32_t resource);
+
+// The access through which pass `pass` may use (kind, index, version): a read of that version, or
+// the write that produces it. Throws GraphError naming the pass and the resource and listing what
+// the pass declared when there is none: a pass may touch only what its setup declared, since an
+// undeclared access gets no barrier.
+const AccessDecl& declaredAccess(const GraphDecl& decl, uint32_t pass, ResourceKind kind, uint32_t index,
+                                 uint32_t version);
+
 }  // namespace candela::graph

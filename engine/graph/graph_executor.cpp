@@ -8,7 +8,9 @@
 
 namespace candela::graph {
 
-void ImportBindings::bind(TextureId texture, VkImage image, VkImageView view) { mImages[texture.index] = {image, view}; }
+void ImportBindings::bind(TextureId texture, VkImage image, VkImageView view, std::vector<VkImageView> mipViews) {
+    mImages[texture.index] = {image, view, std::move(mipViews)};
+}
 void ImportBindings::bind(BufferId buffer, VkBuffer handle) { mBuffers[buffer.index] = handle; }
 
 const ImportBindings::ImageBinding* ImportBindings::image(uint32_t resource) const {
@@ -21,33 +23,60 @@ VkBuffer ImportBindings::buffer(uint32_t resource) const {
     return it == mBuffers.end() ? VK_NULL_HANDLE : it->second;
 }
 
-uint32_t PassContext::resolve(uint32_t index, ResourceKind kind) const {
-    const GraphDecl& decl = mGraph->declaration();
-    if (index >= decl.resources.size() || decl.resources[index].kind != kind)
-        throw GraphError(std::string("pass '") + passName() + "' uses an invalid resource handle");
-    return index;
+PassContext::PassContext(const RenderGraph& graph, uint32_t pass, const Bindings& bindings)
+    : mGraph(&graph), mPassIndex(pass), mPass(&graph.declaration().passes.at(pass)), mBindings(bindings) {}
+
+const AccessDecl& PassContext::declared(ResourceKind kind, uint32_t index, uint32_t version) const {
+    return declaredAccess(mGraph->declaration(), mPassIndex, kind, index, version);
 }
 
 VkImage PassContext::image(TextureId texture) const {
-    const uint32_t r = resolve(texture.index, ResourceKind::Texture);
-    if (mGraph->declaration().resources[r].imported) return mImports->image(r)->image;
-    return mTransients->image(r);
+    const uint32_t r = declared(ResourceKind::Texture, texture.index, texture.version).resource;
+    if (mGraph->declaration().resources[r].imported) return mBindings.imports->image(r)->image;
+    return mBindings.transients->image(r);
 }
 
 VkImageView PassContext::view(TextureId texture) const {
-    const uint32_t r = resolve(texture.index, ResourceKind::Texture);
-    if (mGraph->declaration().resources[r].imported) return mImports->image(r)->view;
-    return mTransients->view(r);
+    const uint32_t r = declared(ResourceKind::Texture, texture.index, texture.version).resource;
+    if (mGraph->declaration().resources[r].imported) return mBindings.imports->image(r)->view;
+    return mBindings.transients->view(r);
+}
+
+VkImageView PassContext::mipView(TextureId texture, uint32_t mip) const {
+    const uint32_t r = declared(ResourceKind::Texture, texture.index, texture.version).resource;
+    const ResourceDecl& resource = mGraph->declaration().resources[r];
+    VkImageView view = VK_NULL_HANDLE;
+    if (mip < resource.texture.mipLevels) {
+        if (!resource.imported) {
+            view = mBindings.transients->mipView(r, mip);
+        } else if (const auto& views = mBindings.imports->image(r)->mipViews; mip < views.size()) {
+            view = views[mip];
+        }
+    }
+    if (view == VK_NULL_HANDLE)
+        throw GraphError(std::string("pass '") + passName() + "' asks for mip " + std::to_string(mip) + " of '" +
+                         resource.name + "', which has " + std::to_string(resource.texture.mipLevels) + " mips" +
+                         (resource.imported && mip < resource.texture.mipLevels ? " but no view of it was bound" : ""));
+    return view;
+}
+
+VkImageLayout PassContext::layout(TextureId texture) const {
+    const uint32_t r = declared(ResourceKind::Texture, texture.index, texture.version).resource;
+    return passAccessState(mGraph->declaration(), *mPass, r).layout;
 }
 
 VkBuffer PassContext::buffer(BufferId buffer) const {
-    const uint32_t r = resolve(buffer.index, ResourceKind::Buffer);
-    if (mGraph->declaration().resources[r].imported) return mImports->buffer(r);
-    return mTransients->buffer(r);
+    const uint32_t r = declared(ResourceKind::Buffer, buffer.index, buffer.version).resource;
+    if (mGraph->declaration().resources[r].imported) return mBindings.imports->buffer(r);
+    return mBindings.transients->buffer(r);
 }
 
 const TextureDesc& PassContext::desc(TextureId texture) const {
-    return mGraph->declaration().resources[resolve(texture.index, ResourceKind::Texture)].texture;
+    return mGraph->declaration().resources[declared(ResourceKind::Texture, texture.index, texture.version).resource].texture;
+}
+
+const BufferDesc& PassContext::desc(BufferId buffer) const {
+    return mGraph->declaration().resources[declared(ResourceKind::Buffer, buffer.index, buffer.version).resource].buffer;
 }
 
 VkExtent2D PassContext::extent(TextureId texture) const {
@@ -56,7 +85,7 @@ VkExtent2D PassContext::extent(TextureId texture) const {
 }
 
 std::optional<VkClearValue> PassContext::lostContentsClear(TextureId written) const {
-    const PassInfo& info = mGraph->compiled().passes[static_cast<size_t>(mPass - mGraph->declaration().passes.data())];
+    const PassInfo& info = mGraph->compiled().passes[mPassIndex];
     for (const AccessDecl& a : mPass->writes)
         if (a.resource == written.index && a.version == written.version && a.clearIfLost &&
             std::find(info.clearedLostInputs.begin(), info.clearedLostInputs.end(), a.resource) !=
@@ -107,11 +136,11 @@ void PassContext::beginRendering() const {
                                .colorAttachmentCount = static_cast<uint32_t>(colors.size()),
                                .pColorAttachments = colors.data(),
                                .pDepthAttachment = hasDepth ? &depth : nullptr};
-    vkCmdBeginRendering(mCmd, &info);
-    vk::setViewportAndScissor(mCmd, extent);
+    vkCmdBeginRendering(mBindings.cmd, &info);
+    vk::setViewportAndScissor(mBindings.cmd, extent);
 }
 
-void PassContext::endRendering() const { vkCmdEndRendering(mCmd); }
+void PassContext::endRendering() const { vkCmdEndRendering(mBindings.cmd); }
 
 namespace {
 
@@ -183,22 +212,20 @@ ExecutionRecord executeGraph(const ExecuteInputs& in) {
 
     ExecutionRecord record;
     record.passCount = static_cast<uint32_t>(decl.passes.size());
-    PassContext ctx;
-    ctx.mContext = &in.context;
-    ctx.mGraph = &in.graph;
-    ctx.mImports = &in.imports;
-    ctx.mTransients = &in.transients;
-    ctx.mDescriptors = &in.descriptors;
-    ctx.mCmd = in.cmd;
-
+    const PassContext::Bindings bindings{.context = &in.context,
+                                         .imports = &in.imports,
+                                         .transients = &in.transients,
+                                         .descriptors = &in.descriptors,
+                                         .cmd = in.cmd};
     for (size_t i = 0; i < compiled.order.size(); ++i) {
         const uint32_t pass = compiled.order[i];
-        ctx.mPass = &decl.passes[pass];
+        PassContext ctx(in.graph, pass, bindings);
         emitBarriers(in, compiled.barriers[i]);
         in.context.beginLabel(in.cmd, ctx.passName());
         const auto begin = in.timestamps ? in.timestamps->write(in.cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT) : std::nullopt;
         if (const ExecuteFn& fn = in.graph.callback(pass)) fn(ctx);
-        const auto end = in.timestamps ? in.timestamps->write(in.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT) : std::nullopt;
+        // Once every earlier command has completed (bottom of pipe in a timestamp's first scope).
+        const auto end = in.timestamps ? in.timestamps->write(in.cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT) : std::nullopt;
         if (begin && end) record.queries.push_back({pass, {*begin, *end}});
         in.context.endLabel(in.cmd);
     }

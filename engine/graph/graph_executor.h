@@ -21,12 +21,15 @@ struct ExecutionRecord;
 // Vulkan objects behind the graph's imported resources, owned by the caller.
 class ImportBindings {
 public:
-    void bind(TextureId texture, VkImage image, VkImageView view);
+    // `mipViews[m]`: a view of mip m alone (all layers; a 2D array for arrays and cubes), for passes
+    // that write or read one mip at a time (PassContext::mipView). May be empty.
+    void bind(TextureId texture, VkImage image, VkImageView view, std::vector<VkImageView> mipViews = {});
     void bind(BufferId buffer, VkBuffer handle);
 
     struct ImageBinding {
         VkImage image = VK_NULL_HANDLE;
         VkImageView view = VK_NULL_HANDLE;
+        std::vector<VkImageView> mipViews;
     };
     const ImageBinding* image(uint32_t resource) const;
     VkBuffer buffer(uint32_t resource) const;
@@ -37,17 +40,40 @@ private:
 };
 
 // Everything a pass's execute callback may use. Valid only during the callback.
+//
+// Every resource accessor takes a handle the pass's setup declared (a version it reads, or one
+// its writes produce) and throws GraphError naming the pass and the resource for any other: an
+// access the graph does not know of gets no barrier, so it is refused rather than left to race.
 class PassContext {
 public:
-    VkCommandBuffer cmd() const { return mCmd; }
-    vk::Context& context() const { return *mContext; }
-    vk::DescriptorAllocator& descriptors() const { return *mDescriptors; }
+    // What the executor runs the pass with. Tests may leave the Vulkan parts null as long as the
+    // pass does not use them.
+    struct Bindings {
+        vk::Context* context = nullptr;
+        const ImportBindings* imports = nullptr;
+        const TransientPool* transients = nullptr;
+        vk::DescriptorAllocator* descriptors = nullptr;
+        VkCommandBuffer cmd = VK_NULL_HANDLE;
+    };
+    // The context of pass `pass` of `graph`, which must be compiled; borrows everything.
+    PassContext(const RenderGraph& graph, uint32_t pass, const Bindings& bindings);
+
+    VkCommandBuffer cmd() const { return mBindings.cmd; }
+    vk::Context& context() const { return *mBindings.context; }
+    vk::DescriptorAllocator& descriptors() const { return *mBindings.descriptors; }
     const char* passName() const { return mPass->name.c_str(); }
 
     VkImage image(TextureId texture) const;
+    // The default view (all mips and layers; a cube view for cube maps).
     VkImageView view(TextureId texture) const;
+    // A view of mip `mip` alone, all layers (2D array for arrays and cubes), for storage writes of
+    // one mip. Throws GraphError if the texture has no such mip (or, imported, none was bound).
+    VkImageView mipView(TextureId texture, uint32_t mip) const;
+    // The layout the texture is in during this pass (what a descriptor of it must name).
+    VkImageLayout layout(TextureId texture) const;
     VkBuffer buffer(BufferId buffer) const;
     const TextureDesc& desc(TextureId texture) const;
+    const BufferDesc& desc(BufferId buffer) const;
     VkExtent2D extent(TextureId texture) const;
 
     // For an attachment the pass draws over (PassBuilder::drawOver) whose producer did not run:
@@ -62,16 +88,13 @@ public:
     void endRendering() const;
 
 private:
-    friend ExecutionRecord executeGraph(const ExecuteInputs& in);
-    uint32_t resolve(uint32_t index, ResourceKind kind) const;
+    // The declared access to this handle; throws GraphError if there is none.
+    const AccessDecl& declared(ResourceKind kind, uint32_t index, uint32_t version) const;
 
-    vk::Context* mContext = nullptr;
-    const RenderGraph* mGraph = nullptr;
-    const PassDecl* mPass = nullptr;
-    const ImportBindings* mImports = nullptr;
-    const TransientPool* mTransients = nullptr;
-    vk::DescriptorAllocator* mDescriptors = nullptr;
-    VkCommandBuffer mCmd = VK_NULL_HANDLE;
+    const RenderGraph* mGraph;
+    uint32_t mPassIndex;
+    const PassDecl* mPass;
+    Bindings mBindings;
 };
 
 // Which timestamp queries bracket which pass in one execution; turned into timings once the

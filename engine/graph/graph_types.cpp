@@ -12,10 +12,10 @@ VkPipelineStageFlags2 shaderStages(PassType passType) {
     case PassType::Compute:
         return VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     case PassType::Transfer:
-        // A transfer pass has no shaders; stay conservative rather than guess a stage.
-        return VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+        // A transfer pass has no shaders (RenderGraph refuses shader usages in one).
+        return VK_PIPELINE_STAGE_2_NONE;
     }
-    return VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    return VK_PIPELINE_STAGE_2_NONE;
 }
 
 }  // namespace

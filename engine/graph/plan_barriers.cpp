@@ -34,22 +34,11 @@ std::vector<MergedAccess> mergeAccesses(const GraphDecl& decl, const PassDecl& p
     std::vector<MergedAccess> merged;
     for (const auto* list : {&pass.reads, &pass.writes}) {
         for (const AccessDecl& access : *list) {
-            const ResourceDecl& resource = decl.resources[access.resource];
-            const AccessSync sync =
-                accessSync(access.usage, pass.type, resource.kind, access.stageOverride,
-                           resource.kind == ResourceKind::Texture && isDepthFormat(resource.texture.format));
             auto it = std::find_if(merged.begin(), merged.end(), [&](const MergedAccess& m) {
                 return m.resource == access.resource;
             });
-            if (it == merged.end()) {
-                merged.push_back({access.resource, {sync.stages, sync.access, sync.layout}, false});
-                it = merged.end() - 1;
-            } else if (it->state.layout != sync.layout) {
-                // One layout must serve every use within the pass.
-                it->state.layout = VK_IMAGE_LAYOUT_GENERAL;
-            }
-            it->state.stages |= sync.stages;
-            it->state.access |= sync.access;
+            if (it == merged.end())
+                it = merged.insert(merged.end(), {access.resource, passAccessState(decl, pass, access.resource), false});
             it->writes = it->writes || list == &pass.writes || usageWrites(access.usage);
         }
     }

@@ -32,6 +32,14 @@ const ResourceDecl& checkHandle(const GraphDecl& decl, const std::string& what, 
     return resource;
 }
 
+// A transfer pass only copies: refuse usages that need shaders, attachments or vertex input,
+// whose stages it does not have.
+void checkTransferUsage(const PassDecl& pass, const std::string& what, const ResourceDecl& resource, Usage usage) {
+    if (pass.type != PassType::Transfer || usage == Usage::TransferSrc || usage == Usage::TransferDst) return;
+    throw GraphError(what + " " + quoted(resource.name) + " with usage " + usageName(usage) +
+                     ", but it is a transfer pass (TransferSrc and TransferDst only)");
+}
+
 ResourceDecl makeTexture(std::string name, const TextureDesc& desc) {
     ResourceDecl resource;
     resource.name = std::move(name);
@@ -66,6 +74,21 @@ TextureId PassBuilder::read(TextureId texture, Usage usage, VkPipelineStageFlags
 BufferId PassBuilder::read(BufferId buffer, Usage usage, VkPipelineStageFlags2 stageOverride) {
     mGraph.addRead(mPass, ResourceKind::Buffer, buffer.index, buffer.version, usage, stageOverride);
     return buffer;
+}
+
+TextureId PassBuilder::sample(TextureId texture) {
+    const PassType type = mGraph.mDecl.passes[mPass].type;
+    return read(texture, Usage::Sampled, type == PassType::Graphics ? VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT : 0);
+}
+
+const TextureDesc& PassBuilder::desc(TextureId texture) const {
+    const std::string what = "pass " + quoted(mGraph.mDecl.passes[mPass].name) + " asks for the description of";
+    return checkHandle(mGraph.mDecl, what, ResourceKind::Texture, texture.index, texture.version).texture;
+}
+
+const BufferDesc& PassBuilder::desc(BufferId buffer) const {
+    const std::string what = "pass " + quoted(mGraph.mDecl.passes[mPass].name) + " asks for the description of";
+    return checkHandle(mGraph.mDecl, what, ResourceKind::Buffer, buffer.index, buffer.version).buffer;
 }
 
 TextureId PassBuilder::write(TextureId texture, Usage usage, WriteMode mode,
@@ -206,6 +229,7 @@ AccessDecl& RenderGraph::addRead(uint32_t pass, ResourceKind kind, uint32_t inde
     if (usageWrites(usage))
         throw GraphError(what + " " + quoted(resource.name) + " with writing usage " + usageName(usage) +
                          " (use write())");
+    checkTransferUsage(mDecl.passes[pass], what, resource, usage);
     AccessDecl access;
     access.resource = index;
     access.version = version;
@@ -223,6 +247,7 @@ AccessDecl& RenderGraph::addWrite(uint32_t pass, ResourceKind kind, uint32_t ind
     if (!usageWrites(usage))
         throw GraphError(what + " " + quoted(resource.name) + " with read-only usage " + usageName(usage) +
                          " (use read())");
+    checkTransferUsage(mDecl.passes[pass], what, resource, usage);
     AccessDecl access;
     access.resource = index;
     access.version = version + 1;

@@ -47,6 +47,15 @@ public:
     // Declares a read of exactly this version. Returns the same handle.
     TextureId read(TextureId texture, Usage usage, VkPipelineStageFlags2 stageOverride = 0);
     BufferId read(BufferId buffer, Usage usage, VkPipelineStageFlags2 stageOverride = 0);
+    // Declares a read through a sampler by the pass's shaders: in a graphics pass by the fragment
+    // shader (sample from a vertex shader with read(texture, Usage::Sampled, stages)), in a compute
+    // pass by the compute shader. Returns the same handle.
+    TextureId sample(TextureId texture);
+
+    // The description of a resource declared so far (e.g. the format of a target, to choose a
+    // pipeline variant). Throws GraphError for an invalid handle.
+    const TextureDesc& desc(TextureId texture) const;
+    const BufferDesc& desc(BufferId buffer) const;
 
     // Declares a write that consumes `handle` and produces the returned new version.
     TextureId write(TextureId texture, Usage usage, WriteMode mode = WriteMode::Preserve,

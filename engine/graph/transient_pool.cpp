@@ -119,6 +119,7 @@ void TransientPool::realize(const GraphDecl& decl, const CompiledGraph& compiled
     ++mRebuilds;
     mSignature = signature.str();
     mImages.resize(decl.resources.size());
+    mMipViews.resize(decl.resources.size());
     mBuffers.resize(decl.resources.size());
     for (const Heap& heap : compiled.heaps) {
         const VkMemoryRequirements requirements{heap.size, heap.alignment, heap.memoryTypeBits};
@@ -141,11 +142,16 @@ void TransientPool::realize(const GraphDecl& decl, const CompiledGraph& compiled
         const Placement& p = compiled.placements[r];
         if (p.heap == kInvalidIndex) continue;
         const vk::Allocation& heap = mHeaps[p.heap];
-        const vk::ExternalMemory memory{heap.memory, heap.offset + p.offset};
+        const vk::ExternalMemory memory{heap.memory, heap.offset + p.offset, p.size, heap.memoryType};
         const ResourceDecl& d = decl.resources[r];
-        if (d.kind == ResourceKind::Texture)
+        if (d.kind == ResourceKind::Texture) {
             mImages[r] = vk::Image(*mContext, imageDescOf(decl, r), memory);
-        else
+            const bool viewable = mImages[r].view() != VK_NULL_HANDLE;
+            const bool layered = d.texture.arrayLayers > 1 || d.texture.cube;
+            for (uint32_t mip = 0; viewable && mip < d.texture.mipLevels; ++mip)
+                mMipViews[r].push_back(mImages[r].createView(layered ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D,
+                                                             mip, 1, 0, d.texture.arrayLayers));
+        } else
             mBuffers[r] = vk::Buffer(*mContext, {.size = d.buffer.size, .usage = bufferUsageOf(decl, r), .name = d.name.c_str()},
                                      memory);
     }
@@ -157,7 +163,13 @@ VkDeviceSize TransientPool::heapBytes() const {
     return total;
 }
 
+VkImageView TransientPool::mipView(uint32_t resource, uint32_t mip) const {
+    const std::vector<vk::ImageView>& views = mMipViews.at(resource);
+    return mip < views.size() ? views[mip].get() : VK_NULL_HANDLE;
+}
+
 void TransientPool::release() {
+    mMipViews.clear();
     mImages.clear();
     mBuffers.clear();
     vk::Context* context = mContext;

@@ -33,6 +33,8 @@ public:
 
     VkImage image(uint32_t resource) const { return mImages.at(resource).handle(); }
     VkImageView view(uint32_t resource) const { return mImages.at(resource).view(); }
+    // A view of one mip, all layers (see PassContext::mipView); null if the image has no such mip.
+    VkImageView mipView(uint32_t resource, uint32_t mip) const;
     VkBuffer buffer(uint32_t resource) const { return mBuffers.at(resource).handle(); }
 
     // Heap bytes currently held, and how many times the pool was (re)built.
@@ -46,6 +48,7 @@ private:
     std::string mSignature;
     std::vector<vk::Allocation> mHeaps;
     std::vector<vk::Image> mImages;    // indexed by resource; empty for non-transients
+    std::vector<std::vector<vk::ImageView>> mMipViews;  // indexed by resource, then mip
     std::vector<vk::Buffer> mBuffers;  // indexed by resource
     uint32_t mRebuilds = 0;
 };

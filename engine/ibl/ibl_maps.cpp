@@ -26,16 +26,10 @@ using namespace graph;
 
 namespace {
 
-constexpr ResourceState kSampledState{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
-                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-constexpr ResourceState kUniformState{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_UNIFORM_READ_BIT,
-                                      VK_IMAGE_LAYOUT_UNDEFINED};
 constexpr VkDeviceSize kShBytes = passes::IblIrradianceShPass::kBytes;
-
-std::span<const std::byte> zeros(size_t bytes) {
-    static const std::vector<std::byte> buffer(4096);
-    return {buffer.data(), bytes};
-}
+// An input uploaded by vk::Uploader, which waited and made it visible to shader reads: nothing to
+// wait for, already in the layout for sampling.
+constexpr ResourceState kUploadedState{VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
 
 TextureDesc graphDesc(const vk::ImageDesc& d) {
     return {.width = d.width, .height = d.height, .mipLevels = d.mipLevels, .arrayLayers = d.arrayLayers,
@@ -58,53 +52,11 @@ std::vector<float> rgbaTexels(const scene::Environment& env) {
     return rgba;
 }
 
-std::vector<VkImageView> rawViews(const std::vector<vk::ImageView>& views) {
-    std::vector<VkImageView> out;
-    for (const vk::ImageView& v : views) out.push_back(v.get());
-    return out;
-}
-
 }  // namespace
 
-IblMaps::IblMaps(vk::Context& context)
-    : mContext(context),
-      mSampler(vk::createSampler(context, {})),
-      mNearest(vk::createSampler(context, {.filter = VK_FILTER_NEAREST, .minFilter = VK_FILTER_NEAREST,
-                                           .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})),
-      mNearestMip(vk::createSampler(context, {.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {
-    createPlaceholders();
-}
+IblMaps::IblMaps(vk::Context& context) : mContext(context) {}
 
 IblMaps::~IblMaps() = default;
-
-void IblMaps::createPlaceholders() {
-    const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    mPlaceholderCube = vk::Image(mContext, {.width = 1, .height = 1, .arrayLayers = 6, .format = kSpecularFormat,
-                                            .usage = usage, .cube = true, .name = "ibl_placeholder_cube"});
-    mPlaceholderLut = vk::Image(mContext, {.format = kLutFormat, .usage = usage, .name = "ibl_placeholder_lut"});
-    mPlaceholderSh = vk::Buffer(mContext, {.size = kShBytes,
-                                           .usage = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                           .name = "ibl_placeholder_sh"});
-    mPlaceholderEquirect = vk::Image(mContext, {.format = kFloatCubeFormat, .usage = usage, .name = "ibl_placeholder_equirect"});
-    mPlaceholderTexels = vk::Buffer(mContext, {.size = 16,
-                                               .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                               .name = "ibl_placeholder_reference_texels"});
-    vk::Uploader upload(mContext);
-    for (uint32_t face = 0; face < 6; ++face)
-        upload.image(mPlaceholderCube, zeros(8), 0, face, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    upload.image(mPlaceholderLut, zeros(4), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    upload.buffer(mPlaceholderSh, zeros(kShBytes));
-    upload.image(mPlaceholderEquirect, zeros(16), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    upload.buffer(mPlaceholderTexels, zeros(16));
-    upload.submitAndWait();
-}
-
-VkImageView IblMaps::referenceEquirectView() const {
-    return mReferenceEquirect ? mReferenceEquirect.view() : mPlaceholderEquirect.view();
-}
-VkBuffer IblMaps::referenceTexelBuffer() const {
-    return mReferenceTexels ? mReferenceTexels.handle() : mPlaceholderTexels.handle();
-}
 
 void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
     const auto luminance = [&](size_t i) {
@@ -143,12 +95,6 @@ void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
     upload.submitAndWait();
 }
 
-VkImageView IblMaps::specularView() const { return mSpecular.image ? mSpecular.image.view() : mPlaceholderCube.view(); }
-VkImageView IblMaps::irradianceCubeView() const {
-    return mIrradianceCube.image ? mIrradianceCube.image.view() : mPlaceholderCube.view();
-}
-VkImageView IblMaps::lutView() const { return mLut.image ? mLut.image.view() : mPlaceholderLut.view(); }
-VkBuffer IblMaps::shBuffer() const { return mSh ? mSh.handle() : mPlaceholderSh.handle(); }
 uint32_t IblMaps::lutSize() const { return mLut.image ? mLut.image.desc().width : 1; }
 
 void IblMaps::createMaps(const IblQuality& q) {
@@ -255,67 +201,57 @@ bool IblMaps::setEnvironment(const scene::Environment* env, const IblQuality& qu
     return true;
 }
 
-IblMaps::GraphMaps IblMaps::addToGraph(RenderGraph& graph, ImportBindings& imports) {
-    if (!hasEnvironment()) throw std::logic_error("IblMaps::addToGraph without an environment");
-    GraphMaps maps;
+TextureId IblMaps::import(RenderGraph& graph, ImportBindings& imports, const char* name, const vk::Image& image,
+                          const std::vector<vk::ImageView>& mipViews, const ResourceState& initial,
+                          std::optional<ResourceState> final) {
+    const TextureId texture = graph.importTexture(name, graphDesc(image.desc()), initial, final);
+    std::vector<VkImageView> views;
+    for (const vk::ImageView& view : mipViews) views.push_back(view.get());
+    imports.bind(texture, image.handle(), image.view(), std::move(views));
+    return texture;
+}
+
+passes::IblHandles IblMaps::addToGraph(RenderGraph& graph, ImportBindings& imports, bool reference) {
+    if (!hasEnvironment()) throw InternalError("IblMaps::addToGraph without an environment");
+    passes::IblHandles maps;
     const bool computeMaps = mSource == MapsSource::Pending;
     mPrecomputeAdded = computeMaps;
     mLutAdded = mLutPending;
     mLastFrame = {.precompute = computeMaps, .lut = mLutPending, .source = mSource};
-    const ResourceState mapsInitial = computeMaps ? ResourceState{} : kSampledState;
-    maps.specular = graph.importTexture("ibl_specular", graphDesc(mSpecular.image.desc()), mapsInitial, kSampledState);
+    // Maps about to be computed have no contents to keep: they start undefined.
+    const ResourceState mapsInitial = computeMaps ? ResourceState{} : kRestState;
+    maps.specular = import(graph, imports, "ibl_specular", mSpecular.image, mSpecular.mipViews, mapsInitial, kRestState);
     if (mIrradianceCube.image)
-        maps.irradianceCube = graph.importTexture("ibl_irradiance", graphDesc(mIrradianceCube.image.desc()),
-                                                  mapsInitial, kSampledState);
-    if (mSh)
-        maps.sh = graph.importBuffer("ibl_sh", {.size = kShBytes}, computeMaps ? ResourceState{} : kUniformState,
-                                     kUniformState);
-    maps.lut = graph.importTexture("ibl_brdf_lut", graphDesc(mLut.image.desc()),
-                                   mLutPending ? ResourceState{} : kSampledState, kSampledState);
-    imports.bind(maps.specular, mSpecular.image.handle(), mSpecular.image.view());
-    if (maps.irradianceCube.valid())
-        imports.bind(maps.irradianceCube, mIrradianceCube.image.handle(), mIrradianceCube.image.view());
-    if (maps.sh.valid()) imports.bind(maps.sh, mSh.handle());
-    imports.bind(maps.lut, mLut.image.handle(), mLut.image.view());
+        maps.irradianceCube = import(graph, imports, "ibl_irradiance", mIrradianceCube.image, mIrradianceCube.mipViews,
+                                     mapsInitial, kRestState);
+    if (mSh) {
+        maps.sh = graph.importBuffer("ibl_sh", {.size = kShBytes}, computeMaps ? ResourceState{} : kShRestState,
+                                     kShRestState);
+        imports.bind(maps.sh, mSh.handle());
+    }
+    maps.lut = import(graph, imports, "ibl_brdf_lut", mLut.image, mLut.mipViews,
+                      mLutPending ? ResourceState{} : kRestState, kRestState);
+    if (reference && mReferenceEquirect) {
+        maps.referenceEquirect = import(graph, imports, "ibl_reference_equirect", mReferenceEquirect, {}, kUploadedState, {});
+        maps.referenceTexels = graph.importBuffer("ibl_reference_texels", {.size = mReferenceTexels.size()}, ResourceState{});
+        imports.bind(maps.referenceTexels, mReferenceTexels.handle());
+    }
     if (computeMaps || mLutPending) ensurePasses();
-    if (mLutPending) maps.lut = mLutPass->add(graph, maps.lut, mQuality.lutSize, mQuality.lutSamples);
+    if (mLutPending) maps.lut = mLutPass->add(graph, maps.lut, mQuality.lutSamples);
     if (!computeMaps) return maps;
 
-    const uint32_t size = mQuality.cubeSize;
-    const TextureId equirect = graph.importTexture("ibl_equirect", graphDesc(mEquirect.desc()),
-                                                   {VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
-    TextureId cube = graph.importTexture("ibl_float_cube", graphDesc(mFloatCube.image.desc()), ResourceState{});
-    imports.bind(equirect, mEquirect.handle(), mEquirect.view());
-    imports.bind(cube, mFloatCube.image.handle(), mFloatCube.image.view());
+    // The equirect was uploaded for sampling; the float cube is written whole.
+    const TextureId equirect = import(graph, imports, "ibl_equirect", mEquirect, {}, kUploadedState, {});
+    const TextureId cube = import(graph, imports, "ibl_float_cube", mFloatCube.image, mFloatCube.mipViews, {}, {});
     const passes::IblCubemapPass::Outputs resampled =
-        mCubemapPass->add(graph, {.equirect = equirect,
-                                  .equirectSampler = mNearest.get(),
-                                  .equirectWidth = mEquirectWidth,
-                                  .equirectHeight = mEquirectHeight,
-                                  .cube = cube,
-                                  .faceSize = size,
-                                  .mipViews = rawViews(mFloatCube.mipViews),
-                                  .specular = maps.specular,
-                                  .specularMip0View = mSpecular.mipViews[0].get()});
-    cube = resampled.cube;
-    maps.specular = mPrefilterPass->add(graph, {.source = cube,
-                                                .sourceSampler = mNearestMip.get(),
-                                                .sourceFaceSize = size,
-                                                .specular = resampled.specular,
-                                                .mipViews = rawViews(mSpecular.mipViews)});
+        mCubemapPass->add(graph, {.equirect = equirect, .cube = cube, .specular = maps.specular});
+    maps.specular = mPrefilterPass->add(graph, {.source = resampled.cube, .specular = resampled.specular});
     if (mQuality.irradiance == IrradianceMode::Sh9)
-        maps.sh = mShPass->add(graph, {.source = cube,
-                                       .sourceSampler = mSampler.get(),
-                                       .sourceFaceSize = size,
+        maps.sh = mShPass->add(graph, {.source = resampled.cube,
                                        .projectedFaceSize = mQuality.shSourceSize,
                                        .coefficients = maps.sh});
     else
-        maps.irradianceCube = mIrradianceCubePass->add(graph, {.source = cube,
-                                                               .sourceSampler = mSampler.get(),
-                                                               .irradiance = maps.irradianceCube,
-                                                               .storageView = mIrradianceCube.mipViews[0].get(),
-                                                               .faceSize = mQuality.irradianceSize});
+        maps.irradianceCube = mIrradianceCubePass->add(graph, {.source = resampled.cube, .irradiance = maps.irradianceCube});
     return maps;
 }
 

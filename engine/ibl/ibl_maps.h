@@ -9,17 +9,18 @@
 //
 //     IblMaps maps(context);
 //     maps.setEnvironment(&env, quality, cacheDir);  // GPU idle; uploads, or loads from the cache
-//     IblMaps::GraphMaps imported = maps.addToGraph(graph);  // + precompute passes if pending
+//     passes::IblHandles imported = maps.addToGraph(graph, imports);  // + precompute passes if pending
 //     ... execute, wait ...
 //     maps.frameCompleted(graph);  // marks them computed, writes the cache
 //
-// Placeholders (1×1) stand in for every map while there is no environment, so descriptor sets
-// that expect IBL bindings can always be written.
+// The passes that read the maps get them only through the graph (passes::IblHandles), never as
+// views, so a map replaced between frames cannot be bound stale.
 
 #include "graph/graph_executor.h"
 #include "graph/render_graph.h"
 #include "ibl/ibl_cache_file.h"
 #include "ibl/ibl_settings.h"
+#include "passes/ibl_handles.h"
 #include "scene/environment.h"
 #include "vk/buffer.h"
 #include "vk/image.h"
@@ -66,37 +67,23 @@ public:
     uint32_t specularLevels() const { return mLevels; }
     uint64_t environmentHash() const { return mEnvironmentHash; }
 
-    // Views and samplers for descriptor sets (placeholders without an environment). Valid until the
-    // next setEnvironment that returns true.
-    VkImageView specularView() const;
-    VkImageView irradianceCubeView() const;
-    VkImageView lutView() const;
-    VkBuffer shBuffer() const;
-    VkSampler sampler() const { return mSampler.get(); }  // trilinear, clamp to edge
-    VkSampler nearestSampler() const { return mNearest.get(); }
+    // The LUT's size (1 before the first environment).
     uint32_t lutSize() const;
 
     // The ground truth of `ibl-report` (RenderSettings::ibl.referenceSamples > 0) reads the
     // environment itself: an RGBA32F equirectangular copy whose alpha is 0 for the brightest texels
     // (at most kMaxReferenceTexels, each more than 20× the mean luminance), and the list of those
     // texels, which the shader sums explicitly. Uploads and waits; precondition: the GPU no longer
-    // uses the previous ones. Placeholders stand in until it is called.
+    // uses the previous ones. addToGraph imports them when asked to.
     void setReferenceEnvironment(const scene::Environment& environment);
-    VkImageView referenceEquirectView() const;
-    VkBuffer referenceTexelBuffer() const;
     uint32_t referenceTexelCount() const { return mReferenceTexelCount; }
     static constexpr uint32_t kMaxReferenceTexels = 4096;
 
-    struct GraphMaps {
-        graph::TextureId specular;
-        graph::TextureId irradianceCube;  // cube mode only
-        graph::BufferId sh;               // SH9 mode only
-        graph::TextureId lut;
-    };
-    // Imports the maps into `graph`, preceded by the precompute passes when they are pending.
+    // Imports the maps into `graph`, preceded by the precompute passes when they are pending; with
+    // `reference`, also the ground truth's inputs (setReferenceEnvironment, if it was called).
     // Precondition: hasEnvironment(). This object must outlive the graph's execution.
-    // Binds every resource it imports in `imports`.
-    GraphMaps addToGraph(graph::RenderGraph& graph, graph::ImportBindings& imports);
+    // Binds every resource it imports in `imports`, with per-mip views.
+    passes::IblHandles addToGraph(graph::RenderGraph& graph, graph::ImportBindings& imports, bool reference = false);
 
     // After the graph given to addToGraph has executed and completed: the maps its precompute
     // passes computed are marked current (and written to the cache directory, if any); the
@@ -117,12 +104,23 @@ public:
     static constexpr VkFormat kFloatCubeFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
     static constexpr VkFormat kLutFormat = VK_FORMAT_R16G16_SFLOAT;
 
+    // How the maps rest between frames — the final state of every graph that imports them and the
+    // state anything outside a graph (readBack) must wait for: sampled by the fragment shader.
+    static constexpr graph::ResourceState kRestState{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    static constexpr graph::ResourceState kShRestState{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                                       VK_ACCESS_2_UNIFORM_READ_BIT, VK_IMAGE_LAYOUT_UNDEFINED};
+
 private:
-    struct Target {  // a persistent map with its per-mip storage views
+    struct Target {  // a persistent map with its per-mip views
         vk::Image image;
         std::vector<vk::ImageView> mipViews;
     };
-    void createPlaceholders();
+    // Imports `image` into `graph` and binds it with `mipViews`.
+    static graph::TextureId import(graph::RenderGraph& graph, graph::ImportBindings& imports, const char* name,
+                                   const vk::Image& image, const std::vector<vk::ImageView>& mipViews,
+                                   const graph::ResourceState& initial, std::optional<graph::ResourceState> final);
     void createMaps(const IblQuality& quality);
     void createPrecomputeInputs(const scene::Environment& environment);
     void ensurePasses();
@@ -131,15 +129,6 @@ private:
     CachedImage readImage(const char* name, const vk::Image& image);
 
     vk::Context& mContext;
-    vk::Sampler mSampler;
-    vk::Sampler mNearest;
-    vk::Sampler mNearestMip;  // bilinear within a mip, the nearest mip: the prefilter's source
-    // Placeholders.
-    vk::Image mPlaceholderCube;
-    vk::Image mPlaceholderLut;
-    vk::Buffer mPlaceholderSh;
-    vk::Image mPlaceholderEquirect;
-    vk::Buffer mPlaceholderTexels;
     // Ground truth (setReferenceEnvironment).
     vk::Image mReferenceEquirect;
     vk::Buffer mReferenceTexels;

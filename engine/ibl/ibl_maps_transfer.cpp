@@ -21,7 +21,7 @@ uint32_t texelBytes(VkFormat format) {
         case VK_FORMAT_R16G16B16A16_SFLOAT: return 8;
         case VK_FORMAT_R16G16_SFLOAT: return 4;
         case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;
-        default: throw std::logic_error("IblMaps: no texel size for this format");
+        default: throw InternalError("IblMaps: no texel size for this format");
     }
 }
 
@@ -52,14 +52,15 @@ CachedImage IblMaps::readImage(const char* name, const vk::Image& image) {
     }
     vk::OneShotCommands commands(mContext);
     VkCommandBuffer cmd = commands.begin();
-    vk::imageBarrier(cmd, image.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                     VK_ACCESS_2_MEMORY_WRITE_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                     VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    // Between frames the maps rest in kRestState: whoever wrote them (the precompute passes, a cache
+    // load) made the writes visible to the fragment shader, so waiting for that stage chains to them.
+    vk::imageBarrier(cmd, image.handle(), VK_IMAGE_ASPECT_COLOR_BIT, kRestState.stages, VK_ACCESS_2_NONE,
+                     kRestState.layout, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(),
                            static_cast<uint32_t>(regions.size()), regions.data());
     vk::imageBarrier(cmd, image.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kRestState.stages, kRestState.access, kRestState.layout);
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
                       VK_ACCESS_2_HOST_READ_BIT);
     commands.submitAndWait();
@@ -71,7 +72,7 @@ CachedImage IblMaps::readImage(const char* name, const vk::Image& image) {
 
 std::vector<CachedImage> IblMaps::readBack() {
     if (mSource == MapsSource::None || mSource == MapsSource::Pending || mLutPending)
-        throw std::logic_error("IblMaps::readBack: no computed maps");
+        throw InternalError("IblMaps::readBack: no computed maps");
     std::vector<CachedImage> images;
     images.push_back(readImage("specular", mSpecular.image));
     if (mIrradianceCube.image) images.push_back(readImage("irradiance_cube", mIrradianceCube.image));
@@ -81,6 +82,8 @@ std::vector<CachedImage> IblMaps::readBack() {
         vk::OneShotCommands commands(mContext);
         VkCommandBuffer cmd = commands.begin();
         const VkBufferCopy region{0, 0, mSh.size()};
+        vk::memoryBarrier(cmd, kRestState.stages, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
+                          VK_ACCESS_2_TRANSFER_READ_BIT);
         vkCmdCopyBuffer(cmd, mSh.handle(), staging.handle(), 1, &region);
         vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                           VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);

@@ -21,7 +21,7 @@ TextureId BrdfProbePass::add(RenderGraph& graph, float intensity) const {
         },
         [this, params](const Data& d, PassContext& ctx) {
             const VkDescriptorSet set = vk::DescriptorWriter(mPipeline.program(), 0)
-                                            .image("outImage", ctx.view(d.probe), VK_IMAGE_LAYOUT_GENERAL)
+                                            .image("outImage", ctx.view(d.probe), ctx.layout(d.probe))
                                             .commit(ctx.context(), ctx.descriptors());
             mPipeline.bind(ctx.cmd());
             vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, mPipeline.layout(), 0, 1, &set, 0, nullptr);

@@ -18,15 +18,11 @@ TextureId EncodePass::add(RenderGraph& graph, TextureId hdr, TextureId target) c
     const Data& data = graph.addPass<Data>(
         "encode", PassType::Graphics,
         [&](PassBuilder& builder, Data& d) {
-            d.hdr = builder.read(hdr, Usage::Sampled, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            d.hdr = builder.sample(hdr);
             d.target = builder.write(target, Usage::ColorAttachment, WriteMode::Discard);
         },
         [this](const Data& d, PassContext& ctx) {
-            const VkDescriptorSet set =
-                vk::DescriptorWriter(mPipeline.program(), 0)
-                    .image("hdrImage", ctx.view(d.hdr), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, mSampler.get())
-                    .commit(ctx.context(), ctx.descriptors());
-            drawFullscreenTriangle(ctx, mPipeline, set);
+            drawFullscreenSampling(ctx, mPipeline, "hdrImage", d.hdr, mSampler.get());
         });
     return data.target;
 }

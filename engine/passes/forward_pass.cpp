@@ -26,15 +26,15 @@ std::string ForwardPass::Variant::name() const {
     return out;
 }
 
-ForwardPass::ForwardPass(vk::Context& context) : mContext(context) {}
+ForwardPass::ForwardPass(vk::Context& context) : mContext(context), mIblSet(context) {}
 
 const vk::Pipeline& ForwardPass::pipeline(const Variant& v) {
-    auto it = mPipelines.find(v);
-    if (it != mPipelines.end()) {
-        it->second.refresh(mContext);  // a shader replaced at run time (hot reload)
-        return it->second;
-    }
-    const vk::GraphicsPipelineDesc desc{
+    return mPipelines.get(mContext, v,
+                          [&] { return vk::Pipeline::graphics(mContext, "forward.vert", "forward.frag", desc(v)); });
+}
+
+vk::GraphicsPipelineDesc ForwardPass::desc(const Variant& v) {
+    return {
         .colorFormats = {kHdrFormat},
         .depthFormat = kDepthFormat,
         .depthTest = true,
@@ -51,7 +51,6 @@ const vk::Pipeline& ForwardPass::pipeline(const Variant& v) {
                              {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv0)},
                              {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv1)},
                              {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, color)}}};
-    return mPipelines.emplace(v, vk::Pipeline::graphics(mContext, "forward.vert", "forward.frag", desc)).first->second;
 }
 
 ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl,
@@ -95,20 +94,6 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene) {
     }
 }
 
-void ForwardPass::setIblMaps(const ibl::IblMaps& maps) {
-    mIblSets = std::make_unique<vk::DescriptorAllocator>(mContext);
-    mIblSet = vk::DescriptorWriter(pipeline(Variant{}).program(), 2)
-                  .image("specularCube", maps.specularView(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, maps.sampler())
-                  .image("irradianceCube", maps.irradianceCubeView(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                         maps.sampler())
-                  .image("brdfLut", maps.lutView(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, maps.sampler())
-                  .buffer("IrradianceSh", maps.shBuffer())
-                  .image("referenceEquirect", maps.referenceEquirectView(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                         maps.nearestSampler())
-                  .buffer("ReferenceTexels", maps.referenceTexelBuffer())
-                  .commit(mContext, *mIblSets);
-}
-
 ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
                                      ShadingModel model, const Ibl* ibl, shader::ParameterRegistry* parameters,
                                      DebugView debugView) {
@@ -141,6 +126,7 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
     struct Data {
         TextureId hdr;
         TextureId depth;
+        IblHandles ibl;  // as declared: resolved in execute
     };
     shading::ForwardPush push{};
     push.viewProjection = view.viewProjection;
@@ -150,8 +136,9 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
     if (parameters) parameters->apply("forward", "Push", reflection().pushConstants.members, push);
     const scene::GpuScene* gpuScene = mScene;
     const VkDescriptorSet sceneSet = mSceneSet;
-    const VkDescriptorSet iblSet = mIblSet;
     const std::vector<VkDescriptorSet>* materialSets = &mMaterialSets;
+    const ForwardIblSet* iblSets = &mIblSet;
+    const vk::Program* program = &pipeline(Variant{}).program();  // every variant shares the set layouts
     const Data& data = graph.addPass<Data>(
         "forward", PassType::Graphics,
         [&](PassBuilder& builder, Data& d) {
@@ -159,15 +146,11 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
             const TextureId depth = builder.createTexture("depth", {.width = width, .height = height, .format = kDepthFormat});
             d.hdr = builder.writeColor(hdr, VkClearColorValue{{0.0f, 0.0f, 0.0f, 0.0f}});
             d.depth = builder.writeDepth(depth, 0.0f);  // reverse-Z: far = 0
-            if (!ibl) return;
-            builder.read(ibl->maps.specular, Usage::Sampled, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-            builder.read(ibl->maps.lut, Usage::Sampled, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-            if (ibl->maps.irradianceCube.valid())
-                builder.read(ibl->maps.irradianceCube, Usage::Sampled, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-            if (ibl->maps.sh.valid()) builder.read(ibl->maps.sh, Usage::Uniform, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            d.ibl = ForwardIblSet::declare(builder, ibl ? &ibl->maps : nullptr);
         },
-        [items, frameConstants = push, gpuScene, sceneSet, iblSet, materialSets](const Data&, PassContext& ctx) {
+        [items, frameConstants = push, gpuScene, sceneSet, materialSets, iblSets, program](const Data& d, PassContext& ctx) {
             shading::ForwardPush constants = frameConstants;
+            const VkDescriptorSet iblSet = iblSets->write(ctx, *program, d.ibl);
             VkCommandBuffer cmd = ctx.cmd();
             ctx.beginRendering();
             const VkDeviceSize offset = 0;

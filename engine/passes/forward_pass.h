@@ -6,17 +6,15 @@
 
 #include "graph/render_graph.h"
 #include "passes/debug_view.h"
+#include "passes/forward_ibl_set.h"
+#include "passes/ibl_handles.h"
 #include "shader/parameter_registry.h"
-#include "ibl/ibl_maps.h"
 #include "shared/ibl.h"
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
 #include "vk/descriptors.h"
-#include "vk/pipeline.h"
+#include "vk/pipeline_cache.h"
 
-#include <map>
-#include <optional>
-#include <string_view>
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,27 +23,24 @@ namespace candela::passes {
 
 enum class ShadingModel : uint32_t { Pbr = 0, PbrSchlickGgx = 1, BlinnPhong = 2 };
 
-
 class ForwardPass {
 public:
     explicit ForwardPass(vk::Context& context);
 
-    // Binds the scene's buffers and textures into persistent descriptor sets. Call once per
-    // GpuScene; precondition: the GPU no longer uses the previous scene's sets.
+    // Binds the scene's buffers and textures into persistent descriptor sets (sets 0 and 1). The
+    // scene is uploaded once and changes only while the GPU is idle, so it is no graph resource.
+    // Call once per GpuScene; precondition: the GPU no longer uses the previous scene's sets.
     void setScene(const scene::GpuScene& scene);
 
     struct Output {
         graph::TextureId hdr;
         graph::TextureId depth;
     };
-    // Writes the image-based-lighting descriptor set (set 2) from `maps` (its placeholders when it
-    // has no environment). Call at start and whenever maps.setEnvironment returned true;
-    // precondition: the GPU no longer uses the previous set.
-    void setIblMaps(const ibl::IblMaps& maps);
 
-    // Image-based lighting of one frame: the imported maps to read and how to read them.
+    // Image-based lighting of one frame: the maps to read (set 2, written every frame from what the
+    // pass context resolves them to) and how to read them.
     struct Ibl {
-        ibl::IblMaps::GraphMaps maps;
+        IblHandles maps;
         shading::IblParams params;
         bool irradianceSh = true;
         bool multiscatter = true;
@@ -90,16 +85,16 @@ private:
         float depth;  // view distance, for sorting blended draws
     };
     const vk::Pipeline& pipeline(const Variant& variant);
+    static vk::GraphicsPipelineDesc desc(const Variant& variant);
     Variant variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl, DebugView debugView) const;
 
     vk::Context& mContext;
-    std::map<Variant, vk::Pipeline> mPipelines;
+    vk::PipelineCache<Variant> mPipelines;
+    ForwardIblSet mIblSet;
     const scene::GpuScene* mScene = nullptr;
     std::unique_ptr<vk::DescriptorAllocator> mSets;
     VkDescriptorSet mSceneSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> mMaterialSets;
-    std::unique_ptr<vk::DescriptorAllocator> mIblSets;
-    VkDescriptorSet mIblSet = VK_NULL_HANDLE;
     std::vector<std::string> mExplanation;
 };
 

@@ -4,7 +4,10 @@
 // constants if any, draw one triangle covering the viewport, end rendering.
 
 #include "graph/graph_executor.h"
+#include "vk/descriptors.h"
 #include "vk/pipeline.h"
+
+#include <string_view>
 
 namespace candela::passes {
 
@@ -16,6 +19,17 @@ inline void drawFullscreenTriangle(const graph::PassContext& ctx, const vk::Pipe
     if (pushConstants) pipeline.pushConstants(ctx.cmd(), pushConstants, pushSize);
     vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     ctx.endRendering();
+}
+
+// The common full-screen pass whose set 0 holds one texture of the graph, read through `sampler`:
+// writes the set (binding `binding`, the texture's view and layout in this pass) and draws.
+inline void drawFullscreenSampling(const graph::PassContext& ctx, const vk::Pipeline& pipeline, std::string_view binding,
+                                   graph::TextureId texture, VkSampler sampler, const void* pushConstants = nullptr,
+                                   uint32_t pushSize = 0) {
+    const VkDescriptorSet set = vk::DescriptorWriter(pipeline.program(), 0)
+                                    .image(binding, ctx.view(texture), ctx.layout(texture), sampler)
+                                    .commit(ctx.context(), ctx.descriptors());
+    drawFullscreenTriangle(ctx, pipeline, set, pushConstants, pushSize);
 }
 
 }  // namespace candela::passes

@@ -9,17 +9,18 @@ using namespace graph;
 
 IblBrdfLutPass::IblBrdfLutPass(vk::Context& context) : mPipeline(vk::Pipeline::compute(context, "ibl_brdf_lut.comp")) {}
 
-TextureId IblBrdfLutPass::add(RenderGraph& graph, TextureId lut, uint32_t size, uint32_t samples) const {
+TextureId IblBrdfLutPass::add(RenderGraph& graph, TextureId lut, uint32_t samples) const {
     struct Data {
         TextureId lut;
     };
     const Data& data = graph.addPass<Data>(
         "ibl_brdf_lut", PassType::Compute,
         [&](PassBuilder& builder, Data& d) { d.lut = builder.write(lut, Usage::StorageWrite, WriteMode::Discard); },
-        [this, size, samples](const Data& d, PassContext& ctx) {
+        [this, samples](const Data& d, PassContext& ctx) {
+            const uint32_t size = ctx.desc(d.lut).width;
             const shading::IblLutPush push{.size = size, .samples = samples};
             const VkDescriptorSet set = vk::DescriptorWriter(mPipeline.program(), 0)
-                                            .image("lut", ctx.view(d.lut), VK_IMAGE_LAYOUT_GENERAL)
+                                            .image("lut", ctx.view(d.lut), ctx.layout(d.lut))
                                             .commit(ctx.context(), ctx.descriptors());
             const uint32_t groups = groupCount(size, CANDELA_IBL_GROUP);
             dispatchCompute(ctx, mPipeline, set, &push, sizeof(push), groups, groups, 1);

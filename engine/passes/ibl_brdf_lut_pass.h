@@ -12,9 +12,9 @@ class IblBrdfLutPass {
 public:
     explicit IblBrdfLutPass(vk::Context& context);
 
-    // Adds the pass writing all of `lut` (kFormat, size × size; contents discarded) with `samples`
-    // GGX samples per texel. Returns its new version. The pass object must outlive execution.
-    graph::TextureId add(graph::RenderGraph& graph, graph::TextureId lut, uint32_t size, uint32_t samples) const;
+    // Adds the pass writing all of `lut` (kFormat, square; contents discarded) with `samples` GGX
+    // samples per texel. Returns its new version. The pass object must outlive execution.
+    graph::TextureId add(graph::RenderGraph& graph, graph::TextureId lut, uint32_t samples) const;
 
     static constexpr VkFormat kFormat = VK_FORMAT_R16G16_SFLOAT;
 

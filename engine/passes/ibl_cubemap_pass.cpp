@@ -12,7 +12,9 @@ using namespace graph;
 
 IblCubemapPass::IblCubemapPass(vk::Context& context)
     : mResample(vk::Pipeline::compute(context, "ibl_cubemap.comp")),
-      mDownsample(vk::Pipeline::compute(context, "ibl_cube_downsample.comp")) {}
+      mDownsample(vk::Pipeline::compute(context, "ibl_cube_downsample.comp")),
+      mSampler(vk::createSampler(context, {.filter = VK_FILTER_NEAREST, .minFilter = VK_FILTER_NEAREST,
+                                           .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {}
 
 uint32_t IblCubemapPass::supersampleFactor(uint32_t faceSize, uint32_t equirectWidth, uint32_t equirectHeight) {
     // Solid angle of a cube texel (4π / 6N², on average) over an equirect texel at the equator (2π² / WH).
@@ -29,28 +31,30 @@ IblCubemapPass::Outputs IblCubemapPass::add(RenderGraph& graph, const Inputs& in
     const Data& data = graph.addPass<Data>(
         "ibl_cubemap", PassType::Compute,
         [&](PassBuilder& builder, Data& d) {
-            d.equirect = builder.read(in.equirect, Usage::Sampled);
+            d.equirect = builder.sample(in.equirect);
             d.cube = builder.write(in.cube, Usage::StorageReadWrite, WriteMode::Discard);
             d.specular = builder.write(in.specular, Usage::StorageWrite, WriteMode::Discard);
         },
-        [this, in](const Data& d, PassContext& ctx) {
+        [this](const Data& d, PassContext& ctx) {
+            const TextureDesc& equirect = ctx.desc(d.equirect);
+            const TextureDesc& cube = ctx.desc(d.cube);
             const shading::IblCubemapPush push{
-                .faceSize = in.faceSize,
-                .supersample = supersampleFactor(in.faceSize, in.equirectWidth, in.equirectHeight)};
+                .faceSize = cube.width,
+                .supersample = supersampleFactor(cube.width, equirect.width, equirect.height)};
             const VkDescriptorSet set =
                 vk::DescriptorWriter(mResample.program(), 0)
-                    .image("equirect", ctx.view(d.equirect), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, in.equirectSampler)
-                    .image("cubeMip0", in.mipViews[0], VK_IMAGE_LAYOUT_GENERAL)
-                    .image("specularMip0", in.specularMip0View, VK_IMAGE_LAYOUT_GENERAL)
+                    .image("equirect", ctx.view(d.equirect), ctx.layout(d.equirect), mSampler.get())
+                    .image("cubeMip0", ctx.mipView(d.cube, 0), ctx.layout(d.cube))
+                    .image("specularMip0", ctx.mipView(d.specular, 0), ctx.layout(d.specular))
                     .commit(ctx.context(), ctx.descriptors());
-            const uint32_t groups = groupCount(in.faceSize, CANDELA_IBL_GROUP);
+            const uint32_t groups = groupCount(cube.width, CANDELA_IBL_GROUP);
             dispatchCompute(ctx, mResample, set, &push, sizeof(push), groups, groups, 6);
-            for (uint32_t mip = 1; mip < in.mipViews.size(); ++mip) {
+            for (uint32_t mip = 1; mip < cube.mipLevels; ++mip) {
                 computeWriteToReadBarrier(ctx.cmd());
-                const shading::IblDownsamplePush down{.dstFaceSize = std::max(in.faceSize >> mip, 1u)};
+                const shading::IblDownsamplePush down{.dstFaceSize = std::max(cube.width >> mip, 1u)};
                 const VkDescriptorSet mipSet = vk::DescriptorWriter(mDownsample.program(), 0)
-                                                   .image("srcMip", in.mipViews[mip - 1], VK_IMAGE_LAYOUT_GENERAL)
-                                                   .image("dstMip", in.mipViews[mip], VK_IMAGE_LAYOUT_GENERAL)
+                                                   .image("srcMip", ctx.mipView(d.cube, mip - 1), ctx.layout(d.cube))
+                                                   .image("dstMip", ctx.mipView(d.cube, mip), ctx.layout(d.cube))
                                                    .commit(ctx.context(), ctx.descriptors());
                 const uint32_t mipGroups = groupCount(down.dstFaceSize, CANDELA_IBL_GROUP);
                 dispatchCompute(ctx, mDownsample, mipSet, &down, sizeof(down), mipGroups, mipGroups, 6);

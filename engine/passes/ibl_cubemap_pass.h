@@ -7,8 +7,7 @@
 
 #include "graph/render_graph.h"
 #include "vk/pipeline.h"
-
-#include <vector>
+#include "vk/sampler.h"
 
 namespace candela::passes {
 
@@ -18,15 +17,9 @@ public:
 
     struct Inputs {
         graph::TextureId equirect;  // RGBA32F equirectangular map, rotation 0
-        VkSampler equirectSampler;  // any (read with texelFetch)
-        uint32_t equirectWidth, equirectHeight;
-        graph::TextureId cube;      // RGBA32F cube, faceSize, all mips written (contents discarded)
-        uint32_t faceSize;
-        // mipViews[m]: a 2D-array view of mip m, 6 layers (storage). Owned by the caller; alive
-        // until the graph has executed.
-        std::vector<VkImageView> mipViews;
+        // RGBA32F cube, all mips written (contents discarded); an imported one needs its mip views bound.
+        graph::TextureId cube;
         graph::TextureId specular;  // RGBA16F cube of the same face size; mip 0 written (contents discarded)
-        VkImageView specularMip0View;  // 2D-array storage view of its mip 0 (caller-owned)
     };
     struct Outputs {
         graph::TextureId cube;
@@ -41,6 +34,7 @@ public:
 private:
     vk::Pipeline mResample;
     vk::Pipeline mDownsample;
+    vk::Sampler mSampler;  // for the equirect's descriptor (the shader reads it with texelFetch)
 };
 
 }  // namespace candela::passes

@@ -1,6 +1,6 @@
 #include "passes/ibl_irradiance_cube_pass.h"
 
-#include "ibl/ibl_sample_tables.h"
+#include "passes/ibl_sample_tables.h"
 #include "passes/compute.h"
 #include "shared/ibl.h"
 #include "vk/upload.h"
@@ -12,11 +12,13 @@ namespace candela::passes {
 using namespace graph;
 
 IblIrradianceCubePass::IblIrradianceCubePass(vk::Context& context)
-    : mContext(context), mPipeline(vk::Pipeline::compute(context, "ibl_filter_cube.comp", {/*kWeightByCosine=*/0})) {}
+    : mContext(context),
+      mPipeline(vk::Pipeline::compute(context, "ibl_filter_cube.comp", {/*kWeightByCosine=*/0})),
+      mSampler(vk::createSampler(context, {})) {}
 
 void IblIrradianceCubePass::prepare(uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered,
                  float lodBias) {
-    const ibl::SampleTable table = ibl::irradianceSamples(samples, sourceFaceSize, sourceMips, filtered, lodBias);
+    const SampleTable table = irradianceSamples(samples, sourceFaceSize, sourceMips, filtered, lodBias);
     mSampleCount = static_cast<uint32_t>(table.samples.size());
     mInverseWeight = 1.0f / table.totalWeight;
     mTable = vk::Buffer(mContext, {.size = table.samples.size() * sizeof(glm::vec4),
@@ -35,21 +37,22 @@ TextureId IblIrradianceCubePass::add(RenderGraph& graph, const Inputs& in) const
     const Data& data = graph.addPass<Data>(
         "ibl_irradiance_cube", PassType::Compute,
         [&](PassBuilder& builder, Data& d) {
-            d.source = builder.read(in.source, Usage::Sampled);
+            d.source = builder.sample(in.source);
             d.irradiance = builder.write(in.irradiance, Usage::StorageWrite, WriteMode::Discard);
         },
-        [this, in](const Data& d, PassContext& ctx) {
-            const shading::IblFilterPush push{.faceSize = in.faceSize,
+        [this](const Data& d, PassContext& ctx) {
+            const uint32_t faceSize = ctx.desc(d.irradiance).width;
+            const shading::IblFilterPush push{.faceSize = faceSize,
                                               .firstSample = 0,
                                               .sampleCount = mSampleCount,
                                               .inverseWeight = mInverseWeight};
             const VkDescriptorSet set =
                 vk::DescriptorWriter(mPipeline.program(), 0)
-                    .image("source", ctx.view(d.source), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, in.sourceSampler)
-                    .image("dstMip", in.storageView, VK_IMAGE_LAYOUT_GENERAL)
+                    .image("source", ctx.view(d.source), ctx.layout(d.source), mSampler.get())
+                    .image("dstMip", ctx.mipView(d.irradiance, 0), ctx.layout(d.irradiance))
                     .buffer("SampleTable", mTable.handle())
                     .commit(ctx.context(), ctx.descriptors());
-            const uint32_t groups = groupCount(in.faceSize, CANDELA_IBL_GROUP);
+            const uint32_t groups = groupCount(faceSize, CANDELA_IBL_GROUP);
             dispatchCompute(ctx, mPipeline, set, &push, sizeof(push), groups, groups, 6);
         });
     return data.irradiance;

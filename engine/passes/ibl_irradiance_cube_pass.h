@@ -6,6 +6,7 @@
 #include "graph/render_graph.h"
 #include "vk/buffer.h"
 #include "vk/pipeline.h"
+#include "vk/sampler.h"
 
 namespace candela::passes {
 
@@ -20,10 +21,8 @@ public:
 
     struct Inputs {
         graph::TextureId source;  // float environment cube
-        VkSampler sourceSampler;
-        graph::TextureId irradiance;  // RGBA16F cube, one mip, contents discarded
-        VkImageView storageView;      // 2D-array storage view of it (caller-owned)
-        uint32_t faceSize;
+        // RGBA16F cube, one mip, contents discarded; an imported one needs its mip view bound.
+        graph::TextureId irradiance;
     };
     // Adds the pass; returns the irradiance cube's new version. The pass object must outlive execution.
     graph::TextureId add(graph::RenderGraph& graph, const Inputs& inputs) const;
@@ -31,6 +30,7 @@ public:
 private:
     vk::Context& mContext;
     vk::Pipeline mPipeline;
+    vk::Sampler mSampler;  // trilinear
     vk::Buffer mTable;
     uint32_t mSampleCount = 0;
     float mInverseWeight = 0.0f;

@@ -10,7 +10,7 @@ namespace candela::passes {
 using namespace graph;
 
 IblIrradianceShPass::IblIrradianceShPass(vk::Context& context)
-    : mPipeline(vk::Pipeline::compute(context, "ibl_irradiance_sh.comp")) {}
+    : mPipeline(vk::Pipeline::compute(context, "ibl_irradiance_sh.comp")), mSampler(vk::createSampler(context, {})) {}
 
 BufferId IblIrradianceShPass::add(RenderGraph& graph, const Inputs& in) const {
     struct Data {
@@ -20,15 +20,15 @@ BufferId IblIrradianceShPass::add(RenderGraph& graph, const Inputs& in) const {
     const Data& data = graph.addPass<Data>(
         "ibl_irradiance_sh", PassType::Compute,
         [&](PassBuilder& builder, Data& d) {
-            d.source = builder.read(in.source, Usage::Sampled);
+            d.source = builder.sample(in.source);
             d.coefficients = builder.write(in.coefficients, Usage::StorageWrite, WriteMode::Discard);
         },
-        [this, in](const Data& d, PassContext& ctx) {
-            const uint32_t lod = std::countr_zero(in.sourceFaceSize) - std::countr_zero(in.projectedFaceSize);
-            const shading::IblShPush push{.faceSize = in.projectedFaceSize, .lod = float(lod)};
+        [this, projected = in.projectedFaceSize](const Data& d, PassContext& ctx) {
+            const uint32_t lod = std::countr_zero(ctx.desc(d.source).width) - std::countr_zero(projected);
+            const shading::IblShPush push{.faceSize = projected, .lod = float(lod)};
             const VkDescriptorSet set =
                 vk::DescriptorWriter(mPipeline.program(), 0)
-                    .image("source", ctx.view(d.source), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, in.sourceSampler)
+                    .image("source", ctx.view(d.source), ctx.layout(d.source), mSampler.get())
                     .buffer("ShCoefficients", ctx.buffer(d.coefficients))
                     .commit(ctx.context(), ctx.descriptors());
             dispatchCompute(ctx, mPipeline, set, &push, sizeof(push), 1, 1, 1);

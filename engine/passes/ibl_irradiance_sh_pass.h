@@ -5,6 +5,7 @@
 
 #include "graph/render_graph.h"
 #include "vk/pipeline.h"
+#include "vk/sampler.h"
 
 namespace candela::passes {
 
@@ -13,9 +14,7 @@ public:
     explicit IblIrradianceShPass(vk::Context& context);
 
     struct Inputs {
-        graph::TextureId source;  // float environment cube
-        VkSampler sourceSampler;
-        uint32_t sourceFaceSize;  // of mip 0
+        graph::TextureId source;  // float environment cube (face size a power of two)
         uint32_t projectedFaceSize;  // face size of the mip projected (a power of two ≤ sourceFaceSize)
         graph::BufferId coefficients;  // ≥ kBytes, storage usage; contents discarded
     };
@@ -26,6 +25,7 @@ public:
 
 private:
     vk::Pipeline mPipeline;
+    vk::Sampler mSampler;  // trilinear
 };
 
 }  // namespace candela::passes

@@ -1,6 +1,6 @@
 #include "passes/ibl_prefilter_pass.h"
 
-#include "ibl/ibl_sample_tables.h"
+#include "passes/ibl_sample_tables.h"
 #include "passes/compute.h"
 #include "shared/ibl.h"
 #include "vk/upload.h"
@@ -13,7 +13,9 @@ namespace candela::passes {
 using namespace graph;
 
 IblPrefilterPass::IblPrefilterPass(vk::Context& context)
-    : mContext(context), mPipeline(vk::Pipeline::compute(context, "ibl_filter_cube.comp", {/*kWeightByCosine=*/1})) {}
+    : mContext(context),
+      mPipeline(vk::Pipeline::compute(context, "ibl_filter_cube.comp", {/*kWeightByCosine=*/1})),
+      mSampler(vk::createSampler(context, {.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {}
 
 void IblPrefilterPass::prepare(uint32_t levels, uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips,
                                bool filtered, float lodBias) {
@@ -23,8 +25,8 @@ void IblPrefilterPass::prepare(uint32_t levels, uint32_t samples, uint32_t sourc
     // cost equal and its noise down where small bright sources are spread widest.
     uint32_t count = samples;
     for (uint32_t mip = 1; mip < levels; ++mip, count = std::min(count * 4, kMaxSamples)) {
-        const ibl::SampleTable table =
-            ibl::prefilterSamples(float(mip) / float(levels - 1), count, sourceFaceSize, sourceMips, filtered, lodBias);
+        const SampleTable table =
+            prefilterSamples(float(mip) / float(levels - 1), count, sourceFaceSize, sourceMips, filtered, lodBias);
         mRanges[mip] = {static_cast<uint32_t>(all.size()), static_cast<uint32_t>(table.samples.size()),
                         table.totalWeight > 0.0f ? 1.0f / table.totalWeight : 0.0f};
         all.insert(all.end(), table.samples.begin(), table.samples.end());
@@ -46,19 +48,20 @@ TextureId IblPrefilterPass::add(RenderGraph& graph, const Inputs& in) const {
     const Data& data = graph.addPass<Data>(
         "ibl_prefilter", PassType::Compute,
         [&](PassBuilder& builder, Data& d) {
-            d.source = builder.read(in.source, Usage::Sampled);
+            d.source = builder.sample(in.source);
             d.specular = builder.write(in.specular, Usage::StorageWrite, WriteMode::Preserve);  // keeps mip 0
         },
-        [this, in](const Data& d, PassContext& ctx) {
-            for (uint32_t mip = 1; mip < in.mipViews.size() && mip < mRanges.size(); ++mip) {
-                const shading::IblFilterPush push{.faceSize = std::max(in.sourceFaceSize >> mip, 1u),
+        [this](const Data& d, PassContext& ctx) {
+            const uint32_t sourceFaceSize = ctx.desc(d.source).width;
+            for (uint32_t mip = 1; mip < ctx.desc(d.specular).mipLevels && mip < mRanges.size(); ++mip) {
+                const shading::IblFilterPush push{.faceSize = std::max(sourceFaceSize >> mip, 1u),
                                                   .firstSample = mRanges[mip].first,
                                                   .sampleCount = mRanges[mip].count,
                                                   .inverseWeight = mRanges[mip].inverseWeight};
                 const VkDescriptorSet set =
                     vk::DescriptorWriter(mPipeline.program(), 0)
-                        .image("source", ctx.view(d.source), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, in.sourceSampler)
-                        .image("dstMip", in.mipViews[mip], VK_IMAGE_LAYOUT_GENERAL)
+                        .image("source", ctx.view(d.source), ctx.layout(d.source), mSampler.get())
+                        .image("dstMip", ctx.mipView(d.specular, mip), ctx.layout(d.specular))
                         .buffer("SampleTable", mTable.handle())
                         .commit(ctx.context(), ctx.descriptors());
                 const uint32_t groups = groupCount(push.faceSize, CANDELA_IBL_GROUP);

@@ -2,12 +2,13 @@
 // IBL precompute pass "ibl_prefilter" (compute): mips 1… of the specular cube — mip m is the
 // environment convolved with the GGX lobe of perceptual roughness m / (levels − 1), by GGX
 // importance sampling with filtered importance sampling from the float cube's mips
-// (shaders/ibl_filter_cube.comp weighted by n·l; samples from engine/ibl/ibl_sample_tables.h). Mip 0 (roughness 0,
+// (shaders/ibl_filter_cube.comp weighted by n·l; samples from engine/passes/ibl_sample_tables.h). Mip 0 (roughness 0,
 // the environment itself) is written by the cubemap pass.
 
 #include "graph/render_graph.h"
 #include "vk/buffer.h"
 #include "vk/pipeline.h"
+#include "vk/sampler.h"
 
 #include <vector>
 
@@ -25,10 +26,8 @@ public:
 
     struct Inputs {
         graph::TextureId source;    // float environment cube (sampled with all its mips)
-        VkSampler sourceSampler;    // bilinear within the nearest mip (see IblMaps), clamp
-        uint32_t sourceFaceSize;
-        graph::TextureId specular;  // RGBA16F cube, one mip per level, mip 0 already written
-        std::vector<VkImageView> mipViews;  // storage 2D-array view per specular mip (caller-owned)
+        // RGBA16F cube, one mip per level, mip 0 already written; an imported one needs its mip views bound.
+        graph::TextureId specular;
     };
     static constexpr uint32_t kMaxSamples = 4096;
 
@@ -42,6 +41,7 @@ private:
     };
     vk::Context& mContext;
     vk::Pipeline mPipeline;
+    vk::Sampler mSampler;  // bilinear within the nearest mip: filtered importance sampling picks the mip
     vk::Buffer mTable;
     std::vector<MipRange> mRanges;  // index = mip; mip 0 unused
 };

@@ -22,7 +22,7 @@ TextureId PatternPass::add(RenderGraph& graph, uint32_t width, uint32_t height, 
         },
         [this, params](const Data& d, PassContext& ctx) {
             const VkDescriptorSet set = vk::DescriptorWriter(mPipeline.program(), 0)
-                                            .image("outImage", ctx.view(d.hdr), VK_IMAGE_LAYOUT_GENERAL)
+                                            .image("outImage", ctx.view(d.hdr), ctx.layout(d.hdr))
                                             .commit(ctx.context(), ctx.descriptors());
             mPipeline.bind(ctx.cmd());
             vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, mPipeline.layout(), 0, 1, &set, 0, nullptr);

@@ -25,7 +25,7 @@ BufferId addReadbackPass(RenderGraph& graph, TextureId source, BufferId destinat
             const VkBufferImageCopy region{.bufferOffset = 0,
                                            .imageSubresource = {vk::aspectOf(desc.format), 0, 0, 1},
                                            .imageExtent = {desc.width, desc.height, 1}};
-            vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(d.source), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+            vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(d.source), ctx.layout(d.source),
                                    ctx.buffer(d.destination), 1, &region);
         });
     return data.destination;

@@ -9,7 +9,10 @@
 #include "shader/parameter_registry.h"
 #include "scene/camera.h"
 #include "shared/ibl.h"
-#include "vk/pipeline.h"
+#include "vk/pipeline_cache.h"
+#include "vk/sampler.h"
+
+#include <utility>
 
 namespace candela::passes {
 
@@ -20,9 +23,7 @@ public:
     struct Inputs {
         graph::TextureId hdr;       // RGBA16F, premultiplied, alpha = coverage
         graph::TextureId depth;     // D32 reverse-Z, 0 = nothing drawn
-        graph::TextureId specular;  // specular cube (imported)
-        VkImageView specularView;   // its cube view (caller-owned)
-        VkSampler sampler;          // trilinear
+        graph::TextureId specular;  // specular cube (IblHandles::specular)
         shading::IblParams params;  // skyboxLod: the mip shown
     };
     // Adds the pass; returns the HDR target's new version. The pass object must outlive execution.
@@ -32,7 +33,9 @@ public:
 
 private:
     vk::Context& mContext;
-    vk::Pipeline mPipeline;
+    // Pipelines by (colour format, depth format) of the targets.
+    vk::PipelineCache<std::pair<VkFormat, VkFormat>> mPipelines;
+    vk::Sampler mSampler;  // trilinear
 };
 
 }  // namespace candela::passes

@@ -40,45 +40,33 @@ TonemapPass::TonemapPass(vk::Context& context)
     : mContext(context),
       mSampler(vk::createSampler(context, {.filter = VK_FILTER_NEAREST, .minFilter = VK_FILTER_NEAREST, .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {}
 
-const vk::Pipeline& TonemapPass::pipelineFor(VkFormat format, const std::vector<uint32_t>& specialization) {
-    const auto key = std::make_pair(format, specialization);
-    auto it = mPipelines.find(key);
-    if (it != mPipelines.end()) it->second.refresh(mContext);  // a shader replaced at run time (hot reload)
-    if (it == mPipelines.end())
-        it = mPipelines
-                 .emplace(key, vk::Pipeline::graphics(mContext, "fullscreen.vert", "tonemap.frag",
-                                                      {.colorFormats = {format}, .specialization = specialization}))
-                 .first;
-    return it->second;
-}
-
 TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, const TonemapSettings& settings,
                            shader::ParameterRegistry* parameters) {
     struct Data {
         TextureId hdr;
         TextureId target;
+        const vk::Pipeline* pipeline = nullptr;
+        shading::TonemapParams params{};
     };
-    const VkFormat format = graph.declaration().resources[target.index].texture.format;
-    const vk::Pipeline* pipeline =
-        &pipelineFor(format, {static_cast<uint32_t>(settings.op), isSrgbFormat(format) ? 0u : 1u, settings.dither ? 1u : 0u,
-                              settings.background ? 1u : 0u});
-    shading::TonemapParams params{};
-    params.background = settings.background ? glm::vec4(*settings.background, 1.0f) : glm::vec4(0.0f);
-    params.exposureEv = settings.exposureEv;
-    if (parameters) parameters->apply("tonemap", "Push", pipeline->program().reflection().pushConstants.members, params);
-    const vk::Sampler* sampler = &mSampler;
     const Data& data = graph.addPass<Data>(
         "tonemap", PassType::Graphics,
         [&](PassBuilder& builder, Data& d) {
-            d.hdr = builder.read(hdr, Usage::Sampled, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            d.hdr = builder.sample(hdr);
             d.target = builder.write(target, Usage::ColorAttachment, WriteMode::Discard);
+            const VkFormat format = builder.desc(target).format;
+            const std::vector<uint32_t> specialization{static_cast<uint32_t>(settings.op), isSrgbFormat(format) ? 0u : 1u,
+                                                       settings.dither ? 1u : 0u, settings.background ? 1u : 0u};
+            d.pipeline = &mPipelines.get(mContext, {format, specialization}, [&] {
+                return vk::Pipeline::graphics(mContext, "fullscreen.vert", "tonemap.frag",
+                                              {.colorFormats = {format}, .specialization = specialization});
+            });
+            d.params.background = settings.background ? glm::vec4(*settings.background, 1.0f) : glm::vec4(0.0f);
+            d.params.exposureEv = settings.exposureEv;
+            if (parameters)
+                parameters->apply("tonemap", "Push", d.pipeline->program().reflection().pushConstants.members, d.params);
         },
-        [pipeline, sampler, params](const Data& d, PassContext& ctx) {
-            const VkDescriptorSet set =
-                vk::DescriptorWriter(pipeline->program(), 0)
-                    .image("hdrImage", ctx.view(d.hdr), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, sampler->get())
-                    .commit(ctx.context(), ctx.descriptors());
-            drawFullscreenTriangle(ctx, *pipeline, set, &params, sizeof(params));
+        [sampler = mSampler.get()](const Data& d, PassContext& ctx) {
+            drawFullscreenSampling(ctx, *d.pipeline, "hdrImage", d.hdr, sampler, &d.params, sizeof(d.params));
         });
     return data.target;
 }

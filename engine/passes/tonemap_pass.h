@@ -4,12 +4,11 @@
 
 #include "graph/render_graph.h"
 #include "shader/parameter_registry.h"
-#include "vk/pipeline.h"
+#include "vk/pipeline_cache.h"
 #include "vk/sampler.h"
 
 #include <glm/glm.hpp>
 
-#include <map>
 #include <optional>
 #include <string_view>
 #include <utility>
@@ -42,10 +41,9 @@ public:
                          const TonemapSettings& settings, shader::ParameterRegistry* parameters = nullptr);
 
 private:
-    // Pipelines by target format and specialization (operator, sRGB encode, dither, background).
-    const vk::Pipeline& pipelineFor(VkFormat format, const std::vector<uint32_t>& specialization);
     vk::Context& mContext;
-    std::map<std::pair<VkFormat, std::vector<uint32_t>>, vk::Pipeline> mPipelines;
+    // Pipelines by target format and specialization (operator, sRGB encode, dither, background).
+    vk::PipelineCache<std::pair<VkFormat, std::vector<uint32_t>>> mPipelines;
     vk::Sampler mSampler;
 };
 

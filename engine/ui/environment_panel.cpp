@@ -38,9 +38,8 @@ void drawEnvironmentPanel(Viewer& viewer) {
     ImGui::SameLine();
     ImGui::Checkbox("multiscatter", &look.multiscatter);
     ImGui::SliderFloat("skybox blur", &look.skyboxBlur, 0.0f, 1.0f, "%.2f");
-    if (viewer.lastPrecomputeMs() >= 0.0)
-        ImGui::TextWrapped("last precompute: %.0f ms (frame with it), %.0f ms GPU in its passes", viewer.lastPrecomputeMs(),
-                    viewer.lastPrecomputeGpuMs());
+    if (const PrecomputeTime& last = viewer.renderer().lastPrecompute(); last.frameMs >= 0.0)
+        ImGui::TextWrapped("last precompute: %.0f ms (frame with it), %.0f ms GPU in its passes", last.frameMs, last.gpuMs);
 
     if (!gPendingSet) {
         gPending = settings.iblQuality;

@@ -12,7 +12,7 @@ void drawCameraPanel(Viewer& viewer);     // camera_panel.cpp: position, target,
 void drawStatsPanel(Viewer& viewer);      // stats_panel.cpp: frame time, pass times, draws and triangles
 void drawParameterPanel(Viewer& viewer);  // parameter_panel.cpp: reflected shader parameters of the active passes
 void drawMaterialPanel(Viewer& viewer);   // material_panel.cpp: pick a material, edit its factors
-void drawDebugViewPanel(Viewer& viewer);
-void drawEnvironmentPanel(Viewer& viewer); // environment_panel.cpp: environment, look, quality with measured figures  // debug_view_panel.cpp: material inputs and shading terms alone
+void drawDebugViewPanel(Viewer& viewer);   // debug_view_panel.cpp: material inputs and shading terms alone
+void drawEnvironmentPanel(Viewer& viewer); // environment_panel.cpp: environment, look, quality with measured figures
 
 }  // namespace candela::ui

@@ -387,15 +387,7 @@ bool Viewer::frame() {
         overlay = [this](graph::RenderGraph& graph, graph::TextureId texture) { return mImGuiPass->add(graph, texture); };
     std::optional<CapturedFrame> shot;
     if (mScreenshot && mSwapchain->canReadBack()) shot.emplace();
-    const auto renderStart = std::chrono::steady_clock::now();
     mRenderer->renderToTarget(settings, target, overlay, shot ? &*shot : nullptr);
-    if (mRenderer->lastGraph().findPass("ibl_cubemap")) {
-        // The renderer waited for the precompute frame: its pass times are in.
-        mPrecomputeMs = msBetween(renderStart, std::chrono::steady_clock::now());
-        mPrecomputeGpuMs = 0.0;
-        for (const PassTime& t : mRenderer->completedPassTimes())
-            if (t.name.rfind("ibl_", 0) == 0 && t.gpuMs > 0.0) mPrecomputeGpuMs += t.gpuMs;
-    }
     if (!mSwapchain->present(*image)) mRecreate = true;
     ++mFramesRendered;
     if (mReloadSaved) {

@@ -128,9 +128,6 @@ public:
     // file's save to the first frame drawn with it having completed on the GPU (negative: none yet).
     const ShaderHotReload& hotReload() const { return *mHotReload; }
     double lastReloadLatencyMs() const { return mReloadLatencyMs; }
-    // The last IBL precompute: wall time of its frame and the GPU time of its passes (negative: none).
-    double lastPrecomputeMs() const { return mPrecomputeMs; }
-    double lastPrecomputeGpuMs() const { return mPrecomputeGpuMs; }
     const std::vector<IblReportTable>& iblReports() const { return mIblReports; }
     int& selectedIblReport() { return mSelectedIblReport; }
 
@@ -178,8 +175,6 @@ private:
     uint32_t mSelectedMaterial = 0;
     std::vector<IblReportTable> mIblReports;
     int mSelectedIblReport = 0;
-    double mPrecomputeMs = -1.0;
-    double mPrecomputeGpuMs = -1.0;
     std::optional<glm::vec2> mPressedAt;  // where the left button went down (a click picks)
     std::chrono::steady_clock::time_point mLastFrame;
 };

@@ -10,6 +10,7 @@ namespace candela::vk {
 void Buffer::create(Context& context, const BufferDesc& desc) {
     mContext = &context;
     mSize = desc.size;
+    mUsage = desc.usage;
     const VkBufferCreateInfo info{.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO,
                                   .size = desc.size,
                                   .usage = desc.usage,
@@ -40,6 +41,9 @@ Buffer::Buffer(Context& context, const BufferDesc& desc) {
 Buffer::Buffer(Context& context, const BufferDesc& desc, const ExternalMemory& memory) {
     create(context, desc);
     try {
+        VkMemoryRequirements requirements;
+        vkGetBufferMemoryRequirements(context.device(), mBuffer, &requirements);
+        checkFits(requirements, memory, desc.name);
         VK_CHECK(vkBindBufferMemory(context.device(), mBuffer, memory.memory, memory.offset));
     } catch (...) {
         release();
@@ -53,7 +57,8 @@ Buffer::Buffer(Buffer&& other) noexcept
     : mContext(std::exchange(other.mContext, nullptr)),
       mBuffer(std::exchange(other.mBuffer, VK_NULL_HANDLE)),
       mAllocation(std::exchange(other.mAllocation, {})),
-      mSize(std::exchange(other.mSize, 0)) {}
+      mSize(std::exchange(other.mSize, 0)),
+      mUsage(std::exchange(other.mUsage, 0)) {}
 
 Buffer& Buffer::operator=(Buffer&& other) noexcept {
     if (this != &other) {
@@ -62,6 +67,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
         mBuffer = std::exchange(other.mBuffer, VK_NULL_HANDLE);
         mAllocation = std::exchange(other.mAllocation, {});
         mSize = std::exchange(other.mSize, 0);
+        mUsage = std::exchange(other.mUsage, 0);
     }
     return *this;
 }

@@ -36,6 +36,7 @@ public:
 
     VkBuffer handle() const { return mBuffer; }
     VkDeviceSize size() const { return mSize; }
+    VkBufferUsageFlags usage() const { return mUsage; }
     explicit operator bool() const { return mBuffer != VK_NULL_HANDLE; }
 
     // Host-visible buffers only (Upload/Readback); null otherwise.
@@ -52,6 +53,7 @@ private:
     VkBuffer mBuffer = VK_NULL_HANDLE;
     Allocation mAllocation;
     VkDeviceSize mSize = 0;
+    VkBufferUsageFlags mUsage = 0;
 };
 
 }  // namespace candela::vk

@@ -112,8 +112,54 @@ void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkAcces
     vkCmdPipelineBarrier2(cmd, &dependency);
 }
 
+namespace {
+constexpr VkPipelineStageFlags2 kShaderStages =
+    VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+}  // namespace
+
+ReadScope imageReaders(VkImageUsageFlags usage, VkImageLayout layout) {
+    ReadScope scope;
+    switch (layout) {
+        case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL:
+            if (usage & VK_IMAGE_USAGE_SAMPLED_BIT) scope = {kShaderStages, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+            break;
+        case VK_IMAGE_LAYOUT_GENERAL:
+            if (usage & VK_IMAGE_USAGE_SAMPLED_BIT) scope = {kShaderStages, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+            if (usage & VK_IMAGE_USAGE_STORAGE_BIT)
+                scope = {kShaderStages, scope.access | VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
+            break;
+        case VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL:
+            if (usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT)
+                scope = {VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
+            break;
+        default: break;
+    }
+    if (scope.stages == VK_PIPELINE_STAGE_2_NONE)
+        throw InternalError("no reads of an image with usage " + std::to_string(usage) + " in layout " +
+                            std::to_string(layout) + " to make an upload visible to");
+    return scope;
+}
+
+ReadScope bufferReaders(VkBufferUsageFlags usage) {
+    ReadScope scope;
+    const auto add = [&](VkBufferUsageFlags bit, VkPipelineStageFlags2 stages, VkAccessFlags2 access) {
+        if (!(usage & bit)) return;
+        scope.stages |= stages;
+        scope.access |= access;
+    };
+    add(VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT,
+        VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT);
+    add(VK_BUFFER_USAGE_INDEX_BUFFER_BIT, VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT, VK_ACCESS_2_INDEX_READ_BIT);
+    add(VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+    add(VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, kShaderStages, VK_ACCESS_2_UNIFORM_READ_BIT);
+    add(VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, kShaderStages, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    add(VK_BUFFER_USAGE_TRANSFER_SRC_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    return scope;
+}
+
 void recordMipChain(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkExtent3D baseExtent,
-                    uint32_t baseMip, uint32_t mipLevels, uint32_t layer, VkImageLayout finalLayout) {
+                    uint32_t baseMip, uint32_t mipLevels, uint32_t layer, VkImageLayout finalLayout,
+                    const ReadScope& readers) {
     const auto corner = [&](uint32_t level) {
         return VkOffset3D{static_cast<int32_t>(std::max(1u, baseExtent.width >> level)),
                           static_cast<int32_t>(std::max(1u, baseExtent.height >> level)),
@@ -133,11 +179,11 @@ void recordMipChain(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspec
     }
     // Every mip but the last was a blit source; the last one is still a transfer destination.
     barriers(cmd, {mipBarrier(image, aspect, baseMip, mipLevels - 1 - baseMip, layer, VK_PIPELINE_STAGE_2_BLIT_BIT,
-                              VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                              VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT, finalLayout),
+                              VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readers.stages, readers.access,
+                              finalLayout),
                    mipBarrier(image, aspect, mipLevels - 1, 1, layer, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                              VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                              VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT, finalLayout)});
+                              VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, readers.stages,
+                              readers.access, finalLayout)});
 }
 
 void setViewportAndScissor(VkCommandBuffer cmd, VkExtent2D extent) {

@@ -32,6 +32,9 @@ using PresentSupportFn = std::function<bool(VkInstance instance, VkPhysicalDevic
 struct ContextDesc {
     // Khronos validation layer with synchronization validation. Also on when CANDELA_VALIDATE=1.
     bool validation = false;
+    // With validation: the layer's best-practices checks too (performance warnings such as
+    // barriers wider than they need to be). Also on when CANDELA_BEST_PRACTICES=1.
+    bool bestPractices = false;
     // "" picks the best device; an index or a case-insensitive name substring picks one (--device).
     std::string deviceSelector;
     // Instance extensions a window system needs (e.g. from glfwGetRequiredInstanceExtensions).

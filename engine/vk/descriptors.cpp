@@ -3,7 +3,7 @@
 #include "core/check.h"
 
 #include <algorithm>
-#include <stdexcept>
+
 
 namespace candela::vk {
 
@@ -34,7 +34,7 @@ VkDescriptorSet DescriptorAllocator::allocate(VkDescriptorSetLayout layout) {
         if (result == VK_SUCCESS) return set;
         // A full pool is not an error: move on to the next one (created on demand).
         if (result != VK_ERROR_OUT_OF_POOL_MEMORY && result != VK_ERROR_FRAGMENTED_POOL) VK_CHECK(result);
-        if (++mCurrent > 64) throw std::runtime_error("descriptor set layout does not fit an empty pool");
+        if (++mCurrent > 64) throw InternalError("descriptor set layout does not fit an empty pool");
     }
 }
 
@@ -49,18 +49,18 @@ const shader::DescriptorBinding& DescriptorWriter::find(std::string_view name, b
         const bool isImage = b.type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER || b.type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE ||
                              b.type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE || b.type == VK_DESCRIPTOR_TYPE_SAMPLER;
         if (isImage != imageKind)
-            throw std::logic_error(mProgram->name() + ": binding '" + std::string(name) + "' is not " +
+            throw InternalError(mProgram->name() + ": binding '" + std::string(name) + "' is not " +
                                    (imageKind ? "an image" : "a buffer"));
         return b;
     }
-    throw std::logic_error(mProgram->name() + ": no binding named '" + std::string(name) + "' in set " +
+    throw InternalError(mProgram->name() + ": no binding named '" + std::string(name) + "' in set " +
                            std::to_string(mSet));
 }
 
 DescriptorWriter& DescriptorWriter::image(std::string_view name, VkImageView view, VkImageLayout layout, VkSampler sampler) {
     const shader::DescriptorBinding& b = find(name, true);
     if (b.type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER && !sampler)
-        throw std::logic_error(mProgram->name() + ": binding '" + std::string(name) + "' needs a sampler");
+        throw InternalError(mProgram->name() + ": binding '" + std::string(name) + "' needs a sampler");
     mWrites.push_back({b.binding, b.type, {sampler, view, layout}, {}});
     return *this;
 }
@@ -76,7 +76,7 @@ VkDescriptorSet DescriptorWriter::commit(Context& context, DescriptorAllocator& 
         if (b.set != mSet) continue;
         const bool written = std::any_of(mWrites.begin(), mWrites.end(), [&](const Pending& p) { return p.binding == b.binding; });
         if (!written)
-            throw std::logic_error(mProgram->name() + ": binding '" + b.name + "' (set " + std::to_string(mSet) +
+            throw InternalError(mProgram->name() + ": binding '" + b.name + "' (set " + std::to_string(mSet) +
                                    ", binding " + std::to_string(b.binding) + ") was not written");
     }
     const VkDescriptorSet set = allocator.allocate(mProgram->setLayout(mSet));

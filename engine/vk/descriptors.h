@@ -32,14 +32,14 @@ public:
     // Writes set `set` of `program`'s layout.
     DescriptorWriter(const Program& program, uint32_t set) : mProgram(&program), mSet(set) {}
 
-    // Binds by the GLSL variable name. Throws std::logic_error naming the program if the set has no
+    // Binds by the GLSL variable name. Throws InternalError naming the program if the set has no
     // such binding or its type does not match.
     DescriptorWriter& image(std::string_view name, VkImageView view, VkImageLayout layout,
                             VkSampler sampler = VK_NULL_HANDLE);
     DescriptorWriter& buffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset = 0,
                              VkDeviceSize range = VK_WHOLE_SIZE);
 
-    // Allocates the set and writes it. Throws std::logic_error naming the first binding the layout
+    // Allocates the set and writes it. Throws InternalError naming the first binding the layout
     // declares that was not written.
     VkDescriptorSet commit(Context& context, DescriptorAllocator& allocator) const;
 

@@ -89,6 +89,9 @@ Image::Image(Context& context, const ImageDesc& desc) {
 Image::Image(Context& context, const ImageDesc& desc, const ExternalMemory& memory) {
     create(context, desc);
     try {
+        VkMemoryRequirements requirements;
+        vkGetImageMemoryRequirements(context.device(), mImage, &requirements);
+        checkFits(requirements, memory, desc.name);
         VK_CHECK(vkBindImageMemory(context.device(), mImage, memory.memory, memory.offset));
         if (desc.usage & kViewUsages) mView = createView(defaultViewType(desc), 0, desc.mipLevels, 0, desc.arrayLayers);
     } catch (...) {

@@ -6,6 +6,18 @@
 #include <stdexcept>
 
 namespace candela::vk {
+
+void checkFits(const VkMemoryRequirements& requirements, const ExternalMemory& memory, const char* what) {
+    const bool aligned = requirements.alignment == 0 || memory.offset % requirements.alignment == 0;
+    const bool typeAllowed = (requirements.memoryTypeBits & (1u << memory.memoryType)) != 0;
+    if (requirements.size <= memory.size && aligned && typeAllowed) return;
+    throw InternalError(std::string(what ? what : "unnamed") + " needs " + formatBytes(requirements.size) + " aligned to " +
+                        std::to_string(requirements.alignment) + " in memory-type bits " +
+                        std::to_string(requirements.memoryTypeBits) + ", but was placed in " +
+                        formatBytes(memory.size) + " at offset " + std::to_string(memory.offset) + " of type " +
+                        std::to_string(memory.memoryType));
+}
+
 namespace {
 
 VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) { return (value + alignment - 1) / alignment * alignment; }

@@ -37,11 +37,19 @@ struct Allocation {
     explicit operator bool() const { return memory != VK_NULL_HANDLE; }
 };
 
-// Memory a resource is bound to but does not own (aliased transients of the render graph).
+// Memory a resource is bound to but does not own (aliased transients of the render graph): `size`
+// bytes at `offset` of `memory`, of memory type `memoryType`.
 struct ExternalMemory {
     VkDeviceMemory memory = VK_NULL_HANDLE;
     VkDeviceSize offset = 0;
+    VkDeviceSize size = 0;
+    uint32_t memoryType = 0;
 };
+
+// Checks that `requirements` (queried from the object about to be bound) fit `memory`: enough
+// bytes, the offset aligned, the memory type allowed. Throws InternalError naming `what` otherwise
+// (the placement was planned from other requirements than the object has).
+void checkFits(const VkMemoryRequirements& requirements, const ExternalMemory& memory, const char* what);
 
 struct MemoryStats {
     uint64_t deviceMemoryBytes = 0;  // bytes held in VkDeviceMemory objects (blocks + dedicated)

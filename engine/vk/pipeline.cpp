@@ -4,7 +4,7 @@
 #include "core/log.h"
 #include "shader/shader_library.h"
 
-#include <stdexcept>
+
 
 namespace candela::vk {
 
@@ -195,7 +195,7 @@ void Pipeline::bind(VkCommandBuffer cmd) const { vkCmdBindPipeline(cmd, mBindPoi
 void Pipeline::pushConstants(VkCommandBuffer cmd, const void* data, uint32_t size) const {
     const shader::PushConstantBlock& block = mProgram.reflection().pushConstants;
     if (size != block.size)
-        throw std::logic_error(mProgram.name() + ": push constants of " + std::to_string(size) + " bytes, shader declares " +
+        throw InternalError(mProgram.name() + ": push constants of " + std::to_string(size) + " bytes, shader declares " +
                                std::to_string(block.size));
     vkCmdPushConstants(cmd, mProgram.layout(), block.stages, 0, size, data);
 }

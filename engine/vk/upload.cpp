@@ -18,15 +18,15 @@ VkDeviceSize Uploader::stage(std::span<const std::byte> data) {
 
 void Uploader::buffer(const Buffer& dst, std::span<const std::byte> data, VkDeviceSize offset) {
     if (data.empty()) return;
-    mBufferCopies.push_back({dst.handle(), offset, stage(data), data.size()});
+    mBufferCopies.push_back({dst.handle(), offset, stage(data), data.size(), bufferReaders(dst.usage())});
 }
 
 void Uploader::image(const Image& dst, std::span<const std::byte> data, uint32_t mip, uint32_t layer,
                      VkImageLayout finalLayout, bool generateMips) {
     const ImageDesc& d = dst.desc();
     const VkExtent3D extent{std::max(1u, d.width >> mip), std::max(1u, d.height >> mip), std::max(1u, d.depth >> mip)};
-    mImageCopies.push_back({dst.handle(), dst.aspect(), extent, mip, layer, stage(data), finalLayout, generateMips,
-                            d.mipLevels, {d.width, d.height, d.depth}});
+    mImageCopies.push_back({dst.handle(), dst.aspect(), extent, mip, layer, stage(data), finalLayout,
+                            imageReaders(d.usage, finalLayout), generateMips, d.mipLevels, {d.width, d.height, d.depth}});
 }
 
 void Uploader::submitAndWait() {
@@ -62,17 +62,22 @@ void Uploader::submitAndWait() {
         const ImageCopy& c = *std::find_if(mImageCopies.begin(), mImageCopies.end(),
                                            [&](const ImageCopy& x) { return x.image == image; });
         if (c.generateMips && c.mipLevels > c.mip + 1) {
-            recordMipChain(cmd, c.image, c.aspect, c.baseExtent, c.mip, c.mipLevels, c.layer, c.finalLayout);
+            recordMipChain(cmd, c.image, c.aspect, c.baseExtent, c.mip, c.mipLevels, c.layer, c.finalLayout,
+                           c.readers);
             continue;
         }
         imageBarrier(cmd, image, c.aspect, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                     VK_ACCESS_2_MEMORY_READ_BIT, c.finalLayout);
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, c.readers.stages, c.readers.access, c.finalLayout);
     }
-    if (!mBufferCopies.empty()) {
-        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
+    // One global barrier for the buffers, to every read any of them can serve.
+    ReadScope bufferReads;
+    for (const BufferCopy& c : mBufferCopies) {
+        bufferReads.stages |= c.readers.stages;
+        bufferReads.access |= c.readers.access;
     }
+    if (bufferReads.stages != VK_PIPELINE_STAGE_2_NONE)
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, bufferReads.stages,
+                      bufferReads.access);
     commands.submitAndWait();
     mStaging.clear();
     mBufferCopies.clear();

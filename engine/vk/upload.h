@@ -3,6 +3,7 @@
 // batch (one command buffer, one submit, one wait).
 
 #include "vk/buffer.h"
+#include "vk/commands.h"
 #include "vk/image.h"
 
 #include <cstddef>
@@ -16,11 +17,12 @@ public:
     explicit Uploader(Context& context) : mContext(&context) {}
 
     // Queues a copy of `data` into `dst` at `offset`. dst needs VK_BUFFER_USAGE_TRANSFER_DST_BIT.
+    // After submit the data is visible to every read dst's usage allows (vk::bufferReaders).
     void buffer(const Buffer& dst, std::span<const std::byte> data, VkDeviceSize offset = 0);
     // Queues tightly packed texels for mip `mip`, layer `layer` of `dst` (TRANSFER_DST usage).
     // With `generateMips`, mips 1.. are then filtered down from `mip` by linear blits (dst needs
     // TRANSFER_SRC usage and a format that supports linear blits). After submit the whole image
-    // is in `finalLayout`, visible to every later stage.
+    // is in `finalLayout`, visible to the reads its usage allows there (vk::imageReaders).
     void image(const Image& dst, std::span<const std::byte> data, uint32_t mip, uint32_t layer, VkImageLayout finalLayout,
                bool generateMips = false);
 
@@ -35,6 +37,7 @@ private:
         uint32_t mip, layer;
         VkDeviceSize stagingOffset;
         VkImageLayout finalLayout;
+        ReadScope readers;
         bool generateMips;
         uint32_t mipLevels;
         VkExtent3D baseExtent;
@@ -42,6 +45,7 @@ private:
     struct BufferCopy {
         VkBuffer buffer;
         VkDeviceSize dstOffset, stagingOffset, size;
+        ReadScope readers;
     };
     VkDeviceSize stage(std::span<const std::byte> data);
 

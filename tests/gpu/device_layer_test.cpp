@@ -87,11 +87,11 @@ TEST_F(GpuTest, DescriptorWriterRefusesUnwrittenBindingsAndUnknownNames) {
     try {
         vk::DescriptorWriter(pipeline.program(), 0).commit(context(), allocator);
         FAIL() << "expected a throw";
-    } catch (const std::logic_error& e) {
+    } catch (const InternalError& e) {
         EXPECT_NE(std::string(e.what()).find("'outImage'"), std::string::npos) << e.what();
     }
     EXPECT_THROW(vk::DescriptorWriter(pipeline.program(), 0).image("noSuchImage", VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL),
-                 std::logic_error);
+                 InternalError);
 }
 
 TEST_F(GpuTest, ProgramLayoutComesFromReflection) {

@@ -181,5 +181,26 @@ TEST_F(IblGraphTest, CacheReplacesThePrecomputeOfALaterRunAndACorruptFileIsRecom
     std::filesystem::remove_all(dir);
 }
 
+TEST_F(IblGraphTest, MapsReplacedBetweenFramesAreTheOnesBound) {
+    // The forward and skybox passes resolve the maps through the graph each frame, so replacing
+    // the environment and the maps' size between frames must give exactly the image of a renderer
+    // that only ever saw the new ones — in the frame that computes them and in the next.
+    const scene::Environment dusk = scene::makeProceduralSky(
+        {.width = 64, .height = 32, .sunElevationDegrees = 4.0f, .sunAzimuthDegrees = 200.0f,
+         .zenithRadiance = {0.1f, 0.1f, 0.3f}});
+    RenderSettings first = settings(&mSky);
+    RenderSettings second = settings(&dusk);
+    second.iblQuality.cubeSize = 16;  // new images, not only new contents
+    Renderer switched(context());
+    const CapturedFrame before = switched.capture(first);
+    const CapturedFrame afterSwitch = switched.capture(second);
+    const CapturedFrame nextFrame = switched.capture(second);
+    Renderer fresh(context());
+    const CapturedFrame expected = fresh.capture(second);
+    EXPECT_NE(before.rgba8, expected.rgba8) << "the two environments must look different for this test to mean anything";
+    EXPECT_EQ(afterSwitch.rgba8, expected.rgba8);
+    EXPECT_EQ(nextFrame.rgba8, expected.rgba8);
+}
+
 }  // namespace
 }  // namespace candela::test

@@ -1,6 +1,8 @@
 // Resource exhaustion, simulated with a device-memory budget (ContextDesc::deviceMemoryBudget):
 // an allocation that does not fit names its resource and unwinds cleanly; the IBL maps fall back to
 // a lower resolution; a frame whose transients do not fit fails and the next one still renders.
+#include "gpu_test.h"
+
 #include "core/check.h"
 #include "renderer.h"
 #include "scene/builtin_scenes.h"
@@ -18,7 +20,13 @@ std::unique_ptr<vk::Context> budgetContext(uint64_t mib) {
 }
 
 void expectNoValidationMessages(const vk::Context& context) {
-    for (const vk::ValidationMessage& m : context.validationMessages()) ADD_FAILURE() << "validation: " << m.text;
+    for (const vk::ValidationMessage& m : context.validationMessages()) {
+        // Under a budget the allocator's blocks are an eighth of it (1 MiB here), so a 0.5 MiB image
+        // gets a dedicated allocation on purpose; the best-practices layer wants those ≥ 1 MiB.
+        if (m.text.find("[ UNASSIGNED-BestPractices-vkBindMemory-small-dedicated-allocation ]") != std::string::npos)
+            continue;
+        if (!bestPracticesNotApplicable(m.text)) ADD_FAILURE() << "validation: " << m.text;
+    }
 }
 
 TEST(MemoryBudget, TooSmallForAnythingNamesTheResourceAndLeaksNothing) {

@@ -9,18 +9,6 @@
 namespace candela::graph {
 namespace {
 
-// Runs `fn`, expects a GraphError and returns its message.
-template <class Fn>
-std::string graphError(Fn fn) {
-    try {
-        fn();
-    } catch (const GraphError& error) {
-        return error.what();
-    }
-    ADD_FAILURE() << "expected a GraphError";
-    return {};
-}
-
 TEST(GraphBuilder, WritesIncrementVersionsAndReturnNewHandles) {
     RenderGraph graph;
     TextureId created, first, second, readBack;
@@ -198,6 +186,46 @@ TEST(GraphBuilder, ImportsExportsAndLookups) {
     EXPECT_TRUE(graph.isCompiled());
     EXPECT_EQ(&compiled, &graph.compiled());
     EXPECT_EQ(compiled.order, (std::vector<uint32_t>{0}));
+}
+
+TEST(GraphBuilder, SampleReadsInTheShaderThatSamples) {
+    RenderGraph graph;
+    const TextureId map = graph.importTexture("map", kColor, {});
+    const BufferId lights = graph.importBuffer("lights", {.size = 16}, {});
+    addPass(graph, "draw", PassType::Graphics, [&](PassBuilder& b) { EXPECT_EQ(b.sample(map), map); });
+    addPass(graph, "filter", PassType::Compute, [&](PassBuilder& b) {
+        b.sample(map);
+        EXPECT_EQ(b.desc(map).width, kColor.width);
+        EXPECT_EQ(b.desc(lights).size, 16u);
+    });
+    const GraphDecl& decl = graph.declaration();
+    const AccessDecl& drawn = decl.passes[0].reads[0];
+    EXPECT_EQ(drawn.usage, Usage::Sampled);
+    EXPECT_EQ(drawn.stageOverride, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+    EXPECT_EQ(passAccessState(decl, decl.passes[0], map.index).stages, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+    EXPECT_EQ(passAccessState(decl, decl.passes[1], map.index).stages, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+    const std::string message = graphError([&] {
+        addPass(graph, "bad", PassType::Compute, [&](PassBuilder& b) { b.desc(TextureId{7, 0}); });
+    });
+    EXPECT_NE(message.find("pass 'bad'"), std::string::npos) << message;
+}
+
+TEST(GraphBuilder, TransferPassesOnlyCopy) {
+    RenderGraph graph;
+    const TextureId map = graph.importTexture("map", kColor, {});
+    const std::string message = graphError([&] {
+        addPass(graph, "copy", PassType::Transfer, [&](PassBuilder& b) { b.read(map, Usage::Sampled); });
+    });
+    EXPECT_NE(message.find("pass 'copy' reads 'map' with usage Sampled, but it is a transfer pass"), std::string::npos)
+        << message;
+    EXPECT_FALSE(graphError([&] {
+                     addPass(graph, "clear", PassType::Transfer,
+                             [&](PassBuilder& b) { b.write(map, Usage::StorageWrite, WriteMode::Discard); });
+                 }).empty());
+    addPass(graph, "copy2", PassType::Transfer, [&](PassBuilder& b) {
+        b.read(map, Usage::TransferSrc);
+        b.sideEffect();
+    });
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 
 #include "graph/render_graph.h"
 
+#include <gtest/gtest.h>
+
 #include <string>
 #include <vector>
 
@@ -22,6 +24,18 @@ inline std::string indexed(const char* prefix, int index) {
     std::string name = prefix;
     name += std::to_string(index);
     return name;
+}
+
+// Runs `fn`, expects a GraphError and returns its message.
+template <class Fn>
+std::string graphError(Fn fn) {
+    try {
+        fn();
+    } catch (const GraphError& error) {
+        return error.what();
+    }
+    ADD_FAILURE() << "expected a GraphError";
+    return {};
 }
 
 inline const TextureDesc kColor{.width = 64, .height = 64, .format = VK_FORMAT_R8G8B8A8_UNORM};

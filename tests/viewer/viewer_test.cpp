@@ -235,7 +235,8 @@ TEST_F(ViewerTest, EnvironmentPanelActions) {
     mViewer->useProceduralSky();
     frames(1);
     EXPECT_TRUE(mViewer->renderer().lastGraph().findPass("ibl_cubemap").has_value());
-    EXPECT_GT(mViewer->lastPrecomputeMs(), 0.0);
+    EXPECT_GT(mViewer->renderer().lastPrecompute().frameMs, 0.0);
+    EXPECT_GT(mViewer->renderer().lastPrecompute().gpuMs, 0.0);
     EXPECT_TRUE(ran("skybox"));
     frames(1);
     EXPECT_FALSE(mViewer->renderer().lastGraph().findPass("ibl_cubemap").has_value());

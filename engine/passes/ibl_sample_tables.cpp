@@ -1,8 +1,8 @@
-#include "ibl/ibl_sample_tables.h"
+#include "passes/ibl_sample_tables.h"
 
 #include "shared/ibl.h"
 
-namespace candela::ibl {
+namespace candela::passes {
 
 using namespace shading;
 
@@ -41,4 +41,4 @@ SampleTable irradianceSamples(uint32_t count, uint32_t sourceFaceSize, uint32_t 
     return table;
 }
 
-}  // namespace candela::ibl
+}  // namespace candela::passes

@@ -1,7 +1,8 @@
 #pragma once
-// Sample tables of the IBL filtering passes, built on the CPU once per setting and read by every
-// texel: for each sample its direction in the texel's tangent frame (z = the texel's direction) and
-// the source mip it reads (filtered importance sampling), so the shaders only rotate, fetch and sum.
+// Sample tables of the IBL filtering passes (ibl_prefilter, ibl_irradiance_cube), built on the CPU
+// once per setting and read by every texel: for each sample its direction in the texel's tangent
+// frame (z = the texel's direction) and the source mip it reads (filtered importance sampling), so
+// the shaders only rotate, fetch and sum.
 // Uses the sampling functions of shaders/shared/ibl.h, so CPU and GPU agree by construction. Pure.
 
 #include <glm/glm.hpp>
@@ -9,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace candela::ibl {
+namespace candela::passes {
 
 struct SampleTable {
     std::vector<glm::vec4> samples;  // xyz: unit direction in tangent space (z ≥ 0), w: source lod
@@ -27,4 +28,4 @@ SampleTable prefilterSamples(float roughness, uint32_t count, uint32_t sourceFac
 SampleTable irradianceSamples(uint32_t count, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered,
                               float lodBias);
 
-}  // namespace candela::ibl
+}  // namespace candela::passes
