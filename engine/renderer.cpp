@@ -224,9 +224,11 @@ std::chrono::steady_clock::time_point Renderer::submit(Frame frame, const Render
         mFrames.submit({{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
                          .semaphore = present->acquired,
                          .stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT}},
+                       // Signalled when all the frame's work, the transition to PRESENT_SRC included,
+                       // has completed (at the end of the batch, so it stalls nothing).
                        {{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
                          .semaphore = present->rendered,
-                         .stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT}});
+                         .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT}});
     else
         mFrames.submit();
     mLast = std::move(frame);
@@ -266,8 +268,8 @@ FrameTiming Renderer::renderCalibration(uint32_t width, uint32_t height) {
 }
 
 FrameTiming Renderer::precomputeIbl(const scene::Environment& environment, const ibl::IblQuality& quality) {
+    Frame frame;  // started now: the frame time includes the environment's upload, as beginFrame's does
     useEnvironment(&environment, quality, {}, /*force=*/true);
-    Frame frame;
     frame.ibl = true;
     mIbl->addToGraph(*frame.graph, frame.imports);
     frame.precomputeEnd = static_cast<uint32_t>(frame.graph->declaration().passes.size());
@@ -330,7 +332,9 @@ void Renderer::renderToTarget(const RenderSettings& settings, const PresentTarge
     if (screenshot) passes::addReadbackPass(*frame.graph, output, importReadback(frame, bytes));
     const bool ibl = frame.ibl;
     submit(std::move(frame), settings, &target);
-    // The IBL maps learn that a precompute completed before the next frame is built.
+    // A frame with image-based lighting is waited for, so that the maps learn that a precompute
+    // completed before the next frame is built. (Only frames that ran one need it; waiting for
+    // those alone would keep frames in flight with an environment — not changed here.)
     if (!screenshot && !ibl) return;
     mFrames.waitCurrent();
     finishFrame();
@@ -405,6 +409,20 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
         tonemap.dither = false;
     }
     frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemap, &mParameters);
+
+    // What --explain says of this frame, taken now: the forward pass and the maps describe their last add.
+    if (mUploadedDefaultLights)
+        frame.notes.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
+    for (const std::string& line : mForward.explanation()) frame.notes.push_back(line);
+    for (const std::string& line : mIbl->explanation()) frame.notes.push_back(line);
+    if (frame.debugView != passes::DebugView::None)
+        frame.notes.push_back(std::string("debug view: ") + passes::debugViewName(frame.debugView) +
+                              (passes::debugViewIsLight(frame.debugView) ? " (tonemapped as the image is)"
+                                                                         : " (shown as data: linear tonemap at exposure 0)"));
+    if (frame.ibl && !frame.skybox)
+        frame.notes.emplace_back(frame.debugView != passes::DebugView::None
+                                     ? "left out: skybox (debug view)"
+                                     : "left out: skybox (the background is not the environment)");
 }
 
 scene::ViewSetup Renderer::resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect) {
@@ -440,20 +458,7 @@ std::vector<std::string> Renderer::explain() const {
         if (info.cullReason != graph::CullReason::None)
             lines.push_back("left out: pass '" + decl.passes[p].name + "' (" + info.cullDetail + ")");
     }
-    if (mUploaded && mLast.graph->findPass("forward")) {
-        if (mUploadedDefaultLights)
-            lines.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
-        for (const std::string& line : mForward.explanation()) lines.push_back(line);
-        for (const std::string& line : mIbl->explanation()) lines.push_back(line);
-        if (mLast.debugView != passes::DebugView::None)
-            lines.push_back(std::string("debug view: ") + passes::debugViewName(mLast.debugView) +
-                            (passes::debugViewIsLight(mLast.debugView) ? " (tonemapped as the image is)"
-                                                                       : " (shown as data: linear tonemap at exposure 0)"));
-        if (mLast.ibl && !mLast.skybox)
-            lines.emplace_back(mLast.debugView != passes::DebugView::None
-                                   ? "left out: skybox (debug view)"
-                                   : "left out: skybox (the background is not the environment)");
-    }
+    lines.insert(lines.end(), mLast.notes.begin(), mLast.notes.end());
     return lines;
 }
 

@@ -121,9 +121,10 @@ struct PrecomputeTime {
 };
 
 // One frame as built: its graph with the Vulkan objects bound to the imported resources, the
-// handles of its results and what it scheduled. Each entry point builds one (Renderer's
-// beginFrame), adds its ending (readback, overlay, export) and submits it; the renderer then
-// keeps it as the last frame, for export, --explain and finishing the IBL precompute.
+// handles of its results and what it scheduled. The scene and pattern entry points build one with
+// Renderer's beginFrame (precomputeIbl and renderCalibration declare their few passes into a fresh
+// one), add their ending (readback, overlay, export) and submit it; the renderer then keeps it as
+// the last frame, for export, --explain and finishing the IBL precompute.
 struct Frame {
     std::unique_ptr<graph::RenderGraph> graph = std::make_unique<graph::RenderGraph>();
     graph::ImportBindings imports;
@@ -134,6 +135,8 @@ struct Frame {
     passes::DebugView debugView = passes::DebugView::None;
     // The IBL precompute passes added: declared pass indices [precomputeBegin, precomputeEnd).
     uint32_t precomputeBegin = 0, precomputeEnd = 0;
+    // What --explain says of the scene (variants, lights, IBL, what was left out), besides culled passes.
+    std::vector<std::string> notes;
     std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 };
 
@@ -155,9 +158,11 @@ public:
     // output of the graph, as a swapchain image would be. Waits for the GPU.
     FrameTiming renderFrame(const RenderSettings& settings);
     // Renders one frame of the scene into `target` (settings.width × height must be its size) and
-    // submits it without waiting for the GPU: up to framesInFlight frames are in flight, and the
-    // caller presents. With `screenshot`, the finished image (overlay included) is also read back
-    // into it as sRGB RGBA8 (this waits for the frame). Throws UserError as capture() does.
+    // submits it; the caller presents. Without an environment it does not wait for the GPU (up to
+    // framesInFlight frames are in flight); a frame with image-based lighting is waited for, so the
+    // maps learn of a completed precompute. With `screenshot`, the finished image (overlay
+    // included) is also read back into it as sRGB RGBA8 (this waits for the frame). Throws
+    // UserError as capture() does.
     void renderToTarget(const RenderSettings& settings, const PresentTarget& target, const OverlayFn& overlay,
                         CapturedFrame* screenshot = nullptr);
     // Per-pass GPU times of the latest frame known to be complete, in execution order.

@@ -53,10 +53,14 @@ VkImageView PassContext::mipView(TextureId texture, uint32_t mip) const {
             view = views[mip];
         }
     }
-    if (view == VK_NULL_HANDLE)
+    if (view == VK_NULL_HANDLE) {
+        const bool inRange = mip < resource.texture.mipLevels;
         throw GraphError(std::string("pass '") + passName() + "' asks for mip " + std::to_string(mip) + " of '" +
                          resource.name + "', which has " + std::to_string(resource.texture.mipLevels) + " mips" +
-                         (resource.imported && mip < resource.texture.mipLevels ? " but no view of it was bound" : ""));
+                         (!inRange ? ""
+                          : resource.imported ? " but no view of it was bound"
+                                              : " but no per-mip views (transients get them with storage usage)"));
+    }
     return view;
 }
 

@@ -67,7 +67,8 @@ public:
     // The default view (all mips and layers; a cube view for cube maps).
     VkImageView view(TextureId texture) const;
     // A view of mip `mip` alone, all layers (2D array for arrays and cubes), for storage writes of
-    // one mip. Throws GraphError if the texture has no such mip (or, imported, none was bound).
+    // one mip. Throws GraphError if the texture has no such mip or no view of it: imported textures
+    // have the ones bound with them, transients one per mip when they have storage usage.
     VkImageView mipView(TextureId texture, uint32_t mip) const;
     // The layout the texture is in during this pass (what a descriptor of it must name).
     VkImageLayout layout(TextureId texture) const;

@@ -146,11 +146,9 @@ void TransientPool::realize(const GraphDecl& decl, const CompiledGraph& compiled
         const ResourceDecl& d = decl.resources[r];
         if (d.kind == ResourceKind::Texture) {
             mImages[r] = vk::Image(*mContext, imageDescOf(decl, r), memory);
-            const bool viewable = mImages[r].view() != VK_NULL_HANDLE;
-            const bool layered = d.texture.arrayLayers > 1 || d.texture.cube;
-            for (uint32_t mip = 0; viewable && mip < d.texture.mipLevels; ++mip)
-                mMipViews[r].push_back(mImages[r].createView(layered ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D,
-                                                             mip, 1, 0, d.texture.arrayLayers));
+            // Per-mip views serve storage writes of one mip at a time (PassContext::mipView).
+            if ((imageUsageOf(decl, r) & VK_IMAGE_USAGE_STORAGE_BIT) && d.texture.depth == 1)
+                mMipViews[r] = mImages[r].createMipViews();
         } else
             mBuffers[r] = vk::Buffer(*mContext, {.size = d.buffer.size, .usage = bufferUsageOf(decl, r), .name = d.name.c_str()},
                                      memory);

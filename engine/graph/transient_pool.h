@@ -33,7 +33,8 @@ public:
 
     VkImage image(uint32_t resource) const { return mImages.at(resource).handle(); }
     VkImageView view(uint32_t resource) const { return mImages.at(resource).view(); }
-    // A view of one mip, all layers (see PassContext::mipView); null if the image has no such mip.
+    // A view of one mip, all layers (see PassContext::mipView); null if the image has no such mip or
+    // no per-mip views (made for 2D transients with storage usage).
     VkImageView mipView(uint32_t resource, uint32_t mip) const;
     VkBuffer buffer(uint32_t resource) const { return mBuffers.at(resource).handle(); }
 

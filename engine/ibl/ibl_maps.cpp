@@ -36,14 +36,6 @@ TextureDesc graphDesc(const vk::ImageDesc& d) {
             .format = d.format, .cube = d.cube};
 }
 
-// A 2D-array view of each mip of a cube (all 6 layers), for storage writes.
-std::vector<vk::ImageView> mipViews(const vk::Image& cube) {
-    std::vector<vk::ImageView> views;
-    for (uint32_t m = 0; m < cube.desc().mipLevels; ++m)
-        views.push_back(cube.createView(VK_IMAGE_VIEW_TYPE_2D_ARRAY, m, 1, 0, 6));
-    return views;
-}
-
 // The environment's RGB texels as RGBA (alpha 1), the layout of the RGBA32F upload.
 std::vector<float> rgbaTexels(const scene::Environment& env) {
     std::vector<float> rgba(env.texelCount() * 4, 1.0f);
@@ -104,7 +96,7 @@ void IblMaps::createMaps(const IblQuality& q) {
         if (target.image && target.image.desc().width == size && target.image.desc().mipLevels == mips) return;
         target.image = vk::Image(mContext, {.width = size, .height = size, .mipLevels = mips, .arrayLayers = 6,
                                             .format = kSpecularFormat, .usage = usage, .cube = true, .name = name});
-        target.mipViews = mipViews(target.image);
+        target.mipViews = target.image.createMipViews();
     };
     makeCube(mSpecular, q.cubeSize, q.levels(), "ibl_specular");
     if (q.irradiance == IrradianceMode::Cube) {
@@ -141,7 +133,7 @@ void IblMaps::createPrecomputeInputs(const scene::Environment& env) {
                                             .format = kFloatCubeFormat,
                                             .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
                                             .cube = true, .name = "ibl_float_cube"});
-    mFloatCube.mipViews = mipViews(mFloatCube.image);
+    mFloatCube.mipViews = mFloatCube.image.createMipViews();
 }
 
 void IblMaps::ensurePasses() {

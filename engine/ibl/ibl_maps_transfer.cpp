@@ -82,7 +82,7 @@ std::vector<CachedImage> IblMaps::readBack() {
         vk::OneShotCommands commands(mContext);
         VkCommandBuffer cmd = commands.begin();
         const VkBufferCopy region{0, 0, mSh.size()};
-        vk::memoryBarrier(cmd, kRestState.stages, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
+        vk::memoryBarrier(cmd, kShRestState.stages, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
                           VK_ACCESS_2_TRANSFER_READ_BIT);
         vkCmdCopyBuffer(cmd, mSh.handle(), staging.handle(), 1, &region);
         vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,

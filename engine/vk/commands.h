@@ -30,7 +30,8 @@ struct ReadScope {
 };
 // The reads an image with `usage` can see in `layout`: shader sampling (vertex, fragment and
 // compute shaders) in SHADER_READ_ONLY_OPTIMAL; shader sampling and storage reads in GENERAL;
-// copies and blits in TRANSFER_SRC_OPTIMAL. Throws InternalError for another layout.
+// copies and blits in TRANSFER_SRC_OPTIMAL. Throws InternalError when the usage allows no read in
+// that layout (or the layout is another).
 ReadScope imageReaders(VkImageUsageFlags usage, VkImageLayout layout);
 // The reads a buffer with `usage` can serve: vertex and index fetch, indirect arguments, uniform
 // and storage reads in vertex, fragment and compute shaders, copy sources.

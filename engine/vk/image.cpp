@@ -121,6 +121,14 @@ Image& Image::operator=(Image&& other) noexcept {
     return *this;
 }
 
+std::vector<ImageView> Image::createMipViews() const {
+    const bool layered = mDesc.arrayLayers > 1 || mDesc.cube;
+    std::vector<ImageView> views;
+    for (uint32_t mip = 0; mip < mDesc.mipLevels; ++mip)
+        views.push_back(createView(layered ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D, mip, 1, 0, mDesc.arrayLayers));
+    return views;
+}
+
 ImageView Image::createView(VkImageViewType type, uint32_t baseMip, uint32_t mipCount, uint32_t baseLayer,
                             uint32_t layerCount) const {
     const VkImageViewCreateInfo info{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,

@@ -9,6 +9,7 @@
 #include <vulkan/vulkan_core.h>
 
 #include <cstdint>
+#include <vector>
 
 namespace candela::vk {
 
@@ -59,6 +60,9 @@ public:
     // A view of mips [baseMip, baseMip + mipCount) and layers [baseLayer, baseLayer + layerCount).
     ImageView createView(VkImageViewType type, uint32_t baseMip, uint32_t mipCount, uint32_t baseLayer,
                          uint32_t layerCount) const;
+    // A view of each mip alone with all its layers — a 2D array for layered images (cubes too), else
+    // 2D — as storage writes of one mip at a time need. Precondition: a 2D image (depth 1).
+    std::vector<ImageView> createMipViews() const;
 
 private:
     void create(Context& context, const ImageDesc& desc);

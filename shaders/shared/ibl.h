@@ -43,7 +43,7 @@ struct IblDownsamplePush {
 };
 
 // ibl_filter_cube.comp (the prefilter: one dispatch per mip; the irradiance cube): sample table entries
-// [firstSample, firstSample + sampleCount) of engine/ibl/ibl_sample_tables.h.
+// [firstSample, firstSample + sampleCount) of engine/passes/ibl_sample_tables.h.
 struct IblFilterPush {
     uint faceSize;        // of the mip written
     uint firstSample;
