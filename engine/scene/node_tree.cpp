@@ -1,0 +1,64 @@
+#include "scene/node_tree.h"
+
+#include "core/check.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+
+namespace candela::scene {
+
+glm::dmat4 NodeTransform::local() const {
+    if (matrix) return *matrix;
+    glm::dmat4 m = glm::translate(glm::dmat4(1.0), translation);
+    m *= glm::mat4_cast(rotation);
+    return glm::scale(m, scale);
+}
+
+std::vector<uint32_t> dependentNodes(const std::vector<SceneNode>& nodes, std::span<const uint32_t> animated) {
+    std::vector<uint8_t> dirty(nodes.size(), 0);
+    for (uint32_t node : animated)
+        if (node < nodes.size()) dirty[node] = 1;
+    std::vector<uint32_t> order;
+    // Parents come first, so one ascending pass sees a parent's mark before its children.
+    for (uint32_t i = 0; i < nodes.size(); ++i) {
+        const int32_t parent = nodes[i].parent;
+        if (parent >= 0 && dirty[size_t(parent)]) dirty[i] = 1;
+        if (dirty[i]) order.push_back(i);
+    }
+    return order;
+}
+
+void updateWorldTransforms(std::vector<SceneNode>& nodes, std::span<const uint32_t> order) {
+    for (uint32_t i : order) {
+        SceneNode& node = nodes[i];
+        const glm::dmat4 local = node.transform.local();
+        node.world = node.parent >= 0 ? nodes[size_t(node.parent)].world * local : local;
+    }
+}
+
+void applyAnimation(const Animation& animation, double time, std::vector<SceneNode>& nodes) {
+    float value[4];
+    for (const AnimationChannel& channel : animation.channels) {
+        const AnimationSampler& sampler = animation.samplers[channel.sampler];
+        SceneNode& node = nodes[channel.node];
+        const size_t room = channel.property == AnimatedProperty::Weights ? node.weights.size() : 4;
+        if ((channel.property == AnimatedProperty::Weights && sampler.width != room) || sampler.width > room)
+            throw InternalError("animation '" + animation.name + "': a channel's " + std::to_string(sampler.width) +
+                                " values do not fit node '" + node.name + "'");
+        if (channel.property == AnimatedProperty::Weights) {
+            evaluateSampler(sampler, channel.property, time, node.weights);
+            continue;
+        }
+        evaluateSampler(sampler, channel.property, time, std::span<float>(value, sampler.width));
+        NodeTransform& t = node.transform;
+        switch (channel.property) {
+            case AnimatedProperty::Translation: t.translation = glm::dvec3(value[0], value[1], value[2]); break;
+            case AnimatedProperty::Rotation: t.rotation = glm::dquat(value[3], value[0], value[1], value[2]); break;
+            case AnimatedProperty::Scale: t.scale = glm::dvec3(value[0], value[1], value[2]); break;
+            case AnimatedProperty::Weights: break;
+        }
+    }
+}
+
+}  // namespace candela::scene
