@@ -23,31 +23,32 @@ bool allFinite(const std::vector<double>& values) {
     return true;
 }
 
-glm::dmat4 localTransform(const LoadContext& ctx, const tinygltf::Node& node, const std::string& what) {
+NodeTransform localTransform(const LoadContext& ctx, const tinygltf::Node& node, const std::string& what) {
+    NodeTransform t;
     if (!node.matrix.empty()) {
         if (node.matrix.size() != 16) ctx.fail(what + ": matrix must have 16 numbers");
         if (!allFinite(node.matrix)) ctx.fail(what + ": matrix is not finite");
-        return glm::make_mat4(node.matrix.data());  // glTF matrices are column-major, as GLM's
+        t.matrix = glm::make_mat4(node.matrix.data());  // glTF matrices are column-major, as GLM's
+        return t;
     }
-    glm::dmat4 m(1.0);
     if (!allFinite(node.translation) || !allFinite(node.rotation) || !allFinite(node.scale))
         ctx.fail(what + ": transform is not finite");
     if (!node.translation.empty()) {
         if (node.translation.size() != 3) ctx.fail(what + ": translation must have 3 numbers");
-        m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+        t.translation = glm::dvec3(node.translation[0], node.translation[1], node.translation[2]);
     }
     if (!node.rotation.empty()) {
         if (node.rotation.size() != 4) ctx.fail(what + ": rotation must have 4 numbers");
-        // glTF stores quaternions as x, y, z, w.
-        glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+        // glTF stores quaternions as x, y, z, w; a zero quaternion is read as no rotation.
+        const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
         const double length = glm::length(q);
-        if (length > 0.0) m *= glm::mat4_cast(q / length);
+        if (length > 0.0) t.rotation = q / length;
     }
     if (!node.scale.empty()) {
         if (node.scale.size() != 3) ctx.fail(what + ": scale must have 3 numbers");
-        m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+        t.scale = glm::dvec3(node.scale[0], node.scale[1], node.scale[2]);
     }
-    return m;
+    return t;
 }
 
 Aabb transformBounds(const Aabb& local, const glm::mat4& world) {
@@ -82,11 +83,11 @@ public:
         std::vector<uint8_t> visited(count, 0), onPath(count, 0);
         struct Item {
             int node;
-            glm::dmat4 parent;
+            int32_t parent;  // index into Scene::nodes; -1 for a root
             bool exit;
         };
         std::vector<Item> stack;
-        for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, glm::dmat4(1.0), false});
+        for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, -1, false});
         while (!stack.empty()) {
             const Item item = stack.back();
             stack.pop_back();
@@ -101,20 +102,28 @@ public:
             if (visited[size_t(item.node)])
                 mCtx.fail(what + ": reached twice (a node must have at most one parent and appear once in the scene)");
             visited[size_t(item.node)] = onPath[size_t(item.node)] = 1;
-            const glm::dmat4 world = item.parent * localTransform(mCtx, node, what);
+            // Depth-first: the parent is already in Scene::nodes, before this node.
+            SceneNode sceneNode{.name = node.name, .source = item.node, .parent = item.parent,
+                                .transform = localTransform(mCtx, node, what)};
+            const glm::dmat4 local = sceneNode.transform.local();
+            sceneNode.world = item.parent >= 0 ? mScene.nodes[size_t(item.parent)].world * local : local;
             for (int c = 0; c < 4; ++c)
-                for (int r = 0; r < 4; ++r) toFloat(mCtx, world[c][r], what + ": world transform");
-            visit(node, what, world);
-            stack.push_back({item.node, glm::dmat4(1.0), true});
-            for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world, false});
+                for (int r = 0; r < 4; ++r) toFloat(mCtx, sceneNode.world[c][r], what + ": world transform");
+            const int32_t index = int32_t(mScene.nodes.size());
+            mScene.nodes.push_back(std::move(sceneNode));
+            visit(node, what, index);
+            stack.push_back({item.node, -1, true});
+            for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, index, false});
         }
     }
 
 private:
-    void visit(const tinygltf::Node& node, const std::string& what, const glm::dmat4& world) {
-        if (node.mesh >= 0) addMesh(node.mesh, what, world);
-        if (node.camera >= 0) addCamera(node, what, world);
-        if (auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end()) addLight(it->second, what, world);
+    void visit(const tinygltf::Node& node, const std::string& what, int32_t sceneNode) {
+        const glm::dmat4 world = mScene.nodes[size_t(sceneNode)].world;  // a copy: the vector grows later
+        if (node.mesh >= 0) addMesh(node.mesh, what, world, sceneNode);
+        if (node.camera >= 0) addCamera(node, what, world, sceneNode);
+        if (auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end())
+            addLight(it->second, what, world, sceneNode);
     }
 
     uint32_t materialIndex(int material, const std::string& what) {
@@ -129,7 +138,7 @@ private:
         return uint32_t(mDefaultMaterial);
     }
 
-    void addMesh(int meshIndex, const std::string& what, const glm::dmat4& world) {
+    void addMesh(int meshIndex, const std::string& what, const glm::dmat4& world, int32_t sceneNode) {
         if (size_t(meshIndex) >= mModel.meshes.size()) mCtx.fail(what + ": mesh " + std::to_string(meshIndex) + " does not exist");
         const glm::mat4 worldF(world);
         // A zero scale on any axis (here or inherited) flattens the mesh to nothing visible and
@@ -153,17 +162,19 @@ private:
                       .material = material,
                       .world = worldF,
                       .flipWinding = flip,
-                      .bounds = transformBounds(geometry.bounds, worldF)};
+                      .bounds = transformBounds(geometry.bounds, worldF),
+                      .node = sceneNode};
             mScene.bounds.extend(draw.bounds);
             mScene.draws.push_back(draw);
         }
     }
 
-    void addCamera(const tinygltf::Node& node, const std::string& what, const glm::dmat4& world) {
+    void addCamera(const tinygltf::Node& node, const std::string& what, const glm::dmat4& world, int32_t sceneNode) {
         if (size_t(node.camera) >= mModel.cameras.size()) mCtx.fail(what + ": camera " + std::to_string(node.camera) + " does not exist");
         const tinygltf::Camera& source = mModel.cameras[size_t(node.camera)];
         const std::string cameraWhat = label("camera", node.camera, source.name);
         Camera camera;
+        camera.node = sceneNode;
         camera.name = !source.name.empty() ? source.name : !node.name.empty() ? node.name : "camera " + std::to_string(node.camera);
         if (!rigid(world, camera.world)) return mCtx.warn(cameraWhat + ": degenerate node transform, camera skipped");
         bool valid = false;
@@ -195,7 +206,7 @@ private:
         mScene.cameras.push_back(camera);
     }
 
-    void addLight(const tinygltf::Value& extension, const std::string& what, const glm::dmat4& world) {
+    void addLight(const tinygltf::Value& extension, const std::string& what, const glm::dmat4& world, int32_t sceneNode) {
         const tinygltf::Value& index = extension.Has("light") ? extension.Get("light") : tinygltf::Value();
         const double i = index.IsNumber() ? index.GetNumberAsDouble() : -1.0;
         if (!(i >= 0.0 && i < double(mModel.lights.size()) && i == std::floor(i)))
@@ -203,6 +214,7 @@ private:
         const tinygltf::Light& source = mModel.lights[size_t(i)];
         const std::string lightWhat = label("light", int(i), source.name);
         Light light;
+        light.node = sceneNode;
         if (source.type == "directional") light.type = LightType::Directional;
         else if (source.type == "point") light.type = LightType::Point;
         else if (source.type == "spot") light.type = LightType::Spot;

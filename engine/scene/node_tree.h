@@ -34,6 +34,7 @@ struct NodeTransform {
 
 struct SceneNode {
     std::string name;
+    int32_t source = -1;  // the glTF node it was loaded from (animation channels name those)
     int32_t parent = -1;  // index of the parent node, always smaller than this node's; -1 for a root
     NodeTransform transform;
     glm::dmat4 world{1.0};      // parent's world · local, kept current by updateWorldTransforms

@@ -4,6 +4,8 @@
 // Conventions follow glTF 2.0: right-handed, +Y up, metres, linear colour factors, counter-
 // clockwise front faces.
 
+#include "scene/node_tree.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -104,6 +106,7 @@ struct Draw {
     glm::mat4 world{1.0f};
     bool flipWinding = false;  // det(world) < 0: the front face is clockwise
     Aabb bounds;               // world space
+    int32_t node = -1;         // index into Scene::nodes (-1: built-in scenes, which have no nodes)
 };
 
 enum class LightType : uint8_t { Directional, Point, Spot };
@@ -118,6 +121,7 @@ struct Light {
     float outerConeAngle = 0.7853982f;  // π/4
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, 0.0f, -1.0f};  // unit, the way the light shines
+    int32_t node = -1;  // index into Scene::nodes (-1: not from a node)
 };
 
 struct Camera {
@@ -129,6 +133,7 @@ struct Camera {
     float zfar = 0.0f;         // 0: infinite
     float xmag = 1.0f, ymag = 1.0f;  // orthographic half extents
     glm::mat4 world{1.0f};     // camera-to-world (looks down its local −Z)
+    int32_t node = -1;         // index into Scene::nodes (-1: not from a node)
 };
 
 struct Scene {
@@ -141,6 +146,10 @@ struct Scene {
     std::vector<Sampler> samplers;
     std::vector<Light> lights;
     std::vector<Camera> cameras;
+    // The loaded scene's node hierarchy, depth-first (a parent before its children), with the
+    // world transforms the draws, lights and cameras above were placed with. Empty for built-in
+    // scenes. Kept for animation (scene/node_tree.h), which is not played yet.
+    std::vector<SceneNode> nodes;
     Aabb bounds;  // world space, over all draws
     std::vector<std::string> warnings;  // non-fatal problems met while loading
 };

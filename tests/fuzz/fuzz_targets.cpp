@@ -59,6 +59,13 @@ void checkScene(const scene::Scene& s) {
         if (d.indexCount % 3 != 0) violated("draw index count not a multiple of 3");
         if (d.material >= s.materials.size()) violated("draw material out of range");
         if (!finite(d.world)) violated("draw transform not finite");
+        if (d.node >= int32_t(s.nodes.size())) violated("draw node out of range");
+    }
+    for (size_t i = 0; i < s.nodes.size(); ++i) {
+        if (s.nodes[i].parent >= int32_t(i)) violated("node " + std::to_string(i) + " does not come after its parent");
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                if (!std::isfinite(s.nodes[i].world[c][r])) violated("node " + std::to_string(i) + " world transform not finite");
     }
     for (size_t i = 0; i < s.materials.size(); ++i) {
         const scene::Material& m = s.materials[i];

@@ -427,5 +427,38 @@ TEST(GltfModels, SpecGlossVsMetalRoughRequiresAnUnsupportedExtension) {
     EXPECT_EQ(loadError(path), path.string() + ": requires unsupported extension KHR_materials_pbrSpecularGlossiness");
 }
 
+TEST(GltfModels, NodesAreKeptParentsFirstWithTheTransformsTheDrawsWerePlacedWith) {
+    REQUIRE_MODELS();
+    for (const fs::path& path : {model("CesiumMilkTruck", "glTF-Binary", "CesiumMilkTruck.glb"),
+                                 model("OrientationTest", "glTF-Binary", "OrientationTest.glb"),
+                                 model("Cameras", "glTF", "Cameras.gltf"),
+                                 model("LightsPunctualLamp", "glTF", "LightsPunctualLamp.gltf")}) {
+        SCOPED_TRACE(path.string());
+        const Scene scene = loadGltf(path);
+        ASSERT_FALSE(scene.nodes.empty());
+        for (size_t i = 0; i < scene.nodes.size(); ++i) {
+            EXPECT_LT(scene.nodes[i].parent, int32_t(i));
+            EXPECT_GE(scene.nodes[i].source, 0);
+        }
+        for (const Draw& draw : scene.draws) {
+            ASSERT_GE(draw.node, 0);
+            ASSERT_LT(size_t(draw.node), scene.nodes.size());
+            EXPECT_EQ(draw.world, glm::mat4(scene.nodes[size_t(draw.node)].world));
+        }
+        for (const Light& light : scene.lights) EXPECT_GE(light.node, 0);
+        for (const Camera& camera : scene.cameras) EXPECT_GE(camera.node, 0);
+        // Recomputing every world transform from the local ones gives the loaded ones exactly:
+        // what animation will do each frame for the animated subtrees.
+        std::vector<SceneNode> nodes = scene.nodes;
+        std::vector<uint32_t> all;
+        for (SceneNode& node : nodes) {
+            all.push_back(uint32_t(all.size()));
+            node.world = glm::dmat4(0.0);
+        }
+        updateWorldTransforms(nodes, all);
+        for (size_t i = 0; i < nodes.size(); ++i) EXPECT_EQ(nodes[i].world, scene.nodes[i].world) << "node " << i;
+    }
+}
+
 }  // namespace
 }  // namespace candela::scene::test
