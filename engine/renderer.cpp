@@ -270,10 +270,17 @@ FrameTiming Renderer::renderCalibration(uint32_t width, uint32_t height) {
 FrameTiming Renderer::precomputeIbl(const scene::Environment& environment, const ibl::IblQuality& quality) {
     Frame frame;  // started now: the frame time includes the environment's upload, as beginFrame's does
     useEnvironment(&environment, quality, {}, /*force=*/true);
-    frame.ibl = true;
-    mIbl->addToGraph(*frame.graph, frame.imports);
-    frame.precomputeEnd = static_cast<uint32_t>(frame.graph->declaration().passes.size());
+    addIblMaps(frame, /*reference=*/false);
     return execute(std::move(frame), {});
+}
+
+passes::IblHandles Renderer::addIblMaps(Frame& frame, bool reference) {
+    const auto declared = [&] { return static_cast<uint32_t>(frame.graph->declaration().passes.size()); };
+    frame.ibl = true;
+    frame.precomputeBegin = declared();
+    const passes::IblHandles maps = mIbl->addToGraph(*frame.graph, frame.imports, reference);
+    frame.precomputeEnd = declared();
+    return maps;
 }
 
 void Renderer::setReferenceEnvironment(const scene::Environment& environment) {
@@ -365,12 +372,8 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
     if (mIbl->hasEnvironment()) {
         const float theta = glm::radians(settings.ibl.rotationDegrees);
         const float maxLod = float(mIbl->specularLevels() - 1);
-        frame.ibl = true;
-        frame.precomputeBegin = static_cast<uint32_t>(graph.declaration().passes.size());
-        const passes::IblHandles maps = mIbl->addToGraph(graph, frame.imports, settings.ibl.referenceSamples > 0);
-        frame.precomputeEnd = static_cast<uint32_t>(graph.declaration().passes.size());
         ibl = passes::ForwardPass::Ibl{
-            .maps = maps,
+            .maps = addIblMaps(frame, settings.ibl.referenceSamples > 0),
             .params = {.rotation = glm::vec4(std::cos(theta), std::sin(theta), 0.0f, 0.0f),
                        .intensity = settings.ibl.intensity,
                        .maxLod = maxLod,

@@ -235,6 +235,10 @@ private:
     // After the last frame completed: the IBL maps take over what its precompute computed, and its
     // time is recorded.
     void finishFrame();
+    // Imports the IBL maps into `frame`, with the precompute passes when they are pending (and the
+    // ground truth's inputs with `reference`); marks the frame as lit by them and records which
+    // declared passes the precompute added. Precondition: the maps have an environment.
+    passes::IblHandles addIblMaps(Frame& frame, bool reference);
     // Imports the readback buffer, (re)created for `bytes`, into `frame` (final state: host read).
     graph::BufferId importReadback(Frame& frame, VkDeviceSize bytes);
     // New, empty IBL maps (after waiting for the frames in flight).

@@ -147,7 +147,7 @@ void TransientPool::realize(const GraphDecl& decl, const CompiledGraph& compiled
         if (d.kind == ResourceKind::Texture) {
             mImages[r] = vk::Image(*mContext, imageDescOf(decl, r), memory);
             // Per-mip views serve storage writes of one mip at a time (PassContext::mipView).
-            if ((imageUsageOf(decl, r) & VK_IMAGE_USAGE_STORAGE_BIT) && d.texture.depth == 1)
+            if ((mImages[r].desc().usage & VK_IMAGE_USAGE_STORAGE_BIT) && d.texture.depth == 1)
                 mMipViews[r] = mImages[r].createMipViews();
         } else
             mBuffers[r] = vk::Buffer(*mContext, {.size = d.buffer.size, .usage = bufferUsageOf(decl, r), .name = d.name.c_str()},

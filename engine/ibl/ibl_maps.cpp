@@ -11,7 +11,6 @@
 #include "passes/ibl_irradiance_sh_pass.h"
 #include "passes/ibl_prefilter_pass.h"
 #include "vk/context.h"
-#include "vk/sampler.h"
 #include "vk/upload.h"
 
 #include <glm/glm.hpp>

@@ -8,7 +8,7 @@ using namespace graph;
 
 EncodePass::EncodePass(vk::Context& context, VkFormat targetFormat)
     : mPipeline(vk::Pipeline::graphics(context, "fullscreen.vert", "encode.frag", {.colorFormats = {targetFormat}})),
-      mSampler(vk::createSampler(context, {.filter = VK_FILTER_NEAREST, .minFilter = VK_FILTER_NEAREST, .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {}
+      mSampler(vk::createSampler(context, vk::kNearestSampler)) {}
 
 TextureId EncodePass::add(RenderGraph& graph, TextureId hdr, TextureId target) const {
     struct Data {

@@ -28,8 +28,7 @@ std::span<const std::byte> zeros(size_t bytes) {
 
 ForwardIblSet::ForwardIblSet(vk::Context& context)
     : mTrilinear(vk::createSampler(context, {})),
-      mNearest(vk::createSampler(context, {.filter = VK_FILTER_NEAREST, .minFilter = VK_FILTER_NEAREST,
-                                           .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {
+      mNearest(vk::createSampler(context, vk::kNearestSampler)) {
     mPlaceholderCube = vk::Image(context, {.width = 1, .height = 1, .arrayLayers = 6, .format = kCubeFormat,
                                           .usage = kUsage, .cube = true, .name = "ibl_placeholder_cube"});
     mPlaceholderLut = vk::Image(context, {.format = IblBrdfLutPass::kFormat, .usage = kUsage, .name = "ibl_placeholder_lut"});

@@ -13,8 +13,7 @@ using namespace graph;
 IblCubemapPass::IblCubemapPass(vk::Context& context)
     : mResample(vk::Pipeline::compute(context, "ibl_cubemap.comp")),
       mDownsample(vk::Pipeline::compute(context, "ibl_cube_downsample.comp")),
-      mSampler(vk::createSampler(context, {.filter = VK_FILTER_NEAREST, .minFilter = VK_FILTER_NEAREST,
-                                           .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {}
+      mSampler(vk::createSampler(context, vk::kNearestSampler)) {}
 
 uint32_t IblCubemapPass::supersampleFactor(uint32_t faceSize, uint32_t equirectWidth, uint32_t equirectHeight) {
     // Solid angle of a cube texel (4π / 6N², on average) over an equirect texel at the equator (2π² / WH).

@@ -38,7 +38,7 @@ const char* tonemapName(Tonemap op) {
 
 TonemapPass::TonemapPass(vk::Context& context)
     : mContext(context),
-      mSampler(vk::createSampler(context, {.filter = VK_FILTER_NEAREST, .minFilter = VK_FILTER_NEAREST, .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {}
+      mSampler(vk::createSampler(context, vk::kNearestSampler)) {}
 
 TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, const TonemapSettings& settings,
                            shader::ParameterRegistry* parameters) {

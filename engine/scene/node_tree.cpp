@@ -42,8 +42,9 @@ void applyAnimation(const Animation& animation, double time, std::vector<SceneNo
     for (const AnimationChannel& channel : animation.channels) {
         const AnimationSampler& sampler = animation.samplers[channel.sampler];
         SceneNode& node = nodes[channel.node];
-        const size_t room = channel.property == AnimatedProperty::Weights ? node.weights.size() : 4;
-        if ((channel.property == AnimatedProperty::Weights && sampler.width != room) || sampler.width > room)
+        const bool fits = channel.property == AnimatedProperty::Weights ? sampler.width == node.weights.size()
+                                                                         : sampler.width <= 4;
+        if (!fits)
             throw InternalError("animation '" + animation.name + "': a channel's " + std::to_string(sampler.width) +
                                 " values do not fit node '" + node.name + "'");
         if (channel.property == AnimatedProperty::Weights) {

@@ -16,6 +16,11 @@ struct SamplerDesc {
     float maxLod = VK_LOD_CLAMP_NONE;
 };
 
+// Point sampling: nearest texel, nearest mip (exact texel reads, data shown as it is).
+inline constexpr SamplerDesc kNearestSampler{.filter = VK_FILTER_NEAREST,
+                                             .minFilter = VK_FILTER_NEAREST,
+                                             .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST};
+
 Sampler createSampler(Context& context, const SamplerDesc& desc);
 
 }  // namespace candela::vk
