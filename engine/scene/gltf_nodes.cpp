@@ -51,12 +51,16 @@ NodeTransform localTransform(const LoadContext& ctx, const tinygltf::Node& node,
     return t;
 }
 
-Aabb transformBounds(const Aabb& local, const glm::mat4& world) {
+// The world-space box of a mesh, computed in double: a float world matrix can hold a transform whose
+// product with the positions no longer fits a float, which fails the file here rather than giving
+// infinite bounds.
+Aabb transformBounds(const LoadContext& ctx, const Aabb& local, const glm::dmat4& world, const std::string& what) {
     Aabb out;
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
-                          (corner & 4) ? local.max.z : local.min.z);
-        out.extend(glm::vec3(world * glm::vec4(p, 1.0f)));
+        const glm::dvec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
+                           (corner & 4) ? local.max.z : local.min.z);
+        const glm::dvec3 w(world * glm::dvec4(p, 1.0));
+        out.extend(glm::vec3(toFloat(ctx, w.x, what), toFloat(ctx, w.y, what), toFloat(ctx, w.z, what)));
     }
     return out;
 }
@@ -143,10 +147,12 @@ private:
         const glm::mat4 worldF(world);
         // A zero scale on any axis (here or inherited) flattens the mesh to nothing visible and
         // leaves no normal matrix; its draws are left out.
-        const float det = glm::determinant(glm::mat3(worldF));
-        if (det == 0.0f || !std::isfinite(det))
+        // The determinant is taken in double from the float matrix the GPU gets: in float it overflows
+        // for scales near 1e13, which are valid.
+        const double det = glm::determinant(glm::dmat3(glm::mat3(worldF)));
+        if (det == 0.0 || !std::isfinite(det))
             return mCtx.warn(what + ": zero scale (a singular world transform); its mesh is not drawn");
-        const bool flip = det < 0.0f;
+        const bool flip = det < 0.0;
         const auto& primitives = mModel.meshes[size_t(meshIndex)].primitives;
         for (size_t p = 0; p < primitives.size(); ++p) {
             const uint32_t material = materialIndex(primitives[p].material, label("mesh", meshIndex) + " primitive " + std::to_string(p));
@@ -162,7 +168,7 @@ private:
                       .material = material,
                       .world = worldF,
                       .flipWinding = flip,
-                      .bounds = transformBounds(geometry.bounds, worldF),
+                      .bounds = transformBounds(mCtx, geometry.bounds, world, what + ": a corner of its mesh in world space"),
                       .node = sceneNode};
             mScene.bounds.extend(draw.bounds);
             mScene.draws.push_back(draw);

@@ -105,7 +105,9 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     for (const Draw& d : scene.draws) {
         DrawData data{};
         data.world = d.world;
-        data.normalMatrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(d.world))));
+        // In double: the float determinant overflows for world scales near 1e13 (the loader checks the
+        // double one is non-zero).
+        data.normalMatrix = glm::mat4(glm::mat3(glm::transpose(glm::inverse(glm::dmat3(d.world)))));
         data.material = glm::uvec4(d.material, 0, 0, 0);
         draws.push_back(data);
     }

@@ -477,6 +477,11 @@ std::vector<Row> catalogue() {
         j["nodes"].push_back({{"children", {0}}, {"scale", {1e20, 1e20, 1e20}}});
         j["scenes"][0]["nodes"] = {1};
     }), "node 0: world transform is beyond single precision", true);
+    error("NaN/Inf", "MeshCornerBeyondFloat", gltfEdited([](Json& j) {
+        // The world matrix (scale 1e38, translation 3e38) fits a float; the corner x = 1 lands at 4e38.
+        j["nodes"][0]["scale"] = {1e38, 1e38, 1e38};
+        j["nodes"][0]["translation"] = {3e38, 0, 0};
+    }), "node 0: a corner of its mesh in world space is beyond single precision", true);
     error("NaN/Inf", "LightIntensityBeyondFloat", gltfEdited([](Json& j) {
         j["extensionsUsed"] = {"KHR_lights_punctual"};
         j["extensions"]["KHR_lights_punctual"]["lights"] = Json::array({{{"type", "point"}, {"intensity", 1e300}}});

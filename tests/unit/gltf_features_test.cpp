@@ -188,6 +188,23 @@ TEST(GltfFeatures, NegativeScaleFlipsWinding) {
     expectVec(scene.draws[1].bounds.max, {0, 1, 0});
 }
 
+TEST(GltfFeatures, LargeAndSmallValidScalesLoadQuietly) {
+    // det(world) is 1e39 and 1e-45 here: beyond a float, but the meshes are valid and drawn (the
+    // determinant and the normal matrix are taken in double).
+    TempDir dir;
+    GltfBuilder b;
+    b.addTriangle();
+    const int big = b.addNode({{"mesh", 0}, {"scale", {1e13, 1e13, -1e13}}});
+    const int small = b.addNode({{"mesh", 0}, {"scale", {1e-15, 1e-15, 1e-15}}});
+    b.setScene({big, small});
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    ASSERT_EQ(scene.draws.size(), 2u);
+    EXPECT_TRUE(scene.draws[0].flipWinding);
+    EXPECT_FALSE(scene.draws[1].flipWinding);
+    EXPECT_FLOAT_EQ(scene.draws[0].bounds.max.x, 1e13f);
+}
+
 TEST(GltfFeatures, MatrixAndTrsGiveTheSameWorldTransform) {
     TempDir dir;
     GltfBuilder b;
