@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <chrono>
 #include <map>
 
 namespace candela::app {
@@ -26,7 +27,16 @@ double minimum(const std::vector<double>& values) {
 int runBench(const RenderOptions& options) {
     const scene::Scene scene = loadScene(options);
     const std::optional<scene::Environment> environment = loadEnvironment(options);
-    const RenderSettings settings = renderSettings(options, scene, environment ? &*environment : nullptr);
+    RenderSettings settings = renderSettings(options, scene, environment ? &*environment : nullptr);
+    // Frame i shows the animations at --time + i/60 s: each frame pays for evaluating its pose.
+    scene::ScenePose pose = loadPose(options, scene);
+    settings.pose = &pose;
+    std::vector<double> animationMs;
+    const auto advance = [&](uint32_t frame) {
+        const auto start = std::chrono::steady_clock::now();
+        pose.evaluate(options.time + frame / 60.0);
+        animationMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    };
     vk::Context context(contextDesc(options.common));
     Renderer renderer(context);
 
@@ -39,6 +49,7 @@ int runBench(const RenderOptions& options) {
     std::map<std::string, std::vector<double>> passGpuMs;
     std::vector<std::string> passOrder;
     for (uint32_t i = 0; i < options.frames; ++i) {
+        advance(i);
         const FrameTiming frame = renderer.renderFrame(settings);
         frameMs.push_back(frame.submitWaitMs);
         const graph::GraphDecl& decl = renderer.lastGraph().declaration();
@@ -73,6 +84,9 @@ int runBench(const RenderOptions& options) {
                           {"ratioToCalibrationGpu", gpu >= 0.0 && calibrationGpu > 0.0 ? gpu / calibrationGpu : -1.0}});
     }
     out["passes"] = passes;
+    if (pose.animated())
+        out["animation"] = {{"playing", pose.playing().size()}, {"evaluateMedianMs", median(animationMs)},
+                            {"evaluateMaxMs", *std::max_element(animationMs.begin(), animationMs.end())}};
 
     if (options.json) {
         std::printf("%s\n", out.dump(2).c_str());
@@ -83,6 +97,10 @@ int runBench(const RenderOptions& options) {
                     calibrationGpu);
         std::printf("  frame:       median %.2f ms (%.2fx calibration), min %.2f ms (%.2fx)\n", median(frameMs),
                     median(frameMs) / calibration, minimum(frameMs), minimum(frameMs) / minimum(calibrationMs));
+        if (pose.animated())
+            std::printf("  animation:   %zu playing, CPU evaluation median %.4f ms, max %.4f ms per frame\n",
+                        pose.playing().size(), out["animation"]["evaluateMedianMs"].get<double>(),
+                        out["animation"]["evaluateMaxMs"].get<double>());
         for (const auto& p : passes)
             std::printf("  pass %-12s GPU median %.2f ms (%.2fx calibration GPU)\n", p["name"].get<std::string>().c_str(),
                         p["gpuMedianMs"].get<double>(), p["ratioToCalibrationGpu"].get<double>());

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -98,6 +99,14 @@ std::array<float, 3> parseTriple(const std::string& flag, const std::string& val
     return out;
 }
 
+double parseSeconds(const std::string& flag, const std::string& value) {
+    double seconds = 0.0;
+    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), seconds);
+    if (error != std::errc() || end != value.data() + value.size() || !std::isfinite(seconds) || seconds < 0.0)
+        throw UserError(flag + ": expected a number of seconds >= 0, got '" + value + "'");
+    return seconds;
+}
+
 std::array<float, 3> parseHexColor(const std::string& flag, const std::string& value) {
     const bool ok = value.size() == 7 && value[0] == '#' &&
                     std::all_of(value.begin() + 1, value.end(), [](unsigned char c) { return std::isxdigit(c); });
@@ -123,6 +132,17 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         table.withValue["--graph-json"] = [&](const std::string& v) { o.graphJson = v; };
         table.withValue["--disable-pass"] = [&](const std::string& v) { o.disabledPasses.push_back(v); };
         table.withValue["--scene"] = [&](const std::string& v) { o.scene = v; };
+        table.withValue["--animation"] = [&](const std::string& v) {
+            for (size_t start = 0;;) {
+                const size_t comma = v.find(',', start);
+                const std::string item = v.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+                if (item.empty()) throw UserError("--animation: expected indices, names, all or none, got '" + v + "'");
+                o.animations.push_back(item);
+                if (comma == std::string::npos) break;
+                start = comma + 1;
+            }
+        };
+        table.withValue["--time"] = [&](const std::string& v) { o.time = parseSeconds("--time", v); };
         table.withValue["--camera"] = [&](const std::string& v) { o.camera = parseDimension("--camera", v); };
         table.withValue["--camera-orbit"] = [&](const std::string& v) { o.cameraOrbit = parseTriple("--camera-orbit", v); };
         table.withValue["--target"] = [&](const std::string& v) { o.target = parseTriple("--target", v); };
@@ -327,6 +347,9 @@ render options:
   --graph-json FILE     write the compiled render graph as JSON (passes, resources, barriers, timings)
   --disable-pass NAME   switch a pass off (repeatable); passes that lose their input are culled too
   --scene FILE          a glTF 2.0 scene (.gltf or .glb) [the built-in 7x7 sphere grid]
+  --animation LIST      the glTF animations to play: indices or names, all or none (rest pose);
+                        comma-separated or repeated [0, when the scene has animations]
+  --time SECONDS        the moment of the animations to draw; each loops over its own duration [0]
   --camera INDEX        use the scene's glTF camera INDEX
   --camera-orbit T,P,R  orbit camera: azimuth T and polar angle P in degrees, distance R in metres
                         (eye = target + R(sin P sin T, cos P, sin P cos T); R <= 0 frames the scene)

@@ -51,6 +51,9 @@ struct RenderOptions {
     std::string graphDot;             // --graph-dot FILE
     std::string graphJson;            // --graph-json FILE
     std::vector<std::string> disabledPasses;  // --disable-pass NAME (repeatable)
+    // --animation LIST (repeatable, comma-separated: indices, names, all, none); empty: animation 0
+    std::vector<std::string> animations;
+    double time = 0.0;                // --time SECONDS (each animation loops over its duration)
 };
 
 struct InfoOptions {
@@ -96,6 +99,8 @@ std::string usageText();
 uint32_t parseDimension(const std::string& flag, const std::string& value);
 // Parses a finite decimal number; anything else → UserError naming the flag.
 float parseNumber(const std::string& flag, const std::string& value);
+// Parses a finite number of seconds >= 0, in double precision.
+double parseSeconds(const std::string& flag, const std::string& value);
 // Parses "A,B,C" (three finite numbers).
 std::array<float, 3> parseTriple(const std::string& flag, const std::string& value);
 // Parses "#rrggbb" into sRGB-encoded components in [0,1].

@@ -6,6 +6,7 @@
 #include "renderer.h"
 #include "scene/environment.h"
 #include "scene/scene.h"
+#include "scene/scene_pose.h"
 #include "vk/context.h"
 
 #include <optional>
@@ -24,6 +25,9 @@ vk::ContextDesc contextDesc(const CommonOptions& common);
 scene::Scene loadScene(const RenderOptions& options);
 // The environment --env asks for: a file, the procedural sky, or none (nullopt). Warnings are logged.
 std::optional<scene::Environment> loadEnvironment(const RenderOptions& options);
+// The pose --animation and --time ask for (a UserError names the scene's animations when one
+// does not exist). Precondition: `scene` outlives it.
+scene::ScenePose loadPose(const RenderOptions& options, const scene::Scene& scene);
 // Precondition: `scene` and `environment` outlive the settings.
 RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& scene,
                               const scene::Environment* environment);

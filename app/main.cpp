@@ -33,6 +33,12 @@ scene::Scene loadScene(const RenderOptions& options) {
     return scene;
 }
 
+scene::ScenePose loadPose(const RenderOptions& options, const scene::Scene& scene) {
+    scene::ScenePose pose(scene, scene::selectAnimations(scene, options.animations));
+    pose.evaluate(options.time);
+    return pose;
+}
+
 std::optional<scene::Environment> loadEnvironment(const RenderOptions& options) {
     if (options.env == "none") return std::nullopt;
     scene::Environment env = options.env == "sky" ? scene::makeProceduralSky() : scene::loadEnvironment(options.env);
@@ -94,6 +100,8 @@ int runRender(const RenderOptions& options) {
     const std::optional<scene::Environment> environment = loadEnvironment(options);
     RenderSettings settings = renderSettings(options, scene, environment ? &*environment : nullptr);
     settings.floatOutput = io::isFloatFormat(format);
+    const scene::ScenePose pose = loadPose(options, scene);
+    settings.pose = &pose;
 
     vk::Context context(contextDesc(options.common));
     Renderer renderer(context);

@@ -47,6 +47,8 @@ int runView(const RenderOptions& options) {
     // them itself.
     content.settings = renderSettings(options, content.scene, content.environment.get());
     content.settings.tonemap.dither = true;  // 8-bit display: no banding in dark gradients
+    content.animations = options.animations;
+    content.time = options.time;
 
     ui::ViewerDesc desc;
     desc.context = contextDesc(options.common);

@@ -30,6 +30,7 @@ Renderer::Renderer(vk::Context& context, uint32_t framesInFlight)
     : mContext(context), mFrames(context, framesInFlight), mPattern(context), mEncode(context, kLdrFormat),
       mForward(context), mTonemap(context), mIbl(std::make_unique<ibl::IblMaps>(context)) {
     for (uint32_t i = 0; i < mFrames.slotCount(); ++i) mTransients.push_back(std::make_unique<TransientPool>(context));
+    mHostBuffers.resize(mFrames.slotCount());
 }
 
 Renderer::~Renderer() { mFrames.waitIdle(); }
@@ -196,6 +197,7 @@ std::chrono::steady_clock::time_point Renderer::submit(Frame frame, const Render
     }
     graph.compile({.memoryRequirements = deviceMemoryRequirements(mContext, graph.declaration())});
     vk::FrameSlot& slot = mFrames.begin();
+    writeHostUploads(frame);
     TransientPool& transients = *mTransients[mFrames.currentSlot()];
     transients.realize(graph.declaration(), graph.compiled());
     ExecutionRecord record = executeGraph({.context = mContext,
@@ -330,6 +332,32 @@ BufferId Renderer::importReadback(Frame& frame, VkDeviceSize bytes) {
     return readback;
 }
 
+BufferId Renderer::addHostUpload(Frame& frame, std::string name, std::vector<std::byte> bytes) {
+    // Nothing on the device wrote it before the frame: no barrier to wait for.
+    const BufferId buffer = frame.graph->importBuffer(std::move(name), {.size = std::max<VkDeviceSize>(bytes.size(), 16)},
+                                                      ResourceState{});
+    frame.hostUploads.push_back({buffer, std::move(bytes)});
+    return buffer;
+}
+
+void Renderer::writeHostUploads(Frame& frame) {
+    // The slot's previous frame has completed (FrameRing::begin waited for it): its buffers are free.
+    std::vector<vk::Buffer>& buffers = mHostBuffers[mFrames.currentSlot()];
+    if (buffers.size() < frame.hostUploads.size()) buffers.resize(frame.hostUploads.size());
+    for (size_t i = 0; i < frame.hostUploads.size(); ++i) {
+        const Frame::HostUpload& upload = frame.hostUploads[i];
+        const std::string& name = frame.graph->declaration().resources[upload.buffer.index].name;
+        if (!buffers[i] || buffers[i].size() < upload.bytes.size())
+            buffers[i] = vk::Buffer(mContext, {.size = frame.graph->declaration().resources[upload.buffer.index].buffer.size,
+                                               .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                               .memory = vk::MemoryUsage::Upload,
+                                               .name = name.c_str()});
+        std::memcpy(buffers[i].mapped(), upload.bytes.data(), upload.bytes.size());
+        buffers[i].flush();
+        frame.imports.bind(upload.buffer, buffers[i].handle());
+    }
+}
+
 void Renderer::renderToTarget(const RenderSettings& settings, const PresentTarget& target, const OverlayFn& overlay,
                               CapturedFrame* screenshot) {
     Frame frame = beginFrame(settings, &target);
@@ -367,7 +395,19 @@ void Renderer::buildPatternGraph(Frame& frame, const RenderSettings& settings) {
 void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std::optional<TextureId> target) {
     RenderGraph& graph = *frame.graph;
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
-    const scene::ViewSetup view = resolveView(*settings.scene, settings.camera, aspect);
+    const scene::ScenePose* pose = settings.pose && settings.pose->animated() ? settings.pose : nullptr;
+    const scene::ViewSetup view = resolveView(*settings.scene, settings.camera, aspect, pose);
+    std::optional<passes::ForwardPass::PosedDraws> posed;
+    if (pose) {
+        const std::vector<scene::Draw>& draws = pose->draws();
+        std::vector<std::byte> data(draws.size() * sizeof(shading::DrawData));
+        for (size_t i = 0; i < draws.size(); ++i)
+            if (!draws[i].hidden) {
+                const shading::DrawData d = scene::drawData(draws[i]);
+                std::memcpy(data.data() + i * sizeof d, &d, sizeof d);
+            }
+        posed = passes::ForwardPass::PosedDraws{.draws = draws, .data = addHostUpload(frame, "posed_draws", std::move(data))};
+    }
     std::optional<passes::ForwardPass::Ibl> ibl;
     if (mIbl->hasEnvironment()) {
         const float theta = glm::radians(settings.ibl.rotationDegrees);
@@ -387,7 +427,7 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
     applySceneParameters();
     const passes::ForwardPass::Output forward =
         mForward.add(graph, settings.width, settings.height, view, settings.shading, ibl ? &*ibl : nullptr, &mParameters,
-                     settings.debugView);
+                     settings.debugView, posed ? &*posed : nullptr);
     frame.debugView = settings.debugView;
     frame.hdr = forward.hdr;
     frame.skybox = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;
@@ -428,7 +468,9 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
                                      : "left out: skybox (the background is not the environment)");
 }
 
-scene::ViewSetup Renderer::resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect) {
+scene::ViewSetup Renderer::resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                       const scene::ScenePose* pose) {
+    if (pose && !pose->animated()) pose = nullptr;
     if (camera.orbitCamera) {
         scene::ViewSetup view = camera.orbitCamera->view(aspect);
         if (camera.lensShiftX != 0.0f) {
@@ -441,10 +483,11 @@ scene::ViewSetup Renderer::resolveView(const scene::Scene& scene, const CameraSe
         if (*camera.gltfCamera >= scene.cameras.size())
             throw UserError("--camera " + std::to_string(*camera.gltfCamera) + ": the scene has " +
                             std::to_string(scene.cameras.size()) + " cameras");
-        return scene::cameraView(scene.cameras[*camera.gltfCamera], aspect);
+        return scene::cameraView((pose ? pose->cameras() : scene.cameras)[*camera.gltfCamera], aspect);
     }
     const glm::vec3 angles = camera.orbit.value_or(glm::vec3(0.0f, 90.0f, 0.0f));
-    scene::OrbitCamera orbit = scene::OrbitCamera::framing(scene.bounds, aspect, angles.x, angles.y, camera.fovYDegrees);
+    scene::OrbitCamera orbit = scene::OrbitCamera::framing(pose ? pose->animationBounds() : scene.bounds, aspect, angles.x,
+                                                           angles.y, camera.fovYDegrees);
     if (angles.z > 0.0f) {
         orbit.radius = angles.z;
         orbit.znear = angles.z * 1e-3f;

@@ -20,6 +20,7 @@
 #include "passes/tonemap_pass.h"
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
+#include "scene/scene_pose.h"
 #include "shader/parameter_registry.h"
 #include "vk/buffer.h"
 #include "vk/frame.h"
@@ -55,6 +56,9 @@ struct RenderSettings {
     bool floatOutput = false;  // capture linear HDR (EXR/PFM) instead of 8-bit sRGB (PNG)
     // The scene to draw; null renders the foundation's procedural test pattern instead.
     const scene::Scene* scene = nullptr;
+    // The scene as its animations pose it this frame (a pose of `scene`, owned by the caller);
+    // null, or a pose that animates nothing, draws the loaded rest pose with the static draw data.
+    const scene::ScenePose* pose = nullptr;
     CameraSettings camera;
     passes::ShadingModel shading = passes::ShadingModel::Pbr;
     // A debug view of the forward pass instead of the shaded image (a variant of the frame graph:
@@ -137,6 +141,14 @@ struct Frame {
     uint32_t precomputeBegin = 0, precomputeEnd = 0;
     // What --explain says of the scene (variants, lights, IBL, what was left out), besides culled passes.
     std::vector<std::string> notes;
+    // Data the CPU makes for this frame alone (the posed draws of an animated scene): each is
+    // copied, once the frame slot is free, into that slot's own host-visible buffer, which is
+    // then bound to the imported handle. The submit makes the host writes visible to the device.
+    struct HostUpload {
+        graph::BufferId buffer;
+        std::vector<std::byte> bytes;
+    };
+    std::vector<HostUpload> hostUploads;
     std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 };
 
@@ -191,8 +203,10 @@ public:
     // Runs the calibration pass alone at width × height (see passes/calibration_pass.h).
     FrameTiming renderCalibration(uint32_t width, uint32_t height);
 
-    // The view the settings select for `scene` at `aspect` (width / height).
-    static scene::ViewSetup resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect);
+    // The view the settings select for `scene` at `aspect` (width / height). With an animated
+    // `pose`, glTF cameras are where the pose puts them and framing contains the whole animation.
+    static scene::ViewSetup resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                        const scene::ScenePose* pose = nullptr);
 
     // The graph of the last frame (declaration and compiled result), for export and inspection.
     const graph::RenderGraph& lastGraph() const { return *mLast.graph; }
@@ -241,12 +255,17 @@ private:
     passes::IblHandles addIblMaps(Frame& frame, bool reference);
     // Imports the readback buffer, (re)created for `bytes`, into `frame` (final state: host read).
     graph::BufferId importReadback(Frame& frame, VkDeviceSize bytes);
+    // Declares `bytes` as a storage buffer the CPU writes for this frame (Frame::hostUploads).
+    graph::BufferId addHostUpload(Frame& frame, std::string name, std::vector<std::byte> bytes);
+    // Copies the frame's host uploads into the current slot's buffers and binds them.
+    void writeHostUploads(Frame& frame);
     // New, empty IBL maps (after waiting for the frames in flight).
     void resetIblMaps();
 
     vk::Context& mContext;
     vk::FrameRing mFrames;
     std::vector<std::unique_ptr<graph::TransientPool>> mTransients;  // one per frame slot
+    std::vector<std::vector<vk::Buffer>> mHostBuffers;                // per frame slot, per host upload
     passes::PatternPass mPattern;
     passes::EncodePass mEncode;
     passes::ForwardPass mForward;

@@ -96,16 +96,25 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene) {
 
 ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
                                      ShadingModel model, const Ibl* ibl, shader::ParameterRegistry* parameters,
-                                     DebugView debugView) {
+                                     DebugView debugView, const PosedDraws* posed) {
     const scene::Scene& scene = mScene->scene();
+    const std::span<const scene::Draw> draws = posed ? posed->draws : std::span<const scene::Draw>(scene.draws);
     std::vector<DrawItem> opaque, blended;
     std::map<std::string, uint32_t> variantCounts;
-    for (uint32_t i = 0; i < scene.draws.size(); ++i) {
-        const scene::Draw& draw = scene.draws[i];
+    uint32_t hidden = 0;
+    for (uint32_t i = 0; i < draws.size(); ++i) {
+        const scene::Draw& draw = draws[i];
+        if (draw.hidden) {
+            ++hidden;
+            continue;
+        }
         const Variant v = variantOf(draw, model, ibl, debugView);
         ++variantCounts[v.name()];
         const glm::vec3 centre = 0.5f * (draw.bounds.min + draw.bounds.max);
-        (v.blend ? blended : opaque).push_back({i, &pipeline(v), glm::length(centre - view.eye)});
+        (v.blend ? blended : opaque)
+            .push_back({.draw = i, .pipeline = &pipeline(v), .depth = glm::length(centre - view.eye),
+                        .firstIndex = draw.firstIndex, .indexCount = draw.indexCount, .material = draw.material,
+                        .flipWinding = draw.flipWinding, .doubleSided = scene.materials[draw.material].doubleSided});
     }
     // Opaque grouped by pipeline (fewer binds); blended back to front.
     std::stable_sort(opaque.begin(), opaque.end(), [](const DrawItem& a, const DrawItem& b) { return a.pipeline < b.pipeline; });
@@ -114,9 +123,12 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
     items.insert(items.end(), blended.begin(), blended.end());
 
     mExplanation.clear();
-    std::string used = "forward: " + std::to_string(scene.draws.size()) + " draws; variants:";
+    std::string used = "forward: " + std::to_string(draws.size() - hidden) + " draws; variants:";
     for (const auto& [name, count] : variantCounts) used += " " + name + " ×" + std::to_string(count);
     mExplanation.push_back(used);
+    if (posed)
+        mExplanation.push_back("animated: draw matrices of this frame's pose, written by the CPU into a per-frame buffer" +
+                               (hidden ? " (" + std::to_string(hidden) + " draws scaled to nothing, not drawn)" : std::string()));
     if (mScene->lightCount() == 0) mExplanation.emplace_back("left out: light loop (no punctual lights)");
     if (std::none_of(scene.materials.begin(), scene.materials.end(), [](const scene::Material& m) { return m.normal.present(); }))
         mExplanation.emplace_back("left out: normal mapping / TBN work (no material has a normal texture)");
@@ -127,6 +139,7 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
         TextureId hdr;
         TextureId depth;
         IblHandles ibl;  // as declared: resolved in execute
+        BufferId draws;  // the posed draw data, when animated
     };
     shading::ForwardPush push{};
     push.viewProjection = view.viewProjection;
@@ -135,7 +148,6 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
     if (ibl) push.ibl = ibl->params;
     if (parameters) parameters->apply("forward", "Push", reflection().pushConstants.members, push);
     const scene::GpuScene* gpuScene = mScene;
-    const VkDescriptorSet sceneSet = mSceneSet;
     const std::vector<VkDescriptorSet>* materialSets = &mMaterialSets;
     const ForwardIblSet* iblSets = &mIblSet;
     const vk::Program* program = &pipeline(Variant{}).program();  // every variant shares the set layouts
@@ -147,10 +159,21 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
             d.hdr = builder.writeColor(hdr, VkClearColorValue{{0.0f, 0.0f, 0.0f, 0.0f}});
             d.depth = builder.writeDepth(depth, 0.0f);  // reverse-Z: far = 0
             d.ibl = ForwardIblSet::declare(builder, ibl ? &ibl->maps : nullptr);
+            if (posed)
+                d.draws = builder.read(posed->data, Usage::StorageRead,
+                                       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
         },
-        [items, frameConstants = push, gpuScene, sceneSet, materialSets, iblSets, program](const Data& d, PassContext& ctx) {
+        [items, frameConstants = push, gpuScene, staticSceneSet = mSceneSet, materialSets, iblSets,
+         program](const Data& d, PassContext& ctx) {
             shading::ForwardPush constants = frameConstants;
             const VkDescriptorSet iblSet = iblSets->write(ctx, *program, d.ibl);
+            // Posed draws: set 0 names this frame's draw buffer.
+            const VkDescriptorSet sceneSet = !d.draws.valid() ? staticSceneSet
+                                             : vk::DescriptorWriter(*program, 0)
+                                                   .buffer("Lights", gpuScene->lightBuffer())
+                                                   .buffer("Draws", ctx.buffer(d.draws))
+                                                   .buffer("Materials", gpuScene->materialBuffer())
+                                                   .commit(ctx.context(), ctx.descriptors());
             VkCommandBuffer cmd = ctx.cmd();
             ctx.beginRendering();
             const VkDeviceSize offset = 0;
@@ -159,7 +182,6 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
             vkCmdBindIndexBuffer(cmd, gpuScene->indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
             const vk::Pipeline* bound = nullptr;
             for (const DrawItem& item : items) {
-                const scene::Draw& draw = gpuScene->scene().draws[item.draw];
                 if (item.pipeline != bound) {
                     bound = item.pipeline;
                     bound->bind(cmd);
@@ -169,14 +191,13 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
                                             nullptr);
                 }
                 vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 1, 1,
-                                        &(*materialSets)[draw.material], 0, nullptr);
-                const bool doubleSided = gpuScene->scene().materials[draw.material].doubleSided;
-                vkCmdSetCullMode(cmd, doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
+                                        &(*materialSets)[item.material], 0, nullptr);
+                vkCmdSetCullMode(cmd, item.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
                 // glTF fronts are counter-clockwise; a mirroring transform turns them clockwise.
-                vkCmdSetFrontFace(cmd, draw.flipWinding ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
+                vkCmdSetFrontFace(cmd, item.flipWinding ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
                 constants.counts.y = item.draw;
                 bound->pushConstants(cmd, &constants, sizeof(constants));
-                vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, 0, 0);
+                vkCmdDrawIndexed(cmd, item.indexCount, 1, item.firstIndex, 0, 0);
             }
             ctx.endRendering();
         });

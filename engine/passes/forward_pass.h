@@ -16,6 +16,7 @@
 #include "vk/pipeline_cache.h"
 
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -48,12 +49,19 @@ public:
         // integrated per pixel with this many samples per lobe from the specular cube's mip 0.
         uint32_t referenceSamples = 0;
     };
+    // An animated scene's draws in this frame's pose: where each is (one per scene draw, same
+    // order; hidden ones are skipped) and the buffer holding their shading::DrawData, which the
+    // pass reads instead of the scene's static draw buffer (set 0 is then written per frame).
+    struct PosedDraws {
+        std::span<const scene::Draw> draws;
+        graph::BufferId data;
+    };
     // Adds the pass drawing the current scene as seen from `view`, lit by the scene's lights and,
-    // when `ibl` is given, the environment. Returns the written targets.
+    // when `ibl` is given, the environment; posed by `posed` when given. Returns the written targets.
     // With `parameters`, the user's values for the per-frame push constants apply ("forward", "Push").
     Output add(graph::RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
                ShadingModel model, const Ibl* ibl = nullptr, shader::ParameterRegistry* parameters = nullptr,
-               DebugView debugView = DebugView::None);
+               DebugView debugView = DebugView::None, const PosedDraws* posed = nullptr);
     // The reflection of the forward shaders (every variant shares the layout).
     const shader::ShaderReflection& reflection() { return pipeline(Variant{}).program().reflection(); }
 
@@ -79,10 +87,13 @@ private:
         auto operator<=>(const Variant&) const = default;
         std::string name() const;
     };
+    // What execute needs of one draw, taken at setup (the scene's draw or its posed copy).
     struct DrawItem {
         uint32_t draw;
         const vk::Pipeline* pipeline;
         float depth;  // view distance, for sorting blended draws
+        uint32_t firstIndex, indexCount, material;
+        bool flipWinding, doubleSided;
     };
     const vk::Pipeline& pipeline(const Variant& variant);
     static vk::GraphicsPipelineDesc desc(const Variant& variant);

@@ -61,6 +61,7 @@ Scene makeSphereGrid() {
             draw.material = static_cast<uint32_t>(scene.materials.size() - 1);
             const glm::vec3 offset((column - (kColumns - 1) / 2.0f) * kSpacing, (row - (kRows - 1) / 2.0f) * kSpacing, 0.0f);
             draw.world = glm::translate(glm::mat4(1.0f), offset);
+            draw.localBounds = sphereBounds;
             draw.bounds.extend(sphereBounds.min + offset);
             draw.bounds.extend(sphereBounds.max + offset);
             scene.bounds.extend(draw.bounds);

@@ -3,6 +3,7 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstring>
 
@@ -38,7 +39,8 @@ int componentCount(int type) {
         case TINYGLTF_TYPE_VEC2: return 2;
         case TINYGLTF_TYPE_VEC3: return 3;
         case TINYGLTF_TYPE_VEC4: return 4;
-        default: return 0;  // matrices are never read as vertex data here
+        case TINYGLTF_TYPE_MAT4: return 16;  // read by readFloats only (inverse bind matrices)
+        default: return 0;
     }
 }
 
@@ -221,6 +223,31 @@ std::vector<glm::vec4> readVectors(const LoadContext& ctx, const tinygltf::Model
                                            v[c] = component(p + size_t(c) * size, componentType, normalized);
                                        return v;
                                    });
+}
+
+std::vector<float> readFloats(const LoadContext& ctx, const tinygltf::Model& model, int index, int type,
+                              bool normalizedIntegers, const std::string& what) {
+    const tinygltf::Accessor& accessor = checkedAccessor(ctx, model, index, what);
+    const int componentType = accessor.componentType;
+    const bool normalizedInteger = accessor.normalized && componentType != TINYGLTF_COMPONENT_TYPE_FLOAT &&
+                                   componentSize(componentType) <= 2;
+    if (accessor.type != type || (componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !(normalizedIntegers && normalizedInteger)))
+        ctx.fail(what + ": accessor " + std::to_string(index) + " must be " + typeName(type) + " of FLOAT" +
+                 (normalizedIntegers ? " or normalized (UNSIGNED_)BYTE/SHORT" : "") + ", not " + typeName(accessor.type) +
+                 " of componentType " + std::to_string(componentType));
+    const size_t components = size_t(componentCount(type));
+    const size_t size = componentSize(componentType);
+    using Element = std::array<float, 16>;
+    const std::vector<Element> elements =
+        readElements<Element>(ctx, model, index, what, size * components, Element{}, [&](const uint8_t* p) {
+            Element e{};
+            for (size_t c = 0; c < components; ++c) e[c] = component(p + c * size, componentType, accessor.normalized);
+            return e;
+        });
+    std::vector<float> out;
+    out.reserve(elements.size() * components);
+    for (const Element& e : elements) out.insert(out.end(), e.begin(), e.begin() + std::ptrdiff_t(components));
+    return out;
 }
 
 std::vector<uint32_t> readIndices(const LoadContext& ctx, const tinygltf::Model& model, int index,

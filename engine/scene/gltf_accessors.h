@@ -32,6 +32,13 @@ std::span<const uint8_t> bufferViewBytes(const LoadContext& ctx, const tinygltf:
 std::vector<glm::vec4> readVectors(const LoadContext& ctx, const tinygltf::Model& model, int accessor,
                                    std::initializer_list<int> types, const std::string& what);
 
+// Reads accessor `accessor` of glTF type `type` (TINYGLTF_TYPE_SCALAR … TINYGLTF_TYPE_MAT4, which
+// it must have) as count × components floats, sparse substitution applied. Its components must be
+// FLOAT, or, with `normalizedIntegers`, normalized BYTE/UNSIGNED_BYTE/SHORT/UNSIGNED_SHORT (mapped
+// as readVectors does): animation outputs, skin matrices, morph-target deltas.
+std::vector<float> readFloats(const LoadContext& ctx, const tinygltf::Model& model, int accessor, int type,
+                              bool normalizedIntegers, const std::string& what);
+
 // Reads an index accessor: SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT (sparse allowed).
 std::vector<uint32_t> readIndices(const LoadContext& ctx, const tinygltf::Model& model, int accessor,
                                   const std::string& what);

@@ -1,6 +1,7 @@
 #include "scene/gltf_loader.h"
 
 #include "core/check.h"
+#include "scene/gltf_animations.h"
 #include "scene/gltf_file.h"
 #include "scene/gltf_images.h"
 #include "scene/gltf_materials.h"
@@ -75,7 +76,6 @@ void checkAsset(const gltf::LoadContext& ctx, const tinygltf::Model& model) {
         if (!supported(extension) && std::find(model.extensionsRequired.begin(), model.extensionsRequired.end(),
                                                extension) == model.extensionsRequired.end())
             ctx.warn("extension " + extension + " is not supported (ignored)");
-    if (!model.animations.empty()) ctx.warn("animations are not supported (ignored)");
     if (!model.skins.empty()) ctx.warn("skins are not supported (ignored; meshes drawn in bind pose)");
     for (const tinygltf::Mesh& mesh : model.meshes)
         for (const tinygltf::Primitive& primitive : mesh.primitives)
@@ -91,6 +91,7 @@ void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, cons
     gltf::ImageTable images(ctx, model, std::move(parsed.uriImages), options, scene);
     gltf::loadMaterials(ctx, model, images, scene);
     gltf::loadNodes(ctx, model, scene);
+    gltf::loadAnimations(ctx, model, scene);
 }
 
 }  // namespace

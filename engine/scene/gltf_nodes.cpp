@@ -1,6 +1,7 @@
 #include "scene/gltf_nodes.h"
 
 #include "scene/gltf_mesh.h"
+#include "scene/node_placement.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -51,36 +52,46 @@ NodeTransform localTransform(const LoadContext& ctx, const tinygltf::Node& node,
     return t;
 }
 
-// The world-space box of a mesh, computed in double: a float world matrix can hold a transform whose
-// product with the positions no longer fits a float, which fails the file here rather than giving
-// infinite bounds.
-Aabb transformBounds(const LoadContext& ctx, const Aabb& local, const glm::dmat4& world, const std::string& what) {
-    Aabb out;
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
-                           (corner & 4) ? local.max.z : local.min.z);
-        const glm::dvec3 w(world * glm::dvec4(p, 1.0));
-        out.extend(glm::vec3(toFloat(ctx, w.x, what), toFloat(ctx, w.y, what), toFloat(ctx, w.z, what)));
+// The morph-target weights a node starts with: its own, else its mesh's defaults, else zeros; one
+// per morph target of the mesh, whose primitives must all have the same number of targets.
+std::vector<float> morphWeights(const LoadContext& ctx, const tinygltf::Model& model, const tinygltf::Node& node,
+                                const std::string& what) {
+    if (node.mesh < 0 || size_t(node.mesh) >= model.meshes.size()) {
+        if (!node.weights.empty()) ctx.fail(what + ": has weights but no mesh");
+        return {};
     }
-    return out;
-}
-
-// glTF cameras ignore scale: keep rotation and translation so the view matrix is a rigid inverse.
-bool rigid(const glm::dmat4& world, glm::mat4& out) {
-    glm::dmat4 m = world;
-    for (int c = 0; c < 3; ++c) {
-        const double length = glm::length(glm::dvec3(m[c]));
-        if (!(length > 0.0) || !std::isfinite(length)) return false;
-        m[c] /= length;
+    const tinygltf::Mesh& mesh = model.meshes[size_t(node.mesh)];
+    const std::string meshWhat = label("mesh", node.mesh, mesh.name);
+    const size_t targets = mesh.primitives.empty() ? 0 : mesh.primitives[0].targets.size();
+    for (size_t p = 1; p < mesh.primitives.size(); ++p)
+        if (mesh.primitives[p].targets.size() != targets)
+            ctx.fail(meshWhat + " primitive " + std::to_string(p) + ": " + std::to_string(mesh.primitives[p].targets.size()) +
+                     " morph targets, primitive 0 has " + std::to_string(targets));
+    auto convert = [&](const std::vector<double>& weights, const std::string& owner) {
+        if (weights.size() != targets)
+            ctx.fail(owner + ": " + std::to_string(weights.size()) + " weights for " + std::to_string(targets) +
+                     " morph targets");
+        std::vector<float> out;
+        for (double w : weights) out.push_back(toFloat(ctx, w, owner + ": a weight"));
+        return out;
+    };
+    if (!mesh.weights.empty() || !node.weights.empty()) {
+        std::vector<float> meshWeights = mesh.weights.empty() ? std::vector<float>(targets, 0.0f) : convert(mesh.weights, meshWhat);
+        return node.weights.empty() ? meshWeights : convert(node.weights, what);
     }
-    out = glm::mat4(m);
-    return true;
+    return std::vector<float>(targets, 0.0f);
 }
 
 class NodeWalker {
 public:
     NodeWalker(const LoadContext& ctx, const tinygltf::Model& model, Scene& scene)
-        : mCtx(ctx), mModel(model), mScene(scene), mGltfMaterials(scene.materials.size()) {}
+        : mCtx(ctx), mModel(model), mScene(scene), mGltfMaterials(scene.materials.size()), mTargeted(model.nodes.size(), 0) {
+        // Nodes some animation channel moves (bad indices are reported by loadAnimations).
+        for (const tinygltf::Animation& animation : model.animations)
+            for (const tinygltf::AnimationChannel& channel : animation.channels)
+                if (channel.target_node >= 0 && size_t(channel.target_node) < model.nodes.size())
+                    mTargeted[size_t(channel.target_node)] = 1;
+    }
 
     void walk(const std::vector<int>& roots) {
         const size_t count = mModel.nodes.size();
@@ -108,12 +119,14 @@ public:
             visited[size_t(item.node)] = onPath[size_t(item.node)] = 1;
             // Depth-first: the parent is already in Scene::nodes, before this node.
             SceneNode sceneNode{.name = node.name, .source = item.node, .parent = item.parent,
-                                .transform = localTransform(mCtx, node, what)};
+                                .transform = localTransform(mCtx, node, what),
+                                .weights = morphWeights(mCtx, mModel, node, what)};
             const glm::dmat4 local = sceneNode.transform.local();
             sceneNode.world = item.parent >= 0 ? mScene.nodes[size_t(item.parent)].world * local : local;
             for (int c = 0; c < 4; ++c)
                 for (int r = 0; r < 4; ++r) toFloat(mCtx, sceneNode.world[c][r], what + ": world transform");
             const int32_t index = int32_t(mScene.nodes.size());
+            mMovable.push_back(mTargeted[size_t(item.node)] || (item.parent >= 0 && mMovable[size_t(item.parent)]));
             mScene.nodes.push_back(std::move(sceneNode));
             visit(node, what, index);
             stack.push_back({item.node, -1, true});
@@ -144,15 +157,13 @@ private:
 
     void addMesh(int meshIndex, const std::string& what, const glm::dmat4& world, int32_t sceneNode) {
         if (size_t(meshIndex) >= mModel.meshes.size()) mCtx.fail(what + ": mesh " + std::to_string(meshIndex) + " does not exist");
-        const glm::mat4 worldF(world);
         // A zero scale on any axis (here or inherited) flattens the mesh to nothing visible and
-        // leaves no normal matrix; its draws are left out.
-        // The determinant is taken in double from the float matrix the GPU gets: in float it overflows
-        // for scales near 1e13, which are valid.
-        const double det = glm::determinant(glm::dmat3(glm::mat3(worldF)));
-        if (det == 0.0 || !std::isfinite(det))
+        // leaves no normal matrix: a static node's draws are left out, an animated one's are kept,
+        // hidden until the animation scales them up.
+        Draw probe{.localBounds = Aabb{glm::vec3(0.0f), glm::vec3(0.0f)}};
+        const bool movable = mMovable[size_t(sceneNode)];
+        if (placeDraw(probe, world) == Placement::Singular && !movable)
             return mCtx.warn(what + ": zero scale (a singular world transform); its mesh is not drawn");
-        const bool flip = det < 0.0;
         const auto& primitives = mModel.meshes[size_t(meshIndex)].primitives;
         for (size_t p = 0; p < primitives.size(); ++p) {
             const uint32_t material = materialIndex(primitives[p].material, label("mesh", meshIndex) + " primitive " + std::to_string(p));
@@ -166,10 +177,11 @@ private:
             Draw draw{.firstIndex = geometry.firstIndex,
                       .indexCount = geometry.indexCount,
                       .material = material,
-                      .world = worldF,
-                      .flipWinding = flip,
-                      .bounds = transformBounds(mCtx, geometry.bounds, world, what + ": a corner of its mesh in world space"),
+                      .localBounds = geometry.bounds,
                       .node = sceneNode};
+            // The world matrix itself was checked to fit a float as the node was reached.
+            if (placeDraw(draw, world) == Placement::BeyondFloat)
+                mCtx.fail(what + ": a corner of its mesh in world space is beyond single precision");
             mScene.bounds.extend(draw.bounds);
             mScene.draws.push_back(draw);
         }
@@ -182,7 +194,7 @@ private:
         Camera camera;
         camera.node = sceneNode;
         camera.name = !source.name.empty() ? source.name : !node.name.empty() ? node.name : "camera " + std::to_string(node.camera);
-        if (!rigid(world, camera.world)) return mCtx.warn(cameraWhat + ": degenerate node transform, camera skipped");
+        if (!placeCamera(camera, world)) return mCtx.warn(cameraWhat + ": degenerate node transform, camera skipped");
         bool valid = false;
         auto fits = [](std::initializer_list<double> values) { return std::all_of(values.begin(), values.end(), fitsFloat); };
         if (source.type == "perspective") {
@@ -240,10 +252,7 @@ private:
         // 0 <= inner < outer <= π/2, as the extension requires.
         light.outerConeAngle = float(std::clamp(source.spot.outerConeAngle, 1e-4, kPi / 2));
         light.innerConeAngle = float(std::clamp(source.spot.innerConeAngle, 0.0, double(light.outerConeAngle) * 0.9999));
-        light.position = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
-        const glm::dvec3 direction = glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0);
-        const double length = glm::length(direction);
-        light.direction = length > 0.0 && std::isfinite(length) ? glm::vec3(direction / length) : glm::vec3(0.0f, 0.0f, -1.0f);
+        placeLight(light, world);
         mScene.lights.push_back(light);
     }
 
@@ -253,6 +262,8 @@ private:
     size_t mGltfMaterials;
     int mDefaultMaterial = -1;
     std::map<std::pair<int, int>, PrimitiveGeometry> mGeometry;  // (mesh, primitive) → converted once
+    std::vector<uint8_t> mTargeted;  // per glTF node: an animation channel targets it
+    std::vector<uint8_t> mMovable;   // per Scene::nodes entry: it or an ancestor is targeted
 };
 
 }  // namespace

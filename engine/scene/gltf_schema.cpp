@@ -192,8 +192,27 @@ void checkDocument(const Checker& c, const Json& root) {
     c.array(root, "textures", [&](const Json& t, const std::string& p) {
         c.properties(t, p, {{"sampler", Kind::Index}, {"source", Kind::Index}});
     });
-    c.array(root, "skins", [](const Json&, const std::string&) {});
-    c.array(root, "animations", [](const Json&, const std::string&) {});
+    c.array(root, "skins", [&](const Json& s, const std::string& p) {
+        c.properties(s, p, {{"inverseBindMatrices", Kind::Index}, {"skeleton", Kind::Index}, {"joints", Kind::IndexArray},
+                            {"name", Kind::String}});
+    });
+    c.array(root, "animations", [&](const Json& a, const std::string& p) {
+        c.properties(a, p, {{"name", Kind::String}});
+        auto each = [&](const char* key, const std::function<void(const Json&, const std::string&)>& check) {
+            auto list = a.find(key);
+            if (list == a.end() || !list->is_array()) c.fail(p + "." + key, "an array of objects", list == a.end() ? Json() : *list);
+            for (size_t i = 0; i < list->size(); ++i) check((*list)[i], p + "." + key + "[" + std::to_string(i) + "]");
+        };
+        each("channels", [&](const Json& channel, const std::string& cp) {
+            c.properties(channel, cp, {{"sampler", Kind::Index}});
+            auto target = channel.find("target");
+            if (target == channel.end()) c.fail(cp + ".target", "an object", Json());
+            c.properties(*target, cp + ".target", {{"node", Kind::Index}, {"path", Kind::String}});
+        });
+        each("samplers", [&](const Json& sampler, const std::string& sp) {
+            c.properties(sampler, sp, {{"input", Kind::Index}, {"output", Kind::Index}, {"interpolation", Kind::String}});
+        });
+    });
     if (const Json* ext = c.child(root, "", "extensions", {}))
         if (const Json* lights = c.child(*ext, "extensions", "KHR_lights_punctual", {})) {
             auto list = lights->find("lights");

@@ -89,6 +89,16 @@ vk::Image solidTexture(vk::Context& context, vk::Uploader& uploader, std::array<
 
 }  // namespace
 
+shading::DrawData drawData(const Draw& draw) {
+    shading::DrawData data{};
+    data.world = draw.world;
+    // In double: the float determinant overflows for world scales near 1e13 (the loader checks the
+    // double one is non-zero).
+    data.normalMatrix = glm::mat4(glm::mat3(glm::transpose(glm::inverse(glm::dmat3(draw.world)))));
+    data.material = glm::uvec4(draw.material, 0, 0, 0);
+    return data;
+}
+
 GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights, float maxAnisotropy)
     : mScene(&scene), mContext(&context) {
     vk::Uploader uploader(context);
@@ -102,15 +112,7 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     mLights = uploadedBuffer(context, uploader, lights, "lights");
 
     std::vector<DrawData> draws;
-    for (const Draw& d : scene.draws) {
-        DrawData data{};
-        data.world = d.world;
-        // In double: the float determinant overflows for world scales near 1e13 (the loader checks the
-        // double one is non-zero).
-        data.normalMatrix = glm::mat4(glm::mat3(glm::transpose(glm::inverse(glm::dmat3(d.world)))));
-        data.material = glm::uvec4(d.material, 0, 0, 0);
-        draws.push_back(data);
-    }
+    for (const Draw& d : scene.draws) draws.push_back(drawData(d));
     mDraws = uploadedBuffer(context, uploader, draws, "draws");
 
     std::vector<MaterialData>& materials = mSceneMaterials;

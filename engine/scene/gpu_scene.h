@@ -15,6 +15,10 @@
 
 namespace candela::scene {
 
+// A draw as the forward shaders read it: world and normal matrix, material index. Precondition:
+// draw.world is not singular (hidden draws are not drawn).
+shading::DrawData drawData(const Draw& draw);
+
 class GpuScene {
 public:
     // Uploads `scene` (one batched submit) with `extraLights` appended to its lights, and samplers

@@ -106,7 +106,11 @@ struct Draw {
     glm::mat4 world{1.0f};
     bool flipWinding = false;  // det(world) < 0: the front face is clockwise
     Aabb bounds;               // world space
+    Aabb localBounds;          // mesh space
     int32_t node = -1;         // index into Scene::nodes (-1: built-in scenes, which have no nodes)
+    // Not drawn in this pose: an animated node whose transform is singular (scaled to 0) or beyond
+    // a float. Only animated draws are ever hidden; the loader drops static singular ones.
+    bool hidden = false;
 };
 
 enum class LightType : uint8_t { Directional, Point, Spot };
@@ -148,8 +152,10 @@ struct Scene {
     std::vector<Camera> cameras;
     // The loaded scene's node hierarchy, depth-first (a parent before its children), with the
     // world transforms the draws, lights and cameras above were placed with. Empty for built-in
-    // scenes. Kept for animation (scene/node_tree.h), which is not played yet.
+    // scenes. Animations move them (scene/node_tree.h, scene/scene_pose.h).
     std::vector<SceneNode> nodes;
+    // The file's animations, in file order; channels name Scene::nodes indices.
+    std::vector<Animation> animations;
     Aabb bounds;  // world space, over all draws
     std::vector<std::string> warnings;  // non-fatal problems met while loading
 };

@@ -66,6 +66,9 @@ std::string lowerExtension(const std::filesystem::path& path) {
 Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
     : mUi(desc.ui), mScene(std::move(content.scene)), mEnvironment(std::move(content.environment)),
       mSettings(std::move(content.settings)) {
+    mPose = std::make_unique<scene::ScenePose>(mScene, scene::selectAnimations(mScene, content.animations));
+    mAnimationTime = content.time;
+    mPose->evaluate(mAnimationTime);
     mWindow = std::make_unique<Window>(desc.window);
     vk::ContextDesc contextDesc = desc.context;
     for (const std::string& e : Window::requiredInstanceExtensions()) contextDesc.instanceExtensions.push_back(e);
@@ -82,9 +85,9 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
     const float aspect = visibleAspect();
     if (!mSettings.camera.orbitCamera) {
         // Start from the view the command line chose (framing the scene by default).
-        mCamera = scene::OrbitCamera::framing(mScene.bounds, aspect, 0.0f, 90.0f, mSettings.camera.fovYDegrees);
+        mCamera = scene::OrbitCamera::framing(mPose->animationBounds(), aspect, 0.0f, 90.0f, mSettings.camera.fovYDegrees);
         if (mSettings.camera.orbit) {
-            mCamera = scene::OrbitCamera::framing(mScene.bounds, aspect, mSettings.camera.orbit->x,
+            mCamera = scene::OrbitCamera::framing(mPose->animationBounds(), aspect, mSettings.camera.orbit->x,
                                                   mSettings.camera.orbit->y, mSettings.camera.fovYDegrees);
             if (mSettings.camera.orbit->z > 0.0f) {
                 mCamera.radius = mSettings.camera.orbit->z;
@@ -94,7 +97,7 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
         if (mSettings.camera.target) mCamera.target = *mSettings.camera.target;
         if (mSettings.camera.gltfCamera && *mSettings.camera.gltfCamera < mScene.cameras.size()) {
             // Orbit about the point the glTF camera looks at, at the depth of the scene's centre.
-            const glm::mat4& world = mScene.cameras[*mSettings.camera.gltfCamera].world;
+            const glm::mat4& world = mPose->cameras()[*mSettings.camera.gltfCamera].world;
             const glm::vec3 eye(world[3]);
             const glm::vec3 forward = -glm::normalize(glm::vec3(world[2]));
             const float depth = std::max(glm::dot(mCamera.target - eye, forward), mCamera.radius * 0.1f);
@@ -151,8 +154,10 @@ bool Viewer::openFile(const std::filesystem::path& path) {
             // uploads the new one at the next frame.
             mRenderer->waitIdle();
             mScene = std::move(loaded);
+            mPose = std::make_unique<scene::ScenePose>(mScene, scene::selectAnimations(mScene, {}));
+            mAnimationTime = 0.0;
             mCamera = mInitialCamera =
-                scene::OrbitCamera::framing(mScene.bounds, visibleAspect(), 0.0f, 90.0f, mCamera.fovYDegrees);
+                scene::OrbitCamera::framing(mPose->animationBounds(), visibleAspect(), 0.0f, 90.0f, mCamera.fovYDegrees);
             mSettings.camera.gltfCamera.reset();
             setStatus("opened " + path.string());
             return true;
@@ -189,7 +194,7 @@ float Viewer::visibleAspect() const {
 void Viewer::frameScene() {
     const float aspect = visibleAspect();
     const scene::OrbitCamera framed =
-        scene::OrbitCamera::framing(mScene.bounds, aspect, mCamera.thetaDegrees, mCamera.phiDegrees, mCamera.fovYDegrees);
+        scene::OrbitCamera::framing(mPose->animationBounds(), aspect, mCamera.thetaDegrees, mCamera.phiDegrees, mCamera.fovYDegrees);
     mCamera.target = framed.target;
     mCamera.radius = framed.radius;
     mCamera.znear = framed.znear;
@@ -330,6 +335,7 @@ RenderSettings Viewer::frameSettings(VkExtent2D extent) const {
     settings.width = extent.width;
     settings.height = extent.height;
     settings.scene = &mScene;
+    settings.pose = mPose.get();
     settings.environment = mEnvironment.get();
     if (!mEnvironment) settings.ibl.skybox = false;
     settings.camera.orbitCamera = mCamera;
@@ -375,6 +381,14 @@ bool Viewer::frame() {
     }
     if (mUi) drawUi();
     handleInput();
+    if (mPose->animated()) {
+        // Advanced by the wall-clock time since the previous frame's pose; the first frame shows
+        // the starting time.
+        const auto now = std::chrono::steady_clock::now();
+        if (mFramesRendered > 0) mAnimationTime += std::chrono::duration<double>(now - mAnimationClock).count();
+        mAnimationClock = now;
+        mPose->evaluate(mAnimationTime);
+    }
 
     const RenderSettings settings = frameSettings(mSwapchain->extent());
     const PresentTarget target{.image = image->image,

@@ -7,6 +7,7 @@
 // The UI's controls call the public actions below; tests and scripted runs call the same ones.
 
 #include "renderer.h"
+#include "scene/scene_pose.h"
 #include "scene/environment.h"
 #include "scene/scene.h"
 #include "ui/hot_reload.h"
@@ -55,6 +56,8 @@ struct ViewerContent {
     scene::Scene scene;
     std::unique_ptr<scene::Environment> environment;  // null: no image-based lighting
     RenderSettings settings;
+    std::vector<std::string> animations;  // the ones to play (scene::selectAnimations); empty: animation 0
+    double time = 0.0;                    // where playback starts, seconds
 };
 
 class Viewer {
@@ -158,6 +161,10 @@ private:
     bool mRecreate = false;
     bool mSimulatedMinimized = false;
     scene::Scene mScene;
+    // The scene's animations as they play: advanced by the wall-clock time between frames, looping.
+    std::unique_ptr<scene::ScenePose> mPose;
+    double mAnimationTime = 0.0;
+    std::chrono::steady_clock::time_point mAnimationClock;
     std::unique_ptr<scene::Environment> mEnvironment;
     RenderSettings mSettings;
     scene::OrbitCamera mCamera;

@@ -1,0 +1,57 @@
+#include "scene/node_placement.h"
+
+#include <cfloat>
+#include <cmath>
+
+namespace candela::scene {
+namespace {
+
+bool fitsFloat(double v) { return std::isfinite(v) && std::abs(v) <= double(FLT_MAX); }
+
+}  // namespace
+
+Placement placeDraw(Draw& draw, const glm::dmat4& world) {
+    draw.hidden = true;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!fitsFloat(world[c][r])) return Placement::BeyondFloat;
+    const glm::mat4 worldF(world);
+    // In double from the float matrix the GPU gets: in float the determinant overflows for scales
+    // near 1e13, which are valid.
+    const double det = glm::determinant(glm::dmat3(glm::mat3(worldF)));
+    if (det == 0.0 || !std::isfinite(det)) return Placement::Singular;
+    Aabb bounds;
+    const Aabb& local = draw.localBounds;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
+                           (corner & 4) ? local.max.z : local.min.z);
+        const glm::dvec3 w(world * glm::dvec4(p, 1.0));
+        if (!fitsFloat(w.x) || !fitsFloat(w.y) || !fitsFloat(w.z)) return Placement::BeyondFloat;
+        bounds.extend(glm::vec3(w));
+    }
+    draw.world = worldF;
+    draw.flipWinding = det < 0.0;
+    draw.bounds = bounds;
+    draw.hidden = false;
+    return Placement::Placed;
+}
+
+void placeLight(Light& light, const glm::dmat4& world) {
+    light.position = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+    const glm::dvec3 direction = glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0);
+    const double length = glm::length(direction);
+    light.direction = length > 0.0 && std::isfinite(length) ? glm::vec3(direction / length) : glm::vec3(0.0f, 0.0f, -1.0f);
+}
+
+bool placeCamera(Camera& camera, const glm::dmat4& world) {
+    glm::dmat4 m = world;
+    for (int c = 0; c < 3; ++c) {
+        const double length = glm::length(glm::dvec3(m[c]));
+        if (!(length > 0.0) || !std::isfinite(length)) return false;
+        m[c] /= length;
+    }
+    camera.world = glm::mat4(m);
+    return true;
+}
+
+}  // namespace candela::scene

@@ -1,0 +1,30 @@
+#pragma once
+// Where a draw, a light or a camera is once its node's world transform is known. Shared by the
+// glTF loader (the rest pose) and ScenePose (every animated frame), so both place things alike.
+// Pure: no Vulkan.
+
+#include "scene/scene.h"
+
+#include <glm/glm.hpp>
+
+namespace candela::scene {
+
+enum class Placement : uint8_t {
+    Placed,
+    Singular,     // a zero scale on some axis (here or inherited): nothing to see, no normal matrix
+    BeyondFloat,  // the world matrix or a corner of the mesh does not fit a float
+};
+
+// Sets draw.world, draw.flipWinding and draw.bounds (from draw.localBounds) for `world`, and
+// draw.hidden unless the result is Placed. The determinant and the box are computed in double.
+Placement placeDraw(Draw& draw, const glm::dmat4& world);
+
+// Sets the light's position and direction (its node's −Z) from `world`; a direction that cannot be
+// normalized stays −Z.
+void placeLight(Light& light, const glm::dmat4& world);
+
+// Sets camera.world to `world` without scale (glTF cameras ignore it). False, leaving the camera
+// unchanged, when an axis has zero or non-finite length.
+bool placeCamera(Camera& camera, const glm::dmat4& world);
+
+}  // namespace candela::scene
