@@ -164,10 +164,40 @@ INSTANTIATE_TEST_SUITE_P(
                                "--screenshot: also give --frames N (the frame to save; the viewer then exits)"},
                       BadInput{"ViewTwoScenes", "view a.glb b.glb", "unexpected argument 'b.glb': the scene is already a.glb"},
                       BadInput{"SoakZeroFrames", "soak --frames 0", "--frames: must be at least 1"},
+                      BadInput{"TimeNegative", "render --time -1 --out {dir}/x.png", "--time: expected a number of seconds >= 0, got '-1'"},
+                      BadInput{"TimeNotANumber", "render --time soon --out {dir}/x.png", "--time: expected a number of seconds >= 0, got 'soon'"},
+                      BadInput{"AnimationEmptyItem", "render --animation 0,,1 --out {dir}/x.png", "--animation: expected indices, names, all or none, got '0,,1'"},
+                      BadInput{"AnimationOfAStaticScene", "render --scene {dir}/triangle.gltf --animation 0 --out {dir}/x.png", "no animation 0 (the scene has no animations)"},
+                      BadInput{"AnimationNameUnknown", "render --scene {dir}/triangle.gltf --animation Walk --out {dir}/x.png", "no animation named 'Walk' (the scene has no animations)"},
                       BadInput{"MemoryBudgetZero", "render --memory-budget 0 --out {dir}/x.png", "--memory-budget: need at least 1 MiB"}),
     [](const ::testing::TestParamInfo<BadInput>& row) { return std::string(row.param.name); });
 
 TEST(Cli, HelpExitsZero) { EXPECT_EQ(run("--help").exitCode, 0); }
+
+TEST(Cli, TimeAndAnimationChooseThePose) {
+    const std::filesystem::path model = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models/BoxAnimated/glTF-Binary/BoxAnimated.glb";
+    if (!std::filesystem::exists(model)) GTEST_SKIP() << "shared asset missing";
+    const auto dir = tempDir();
+    const auto render = [&](const std::string& flags, const std::string& name) {
+        const std::filesystem::path out = dir / name;
+        const Result r = run("render --env none --validate --width 64 --height 48 --camera-orbit 30,70,5 --target 0,1.3,0 --scene " +
+                             model.string() + " " + flags + " --out " + out.string());
+        EXPECT_EQ(r.exitCode, 0) << r.stderrText;
+        EXPECT_EQ(r.stderrText, "");
+        std::ifstream in(out, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    const std::string start = render("", "start.png");
+    ASSERT_FALSE(start.empty());
+    // The default is animation 0 at time 0; a time later it has moved; one loop later it is back.
+    EXPECT_EQ(render("--animation 0 --time 0", "zero.png"), start);
+    const std::string later = render("--time 1.875", "later.png");
+    EXPECT_NE(later, start);
+    EXPECT_EQ(render("--time 5.583329916000366", "looped.png"), render("--time 1.875 --animation all", "again.png"));
+    // none: the rest pose, which differs from the pose at 1.875 s.
+    EXPECT_NE(render("--animation none --time 1.875", "rest.png"), later);
+    std::filesystem::remove_all(dir);
+}
 
 // A device-memory budget too small for anything is one line naming the resource and exit code 4;
 // one too small only for the default IBL maps lowers their resolution with a warning.

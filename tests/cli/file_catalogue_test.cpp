@@ -23,7 +23,7 @@
 namespace candela::scene::test {
 namespace {
 
-enum class Outcome { Error, Warning };
+enum class Outcome { Error, Warning, Loads };  // Loads: renders quietly (valid, if unusual)
 
 struct Row {
     std::string kind;   // the class of malformed input
@@ -87,6 +87,22 @@ Make gltfOf(std::function<GltfBuilder()> make, std::function<void(const fs::path
         if (extra) extra(dir);
         return make().writeGltf(dir);
     };
+}
+
+// The triangle animated by one channel: sampler input `times`, output `values` (of accessor type
+// `type`), then `edit` may change the JSON (a channel's target, the interpolation, ...).
+Make animatedTriangle(std::vector<float> times, std::vector<float> values, std::string type, int components,
+                      std::function<void(Json&)> edit = {}) {
+    return gltfOf([=] {
+        GltfBuilder b;
+        b.addTriangle();
+        const int input = b.addFloats(times, "SCALAR", 1);
+        const int output = b.addFloats(values, type, components);
+        b.doc["animations"] = Json::array({{{"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}},
+                                            {"samplers", {{{"input", input}, {"output", output}}}}}});
+        if (edit) edit(b.doc);
+        return b;
+    });
 }
 
 uint32_t u32(const Bytes& bytes, size_t at) {
@@ -177,6 +193,9 @@ std::vector<Row> catalogue() {
     auto warning = [&](std::string kind, std::string name, Make make, std::string fragment, bool visible,
                        bool fixed = false) {
         rows.push_back({std::move(kind), std::move(name), std::move(make), Outcome::Warning, std::move(fragment), visible, fixed});
+    };
+    auto loads = [&](std::string kind, std::string name, Make make) {
+        rows.push_back({std::move(kind), std::move(name), std::move(make), Outcome::Loads, "", true, false});
     };
 
     // -- Truncation at many offsets.
@@ -516,6 +535,53 @@ std::vector<Row> catalogue() {
         j["nodes"].push_back({{"children", {0}}, {"scale", {0, 0, 0}}});
         j["scenes"][0]["nodes"] = {1};
     }), "zero scale", false, true);
+
+    // -- Animations (the loader validates them so that playback needs no checks).
+    const std::vector<float> move = {0, 0, 0, 1, 0, 0};
+    error("animation", "InputDecreasing", animatedTriangle({1, 0}, move, "VEC3", 3),
+          "animation 0 sampler 0: key times decrease at key 1");
+    loads("animation", "InputEqualTimes", animatedTriangle({0, 0, 1}, {0, 0, 0, 1, 0, 0, 1, 0, 0}, "VEC3", 3));
+    loads("animation", "LastsTenToTheThirtySeconds", animatedTriangle({0, 1e30f}, move, "VEC3", 3));
+    error("animation", "InputNotFloat", gltfOf([] {
+        GltfBuilder b;
+        b.addTriangle();
+        const int input = b.addAccessor(b.addView(std::vector<uint16_t>{0, 1}), kUnsignedShort, 2, "SCALAR");
+        const int output = b.addFloats({0, 0, 0, 1, 0, 0}, "VEC3", 3);
+        b.doc["animations"] = Json::array({{{"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}},
+                                            {"samplers", {{{"input", input}, {"output", output}}}}}});
+        return b;
+    }), "animation 0 sampler 0 input: accessor 3 must be SCALAR of FLOAT");
+    error("animation", "InputNotScalar", animatedTriangle({0, 1}, move, "VEC3", 3, [](Json& j) {
+        j["animations"][0]["samplers"][0]["input"] = 4;  // the VEC3 output as input
+    }), "input: accessor 4 must be SCALAR of FLOAT, not VEC3");
+    error("animation", "OutputWrongType", animatedTriangle({0, 1}, {0, 0, 0, 1, 1, 0, 0, 1}, "VEC4", 4),
+          "animation 0 sampler 0 output: accessor 4 must be VEC3 of FLOAT");
+    error("animation", "OutputCountNotInputCount", animatedTriangle({0, 1}, {0, 0, 0, 1, 0, 0, 2, 0, 0}, "VEC3", 3),
+          "9 output values for 2 keys (expected 6");
+    error("animation", "CubicOutputWithoutTangents", animatedTriangle({0, 1}, move, "VEC3", 3, [](Json& j) {
+        j["animations"][0]["samplers"][0]["interpolation"] = "CUBICSPLINE";
+    }), "6 output values for 2 keys (expected 18");
+    error("animation", "UnknownInterpolation", animatedTriangle({0, 1}, move, "VEC3", 3, [](Json& j) {
+        j["animations"][0]["samplers"][0]["interpolation"] = "BEZIER";
+    }), "unknown interpolation 'BEZIER'");
+    error("animation", "ChannelMissingNode", animatedTriangle({0, 1}, move, "VEC3", 3, [](Json& j) {
+        j["animations"][0]["channels"][0]["target"]["node"] = 7;
+    }), "animation 0 channel 0: node 7 does not exist");
+    error("animation", "ChannelMissingSampler", animatedTriangle({0, 1}, move, "VEC3", 3, [](Json& j) {
+        j["animations"][0]["channels"][0]["sampler"] = 4;
+    }), "animation 0 channel 0: sampler 4 does not exist");
+    error("animation", "WeightsWithoutMorphTargets", animatedTriangle({0, 1}, {0, 1}, "SCALAR", 1, [](Json& j) {
+        j["animations"][0]["channels"][0]["target"]["path"] = "weights";
+    }), "animates the weights of node 0, whose mesh has no morph targets");
+    error("animation", "AnimatedMatrixNode", animatedTriangle({0, 1}, move, "VEC3", 3, [](Json& j) {
+        j["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    }), "node 0 has a matrix, and only TRS nodes may be animated");
+    error("animation", "ChannelWithoutTarget", animatedTriangle({0, 1}, move, "VEC3", 3, [](Json& j) {
+        j["animations"][0]["channels"][0].erase("target");
+    }), "channels[0].target: expected an object");
+    warning("animation", "PointerPath", animatedTriangle({0, 1}, move, "VEC3", 3, [](Json& j) {
+        j["animations"][0]["channels"][0]["target"]["path"] = "pointer";
+    }), "animation 0 channel 0: target path 'pointer' is not supported (ignored)", true);
     return rows;
 }
 
@@ -559,7 +625,10 @@ TEST_P(Catalogue, StatedOutcomeAndExitCode) {
         return;
     }
     EXPECT_EQ(r.exitCode, 0) << r.stderrText;
-    bool named = false;
+    if (row.outcome == Outcome::Loads) {
+        EXPECT_EQ(r.stderrText, "") << "a valid file renders quietly";
+    }
+    bool named = row.outcome == Outcome::Loads;
     for (const std::string& line : stderrLines) {
         EXPECT_EQ(line.rfind("candela: warning: ", 0), 0u) << line;
         named = named || (line.find(file.string()) != std::string::npos && line.find(row.fragment) != std::string::npos);

@@ -18,6 +18,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/gltf_loader.h"
 #include "scene/procedural_sky.h"
+#include "scene/scene_pose.h"
 #include "shared/tonemap.h"
 
 #include <stb_image.h>
@@ -38,6 +39,10 @@ struct GoldenCase {
     // else a file under ../shared/assets/environments, shown as the skybox, without default lights.
     const char* environment = "";
     float environmentRotation = 0.0f;
+    // Animated models: the animations to play (as --animation: "0", "all", a name; "" the default)
+    // and the time, seconds.
+    const char* animation = "";
+    double time = 0.0;
 };
 
 constexpr uint32_t kWidth = 256, kHeight = 192;
@@ -67,6 +72,11 @@ const GoldenCase kCases[] = {
     {"ibl_default_scene_studio", "", {0.0f, 90.0f, 0.0f}, "studio_small_03_1k.hdr"},
     {"ibl_default_scene_venice", "", {0.0f, 90.0f, 0.0f}, "venice_sunset_1k.hdr", 180.0f},
     {"ibl_default_scene_sky", "", {0.0f, 90.0f, 0.0f}, "sky"},
+    // Node animation (rigid): rotation (LINEAR quaternions), translation and a hierarchy, and the
+    // three interpolation modes side by side between their keys.
+    {"animated_cube_t0_75", "AnimatedCube/glTF/AnimatedCube.gltf", {30.0f, 70.0f, 0.0f}, "", 0.0f, "", 0.75},
+    {"box_animated_t1_875", "BoxAnimated/glTF-Binary/BoxAnimated.glb", {30.0f, 80.0f, 0.0f}, "", 0.0f, "", 1.875},
+    {"interpolation_test_t0_9", "InterpolationTest/glTF-Binary/InterpolationTest.glb", {0.0f, 90.0f, 20.0f}, "", 0.0f, "all", 0.9},
 };
 
 class GoldenTest : public GpuTest, public ::testing::WithParamInterface<GoldenCase> {};
@@ -100,7 +110,11 @@ TEST_P(GoldenTest, MatchesApprovedImage) {
         if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared asset missing: " << path;
         environment = scene::loadEnvironment(path);
     }
-    RenderSettings settings{.width = kWidth, .height = kHeight, .scene = &scene};
+    std::vector<std::string> animations;
+    if (*c.animation) animations.emplace_back(c.animation);
+    scene::ScenePose pose(scene, scene::selectAnimations(scene, animations));
+    pose.evaluate(c.time);
+    RenderSettings settings{.width = kWidth, .height = kHeight, .scene = &scene, .pose = &pose};
     settings.camera.orbit = c.orbit;
     settings.tonemap.background = shading::srgbDecode(glm::vec3(0x26 / 255.0f));
     if (environment) {
