@@ -99,6 +99,37 @@ std::array<float, 3> parseTriple(const std::string& flag, const std::string& val
     return out;
 }
 
+std::string sequenceFileName(const std::string& pattern, uint32_t index) {
+    std::string out;
+    int fields = 0;
+    for (size_t i = 0; i < pattern.size(); ++i) {
+        if (pattern[i] != '%') {
+            out += pattern[i];
+            continue;
+        }
+        if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
+            out += '%';
+            ++i;
+            continue;
+        }
+        size_t j = i + 1;
+        int width = 0;
+        if (j < pattern.size() && pattern[j] == '0')
+            while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && width < 100)
+                width = width * 10 + (pattern[j++] - '0');
+        if (j >= pattern.size() || pattern[j] != 'd')
+            throw UserError("--out " + pattern + ": an image sequence needs one %d or %0Nd for the frame number (and %% for a %)");
+        std::string number = std::to_string(index);
+        if (int(number.size()) < width) number.insert(0, size_t(width) - number.size(), '0');
+        out += number;
+        ++fields;
+        i = j;
+    }
+    if (fields != 1)
+        throw UserError("--out " + pattern + ": an image sequence needs exactly one %d or %0Nd for the frame number");
+    return out;
+}
+
 double parseSeconds(const std::string& flag, const std::string& value) {
     double seconds = 0.0;
     const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), seconds);
@@ -215,6 +246,18 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         table.switches["--dither"] = [&] { o.dither = true; };
         table.switches["--no-default-lights"] = [&] { o.defaultLights = false; };
         table.switches["--explain"] = [&] { o.explain = true; };
+        if (command.kind == Command::Kind::Render) {
+            o.frames = 1;
+            table.withValue["--frames"] = [&](const std::string& v) {
+                o.frames = parseDimension("--frames", v);
+                if (o.frames == 0) throw UserError("--frames: need at least 1 frame");
+            };
+            table.withValue["--fps"] = [&](const std::string& v) {
+                o.fps = parseSeconds("--fps", v);
+                if (!(o.fps > 0.0)) throw UserError("--fps: expected frames per second > 0, got '" + v + "'");
+            };
+            table.withValue["--turntable"] = [&](const std::string& v) { o.turntableDegrees = parseNumber("--turntable", v); };
+        }
         if (command.kind == Command::Kind::Bench) {
             table.withValue["--frames"] = [&](const std::string& v) {
                 o.frames = parseDimension("--frames", v);
@@ -244,7 +287,7 @@ Command parseCommandLine(const std::vector<std::string>& args) {
             };
             table.withValue["--panels"] = [&](const std::string& v) {
                 static const std::vector<std::string> known = {"graph", "parameters", "materials", "environment",
-                                                               "camera", "debug", "stats"};
+                                                               "camera", "animation", "debug", "stats"};
                 o.panels.clear();
                 size_t start = 0;
                 while (start <= v.size()) {
@@ -350,6 +393,10 @@ render options:
   --animation LIST      the glTF animations to play: indices or names, all or none (rest pose);
                         comma-separated or repeated [0, when the scene has animations]
   --time SECONDS        the moment of the animations to draw; each loops over its own duration [0]
+  --frames N            render: an image sequence of N frames (--out holds a %04d-style frame number)
+                        [1]
+  --fps F               render: frames per second of the sequence; frame i shows --time + i/F [30]
+  --turntable DEGREES   render: turn the orbit camera by DEGREES over the sequence (360: once round)
   --camera INDEX        use the scene's glTF camera INDEX
   --camera-orbit T,P,R  orbit camera: azimuth T and polar angle P in degrees, distance R in metres
                         (eye = target + R(sin P sin T, cos P, sin P cos T); R <= 0 frames the scene)
@@ -394,11 +441,11 @@ view options: the render options (except --out, --width and --height: the window
   --no-vsync            present without waiting for the display (mailbox or immediate)
   --no-ui               hide the ImGui panels (the ImGui pass is left out)
   --panels LIST         panels open at start, comma-separated: graph, parameters, materials,
-                        environment, camera, debug, stats [graph,parameters,stats]
+                        environment, camera, animation, debug, stats [graph,parameters,stats]
   --shaders DIR         hot-reload the shaders from DIR [the source tree's shaders/ folder]
   --ibl-report FILE     show this ibl-report CSV's figures in the environment panel too
   mouse and keys: right-drag rotate, middle-drag pan, wheel zoom, F frame the scene, R reset the
-  camera, P or F12 screenshot (candela-screenshot.png), Esc quit; drop a .gltf/.glb to open it,
+  camera, space pause/play the animation, P or F12 screenshot (candela-screenshot.png), Esc quit; drop a .gltf/.glb to open it,
   an .hdr/.exr to light the scene with it
 
 bench options: the render options that choose the scene, camera and shading, and

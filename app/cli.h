@@ -54,7 +54,16 @@ struct RenderOptions {
     // --animation LIST (repeatable, comma-separated: indices, names, all, none); empty: animation 0
     std::vector<std::string> animations;
     double time = 0.0;                // --time SECONDS (each animation loops over its duration)
+    // render: an image sequence of --frames N (default 1) frames at --fps F, written to the --out
+    // pattern (one %d, e.g. frame_%04d.png); frame i shows --time + i / F, and with
+    // --turntable DEGREES the orbit camera turns that far over the sequence.
+    double fps = 30.0;
+    float turntableDegrees = 0.0f;
 };
+
+// The file name of frame `index` of an image sequence: `pattern` with its one %d or %0Nd replaced.
+// Throws UserError when the pattern does not hold exactly one such field (% written as %%).
+std::string sequenceFileName(const std::string& pattern, uint32_t index);
 
 struct InfoOptions {
     CommonOptions common;

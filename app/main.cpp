@@ -91,8 +91,11 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
 }
 
 int runRender(const RenderOptions& options) {
-    const io::ImageFileFormat format = io::imageFileFormat(options.out);
-    io::checkWritable(options.out);
+    // One image, or frames 0 … N−1 of a sequence named by the --out pattern.
+    const bool sequence = options.frames > 1;
+    const auto outName = [&](uint32_t frame) { return sequence ? sequenceFileName(options.out, frame) : options.out; };
+    const io::ImageFileFormat format = io::imageFileFormat(outName(0));
+    io::checkWritable(outName(0));
     for (const std::string& path : {options.graphDot, options.graphJson})
         if (!path.empty()) io::checkWritable(path);
 
@@ -100,33 +103,43 @@ int runRender(const RenderOptions& options) {
     const std::optional<scene::Environment> environment = loadEnvironment(options);
     RenderSettings settings = renderSettings(options, scene, environment ? &*environment : nullptr);
     settings.floatOutput = io::isFloatFormat(format);
-    const scene::ScenePose pose = loadPose(options, scene);
+    scene::ScenePose pose = loadPose(options, scene);
     settings.pose = &pose;
+    const glm::vec3 orbit = settings.camera.orbit.value_or(glm::vec3(0.0f, 90.0f, 0.0f));
 
     vk::Context context(contextDesc(options.common));
     Renderer renderer(context);
-    const CapturedFrame frame = renderer.capture(settings);
+    CapturedFrame frame;
+    for (uint32_t i = 0; i < options.frames; ++i) {
+        if (sequence) {
+            pose.evaluate(options.time + double(i) / options.fps);
+            if (options.turntableDegrees != 0.0f)
+                settings.camera.orbit = orbit + glm::vec3(options.turntableDegrees * float(i) / float(options.frames), 0.0f, 0.0f);
+        }
+        frame = renderer.capture(settings);
+        const std::string out = outName(i);
+        switch (format) {
+            case io::ImageFileFormat::Png: io::writePng(out, frame.width, frame.height, frame.rgba8); break;
+            case io::ImageFileFormat::Exr: io::writeExr(out, frame.width, frame.height, frame.rgba32f); break;
+            case io::ImageFileFormat::Pfm: io::writePfm(out, frame.width, frame.height, frame.rgba32f); break;
+        }
+        std::printf("wrote %s (%ux%u", out.c_str(), frame.width, frame.height);
+        if (sequence) std::printf(", t = %.4f s", pose.time());
+        std::printf("): submit+wait %.2f ms, readback %.2f ms", frame.submitWaitMs, frame.readbackMs);
+        const graph::GraphDecl& decl = renderer.lastGraph().declaration();
+        for (uint32_t pass : renderer.lastGraph().compiled().order)
+            if (frame.timings.gpuMs.size() > pass && frame.timings.gpuMs[pass] >= 0.0)
+                std::printf("; %s %.2f ms GPU", decl.passes[pass].name.c_str(), frame.timings.gpuMs[pass]);
+        std::printf("\n");
+    }
     if (options.explain)
         for (const std::string& line : renderer.explain()) std::printf("%s\n", line.c_str());
-
-    switch (format) {
-        case io::ImageFileFormat::Png: io::writePng(options.out, frame.width, frame.height, frame.rgba8); break;
-        case io::ImageFileFormat::Exr: io::writeExr(options.out, frame.width, frame.height, frame.rgba32f); break;
-        case io::ImageFileFormat::Pfm: io::writePfm(options.out, frame.width, frame.height, frame.rgba32f); break;
-    }
+    // The graph exports describe the last frame.
     const graph::RenderGraph& graph = renderer.lastGraph();
     if (!options.graphDot.empty())
         writeText(options.graphDot, graph::exportDot(graph.declaration(), graph.compiled(), &frame.timings));
     if (!options.graphJson.empty())
         writeText(options.graphJson, graph::exportJson(graph.declaration(), graph.compiled(), &frame.timings));
-
-    std::printf("wrote %s (%ux%u): submit+wait %.2f ms, readback %.2f ms", options.out.c_str(), frame.width,
-                frame.height, frame.submitWaitMs, frame.readbackMs);
-    const graph::GraphDecl& decl = graph.declaration();
-    for (uint32_t pass : graph.compiled().order)
-        if (frame.timings.gpuMs.size() > pass && frame.timings.gpuMs[pass] >= 0.0)
-            std::printf("; %s %.2f ms GPU", decl.passes[pass].name.c_str(), frame.timings.gpuMs[pass]);
-    std::printf("\n");
     if (context.validationMessageCount() > 0) {
         log::error(std::to_string(context.validationMessageCount()) + " validation messages");
         return 3;

@@ -75,6 +75,7 @@ void Renderer::prepareScene(const RenderSettings& settings) {
                                                   addLights ? defaultLights() : std::vector<scene::Light>{},
                                                   cpuDevice ? 1.0f : 8.0f);
     mForward.setScene(*mGpuScene);
+    mRestPose = settings.scene->deformations.empty() ? nullptr : std::make_unique<scene::ScenePose>(*settings.scene, std::vector<uint32_t>{});
     mUploaded = settings.scene;
     mUploadedDefaultLights = addLights;
 }
@@ -332,6 +333,32 @@ BufferId Renderer::importReadback(Frame& frame, VkDeviceSize bytes) {
     return readback;
 }
 
+std::optional<passes::ForwardPass::DeformedVertices> Renderer::addSkinMorph(Frame& frame, const scene::ScenePose& pose) {
+    if (mUploaded->deformations.empty()) return std::nullopt;  // a static scene: its graph stays as it was
+    passes::SkinMorphFrame work = passes::skinMorphFrame(*mGpuScene, pose);
+    if (work.jobs.empty()) {
+        frame.notes.emplace_back("left out: skin_morph (no draw is skinned or has a non-zero morph weight in this pose)");
+        return std::nullopt;
+    }
+    const auto bytes = [](const auto& items) {
+        std::vector<std::byte> b(items.size() * sizeof(items[0]));
+        if (!b.empty()) std::memcpy(b.data(), items.data(), b.size());
+        return b;
+    };
+    const passes::SkinMorphPass::Inputs inputs{.scene = mGpuScene.get(),
+                                               .jobs = work.jobs,
+                                               .vertexCount = work.vertexCount,
+                                               .joints = addHostUpload(frame, "joint_matrices", bytes(work.joints)),
+                                               .activeTargets = addHostUpload(frame, "morph_weights", bytes(work.activeTargets))};
+    if (!mSkinMorph) mSkinMorph = std::make_unique<passes::SkinMorphPass>(mContext);
+    frame.notes.push_back("skin_morph: " + std::to_string(work.jobs.size()) + " draws deformed (" +
+                          std::to_string(work.skinnedDraws) + " skinned), " + std::to_string(work.activeTargets.size()) +
+                          " morph targets with a non-zero weight, " + std::to_string(work.vertexCount) + " vertices (" +
+                          formatBytes(uint64_t(work.vertexCount) * sizeof(scene::Vertex)) + " per frame in flight)");
+    return passes::ForwardPass::DeformedVertices{.vertices = mSkinMorph->add(*frame.graph, inputs),
+                                                 .vertexOffset = std::move(work.vertexOffset)};
+}
+
 BufferId Renderer::addHostUpload(Frame& frame, std::string name, std::vector<std::byte> bytes) {
     // Nothing on the device wrote it before the frame: no barrier to wait for.
     const BufferId buffer = frame.graph->importBuffer(std::move(name), {.size = std::max<VkDeviceSize>(bytes.size(), 16)},
@@ -395,10 +422,12 @@ void Renderer::buildPatternGraph(Frame& frame, const RenderSettings& settings) {
 void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std::optional<TextureId> target) {
     RenderGraph& graph = *frame.graph;
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
-    const scene::ScenePose* pose = settings.pose && settings.pose->animated() ? settings.pose : nullptr;
+    const scene::ScenePose* pose = settings.pose ? settings.pose : mRestPose.get();
     const scene::ViewSetup view = resolveView(*settings.scene, settings.camera, aspect, pose);
+    const std::optional<passes::ForwardPass::DeformedVertices> deformed =
+        pose ? addSkinMorph(frame, *pose) : std::optional<passes::ForwardPass::DeformedVertices>();
     std::optional<passes::ForwardPass::PosedDraws> posed;
-    if (pose) {
+    if (pose && pose->animated()) {
         const std::vector<scene::Draw>& draws = pose->draws();
         std::vector<std::byte> data(draws.size() * sizeof(shading::DrawData));
         for (size_t i = 0; i < draws.size(); ++i)
@@ -427,7 +456,7 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
     applySceneParameters();
     const passes::ForwardPass::Output forward =
         mForward.add(graph, settings.width, settings.height, view, settings.shading, ibl ? &*ibl : nullptr, &mParameters,
-                     settings.debugView, posed ? &*posed : nullptr);
+                     settings.debugView, posed ? &*posed : nullptr, deformed ? &*deformed : nullptr);
     frame.debugView = settings.debugView;
     frame.hdr = forward.hdr;
     frame.skybox = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;

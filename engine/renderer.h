@@ -16,6 +16,7 @@
 #include "passes/encode_pass.h"
 #include "passes/forward_pass.h"
 #include "passes/pattern_pass.h"
+#include "passes/skin_morph_pass.h"
 #include "passes/skybox_pass.h"
 #include "passes/tonemap_pass.h"
 #include "scene/camera.h"
@@ -255,6 +256,9 @@ private:
     passes::IblHandles addIblMaps(Frame& frame, bool reference);
     // Imports the readback buffer, (re)created for `bytes`, into `frame` (final state: host read).
     graph::BufferId importReadback(Frame& frame, VkDeviceSize bytes);
+    // Adds the skin_morph pass for the pose's deformed draws (with this frame's joint matrices and
+    // non-zero morph weights as host uploads); nullopt, and an --explain note, when none is deformed.
+    std::optional<passes::ForwardPass::DeformedVertices> addSkinMorph(Frame& frame, const scene::ScenePose& pose);
     // Declares `bytes` as a storage buffer the CPU writes for this frame (Frame::hostUploads).
     graph::BufferId addHostUpload(Frame& frame, std::string name, std::vector<std::byte> bytes);
     // Copies the frame's host uploads into the current slot's buffers and binds them.
@@ -276,6 +280,10 @@ private:
     const scene::Scene* mUploaded = nullptr;
     bool mUploadedDefaultLights = false;
     std::unique_ptr<scene::GpuScene> mGpuScene;
+    // The rest pose of an uploaded scene with skins or morph targets, drawn when a frame brings no
+    // pose of its own (skinned meshes are placed by their joints even at rest).
+    std::unique_ptr<scene::ScenePose> mRestPose;
+    std::unique_ptr<passes::SkinMorphPass> mSkinMorph;  // created with the first deformed frame
     // What mIbl was last set up with (the environment is re-hashed only when these change).
     const scene::Environment* mEnvironment = nullptr;
     ibl::IblQuality mIblQuality;

@@ -96,7 +96,7 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene) {
 
 ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
                                      ShadingModel model, const Ibl* ibl, shader::ParameterRegistry* parameters,
-                                     DebugView debugView, const PosedDraws* posed) {
+                                     DebugView debugView, const PosedDraws* posed, const DeformedVertices* deformed) {
     const scene::Scene& scene = mScene->scene();
     const std::span<const scene::Draw> draws = posed ? posed->draws : std::span<const scene::Draw>(scene.draws);
     std::vector<DrawItem> opaque, blended;
@@ -114,7 +114,8 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
         (v.blend ? blended : opaque)
             .push_back({.draw = i, .pipeline = &pipeline(v), .depth = glm::length(centre - view.eye),
                         .firstIndex = draw.firstIndex, .indexCount = draw.indexCount, .material = draw.material,
-                        .flipWinding = draw.flipWinding, .doubleSided = scene.materials[draw.material].doubleSided});
+                        .flipWinding = draw.flipWinding, .doubleSided = scene.materials[draw.material].doubleSided,
+                        .vertexOffset = deformed ? deformed->vertexOffset[i] : kRestVertices});
     }
     // Opaque grouped by pipeline (fewer binds); blended back to front.
     std::stable_sort(opaque.begin(), opaque.end(), [](const DrawItem& a, const DrawItem& b) { return a.pipeline < b.pipeline; });
@@ -139,7 +140,8 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
         TextureId hdr;
         TextureId depth;
         IblHandles ibl;  // as declared: resolved in execute
-        BufferId draws;  // the posed draw data, when animated
+        BufferId draws;     // the posed draw data, when animated
+        BufferId deformed;  // the deformed vertices, when some draw is deformed
     };
     shading::ForwardPush push{};
     push.viewProjection = view.viewProjection;
@@ -162,6 +164,7 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
             if (posed)
                 d.draws = builder.read(posed->data, Usage::StorageRead,
                                        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            if (deformed) d.deformed = builder.read(deformed->vertices, Usage::Vertex);
         },
         [items, frameConstants = push, gpuScene, staticSceneSet = mSceneSet, materialSets, iblSets,
          program](const Data& d, PassContext& ctx) {
@@ -177,8 +180,10 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
             VkCommandBuffer cmd = ctx.cmd();
             ctx.beginRendering();
             const VkDeviceSize offset = 0;
-            const VkBuffer vertices = gpuScene->vertexBuffer();
-            vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
+            const VkBuffer rest = gpuScene->vertexBuffer();
+            const VkBuffer deformedVertices = d.deformed.valid() ? ctx.buffer(d.deformed) : VK_NULL_HANDLE;
+            VkBuffer boundVertices = rest;
+            vkCmdBindVertexBuffers(cmd, 0, 1, &rest, &offset);
             vkCmdBindIndexBuffer(cmd, gpuScene->indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
             const vk::Pipeline* bound = nullptr;
             for (const DrawItem& item : items) {
@@ -197,7 +202,12 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
                 vkCmdSetFrontFace(cmd, item.flipWinding ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
                 constants.counts.y = item.draw;
                 bound->pushConstants(cmd, &constants, sizeof(constants));
-                vkCmdDrawIndexed(cmd, item.indexCount, 1, item.firstIndex, 0, 0);
+                const bool restVertices = item.vertexOffset == kRestVertices;
+                if (const VkBuffer wanted = restVertices ? rest : deformedVertices; wanted != boundVertices) {
+                    boundVertices = wanted;
+                    vkCmdBindVertexBuffers(cmd, 0, 1, &boundVertices, &offset);
+                }
+                vkCmdDrawIndexed(cmd, item.indexCount, 1, item.firstIndex, restVertices ? 0 : item.vertexOffset, 0);
             }
             ctx.endRendering();
         });

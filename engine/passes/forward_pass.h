@@ -15,6 +15,7 @@
 #include "vk/descriptors.h"
 #include "vk/pipeline_cache.h"
 
+#include <climits>
 #include <memory>
 #include <span>
 #include <string>
@@ -56,12 +57,21 @@ public:
         std::span<const scene::Draw> draws;
         graph::BufferId data;
     };
+    // This frame's deformed vertices (the skin_morph pass's output) and, per scene draw, the
+    // vertex offset that maps its indices into them (kRestVertices: drawn from the scene's own).
+    struct DeformedVertices {
+        graph::BufferId vertices;
+        std::vector<int32_t> vertexOffset;
+    };
+    static constexpr int32_t kRestVertices = INT32_MIN;
     // Adds the pass drawing the current scene as seen from `view`, lit by the scene's lights and,
-    // when `ibl` is given, the environment; posed by `posed` when given. Returns the written targets.
+    // when `ibl` is given, the environment; posed by `posed` and drawn from `deformed` vertices
+    // where given. Returns the written targets.
     // With `parameters`, the user's values for the per-frame push constants apply ("forward", "Push").
     Output add(graph::RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
                ShadingModel model, const Ibl* ibl = nullptr, shader::ParameterRegistry* parameters = nullptr,
-               DebugView debugView = DebugView::None, const PosedDraws* posed = nullptr);
+               DebugView debugView = DebugView::None, const PosedDraws* posed = nullptr,
+               const DeformedVertices* deformed = nullptr);
     // The reflection of the forward shaders (every variant shares the layout).
     const shader::ShaderReflection& reflection() { return pipeline(Variant{}).program().reflection(); }
 
@@ -94,6 +104,7 @@ private:
         float depth;  // view distance, for sorting blended draws
         uint32_t firstIndex, indexCount, material;
         bool flipWinding, doubleSided;
+        int32_t vertexOffset;  // kRestVertices: the scene's vertex buffer; else into the deformed one
     };
     const vk::Pipeline& pipeline(const Variant& variant);
     static vk::GraphicsPipelineDesc desc(const Variant& variant);

@@ -76,10 +76,6 @@ void checkAsset(const gltf::LoadContext& ctx, const tinygltf::Model& model) {
         if (!supported(extension) && std::find(model.extensionsRequired.begin(), model.extensionsRequired.end(),
                                                extension) == model.extensionsRequired.end())
             ctx.warn("extension " + extension + " is not supported (ignored)");
-    if (!model.skins.empty()) ctx.warn("skins are not supported (ignored; meshes drawn in bind pose)");
-    for (const tinygltf::Mesh& mesh : model.meshes)
-        for (const tinygltf::Primitive& primitive : mesh.primitives)
-            if (!primitive.targets.empty()) return ctx.warn("morph targets are not supported (ignored)");
 }
 
 void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, const std::filesystem::path& path,

@@ -1,6 +1,7 @@
 #include "scene/gltf_mesh.h"
 
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_deform.h"
 #include "scene/mesh_normals.h"
 #include "scene/tangents.h"
 #include "scene/texture_transform.h"
@@ -88,7 +89,8 @@ Attributes readAttributes(const LoadContext& ctx, const tinygltf::Model& model, 
 // MikkTSpace tangents for the normal texture's UV set; corners of one vertex that get different
 // tangents (mirrored UVs, seams) become separate vertices.
 void generateVertexTangents(const LoadContext& ctx, const std::string& what, const TextureRef& normalTexture,
-                            const Attributes& attributes, std::vector<Vertex>& vertices, std::vector<uint32_t>& indices) {
+                            const Attributes& attributes, std::vector<Vertex>& vertices, std::vector<uint32_t>& indices,
+                            std::vector<uint32_t>& origin) {
     const uint32_t set = normalTexture.texCoord;
     if (!attributes.uv[set]) {
         ctx.warn(what + ": the normal texture uses TEXCOORD_" + std::to_string(set) +
@@ -112,6 +114,7 @@ void generateVertexTangents(const LoadContext& ctx, const std::string& what, con
 
     std::vector<Vertex> split;
     split.reserve(vertices.size());
+    std::vector<uint32_t> splitOrigin;
     std::vector<int64_t> first(vertices.size(), -1);  // first split vertex made from each vertex
     std::vector<int64_t> next;                        // chain of split vertices from the same vertex
     for (size_t c = 0; c < indices.size(); ++c) {
@@ -126,12 +129,14 @@ void generateVertexTangents(const LoadContext& ctx, const std::string& what, con
             found = int64_t(split.size());
             split.push_back(vertices[source]);
             split.back().tangent = tangents[c];
+            splitOrigin.push_back(origin[source]);
             next.push_back(-1);
             (last < 0 ? first[source] : next[size_t(last)]) = found;
         }
         indices[c] = uint32_t(found);
     }
     vertices = std::move(split);
+    origin = std::move(splitOrigin);
 }
 
 }  // namespace
@@ -197,6 +202,7 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
         vertices[i].position = glm::vec3(positions[i]);
     }
     const Attributes attributes = readAttributes(ctx, model, primitive, what, vertices);
+    const SourceDeformation deformation = readDeformation(ctx, model, primitive, what, count);
 
     std::vector<uint32_t> indices;
     if (primitive.indices >= 0) {
@@ -220,10 +226,13 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
     }
 
     // Without normals the specification asks for flat normals, and any TANGENT is ignored.
-    if (!attributes.normals) makeFlatNormals(vertices, indices);
+    // Both steps may split vertices: `origin` maps each vertex to the file's vertex it came from.
+    std::vector<uint32_t> origin(vertices.size());
+    std::iota(origin.begin(), origin.end(), 0u);
+    if (!attributes.normals) makeFlatNormals(vertices, indices, origin);
     const bool haveTangents = attributes.tangents && attributes.normals;
     if (!haveTangents && material.normal.present())
-        generateVertexTangents(ctx, what, material.normal, attributes, vertices, indices);
+        generateVertexTangents(ctx, what, material.normal, attributes, vertices, indices, origin);
 
     const size_t base = scene.vertices.size();
     if (base + vertices.size() > std::numeric_limits<uint32_t>::max() ||
@@ -238,6 +247,11 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
         scene.indices.push_back(uint32_t(base + i));
     }
     scene.vertices.insert(scene.vertices.end(), vertices.begin(), vertices.end());
+    if (!deformation.empty()) {
+        out.deformation = int32_t(scene.deformations.size());
+        out.renormalizedWeights = deformation.renormalized;
+        scene.deformations.push_back(remapDeformation(deformation, origin, uint32_t(base)));
+    }
     return out;
 }
 

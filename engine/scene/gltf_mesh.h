@@ -19,6 +19,8 @@ struct PrimitiveGeometry {
     uint32_t firstIndex = 0;
     uint32_t indexCount = 0;
     Aabb bounds;  // local (mesh) space
+    int32_t deformation = -1;        // Scene::deformations entry (morph targets, skin weights)
+    size_t renormalizedWeights = 0;  // vertices whose skin weights were more than 1% off 1
 };
 
 // Reads primitive `primitive` of mesh `mesh` (both indices valid) and appends it to scene.vertices

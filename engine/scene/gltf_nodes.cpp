@@ -1,7 +1,9 @@
 #include "scene/gltf_nodes.h"
 
+#include "scene/gltf_accessors.h"
 #include "scene/gltf_mesh.h"
 #include "scene/node_placement.h"
+#include "scene/skinning.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -134,10 +136,69 @@ public:
         }
     }
 
+    // After the walk: the skins the draws use (joints must be in the scene), skinned draws placed
+    // by their joints' rest pose, one warning for renormalized skin weights, the scene bounds.
+    void finish() {
+        std::vector<int32_t> sceneNode(mModel.nodes.size(), -1);
+        for (size_t i = 0; i < mScene.nodes.size(); ++i) sceneNode[size_t(mScene.nodes[i].source)] = int32_t(i);
+        std::map<int, int32_t> skins;  // glTF skin → Scene::skins
+        std::vector<glm::dmat4> joints;
+        for (Draw& draw : mScene.draws) {
+            if (draw.skin >= 0) {
+                auto [it, added] = skins.try_emplace(draw.skin, int32_t(mScene.skins.size()));
+                if (added) mScene.skins.push_back(loadSkin(draw.skin, sceneNode));
+                const Skin& skin = mScene.skins[size_t(it->second)];
+                const Deformation& deformation = mScene.deformations[size_t(draw.deformation)];
+                if (deformation.maxJoint >= skin.joints.size())
+                    mCtx.fail(label("skin", draw.skin, skin.name) + ": a vertex names joint " + std::to_string(deformation.maxJoint) +
+                              ", but the skin has " + std::to_string(skin.joints.size()) + " joints");
+                draw.skin = it->second;
+                jointMatrices(skin, mScene.nodes, joints);
+                placeSkinnedDraw(draw, skinnedBounds(jointMeshBounds(deformation, skin, mScene.vertices), joints,
+                                                     morphReach(deformation, mScene.nodes[size_t(draw.node)].weights)));
+            }
+            mScene.bounds.extend(draw.bounds);
+        }
+        if (mRenormalizedWeights)
+            mCtx.warn(std::to_string(mRenormalizedWeights) + " vertices have skin weights that do not sum to 1 (renormalized)");
+    }
+
 private:
+    Skin loadSkin(int index, const std::vector<int32_t>& sceneNode) {
+        const tinygltf::Skin& source = mModel.skins[size_t(index)];
+        const std::string what = label("skin", index, source.name);
+        // JOINTS are unsigned bytes or shorts: no vertex can name a joint beyond 65535.
+        constexpr size_t kMaxJoints = 65536;
+        if (source.joints.size() > kMaxJoints)
+            mCtx.fail(what + ": " + std::to_string(source.joints.size()) + " joints, more than the " +
+                      std::to_string(kMaxJoints) + " a vertex can name");
+        if (source.joints.empty()) mCtx.fail(what + ": no joints");
+        Skin skin{.name = source.name};
+        for (int joint : source.joints) {
+            if (joint < 0 || size_t(joint) >= mModel.nodes.size())
+                mCtx.fail(what + ": joint node " + std::to_string(joint) + " does not exist");
+            if (sceneNode[size_t(joint)] < 0) mCtx.fail(what + ": joint node " + std::to_string(joint) + " is not in the scene");
+            skin.joints.push_back(uint32_t(sceneNode[size_t(joint)]));
+        }
+        skin.inverseBind.assign(skin.joints.size(), glm::mat4(1.0f));
+        if (source.inverseBindMatrices >= 0) {
+            const std::vector<float> m =
+                readFloats(mCtx, mModel, source.inverseBindMatrices, TINYGLTF_TYPE_MAT4, false, what + " inverseBindMatrices");
+            if (m.size() != 16 * skin.joints.size())
+                mCtx.fail(what + ": inverseBindMatrices has " + std::to_string(m.size() / 16) + " matrices for " +
+                          std::to_string(skin.joints.size()) + " joints");
+            for (size_t j = 0; j < skin.joints.size(); ++j) {
+                for (size_t k = 0; k < 16; ++k)
+                    if (!std::isfinite(m[16 * j + k])) mCtx.fail(what + ": inverse bind matrix " + std::to_string(j) + " is not finite");
+                skin.inverseBind[j] = glm::make_mat4(m.data() + 16 * j);
+            }
+        }
+        return skin;
+    }
+
     void visit(const tinygltf::Node& node, const std::string& what, int32_t sceneNode) {
         const glm::dmat4 world = mScene.nodes[size_t(sceneNode)].world;  // a copy: the vector grows later
-        if (node.mesh >= 0) addMesh(node.mesh, what, world, sceneNode);
+        if (node.mesh >= 0) addMesh(node.mesh, node.skin, what, world, sceneNode);
         if (node.camera >= 0) addCamera(node, what, world, sceneNode);
         if (auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end())
             addLight(it->second, what, world, sceneNode);
@@ -155,34 +216,43 @@ private:
         return uint32_t(mDefaultMaterial);
     }
 
-    void addMesh(int meshIndex, const std::string& what, const glm::dmat4& world, int32_t sceneNode) {
+    void addMesh(int meshIndex, int skin, const std::string& what, const glm::dmat4& world, int32_t sceneNode) {
         if (size_t(meshIndex) >= mModel.meshes.size()) mCtx.fail(what + ": mesh " + std::to_string(meshIndex) + " does not exist");
+        if (skin >= 0 && size_t(skin) >= mModel.skins.size()) mCtx.fail(what + ": skin " + std::to_string(skin) + " does not exist");
         // A zero scale on any axis (here or inherited) flattens the mesh to nothing visible and
         // leaves no normal matrix: a static node's draws are left out, an animated one's are kept,
-        // hidden until the animation scales them up.
+        // hidden until the animation scales them up. (A skinned mesh ignores its node's transform.)
         Draw probe{.localBounds = Aabb{glm::vec3(0.0f), glm::vec3(0.0f)}};
         const bool movable = mMovable[size_t(sceneNode)];
-        if (placeDraw(probe, world) == Placement::Singular && !movable)
+        if (skin < 0 && placeDraw(probe, world) == Placement::Singular && !movable)
             return mCtx.warn(what + ": zero scale (a singular world transform); its mesh is not drawn");
         const auto& primitives = mModel.meshes[size_t(meshIndex)].primitives;
         for (size_t p = 0; p < primitives.size(); ++p) {
             const uint32_t material = materialIndex(primitives[p].material, label("mesh", meshIndex) + " primitive " + std::to_string(p));
             auto cached = mGeometry.find({meshIndex, int(p)});
-            if (cached == mGeometry.end())
+            if (cached == mGeometry.end()) {
                 cached = mGeometry.emplace(std::pair{meshIndex, int(p)},
                                            appendPrimitive(mCtx, mModel, meshIndex, int(p), mScene.materials[material], mScene))
                              .first;
+                mRenormalizedWeights += cached->second.renormalizedWeights;
+            }
             const PrimitiveGeometry& geometry = cached->second;
             if (!geometry.drawable) continue;
+            const bool skinned = skin >= 0 && geometry.deformation >= 0 &&
+                                 mScene.deformations[size_t(geometry.deformation)].influencesPerVertex > 0;
             Draw draw{.firstIndex = geometry.firstIndex,
                       .indexCount = geometry.indexCount,
                       .material = material,
                       .localBounds = geometry.bounds,
-                      .node = sceneNode};
+                      .node = sceneNode,
+                      .deformation = geometry.deformation,
+                      .skin = skinned ? skin : -1};  // the glTF skin until finishSkins
             // The world matrix itself was checked to fit a float as the node was reached.
-            if (placeDraw(draw, world) == Placement::BeyondFloat)
+            const glm::vec3 reach = geometry.deformation >= 0
+                                        ? morphReach(mScene.deformations[size_t(geometry.deformation)], mScene.nodes[size_t(sceneNode)].weights)
+                                        : glm::vec3(0.0f);
+            if (!skinned && placeDraw(draw, world, reach) == Placement::BeyondFloat)
                 mCtx.fail(what + ": a corner of its mesh in world space is beyond single precision");
-            mScene.bounds.extend(draw.bounds);
             mScene.draws.push_back(draw);
         }
     }
@@ -264,6 +334,7 @@ private:
     std::map<std::pair<int, int>, PrimitiveGeometry> mGeometry;  // (mesh, primitive) → converted once
     std::vector<uint8_t> mTargeted;  // per glTF node: an animation channel targets it
     std::vector<uint8_t> mMovable;   // per Scene::nodes entry: it or an ancestor is targeted
+    size_t mRenormalizedWeights = 0;  // over every primitive read
 };
 
 }  // namespace
@@ -284,7 +355,9 @@ void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, Scene& scen
         if (size_t(index) >= model.scenes.size()) ctx.fail("scene " + std::to_string(index) + " does not exist");
         roots = model.scenes[size_t(index)].nodes;
     }
-    NodeWalker(ctx, model, scene).walk(roots);
+    NodeWalker walker(ctx, model, scene);
+    walker.walk(roots);
+    walker.finish();
 }
 
 }  // namespace candela::scene::gltf

@@ -102,7 +102,21 @@ shading::DrawData drawData(const Draw& draw) {
 GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights, float maxAnisotropy)
     : mScene(&scene), mContext(&context) {
     vk::Uploader uploader(context);
-    mVertices = uploadedBuffer(context, uploader, scene.vertices, "vertices", VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    const bool deformable = !scene.deformations.empty();
+    mVertices = uploadedBuffer(context, uploader, scene.vertices, "vertices",
+                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | (deformable ? VK_BUFFER_USAGE_STORAGE_BUFFER_BIT : 0));
+    if (deformable) {
+        std::vector<MorphDelta> deltas;
+        std::vector<JointInfluence> influences;
+        for (const Deformation& d : scene.deformations) {
+            mDeltaBase.push_back(uint32_t(deltas.size()));
+            mInfluenceBase.push_back(uint32_t(influences.size()));
+            deltas.insert(deltas.end(), d.deltas.begin(), d.deltas.end());
+            influences.insert(influences.end(), d.influences.begin(), d.influences.end());
+        }
+        mDeltas = uploadedBuffer(context, uploader, deltas, "morph_deltas");
+        mInfluences = uploadedBuffer(context, uploader, influences, "skin_influences");
+    }
     mIndices = uploadedBuffer(context, uploader, scene.indices, "indices", VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
     std::vector<LightData>& lights = mSceneLights;

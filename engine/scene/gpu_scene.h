@@ -32,6 +32,14 @@ public:
     VkBuffer lightBuffer() const { return mLights.handle(); }
     VkBuffer drawBuffer() const { return mDraws.handle(); }
     VkBuffer materialBuffer() const { return mMaterials.handle(); }
+    // Morph-target deltas and skin influences of every Scene::deformations entry, concatenated
+    // (MorphDelta and JointInfluence layouts); null handles when the scene has no deformations.
+    // The vertex buffer can then also be read as a storage buffer (by the skin_morph pass).
+    VkBuffer deltaBuffer() const { return mDeltas.handle(); }
+    VkBuffer influenceBuffer() const { return mInfluences.handle(); }
+    // Where deformation `d`'s data starts in those buffers (in elements).
+    uint32_t deltaBase(size_t d) const { return mDeltaBase[d]; }
+    uint32_t influenceBase(size_t d) const { return mInfluenceBase[d]; }
     uint32_t lightCount() const { return mLightCount; }
 
     // The lights and materials as the scene defines them, and as the buffers hold them now
@@ -56,7 +64,8 @@ public:
 
 private:
     const Scene* mScene;
-    vk::Buffer mVertices, mIndices, mLights, mDraws, mMaterials;
+    vk::Buffer mVertices, mIndices, mLights, mDraws, mMaterials, mDeltas, mInfluences;
+    std::vector<uint32_t> mDeltaBase, mInfluenceBase;
     uint32_t mLightCount = 0;
     vk::Context* mContext;
     std::vector<shading::LightData> mSceneLights, mLightData;

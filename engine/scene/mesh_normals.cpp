@@ -22,10 +22,12 @@ glm::vec3 faceNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c)
     return glm::vec3(n / length);
 }
 
-void makeFlatNormals(std::vector<Vertex>& vertices, std::vector<uint32_t>& indices) {
+void makeFlatNormals(std::vector<Vertex>& vertices, std::vector<uint32_t>& indices, std::vector<uint32_t>& origin) {
     const size_t triangleCount = indices.size() / 3;
     std::vector<Vertex> flat;
     flat.reserve(triangleCount * 3);
+    std::vector<uint32_t> flatOrigin;
+    flatOrigin.reserve(triangleCount * 3);
     std::vector<uint32_t> flatIndices(triangleCount * 3);
     for (size_t t = 0; t < triangleCount; ++t) {
         const Vertex* corner[3] = {&vertices[indices[3 * t]], &vertices[indices[3 * t + 1]], &vertices[indices[3 * t + 2]]};
@@ -36,9 +38,11 @@ void makeFlatNormals(std::vector<Vertex>& vertices, std::vector<uint32_t>& indic
             v.tangent = Vertex{}.tangent;
             flatIndices[3 * t + i] = uint32_t(flat.size());
             flat.push_back(v);
+            flatOrigin.push_back(origin[indices[3 * t + i]]);
         }
     }
     vertices = std::move(flat);
+    origin = std::move(flatOrigin);
     indices = std::move(flatIndices);
 }
 

@@ -12,8 +12,9 @@ namespace candela::scene {
 // Rewrites `vertices`/`indices` (a triangle list) so each triangle owns three vertices carrying its
 // geometric normal (counter-clockwise front face). Other attributes are copied; tangents are reset
 // to the default. Triangles with no area (or non-finite cross products) get +Z. A trailing partial
-// triangle is dropped. Precondition: every index < vertices.size().
-void makeFlatNormals(std::vector<Vertex>& vertices, std::vector<uint32_t>& indices);
+// triangle is dropped. `origin` (one entry per vertex: the source vertex it was made from) is
+// rewritten alongside. Precondition: every index < vertices.size() == origin.size().
+void makeFlatNormals(std::vector<Vertex>& vertices, std::vector<uint32_t>& indices, std::vector<uint32_t>& origin);
 
 // `v` scaled to unit length without overflow or underflow (its length may be anywhere in the float
 // range, where dot(v, v) would overflow to Inf or underflow to 0); zero stays zero.

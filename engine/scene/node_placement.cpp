@@ -10,7 +10,7 @@ bool fitsFloat(double v) { return std::isfinite(v) && std::abs(v) <= double(FLT_
 
 }  // namespace
 
-Placement placeDraw(Draw& draw, const glm::dmat4& world) {
+Placement placeDraw(Draw& draw, const glm::dmat4& world, const glm::vec3& reach) {
     draw.hidden = true;
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
@@ -21,10 +21,10 @@ Placement placeDraw(Draw& draw, const glm::dmat4& world) {
     const double det = glm::determinant(glm::dmat3(glm::mat3(worldF)));
     if (det == 0.0 || !std::isfinite(det)) return Placement::Singular;
     Aabb bounds;
-    const Aabb& local = draw.localBounds;
+    const glm::dvec3 lo = glm::dvec3(draw.localBounds.min) - glm::dvec3(reach);
+    const glm::dvec3 hi = glm::dvec3(draw.localBounds.max) + glm::dvec3(reach);
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
-                           (corner & 4) ? local.max.z : local.min.z);
+        const glm::dvec3 p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
         const glm::dvec3 w(world * glm::dvec4(p, 1.0));
         if (!fitsFloat(w.x) || !fitsFloat(w.y) || !fitsFloat(w.z)) return Placement::BeyondFloat;
         bounds.extend(glm::vec3(w));
@@ -34,6 +34,16 @@ Placement placeDraw(Draw& draw, const glm::dmat4& world) {
     draw.bounds = bounds;
     draw.hidden = false;
     return Placement::Placed;
+}
+
+Placement placeSkinnedDraw(Draw& draw, const Aabb& bounds) {
+    draw.world = glm::mat4(1.0f);
+    draw.flipWinding = false;
+    draw.bounds = bounds;
+    const bool fits = fitsFloat(bounds.min.x) && fitsFloat(bounds.min.y) && fitsFloat(bounds.min.z) &&
+                      fitsFloat(bounds.max.x) && fitsFloat(bounds.max.y) && fitsFloat(bounds.max.z);
+    draw.hidden = !bounds.valid() || !fits;
+    return !fits ? Placement::BeyondFloat : bounds.valid() ? Placement::Placed : Placement::Singular;
 }
 
 void placeLight(Light& light, const glm::dmat4& world) {

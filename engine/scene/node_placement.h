@@ -15,9 +15,15 @@ enum class Placement : uint8_t {
     BeyondFloat,  // the world matrix or a corner of the mesh does not fit a float
 };
 
-// Sets draw.world, draw.flipWinding and draw.bounds (from draw.localBounds) for `world`, and
-// draw.hidden unless the result is Placed. The determinant and the box are computed in double.
-Placement placeDraw(Draw& draw, const glm::dmat4& world);
+// Sets draw.world, draw.flipWinding and draw.bounds (from draw.localBounds grown by `reach`, how
+// far morph targets move its vertices) for `world`, and draw.hidden unless the result is Placed.
+// The determinant and the box are computed in double.
+Placement placeDraw(Draw& draw, const glm::dmat4& world, const glm::vec3& reach = glm::vec3(0.0f));
+
+// A skinned draw: its vertices are placed in world space by the joints, so its world matrix is
+// the identity; `bounds` (scene/skinning.h skinnedBounds) become its bounds. Hidden when they are
+// invalid or beyond a float.
+Placement placeSkinnedDraw(Draw& draw, const Aabb& bounds);
 
 // Sets the light's position and direction (its node's −Z) from `world`; a direction that cannot be
 // normalized stays −Z.

@@ -1,5 +1,7 @@
 #include "scene/picking.h"
 
+#include "scene/skinning.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -53,22 +55,49 @@ Ray viewRay(const ViewSetup& view, const glm::vec2& ndc) {
     return {view.eye, glm::normalize(b - a)};
 }
 
-std::optional<Pick> pickDraw(const Scene& scene, const Ray& ray) {
+namespace {
+
+// The nearest hit among `draws`; `positions(d)` gives draw d's vertex positions in its draw space
+// (indexable by the scene's absolute indices minus `base(d)`).
+template <typename Positions>
+std::optional<Pick> pick(const Scene& scene, std::span<const Draw> draws, const Ray& ray, Positions&& positions) {
     std::optional<Pick> best;
-    for (uint32_t d = 0; d < scene.draws.size(); ++d) {
-        const Draw& draw = scene.draws[d];
+    for (uint32_t d = 0; d < draws.size(); ++d) {
+        const Draw& draw = draws[d];
+        if (draw.hidden) continue;
         const std::optional<float> box = hitBox(draw.bounds, ray);
         if (!box || (best && *box > best->distance)) continue;
+        const auto [vertices, base] = positions(d);
         for (uint32_t i = 0; i + 2 < draw.indexCount; i += 3) {
             const uint32_t* tri = scene.indices.data() + draw.firstIndex + i;
-            if (tri[0] >= scene.vertices.size() || tri[1] >= scene.vertices.size() || tri[2] >= scene.vertices.size())
+            if (tri[0] < base || tri[1] < base || tri[2] < base || tri[0] - base >= vertices.size() ||
+                tri[1] - base >= vertices.size() || tri[2] - base >= vertices.size())
                 continue;
-            const auto world = [&](uint32_t v) { return glm::vec3(draw.world * glm::vec4(scene.vertices[v].position, 1.0f)); };
+            const auto world = [&](uint32_t v) { return glm::vec3(draw.world * glm::vec4(vertices[v - base].position, 1.0f)); };
             const std::optional<float> t = hitTriangle(ray, world(tri[0]), world(tri[1]), world(tri[2]));
             if (t && (!best || *t < best->distance)) best = Pick{d, *t};
         }
     }
     return best;
+}
+
+}  // namespace
+
+std::optional<Pick> pickDraw(const Scene& scene, const Ray& ray) {
+    return pick(scene, scene.draws, ray, [&](uint32_t) { return std::pair{std::span<const Vertex>(scene.vertices), 0u}; });
+}
+
+std::optional<Pick> pickDraw(const Scene& scene, const ScenePose& pose, const Ray& ray) {
+    const std::vector<uint32_t> deformed = pose.deformedDraws();
+    std::vector<Vertex> posed;  // the deformed vertices of the draw being tested
+    static const std::vector<glm::dmat4> kNoJoints;
+    return pick(scene, pose.draws(), ray, [&](uint32_t d) {
+        if (!std::binary_search(deformed.begin(), deformed.end(), d))
+            return std::pair{std::span<const Vertex>(scene.vertices), 0u};
+        const Draw& draw = pose.draws()[d];
+        posed = deformVertices(scene, draw, pose.weights(draw), draw.skin >= 0 ? pose.jointMatrices(uint32_t(draw.skin)) : kNoJoints);
+        return std::pair{std::span<const Vertex>(posed), scene.deformations[size_t(draw.deformation)].firstVertex};
+    });
 }
 
 }  // namespace candela::scene

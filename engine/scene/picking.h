@@ -4,6 +4,7 @@
 
 #include "scene/camera.h"
 #include "scene/scene.h"
+#include "scene/scene_pose.h"
 
 #include <glm/glm.hpp>
 
@@ -27,5 +28,8 @@ struct Pick {
 
 // The nearest draw whose triangles (both faces) the ray hits, if any.
 std::optional<Pick> pickDraw(const Scene& scene, const Ray& ray);
+// The same in a pose of `scene`: posed draws, skinned and morphed meshes as deformed this frame
+// (on the CPU, scene/skinning.h); hidden draws are not hit. Pick::draw indexes pose.draws().
+std::optional<Pick> pickDraw(const Scene& scene, const ScenePose& pose, const Ray& ray);
 
 }  // namespace candela::scene

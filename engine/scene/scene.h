@@ -97,6 +97,43 @@ struct Material {
     TextureRef emissive;           // sRGB
 };
 
+// The change one morph target makes to one vertex. 80 bytes (the GPU reads the same layout).
+struct MorphDelta {
+    glm::vec4 position{0.0f};  // xyz
+    glm::vec4 normal{0.0f};    // xyz
+    glm::vec4 tangent{0.0f};   // xyz (glTF morphs no handedness)
+    glm::vec4 uv{0.0f};        // TEXCOORD_0 in xy, TEXCOORD_1 in zw
+    glm::vec4 color{0.0f};     // COLOR_0
+};
+static_assert(sizeof(MorphDelta) == 80);
+
+// One joint's pull on one vertex: an index into its skin's joints and a weight.
+struct JointInfluence {
+    uint32_t joint = 0;
+    float weight = 0.0f;
+};
+
+// What deforms one converted primitive each frame — its morph targets and skin weights —
+// aligned with its vertex range in Scene::vertices (after the loader's vertex splits).
+struct Deformation {
+    uint32_t firstVertex = 0;
+    uint32_t vertexCount = 0;
+    uint32_t targetCount = 0;
+    std::vector<MorphDelta> deltas;  // targetCount × vertexCount, target-major
+    // Per target: the largest |delta position| per axis over the vertices (bounds of a morphed pose).
+    std::vector<glm::vec3> maxPositionDelta;
+    uint32_t influencesPerVertex = 0;          // 4 per JOINTS_n/WEIGHTS_n set; 0 without a skin
+    std::vector<JointInfluence> influences;    // vertexCount × influencesPerVertex, weights sum to 1
+    uint32_t maxJoint = 0;                     // the largest joint index with a non-zero weight
+};
+
+// A glTF skin: the joints (Scene::nodes indices) and their inverse bind matrices.
+struct Skin {
+    std::string name;
+    std::vector<uint32_t> joints;
+    std::vector<glm::mat4> inverseBind;  // one per joint (identity when the file has none)
+};
+
 // One drawn primitive instance: an index range of Scene::indices (into Scene::vertices) with the
 // world transform of its node. Non-triangle-list topologies are converted to lists on load.
 struct Draw {
@@ -108,6 +145,10 @@ struct Draw {
     Aabb bounds;               // world space
     Aabb localBounds;          // mesh space
     int32_t node = -1;         // index into Scene::nodes (-1: built-in scenes, which have no nodes)
+    int32_t deformation = -1;  // index into Scene::deformations: morph targets and/or skin weights
+    // Index into Scene::skins when the node is skinned and the primitive has joints: its vertices
+    // are then placed by the joints in world space and `world` is the identity.
+    int32_t skin = -1;
     // Not drawn in this pose: an animated node whose transform is singular (scaled to 0) or beyond
     // a float. Only animated draws are ever hidden; the loader drops static singular ones.
     bool hidden = false;
@@ -156,6 +197,8 @@ struct Scene {
     std::vector<SceneNode> nodes;
     // The file's animations, in file order; channels name Scene::nodes indices.
     std::vector<Animation> animations;
+    std::vector<Deformation> deformations;  // Draw::deformation
+    std::vector<Skin> skins;                // Draw::skin
     Aabb bounds;  // world space, over all draws
     std::vector<std::string> warnings;  // non-fatal problems met while loading
 };

@@ -2,6 +2,7 @@
 
 #include "core/check.h"
 #include "scene/node_placement.h"
+#include "scene/skinning.h"
 
 #include <algorithm>
 #include <charconv>
@@ -67,6 +68,21 @@ ScenePose::ScenePose(const Scene& scene, std::vector<uint32_t> playing)
     std::vector<uint8_t> moved(mNodes.size(), 0);
     for (uint32_t node : mDependent) moved[node] = 1;
     mAnimatedDraws = onMovedNodes(mDraws, moved);
+    // A skinned draw moves with its joints, wherever its own node is.
+    mJoints.resize(scene.skins.size());
+    mJointBounds.resize(mDraws.size());
+    std::vector<uint8_t> skinMoved(scene.skins.size(), 0);
+    for (size_t s = 0; s < scene.skins.size(); ++s) {
+        scene::jointMatrices(scene.skins[s], mNodes, mJoints[s]);
+        for (uint32_t joint : scene.skins[s].joints) skinMoved[s] |= moved[joint];
+    }
+    for (uint32_t d = 0; d < mDraws.size(); ++d) {
+        const Draw& draw = mDraws[d];
+        if (draw.skin < 0) continue;
+        mJointBounds[d] = jointMeshBounds(scene.deformations[size_t(draw.deformation)], scene.skins[size_t(draw.skin)], scene.vertices);
+        if (skinMoved[size_t(draw.skin)] && !std::binary_search(mAnimatedDraws.begin(), mAnimatedDraws.end(), d))
+            mAnimatedDraws.insert(std::upper_bound(mAnimatedDraws.begin(), mAnimatedDraws.end(), d), d);
+    }
     mAnimatedLights = onMovedNodes(mLights, moved);
     mAnimatedCameras = onMovedNodes(mCameras, moved);
     mAnimationBounds = animated() ? boundsOverAnimation(1024) : scene.bounds;
@@ -88,10 +104,37 @@ void ScenePose::evaluate(double time, bool loop) {
         applyAnimation(animation, loop ? loopTime(time, animation.duration) : time, mNodes);
     }
     updateWorldTransforms(mNodes, mDependent);
-    for (uint32_t d : mAnimatedDraws) placeDraw(mDraws[d], mNodes[size_t(mDraws[d].node)].world);
+    for (size_t s = 0; s < mScene->skins.size(); ++s) scene::jointMatrices(mScene->skins[s], mNodes, mJoints[s]);
+    for (uint32_t d : mAnimatedDraws) place(d);
     for (uint32_t l : mAnimatedLights) placeLight(mLights[l], mNodes[size_t(mLights[l].node)].world);
     // A camera whose node is scaled to nothing keeps its last placement.
     for (uint32_t c : mAnimatedCameras) placeCamera(mCameras[c], mNodes[size_t(mCameras[c].node)].world);
+}
+
+void ScenePose::place(uint32_t d) {
+    Draw& draw = mDraws[d];
+    const glm::vec3 reach =
+        draw.deformation >= 0 ? morphReach(mScene->deformations[size_t(draw.deformation)], weights(draw)) : glm::vec3(0.0f);
+    if (draw.skin >= 0) placeSkinnedDraw(draw, skinnedBounds(mJointBounds[d], mJoints[size_t(draw.skin)], reach));
+    else placeDraw(draw, mNodes[size_t(draw.node)].world, reach);
+}
+
+std::span<const float> ScenePose::weights(const Draw& draw) const {
+    if (draw.node < 0) return {};
+    return mNodes[size_t(draw.node)].weights;
+}
+
+std::vector<uint32_t> ScenePose::deformedDraws() const {
+    std::vector<uint32_t> out;
+    for (uint32_t d = 0; d < mDraws.size(); ++d) {
+        const Draw& draw = mDraws[d];
+        if (draw.hidden || draw.deformation < 0) continue;
+        const std::span<const float> w = weights(draw);
+        const bool morphed = mScene->deformations[size_t(draw.deformation)].targetCount > 0 &&
+                             std::any_of(w.begin(), w.end(), [](float x) { return x != 0.0f; });
+        if (draw.skin >= 0 || morphed) out.push_back(d);
+    }
+    return out;
 }
 
 Aabb ScenePose::bounds() const {

@@ -48,6 +48,14 @@ public:
     // Which draws / lights follow an animated node (indices, ascending).
     const std::vector<uint32_t>& animatedDraws() const { return mAnimatedDraws; }
     const std::vector<uint32_t>& animatedLights() const { return mAnimatedLights; }
+    // The joint matrices (world · inverse bind) of Scene::skins[skin] in this pose.
+    const std::vector<glm::dmat4>& jointMatrices(uint32_t skin) const { return mJoints[skin]; }
+    // The morph weights of a draw's node in this pose (empty without morph targets).
+    std::span<const float> weights(const Draw& draw) const;
+    // The visible draws whose vertices must be deformed in this pose: skinned ones, and those with
+    // a non-zero morph weight (a morphed mesh at all-zero weights is its rest geometry).
+    std::vector<uint32_t> deformedDraws() const;
+
     // The bounds of the visible draws in this pose.
     Aabb bounds() const;
     // Bounds containing the whole animation (what framing uses): the union of the poses at time 0
@@ -59,6 +67,8 @@ public:
 
 private:
     Aabb boundsOverAnimation(size_t maxSamples);
+    // Places draw `d` from the current nodes (and joints, when skinned).
+    void place(uint32_t d);
 
     const Scene* mScene;
     std::vector<uint32_t> mPlaying;
@@ -68,6 +78,8 @@ private:
     std::vector<Light> mLights;
     std::vector<Camera> mCameras;
     std::vector<uint32_t> mAnimatedDraws, mAnimatedLights, mAnimatedCameras;
+    std::vector<std::vector<glm::dmat4>> mJoints;     // per skin
+    std::vector<std::vector<Aabb>> mJointBounds;  // per draw (empty unless skinned)
     Aabb mAnimationBounds;
     double mTime = 0.0;
     bool mLoop = true;

@@ -9,6 +9,7 @@ class Viewer;
 
 void drawGraphPanel(Viewer& viewer);      // graph_panel.cpp: passes, toggles, times, resources, memory, export
 void drawCameraPanel(Viewer& viewer);     // camera_panel.cpp: position, target, field of view, near plane, speeds
+void drawAnimationPanel(Viewer& viewer);  // animation_panel.cpp: which animations play, pause, speed, loop, time
 void drawStatsPanel(Viewer& viewer);      // stats_panel.cpp: frame time, pass times, draws and triangles
 void drawParameterPanel(Viewer& viewer);  // parameter_panel.cpp: reflected shader parameters of the active passes
 void drawMaterialPanel(Viewer& viewer);   // material_panel.cpp: pick a material, edit its factors

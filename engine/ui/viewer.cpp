@@ -239,6 +239,16 @@ bool Viewer::exportGraph(const std::filesystem::path& path, bool json) {
     return true;
 }
 
+void Viewer::setPlayingAnimations(std::vector<uint32_t> animations) {
+    mPose = std::make_unique<scene::ScenePose>(mScene, std::move(animations));
+    mPose->evaluate(mAnimationTime, mAnimationLoop);
+}
+
+void Viewer::setAnimationTime(double seconds) {
+    mAnimationTime = std::max(seconds, 0.0);
+    mPose->evaluate(mAnimationTime, mAnimationLoop);
+}
+
 void Viewer::handleInput() {
     for (const std::string& path : mWindow->takeDroppedFiles()) openFile(path);
     const bool uiWantsKeys = mUi && ImGui::GetIO().WantCaptureKeyboard;
@@ -246,6 +256,7 @@ void Viewer::handleInput() {
         if (uiWantsKeys) continue;
         if (key == GLFW_KEY_F) frameScene();
         if (key == GLFW_KEY_R) resetCamera();
+        if (key == GLFW_KEY_SPACE) mAnimationPaused = !mAnimationPaused;
         if (key == GLFW_KEY_F12 || key == GLFW_KEY_P) requestScreenshot("candela-screenshot.png");
         if (key == GLFW_KEY_ESCAPE) mWindow->requestClose();
     }
@@ -301,6 +312,7 @@ void Viewer::drawUi() {
                   {"materials", "Materials", drawMaterialPanel},
                   {"environment", "Environment / IBL", drawEnvironmentPanel},
                   {"camera", "Camera", drawCameraPanel},
+                  {"animation", "Animation", drawAnimationPanel},
                   {"debug", "Debug view", drawDebugViewPanel},
                   {"stats", "Frame stats", drawStatsPanel}};
     for (const auto& panel : panels) {
@@ -348,12 +360,13 @@ bool Viewer::pickMaterial(const glm::vec2& pixel) {
     if (extent.width == 0 || extent.height == 0) return false;
     const RenderSettings settings = frameSettings(extent);
     const scene::ViewSetup view =
-        Renderer::resolveView(mScene, settings.camera, float(extent.width) / float(extent.height));
+        Renderer::resolveView(mScene, settings.camera, float(extent.width) / float(extent.height), mPose.get());
     const glm::vec2 ndc(2.0f * (pixel.x + 0.5f) / float(extent.width) - 1.0f,
                         2.0f * (pixel.y + 0.5f) / float(extent.height) - 1.0f);
-    const std::optional<scene::Pick> pick = scene::pickDraw(mScene, scene::viewRay(view, ndc));
+    // The mesh as it is posed on screen.
+    const std::optional<scene::Pick> pick = scene::pickDraw(mScene, *mPose, scene::viewRay(view, ndc));
     if (!pick) return false;
-    mSelectedMaterial = mScene.draws[pick->draw].material;
+    mSelectedMaterial = mPose->draws()[pick->draw].material;
     return true;
 }
 
@@ -382,12 +395,15 @@ bool Viewer::frame() {
     if (mUi) drawUi();
     handleInput();
     if (mPose->animated()) {
-        // Advanced by the wall-clock time since the previous frame's pose; the first frame shows
-        // the starting time.
+        // Advanced by the wall-clock time since the previous frame's pose, times the speed; the
+        // first frame shows the starting time.
         const auto now = std::chrono::steady_clock::now();
-        if (mFramesRendered > 0) mAnimationTime += std::chrono::duration<double>(now - mAnimationClock).count();
+        if (mFramesRendered > 0 && !mAnimationPaused)
+            mAnimationTime += mAnimationSpeed * std::chrono::duration<double>(now - mAnimationClock).count();
         mAnimationClock = now;
-        mPose->evaluate(mAnimationTime);
+        if (!mAnimationLoop) mAnimationTime = std::min(mAnimationTime, mPose->duration());
+        mAnimationTime = std::max(mAnimationTime, 0.0);
+        mPose->evaluate(mAnimationTime, mAnimationLoop);
     }
 
     const RenderSettings settings = frameSettings(mSwapchain->extent());

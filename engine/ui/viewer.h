@@ -97,6 +97,15 @@ public:
     void selectMaterial(uint32_t material) { mSelectedMaterial = material; }
     uint32_t selectedMaterial() const { return mSelectedMaterial; }
     bool pickMaterial(const glm::vec2& pixel);
+    // The animation panel's controls: which of the scene's animations play (a new pose, same
+    // time), pause (space), speed, looping, and the playback time (the slider scrubs it).
+    void setPlayingAnimations(std::vector<uint32_t> animations);
+    void setAnimationTime(double seconds);
+    double animationTime() const { return mAnimationTime; }
+    bool& animationPaused() { return mAnimationPaused; }
+    float& animationSpeed() { return mAnimationSpeed; }
+    bool& animationLoop() { return mAnimationLoop; }
+    const scene::ScenePose& pose() const { return *mPose; }
     // Writes the last frame's graph (with the latest measured GPU times) as JSON or Graphviz dot.
     bool exportGraph(const std::filesystem::path& path, bool json);
     // Testing hook: treat the window as minimized (a window system without a window manager, such
@@ -165,6 +174,9 @@ private:
     std::unique_ptr<scene::ScenePose> mPose;
     double mAnimationTime = 0.0;
     std::chrono::steady_clock::time_point mAnimationClock;
+    bool mAnimationPaused = false;
+    float mAnimationSpeed = 1.0f;
+    bool mAnimationLoop = true;
     std::unique_ptr<scene::Environment> mEnvironment;
     RenderSettings mSettings;
     scene::OrbitCamera mCamera;

@@ -33,6 +33,30 @@ TEST(CliParse, Dimensions) {
     EXPECT_THROW(parseDimension("--width", "1e3"), UserError);
 }
 
+TEST(CliParse, SequenceFileNames) {
+    EXPECT_EQ(sequenceFileName("frame_%04d.png", 7), "frame_0007.png");
+    EXPECT_EQ(sequenceFileName("f%d.exr", 12345), "f12345.exr");
+    EXPECT_EQ(sequenceFileName("100%%_%02d.png", 3), "100%_03.png");
+    EXPECT_EQ(sequenceFileName("%03d.png", 1234), "1234.png");  // wider than the field: not cut
+    EXPECT_THROW(sequenceFileName("frame.png", 0), UserError);
+    EXPECT_THROW(sequenceFileName("%d_%d.png", 0), UserError);
+    EXPECT_THROW(sequenceFileName("%4d.png", 0), UserError);
+    EXPECT_THROW(sequenceFileName("%s.png", 0), UserError);
+    EXPECT_THROW(sequenceFileName("trailing%", 0), UserError);
+}
+
+TEST(CliParse, AnimationFlags) {
+    const Command c = parseCommandLine({"render", "--animation", "Walk,2", "--animation", "all", "--time", "1e6", "--frames", "4",
+                                        "--fps", "24", "--turntable", "360"});
+    EXPECT_EQ(c.render.animations, (std::vector<std::string>{"Walk", "2", "all"}));
+    EXPECT_EQ(c.render.time, 1e6);
+    EXPECT_EQ(c.render.frames, 4u);
+    EXPECT_EQ(c.render.fps, 24.0);
+    EXPECT_EQ(c.render.turntableDegrees, 360.0f);
+    EXPECT_EQ(parseCommandLine({"render"}).render.frames, 1u);
+    EXPECT_THROW(parseCommandLine({"view", "--fps", "24"}), UserError);  // sequences are render's
+}
+
 TEST(CliParse, Errors) {
     EXPECT_THROW(parseCommandLine({"render", "--bogus"}), UserError);
     EXPECT_THROW(parseCommandLine({"render", "stray"}), UserError);

@@ -169,10 +169,34 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"AnimationEmptyItem", "render --animation 0,,1 --out {dir}/x.png", "--animation: expected indices, names, all or none, got '0,,1'"},
                       BadInput{"AnimationOfAStaticScene", "render --scene {dir}/triangle.gltf --animation 0 --out {dir}/x.png", "no animation 0 (the scene has no animations)"},
                       BadInput{"AnimationNameUnknown", "render --scene {dir}/triangle.gltf --animation Walk --out {dir}/x.png", "no animation named 'Walk' (the scene has no animations)"},
+                      BadInput{"SequenceWithoutFrameNumber", "render --frames 3 --out {dir}/x.png", "--out {dir}/x.png: an image sequence needs exactly one %d or %0Nd for the frame number"},
+                      BadInput{"SequenceTwoFrameNumbers", "render --frames 3 --out {dir}/x_%d_%d.png", "needs exactly one %d"},
+                      BadInput{"SequenceBadField", "render --frames 3 --out {dir}/x_%s.png", "needs one %d or %0Nd for the frame number"},
+                      BadInput{"FpsZero", "render --frames 3 --fps 0 --out {dir}/x_%d.png", "--fps: expected frames per second > 0, got '0'"},
                       BadInput{"MemoryBudgetZero", "render --memory-budget 0 --out {dir}/x.png", "--memory-budget: need at least 1 MiB"}),
     [](const ::testing::TestParamInfo<BadInput>& row) { return std::string(row.param.name); });
 
 TEST(Cli, HelpExitsZero) { EXPECT_EQ(run("--help").exitCode, 0); }
+
+TEST(Cli, ImageSequenceWritesOneFilePerFrame) {
+    const std::filesystem::path model = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models/BoxAnimated/glTF-Binary/BoxAnimated.glb";
+    if (!std::filesystem::exists(model)) GTEST_SKIP() << "shared asset missing";
+    const auto dir = tempDir();
+    const Result r = run("render --env none --validate --width 48 --height 36 --frames 3 --fps 2 --turntable 90 --scene " +
+                         model.string() + " --out " + (dir / "box_%03d.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    std::vector<std::string> frames;
+    for (const char* name : {"box_000.png", "box_001.png", "box_002.png"}) {
+        std::ifstream in(dir / name, std::ios::binary);
+        frames.emplace_back((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        EXPECT_FALSE(frames.back().empty()) << name;
+    }
+    EXPECT_NE(frames[0], frames[1]);
+    EXPECT_NE(frames[1], frames[2]);
+    EXPECT_FALSE(std::filesystem::exists(dir / "box_003.png"));
+    EXPECT_NE(r.stdoutText.find("t = 1.0000 s"), std::string::npos) << r.stdoutText;  // frame 2 at 2 fps
+    std::filesystem::remove_all(dir);
+}
 
 TEST(Cli, TimeAndAnimationChooseThePose) {
     const std::filesystem::path model = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models/BoxAnimated/glTF-Binary/BoxAnimated.glb";

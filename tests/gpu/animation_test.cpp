@@ -5,10 +5,15 @@
 #include "gpu_test.h"
 
 #include "graph/graph_export.h"
+#include "graph_runner.h"
+#include "passes/skin_morph_pass.h"
+#include "scene/skinning.h"
 #include "renderer.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_pose.h"
 
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 namespace candela::test {
@@ -105,6 +110,106 @@ TEST_F(GpuTest, PosedDrawsMatchTheStaticPathWithTheSameMatrices) {
     Renderer other(context());
     const CapturedFrame baked = other.capture(settingsFor(frozen, nullptr));
     EXPECT_EQ(animated.rgba8, baked.rgba8);
+}
+
+}  // namespace
+}  // namespace candela::test
+
+namespace candela::test {
+namespace {
+
+// The skin_morph pass's vertices read back, against the double-precision CPU reference
+// (scene::deformVertices) of the same pose: within 1e-5 relative to the model's size.
+void expectGpuDeformationMatchesReference(vk::Context& context, const char* path, const std::vector<std::string>& animations,
+                                          double time) {
+    if (!std::filesystem::exists(model(path))) GTEST_SKIP() << "shared asset missing";
+    const scene::Scene scene = scene::loadGltf(model(path));
+    scene::ScenePose pose(scene, scene::selectAnimations(scene, animations));
+    pose.evaluate(time);
+    const scene::GpuScene gpuScene(context, scene);
+    const passes::SkinMorphFrame work = passes::skinMorphFrame(gpuScene, pose);
+    ASSERT_FALSE(work.jobs.empty());
+
+    GraphRunner runner(context);
+    graph::RenderGraph graph;
+    std::vector<vk::Buffer> uploads;
+    const auto upload = [&](const char* name, const void* data, size_t bytes) {
+        bytes = std::max<size_t>(bytes, 16);
+        uploads.emplace_back(context, vk::BufferDesc{.size = bytes, .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                                     .memory = vk::MemoryUsage::Upload, .name = name});
+        if (data) std::memcpy(uploads.back().mapped(), data, bytes);
+        uploads.back().flush();
+        const graph::BufferId id = graph.importBuffer(name, {.size = bytes}, graph::ResourceState{});
+        runner.bind(id, uploads.back().handle());
+        return id;
+    };
+    uploads.reserve(2);
+    passes::SkinMorphPass pass(context);
+    const graph::BufferId deformed = pass.add(
+        graph, {.scene = &gpuScene,
+                .jobs = work.jobs,
+                .vertexCount = work.vertexCount,
+                .joints = upload("joints", work.joints.data(), work.joints.size() * sizeof(glm::mat4)),
+                .activeTargets = upload("active", work.activeTargets.empty() ? nullptr : work.activeTargets.data(),
+                                        work.activeTargets.size() * sizeof(shading::ActiveMorphTarget))});
+    const VkDeviceSize bytes = VkDeviceSize(work.vertexCount) * sizeof(scene::Vertex);
+    const graph::BufferId readback = runner.readbackBuffer(graph, "readback", bytes);
+    struct Copy {
+        graph::BufferId from, to;
+    };
+    graph.addPass<Copy>(
+        "copy", graph::PassType::Transfer,
+        [&](graph::PassBuilder& b, Copy& c) {
+            c.from = b.read(deformed, graph::Usage::TransferSrc);
+            c.to = b.write(readback, graph::Usage::TransferDst, graph::WriteMode::Discard);
+        },
+        [bytes](const Copy& c, graph::PassContext& ctx) {
+            const VkBufferCopy region{.size = bytes};
+            vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(c.from), ctx.buffer(c.to), 1, &region);
+        });
+    runner.run(graph);
+    const std::vector<scene::Vertex> gpu = runner.read<scene::Vertex>(readback);
+
+    const float size = glm::length(pose.animationBounds().max - pose.animationBounds().min);
+    size_t compared = 0;
+    double worstPosition = 0.0, worstNormal = 0.0, moved = 0.0;
+    for (uint32_t d : pose.deformedDraws()) {
+        const scene::Draw& draw = pose.draws()[d];
+        static const std::vector<glm::dmat4> none;
+        const std::vector<scene::Vertex> reference =
+            scene::deformVertices(scene, draw, pose.weights(draw), draw.skin >= 0 ? pose.jointMatrices(uint32_t(draw.skin)) : none);
+        const scene::Deformation& deformation = scene.deformations[size_t(draw.deformation)];
+        for (uint32_t v = 0; v < reference.size(); ++v) {
+            const scene::Vertex& g = gpu[size_t(int64_t(deformation.firstVertex) + work.vertexOffset[d] + v)];
+            const scene::Vertex& r = reference[v];
+            const glm::vec3 rest = glm::vec3(draw.world * glm::vec4(scene.vertices[deformation.firstVertex + v].position, 1.0f));
+            moved = std::max(moved, double(glm::length(glm::vec3(draw.world * glm::vec4(g.position, 1.0f)) - rest)));
+            worstPosition = std::max(worstPosition, double(glm::length(g.position - r.position)) / size);
+            if (glm::length(r.normal) > 0.5f) worstNormal = std::max(worstNormal, double(glm::length(g.normal - r.normal)));
+            ASSERT_NEAR(g.uv0.x, r.uv0.x, 1e-5f);
+            ASSERT_NEAR(g.color.a, r.color.a, 1e-5f);
+            ++compared;
+        }
+    }
+    EXPECT_GT(compared, 0u);
+    EXPECT_LT(worstPosition, 1e-5) << path;
+    EXPECT_LT(worstNormal, 1e-5) << path;
+    // The pose does move the vertices: the comparison is not of two copies of the rest pose.
+    EXPECT_GT(moved / size, 1e-3) << path;
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", worstPosition);
+    ::testing::Test::RecordProperty(std::string("worstPositionError_") + path, text);
+}
+
+TEST_F(GpuTest, SkinnedVerticesMatchTheCpuReferenceFox) {
+    expectGpuDeformationMatchesReference(context(), "Fox/glTF-Binary/Fox.glb", {"1"}, 0.37);
+}
+TEST_F(GpuTest, SkinnedVerticesMatchTheCpuReferenceCesiumMan) {
+    expectGpuDeformationMatchesReference(context(), "CesiumMan/glTF-Binary/CesiumMan.glb", {}, 1.1);
+}
+TEST_F(GpuTest, MorphedVerticesMatchTheCpuReference) {
+    expectGpuDeformationMatchesReference(context(), "MorphStressTest/glTF-Binary/MorphStressTest.glb", {"all"}, 0.6);
+    expectGpuDeformationMatchesReference(context(), "AnimatedMorphCube/glTF-Binary/AnimatedMorphCube.glb", {}, 1.6);
 }
 
 }  // namespace

@@ -76,6 +76,12 @@ const GoldenCase kCases[] = {
     // three interpolation modes side by side between their keys.
     {"animated_cube_t0_75", "AnimatedCube/glTF/AnimatedCube.gltf", {30.0f, 70.0f, 0.0f}, "", 0.0f, "", 0.75},
     {"box_animated_t1_875", "BoxAnimated/glTF-Binary/BoxAnimated.glb", {30.0f, 80.0f, 0.0f}, "", 0.0f, "", 1.875},
+    // Skins (the joints place the vertices in world space) and morph targets, through skin_morph.
+    {"cesium_man_t1_1", "CesiumMan/glTF-Binary/CesiumMan.glb", {30.0f, 80.0f, 0.0f}, "", 0.0f, "", 1.1},
+    {"fox_survey_t1_5", "Fox/glTF-Binary/Fox.glb", {40.0f, 75.0f, 0.0f}, "", 0.0f, "Survey", 1.5},
+    {"fox_run_t0_4", "Fox/glTF-Binary/Fox.glb", {40.0f, 75.0f, 0.0f}, "", 0.0f, "Run", 0.4},
+    {"animated_morph_cube_t1_6", "AnimatedMorphCube/glTF-Binary/AnimatedMorphCube.glb", {30.0f, 70.0f, 0.0f}, "", 0.0f, "", 1.6},
+    {"morph_stress_test_t0_6", "MorphStressTest/glTF-Binary/MorphStressTest.glb", {0.0f, 70.0f, 0.0f}, "", 0.0f, "TheWave", 0.6},
     {"interpolation_test_t0_9", "InterpolationTest/glTF-Binary/InterpolationTest.glb", {0.0f, 90.0f, 20.0f}, "", 0.0f, "all", 0.9},
 };
 

@@ -30,6 +30,9 @@ public:
         return id;
     }
 
+    // Binds an imported resource of the test's own (an input buffer it filled).
+    void bind(graph::BufferId id, VkBuffer buffer) { mImports.bind(id, buffer); }
+
     void run(graph::RenderGraph& graph) {
         graph.compile({.memoryRequirements = graph::deviceMemoryRequirements(mContext, graph.declaration())});
         vk::FrameSlot& slot = mFrames.begin();

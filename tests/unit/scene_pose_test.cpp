@@ -4,6 +4,8 @@
 #include "gltf_test_util.h"
 
 #include "scene/scene_pose.h"
+#include "scene/picking.h"
+#include "scene/skinning.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -158,6 +160,83 @@ TEST(ScenePose, ChannelsOnNodesOutsideTheSceneAndWithoutTargetAreDropped) {
     ASSERT_EQ(scene.animations.size(), 1u);
     EXPECT_TRUE(scene.animations[0].channels.empty());
     EXPECT_FALSE(ScenePose(scene, {0}).animated());
+}
+
+}  // namespace
+}  // namespace candela::scene::test
+
+namespace candela::scene::test {
+namespace {
+
+// Every deformed vertex (the CPU reference of the skin_morph pass) lies in its draw's posed bounds
+// and in the bounds over the whole animation, at keys and between them.
+void expectBoundsContainDeformedVertices(const char* path, const std::vector<std::string>& animations) {
+    if (sharedModels().empty()) GTEST_SKIP() << "../shared/assets not present";
+    const Scene scene = loadGltf(sharedModels() / path);
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    ScenePose pose(scene, selectAnimations(scene, animations));
+    const Aabb all = pose.animationBounds();
+    const auto inside = [](const Aabb& box, const glm::vec3& p) {
+        const glm::vec3 slack = 1e-4f * (glm::abs(box.max) + glm::abs(box.min) + 1.0f);
+        return glm::all(glm::greaterThanEqual(p, box.min - slack)) && glm::all(glm::lessThanEqual(p, box.max + slack));
+    };
+    size_t checked = 0;
+    for (double t : {0.0, 0.37, 0.8, 1.3, 2.9}) {
+        pose.evaluate(t);
+        for (uint32_t d : pose.deformedDraws()) {
+            const Draw& draw = pose.draws()[d];
+            static const std::vector<glm::dmat4> none;
+            const std::vector<Vertex> vertices =
+                deformVertices(scene, draw, pose.weights(draw), draw.skin >= 0 ? pose.jointMatrices(uint32_t(draw.skin)) : none);
+            for (const Vertex& v : vertices) {
+                const glm::vec3 world = glm::vec3(draw.world * glm::vec4(v.position, 1.0f));
+                ASSERT_TRUE(inside(draw.bounds, world)) << path << " t=" << t << " draw " << d;
+                ASSERT_TRUE(inside(all, world)) << path << " t=" << t << " draw " << d;
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 0u);
+}
+
+TEST(ScenePose, SkinnedBoundsContainTheDeformedVerticesFox) { expectBoundsContainDeformedVertices("Fox/glTF-Binary/Fox.glb", {"all"}); }
+TEST(ScenePose, SkinnedBoundsContainTheDeformedVerticesCesiumMan) {
+    expectBoundsContainDeformedVertices("CesiumMan/glTF-Binary/CesiumMan.glb", {});
+}
+TEST(ScenePose, MorphedBoundsContainTheDeformedVertices) {
+    expectBoundsContainDeformedVertices("MorphStressTest/glTF-Binary/MorphStressTest.glb", {"all"});
+    expectBoundsContainDeformedVertices("AnimatedMorphCube/glTF-Binary/AnimatedMorphCube.glb", {});
+}
+
+}  // namespace
+}  // namespace candela::scene::test
+
+namespace candela::scene::test {
+namespace {
+
+TEST(ScenePose, PickingHitsThePosedMesh) {
+    REQUIRE_MODELS();
+    const Scene scene = loadGltf(sharedModels() / "Fox/glTF-Binary/Fox.glb");
+    ScenePose pose(scene, selectAnimations(scene, std::vector<std::string>{"Run"}));
+    pose.evaluate(0.4);
+    const uint32_t d = pose.deformedDraws().at(0);
+    const Draw& draw = pose.draws()[d];
+    const std::vector<Vertex> posed = deformVertices(scene, draw, pose.weights(draw), pose.jointMatrices(uint32_t(draw.skin)));
+    const uint32_t base = scene.deformations[size_t(draw.deformation)].firstVertex;
+    // A ray from far above onto the posed centroid of some triangle hits the fox no further than it;
+    // the same ray against the rest pose (bind pose) hits elsewhere or not at all.
+    size_t differing = 0;
+    for (uint32_t i = 0; i + 2 < draw.indexCount; i += 300) {
+        const uint32_t* tri = scene.indices.data() + draw.firstIndex + i;
+        const glm::vec3 centroid = (posed[tri[0] - base].position + posed[tri[1] - base].position + posed[tri[2] - base].position) / 3.0f;
+        const Ray ray{centroid + glm::vec3(0.0f, 1000.0f, 0.0f), glm::vec3(0.0f, -1.0f, 0.0f)};
+        const std::optional<Pick> hit = pickDraw(scene, pose, ray);
+        ASSERT_TRUE(hit) << "triangle " << i / 3;
+        EXPECT_LE(hit->distance, 1000.0f + 1e-2f);
+        const std::optional<Pick> rest = pickDraw(scene, ray);
+        differing += !rest || std::abs(rest->distance - hit->distance) > 1.0f;
+    }
+    EXPECT_GT(differing, 0u);
 }
 
 }  // namespace
