@@ -67,7 +67,9 @@ std::optional<Pick> pick(const Scene& scene, std::span<const Draw> draws, const 
         if (draw.hidden) continue;
         const std::optional<float> box = hitBox(draw.bounds, ray);
         if (!box || (best && *box > best->distance)) continue;
-        const auto [vertices, base] = positions(d);
+        const std::pair<std::span<const Vertex>, uint32_t> range = positions(d);
+        const std::span<const Vertex> vertices = range.first;  // (no structured binding: lambdas capture it)
+        const uint32_t base = range.second;
         for (uint32_t i = 0; i + 2 < draw.indexCount; i += 3) {
             const uint32_t* tri = scene.indices.data() + draw.firstIndex + i;
             if (tri[0] < base || tri[1] < base || tri[2] < base || tri[0] - base >= vertices.size() ||

@@ -89,6 +89,39 @@ Make gltfOf(std::function<GltfBuilder()> make, std::function<void(const fs::path
     };
 }
 
+// A triangle skinned to one joint (node 1, which stays put): JOINTS_0 of UNSIGNED_BYTE `joints`,
+// WEIGHTS_0 of FLOAT `weights` (4 per vertex), an identity inverse bind matrix; `edit` may change
+// the JSON after.
+Make skinnedTriangle(std::vector<uint8_t> joints, std::vector<float> weights, std::function<void(GltfBuilder&)> edit = {}) {
+    return gltfOf([=] {
+        GltfBuilder b;
+        const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
+        const int j = b.addAccessor(b.addView(joints), kUnsignedByte, joints.size() / 4, "VEC4");
+        const int w = b.addFloats(weights, "VEC4", 4);
+        const int ibm = b.addFloats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}, "MAT4", 16);
+        const int mesh = b.addMesh({{"POSITION", pos}, {"JOINTS_0", j}, {"WEIGHTS_0", w}}, b.addIndices({0, 1, 2}));
+        const int joint = b.addNode({{"translation", {0, 0, 0}}});
+        b.doc["skins"] = Json::array({{{"joints", {joint}}, {"inverseBindMatrices", ibm}}});
+        b.setScene({b.addNode({{"mesh", mesh}, {"skin", 0}}), joint});
+        if (edit) edit(b);
+        return b;
+    });
+}
+
+// The triangle with one morph target whose POSITION deltas are `deltas` (VEC3 floats).
+Make morphedTriangle(std::vector<float> deltas, std::function<void(GltfBuilder&)> edit = {}) {
+    return gltfOf([=] {
+        GltfBuilder b;
+        const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
+        const int delta = b.addFloats(deltas, "VEC3", 3);
+        b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}}, b.addIndices({0, 1, 2}))}})});
+        b.doc["meshes"][0]["primitives"][0]["targets"] = Json::array({{{"POSITION", delta}}});
+        b.doc["meshes"][0]["weights"] = {0.5};
+        if (edit) edit(b);
+        return b;
+    });
+}
+
 // The triangle animated by one channel: sampler input `times`, output `values` (of accessor type
 // `type`), then `edit` may change the JSON (a channel's target, the interpolation, ...).
 Make animatedTriangle(std::vector<float> times, std::vector<float> values, std::string type, int components,
@@ -579,6 +612,58 @@ std::vector<Row> catalogue() {
     error("animation", "ChannelWithoutTarget", animatedTriangle({0, 1}, move, "VEC3", 3, [](Json& j) {
         j["animations"][0]["channels"][0].erase("target");
     }), "channels[0].target: expected an object");
+    // -- Skins and morph targets.
+    const std::vector<uint8_t> joint0(12, 0);
+    const std::vector<float> full = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};
+    loads("skin", "OneJoint", skinnedTriangle(joint0, full));
+    error("skin", "JointIndexBeyondSkin", skinnedTriangle({0, 0, 0, 0, 3, 0, 0, 0, 0, 0, 0, 0}, full),
+          "skin 0: a vertex names joint 3, but the skin has 1 joints");
+    error("skin", "JointsOfFloat", skinnedTriangle(joint0, full, [](GltfBuilder& b) {
+        b.doc["meshes"][0]["primitives"][0]["attributes"]["JOINTS_0"] = 2;  // the FLOAT weights
+    }), "JOINTS_0: accessor 2 must be VEC4 of UNSIGNED_BYTE or UNSIGNED_SHORT");
+    error("skin", "WeightsOfBytesNotNormalized", skinnedTriangle(joint0, full, [](GltfBuilder& b) {
+        b.doc["meshes"][0]["primitives"][0]["attributes"]["WEIGHTS_0"] = 1;  // the UNSIGNED_BYTE joints
+    }), "WEIGHTS_0: accessor 1 must be VEC4 of FLOAT or normalized (UNSIGNED_)BYTE/SHORT");
+    error("skin", "WeightNan", skinnedTriangle(joint0, {1, 0, 0, 0, kNan, 0, 0, 0, 1, 0, 0, 0}),
+          "WEIGHTS_0: vertex 1 has weight nan (weights must be finite and >= 0)");
+    error("skin", "WeightNegative", skinnedTriangle(joint0, {1, 0, 0, 0, 1.5f, -0.5f, 0, 0, 1, 0, 0, 0}),
+          "WEIGHTS_0: vertex 1 has weight -0.500000");
+    error("skin", "WeightsAllZero", skinnedTriangle(joint0, {1, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0}),
+          "vertex 1 has no joint weight (all are 0)");
+    warning("skin", "WeightsNotSummingToOne", skinnedTriangle(joint0, {1, 0, 0, 0, 0.5f, 0, 0, 0, 1, 0, 0, 0}),
+            "1 vertices have skin weights that do not sum to 1 (renormalized)", true);
+    error("skin", "InverseBindMatrixCountMismatch", skinnedTriangle(joint0, full, [](GltfBuilder& b) {
+        b.doc["skins"][0]["joints"] = {1, 1};
+    }), "skin 0: inverseBindMatrices has 1 matrices for 2 joints");
+    error("skin", "HundredThousandJoints", skinnedTriangle(joint0, full, [](GltfBuilder& b) {
+        b.doc["skins"][0]["joints"] = Json(std::vector<int>(100000, 1));
+    }), "skin 0: 100000 joints, more than the 65536 a vertex can name");
+    error("skin", "JointNodeMissing", skinnedTriangle(joint0, full, [](GltfBuilder& b) { b.doc["skins"][0]["joints"] = {9}; }),
+          "skin 0: joint node 9 does not exist");
+    error("skin", "SkinMissing", skinnedTriangle(joint0, full, [](GltfBuilder& b) { b.doc["nodes"][1]["skin"] = 4; }),
+          "skin 4 does not exist");
+    error("morph", "TargetCountDiffersFromMesh", morphedTriangle({0, 0, 1, 0, 0, 1}),
+          "morph target 0 POSITION: 2 elements, POSITION has 3");
+    error("morph", "TargetDeltaNan", morphedTriangle({0, 0, 1, 0, kNan, 1, 0, 0, 1}), "morph target 0 POSITION: element 1 is not finite");
+    error("morph", "WeightsCountDiffersFromTargets", morphedTriangle({0, 0, 1, 0, 0, 1, 0, 0, 1}, [](GltfBuilder& b) {
+        b.doc["meshes"][0]["weights"] = {0.5, 0.5};
+    }), "mesh 0: 2 weights for 1 morph targets");
+    error("morph", "PrimitivesWithDifferentTargetCounts", morphedTriangle({0, 0, 1, 0, 0, 1, 0, 0, 1}, [](GltfBuilder& b) {
+        Json second = b.doc["meshes"][0]["primitives"][0];
+        second.erase("targets");
+        b.doc["meshes"][0]["primitives"].push_back(second);
+    }), "mesh 0 primitive 1: 0 morph targets, primitive 0 has 1");
+    loads("morph", "SparseTargetWithoutBufferView", morphedTriangle({0, 0, 1, 0, 0, 1, 0, 0, 1}, [](GltfBuilder& b) {
+        // All zero but one vertex: a sparse accessor over nothing.
+        const int values = b.addFloats({0, 0, 2}, "VEC3", 3);
+        const int view = b.doc["accessors"][values]["bufferView"];
+        const int indices = b.addView(std::vector<uint16_t>{2, 0});
+        const Json sparse = {{"count", 1},
+                             {"indices", {{"bufferView", indices}, {"componentType", kUnsignedShort}}},
+                             {"values", {{"bufferView", view}}}};
+        b.doc["accessors"].push_back({{"componentType", kFloat}, {"count", 3}, {"type", "VEC3"}, {"sparse", sparse}});
+        b.doc["meshes"][0]["primitives"][0]["targets"][0]["POSITION"] = int(b.doc["accessors"].size()) - 1;
+    }));
     warning("animation", "PointerPath", animatedTriangle({0, 1}, move, "VEC3", 3, [](Json& j) {
         j["animations"][0]["channels"][0]["target"]["path"] = "pointer";
     }), "animation 0 channel 0: target path 'pointer' is not supported (ignored)", true);

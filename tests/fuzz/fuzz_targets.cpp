@@ -5,6 +5,8 @@
 #include "scene/exr_reader.h"
 #include "scene/gltf_loader.h"
 #include "scene/hdr_reader.h"
+#include "scene/scene_pose.h"
+#include "scene/skinning.h"
 
 #include <cmath>
 #include <cstdio>
@@ -60,7 +62,26 @@ void checkScene(const scene::Scene& s) {
         if (d.material >= s.materials.size()) violated("draw material out of range");
         if (!finite(d.world)) violated("draw transform not finite");
         if (d.node >= int32_t(s.nodes.size())) violated("draw node out of range");
+        if (d.deformation >= int32_t(s.deformations.size())) violated("draw deformation out of range");
+        if (d.skin >= int32_t(s.skins.size()) || (d.skin >= 0 && d.deformation < 0)) violated("draw skin out of range");
     }
+    for (const scene::Deformation& d : s.deformations) {
+        if (uint64_t(d.firstVertex) + d.vertexCount > s.vertices.size()) violated("deformation vertex range past the end");
+        if (d.deltas.size() != size_t(d.targetCount) * d.vertexCount) violated("deformation delta count");
+        if (d.influences.size() != size_t(d.influencesPerVertex) * d.vertexCount) violated("deformation influence count");
+    }
+    for (const scene::Skin& skin : s.skins) {
+        if (skin.inverseBind.size() != skin.joints.size()) violated("skin matrix count");
+        for (uint32_t joint : skin.joints)
+            if (joint >= s.nodes.size()) violated("skin joint out of range");
+    }
+    for (const scene::Animation& a : s.animations)
+        for (const scene::AnimationChannel& c : a.channels) {
+            if (c.sampler >= a.samplers.size() || c.node >= s.nodes.size()) violated("animation channel out of range");
+            if (!scene::samplerProblem(a.samplers[c.sampler], c.property).empty()) violated("animation sampler invalid");
+            if (c.property == scene::AnimatedProperty::Weights && a.samplers[c.sampler].width != s.nodes[c.node].weights.size())
+                violated("weights channel width differs from its node");
+        }
     for (size_t i = 0; i < s.nodes.size(); ++i) {
         if (s.nodes[i].parent >= int32_t(i)) violated("node " + std::to_string(i) + " does not come after its parent");
         for (int c = 0; c < 4; ++c)
@@ -92,6 +113,29 @@ void checkScene(const scene::Scene& s) {
         violated("scene bounds invalid");
 }
 
+// Plays every animation at a few times (a huge one too): visible posed draws stay finite, and so
+// do the deformed vertices of the first few thousand.
+void playScene(const scene::Scene& s) {
+    if (s.animations.empty() && s.deformations.empty()) return;
+    std::vector<uint32_t> all(s.animations.size());
+    for (uint32_t i = 0; i < all.size(); ++i) all[i] = i;
+    scene::ScenePose pose(s, all);
+    for (double t : {0.0, 0.37, 1e6}) {
+        pose.evaluate(t);
+        for (const scene::Draw& d : pose.draws())
+            if (!d.hidden && (!finite(d.world) || !d.bounds.valid())) violated("posed draw not finite");
+        size_t budget = 4096;
+        static const std::vector<glm::dmat4> none;
+        for (uint32_t index : pose.deformedDraws()) {
+            const scene::Draw& d = pose.draws()[index];
+            if (s.deformations[size_t(d.deformation)].vertexCount > budget) break;
+            budget -= s.deformations[size_t(d.deformation)].vertexCount;
+            for (const scene::Vertex& v : scene::deformVertices(s, d, pose.weights(d), d.skin >= 0 ? pose.jointMatrices(uint32_t(d.skin)) : none))
+                if (!finite(v.position)) violated("deformed vertex not finite");
+        }
+    }
+}
+
 void checkEnvironment(const scene::Environment& env) {
     if (env.width == 0 || env.height == 0 || env.width > kMaxEnvWidth || env.height > kMaxEnvHeight)
         violated("environment size out of range");
@@ -119,6 +163,7 @@ void fuzzGltf(const uint8_t* data, size_t size, const std::filesystem::path& uri
         const scene::Scene s = scene::loadGltfFromMemory(std::span<const uint8_t>(data, size), uriFolder / "fuzz.gltf",
                                                          scene::LoadOptions{.maxImageDimension = kMaxImageDimension});
         checkScene(s);
+        playScene(s);
     } catch (const UserError&) {
     }
 }

@@ -101,6 +101,44 @@ std::vector<std::pair<std::string, GltfBuilder>> ownModels(const Bytes& png) {
     const int mirror = graph.addNode({{"mesh", 0}, {"scale", {-1, 1, 1}}, {"children", {lit}}});
     graph.setScene({0, graph.addNode({{"children", {cam, ortho, mirror}}, {"translation", {1, 2, 3}}})});
     out.emplace_back("graph", graph);
+
+    // Animated, skinned (two JOINTS/WEIGHTS sets, short joints, normalized byte weights) and
+    // morphed (two targets, one sparse), with STEP, LINEAR and CUBICSPLINE samplers on every path.
+    GltfBuilder animated;
+    const int ap = animated.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
+    const int j0 = animated.addAccessor(animated.addView(std::vector<uint16_t>{0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0}), kUnsignedShort, 3, "VEC4");
+    const int w0 = animated.addAccessor(animated.addView(std::vector<uint8_t>{128, 127, 0, 0, 255, 0, 0, 0, 200, 55, 0, 0}), kUnsignedByte, 3, "VEC4", true);
+    const int j1 = animated.addAccessor(animated.addView(std::vector<uint8_t>(12, 1)), kUnsignedByte, 3, "VEC4");
+    const int w1 = animated.addFloats(std::vector<float>(12, 0.0f), "VEC4", 4);
+    const int d0 = animated.addFloats({0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3", 3);
+    const int d1 = animated.addFloats({0.1f, 0, 0, 0, 0.1f, 0, 0, 0, 0}, "VEC3", 3);
+    const int ibm = animated.addFloats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0, 0, 1}, "MAT4", 16);
+    const int am = animated.addMesh({{"POSITION", ap}, {"JOINTS_0", j0}, {"WEIGHTS_0", w0}, {"JOINTS_1", j1}, {"WEIGHTS_1", w1}},
+                                    animated.addIndices({0, 1, 2}));
+    animated.doc["meshes"][am]["primitives"][0]["targets"] = Json::array({{{"POSITION", d0}}, {{"POSITION", d1}, {"NORMAL", d0}}});
+    animated.doc["meshes"][am]["weights"] = {0.25, 0};
+    const int bone1 = animated.addNode({{"translation", {1, 0, 0}}});
+    const int bone0 = animated.addNode({{"children", {bone1}}});
+    animated.doc["skins"] = Json::array({{{"joints", {bone0, bone1}}, {"inverseBindMatrices", ibm}}});
+    const int skinned = animated.addNode({{"mesh", am}, {"skin", 0}});
+    const int morphOnly = animated.addNode({{"mesh", am}, {"weights", {0.5, 0.5}}, {"translation", {2, 0, 0}}});
+    animated.setScene({skinned, bone0, morphOnly});
+    const int t2 = animated.addFloats({0, 1}, "SCALAR", 1);
+    const int v3 = animated.addFloats({0, 0, 0, 0, 1, 0}, "VEC3", 3);
+    const int c3 = animated.addFloats({0, 0, 0, 1, 1, 1, 0, 1, 0, 0, 0, 0, 1, 2, 1, 0, 0, 0}, "VEC3", 3);
+    const int q4 = animated.addFloats({0, 0, 0, 1, 0, 0.7071f, 0, 0.7071f}, "VEC4", 4);
+    const int w2 = animated.addFloats({0, 0, 1, 0.5f}, "SCALAR", 1);
+    animated.doc["animations"] = Json::array(
+        {{{"name", "all paths"},
+          {"samplers", {{{"input", t2}, {"output", v3}, {"interpolation", "STEP"}},
+                        {{"input", t2}, {"output", q4}},
+                        {{"input", t2}, {"output", c3}, {"interpolation", "CUBICSPLINE"}},
+                        {{"input", t2}, {"output", w2}}}},
+          {"channels", {{{"sampler", 0}, {"target", {{"node", bone1}, {"path", "translation"}}}},
+                        {{"sampler", 1}, {"target", {{"node", bone0}, {"path", "rotation"}}}},
+                        {{"sampler", 2}, {"target", {{"node", morphOnly}, {"path", "scale"}}}},
+                        {{"sampler", 3}, {"target", {{"node", morphOnly}, {"path", "weights"}}}}}}}});
+    out.emplace_back("animated_skinned_morphed", animated);
     return out;
 }
 
