@@ -55,7 +55,8 @@ int runBench(const RenderOptions& options) {
         const graph::GraphDecl& decl = renderer.lastGraph().declaration();
         for (uint32_t pass : renderer.lastGraph().compiled().order) {
             const std::string& name = decl.passes[pass].name;
-            if (i == 0) passOrder.push_back(name);
+            // Passes can come and go between frames (skin_morph with the pose): list every one seen.
+            if (std::find(passOrder.begin(), passOrder.end(), name) == passOrder.end()) passOrder.push_back(name);
             if (frame.timings.gpuMs[pass] >= 0.0) passGpuMs[name].push_back(frame.timings.gpuMs[pass]);
         }
         const FrameTiming calibration = renderer.renderCalibration(settings.width, settings.height);

@@ -163,6 +163,7 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         table.withValue["--graph-json"] = [&](const std::string& v) { o.graphJson = v; };
         table.withValue["--disable-pass"] = [&](const std::string& v) { o.disabledPasses.push_back(v); };
         table.withValue["--scene"] = [&](const std::string& v) { o.scene = v; };
+        table.withValue["--scene-index"] = [&](const std::string& v) { o.sceneIndex = parseDimension("--scene-index", v); };
         table.withValue["--animation"] = [&](const std::string& v) {
             for (size_t start = 0;;) {
                 const size_t comma = v.find(',', start);
@@ -397,6 +398,7 @@ render options:
                         [1]
   --fps F               render: frames per second of the sequence; frame i shows --time + i/F [30]
   --turntable DEGREES   render: turn the orbit camera by DEGREES over the sequence (360: once round)
+  --scene-index N       which of the glTF file's scenes to draw [the file's default scene, else 0]
   --camera INDEX        use the scene's glTF camera INDEX
   --camera-orbit T,P,R  orbit camera: azimuth T and polar angle P in degrees, distance R in metres
                         (eye = target + R(sin P sin T, cos P, sin P cos T); R <= 0 frames the scene)

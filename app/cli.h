@@ -21,6 +21,7 @@ struct CommonOptions {
 struct RenderOptions {
     CommonOptions common;
     std::string scene;                // --scene FILE (.gltf/.glb); empty: the built-in sphere grid
+    std::optional<uint32_t> sceneIndex;  // --scene-index N: which of the file's scenes [its `scene`, else 0]
     std::optional<uint32_t> camera;   // --camera INDEX (glTF camera)
     std::optional<std::array<float, 3>> cameraOrbit;  // --camera-orbit THETA,PHI,RADIUS
     std::optional<std::array<float, 3>> target;       // --target X,Y,Z

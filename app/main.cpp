@@ -28,7 +28,9 @@ vk::ContextDesc contextDesc(const CommonOptions& common) {
 }
 
 scene::Scene loadScene(const RenderOptions& options) {
-    scene::Scene scene = options.scene.empty() ? scene::makeSphereGrid() : scene::loadGltf(options.scene);
+    if (options.sceneIndex && options.scene.empty()) throw UserError("--scene-index: give a glTF file with --scene");
+    scene::Scene scene = options.scene.empty() ? scene::makeSphereGrid()
+                                               : scene::loadGltf(options.scene, {.sceneIndex = options.sceneIndex});
     for (const std::string& warning : scene.warnings) log::warn(options.scene + ": " + warning);
     return scene;
 }

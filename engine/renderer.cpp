@@ -157,6 +157,11 @@ double Renderer::completedPassMs(std::string_view pass) const {
     return -1.0;
 }
 
+void Renderer::sceneReplaced() {
+    mFrames.waitIdle();
+    mUploaded = nullptr;
+}
+
 void Renderer::recomputeIbl() {
     if (mEnvironment) useEnvironment(mEnvironment, mIblQuality, {}, /*force=*/true);
 }

@@ -186,6 +186,9 @@ public:
     double completedPassMs(std::string_view pass) const;
     // Waits for every frame in flight.
     void waitIdle() { mFrames.waitIdle(); }
+    // The Scene object last drawn was replaced in place (same address, new contents): the next
+    // frame uploads it anew. Waits for the frames in flight.
+    void sceneReplaced();
     // After shaders were replaced (hot reload): the frame passes rebuild their pipelines at their
     // next use by themselves; a replaced IBL shader also discards the maps, so that the next frame
     // runs the precompute with it.

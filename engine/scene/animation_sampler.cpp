@@ -22,17 +22,29 @@ Quat quat(const AnimationSampler& s, size_t key) { return {at(s, key, 0), at(s, 
 
 // Unit length; a zero quaternion (no rotation can be read from it) becomes the identity.
 Quat normalized(Quat q) {
-    const double length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    if (!(length > 1e-30)) return {0.0, 0.0, 0.0, 1.0};
-    for (double& v : q) v /= length;
+    const double length2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+    // Keys are stored unit length to float precision: leave those as they are (this runs several
+    // times per rotation channel per frame).
+    if (std::abs(length2 - 1.0) < 1e-14) return q;
+    if (!(length2 > 1e-60)) return {0.0, 0.0, 0.0, 1.0};
+    const double inverse = 1.0 / std::sqrt(length2);
+    for (double& v : q) v *= inverse;
     return q;
 }
 
 // Spherical interpolation along the shorter arc (q and −q are the same rotation).
 Quat slerp(Quat a, Quat b, double s) {
-    a = normalized(a);
-    b = normalized(b);
-    double cosine = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+    // The angle between the keys from their dot product over the product of their lengths (one
+    // square root, not two); keys off unit length by float rounding are interpolated as they are
+    // and the result normalized, which differs from normalizing them first by ~1e-7 at most.
+    double la = a[0] * a[0] + a[1] * a[1] + a[2] * a[2] + a[3] * a[3];
+    double lb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2] + b[3] * b[3];
+    if (!(std::abs(la - 1.0) < 1e-3) || !(std::abs(lb - 1.0) < 1e-3)) {
+        a = normalized(a);  // far from unit, or zero: normalize properly
+        b = normalized(b);
+        la = lb = 1.0;
+    }
+    double cosine = std::min((a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]) / std::sqrt(la * lb), 1.0);
     if (cosine < 0.0) {
         for (double& v : b) v = -v;
         cosine = -cosine;
@@ -41,7 +53,7 @@ Quat slerp(Quat a, Quat b, double s) {
     // Nearly the same rotation: sin θ → 0, and linear interpolation is exact to rounding.
     if (cosine < 1.0 - 1e-9) {
         const double theta = std::acos(cosine);
-        const double sine = std::sin(theta);
+        const double sine = std::sqrt(1.0 - cosine * cosine);  // sin θ for θ in [0, π/2]
         wa = std::sin((1.0 - s) * theta) / sine;
         wb = std::sin(s * theta) / sine;
     }

@@ -86,7 +86,7 @@ void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, cons
     gltf::loadSamplers(ctx, model, scene);
     gltf::ImageTable images(ctx, model, std::move(parsed.uriImages), options, scene);
     gltf::loadMaterials(ctx, model, images, scene);
-    gltf::loadNodes(ctx, model, scene);
+    gltf::loadNodes(ctx, model, options.sceneIndex, scene);
     gltf::loadAnimations(ctx, model, scene);
 }
 

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 
 namespace candela::scene {
@@ -19,6 +20,8 @@ struct LoadOptions {
     // gigabytes (a decompression bomb) fails at once with the sizes in the message.
     uint64_t maxImageBytes = uint64_t(256) << 20;
     uint64_t maxTotalImageBytes = uint64_t(2) << 30;
+    // The glTF scene to load (--scene-index); unset: the file's `scene`, else scene 0.
+    std::optional<uint32_t> sceneIndex;
 };
 
 // Loads `path`. Throws candela::UserError with one line "PATH: problem" for anything malformed

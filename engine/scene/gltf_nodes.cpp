@@ -339,7 +339,7 @@ private:
 
 }  // namespace
 
-void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, Scene& scene) {
+void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, std::optional<uint32_t> sceneIndex, Scene& scene) {
     std::vector<int> roots;
     if (model.scenes.empty()) {
         // No scene: draw every parentless node rather than nothing.
@@ -350,10 +350,16 @@ void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, Scene& scen
         for (size_t i = 0; i < model.nodes.size(); ++i)
             if (!isChild[i]) roots.push_back(int(i));
         if (!model.nodes.empty()) ctx.warn("no scene defined: drawing every root node");
+        if (sceneIndex) ctx.fail("scene " + std::to_string(*sceneIndex) + " does not exist (the file has no scenes)");
     } else {
-        const int index = model.defaultScene >= 0 ? model.defaultScene : 0;
-        if (size_t(index) >= model.scenes.size()) ctx.fail("scene " + std::to_string(index) + " does not exist");
-        roots = model.scenes[size_t(index)].nodes;
+        const size_t index = sceneIndex ? *sceneIndex : size_t(model.defaultScene >= 0 ? model.defaultScene : 0);
+        if (index >= model.scenes.size())
+            ctx.fail("scene " + std::to_string(index) + " does not exist (the file has " + std::to_string(model.scenes.size()) +
+                     " scenes)");
+        roots = model.scenes[index].nodes;
+        scene.sceneIndex = uint32_t(index);
+        for (size_t i = 0; i < model.scenes.size(); ++i)
+            scene.sceneNames.push_back(model.scenes[i].name.empty() ? "scene " + std::to_string(i) : model.scenes[i].name);
     }
     NodeWalker walker(ctx, model, scene);
     walker.walk(roots);

@@ -199,6 +199,10 @@ struct Scene {
     std::vector<Animation> animations;
     std::vector<Deformation> deformations;  // Draw::deformation
     std::vector<Skin> skins;                // Draw::skin
+    // The file's scenes by name (unnamed ones as "scene N") and the one loaded; empty for files
+    // without scenes and for built-in scenes.
+    std::vector<std::string> sceneNames;
+    uint32_t sceneIndex = 0;
     Aabb bounds;  // world space, over all draws
     std::vector<std::string> warnings;  // non-fatal problems met while loading
 };

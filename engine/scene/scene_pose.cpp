@@ -75,6 +75,7 @@ ScenePose::ScenePose(const Scene& scene, std::vector<uint32_t> playing)
     for (size_t s = 0; s < scene.skins.size(); ++s) {
         scene::jointMatrices(scene.skins[s], mNodes, mJoints[s]);
         for (uint32_t joint : scene.skins[s].joints) skinMoved[s] |= moved[joint];
+        if (skinMoved[s]) mMovedSkins.push_back(uint32_t(s));
     }
     for (uint32_t d = 0; d < mDraws.size(); ++d) {
         const Draw& draw = mDraws[d];
@@ -104,7 +105,7 @@ void ScenePose::evaluate(double time, bool loop) {
         applyAnimation(animation, loop ? loopTime(time, animation.duration) : time, mNodes);
     }
     updateWorldTransforms(mNodes, mDependent);
-    for (size_t s = 0; s < mScene->skins.size(); ++s) scene::jointMatrices(mScene->skins[s], mNodes, mJoints[s]);
+    for (uint32_t s : mMovedSkins) scene::jointMatrices(mScene->skins[s], mNodes, mJoints[s]);
     for (uint32_t d : mAnimatedDraws) place(d);
     for (uint32_t l : mAnimatedLights) placeLight(mLights[l], mNodes[size_t(mLights[l].node)].world);
     // A camera whose node is scaled to nothing keeps its last placement.

@@ -79,6 +79,7 @@ private:
     std::vector<Camera> mCameras;
     std::vector<uint32_t> mAnimatedDraws, mAnimatedLights, mAnimatedCameras;
     std::vector<std::vector<glm::dmat4>> mJoints;     // per skin
+    std::vector<uint32_t> mMovedSkins;                // skins with a joint some playing animation moves
     std::vector<std::vector<Aabb>> mJointBounds;  // per draw (empty unless skinned)
     Aabb mAnimationBounds;
     double mTime = 0.0;

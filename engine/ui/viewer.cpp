@@ -144,15 +144,15 @@ bool Viewer::passEnabled(const std::string& pass) const {
     return std::find(disabled.begin(), disabled.end(), pass) == disabled.end();
 }
 
-bool Viewer::openFile(const std::filesystem::path& path) {
+bool Viewer::openFile(const std::filesystem::path& path, std::optional<uint32_t> sceneIndex) {
     const std::string ext = lowerExtension(path);
     try {
         if (ext == ".gltf" || ext == ".glb") {
-            scene::Scene loaded = scene::loadGltf(path);
+            scene::Scene loaded = scene::loadGltf(path, {.sceneIndex = sceneIndex});
             for (const std::string& warning : loaded.warnings) log::warn(path.string() + ": " + warning);
-            // The renderer notices a new scene by address: it waits for the frames in flight and
-            // uploads the new one at the next frame.
-            mRenderer->waitIdle();
+            // Replaced in place: the renderer is told, waits for the frames in flight and uploads
+            // the new one at the next frame.
+            mRenderer->sceneReplaced();
             mScene = std::move(loaded);
             mPose = std::make_unique<scene::ScenePose>(mScene, scene::selectAnimations(mScene, {}));
             mAnimationTime = 0.0;
@@ -295,6 +295,16 @@ void Viewer::drawUi() {
     ImGui::Begin("Candela", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     ImGui::PushItemWidth(mPanelWidth * 0.55f);
     ImGui::TextUnformatted(mScene.source.c_str());
+    if (mScene.sceneNames.size() > 1) {
+        // The file's scenes: choosing one reloads the file with it.
+        int chosen = int(mScene.sceneIndex);
+        const auto name = [](void* data, int i, const char** out) {
+            *out = static_cast<const scene::Scene*>(data)->sceneNames[size_t(i)].c_str();
+            return true;
+        };
+        if (ImGui::Combo("scene", &chosen, name, &mScene, int(mScene.sceneNames.size())) && chosen != int(mScene.sceneIndex))
+            openFile(mScene.source, uint32_t(chosen));
+    }
     if (!mStatus.empty())
         ImGui::TextColored(mStatusIsError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.6f, 0.9f, 0.6f, 1.0f), "%s",
                            mStatus.c_str());

@@ -78,9 +78,10 @@ public:
     // Enables or disables a pass by name from the next frame on (the render-graph panel's checkbox).
     void setPassEnabled(const std::string& pass, bool enabled);
     bool passEnabled(const std::string& pass) const;
-    // Loads a dropped file: .gltf/.glb replaces the scene, .hdr/.exr the environment (the IBL
-    // precompute runs in the next frame). Errors are shown in the UI, not thrown. Returns success.
-    bool openFile(const std::filesystem::path& path);
+    // Loads a dropped file: .gltf/.glb replaces the scene (`sceneIndex`: which of the file's
+    // scenes; the scene list reloads with it), .hdr/.exr the environment (the IBL precompute runs
+    // in the next frame). Errors are shown in the UI, not thrown. Returns success.
+    bool openFile(const std::filesystem::path& path, std::optional<uint32_t> sceneIndex = std::nullopt);
     // Saves the next rendered frame (UI included) as PNG.
     void requestScreenshot(const std::filesystem::path& path);
     void frameScene();   // F: frame the scene's bounds from the current direction

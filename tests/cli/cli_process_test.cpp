@@ -173,6 +173,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"SequenceTwoFrameNumbers", "render --frames 3 --out {dir}/x_%d_%d.png", "needs exactly one %d"},
                       BadInput{"SequenceBadField", "render --frames 3 --out {dir}/x_%s.png", "needs one %d or %0Nd for the frame number"},
                       BadInput{"FpsZero", "render --frames 3 --fps 0 --out {dir}/x_%d.png", "--fps: expected frames per second > 0, got '0'"},
+                      BadInput{"SceneIndexBeyondTheFile", "render --scene {dir}/triangle.gltf --scene-index 3 --out {dir}/x.png", "scene 3 does not exist (the file has 1 scenes)"},
+                      BadInput{"SceneIndexWithoutScene", "render --scene-index 1 --out {dir}/x.png", "--scene-index: give a glTF file with --scene"},
                       BadInput{"MemoryBudgetZero", "render --memory-budget 0 --out {dir}/x.png", "--memory-budget: need at least 1 MiB"}),
     [](const ::testing::TestParamInfo<BadInput>& row) { return std::string(row.param.name); });
 

@@ -462,3 +462,31 @@ TEST(GltfModels, NodesAreKeptParentsFirstWithTheTransformsTheDrawsWerePlacedWith
 
 }  // namespace
 }  // namespace candela::scene::test
+
+namespace candela::scene::test {
+namespace {
+
+TEST(GltfModels, MultipleScenesDefaultAndChosen) {
+    if (sharedModels().empty()) GTEST_SKIP() << "../shared/assets not present";
+    const fs::path path = sharedModels() / "MultipleScenes/glTF/MultipleScenes.gltf";
+    // The file names scene 1 (one node); scene 0 holds the other node.
+    const Scene byDefault = loadGltf(path);
+    EXPECT_EQ(byDefault.sceneIndex, 1u);
+    EXPECT_EQ(byDefault.sceneNames, (std::vector<std::string>{"scene 0", "scene 1"}));
+    ASSERT_EQ(byDefault.nodes.size(), 1u);
+    EXPECT_EQ(byDefault.nodes[0].source, 1);
+    const Scene first = loadGltf(path, {.sceneIndex = 0u});
+    EXPECT_EQ(first.sceneIndex, 0u);
+    ASSERT_EQ(first.nodes.size(), 1u);
+    EXPECT_EQ(first.nodes[0].source, 0);
+    EXPECT_NE(first.indices.size(), byDefault.indices.size());  // a triangle and a square
+    try {
+        loadGltf(path, {.sceneIndex = 2u});
+        FAIL() << "no error";
+    } catch (const UserError& e) {
+        EXPECT_NE(std::string(e.what()).find("scene 2 does not exist (the file has 2 scenes)"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace candela::scene::test

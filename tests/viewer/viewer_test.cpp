@@ -227,6 +227,10 @@ TEST_F(ViewerTest, DroppedFilesReplaceTheSceneOrTheEnvironment) {
     ASSERT_TRUE(mViewer->openFile(glb)) << mViewer->status();
     frames(1);
     EXPECT_EQ(mViewer->scene().source, glb.string());
+    // The new scene was uploaded and is what the forward pass drew (not the old buffers).
+    const std::vector<std::string> explained = mViewer->renderer().explain();
+    EXPECT_TRUE(std::any_of(explained.begin(), explained.end(),
+                            [](const std::string& line) { return line.rfind("forward: 1 draws;", 0) == 0; }));
 }
 
 TEST_F(ViewerTest, EnvironmentPanelActions) {
