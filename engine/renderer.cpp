@@ -441,6 +441,18 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
                 std::memcpy(data.data() + i * sizeof d, &d, sizeof d);
             }
         posed = passes::ForwardPass::PosedDraws{.draws = draws, .data = addHostUpload(frame, "posed_draws", std::move(data))};
+        if (!pose->animatedLights().empty()) {
+            // The lights as the buffer holds them (the user's edits included), moved where the pose puts them.
+            std::vector<shading::LightData> lights = mGpuScene->lights();
+            for (uint32_t l : pose->animatedLights()) {
+                const shading::LightData placed = scene::lightData(pose->lights()[l]);
+                lights[l].positionRange = glm::vec4(glm::vec3(placed.positionRange), lights[l].positionRange.w);
+                lights[l].directionType = glm::vec4(glm::vec3(placed.directionType), lights[l].directionType.w);
+            }
+            std::vector<std::byte> bytes(lights.size() * sizeof(shading::LightData));
+            std::memcpy(bytes.data(), lights.data(), bytes.size());
+            posed->lights = addHostUpload(frame, "posed_lights", std::move(bytes));
+        }
     }
     std::optional<passes::ForwardPass::Ibl> ibl;
     if (mIbl->hasEnvironment()) {

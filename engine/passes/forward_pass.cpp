@@ -141,6 +141,7 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
         TextureId depth;
         IblHandles ibl;  // as declared: resolved in execute
         BufferId draws;     // the posed draw data, when animated
+        BufferId lights;    // the posed light data, when a light is animated
         BufferId deformed;  // the deformed vertices, when some draw is deformed
     };
     shading::ForwardPush push{};
@@ -164,6 +165,8 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
             if (posed)
                 d.draws = builder.read(posed->data, Usage::StorageRead,
                                        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            if (posed && posed->lights.valid())
+                d.lights = builder.read(posed->lights, Usage::StorageRead, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
             if (deformed) d.deformed = builder.read(deformed->vertices, Usage::Vertex);
         },
         [items, frameConstants = push, gpuScene, staticSceneSet = mSceneSet, materialSets, iblSets,
@@ -173,7 +176,7 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
             // Posed draws: set 0 names this frame's draw buffer.
             const VkDescriptorSet sceneSet = !d.draws.valid() ? staticSceneSet
                                              : vk::DescriptorWriter(*program, 0)
-                                                   .buffer("Lights", gpuScene->lightBuffer())
+                                                   .buffer("Lights", d.lights.valid() ? ctx.buffer(d.lights) : gpuScene->lightBuffer())
                                                    .buffer("Draws", ctx.buffer(d.draws))
                                                    .buffer("Materials", gpuScene->materialBuffer())
                                                    .commit(ctx.context(), ctx.descriptors());

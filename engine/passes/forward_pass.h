@@ -56,6 +56,7 @@ public:
     struct PosedDraws {
         std::span<const scene::Draw> draws;
         graph::BufferId data;
+        graph::BufferId lights;  // this frame's light data when a light moves with the pose; else invalid
     };
     // This frame's deformed vertices (the skin_morph pass's output) and, per scene draw, the
     // vertex offset that maps its indices into them (kRestVertices: drawn from the scene's own).

@@ -63,7 +63,19 @@ MaterialData materialData(const Material& m) {
     return out;
 }
 
-LightData lightData(const Light& l) {
+vk::Image solidTexture(vk::Context& context, vk::Uploader& uploader, std::array<uint8_t, 4> rgba, VkFormat format,
+                       const char* name) {
+    vk::Image image(context, {.format = format,
+                              .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                              .name = name});
+    uploader.image(image, std::as_bytes(std::span(rgba)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    return image;
+}
+
+}  // namespace
+
+shading::LightData lightData(const Light& l) {
+    using namespace shading;
     LightData out{};
     const float type = l.type == LightType::Directional ? float(CANDELA_LIGHT_DIRECTIONAL)
                        : l.type == LightType::Spot    ? float(CANDELA_LIGHT_SPOT)
@@ -77,17 +89,6 @@ LightData lightData(const Light& l) {
     out.cone = glm::vec4(scale, -cosOuter * scale, 0.0f, 0.0f);
     return out;
 }
-
-vk::Image solidTexture(vk::Context& context, vk::Uploader& uploader, std::array<uint8_t, 4> rgba, VkFormat format,
-                       const char* name) {
-    vk::Image image(context, {.format = format,
-                              .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                              .name = name});
-    uploader.image(image, std::as_bytes(std::span(rgba)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    return image;
-}
-
-}  // namespace
 
 shading::DrawData drawData(const Draw& draw) {
     shading::DrawData data{};

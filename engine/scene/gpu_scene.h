@@ -18,6 +18,9 @@ namespace candela::scene {
 // A draw as the forward shaders read it: world and normal matrix, material index. Precondition:
 // draw.world is not singular (hidden draws are not drawn).
 shading::DrawData drawData(const Draw& draw);
+// A light as the forward shaders read it (position and range, direction and type, colour,
+// intensity, cone terms).
+shading::LightData lightData(const Light& light);
 
 class GpuScene {
 public:

@@ -214,3 +214,37 @@ TEST_F(GpuTest, MorphedVerticesMatchTheCpuReference) {
 
 }  // namespace
 }  // namespace candela::test
+
+namespace candela::test {
+namespace {
+
+TEST_F(GpuTest, LightsOnAnimatedNodesMoveWithThePose) {
+    LOAD_OR_SKIP(box, "Box/glTF-Binary/Box.glb");
+    // A point light on a node of its own, carried from left to right in one second.
+    scene::Scene scene = box;
+    scene.nodes.push_back({.name = "lamp", .source = -1, .parent = -1});
+    scene.lights.push_back({.type = scene::LightType::Point, .intensity = 20.0f, .node = int32_t(scene.nodes.size() - 1)});
+    scene::Animation carry{.name = "carry", .duration = 1.0};
+    carry.samplers.push_back({.times = {0, 1}, .values = {-2, 1, 2, 2, 1, 2}, .width = 3});
+    carry.channels.push_back({.sampler = 0, .node = uint32_t(scene.nodes.size() - 1), .property = scene::AnimatedProperty::Translation});
+    scene.animations.push_back(carry);
+    scene::ScenePose pose(scene, {0});
+    Renderer renderer(context());
+    pose.evaluate(0.0);
+    const CapturedFrame left = renderer.capture(settingsFor(scene, &pose));
+    pose.evaluate(0.999, /*loop=*/false);
+    const CapturedFrame right = renderer.capture(settingsFor(scene, &pose));
+    EXPECT_GT(differingPixels(left.rgba8, right.rgba8), size_t(kWidth * kHeight / 100));
+    EXPECT_NE(renderer.lastGraph().declaration().resources.end(),
+              std::find_if(renderer.lastGraph().declaration().resources.begin(), renderer.lastGraph().declaration().resources.end(),
+                           [](const graph::ResourceDecl& r) { return r.name == "posed_lights"; }));
+    // The same light placed there in a static scene draws the same image.
+    scene::Scene frozen = scene;
+    frozen.animations.clear();
+    frozen.lights.back().position = pose.lights().back().position;
+    Renderer other(context());
+    EXPECT_EQ(other.capture(settingsFor(frozen, nullptr)).rgba8, right.rgba8);
+}
+
+}  // namespace
+}  // namespace candela::test
