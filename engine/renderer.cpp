@@ -434,12 +434,9 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
     std::optional<passes::ForwardPass::PosedDraws> posed;
     if (pose && pose->animated()) {
         const std::vector<scene::Draw>& draws = pose->draws();
-        std::vector<std::byte> data(draws.size() * sizeof(shading::DrawData));
-        for (size_t i = 0; i < draws.size(); ++i)
-            if (!draws[i].hidden) {
-                const shading::DrawData d = scene::drawData(draws[i]);
-                std::memcpy(data.data() + i * sizeof d, &d, sizeof d);
-            }
+        const std::vector<shading::DrawData> drawData = scene::drawDataOf(*settings.scene, draws);
+        std::vector<std::byte> data(drawData.size() * sizeof(shading::DrawData));
+        std::memcpy(data.data(), drawData.data(), data.size());
         posed = passes::ForwardPass::PosedDraws{.draws = draws, .data = addHostUpload(frame, "posed_draws", std::move(data))};
         if (!pose->animatedLights().empty()) {
             // The lights as the buffer holds them (the user's edits included), moved where the pose puts them.

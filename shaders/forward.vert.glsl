@@ -31,7 +31,8 @@ layout(location = 3) out vec4 outColor;
 layout(location = 4) out vec2 outTexUv[CANDELA_TEX_COUNT];
 
 void main() {
-    DrawData draw = draws[push.counts.y];
+    // Instanced draws (EXT_mesh_gpu_instancing) have one entry per instance, in a row.
+    DrawData draw = draws[push.counts.y + gl_InstanceIndex];
     vec4 world = draw.world * vec4(inPosition, 1.0f);
     outWorldPosition = world.xyz;
     outNormal = mat3(draw.normalMatrix) * inNormal;

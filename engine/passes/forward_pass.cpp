@@ -102,7 +102,8 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
     std::vector<DrawItem> opaque, blended;
     std::map<std::string, uint32_t> variantCounts;
     uint32_t hidden = 0;
-    for (uint32_t i = 0; i < draws.size(); ++i) {
+    uint32_t drawData = 0;  // the draw buffer holds one entry per draw, one per instance for instanced ones
+    for (uint32_t i = 0; i < draws.size(); drawData += std::max(draws[i].instanceCount, 1u), ++i) {
         const scene::Draw& draw = draws[i];
         if (draw.hidden) {
             ++hidden;
@@ -115,7 +116,8 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
             .push_back({.draw = i, .pipeline = &pipeline(v), .depth = glm::length(centre - view.eye),
                         .firstIndex = draw.firstIndex, .indexCount = draw.indexCount, .material = draw.material,
                         .flipWinding = draw.flipWinding, .doubleSided = scene.materials[draw.material].doubleSided,
-                        .vertexOffset = deformed ? deformed->vertexOffset[i] : kRestVertices});
+                        .vertexOffset = deformed ? deformed->vertexOffset[i] : kRestVertices,
+                        .drawData = drawData, .instances = std::max(draw.instanceCount, 1u)});
     }
     // Opaque grouped by pipeline (fewer binds); blended back to front.
     std::stable_sort(opaque.begin(), opaque.end(), [](const DrawItem& a, const DrawItem& b) { return a.pipeline < b.pipeline; });
@@ -124,7 +126,11 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
     items.insert(items.end(), blended.begin(), blended.end());
 
     mExplanation.clear();
-    std::string used = "forward: " + std::to_string(draws.size() - hidden) + " draws; variants:";
+    uint32_t instanced = 0;
+    for (const scene::Draw& draw : draws) instanced += draw.hidden ? 0 : draw.instanceCount;
+    std::string used = "forward: " + std::to_string(draws.size() - hidden) + " draws" +
+                       (instanced ? " (" + std::to_string(instanced) + " instances in instanced draws)" : std::string()) +
+                       "; variants:";
     for (const auto& [name, count] : variantCounts) used += " " + name + " ×" + std::to_string(count);
     mExplanation.push_back(used);
     if (posed)
@@ -203,14 +209,14 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
                 vkCmdSetCullMode(cmd, item.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
                 // glTF fronts are counter-clockwise; a mirroring transform turns them clockwise.
                 vkCmdSetFrontFace(cmd, item.flipWinding ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
-                constants.counts.y = item.draw;
+                constants.counts.y = item.drawData;
                 bound->pushConstants(cmd, &constants, sizeof(constants));
                 const bool restVertices = item.vertexOffset == kRestVertices;
                 if (const VkBuffer wanted = restVertices ? rest : deformedVertices; wanted != boundVertices) {
                     boundVertices = wanted;
                     vkCmdBindVertexBuffers(cmd, 0, 1, &boundVertices, &offset);
                 }
-                vkCmdDrawIndexed(cmd, item.indexCount, 1, item.firstIndex, restVertices ? 0 : item.vertexOffset, 0);
+                vkCmdDrawIndexed(cmd, item.indexCount, item.instances, item.firstIndex, restVertices ? 0 : item.vertexOffset, 0);
             }
             ctx.endRendering();
         });

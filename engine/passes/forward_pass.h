@@ -106,6 +106,8 @@ private:
         uint32_t firstIndex, indexCount, material;
         bool flipWinding, doubleSided;
         int32_t vertexOffset;  // kRestVertices: the scene's vertex buffer; else into the deformed one
+        uint32_t drawData;     // index of its (first instance's) entry in the draw buffer
+        uint32_t instances;    // instanced draws: how many (else 1)
     };
     const vk::Pipeline& pipeline(const Variant& variant);
     static vk::GraphicsPipelineDesc desc(const Variant& variant);

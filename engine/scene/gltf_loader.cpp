@@ -59,9 +59,9 @@ std::string label(const char* kind, int index, const std::string& name) {
 
 namespace {
 
-constexpr std::array<std::string_view, 5> kSupportedExtensions = {
+constexpr std::array<std::string_view, 6> kSupportedExtensions = {
     "KHR_materials_emissive_strength", "KHR_texture_transform", "KHR_materials_unlit",
-    "KHR_lights_punctual", "KHR_mesh_quantization"};
+    "KHR_lights_punctual", "KHR_mesh_quantization", "EXT_mesh_gpu_instancing"};
 
 bool supported(const std::string& extension) {
     return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), extension) != kSupportedExtensions.end();

@@ -12,8 +12,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <initializer_list>
 #include <map>
+#include <optional>
+#include <span>
 
 namespace candela::scene::gltf {
 namespace {
@@ -198,7 +201,7 @@ private:
 
     void visit(const tinygltf::Node& node, const std::string& what, int32_t sceneNode) {
         const glm::dmat4 world = mScene.nodes[size_t(sceneNode)].world;  // a copy: the vector grows later
-        if (node.mesh >= 0) addMesh(node.mesh, node.skin, what, world, sceneNode);
+        if (node.mesh >= 0) addMesh(node, what, world, sceneNode);
         if (node.camera >= 0) addCamera(node, what, world, sceneNode);
         if (auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end())
             addLight(it->second, what, world, sceneNode);
@@ -216,7 +219,54 @@ private:
         return uint32_t(mDefaultMaterial);
     }
 
-    void addMesh(int meshIndex, int skin, const std::string& what, const glm::dmat4& world, int32_t sceneNode) {
+    // EXT_mesh_gpu_instancing: the node's instance matrices (TRS from its TRANSLATION, ROTATION and
+    // SCALE accessors), or nullopt without the extension.
+    std::optional<std::vector<glm::mat4>> readInstances(const tinygltf::Node& node, const std::string& what) {
+        const auto extension = node.extensions.find("EXT_mesh_gpu_instancing");
+        if (extension == node.extensions.end()) return std::nullopt;
+        const std::string ext = what + " EXT_mesh_gpu_instancing";
+        const tinygltf::Value& attributes = extension->second.Get("attributes");
+        if (!attributes.IsObject()) mCtx.fail(ext + ": no attributes object");
+        std::optional<size_t> count;
+        auto read = [&](const char* name, int type, bool normalized) {
+            const tinygltf::Value& index = attributes.Get(name);
+            if (!index.IsNumber()) return std::vector<float>{};
+            const double i = index.GetNumberAsDouble();
+            if (!(i >= 0.0 && i < double(mModel.accessors.size()) && i == std::floor(i)))
+            {
+                char number[32];
+                std::snprintf(number, sizeof number, "%.10g", i);
+                mCtx.fail(ext + " " + name + ": accessor " + number + " does not exist");
+            }
+            std::vector<float> values = readFloats(mCtx, mModel, int(i), type, normalized, ext + " " + name);
+            const size_t n = values.size() / (type == TINYGLTF_TYPE_VEC4 ? 4 : 3);
+            if (count && *count != n)
+                mCtx.fail(ext + ": " + name + " has " + std::to_string(n) + " instances, another attribute " + std::to_string(*count));
+            count = n;
+            for (float v : values)
+                if (!std::isfinite(v)) mCtx.fail(ext + " " + name + ": a value is not finite");
+            return values;
+        };
+        const std::vector<float> t = read("TRANSLATION", TINYGLTF_TYPE_VEC3, false);
+        const std::vector<float> r = read("ROTATION", TINYGLTF_TYPE_VEC4, true);
+        const std::vector<float> sc = read("SCALE", TINYGLTF_TYPE_VEC3, false);
+        if (!count) mCtx.fail(ext + ": none of TRANSLATION, ROTATION, SCALE");
+        std::vector<glm::mat4> out(*count);
+        for (size_t i = 0; i < *count; ++i) {
+            NodeTransform transform;
+            if (!t.empty()) transform.translation = glm::dvec3(t[3 * i], t[3 * i + 1], t[3 * i + 2]);
+            if (!r.empty()) {
+                const glm::dquat q(r[4 * i + 3], r[4 * i], r[4 * i + 1], r[4 * i + 2]);
+                if (glm::length(q) > 0.0) transform.rotation = glm::normalize(q);
+            }
+            if (!sc.empty()) transform.scale = glm::dvec3(sc[3 * i], sc[3 * i + 1], sc[3 * i + 2]);
+            out[i] = glm::mat4(transform.local());
+        }
+        return out;
+    }
+
+    void addMesh(const tinygltf::Node& node, const std::string& what, const glm::dmat4& world, int32_t sceneNode) {
+        const int meshIndex = node.mesh, skin = node.skin;
         if (size_t(meshIndex) >= mModel.meshes.size()) mCtx.fail(what + ": mesh " + std::to_string(meshIndex) + " does not exist");
         if (skin >= 0 && size_t(skin) >= mModel.skins.size()) mCtx.fail(what + ": skin " + std::to_string(skin) + " does not exist");
         // A zero scale on any axis (here or inherited) flattens the mesh to nothing visible and
@@ -226,6 +276,25 @@ private:
         const bool movable = mMovable[size_t(sceneNode)];
         if (skin < 0 && placeDraw(probe, world) == Placement::Singular && !movable)
             return mCtx.warn(what + ": zero scale (a singular world transform); its mesh is not drawn");
+        // Instances, in at most two groups — those that mirror and those that do not — so that each
+        // draw has one winding; shared by the mesh's primitives.
+        std::optional<std::vector<glm::mat4>> instances = readInstances(node, what);
+        if (instances && skin >= 0) {
+            mCtx.warn(what + ": EXT_mesh_gpu_instancing on a skinned mesh is not supported (drawn once)");
+            instances.reset();
+        }
+        std::vector<std::pair<uint32_t, uint32_t>> groups;  // (first, count) in Scene::instances
+        if (instances) {
+            for (bool mirrored : {false, true}) {
+                const uint32_t first = uint32_t(mScene.instances.size());
+                for (const glm::mat4& m : *instances)
+                    if ((glm::determinant(glm::mat3(m)) < 0.0f) == mirrored) mScene.instances.push_back(m);
+                if (mScene.instances.size() > first) groups.emplace_back(first, uint32_t(mScene.instances.size()) - first);
+            }
+            if (groups.empty()) return;  // zero instances: nothing to draw
+        } else {
+            groups.emplace_back(0, 0);
+        }
         const auto& primitives = mModel.meshes[size_t(meshIndex)].primitives;
         for (size_t p = 0; p < primitives.size(); ++p) {
             const uint32_t material = materialIndex(primitives[p].material, label("mesh", meshIndex) + " primitive " + std::to_string(p));
@@ -240,20 +309,24 @@ private:
             if (!geometry.drawable) continue;
             const bool skinned = skin >= 0 && geometry.deformation >= 0 &&
                                  mScene.deformations[size_t(geometry.deformation)].influencesPerVertex > 0;
-            Draw draw{.firstIndex = geometry.firstIndex,
-                      .indexCount = geometry.indexCount,
-                      .material = material,
-                      .localBounds = geometry.bounds,
-                      .node = sceneNode,
-                      .deformation = geometry.deformation,
-                      .skin = skinned ? skin : -1};  // the glTF skin until finishSkins
-            // The world matrix itself was checked to fit a float as the node was reached.
-            const glm::vec3 reach = geometry.deformation >= 0
-                                        ? morphReach(mScene.deformations[size_t(geometry.deformation)], mScene.nodes[size_t(sceneNode)].weights)
-                                        : glm::vec3(0.0f);
-            if (!skinned && placeDraw(draw, world, reach) == Placement::BeyondFloat)
-                mCtx.fail(what + ": a corner of its mesh in world space is beyond single precision");
-            mScene.draws.push_back(draw);
+            for (const auto& [first, count] : groups) {
+                Draw draw{.firstIndex = geometry.firstIndex,
+                          .indexCount = geometry.indexCount,
+                          .material = material,
+                          .localBounds = geometry.bounds,
+                          .node = sceneNode,
+                          .deformation = geometry.deformation,
+                          .skin = skinned ? skin : -1,  // the glTF skin until finishSkins
+                          .firstInstance = first,
+                          .instanceCount = count};
+                // The world matrix itself was checked to fit a float as the node was reached.
+                const glm::vec3 reach = geometry.deformation >= 0
+                                            ? morphReach(mScene.deformations[size_t(geometry.deformation)], mScene.nodes[size_t(sceneNode)].weights)
+                                            : glm::vec3(0.0f);
+                if (!skinned && placeDraw(draw, world, reach, std::span(mScene.instances).subspan(first, count)) == Placement::BeyondFloat)
+                    mCtx.fail(what + ": a corner of its mesh in world space is beyond single precision");
+                mScene.draws.push_back(draw);
+            }
         }
     }
 

@@ -100,6 +100,24 @@ shading::DrawData drawData(const Draw& draw) {
     return data;
 }
 
+std::vector<shading::DrawData> drawDataOf(const Scene& scene, std::span<const Draw> draws, std::vector<uint32_t>* first) {
+    std::vector<shading::DrawData> out;
+    if (first) first->clear();
+    for (const Draw& d : draws) {
+        if (first) first->push_back(uint32_t(out.size()));
+        if (d.instanceCount == 0) {
+            out.push_back(d.hidden ? shading::DrawData{} : drawData(d));
+            continue;
+        }
+        for (uint32_t i = 0; i < d.instanceCount; ++i) {
+            Draw instance = d;
+            instance.world = d.world * scene.instances[d.firstInstance + i];
+            out.push_back(d.hidden ? shading::DrawData{} : drawData(instance));
+        }
+    }
+    return out;
+}
+
 GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights, float maxAnisotropy)
     : mScene(&scene), mContext(&context) {
     vk::Uploader uploader(context);
@@ -126,8 +144,7 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     mLightCount = static_cast<uint32_t>(lights.size());
     mLights = uploadedBuffer(context, uploader, lights, "lights");
 
-    std::vector<DrawData> draws;
-    for (const Draw& d : scene.draws) draws.push_back(drawData(d));
+    const std::vector<DrawData> draws = drawDataOf(scene, scene.draws);
     mDraws = uploadedBuffer(context, uploader, draws, "draws");
 
     std::vector<MaterialData>& materials = mSceneMaterials;

@@ -11,6 +11,7 @@
 #include "vk/sampler.h"
 
 #include <array>
+#include <span>
 #include <vector>
 
 namespace candela::scene {
@@ -18,6 +19,10 @@ namespace candela::scene {
 // A draw as the forward shaders read it: world and normal matrix, material index. Precondition:
 // draw.world is not singular (hidden draws are not drawn).
 shading::DrawData drawData(const Draw& draw);
+// The draw data of every draw in order, an instanced draw taking one entry per instance (world ·
+// instance matrix) — the layout of the draw buffers; hidden draws get zeros. `first[d]` receives
+// the index of draw d's first entry (what the forward pass pushes; the shader adds the instance).
+std::vector<shading::DrawData> drawDataOf(const Scene& scene, std::span<const Draw> draws, std::vector<uint32_t>* first = nullptr);
 // A light as the forward shaders read it (position and range, direction and type, colour,
 // intensity, cone terms).
 shading::LightData lightData(const Light& light);

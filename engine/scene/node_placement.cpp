@@ -1,5 +1,6 @@
 #include "scene/node_placement.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 
@@ -10,7 +11,7 @@ bool fitsFloat(double v) { return std::isfinite(v) && std::abs(v) <= double(FLT_
 
 }  // namespace
 
-Placement placeDraw(Draw& draw, const glm::dmat4& world, const glm::vec3& reach) {
+Placement placeDraw(Draw& draw, const glm::dmat4& world, const glm::vec3& reach, std::span<const glm::mat4> instances) {
     draw.hidden = true;
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
@@ -18,16 +19,21 @@ Placement placeDraw(Draw& draw, const glm::dmat4& world, const glm::vec3& reach)
     const glm::mat4 worldF(world);
     // In double from the float matrix the GPU gets: in float the determinant overflows for scales
     // near 1e13, which are valid.
-    const double det = glm::determinant(glm::dmat3(glm::mat3(worldF)));
+    double det = glm::determinant(glm::dmat3(glm::mat3(worldF)));
     if (det == 0.0 || !std::isfinite(det)) return Placement::Singular;
+    if (!instances.empty()) det *= glm::determinant(glm::dmat3(glm::mat3(instances[0])));
     Aabb bounds;
     const glm::dvec3 lo = glm::dvec3(draw.localBounds.min) - glm::dvec3(reach);
     const glm::dvec3 hi = glm::dvec3(draw.localBounds.max) + glm::dvec3(reach);
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
-        const glm::dvec3 w(world * glm::dvec4(p, 1.0));
-        if (!fitsFloat(w.x) || !fitsFloat(w.y) || !fitsFloat(w.z)) return Placement::BeyondFloat;
-        bounds.extend(glm::vec3(w));
+    const size_t copies = std::max<size_t>(instances.size(), 1);
+    for (size_t i = 0; i < copies; ++i) {
+        const glm::dmat4 m = instances.empty() ? world : world * glm::dmat4(instances[i]);
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::dvec3 p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
+            const glm::dvec3 w(m * glm::dvec4(p, 1.0));
+            if (!fitsFloat(w.x) || !fitsFloat(w.y) || !fitsFloat(w.z)) return Placement::BeyondFloat;
+            bounds.extend(glm::vec3(w));
+        }
     }
     draw.world = worldF;
     draw.flipWinding = det < 0.0;

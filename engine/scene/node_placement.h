@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include <span>
+
 namespace candela::scene {
 
 enum class Placement : uint8_t {
@@ -18,7 +20,11 @@ enum class Placement : uint8_t {
 // Sets draw.world, draw.flipWinding and draw.bounds (from draw.localBounds grown by `reach`, how
 // far morph targets move its vertices) for `world`, and draw.hidden unless the result is Placed.
 // The determinant and the box are computed in double.
-Placement placeDraw(Draw& draw, const glm::dmat4& world, const glm::vec3& reach = glm::vec3(0.0f));
+// For an instanced draw `instances` are its instance matrices (Scene::instances slice): the bounds
+// hold every instance and the winding follows world · instance 0 (the loader keeps a draw's
+// instances alike).
+Placement placeDraw(Draw& draw, const glm::dmat4& world, const glm::vec3& reach = glm::vec3(0.0f),
+                    std::span<const glm::mat4> instances = {});
 
 // A skinned draw: its vertices are placed in world space by the joints, so its world matrix is
 // the identity; `bounds` (scene/skinning.h skinnedBounds) become its bounds. Hidden when they are

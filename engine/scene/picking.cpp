@@ -70,14 +70,17 @@ std::optional<Pick> pick(const Scene& scene, std::span<const Draw> draws, const 
         const std::pair<std::span<const Vertex>, uint32_t> range = positions(d);
         const std::span<const Vertex> vertices = range.first;  // (no structured binding: lambdas capture it)
         const uint32_t base = range.second;
-        for (uint32_t i = 0; i + 2 < draw.indexCount; i += 3) {
-            const uint32_t* tri = scene.indices.data() + draw.firstIndex + i;
-            if (tri[0] < base || tri[1] < base || tri[2] < base || tri[0] - base >= vertices.size() ||
-                tri[1] - base >= vertices.size() || tri[2] - base >= vertices.size())
-                continue;
-            const auto world = [&](uint32_t v) { return glm::vec3(draw.world * glm::vec4(vertices[v - base].position, 1.0f)); };
-            const std::optional<float> t = hitTriangle(ray, world(tri[0]), world(tri[1]), world(tri[2]));
-            if (t && (!best || *t < best->distance)) best = Pick{d, *t};
+        for (uint32_t instance = 0; instance < std::max(draw.instanceCount, 1u); ++instance) {
+            const glm::mat4 m = draw.instanceCount ? draw.world * scene.instances[draw.firstInstance + instance] : draw.world;
+            for (uint32_t i = 0; i + 2 < draw.indexCount; i += 3) {
+                const uint32_t* tri = scene.indices.data() + draw.firstIndex + i;
+                if (tri[0] < base || tri[1] < base || tri[2] < base || tri[0] - base >= vertices.size() ||
+                    tri[1] - base >= vertices.size() || tri[2] - base >= vertices.size())
+                    continue;
+                const auto world = [&](uint32_t v) { return glm::vec3(m * glm::vec4(vertices[v - base].position, 1.0f)); };
+                const std::optional<float> t = hitTriangle(ray, world(tri[0]), world(tri[1]), world(tri[2]));
+                if (t && (!best || *t < best->distance)) best = Pick{d, *t};
+            }
         }
     }
     return best;

@@ -152,6 +152,11 @@ struct Draw {
     // Not drawn in this pose: an animated node whose transform is singular (scaled to 0) or beyond
     // a float. Only animated draws are ever hidden; the loader drops static singular ones.
     bool hidden = false;
+    // EXT_mesh_gpu_instancing: the draw is `instanceCount` instances, instance i placed by
+    // world · Scene::instances[firstInstance + i] (drawn as one instanced draw). The loader splits a
+    // node's instances so that all of one draw mirror alike (flipWinding holds for each).
+    uint32_t firstInstance = 0;
+    uint32_t instanceCount = 0;  // 0: not instanced (one copy at `world`)
 };
 
 enum class LightType : uint8_t { Directional, Point, Spot };
@@ -198,6 +203,7 @@ struct Scene {
     // The file's animations, in file order; channels name Scene::nodes indices.
     std::vector<Animation> animations;
     std::vector<Deformation> deformations;  // Draw::deformation
+    std::vector<glm::mat4> instances;       // Draw::firstInstance: each instance's TRS in its node's space
     std::vector<Skin> skins;                // Draw::skin
     // The file's scenes by name (unnamed ones as "scene N") and the one loaded; empty for files
     // without scenes and for built-in scenes.

@@ -117,7 +117,8 @@ void ScenePose::place(uint32_t d) {
     const glm::vec3 reach =
         draw.deformation >= 0 ? morphReach(mScene->deformations[size_t(draw.deformation)], weights(draw)) : glm::vec3(0.0f);
     if (draw.skin >= 0) placeSkinnedDraw(draw, skinnedBounds(mJointBounds[d], mJoints[size_t(draw.skin)], reach));
-    else placeDraw(draw, mNodes[size_t(draw.node)].world, reach);
+    else placeDraw(draw, mNodes[size_t(draw.node)].world, reach,
+                   std::span(mScene->instances).subspan(draw.firstInstance, draw.instanceCount));
 }
 
 std::span<const float> ScenePose::weights(const Draw& draw) const {

@@ -664,6 +664,28 @@ std::vector<Row> catalogue() {
         b.doc["accessors"].push_back({{"componentType", kFloat}, {"count", 3}, {"type", "VEC3"}, {"sparse", sparse}});
         b.doc["meshes"][0]["primitives"][0]["targets"][0]["POSITION"] = int(b.doc["accessors"].size()) - 1;
     }));
+    // -- EXT_mesh_gpu_instancing.
+    auto instanced = [](std::function<void(GltfBuilder&)> edit) {
+        return gltfOf([edit] {
+            GltfBuilder b;
+            b.addTriangle();
+            const int t = b.addFloats({0, 0, 0, 2, 0, 0}, "VEC3", 3);
+            b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {{"TRANSLATION", t}};
+            b.doc["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+            edit(b);
+            return b;
+        });
+    };
+    loads("instancing", "TwoInstances", instanced([](GltfBuilder&) {}));
+    error("instancing", "AttributeCountsDiffer", instanced([](GltfBuilder& b) {
+        b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["SCALE"] = b.addFloats({1, 1, 1}, "VEC3", 3);
+    }), "EXT_mesh_gpu_instancing: SCALE has 1 instances, another attribute 2");
+    error("instancing", "TranslationOfShorts", instanced([](GltfBuilder& b) {
+        b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["TRANSLATION"] = 2;  // the index accessor
+    }), "EXT_mesh_gpu_instancing TRANSLATION: accessor 2 must be VEC3 of FLOAT");
+    error("instancing", "MissingAccessor", instanced([](GltfBuilder& b) {
+        b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["ROTATION"] = 40;
+    }), "EXT_mesh_gpu_instancing ROTATION: accessor 40 does not exist");
     warning("animation", "PointerPath", animatedTriangle({0, 1}, move, "VEC3", 3, [](Json& j) {
         j["animations"][0]["channels"][0]["target"]["path"] = "pointer";
     }), "animation 0 channel 0: target path 'pointer' is not supported (ignored)", true);

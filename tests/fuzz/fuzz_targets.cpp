@@ -63,6 +63,7 @@ void checkScene(const scene::Scene& s) {
         if (!finite(d.world)) violated("draw transform not finite");
         if (d.node >= int32_t(s.nodes.size())) violated("draw node out of range");
         if (d.deformation >= int32_t(s.deformations.size())) violated("draw deformation out of range");
+        if (uint64_t(d.firstInstance) + d.instanceCount > s.instances.size()) violated("draw instance range past the end");
         if (d.skin >= int32_t(s.skins.size()) || (d.skin >= 0 && d.deformation < 0)) violated("draw skin out of range");
     }
     for (const scene::Deformation& d : s.deformations) {

@@ -82,6 +82,8 @@ const GoldenCase kCases[] = {
     {"fox_run_t0_4", "Fox/glTF-Binary/Fox.glb", {40.0f, 75.0f, 0.0f}, "", 0.0f, "Run", 0.4},
     {"animated_morph_cube_t1_6", "AnimatedMorphCube/glTF-Binary/AnimatedMorphCube.glb", {30.0f, 70.0f, 0.0f}, "", 0.0f, "", 1.6},
     {"morph_stress_test_t0_6", "MorphStressTest/glTF-Binary/MorphStressTest.glb", {0.0f, 70.0f, 0.0f}, "", 0.0f, "TheWave", 0.6},
+    // EXT_mesh_gpu_instancing: 125 rotated and scaled cubes in one instanced draw.
+    {"simple_instancing", "SimpleInstancing/glTF-Binary/SimpleInstancing.glb", {30.0f, 70.0f, 0.0f}},
     {"interpolation_test_t0_9", "InterpolationTest/glTF-Binary/InterpolationTest.glb", {0.0f, 90.0f, 20.0f}, "", 0.0f, "all", 0.9},
 };
 

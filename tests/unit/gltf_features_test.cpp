@@ -205,6 +205,30 @@ TEST(GltfFeatures, LargeAndSmallValidScalesLoadQuietly) {
     EXPECT_FLOAT_EQ(scene.draws[0].bounds.max.x, 1e13f);
 }
 
+TEST(GltfFeatures, GpuInstancesAreOneDrawPerWindingWithEveryInstanceInTheBounds) {
+    TempDir dir;
+    GltfBuilder b;
+    b.addTriangle();
+    // Three instances: two plain, one mirrored (scale x −1) — the mirrored one gets a draw of its own.
+    const int t = b.addFloats({0, 0, 0, 10, 0, 0, 0, 5, 0}, "VEC3", 3);
+    const int s = b.addFloats({1, 1, 1, 2, 2, 2, -1, 1, 1}, "VEC3", 3);
+    b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {{"TRANSLATION", t}, {"SCALE", s}};
+    b.doc["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    ASSERT_EQ(scene.draws.size(), 2u);
+    EXPECT_EQ(scene.draws[0].instanceCount, 2u);
+    EXPECT_FALSE(scene.draws[0].flipWinding);
+    EXPECT_EQ(scene.draws[1].instanceCount, 1u);
+    EXPECT_TRUE(scene.draws[1].flipWinding);
+    ASSERT_EQ(scene.instances.size(), 3u);
+    expectVec(glm::vec3(scene.instances[scene.draws[0].firstInstance + 1][3]), {10, 0, 0});
+    // The triangle spans [0,1]²: instance 2 (at x = 10, scale 2) reaches x = 12; the mirrored one x = −1.
+    expectVec(scene.draws[0].bounds.max, {12, 2, 0});
+    expectVec(scene.draws[1].bounds.min, {-1, 5, 0});
+    expectVec(scene.bounds.min, {-1, 0, 0});
+}
+
 TEST(GltfFeatures, MatrixAndTrsGiveTheSameWorldTransform) {
     TempDir dir;
     GltfBuilder b;
