@@ -25,7 +25,9 @@ double minimum(const std::vector<double>& values) {
 }  // namespace
 
 int runBench(const RenderOptions& options) {
+    const auto loadStart = std::chrono::steady_clock::now();
     const scene::Scene scene = loadScene(options);
+    const double loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart).count();
     const std::optional<scene::Environment> environment = loadEnvironment(options);
     RenderSettings settings = renderSettings(options, scene, environment ? &*environment : nullptr);
     // Frame i shows the animations at --time + i/60 s: each frame pays for evaluating its pose.
@@ -72,6 +74,7 @@ int runBench(const RenderOptions& options) {
     out["width"] = settings.width;
     out["height"] = settings.height;
     out["frames"] = options.frames;
+    out["sceneLoadMs"] = loadMs;  // reading and decoding the file, CPU
     out["calibration"] = {{"medianMs", calibration}, {"minMs", minimum(calibrationMs)}, {"gpuMedianMs", calibrationGpu}};
     out["frame"] = {{"medianMs", median(frameMs)},
                     {"minMs", minimum(frameMs)},
@@ -94,6 +97,7 @@ int runBench(const RenderOptions& options) {
     } else {
         std::printf("%s at %ux%u on %s, %u frames (CPU wall time around submit+wait)\n", scene.source.c_str(),
                     settings.width, settings.height, context.report().name.c_str(), options.frames);
+        std::printf("  scene load:  %.2f ms (reading and decoding the file)\n", loadMs);
         std::printf("  calibration: median %.2f ms, min %.2f ms (GPU %.2f ms)\n", calibration, minimum(calibrationMs),
                     calibrationGpu);
         std::printf("  frame:       median %.2f ms (%.2fx calibration), min %.2f ms (%.2fx)\n", median(frameMs),

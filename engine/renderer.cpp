@@ -19,6 +19,15 @@ namespace candela {
 using namespace graph;
 
 namespace {
+
+// The bytes of `items`, for a host upload (an empty vector gives no bytes: memcpy from its null
+// data() would be undefined even for 0 bytes).
+template <typename T>
+std::vector<std::byte> bytesOf(const std::vector<T>& items) {
+    std::vector<std::byte> out(items.size() * sizeof(T));
+    if (!out.empty()) std::memcpy(out.data(), items.data(), out.size());
+    return out;
+}
 constexpr VkFormat kLdrFormat = VK_FORMAT_R8G8B8A8_SRGB;
 
 double msSince(std::chrono::steady_clock::time_point start) {
@@ -345,16 +354,11 @@ std::optional<passes::ForwardPass::DeformedVertices> Renderer::addSkinMorph(Fram
         frame.notes.emplace_back("left out: skin_morph (no draw is skinned or has a non-zero morph weight in this pose)");
         return std::nullopt;
     }
-    const auto bytes = [](const auto& items) {
-        std::vector<std::byte> b(items.size() * sizeof(items[0]));
-        if (!b.empty()) std::memcpy(b.data(), items.data(), b.size());
-        return b;
-    };
     const passes::SkinMorphPass::Inputs inputs{.scene = mGpuScene.get(),
                                                .jobs = work.jobs,
                                                .vertexCount = work.vertexCount,
-                                               .joints = addHostUpload(frame, "joint_matrices", bytes(work.joints)),
-                                               .activeTargets = addHostUpload(frame, "morph_weights", bytes(work.activeTargets))};
+                                               .joints = addHostUpload(frame, "joint_matrices", bytesOf(work.joints)),
+                                               .activeTargets = addHostUpload(frame, "morph_weights", bytesOf(work.activeTargets))};
     if (!mSkinMorph) mSkinMorph = std::make_unique<passes::SkinMorphPass>(mContext);
     frame.notes.push_back("skin_morph: " + std::to_string(work.jobs.size()) + " draws deformed (" +
                           std::to_string(work.skinnedDraws) + " skinned), " + std::to_string(work.activeTargets.size()) +
@@ -384,7 +388,7 @@ void Renderer::writeHostUploads(Frame& frame) {
                                                .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                                .memory = vk::MemoryUsage::Upload,
                                                .name = name.c_str()});
-        std::memcpy(buffers[i].mapped(), upload.bytes.data(), upload.bytes.size());
+        if (!upload.bytes.empty()) std::memcpy(buffers[i].mapped(), upload.bytes.data(), upload.bytes.size());
         buffers[i].flush();
         frame.imports.bind(upload.buffer, buffers[i].handle());
     }
@@ -434,9 +438,7 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
     std::optional<passes::ForwardPass::PosedDraws> posed;
     if (pose && pose->animated()) {
         const std::vector<scene::Draw>& draws = pose->draws();
-        const std::vector<shading::DrawData> drawData = scene::drawDataOf(*settings.scene, draws);
-        std::vector<std::byte> data(drawData.size() * sizeof(shading::DrawData));
-        std::memcpy(data.data(), drawData.data(), data.size());
+        std::vector<std::byte> data = bytesOf(scene::drawDataOf(*settings.scene, draws));
         posed = passes::ForwardPass::PosedDraws{.draws = draws, .data = addHostUpload(frame, "posed_draws", std::move(data))};
         if (!pose->animatedLights().empty()) {
             // The lights as the buffer holds them (the user's edits included), moved where the pose puts them.
@@ -446,9 +448,7 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
                 lights[l].positionRange = glm::vec4(glm::vec3(placed.positionRange), lights[l].positionRange.w);
                 lights[l].directionType = glm::vec4(glm::vec3(placed.directionType), lights[l].directionType.w);
             }
-            std::vector<std::byte> bytes(lights.size() * sizeof(shading::LightData));
-            std::memcpy(bytes.data(), lights.data(), bytes.size());
-            posed->lights = addHostUpload(frame, "posed_lights", std::move(bytes));
+            posed->lights = addHostUpload(frame, "posed_lights", bytesOf(lights));
         }
     }
     std::optional<passes::ForwardPass::Ibl> ibl;

@@ -113,7 +113,7 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
         ++variantCounts[v.name()];
         const glm::vec3 centre = 0.5f * (draw.bounds.min + draw.bounds.max);
         (v.blend ? blended : opaque)
-            .push_back({.draw = i, .pipeline = &pipeline(v), .depth = glm::length(centre - view.eye),
+            .push_back({.pipeline = &pipeline(v), .depth = glm::length(centre - view.eye),
                         .firstIndex = draw.firstIndex, .indexCount = draw.indexCount, .material = draw.material,
                         .flipWinding = draw.flipWinding, .doubleSided = scene.materials[draw.material].doubleSided,
                         .vertexOffset = deformed ? deformed->vertexOffset[i] : kRestVertices,

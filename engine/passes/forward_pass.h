@@ -100,7 +100,6 @@ private:
     };
     // What execute needs of one draw, taken at setup (the scene's draw or its posed copy).
     struct DrawItem {
-        uint32_t draw;
         const vk::Pipeline* pipeline;
         float depth;  // view distance, for sorting blended draws
         uint32_t firstIndex, indexCount, material;
