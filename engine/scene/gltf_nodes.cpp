@@ -157,8 +157,12 @@ public:
                               ", but the skin has " + std::to_string(skin.joints.size()) + " joints");
                 draw.skin = it->second;
                 jointMatrices(skin, mScene.nodes, joints);
-                placeSkinnedDraw(draw, skinnedBounds(jointMeshBounds(deformation, skin, mScene.vertices), joints,
-                                                     morphReach(deformation, mScene.nodes[size_t(draw.node)].weights)));
+                // As for a rigid mesh: a rest pose beyond a float (huge inverse bind or joint
+                // matrices) fails the file rather than leaving infinite bounds.
+                if (placeSkinnedDraw(draw, skinnedBounds(jointMeshBounds(deformation, skin, mScene.vertices), joints,
+                                                         morphReach(deformation, mScene.nodes[size_t(draw.node)].weights))) !=
+                    Placement::Placed)
+                    mCtx.fail(label("skin", int(it->first), skin.name) + ": the skinned mesh's rest pose is beyond single precision");
             }
             mScene.bounds.extend(draw.bounds);
         }
