@@ -14,11 +14,6 @@
 namespace candela::scene::test {
 namespace {
 
-#define REQUIRE_MODELS()                                                            \
-    do {                                                                            \
-        if (sharedModels().empty()) GTEST_SKIP() << "../shared/assets not present"; \
-    } while (false)
-
 fs::path model(const std::string& name, const std::string& variant, const std::string& file) {
     return sharedModels() / name / variant / file;
 }

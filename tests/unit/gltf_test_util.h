@@ -42,6 +42,12 @@ inline fs::path sharedModels() {
     return {};
 }
 
+// Skips the test when ../shared/assets is absent.
+#define REQUIRE_MODELS()                                                            \
+    do {                                                                            \
+        if (sharedModels().empty()) GTEST_SKIP() << "../shared/assets not present"; \
+    } while (false)
+
 using candela::test::TempDir;
 
 inline void writeFile(const fs::path& path, const void* data, size_t size) {

@@ -12,11 +12,6 @@
 namespace candela::scene::test {
 namespace {
 
-#define REQUIRE_MODELS()                                                            \
-    do {                                                                            \
-        if (sharedModels().empty()) GTEST_SKIP() << "../shared/assets not present"; \
-    } while (false)
-
 void expectVec(const glm::vec3& actual, const glm::vec3& expected, float eps = 1e-5f) {
     EXPECT_NEAR(actual.x, expected.x, eps);
     EXPECT_NEAR(actual.y, expected.y, eps);
