@@ -1,6 +1,7 @@
 #include "scene/gltf_file.h"
 
 #include "core/check.h"
+#include "scene/gltf_draco.h"
 #include "scene/gltf_schema.h"
 
 #include <algorithm>
@@ -104,9 +105,14 @@ std::vector<uint8_t> readGltfFile(const LoadContext& ctx, const std::filesystem:
 
 namespace {
 
-// Checks the GLB container and returns an equivalent, canonical GLB (JSON chunk, optional BIN
-// chunk, both padded to 4 bytes) whose lengths tinygltf can trust.
-std::vector<uint8_t> repackGlb(const LoadContext& ctx, std::span<const uint8_t> file) {
+// The chunks of a GLB container, borrowed from the file.
+struct GlbChunks {
+    std::string_view json;
+    std::span<const uint8_t> bin;  // empty when there is no BIN chunk
+};
+
+// Checks the GLB container and returns its JSON and BIN chunks.
+GlbChunks readGlb(const LoadContext& ctx, std::span<const uint8_t> file) {
     if (file.size() < 12) ctx.fail("truncated GLB: " + std::to_string(file.size()) + " bytes, the header needs 12");
     const uint32_t version = readU32(&file[4]);
     const uint32_t length = readU32(&file[8]);
@@ -114,9 +120,7 @@ std::vector<uint8_t> repackGlb(const LoadContext& ctx, std::span<const uint8_t> 
     if (length > file.size())
         ctx.fail("truncated GLB: header says " + std::to_string(length) + " bytes, file has " +
                  std::to_string(file.size()));
-    std::string_view json;
-    std::span<const uint8_t> bin;
-    bool haveBin = false;
+    GlbChunks chunks;
     for (uint64_t offset = 12, index = 0; offset < length; ++index) {
         if (length - offset < 8) ctx.fail("truncated GLB: chunk header at byte " + std::to_string(offset));
         const uint32_t chunkLength = readU32(&file[offset]);
@@ -130,15 +134,19 @@ std::vector<uint8_t> repackGlb(const LoadContext& ctx, std::span<const uint8_t> 
                      " is not a multiple of 4 (tolerated)");
         if (index == 0) {
             if (chunkType != kChunkJson) ctx.fail("corrupt GLB: the first chunk is not JSON");
-            json = std::string_view(reinterpret_cast<const char*>(data), chunkLength);
+            chunks.json = std::string_view(reinterpret_cast<const char*>(data), chunkLength);
         } else if (index == 1 && chunkType == kChunkBin) {
-            bin = std::span<const uint8_t>(data, chunkLength);
-            haveBin = true;
+            chunks.bin = std::span<const uint8_t>(data, chunkLength);
         }  // other chunk types are ignored, as the specification asks
         offset += 8 + uint64_t(chunkLength);
     }
-    if (json.empty()) ctx.fail("corrupt GLB: no JSON chunk");
+    if (chunks.json.empty()) ctx.fail("corrupt GLB: no JSON chunk");
+    return chunks;
+}
 
+// A canonical GLB (JSON chunk, optional BIN chunk, both padded to 4 bytes) whose lengths tinygltf
+// can trust.
+std::vector<uint8_t> canonicalGlb(const LoadContext& ctx, std::string_view json, std::span<const uint8_t> bin) {
     const size_t jsonPadded = (json.size() + 3) & ~size_t(3);
     const size_t binPadded = (bin.size() + 3) & ~size_t(3);
     std::vector<uint8_t> out;
@@ -151,7 +159,7 @@ std::vector<uint8_t> repackGlb(const LoadContext& ctx, std::span<const uint8_t> 
     out.insert(out.end(), json.begin(), json.end());
     out.resize(out.size() + (jsonPadded - json.size()), ' ');
     // An empty BIN chunk is dropped: tinygltf rejects BIN chunks shorter than 4 bytes.
-    if (haveBin && !bin.empty()) {
+    if (!bin.empty()) {
         appendU32(out, uint32_t(binPadded));
         appendU32(out, kChunkBin);
         out.insert(out.end(), bin.begin(), bin.end());
@@ -272,16 +280,19 @@ ParsedFile parseGltf(const LoadContext& ctx, std::span<const uint8_t> file, cons
     if (file.empty()) ctx.fail("empty file");
     if (file.size() >= std::numeric_limits<uint32_t>::max()) ctx.fail("file larger than 4 GiB");
     const bool binary = file.size() >= 4 && readU32(file.data()) == kGlbMagic;
-    std::vector<uint8_t> glb;
-    if (binary) glb = repackGlb(ctx, file);
-
-    const std::string_view json = binary ? std::string_view(reinterpret_cast<const char*>(&glb[20]), readU32(&glb[12]))
-                                         : std::string_view(reinterpret_cast<const char*>(file.data()), file.size());
+    GlbChunks chunks;
+    if (binary) chunks = readGlb(ctx, file);
+    std::string_view json = binary ? chunks.json : std::string_view(reinterpret_cast<const char*>(file.data()), file.size());
     if (jsonDepth(json, kMaxJsonDepth) > kMaxJsonDepth)
         ctx.fail("invalid glTF: JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
     checkGltfJson(ctx, json);
 
     ParsedFile parsed;
+    // What tinygltf would refuse in a valid file is taken out of the JSON first.
+    const std::optional<std::string> rewritten = detachDracoIndices(json, parsed.dracoIndices);
+    if (rewritten) json = *rewritten;
+    std::vector<uint8_t> glb;
+    if (binary) glb = canonicalGlb(ctx, json, chunks.bin);
     FsState fs;
     std::error_code ec;
     const std::filesystem::path folder = std::filesystem::absolute(path, ec).lexically_normal().parent_path();
@@ -296,8 +307,7 @@ ParsedFile parseGltf(const LoadContext& ctx, std::span<const uint8_t> file, cons
     std::string warn;
     const bool ok =
         binary ? loader.LoadBinaryFromMemory(&parsed.model, &err, &warn, glb.data(), unsigned(glb.size()), fs.base)
-               : loader.LoadASCIIFromString(&parsed.model, &err, &warn, reinterpret_cast<const char*>(file.data()),
-                                            unsigned(file.size()), fs.base);
+               : loader.LoadASCIIFromString(&parsed.model, &err, &warn, json.data(), unsigned(json.size()), fs.base);
     if (images.error) std::rethrow_exception(images.error);
     if (!fs.problem.empty()) ctx.fail(fs.problem);
     if (!ok) ctx.fail("invalid glTF: " + oneLine(err, fs.base));

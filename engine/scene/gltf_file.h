@@ -7,9 +7,12 @@
 //  - receives URI images through its own image-loader callback, which checks the declared size with
 //    stbi_info_from_memory and keeps the encoded bytes; ImageTable decodes only the images that
 //    materials use. Images stored in bufferViews are not touched here (tinygltf does not
-//    range-check those bufferViews); ImageTable checks the view first.
+//    range-check those bufferViews); ImageTable checks the view first;
+//  - takes out of the JSON what tinygltf would refuse in a valid file (a Draco primitive's indices
+//    accessor has no bufferView) and keeps it in ParsedFile.
 
 #include "scene/gltf_context.h"
+#include "scene/gltf_draco.h"
 #include "scene/gltf_images.h"
 
 #include <tiny_gltf.h>
@@ -25,6 +28,7 @@ namespace candela::scene::gltf {
 struct ParsedFile {
     tinygltf::Model model;
     std::map<int, std::vector<uint8_t>> uriImages;  // glTF image index → encoded bytes, for URI images
+    DracoIndices dracoIndices;  // Draco primitives' indices accessors, kept from tinygltf (see gltf_draco.h)
 };
 
 // Reads the whole file at `path` (failing via ctx when it is missing, a directory, empty or 4 GiB

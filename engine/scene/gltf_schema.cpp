@@ -176,6 +176,15 @@ void checkDocument(const Checker& c, const Json& root) {
             if (attributes == prim.end()) c.fail(pp + ".attributes", "an object", Json());
             c.check(*attributes, pp + ".attributes", Kind::Object);
             for (auto it = attributes->begin(); it != attributes->end(); ++it) c.check(it.value(), pp + ".attributes." + it.key(), Kind::Index);
+            if (const Json* ext = c.child(prim, pp, "extensions", {}))
+                if (const Json* draco = c.child(*ext, pp + ".extensions", "KHR_draco_mesh_compression",
+                                                {{"bufferView", Kind::Index}, {"attributes", Kind::Object}})) {
+                    const std::string dp = pp + ".extensions.KHR_draco_mesh_compression";
+                    if (!draco->contains("bufferView")) c.fail(dp + ".bufferView", "an index (an integer >= 0)", Json());
+                    if (!draco->contains("attributes")) c.fail(dp + ".attributes", "an object", Json());
+                    const Json& ids = draco->at("attributes");
+                    for (auto it = ids.begin(); it != ids.end(); ++it) c.check(it.value(), dp + ".attributes." + it.key(), Kind::Index);
+                }
         }
     });
     c.array(root, "nodes", [&](const Json& n, const std::string& p) {

@@ -11,6 +11,7 @@
 #include "run_candela.h"
 
 #include "environment_test_util.h"
+#include "draco_test_util.h"
 #include "gltf_test_util.h"
 
 #include <stb_image.h>
@@ -686,6 +687,30 @@ std::vector<Row> catalogue() {
     error("instancing", "MissingAccessor", instanced([](GltfBuilder& b) {
         b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["ROTATION"] = 40;
     }), "EXT_mesh_gpu_instancing ROTATION: accessor 40 does not exist");
+    // -- KHR_draco_mesh_compression (a quad encoded by Draco's encoder; tests/unit/draco_test_util.h).
+    auto draco = [](std::function<void(Bytes&)> stream, std::function<void(GltfBuilder&)> edit = {}) {
+        return gltfOf([stream, edit] {
+            const DracoQuad quad;
+            Bytes bytes = quad.encode();
+            if (stream) stream(bytes);
+            GltfBuilder b = quad.compressed(bytes);
+            if (edit) edit(b);
+            return b;
+        });
+    };
+    loads("draco", "Quad", draco({}));
+    error("draco", "TruncatedStream", draco([](Bytes& s) { s.resize(s.size() / 2); }),
+          "KHR_draco_mesh_compression: Draco decoding failed");
+    error("draco", "NotADracoStream", draco([](Bytes& s) { std::fill(s.begin(), s.end(), uint8_t('x')); }),
+          "KHR_draco_mesh_compression: not a Draco stream");
+    error("draco", "AttributeIdNotInStream", draco({}, [](GltfBuilder& b) {
+        b.doc["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]["attributes"]["NORMAL"] = 9;
+    }), "attribute NORMAL: the Draco mesh has no attribute 9");
+    error("draco", "AccessorCountDiffers", draco({}, [](GltfBuilder& b) { b.doc["accessors"][0]["count"] = 5; }),
+          "attribute POSITION: the accessor counts 5, the Draco mesh has 4 vertices");
+    error("draco", "BufferViewOutsideTheBuffer", draco({}, [](GltfBuilder& b) {
+        b.doc["bufferViews"][0]["byteLength"] = 1 << 20;
+    }), "KHR_draco_mesh_compression: its bufferView lies outside the buffer");
     warning("animation", "PointerPath", animatedTriangle({0, 1}, move, "VEC3", 3, [](Json& j) {
         j["animations"][0]["channels"][0]["target"]["path"] = "pointer";
     }), "animation 0 channel 0: target path 'pointer' is not supported (ignored)", true);

@@ -10,6 +10,7 @@
 //    Y and extra channels.
 // Seeds are generated rather than committed so that they follow the writers the tests use.
 #include "environment_test_util.h"
+#include "draco_test_util.h"
 #include "gltf_test_util.h"
 
 #include "scene/environment.h"
@@ -139,6 +140,7 @@ std::vector<std::pair<std::string, GltfBuilder>> ownModels(const Bytes& png) {
                         {{"sampler", 2}, {"target", {{"node", morphOnly}, {"path", "scale"}}}},
                         {{"sampler", 3}, {"target", {{"node", morphOnly}, {"path", "weights"}}}}}}}});
     out.emplace_back("animated_skinned_morphed", animated);
+    out.emplace_back("draco_quad", DracoQuad().compressed());  // KHR_draco_mesh_compression
     return out;
 }
 
