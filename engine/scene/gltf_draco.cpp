@@ -241,12 +241,10 @@ void decodePrimitive(const LoadContext& ctx, tinygltf::Model& model, tinygltf::P
 
 }  // namespace
 
-std::optional<std::string> detachDracoIndices(std::string_view json, DracoIndices& indices) {
-    if (json.find(kExtension) == std::string_view::npos) return std::nullopt;
-    nlohmann::json doc = nlohmann::json::parse(json.begin(), json.end());
+bool detachDracoIndices(nlohmann::json& doc, DracoIndices& indices) {
     bool changed = false;
-    auto meshes = doc.find("meshes");
-    if (meshes == doc.end()) return std::nullopt;
+    const auto meshes = doc.find("meshes");
+    if (meshes == doc.end()) return false;
     for (size_t m = 0; m < meshes->size(); ++m) {
         nlohmann::json& primitives = (*meshes)[m]["primitives"];
         for (size_t p = 0; p < primitives.size(); ++p) {
@@ -260,8 +258,7 @@ std::optional<std::string> detachDracoIndices(std::string_view json, DracoIndice
             changed = true;
         }
     }
-    if (!changed) return std::nullopt;
-    return doc.dump();
+    return changed;
 }
 
 size_t decodeDracoPrimitives(const LoadContext& ctx, tinygltf::Model& model, const DracoIndices& indices) {

@@ -5,11 +5,10 @@
 
 #include "scene/gltf_context.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <cstddef>
 #include <map>
-#include <optional>
-#include <string>
-#include <string_view>
 #include <utility>
 
 namespace tinygltf {
@@ -22,11 +21,10 @@ namespace candela::scene::gltf {
 using DracoIndices = std::map<std::pair<size_t, size_t>, int>;
 
 // tinygltf (Debian's, built without Draco) refuses a primitive whose indices accessor has no
-// bufferView, which is how a Draco primitive's indices are written. Returns the document `json`
-// with "indices" taken out of every primitive that has a KHR_draco_mesh_compression extension,
-// recording them in `indices`; nullopt when no primitive has one (use `json` as it is).
-// Precondition: `json` passed checkGltfJson.
-std::optional<std::string> detachDracoIndices(std::string_view json, DracoIndices& indices);
+// bufferView, which is how a Draco primitive's indices are written. Takes "indices" out of every
+// primitive of the document `doc` that has a KHR_draco_mesh_compression extension, recording them
+// in `indices`. Returns whether `doc` changed. Precondition: `doc` passed checkGltfJson.
+bool detachDracoIndices(nlohmann::json& doc, DracoIndices& indices);
 
 // For every primitive with a KHR_draco_mesh_compression extension: decodes the extension's
 // bufferView as a Draco triangle mesh, appends one buffer to `model` holding the decoded indices

@@ -2,6 +2,7 @@
 
 #include "core/check.h"
 #include "scene/gltf_draco.h"
+#include "scene/gltf_meshopt.h"
 #include "scene/gltf_schema.h"
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <cerrno>
 #include <cstring>
 #include <exception>
+#include <nlohmann/json.hpp>
 #include <fstream>
 #include <limits>
 #include <optional>
@@ -289,8 +291,17 @@ ParsedFile parseGltf(const LoadContext& ctx, std::span<const uint8_t> file, cons
 
     ParsedFile parsed;
     // What tinygltf would refuse in a valid file is taken out of the JSON first.
-    const std::optional<std::string> rewritten = detachDracoIndices(json, parsed.dracoIndices);
-    if (rewritten) json = *rewritten;
+    std::string rewritten;
+    if (json.find("KHR_draco_mesh_compression") != std::string_view::npos ||
+        json.find("EXT_meshopt_compression") != std::string_view::npos) {
+        nlohmann::json doc = nlohmann::json::parse(json.begin(), json.end());
+        const bool draco = detachDracoIndices(doc, parsed.dracoIndices);
+        const bool meshopt = emptyMeshoptFallbackBuffers(doc, binary);
+        if (draco || meshopt) {
+            rewritten = doc.dump();
+            json = rewritten;
+        }
+    }
     std::vector<uint8_t> glb;
     if (binary) glb = canonicalGlb(ctx, json, chunks.bin);
     FsState fs;

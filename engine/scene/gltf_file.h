@@ -8,8 +8,9 @@
 //    stbi_info_from_memory and keeps the encoded bytes; ImageTable decodes only the images that
 //    materials use. Images stored in bufferViews are not touched here (tinygltf does not
 //    range-check those bufferViews); ImageTable checks the view first;
-//  - takes out of the JSON what tinygltf would refuse in a valid file (a Draco primitive's indices
-//    accessor has no bufferView) and keeps it in ParsedFile.
+//  - takes out of the JSON what tinygltf would refuse in a valid file: a Draco primitive's indices
+//    accessor has no bufferView (kept in ParsedFile), an EXT_meshopt_compression placeholder
+//    buffer has no URI (replaced by an empty one).
 
 #include "scene/gltf_context.h"
 #include "scene/gltf_draco.h"

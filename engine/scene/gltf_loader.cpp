@@ -3,6 +3,7 @@
 #include "core/check.h"
 #include "scene/gltf_animations.h"
 #include "scene/gltf_draco.h"
+#include "scene/gltf_meshopt.h"
 #include "scene/gltf_file.h"
 #include "scene/gltf_images.h"
 #include "scene/gltf_materials.h"
@@ -60,9 +61,10 @@ std::string label(const char* kind, int index, const std::string& name) {
 
 namespace {
 
-constexpr std::array<std::string_view, 7> kSupportedExtensions = {
+constexpr std::array<std::string_view, 8> kSupportedExtensions = {
     "KHR_materials_emissive_strength", "KHR_texture_transform", "KHR_materials_unlit",
-    "KHR_lights_punctual", "KHR_mesh_quantization", "EXT_mesh_gpu_instancing", "KHR_draco_mesh_compression"};
+    "KHR_lights_punctual", "KHR_mesh_quantization", "EXT_mesh_gpu_instancing", "KHR_draco_mesh_compression",
+    "EXT_meshopt_compression"};
 
 bool supported(const std::string& extension) {
     return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), extension) != kSupportedExtensions.end();
@@ -84,6 +86,7 @@ void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, cons
     gltf::ParsedFile parsed = gltf::parseGltf(ctx, bytes, path, options.maxImageDimension);
     tinygltf::Model& model = parsed.model;
     checkAsset(ctx, model);
+    gltf::decodeMeshoptBufferViews(ctx, model);  // before anything reads a bufferView
     gltf::decodeDracoPrimitives(ctx, model, parsed.dracoIndices);  // before anything reads a mesh
     gltf::loadSamplers(ctx, model, scene);
     gltf::ImageTable images(ctx, model, std::move(parsed.uriImages), options, scene);

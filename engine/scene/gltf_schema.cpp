@@ -138,10 +138,16 @@ void checkDocument(const Checker& c, const Json& root) {
     });
     c.array(root, "buffers", [&](const Json& b, const std::string& p) {
         c.properties(b, p, {{"byteLength", Kind::Count}, {"uri", Kind::String}});
+        if (const Json* ext = c.child(b, p, "extensions", {}))
+            c.child(*ext, p + ".extensions", "EXT_meshopt_compression", {{"fallback", Kind::Bool}});
     });
     c.array(root, "bufferViews", [&](const Json& v, const std::string& p) {
         c.properties(v, p, {{"buffer", Kind::Index}, {"byteOffset", Kind::Count}, {"byteLength", Kind::Count},
                             {"byteStride", Kind::Count}, {"target", Kind::Integer}});
+        if (const Json* ext = c.child(v, p, "extensions", {}))
+            c.child(*ext, p + ".extensions", "EXT_meshopt_compression",
+                    {{"buffer", Kind::Index}, {"byteOffset", Kind::Count}, {"byteLength", Kind::Count}, {"byteStride", Kind::Count},
+                     {"count", Kind::Count}, {"mode", Kind::String}, {"filter", Kind::String}});
     });
     c.array(root, "cameras", [&](const Json& cam, const std::string& p) {
         c.properties(cam, p, {{"type", Kind::String}});

@@ -13,6 +13,7 @@
 #include "environment_test_util.h"
 #include "draco_test_util.h"
 #include "gltf_test_util.h"
+#include "meshopt_test_util.h"
 
 #include <stb_image.h>
 #include <zlib.h>
@@ -711,6 +712,30 @@ std::vector<Row> catalogue() {
     error("draco", "BufferViewOutsideTheBuffer", draco({}, [](GltfBuilder& b) {
         b.doc["bufferViews"][0]["byteLength"] = 1 << 20;
     }), "KHR_draco_mesh_compression: its bufferView lies outside the buffer");
+    // -- EXT_meshopt_compression (a quad whose views are compressed by meshoptimizer's encoders;
+    // tests/unit/meshopt_test_util.h). Views: 0 POSITION, 1 NORMAL (octahedral), 2 TEXCOORD_0, 3 indices.
+    auto meshopt = [](std::function<void(Json&)> edit) {
+        return gltfOf([edit] {
+            GltfBuilder b = meshoptQuad(true);
+            if (edit) edit(b.doc["bufferViews"]);
+            return b;
+        });
+    };
+    auto codec = [](int view) { return [view](Json& views) -> Json& { return views[view]["extensions"]["EXT_meshopt_compression"]; }; };
+    loads("meshopt", "Quad", meshopt({}));
+    error("meshopt", "StreamTruncated", meshopt([=](Json& v) { codec(0)(v)["byteLength"] = 8; }),
+          "bufferView 0 EXT_meshopt_compression: the ATTRIBUTES data does not decode");
+    error("meshopt", "IndicesTruncated", meshopt([=](Json& v) { codec(3)(v)["byteLength"] = 1; }),
+          "bufferView 3 EXT_meshopt_compression: the TRIANGLES data does not decode");
+    error("meshopt", "UnknownMode", meshopt([=](Json& v) { codec(0)(v)["mode"] = "VERTICES"; }), "unknown mode 'VERTICES'");
+    error("meshopt", "QuaternionOfStride4", meshopt([=](Json& v) { codec(1)(v)["filter"] = "QUATERNION"; }),
+          "QUATERNION needs a byteStride of 8, not 4");
+    error("meshopt", "ClaimsMoreThanTheCodecProduces", meshopt([=](Json& v) {
+        codec(0)(v)["count"] = 100000000;
+        v[0]["byteLength"] = 1200000000;
+    }), "compressed bytes cannot hold the 1200000000 bytes it claims");
+    error("meshopt", "SourceOutsideTheBuffer", meshopt([=](Json& v) { codec(2)(v)["byteOffset"] = 1 << 20; }),
+          "lies outside buffer 0");
     warning("animation", "PointerPath", animatedTriangle({0, 1}, move, "VEC3", 3, [](Json& j) {
         j["animations"][0]["channels"][0]["target"]["path"] = "pointer";
     }), "animation 0 channel 0: target path 'pointer' is not supported (ignored)", true);

@@ -12,6 +12,7 @@
 #include "environment_test_util.h"
 #include "draco_test_util.h"
 #include "gltf_test_util.h"
+#include "meshopt_test_util.h"
 
 #include "scene/environment.h"
 
@@ -141,6 +142,7 @@ std::vector<std::pair<std::string, GltfBuilder>> ownModels(const Bytes& png) {
                         {{"sampler", 3}, {"target", {{"node", morphOnly}, {"path", "weights"}}}}}}}});
     out.emplace_back("animated_skinned_morphed", animated);
     out.emplace_back("draco_quad", DracoQuad().compressed());  // KHR_draco_mesh_compression
+    out.emplace_back("meshopt_quad", meshoptQuad(true));      // EXT_meshopt_compression
     return out;
 }
 

@@ -146,6 +146,7 @@ inline Bytes smallPng(std::array<uint8_t, 4> first = {255, 0, 0, 255}) {
 struct GltfBuilder {
     Json doc = Json{{"asset", {{"version", "2.0"}}}};
     Bytes bin;
+    std::vector<Json> moreBuffers;  // buffers 1, 2, ... as written (bin is buffer 0)
 
     // Appends `size` bytes (4-byte aligned) as a new bufferView; returns its index.
     int addView(const void* data, size_t size, int stride = 0) {
@@ -206,7 +207,8 @@ struct GltfBuilder {
         Json d = doc;
         Json buffer = {{"byteLength", bin.size()}};
         if (!uri.empty()) buffer["uri"] = uri;
-        if (!bin.empty()) d["buffers"] = Json::array({buffer});
+        if (!bin.empty() || !moreBuffers.empty()) d["buffers"] = Json::array({buffer});
+        for (const Json& more : moreBuffers) d["buffers"].push_back(more);
         return d;
     }
     // NAME.gltf + NAME.bin in `dir`.

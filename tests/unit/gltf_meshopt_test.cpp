@@ -1,0 +1,159 @@
+// EXT_meshopt_compression: compressed views (every mode and filter) load exactly like their
+// plain twins, in .glb and .gltf, with placeholder buffers that have no URI; malformed extension
+// objects and streams fail with one line naming the bufferView.
+#include "meshopt_test_util.h"
+
+#include "scene/scene_pose.h"
+
+namespace candela::scene::test {
+namespace {
+
+void expectSameVertices(const Scene& a, const Scene& b) {
+    ASSERT_EQ(a.draws.size(), b.draws.size());
+    ASSERT_EQ(a.indices, b.indices);
+    ASSERT_EQ(a.vertices.size(), b.vertices.size());
+    for (size_t i = 0; i < a.vertices.size(); ++i) {
+        EXPECT_EQ(a.vertices[i].position, b.vertices[i].position) << "vertex " << i;
+        EXPECT_EQ(a.vertices[i].normal, b.vertices[i].normal) << "vertex " << i;
+        EXPECT_EQ(a.vertices[i].uv0, b.vertices[i].uv0) << "vertex " << i;
+    }
+}
+
+TEST(GltfMeshopt, QuadLoadsExactlyLikeItsPlainTwin) {
+    TempDir dir;
+    const Scene plain = loadGltf(meshoptQuad(false).writeGlb(dir.path(), "plain"));
+    const Scene glb = loadGltf(meshoptQuad(true).writeGlb(dir.path(), "meshopt"));
+    const Scene gltf = loadGltf(meshoptQuad(true).writeGltf(dir.path(), "meshopt"));
+    EXPECT_TRUE(glb.warnings.empty()) << glb.warnings.front();
+    EXPECT_TRUE(gltf.warnings.empty()) << gltf.warnings.front();
+    ASSERT_EQ(plain.indices.size(), 6u);
+    EXPECT_NEAR(plain.vertices[1].normal.x, 0.6f, 0.02f);  // the octahedral filter decoded
+    expectSameVertices(plain, glb);
+    expectSameVertices(plain, gltf);
+}
+
+TEST(GltfMeshopt, IndexSequenceForAStrip) {
+    TempDir dir;
+    auto make = [](bool compress) {
+        GltfBuilder b;
+        const std::vector<float> positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+        const int pos = b.addAccessor(addMeshoptView(b, meshoptAttributes(positions, 3), compress), kFloat, 4, "VEC3");
+        const int idx = b.addAccessor(addMeshoptView(b, meshoptIndices({0, 1, 2, 3}, "INDICES"), compress, false),
+                                      kUnsignedShort, 4, "SCALAR");
+        b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}}, idx, -1, kStrip)}})});
+        return b;
+    };
+    const Scene plain = loadGltf(make(false).writeGlb(dir.path(), "plain"));
+    const Scene compressed = loadGltf(make(true).writeGlb(dir.path(), "meshopt"));
+    EXPECT_EQ(plain.indices.size(), 6u);
+    expectSameVertices(plain, compressed);
+}
+
+// Animation keys: times plain codec, rotations through the QUATERNION filter (normalized shorts),
+// translations through the EXPONENTIAL filter: the pose is the same at every time.
+TEST(GltfMeshopt, AnimationKeysDecodeToThePlainPose) {
+    TempDir dir;
+    auto make = [](bool compress) {
+        GltfBuilder b;
+        b.addTriangle();
+        const std::vector<float> times = {0, 0.5f, 1.0f};
+        const std::vector<float> rotations = {0, 0, 0, 1, 0, 0.3826834f, 0, 0.9238795f, 0, 0.7071068f, 0, 0.7071068f};
+        const std::vector<float> moves = {0, 0, 0, 1.5f, -2.25f, 0.125f, 3, 1, -1};
+        const int t = b.addAccessor(addMeshoptView(b, meshoptAttributes(times, 1), compress, false), kFloat, 3, "SCALAR");
+        b.doc["accessors"][t]["min"] = {0};
+        b.doc["accessors"][t]["max"] = {1};
+        const int r = b.addAccessor(addMeshoptView(b, meshoptQuaternion(rotations), compress, false), kShort, 3, "VEC4", true);
+        const int m = b.addAccessor(addMeshoptView(b, meshoptExponential(moves, 3), compress, false), kFloat, 3, "VEC3");
+        b.doc["animations"] = Json::array({{{"samplers", {{{"input", t}, {"output", r}}, {{"input", t}, {"output", m}}}},
+                                            {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "rotation"}}}},
+                                                          {{"sampler", 1}, {"target", {{"node", 0}, {"path", "translation"}}}}}}}});
+        b.doc["extensionsUsed"] = compress ? Json{"EXT_meshopt_compression", "KHR_mesh_quantization"} : Json{"KHR_mesh_quantization"};
+        return b;
+    };
+    const Scene plain = loadGltf(make(false).writeGlb(dir.path(), "plain"));
+    const Scene compressed = loadGltf(make(true).writeGlb(dir.path(), "meshopt"));
+    ASSERT_EQ(compressed.animations.size(), 1u);
+    ScenePose a(plain, selectAnimations(plain, {}));
+    ScenePose b(compressed, selectAnimations(compressed, {}));
+    for (double time : {0.0, 0.3, 0.5, 0.8, 1.0}) {
+        a.evaluate(time);
+        b.evaluate(time);
+        EXPECT_EQ(a.bounds().min, b.bounds().min) << "t " << time;
+        EXPECT_EQ(a.bounds().max, b.bounds().max) << "t " << time;
+    }
+    b.evaluate(0.999);  // (1.0 wraps to 0: animations loop)
+    EXPECT_NEAR(b.bounds().min.x, 2.997f, 2e-3f);  // the exponential filter kept the translation
+    EXPECT_NEAR(b.bounds().min.z, -1.998f, 5e-3f);  // translation z -0.998 and the quarter turn: corner x 1 → z -1
+}
+
+// ---- malformed ------------------------------------------------------------------------------------
+
+struct MeshoptCase {
+    std::string name;
+    std::function<void(GltfBuilder&)> edit;  // on meshoptQuad(true); views 0 POSITION .. 3 indices
+    std::string fragment;
+};
+
+void PrintTo(const MeshoptCase& c, std::ostream* os) { *os << c.name; }
+
+class MeshoptBadInput : public testing::TestWithParam<MeshoptCase> {};
+
+TEST_P(MeshoptBadInput, IsOneLineErrorNamingTheView) {
+    TempDir dir;
+    GltfBuilder b = meshoptQuad(true);
+    GetParam().edit(b);
+    const fs::path file = b.writeGlb(dir.path());
+    try {
+        loadGltf(file);
+        FAIL() << "loaded";
+    } catch (const UserError& e) {
+        const std::string message = e.what();
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        EXPECT_EQ(message.rfind(file.string() + ": ", 0), 0u) << message;
+        EXPECT_NE(message.find(GetParam().fragment), std::string::npos) << message << "\nexpected: " << GetParam().fragment;
+    }
+}
+
+Json& meshoptOf(GltfBuilder& b, int view) { return b.doc["bufferViews"][view]["extensions"]["EXT_meshopt_compression"]; }
+
+std::vector<MeshoptCase> meshoptCases() {
+    return {
+        {"UnknownMode", [](GltfBuilder& b) { meshoptOf(b, 0)["mode"] = "VERTICES"; }, "bufferView 0 EXT_meshopt_compression: unknown mode 'VERTICES'"},
+        {"UnknownFilter", [](GltfBuilder& b) { meshoptOf(b, 1)["filter"] = "POLAR"; }, "bufferView 1 EXT_meshopt_compression: unknown filter 'POLAR'"},
+        {"StrideDiffersFromTheView", [](GltfBuilder& b) { b.doc["bufferViews"][0]["byteStride"] = 16; },
+         "byteStride 12 differs from the bufferView's 16"},
+        {"LengthNotCountTimesStride", [](GltfBuilder& b) { meshoptOf(b, 0)["count"] = 5; },
+         "the bufferView's byteLength 48 is not count 5 × byteStride 12"},
+        {"AttributeStrideNotMultipleOf4", [](GltfBuilder& b) {
+             meshoptOf(b, 0)["byteStride"] = 6;
+             meshoptOf(b, 0)["count"] = 8;
+             b.doc["bufferViews"][0].erase("byteStride");
+         }, "ATTRIBUTES need a byteStride divisible by 4 and at most 256, not 6"},
+        {"TrianglesWithAFilter", [](GltfBuilder& b) { meshoptOf(b, 3)["filter"] = "OCTAHEDRAL"; }, "TRIANGLES take no filter ('OCTAHEDRAL')"},
+        {"TrianglesNotMultipleOf3", [](GltfBuilder& b) {
+             meshoptOf(b, 3)["count"] = 4;
+             meshoptOf(b, 3)["byteStride"] = 3;
+             meshoptOf(b, 3)["mode"] = "INDICES";
+         }, "INDICES need a byteStride of 2 or 4, not 3"},
+        {"QuaternionOfStride4", [](GltfBuilder& b) { meshoptOf(b, 1)["filter"] = "QUATERNION"; }, "QUATERNION needs a byteStride of 8, not 4"},
+        {"SourceOutsideTheBuffer", [](GltfBuilder& b) { meshoptOf(b, 0)["byteOffset"] = 100000; }, "lies outside buffer 0"},
+        {"SourceBufferMissing", [](GltfBuilder& b) { meshoptOf(b, 0)["buffer"] = 7; }, "buffer 7 does not exist"},
+        {"StreamDoesNotDecode", [](GltfBuilder& b) { meshoptOf(b, 0)["byteLength"] = 8; }, "the ATTRIBUTES data does not decode"},
+        {"IndicesDoNotDecode", [](GltfBuilder& b) { meshoptOf(b, 3)["byteLength"] = 1; }, "the TRIANGLES data does not decode"},
+        {"ClaimsMoreThanTheCodecProduces", [](GltfBuilder& b) {
+             meshoptOf(b, 0)["count"] = 100000000;
+             b.doc["bufferViews"][0]["byteLength"] = 1200000000;
+         }, "compressed bytes cannot hold the 1200000000 bytes it claims"},
+        {"ByteLengthMissing", [](GltfBuilder& b) { meshoptOf(b, 0).erase("byteLength"); }, "byteLength is missing"},
+        {"ModeNotAString", [](GltfBuilder& b) { meshoptOf(b, 0)["mode"] = 0; },
+         "bufferViews[0].extensions.EXT_meshopt_compression.mode: expected a string"},
+        {"PlainViewOnTheFallbackBuffer", [](GltfBuilder& b) { b.doc["bufferViews"][0].erase("extensions"); },
+         "bufferView 0 [0, +48) lies outside buffer 1 (3 bytes)"},
+    };
+}
+
+INSTANTIATE_TEST_SUITE_P(Rows, MeshoptBadInput, testing::ValuesIn(meshoptCases()),
+                         [](const testing::TestParamInfo<MeshoptCase>& row) { return row.param.name; });
+
+}  // namespace
+}  // namespace candela::scene::test
