@@ -11,7 +11,7 @@ packages=(
   libgtest-dev
   libglfw3-dev libimgui-dev glslang-dev xvfb xauth
   clang libclang-rt-14-dev
-  libdraco-dev libmeshoptimizer-dev
+  libdraco-dev libmeshoptimizer-dev gltfpack
 )
 
 missing=()

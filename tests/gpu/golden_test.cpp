@@ -12,6 +12,7 @@
 // looked at into tests/golden/.
 
 #include "gpu_test.h"
+#include "temp_dir.h"
 
 #include "io/image_file.h"
 #include "renderer.h"
@@ -24,6 +25,7 @@
 #include <stb_image.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -181,12 +183,14 @@ TEST_P(GoldenTest, MatchesApprovedImage) {
                       << kPixelThreshold << " levels; max difference " << maxDifference << "; see " << outDir;
 }
 
-// KHR_draco_mesh_compression: the Draco CesiumMilkTruck renders like the plain one. Its positions,
-// normals and texture coordinates are quantized, which moves silhouettes and texture lookups by a
-// fraction of a pixel: measured, 1.05% of the pixels differ by more than 3 levels (the golden
-// metric's threshold), on edges and the textured logo. Metric here: at most 2% of the pixels
-// differ by more than 3 levels; a decoding error (a wrong attribute, order or index) changes far
-// more.
+// Compressed files against their plain versions. Compression quantizes positions, normals and
+// texture coordinates, which moves silhouettes, shading and texture lookups by a fraction of a
+// pixel or level; a decoding error (a wrong attribute, filter, order or index) changes much of the
+// image. Metric: at most 2% of the pixels differ by more than 3 levels (the golden threshold).
+constexpr double kCompressedMaxDifferingShare = 0.02;
+
+// KHR_draco_mesh_compression: the Draco CesiumMilkTruck (measured: 1.05% of the pixels differ, on
+// edges and the textured logo).
 TEST_F(GpuTest, DracoRendersLikeThePlainFile) {
     const GoldenCase plain{"cesium_milk_truck", "CesiumMilkTruck/glTF-Binary/CesiumMilkTruck.glb", {30.0f, 75.0f, 0.0f}};
     GoldenCase draco = plain;
@@ -195,8 +199,31 @@ TEST_F(GpuTest, DracoRendersLikeThePlainFile) {
     if (!a || !b) GTEST_SKIP() << "../shared/assets not present";
     const auto [differing, maxDifference] = compare(a->data(), b->data());
     const double share = double(differing) / (kWidth * kHeight);
-    EXPECT_LE(share, 0.02) << differing << " pixels differ by more than " << kPixelThreshold << " levels (max "
+    EXPECT_LE(share, kCompressedMaxDifferingShare) << differing << " pixels differ by more than " << kPixelThreshold << " levels (max "
                            << maxDifference << ")";
+}
+
+// EXT_meshopt_compression: DamagedHelmet through gltfpack -cc (Debian's gltfpack: positions 14-bit,
+// texture coordinates 12-bit, normals 8-bit octahedral, every view compressed; measured: 0.23% of
+// the pixels differ, max 70 levels on a few edge pixels).
+TEST_F(GpuTest, MeshoptRendersLikeThePlainFile) {
+    const std::filesystem::path models = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models";
+    if (!std::filesystem::exists(models / "DamagedHelmet/glTF-Binary/DamagedHelmet.glb")) GTEST_SKIP() << "../shared/assets not present";
+    TempDir dir;
+    const std::filesystem::path packed = dir.path() / "helmet.glb";
+    const std::string command = "gltfpack -cc -i '" + (models / "DamagedHelmet/glTF-Binary/DamagedHelmet.glb").string() +
+                                "' -o '" + packed.string() + "' >/dev/null 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command << " (tools/install-deps.sh installs gltfpack)";
+    const GoldenCase plain{"damaged_helmet", "DamagedHelmet/glTF-Binary/DamagedHelmet.glb", {-30.0f, 80.0f, 0.0f}};
+    const std::string packedPath = packed.string();
+    GoldenCase meshopt = plain;
+    meshopt.model = packedPath.c_str();  // absolute: replaces the models folder
+    const auto a = render(context(), plain), b = render(context(), meshopt);
+    ASSERT_TRUE(a && b);
+    const auto [differing, maxDifference] = compare(a->data(), b->data());
+    const double share = double(differing) / (kWidth * kHeight);
+    EXPECT_LE(share, kCompressedMaxDifferingShare) << differing << " pixels differ by more than " << kPixelThreshold
+                                                   << " levels (max " << maxDifference << ")";
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, GoldenTest, ::testing::ValuesIn(kCases),

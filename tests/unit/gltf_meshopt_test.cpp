@@ -5,6 +5,8 @@
 
 #include "scene/scene_pose.h"
 
+#include <cstdlib>
+
 namespace candela::scene::test {
 namespace {
 
@@ -84,6 +86,59 @@ TEST(GltfMeshopt, AnimationKeysDecodeToThePlainPose) {
     b.evaluate(0.999);  // (1.0 wraps to 0: animations loop)
     EXPECT_NEAR(b.bounds().min.x, 2.997f, 2e-3f);  // the exponential filter kept the translation
     EXPECT_NEAR(b.bounds().min.z, -1.998f, 5e-3f);  // translation z -0.998 and the quarter turn: corner x 1 → z -1
+}
+
+// ---- files from the reference encoder -------------------------------------------------------------
+
+// `model` (under ../shared/assets/models) through gltfpack -cc (Debian's gltfpack, meshoptimizer
+// 0.18): every view compressed, positions and texture coordinates quantized, normals octahedral,
+// animation keys through the quaternion and exponential filters, placeholder buffer without a URI.
+fs::path gltfpacked(const TempDir& dir, const std::string& model) {
+    const fs::path out = dir.path() / "packed.glb";
+    const std::string command = "gltfpack -cc -i '" + (sharedModels() / model).string() + "' -o '" + out.string() + "' >/dev/null 2>&1";
+    EXPECT_EQ(std::system(command.c_str()), 0) << command << " (tools/install-deps.sh installs gltfpack)";
+    return out;
+}
+
+// The posed bounds of `a` and `b` agree within `tolerance` of the extent at each time.
+void expectSamePosedBounds(const Scene& a, const Scene& b, const std::vector<std::string>& animations, float tolerance) {
+    ScenePose pa(a, selectAnimations(a, animations)), pb(b, selectAnimations(b, animations));
+    for (double time : {0.0, 0.4, 1.1}) {
+        pa.evaluate(time);
+        pb.evaluate(time);
+        const Aabb ba = pa.bounds(), bb = pb.bounds();
+        const float extent = glm::length(ba.max - ba.min);
+        for (int axis = 0; axis < 3; ++axis) {
+            EXPECT_NEAR(ba.min[axis], bb.min[axis], tolerance * extent) << "t " << time << " axis " << axis;
+            EXPECT_NEAR(ba.max[axis], bb.max[axis], tolerance * extent) << "t " << time << " axis " << axis;
+        }
+    }
+}
+
+TEST(GltfMeshopt, GltfpackedFoxAnimatesLikeTheOriginal) {
+    REQUIRE_MODELS();
+    TempDir dir;
+    const Scene original = loadGltf(sharedModels() / "Fox/glTF-Binary/Fox.glb");
+    const Scene packed = loadGltf(gltfpacked(dir, "Fox/glTF-Binary/Fox.glb"));
+    EXPECT_TRUE(packed.warnings.empty()) << packed.warnings.front();
+    ASSERT_EQ(packed.animations.size(), original.animations.size());
+    for (size_t i = 0; i < original.animations.size(); ++i) EXPECT_EQ(packed.animations[i].name, original.animations[i].name);
+    EXPECT_EQ(packed.skins.size(), original.skins.size());
+    EXPECT_EQ(packed.indices.size(), original.indices.size());
+    // gltfpack resamples the animations at 30 Hz and quantizes rotations to 12 bits: the poses move
+    // by up to 0.4% of the fox's size (measured). A decoding error (a wrong filter, stride or key
+    // order) moves them by its whole size; the bound is 1%.
+    for (const char* animation : {"Survey", "Walk", "Run"}) expectSamePosedBounds(original, packed, {animation}, 1e-2f);
+}
+
+TEST(GltfMeshopt, GltfpackedDamagedHelmetMatchesTheOriginal) {
+    REQUIRE_MODELS();
+    TempDir dir;
+    const Scene original = loadGltf(sharedModels() / "DamagedHelmet/glTF-Binary/DamagedHelmet.glb");
+    const Scene packed = loadGltf(gltfpacked(dir, "DamagedHelmet/glTF-Binary/DamagedHelmet.glb"));
+    EXPECT_TRUE(packed.warnings.empty()) << packed.warnings.front();
+    EXPECT_EQ(packed.indices.size(), original.indices.size());
+    expectSamePosedBounds(original, packed, {}, 2e-3f);
 }
 
 // ---- malformed ------------------------------------------------------------------------------------
