@@ -75,6 +75,7 @@ int runBench(const RenderOptions& options) {
     out["height"] = settings.height;
     out["frames"] = options.frames;
     out["sceneLoadMs"] = loadMs;  // reading and decoding the file, CPU
+    out["geometryDecompressionMs"] = scene.decompression.milliseconds;  // part of it: Draco and meshopt
     out["calibration"] = {{"medianMs", calibration}, {"minMs", minimum(calibrationMs)}, {"gpuMedianMs", calibrationGpu}};
     out["frame"] = {{"medianMs", median(frameMs)},
                     {"minMs", minimum(frameMs)},
@@ -98,6 +99,9 @@ int runBench(const RenderOptions& options) {
         std::printf("%s at %ux%u on %s, %u frames (CPU wall time around submit+wait)\n", scene.source.c_str(),
                     settings.width, settings.height, context.report().name.c_str(), options.frames);
         std::printf("  scene load:  %.2f ms (reading and decoding the file)\n", loadMs);
+        if (const auto& d = scene.decompression; d.dracoPrimitives + d.meshoptViews > 0)
+            std::printf("  geometry decompression: %.2f ms (%zu Draco primitives, %zu meshopt bufferViews)\n",
+                        d.milliseconds, d.dracoPrimitives, d.meshoptViews);
         std::printf("  calibration: median %.2f ms, min %.2f ms (GPU %.2f ms)\n", calibration, minimum(calibrationMs),
                     calibrationGpu);
         std::printf("  frame:       median %.2f ms (%.2fx calibration), min %.2f ms (%.2fx)\n", median(frameMs),

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <new>
@@ -86,8 +87,11 @@ void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, cons
     gltf::ParsedFile parsed = gltf::parseGltf(ctx, bytes, path, options.maxImageDimension);
     tinygltf::Model& model = parsed.model;
     checkAsset(ctx, model);
-    gltf::decodeMeshoptBufferViews(ctx, model);  // before anything reads a bufferView
-    gltf::decodeDracoPrimitives(ctx, model, parsed.dracoIndices);  // before anything reads a mesh
+    const auto start = std::chrono::steady_clock::now();
+    scene.decompression.meshoptViews = gltf::decodeMeshoptBufferViews(ctx, model);  // before anything reads a view
+    scene.decompression.dracoPrimitives = gltf::decodeDracoPrimitives(ctx, model, parsed.dracoIndices);  // or a mesh
+    scene.decompression.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     gltf::loadSamplers(ctx, model, scene);
     gltf::ImageTable images(ctx, model, std::move(parsed.uriImages), options, scene);
     gltf::loadMaterials(ctx, model, images, scene);
