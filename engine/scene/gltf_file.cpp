@@ -5,12 +5,13 @@
 #include "scene/gltf_meshopt.h"
 #include "scene/gltf_schema.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <exception>
-#include <nlohmann/json.hpp>
 #include <fstream>
 #include <limits>
 #include <optional>
