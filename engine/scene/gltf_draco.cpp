@@ -212,7 +212,8 @@ void decodePrimitive(const LoadContext& ctx, tinygltf::Model& model, tinygltf::P
         if (!id.IsInt() || id.GetNumberAsInt() < 0) ctx.fail(where + ": the Draco attribute id is not an integer >= 0");
         const auto it = primitive.attributes.find(semantic);
         if (it == primitive.attributes.end()) ctx.fail(where + ": not among the primitive's attributes");
-        const tinygltf::Accessor& like = accessorOf(ctx, model, it->second, where);
+        // A copy: adding the decoded accessors below may reallocate model.accessors.
+        const tinygltf::Accessor like = accessorOf(ctx, model, it->second, where);
         const draco::PointAttribute* attribute = mesh->GetAttributeByUniqueId(uint32_t(id.GetNumberAsInt()));
         if (!attribute) ctx.fail(where + ": the Draco mesh has no attribute " + std::to_string(id.GetNumberAsInt()));
         if (like.count != points)
