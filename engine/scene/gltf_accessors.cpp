@@ -20,18 +20,6 @@ size_t maxUnbackedCount(const tinygltf::Model& model) {
     return std::max<size_t>(bytes, 65536);
 }
 
-size_t componentSize(int componentType) {
-    switch (componentType) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-        case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-        case TINYGLTF_COMPONENT_TYPE_INT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-        default: return 0;
-    }
-}
 
 int componentCount(int type) {
     switch (type) {
@@ -103,22 +91,6 @@ uint32_t indexValue(const uint8_t* p, int componentType) {
     }
 }
 
-bool isIndexType(int componentType) {
-    return componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-           componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
-           componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-}
-
-const tinygltf::Accessor& checkedAccessor(const LoadContext& ctx, const tinygltf::Model& model, int index,
-                                          const std::string& what) {
-    if (index < 0 || size_t(index) >= model.accessors.size())
-        ctx.fail(what + ": accessor " + std::to_string(index) + " does not exist");
-    const tinygltf::Accessor& accessor = model.accessors[size_t(index)];
-    if (componentSize(accessor.componentType) == 0)
-        ctx.fail(what + ": accessor " + std::to_string(index) + " has unsupported componentType " +
-                 std::to_string(accessor.componentType));
-    return accessor;
-}
 
 // Reads every element of an accessor with `element(const uint8_t*)`, then applies sparse values.
 template <typename T, typename Element>
@@ -181,6 +153,36 @@ std::vector<T> readElements(const LoadContext& ctx, const tinygltf::Model& model
 }
 
 }  // namespace
+
+size_t componentSize(int componentType) {
+    switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+        case TINYGLTF_COMPONENT_TYPE_INT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+        default: return 0;
+    }
+}
+
+bool isIndexType(int componentType) {
+    return componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+           componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+           componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+}
+
+const tinygltf::Accessor& checkedAccessor(const LoadContext& ctx, const tinygltf::Model& model, int index,
+                                          const std::string& what) {
+    if (index < 0 || size_t(index) >= model.accessors.size())
+        ctx.fail(what + ": accessor " + std::to_string(index) + " does not exist");
+    const tinygltf::Accessor& accessor = model.accessors[size_t(index)];
+    if (componentSize(accessor.componentType) == 0)
+        ctx.fail(what + ": accessor " + std::to_string(index) + " has unsupported componentType " +
+                 std::to_string(accessor.componentType));
+    return accessor;
+}
 
 std::span<const uint8_t> bufferViewBytes(const LoadContext& ctx, const tinygltf::Model& model, int view,
                                          const std::string& what) {

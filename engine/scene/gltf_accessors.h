@@ -15,9 +15,21 @@
 
 namespace tinygltf {
 class Model;
+struct Accessor;
 }
 
 namespace candela::scene::gltf {
+
+// Bytes of one component of glTF componentType `componentType`; 0 for an unknown type.
+size_t componentSize(int componentType);
+
+// True for the index component types: UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT.
+bool isIndexType(int componentType);
+
+// Accessor `index` once it exists and has a known componentType; else fails via ctx naming `what`.
+// The reference is into model.accessors: adding accessors invalidates it.
+const tinygltf::Accessor& checkedAccessor(const LoadContext& ctx, const tinygltf::Model& model, int index,
+                                          const std::string& what);
 
 // The bytes of bufferView `view` once it is known to lie inside its buffer. `what` names the
 // referrer in messages ("image 2"). The span borrows the model's buffer.

@@ -1,33 +1,22 @@
 #include "scene/gltf_draco.h"
 
+#include "scene/gltf_accessors.h"
+
 #include <draco/compression/decode.h>
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <cmath>
 #include <cstring>
-#include <type_traits>
 #include <limits>
 #include <memory>
 #include <span>
+#include <type_traits>
 
 namespace candela::scene::gltf {
 namespace {
 
 constexpr const char* kExtension = "KHR_draco_mesh_compression";
-
-// Bytes of one component of glTF componentType `type`, 0 for an unknown type.
-size_t componentBytes(int type) {
-    switch (type) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-        case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-        default: return 0;
-    }
-}
 
 // `value` in [0, 1] (unsigned C) or [-1, 1] (signed C) as a normalized integer, rounded.
 template <typename C>
@@ -128,26 +117,14 @@ private:
     std::vector<uint8_t> mBytes;
 };
 
-const tinygltf::Accessor& accessorOf(const LoadContext& ctx, const tinygltf::Model& model, int index,
-                                     const std::string& what) {
-    if (index < 0 || size_t(index) >= model.accessors.size())
-        ctx.fail(what + ": accessor " + std::to_string(index) + " does not exist");
-    return model.accessors[size_t(index)];
-}
-
 // The compressed bytes the extension's bufferView names, range-checked.
 std::span<const uint8_t> compressedBytes(const LoadContext& ctx, const tinygltf::Model& model,
                                          const tinygltf::Value& extension, const std::string& what) {
     const tinygltf::Value& view = extension.Get("bufferView");
-    if (!view.IsInt() || view.GetNumberAsInt() < 0 || size_t(view.GetNumberAsInt()) >= model.bufferViews.size())
-        ctx.fail(what + ": bufferView is missing or out of range");
-    const tinygltf::BufferView& bv = model.bufferViews[size_t(view.GetNumberAsInt())];
-    if (bv.buffer < 0 || size_t(bv.buffer) >= model.buffers.size()) ctx.fail(what + ": its bufferView's buffer is out of range");
-    const std::vector<unsigned char>& data = model.buffers[size_t(bv.buffer)].data;
-    if (bv.byteOffset > data.size() || bv.byteLength > data.size() - bv.byteOffset)
-        ctx.fail(what + ": its bufferView lies outside the buffer");
-    if (bv.byteLength == 0) ctx.fail(what + ": its bufferView is empty");
-    return {data.data() + bv.byteOffset, bv.byteLength};
+    if (!view.IsInt()) ctx.fail(what + ": bufferView is missing");
+    const std::span<const uint8_t> bytes = bufferViewBytes(ctx, model, view.GetNumberAsInt(), what);
+    if (bytes.empty()) ctx.fail(what + ": its bufferView is empty");
+    return bytes;
 }
 
 std::unique_ptr<draco::Mesh> decodeMesh(const LoadContext& ctx, std::span<const uint8_t> bytes, const std::string& what) {
@@ -181,15 +158,13 @@ void decodePrimitive(const LoadContext& ctx, tinygltf::Model& model, tinygltf::P
     indexLike.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
     indexLike.type = TINYGLTF_TYPE_SCALAR;
     if (indicesAccessor >= 0) {
-        indexLike = accessorOf(ctx, model, indicesAccessor, what + " indices");
+        indexLike = checkedAccessor(ctx, model, indicesAccessor, what + " indices");
         indexLike.minValues.clear();
         indexLike.maxValues.clear();
     }
-    const size_t indexBytes = componentBytes(indexLike.componentType);
-    if (indexLike.type != TINYGLTF_TYPE_SCALAR ||
-        (indexBytes != 1 && indexBytes != 2 && indexLike.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) ||
-        indexLike.componentType == TINYGLTF_COMPONENT_TYPE_BYTE || indexLike.componentType == TINYGLTF_COMPONENT_TYPE_SHORT)
+    if (indexLike.type != TINYGLTF_TYPE_SCALAR || !isIndexType(indexLike.componentType))
         ctx.fail(what + ": the indices accessor is not an unsigned byte, short or int scalar");
+    const size_t indexBytes = componentSize(indexLike.componentType);
     const uint64_t maxIndex = indexBytes == 4 ? std::numeric_limits<uint32_t>::max() : (uint64_t(1) << (8 * indexBytes)) - 1;
     if (primitive.mode == TINYGLTF_MODE_TRIANGLES && indicesAccessor >= 0 && indexLike.count != size_t(faces) * 3)
         ctx.fail(what + ": the indices accessor counts " + std::to_string(indexLike.count) + ", the Draco mesh has " +
@@ -213,15 +188,15 @@ void decodePrimitive(const LoadContext& ctx, tinygltf::Model& model, tinygltf::P
         const auto it = primitive.attributes.find(semantic);
         if (it == primitive.attributes.end()) ctx.fail(where + ": not among the primitive's attributes");
         // A copy: adding the decoded accessors below may reallocate model.accessors.
-        const tinygltf::Accessor like = accessorOf(ctx, model, it->second, where);
+        const tinygltf::Accessor like = checkedAccessor(ctx, model, it->second, where);
         const draco::PointAttribute* attribute = mesh->GetAttributeByUniqueId(uint32_t(id.GetNumberAsInt()));
         if (!attribute) ctx.fail(where + ": the Draco mesh has no attribute " + std::to_string(id.GetNumberAsInt()));
         if (like.count != points)
             ctx.fail(where + ": the accessor counts " + std::to_string(like.count) + ", the Draco mesh has " +
                      std::to_string(points) + " vertices");
         const int components = tinygltf::GetNumComponentsInType(uint32_t(like.type));
-        const size_t bytes = componentBytes(like.componentType);
-        if (components < 1 || components > 4 || bytes == 0) ctx.fail(where + ": unsupported accessor type");
+        const size_t bytes = componentSize(like.componentType);
+        if (components < 1 || components > 4) ctx.fail(where + ": unsupported accessor type");
         if (attribute->num_components() != components)
             ctx.fail(where + ": the Draco attribute has " + std::to_string(attribute->num_components()) +
                      " components, the accessor " + std::to_string(components));

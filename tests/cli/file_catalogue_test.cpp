@@ -711,7 +711,7 @@ std::vector<Row> catalogue() {
           "attribute POSITION: the accessor counts 5, the Draco mesh has 4 vertices");
     error("draco", "BufferViewOutsideTheBuffer", draco({}, [](GltfBuilder& b) {
         b.doc["bufferViews"][0]["byteLength"] = 1 << 20;
-    }), "KHR_draco_mesh_compression: its bufferView lies outside the buffer");
+    }), "KHR_draco_mesh_compression: bufferView 0 [0, +1048576) lies outside buffer 0");
     // -- EXT_meshopt_compression (a quad whose views are compressed by meshoptimizer's encoders;
     // tests/unit/meshopt_test_util.h). Views: 0 POSITION, 1 NORMAL (octahedral), 2 TEXCOORD_0, 3 indices.
     auto meshopt = [](std::function<void(Json&)> edit) {
