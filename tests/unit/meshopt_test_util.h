@@ -29,34 +29,33 @@ MeshoptView meshoptAttributes(const std::vector<T>& values, size_t components) {
     return meshoptAttributes(values.data(), values.size() / components, components * sizeof(T));
 }
 
+// `values` (count × stride/4 floats, or 4 per element for OCTAHEDRAL) through `filter`'s encoder
+// (what the codec compresses) and its decoder (what a loader must end up with).
+inline MeshoptView meshoptFiltered(const std::vector<float>& values, size_t count, size_t stride, const char* filter,
+                                   int bits, void (*encode)(void*, size_t, size_t, int, const float*),
+                                   void (*decode)(void*, size_t, size_t)) {
+    MeshoptView v{.count = count, .stride = stride, .filter = filter};
+    v.filtered.resize(count * stride);
+    encode(v.filtered.data(), count, stride, bits, values.data());
+    v.decoded = v.filtered;
+    decode(v.decoded.data(), count, stride);
+    return v;
+}
+
 // Unit vectors (x, y, z, w per element) through the OCTAHEDRAL filter: normalized bytes (stride 4).
 inline MeshoptView meshoptOctahedral(const std::vector<float>& xyzw, int bits = 8) {
-    MeshoptView v{.count = xyzw.size() / 4, .stride = 4, .filter = "OCTAHEDRAL"};
-    v.filtered.resize(v.count * v.stride);
-    meshopt_encodeFilterOct(v.filtered.data(), v.count, v.stride, bits, xyzw.data());
-    v.decoded = v.filtered;
-    meshopt_decodeFilterOct(v.decoded.data(), v.count, v.stride);
-    return v;
+    return meshoptFiltered(xyzw, xyzw.size() / 4, 4, "OCTAHEDRAL", bits, meshopt_encodeFilterOct, meshopt_decodeFilterOct);
 }
 
 // Unit quaternions (x, y, z, w) through the QUATERNION filter: normalized shorts (stride 8).
 inline MeshoptView meshoptQuaternion(const std::vector<float>& xyzw, int bits = 12) {
-    MeshoptView v{.count = xyzw.size() / 4, .stride = 8, .filter = "QUATERNION"};
-    v.filtered.resize(v.count * v.stride);
-    meshopt_encodeFilterQuat(v.filtered.data(), v.count, v.stride, bits, xyzw.data());
-    v.decoded = v.filtered;
-    meshopt_decodeFilterQuat(v.decoded.data(), v.count, v.stride);
-    return v;
+    return meshoptFiltered(xyzw, xyzw.size() / 4, 8, "QUATERNION", bits, meshopt_encodeFilterQuat, meshopt_decodeFilterQuat);
 }
 
 // Floats (`components` per element) through the EXPONENTIAL filter: floats again (stride 4 × components).
 inline MeshoptView meshoptExponential(const std::vector<float>& values, size_t components, int bits = 16) {
-    MeshoptView v{.count = values.size() / components, .stride = 4 * components, .filter = "EXPONENTIAL"};
-    v.filtered.resize(v.count * v.stride);
-    meshopt_encodeFilterExp(v.filtered.data(), v.count, v.stride, bits, values.data());
-    v.decoded = v.filtered;
-    meshopt_decodeFilterExp(v.decoded.data(), v.count, v.stride);
-    return v;
+    return meshoptFiltered(values, values.size() / components, 4 * components, "EXPONENTIAL", bits,
+                           meshopt_encodeFilterExp, meshopt_decodeFilterExp);
 }
 
 // Unsigned short indices, as TRIANGLES (a triangle list) or INDICES (any sequence).
