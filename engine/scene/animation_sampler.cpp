@@ -10,65 +10,88 @@ namespace {
 
 using Quat = std::array<double, 4>;  // x, y, z, w
 
-// Value `key` of the sampler, component `c`; `part` selects in-tangent (0), value (1) or
-// out-tangent (2) of a cubic-spline key and is ignored otherwise.
-double at(const AnimationSampler& s, size_t key, uint32_t c, int part = 1) {
+// The first float of key `key`'s value (for CubicSpline the value between the two tangents).
+const float* keyValue(const AnimationSampler& s, size_t key) {
     const size_t w = s.width;
-    if (s.interpolation == Interpolation::CubicSpline) return s.values[(3 * key + size_t(part)) * w + c];
-    return s.values[key * w + c];
+    return s.interpolation == Interpolation::CubicSpline ? s.values.data() + (3 * key + 1) * w : s.values.data() + key * w;
 }
 
-Quat quat(const AnimationSampler& s, size_t key) { return {at(s, key, 0), at(s, key, 1), at(s, key, 2), at(s, key, 3)}; }
+Quat quat(const float* v) { return {v[0], v[1], v[2], v[3]}; }
 
-// Unit length; a zero quaternion (no rotation can be read from it) becomes the identity.
-Quat normalized(Quat q) {
+// Scales q to unit length; a zero quaternion (no rotation can be read from it) becomes the identity.
+void normalize(Quat& q) {
     const double length2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
-    // Keys are stored unit length to float precision: leave those as they are (this runs several
-    // times per rotation channel per frame).
-    if (std::abs(length2 - 1.0) < 1e-14) return q;
-    if (!(length2 > 1e-60)) return {0.0, 0.0, 0.0, 1.0};
-    const double inverse = 1.0 / std::sqrt(length2);
+    // Keys are stored unit length to float precision, and slerp keeps that: near unit length one
+    // Newton step of 1/√x from 1 is exact to (length² − 1)², below 1e-12 here — no square root or
+    // division (this runs for every rotation channel every frame).
+    double inverse = 1.5 - 0.5 * length2;
+    if (!(std::abs(length2 - 1.0) < 1e-6)) {
+        if (!(length2 > 1e-60)) {
+            q = {0.0, 0.0, 0.0, 1.0};
+            return;
+        }
+        inverse = 1.0 / std::sqrt(length2);
+    }
     for (double& v : q) v *= inverse;
-    return q;
+}
+
+void store(const Quat& q, std::span<float> out) {
+    for (int c = 0; c < 4; ++c) out[c] = float(q[c]);
+}
+
+// sin(tθ) / sin θ for t in [0, 1] and x = cos θ in [0, 1], from its power series in (x − 1)
+// (D. Eberly, "A Fast and Accurate Algorithm for Computing SLERP", JGT 2011): term i is term i − 1
+// times (t² − i²)(x − 1) / (i(2i + 1)). Every term is ≥ 0 and at most half the one before, so the
+// sum stops once a term adds less than 1e-13 of it: a handful of terms for the angles between
+// neighbouring keys, about forty at θ = 90°, and no acos or sin. Exact at t = 0, at t = 1 (the
+// second term is 0) and at x = 1.
+constexpr int kSlerpTerms = 64;  // 2⁻⁶⁴ < 1e-13 even at θ = 90°
+constexpr std::array<double, kSlerpTerms + 1> kSlerpDivisors = [] {
+    std::array<double, kSlerpTerms + 1> out{};
+    for (int i = 1; i <= kSlerpTerms; ++i) out[size_t(i)] = 1.0 / double(i * (2 * i + 1));
+    return out;
+}();
+
+// The weights sin((1 − s)θ) / sin θ and sin(sθ) / sin θ of the two keys, summed side by side.
+std::array<double, 2> slerpWeights(double s, double xMinus1) {
+    const double t[2] = {1.0 - s, s};
+    double term[2] = {t[0], t[1]}, sum[2] = {t[0], t[1]};
+    for (int i = 1; i <= kSlerpTerms && (term[0] > 1e-13 * sum[0] || term[1] > 1e-13 * sum[1]); ++i) {
+        const double common = xMinus1 * kSlerpDivisors[size_t(i)], i2 = double(i) * double(i);
+        for (int k = 0; k < 2; ++k) {
+            term[k] *= (t[k] * t[k] - i2) * common;
+            sum[k] += term[k];
+        }
+    }
+    return {sum[0], sum[1]};
 }
 
 // Spherical interpolation along the shorter arc (q and −q are the same rotation).
 Quat slerp(Quat a, Quat b, double s) {
-    // The angle between the keys from their dot product over the product of their lengths (one
-    // square root, not two); keys off unit length by float rounding are interpolated as they are
-    // and the result normalized, which differs from normalizing them first by ~1e-7 at most.
-    double la = a[0] * a[0] + a[1] * a[1] + a[2] * a[2] + a[3] * a[3];
-    double lb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2] + b[3] * b[3];
-    if (!(std::abs(la - 1.0) < 1e-3) || !(std::abs(lb - 1.0) < 1e-3)) {
-        a = normalized(a);  // far from unit, or zero: normalize properly
-        b = normalized(b);
-        la = lb = 1.0;
-    }
-    double cosine = std::min((a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]) / std::sqrt(la * lb), 1.0);
+    // Keys unit length to float rounding are interpolated as they are, and the result normalized:
+    // that differs from normalizing them first by ~1e-7 at most, below the float output's precision.
+    const auto nearUnit = [](const Quat& q) { return std::abs(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3] - 1.0) < 1e-6; };
+    if (!nearUnit(a) || !nearUnit(b)) normalize(a), normalize(b);
+    double cosine = std::min(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3], 1.0);
     if (cosine < 0.0) {
         for (double& v : b) v = -v;
         cosine = -cosine;
     }
-    double wa = 1.0 - s, wb = s;
-    // Nearly the same rotation: sin θ → 0, and linear interpolation is exact to rounding.
-    if (cosine < 1.0 - 1e-9) {
-        const double theta = std::acos(cosine);
-        const double sine = std::sqrt(1.0 - cosine * cosine);  // sin θ for θ in [0, π/2]
-        wa = std::sin((1.0 - s) * theta) / sine;
-        wb = std::sin(s * theta) / sine;
-    }
+    const std::array<double, 2> w = slerpWeights(s, cosine - 1.0);
     Quat q;
-    for (int c = 0; c < 4; ++c) q[c] = wa * a[c] + wb * b[c];
-    return normalized(q);
+    for (int c = 0; c < 4; ++c) q[c] = w[0] * a[c] + w[1] * b[c];
+    normalize(q);
+    return q;
 }
 
 void writeKey(const AnimationSampler& s, AnimatedProperty property, size_t key, std::span<float> out) {
+    const float* v = keyValue(s, key);
     if (property == AnimatedProperty::Rotation) {
-        const Quat q = normalized(quat(s, key));
-        for (int c = 0; c < 4; ++c) out[c] = float(q[c]);
-        return;
+        Quat q = quat(v);
+        normalize(q);
+        return store(q, out);
     }
-    for (uint32_t c = 0; c < s.width; ++c) out[c] = float(at(s, key, c));
+    std::copy(v, v + s.width, out.begin());
 }
 
 }  // namespace
@@ -106,27 +129,28 @@ void evaluateSampler(const AnimationSampler& s, AnimatedProperty property, doubl
     const double t0 = s.times[k], dt = double(s.times[k + 1]) - t0;  // > 0: t0 ≤ time < t1
     const double u = (time - t0) / dt;
     const bool rotation = property == AnimatedProperty::Rotation;
-    if (s.interpolation == Interpolation::Linear && rotation) {
-        const Quat q = slerp(quat(s, k), quat(s, k + 1), u);
-        for (int c = 0; c < 4; ++c) out[c] = float(q[c]);
-        return;
-    }
+    const size_t w = s.width;
+    const float* v0 = keyValue(s, k);
+    const float* v1 = keyValue(s, k + 1);
+    if (s.interpolation == Interpolation::Linear && rotation) return store(slerp(quat(v0), quat(v1), u), out);
     if (s.interpolation == Interpolation::Linear) {
-        for (uint32_t c = 0; c < s.width; ++c) out[c] = float((1.0 - u) * at(s, k, c) + u * at(s, k + 1, c));
+        for (size_t c = 0; c < w; ++c) out[c] = float((1.0 - u) * v0[c] + u * v1[c]);
         return;
     }
     // Cubic Hermite spline (glTF 2.0 Appendix C): tangents are per second, so scaled by the interval.
     const double u2 = u * u, u3 = u2 * u;
     const double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u, h01 = -2 * u3 + 3 * u2, h11 = u3 - u2;
+    const float* out0 = v0 + w;  // key k's out-tangent
+    const float* in1 = v1 - w;   // key k + 1's in-tangent
     Quat q{};
-    for (uint32_t c = 0; c < s.width; ++c) {
-        const double v = h00 * at(s, k, c) + h10 * dt * at(s, k, c, 2) + h01 * at(s, k + 1, c) + h11 * dt * at(s, k + 1, c, 0);
+    for (size_t c = 0; c < w; ++c) {
+        const double v = h00 * v0[c] + h10 * dt * out0[c] + h01 * v1[c] + h11 * dt * in1[c];
         if (rotation) q[c] = v;
         else out[c] = float(v);
     }
     if (!rotation) return;
-    q = normalized(q);
-    for (int c = 0; c < 4; ++c) out[c] = float(q[c]);
+    normalize(q);
+    store(q, out);
 }
 
 double loopTime(double time, double duration) {

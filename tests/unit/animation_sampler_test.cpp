@@ -98,6 +98,29 @@ TEST(AnimationSampler, RotationTakesTheShorterArc) {
     }
 }
 
+TEST(AnimationSampler, SlerpMatchesTheClosedFormAtEveryAngle) {
+    // The slerp weights are summed from a power series: against sin(sθ)/sin θ in double, from keys
+    // a hair apart to keys 180° apart (quaternions at 90°, where the series is longest), about a
+    // tilted axis, with keys stored at twice unit length (normalized before interpolating).
+    const double axis[3] = {0.48, 0.6, 0.64};  // unit length
+    for (double degrees : {0.01, 1.0, 10.0, 45.0, 90.0, 135.0, 170.0, 179.0, 180.0}) {
+        for (double scale : {1.0, 2.0}) {
+            const double half = degrees * kPi / 360.0;
+            const std::vector<float> values{0, 0, 0, float(scale), float(scale * axis[0] * std::sin(half)),
+                                            float(scale * axis[1] * std::sin(half)), float(scale * axis[2] * std::sin(half)),
+                                            float(scale * std::cos(half))};
+            const AnimationSampler s{.times = {0, 1}, .values = values, .interpolation = Interpolation::Linear, .width = 4};
+            for (double u : {0.0, 0.1, 0.25, 0.5, 0.7, 0.99, 1.0}) {
+                const double angle = u * half;  // the rotation at u is u × degrees about the axis
+                const std::array<float, 4> expected{float(axis[0] * std::sin(angle)), float(axis[1] * std::sin(angle)),
+                                                    float(axis[2] * std::sin(angle)), float(std::cos(angle))};
+                SCOPED_TRACE(::testing::Message() << degrees << "° at " << u << ", keys of length " << scale);
+                expectRotation(rotation(s, u), expected, 2e-7f);
+            }
+        }
+    }
+}
+
 TEST(AnimationSampler, CubicSplineScalesTangentsByTheKeyInterval) {
     // p(t) = t over two seconds: values 0 and 2, tangents 1 per second. Only tangents scaled by
     // the 2 s interval reproduce the line.
