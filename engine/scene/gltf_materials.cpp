@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <optional>
 #include <set>
 
@@ -94,8 +96,74 @@ std::set<std::pair<int, bool>> imageUses(const tinygltf::Model& model) {
         add(m.pbrMetallicRoughness.metallicRoughnessTexture.index, false);
         add(m.normalTexture.index, false);
         add(m.occlusionTexture.index, false);
+        if (auto it = m.extensions.find("KHR_materials_specular"); it != m.extensions.end()) {
+            const auto index = [&](const char* key) {
+                const tinygltf::Value& e = it->second;
+                return e.Has(key) && e.Get(key).Has("index") ? e.Get(key).Get("index").GetNumberAsInt() : -1;
+            };
+            add(index("specularTexture"), false);
+            add(index("specularColorTexture"), true);
+        }
     }
     return uses;
+}
+
+// A textureInfo inside an extension object (the schema check has vetted its types).
+TextureRef extensionTexture(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
+                            const tinygltf::Value& extension, const char* key, bool srgb, const std::string& what) {
+    if (!extension.Has(key)) return {};
+    const tinygltf::Value& info = extension.Get(key);
+    const int index = info.Has("index") ? info.Get("index").GetNumberAsInt() : -1;
+    if (index < 0) ctx.fail(what + " " + key + ": no texture index");
+    const int texCoord = info.Has("texCoord") ? info.Get("texCoord").GetNumberAsInt() : 0;
+    tinygltf::ExtensionMap extensions;
+    if (info.Has("extensions") && info.Get("extensions").IsObject())
+        for (const std::string& name : info.Get("extensions").Keys()) extensions[name] = info.Get("extensions").Get(name);
+    return textureRef(ctx, model, images, index, texCoord, extensions, srgb, what + " " + key);
+}
+
+// `value` as the shortest "%g" text ("1.5", "1e+30", "inf").
+std::string shortNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+// A factor an extension defines on [lo, hi] (hi may be infinite: then up to the largest float):
+// out-of-range values are clamped with a warning, since the render then differs from what the
+// file asks for.
+float clampedFactor(const LoadContext& ctx, double value, double lo, double hi, const std::string& what) {
+    if (!std::isfinite(value)) ctx.fail(what + " is not a finite number");
+    const double clamped = std::clamp(value, lo, std::min(hi, double(std::numeric_limits<float>::max())));
+    if (clamped != value)
+        ctx.warn(what + " " + shortNumber(value) + " is outside [" + shortNumber(lo) + ", " + shortNumber(hi) + "] (using " +
+                 shortNumber(clamped) + ")");
+    return float(clamped);
+}
+
+// KHR_materials_ior and KHR_materials_specular into `out`.
+void loadSpecular(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
+                  const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+    if (auto it = extensions.find("KHR_materials_ior"); it != extensions.end()) {
+        if (auto ior = number(it->second, "ior")) {
+            // 0 is allowed (f0 = 1: the specular-glossiness conversion); otherwise at least 1.
+            if (*ior == 0.0) out.ior = 0.0f;
+            else out.ior = clampedFactor(ctx, *ior, 1.0, INFINITY, what + " ior");
+        }
+    }
+    const auto it = extensions.find("KHR_materials_specular");
+    if (it == extensions.end()) return;
+    const tinygltf::Value& e = it->second;
+    if (auto specular = number(e, "specularFactor"))
+        out.specularFactor = clampedFactor(ctx, *specular, 0.0, 1.0, what + " specularFactor");
+    if (e.Has("specularColorFactor")) {
+        const tinygltf::Value& c = e.Get("specularColorFactor");
+        for (int i = 0; i < 3; ++i)
+            out.specularColorFactor[i] =
+                clampedFactor(ctx, c.Get(i).GetNumberAsDouble(), 0.0, INFINITY, what + " specularColorFactor");
+    }
+    out.specular = extensionTexture(ctx, model, images, e, "specularTexture", false, what);
+    out.specularColor = extensionTexture(ctx, model, images, e, "specularColorTexture", true, what);
 }
 
 }  // namespace
@@ -158,6 +226,7 @@ void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTa
                 out.emissiveStrength = factor(ctx, *strength, 0, 1e9, what + " emissiveStrength");
         }
         out.unlit = m.extensions.count("KHR_materials_unlit") > 0;
+        loadSpecular(ctx, model, images, m.extensions, out, what);
 
         out.baseColor = textureRef(ctx, model, images, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
                                    pbr.baseColorTexture.extensions, true, what + " baseColorTexture");

@@ -168,8 +168,16 @@ void checkDocument(const Checker& c, const Json& root) {
         c.textureInfo(m, p, "normalTexture", true);
         c.textureInfo(m, p, "occlusionTexture", false, true);
         c.textureInfo(m, p, "emissiveTexture");
-        if (const Json* ext = c.child(m, p, "extensions", {}))
-            c.child(*ext, p + ".extensions", "KHR_materials_emissive_strength", {{"emissiveStrength", Kind::Number}});
+        if (const Json* ext = c.child(m, p, "extensions", {})) {
+            const std::string pe = p + ".extensions";
+            c.child(*ext, pe, "KHR_materials_emissive_strength", {{"emissiveStrength", Kind::Number}});
+            c.child(*ext, pe, "KHR_materials_ior", {{"ior", Kind::Number}});
+            if (const Json* specular = c.child(*ext, pe, "KHR_materials_specular",
+                                               {{"specularFactor", Kind::Number}, {"specularColorFactor", Kind::NumberArray, 3}})) {
+                c.textureInfo(*specular, pe + ".KHR_materials_specular", "specularTexture");
+                c.textureInfo(*specular, pe + ".KHR_materials_specular", "specularColorTexture");
+            }
+        }
     });
     c.array(root, "meshes", [&](const Json& mesh, const std::string& p) {
         c.properties(mesh, p, {{"weights", Kind::NumberArray}});

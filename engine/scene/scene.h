@@ -95,7 +95,37 @@ struct Material {
     TextureRef normal;             // linear, tangent space
     TextureRef occlusion;          // linear, R channel
     TextureRef emissive;           // sRGB
+
+    // KHR_materials_ior and KHR_materials_specular: the dielectric Fresnel term,
+    //   f0 = min(((ior − 1)/(ior + 1))² · specularColor, 1) · specular,  f90 = specular,
+    // specularColor = specularColorFactor · specularColor texture (RGB), specular =
+    // specularFactor · specular texture (A). ior 0 gives f0 = 1 (the specular-glossiness
+    // conversion). The defaults reproduce the core material (f0 0.04, f90 1).
+    float ior = 1.5f;
+    float specularFactor = 1.0f;
+    glm::vec3 specularColorFactor{1.0f};
+    TextureRef specular;       // linear, A channel
+    TextureRef specularColor;  // sRGB, RGB channels
+
+    // The layers beyond the core model this material uses (MaterialLayer bits): only those are
+    // evaluated for it (see docs/materials.md).
+    uint32_t layers() const;
 };
+
+// Layers of a material beyond glTF's core metallic-roughness model, as bits.
+enum MaterialLayer : uint32_t {
+    // A dielectric Fresnel other than the core's (KHR_materials_ior, KHR_materials_specular).
+    kLayerSpecular = 1u << 0,
+};
+
+inline uint32_t Material::layers() const {
+    uint32_t out = 0;
+    // IOR 1.5 with no specular change is the core material's Fresnel: nothing to pay for.
+    if (ior != 1.5f || specularFactor != 1.0f || specularColorFactor != glm::vec3(1.0f) || specular.present() ||
+        specularColor.present())
+        out |= kLayerSpecular;
+    return out;
+}
 
 // The change one morph target makes to one vertex. 80 bytes (the GPU reads the same layout).
 struct MorphDelta {

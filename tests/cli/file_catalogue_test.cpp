@@ -739,6 +739,26 @@ std::vector<Row> catalogue() {
     warning("animation", "PointerPath", animatedTriangle({0, 1}, move, "VEC3", 3, [](Json& j) {
         j["animations"][0]["channels"][0]["target"]["path"] = "pointer";
     }), "animation 0 channel 0: target path 'pointer' is not supported (ignored)", true);
+    // -- Material layers: KHR_materials_ior and KHR_materials_specular.
+    const auto layered = [](Json extensions) {
+        return gltfEdited([extensions](Json& j) {
+            j["materials"] = Json::array({{{"extensions", extensions}}});
+            j["meshes"][0]["primitives"][0]["material"] = 0;
+        });
+    };
+    loads("material layers", "SpecularGlossinessConversion",
+          layered({{"KHR_materials_ior", {{"ior", 0}}}, {"KHR_materials_specular", {{"specularColorFactor", {0.9, 0.6, 0.3}}}}}));
+    error("material layers", "SpecularFactorString", layered({{"KHR_materials_specular", {{"specularFactor", "1"}}}}),
+          "KHR_materials_specular.specularFactor: expected a number, got the string \"1\"");
+    error("material layers", "IorArray", layered({{"KHR_materials_ior", {{"ior", {1.5}}}}}),
+          "KHR_materials_ior.ior: expected a number, got an array");
+    error("material layers", "SpecularColorTextureMissing",
+          layered({{"KHR_materials_specular", {{"specularColorTexture", {{"index", 3}}}}}}),
+          "specularColorTexture: texture 3 does not exist");
+    warning("material layers", "IorBelowOne", layered({{"KHR_materials_ior", {{"ior", 0.5}}}}),
+            "ior 0.5 is outside [1, inf] (using 1)", true);
+    warning("material layers", "NegativeSpecularColor", layered({{"KHR_materials_specular", {{"specularColorFactor", {-1, 1, 1}}}}}),
+            "specularColorFactor -1 is outside [0, inf] (using 0)", true);
     return rows;
 }
 

@@ -207,6 +207,25 @@ std::vector<BadCase> badCases() {
             b.doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["index"] = 5;
             return b.writeGlb(dir);
         }, "texture 5 does not exist");
+    add("SpecularFactorNotANumber", edited([](GltfBuilder& b) {
+            b.doc["materials"] = Json::array({{{"extensions", {{"KHR_materials_specular", {{"specularFactor", "high"}}}}}}});
+        }), "materials[0].extensions.KHR_materials_specular.specularFactor: expected a number, got the string \"high\"");
+    add("SpecularColorFactorTwoComponents", edited([](GltfBuilder& b) {
+            b.doc["materials"] = Json::array({{{"extensions", {{"KHR_materials_specular", {{"specularColorFactor", {1, 1}}}}}}}});
+        }), "specularColorFactor: expected an array of 3 numbers");
+    add("IorNotANumber", edited([](GltfBuilder& b) {
+            b.doc["materials"] = Json::array({{{"extensions", {{"KHR_materials_ior", {{"ior", Json::array()}}}}}}});
+        }), "KHR_materials_ior.ior: expected a number, got an array");
+    add("SpecularTextureMissing", [](const fs::path& dir) {
+            GltfBuilder b = texturedTriangle("", smallPng());
+            b.doc["materials"][0]["extensions"] = {{"KHR_materials_specular", {{"specularColorTexture", {{"index", 4}}}}}};
+            return b.writeGlb(dir);
+        }, "specularColorTexture: texture 4 does not exist");
+    add("SpecularTextureWithoutIndex", [](const fs::path& dir) {
+            GltfBuilder b = texturedTriangle("", smallPng());
+            b.doc["materials"][0]["extensions"] = {{"KHR_materials_specular", {{"specularTexture", {{"texCoord", 0}}}}}};
+            return b.writeGlb(dir);
+        }, "specularTexture: no texture index");
     add("TextureImageMissing", [](const fs::path& dir) {
             GltfBuilder b = texturedTriangle("", smallPng());
             b.doc["textures"][0]["source"] = 3;

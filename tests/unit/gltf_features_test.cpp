@@ -307,6 +307,48 @@ TEST(GltfFeatures, MaterialFactorsModesAndExtensions) {
     EXPECT_EQ(scene.draws[0].material, 1u);
 }
 
+TEST(GltfFeatures, IorAndSpecularExtensions) {
+    // Factors, both textures (the colour one sRGB, with a texture transform), the IOR's special 0,
+    // defaults, out-of-range values clamped with a warning, and which materials pay for the layer.
+    TempDir dir;
+    GltfBuilder b = texturedTriangle("", smallPng({10, 20, 30, 40}));
+    b.doc["extensionsUsed"] = {"KHR_materials_ior", "KHR_materials_specular", "KHR_texture_transform"};
+    const Json core = b.doc["materials"][0];
+    b.doc["materials"] = Json::array({
+        {{"extensions", {{"KHR_materials_ior", {{"ior", 1.33}}},
+                         {"KHR_materials_specular",
+                          {{"specularFactor", 0.5}, {"specularColorFactor", {2.0, 1.0, 0.25}},
+                           {"specularTexture", {{"index", 0}}},
+                           {"specularColorTexture",
+                            {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"scale", {2, 2}}}}}}}}}}}}},
+        {{"extensions", {{"KHR_materials_ior", {{"ior", 0}}}}}},
+        {{"extensions", {{"KHR_materials_ior", {{"ior", 1.5}}}, {"KHR_materials_specular", Json::object()}}}},
+        {{"extensions", {{"KHR_materials_ior", {{"ior", 0.5}}}, {"KHR_materials_specular", {{"specularFactor", 3}}}}}},
+        core});
+    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    ASSERT_EQ(scene.materials.size(), 5u);
+    const Material& m = scene.materials[0];
+    EXPECT_FLOAT_EQ(m.ior, 1.33f);
+    EXPECT_FLOAT_EQ(m.specularFactor, 0.5f);
+    expectVec(m.specularColorFactor, {2.0f, 1.0f, 0.25f});
+    ASSERT_TRUE(m.specular.present());
+    ASSERT_TRUE(m.specularColor.present());
+    EXPECT_FALSE(scene.images.at(size_t(m.specular.image)).srgb);
+    EXPECT_TRUE(scene.images.at(size_t(m.specularColor.image)).srgb);
+    EXPECT_EQ(m.specularColor.transform.scale, glm::vec2(2.0f));
+    EXPECT_EQ(m.layers(), uint32_t(kLayerSpecular));
+    EXPECT_FLOAT_EQ(scene.materials[1].ior, 0.0f);  // f0 = 1: the specular-glossiness conversion
+    EXPECT_EQ(scene.materials[1].layers(), uint32_t(kLayerSpecular));
+    // IOR 1.5 and an empty specular extension are the core Fresnel: no layer to pay for.
+    EXPECT_EQ(scene.materials[2].layers(), 0u);
+    EXPECT_EQ(scene.materials[4].layers(), 0u);
+    EXPECT_FLOAT_EQ(scene.materials[3].ior, 1.0f);
+    EXPECT_FLOAT_EQ(scene.materials[3].specularFactor, 1.0f);
+    EXPECT_TRUE(hasWarning(scene, "ior 0.5 is outside [1, inf] (using 1)"));
+    EXPECT_TRUE(hasWarning(scene, "specularFactor 3 is outside [0, 1] (using 1)"));
+    EXPECT_EQ(scene.warnings.size(), 2u);
+}
+
 // A triangle whose material uses `png` for all five textures, plus samplers.
 GltfBuilder fiveTextureModel(const Bytes& png) {
     GltfBuilder b;
