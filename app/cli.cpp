@@ -246,6 +246,10 @@ Command parseCommandLine(const std::vector<std::string>& args) {
             table.withValue[flag] = [&o, flag, member](const std::string& v) { o.iblQuality.*member = parseDimension(flag, v); };
         table.switches["--dither"] = [&] { o.dither = true; };
         table.switches["--no-default-lights"] = [&] { o.defaultLights = false; };
+        table.withValue["--scene-lights"] = [&](const std::string& v) {
+            if (v != "on" && v != "off") throw UserError("--scene-lights: expected on or off, got '" + v + "'");
+            o.sceneLights = v == "on";
+        };
         table.switches["--explain"] = [&] { o.explain = true; };
         if (command.kind == Command::Kind::Render) {
             o.frames = 1;
@@ -433,6 +437,8 @@ render options:
   --ibl-lut-size N, --ibl-lut-samples N                  BRDF LUT size and samples [128, 256]
   --dither              dither the 8-bit output
   --no-default-lights   a scene without punctual lights normally gets a default key and fill light
+  --scene-lights on|off the file's own KHR_lights_punctual lights (off: image-based lighting only,
+                        for comparisons; the scene then counts as one without lights) [on]
   --explain             print which passes and shader variants were left out, and why
 
 view options: the render options (except --out, --width and --height: the window's size), and

@@ -63,6 +63,7 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
     RenderSettings settings{.width = options.width, .height = options.height, .scene = &scene};
     settings.disabledPasses = options.disabledPasses;
     settings.defaultLights = options.defaultLights;
+    settings.sceneLights = options.sceneLights;
     if (options.camera) settings.camera.gltfCamera = *options.camera;
     if (options.cameraOrbit) settings.camera.orbit = glm::vec3((*options.cameraOrbit)[0], (*options.cameraOrbit)[1], (*options.cameraOrbit)[2]);
     if (options.target) settings.camera.target = glm::vec3((*options.target)[0], (*options.target)[1], (*options.target)[2]);

@@ -73,8 +73,9 @@ std::vector<scene::Light> Renderer::defaultLights() {
 
 void Renderer::prepareScene(const RenderSettings& settings) {
     if (!settings.scene) return;
-    const bool addLights = settings.defaultLights && settings.scene->lights.empty();
-    if (settings.scene == mUploaded && addLights == mUploadedDefaultLights) return;
+    const bool sceneLights = settings.sceneLights && !settings.scene->lights.empty();
+    const bool addLights = settings.defaultLights && !sceneLights;
+    if (settings.scene == mUploaded && addLights == mUploadedDefaultLights && sceneLights == mUploadedSceneLights) return;
     // The previous scene's buffers may still be used by a frame in flight: wait first.
     mFrames.waitIdle();
     // Software rasterizers pay ~1000× for anisotropic filtering (minutes per frame on lavapipe):
@@ -82,11 +83,12 @@ void Renderer::prepareScene(const RenderSettings& settings) {
     const bool cpuDevice = mContext.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     mGpuScene = std::make_unique<scene::GpuScene>(mContext, *settings.scene,
                                                   addLights ? defaultLights() : std::vector<scene::Light>{},
-                                                  cpuDevice ? 1.0f : 8.0f);
+                                                  cpuDevice ? 1.0f : 8.0f, sceneLights);
     mForward.setScene(*mGpuScene);
     mRestPose = settings.scene->deformations.empty() ? nullptr : std::make_unique<scene::ScenePose>(*settings.scene, std::vector<uint32_t>{});
     mUploaded = settings.scene;
     mUploadedDefaultLights = addLights;
+    mUploadedSceneLights = sceneLights;
 }
 
 void Renderer::prepareEnvironment(const RenderSettings& settings) {
@@ -125,12 +127,15 @@ void Renderer::useEnvironment(const scene::Environment* environment, const ibl::
 }
 
 void Renderer::applySceneParameters() {
-    const shader::ShaderReflection& reflection = mForward.reflection();
-    const auto elements = [&](const char* buffer) -> std::span<const shader::BlockMember> {
+    // The reflected members of one element of `buffer`, a runtime array in `reflection`.
+    const auto elementsOf = [](const shader::ShaderReflection& reflection,
+                               const char* buffer) -> std::span<const shader::BlockMember> {
         for (const shader::DescriptorBinding& b : reflection.bindings)
             if (b.name == buffer && b.members.size() == 1) return b.members[0].elementMembers;
         return {};
     };
+    const shader::ShaderReflection& reflection = mForward.reflection();
+    const auto elements = [&](const char* buffer) { return elementsOf(reflection, buffer); };
     // The scene's values with the user's applied, compared with what the buffers hold.
     std::vector<shading::LightData> lights = mGpuScene->sceneLights();
     std::vector<shading::MaterialData> materials = mGpuScene->sceneMaterials();
@@ -138,14 +143,23 @@ void Renderer::applySceneParameters() {
         mParameters.apply("forward", "Lights[" + std::to_string(i) + "]", elements("Lights"), lights[i]);
     for (size_t i = 0; i < materials.size(); ++i)
         mParameters.apply("forward", "Materials[" + std::to_string(i) + "]", elements("Materials"), materials[i]);
+    // The layers of the materials that have some, from the layered program's reflection.
+    std::vector<shading::MaterialLayerData> layers = mGpuScene->sceneMaterialLayers();
+    if (const shader::ShaderReflection* layered = mForward.layeredReflection())
+        for (size_t i = 0; i < layers.size(); ++i)
+            if (mGpuScene->scene().materials[i].layers() != 0)
+                mParameters.apply("forward", "MaterialLayers[" + std::to_string(i) + "]", elementsOf(*layered, "MaterialLayers"),
+                                  layers[i]);
     const auto same = [](const auto& a, const auto& b) {
         // (memcmp with an empty vector's null data() is undefined even for 0 bytes.)
         return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
     };
-    if (same(lights, mGpuScene->lights()) && same(materials, mGpuScene->materials())) return;
+    if (same(lights, mGpuScene->lights()) && same(materials, mGpuScene->materials()) &&
+        same(layers, mGpuScene->materialLayers()))
+        return;
     // The buffers may be read by frames in flight.
     mFrames.waitIdle();
-    mGpuScene->rewrite(lights, materials);
+    mGpuScene->rewrite(lights, materials, layers);
 }
 
 void Renderer::shadersReplaced(const std::vector<std::string>& names) {
@@ -440,7 +454,7 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
         const std::vector<scene::Draw>& draws = pose->draws();
         std::vector<std::byte> data = bytesOf(scene::drawDataOf(*settings.scene, draws));
         posed = passes::ForwardPass::PosedDraws{.draws = draws, .data = addHostUpload(frame, "posed_draws", std::move(data))};
-        if (!pose->animatedLights().empty()) {
+        if (!pose->animatedLights().empty() && mUploadedSceneLights) {
             // The lights as the buffer holds them (the user's edits included), moved where the pose puts them.
             std::vector<shading::LightData> lights = mGpuScene->lights();
             for (uint32_t l : pose->animatedLights()) {
@@ -497,6 +511,9 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
     frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemap, &mParameters);
 
     // What --explain says of this frame, taken now: the forward pass and the maps describe their last add.
+    if (!mUploadedSceneLights && !settings.scene->lights.empty())
+        frame.notes.emplace_back("left out: the scene's " + std::to_string(settings.scene->lights.size()) +
+                                 " punctual lights (--scene-lights off)");
     if (mUploadedDefaultLights)
         frame.notes.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
     for (const std::string& line : mForward.explanation()) frame.notes.push_back(line);

@@ -68,6 +68,9 @@ struct RenderSettings {
     // A scene without punctual lights gets a default key and fill light (directional), so that
     // it is visible before image-based lighting exists; false leaves it unlit.
     bool defaultLights = true;
+    // The scene's own punctual lights (KHR_lights_punctual); false leaves them out, for comparisons
+    // under image-based lighting alone — the scene then counts as one without lights.
+    bool sceneLights = true;
     passes::TonemapSettings tonemap;
     // Image-based lighting: the environment (null: none; read during the call only, hashed when the
     // pointer or the quality changes), what to precompute and how to look it up.
@@ -282,6 +285,7 @@ private:
     std::unique_ptr<passes::CalibrationPass> mCalibration;  // created by the first renderCalibration
     const scene::Scene* mUploaded = nullptr;
     bool mUploadedDefaultLights = false;
+    bool mUploadedSceneLights = true;
     std::unique_ptr<scene::GpuScene> mGpuScene;
     // The rest pose of an uploaded scene with skins or morph targets, drawn when a frame brings no
     // pose of its own (skinned meshes are placed by their joints even at rest).

@@ -1,14 +1,18 @@
-#version 460
-#extension GL_GOOGLE_include_directive : require
-// Forward pass fragment stage: glTF metallic-roughness material lit by punctual lights with the
-// BRDFs of shared/brdf.h. Variants are specialization constants, so what a draw does not use
-// costs nothing: no normal map → no TBN work; no lights → no light loop; unlit → no BRDF; no
-// environment → no image-based lighting (shared/ibl.h: split sum, multiscatter, specular occlusion).
+// The forward pass's fragment stage, included by forward.frag.glsl (core glTF materials) and by
+// forward_layers.frag.glsl (materials with KHR_materials_* layers: CANDELA_MATERIAL_LAYERS defined,
+// the layer code and its descriptors compiled in). glTF metallic-roughness material lit by
+// punctual lights with the BRDFs of shared/brdf.h. Variants are specialization constants, so what
+// a draw does not use costs nothing: no normal map → no TBN work; no lights → no light loop;
+// unlit → no BRDF; no environment → no image-based lighting (shared/ibl.h: split sum,
+// multiscatter, specular occlusion); in the layered program, only the layers the material uses.
 #include "shared/brdf.h"
 #include "shared/environment.h"
 #include "shared/ibl.h"
 #include "shared/scene_data.h"
 #include "shared/tonemap.h"
+#ifdef CANDELA_MATERIAL_LAYERS
+#include "shared/brdf_layers.h"
+#endif
 
 layout(constant_id = 0) const bool kNormalMap = false;
 layout(constant_id = 1) const bool kLights = true;
@@ -24,6 +28,10 @@ layout(constant_id = 7) const bool kMultiscatter = true;
 layout(constant_id = 8) const uint kReferenceSamples = 0u;
 // A debug view (CANDELA_DEBUG_*) instead of the shaded colour.
 layout(constant_id = 9) const uint kDebugView = CANDELA_DEBUG_NONE;
+#ifdef CANDELA_MATERIAL_LAYERS
+// The layers this variant evaluates (CANDELA_LAYER_* bits): a material pays only for its own.
+layout(constant_id = 10) const uint kLayers = 0u;
+#endif
 
 layout(std430, set = 0, binding = 0) readonly buffer Lights {
     LightData lights[];
@@ -39,6 +47,13 @@ layout(set = 1, binding = 1) uniform sampler2D metallicRoughnessTexture;
 layout(set = 1, binding = 2) uniform sampler2D normalTexture;
 layout(set = 1, binding = 3) uniform sampler2D occlusionTexture;
 layout(set = 1, binding = 4) uniform sampler2D emissiveTexture;
+#ifdef CANDELA_MATERIAL_LAYERS
+layout(std430, set = 1, binding = 5) readonly buffer MaterialLayers {
+    MaterialLayerData layers[];
+};
+layout(set = 1, binding = 6) uniform sampler2D specularTexture;
+layout(set = 1, binding = 7) uniform sampler2D specularColorTexture;
+#endif
 // Image-based lighting (always bound; placeholders when the frame has no environment).
 layout(set = 2, binding = 0) uniform samplerCube specularCube;
 layout(set = 2, binding = 1) uniform samplerCube irradianceCube;
@@ -62,12 +77,41 @@ layout(location = 0) in vec3 inWorldPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec4 inTangent;
 layout(location = 3) in vec4 inColor;
-layout(location = 4) in vec2 inTexUv[CANDELA_TEX_COUNT];  // per texture slot, transformed (see forward.vert)
+layout(location = 4) in vec2 inTexUv[CANDELA_TEX_COUNT];  // per texture slot, transformed (see forward_vertex.glsl)
+#ifdef CANDELA_MATERIAL_LAYERS
+layout(location = 4 + CANDELA_TEX_COUNT) in vec2 inLayerUv[CANDELA_LAYER_TEX_COUNT];  // per layer texture slot
+#endif
 
 layout(location = 0) out vec4 outColor;
 
 vec4 sampleSlot(sampler2D tex, int slot) {
     return texture(tex, inTexUv[slot]);
+}
+
+#ifdef CANDELA_MATERIAL_LAYERS
+// The dielectric Fresnel of this fragment's material (main sets it before any lighting): the
+// core's f0 0.04, f90 1 unless the specular layer (KHR_materials_ior, _specular) changes it.
+DielectricFresnel gDielectric;
+
+// Whether the specular layer applies: the material has it and the shading model is a
+// Cook-Torrance one (Blinn-Phong, kept for comparison with the original project, has no Fresnel).
+bool specularLayer() { return (kLayers & CANDELA_LAYER_SPECULAR) != 0u && kShadingModel != CANDELA_SHADING_BLINN_PHONG; }
+
+DielectricFresnel layerDielectric(MaterialLayerData layer) {
+    // A specialization constant: the branch is uniform, so the samples inside keep their derivatives.
+    if (!specularLayer()) return coreDielectricFresnel();
+    float specular = layer.specular * texture(specularTexture, inLayerUv[CANDELA_LAYER_TEX_SPECULAR]).a;
+    vec3 color = layer.specularColor * texture(specularColorTexture, inLayerUv[CANDELA_LAYER_TEX_SPECULAR_COLOR]).rgb;
+    return dielectricFresnel(layer.ior, color, specular);
+}
+#endif
+
+// f(V, L) · (N·L) of the fragment's material toward light direction `l`, as diffuse and specular.
+BrdfLobes surfaceLobes(vec3 n, vec3 v, vec3 l, vec3 baseColor, float metallic, float roughness) {
+#ifdef CANDELA_MATERIAL_LAYERS
+    if (specularLayer()) return brdfLobesTimesCosineDielectric(n, v, l, baseColor, metallic, roughness, kShadingModel, gDielectric);
+#endif
+    return brdfLobesTimesCosine(n, v, l, baseColor, metallic, roughness, kShadingModel);
 }
 
 // Shading normal: interpolated normal flipped for back faces of double-sided materials (or, where
@@ -122,8 +166,15 @@ BrdfLobes imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float 
     vec2 lut = textureLod(brdfLut, brdfLutUv(NoV, roughness, push.ibl.lutSize), 0.0f).rg;
     vec3 f0 = mix(vec3(0.04f), baseColor, metallic);
     vec3 diffuseColor = baseColor * (1.0f - metallic);
-    BrdfLobes light = iblShadeLobes(prefiltered, irradiance, lut, f0, diffuseColor, kMultiscatter, ao,
-                                    specularOcclusion(NoV, ao, roughness));
+    BrdfLobes light;
+#ifdef CANDELA_MATERIAL_LAYERS
+    if (specularLayer())
+        light = iblShadeLobesDielectric(prefiltered, irradiance, lut, baseColor, metallic, gDielectric, kMultiscatter, ao,
+                                        specularOcclusion(NoV, ao, roughness));
+    else
+#endif
+    light = iblShadeLobes(prefiltered, irradiance, lut, f0, diffuseColor, kMultiscatter, ao,
+                          specularOcclusion(NoV, ao, roughness));
     light.diffuse *= push.ibl.intensity;
     light.specular *= push.ibl.intensity;
     return light;
@@ -244,6 +295,9 @@ vec3 termTowardFirstLight(vec3 n, vec3 v, vec3 baseColor, float metallic, float 
     vec3 NxH = cross(n, h);
     if (kDebugView == CANDELA_DEBUG_D) return vec3(distributionGgx(NoH, dot(NxH, NxH), a) * CANDELA_PI * a * a);
     if (kDebugView == CANDELA_DEBUG_G) return vec3(visibilitySmithGgxCorrelated(NoV, NoL, a) * 4.0f * NoL * NoV);
+#ifdef CANDELA_MATERIAL_LAYERS
+    if (specularLayer()) return fresnelDielectricMetal(clamp(dot(v, h), 0.0f, 1.0f), baseColor, metallic, gDielectric);
+#endif
     return fresnelSchlick(clamp(dot(v, h), 0.0f, 1.0f), mix(vec3(0.04f), baseColor, metallic));
 }
 
@@ -263,6 +317,9 @@ void main() {
     float roughness = clamp(m.roughness * mr.g, 0.0f, 1.0f);
     vec3 n = shadingNormal(m, true);
     vec3 v = normalize(push.eye.xyz - inWorldPosition);
+#ifdef CANDELA_MATERIAL_LAYERS
+    gDielectric = layerDielectric(layers[draws[push.counts.y].material.x]);
+#endif
 
     BrdfLobes lit;
     lit.diffuse = vec3(0.0f);
@@ -273,7 +330,7 @@ void main() {
             LightData light = lights[i];
             float attenuation;
             vec3 l = lightDirection(light, attenuation);
-            BrdfLobes lobes = brdfLobesTimesCosine(n, v, l, baseColor.rgb, metallic, roughness, kShadingModel);
+            BrdfLobes lobes = surfaceLobes(n, v, l, baseColor.rgb, metallic, roughness);
             vec3 radiance = (light.color * light.intensity) * attenuation;
             lit.diffuse += lobes.diffuse * radiance;
             lit.specular += lobes.specular * radiance;

@@ -1,6 +1,6 @@
-#version 460
-#extension GL_GOOGLE_include_directive : require
-// Forward pass vertex stage: world-space position, normal and tangent of one drawn primitive.
+// The forward pass's vertex stage, included by forward.vert.glsl and (CANDELA_MATERIAL_LAYERS
+// defined) forward_layers.vert.glsl: world-space position, normal and tangent of one drawn
+// primitive, and the transformed texture coordinates of each texture slot.
 #include "shared/scene_data.h"
 
 layout(location = 0) in vec3 inPosition;
@@ -16,6 +16,11 @@ layout(std430, set = 0, binding = 1) readonly buffer Draws {
 layout(std430, set = 0, binding = 2) readonly buffer Materials {
     MaterialData materials[];
 };
+#ifdef CANDELA_MATERIAL_LAYERS
+layout(std430, set = 1, binding = 5) readonly buffer MaterialLayers {
+    MaterialLayerData layers[];
+};
+#endif
 layout(push_constant) uniform Push {
     ForwardPush push;
 };
@@ -29,6 +34,9 @@ layout(location = 3) out vec4 outColor;
 // interpolants: a fragment-stage transform built from storage-buffer loads gave wrong derivatives
 // at triangle edges on lavapipe, whose helper invocations skip those loads.
 layout(location = 4) out vec2 outTexUv[CANDELA_TEX_COUNT];
+#ifdef CANDELA_MATERIAL_LAYERS
+layout(location = 4 + CANDELA_TEX_COUNT) out vec2 outLayerUv[CANDELA_LAYER_TEX_COUNT];
+#endif
 
 void main() {
     // Instanced draws (EXT_mesh_gpu_instancing) have one entry per instance, in a row.
@@ -40,5 +48,9 @@ void main() {
     outColor = inColor;
     MaterialData material = materials[draw.material.x];
     for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) outTexUv[slot] = transformUv(material.uv[slot], inUv0, inUv1);
+#ifdef CANDELA_MATERIAL_LAYERS
+    MaterialLayerData layer = layers[draw.material.x];
+    for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) outLayerUv[slot] = transformUv(layer.uv[slot], inUv0, inUv1);
+#endif
     gl_Position = push.viewProjection * world;
 }

@@ -6,13 +6,13 @@ namespace candela::passes {
 
 using namespace graph;
 
-BrdfProbePass::BrdfProbePass(vk::Context& context) : mPipeline(vk::Pipeline::compute(context, "brdf_probe.comp")) {}
+BrdfProbePass::BrdfProbePass(vk::Context& context, Brdf brdf)
+    : mPipeline(vk::Pipeline::compute(context, brdf == Brdf::Layers ? "brdf_layers_probe.comp" : "brdf_probe.comp")) {}
 
-TextureId BrdfProbePass::add(RenderGraph& graph, float intensity) const {
+TextureId BrdfProbePass::add(RenderGraph& graph, const shading::BrdfProbeParams& params) const {
     struct Data {
         TextureId probe;
     };
-    const shading::BrdfProbeParams params{.intensity = intensity};
     const Data& data = graph.addPass<Data>(
         "brdf_probe", PassType::Compute,
         [&](PassBuilder& builder, Data& d) {

@@ -11,6 +11,21 @@ namespace candela::passes {
 using namespace graph;
 
 static_assert(uint32_t(DebugView::Specular) == CANDELA_DEBUG_SPECULAR && uint32_t(DebugView::D) == CANDELA_DEBUG_D);
+static_assert(scene::kLayerSpecular == CANDELA_LAYER_SPECULAR);
+
+namespace {
+
+// The layer names of `layers` (scene::MaterialLayer bits), "+"-separated.
+std::string layerNames(uint32_t layers) {
+    std::string out;
+    if (layers & scene::kLayerSpecular) out += "+specular";
+    return out;
+}
+
+// Whether material `m` is drawn by the layered program.
+bool layered(const scene::Material& m) { return !m.unlit && m.layers() != 0; }
+
+}  // namespace
 
 std::string ForwardPass::Variant::name() const {
     std::string out = unlit ? "unlit" : model == ShadingModel::BlinnPhong ? "blinn-phong"
@@ -22,6 +37,7 @@ std::string ForwardPass::Variant::name() const {
     if (blend) out += "+blend";
     if (ibl && !unlit) out += std::string("+ibl-") + (irradianceSh ? "sh9" : "cube") + (multiscatter ? "" : "-single-scatter") +
                (referenceSamples ? "-reference" + std::to_string(referenceSamples) : "");
+    out += layerNames(layers);
     if (debugView != DebugView::None) out += std::string("+debug-") + debugViewName(debugView);
     return out;
 }
@@ -29,12 +45,14 @@ std::string ForwardPass::Variant::name() const {
 ForwardPass::ForwardPass(vk::Context& context) : mContext(context), mIblSet(context) {}
 
 const vk::Pipeline& ForwardPass::pipeline(const Variant& v) {
-    return mPipelines.get(mContext, v,
-                          [&] { return vk::Pipeline::graphics(mContext, "forward.vert", "forward.frag", desc(v)); });
+    return mPipelines.get(mContext, v, [&] {
+        return v.layers ? vk::Pipeline::graphics(mContext, "forward_layers.vert", "forward_layers.frag", desc(v))
+                        : vk::Pipeline::graphics(mContext, "forward.vert", "forward.frag", desc(v));
+    });
 }
 
 vk::GraphicsPipelineDesc ForwardPass::desc(const Variant& v) {
-    return {
+    vk::GraphicsPipelineDesc out{
         .colorFormats = {kHdrFormat},
         .depthFormat = kDepthFormat,
         .depthTest = true,
@@ -51,6 +69,9 @@ vk::GraphicsPipelineDesc ForwardPass::desc(const Variant& v) {
                              {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv0)},
                              {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv1)},
                              {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, color)}}};
+    // Only the layered program has kLayers (constant 10): core pipelines stay as they were.
+    if (v.layers) out.specialization.push_back(v.layers);
+    return out;
 }
 
 ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl,
@@ -68,7 +89,15 @@ ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingMode
     v.multiscatter = !v.ibl || ibl->multiscatter;
     v.referenceSamples = v.ibl ? ibl->referenceSamples : 0;
     v.debugView = debugView;
+    v.layers = layered(m) ? m.layers() : 0;
     return v;
+}
+
+const shader::ShaderReflection* ForwardPass::layeredReflection() {
+    if (!mScene) return nullptr;
+    for (const scene::Material& m : mScene->scene().materials)
+        if (layered(m)) return &pipeline(Variant{.layers = m.layers()}).program().reflection();
+    return nullptr;
 }
 
 void ForwardPass::setScene(const scene::GpuScene& gpuScene) {
@@ -84,11 +113,23 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene) {
                     .commit(mContext, *mSets);
     static constexpr const char* kSlots[CANDELA_TEX_COUNT] = {"baseColorTexture", "metallicRoughnessTexture",
                                                                "normalTexture", "occlusionTexture", "emissiveTexture"};
+    static constexpr const char* kLayerSlots[CANDELA_LAYER_TEX_COUNT] = {"specularTexture", "specularColorTexture"};
     for (uint32_t material = 0; material < gpuScene.scene().materials.size(); ++material) {
-        vk::DescriptorWriter writer(any.program(), 1);
+        // A layered material's set follows the layered program's layout: its core textures, then
+        // every material's layer parameters and its own layer textures.
+        const scene::Material& m = gpuScene.scene().materials[material];
+        const vk::Program& program = layered(m) ? pipeline(Variant{.layers = m.layers()}).program() : any.program();
+        vk::DescriptorWriter writer(program, 1);
         for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
             const scene::GpuScene::Binding b = gpuScene.texture(material, slot);
             writer.image(kSlots[slot], b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
+        }
+        if (layered(m)) {
+            writer.buffer("MaterialLayers", gpuScene.materialLayerBuffer());
+            for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) {
+                const scene::GpuScene::Binding b = gpuScene.layerTexture(material, slot);
+                writer.image(kLayerSlots[slot], b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
+            }
         }
         mMaterialSets.push_back(writer.commit(mContext, *mSets));
     }
@@ -141,6 +182,15 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
         mExplanation.emplace_back("left out: normal mapping / TBN work (no material has a normal texture)");
     if (std::none_of(scene.materials.begin(), scene.materials.end(), [](const scene::Material& m) { return m.unlit; }))
         mExplanation.emplace_back("left out: unlit variant (no KHR_materials_unlit material)");
+    bool anyLayered = false;
+    for (const scene::Material& m : scene.materials) {
+        if (!layered(m)) continue;
+        anyLayered = true;
+        mExplanation.push_back("material '" + m.name + "' pays for layers: " + layerNames(m.layers()).substr(1) +
+                               " (the layered forward program)");
+    }
+    if (!anyLayered)
+        mExplanation.emplace_back("left out: material layers (no material uses a KHR_materials_* layer; core forward program only)");
 
     struct Data {
         TextureId hdr;

@@ -73,8 +73,12 @@ public:
                ShadingModel model, const Ibl* ibl = nullptr, shader::ParameterRegistry* parameters = nullptr,
                DebugView debugView = DebugView::None, const PosedDraws* posed = nullptr,
                const DeformedVertices* deformed = nullptr);
-    // The reflection of the forward shaders (every variant shares the layout).
+    // The reflection of the forward shaders without layers (every variant shares sets 0 and 2 and
+    // the push constants; the layered program adds to set 1).
     const shader::ShaderReflection& reflection() { return pipeline(Variant{}).program().reflection(); }
+    // The reflection of the layered program (its MaterialLayers buffer), when the current scene
+    // has a material with a layer; null otherwise.
+    const shader::ShaderReflection* layeredReflection();
 
     // What the last add() used and left out, one line each, for `--explain`.
     const std::vector<std::string>& explanation() const { return mExplanation; }
@@ -95,6 +99,9 @@ private:
         bool multiscatter = true;
         uint32_t referenceSamples = 0;
         DebugView debugView = DebugView::None;
+        // KHR_materials_* layers the material uses (scene::MaterialLayer bits): non-zero selects the
+        // layered program (forward_layers.*), whose kLayers evaluates just these.
+        uint32_t layers = 0;
         auto operator<=>(const Variant&) const = default;
         std::string name() const;
     };

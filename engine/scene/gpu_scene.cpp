@@ -63,6 +63,16 @@ MaterialData materialData(const Material& m) {
     return out;
 }
 
+MaterialLayerData materialLayerData(const Material& m) {
+    MaterialLayerData out{};
+    out.specularColor = m.specularColorFactor;
+    out.specular = m.specularFactor;
+    out.ior = m.ior;
+    out.uv[CANDELA_LAYER_TEX_SPECULAR] = uvTransform(m.specular);
+    out.uv[CANDELA_LAYER_TEX_SPECULAR_COLOR] = uvTransform(m.specularColor);
+    return out;
+}
+
 vk::Image solidTexture(vk::Context& context, vk::Uploader& uploader, std::array<uint8_t, 4> rgba, VkFormat format,
                        const char* name) {
     vk::Image image(context, {.format = format,
@@ -118,7 +128,8 @@ std::vector<shading::DrawData> drawDataOf(const Scene& scene, std::span<const Dr
     return out;
 }
 
-GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights, float maxAnisotropy)
+GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights, float maxAnisotropy,
+                   bool sceneLights)
     : mScene(&scene), mContext(&context) {
     vk::Uploader uploader(context);
     const bool deformable = !scene.deformations.empty();
@@ -139,7 +150,8 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     mIndices = uploadedBuffer(context, uploader, scene.indices, "indices", VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
     std::vector<LightData>& lights = mSceneLights;
-    for (const Light& l : scene.lights) lights.push_back(lightData(l));
+    if (sceneLights)
+        for (const Light& l : scene.lights) lights.push_back(lightData(l));
     for (const Light& l : extraLights) lights.push_back(lightData(l));
     mLightCount = static_cast<uint32_t>(lights.size());
     mLights = uploadedBuffer(context, uploader, lights, "lights");
@@ -150,6 +162,11 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     std::vector<MaterialData>& materials = mSceneMaterials;
     for (const Material& m : scene.materials) materials.push_back(materialData(m));
     mMaterials = uploadedBuffer(context, uploader, materials, "materials");
+    if (std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.layers() != 0; })) {
+        for (const Material& m : scene.materials) mSceneLayers.push_back(materialLayerData(m));
+        mMaterialLayers = uploadedBuffer(context, uploader, mSceneLayers, "material_layers");
+        mLayerData = mSceneLayers;
+    }
     mLightData = mSceneLights;
     mMaterialData = mSceneMaterials;
 
@@ -184,32 +201,37 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
                                                   .addressV = VK_SAMPLER_ADDRESS_MODE_REPEAT,
                                                   .maxAnisotropy = maxAnisotropy});
 
+    // A texture's view and sampler, or `fallback` (1×1) with the default sampler without one.
+    const auto binding = [&](const TextureRef& ref, const vk::Image& fallback) {
+        const bool has = ref.present() && static_cast<size_t>(ref.image) < mImages.size();
+        const bool hasSampler = ref.sampler >= 0 && static_cast<size_t>(ref.sampler) < mSamplers.size();
+        return Binding{has ? mImages[ref.image].view() : fallback.view(),
+                       hasSampler ? mSamplers[ref.sampler].get() : mDefaultSampler.get()};
+    };
     for (const Material& m : scene.materials) {
-        const TextureRef* refs[] = {&m.baseColor, &m.metallicRoughness, &m.normal, &m.occlusion, &m.emissive};
-        std::array<Binding, 5> bindings{};
-        for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
-            const TextureRef& ref = *refs[slot];
-            const bool has = ref.present() && static_cast<size_t>(ref.image) < mImages.size();
-            bindings[slot].view = has ? mImages[ref.image].view()
-                                      : (slot == CANDELA_TEX_NORMAL ? mFlatNormal.view() : mWhite.view());
-            const bool hasSampler = ref.sampler >= 0 && static_cast<size_t>(ref.sampler) < mSamplers.size();
-            bindings[slot].sampler = hasSampler ? mSamplers[ref.sampler].get() : mDefaultSampler.get();
-        }
-        mBindings.push_back(bindings);
+        mBindings.push_back({binding(m.baseColor, mWhite), binding(m.metallicRoughness, mWhite), binding(m.normal, mFlatNormal),
+                             binding(m.occlusion, mWhite), binding(m.emissive, mWhite)});
+        mLayerBindings.push_back({binding(m.specular, mWhite), binding(m.specularColor, mWhite)});
     }
 }
 
-void GpuScene::rewrite(const std::vector<LightData>& lights, const std::vector<MaterialData>& materials) {
-    if (lights.size() != mSceneLights.size() || materials.size() != mSceneMaterials.size())
-        throw std::invalid_argument("GpuScene::rewrite: the light and material counts cannot change");
+void GpuScene::rewrite(const std::vector<LightData>& lights, const std::vector<MaterialData>& materials,
+                       const std::vector<MaterialLayerData>& layers) {
+    if (lights.size() != mSceneLights.size() || materials.size() != mSceneMaterials.size() ||
+        layers.size() != mSceneLayers.size())
+        throw std::invalid_argument("GpuScene::rewrite: the light, material and layer counts cannot change");
     vk::Uploader uploader(*mContext);
     if (!lights.empty()) uploader.buffer(mLights, std::as_bytes(std::span(lights)));
     if (!materials.empty()) uploader.buffer(mMaterials, std::as_bytes(std::span(materials)));
+    if (!layers.empty()) uploader.buffer(mMaterialLayers, std::as_bytes(std::span(layers)));
     uploader.submitAndWait();
     mLightData = lights;
     mMaterialData = materials;
+    mLayerData = layers;
 }
 
 GpuScene::Binding GpuScene::texture(uint32_t material, int slot) const { return mBindings.at(material)[slot]; }
+
+GpuScene::Binding GpuScene::layerTexture(uint32_t material, int slot) const { return mLayerBindings.at(material)[slot]; }
 
 }  // namespace candela::scene

@@ -29,17 +29,21 @@ shading::LightData lightData(const Light& light);
 
 class GpuScene {
 public:
-    // Uploads `scene` (one batched submit) with `extraLights` appended to its lights, and samplers
-    // limited to `maxAnisotropy`. Precondition: scene.draws reference valid ranges and materials
-    // (the loader guarantees it). `scene` must outlive the GpuScene.
+    // Uploads `scene` (one batched submit) with `extraLights` appended to its lights (to nothing but
+    // them without `sceneLights`), and samplers limited to `maxAnisotropy`. Precondition:
+    // scene.draws reference valid ranges and materials (the loader guarantees it). `scene` must
+    // outlive the GpuScene.
     GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights = {},
-             float maxAnisotropy = 8.0f);
+             float maxAnisotropy = 8.0f, bool sceneLights = true);
 
     VkBuffer vertexBuffer() const { return mVertices.handle(); }
     VkBuffer indexBuffer() const { return mIndices.handle(); }
     VkBuffer lightBuffer() const { return mLights.handle(); }
     VkBuffer drawBuffer() const { return mDraws.handle(); }
     VkBuffer materialBuffer() const { return mMaterials.handle(); }
+    // The layer parameters of every material (shading::MaterialLayerData), for the layered forward
+    // program; a null handle when no material has a layer (Material::layers()).
+    VkBuffer materialLayerBuffer() const { return mMaterialLayers.handle(); }
     // Morph-target deltas and skin influences of every Scene::deformations entry, concatenated
     // (MorphDelta and JointInfluence layouts); null handles when the scene has no deformations.
     // The vertex buffer can then also be read as a storage buffer (by the skin_morph pass).
@@ -56,9 +60,13 @@ public:
     const std::vector<shading::MaterialData>& sceneMaterials() const { return mSceneMaterials; }
     const std::vector<shading::LightData>& lights() const { return mLightData; }
     const std::vector<shading::MaterialData>& materials() const { return mMaterialData; }
-    // Rewrites both buffers (same element counts as the scene's) and waits for the copy.
+    // The same for the material layers (empty when no material has a layer).
+    const std::vector<shading::MaterialLayerData>& sceneMaterialLayers() const { return mSceneLayers; }
+    const std::vector<shading::MaterialLayerData>& materialLayers() const { return mLayerData; }
+    // Rewrites the buffers (same element counts as the scene's) and waits for the copy.
     // Precondition: no frame in flight reads them (the caller waits for the GPU).
-    void rewrite(const std::vector<shading::LightData>& lights, const std::vector<shading::MaterialData>& materials);
+    void rewrite(const std::vector<shading::LightData>& lights, const std::vector<shading::MaterialData>& materials,
+                 const std::vector<shading::MaterialLayerData>& layers);
 
     // The view and sampler bound to texture slot `slot` (CANDELA_TEX_*) of material `material`:
     // the material's texture, or a 1×1 default (white, or a flat normal for the normal slot).
@@ -67,22 +75,26 @@ public:
         VkSampler sampler;
     };
     Binding texture(uint32_t material, int slot) const;
+    // The same for layer texture slot `slot` (CANDELA_LAYER_TEX_*): a 1×1 white default.
+    Binding layerTexture(uint32_t material, int slot) const;
 
     const Scene& scene() const { return *mScene; }
 
 private:
     const Scene* mScene;
-    vk::Buffer mVertices, mIndices, mLights, mDraws, mMaterials, mDeltas, mInfluences;
+    vk::Buffer mVertices, mIndices, mLights, mDraws, mMaterials, mMaterialLayers, mDeltas, mInfluences;
     std::vector<uint32_t> mDeltaBase, mInfluenceBase;
     uint32_t mLightCount = 0;
     vk::Context* mContext;
     std::vector<shading::LightData> mSceneLights, mLightData;
     std::vector<shading::MaterialData> mSceneMaterials, mMaterialData;
+    std::vector<shading::MaterialLayerData> mSceneLayers, mLayerData;
     std::vector<vk::Image> mImages;
     std::vector<vk::Sampler> mSamplers;
     vk::Sampler mDefaultSampler;
     vk::Image mWhite, mFlatNormal;
-    std::vector<std::array<Binding, 5>> mBindings;  // per material, per slot
+    std::vector<std::array<Binding, CANDELA_TEX_COUNT>> mBindings;             // per material, per slot
+    std::vector<std::array<Binding, CANDELA_LAYER_TEX_COUNT>> mLayerBindings;  // per material, per layer slot
 };
 
 }  // namespace candela::scene

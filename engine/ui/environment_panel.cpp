@@ -1,5 +1,5 @@
 // The environment / IBL panel: which environment lights the scene (a dropped .hdr/.exr, the
-// built-in sky, or none), how it is looked up (rotation, intensity, skybox, blur, multiscatter),
+// built-in sky, or none) and whether the file's own punctual lights join it, how it is looked up (rotation, intensity, skybox, blur, multiscatter),
 // and the precompute quality — each setting `candela ibl-report` measured listed with the time
 // (× the calibration pass) and the errors it measured, applied with the recompute button.
 
@@ -29,6 +29,12 @@ void drawEnvironmentPanel(Viewer& viewer) {
     if (ImGui::Button("None")) viewer.useNoEnvironment();
     ImGui::SameLine();
     ImGui::TextDisabled("or drop an .hdr/.exr");
+    if (settings.scene && !settings.scene->lights.empty()) {
+        // Off: the file's KHR_lights_punctual lights are left out (image-based lighting alone).
+        ImGui::Checkbox("scene lights", &settings.sceneLights);
+        ImGui::SameLine();
+        ImGui::TextDisabled("(%zu in the file)", settings.scene->lights.size());
+    }
     if (!environment) return;
 
     ibl::IblLook& look = settings.ibl;

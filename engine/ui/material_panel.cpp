@@ -1,6 +1,7 @@
 // The material inspector: the scene's materials (pick one from the list, or left-click a mesh),
 // what the selected one uses, and its factors — the reflected members of the forward shaders'
-// MaterialData, edited live through the parameter registry ("forward", "Materials[i]").
+// MaterialData and, for a material with layers, of the layered program's MaterialLayerData, edited
+// live through the parameter registry ("forward", "Materials[i]" and "MaterialLayers[i]").
 
 #include "ui/panels.h"
 #include "ui/parameter_widgets.h"
@@ -48,13 +49,18 @@ void drawMaterialPanel(Viewer& viewer) {
                                                                       {"metallic-roughness", &m.metallicRoughness},
                                                                       {"normal", &m.normal},
                                                                       {"occlusion", &m.occlusion},
-                                                                      {"emissive", &m.emissive}};
+                                                                      {"emissive", &m.emissive},
+                                                                      {"specular", &m.specular},
+                                                                      {"specular colour", &m.specularColor}};
     for (const auto& [name, ref] : slots)
         if (ref->present()) textures += (textures.empty() ? "" : ", ") + std::string(name);
     ImGui::TextWrapped("textures: %s", textures.empty() ? "none" : textures.c_str());
     ImGui::Text("alpha: %s%s%s", alphaModeName(m.alphaMode), m.doubleSided ? ", double-sided" : "", m.unlit ? ", unlit" : "");
     shader::ParameterRegistry& registry = viewer.renderer().parameters();
     if (const auto* block = registry.find("forward", "Materials[" + std::to_string(selected) + "]"))
+        drawParameterBlock(registry, *block);
+    if (m.layers() & scene::kLayerSpecular) ImGui::TextDisabled("layers: specular (KHR_materials_ior, KHR_materials_specular)");
+    if (const auto* block = registry.find("forward", "MaterialLayers[" + std::to_string(selected) + "]"))
         drawParameterBlock(registry, *block);
 }
 

@@ -22,7 +22,8 @@ void drawParameterPanel(Viewer& viewer) {
         const std::string& pass = graph.declaration().passes[p].name;
         const auto inPass = [&](const shader::ParameterRegistry::Block& b, bool lights) {
             return b.pass == pass && b.frame == registry.frame() && !b.members.empty() &&
-                   (b.name.rfind("Lights[", 0) == 0) == lights && b.name.rfind("Materials[", 0) != 0;
+                   (b.name.rfind("Lights[", 0) == 0) == lights && b.name.rfind("Materials[", 0) != 0 &&
+                   b.name.rfind("MaterialLayers[", 0) != 0;  // the material inspector's
         };
         const auto& blocks = registry.blocks();
         const bool any = std::any_of(blocks.begin(), blocks.end(), [&](const auto& b) { return inPass(b, false) || inPass(b, true); });

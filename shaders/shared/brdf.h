@@ -68,6 +68,34 @@ struct BrdfLobes {
     vec3 specular;
 };
 
+// The angles between N, V, L and the half vector H that the BRDFs read, with the clamps above.
+// Only meaningful when NoL > 0 (the light is in front of the surface).
+struct BrdfAngles {
+    float NoL;
+    float NoV;           // clamped to ≥ CANDELA_MIN_NOV
+    float NoH;           // clamped to [0, 1]
+    float VoH;           // clamped to [0, 1]
+    float oneMinusNoH2;  // |N × H|² (1 where N·H was clamped to 0), for distributionGgx
+    float specularWeight;  // 0 when V = −L: no half vector, no specular term
+};
+
+CANDELA_FN BrdfAngles brdfAngles(vec3 N, vec3 V, vec3 L) {
+    BrdfAngles g;
+    g.NoL = dot(N, L);
+    g.NoV = max(dot(N, V), CANDELA_MIN_NOV);
+    vec3 H = V + L;
+    float lengthH = length(H);
+    // V = −L (only possible with V below the surface, e.g. normal-mapped back faces): there is no
+    // half vector and no mirror configuration, so there is no specular term.
+    g.specularWeight = lengthH > 1e-6f ? 1.0f : 0.0f;
+    H = lengthH > 1e-6f ? H / lengthH : N;
+    g.NoH = clamp(dot(N, H), 0.0f, 1.0f);
+    g.VoH = clamp(dot(V, H), 0.0f, 1.0f);
+    vec3 NxH = cross(N, H);
+    g.oneMinusNoH2 = g.NoH > 0.0f ? dot(NxH, NxH) : 1.0f;
+    return g;
+}
+
 // Reflected radiance per unit incident radiance from direction L, f(V, L) · (N·L), as its diffuse
 // and specular lobes. N, V, L unit vectors; V points to the viewer, L to the light.
 CANDELA_FN BrdfLobes brdfLobesTimesCosine(vec3 N, vec3 V, vec3 L, vec3 baseColor, float metallic,
@@ -75,17 +103,12 @@ CANDELA_FN BrdfLobes brdfLobesTimesCosine(vec3 N, vec3 V, vec3 L, vec3 baseColor
     BrdfLobes lobes;
     lobes.diffuse = vec3(0.0f);
     lobes.specular = vec3(0.0f);
-    float NoL = dot(N, L);
-    if (NoL <= 0.0f) return lobes;
-    float NoV = max(dot(N, V), CANDELA_MIN_NOV);
-    vec3 H = V + L;
-    float lengthH = length(H);
-    // V = −L (only possible with V below the surface, e.g. normal-mapped back faces): there is no
-    // half vector and no mirror configuration, so there is no specular term.
-    float specularWeight = lengthH > 1e-6f ? 1.0f : 0.0f;
-    H = lengthH > 1e-6f ? H / lengthH : N;
-    float NoH = clamp(dot(N, H), 0.0f, 1.0f);
-    float VoH = clamp(dot(V, H), 0.0f, 1.0f);
+    BrdfAngles g = brdfAngles(N, V, L);
+    if (g.NoL <= 0.0f) return lobes;
+    float NoL = g.NoL;
+    float NoV = g.NoV;
+    float NoH = g.NoH;
+    float specularWeight = g.specularWeight;
 
     if (model == CANDELA_SHADING_BLINN_PHONG) {
         // The original project's shader: diffuse + specular, no energy conservation.
@@ -99,9 +122,8 @@ CANDELA_FN BrdfLobes brdfLobesTimesCosine(vec3 N, vec3 V, vec3 L, vec3 baseColor
     float roughness = clampRoughness(perceptualRoughness);
     float a = roughness * roughness;
     vec3 f0 = mix(vec3(0.04f), baseColor, metallic);
-    vec3 F = fresnelSchlick(VoH, f0);
-    vec3 NxH = cross(N, H);
-    float D = distributionGgx(NoH, NoH > 0.0f ? dot(NxH, NxH) : 1.0f, a);  // 1 where N·H was clamped to 0
+    vec3 F = fresnelSchlick(g.VoH, f0);
+    float D = distributionGgx(NoH, g.oneMinusNoH2, a);
     float Vis = model == CANDELA_SHADING_PBR_SCHLICK_GGX ? visibilitySchlickGgx(NoV, NoL, roughness)
                                                           : visibilitySmithGgxCorrelated(NoV, NoL, a);
     lobes.specular = F * (D * Vis * specularWeight) * NoL;

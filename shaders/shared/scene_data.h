@@ -42,6 +42,15 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_TEX_EMISSIVE 4
 #define CANDELA_TEX_COUNT 5
 
+// Material layers beyond the core model (bits of the layered program's kLayers; scene::MaterialLayer).
+#define CANDELA_LAYER_SPECULAR 1u  // KHR_materials_ior, KHR_materials_specular
+
+// Texture slots of the layers, bound after the core ones in descriptor set 1 of the layered
+// program (bindings 6 and up; binding 5 is the MaterialLayers buffer).
+#define CANDELA_LAYER_TEX_SPECULAR 0
+#define CANDELA_LAYER_TEX_SPECULAR_COLOR 1
+#define CANDELA_LAYER_TEX_COUNT 2
+
 // One punctual light (KHR_lights_punctual), world space.
 struct LightData {
     /*Ignore*/ vec4 positionRange;   // xyz position, w range (0 = infinite)
@@ -77,6 +86,18 @@ struct MaterialData {
     /*Ignore*/ float pad0;
     /*Ignore*/ float pad1;
     /*Ignore*/ UvTransform uv[CANDELA_TEX_COUNT];
+};
+
+// A material's layer parameters (the layered program's MaterialLayers buffer, one per material;
+// read only for the layers the material uses).
+struct MaterialLayerData {
+    /*Color*/ vec3 specularColor;      // KHR_materials_specular specularColorFactor (may exceed 1)
+    /*Range(0, 1)*/ float specular;    // specularFactor
+    /*Range(0, 3)*/ float ior;         // KHR_materials_ior (0: f0 = specularColor, see shared/brdf_layers.h)
+    /*Ignore*/ float pad0;
+    /*Ignore*/ float pad1;
+    /*Ignore*/ float pad2;
+    /*Ignore*/ UvTransform uv[CANDELA_LAYER_TEX_COUNT];
 };
 
 // Push constants of forward.vert/frag: the view, which draw this is and the environment lookup
@@ -116,6 +137,7 @@ CANDELA_NAMESPACE_END
 static_assert(sizeof(candela::shading::LightData) == 64);
 static_assert(sizeof(candela::shading::DrawData) == 144);
 static_assert(sizeof(candela::shading::MaterialData) == 64 + 32 * CANDELA_TEX_COUNT);
+static_assert(sizeof(candela::shading::MaterialLayerData) == 32 + 32 * CANDELA_LAYER_TEX_COUNT);
 static_assert(sizeof(candela::shading::ForwardPush) == 128);
 #endif
 

@@ -57,6 +57,14 @@ TEST(CliParse, AnimationFlags) {
     EXPECT_THROW(parseCommandLine({"view", "--fps", "24"}), UserError);  // sequences are render's
 }
 
+TEST(CliParse, SceneLights) {
+    EXPECT_TRUE(parseCommandLine({"render"}).render.sceneLights);
+    EXPECT_FALSE(parseCommandLine({"render", "--scene-lights", "off"}).render.sceneLights);
+    EXPECT_TRUE(parseCommandLine({"bench", "--scene-lights=on"}).render.sceneLights);
+    EXPECT_FALSE(parseCommandLine({"view", "--scene-lights", "off"}).render.sceneLights);
+    EXPECT_THROW(parseCommandLine({"render", "--scene-lights", "no"}), UserError);
+}
+
 TEST(CliParse, Errors) {
     EXPECT_THROW(parseCommandLine({"render", "--bogus"}), UserError);
     EXPECT_THROW(parseCommandLine({"render", "stray"}), UserError);

@@ -40,16 +40,19 @@ constexpr double kFloor = 1e-6;
 
 // Builds the graph brdf_probe → readback (into an imported host-visible buffer), compiles it,
 // realizes its transients, executes it in a frame slot and returns the probe image's texels.
-std::vector<glm::vec4> runProbe(vk::Context& context, float intensity) {
-    const BrdfProbePass probe(context);
+std::vector<glm::vec4> runProbe(vk::Context& context, const shading::BrdfProbeParams& params,
+                                BrdfProbePass::Brdf brdf = BrdfProbePass::Brdf::Core) {
+    const BrdfProbePass probe(context, brdf);
     GraphRunner runner(context);
     graph::RenderGraph graph;
     const VkDeviceSize bytes = sizeof(glm::vec4) * BrdfProbePass::kWidth * BrdfProbePass::kHeight;
     const graph::BufferId target = runner.readbackBuffer(graph, "brdf probe readback", bytes);
-    passes::addReadbackPass(graph, probe.add(graph, intensity), target);
+    passes::addReadbackPass(graph, probe.add(graph, params), target);
     runner.run(graph);
     return runner.read<glm::vec4>(target);
 }
+
+std::vector<glm::vec4> runProbe(vk::Context& context, float intensity) { return runProbe(context, {.intensity = intensity}); }
 
 std::string describe(const shading::BrdfProbeSample& s, uint32_t x, uint32_t y, int channel, float got, double expected) {
     std::ostringstream out;
@@ -61,17 +64,26 @@ std::string describe(const shading::BrdfProbeSample& s, uint32_t x, uint32_t y, 
     return out.str();
 }
 
+// The reference of probe combination `s`: the core BRDF, or with `layer` the specular layer's
+// (Blinn-Phong has none and stays the core's, as in the forward pass).
+glm::dvec3 referenceOf(const shading::BrdfProbeSample& s, const shading::BrdfProbeParams* layer) {
+    if (!layer || s.model == ref::kBlinnPhong)
+        return ref::brdfTimesCosine(glm::dvec3(s.N), glm::dvec3(s.V), glm::dvec3(s.L), glm::dvec3(s.baseColor), s.metallic,
+                                    s.perceptualRoughness, s.model);
+    return ref::brdfTimesCosineDielectric(glm::dvec3(s.N), glm::dvec3(s.V), glm::dvec3(s.L), glm::dvec3(s.baseColor),
+                                          s.metallic, s.perceptualRoughness, s.model, layer->ior, layer->specular,
+                                          glm::dvec3(layer->specularColor));
+}
+
 // Compares every texel with the reference times `intensity`; checks finiteness and the index.
-void checkProbe(const std::vector<glm::vec4>& texels, float intensity) {
+void checkProbe(const std::vector<glm::vec4>& texels, float intensity, const shading::BrdfProbeParams* layer = nullptr) {
     ref::ErrorStats stats[3] = {{.floor = kFloor * intensity}, {.floor = kFloor * intensity}, {.floor = kFloor * intensity}};
     uint64_t nonFinite = 0, wrongIndex = 0;
     for (uint32_t y = 0; y < BrdfProbePass::kHeight; ++y)
         for (uint32_t x = 0; x < BrdfProbePass::kWidth; ++x) {
             const glm::vec4& got = texels[size_t(y) * BrdfProbePass::kWidth + x];
             const shading::BrdfProbeSample s = shading::brdfProbeSample(glm::uvec2(x, y));
-            const glm::dvec3 expected = ref::brdfTimesCosine(glm::dvec3(s.N), glm::dvec3(s.V), glm::dvec3(s.L),
-                                                             glm::dvec3(s.baseColor), s.metallic, s.perceptualRoughness,
-                                                             s.model) * double(intensity);
+            const glm::dvec3 expected = referenceOf(s, layer) * double(intensity);
             for (int c = 0; c < 4; ++c) nonFinite += std::isfinite(got[c]) ? 0 : 1;
             wrongIndex += got.w == float(y * BrdfProbePass::kWidth + x) ? 0 : 1;
             for (int c = 0; c < 3; ++c)
@@ -95,6 +107,27 @@ void checkProbe(const std::vector<glm::vec4>& texels, float intensity) {
 TEST_F(GpuTest, BrdfProbeMatchesDoubleReference) { checkProbe(runProbe(context(), 1.0f), 1.0f); }
 
 TEST_F(GpuTest, BrdfProbeStaysFiniteAtIntensity1e6) { checkProbe(runProbe(context(), 1e6f), 1e6f); }
+
+// The specular layer (KHR_materials_ior, _specular) over the grid, at the core's values, at the
+// extremes (IOR exactly 1: f0 = 0; IOR 10; IOR 0 with a specular colour above 1: f0 clamped to 1;
+// specular 0: no specular reflection, all diffuse) and in between; same metric and tolerances.
+TEST_F(GpuTest, SpecularLayerProbeMatchesDoubleReference) {
+    const shading::BrdfProbeParams layers[] = {
+        {.intensity = 1.0f, .ior = 1.5f, .specular = 1.0f, .specularColor = glm::vec4(1.0f)},
+        {.intensity = 1.0f, .ior = 1.0f, .specular = 1.0f, .specularColor = glm::vec4(1.0f)},
+        {.intensity = 1.0f, .ior = 10.0f, .specular = 1.0f, .specularColor = glm::vec4(1.0f)},
+        {.intensity = 1.0f, .ior = 0.0f, .specular = 1.0f, .specularColor = glm::vec4(2.0f, 1.0f, 0.25f, 0.0f)},
+        {.intensity = 1.0f, .ior = 1.33f, .specular = 0.5f, .specularColor = glm::vec4(1.0f, 0.5f, 0.0f, 0.0f)},
+        {.intensity = 1.0f, .ior = 1.5f, .specular = 0.0f, .specularColor = glm::vec4(1.0f)},
+        {.intensity = 1e6f, .ior = 1.0f, .specular = 1.0f, .specularColor = glm::vec4(1.0f)},
+    };
+    for (const shading::BrdfProbeParams& layer : layers) {
+        SCOPED_TRACE(::testing::Message() << "ior " << layer.ior << ", specular " << layer.specular << ", colour ("
+                                          << layer.specularColor.x << ", " << layer.specularColor.y << ", "
+                                          << layer.specularColor.z << "), intensity " << layer.intensity);
+        checkProbe(runProbe(context(), layer, BrdfProbePass::Brdf::Layers), layer.intensity, &layer);
+    }
+}
 
 }  // namespace
 }  // namespace candela::test

@@ -6,6 +6,7 @@
 #include "scene/builtin_scenes.h"
 #include "shared/tonemap.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -54,6 +55,36 @@ TEST_F(GpuTest, TransparentBackgroundWritesAlphaZeroOutsideGeometry) {
     EXPECT_EQ(frame.rgba8[3], 0);  // corner: background
     const size_t centre = (size_t(45) * 160 + 80) * 4;  // the middle sphere
     EXPECT_EQ(frame.rgba8[centre + 3], 255);
+}
+
+TEST_F(GpuTest, SceneLightsOffLeavesTheFilesLightsOut) {
+    // The grid's four point lights are the scene's own: off, with no default lights and no
+    // environment, nothing lights the spheres — covered pixels stay, black; with default lights
+    // the scene counts as light-less and gets the key and fill lights instead.
+    const scene::Scene grid = scene::makeSphereGrid();
+    Renderer renderer(context());
+    RenderSettings settings{.width = 160, .height = 90, .floatOutput = true, .scene = &grid, .defaultLights = false,
+                            .sceneLights = false};
+    const CapturedFrame dark = renderer.capture(settings);
+    size_t covered = 0;
+    for (size_t i = 0; i < dark.rgba32f.size(); i += 4) {
+        if (dark.rgba32f[i + 3] < 0.5f) continue;
+        ++covered;
+        for (int c = 0; c < 3; ++c) ASSERT_EQ(dark.rgba32f[i + size_t(c)], 0.0f) << "texel " << i / 4;
+    }
+    EXPECT_GT(covered, dark.rgba32f.size() / 4 * 8 / 100);
+    const std::vector<std::string> notes = renderer.explain();
+    EXPECT_NE(std::find(notes.begin(), notes.end(), "left out: the scene's 4 punctual lights (--scene-lights off)"), notes.end());
+
+    settings.defaultLights = true;
+    const CapturedFrame keyFill = renderer.capture(settings);
+    settings.sceneLights = true;
+    const CapturedFrame own = renderer.capture(settings);
+    double keyFillSum = 0.0, ownSum = 0.0;
+    for (size_t i = 0; i < own.rgba32f.size(); i += 4) keyFillSum += keyFill.rgba32f[i], ownSum += own.rgba32f[i];
+    EXPECT_GT(keyFillSum, 0.0);
+    EXPECT_GT(ownSum, 0.0);
+    EXPECT_GT(std::abs(keyFillSum - ownSum), 0.05 * ownSum);  // different lights, a different image
 }
 
 }  // namespace

@@ -92,6 +92,40 @@ inline glm::dvec3 brdfTimesCosine(const glm::dvec3& N, const glm::dvec3& V, cons
     return (diffuse + specular) * NoL;
 }
 
+// The specular layer (KHR_materials_ior, KHR_materials_specular; shaders/shared/brdf_layers.h) in the
+// specification's form: dielectric Fresnel F_d = f0 + (f90 − f0)(1 − V·H)⁵ with
+// f0 = min(((ior − 1)/(ior + 1))² · specularColor, 1) · specular and f90 = specular; the material
+// (1 − metallic) · (F_d · specular_brdf + (1 − max(F_d)) · diffuse_brdf) + metallic · F_m · specular_brdf,
+// F_m = Schlick(baseColor). Cook-Torrance models only (the layer has no Blinn-Phong form).
+inline glm::dvec3 brdfTimesCosineDielectric(const glm::dvec3& N, const glm::dvec3& V, const glm::dvec3& L,
+                                            const glm::dvec3& baseColor, double metallic, double perceptualRoughness,
+                                            uint32_t model, double ior, double specular, const glm::dvec3& specularColor) {
+    const double NoL = glm::dot(N, L);
+    if (NoL <= 0.0) return glm::dvec3(0.0);
+    const double NoV = std::max(glm::dot(N, V), kMinNoV);
+    const glm::dvec3 sum = V + L;
+    const double sumLength = glm::length(sum);
+    const bool hasHalfVector = sumLength > kMinHalfVectorLength;
+    const glm::dvec3 H = hasHalfVector ? sum / sumLength : N;
+    const double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0);
+    const double VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
+    const double roughness = clampRoughness(perceptualRoughness);
+    const double a = roughness * roughness;
+    const double r = (ior - 1.0) / (ior + 1.0);
+    const glm::dvec3 f0 = glm::min(r * r * specularColor, glm::dvec3(1.0)) * specular;
+    const double w = std::pow(1.0 - VoH, 5.0);
+    const glm::dvec3 dielectricFresnel = f0 + (glm::dvec3(specular) - f0) * w;
+    const glm::dvec3 metalFresnel = fresnelSchlick(VoH, baseColor);
+    const double D = distributionGgx(NoH, a);
+    const double Vis = model == kPbrSchlickGgx ? visibilitySchlickGgx(NoV, NoL, roughness)
+                                               : visibilitySmithGgxCorrelated(NoV, NoL, a);
+    const double specularBrdf = hasHalfVector ? D * Vis : 0.0;
+    const double maxFresnel = std::max({dielectricFresnel.x, dielectricFresnel.y, dielectricFresnel.z});
+    const glm::dvec3 dielectric = dielectricFresnel * specularBrdf + (1.0 - maxFresnel) * baseColor / kPi;
+    const glm::dvec3 metal = metalFresnel * specularBrdf;
+    return ((1.0 - metallic) * dielectric + metallic * metal) * NoL;
+}
+
 // The metric of the BRDF comparisons: relative error |got − expected| / |expected| where
 // |expected| ≥ floor, absolute error |got − expected| below it (where relative error means nothing).
 // Keeps the maxima and a description of the input of each, for the test's messages.

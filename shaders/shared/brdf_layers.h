@@ -1,0 +1,138 @@
+// The material layers beyond glTF's core metallic-roughness model (KHR_materials_*), shared by
+// GLSL (the forward pass's layered program) and C++ (float). Each builds on shared/brdf.h; a
+// double-precision reference of the same formulas lives in tests/ and is compared with the GPU's
+// evaluation of this file (docs/materials.md).
+//
+// Specular layer (KHR_materials_ior, KHR_materials_specular): the dielectric Fresnel
+//   F_d = f0 + (f90 − f0)(1 − V·H)⁵,  f0 = min(((ior − 1)/(ior + 1))² · specularColor, 1) · specular,
+//   f90 = specular,
+// and the material, per glTF 2.0 Appendix B, mix(dielectric, metal, metallic) with
+//   dielectric = F_d · specular_brdf + (1 − max(F_d)) · diffuse_brdf,  metal = F_m · specular_brdf,
+//   F_m = Schlick(baseColor, 1).
+// The core path (shared/brdf.h) weights the diffuse by (1 − F)(1 − metallic), F the mixed Fresnel;
+// the two agree at metallic 0 and 1 (docs/materials.md gives the difference in between).
+#ifndef CANDELA_SHARED_BRDF_LAYERS_H
+#define CANDELA_SHARED_BRDF_LAYERS_H
+
+#include "shared/brdf.h"
+#include "shared/ibl.h"
+
+CANDELA_NAMESPACE_BEGIN
+
+// The Fresnel of the dielectric part of a material: reflectance at normal (f0) and grazing (f90)
+// incidence.
+// 1 − f0 is kept apart, computed without cancellation: near f0 = 1 (large IORs, IOR 0) the diffuse
+// weight 1 − F would otherwise lose all its digits in float.
+struct DielectricFresnel {
+    vec3 f0;
+    float f90;
+    vec3 oneMinusF0;
+};
+
+// The core material's: IOR 1.5 (f0 = 0.04), f90 = 1.
+CANDELA_FN DielectricFresnel coreDielectricFresnel() {
+    DielectricFresnel d;
+    d.f0 = vec3(0.04f);
+    d.f90 = 1.0f;
+    d.oneMinusF0 = vec3(0.96f);
+    return d;
+}
+
+// KHR_materials_ior and KHR_materials_specular. `ior` 0 gives f0 = specularColor (clamped to 1):
+// the specification's conversion of specular-glossiness materials.
+CANDELA_FN DielectricFresnel dielectricFresnel(float ior, vec3 specularColor, float specular) {
+    float r = (ior - 1.0f) / (ior + 1.0f);
+    float r2 = r * r;
+    // 1 − r² = 4 ior / (ior + 1)², and 1 − r²c = (1 − r²) + r²(1 − c): no difference of near-equal
+    // numbers for c = 1, whatever the IOR.
+    float oneMinusR2 = 4.0f * ior / ((ior + 1.0f) * (ior + 1.0f));
+    vec3 oneMinusClamped = max(vec3(oneMinusR2) + r2 * (vec3(1.0f) - specularColor), vec3(0.0f));
+    DielectricFresnel d;
+    d.f0 = min(vec3(r2) * specularColor, vec3(1.0f)) * specular;
+    d.f90 = specular;
+    d.oneMinusF0 = vec3(1.0f - specular) + specular * oneMinusClamped;
+    return d;
+}
+
+CANDELA_FN float maxComponent(vec3 c) { return max(c.x, max(c.y, c.z)); }
+CANDELA_FN float minComponent(vec3 c) { return min(c.x, min(c.y, c.z)); }
+
+// 1 − F_d at Schlick weight w: (1 − f0)(1 − w) + (1 − f90) w, from the cancellation-free 1 − f0.
+CANDELA_FN vec3 oneMinusFresnelDielectric(float w, DielectricFresnel d) {
+    return d.oneMinusF0 * (1.0f - w) + vec3((1.0f - d.f90) * w);
+}
+
+// Schlick's weight (1 − V·H)⁵.
+CANDELA_FN float schlickWeight(float VoH) {
+    float x = 1.0f - clamp(VoH, 0.0f, 1.0f);
+    float x2 = x * x;
+    return x2 * x2 * x;
+}
+
+// The dielectric Fresnel at V·H.
+CANDELA_FN vec3 fresnelDielectric(float VoH, DielectricFresnel d) {
+    return d.f0 + (vec3(d.f90) - d.f0) * schlickWeight(VoH);
+}
+
+// The Fresnel of the whole material: dielectric and metal (F0 = baseColor, F90 = 1) mixed by metallic.
+CANDELA_FN vec3 fresnelDielectricMetal(float VoH, vec3 baseColor, float metallic, DielectricFresnel d) {
+    vec3 metal = baseColor + (vec3(1.0f) - baseColor) * schlickWeight(VoH);
+    return mix(fresnelDielectric(VoH, d), metal, metallic);
+}
+
+// brdfLobesTimesCosine (shared/brdf.h) with the dielectric Fresnel `d` and the Appendix B mix.
+// `model` is CANDELA_SHADING_PBR or CANDELA_SHADING_PBR_SCHLICK_GGX.
+CANDELA_FN BrdfLobes brdfLobesTimesCosineDielectric(vec3 N, vec3 V, vec3 L, vec3 baseColor, float metallic,
+                                                    float perceptualRoughness, uint model, DielectricFresnel d) {
+    BrdfLobes lobes;
+    lobes.diffuse = vec3(0.0f);
+    lobes.specular = vec3(0.0f);
+    BrdfAngles g = brdfAngles(N, V, L);
+    if (g.NoL <= 0.0f) return lobes;
+    float roughness = clampRoughness(perceptualRoughness);
+    float a = roughness * roughness;
+    float D = distributionGgx(g.NoH, g.oneMinusNoH2, a);
+    float Vis = model == CANDELA_SHADING_PBR_SCHLICK_GGX ? visibilitySchlickGgx(g.NoV, g.NoL, roughness)
+                                                          : visibilitySmithGgxCorrelated(g.NoV, g.NoL, a);
+    float w = schlickWeight(g.VoH);
+    vec3 dielectric = d.f0 + (vec3(d.f90) - d.f0) * w;
+    vec3 metal = baseColor + (vec3(1.0f) - baseColor) * w;
+    lobes.specular = mix(dielectric, metal, metallic) * (D * Vis * g.specularWeight) * g.NoL;
+    // 1 − max(F_d), the specification's diffuse weight.
+    float diffuseWeight = minComponent(oneMinusFresnelDielectric(w, d));
+    lobes.diffuse = (1.0f - metallic) * diffuseWeight * baseColor * (1.0f / CANDELA_PI) * g.NoL;
+    return lobes;
+}
+
+// iblShadeLobes (shared/ibl.h) with the dielectric Fresnel `d`: the split sum's directional albedo
+// E = f0·A + f90·B per part (dielectric, metal), mixed by metallic; multiscatter as there, with
+// F_avg = f0 + (f90 − f0)/21; the diffuse weighted by what the dielectric part does not reflect,
+// 1 − max(E_d + multiscatter_d), computed from 1 − f0 without cancellation.
+CANDELA_FN BrdfLobes iblShadeLobesDielectric(vec3 prefiltered, vec3 irradiance, vec2 lut, vec3 baseColor, float metallic,
+                                             DielectricFresnel d, bool multiscatter, float diffuseOcclusion,
+                                             float specularOcclusionFactor) {
+    vec3 f0 = mix(d.f0, baseColor, metallic);
+    vec3 f90 = mix(vec3(d.f90), vec3(1.0f), metallic);
+    vec3 singleScatter = f0 * lut.x + f90 * lut.y;
+    vec3 dielectricSingle = d.f0 * lut.x + d.f90 * lut.y;
+    float lost = 1.0f - (lut.x + lut.y);
+    // 1 − E_d = (1 − f0)A + (1 − f90)B + (1 − A − B), from the cancellation-free 1 − f0.
+    vec3 dielectricUnreflected = d.oneMinusF0 * lut.x + vec3((1.0f - d.f90) * lut.y + lost);
+    vec3 multiScatter = vec3(0.0f);
+    vec3 dielectricMulti = vec3(0.0f);
+    if (multiscatter) {
+        vec3 averageFresnel = f0 + (f90 - f0) * (1.0f / 21.0f);
+        multiScatter = singleScatter * averageFresnel / (vec3(1.0f) - lost * averageFresnel) * lost;
+        vec3 dielectricAverage = d.f0 + (vec3(d.f90) - d.f0) * (1.0f / 21.0f);
+        dielectricMulti = dielectricSingle * dielectricAverage / (vec3(1.0f) - lost * dielectricAverage) * lost;
+    }
+    float diffuseWeight = max(minComponent(dielectricUnreflected - dielectricMulti), 0.0f);
+    BrdfLobes lobes;
+    lobes.specular = prefiltered * singleScatter * specularOcclusionFactor;
+    lobes.diffuse = (multiScatter + baseColor * ((1.0f - metallic) * diffuseWeight)) * irradiance * diffuseOcclusion;
+    return lobes;
+}
+
+CANDELA_NAMESPACE_END
+
+#endif
