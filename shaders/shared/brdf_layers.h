@@ -54,7 +54,6 @@ CANDELA_FN DielectricFresnel dielectricFresnel(float ior, vec3 specularColor, fl
     return d;
 }
 
-CANDELA_FN float maxComponent(vec3 c) { return max(c.x, max(c.y, c.z)); }
 CANDELA_FN float minComponent(vec3 c) { return min(c.x, min(c.y, c.z)); }
 
 // 1 − F_d at Schlick weight w: (1 − f0)(1 − w) + (1 − f90) w, from the cancellation-free 1 − f0.
