@@ -3,9 +3,14 @@
 // The BRDF probe: one invocation per combination of the grid in shared/brdf_probe.h evaluates the
 // forward pass's brdfTimesCosine (shared/brdf.h) and stores rgb = f · N·L · intensity and
 // a = the combination's linear index (y · width + x), so a test can check every value against its
-// double-precision reference and that both sides enumerated the same combination.
-#include "shared/brdf.h"
+// double-precision reference and that both sides enumerated the same combination. With kLayers,
+// the Cook-Torrance models use the specular layer of the push constants (shared/brdf_layers.h:
+// KHR_materials_ior and _specular) as the forward pass's layered program does; Blinn-Phong stays
+// the core's there too.
+#include "shared/brdf_layers.h"
 #include "shared/brdf_probe.h"
+
+layout(constant_id = 0) const bool kLayers = false;
 
 layout(local_size_x = CANDELA_BRDF_PROBE_GROUP_SIZE, local_size_y = CANDELA_BRDF_PROBE_GROUP_SIZE) in;
 
@@ -19,7 +24,15 @@ void main() {
     uvec2 texel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(texel, uvec2(CANDELA_BRDF_PROBE_WIDTH, CANDELA_BRDF_PROBE_HEIGHT)))) return;
     BrdfProbeSample s = brdfProbeSample(texel);
-    vec3 radiance = brdfTimesCosine(s.N, s.V, s.L, s.baseColor, s.metallic, s.perceptualRoughness, s.model);
+    vec3 radiance;
+    if (kLayers && s.model != CANDELA_SHADING_BLINN_PHONG) {
+        DielectricFresnel d = dielectricFresnel(params.ior, params.specularColor.rgb, params.specular);
+        BrdfLobes lobes = brdfLobesTimesCosineDielectric(s.N, s.V, s.L, s.baseColor, s.metallic, s.perceptualRoughness,
+                                                         s.model, d);
+        radiance = lobes.diffuse + lobes.specular;
+    } else {
+        radiance = brdfTimesCosine(s.N, s.V, s.L, s.baseColor, s.metallic, s.perceptualRoughness, s.model);
+    }
     float index = float(texel.y * CANDELA_BRDF_PROBE_WIDTH + texel.x);
     imageStore(outImage, ivec2(texel), vec4(radiance * params.intensity, index));
 }

@@ -7,7 +7,7 @@ namespace candela::passes {
 using namespace graph;
 
 BrdfProbePass::BrdfProbePass(vk::Context& context, Brdf brdf)
-    : mPipeline(vk::Pipeline::compute(context, brdf == Brdf::Layers ? "brdf_layers_probe.comp" : "brdf_probe.comp")) {}
+    : mPipeline(vk::Pipeline::compute(context, "brdf_probe.comp", {brdf == Brdf::Layers ? 1u : 0u})) {}
 
 TextureId BrdfProbePass::add(RenderGraph& graph, const shading::BrdfProbeParams& params) const {
     struct Data {

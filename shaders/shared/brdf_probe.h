@@ -27,10 +27,10 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_BRDF_PROBE_HEIGHT \
     (CANDELA_BRDF_PROBE_ROUGHNESSES * CANDELA_BRDF_PROBE_METALLICS * CANDELA_BRDF_PROBE_BASE_COLORS * CANDELA_BRDF_PROBE_MODELS)
 
-// Push constants of brdf_probe.comp and brdf_layers_probe.comp (std430 layout).
+// Push constants of brdf_probe.comp (std430 layout).
 struct BrdfProbeParams {
     float intensity;  // light intensity the BRDF·cosine is multiplied by (1 to compare, up to 1e6)
-    // brdf_layers_probe only: the specular layer's parameters (KHR_materials_ior, _specular).
+    // With kLayers only: the specular layer's parameters (KHR_materials_ior, _specular).
     float ior;
     float specular;
     float pad;

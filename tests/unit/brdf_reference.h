@@ -61,20 +61,29 @@ inline glm::dvec3 fresnelSchlick(double VoH, const glm::dvec3& f0) {
     return f0 + (glm::dvec3(1.0) - f0) * std::pow(1.0 - VoH, 5.0);
 }
 
+// The cosines the BRDFs read, with the clamps listed at the top: N·L (≤ 0: no light), N·V, and N·H,
+// V·H of the half vector (H = N without one, when V = −L).
+struct Angles {
+    double NoL, NoV, NoH, VoH;
+    bool hasHalfVector;
+};
+
+inline Angles angles(const glm::dvec3& N, const glm::dvec3& V, const glm::dvec3& L) {
+    const glm::dvec3 sum = V + L;
+    const double sumLength = glm::length(sum);
+    const bool hasHalfVector = sumLength > kMinHalfVectorLength;
+    const glm::dvec3 H = hasHalfVector ? sum / sumLength : N;
+    return {glm::dot(N, L), std::max(glm::dot(N, V), kMinNoV), std::clamp(glm::dot(N, H), 0.0, 1.0),
+            std::clamp(glm::dot(V, H), 0.0, 1.0), hasHalfVector};
+}
+
 // f(V, L) · (N·L) for unit N, V, L (V towards the viewer, L towards the light).
 inline glm::dvec3 brdfTimesCosine(const glm::dvec3& N, const glm::dvec3& V, const glm::dvec3& L,
                                   const glm::dvec3& baseColor, double metallic, double perceptualRoughness,
                                   uint32_t model) {
-    const double NoL = glm::dot(N, L);
+    const auto [NoL, NoV, NoH, VoH, hasHalfVector] = angles(N, V, L);
     if (NoL <= 0.0) return glm::dvec3(0.0);
-    const double NoV = std::max(glm::dot(N, V), kMinNoV);
-    const glm::dvec3 sum = V + L;
-    const double sumLength = glm::length(sum);
-    const bool hasHalfVector = sumLength > kMinHalfVectorLength;
     const double specularWeight = hasHalfVector ? 1.0 : 0.0;
-    const glm::dvec3 H = hasHalfVector ? sum / sumLength : N;
-    const double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0);
-    const double VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
     const double roughness = clampRoughness(perceptualRoughness);
 
     if (model == kBlinnPhong) {
@@ -100,15 +109,8 @@ inline glm::dvec3 brdfTimesCosine(const glm::dvec3& N, const glm::dvec3& V, cons
 inline glm::dvec3 brdfTimesCosineDielectric(const glm::dvec3& N, const glm::dvec3& V, const glm::dvec3& L,
                                             const glm::dvec3& baseColor, double metallic, double perceptualRoughness,
                                             uint32_t model, double ior, double specular, const glm::dvec3& specularColor) {
-    const double NoL = glm::dot(N, L);
+    const auto [NoL, NoV, NoH, VoH, hasHalfVector] = angles(N, V, L);
     if (NoL <= 0.0) return glm::dvec3(0.0);
-    const double NoV = std::max(glm::dot(N, V), kMinNoV);
-    const glm::dvec3 sum = V + L;
-    const double sumLength = glm::length(sum);
-    const bool hasHalfVector = sumLength > kMinHalfVectorLength;
-    const glm::dvec3 H = hasHalfVector ? sum / sumLength : N;
-    const double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0);
-    const double VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
     const double roughness = clampRoughness(perceptualRoughness);
     const double a = roughness * roughness;
     const double r = (ior - 1.0) / (ior + 1.0);
