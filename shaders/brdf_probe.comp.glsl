@@ -4,9 +4,9 @@
 // forward pass's brdfTimesCosine (shared/brdf.h) and stores rgb = f · N·L · intensity and
 // a = the combination's linear index (y · width + x), so a test can check every value against its
 // double-precision reference and that both sides enumerated the same combination. With kLayers,
-// the Cook-Torrance models use the specular layer of the push constants (shared/brdf_layers.h:
-// KHR_materials_ior and _specular) as the forward pass's layered program does; Blinn-Phong stays
-// the core's there too.
+// the Cook-Torrance models evaluate the layers of the push constants (shared/brdf_layers.h: the
+// specular layer, the clearcoat) with the function the forward pass's layered program uses;
+// Blinn-Phong stays the core's there too.
 #include "shared/brdf_layers.h"
 #include "shared/brdf_probe.h"
 
@@ -27,9 +27,10 @@ void main() {
     vec3 radiance;
     if (kLayers && s.model != CANDELA_SHADING_BLINN_PHONG) {
         DielectricFresnel d = dielectricFresnel(params.ior, params.specularColor.rgb, params.specular);
-        BrdfLobes lobes = brdfLobesTimesCosineDielectric(s.N, s.V, s.L, s.baseColor, s.metallic, s.perceptualRoughness,
-                                                         s.model, d);
-        radiance = lobes.diffuse + lobes.specular;
+        Clearcoat coat = clearcoatLayer(params.clearcoat, params.clearcoatRoughness, params.clearcoatNormal.xyz, s.V);
+        LayeredLobes lobes = layeredLobesTimesCosine(s.N, s.V, s.L, s.baseColor, s.metallic, s.perceptualRoughness, s.model,
+                                                     params.layers, d, coat);
+        radiance = lobes.diffuse + lobes.specular + vec3(lobes.clearcoat);
     } else {
         radiance = brdfTimesCosine(s.N, s.V, s.L, s.baseColor, s.metallic, s.perceptualRoughness, s.model);
     }

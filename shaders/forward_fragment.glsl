@@ -53,6 +53,9 @@ layout(std430, set = 1, binding = 5) readonly buffer MaterialLayers {
 };
 layout(set = 1, binding = 6) uniform sampler2D specularTexture;
 layout(set = 1, binding = 7) uniform sampler2D specularColorTexture;
+layout(set = 1, binding = 8) uniform sampler2D clearcoatTexture;
+layout(set = 1, binding = 9) uniform sampler2D clearcoatRoughnessTexture;
+layout(set = 1, binding = 10) uniform sampler2D clearcoatNormalTexture;
 #endif
 // Image-based lighting (always bound; placeholders when the frame has no environment).
 layout(set = 2, binding = 0) uniform samplerCube specularCube;
@@ -79,7 +82,7 @@ layout(location = 2) in vec4 inTangent;
 layout(location = 3) in vec4 inColor;
 layout(location = 4) in vec2 inTexUv[CANDELA_TEX_COUNT];  // per texture slot, transformed (see forward_vertex.glsl)
 #ifdef CANDELA_MATERIAL_LAYERS
-layout(location = 4 + CANDELA_TEX_COUNT) in vec2 inLayerUv[CANDELA_LAYER_TEX_COUNT];  // per layer texture slot
+layout(location = 4 + CANDELA_TEX_COUNT) in vec4 inLayerUv[(CANDELA_LAYER_TEX_COUNT + 1) / 2];  // two layer slots each
 #endif
 
 layout(location = 0) out vec4 outColor;
@@ -88,87 +91,139 @@ vec4 sampleSlot(sampler2D tex, int slot) {
     return texture(tex, inTexUv[slot]);
 }
 
-#ifdef CANDELA_MATERIAL_LAYERS
-// The dielectric Fresnel of this fragment's material (main sets it before any lighting): the
-// core's f0 0.04, f90 1 unless the specular layer (KHR_materials_ior, _specular) changes it.
-DielectricFresnel gDielectric;
-
-// Whether the specular layer applies: the material has it and the shading model is a
-// Cook-Torrance one (Blinn-Phong, kept for comparison with the original project, has no Fresnel).
-bool specularLayer() { return (kLayers & CANDELA_LAYER_SPECULAR) != 0u && kShadingModel != CANDELA_SHADING_BLINN_PHONG; }
-
-DielectricFresnel layerDielectric(MaterialLayerData layer) {
-    // A specialization constant: the branch is uniform, so the samples inside keep their derivatives.
-    if (!specularLayer()) return coreDielectricFresnel();
-    float specular = layer.specular * texture(specularTexture, inLayerUv[CANDELA_LAYER_TEX_SPECULAR]).a;
-    vec3 color = layer.specularColor * texture(specularColorTexture, inLayerUv[CANDELA_LAYER_TEX_SPECULAR_COLOR]).rgb;
-    return dielectricFresnel(layer.ior, color, specular);
-}
-#endif
-
-// f(V, L) · (N·L) of the fragment's material toward light direction `l`, as diffuse and specular.
-BrdfLobes surfaceLobes(vec3 n, vec3 v, vec3 l, vec3 baseColor, float metallic, float roughness) {
-#ifdef CANDELA_MATERIAL_LAYERS
-    if (specularLayer()) return brdfLobesTimesCosineDielectric(n, v, l, baseColor, metallic, roughness, kShadingModel, gDielectric);
-#endif
-    return brdfLobesTimesCosine(n, v, l, baseColor, metallic, roughness, kShadingModel);
-}
-
-// Shading normal: interpolated normal flipped for back faces of double-sided materials (or, where
-// it degenerates, the face normal on the viewer's side), perturbed by the normal map when the
-// variant has one and `mapped` is set.
-vec3 shadingNormal(MaterialData m, bool mapped) {
+// Interpolated normal flipped for back faces of double-sided materials (or, where it degenerates,
+// the face normal on the viewer's side).
+vec3 facedNormal() {
     // The sign of dFdx × dFdy depends on the framebuffer's y direction (in Vulkan's y-down one it
     // points away from the viewer), not on the winding: orient it toward the eye explicitly.
     vec3 faceNormal = normalize(cross(dFdx(inWorldPosition), dFdy(inWorldPosition)));
     if (dot(faceNormal, push.eye.xyz - inWorldPosition) < 0.0f) faceNormal = -faceNormal;
     vec3 n = faceNormal;
     if (dot(inNormal, inNormal) > 1e-12f) n = gl_FrontFacing ? normalize(inNormal) : -normalize(inNormal);
+    return n;
+}
+
+// Unit normal `n` perturbed by a tangent-space normal-map value (texel · 2 − 1) with the map's
+// scale, in the vertex tangent frame; `n` itself where that frame degenerates.
+vec3 mapNormal(vec3 n, vec3 tangentNormal, float scale) {
+    vec3 t = inTangent.xyz - n * dot(n, inTangent.xyz);
+    // Relative to the tangent's own length, which scales with the draw's transform: an absolute
+    // threshold let the rounding residual of a tangent along the normal through at scale 1e4
+    // (an arbitrary tangent frame) and would drop valid tangents of scenes scaled by 1e-6.
+    if (dot(t, t) <= 1e-6f * dot(inTangent.xyz, inTangent.xyz)) return n;
+    t = normalize(t);
+    vec3 b = cross(n, t) * (inTangent.w < 0.0f ? -1.0f : 1.0f);
+    tangentNormal.xy *= scale;
+    vec3 mapped = mat3(t, b, n) * tangentNormal;
+    return dot(mapped, mapped) > 1e-12f ? normalize(mapped) : n;
+}
+
+// Shading normal: the faced normal, perturbed by the normal map when the variant has one and
+// `mapped` is set.
+vec3 shadingNormal(MaterialData m, bool mapped) {
+    vec3 n = facedNormal();
     if (kNormalMap && mapped) {
-        // Sampled outside the branch below: implicit-LOD sampling needs uniform control flow.
+        // Sampled outside any non-uniform branch: implicit-LOD sampling needs uniform control flow.
         vec3 tangentNormal = sampleSlot(normalTexture, CANDELA_TEX_NORMAL).xyz * 2.0f - 1.0f;
-        vec3 t = inTangent.xyz - n * dot(n, inTangent.xyz);
-        // Relative to the tangent's own length, which scales with the draw's transform: an absolute
-        // threshold let the rounding residual of a tangent along the normal through at scale 1e4
-        // (an arbitrary tangent frame) and would drop valid tangents of scenes scaled by 1e-6.
-        if (dot(t, t) > 1e-6f * dot(inTangent.xyz, inTangent.xyz)) {
-            t = normalize(t);
-            vec3 b = cross(n, t) * (inTangent.w < 0.0f ? -1.0f : 1.0f);
-            tangentNormal.xy *= m.normalScale;
-            vec3 mapped = mat3(t, b, n) * tangentNormal;
-            if (dot(mapped, mapped) > 1e-12f) n = normalize(mapped);
-        }
+        n = mapNormal(n, tangentNormal, m.normalScale);
     }
     return n;
+}
+
+#ifdef CANDELA_MATERIAL_LAYERS
+// This fragment's layers, set by main before any lighting: the dielectric Fresnel (the core's f0
+// 0.04, f90 1 unless the specular layer changes it), the coat, and the light the coat reflects.
+DielectricFresnel gDielectric;
+Clearcoat gCoat;
+vec3 gCoatLight = vec3(0.0f);
+
+// The layers this variant evaluates: the material's, none under Blinn-Phong (kept for comparison
+// with the original project, it has no Fresnel to layer).
+uint layerBits() { return kShadingModel == CANDELA_SHADING_BLINN_PHONG ? 0u : kLayers; }
+bool hasLayer(uint bit) { return (layerBits() & bit) != 0u; }
+
+vec2 layerUv(int slot) {
+    vec4 pair = inLayerUv[slot / 2];
+    return (slot & 1) == 0 ? pair.xy : pair.zw;
+}
+
+// Specialization-constant branches only: uniform, so the samples inside keep their derivatives.
+DielectricFresnel layerDielectric(MaterialLayerData layer) {
+    if (!hasLayer(CANDELA_LAYER_SPECULAR)) return coreDielectricFresnel();
+    float specular = layer.specular * texture(specularTexture, layerUv(CANDELA_LAYER_TEX_SPECULAR)).a;
+    vec3 color = layer.specularColor * texture(specularColorTexture, layerUv(CANDELA_LAYER_TEX_SPECULAR_COLOR)).rgb;
+    return dielectricFresnel(layer.ior, color, specular);
+}
+
+// The coat on the faced normal `faced` (its own normal map, if any; not the material's).
+Clearcoat layerClearcoat(MaterialLayerData layer, vec3 faced, vec3 v) {
+    if (!hasLayer(CANDELA_LAYER_CLEARCOAT)) return clearcoatLayer(0.0f, 0.0f, faced, v);
+    float weight = layer.clearcoat * texture(clearcoatTexture, layerUv(CANDELA_LAYER_TEX_CLEARCOAT)).r;
+    float roughness = layer.clearcoatRoughness * texture(clearcoatRoughnessTexture, layerUv(CANDELA_LAYER_TEX_CLEARCOAT_ROUGHNESS)).g;
+    vec3 nc = faced;
+    if (hasLayer(CANDELA_LAYER_CLEARCOAT_NORMAL)) {
+        vec3 tangentNormal = texture(clearcoatNormalTexture, layerUv(CANDELA_LAYER_TEX_CLEARCOAT_NORMAL)).xyz * 2.0f - 1.0f;
+        nc = mapNormal(faced, tangentNormal, layer.clearcoatNormalScale);
+    }
+    return clearcoatLayer(clamp(weight, 0.0f, 1.0f), clamp(roughness, 0.0f, 1.0f), nc, v);
+}
+#endif
+
+// f(V, L) · (N·L) of the fragment's material toward light direction `l`, as diffuse and specular
+// (in the layered program: beneath the coat, whose own reflection goes to `coat`).
+BrdfLobes surfaceLobes(vec3 n, vec3 v, vec3 l, vec3 baseColor, float metallic, float roughness, out float coat) {
+#ifdef CANDELA_MATERIAL_LAYERS
+    LayeredLobes layered =
+        layeredLobesTimesCosine(n, v, l, baseColor, metallic, roughness, kShadingModel, layerBits(), gDielectric, gCoat);
+    coat = layered.clearcoat;
+    BrdfLobes lobes;
+    lobes.diffuse = layered.diffuse;
+    lobes.specular = layered.specular;
+    return lobes;
+#else
+    coat = 0.0f;
+    return brdfLobesTimesCosine(n, v, l, baseColor, metallic, roughness, kShadingModel);
+#endif
 }
 
 float occlusion(MaterialData m) {
     return 1.0f + m.occlusionStrength * (sampleSlot(occlusionTexture, CANDELA_TEX_OCCLUSION).r - 1.0f);
 }
 
+// The environment's irradiance / π at world normal `n`.
+vec3 irradianceAt(vec3 n) {
+    vec3 nEnv = iblLookupDirection(n, push.ibl.rotation);
+    if (!kIrradianceSh) return textureLod(irradianceCube, nEnv, 0.0f).rgb;
+    vec3 irradiance = vec3(0.0f);
+    for (uint i = 0u; i < 9u; ++i) irradiance += sh[i].rgb * shBasis(i, nEnv);
+    return max(irradiance, vec3(0.0f));  // order-2 ringing can dip below 0
+}
+
+// The prefiltered environment in the mirror direction of `v` about `n` at perceptual roughness
+// `roughness`, and the split sum's (A, B) there.
+vec3 prefilteredAt(vec3 n, vec3 v, float roughness) {
+    vec3 r = iblLookupDirection(reflect(-v, n), push.ibl.rotation);
+    // Roughness 0 reads mip 0 (the environment) exactly; the mips in between are linearly blended.
+    return textureLod(specularCube, r, roughness * push.ibl.maxLod).rgb;
+}
+vec2 splitSumAt(float NoV, float roughness) {
+    return textureLod(brdfLut, brdfLutUv(NoV, roughness, push.ibl.lutSize), 0.0f).rg;
+}
+
 // Diffuse and specular light from the environment (split sum). Occlusion (glTF: indirect light
-// only) darkens the diffuse term and, through specular occlusion, the specular one.
+// only) darkens the diffuse term and, through specular occlusion, the specular one. In the layered
+// program the material lies beneath the coat, whose own reflection goes to gCoatLight.
 BrdfLobes imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float metallic, float roughness) {
     float ao = occlusion(m);
     float NoV = clamp(dot(n, v), CANDELA_MIN_NOV, 1.0f);
-    vec3 r = iblLookupDirection(reflect(-v, n), push.ibl.rotation);
-    vec3 nEnv = iblLookupDirection(n, push.ibl.rotation);
-    // Roughness 0 reads mip 0 (the environment) exactly; the mips in between are linearly blended.
-    vec3 prefiltered = textureLod(specularCube, r, roughness * push.ibl.maxLod).rgb;
-    vec3 irradiance;
-    if (kIrradianceSh) {
-        irradiance = vec3(0.0f);
-        for (uint i = 0u; i < 9u; ++i) irradiance += sh[i].rgb * shBasis(i, nEnv);
-        irradiance = max(irradiance, vec3(0.0f));  // order-2 ringing can dip below 0
-    } else {
-        irradiance = textureLod(irradianceCube, nEnv, 0.0f).rgb;
-    }
-    vec2 lut = textureLod(brdfLut, brdfLutUv(NoV, roughness, push.ibl.lutSize), 0.0f).rg;
+    vec3 prefiltered = prefilteredAt(n, v, roughness);
+    vec3 irradiance = irradianceAt(n);
+    vec2 lut = splitSumAt(NoV, roughness);
     vec3 f0 = mix(vec3(0.04f), baseColor, metallic);
     vec3 diffuseColor = baseColor * (1.0f - metallic);
     BrdfLobes light;
 #ifdef CANDELA_MATERIAL_LAYERS
-    if (specularLayer())
+    if (hasLayer(CANDELA_LAYER_SPECULAR))
         light = iblShadeLobesDielectric(prefiltered, irradiance, lut, baseColor, metallic, gDielectric, kMultiscatter, ao,
                                         specularOcclusion(NoV, ao, roughness));
     else
@@ -177,6 +232,16 @@ BrdfLobes imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float 
                           specularOcclusion(NoV, ao, roughness));
     light.diffuse *= push.ibl.intensity;
     light.specular *= push.ibl.intensity;
+#ifdef CANDELA_MATERIAL_LAYERS
+    if (hasLayer(CANDELA_LAYER_CLEARCOAT)) {
+        light.diffuse *= gCoat.baseWeight;
+        light.specular *= gCoat.baseWeight;
+        gCoatLight += push.ibl.intensity *
+                      iblClearcoat(gCoat, prefilteredAt(gCoat.normal, v, gCoat.roughness), irradianceAt(gCoat.normal),
+                                   splitSumAt(gCoat.NoV, gCoat.roughness), kMultiscatter, ao,
+                                   specularOcclusion(gCoat.NoV, ao, gCoat.roughness));
+    }
+#endif
     return light;
 }
 
@@ -296,7 +361,7 @@ vec3 termTowardFirstLight(vec3 n, vec3 v, vec3 baseColor, float metallic, float 
     if (kDebugView == CANDELA_DEBUG_D) return vec3(distributionGgx(NoH, dot(NxH, NxH), a) * CANDELA_PI * a * a);
     if (kDebugView == CANDELA_DEBUG_G) return vec3(visibilitySmithGgxCorrelated(NoV, NoL, a) * 4.0f * NoL * NoV);
 #ifdef CANDELA_MATERIAL_LAYERS
-    if (specularLayer()) return fresnelDielectricMetal(clamp(dot(v, h), 0.0f, 1.0f), baseColor, metallic, gDielectric);
+    if (hasLayer(CANDELA_LAYER_SPECULAR)) return fresnelDielectricMetal(clamp(dot(v, h), 0.0f, 1.0f), baseColor, metallic, gDielectric);
 #endif
     return fresnelSchlick(clamp(dot(v, h), 0.0f, 1.0f), mix(vec3(0.04f), baseColor, metallic));
 }
@@ -318,7 +383,9 @@ void main() {
     vec3 n = shadingNormal(m, true);
     vec3 v = normalize(push.eye.xyz - inWorldPosition);
 #ifdef CANDELA_MATERIAL_LAYERS
-    gDielectric = layerDielectric(layers[draws[push.counts.y].material.x]);
+    MaterialLayerData layer = layers[draws[push.counts.y].material.x];
+    gDielectric = layerDielectric(layer);
+    gCoat = layerClearcoat(layer, facedNormal(), v);
 #endif
 
     BrdfLobes lit;
@@ -330,10 +397,14 @@ void main() {
             LightData light = lights[i];
             float attenuation;
             vec3 l = lightDirection(light, attenuation);
-            BrdfLobes lobes = surfaceLobes(n, v, l, baseColor.rgb, metallic, roughness);
+            float coat;
+            BrdfLobes lobes = surfaceLobes(n, v, l, baseColor.rgb, metallic, roughness, coat);
             vec3 radiance = (light.color * light.intensity) * attenuation;
             lit.diffuse += lobes.diffuse * radiance;
             lit.specular += lobes.specular * radiance;
+#ifdef CANDELA_MATERIAL_LAYERS
+            gCoatLight += coat * radiance;
+#endif
         }
     }
     if (kIbl && !kUnlit) {
@@ -346,6 +417,12 @@ void main() {
         }
     }
     vec3 emissive = m.emissive.rgb * sampleSlot(emissiveTexture, CANDELA_TEX_EMISSIVE).rgb;
+    vec3 coatLight = vec3(0.0f);
+#ifdef CANDELA_MATERIAL_LAYERS
+    // The emission lies beneath the coat too.
+    if (hasLayer(CANDELA_LAYER_CLEARCOAT)) emissive *= gCoat.baseWeight;
+    coatLight = gCoatLight;
+#endif
 
     if (kDebugView != CANDELA_DEBUG_NONE) {
         vec3 value = vec3(0.0f);
@@ -358,12 +435,18 @@ void main() {
         else if (kDebugView == CANDELA_DEBUG_EMISSIVE) value = emissive;
         else if (kDebugView == CANDELA_DEBUG_DIFFUSE) value = lit.diffuse;
         else if (kDebugView == CANDELA_DEBUG_SPECULAR) value = lit.specular;
+        else if (kDebugView == CANDELA_DEBUG_CLEARCOAT) value = coatLight;
+        else if (kDebugView == CANDELA_DEBUG_CLEARCOAT_NORMAL) {
+#ifdef CANDELA_MATERIAL_LAYERS
+            if (hasLayer(CANDELA_LAYER_CLEARCOAT)) value = asData(gCoat.normal * 0.5f + 0.5f);  // black without a coat
+#endif
+        }
         else value = asData(termTowardFirstLight(n, v, baseColor.rgb, metallic, roughness));
         outColor = vec4(min(value, vec3(60000.0f)) * alpha, alpha);
         return;
     }
 
-    vec3 color = lit.diffuse + lit.specular + reference + emissive;
+    vec3 color = lit.diffuse + lit.specular + coatLight + reference + emissive;
     // Radiance can exceed half-float range with extreme lights: keep it finite.
     color = min(color, vec3(60000.0f));
     outColor = vec4(color * alpha, alpha);

@@ -35,7 +35,9 @@ layout(location = 3) out vec4 outColor;
 // at triangle edges on lavapipe, whose helper invocations skip those loads.
 layout(location = 4) out vec2 outTexUv[CANDELA_TEX_COUNT];
 #ifdef CANDELA_MATERIAL_LAYERS
-layout(location = 4 + CANDELA_TEX_COUNT) out vec2 outLayerUv[CANDELA_LAYER_TEX_COUNT];
+// The layer texture slots' coordinates, two per location (.xy, .zw): the layers bring many texture
+// slots, and a device need offer only 16 output locations.
+layout(location = 4 + CANDELA_TEX_COUNT) out vec4 outLayerUv[(CANDELA_LAYER_TEX_COUNT + 1) / 2];
 #endif
 
 void main() {
@@ -50,7 +52,11 @@ void main() {
     for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) outTexUv[slot] = transformUv(material.uv[slot], inUv0, inUv1);
 #ifdef CANDELA_MATERIAL_LAYERS
     MaterialLayerData layer = layers[draw.material.x];
-    for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) outLayerUv[slot] = transformUv(layer.uv[slot], inUv0, inUv1);
+    for (int i = 0; i < (CANDELA_LAYER_TEX_COUNT + 1) / 2; ++i) {
+        // An odd count leaves the last .zw unused (it repeats the last slot).
+        vec2 second = transformUv(layer.uv[min(2 * i + 1, CANDELA_LAYER_TEX_COUNT - 1)], inUv0, inUv1);
+        outLayerUv[i] = vec4(transformUv(layer.uv[2 * i], inUv0, inUv1), second);
+    }
 #endif
     gl_Position = push.viewProjection * world;
 }

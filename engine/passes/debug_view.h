@@ -3,7 +3,9 @@
 // shared/scene_data.h). Material inputs: base colour, normals before and after the normal map,
 // roughness, metallic, occlusion, emissive. The GGX terms toward the first punctual light: D
 // (relative to its peak), G (Smith) and F (Schlick). The diffuse and the specular light alone
-// (punctual + environment). Names only: no Vulkan (the command-line parser uses them).
+// (punctual + environment). Material layers (docs/materials.md): the light the clearcoat reflects
+// and the coat's normal (black where there is no coat). Names only: no Vulkan (the command-line
+// parser uses them).
 
 #include <cstdint>
 #include <optional>
@@ -14,7 +16,8 @@
 namespace candela::passes {
 
 enum class DebugView : uint32_t {
-    None = 0, BaseColor, GeometricNormal, MappedNormal, Roughness, Metallic, Occlusion, Emissive, D, G, F, Diffuse, Specular
+    None = 0, BaseColor, GeometricNormal, MappedNormal, Roughness, Metallic, Occlusion, Emissive, D, G, F, Diffuse, Specular,
+    Clearcoat, ClearcoatNormal
 };
 
 inline constexpr std::pair<DebugView, const char*> kDebugViewNames[] = {
@@ -30,7 +33,9 @@ inline constexpr std::pair<DebugView, const char*> kDebugViewNames[] = {
     {DebugView::G, "g"},
     {DebugView::F, "f"},
     {DebugView::Diffuse, "diffuse"},
-    {DebugView::Specular, "specular"}};
+    {DebugView::Specular, "specular"},
+    {DebugView::Clearcoat, "clearcoat"},
+    {DebugView::ClearcoatNormal, "clearcoat-normal"}};
 
 // The names above; nullopt for anything else.
 inline std::optional<DebugView> parseDebugView(std::string_view name) {
@@ -53,8 +58,10 @@ inline std::vector<DebugView> allDebugViews() {
     return views;
 }
 
-// Data and material colours are shown as they are (linear tonemap, exposure 0); the diffuse and
-// specular light go through the frame's tonemap like the full image.
-inline bool debugViewIsLight(DebugView view) { return view == DebugView::Diffuse || view == DebugView::Specular; }
+// Data and material colours are shown as they are (linear tonemap, exposure 0); the diffuse,
+// specular and clearcoat light go through the frame's tonemap like the full image.
+inline bool debugViewIsLight(DebugView view) {
+    return view == DebugView::Diffuse || view == DebugView::Specular || view == DebugView::Clearcoat;
+}
 
 }  // namespace candela::passes

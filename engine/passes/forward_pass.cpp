@@ -11,14 +11,16 @@ namespace candela::passes {
 using namespace graph;
 
 static_assert(uint32_t(DebugView::Specular) == CANDELA_DEBUG_SPECULAR && uint32_t(DebugView::D) == CANDELA_DEBUG_D);
-static_assert(scene::kLayerSpecular == CANDELA_LAYER_SPECULAR);
+static_assert(uint32_t(DebugView::ClearcoatNormal) == CANDELA_DEBUG_CLEARCOAT_NORMAL);
+static_assert(scene::kLayerSpecular == CANDELA_LAYER_SPECULAR && scene::kLayerClearcoat == CANDELA_LAYER_CLEARCOAT &&
+              scene::kLayerClearcoatNormal == CANDELA_LAYER_CLEARCOAT_NORMAL);
 
 namespace {
 
 // The layer names of `layers` (scene::MaterialLayer bits), "+"-separated.
-std::string layerNames(uint32_t layers) {
+std::string plusLayerNames(uint32_t layers) {
     std::string out;
-    if (layers & scene::kLayerSpecular) out += "+specular";
+    for (std::string_view name : scene::layerNames(layers)) (out += "+") += name;
     return out;
 }
 
@@ -37,7 +39,7 @@ std::string ForwardPass::Variant::name() const {
     if (blend) out += "+blend";
     if (ibl && !unlit) out += std::string("+ibl-") + (irradianceSh ? "sh9" : "cube") + (multiscatter ? "" : "-single-scatter") +
                (referenceSamples ? "-reference" + std::to_string(referenceSamples) : "");
-    out += layerNames(layers);
+    out += plusLayerNames(layers);
     if (debugView != DebugView::None) out += std::string("+debug-") + debugViewName(debugView);
     return out;
 }
@@ -113,7 +115,8 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene) {
                     .commit(mContext, *mSets);
     static constexpr const char* kSlots[CANDELA_TEX_COUNT] = {"baseColorTexture", "metallicRoughnessTexture",
                                                                "normalTexture", "occlusionTexture", "emissiveTexture"};
-    static constexpr const char* kLayerSlots[CANDELA_LAYER_TEX_COUNT] = {"specularTexture", "specularColorTexture"};
+    static constexpr const char* kLayerSlots[CANDELA_LAYER_TEX_COUNT] = {
+        "specularTexture", "specularColorTexture", "clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"};
     for (uint32_t material = 0; material < gpuScene.scene().materials.size(); ++material) {
         // A layered material's set follows the layered program's layout: its core textures, then
         // every material's layer parameters and its own layer textures.
@@ -186,7 +189,7 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
     for (const scene::Material& m : scene.materials) {
         if (!layered(m)) continue;
         anyLayered = true;
-        mExplanation.push_back("material '" + m.name + "' pays for layers: " + layerNames(m.layers()).substr(1) +
+        mExplanation.push_back("material '" + m.name + "' pays for layers: " + plusLayerNames(m.layers()).substr(1) +
                                " (the layered forward program)");
     }
     if (!anyLayered)

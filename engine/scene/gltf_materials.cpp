@@ -96,14 +96,17 @@ std::set<std::pair<int, bool>> imageUses(const tinygltf::Model& model) {
         add(m.pbrMetallicRoughness.metallicRoughnessTexture.index, false);
         add(m.normalTexture.index, false);
         add(m.occlusionTexture.index, false);
-        if (auto it = m.extensions.find("KHR_materials_specular"); it != m.extensions.end()) {
-            const auto index = [&](const char* key) {
-                const tinygltf::Value& e = it->second;
-                return e.Has(key) && e.Get(key).Has("index") ? e.Get(key).Get("index").GetNumberAsInt() : -1;
-            };
-            add(index("specularTexture"), false);
-            add(index("specularColorTexture"), true);
-        }
+        // The texture index of extension `name`'s textureInfo `key` (-1 without one).
+        const auto index = [&](const char* name, const char* key) {
+            const auto it = m.extensions.find(name);
+            if (it == m.extensions.end()) return -1;
+            const tinygltf::Value& e = it->second;
+            return e.Has(key) && e.Get(key).Has("index") ? e.Get(key).Get("index").GetNumberAsInt() : -1;
+        };
+        add(index("KHR_materials_specular", "specularTexture"), false);
+        add(index("KHR_materials_specular", "specularColorTexture"), true);
+        for (const char* key : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})
+            add(index("KHR_materials_clearcoat", key), false);
     }
     return uses;
 }
@@ -164,6 +167,24 @@ void loadSpecular(const LoadContext& ctx, const tinygltf::Model& model, ImageTab
     }
     out.specular = extensionTexture(ctx, model, images, e, "specularTexture", false, what);
     out.specularColor = extensionTexture(ctx, model, images, e, "specularColorTexture", true, what);
+}
+
+// KHR_materials_clearcoat into `out`.
+void loadClearcoat(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
+                   const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+    const auto it = extensions.find("KHR_materials_clearcoat");
+    if (it == extensions.end()) return;
+    const tinygltf::Value& e = it->second;
+    if (auto factor = number(e, "clearcoatFactor"))
+        out.clearcoatFactor = clampedFactor(ctx, *factor, 0.0, 1.0, what + " clearcoatFactor");
+    if (auto roughness = number(e, "clearcoatRoughnessFactor"))
+        out.clearcoatRoughnessFactor = clampedFactor(ctx, *roughness, 0.0, 1.0, what + " clearcoatRoughnessFactor");
+    out.clearcoat = extensionTexture(ctx, model, images, e, "clearcoatTexture", false, what);
+    out.clearcoatRoughness = extensionTexture(ctx, model, images, e, "clearcoatRoughnessTexture", false, what);
+    out.clearcoatNormal = extensionTexture(ctx, model, images, e, "clearcoatNormalTexture", false, what);
+    if (e.Has("clearcoatNormalTexture"))
+        if (auto scale = number(e.Get("clearcoatNormalTexture"), "scale"))
+            out.clearcoatNormalScale = factor(ctx, *scale, -1e6, 1e6, what + " clearcoatNormalTexture.scale");
 }
 
 }  // namespace
@@ -227,6 +248,7 @@ void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTa
         }
         out.unlit = m.extensions.count("KHR_materials_unlit") > 0;
         loadSpecular(ctx, model, images, m.extensions, out, what);
+        loadClearcoat(ctx, model, images, m.extensions, out, what);
 
         out.baseColor = textureRef(ctx, model, images, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
                                    pbr.baseColorTexture.extensions, true, what + " baseColorTexture");

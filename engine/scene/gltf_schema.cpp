@@ -177,6 +177,13 @@ void checkDocument(const Checker& c, const Json& root) {
                 c.textureInfo(*specular, pe + ".KHR_materials_specular", "specularTexture");
                 c.textureInfo(*specular, pe + ".KHR_materials_specular", "specularColorTexture");
             }
+            if (const Json* coat = c.child(*ext, pe, "KHR_materials_clearcoat",
+                                           {{"clearcoatFactor", Kind::Number}, {"clearcoatRoughnessFactor", Kind::Number}})) {
+                const std::string pc = pe + ".KHR_materials_clearcoat";
+                c.textureInfo(*coat, pc, "clearcoatTexture");
+                c.textureInfo(*coat, pc, "clearcoatRoughnessTexture");
+                c.textureInfo(*coat, pc, "clearcoatNormalTexture", true);
+            }
         }
     });
     c.array(root, "meshes", [&](const Json& mesh, const std::string& p) {

@@ -70,6 +70,12 @@ MaterialLayerData materialLayerData(const Material& m) {
     out.ior = m.ior;
     out.uv[CANDELA_LAYER_TEX_SPECULAR] = uvTransform(m.specular);
     out.uv[CANDELA_LAYER_TEX_SPECULAR_COLOR] = uvTransform(m.specularColor);
+    out.clearcoat = m.clearcoatFactor;
+    out.clearcoatRoughness = m.clearcoatRoughnessFactor;
+    out.clearcoatNormalScale = m.clearcoatNormalScale;
+    out.uv[CANDELA_LAYER_TEX_CLEARCOAT] = uvTransform(m.clearcoat);
+    out.uv[CANDELA_LAYER_TEX_CLEARCOAT_ROUGHNESS] = uvTransform(m.clearcoatRoughness);
+    out.uv[CANDELA_LAYER_TEX_CLEARCOAT_NORMAL] = uvTransform(m.clearcoatNormal);
     return out;
 }
 
@@ -211,7 +217,8 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     for (const Material& m : scene.materials) {
         mBindings.push_back({binding(m.baseColor, mWhite), binding(m.metallicRoughness, mWhite), binding(m.normal, mFlatNormal),
                              binding(m.occlusion, mWhite), binding(m.emissive, mWhite)});
-        mLayerBindings.push_back({binding(m.specular, mWhite), binding(m.specularColor, mWhite)});
+        mLayerBindings.push_back({binding(m.specular, mWhite), binding(m.specularColor, mWhite), binding(m.clearcoat, mWhite),
+                                  binding(m.clearcoatRoughness, mWhite), binding(m.clearcoatNormal, mFlatNormal)});
     }
 }
 

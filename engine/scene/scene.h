@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace candela::scene {
@@ -107,6 +108,16 @@ struct Material {
     TextureRef specular;       // linear, A channel
     TextureRef specularColor;  // sRGB, RGB channels
 
+    // KHR_materials_clearcoat: a GGX coat over the material, clearcoat = clearcoatFactor ·
+    // texture (R), its perceptual roughness clearcoatRoughnessFactor · texture (G), on its own
+    // normal map (or the unmapped normal). Factor 0 (the default): no coat.
+    float clearcoatFactor = 0.0f;
+    float clearcoatRoughnessFactor = 0.0f;
+    float clearcoatNormalScale = 1.0f;
+    TextureRef clearcoat;           // linear, R channel
+    TextureRef clearcoatRoughness;  // linear, G channel
+    TextureRef clearcoatNormal;     // linear, tangent space
+
     // The layers beyond the core model this material uses (MaterialLayer bits): only those are
     // evaluated for it (see docs/materials.md).
     uint32_t layers() const;
@@ -116,7 +127,21 @@ struct Material {
 enum MaterialLayer : uint32_t {
     // A dielectric Fresnel other than the core's (KHR_materials_ior, KHR_materials_specular).
     kLayerSpecular = 1u << 0,
+    // A coat (KHR_materials_clearcoat with a non-zero factor) ...
+    kLayerClearcoat = 1u << 1,
+    // ... with its own normal map.
+    kLayerClearcoatNormal = 1u << 2,
 };
+
+// The names of the layers in `layers` (MaterialLayer bits), in bit order: "specular", "clearcoat",
+// "clearcoat-normal-map".
+inline std::vector<std::string_view> layerNames(uint32_t layers) {
+    constexpr std::string_view kNames[] = {"specular", "clearcoat", "clearcoat-normal-map"};
+    std::vector<std::string_view> out;
+    for (uint32_t bit = 0; bit < std::size(kNames); ++bit)
+        if (layers & (1u << bit)) out.push_back(kNames[bit]);
+    return out;
+}
 
 inline uint32_t Material::layers() const {
     uint32_t out = 0;
@@ -124,6 +149,8 @@ inline uint32_t Material::layers() const {
     if (ior != 1.5f || specularFactor != 1.0f || specularColorFactor != glm::vec3(1.0f) || specular.present() ||
         specularColor.present())
         out |= kLayerSpecular;
+    // The specification: clearcoatFactor 0 disables the whole layer, whatever its textures.
+    if (clearcoatFactor > 0.0f) out |= kLayerClearcoat | (clearcoatNormal.present() ? kLayerClearcoatNormal : 0u);
     return out;
 }
 

@@ -51,7 +51,10 @@ void drawMaterialPanel(Viewer& viewer) {
                                                                       {"occlusion", &m.occlusion},
                                                                       {"emissive", &m.emissive},
                                                                       {"specular", &m.specular},
-                                                                      {"specular colour", &m.specularColor}};
+                                                                      {"specular colour", &m.specularColor},
+                                                                      {"clearcoat", &m.clearcoat},
+                                                                      {"clearcoat roughness", &m.clearcoatRoughness},
+                                                                      {"clearcoat normal", &m.clearcoatNormal}};
     for (const auto& [name, ref] : slots)
         if (ref->present()) textures += (textures.empty() ? "" : ", ") + std::string(name);
     ImGui::TextWrapped("textures: %s", textures.empty() ? "none" : textures.c_str());
@@ -59,7 +62,11 @@ void drawMaterialPanel(Viewer& viewer) {
     shader::ParameterRegistry& registry = viewer.renderer().parameters();
     if (const auto* block = registry.find("forward", "Materials[" + std::to_string(selected) + "]"))
         drawParameterBlock(registry, *block);
-    if (m.layers() & scene::kLayerSpecular) ImGui::TextDisabled("layers: specular (KHR_materials_ior, KHR_materials_specular)");
+    if (m.layers() != 0) {
+        std::string layers;
+        for (std::string_view name : scene::layerNames(m.layers())) (layers += layers.empty() ? "" : ", ") += name;
+        ImGui::TextDisabled("layers: %s", layers.c_str());
+    }
     if (const auto* block = registry.find("forward", "MaterialLayers[" + std::to_string(selected) + "]"))
         drawParameterBlock(registry, *block);
 }

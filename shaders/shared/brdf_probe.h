@@ -30,11 +30,17 @@ CANDELA_NAMESPACE_BEGIN
 // Push constants of brdf_probe.comp (std430 layout).
 struct BrdfProbeParams {
     float intensity;  // light intensity the BRDF·cosine is multiplied by (1 to compare, up to 1e6)
-    // With kLayers only: the specular layer's parameters (KHR_materials_ior, _specular).
+    // With kLayers only: the layers evaluated (CANDELA_LAYER_* bits) and their parameters: the
+    // specular layer's (KHR_materials_ior, _specular) and the coat's (KHR_materials_clearcoat).
     float ior;
     float specular;
-    float pad;
+    uint layers;
     vec4 specularColor;  // rgb
+    float clearcoat;
+    float clearcoatRoughness;
+    float pad0;
+    float pad1;
+    vec4 clearcoatNormal;  // xyz: unit (the base normal is +Z)
 };
 
 // One combination of the grid: the inputs of brdfTimesCosine.
@@ -123,7 +129,7 @@ CANDELA_FN BrdfProbeSample brdfProbeSample(uvec2 texel) {
 CANDELA_NAMESPACE_END
 
 #ifdef __cplusplus
-static_assert(sizeof(candela::shading::BrdfProbeParams) == 32);
+static_assert(sizeof(candela::shading::BrdfProbeParams) == 64);
 #endif
 
 #endif

@@ -29,6 +29,8 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_DEBUG_F 10u
 #define CANDELA_DEBUG_DIFFUSE 11u
 #define CANDELA_DEBUG_SPECULAR 12u
+#define CANDELA_DEBUG_CLEARCOAT 13u         // the light the clearcoat reflects
+#define CANDELA_DEBUG_CLEARCOAT_NORMAL 14u  // the coat's normal (after its normal map)
 
 #define CANDELA_ALPHA_OPAQUE 0u
 #define CANDELA_ALPHA_MASK 1u
@@ -43,13 +45,18 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_TEX_COUNT 5
 
 // Material layers beyond the core model (bits of the layered program's kLayers; scene::MaterialLayer).
-#define CANDELA_LAYER_SPECULAR 1u  // KHR_materials_ior, KHR_materials_specular
+#define CANDELA_LAYER_SPECULAR 1u          // KHR_materials_ior, KHR_materials_specular
+#define CANDELA_LAYER_CLEARCOAT 2u         // KHR_materials_clearcoat
+#define CANDELA_LAYER_CLEARCOAT_NORMAL 4u  // its clearcoatNormalTexture (the coat's TBN work)
 
 // Texture slots of the layers, bound after the core ones in descriptor set 1 of the layered
 // program (bindings 6 and up; binding 5 is the MaterialLayers buffer).
 #define CANDELA_LAYER_TEX_SPECULAR 0
 #define CANDELA_LAYER_TEX_SPECULAR_COLOR 1
-#define CANDELA_LAYER_TEX_COUNT 2
+#define CANDELA_LAYER_TEX_CLEARCOAT 2
+#define CANDELA_LAYER_TEX_CLEARCOAT_ROUGHNESS 3
+#define CANDELA_LAYER_TEX_CLEARCOAT_NORMAL 4
+#define CANDELA_LAYER_TEX_COUNT 5
 
 // One punctual light (KHR_lights_punctual), world space.
 struct LightData {
@@ -94,9 +101,9 @@ struct MaterialLayerData {
     /*Color*/ vec3 specularColor;      // KHR_materials_specular specularColorFactor (may exceed 1)
     /*Range(0, 1)*/ float specular;    // specularFactor
     /*Range(0, 3)*/ float ior;         // KHR_materials_ior (0: f0 = specularColor, see shared/brdf_layers.h)
-    /*Ignore*/ float pad0;
-    /*Ignore*/ float pad1;
-    /*Ignore*/ float pad2;
+    /*Range(0, 1)*/ float clearcoat;   // KHR_materials_clearcoat clearcoatFactor
+    /*Range(0, 1)*/ float clearcoatRoughness;  // clearcoatRoughnessFactor
+    /*Range(0, 2)*/ float clearcoatNormalScale;  // clearcoatNormalTexture.scale
     /*Ignore*/ UvTransform uv[CANDELA_LAYER_TEX_COUNT];
 };
 

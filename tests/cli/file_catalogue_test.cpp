@@ -759,6 +759,22 @@ std::vector<Row> catalogue() {
             "ior 0.5 is outside [1, inf] (using 1)", true);
     warning("material layers", "NegativeSpecularColor", layered({{"KHR_materials_specular", {{"specularColorFactor", {-1, 1, 1}}}}}),
             "specularColorFactor -1 is outside [0, inf] (using 0)", true);
+    // KHR_materials_clearcoat.
+    loads("material layers", "ClearcoatFactorsOnly",
+          layered({{"KHR_materials_clearcoat", {{"clearcoatFactor", 1}, {"clearcoatRoughnessFactor", 0.2}}}}));
+    error("material layers", "ClearcoatFactorString", layered({{"KHR_materials_clearcoat", {{"clearcoatFactor", "1"}}}}),
+          "KHR_materials_clearcoat.clearcoatFactor: expected a number, got the string \"1\"");
+    error("material layers", "ClearcoatNormalTextureMissing",
+          layered({{"KHR_materials_clearcoat", {{"clearcoatFactor", 1}, {"clearcoatNormalTexture", {{"index", 2}}}}}}),
+          "clearcoatNormalTexture: texture 2 does not exist");
+    error("material layers", "ClearcoatNormalScaleString",
+          layered({{"KHR_materials_clearcoat", {{"clearcoatNormalTexture", {{"index", 0}, {"scale", "x"}}}}}}),
+          "clearcoatNormalTexture.scale: expected a number");
+    warning("material layers", "ClearcoatFactorAboveOne", layered({{"KHR_materials_clearcoat", {{"clearcoatFactor", 2}}}}),
+            "clearcoatFactor 2 is outside [0, 1] (using 1)", true);
+    warning("material layers", "ClearcoatRoughnessNegative",
+            layered({{"KHR_materials_clearcoat", {{"clearcoatFactor", 1}, {"clearcoatRoughnessFactor", -0.5}}}}),
+            "clearcoatRoughnessFactor -0.5 is outside [0, 1] (using 0)", true);
     return rows;
 }
 

@@ -19,6 +19,7 @@
 #include "../unit/brdf_reference.h"
 #include "passes/brdf_probe_pass.h"
 #include "passes/readback_pass.h"
+#include "shared/scene_data.h"
 
 #include <cmath>
 #include <cstring>
@@ -64,15 +65,21 @@ std::string describe(const shading::BrdfProbeSample& s, uint32_t x, uint32_t y, 
     return out.str();
 }
 
-// The reference of probe combination `s`: the core BRDF, or with `layer` the specular layer's
-// (Blinn-Phong has none and stays the core's, as in the forward pass).
+// The reference of probe combination `s`: the core BRDF, or with `layer` the layered material's
+// (Blinn-Phong has no layers and stays the core's, as in the forward pass).
 glm::dvec3 referenceOf(const shading::BrdfProbeSample& s, const shading::BrdfProbeParams* layer) {
     if (!layer || s.model == ref::kBlinnPhong)
         return ref::brdfTimesCosine(glm::dvec3(s.N), glm::dvec3(s.V), glm::dvec3(s.L), glm::dvec3(s.baseColor), s.metallic,
                                     s.perceptualRoughness, s.model);
-    return ref::brdfTimesCosineDielectric(glm::dvec3(s.N), glm::dvec3(s.V), glm::dvec3(s.L), glm::dvec3(s.baseColor),
-                                          s.metallic, s.perceptualRoughness, s.model, layer->ior, layer->specular,
-                                          glm::dvec3(layer->specularColor));
+    const ref::Layers layers{.bits = layer->layers,
+                             .ior = layer->ior,
+                             .specular = layer->specular,
+                             .specularColor = glm::dvec3(layer->specularColor),
+                             .clearcoat = layer->clearcoat,
+                             .clearcoatRoughness = layer->clearcoatRoughness,
+                             .clearcoatNormal = glm::dvec3(layer->clearcoatNormal)};
+    return ref::brdfTimesCosineLayered(glm::dvec3(s.N), glm::dvec3(s.V), glm::dvec3(s.L), glm::dvec3(s.baseColor),
+                                       s.metallic, s.perceptualRoughness, s.model, layers);
 }
 
 // Compares every texel with the reference times `intensity`; checks finiteness and the index.
@@ -113,18 +120,46 @@ TEST_F(GpuTest, BrdfProbeStaysFiniteAtIntensity1e6) { checkProbe(runProbe(contex
 // specular 0: no specular reflection, all diffuse) and in between; same metric and tolerances.
 TEST_F(GpuTest, SpecularLayerProbeMatchesDoubleReference) {
     const shading::BrdfProbeParams layers[] = {
-        {.intensity = 1.0f, .ior = 1.5f, .specular = 1.0f, .specularColor = glm::vec4(1.0f)},
-        {.intensity = 1.0f, .ior = 1.0f, .specular = 1.0f, .specularColor = glm::vec4(1.0f)},
-        {.intensity = 1.0f, .ior = 10.0f, .specular = 1.0f, .specularColor = glm::vec4(1.0f)},
-        {.intensity = 1.0f, .ior = 0.0f, .specular = 1.0f, .specularColor = glm::vec4(2.0f, 1.0f, 0.25f, 0.0f)},
-        {.intensity = 1.0f, .ior = 1.33f, .specular = 0.5f, .specularColor = glm::vec4(1.0f, 0.5f, 0.0f, 0.0f)},
-        {.intensity = 1.0f, .ior = 1.5f, .specular = 0.0f, .specularColor = glm::vec4(1.0f)},
-        {.intensity = 1e6f, .ior = 1.0f, .specular = 1.0f, .specularColor = glm::vec4(1.0f)},
+        {.intensity = 1.0f, .ior = 1.5f, .specular = 1.0f, .layers = CANDELA_LAYER_SPECULAR, .specularColor = glm::vec4(1.0f)},
+        {.intensity = 1.0f, .ior = 1.0f, .specular = 1.0f, .layers = CANDELA_LAYER_SPECULAR, .specularColor = glm::vec4(1.0f)},
+        {.intensity = 1.0f, .ior = 10.0f, .specular = 1.0f, .layers = CANDELA_LAYER_SPECULAR, .specularColor = glm::vec4(1.0f)},
+        {.intensity = 1.0f, .ior = 0.0f, .specular = 1.0f, .layers = CANDELA_LAYER_SPECULAR, .specularColor = glm::vec4(2.0f, 1.0f, 0.25f, 0.0f)},
+        {.intensity = 1.0f, .ior = 1.33f, .specular = 0.5f, .layers = CANDELA_LAYER_SPECULAR, .specularColor = glm::vec4(1.0f, 0.5f, 0.0f, 0.0f)},
+        {.intensity = 1.0f, .ior = 1.5f, .specular = 0.0f, .layers = CANDELA_LAYER_SPECULAR, .specularColor = glm::vec4(1.0f)},
+        {.intensity = 1e6f, .ior = 1.0f, .specular = 1.0f, .layers = CANDELA_LAYER_SPECULAR, .specularColor = glm::vec4(1.0f)},
     };
     for (const shading::BrdfProbeParams& layer : layers) {
         SCOPED_TRACE(::testing::Message() << "ior " << layer.ior << ", specular " << layer.specular << ", colour ("
                                           << layer.specularColor.x << ", " << layer.specularColor.y << ", "
                                           << layer.specularColor.z << "), intensity " << layer.intensity);
+        checkProbe(runProbe(context(), layer, BrdfProbePass::Brdf::Layers), layer.intensity, &layer);
+    }
+}
+
+// The clearcoat (KHR_materials_clearcoat) over the grid: coat weights 1, 0.5 and 0 (the layer on
+// but transparent), coat roughness 0 (clamped like the material's), 0.3 and 1, the coat normal
+// along the base normal and tilted by 60° away from the view plane (so N_c·L, N_c·V and the
+// mirror configuration differ from the base's), over the core material and over IOR 1 (no base
+// reflection head-on); and at intensity 1e6. Same metric and tolerances.
+TEST_F(GpuTest, ClearcoatProbeMatchesDoubleReference) {
+    const glm::vec4 up(0.0f, 0.0f, 1.0f, 0.0f);
+    const glm::vec4 tilted(0.0f, 0.8660254037844386f, 0.5f, 0.0f);
+    const auto coat = [](float intensity, uint32_t layers, float ior, float weight, float roughness, glm::vec4 normal) {
+        return shading::BrdfProbeParams{.intensity = intensity, .ior = ior, .specular = 1.0f, .layers = layers,
+                                        .specularColor = glm::vec4(1.0f), .clearcoat = weight,
+                                        .clearcoatRoughness = roughness, .clearcoatNormal = normal};
+    };
+    const uint32_t coatOnly = CANDELA_LAYER_CLEARCOAT, both = CANDELA_LAYER_CLEARCOAT | CANDELA_LAYER_SPECULAR;
+    const shading::BrdfProbeParams layers[] = {
+        coat(1.0f, coatOnly, 1.5f, 1.0f, 0.0f, up),     coat(1.0f, coatOnly, 1.5f, 1.0f, 0.3f, up),
+        coat(1.0f, coatOnly, 1.5f, 1.0f, 1.0f, up),     coat(1.0f, coatOnly, 1.5f, 0.5f, 0.3f, tilted),
+        coat(1.0f, coatOnly, 1.5f, 0.0f, 0.3f, up),     coat(1.0f, coatOnly, 1.5f, 1.0f, 0.0f, tilted),
+        coat(1.0f, both, 1.0f, 1.0f, 0.3f, tilted),     coat(1e6f, both, 10.0f, 1.0f, 0.0f, up),
+    };
+    for (const shading::BrdfProbeParams& layer : layers) {
+        SCOPED_TRACE(::testing::Message() << "layers " << layer.layers << ", ior " << layer.ior << ", clearcoat "
+                                          << layer.clearcoat << ", roughness " << layer.clearcoatRoughness
+                                          << ", normal z " << layer.clearcoatNormal.z << ", intensity " << layer.intensity);
         checkProbe(runProbe(context(), layer, BrdfProbePass::Brdf::Layers), layer.intensity, &layer);
     }
 }

@@ -90,6 +90,9 @@ const GoldenCase kCases[] = {
     {"cesium_milk_truck", "CesiumMilkTruck/glTF-Binary/CesiumMilkTruck.glb", {30.0f, 75.0f, 0.0f}},
     {"cesium_milk_truck_draco", "CesiumMilkTruck/glTF-Draco/CesiumMilkTruck.gltf", {30.0f, 75.0f, 0.0f}},
     {"ibl_specular_test", "SpecularTest/glTF-Binary/SpecularTest.glb", {0.0f, 90.0f, 0.0f}, "studio_small_03_1k.hdr"},
+    // KHR_materials_clearcoat: base, coated and coating-only columns; plain, textured (partial),
+    // rough and normal-mapped coats.
+    {"ibl_clearcoat_test", "ClearCoatTest/glTF-Binary/ClearCoatTest.glb", {0.0f, 90.0f, 0.0f}, "studio_small_03_1k.hdr"},
     {"interpolation_test_t0_9", "InterpolationTest/glTF-Binary/InterpolationTest.glb", {0.0f, 90.0f, 20.0f}, "", 0.0f, "all", 0.9},
 };
 

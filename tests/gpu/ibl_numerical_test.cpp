@@ -7,7 +7,7 @@
 // ("[ measured ] ..." lines on stdout, and RecordProperty for --gtest_output=xml).
 //
 // Small sizes throughout (cube 64, frames ≤ 320×180) keep the file's run time low on lavapipe.
-#include "gpu_test.h"
+#include "sphere_furnace.h"
 
 #include "ibl/ibl_maps.h"
 #include "ibl/ibl_reference.h"
@@ -41,16 +41,6 @@ constexpr double kPi = std::numbers::pi;
 constexpr float kHalfMax = 65504.0f;
 // Relative rounding of a half float (round to nearest: half an ulp of the 10-bit mantissa).
 constexpr double kHalfRounding = 1.0 / 2048.0;
-
-// Prints a measured value (quotable from the log) and keeps it in the test's XML properties.
-void measured(const std::string& key, double value) {
-    std::printf("[ measured ] %s = %.6g\n", key.c_str(), value);
-    std::fflush(stdout);
-    std::ostringstream text;
-    text.precision(6);
-    text << value;
-    ::testing::Test::RecordProperty(key, text.str());
-}
 
 // ---- Read-back maps ------------------------------------------------------------------------------
 
@@ -118,150 +108,6 @@ glm::dvec3 evaluateSh(const std::array<glm::dvec3, 9>& sh, const glm::dvec3& n) 
 
 // Â_l / π of shaders/shared/ibl.h (shCosineBand).
 constexpr std::array<double, 9> kBand = {1.0, 2.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0, 0.25, 0.25, 0.25, 0.25, 0.25};
-
-// ---- Environments and scenes --------------------------------------------------------------------
-
-scene::Environment constantEnvironment(uint32_t width, uint32_t height, glm::vec3 c) {
-    scene::Environment env;
-    env.source = "constant";
-    env.width = width;
-    env.height = height;
-    env.rgb.resize(env.texelCount() * 3);
-    for (size_t i = 0; i < env.texelCount(); ++i) {
-        env.rgb[3 * i] = c.r;
-        env.rgb[3 * i + 1] = c.g;
-        env.rgb[3 * i + 2] = c.b;
-    }
-    return env;
-}
-
-struct Sphere {
-    glm::vec3 centre;
-    float radius;
-    float metallic;
-    float roughness;
-};
-
-// The spheres as draws of one UV sphere mesh (white base colour, one material each), no lights.
-scene::Scene sphereScene(const std::vector<Sphere>& spheres, uint32_t sectors, uint32_t stacks) {
-    scene::Scene scene;
-    scene.source = "built-in: IBL test spheres";
-    const auto [firstIndex, indexCount] = scene::appendUvSphere(scene, 1.0f, sectors, stacks);
-    for (const Sphere& s : spheres) {
-        scene::Material material;
-        material.baseColorFactor = glm::vec4(1.0f);
-        material.metallicFactor = s.metallic;
-        material.roughnessFactor = s.roughness;
-        scene.materials.push_back(material);
-        scene::Draw draw;
-        draw.firstIndex = firstIndex;
-        draw.indexCount = indexCount;
-        draw.material = uint32_t(scene.materials.size() - 1);
-        draw.world = glm::scale(glm::translate(glm::mat4(1.0f), s.centre), glm::vec3(s.radius));
-        draw.bounds.extend(s.centre - glm::vec3(s.radius));
-        draw.bounds.extend(s.centre + glm::vec3(s.radius));
-        scene.bounds.extend(draw.bounds);
-        scene.draws.push_back(draw);
-    }
-    return scene;
-}
-
-// 5 roughness values (columns) × metallic 0 (bottom row) and 1 (top row), unit spheres 2.5 m
-// apart in the XY plane, facing +Z.
-constexpr std::array<float, 5> kRoughness = {0.0f, 0.25f, 0.5f, 0.75f, 1.0f};
-std::vector<Sphere> furnaceSpheres() {
-    std::vector<Sphere> spheres;
-    for (int m = 0; m < 2; ++m)
-        for (size_t r = 0; r < kRoughness.size(); ++r)
-            spheres.push_back({glm::vec3((float(r) - 2.0f) * 2.5f, m == 0 ? -1.25f : 1.25f, 0.0f), 1.0f, float(m),
-                               kRoughness[r]});
-    return spheres;
-}
-
-// On +Z, 10 m from the origin: the 12.5 m × 5 m grid fills most of a 16:9 frame at 45° (unit
-// spheres about 23 px in radius at 320×180).
-CameraSettings furnaceCamera() {
-    CameraSettings camera;
-    camera.orbit = glm::vec3(0.0f, 90.0f, 10.0f);
-    camera.target = glm::vec3(0.0f);
-    return camera;
-}
-
-// ---- Ray casting the analytic spheres -------------------------------------------------------------
-
-struct Hit {
-    int sphere = -1;   // index into the sphere list; −1: the ray misses them all
-    double mu = 0.0;   // N·V at the hit
-};
-
-Hit castRay(const scene::ViewSetup& view, uint32_t width, uint32_t height, uint32_t px, uint32_t py,
-            const std::vector<Sphere>& spheres) {
-    // Pixel centre → NDC (Vulkan: y down, row 0 at NDC y = −1); any depth in (0, 1] lies on the
-    // ray (reverse-Z, infinite far plane).
-    const glm::dmat4 inverse = glm::inverse(glm::dmat4(view.viewProjection));
-    const glm::dvec4 ndc((px + 0.5) / width * 2.0 - 1.0, (py + 0.5) / height * 2.0 - 1.0, 0.5, 1.0);
-    const glm::dvec4 p = inverse * ndc;
-    const glm::dvec3 eye(view.eye);
-    const glm::dvec3 dir = glm::normalize(glm::dvec3(p) / p.w - eye);
-    Hit hit;
-    double nearest = 1e300;
-    for (size_t i = 0; i < spheres.size(); ++i) {
-        const glm::dvec3 oc = eye - glm::dvec3(spheres[i].centre);
-        const double b = glm::dot(oc, dir);
-        const double c = glm::dot(oc, oc) - double(spheres[i].radius) * spheres[i].radius;
-        const double disc = b * b - c;
-        if (disc < 0.0) continue;
-        const double t = -b - std::sqrt(disc);
-        if (t <= 0.0 || t >= nearest) continue;
-        nearest = t;
-        const glm::dvec3 n = glm::normalize(eye + t * dir - glm::dvec3(spheres[i].centre));
-        hit = {int(i), std::clamp(glm::dot(n, -dir), 0.0, 1.0)};
-    }
-    return hit;
-}
-
-// ---- Frames ------------------------------------------------------------------------------------
-
-glm::vec4 pixel(const CapturedFrame& frame, uint32_t x, uint32_t y) {
-    const size_t i = (size_t(y) * frame.width + x) * 4;
-    return {frame.rgba32f[i], frame.rgba32f[i + 1], frame.rgba32f[i + 2], frame.rgba32f[i + 3]};
-}
-
-// Covered (alpha == 1) and every pixel within `radius` (Chebyshev) covered too: the coverage mask
-// eroded, which leaves out the silhouette band.
-std::vector<bool> interiorMask(const CapturedFrame& frame, int radius) {
-    std::vector<bool> mask(size_t(frame.width) * frame.height, false);
-    for (int y = radius; y < int(frame.height) - radius; ++y)
-        for (int x = radius; x < int(frame.width) - radius; ++x) {
-            bool inside = true;
-            for (int dy = -radius; dy <= radius && inside; ++dy)
-                for (int dx = -radius; dx <= radius && inside; ++dx)
-                    inside = pixel(frame, uint32_t(x + dx), uint32_t(y + dy)).a == 1.0f;
-            mask[size_t(y) * frame.width + size_t(x)] = inside;
-        }
-    return mask;
-}
-
-// The first non-finite value of a float frame (or alpha outside [0, 1]), or "".
-std::string frameProblem(const CapturedFrame& frame) {
-    for (size_t i = 0; i < frame.rgba32f.size(); ++i) {
-        const float v = frame.rgba32f[i];
-        if (!std::isfinite(v) || v < 0.0f || (i % 4 == 3 && v > 1.0f)) {
-            std::ostringstream out;
-            out << "pixel (" << (i / 4) % frame.width << ", " << (i / 4) / frame.width << ") channel " << i % 4
-                << " = " << v;
-            return out.str();
-        }
-    }
-    return {};
-}
-
-// A small quality: cube 64 (SH projected from its 32² mip), 6 levels, default LUT.
-ibl::IblQuality smallQuality() {
-    ibl::IblQuality q;
-    q.cubeSize = 64;
-    return q;
-}
 
 // One unit sphere in front of the camera: enough geometry for a frame that runs the precompute.
 const std::vector<Sphere> kProbeSphere = {{glm::vec3(0.0f), 1.0f, 1.0f, 0.5f}};

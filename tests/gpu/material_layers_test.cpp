@@ -1,6 +1,8 @@
 // The KHR_materials_* layers in the forward pass: scenes without them keep the core program and
-// its variants exactly, and the layered program at the core's values draws the core image.
+// its variants exactly, the layered program at the core's values draws the core image, and the
+// layers keep the white furnace.
 #include "gpu_test.h"
+#include "sphere_furnace.h"
 
 #include "renderer.h"
 #include "scene/builtin_scenes.h"
@@ -60,6 +62,54 @@ TEST_F(GpuTest, LayeredProgramAtTheCoreValuesDrawsTheCoreImage) {
     int worst = 0;
     for (size_t i = 0; i < a.rgba8.size(); ++i) worst = std::max(worst, std::abs(int(a.rgba8[i]) - int(b.rgba8[i])));
     EXPECT_LE(worst, 1);
+}
+
+
+// White furnace of the clearcoat: a uniform environment of radiance 1, no lights, multiscatter on;
+// the furnace spheres (IblFurnaceTest) with the roughness of each column moved to a coat of weight
+// 1 (coat roughness 0 … 1) over a white material of roughness 0.5, dielectric (bottom row) or metal
+// (top row), each of which alone reflects exactly 1. The coat takes clearcoat · F_c and the material
+// beneath loses as much (shared/brdf_layers.h), so every interior pixel reflects 1.
+// Metric: over interior pixels (no uncovered pixel within 2 px) and RGB, max |x − 1| and max x − 1.
+// Tolerances: 0.02 (the bound), and never above 1 by more than one RGBA16F step (1/1024).
+TEST_F(GpuTest, ClearcoatKeepsTheWhiteFurnace) {
+    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
+    const std::vector<Sphere> spheres = furnaceSpheres();
+    scene::Scene scene = sphereScene(spheres, 64, 32);
+    for (size_t i = 0; i < spheres.size(); ++i) {
+        scene.materials[i].clearcoatFactor = 1.0f;
+        scene.materials[i].clearcoatRoughnessFactor = spheres[i].roughness;
+        scene.materials[i].roughnessFactor = 0.5f;
+    }
+    Renderer renderer(context());
+    RenderSettings settings{.width = 320, .height = 180, .floatOutput = true, .scene = &scene,
+                            .camera = furnaceCamera(), .defaultLights = false, .environment = &env,
+                            .iblQuality = smallQuality()};
+    settings.ibl.skybox = false;
+    const CapturedFrame frame = renderer.capture(settings);
+    ASSERT_EQ(frameProblem(frame), "");
+    EXPECT_TRUE(contains(renderer.explain(), "pays for layers: clearcoat"));
+    const scene::ViewSetup view = Renderer::resolveView(scene, settings.camera, 320.0f / 180.0f);
+    const std::vector<bool> interior = interiorMask(frame, 2);
+    std::vector<size_t> count(spheres.size(), 0);
+    double worst = 0.0, highest = -1.0;
+    for (uint32_t y = 0; y < frame.height; ++y)
+        for (uint32_t x = 0; x < frame.width; ++x) {
+            if (!interior[size_t(y) * frame.width + x]) continue;
+            const Hit hit = castRay(view, frame.width, frame.height, x, y, spheres);
+            ASSERT_GE(hit.sphere, 0) << "interior pixel (" << x << ", " << y << ") misses every sphere";
+            ++count[size_t(hit.sphere)];
+            const glm::vec4 p = pixel(frame, x, y);
+            for (int c = 0; c < 3; ++c) {
+                worst = std::max(worst, std::abs(double(p[c]) - 1.0));
+                highest = std::max(highest, double(p[c]) - 1.0);
+            }
+        }
+    for (size_t i = 0; i < spheres.size(); ++i) EXPECT_GT(count[i], 1000u) << "sphere " << i;
+    measured("clearcoatFurnaceMaxAbsError", worst);
+    measured("clearcoatFurnaceMaxAboveOne", highest);
+    EXPECT_LE(worst, 0.02);
+    EXPECT_LE(highest, 1.0 / 1024.0);
 }
 
 }  // namespace

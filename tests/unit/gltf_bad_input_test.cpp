@@ -226,6 +226,14 @@ std::vector<BadCase> badCases() {
             b.doc["materials"][0]["extensions"] = {{"KHR_materials_specular", {{"specularTexture", {{"texCoord", 0}}}}}};
             return b.writeGlb(dir);
         }, "specularTexture: no texture index");
+    add("ClearcoatRoughnessNotANumber", edited([](GltfBuilder& b) {
+            b.doc["materials"] = Json::array({{{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatRoughnessFactor", true}}}}}}});
+        }), "KHR_materials_clearcoat.clearcoatRoughnessFactor: expected a number");
+    add("ClearcoatTextureMissing", [](const fs::path& dir) {
+            GltfBuilder b = texturedTriangle("", smallPng());
+            b.doc["materials"][0]["extensions"] = {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1}, {"clearcoatTexture", {{"index", 7}}}}}};
+            return b.writeGlb(dir);
+        }, "clearcoatTexture: texture 7 does not exist");
     add("TextureImageMissing", [](const fs::path& dir) {
             GltfBuilder b = texturedTriangle("", smallPng());
             b.doc["textures"][0]["source"] = 3;

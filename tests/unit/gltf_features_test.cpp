@@ -349,6 +349,47 @@ TEST(GltfFeatures, IorAndSpecularExtensions) {
     EXPECT_EQ(scene.warnings.size(), 2u);
 }
 
+TEST(GltfFeatures, ClearcoatExtension) {
+    // Factors, the three textures (linear, the normal map with its scale and a transform), the
+    // defaults, factor 0 disabling the layer whatever its textures, clamping with a warning.
+    TempDir dir;
+    GltfBuilder b = texturedTriangle("", smallPng({10, 20, 30, 40}));
+    b.doc["extensionsUsed"] = {"KHR_materials_clearcoat", "KHR_texture_transform"};
+    const Json core = b.doc["materials"][0];
+    b.doc["materials"] = Json::array({
+        {{"extensions",
+          {{"KHR_materials_clearcoat",
+            {{"clearcoatFactor", 0.75}, {"clearcoatRoughnessFactor", 0.25}, {"clearcoatTexture", {{"index", 0}}},
+             {"clearcoatRoughnessTexture", {{"index", 0}}},
+             {"clearcoatNormalTexture",
+              {{"index", 0}, {"scale", 0.5}, {"extensions", {{"KHR_texture_transform", {{"offset", {0.5, 0}}}}}}}}}}}}},
+        {{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1}}}}}},
+        {{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatTexture", {{"index", 0}}}}}}}},
+        {{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.5}, {"clearcoatRoughnessFactor", -1}}}}}},
+        core});
+    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    ASSERT_EQ(scene.materials.size(), 5u);
+    const Material& m = scene.materials[0];
+    EXPECT_FLOAT_EQ(m.clearcoatFactor, 0.75f);
+    EXPECT_FLOAT_EQ(m.clearcoatRoughnessFactor, 0.25f);
+    EXPECT_FLOAT_EQ(m.clearcoatNormalScale, 0.5f);
+    ASSERT_TRUE(m.clearcoat.present() && m.clearcoatRoughness.present() && m.clearcoatNormal.present());
+    EXPECT_FALSE(scene.images.at(size_t(m.clearcoat.image)).srgb);
+    EXPECT_EQ(m.clearcoatNormal.transform.offset, glm::vec2(0.5f, 0.0f));
+    EXPECT_EQ(m.layers(), uint32_t(kLayerClearcoat | kLayerClearcoatNormal));
+    // Defaults: roughness 0, no normal map.
+    EXPECT_FLOAT_EQ(scene.materials[1].clearcoatRoughnessFactor, 0.0f);
+    EXPECT_EQ(scene.materials[1].layers(), uint32_t(kLayerClearcoat));
+    // clearcoatFactor defaults to 0, which disables the layer.
+    EXPECT_EQ(scene.materials[2].layers(), 0u);
+    EXPECT_EQ(scene.materials[4].layers(), 0u);
+    EXPECT_FLOAT_EQ(scene.materials[3].clearcoatFactor, 1.0f);
+    EXPECT_FLOAT_EQ(scene.materials[3].clearcoatRoughnessFactor, 0.0f);
+    EXPECT_TRUE(hasWarning(scene, "clearcoatFactor 1.5 is outside [0, 1] (using 1)"));
+    EXPECT_TRUE(hasWarning(scene, "clearcoatRoughnessFactor -1 is outside [0, 1] (using 0)"));
+    EXPECT_EQ(scene.warnings.size(), 2u);
+}
+
 // A triangle whose material uses `png` for all five textures, plus samplers.
 GltfBuilder fiveTextureModel(const Bytes& png) {
     GltfBuilder b;
