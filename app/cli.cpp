@@ -250,6 +250,10 @@ Command parseCommandLine(const std::vector<std::string>& args) {
             if (v != "on" && v != "off") throw UserError("--scene-lights: expected on or off, got '" + v + "'");
             o.sceneLights = v == "on";
         };
+        table.withValue["--variant"] = [&](const std::string& v) {
+            if (v.empty()) throw UserError("--variant: expected a variant name");
+            o.variant = v;
+        };
         table.switches["--explain"] = [&] { o.explain = true; };
         if (command.kind == Command::Kind::Render) {
             o.frames = 1;
@@ -439,6 +443,8 @@ render options:
   --no-default-lights   a scene without punctual lights normally gets a default key and fill light
   --scene-lights on|off the file's own KHR_lights_punctual lights (off: image-based lighting only,
                         for comparisons; the scene then counts as one without lights) [on]
+  --variant NAME        draw the file's KHR_materials_variants variant NAME (an unknown name is an
+                        error that lists the file's variants) [the default materials]
   --explain             print which passes and shader variants were left out, and why
 
 view options: the render options (except --out, --width and --height: the window's size), and

@@ -38,6 +38,7 @@ struct RenderOptions {
     bool dither = false;              // --dither
     bool defaultLights = true;        // --no-default-lights turns off the key/fill lights of light-less scenes
     bool sceneLights = true;          // --scene-lights off leaves out the file's own punctual lights
+    std::string variant;              // --variant NAME: a KHR_materials_variants variant ("" = defaults)
     bool explain = false;             // --explain
     uint32_t frames = 20;             // bench: --frames N; view: frames to render before exiting (0: until closed)
     std::string screenshot;           // view: --screenshot FILE (saves the last of --frames N)

@@ -9,6 +9,7 @@
 #include "renderer.h"
 #include "scene/builtin_scenes.h"
 #include "scene/gltf_loader.h"
+#include "scene/material_variants.h"
 #include "scene/procedural_sky.h"
 #include "shared/tonemap.h"
 #include "vk/context.h"
@@ -32,6 +33,7 @@ scene::Scene loadScene(const RenderOptions& options) {
     scene::Scene scene = options.scene.empty() ? scene::makeSphereGrid()
                                                : scene::loadGltf(options.scene, {.sceneIndex = options.sceneIndex});
     for (const std::string& warning : scene.warnings) log::warn(options.scene + ": " + warning);
+    if (!options.variant.empty()) scene::selectVariant(scene, scene::variantIndex(scene, options.variant));
     return scene;
 }
 

@@ -5,6 +5,7 @@
 #include "core/check.h"
 #include "core/log.h"
 #include "io/image_file.h"
+#include "scene/material_variants.h"
 #include "statistics.h"
 #include "ui/viewer.h"
 
@@ -41,6 +42,7 @@ int runView(const RenderOptions& options) {
     }
     ui::ViewerContent content;
     content.scene = loadScene(options);
+    if (!options.variant.empty()) content.variant = scene::variantIndex(content.scene, options.variant);
     if (std::optional<scene::Environment> env = loadEnvironment(options))
         content.environment = std::make_unique<scene::Environment>(std::move(*env));
     // The viewer owns the scene and environment from now on and points each frame's settings at

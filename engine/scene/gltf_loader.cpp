@@ -62,9 +62,9 @@ std::string label(const char* kind, int index, const std::string& name) {
 
 namespace {
 
-constexpr std::array<std::string_view, 11> kSupportedExtensions = {
+constexpr std::array<std::string_view, 13> kSupportedExtensions = {
     "KHR_materials_emissive_strength", "KHR_texture_transform", "KHR_materials_unlit", "KHR_materials_ior",
-    "KHR_materials_specular", "KHR_materials_clearcoat",
+    "KHR_materials_specular", "KHR_materials_clearcoat", "KHR_materials_pbrSpecularGlossiness", "KHR_materials_variants",
     "KHR_lights_punctual", "KHR_mesh_quantization", "EXT_mesh_gpu_instancing", "KHR_draco_mesh_compression",
     "EXT_meshopt_compression"};
 
@@ -96,6 +96,7 @@ void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, cons
     gltf::loadSamplers(ctx, model, scene);
     gltf::ImageTable images(ctx, model, std::move(parsed.uriImages), options, scene);
     gltf::loadMaterials(ctx, model, images, scene);
+    gltf::loadVariantNames(ctx, model, scene);
     gltf::loadNodes(ctx, model, options.sceneIndex, scene);
     gltf::loadAnimations(ctx, model, scene);
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <optional>
 #include <set>
 
@@ -107,6 +108,8 @@ std::set<std::pair<int, bool>> imageUses(const tinygltf::Model& model) {
         add(index("KHR_materials_specular", "specularColorTexture"), true);
         for (const char* key : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})
             add(index("KHR_materials_clearcoat", key), false);
+        add(index("KHR_materials_pbrSpecularGlossiness", "diffuseTexture"), true);
+        add(index("KHR_materials_pbrSpecularGlossiness", "specularGlossinessTexture"), true);
     }
     return uses;
 }
@@ -187,6 +190,67 @@ void loadClearcoat(const LoadContext& ctx, const tinygltf::Model& model, ImageTa
             out.clearcoatNormalScale = factor(ctx, *scale, -1e6, 1e6, what + " clearcoatNormalTexture.scale");
 }
 
+// A copy of image `source` whose G channel holds 1 − glossiness · A (roughness, as the
+// metallic-roughness texture's G), B = 0 (metallic) and R, A = 255; appended to scene.images once
+// per (image, glossiness) through `made`.
+int roughnessFromGlossiness(Scene& scene, int source, float glossiness, std::map<std::pair<int, float>, int>& made) {
+    const auto key = std::pair{source, glossiness};
+    if (auto it = made.find(key); it != made.end()) return it->second;
+    const Image& from = scene.images[size_t(source)];
+    Image out;
+    out.name = from.name + " (roughness = 1 - glossiness)";
+    out.width = from.width;
+    out.height = from.height;
+    out.rgba8.resize(from.rgba8.size());
+    for (size_t i = 0; i + 3 < from.rgba8.size(); i += 4) {
+        const float gloss = glossiness * float(from.rgba8[i + 3]) / 255.0f;
+        out.rgba8[i] = 255;
+        out.rgba8[i + 1] = uint8_t(std::lround(255.0f * (1.0f - gloss)));
+        out.rgba8[i + 2] = 0;
+        out.rgba8[i + 3] = 255;
+    }
+    scene.images.push_back(std::move(out));
+    return made[key] = int(scene.images.size() - 1);
+}
+
+// KHR_materials_pbrSpecularGlossiness (archived), converted to metallic-roughness with the specular
+// layer, which KHR_materials_ior's IOR 0 defines for this purpose: base colour = diffuse, metallic
+// 0, roughness = 1 − glossiness, f0 = specular colour (IOR 0, specular 1, f90 1). The textures:
+// diffuseTexture becomes the base colour texture; specularGlossinessTexture's RGB (sRGB) the
+// specular colour texture and its A a derived roughness texture (docs/materials.md). Replaces the
+// material's metallic-roughness values.
+void loadSpecularGlossiness(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
+                            const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what, Scene& scene,
+                            std::map<std::pair<int, float>, int>& derived) {
+    const auto it = extensions.find("KHR_materials_pbrSpecularGlossiness");
+    if (it == extensions.end()) return;
+    const tinygltf::Value& e = it->second;
+    out.baseColorFactor = glm::vec4(1.0f);
+    if (e.Has("diffuseFactor"))
+        for (int i = 0; i < 4; ++i)
+            out.baseColorFactor[i] = clampedFactor(ctx, e.Get("diffuseFactor").Get(i).GetNumberAsDouble(), 0.0, 1.0, what + " diffuseFactor");
+    out.specularColorFactor = glm::vec3(1.0f);
+    if (e.Has("specularFactor"))
+        for (int i = 0; i < 3; ++i)
+            out.specularColorFactor[i] =
+                clampedFactor(ctx, e.Get("specularFactor").Get(i).GetNumberAsDouble(), 0.0, 1.0, what + " specularFactor");
+    float glossiness = 1.0f;
+    if (auto g = number(e, "glossinessFactor")) glossiness = clampedFactor(ctx, *g, 0.0, 1.0, what + " glossinessFactor");
+    out.metallicFactor = 0.0f;
+    out.ior = 0.0f;
+    out.specularFactor = 1.0f;
+    out.specular = {};
+    out.baseColor = extensionTexture(ctx, model, images, e, "diffuseTexture", true, what);
+    out.specularColor = extensionTexture(ctx, model, images, e, "specularGlossinessTexture", true, what);
+    out.metallicRoughness = out.specularColor;
+    if (out.specularColor.present()) {
+        out.metallicRoughness.image = roughnessFromGlossiness(scene, out.specularColor.image, glossiness, derived);
+        out.roughnessFactor = 1.0f;
+    } else {
+        out.roughnessFactor = 1.0f - glossiness;
+    }
+}
+
 }  // namespace
 
 void loadSamplers(const LoadContext& ctx, const tinygltf::Model& model, Scene& scene) {
@@ -221,6 +285,7 @@ void loadSamplers(const LoadContext& ctx, const tinygltf::Model& model, Scene& s
 
 void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images, Scene& scene) {
     images.checkDecodedSize(imageUses(model));
+    std::map<std::pair<int, float>, int> derivedImages;  // roughness images made from glossiness
     for (size_t i = 0; i < model.materials.size(); ++i) {
         const tinygltf::Material& m = model.materials[i];
         const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
@@ -261,8 +326,47 @@ void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTa
                                    m.occlusionTexture.extensions, false, what + " occlusionTexture");
         out.emissive = textureRef(ctx, model, images, m.emissiveTexture.index, m.emissiveTexture.texCoord,
                                   m.emissiveTexture.extensions, true, what + " emissiveTexture");
+        loadSpecularGlossiness(ctx, model, images, m.extensions, out, what, scene, derivedImages);
         scene.materials.push_back(std::move(out));
     }
+}
+
+void loadVariantNames(const LoadContext& ctx, const tinygltf::Model& model, Scene& scene) {
+    const auto it = model.extensions.find("KHR_materials_variants");
+    if (it == model.extensions.end() || !it->second.Has("variants")) return;
+    const tinygltf::Value& variants = it->second.Get("variants");
+    for (int i = 0; i < int(variants.ArrayLen()); ++i) {
+        const tinygltf::Value& v = variants.Get(i);
+        std::string name = v.Get("name").Get<std::string>();  // required (the schema check)
+        if (std::find(scene.variants.begin(), scene.variants.end(), name) != scene.variants.end())
+            ctx.warn("KHR_materials_variants: variant name '" + name + "' is used twice (--variant selects the first)");
+        scene.variants.push_back(std::move(name));
+    }
+}
+
+std::vector<std::pair<uint32_t, uint32_t>> primitiveVariants(const LoadContext& ctx, const tinygltf::Primitive& primitive,
+                                                             const Scene& scene, const std::string& what) {
+    std::vector<std::pair<uint32_t, uint32_t>> out;
+    const auto it = primitive.extensions.find("KHR_materials_variants");
+    if (it == primitive.extensions.end() || !it->second.Has("mappings")) return out;
+    const tinygltf::Value& mappings = it->second.Get("mappings");
+    for (int i = 0; i < int(mappings.ArrayLen()); ++i) {
+        const tinygltf::Value& mapping = mappings.Get(i);
+        const std::string where = what + " KHR_materials_variants mapping " + std::to_string(i);
+        if (!mapping.Has("material")) ctx.fail(where + ": no material");
+        const int material = mapping.Get("material").GetNumberAsInt();
+        if (material < 0 || size_t(material) >= scene.materials.size())
+            ctx.fail(where + ": material " + std::to_string(material) + " does not exist");
+        const tinygltf::Value& variants = mapping.Get("variants");
+        for (int j = 0; j < int(variants.ArrayLen()); ++j) {
+            const int variant = variants.Get(j).GetNumberAsInt();
+            if (variant < 0 || size_t(variant) >= scene.variants.size())
+                ctx.fail(where + ": variant " + std::to_string(variant) + " does not exist (the file defines " +
+                         std::to_string(scene.variants.size()) + ")");
+            out.emplace_back(uint32_t(variant), uint32_t(material));
+        }
+    }
+    return out;
 }
 
 }  // namespace candela::scene::gltf

@@ -178,7 +178,7 @@ size_t dropZeroAreaTriangles(std::span<const Vertex> vertices, std::vector<uint3
 }
 
 PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model& model, int meshIndex, int primitiveIndex,
-                                  const Material& material, Scene& scene) {
+                                  const TextureRef* tangentMap, Scene& scene) {
     const tinygltf::Mesh& mesh = model.meshes[size_t(meshIndex)];
     const tinygltf::Primitive& primitive = mesh.primitives[size_t(primitiveIndex)];
     const std::string what = label("mesh", meshIndex, mesh.name) + " primitive " + std::to_string(primitiveIndex);
@@ -231,8 +231,8 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
     std::iota(origin.begin(), origin.end(), 0u);
     if (!attributes.normals) makeFlatNormals(vertices, indices, origin);
     const bool haveTangents = attributes.tangents && attributes.normals;
-    if (!haveTangents && material.normal.present())
-        generateVertexTangents(ctx, what, material.normal, attributes, vertices, indices, origin);
+    if (!haveTangents && tangentMap)
+        generateVertexTangents(ctx, what, *tangentMap, attributes, vertices, indices, origin);
 
     const size_t base = scene.vertices.size();
     if (base + vertices.size() > std::numeric_limits<uint32_t>::max() ||

@@ -25,12 +25,14 @@ struct PrimitiveGeometry {
 
 // Reads primitive `primitive` of mesh `mesh` (both indices valid) and appends it to scene.vertices
 // and scene.indices as a triangle list, with absolute indices. Strips and fans are converted;
-// normals are computed flat when absent; tangents are generated (MikkTSpace) when `material` has a
-// normal texture and the primitive has no TANGENT, splitting vertices whose corners disagree.
+// normals are computed flat when absent; tangents are generated (MikkTSpace, on the texture
+// coordinates of `tangentMap`) when `tangentMap` is given (a material of the primitive has a normal
+// map: Material::tangentSpaceMap) and the primitive has no TANGENT, splitting vertices whose corners
+// disagree.
 // Throws UserError (via ctx) on malformed data: out-of-range accessors or indices, non-finite
 // positions, attribute counts that differ from POSITION's.
 PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model& model, int mesh, int primitive,
-                                  const Material& material, Scene& scene);
+                                  const TextureRef* tangentMap, Scene& scene);
 
 // Converts an index sequence of glTF topology `mode` (TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN)
 // to a triangle list with the winding the specification defines. Strip and fan triangles that

@@ -1,6 +1,7 @@
 #include "scene/gltf_nodes.h"
 
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_materials.h"
 #include "scene/gltf_mesh.h"
 #include "scene/node_placement.h"
 #include "scene/skinning.h"
@@ -301,11 +302,18 @@ private:
         }
         const auto& primitives = mModel.meshes[size_t(meshIndex)].primitives;
         for (size_t p = 0; p < primitives.size(); ++p) {
-            const uint32_t material = materialIndex(primitives[p].material, label("mesh", meshIndex) + " primitive " + std::to_string(p));
+            const std::string primitiveName = label("mesh", meshIndex) + " primitive " + std::to_string(p);
+            const uint32_t material = materialIndex(primitives[p].material, primitiveName);
+            const std::vector<std::pair<uint32_t, uint32_t>> variants =
+                primitiveVariants(mCtx, primitives[p], mScene, primitiveName);
             auto cached = mGeometry.find({meshIndex, int(p)});
             if (cached == mGeometry.end()) {
+                // Tangents follow the first normal map among the materials the primitive may wear.
+                const TextureRef* tangentMap = mScene.materials[material].tangentSpaceMap();
+                for (const auto& [variant, m] : variants)
+                    if (!tangentMap) tangentMap = mScene.materials[m].tangentSpaceMap();
                 cached = mGeometry.emplace(std::pair{meshIndex, int(p)},
-                                           appendPrimitive(mCtx, mModel, meshIndex, int(p), mScene.materials[material], mScene))
+                                           appendPrimitive(mCtx, mModel, meshIndex, int(p), tangentMap, mScene))
                              .first;
                 mRenormalizedWeights += cached->second.renormalizedWeights;
             }
@@ -329,6 +337,8 @@ private:
                                             : glm::vec3(0.0f);
                 if (!skinned && placeDraw(draw, world, reach, std::span(mScene.instances).subspan(first, count)) == Placement::BeyondFloat)
                     mCtx.fail(what + ": a corner of its mesh in world space is beyond single precision");
+                if (!variants.empty())
+                    mScene.drawVariants.push_back({uint32_t(mScene.draws.size()), material, variants});
                 mScene.draws.push_back(draw);
             }
         }

@@ -93,15 +93,18 @@ public:
         return &properties(*it, join(path, key), list);
     }
 
-    // Each element of the top-level array `key` (when present) is an object checked by `each`.
-    void array(const Json& root, const char* key, const std::function<void(const Json&, const std::string&)>& each) const {
-        auto it = root.find(key);
-        if (it == root.end()) return;
-        if (!it->is_array()) fail(key, "an array of objects", *it);
+    // Each element of the array `key` of `object` (at `path`; "" for the document) is, when
+    // present, an object checked by `each`.
+    void array(const Json& object, const char* key, const std::function<void(const Json&, const std::string&)>& each,
+               const std::string& path = "") const {
+        auto it = object.find(key);
+        if (it == object.end()) return;
+        const std::string where = join(path, key);
+        if (!it->is_array()) fail(where, "an array of objects", *it);
         for (size_t i = 0; i < it->size(); ++i) {
-            const std::string path = std::string(key) + "[" + std::to_string(i) + "]";
-            check((*it)[i], path, Kind::Object);
-            each((*it)[i], path);
+            const std::string element = where + "[" + std::to_string(i) + "]";
+            check((*it)[i], element, Kind::Object);
+            each((*it)[i], element);
         }
     }
 
@@ -126,6 +129,12 @@ void checkDocument(const Checker& c, const Json& root) {
     c.properties(*asset, "asset", {{"version", Kind::String}, {"minVersion", Kind::String}});
     if (!asset->contains("version")) c.fail("asset.version", "a string", Json());
     c.properties(root, "", {{"scene", Kind::Index}, {"extensionsUsed", Kind::StringArray}, {"extensionsRequired", Kind::StringArray}});
+    if (const Json* ext = c.child(root, "", "extensions", {}))
+        if (const Json* variants = c.child(*ext, "extensions", "KHR_materials_variants", {}))
+            c.array(*variants, "variants", [&](const Json& v, const std::string& p) {
+                c.properties(v, p, {{"name", Kind::String}});
+                if (!v.contains("name")) c.fail(p + ".name", "a string (a variant's name is required)", Json());
+            }, "extensions.KHR_materials_variants");
 
     c.array(root, "accessors", [&](const Json& a, const std::string& p) {
         c.properties(a, p, {{"bufferView", Kind::Index}, {"byteOffset", Kind::Count}, {"componentType", Kind::Integer},
@@ -184,6 +193,12 @@ void checkDocument(const Checker& c, const Json& root) {
                 c.textureInfo(*coat, pc, "clearcoatRoughnessTexture");
                 c.textureInfo(*coat, pc, "clearcoatNormalTexture", true);
             }
+            if (const Json* sg = c.child(*ext, pe, "KHR_materials_pbrSpecularGlossiness",
+                                         {{"diffuseFactor", Kind::NumberArray, 4}, {"specularFactor", Kind::NumberArray, 3},
+                                          {"glossinessFactor", Kind::Number}})) {
+                c.textureInfo(*sg, pe + ".KHR_materials_pbrSpecularGlossiness", "diffuseTexture");
+                c.textureInfo(*sg, pe + ".KHR_materials_pbrSpecularGlossiness", "specularGlossinessTexture");
+            }
         }
     });
     c.array(root, "meshes", [&](const Json& mesh, const std::string& p) {
@@ -197,7 +212,7 @@ void checkDocument(const Checker& c, const Json& root) {
             if (attributes == prim.end()) c.fail(pp + ".attributes", "an object", Json());
             c.check(*attributes, pp + ".attributes", Kind::Object);
             for (auto it = attributes->begin(); it != attributes->end(); ++it) c.check(it.value(), pp + ".attributes." + it.key(), Kind::Index);
-            if (const Json* ext = c.child(prim, pp, "extensions", {}))
+            if (const Json* ext = c.child(prim, pp, "extensions", {})) {
                 if (const Json* draco = c.child(*ext, pp + ".extensions", "KHR_draco_mesh_compression",
                                                 {{"bufferView", Kind::Index}, {"attributes", Kind::Object}})) {
                     const std::string dp = pp + ".extensions.KHR_draco_mesh_compression";
@@ -206,6 +221,14 @@ void checkDocument(const Checker& c, const Json& root) {
                     const Json& ids = draco->at("attributes");
                     for (auto it = ids.begin(); it != ids.end(); ++it) c.check(it.value(), dp + ".attributes." + it.key(), Kind::Index);
                 }
+                const std::string vp = pp + ".extensions.KHR_materials_variants";
+                if (const Json* variants = c.child(*ext, pp + ".extensions", "KHR_materials_variants", {}))
+                    c.array(*variants, "mappings", [&](const Json& m, const std::string& mp) {
+                        c.properties(m, mp, {{"material", Kind::Index}, {"variants", Kind::IndexArray}, {"name", Kind::String}});
+                        if (!m.contains("material")) c.fail(mp + ".material", "an index (an integer >= 0)", Json());
+                        if (!m.contains("variants")) c.fail(mp + ".variants", "an array of indices", Json());
+                    }, vp);
+            }
         }
     });
     c.array(root, "nodes", [&](const Json& n, const std::string& p) {

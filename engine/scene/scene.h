@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace candela::scene {
@@ -121,6 +122,11 @@ struct Material {
     // The layers beyond the core model this material uses (MaterialLayer bits): only those are
     // evaluated for it (see docs/materials.md).
     uint32_t layers() const;
+    // The normal map whose tangent frame the material needs — the material's own, else the coat's
+    // (KHR_materials_clearcoat asks for the same texture coordinates) — or null without one.
+    const TextureRef* tangentSpaceMap() const {
+        return normal.present() ? &normal : clearcoatNormal.present() ? &clearcoatNormal : nullptr;
+    }
 };
 
 // Layers of a material beyond glTF's core metallic-roughness model, as bits.
@@ -216,6 +222,14 @@ struct Draw {
     uint32_t instanceCount = 0;  // 0: not instanced (one copy at `world`)
 };
 
+// KHR_materials_variants of one draw: its own material and the material each variant that maps it
+// gives it.
+struct DrawVariants {
+    uint32_t draw = 0;             // Scene::draws index
+    uint32_t defaultMaterial = 0;  // the primitive's material without a variant
+    std::vector<std::pair<uint32_t, uint32_t>> materials;  // (Scene::variants index, Scene::materials index)
+};
+
 enum class LightType : uint8_t { Directional, Point, Spot };
 
 // KHR_lights_punctual, in world space. Units: candela (point/spot), lux (directional).
@@ -266,6 +280,11 @@ struct Scene {
     // without scenes and for built-in scenes.
     std::vector<std::string> sceneNames;
     uint32_t sceneIndex = 0;
+    // KHR_materials_variants: the file's variant names (in file order), and each draw whose material
+    // a variant changes. Draw::material holds the selected variant's material
+    // (scene/material_variants.h selects one; after loading, every draw has its default).
+    std::vector<std::string> variants;
+    std::vector<DrawVariants> drawVariants;
     Aabb bounds;  // world space, over all draws
     std::vector<std::string> warnings;  // non-fatal problems met while loading
     // What the file's compressed geometry cost to load (KHR_draco_mesh_compression,

@@ -37,6 +37,17 @@ void drawMaterialPanel(Viewer& viewer) {
         return;
     }
     uint32_t selected = std::min<uint32_t>(viewer.selectedMaterial(), uint32_t(scene.materials.size() - 1));
+    if (!scene.variants.empty()) {
+        // KHR_materials_variants: the file's variants, and its default materials.
+        const std::optional<uint32_t> current = viewer.variant();
+        if (ImGui::BeginCombo("variant", current ? scene.variants[*current].c_str() : "(default materials)")) {
+            if (ImGui::Selectable("(default materials)", !current)) viewer.selectVariant(std::nullopt);
+            for (uint32_t v = 0; v < scene.variants.size(); ++v)
+                if (ImGui::Selectable((scene.variants[v] + "##variant" + std::to_string(v)).c_str(), current == v))
+                    viewer.selectVariant(v);
+            ImGui::EndCombo();
+        }
+    }
     if (ImGui::BeginCombo("material", materialLabel(scene, selected).c_str())) {
         for (uint32_t i = 0; i < scene.materials.size(); ++i)
             if (ImGui::Selectable(materialLabel(scene, i).c_str(), i == selected)) viewer.selectMaterial(i);

@@ -6,6 +6,7 @@
 #include "io/image_file.h"
 #include "passes/imgui_pass.h"
 #include "scene/gltf_loader.h"
+#include "scene/material_variants.h"
 #include "scene/picking.h"
 #include "scene/procedural_sky.h"
 #include "shader/shader_library.h"
@@ -66,6 +67,7 @@ std::string lowerExtension(const std::filesystem::path& path) {
 Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
     : mUi(desc.ui), mScene(std::move(content.scene)), mEnvironment(std::move(content.environment)),
       mSettings(std::move(content.settings)) {
+    mVariant = content.variant;
     mPose = std::make_unique<scene::ScenePose>(mScene, scene::selectAnimations(mScene, content.animations));
     mAnimationTime = content.time;
     mPose->evaluate(mAnimationTime);
@@ -154,6 +156,7 @@ bool Viewer::openFile(const std::filesystem::path& path, std::optional<uint32_t>
             // the new one at the next frame.
             mRenderer->sceneReplaced();
             mScene = std::move(loaded);
+            mVariant.reset();
             mPose = std::make_unique<scene::ScenePose>(mScene, scene::selectAnimations(mScene, {}));
             mAnimationTime = 0.0;
             mCamera = mInitialCamera =
@@ -237,6 +240,14 @@ bool Viewer::exportGraph(const std::filesystem::path& path, bool json) {
     }
     setStatus("wrote " + path.string());
     return true;
+}
+
+void Viewer::selectVariant(std::optional<uint32_t> variant) {
+    mRenderer->sceneReplaced();  // waits for the frames in flight; the next frame uploads again
+    scene::selectVariant(mScene, variant);
+    mVariant = variant;
+    setPlayingAnimations(mPose->playing());  // the pose holds copies of the draws
+    setStatus("variant: " + (variant ? mScene.variants[*variant] : std::string("the default materials")));
 }
 
 void Viewer::setPlayingAnimations(std::vector<uint32_t> animations) {

@@ -58,6 +58,7 @@ struct ViewerContent {
     RenderSettings settings;
     std::vector<std::string> animations;  // the ones to play (scene::selectAnimations); empty: animation 0
     double time = 0.0;                    // where playback starts, seconds
+    std::optional<uint32_t> variant;      // the KHR_materials_variants variant `scene` was given (scene::selectVariant)
 };
 
 class Viewer {
@@ -96,6 +97,10 @@ public:
     // The material inspector's selection; pickMaterial selects the material of the mesh under
     // window position `pixel` (returns false if no mesh is there).
     void selectMaterial(uint32_t material) { mSelectedMaterial = material; }
+    // The scene's KHR_materials_variants variant (nullopt: the default materials): re-poses the
+    // scene and has the renderer upload it again at the next frame.
+    void selectVariant(std::optional<uint32_t> variant);
+    std::optional<uint32_t> variant() const { return mVariant; }
     uint32_t selectedMaterial() const { return mSelectedMaterial; }
     bool pickMaterial(const glm::vec2& pixel);
     // The animation panel's controls: which of the scene's animations play (a new pose, same
@@ -171,6 +176,7 @@ private:
     bool mRecreate = false;
     bool mSimulatedMinimized = false;
     scene::Scene mScene;
+    std::optional<uint32_t> mVariant;
     // The scene's animations as they play: advanced by the wall-clock time between frames, looping.
     std::unique_ptr<scene::ScenePose> mPose;
     double mAnimationTime = 0.0;

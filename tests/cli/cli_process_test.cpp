@@ -46,6 +46,7 @@ void appendU32(std::string& out, uint32_t v) {
 //   syntax.gltf                     a JSON syntax error (trailing comma)
 //   scene.obj                       a Wavefront OBJ triangle (not glTF)
 //   folder.gltf/                    a directory
+//   variants.gltf                   the triangle with KHR_materials_variants "red" and "blue"
 std::filesystem::path writeSceneFiles() {
     const auto dir = std::filesystem::temp_directory_path() / ("candela_cli_scenes_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
@@ -64,6 +65,13 @@ std::filesystem::path writeSceneFiles() {
     writeFile(dir / "triangle.bin", bin);
     writeFile(dir / "truncated.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 8\n\x01\x02");
     writeFile(dir / "triangle.gltf", withUri(R"(,"uri":"triangle.bin")"));
+    std::string variants = withUri(R"(,"uri":"triangle.bin")");
+    variants.replace(variants.find(R"({"attributes":{"POSITION":0}})"), std::string(R"({"attributes":{"POSITION":0}})").size(),
+                     R"({"attributes":{"POSITION":0},"material":0,"extensions":{"KHR_materials_variants":)"
+                     R"({"mappings":[{"material":1,"variants":[1]}]}}})");
+    variants.insert(variants.size() - 1, R"(,"materials":[{},{}],"extensions":{"KHR_materials_variants":)"
+                                         R"({"variants":[{"name":"red"},{"name":"blue"}]}})");
+    writeFile(dir / "variants.gltf", variants);
     std::string chunk = withUri("");
     while (chunk.size() % 4) chunk += ' ';
     std::string glb;
@@ -129,6 +137,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"SwitchWithValue", "render --validate=yes", "--validate takes no value"},
                       BadInput{"UnknownPassToDisable", "render --disable-pass nosuchpass --out /tmp/candela_np.png", "nosuchpass"},
                       // Scenes ({dir}: the files of writeSceneFiles) and the scene, camera and image options.
+                      BadInput{"VariantUnknown", "render --scene {dir}/variants.gltf --variant green --out {dir}/x.png",
+                               "--variant: {dir}/variants.gltf has no variant 'green' (its variants: red, blue)"},
+                      BadInput{"VariantWithoutVariants", "render --scene {dir}/triangle.gltf --variant red --out {dir}/x.png",
+                               "--variant red: {dir}/triangle.gltf has no material variants (KHR_materials_variants)"},
                       BadInput{"SceneMissing", "render --scene {dir}/missing.gltf --out {dir}/x.png", "{dir}/missing.gltf: cannot open: No such file"},
                       BadInput{"SceneIsDirectory", "render --scene {dir}/folder.gltf --out {dir}/x.png", "{dir}/folder.gltf: is a directory"},
                       BadInput{"SceneTruncatedGlb", "render --scene {dir}/truncated.glb --out {dir}/x.png", "{dir}/truncated.glb: truncated GLB: header says"},

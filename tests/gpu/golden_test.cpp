@@ -18,6 +18,7 @@
 #include "renderer.h"
 #include "scene/builtin_scenes.h"
 #include "scene/gltf_loader.h"
+#include "scene/material_variants.h"
 #include "scene/procedural_sky.h"
 #include "scene/scene_pose.h"
 #include "shared/tonemap.h"
@@ -44,6 +45,7 @@ struct GoldenCase {
     // and the time, seconds.
     const char* animation = "";
     double time = 0.0;
+    const char* variant = "";  // KHR_materials_variants: the variant to draw ("" the default materials)
 };
 
 constexpr uint32_t kWidth = 256, kHeight = 192;
@@ -93,6 +95,17 @@ const GoldenCase kCases[] = {
     // KHR_materials_clearcoat: base, coated and coating-only columns; plain, textured (partial),
     // rough and normal-mapped coats.
     {"ibl_clearcoat_test", "ClearCoatTest/glTF-Binary/ClearCoatTest.glb", {0.0f, 90.0f, 0.0f}, "studio_small_03_1k.hdr"},
+    // KHR_materials_variants: the shoe's three variants (the file's default is the first).
+    {"ibl_variants_shoe_midnight", "MaterialsVariantsShoe/glTF/MaterialsVariantsShoe.gltf", {20.0f, 60.0f, 0.0f},
+     "studio_small_03_1k.hdr", 0.0f, "", 0.0, "midnight"},
+    {"ibl_variants_shoe_beach", "MaterialsVariantsShoe/glTF/MaterialsVariantsShoe.gltf", {20.0f, 60.0f, 0.0f},
+     "studio_small_03_1k.hdr", 0.0f, "", 0.0, "beach"},
+    {"ibl_variants_shoe_street", "MaterialsVariantsShoe/glTF/MaterialsVariantsShoe.gltf", {20.0f, 60.0f, 0.0f},
+     "studio_small_03_1k.hdr", 0.0f, "", 0.0, "street"},
+    // KHR_materials_pbrSpecularGlossiness converted on load (right) beside the metallic-roughness
+    // bottle (left): the two should look alike.
+    {"ibl_spec_gloss_vs_metal_rough", "SpecGlossVsMetalRough/glTF/SpecGlossVsMetalRough.gltf", {0.0f, 90.0f, 0.0f},
+     "studio_small_03_1k.hdr"},
     {"interpolation_test_t0_9", "InterpolationTest/glTF-Binary/InterpolationTest.glb", {0.0f, 90.0f, 20.0f}, "", 0.0f, "all", 0.9},
 };
 
@@ -130,6 +143,7 @@ std::optional<std::vector<uint8_t>> render(vk::Context& context, const GoldenCas
         const std::filesystem::path path = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models" / c.model;
         if (!std::filesystem::exists(path)) return std::nullopt;
         scene = scene::loadGltf(path);
+        if (*c.variant) scene::selectVariant(scene, scene::variantIndex(scene, c.variant));
     } else {
         scene = scene::makeSphereGrid();
     }

@@ -234,6 +234,29 @@ std::vector<BadCase> badCases() {
             b.doc["materials"][0]["extensions"] = {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1}, {"clearcoatTexture", {{"index", 7}}}}}};
             return b.writeGlb(dir);
         }, "clearcoatTexture: texture 7 does not exist");
+    add("VariantMappingMaterialMissing", [](const fs::path& dir) {
+            GltfBuilder b = texturedTriangle("", smallPng());
+            b.doc["extensions"] = {{"KHR_materials_variants", {{"variants", {{{"name", "a"}}}}}}};
+            b.doc["meshes"][0]["primitives"][0]["extensions"] = {
+                {"KHR_materials_variants", {{"mappings", {{{"material", 9}, {"variants", {0}}}}}}}};
+            return b.writeGlb(dir);
+        }, "mesh 0 primitive 0 KHR_materials_variants mapping 0: material 9 does not exist");
+    add("VariantIndexMissing", [](const fs::path& dir) {
+            GltfBuilder b = texturedTriangle("", smallPng());
+            b.doc["extensions"] = {{"KHR_materials_variants", {{"variants", {{{"name", "a"}}}}}}};
+            b.doc["meshes"][0]["primitives"][0]["extensions"] = {
+                {"KHR_materials_variants", {{"mappings", {{{"material", 0}, {"variants", {3}}}}}}}};
+            return b.writeGlb(dir);
+        }, "mapping 0: variant 3 does not exist (the file defines 1)");
+    add("VariantMappingWithoutVariants", edited([](GltfBuilder& b) {
+            b.doc["meshes"][0]["primitives"][0]["extensions"] = {{"KHR_materials_variants", {{"mappings", {{{"material", 0}}}}}}};
+        }), "KHR_materials_variants.mappings[0].variants: expected an array of indices");
+    add("VariantWithoutName", edited([](GltfBuilder& b) {
+            b.doc["extensions"] = {{"KHR_materials_variants", {{"variants", Json::array({Json::object()})}}}};
+        }), "extensions.KHR_materials_variants.variants[0].name: expected a string (a variant's name is required)");
+    add("SpecularGlossinessDiffuseFactorShort", edited([](GltfBuilder& b) {
+            b.doc["materials"] = Json::array({{{"extensions", {{"KHR_materials_pbrSpecularGlossiness", {{"diffuseFactor", {1, 1, 1}}}}}}}});
+        }), "diffuseFactor: expected an array of 4 numbers");
     add("TextureImageMissing", [](const fs::path& dir) {
             GltfBuilder b = texturedTriangle("", smallPng());
             b.doc["textures"][0]["source"] = 3;

@@ -2,6 +2,7 @@
 #include "gltf_test_util.h"
 
 #include "scene/gltf_mesh.h"
+#include "scene/material_variants.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -388,6 +389,80 @@ TEST(GltfFeatures, ClearcoatExtension) {
     EXPECT_TRUE(hasWarning(scene, "clearcoatFactor 1.5 is outside [0, 1] (using 1)"));
     EXPECT_TRUE(hasWarning(scene, "clearcoatRoughnessFactor -1 is outside [0, 1] (using 0)"));
     EXPECT_EQ(scene.warnings.size(), 2u);
+}
+
+TEST(GltfFeatures, SpecularGlossinessIsConvertedToTheSpecularLayer) {
+    // diffuse → base colour (factor and sRGB texture), metallic 0, roughness = 1 − glossiness (a
+    // derived texture from the specularGlossiness alpha), specular colour = specularFactor × the
+    // texture's sRGB RGB with IOR 0 (f0 = specular colour); without textures, factors alone.
+    TempDir dir;
+    GltfBuilder b = texturedTriangle("", smallPng({200, 100, 50, 64}));  // alpha 64: glossiness 0.25 there
+    b.doc["extensionsUsed"] = {"KHR_materials_pbrSpecularGlossiness"};
+    b.doc["materials"] = Json::array({
+        {{"extensions",
+          {{"KHR_materials_pbrSpecularGlossiness",
+            {{"diffuseFactor", {0.5, 0.25, 1.0, 0.75}}, {"specularFactor", {0.5, 0.5, 0.25}}, {"glossinessFactor", 0.5},
+             {"diffuseTexture", {{"index", 0}}}, {"specularGlossinessTexture", {{"index", 0}}}}}}}},
+        {{"extensions", {{"KHR_materials_pbrSpecularGlossiness", {{"glossinessFactor", 0.8}, {"specularFactor", {0.04, 0.04, 0.04}}}}}}},
+        {{"pbrMetallicRoughness", {{"metallicFactor", 0.3}}},
+         {"extensions", {{"KHR_materials_pbrSpecularGlossiness", Json::object()}}}}});
+    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    ASSERT_EQ(scene.materials.size(), 3u);
+    const Material& m = scene.materials[0];
+    EXPECT_EQ(m.baseColorFactor, glm::vec4(0.5f, 0.25f, 1.0f, 0.75f));
+    EXPECT_EQ(m.metallicFactor, 0.0f);
+    EXPECT_EQ(m.ior, 0.0f);
+    EXPECT_EQ(m.specularFactor, 1.0f);
+    expectVec(m.specularColorFactor, {0.5f, 0.5f, 0.25f});
+    ASSERT_TRUE(m.baseColor.present() && m.specularColor.present() && m.metallicRoughness.present());
+    EXPECT_TRUE(scene.images.at(size_t(m.baseColor.image)).srgb);
+    EXPECT_TRUE(scene.images.at(size_t(m.specularColor.image)).srgb);
+    const Image& roughness = scene.images.at(size_t(m.metallicRoughness.image));
+    EXPECT_FALSE(roughness.srgb);
+    EXPECT_EQ(m.roughnessFactor, 1.0f);
+    // Texel 0: glossiness 0.5 × 64/255 → roughness G = 255 − 32 = 223; the others (alpha 255): 128.
+    EXPECT_EQ(roughness.rgba8[1], 223);
+    EXPECT_EQ(roughness.rgba8[2], 0);  // metallic 0
+    EXPECT_EQ(roughness.rgba8[5], 128);
+    EXPECT_EQ(m.layers(), uint32_t(kLayerSpecular));
+    EXPECT_FLOAT_EQ(scene.materials[1].roughnessFactor, 0.2f);
+    EXPECT_FALSE(scene.materials[1].metallicRoughness.present());
+    // The extension replaces the metallic-roughness values; its defaults: white diffuse, f0 1,
+    // glossiness 1 (roughness 0).
+    EXPECT_EQ(scene.materials[2].metallicFactor, 0.0f);
+    EXPECT_EQ(scene.materials[2].baseColorFactor, glm::vec4(1.0f));
+    EXPECT_EQ(scene.materials[2].roughnessFactor, 0.0f);
+    EXPECT_TRUE(scene.warnings.empty());
+}
+
+TEST(GltfFeatures, MaterialVariants) {
+    // Root variant names, per-primitive mappings (one mapping for two variants), selection by
+    // name, back to the defaults, and the error for an unknown name.
+    TempDir dir;
+    GltfBuilder b = texturedTriangle("", smallPng());
+    b.doc["extensionsUsed"] = {"KHR_materials_variants"};
+    b.doc["materials"] = Json::array({Json::object(), {{"name", "red"}}, {{"name", "blue"}}});
+    b.doc["meshes"][0]["primitives"][0]["extensions"] = {
+        {"KHR_materials_variants", {{"mappings", {{{"material", 1}, {"variants", {0}}}, {{"material", 2}, {"variants", {1, 2}}}}}}}};
+    b.doc["extensions"] = {{"KHR_materials_variants", {{"variants", Json::array({Json{{"name", "Red"}}, Json{{"name", "Blue"}}, Json{{"name", "Gold"}}})}}}};
+    Scene scene = loadGltf(b.writeGlb(dir.path()));
+    ASSERT_EQ(scene.variants, (std::vector<std::string>{"Red", "Blue", "Gold"}));
+    ASSERT_EQ(scene.drawVariants.size(), 1u);
+    EXPECT_EQ(scene.draws[0].material, 0u);
+    scene::selectVariant(scene, scene::variantIndex(scene, "Blue"));
+    EXPECT_EQ(scene.draws[0].material, 2u);
+    scene::selectVariant(scene, 0);
+    EXPECT_EQ(scene.draws[0].material, 1u);
+    scene::selectVariant(scene, std::nullopt);
+    EXPECT_EQ(scene.draws[0].material, 0u);
+    try {
+        (void)scene::variantIndex(scene, "Green");
+        ADD_FAILURE() << "no error for an unknown variant";
+    } catch (const UserError& e) {
+        EXPECT_NE(std::string(e.what()).find("has no variant 'Green' (its variants: Red, Blue, Gold)"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_TRUE(scene.warnings.empty());
 }
 
 // A triangle whose material uses `png` for all five textures, plus samplers.

@@ -415,11 +415,21 @@ TEST(GltfModels, TextureSettingsTest) {
     EXPECT_FALSE(s.materials[8].doubleSided);
 }
 
-TEST(GltfModels, SpecGlossVsMetalRoughRequiresAnUnsupportedExtension) {
+TEST(GltfModels, SpecGlossVsMetalRoughConvertsItsSpecularGlossinessMaterials) {
     REQUIRE_MODELS();
-    // Its extensionsRequired lists KHR_materials_pbrSpecularGlossiness (archived, not supported).
+    // Its extensionsRequired lists KHR_materials_pbrSpecularGlossiness (archived): converted on
+    // load to the specular layer (docs/materials.md), quietly.
     const fs::path path = model("SpecGlossVsMetalRough", "glTF", "SpecGlossVsMetalRough.gltf");
-    EXPECT_EQ(loadError(path), path.string() + ": requires unsupported extension KHR_materials_pbrSpecularGlossiness");
+    const Scene s = loadGltf(path);
+    ASSERT_EQ(s.materials.size(), 4u);
+    EXPECT_EQ(s.materials[0].name, "BottleMat_SpecGloss");
+    EXPECT_EQ(s.materials[0].ior, 0.0f);
+    EXPECT_EQ(s.materials[0].metallicFactor, 0.0f);
+    EXPECT_TRUE(s.materials[0].baseColor.present() && s.materials[0].specularColor.present() &&
+                s.materials[0].metallicRoughness.present());
+    EXPECT_EQ(s.materials[1].layers(), 0u);  // the metallic-roughness bottle stays core
+    EXPECT_EQ(s.materials[3].roughnessFactor, 1.0f);  // glossiness 0
+    EXPECT_TRUE(s.warnings.empty());
 }
 
 TEST(GltfModels, NodesAreKeptParentsFirstWithTheTransformsTheDrawsWerePlacedWith) {
