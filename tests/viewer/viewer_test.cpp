@@ -257,6 +257,34 @@ TEST_F(ViewerTest, EnvironmentPanelActions) {
     EXPECT_FALSE(mViewer->renderer().lastGraph().findPass("ibl_prefilter").has_value());
 }
 
+TEST_F(ViewerTest, ChoosingAMaterialVariantChangesTheDrawnMaterial) {
+    // KHR_materials_variants: the shoe with its three variants; a choice re-uploads the scene and
+    // the frame draws the variant's material (the picked mesh's material says which).
+    open(/*ui=*/true, /*environment=*/false);
+    const std::filesystem::path shoe =
+        std::filesystem::path(CANDELA_SHARED_ASSETS) / "models/MaterialsVariantsShoe/glTF/MaterialsVariantsShoe.gltf";
+    if (!std::filesystem::exists(shoe)) GTEST_SKIP() << "shared assets not found";
+    ASSERT_TRUE(mViewer->openFile(shoe)) << mViewer->status();
+    frames(1);
+    ASSERT_EQ(mViewer->scene().variants.size(), 3u);
+    const VkExtent2D extent = mViewer->swapchainExtent();
+    const glm::vec2 centre(extent.width * 0.6f, extent.height / 2.0f);  // right of the panel, on the shoe
+    ASSERT_TRUE(mViewer->pickMaterial(centre));
+    EXPECT_EQ(mViewer->selectedMaterial(), 0u);  // the file's default
+    const Image before = screenshot("default.png");
+    mViewer->selectVariant(2u);  // "street": material 2
+    frames(1);
+    EXPECT_EQ(mViewer->variant(), std::optional<uint32_t>(2u));
+    ASSERT_TRUE(mViewer->pickMaterial(centre));
+    EXPECT_EQ(mViewer->selectedMaterial(), 2u);
+    const Image after = screenshot("street.png");
+    EXPECT_NE(before.rgba, after.rgba);
+    mViewer->selectVariant(std::nullopt);
+    frames(1);
+    ASSERT_TRUE(mViewer->pickMaterial(centre));
+    EXPECT_EQ(mViewer->selectedMaterial(), 0u);
+}
+
 TEST_F(ViewerTest, ClickingAMeshSelectsItsMaterial) {
     open(/*ui=*/false);
     frames(1);
