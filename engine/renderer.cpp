@@ -91,11 +91,21 @@ void Renderer::prepareScene(const RenderSettings& settings) {
     mUploadedSceneLights = sceneLights;
 }
 
+namespace {
+// Whether a material of `scene` has a sheen (KHR_materials_sheen) the forward pass draws.
+bool hasSheen(const scene::Scene& scene) {
+    return std::any_of(scene.materials.begin(), scene.materials.end(),
+                       [](const scene::Material& m) { return !m.unlit && (m.layers() & scene::kLayerSheen); });
+}
+}  // namespace
+
 void Renderer::prepareEnvironment(const RenderSettings& settings) {
     if (!settings.scene) return;
-    if (settings.environment == mEnvironment && settings.iblQuality == mIblQuality && settings.iblCacheDir == mIblCacheDir)
-        return;
-    useEnvironment(settings.environment, settings.iblQuality, settings.iblCacheDir, false);
+    // The sheen cube is computed only for scenes that have a sheen.
+    ibl::IblQuality quality = settings.iblQuality;
+    quality.sheen = hasSheen(*settings.scene);
+    if (settings.environment == mEnvironment && quality == mIblQuality && settings.iblCacheDir == mIblCacheDir) return;
+    useEnvironment(settings.environment, quality, settings.iblCacheDir, false);
 }
 
 void Renderer::useEnvironment(const scene::Environment* environment, const ibl::IblQuality& quality,
@@ -267,6 +277,7 @@ std::chrono::steady_clock::time_point Renderer::submit(Frame frame, const Render
 }
 
 void Renderer::finishFrame() {
+    if (mLast.sheenLut) mSheenLut->frameCompleted(*mLast.graph);
     if (!mLast.ibl) return;
     mIbl->frameCompleted(*mLast.graph);
     if (mLast.precomputeBegin != mLast.precomputeEnd) mLastPrecompute.frameMs = msSince(mLast.started);
@@ -480,11 +491,20 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
             .multiscatter = settings.ibl.multiscatter,
             .referenceSamples = settings.ibl.referenceSamples};
     }
+    // The material layers' maps: the sheen LUT (computed once) and, with an environment, the sheen cube.
+    std::optional<passes::LayerMaps> layerMaps;
+    if (hasSheen(*settings.scene)) {
+        if (!mSheenLut) mSheenLut = std::make_unique<ibl::SheenLut>(mContext);
+        layerMaps = passes::LayerMaps{.sheenLut = mSheenLut->addToGraph(graph, frame.imports),
+                                      .sheenCube = ibl ? ibl->maps.sheen : TextureId{}};
+        frame.sheenLut = true;
+    }
     mParameters.beginFrame();
     applySceneParameters();
     const passes::ForwardPass::Output forward =
         mForward.add(graph, settings.width, settings.height, view, settings.shading, ibl ? &*ibl : nullptr, &mParameters,
-                     settings.debugView, posed ? &*posed : nullptr, deformed ? &*deformed : nullptr);
+                     settings.debugView, posed ? &*posed : nullptr, deformed ? &*deformed : nullptr,
+                     layerMaps ? &*layerMaps : nullptr);
     frame.debugView = settings.debugView;
     frame.hdr = forward.hdr;
     frame.skybox = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;

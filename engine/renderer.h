@@ -11,6 +11,7 @@
 #include "graph/graph_executor.h"
 #include "graph/render_graph.h"
 #include "ibl/ibl_maps.h"
+#include "ibl/sheen_lut.h"
 #include "ibl/ibl_settings.h"
 #include "passes/calibration_pass.h"
 #include "passes/encode_pass.h"
@@ -139,6 +140,7 @@ struct Frame {
     graph::TextureId hdr;  // linear HDR (RGBA16F): the scene after forward and skybox, or the test pattern
     graph::TextureId ldr;  // the 8-bit image: tonemapped scene, or encoded pattern
     bool ibl = false;      // image-based lighting: the maps are imported
+    bool sheenLut = false; // the sheen LUT is imported (a material has a sheen)
     bool skybox = false;
     passes::DebugView debugView = passes::DebugView::None;
     // The IBL precompute passes added: declared pass indices [precomputeBegin, precomputeEnd).
@@ -281,6 +283,7 @@ private:
     passes::ForwardPass mForward;
     passes::TonemapPass mTonemap;
     std::unique_ptr<ibl::IblMaps> mIbl;
+    std::unique_ptr<ibl::SheenLut> mSheenLut;  // created with the first scene that has a sheen
     std::unique_ptr<passes::SkyboxPass> mSkybox;  // created with the first environment
     std::unique_ptr<passes::CalibrationPass> mCalibration;  // created by the first renderCalibration
     const scene::Scene* mUploaded = nullptr;

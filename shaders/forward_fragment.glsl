@@ -56,6 +56,12 @@ layout(set = 1, binding = 7) uniform sampler2D specularColorTexture;
 layout(set = 1, binding = 8) uniform sampler2D clearcoatTexture;
 layout(set = 1, binding = 9) uniform sampler2D clearcoatRoughnessTexture;
 layout(set = 1, binding = 10) uniform sampler2D clearcoatNormalTexture;
+layout(set = 1, binding = 11) uniform sampler2D sheenColorTexture;
+layout(set = 1, binding = 12) uniform sampler2D sheenRoughnessTexture;
+// The layers' maps (set 3, the layered program only; placeholders where the frame has none): the
+// sheen albedo LUT E(N·V, sheen roughness) and the Charlie-prefiltered environment.
+layout(set = 3, binding = 0) uniform sampler2D sheenLut;
+layout(set = 3, binding = 1) uniform samplerCube sheenCube;
 #endif
 // Image-based lighting (always bound; placeholders when the frame has no environment).
 layout(set = 2, binding = 0) uniform samplerCube specularCube;
@@ -136,6 +142,9 @@ vec3 shadingNormal(MaterialData m, bool mapped) {
 DielectricFresnel gDielectric;
 Clearcoat gCoat;
 vec3 gCoatLight = vec3(0.0f);
+Sheen gSheen;
+float gSheenAlbedo = 0.0f;  // E(N·V) of the sheen
+vec3 gSheenLight = vec3(0.0f);
 
 // The layers this variant evaluates: the material's, none under Blinn-Phong (kept for comparison
 // with the original project, it has no Fresnel to layer).
@@ -167,20 +176,35 @@ Clearcoat layerClearcoat(MaterialLayerData layer, vec3 faced, vec3 v) {
     }
     return clearcoatLayer(clamp(weight, 0.0f, 1.0f), clamp(roughness, 0.0f, 1.0f), nc, v);
 }
+
+// The sheen on shading normal `n`, and its albedo E(N·V) from the LUT into gSheenAlbedo.
+Sheen layerSheen(MaterialLayerData layer, vec3 n, vec3 v) {
+    if (!hasLayer(CANDELA_LAYER_SHEEN)) return sheenLayer(vec3(0.0f), 0.0f, 0.0f);
+    vec3 color = layer.sheenColor * texture(sheenColorTexture, layerUv(CANDELA_LAYER_TEX_SHEEN_COLOR)).rgb;
+    float roughness =
+        clamp(layer.sheenRoughness * texture(sheenRoughnessTexture, layerUv(CANDELA_LAYER_TEX_SHEEN_ROUGHNESS)).a, 0.0f, 1.0f);
+    float NoV = clamp(dot(n, v), CANDELA_MIN_NOV, 1.0f);
+    gSheenAlbedo = textureLod(sheenLut, brdfLutUv(NoV, roughness, float(textureSize(sheenLut, 0).x)), 0.0f).r;
+    return sheenLayer(color, roughness, gSheenAlbedo);
+}
 #endif
 
 // f(V, L) · (N·L) of the fragment's material toward light direction `l`, as diffuse and specular
-// (in the layered program: beneath the coat, whose own reflection goes to `coat`).
-BrdfLobes surfaceLobes(vec3 n, vec3 v, vec3 l, vec3 baseColor, float metallic, float roughness, out float coat) {
+// (in the layered program: beneath the sheen and the coat, whose own reflections go to `sheen` and
+// `coat`).
+BrdfLobes surfaceLobes(vec3 n, vec3 v, vec3 l, vec3 baseColor, float metallic, float roughness, out vec3 sheen,
+                       out float coat) {
 #ifdef CANDELA_MATERIAL_LAYERS
-    LayeredLobes layered =
-        layeredLobesTimesCosine(n, v, l, baseColor, metallic, roughness, kShadingModel, layerBits(), gDielectric, gCoat);
+    LayeredLobes layered = layeredLobesTimesCosine(n, v, l, baseColor, metallic, roughness, kShadingModel, layerBits(),
+                                                   gDielectric, gSheen, gCoat);
+    sheen = layered.sheen;
     coat = layered.clearcoat;
     BrdfLobes lobes;
     lobes.diffuse = layered.diffuse;
     lobes.specular = layered.specular;
     return lobes;
 #else
+    sheen = vec3(0.0f);
     coat = 0.0f;
     return brdfLobesTimesCosine(n, v, l, baseColor, metallic, roughness, kShadingModel);
 #endif
@@ -233,6 +257,14 @@ BrdfLobes imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float 
     light.diffuse *= push.ibl.intensity;
     light.specular *= push.ibl.intensity;
 #ifdef CANDELA_MATERIAL_LAYERS
+    if (hasLayer(CANDELA_LAYER_SHEEN)) {
+        light.diffuse *= gSheen.baseWeight;
+        light.specular *= gSheen.baseWeight;
+        vec3 r = iblLookupDirection(reflect(-v, n), push.ibl.rotation);
+        vec3 prefilteredSheen = textureLod(sheenCube, r, gSheen.roughness * push.ibl.maxLod).rgb;
+        gSheenLight += push.ibl.intensity * iblSheen(gSheen, prefilteredSheen, gSheenAlbedo, ao) *
+                       (hasLayer(CANDELA_LAYER_CLEARCOAT) ? gCoat.baseWeight : 1.0f);
+    }
     if (hasLayer(CANDELA_LAYER_CLEARCOAT)) {
         light.diffuse *= gCoat.baseWeight;
         light.specular *= gCoat.baseWeight;
@@ -386,6 +418,7 @@ void main() {
     MaterialLayerData layer = layers[draws[push.counts.y].material.x];
     gDielectric = layerDielectric(layer);
     gCoat = layerClearcoat(layer, facedNormal(), v);
+    gSheen = layerSheen(layer, n, v);
 #endif
 
     BrdfLobes lit;
@@ -397,12 +430,14 @@ void main() {
             LightData light = lights[i];
             float attenuation;
             vec3 l = lightDirection(light, attenuation);
+            vec3 sheen;
             float coat;
-            BrdfLobes lobes = surfaceLobes(n, v, l, baseColor.rgb, metallic, roughness, coat);
+            BrdfLobes lobes = surfaceLobes(n, v, l, baseColor.rgb, metallic, roughness, sheen, coat);
             vec3 radiance = (light.color * light.intensity) * attenuation;
             lit.diffuse += lobes.diffuse * radiance;
             lit.specular += lobes.specular * radiance;
 #ifdef CANDELA_MATERIAL_LAYERS
+            gSheenLight += sheen * radiance;
             gCoatLight += coat * radiance;
 #endif
         }
@@ -418,10 +453,12 @@ void main() {
     }
     vec3 emissive = m.emissive.rgb * sampleSlot(emissiveTexture, CANDELA_TEX_EMISSIVE).rgb;
     vec3 coatLight = vec3(0.0f);
+    vec3 sheenLight = vec3(0.0f);
 #ifdef CANDELA_MATERIAL_LAYERS
     // The emission lies beneath the coat too.
     if (hasLayer(CANDELA_LAYER_CLEARCOAT)) emissive *= gCoat.baseWeight;
     coatLight = gCoatLight;
+    sheenLight = gSheenLight;
 #endif
 
     if (kDebugView != CANDELA_DEBUG_NONE) {
@@ -436,6 +473,7 @@ void main() {
         else if (kDebugView == CANDELA_DEBUG_DIFFUSE) value = lit.diffuse;
         else if (kDebugView == CANDELA_DEBUG_SPECULAR) value = lit.specular;
         else if (kDebugView == CANDELA_DEBUG_CLEARCOAT) value = coatLight;
+        else if (kDebugView == CANDELA_DEBUG_SHEEN) value = sheenLight;
         else if (kDebugView == CANDELA_DEBUG_CLEARCOAT_NORMAL) {
 #ifdef CANDELA_MATERIAL_LAYERS
             if (hasLayer(CANDELA_LAYER_CLEARCOAT)) value = asData(gCoat.normal * 0.5f + 0.5f);  // black without a coat
@@ -446,7 +484,7 @@ void main() {
         return;
     }
 
-    vec3 color = lit.diffuse + lit.specular + coatLight + reference + emissive;
+    vec3 color = lit.diffuse + lit.specular + sheenLight + coatLight + reference + emissive;
     // Radiance can exceed half-float range with extreme lights: keep it finite.
     color = min(color, vec3(60000.0f));
     outColor = vec4(color * alpha, alpha);

@@ -86,6 +86,10 @@ void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
     upload.submitAndWait();
 }
 
+uint32_t IblMaps::sheenFaceSize(const IblQuality& q) {
+    return std::min(q.cubeSize, std::max(64u, 1u << (q.levels() - 1)));
+}
+
 uint32_t IblMaps::lutSize() const { return mLut.image ? mLut.image.desc().width : 1; }
 
 void IblMaps::createMaps(const IblQuality& q) {
@@ -98,6 +102,8 @@ void IblMaps::createMaps(const IblQuality& q) {
         target.mipViews = target.image.createMipViews();
     };
     makeCube(mSpecular, q.cubeSize, q.levels(), "ibl_specular");
+    if (q.sheen) makeCube(mSheen, sheenFaceSize(q), q.levels(), "ibl_sheen");
+    else mSheen = {};
     if (q.irradiance == IrradianceMode::Cube) {
         makeCube(mIrradianceCube, q.irradianceSize, 1, "ibl_irradiance");
         mSh = {};
@@ -142,6 +148,7 @@ void IblMaps::ensurePasses() {
     mShPass = std::make_unique<passes::IblIrradianceShPass>(mContext);
     mIrradianceCubePass = std::make_unique<passes::IblIrradianceCubePass>(mContext);
     mLutPass = std::make_unique<passes::IblBrdfLutPass>(mContext);
+    mSheenPass = std::make_unique<passes::IblPrefilterPass>(mContext, passes::IblPrefilterPass::Lobe::Charlie);
 }
 
 bool IblMaps::setEnvironment(const scene::Environment* env, const IblQuality& quality,
@@ -151,6 +158,7 @@ bool IblMaps::setEnvironment(const scene::Environment* env, const IblQuality& qu
         mSource = MapsSource::None;
         mSpecular = {};
         mIrradianceCube = {};
+        mSheen = {};
         mSh = {};
         mEquirect = {};
         mFloatCube = {};
@@ -185,6 +193,8 @@ bool IblMaps::setEnvironment(const scene::Environment* env, const IblQuality& qu
     const uint32_t floatMips = mFloatCube.image.desc().mipLevels;
     mPrefilterPass->prepare(mLevels, quality.prefilterSamples, quality.cubeSize, floatMips, quality.filteredSampling,
                             quality.lodBias);
+    if (quality.sheen)
+        mSheenPass->prepare(mLevels, kSheenSamples, quality.cubeSize, floatMips, quality.filteredSampling, quality.lodBias);
     if (quality.irradiance == IrradianceMode::Cube)
         mIrradianceCubePass->prepare(quality.irradianceSamples, quality.cubeSize, floatMips, quality.filteredSampling,
                             quality.lodBias);
@@ -222,6 +232,7 @@ passes::IblHandles IblMaps::addToGraph(RenderGraph& graph, ImportBindings& impor
     }
     maps.lut = import(graph, imports, "ibl_brdf_lut", mLut.image, mLut.mipViews,
                       mLutPending ? ResourceState{} : kRestState, kRestState);
+    if (mSheen.image) maps.sheen = import(graph, imports, "ibl_sheen", mSheen.image, mSheen.mipViews, mapsInitial, kRestState);
     if (reference && mReferenceEquirect) {
         maps.referenceEquirect = import(graph, imports, "ibl_reference_equirect", mReferenceEquirect, {}, kUploadedState, {});
         maps.referenceTexels = graph.importBuffer("ibl_reference_texels", {.size = mReferenceTexels.size()}, ResourceState{});
@@ -237,6 +248,7 @@ passes::IblHandles IblMaps::addToGraph(RenderGraph& graph, ImportBindings& impor
     const passes::IblCubemapPass::Outputs resampled =
         mCubemapPass->add(graph, {.equirect = equirect, .cube = cube, .specular = maps.specular});
     maps.specular = mPrefilterPass->add(graph, {.source = resampled.cube, .specular = resampled.specular});
+    if (maps.sheen.valid()) maps.sheen = mSheenPass->add(graph, {.source = resampled.cube, .specular = maps.sheen});
     if (mQuality.irradiance == IrradianceMode::Sh9)
         maps.sh = mShPass->add(graph, {.source = resampled.cube,
                                        .projectedFaceSize = mQuality.shSourceSize,
@@ -261,7 +273,8 @@ void IblMaps::frameCompleted(const RenderGraph& graph) {
     mLutAdded = false;
     if (!mPrecomputeAdded) return;
     mPrecomputeAdded = false;
-    if (!passRan(graph, "ibl_prefilter")) return;  // e.g. a pass was disabled: compute again next frame
+    // E.g. a pass was disabled: compute again next frame.
+    if (!passRan(graph, "ibl_prefilter") || (mSheen.image && !passRan(graph, "ibl_sheen_prefilter"))) return;
     mSource = MapsSource::Computed;
     mEquirect = {};
     mFloatCube = {};
@@ -286,6 +299,9 @@ std::vector<std::string> IblMaps::explanation() const {
     lines.emplace_back(mQuality.irradiance == IrradianceMode::Sh9
                            ? "left out: irradiance cube (irradiance from SH9; --irradiance cube)"
                            : "left out: SH9 projection (irradiance from the cube; --irradiance sh9)");
+    lines.emplace_back(mQuality.sheen ? "ibl: sheen cube (Charlie-prefiltered, " + std::to_string(sheenFaceSize(mQuality)) +
+                                            " texels) for the scene's KHR_materials_sheen materials"
+                                      : "left out: sheen cube (no material has a sheen)");
     if (!mCacheNote.empty()) lines.push_back("ibl cache: " + mCacheNote);
     return lines;
 }

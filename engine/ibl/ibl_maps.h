@@ -2,8 +2,9 @@
 // IblMaps: the persistent maps of image-based lighting (specular cube, irradiance as SH9 or cube,
 // BRDF LUT) and the precompute passes that fill them. The maps live outside the render graph and
 // are imported into each frame's graph. Only when the environment or the IblQuality changed does
-// addToGraph also add the precompute passes (ibl_cubemap → ibl_prefilter, ibl_irradiance_*, and
-// ibl_brdf_lut when the LUT's own settings changed); on every other frame the graph holds no
+// addToGraph also add the precompute passes (ibl_cubemap → ibl_prefilter, ibl_irradiance_*,
+// ibl_sheen_prefilter when the quality asks for the sheen cube, and ibl_brdf_lut when the LUT's own
+// settings changed); on every other frame the graph holds no
 // precompute pass. With a cache directory, computed maps are written there after the frame and
 // later runs with the same environment content and quality load them instead.
 //
@@ -103,6 +104,9 @@ public:
     static constexpr VkFormat kSpecularFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
     static constexpr VkFormat kFloatCubeFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
     static constexpr VkFormat kLutFormat = VK_FORMAT_R16G16_SFLOAT;
+    // The sheen cube's face: 64 texels (the sheen lobe is broad), or more when the levels need it.
+    static uint32_t sheenFaceSize(const IblQuality& quality);
+    static constexpr uint32_t kSheenSamples = 64;  // Charlie samples per texel of sheen mip 0 (4× per coarser mip)
 
     // How the maps rest between frames — the final state of every graph that imports them and the
     // state anything outside a graph (readBack) must wait for: sampled by the fragment shader.
@@ -137,6 +141,7 @@ private:
     Target mSpecular;
     Target mIrradianceCube;
     Target mLut;
+    Target mSheen;  // IblQuality::sheen only
     vk::Buffer mSh;
     // Precompute inputs, alive from setEnvironment until the frame that used them completed.
     vk::Image mEquirect;
@@ -147,6 +152,7 @@ private:
     std::unique_ptr<passes::IblIrradianceShPass> mShPass;
     std::unique_ptr<passes::IblIrradianceCubePass> mIrradianceCubePass;
     std::unique_ptr<passes::IblBrdfLutPass> mLutPass;
+    std::unique_ptr<passes::IblPrefilterPass> mSheenPass;
 
     IblQuality mQuality;
     uint32_t mLevels = 0;

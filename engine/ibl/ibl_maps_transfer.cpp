@@ -96,6 +96,7 @@ std::vector<CachedImage> IblMaps::readBack() {
         images.push_back(std::move(sh));
     }
     images.push_back(readImage("brdf_lut", mLut.image));
+    if (mSheen.image) images.push_back(readImage("sheen", mSheen.image));
     return images;
 }
 
@@ -135,7 +136,8 @@ bool IblMaps::loadCache() {
     const CachedImage* specular = find("specular");
     const CachedImage* lut = find("brdf_lut");
     const CachedImage* irradiance = mIrradianceCube.image ? find("irradiance_cube") : find("irradiance_sh");
-    if (!matches(specular, mSpecular.image) || !matches(lut, mLut.image) ||
+    const CachedImage* sheen = find("sheen");
+    if (!matches(specular, mSpecular.image) || !matches(lut, mLut.image) || (mSheen.image && !matches(sheen, mSheen.image)) ||
         (mIrradianceCube.image && !matches(irradiance, mIrradianceCube.image)) ||
         (mSh && (!irradiance || irradiance->data.size() != mSh.size())))
         return miss(path.string() + ": maps of unexpected shape");
@@ -155,6 +157,7 @@ bool IblMaps::loadCache() {
     uploadImage(*lut, mLut.image);
     if (mIrradianceCube.image) uploadImage(*irradiance, mIrradianceCube.image);
     else upload.buffer(mSh, irradiance->data);
+    if (mSheen.image) uploadImage(*sheen, mSheen.image);
     upload.submitAndWait();
     mLutComputedFor = mQuality.lutCanonical();
     mLutPending = false;

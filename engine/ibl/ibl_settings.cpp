@@ -54,7 +54,7 @@ std::string IblQuality::canonical() const {
                                      ? "sh9:" + std::to_string(shSourceSize)
                                      : "cube:" + std::to_string(irradianceSize) + "x" + std::to_string(irradianceSamples);
     return "v2 cube=" + std::to_string(cubeSize) + " levels=" + std::to_string(levels()) +
-           " prefilter=" + std::to_string(prefilterSamples) + (filteredSampling ? ":bias" + std::to_string(lodBias).substr(0, 5) : ":unfiltered") + " irradiance=" + irradianceText + " " + lutCanonical();
+           " prefilter=" + std::to_string(prefilterSamples) + (filteredSampling ? ":bias" + std::to_string(lodBias).substr(0, 5) : ":unfiltered") + " irradiance=" + irradianceText + " " + lutCanonical() + (sheen ? " sheen" : "");
 }
 
 }  // namespace candela::ibl

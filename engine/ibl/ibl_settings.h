@@ -33,6 +33,9 @@ struct IblQuality {
     uint32_t irradianceSamples = 256; // cosine samples per irradiance texel (cube mode)
     uint32_t lutSize = 128;           // BRDF LUT is lutSize² (≥ 2)
     uint32_t lutSamples = 256;        // visible-normal samples per LUT texel
+    // The Charlie-prefiltered cube for KHR_materials_sheen ("sheen" in the canonical text). Not a
+    // user setting: the renderer asks for it when the scene has a sheen material.
+    bool sheen = false;
 
     // Throws UserError naming the first invalid member ("--ibl-cube-size 100: must be a power of two …").
     void validate() const;

@@ -4,7 +4,7 @@
 // roughness, metallic, occlusion, emissive. The GGX terms toward the first punctual light: D
 // (relative to its peak), G (Smith) and F (Schlick). The diffuse and the specular light alone
 // (punctual + environment). Material layers (docs/materials.md): the light the clearcoat reflects
-// and the coat's normal (black where there is no coat). Names only: no Vulkan (the command-line
+// and the coat's normal (black where there is no coat), the light the sheen reflects. Names only: no Vulkan (the command-line
 // parser uses them).
 
 #include <cstdint>
@@ -17,7 +17,7 @@ namespace candela::passes {
 
 enum class DebugView : uint32_t {
     None = 0, BaseColor, GeometricNormal, MappedNormal, Roughness, Metallic, Occlusion, Emissive, D, G, F, Diffuse, Specular,
-    Clearcoat, ClearcoatNormal
+    Clearcoat, ClearcoatNormal, Sheen
 };
 
 inline constexpr std::pair<DebugView, const char*> kDebugViewNames[] = {
@@ -35,7 +35,8 @@ inline constexpr std::pair<DebugView, const char*> kDebugViewNames[] = {
     {DebugView::Diffuse, "diffuse"},
     {DebugView::Specular, "specular"},
     {DebugView::Clearcoat, "clearcoat"},
-    {DebugView::ClearcoatNormal, "clearcoat-normal"}};
+    {DebugView::ClearcoatNormal, "clearcoat-normal"},
+    {DebugView::Sheen, "sheen"}};
 
 // The names above; nullopt for anything else.
 inline std::optional<DebugView> parseDebugView(std::string_view name) {
@@ -61,7 +62,8 @@ inline std::vector<DebugView> allDebugViews() {
 // Data and material colours are shown as they are (linear tonemap, exposure 0); the diffuse,
 // specular and clearcoat light go through the frame's tonemap like the full image.
 inline bool debugViewIsLight(DebugView view) {
-    return view == DebugView::Diffuse || view == DebugView::Specular || view == DebugView::Clearcoat;
+    return view == DebugView::Diffuse || view == DebugView::Specular || view == DebugView::Clearcoat ||
+           view == DebugView::Sheen;
 }
 
 }  // namespace candela::passes

@@ -11,9 +11,10 @@ namespace candela::passes {
 using namespace graph;
 
 static_assert(uint32_t(DebugView::Specular) == CANDELA_DEBUG_SPECULAR && uint32_t(DebugView::D) == CANDELA_DEBUG_D);
-static_assert(uint32_t(DebugView::ClearcoatNormal) == CANDELA_DEBUG_CLEARCOAT_NORMAL);
+static_assert(uint32_t(DebugView::ClearcoatNormal) == CANDELA_DEBUG_CLEARCOAT_NORMAL &&
+              uint32_t(DebugView::Sheen) == CANDELA_DEBUG_SHEEN);
 static_assert(scene::kLayerSpecular == CANDELA_LAYER_SPECULAR && scene::kLayerClearcoat == CANDELA_LAYER_CLEARCOAT &&
-              scene::kLayerClearcoatNormal == CANDELA_LAYER_CLEARCOAT_NORMAL);
+              scene::kLayerClearcoatNormal == CANDELA_LAYER_CLEARCOAT_NORMAL && scene::kLayerSheen == CANDELA_LAYER_SHEEN);
 
 namespace {
 
@@ -44,7 +45,7 @@ std::string ForwardPass::Variant::name() const {
     return out;
 }
 
-ForwardPass::ForwardPass(vk::Context& context) : mContext(context), mIblSet(context) {}
+ForwardPass::ForwardPass(vk::Context& context) : mContext(context), mIblSet(context), mLayerSet(context) {}
 
 const vk::Pipeline& ForwardPass::pipeline(const Variant& v) {
     return mPipelines.get(mContext, v, [&] {
@@ -116,7 +117,8 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene) {
     static constexpr const char* kSlots[CANDELA_TEX_COUNT] = {"baseColorTexture", "metallicRoughnessTexture",
                                                                "normalTexture", "occlusionTexture", "emissiveTexture"};
     static constexpr const char* kLayerSlots[CANDELA_LAYER_TEX_COUNT] = {
-        "specularTexture", "specularColorTexture", "clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"};
+        "specularTexture",  "specularColorTexture",   "clearcoatTexture",     "clearcoatRoughnessTexture",
+        "clearcoatNormalTexture", "sheenColorTexture", "sheenRoughnessTexture"};
     for (uint32_t material = 0; material < gpuScene.scene().materials.size(); ++material) {
         // A layered material's set follows the layered program's layout: its core textures, then
         // every material's layer parameters and its own layer textures.
@@ -140,7 +142,8 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene) {
 
 ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
                                      ShadingModel model, const Ibl* ibl, shader::ParameterRegistry* parameters,
-                                     DebugView debugView, const PosedDraws* posed, const DeformedVertices* deformed) {
+                                     DebugView debugView, const PosedDraws* posed, const DeformedVertices* deformed,
+                                     const LayerMaps* layerMaps) {
     const scene::Scene& scene = mScene->scene();
     const std::span<const scene::Draw> draws = posed ? posed->draws : std::span<const scene::Draw>(scene.draws);
     std::vector<DrawItem> opaque, blended;
@@ -161,7 +164,7 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
                         .firstIndex = draw.firstIndex, .indexCount = draw.indexCount, .material = draw.material,
                         .flipWinding = draw.flipWinding, .doubleSided = scene.materials[draw.material].doubleSided,
                         .vertexOffset = deformed ? deformed->vertexOffset[i] : kRestVertices,
-                        .drawData = drawData, .instances = std::max(draw.instanceCount, 1u)});
+                        .drawData = drawData, .instances = std::max(draw.instanceCount, 1u), .layered = v.layers != 0});
     }
     // Opaque grouped by pipeline (fewer binds); blended back to front.
     std::stable_sort(opaque.begin(), opaque.end(), [](const DrawItem& a, const DrawItem& b) { return a.pipeline < b.pipeline; });
@@ -199,6 +202,7 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
         TextureId hdr;
         TextureId depth;
         IblHandles ibl;  // as declared: resolved in execute
+        LayerMaps layers;   // as declared
         BufferId draws;     // the posed draw data, when animated
         BufferId lights;    // the posed light data, when a light is animated
         BufferId deformed;  // the deformed vertices, when some draw is deformed
@@ -213,6 +217,10 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
     const std::vector<VkDescriptorSet>* materialSets = &mMaterialSets;
     const ForwardIblSet* iblSets = &mIblSet;
     const vk::Program* program = &pipeline(Variant{}).program();  // every variant shares the set layouts
+    // Set 3, of the layered program only: written when a layered draw is in the frame.
+    const auto layeredItem = std::find_if(items.begin(), items.end(), [](const DrawItem& item) { return item.layered; });
+    const vk::Program* layeredProgram = layeredItem != items.end() ? &layeredItem->pipeline->program() : nullptr;
+    const ForwardLayerSet* layerSets = &mLayerSet;
     const Data& data = graph.addPass<Data>(
         "forward", PassType::Graphics,
         [&](PassBuilder& builder, Data& d) {
@@ -221,6 +229,7 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
             d.hdr = builder.writeColor(hdr, VkClearColorValue{{0.0f, 0.0f, 0.0f, 0.0f}});
             d.depth = builder.writeDepth(depth, 0.0f);  // reverse-Z: far = 0
             d.ibl = ForwardIblSet::declare(builder, ibl ? &ibl->maps : nullptr);
+            if (layeredProgram) d.layers = ForwardLayerSet::declare(builder, layerMaps);
             if (posed)
                 d.draws = builder.read(posed->data, Usage::StorageRead,
                                        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
@@ -228,10 +237,11 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
                 d.lights = builder.read(posed->lights, Usage::StorageRead, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
             if (deformed) d.deformed = builder.read(deformed->vertices, Usage::Vertex);
         },
-        [items, frameConstants = push, gpuScene, staticSceneSet = mSceneSet, materialSets, iblSets,
-         program](const Data& d, PassContext& ctx) {
+        [items, frameConstants = push, gpuScene, staticSceneSet = mSceneSet, materialSets, iblSets, layerSets, program,
+         layeredProgram](const Data& d, PassContext& ctx) {
             shading::ForwardPush constants = frameConstants;
             const VkDescriptorSet iblSet = iblSets->write(ctx, *program, d.ibl);
+            const VkDescriptorSet layerSet = layeredProgram ? layerSets->write(ctx, *layeredProgram, d.layers) : VK_NULL_HANDLE;
             // Posed draws: set 0 names this frame's draw buffer.
             const VkDescriptorSet sceneSet = !d.draws.valid() ? staticSceneSet
                                              : vk::DescriptorWriter(*program, 0)
@@ -256,6 +266,9 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
                                             nullptr);
                     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 2, 1, &iblSet, 0,
                                             nullptr);
+                    if (item.layered)
+                        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 3, 1, &layerSet, 0,
+                                                nullptr);
                 }
                 vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 1, 1,
                                         &(*materialSets)[item.material], 0, nullptr);

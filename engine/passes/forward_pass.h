@@ -7,6 +7,7 @@
 #include "graph/render_graph.h"
 #include "passes/debug_view.h"
 #include "passes/forward_ibl_set.h"
+#include "passes/forward_layer_set.h"
 #include "passes/ibl_handles.h"
 #include "shader/parameter_registry.h"
 #include "shared/ibl.h"
@@ -67,12 +68,13 @@ public:
     static constexpr int32_t kRestVertices = INT32_MIN;
     // Adds the pass drawing the current scene as seen from `view`, lit by the scene's lights and,
     // when `ibl` is given, the environment; posed by `posed` and drawn from `deformed` vertices
-    // where given. Returns the written targets.
+    // where given; the layered program reads `layerMaps` (the sheen LUT and cube) where given.
+    // Returns the written targets.
     // With `parameters`, the user's values for the per-frame push constants apply ("forward", "Push").
     Output add(graph::RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
                ShadingModel model, const Ibl* ibl = nullptr, shader::ParameterRegistry* parameters = nullptr,
                DebugView debugView = DebugView::None, const PosedDraws* posed = nullptr,
-               const DeformedVertices* deformed = nullptr);
+               const DeformedVertices* deformed = nullptr, const LayerMaps* layerMaps = nullptr);
     // The reflection of the forward shaders without layers (every variant shares sets 0 and 2 and
     // the push constants; the layered program adds to set 1).
     const shader::ShaderReflection& reflection() { return pipeline(Variant{}).program().reflection(); }
@@ -114,6 +116,7 @@ private:
         int32_t vertexOffset;  // kRestVertices: the scene's vertex buffer; else into the deformed one
         uint32_t drawData;     // index of its (first instance's) entry in the draw buffer
         uint32_t instances;    // instanced draws: how many (else 1)
+        bool layered;          // drawn by the layered program (binds set 3)
     };
     const vk::Pipeline& pipeline(const Variant& variant);
     static vk::GraphicsPipelineDesc desc(const Variant& variant);
@@ -122,6 +125,7 @@ private:
     vk::Context& mContext;
     vk::PipelineCache<Variant> mPipelines;
     ForwardIblSet mIblSet;
+    ForwardLayerSet mLayerSet;
     const scene::GpuScene* mScene = nullptr;
     std::unique_ptr<vk::DescriptorAllocator> mSets;
     VkDescriptorSet mSceneSet = VK_NULL_HANDLE;

@@ -13,6 +13,9 @@ struct IblHandles {
     graph::TextureId irradianceCube;  // RGBA16F cube of E(n)/π — irradiance "cube" mode only, else invalid
     graph::BufferId sh;               // 9 × vec4 SH coefficients of E(n)/π — "sh9" mode only, else invalid
     graph::TextureId lut;             // RG16F split-sum BRDF LUT
+    // RGBA16F cube, mip m Charlie-prefiltered at sheen roughness m / (levels − 1) (KHR_materials_sheen);
+    // invalid unless the quality asked for it (IblQuality::sheen).
+    graph::TextureId sheen;
     // The ground truth of `ibl-report` (IblMaps::setReferenceEnvironment): the environment as an
     // RGBA32F equirectangular image and its brightest texels; invalid when not set.
     graph::TextureId referenceEquirect;

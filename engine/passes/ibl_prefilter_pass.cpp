@@ -12,9 +12,10 @@ namespace candela::passes {
 
 using namespace graph;
 
-IblPrefilterPass::IblPrefilterPass(vk::Context& context)
+IblPrefilterPass::IblPrefilterPass(vk::Context& context, Lobe lobe)
     : mContext(context),
-      mPipeline(vk::Pipeline::compute(context, "ibl_filter_cube.comp", {/*kWeightByCosine=*/1})),
+      mLobe(lobe),
+      mPipeline(vk::Pipeline::compute(context, "ibl_filter_cube.comp", {/*kWeightByCosine=*/lobe == Lobe::Ggx ? 1u : 0u})),
       mSampler(vk::createSampler(context, {.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {}
 
 void IblPrefilterPass::prepare(uint32_t levels, uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips,
@@ -24,9 +25,11 @@ void IblPrefilterPass::prepare(uint32_t levels, uint32_t samples, uint32_t sourc
     // Each coarser level has 4× fewer texels and a wider lobe: 4× the samples keeps every level's
     // cost equal and its noise down where small bright sources are spread widest.
     uint32_t count = samples;
-    for (uint32_t mip = 1; mip < levels; ++mip, count = std::min(count * 4, kMaxSamples)) {
-        const SampleTable table =
-            prefilterSamples(float(mip) / float(levels - 1), count, sourceFaceSize, sourceMips, filtered, lodBias);
+    for (uint32_t mip = firstMip(); mip < levels; ++mip, count = std::min(count * 4, kMaxSamples)) {
+        const float roughness = float(mip) / float(levels - 1);
+        const SampleTable table = mLobe == Lobe::Ggx
+                                      ? prefilterSamples(roughness, count, sourceFaceSize, sourceMips, filtered, lodBias)
+                                      : charlieSamples(roughness, count, sourceFaceSize, sourceMips, filtered, lodBias);
         mRanges[mip] = {static_cast<uint32_t>(all.size()), static_cast<uint32_t>(table.samples.size()),
                         table.totalWeight > 0.0f ? 1.0f / table.totalWeight : 0.0f};
         all.insert(all.end(), table.samples.begin(), table.samples.end());
@@ -46,15 +49,17 @@ TextureId IblPrefilterPass::add(RenderGraph& graph, const Inputs& in) const {
         TextureId specular;
     };
     const Data& data = graph.addPass<Data>(
-        "ibl_prefilter", PassType::Compute,
+        mLobe == Lobe::Ggx ? "ibl_prefilter" : "ibl_sheen_prefilter", PassType::Compute,
         [&](PassBuilder& builder, Data& d) {
             d.source = builder.sample(in.source);
-            d.specular = builder.write(in.specular, Usage::StorageWrite, WriteMode::Preserve);  // keeps mip 0
+            // GGX keeps mip 0 (the cubemap pass's); Charlie writes every mip.
+            d.specular = builder.write(in.specular, Usage::StorageWrite,
+                                       mLobe == Lobe::Ggx ? WriteMode::Preserve : WriteMode::Discard);
         },
         [this](const Data& d, PassContext& ctx) {
-            const uint32_t sourceFaceSize = ctx.desc(d.source).width;
-            for (uint32_t mip = 1; mip < ctx.desc(d.specular).mipLevels && mip < mRanges.size(); ++mip) {
-                const shading::IblFilterPush push{.faceSize = std::max(sourceFaceSize >> mip, 1u),
+            const uint32_t faceSize = ctx.desc(d.specular).width;
+            for (uint32_t mip = firstMip(); mip < ctx.desc(d.specular).mipLevels && mip < mRanges.size(); ++mip) {
+                const shading::IblFilterPush push{.faceSize = std::max(faceSize >> mip, 1u),
                                                   .firstSample = mRanges[mip].first,
                                                   .sampleCount = mRanges[mip].count,
                                                   .inverseWeight = mRanges[mip].inverseWeight};

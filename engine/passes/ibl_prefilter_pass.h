@@ -4,6 +4,9 @@
 // importance sampling with filtered importance sampling from the float cube's mips
 // (shaders/ibl_filter_cube.comp weighted by n·l; samples from engine/passes/ibl_sample_tables.h). Mip 0 (roughness 0,
 // the environment itself) is written by the cubemap pass.
+// With Lobe::Charlie it is "ibl_sheen_prefilter": every mip of the sheen cube (KHR_materials_sheen),
+// mip m the environment convolved with the sheen lobe of roughness m / (levels − 1), sampled
+// exactly as that lobe (equal weights); mip 0 too, since the sheen has no mirror limit.
 
 #include "graph/render_graph.h"
 #include "vk/buffer.h"
@@ -16,7 +19,8 @@ namespace candela::passes {
 
 class IblPrefilterPass {
 public:
-    explicit IblPrefilterPass(vk::Context& context);
+    enum class Lobe { Ggx, Charlie };
+    explicit IblPrefilterPass(vk::Context& context, Lobe lobe = Lobe::Ggx);
 
     // Builds and uploads the sample tables of every mip (waits for the upload): `samples` at mip 1,
     // 4× more at each coarser mip, at most kMaxSamples. Call before add() whenever the arguments
@@ -26,7 +30,8 @@ public:
 
     struct Inputs {
         graph::TextureId source;    // float environment cube (sampled with all its mips)
-        // RGBA16F cube, one mip per level, mip 0 already written; an imported one needs its mip views bound.
+        // RGBA16F cube, one mip per level (GGX: mip 0 already written); an imported one needs its
+        // mip views bound.
         graph::TextureId specular;
     };
     static constexpr uint32_t kMaxSamples = 4096;
@@ -35,11 +40,13 @@ public:
     graph::TextureId add(graph::RenderGraph& graph, const Inputs& inputs) const;
 
 private:
+    uint32_t firstMip() const { return mLobe == Lobe::Ggx ? 1u : 0u; }
     struct MipRange {
         uint32_t first, count;
         float inverseWeight;
     };
     vk::Context& mContext;
+    Lobe mLobe;
     vk::Pipeline mPipeline;
     vk::Sampler mSampler;  // bilinear within the nearest mip: filtered importance sampling picks the mip
     vk::Buffer mTable;

@@ -1,6 +1,12 @@
 #include "passes/ibl_sample_tables.h"
 
+#include "shared/brdf_layers.h"
 #include "shared/ibl.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
 
 namespace candela::passes {
 
@@ -24,6 +30,42 @@ SampleTable prefilterSamples(float roughness, uint32_t count, uint32_t sourceFac
         const float lod = filtered ? filteredLod(pdf, count, texelSolidAngle(sourceFaceSize), float(sourceMips - 1), lodBias) : 0.0f;
         table.samples.emplace_back(glm::normalize(l), lod);
         table.totalWeight += NoL;
+    }
+    return table;
+}
+
+SampleTable charlieSamples(float roughness, uint32_t count, uint32_t sourceFaceSize, uint32_t sourceMips,
+                           bool filtered, float lodBias) {
+    // The lobe over θ ∈ [0, π/2] for n = v: g(θ) = f·cos·sin θ with f·cos = D(θ_h = θ/2) /
+    // (4 (1 + Λ(1) + Λ(cos θ))), in double (D ~ 0.5^(1/2α) is below a float's range at small α).
+    const double alpha = shading::sheenAlpha(roughness);
+    const auto lambda = [&](double c) { return double(shading::sheenLambda(float(c), float(alpha))); };
+    const auto lobe = [&](double theta) {
+        const double sin2h = std::pow(std::sin(0.5 * theta), 2.0);
+        const double D = (2.0 + 1.0 / alpha) * std::pow(sin2h, 0.5 / alpha) / (2.0 * std::numbers::pi);
+        return D / (4.0 * (1.0 + lambda(1.0) + lambda(std::cos(theta)))) * std::sin(theta);
+    };
+    constexpr int kBins = 4096;
+    const double dTheta = 0.5 * std::numbers::pi / kBins;
+    std::vector<double> cdf(kBins + 1, 0.0);
+    for (int b = 0; b < kBins; ++b) cdf[b + 1] = cdf[b] + lobe((b + 0.5) * dTheta) * dTheta;
+    const double total = cdf[kBins];
+    SampleTable table;
+    for (uint32_t i = 0; i < count; ++i) {
+        const glm::vec2 xi = hammersley(i, count);
+        const double target = double(xi.x) * total;
+        const int b = int(std::upper_bound(cdf.begin(), cdf.end(), target) - cdf.begin()) - 1;
+        const int bin = std::clamp(b, 0, kBins - 1);
+        const double within = cdf[bin + 1] > cdf[bin] ? (target - cdf[bin]) / (cdf[bin + 1] - cdf[bin]) : 0.5;
+        const double theta = (bin + std::clamp(within, 0.0, 1.0)) * dTheta;
+        const double phi = 2.0 * std::numbers::pi * double(xi.y);
+        const glm::vec3 l(glm::dvec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)));
+        // pdf(l) = g(θ) / (total · 2π sin θ), the density per steradian of this sampling.
+        const double pdf = lobe((bin + 0.5) * dTheta) / (total * 2.0 * std::numbers::pi * std::max(std::sin(theta), 1e-6));
+        const float lod =
+            filtered ? filteredLod(float(pdf), count, texelSolidAngle(sourceFaceSize), float(sourceMips - 1), lodBias) : 0.0f;
+        table.samples.emplace_back(glm::normalize(l), lod);
+        table.totalWeight += 1.0f;
     }
     return table;
 }

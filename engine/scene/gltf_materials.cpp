@@ -108,6 +108,8 @@ std::set<std::pair<int, bool>> imageUses(const tinygltf::Model& model) {
         add(index("KHR_materials_specular", "specularColorTexture"), true);
         for (const char* key : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})
             add(index("KHR_materials_clearcoat", key), false);
+        add(index("KHR_materials_sheen", "sheenColorTexture"), true);
+        add(index("KHR_materials_sheen", "sheenRoughnessTexture"), false);
         add(index("KHR_materials_pbrSpecularGlossiness", "diffuseTexture"), true);
         add(index("KHR_materials_pbrSpecularGlossiness", "specularGlossinessTexture"), true);
     }
@@ -188,6 +190,22 @@ void loadClearcoat(const LoadContext& ctx, const tinygltf::Model& model, ImageTa
     if (e.Has("clearcoatNormalTexture"))
         if (auto scale = number(e.Get("clearcoatNormalTexture"), "scale"))
             out.clearcoatNormalScale = factor(ctx, *scale, -1e6, 1e6, what + " clearcoatNormalTexture.scale");
+}
+
+// KHR_materials_sheen into `out`.
+void loadSheen(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
+               const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+    const auto it = extensions.find("KHR_materials_sheen");
+    if (it == extensions.end()) return;
+    const tinygltf::Value& e = it->second;
+    if (e.Has("sheenColorFactor"))
+        for (int i = 0; i < 3; ++i)
+            out.sheenColorFactor[i] =
+                clampedFactor(ctx, e.Get("sheenColorFactor").Get(i).GetNumberAsDouble(), 0.0, 1.0, what + " sheenColorFactor");
+    if (auto roughness = number(e, "sheenRoughnessFactor"))
+        out.sheenRoughnessFactor = clampedFactor(ctx, *roughness, 0.0, 1.0, what + " sheenRoughnessFactor");
+    out.sheenColor = extensionTexture(ctx, model, images, e, "sheenColorTexture", true, what);
+    out.sheenRoughness = extensionTexture(ctx, model, images, e, "sheenRoughnessTexture", false, what);
 }
 
 // A copy of image `source` whose G channel holds 1 − glossiness · A (roughness, as the
@@ -314,6 +332,7 @@ void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTa
         out.unlit = m.extensions.count("KHR_materials_unlit") > 0;
         loadSpecular(ctx, model, images, m.extensions, out, what);
         loadClearcoat(ctx, model, images, m.extensions, out, what);
+        loadSheen(ctx, model, images, m.extensions, out, what);
 
         out.baseColor = textureRef(ctx, model, images, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
                                    pbr.baseColorTexture.extensions, true, what + " baseColorTexture");

@@ -193,6 +193,11 @@ void checkDocument(const Checker& c, const Json& root) {
                 c.textureInfo(*coat, pc, "clearcoatRoughnessTexture");
                 c.textureInfo(*coat, pc, "clearcoatNormalTexture", true);
             }
+            if (const Json* sheen = c.child(*ext, pe, "KHR_materials_sheen",
+                                            {{"sheenColorFactor", Kind::NumberArray, 3}, {"sheenRoughnessFactor", Kind::Number}})) {
+                c.textureInfo(*sheen, pe + ".KHR_materials_sheen", "sheenColorTexture");
+                c.textureInfo(*sheen, pe + ".KHR_materials_sheen", "sheenRoughnessTexture");
+            }
             if (const Json* sg = c.child(*ext, pe, "KHR_materials_pbrSpecularGlossiness",
                                          {{"diffuseFactor", Kind::NumberArray, 4}, {"specularFactor", Kind::NumberArray, 3},
                                           {"glossinessFactor", Kind::Number}})) {

@@ -76,6 +76,10 @@ MaterialLayerData materialLayerData(const Material& m) {
     out.uv[CANDELA_LAYER_TEX_CLEARCOAT] = uvTransform(m.clearcoat);
     out.uv[CANDELA_LAYER_TEX_CLEARCOAT_ROUGHNESS] = uvTransform(m.clearcoatRoughness);
     out.uv[CANDELA_LAYER_TEX_CLEARCOAT_NORMAL] = uvTransform(m.clearcoatNormal);
+    out.sheenColor = m.sheenColorFactor;
+    out.sheenRoughness = m.sheenRoughnessFactor;
+    out.uv[CANDELA_LAYER_TEX_SHEEN_COLOR] = uvTransform(m.sheenColor);
+    out.uv[CANDELA_LAYER_TEX_SHEEN_ROUGHNESS] = uvTransform(m.sheenRoughness);
     return out;
 }
 
@@ -218,7 +222,8 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
         mBindings.push_back({binding(m.baseColor, mWhite), binding(m.metallicRoughness, mWhite), binding(m.normal, mFlatNormal),
                              binding(m.occlusion, mWhite), binding(m.emissive, mWhite)});
         mLayerBindings.push_back({binding(m.specular, mWhite), binding(m.specularColor, mWhite), binding(m.clearcoat, mWhite),
-                                  binding(m.clearcoatRoughness, mWhite), binding(m.clearcoatNormal, mFlatNormal)});
+                                  binding(m.clearcoatRoughness, mWhite), binding(m.clearcoatNormal, mFlatNormal),
+                                  binding(m.sheenColor, mWhite), binding(m.sheenRoughness, mWhite)});
     }
 }
 

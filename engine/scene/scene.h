@@ -119,6 +119,14 @@ struct Material {
     TextureRef clearcoatRoughness;  // linear, G channel
     TextureRef clearcoatNormal;     // linear, tangent space
 
+    // KHR_materials_sheen: a Charlie sheen over the material (beneath the coat), colour
+    // sheenColorFactor · texture (RGB, sRGB), perceptual roughness sheenRoughnessFactor · texture
+    // (A). A black sheen colour (the default) disables the layer.
+    glm::vec3 sheenColorFactor{0.0f};
+    float sheenRoughnessFactor = 0.0f;
+    TextureRef sheenColor;      // sRGB, RGB channels
+    TextureRef sheenRoughness;  // linear, A channel
+
     // The layers beyond the core model this material uses (MaterialLayer bits): only those are
     // evaluated for it (see docs/materials.md).
     uint32_t layers() const;
@@ -137,12 +145,14 @@ enum MaterialLayer : uint32_t {
     kLayerClearcoat = 1u << 1,
     // ... with its own normal map.
     kLayerClearcoatNormal = 1u << 2,
+    // A sheen (KHR_materials_sheen with a non-black colour).
+    kLayerSheen = 1u << 3,
 };
 
 // The names of the layers in `layers` (MaterialLayer bits), in bit order: "specular", "clearcoat",
-// "clearcoat-normal-map".
+// "clearcoat-normal-map", "sheen".
 inline std::vector<std::string_view> layerNames(uint32_t layers) {
-    constexpr std::string_view kNames[] = {"specular", "clearcoat", "clearcoat-normal-map"};
+    constexpr std::string_view kNames[] = {"specular", "clearcoat", "clearcoat-normal-map", "sheen"};
     std::vector<std::string_view> out;
     for (uint32_t bit = 0; bit < std::size(kNames); ++bit)
         if (layers & (1u << bit)) out.push_back(kNames[bit]);
@@ -157,6 +167,8 @@ inline uint32_t Material::layers() const {
         out |= kLayerSpecular;
     // The specification: clearcoatFactor 0 disables the whole layer, whatever its textures.
     if (clearcoatFactor > 0.0f) out |= kLayerClearcoat | (clearcoatNormal.present() ? kLayerClearcoatNormal : 0u);
+    // The specification: a zero sheen colour factor disables the layer.
+    if (sheenColorFactor != glm::vec3(0.0f)) out |= kLayerSheen;
     return out;
 }
 

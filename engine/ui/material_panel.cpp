@@ -65,7 +65,9 @@ void drawMaterialPanel(Viewer& viewer) {
                                                                       {"specular colour", &m.specularColor},
                                                                       {"clearcoat", &m.clearcoat},
                                                                       {"clearcoat roughness", &m.clearcoatRoughness},
-                                                                      {"clearcoat normal", &m.clearcoatNormal}};
+                                                                      {"clearcoat normal", &m.clearcoatNormal},
+                                                                      {"sheen colour", &m.sheenColor},
+                                                                      {"sheen roughness", &m.sheenRoughness}};
     for (const auto& [name, ref] : slots)
         if (ref->present()) textures += (textures.empty() ? "" : ", ") + std::string(name);
     ImGui::TextWrapped("textures: %s", textures.empty() ? "none" : textures.c_str());

@@ -31,16 +31,18 @@ CANDELA_NAMESPACE_BEGIN
 struct BrdfProbeParams {
     float intensity;  // light intensity the BRDF·cosine is multiplied by (1 to compare, up to 1e6)
     // With kLayers only: the layers evaluated (CANDELA_LAYER_* bits) and their parameters: the
-    // specular layer's (KHR_materials_ior, _specular) and the coat's (KHR_materials_clearcoat).
+    // specular layer's (KHR_materials_ior, _specular), the coat's (KHR_materials_clearcoat) and the
+    // sheen's (KHR_materials_sheen; its albedo E(N·V) given, as the forward pass reads it from a LUT).
     float ior;
     float specular;
     uint layers;
     vec4 specularColor;  // rgb
     float clearcoat;
     float clearcoatRoughness;
-    float pad0;
-    float pad1;
+    float sheenRoughness;
+    float sheenAlbedo;
     vec4 clearcoatNormal;  // xyz: unit (the base normal is +Z)
+    vec4 sheenColor;       // rgb
 };
 
 // One combination of the grid: the inputs of brdfTimesCosine.
@@ -129,7 +131,7 @@ CANDELA_FN BrdfProbeSample brdfProbeSample(uvec2 texel) {
 CANDELA_NAMESPACE_END
 
 #ifdef __cplusplus
-static_assert(sizeof(candela::shading::BrdfProbeParams) == 64);
+static_assert(sizeof(candela::shading::BrdfProbeParams) == 80);
 #endif
 
 #endif

@@ -772,6 +772,26 @@ std::vector<Row> catalogue() {
           "clearcoatNormalTexture.scale: expected a number");
     warning("material layers", "ClearcoatFactorAboveOne", layered({{"KHR_materials_clearcoat", {{"clearcoatFactor", 2}}}}),
             "clearcoatFactor 2 is outside [0, 1] (using 1)", true);
+    // KHR_materials_sheen.
+    loads("material layers", "SheenFactorsOnly",
+          layered({{"KHR_materials_sheen", {{"sheenColorFactor", {0.9, 0.5, 0.2}}, {"sheenRoughnessFactor", 0.4}}}}));
+    error("material layers", "SheenColorTwoComponents", layered({{"KHR_materials_sheen", {{"sheenColorFactor", {1, 1}}}}}),
+          "KHR_materials_sheen.sheenColorFactor: expected an array of 3 numbers");
+    error("material layers", "SheenRoughnessTextureMissing",
+          layered({{"KHR_materials_sheen", {{"sheenColorFactor", {1, 1, 1}}, {"sheenRoughnessTexture", {{"index", 6}}}}}}),
+          "sheenRoughnessTexture: texture 6 does not exist");
+    warning("material layers", "SheenColorAboveOne", layered({{"KHR_materials_sheen", {{"sheenColorFactor", {2, 1, 1}}}}}),
+            "sheenColorFactor 2 is outside [0, 1] (using 1)", true);
+    // KHR_materials_pbrSpecularGlossiness and KHR_materials_variants.
+    loads("material layers", "SpecularGlossinessFactorsOnly",
+          layered({{"KHR_materials_pbrSpecularGlossiness", {{"diffuseFactor", {0.8, 0.2, 0.2, 1}}, {"glossinessFactor", 0.6}}}}));
+    warning("material layers", "GlossinessAboveOne", layered({{"KHR_materials_pbrSpecularGlossiness", {{"glossinessFactor", 3}}}}),
+            "glossinessFactor 3 is outside [0, 1] (using 1)", true);
+    error("material layers", "VariantMaterialMissing", gltfEdited([](Json& j) {
+              j["extensions"] = {{"KHR_materials_variants", {{"variants", Json::array({Json{{"name", "a"}}})}}}};
+              j["meshes"][0]["primitives"][0]["extensions"] = {
+                  {"KHR_materials_variants", {{"mappings", Json::array({Json{{"material", 4}, {"variants", {0}}}})}}}};
+          }), "KHR_materials_variants mapping 0: material 4 does not exist");
     warning("material layers", "ClearcoatRoughnessNegative",
             layered({{"KHR_materials_clearcoat", {{"clearcoatFactor", 1}, {"clearcoatRoughnessFactor", -0.5}}}}),
             "clearcoatRoughnessFactor -0.5 is outside [0, 1] (using 0)", true);

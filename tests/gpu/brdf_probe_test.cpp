@@ -77,13 +77,17 @@ glm::dvec3 referenceOf(const shading::BrdfProbeSample& s, const shading::BrdfPro
                              .specularColor = glm::dvec3(layer->specularColor),
                              .clearcoat = layer->clearcoat,
                              .clearcoatRoughness = layer->clearcoatRoughness,
-                             .clearcoatNormal = glm::dvec3(layer->clearcoatNormal)};
+                             .clearcoatNormal = glm::dvec3(layer->clearcoatNormal),
+                             .sheenColor = glm::dvec3(layer->sheenColor),
+                             .sheenRoughness = layer->sheenRoughness,
+                             .sheenAlbedo = layer->sheenAlbedo};
     return ref::brdfTimesCosineLayered(glm::dvec3(s.N), glm::dvec3(s.V), glm::dvec3(s.L), glm::dvec3(s.baseColor),
                                        s.metallic, s.perceptualRoughness, s.model, layers);
 }
 
 // Compares every texel with the reference times `intensity`; checks finiteness and the index.
-void checkProbe(const std::vector<glm::vec4>& texels, float intensity, const shading::BrdfProbeParams* layer = nullptr) {
+void checkProbe(const std::vector<glm::vec4>& texels, float intensity, const shading::BrdfProbeParams* layer = nullptr,
+                double cookTorranceTolerance = kCookTorranceTolerance) {
     ref::ErrorStats stats[3] = {{.floor = kFloor * intensity}, {.floor = kFloor * intensity}, {.floor = kFloor * intensity}};
     uint64_t nonFinite = 0, wrongIndex = 0;
     for (uint32_t y = 0; y < BrdfProbePass::kHeight; ++y)
@@ -100,7 +104,7 @@ void checkProbe(const std::vector<glm::vec4>& texels, float intensity, const sha
     EXPECT_EQ(wrongIndex, 0u) << "texels whose alpha is not their combination's index";
     for (uint32_t model = 0; model < 3; ++model) {
         const ref::ErrorStats& s = stats[model];
-        const double tolerance = model == ref::kBlinnPhong ? kBlinnPhongTolerance : kCookTorranceTolerance;
+        const double tolerance = model == ref::kBlinnPhong ? kBlinnPhongTolerance : cookTorranceTolerance;
         std::cout << "GPU, intensity " << intensity << ", " << kModelNames[model] << ": " << s.compared
                   << " values, max relative error " << s.maxRelative << " (" << s.relativeCount
                   << " values >= floor), max absolute error below " << s.maxAbsolute << "\n  worst: " << s.worstRelative
@@ -161,6 +165,31 @@ TEST_F(GpuTest, ClearcoatProbeMatchesDoubleReference) {
                                           << layer.clearcoat << ", roughness " << layer.clearcoatRoughness
                                           << ", normal z " << layer.clearcoatNormal.z << ", intensity " << layer.intensity);
         checkProbe(runProbe(context(), layer, BrdfProbePass::Brdf::Layers), layer.intensity, &layer);
+    }
+}
+
+
+// The sheen (KHR_materials_sheen) over the grid: white and coloured, roughness 0 (clamped), 0.3 and
+// 1, albedo E given (0.5; the LUT is tested on its own), over the core material, under a coat, and
+// at intensity 1e6. Tolerance 1e-4 relative for these runs: the Charlie exponent 1/(2α) (up to 247)
+// multiplies the float rounding of sin²θ_h (BrdfLayers.SheenFloatMatchesDoubleReference).
+TEST_F(GpuTest, SheenProbeMatchesDoubleReference) {
+    const glm::vec4 up(0.0f, 0.0f, 1.0f, 0.0f);
+    const auto sheen = [&](float intensity, uint32_t layers, glm::vec4 color, float roughness) {
+        return shading::BrdfProbeParams{.intensity = intensity, .ior = 1.5f, .specular = 1.0f, .layers = layers,
+                                        .specularColor = glm::vec4(1.0f), .clearcoat = 1.0f, .clearcoatRoughness = 0.2f,
+                                        .sheenRoughness = roughness, .sheenAlbedo = 0.5f, .clearcoatNormal = up,
+                                        .sheenColor = color};
+    };
+    const glm::vec4 white(1.0f), coloured(0.8f, 0.3f, 0.1f, 0.0f);
+    const shading::BrdfProbeParams cases[] = {
+        sheen(1.0f, CANDELA_LAYER_SHEEN, white, 0.0f),   sheen(1.0f, CANDELA_LAYER_SHEEN, white, 0.3f),
+        sheen(1.0f, CANDELA_LAYER_SHEEN, coloured, 1.0f), sheen(1.0f, CANDELA_LAYER_SHEEN | CANDELA_LAYER_CLEARCOAT, coloured, 0.3f),
+        sheen(1e6f, CANDELA_LAYER_SHEEN, white, 0.0f)};
+    for (const shading::BrdfProbeParams& c : cases) {
+        SCOPED_TRACE(::testing::Message() << "layers " << c.layers << ", sheen roughness " << c.sheenRoughness
+                                          << ", intensity " << c.intensity);
+        checkProbe(runProbe(context(), c, BrdfProbePass::Brdf::Layers), c.intensity, &c, 1e-4);
     }
 }
 

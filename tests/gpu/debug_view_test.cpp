@@ -90,33 +90,42 @@ TEST_F(DebugViewTest, DiffuseAndSpecularAddUpToTheImage) {
     EXPECT_LT(worst, 4e-3);  // three half-float roundings
 }
 
-TEST_F(DebugViewTest, ClearcoatLightAddsUpWithTheLobesAndItsNormalIsShown) {
-    // The grid under a coat (weight 1, roughness 0.2, no normal map of its own): the material's
-    // lobes beneath the coat plus the coat's light make the image; the coat's normal is the
-    // unmapped one. Without a coat, the coat views are black.
+TEST_F(DebugViewTest, LayerLightsAddUpWithTheLobesAndTheCoatNormalIsShown) {
+    // The grid under a sheen (0.9, 0.6, 0.3; roughness 0.4) and a coat (weight 1, roughness 0.2, no
+    // normal map of its own): the material's lobes beneath them plus the sheen's and the coat's
+    // light make the image; the coat's normal is the unmapped one. Without layers, the layer views
+    // are black.
     const CapturedFrame bare = render(passes::DebugView::Clearcoat);
     const CapturedFrame bareNormal = render(passes::DebugView::ClearcoatNormal);
+    const CapturedFrame bareSheen = render(passes::DebugView::Sheen);
     for (int row = 0; row < 7; ++row)
         for (int column = 0; column < 7; ++column)
             for (int c = 0; c < 3; ++c) {
                 EXPECT_EQ(pixel(bare, sphereCentre(row, column))[c], 0) << row << "," << column;
                 EXPECT_EQ(pixel(bareNormal, sphereCentre(row, column))[c], 0) << row << "," << column;
+                EXPECT_EQ(pixel(bareSheen, sphereCentre(row, column))[c], 0) << row << "," << column;
             }
     scene::Scene coated = mGrid;
-    for (scene::Material& m : coated.materials) m.clearcoatFactor = 1.0f, m.clearcoatRoughnessFactor = 0.2f;
+    for (scene::Material& m : coated.materials) {
+        m.clearcoatFactor = 1.0f, m.clearcoatRoughnessFactor = 0.2f;
+        m.sheenColorFactor = glm::vec3(0.9f, 0.6f, 0.3f), m.sheenRoughnessFactor = 0.4f;
+    }
     const CapturedFrame image = render(passes::DebugView::None, true, &coated);
     const CapturedFrame diffuse = render(passes::DebugView::Diffuse, true, &coated);
     const CapturedFrame specular = render(passes::DebugView::Specular, true, &coated);
     const CapturedFrame coat = render(passes::DebugView::Clearcoat, true, &coated);
-    double worst = 0.0, coatTotal = 0.0;
+    const CapturedFrame sheen = render(passes::DebugView::Sheen, true, &coated);
+    double worst = 0.0, coatTotal = 0.0, sheenTotal = 0.0;
     for (size_t i = 0; i < image.rgba32f.size(); ++i) {
         if (i % 4 == 3) continue;
-        const double sum = double(diffuse.rgba32f[i]) + specular.rgba32f[i] + coat.rgba32f[i];
+        const double sum = double(diffuse.rgba32f[i]) + specular.rgba32f[i] + coat.rgba32f[i] + sheen.rgba32f[i];
         worst = std::max(worst, std::abs(sum - image.rgba32f[i]) / (std::abs(image.rgba32f[i]) + 1e-2));
         coatTotal += coat.rgba32f[i];
+        sheenTotal += sheen.rgba32f[i];
     }
     EXPECT_GT(coatTotal, 0.0);
-    EXPECT_LT(worst, 6e-3);  // four half-float roundings
+    EXPECT_GT(sheenTotal, 0.0);
+    EXPECT_LT(worst, 6e-3);  // five half-float roundings
     const CapturedFrame normals = render(passes::DebugView::GeometricNormal, false, &coated);
     const CapturedFrame coatNormals = render(passes::DebugView::ClearcoatNormal, false, &coated);
     const glm::ivec2 p = sphereCentre(3, 3);

@@ -2,7 +2,13 @@
 // its variants exactly, the layered program at the core's values draws the core image, and the
 // layers keep the white furnace.
 #include "gpu_test.h"
+#include "graph_runner.h"
 #include "sphere_furnace.h"
+
+#include "../unit/brdf_reference.h"
+#include "ibl/sheen_lut.h"
+#include "passes/ibl_sheen_lut_pass.h"
+#include "passes/readback_pass.h"
 
 #include "renderer.h"
 #include "scene/builtin_scenes.h"
@@ -11,6 +17,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -110,6 +117,100 @@ TEST_F(GpuTest, ClearcoatKeepsTheWhiteFurnace) {
     measured("clearcoatFurnaceMaxAboveOne", highest);
     EXPECT_LE(worst, 0.02);
     EXPECT_LE(highest, 1.0 / 1024.0);
+}
+
+
+// The sheen albedo LUT (ibl_sheen_lut.comp, a midpoint quadrature over the half vector) against
+// E(N·V, r) = ∫ f_sheen · N·L dω of the double-precision sheen reference, integrated over the half
+// vector on a 16× finer grid in cos θ_h and 8× in φ, at 20 texels (N·V 0 … 1, roughness 0 … 1).
+// Metric: |got − expected|. Tolerance: 2e-3 + 0.5% of the expected value (E reaches 4.1 at grazing
+// views of the smoothest sheen, where the lobe is sharpest).
+TEST_F(GpuTest, SheenLutMatchesTheDoubleReference) {
+    constexpr uint32_t kSize = ibl::SheenLut::kSize;
+    const passes::IblSheenLutPass pass(context());
+    GraphRunner runner(context());
+    graph::RenderGraph graph;
+    const graph::TextureId lut = graph.createTexture("sheen_lut", {.width = kSize, .height = kSize, .format = passes::IblSheenLutPass::kFormat});
+    const graph::BufferId target = runner.readbackBuffer(graph, "sheen lut readback", sizeof(float) * kSize * kSize);
+    passes::addReadbackPass(graph, pass.add(graph, lut), target);
+    runner.run(graph);
+    const std::vector<float> texels = runner.read<float>(target);
+    const auto reference = [](double NoV, double roughness) {
+        const glm::dvec3 n(0.0, 0.0, 1.0), v(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
+        constexpr int kU = 2048, kPhi = 256;
+        const double du = 1.0 / kU, dphi = std::numbers::pi / kPhi;
+        double sum = 0.0;
+        for (int i = 0; i < kU; ++i) {
+            const double u = (i + 0.5) * du, s = std::sqrt(1.0 - u * u);
+            for (int j = 0; j < kPhi; ++j) {
+                const double phi = (j + 0.5) * dphi;
+                const glm::dvec3 h(s * std::cos(phi), s * std::sin(phi), u);
+                const double VoH = glm::dot(v, h);
+                if (VoH <= 0.0) continue;
+                const glm::dvec3 l = 2.0 * VoH * h - v;
+                if (l.z <= 0.0) continue;
+                sum += reference::sheenTimesCosine(n, v, glm::normalize(l), roughness) * 4.0 * VoH;
+            }
+        }
+        return 2.0 * sum * du * dphi;
+    };
+    double worst = 0.0;
+    for (uint32_t x : {0u, 3u, 10u, 20u, 31u})
+        for (uint32_t y : {0u, 5u, 15u, 31u}) {
+            const double NoV = std::max(double(x) / (kSize - 1), 1e-4), roughness = double(y) / (kSize - 1);
+            const double expected = reference(NoV, roughness);
+            const double got = texels[size_t(y) * kSize + x];
+            EXPECT_NEAR(got, expected, 2e-3 + 5e-3 * expected) << "N·V " << NoV << ", roughness " << roughness;
+            worst = std::max(worst, std::abs(got - expected) / std::max(expected, 1e-3));
+        }
+    measured("sheenLutMaxRelativeError", worst);
+}
+
+// White furnace of the sheen: the furnace spheres (white, roughness 0.5, dielectric bottom row and
+// metal top row, each keeping the furnace alone) under a sheen of roughness 0 … 1 (columns), white
+// in one frame and coloured (1, 0.5, 0.2) in another; uniform environment of radiance 1, no lights.
+// The sheen reflects E(N·V) of the environment and the material beneath loses max(colour) · E.
+// Metric: over interior pixels, max |x − 1| of the brightest channel (red) and max x − 1 of any.
+// Tolerances: 0.02 (the bound) and one RGBA16F step above 1 (1/1024).
+TEST_F(GpuTest, SheenKeepsTheWhiteFurnace) {
+    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
+    const std::vector<Sphere> spheres = furnaceSpheres();
+    Renderer renderer(context());
+    for (const glm::vec3& color : {glm::vec3(1.0f), glm::vec3(1.0f, 0.5f, 0.2f)}) {
+        scene::Scene scene = sphereScene(spheres, 64, 32);
+        for (size_t i = 0; i < spheres.size(); ++i) {
+            scene.materials[i].sheenColorFactor = color;
+            scene.materials[i].sheenRoughnessFactor = spheres[i].roughness;
+            scene.materials[i].roughnessFactor = 0.5f;
+        }
+        RenderSettings settings{.width = 320, .height = 180, .floatOutput = true, .scene = &scene,
+                                .camera = furnaceCamera(), .defaultLights = false, .environment = &env,
+                                .iblQuality = smallQuality()};
+        settings.ibl.skybox = false;
+        const CapturedFrame frame = renderer.capture(settings);
+        ASSERT_EQ(frameProblem(frame), "");
+        EXPECT_TRUE(contains(renderer.explain(), "pays for layers: sheen"));
+        EXPECT_TRUE(contains(renderer.explain(), "ibl: sheen cube"));
+        const scene::ViewSetup view = Renderer::resolveView(scene, settings.camera, 320.0f / 180.0f);
+        const std::vector<bool> interior = interiorMask(frame, 2);
+        double worst = 0.0, highest = -1.0;
+        size_t count = 0;
+        for (uint32_t y = 0; y < frame.height; ++y)
+            for (uint32_t x = 0; x < frame.width; ++x) {
+                if (!interior[size_t(y) * frame.width + x] || castRay(view, frame.width, frame.height, x, y, spheres).sphere < 0)
+                    continue;
+                ++count;
+                const glm::vec4 p = pixel(frame, x, y);
+                worst = std::max(worst, std::abs(double(p.r) - 1.0));
+                for (int c = 0; c < 3; ++c) highest = std::max(highest, double(p[c]) - 1.0);
+            }
+        const std::string which = color == glm::vec3(1.0f) ? "white" : "coloured";
+        EXPECT_GT(count, 10000u);
+        measured("sheenFurnaceMaxAbsError." + which, worst);
+        measured("sheenFurnaceMaxAboveOne." + which, highest);
+        EXPECT_LE(worst, 0.02) << which;
+        EXPECT_LE(highest, 1.0 / 1024.0) << which;
+    }
 }
 
 }  // namespace

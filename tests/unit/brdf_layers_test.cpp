@@ -138,6 +138,8 @@ TEST(BrdfLayers, SpecularZeroIsLambertAndIorOneReflectsNothingHeadOn) {
 
 // ---- Clearcoat ---------------------------------------------------------------------------------
 
+shading::Sheen noSheen() { return shading::sheenLayer(glm::vec3(0.0f), 0.0f, 0.0f); }
+
 struct Coat {
     uint32_t bits;
     float ior;  // of the material beneath (with CANDELA_LAYER_SPECULAR)
@@ -165,8 +167,8 @@ glm::vec3 coatedFloat(glm::vec3 N, glm::vec3 V, glm::vec3 L, glm::vec3 base, flo
                       const Coat& coat) {
     const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
         N, V, L, base, metallic, roughness, model, coat.bits, shading::dielectricFresnel(coat.ior, glm::vec3(1.0f), 1.0f),
-        shading::clearcoatLayer(coat.weight, coat.roughness, coat.normal, V));
-    return lobes.diffuse + lobes.specular + glm::vec3(lobes.clearcoat);
+        noSheen(), shading::clearcoatLayer(coat.weight, coat.roughness, coat.normal, V));
+    return lobes.diffuse + lobes.specular + lobes.sheen + glm::vec3(lobes.clearcoat);
 }
 
 glm::dvec3 coatedReference(glm::vec3 N, glm::vec3 V, glm::vec3 L, glm::vec3 base, float metallic, float roughness,
@@ -222,7 +224,7 @@ TEST(BrdfLayers, ClearcoatOfWeightZeroIsTheMaterialAndGrazingLetsNothingThrough)
     const glm::vec3 N(0.0f, 0.0f, 1.0f), V = direction(0.6, 0.0), L = direction(0.7, 2.0), base(0.8f, 0.5f, 0.2f);
     const shading::Clearcoat none = shading::clearcoatLayer(0.0f, 0.3f, N, V);
     const shading::LayeredLobes coated = shading::layeredLobesTimesCosine(
-        N, V, L, base, 0.3f, 0.5f, ref::kPbr, CANDELA_LAYER_CLEARCOAT, shading::coreDielectricFresnel(), none);
+        N, V, L, base, 0.3f, 0.5f, ref::kPbr, CANDELA_LAYER_CLEARCOAT, shading::coreDielectricFresnel(), noSheen(), none);
     const shading::BrdfLobes plain = shading::brdfLobesTimesCosine(N, V, L, base, 0.3f, 0.5f, ref::kPbr);
     EXPECT_EQ(coated.diffuse, plain.diffuse);
     EXPECT_EQ(coated.specular, plain.specular);
@@ -280,6 +282,90 @@ TEST(BrdfLayers, ClearcoatUnderPunctualLightsNeverAddsEnergy) {
             std::cout << "clearcoat 1, roughness " << roughness << ", N_c·V " << cosine << ": albedo " << albedo << "\n";
         }
     std::cout << "clearcoat punctual furnace: lowest " << lowest << " at " << where << "\n";
+}
+
+// ---- Sheen -------------------------------------------------------------------------------------
+
+struct SheenCase {
+    uint32_t bits;
+    glm::vec3 color;
+    float roughness, albedo;
+};
+
+// White and coloured sheens; roughness 0 (clamped), 0.1, 0.3, 0.6, 1; albedos 0, 0.4 and 2.5 (given: the
+// forward pass reads it from the LUT, tested on its own); alone and under a coat.
+std::vector<SheenCase> sheens() {
+    std::vector<SheenCase> out;
+    for (const glm::vec3& color : {glm::vec3(1.0f), glm::vec3(0.8f, 0.3f, 0.1f)})
+        for (float roughness : {0.0f, 0.1f, 0.3f, 0.6f, 1.0f})
+            for (float albedo : {0.0f, 0.4f, 2.5f})  // 2.5: E above 1 (grazing, smooth sheen), clamped
+                out.push_back({CANDELA_LAYER_SHEEN | (albedo > 0.0f && roughness == 0.3f ? CANDELA_LAYER_CLEARCOAT : 0u), color,
+                               roughness, albedo});
+    return out;
+}
+
+TEST(BrdfLayers, SheenFloatMatchesDoubleReference) {
+    // Tolerance 1e-4: the Charlie exponent 1/(2α) reaches 247 at the smallest roughness and
+    // multiplies the relative rounding of sin²θ_h (float ulp) by as much; elsewhere as the others.
+    ref::ErrorStats stats{.floor = kFloor};
+    uint64_t bad = 0;
+    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    for (const SheenCase& sc : sheens())
+        for (uint32_t model : {uint32_t(ref::kPbr), uint32_t(ref::kPbrSchlickGgx)})
+            for (double cv : kCosines)
+                for (double cl : kCosines)
+                    for (double phi : {0.0, std::numbers::pi / 2, std::numbers::pi})
+                        for (float metallic : {0.0f, 1.0f}) {
+                            const glm::vec3 V = direction(cv, 0.0), L = direction(cl, phi), base(0.5f, 0.4f, 0.3f);
+                            const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
+                                N, V, L, base, metallic, 0.5f, model, sc.bits, shading::coreDielectricFresnel(),
+                                shading::sheenLayer(sc.color, sc.roughness, sc.albedo),
+                                shading::clearcoatLayer(1.0f, 0.2f, N, V));
+                            const glm::vec3 got = lobes.diffuse + lobes.specular + lobes.sheen + glm::vec3(lobes.clearcoat);
+                            const ref::Layers layers{.bits = sc.bits, .clearcoat = 1.0, .clearcoatRoughness = 0.2,
+                                                     .sheenColor = glm::dvec3(sc.color), .sheenRoughness = sc.roughness,
+                                                     .sheenAlbedo = sc.albedo};
+                            const glm::dvec3 expected = ref::brdfTimesCosineLayered(
+                                glm::dvec3(N), glm::dvec3(V), glm::dvec3(L), glm::dvec3(base), metallic, 0.5, model, layers);
+                            for (int c = 0; c < 3; ++c) {
+                                bad += std::isfinite(got[c]) && got[c] >= 0.0f ? 0 : 1;
+                                stats.add(got[c], expected[c], [&] {
+                                    std::ostringstream s;
+                                    s.precision(9);
+                                    s << "sheen roughness " << sc.roughness << " albedo " << sc.albedo << " bits " << sc.bits
+                                      << " V=(" << V.x << "," << V.z << ") L=(" << L.x << "," << L.y << "," << L.z
+                                      << ") channel " << c << ": float " << got[c] << ", double " << expected[c];
+                                    return s.str();
+                                });
+                            }
+                        }
+    std::cout << "sheen: " << stats.compared << " values, max relative error " << stats.maxRelative
+              << ", max absolute error below the floor " << stats.maxAbsolute << "\n  worst: " << stats.worstRelative << "\n";
+    EXPECT_EQ(bad, 0u) << "NaN, Inf or negative values";
+    EXPECT_LE(stats.maxRelative, 1e-4) << stats.worstRelative;
+    EXPECT_LE(stats.maxAbsolute, kAbsoluteTolerance) << stats.worstAbsolute;
+}
+
+// The sheen under image-based light, as the forward pass combines it: a white material that alone
+// reflects exactly 1, beneath a white sheen of any albedo E in an environment of radiance 1, reflects
+// exactly 1 (the sheen takes E, the material loses E); a coloured sheen keeps its brightest channel
+// at 1 and the others below. Metric |x − 1| on the brightest channel, x − 1 on all; tolerance 1e-6.
+TEST(BrdfLayers, SheenUnderImageBasedLightKeepsTheWhiteFurnace) {
+    double worst = 0.0, highest = -1.0;
+    for (const glm::vec3& color : {glm::vec3(1.0f), glm::vec3(1.0f, 0.5f, 0.2f), glm::vec3(0.3f, 0.9f, 0.6f)})
+        for (float albedo = 0.0f; albedo <= 4.0f; albedo += 0.0625f) {
+            const shading::Sheen sheen = shading::sheenLayer(color, 0.5f, albedo);
+            const shading::BrdfLobes base = shading::iblShadeLobes(glm::vec3(1.0f), glm::vec3(1.0f), glm::vec2(0.6f, 0.2f),
+                                                                    glm::vec3(0.04f), glm::vec3(1.0f), true, 1.0f, 1.0f);
+            const glm::vec3 total =
+                (base.diffuse + base.specular) * sheen.baseWeight + shading::iblSheen(sheen, glm::vec3(1.0f), albedo, 1.0f);
+            const int brightest = color.x >= color.y && color.x >= color.z ? 0 : (color.y >= color.z ? 1 : 2);
+            worst = std::max(worst, std::abs(double(total[brightest]) - 1.0));
+            for (int c = 0; c < 3; ++c) highest = std::max(highest, double(total[c]) - 1.0);
+        }
+    std::cout << "sheen IBL furnace: max |x - 1| (brightest channel) " << worst << ", max x - 1 " << highest << "\n";
+    EXPECT_LE(worst, 1e-6);
+    EXPECT_LE(highest, 1e-6);
 }
 
 }  // namespace

@@ -129,7 +129,29 @@ inline glm::dvec3 brdfTimesCosineDielectric(const glm::dvec3& N, const glm::dvec
 }
 
 // Layer bits, numbered like CANDELA_LAYER_* in shaders/shared/scene_data.h.
-enum LayerBit : uint32_t { kLayerSpecular = 1, kLayerClearcoat = 2 };
+enum LayerBit : uint32_t { kLayerSpecular = 1, kLayerClearcoat = 2, kLayerSheen = 8 };
+
+// KHR_materials_sheen's lobe f · N·L in the specification's form: the Charlie distribution
+// D = (2 + 1/α) sin(θ_h)^(1/α) / 2π with α = roughness² (roughness clamped like the GGX one) and the
+// Estevez-Kulla visibility 1 / ((1 + Λ(N·V) + Λ(N·L)) 4 N·V N·L), Λ from the fitted L(x).
+inline double sheenL(double x, double alpha) {
+    const double t = (1.0 - alpha) * (1.0 - alpha);
+    const auto mix = [t](double a, double b) { return a + (b - a) * t; };
+    return mix(21.5473, 25.3245) / (1.0 + mix(3.82987, 3.32435) * std::pow(x, mix(0.19823, 0.16801))) +
+           mix(-1.97760, -1.27393) * x + mix(-4.32054, -4.85967);
+}
+inline double sheenLambda(double c, double alpha) {
+    return c < 0.5 ? std::exp(sheenL(c, alpha)) : std::exp(2.0 * sheenL(0.5, alpha) - sheenL(1.0 - c, alpha));
+}
+inline double sheenTimesCosine(const glm::dvec3& N, const glm::dvec3& V, const glm::dvec3& L, double perceptualRoughness) {
+    const auto [NoL, NoV, NoH, VoH, hasHalfVector] = angles(N, V, L);
+    if (NoL <= 0.0 || !hasHalfVector) return 0.0;
+    const double r = clampRoughness(perceptualRoughness);
+    const double alpha = r * r;
+    const double D = (2.0 + 1.0 / alpha) * std::pow(std::max(1.0 - NoH * NoH, 0.0), 0.5 / alpha) / (2.0 * kPi);
+    const double cl = std::min(NoL, 1.0), cv = std::min(NoV, 1.0);
+    return D / ((1.0 + sheenLambda(cv, alpha) + sheenLambda(cl, alpha)) * 4.0 * cv * cl) * cl;
+}
 
 // A material's layers and their parameters.
 struct Layers {
@@ -138,10 +160,16 @@ struct Layers {
     glm::dvec3 specularColor{1.0};
     double clearcoat = 0.0, clearcoatRoughness = 0.0;
     glm::dvec3 clearcoatNormal{0.0, 0.0, 1.0};
+    glm::dvec3 sheenColor{0.0};
+    double sheenRoughness = 0.0;
+    double sheenAlbedo = 0.0;  // E(N·V), given
 };
 
 // The layered material in the specifications' form: the material (brdfTimesCosine, or with
-// kLayerSpecular brdfTimesCosineDielectric) and, with kLayerClearcoat, KHR_materials_clearcoat's
+// kLayerSpecular brdfTimesCosineDielectric); with kLayerSheen, KHR_materials_sheen's albedo scaling
+//   sheenColor · f_sheen + material · (1 − max(sheenColor) · min(E(N·V), 1))  (E clamped: see
+//   shaders/shared/brdf_layers.h);
+// and, with kLayerClearcoat, over both KHR_materials_clearcoat's
 //   mix(material, D(α_c) G(α_c) / (4 N_c·V N_c·L), clearcoat · F_c),  F_c = 0.04 + 0.96 (1 − N_c·V)⁵,
 // with N_c·V, N_c·L, the half vector and the coat's roughness clamped as listed at the top.
 inline glm::dvec3 brdfTimesCosineLayered(const glm::dvec3& N, const glm::dvec3& V, const glm::dvec3& L,
@@ -152,6 +180,11 @@ inline glm::dvec3 brdfTimesCosineLayered(const glm::dvec3& N, const glm::dvec3& 
             ? brdfTimesCosineDielectric(N, V, L, baseColor, metallic, perceptualRoughness, model, layers.ior,
                                         layers.specular, layers.specularColor)
             : brdfTimesCosine(N, V, L, baseColor, metallic, perceptualRoughness, model);
+    if (layers.bits & kLayerSheen) {
+        const double maxColor = std::max({layers.sheenColor.x, layers.sheenColor.y, layers.sheenColor.z});
+        material = material * (1.0 - maxColor * std::min(layers.sheenAlbedo, 1.0)) +
+                   layers.sheenColor * sheenTimesCosine(N, V, L, layers.sheenRoughness);
+    }
     if (!(layers.bits & kLayerClearcoat)) return material;
     // Normalized in double: the textbook D amplifies a float normal's length error (1 − |N| ≈ 1e-8)
     // 4 / a² times at the mirror peak — 1.3% at the smallest roughness.

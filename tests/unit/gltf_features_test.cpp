@@ -391,6 +391,35 @@ TEST(GltfFeatures, ClearcoatExtension) {
     EXPECT_EQ(scene.warnings.size(), 2u);
 }
 
+TEST(GltfFeatures, SheenExtension) {
+    // Factors, both textures (colour sRGB, roughness linear), the default (black: no layer), clamping.
+    TempDir dir;
+    GltfBuilder b = texturedTriangle("", smallPng());
+    b.doc["extensionsUsed"] = {"KHR_materials_sheen"};
+    b.doc["materials"] = Json::array({
+        {{"extensions",
+          {{"KHR_materials_sheen",
+            {{"sheenColorFactor", {0.5, 0.25, 1.0}}, {"sheenRoughnessFactor", 0.3}, {"sheenColorTexture", {{"index", 0}}},
+             {"sheenRoughnessTexture", {{"index", 0}}}}}}}},
+        {{"extensions", {{"KHR_materials_sheen", {{"sheenRoughnessFactor", 0.5}}}}}},
+        {{"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {1.5, 0, 0}}, {"sheenRoughnessFactor", 2}}}}}}});
+    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    ASSERT_EQ(scene.materials.size(), 3u);
+    const Material& m = scene.materials[0];
+    expectVec(m.sheenColorFactor, {0.5f, 0.25f, 1.0f});
+    EXPECT_FLOAT_EQ(m.sheenRoughnessFactor, 0.3f);
+    ASSERT_TRUE(m.sheenColor.present() && m.sheenRoughness.present());
+    EXPECT_TRUE(scene.images.at(size_t(m.sheenColor.image)).srgb);
+    EXPECT_FALSE(scene.images.at(size_t(m.sheenRoughness.image)).srgb);
+    EXPECT_EQ(m.layers(), uint32_t(kLayerSheen));
+    EXPECT_EQ(scene.materials[1].layers(), 0u);  // a black sheen colour disables the layer
+    expectVec(scene.materials[2].sheenColorFactor, {1.0f, 0.0f, 0.0f});
+    EXPECT_FLOAT_EQ(scene.materials[2].sheenRoughnessFactor, 1.0f);
+    EXPECT_TRUE(hasWarning(scene, "sheenColorFactor 1.5 is outside [0, 1] (using 1)"));
+    EXPECT_TRUE(hasWarning(scene, "sheenRoughnessFactor 2 is outside [0, 1] (using 1)"));
+    EXPECT_EQ(scene.warnings.size(), 2u);
+}
+
 TEST(GltfFeatures, SpecularGlossinessIsConvertedToTheSpecularLayer) {
     // diffuse → base colour (factor and sRGB texture), metallic 0, roughness = 1 − glossiness (a
     // derived texture from the specularGlossiness alpha), specular colour = specularFactor × the
