@@ -5,7 +5,7 @@
 // a = the combination's linear index (y · width + x), so a test can check every value against its
 // double-precision reference and that both sides enumerated the same combination. With kLayers,
 // the Cook-Torrance models evaluate the layers of the push constants (shared/brdf_layers.h: the
-// specular layer, the sheen, the clearcoat) with the function the forward pass's layered program uses;
+// specular layer, the anisotropy, the sheen, the clearcoat) with the function the forward pass's layered program uses;
 // Blinn-Phong stays the core's there too.
 #include "shared/brdf_layers.h"
 #include "shared/brdf_probe.h"
@@ -29,8 +29,9 @@ void main() {
         DielectricFresnel d = dielectricFresnel(params.ior, params.specularColor.rgb, params.specular);
         Clearcoat coat = clearcoatLayer(params.clearcoat, params.clearcoatRoughness, params.clearcoatNormal.xyz, s.V);
         Sheen sheen = sheenLayer(params.sheenColor.rgb, params.sheenRoughness, params.sheenAlbedo);
+        Anisotropy an = anisotropyLayer(params.anisotropy.w, params.anisotropy.xyz, cross(s.N, params.anisotropy.xyz));
         LayeredLobes lobes = layeredLobesTimesCosine(s.N, s.V, s.L, s.baseColor, s.metallic, s.perceptualRoughness, s.model,
-                                                     params.layers, d, sheen, coat);
+                                                     params.layers, d, an, sheen, coat);
         radiance = lobes.diffuse + lobes.specular + lobes.sheen + vec3(lobes.clearcoat);
     } else {
         radiance = brdfTimesCosine(s.N, s.V, s.L, s.baseColor, s.metallic, s.perceptualRoughness, s.model);

@@ -58,6 +58,7 @@ layout(set = 1, binding = 9) uniform sampler2D clearcoatRoughnessTexture;
 layout(set = 1, binding = 10) uniform sampler2D clearcoatNormalTexture;
 layout(set = 1, binding = 11) uniform sampler2D sheenColorTexture;
 layout(set = 1, binding = 12) uniform sampler2D sheenRoughnessTexture;
+layout(set = 1, binding = 13) uniform sampler2D anisotropyTexture;
 // The layers' maps (set 3, the layered program only; placeholders where the frame has none): the
 // sheen albedo LUT E(N·V, sheen roughness) and the Charlie-prefiltered environment.
 layout(set = 3, binding = 0) uniform sampler2D sheenLut;
@@ -143,6 +144,7 @@ DielectricFresnel gDielectric;
 Clearcoat gCoat;
 vec3 gCoatLight = vec3(0.0f);
 Sheen gSheen;
+Anisotropy gAnisotropy;
 float gSheenAlbedo = 0.0f;  // E(N·V) of the sheen
 vec3 gSheenLight = vec3(0.0f);
 
@@ -177,6 +179,26 @@ Clearcoat layerClearcoat(MaterialLayerData layer, vec3 faced, vec3 v) {
     return clearcoatLayer(clamp(weight, 0.0f, 1.0f), clamp(roughness, 0.0f, 1.0f), nc, v);
 }
 
+// The anisotropy on shading normal `n`: direction (the texture's RG, or the tangent) rotated by
+// anisotropyRotation in the tangent plane, strength anisotropyStrength × the texture's B. None where
+// the tangent frame degenerates.
+Anisotropy layerAnisotropy(MaterialLayerData layer, vec3 n) {
+    Anisotropy none = anisotropyLayer(0.0f, vec3(1.0f, 0.0f, 0.0f), vec3(0.0f, 1.0f, 0.0f));
+    if (!hasLayer(CANDELA_LAYER_ANISOTROPY)) return none;
+    vec3 texel = texture(anisotropyTexture, layerUv(CANDELA_LAYER_TEX_ANISOTROPY)).rgb;
+    bool textured = layer.anisotropyTextured > 0.5f;
+    vec2 direction = textured ? texel.rg * 2.0f - 1.0f : vec2(1.0f, 0.0f);
+    float strength = clamp(layer.anisotropy * (textured ? texel.b : 1.0f), 0.0f, 1.0f);
+    float c = cos(layer.anisotropyRotation), s = sin(layer.anisotropyRotation);
+    direction = vec2(c * direction.x - s * direction.y, s * direction.x + c * direction.y);
+    vec3 t = inTangent.xyz - n * dot(n, inTangent.xyz);
+    if (dot(t, t) <= 1e-6f * dot(inTangent.xyz, inTangent.xyz) || dot(direction, direction) < 1e-12f) return none;
+    t = normalize(t);
+    vec3 b = cross(n, t) * (inTangent.w < 0.0f ? -1.0f : 1.0f);
+    vec3 along = normalize(t * direction.x + b * direction.y);
+    return anisotropyLayer(strength, along, cross(n, along));
+}
+
 // The sheen on shading normal `n`, and its albedo E(N·V) from the LUT into gSheenAlbedo.
 Sheen layerSheen(MaterialLayerData layer, vec3 n, vec3 v) {
     if (!hasLayer(CANDELA_LAYER_SHEEN)) return sheenLayer(vec3(0.0f), 0.0f, 0.0f);
@@ -196,7 +218,7 @@ BrdfLobes surfaceLobes(vec3 n, vec3 v, vec3 l, vec3 baseColor, float metallic, f
                        out float coat) {
 #ifdef CANDELA_MATERIAL_LAYERS
     LayeredLobes layered = layeredLobesTimesCosine(n, v, l, baseColor, metallic, roughness, kShadingModel, layerBits(),
-                                                   gDielectric, gSheen, gCoat);
+                                                   gDielectric, gAnisotropy, gSheen, gCoat);
     sheen = layered.sheen;
     coat = layered.clearcoat;
     BrdfLobes lobes;
@@ -240,7 +262,13 @@ vec2 splitSumAt(float NoV, float roughness) {
 BrdfLobes imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float metallic, float roughness) {
     float ao = occlusion(m);
     float NoV = clamp(dot(n, v), CANDELA_MIN_NOV, 1.0f);
-    vec3 prefiltered = prefilteredAt(n, v, roughness);
+    vec3 prefiltered;
+#ifdef CANDELA_MATERIAL_LAYERS
+    if (hasLayer(CANDELA_LAYER_ANISOTROPY))
+        prefiltered = prefilteredAt(anisotropicBentNormal(n, v, roughness, gAnisotropy), v, roughness);
+    else
+#endif
+    prefiltered = prefilteredAt(n, v, roughness);
     vec3 irradiance = irradianceAt(n);
     vec2 lut = splitSumAt(NoV, roughness);
     vec3 f0 = mix(vec3(0.04f), baseColor, metallic);
@@ -419,6 +447,7 @@ void main() {
     gDielectric = layerDielectric(layer);
     gCoat = layerClearcoat(layer, facedNormal(), v);
     gSheen = layerSheen(layer, n, v);
+    gAnisotropy = layerAnisotropy(layer, n);
 #endif
 
     BrdfLobes lit;
@@ -474,6 +503,12 @@ void main() {
         else if (kDebugView == CANDELA_DEBUG_SPECULAR) value = lit.specular;
         else if (kDebugView == CANDELA_DEBUG_CLEARCOAT) value = coatLight;
         else if (kDebugView == CANDELA_DEBUG_SHEEN) value = sheenLight;
+        else if (kDebugView == CANDELA_DEBUG_ANISOTROPY) {
+#ifdef CANDELA_MATERIAL_LAYERS
+            // T as n·0.5+0.5, scaled by the strength; black without anisotropy.
+            if (hasLayer(CANDELA_LAYER_ANISOTROPY)) value = asData((gAnisotropy.t * 0.5f + 0.5f) * gAnisotropy.strength);
+#endif
+        }
         else if (kDebugView == CANDELA_DEBUG_CLEARCOAT_NORMAL) {
 #ifdef CANDELA_MATERIAL_LAYERS
             if (hasLayer(CANDELA_LAYER_CLEARCOAT)) value = asData(gCoat.normal * 0.5f + 0.5f);  // black without a coat

@@ -4,7 +4,8 @@
 // roughness, metallic, occlusion, emissive. The GGX terms toward the first punctual light: D
 // (relative to its peak), G (Smith) and F (Schlick). The diffuse and the specular light alone
 // (punctual + environment). Material layers (docs/materials.md): the light the clearcoat reflects
-// and the coat's normal (black where there is no coat), the light the sheen reflects. Names only: no Vulkan (the command-line
+// and the coat's normal (black where there is no coat), the light the sheen reflects, the
+// anisotropy direction (scaled by its strength). Names only: no Vulkan (the command-line
 // parser uses them).
 
 #include <cstdint>
@@ -17,7 +18,7 @@ namespace candela::passes {
 
 enum class DebugView : uint32_t {
     None = 0, BaseColor, GeometricNormal, MappedNormal, Roughness, Metallic, Occlusion, Emissive, D, G, F, Diffuse, Specular,
-    Clearcoat, ClearcoatNormal, Sheen
+    Clearcoat, ClearcoatNormal, Sheen, Anisotropy
 };
 
 inline constexpr std::pair<DebugView, const char*> kDebugViewNames[] = {
@@ -36,7 +37,8 @@ inline constexpr std::pair<DebugView, const char*> kDebugViewNames[] = {
     {DebugView::Specular, "specular"},
     {DebugView::Clearcoat, "clearcoat"},
     {DebugView::ClearcoatNormal, "clearcoat-normal"},
-    {DebugView::Sheen, "sheen"}};
+    {DebugView::Sheen, "sheen"},
+    {DebugView::Anisotropy, "anisotropy-direction"}};
 
 // The names above; nullopt for anything else.
 inline std::optional<DebugView> parseDebugView(std::string_view name) {

@@ -110,6 +110,7 @@ std::set<std::pair<int, bool>> imageUses(const tinygltf::Model& model) {
             add(index("KHR_materials_clearcoat", key), false);
         add(index("KHR_materials_sheen", "sheenColorTexture"), true);
         add(index("KHR_materials_sheen", "sheenRoughnessTexture"), false);
+        add(index("KHR_materials_anisotropy", "anisotropyTexture"), false);
         add(index("KHR_materials_pbrSpecularGlossiness", "diffuseTexture"), true);
         add(index("KHR_materials_pbrSpecularGlossiness", "specularGlossinessTexture"), true);
     }
@@ -206,6 +207,18 @@ void loadSheen(const LoadContext& ctx, const tinygltf::Model& model, ImageTable&
         out.sheenRoughnessFactor = clampedFactor(ctx, *roughness, 0.0, 1.0, what + " sheenRoughnessFactor");
     out.sheenColor = extensionTexture(ctx, model, images, e, "sheenColorTexture", true, what);
     out.sheenRoughness = extensionTexture(ctx, model, images, e, "sheenRoughnessTexture", false, what);
+}
+
+// KHR_materials_anisotropy into `out`.
+void loadAnisotropy(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
+                    const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+    const auto it = extensions.find("KHR_materials_anisotropy");
+    if (it == extensions.end()) return;
+    const tinygltf::Value& e = it->second;
+    if (auto strength = number(e, "anisotropyStrength"))
+        out.anisotropyStrength = clampedFactor(ctx, *strength, 0.0, 1.0, what + " anisotropyStrength");
+    if (auto rotation = number(e, "anisotropyRotation")) out.anisotropyRotation = float(std::remainder(*rotation, 2.0 * M_PI));
+    out.anisotropy = extensionTexture(ctx, model, images, e, "anisotropyTexture", false, what);
 }
 
 // A copy of image `source` whose G channel holds 1 − glossiness · A (roughness, as the
@@ -333,6 +346,7 @@ void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTa
         loadSpecular(ctx, model, images, m.extensions, out, what);
         loadClearcoat(ctx, model, images, m.extensions, out, what);
         loadSheen(ctx, model, images, m.extensions, out, what);
+        loadAnisotropy(ctx, model, images, m.extensions, out, what);
 
         out.baseColor = textureRef(ctx, model, images, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
                                    pbr.baseColorTexture.extensions, true, what + " baseColorTexture");

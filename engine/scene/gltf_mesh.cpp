@@ -86,21 +86,22 @@ Attributes readAttributes(const LoadContext& ctx, const tinygltf::Model& model, 
     return {!normals.empty(), !tangents.empty(), {!uv0.empty(), !uv1.empty()}};
 }
 
-// MikkTSpace tangents for the normal texture's UV set; corners of one vertex that get different
-// tangents (mirrored UVs, seams) become separate vertices.
-void generateVertexTangents(const LoadContext& ctx, const std::string& what, const TextureRef& normalTexture,
+// MikkTSpace tangents for the UV set of `tangentMap` (a normal map, or the texture an anisotropy
+// direction follows); corners of one vertex that get different tangents (mirrored UVs, seams)
+// become separate vertices.
+void generateVertexTangents(const LoadContext& ctx, const std::string& what, const TextureRef& tangentMap,
                             const Attributes& attributes, std::vector<Vertex>& vertices, std::vector<uint32_t>& indices,
                             std::vector<uint32_t>& origin) {
-    const uint32_t set = normalTexture.texCoord;
+    const uint32_t set = tangentMap.texCoord;
     if (!attributes.uv[set]) {
-        ctx.warn(what + ": the normal texture uses TEXCOORD_" + std::to_string(set) +
+        ctx.warn(what + ": its tangent frame (normal map or anisotropy) follows TEXCOORD_" + std::to_string(set) +
                  ", which the primitive lacks; tangents are arbitrary");
         for (Vertex& v : vertices) v.tangent = fallbackTangent(v.normal);
         return;
     }
     // The tangent frame follows the texture's own axes, so the UVs go through its transform (offset
     // does not change derivatives and is left out).
-    TextureTransform linear = normalTexture.transform;
+    TextureTransform linear = tangentMap.transform;
     linear.offset = glm::vec2(0.0f);
     std::vector<glm::vec3> positions(vertices.size()), normals(vertices.size());
     std::vector<glm::vec2> uvs(vertices.size());

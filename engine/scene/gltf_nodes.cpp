@@ -309,11 +309,12 @@ private:
             auto cached = mGeometry.find({meshIndex, int(p)});
             if (cached == mGeometry.end()) {
                 // Tangents follow the first normal map among the materials the primitive may wear.
-                const TextureRef* tangentMap = mScene.materials[material].tangentSpaceMap();
+                std::optional<TextureRef> tangentMap = mScene.materials[material].tangentSpaceMap();
                 for (const auto& [variant, m] : variants)
                     if (!tangentMap) tangentMap = mScene.materials[m].tangentSpaceMap();
                 cached = mGeometry.emplace(std::pair{meshIndex, int(p)},
-                                           appendPrimitive(mCtx, mModel, meshIndex, int(p), tangentMap, mScene))
+                                           appendPrimitive(mCtx, mModel, meshIndex, int(p), tangentMap ? &*tangentMap : nullptr,
+                                                           mScene))
                              .first;
                 mRenormalizedWeights += cached->second.renormalizedWeights;
             }

@@ -198,6 +198,9 @@ void checkDocument(const Checker& c, const Json& root) {
                 c.textureInfo(*sheen, pe + ".KHR_materials_sheen", "sheenColorTexture");
                 c.textureInfo(*sheen, pe + ".KHR_materials_sheen", "sheenRoughnessTexture");
             }
+            if (const Json* an = c.child(*ext, pe, "KHR_materials_anisotropy",
+                                         {{"anisotropyStrength", Kind::Number}, {"anisotropyRotation", Kind::Number}}))
+                c.textureInfo(*an, pe + ".KHR_materials_anisotropy", "anisotropyTexture");
             if (const Json* sg = c.child(*ext, pe, "KHR_materials_pbrSpecularGlossiness",
                                          {{"diffuseFactor", Kind::NumberArray, 4}, {"specularFactor", Kind::NumberArray, 3},
                                           {"glossinessFactor", Kind::Number}})) {

@@ -80,6 +80,10 @@ MaterialLayerData materialLayerData(const Material& m) {
     out.sheenRoughness = m.sheenRoughnessFactor;
     out.uv[CANDELA_LAYER_TEX_SHEEN_COLOR] = uvTransform(m.sheenColor);
     out.uv[CANDELA_LAYER_TEX_SHEEN_ROUGHNESS] = uvTransform(m.sheenRoughness);
+    out.anisotropy = m.anisotropyStrength;
+    out.anisotropyRotation = m.anisotropyRotation;
+    out.anisotropyTextured = m.anisotropy.present() ? 1.0f : 0.0f;
+    out.uv[CANDELA_LAYER_TEX_ANISOTROPY] = uvTransform(m.anisotropy);
     return out;
 }
 
@@ -223,7 +227,8 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
                              binding(m.occlusion, mWhite), binding(m.emissive, mWhite)});
         mLayerBindings.push_back({binding(m.specular, mWhite), binding(m.specularColor, mWhite), binding(m.clearcoat, mWhite),
                                   binding(m.clearcoatRoughness, mWhite), binding(m.clearcoatNormal, mFlatNormal),
-                                  binding(m.sheenColor, mWhite), binding(m.sheenRoughness, mWhite)});
+                                  binding(m.sheenColor, mWhite), binding(m.sheenRoughness, mWhite),
+                                  binding(m.anisotropy, mWhite)});
     }
 }
 

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -127,13 +128,24 @@ struct Material {
     TextureRef sheenColor;      // sRGB, RGB channels
     TextureRef sheenRoughness;  // linear, A channel
 
+    // KHR_materials_anisotropy: the GGX lobe stretched along a direction in the tangent plane —
+    // the anisotropyTexture's RG (else the tangent), rotated by anisotropyRotation (radians) —
+    // with strength anisotropyStrength · texture B. Strength 0 (the default): isotropic.
+    float anisotropyStrength = 0.0f;
+    float anisotropyRotation = 0.0f;
+    TextureRef anisotropy;  // linear, RG direction, B strength
+
     // The layers beyond the core model this material uses (MaterialLayer bits): only those are
     // evaluated for it (see docs/materials.md).
     uint32_t layers() const;
-    // The normal map whose tangent frame the material needs — the material's own, else the coat's
-    // (KHR_materials_clearcoat asks for the same texture coordinates) — or null without one.
-    const TextureRef* tangentSpaceMap() const {
-        return normal.present() ? &normal : clearcoatNormal.present() ? &clearcoatNormal : nullptr;
+    // The texture whose coordinates the material's tangent frame follows — its normal map, else the
+    // coat's (KHR_materials_clearcoat asks for the same coordinates), else the anisotropy texture or,
+    // for an untextured anisotropy, set 0 — or nullopt when the material needs no tangent frame.
+    std::optional<TextureRef> tangentSpaceMap() const {
+        if (normal.present()) return normal;
+        if (clearcoatNormal.present()) return clearcoatNormal;
+        if (anisotropyStrength > 0.0f) return anisotropy.present() ? anisotropy : TextureRef{};
+        return std::nullopt;
     }
 };
 
@@ -147,12 +159,14 @@ enum MaterialLayer : uint32_t {
     kLayerClearcoatNormal = 1u << 2,
     // A sheen (KHR_materials_sheen with a non-black colour).
     kLayerSheen = 1u << 3,
+    // An anisotropic GGX lobe (KHR_materials_anisotropy with a non-zero strength).
+    kLayerAnisotropy = 1u << 4,
 };
 
 // The names of the layers in `layers` (MaterialLayer bits), in bit order: "specular", "clearcoat",
-// "clearcoat-normal-map", "sheen".
+// "clearcoat-normal-map", "sheen", "anisotropy".
 inline std::vector<std::string_view> layerNames(uint32_t layers) {
-    constexpr std::string_view kNames[] = {"specular", "clearcoat", "clearcoat-normal-map", "sheen"};
+    constexpr std::string_view kNames[] = {"specular", "clearcoat", "clearcoat-normal-map", "sheen", "anisotropy"};
     std::vector<std::string_view> out;
     for (uint32_t bit = 0; bit < std::size(kNames); ++bit)
         if (layers & (1u << bit)) out.push_back(kNames[bit]);
@@ -169,6 +183,7 @@ inline uint32_t Material::layers() const {
     if (clearcoatFactor > 0.0f) out |= kLayerClearcoat | (clearcoatNormal.present() ? kLayerClearcoatNormal : 0u);
     // The specification: a zero sheen colour factor disables the layer.
     if (sheenColorFactor != glm::vec3(0.0f)) out |= kLayerSheen;
+    if (anisotropyStrength > 0.0f) out |= kLayerAnisotropy;
     return out;
 }
 

@@ -67,7 +67,8 @@ void drawMaterialPanel(Viewer& viewer) {
                                                                       {"clearcoat roughness", &m.clearcoatRoughness},
                                                                       {"clearcoat normal", &m.clearcoatNormal},
                                                                       {"sheen colour", &m.sheenColor},
-                                                                      {"sheen roughness", &m.sheenRoughness}};
+                                                                      {"sheen roughness", &m.sheenRoughness},
+                                                                      {"anisotropy", &m.anisotropy}};
     for (const auto& [name, ref] : slots)
         if (ref->present()) textures += (textures.empty() ? "" : ", ") + std::string(name);
     ImGui::TextWrapped("textures: %s", textures.empty() ? "none" : textures.c_str());

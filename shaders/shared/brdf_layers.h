@@ -23,6 +23,11 @@
 // scaled by 1 − max(sheenColor) · E(N·V), E the sheen lobe's directional albedo (a LUT):
 //   sheened = sheenColor · D_c · Vis_c + material · (1 − max(sheenColor) · E(N·V)),
 // and the coat, when there is one, over both.
+//
+// Anisotropy (KHR_materials_anisotropy): the material's GGX lobe becomes anisotropic about the
+// direction T (in the tangent plane) with α_t = mix(α, 1, anisotropy²) along T and α_b = α across,
+// D = 1 / (π α_t α_b ((T·H/α_t)² + (B·H/α_b)² + (N·H)²)²) and the height-correlated anisotropic
+// Smith visibility (Heitz 2014), as the extension's specification gives them.
 #ifndef CANDELA_SHARED_BRDF_LAYERS_H
 #define CANDELA_SHARED_BRDF_LAYERS_H
 
@@ -272,10 +277,95 @@ CANDELA_FN vec3 iblSheen(Sheen s, vec3 prefiltered, float albedo, float occlusio
     return s.color * (min(albedo, 1.0f) * occlusion) * prefiltered;
 }
 
+// ---- Anisotropy ----
+
+// The anisotropy of one shading point: strength (0 … 1) and the unit directions T (along the
+// brushing) and B = N × T.
+struct Anisotropy {
+    float strength;
+    vec3 t;
+    vec3 b;
+};
+
+CANDELA_FN Anisotropy anisotropyLayer(float strength, vec3 t, vec3 b) {
+    Anisotropy a;
+    a.strength = strength;
+    a.t = t;
+    a.b = b;
+    return a;
+}
+
+// Anisotropic GGX D in Filament's form: α_t α_b · (α_t α_b / |f|²)² / π with f = (α_b T·H,
+// α_t B·H, α_t α_b N·H) — a sum of squares, so no cancellation near the peak.
+CANDELA_FN float distributionGgxAnisotropic(float NoH, float ToH, float BoH, float at, float ab) {
+    float a2 = at * ab;
+    vec3 f = vec3(ab * ToH, at * BoH, a2 * NoH);
+    float w2 = a2 / dot(f, f);
+    return a2 * w2 * w2 * (1.0f / CANDELA_PI);
+}
+
+// The height-correlated anisotropic Smith visibility G / (4 N·L N·V).
+CANDELA_FN float visibilityGgxAnisotropic(float NoV, float NoL, float ToV, float BoV, float ToL, float BoL, float at, float ab) {
+    float lambdaV = NoL * length(vec3(at * ToV, ab * BoV, NoV));
+    float lambdaL = NoV * length(vec3(at * ToL, ab * BoL, NoL));
+    return 0.5f / max(lambdaV + lambdaL, 1e-12f);
+}
+
+// The material's lobes toward L with its GGX lobe made anisotropic by `an` (the Fresnel and the
+// diffuse weighting as in brdfLobesTimesCosine, or with `specularLayer` as in
+// brdfLobesTimesCosineDielectric).
+CANDELA_FN BrdfLobes brdfLobesTimesCosineAnisotropic(vec3 N, vec3 V, vec3 L, vec3 baseColor, float metallic,
+                                                     float perceptualRoughness, bool specularLayer, DielectricFresnel d,
+                                                     Anisotropy an) {
+    BrdfLobes lobes;
+    lobes.diffuse = vec3(0.0f);
+    lobes.specular = vec3(0.0f);
+    BrdfAngles g = brdfAngles(N, V, L);
+    if (g.NoL <= 0.0f) return lobes;
+    vec3 H = V + L;
+    float lengthH = length(H);
+    H = lengthH > 1e-6f ? H / lengthH : N;
+    float roughness = clampRoughness(perceptualRoughness);
+    float ab = roughness * roughness;
+    float at = mix(ab, 1.0f, an.strength * an.strength);
+    float D = distributionGgxAnisotropic(g.NoH, dot(an.t, H), dot(an.b, H), at, ab);
+    float Vis = visibilityGgxAnisotropic(g.NoV, g.NoL, dot(an.t, V), dot(an.b, V), dot(an.t, L), dot(an.b, L), at, ab);
+    float w = schlickWeight(g.VoH);
+    vec3 metal = baseColor + (vec3(1.0f) - baseColor) * w;
+    vec3 F;
+    float diffuseWeight;
+    if (specularLayer) {
+        vec3 dielectric = d.f0 + (vec3(d.f90) - d.f0) * w;
+        F = mix(dielectric, metal, metallic);
+        diffuseWeight = (1.0f - metallic) * minComponent(oneMinusFresnelDielectric(w, d));
+        lobes.diffuse = diffuseWeight * baseColor * (1.0f / CANDELA_PI) * g.NoL;
+    } else {
+        vec3 f0 = mix(vec3(0.04f), baseColor, metallic);
+        F = f0 + (vec3(1.0f) - f0) * w;
+        lobes.diffuse = (vec3(1.0f) - F) * (1.0f - metallic) * baseColor * (1.0f / CANDELA_PI) * g.NoL;
+    }
+    lobes.specular = F * (D * Vis * g.specularWeight) * g.NoL;
+    return lobes;
+}
+
+// The image-based approximation (the extension's implementation notes, as the Khronos sample
+// viewer does): the prefiltered environment is read about a normal bent toward the plane across
+// the brushing, the more so the stronger and smoother the anisotropy.
+CANDELA_FN vec3 anisotropicBentNormal(vec3 N, vec3 V, float perceptualRoughness, Anisotropy an) {
+    vec3 tangentAcross = cross(an.b, V);
+    vec3 anisotropicNormal = cross(tangentAcross, an.b);
+    float bend = 1.0f - an.strength * (1.0f - perceptualRoughness);
+    float bend2 = bend * bend;
+    vec3 bent = mix(anisotropicNormal, N, bend2 * bend2);
+    float lengthBent = length(bent);
+    return lengthBent > 1e-6f ? bent / lengthBent : N;
+}
+
 // ---- All layers ----
 
 // f(V, L) · (N·L) of a layered material: the material's lobes (the core's, or with the specular
-// layer's dielectric Fresnel `d` when `layers` has CANDELA_LAYER_SPECULAR), beneath the sheen
+// layer's dielectric Fresnel `d` when `layers` has CANDELA_LAYER_SPECULAR; with an anisotropic GGX
+// lobe `an` when it has CANDELA_LAYER_ANISOTROPY), beneath the sheen
 // `sheen` when `layers` has CANDELA_LAYER_SHEEN, and both beneath the coat `coat` when `layers` has
 // CANDELA_LAYER_CLEARCOAT. The forward pass passes its kLayers, a specialization constant, so the
 // branches not taken are compiled out.
@@ -288,10 +378,15 @@ struct LayeredLobes {
 
 CANDELA_FN LayeredLobes layeredLobesTimesCosine(vec3 N, vec3 V, vec3 L, vec3 baseColor, float metallic,
                                                 float perceptualRoughness, uint model, uint layers, DielectricFresnel d,
-                                                Sheen sheen, Clearcoat coat) {
-    BrdfLobes base = (layers & CANDELA_LAYER_SPECULAR) != 0u
-                         ? brdfLobesTimesCosineDielectric(N, V, L, baseColor, metallic, perceptualRoughness, model, d)
-                         : brdfLobesTimesCosine(N, V, L, baseColor, metallic, perceptualRoughness, model);
+                                                Anisotropy an, Sheen sheen, Clearcoat coat) {
+    BrdfLobes base;
+    if ((layers & CANDELA_LAYER_ANISOTROPY) != 0u)
+        base = brdfLobesTimesCosineAnisotropic(N, V, L, baseColor, metallic, perceptualRoughness,
+                                               (layers & CANDELA_LAYER_SPECULAR) != 0u, d, an);
+    else if ((layers & CANDELA_LAYER_SPECULAR) != 0u)
+        base = brdfLobesTimesCosineDielectric(N, V, L, baseColor, metallic, perceptualRoughness, model, d);
+    else
+        base = brdfLobesTimesCosine(N, V, L, baseColor, metallic, perceptualRoughness, model);
     LayeredLobes layered;
     layered.diffuse = base.diffuse;
     layered.specular = base.specular;

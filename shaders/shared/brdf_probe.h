@@ -32,7 +32,8 @@ struct BrdfProbeParams {
     float intensity;  // light intensity the BRDF·cosine is multiplied by (1 to compare, up to 1e6)
     // With kLayers only: the layers evaluated (CANDELA_LAYER_* bits) and their parameters: the
     // specular layer's (KHR_materials_ior, _specular), the coat's (KHR_materials_clearcoat) and the
-    // sheen's (KHR_materials_sheen; its albedo E(N·V) given, as the forward pass reads it from a LUT).
+    // sheen's (KHR_materials_sheen; its albedo E(N·V) given, as the forward pass reads it from a LUT)
+    // and the anisotropy's (KHR_materials_anisotropy).
     float ior;
     float specular;
     uint layers;
@@ -43,6 +44,7 @@ struct BrdfProbeParams {
     float sheenAlbedo;
     vec4 clearcoatNormal;  // xyz: unit (the base normal is +Z)
     vec4 sheenColor;       // rgb
+    vec4 anisotropy;       // xyz: the unit direction T in the tangent plane (z = 0), w: strength
 };
 
 // One combination of the grid: the inputs of brdfTimesCosine.
@@ -131,7 +133,7 @@ CANDELA_FN BrdfProbeSample brdfProbeSample(uvec2 texel) {
 CANDELA_NAMESPACE_END
 
 #ifdef __cplusplus
-static_assert(sizeof(candela::shading::BrdfProbeParams) == 80);
+static_assert(sizeof(candela::shading::BrdfProbeParams) == 96);
 #endif
 
 #endif

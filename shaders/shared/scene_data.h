@@ -32,6 +32,7 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_DEBUG_CLEARCOAT 13u         // the light the clearcoat reflects
 #define CANDELA_DEBUG_CLEARCOAT_NORMAL 14u  // the coat's normal (after its normal map)
 #define CANDELA_DEBUG_SHEEN 15u             // the light the sheen reflects
+#define CANDELA_DEBUG_ANISOTROPY 16u        // the anisotropy direction T (and strength)
 
 #define CANDELA_ALPHA_OPAQUE 0u
 #define CANDELA_ALPHA_MASK 1u
@@ -50,6 +51,7 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_LAYER_CLEARCOAT 2u         // KHR_materials_clearcoat
 #define CANDELA_LAYER_CLEARCOAT_NORMAL 4u  // its clearcoatNormalTexture (the coat's TBN work)
 #define CANDELA_LAYER_SHEEN 8u             // KHR_materials_sheen
+#define CANDELA_LAYER_ANISOTROPY 16u       // KHR_materials_anisotropy
 
 // Texture slots of the layers, bound after the core ones in descriptor set 1 of the layered
 // program (bindings 6 and up; binding 5 is the MaterialLayers buffer).
@@ -60,7 +62,8 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_LAYER_TEX_CLEARCOAT_NORMAL 4
 #define CANDELA_LAYER_TEX_SHEEN_COLOR 5
 #define CANDELA_LAYER_TEX_SHEEN_ROUGHNESS 6
-#define CANDELA_LAYER_TEX_COUNT 7
+#define CANDELA_LAYER_TEX_ANISOTROPY 7
+#define CANDELA_LAYER_TEX_COUNT 8
 
 // One punctual light (KHR_lights_punctual), world space.
 struct LightData {
@@ -110,6 +113,10 @@ struct MaterialLayerData {
     /*Range(0, 2)*/ float clearcoatNormalScale;  // clearcoatNormalTexture.scale
     /*Color*/ vec3 sheenColor;         // KHR_materials_sheen sheenColorFactor (linear)
     /*Range(0, 1)*/ float sheenRoughness;  // sheenRoughnessFactor
+    /*Range(0, 1)*/ float anisotropy;  // KHR_materials_anisotropy anisotropyStrength
+    /*Range(-3.2, 3.2)*/ float anisotropyRotation;  // radians, counter-clockwise from the tangent
+    /*Ignore*/ float anisotropyTextured;  // 1: anisotropyTexture gives direction (RG) and strength (B)
+    /*Ignore*/ float pad0;
     /*Ignore*/ UvTransform uv[CANDELA_LAYER_TEX_COUNT];
 };
 
@@ -150,7 +157,7 @@ CANDELA_NAMESPACE_END
 static_assert(sizeof(candela::shading::LightData) == 64);
 static_assert(sizeof(candela::shading::DrawData) == 144);
 static_assert(sizeof(candela::shading::MaterialData) == 64 + 32 * CANDELA_TEX_COUNT);
-static_assert(sizeof(candela::shading::MaterialLayerData) == 48 + 32 * CANDELA_LAYER_TEX_COUNT);
+static_assert(sizeof(candela::shading::MaterialLayerData) == 64 + 32 * CANDELA_LAYER_TEX_COUNT);
 static_assert(sizeof(candela::shading::ForwardPush) == 128);
 #endif
 

@@ -782,6 +782,16 @@ std::vector<Row> catalogue() {
           "sheenRoughnessTexture: texture 6 does not exist");
     warning("material layers", "SheenColorAboveOne", layered({{"KHR_materials_sheen", {{"sheenColorFactor", {2, 1, 1}}}}}),
             "sheenColorFactor 2 is outside [0, 1] (using 1)", true);
+    // KHR_materials_anisotropy.
+    // The direction lives in a tangent frame, which this triangle's missing UVs leave arbitrary.
+    warning("material layers", "AnisotropyWithoutUvs",
+            layered({{"KHR_materials_anisotropy", {{"anisotropyStrength", 0.7}, {"anisotropyRotation", 1.2}}}}),
+            "its tangent frame (normal map or anisotropy) follows TEXCOORD_0, which the primitive lacks; tangents are arbitrary",
+            true);
+    error("material layers", "AnisotropyRotationString", layered({{"KHR_materials_anisotropy", {{"anisotropyRotation", "1"}}}}),
+          "KHR_materials_anisotropy.anisotropyRotation: expected a number, got the string \"1\"");
+    warning("material layers", "AnisotropyStrengthNegative", layered({{"KHR_materials_anisotropy", {{"anisotropyStrength", -1}}}}),
+            "anisotropyStrength -1 is outside [0, 1] (using 0)", true);
     // KHR_materials_pbrSpecularGlossiness and KHR_materials_variants.
     loads("material layers", "SpecularGlossinessFactorsOnly",
           layered({{"KHR_materials_pbrSpecularGlossiness", {{"diffuseFactor", {0.8, 0.2, 0.2, 1}}, {"glossinessFactor", 0.6}}}}));

@@ -80,7 +80,9 @@ glm::dvec3 referenceOf(const shading::BrdfProbeSample& s, const shading::BrdfPro
                              .clearcoatNormal = glm::dvec3(layer->clearcoatNormal),
                              .sheenColor = glm::dvec3(layer->sheenColor),
                              .sheenRoughness = layer->sheenRoughness,
-                             .sheenAlbedo = layer->sheenAlbedo};
+                             .sheenAlbedo = layer->sheenAlbedo,
+                             .anisotropy = layer->anisotropy.w,
+                             .anisotropyDirection = glm::dvec3(layer->anisotropy)};
     return ref::brdfTimesCosineLayered(glm::dvec3(s.N), glm::dvec3(s.V), glm::dvec3(s.L), glm::dvec3(s.baseColor),
                                        s.metallic, s.perceptualRoughness, s.model, layers);
 }
@@ -190,6 +192,27 @@ TEST_F(GpuTest, SheenProbeMatchesDoubleReference) {
         SCOPED_TRACE(::testing::Message() << "layers " << c.layers << ", sheen roughness " << c.sheenRoughness
                                           << ", intensity " << c.intensity);
         checkProbe(runProbe(context(), c, BrdfProbePass::Brdf::Layers), c.intensity, &c, 1e-4);
+    }
+}
+
+
+// The anisotropy (KHR_materials_anisotropy) over the grid: strength 0.5 and 1 (1 at the clamped
+// roughness 0 is the stiffest: α_t = 1, α_b = 0.002), along the probe's tangent and turned 30°,
+// over the core Fresnel and the specular layer, and at intensity 1e6. Same metric and tolerances.
+TEST_F(GpuTest, AnisotropyProbeMatchesDoubleReference) {
+    const auto aniso = [](float intensity, uint32_t layers, float strength, glm::vec3 t) {
+        return shading::BrdfProbeParams{.intensity = intensity, .ior = 1.33f, .specular = 1.0f, .layers = layers,
+                                        .specularColor = glm::vec4(1.0f), .anisotropy = glm::vec4(t, strength)};
+    };
+    const glm::vec3 along(1.0f, 0.0f, 0.0f), turned(0.8660254f, 0.5f, 0.0f);
+    const uint32_t both = CANDELA_LAYER_ANISOTROPY | CANDELA_LAYER_SPECULAR;
+    const shading::BrdfProbeParams cases[] = {
+        aniso(1.0f, CANDELA_LAYER_ANISOTROPY, 1.0f, along), aniso(1.0f, CANDELA_LAYER_ANISOTROPY, 0.5f, turned),
+        aniso(1.0f, both, 1.0f, turned), aniso(1e6f, CANDELA_LAYER_ANISOTROPY, 1.0f, along)};
+    for (const shading::BrdfProbeParams& c : cases) {
+        SCOPED_TRACE(::testing::Message() << "layers " << c.layers << ", strength " << c.anisotropy.w << ", T ("
+                                          << c.anisotropy.x << ", " << c.anisotropy.y << "), intensity " << c.intensity);
+        checkProbe(runProbe(context(), c, BrdfProbePass::Brdf::Layers), c.intensity, &c);
     }
 }
 

@@ -97,6 +97,9 @@ const GoldenCase kCases[] = {
     {"ibl_clearcoat_test", "ClearCoatTest/glTF-Binary/ClearCoatTest.glb", {0.0f, 90.0f, 0.0f}, "studio_small_03_1k.hdr"},
     // KHR_materials_sheen: fabric with a sheen over wood (no sheen).
     {"ibl_sheen_chair", "SheenChair/glTF/SheenChair.gltf", {20.0f, 60.0f, 0.0f}, "studio_small_03_1k.hdr"},
+    // KHR_materials_anisotropy: strength and rotation, textured and not.
+    {"ibl_anisotropy_rotation_test", "AnisotropyRotationTest/glTF-Binary/AnisotropyRotationTest.glb", {0.0f, 90.0f, 0.0f},
+     "studio_small_03_1k.hdr"},
     // KHR_materials_variants: the shoe's three variants (the file's default is the first).
     {"ibl_variants_shoe_midnight", "MaterialsVariantsShoe/glTF/MaterialsVariantsShoe.gltf", {20.0f, 60.0f, 0.0f},
      "studio_small_03_1k.hdr", 0.0f, "", 0.0, "midnight"},

@@ -139,6 +139,7 @@ TEST(BrdfLayers, SpecularZeroIsLambertAndIorOneReflectsNothingHeadOn) {
 // ---- Clearcoat ---------------------------------------------------------------------------------
 
 shading::Sheen noSheen() { return shading::sheenLayer(glm::vec3(0.0f), 0.0f, 0.0f); }
+shading::Anisotropy noAnisotropy() { return shading::anisotropyLayer(0.0f, glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)); }
 
 struct Coat {
     uint32_t bits;
@@ -167,7 +168,7 @@ glm::vec3 coatedFloat(glm::vec3 N, glm::vec3 V, glm::vec3 L, glm::vec3 base, flo
                       const Coat& coat) {
     const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
         N, V, L, base, metallic, roughness, model, coat.bits, shading::dielectricFresnel(coat.ior, glm::vec3(1.0f), 1.0f),
-        noSheen(), shading::clearcoatLayer(coat.weight, coat.roughness, coat.normal, V));
+        noAnisotropy(), noSheen(), shading::clearcoatLayer(coat.weight, coat.roughness, coat.normal, V));
     return lobes.diffuse + lobes.specular + lobes.sheen + glm::vec3(lobes.clearcoat);
 }
 
@@ -224,7 +225,7 @@ TEST(BrdfLayers, ClearcoatOfWeightZeroIsTheMaterialAndGrazingLetsNothingThrough)
     const glm::vec3 N(0.0f, 0.0f, 1.0f), V = direction(0.6, 0.0), L = direction(0.7, 2.0), base(0.8f, 0.5f, 0.2f);
     const shading::Clearcoat none = shading::clearcoatLayer(0.0f, 0.3f, N, V);
     const shading::LayeredLobes coated = shading::layeredLobesTimesCosine(
-        N, V, L, base, 0.3f, 0.5f, ref::kPbr, CANDELA_LAYER_CLEARCOAT, shading::coreDielectricFresnel(), noSheen(), none);
+        N, V, L, base, 0.3f, 0.5f, ref::kPbr, CANDELA_LAYER_CLEARCOAT, shading::coreDielectricFresnel(), noAnisotropy(), noSheen(), none);
     const shading::BrdfLobes plain = shading::brdfLobesTimesCosine(N, V, L, base, 0.3f, 0.5f, ref::kPbr);
     EXPECT_EQ(coated.diffuse, plain.diffuse);
     EXPECT_EQ(coated.specular, plain.specular);
@@ -319,7 +320,7 @@ TEST(BrdfLayers, SheenFloatMatchesDoubleReference) {
                             const glm::vec3 V = direction(cv, 0.0), L = direction(cl, phi), base(0.5f, 0.4f, 0.3f);
                             const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
                                 N, V, L, base, metallic, 0.5f, model, sc.bits, shading::coreDielectricFresnel(),
-                                shading::sheenLayer(sc.color, sc.roughness, sc.albedo),
+                                noAnisotropy(), shading::sheenLayer(sc.color, sc.roughness, sc.albedo),
                                 shading::clearcoatLayer(1.0f, 0.2f, N, V));
                             const glm::vec3 got = lobes.diffuse + lobes.specular + lobes.sheen + glm::vec3(lobes.clearcoat);
                             const ref::Layers layers{.bits = sc.bits, .clearcoat = 1.0, .clearcoatRoughness = 0.2,
@@ -366,6 +367,71 @@ TEST(BrdfLayers, SheenUnderImageBasedLightKeepsTheWhiteFurnace) {
     std::cout << "sheen IBL furnace: max |x - 1| (brightest channel) " << worst << ", max x - 1 " << highest << "\n";
     EXPECT_LE(worst, 1e-6);
     EXPECT_LE(highest, 1e-6);
+}
+
+// ---- Anisotropy --------------------------------------------------------------------------------
+
+// Strength 0.5 and 1 (the extreme: α_t = 1 at the smallest roughness), the direction along the
+// tangent and turned 30° (so the view plane is neither along nor across it), material roughness
+// 0 (clamped), 0.3 and 1, over the core Fresnel and over the specular layer (IOR 1.33).
+TEST(BrdfLayers, AnisotropyFloatMatchesDoubleReference) {
+    ref::ErrorStats stats{.floor = kFloor};
+    uint64_t bad = 0;
+    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    for (float strength : {0.5f, 1.0f})
+        for (const glm::vec3& T : {glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.8660254f, 0.5f, 0.0f)})
+            for (uint32_t bits : {uint32_t(CANDELA_LAYER_ANISOTROPY), uint32_t(CANDELA_LAYER_ANISOTROPY | CANDELA_LAYER_SPECULAR)})
+                for (uint32_t model : {uint32_t(ref::kPbr), uint32_t(ref::kPbrSchlickGgx)})
+                    for (double cv : kCosines)
+                        for (double cl : kCosines)
+                            for (double phi : {0.0, std::numbers::pi / 2, std::numbers::pi})
+                                for (float roughness : {0.0f, 0.3f, 1.0f})
+                                    for (float metallic : kMetallics)
+                                        for (const glm::vec3& base : kBaseColors) {
+                                            const glm::vec3 V = direction(cv, 0.0), L = direction(cl, phi);
+                                            const float ior = (bits & CANDELA_LAYER_SPECULAR) ? 1.33f : 1.5f;
+                                            const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
+                                                N, V, L, base, metallic, roughness, model, bits,
+                                                shading::dielectricFresnel(ior, glm::vec3(1.0f), 1.0f),
+                                                shading::anisotropyLayer(strength, T, glm::cross(N, T)), noSheen(),
+                                                shading::clearcoatLayer(0.0f, 0.0f, N, V));
+                                            const glm::vec3 got = lobes.diffuse + lobes.specular;
+                                            const ref::Layers layers{.bits = bits, .ior = ior, .anisotropy = strength,
+                                                                     .anisotropyDirection = glm::dvec3(T)};
+                                            const glm::dvec3 expected = ref::brdfTimesCosineLayered(
+                                                glm::dvec3(N), glm::dvec3(V), glm::dvec3(L), glm::dvec3(base), metallic,
+                                                roughness, model, layers);
+                                            for (int c = 0; c < 3; ++c) {
+                                                bad += std::isfinite(got[c]) && got[c] >= 0.0f ? 0 : 1;
+                                                stats.add(got[c], expected[c], [&] {
+                                                    std::ostringstream s;
+                                                    s.precision(9);
+                                                    s << "strength " << strength << " T=(" << T.x << "," << T.y << ") bits "
+                                                      << bits << " V=(" << V.x << "," << V.z << ") L=(" << L.x << ","
+                                                      << L.y << "," << L.z << ") roughness " << roughness << " metallic "
+                                                      << metallic << " channel " << c << ": float " << got[c]
+                                                      << ", double " << expected[c];
+                                                    return s.str();
+                                                });
+                                            }
+                                        }
+    std::cout << "anisotropy: " << stats.compared << " values, max relative error " << stats.maxRelative
+              << ", max absolute error below the floor " << stats.maxAbsolute << "\n  worst: " << stats.worstRelative << "\n";
+    EXPECT_EQ(bad, 0u) << "NaN, Inf or negative values";
+    EXPECT_LE(stats.maxRelative, kTolerance) << stats.worstRelative;
+    EXPECT_LE(stats.maxAbsolute, kAbsoluteTolerance) << stats.worstAbsolute;
+}
+
+TEST(BrdfLayers, AnisotropyOfStrengthZeroIsTheIsotropicLobe) {
+    const glm::vec3 N(0.0f, 0.0f, 1.0f), V = direction(0.6, 0.0), L = direction(0.7, 2.0), base(0.8f, 0.5f, 0.2f);
+    const shading::BrdfLobes iso = shading::brdfLobesTimesCosine(N, V, L, base, 0.3f, 0.4f, ref::kPbr);
+    const shading::BrdfLobes aniso = shading::brdfLobesTimesCosineAnisotropic(
+        N, V, L, base, 0.3f, 0.4f, false, shading::coreDielectricFresnel(),
+        shading::anisotropyLayer(0.0f, glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)));
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(aniso.specular[c], iso.specular[c], 1e-6 * iso.specular[c]) << c;
+        EXPECT_NEAR(aniso.diffuse[c], iso.diffuse[c], 1e-6 * iso.diffuse[c]) << c;
+    }
 }
 
 }  // namespace

@@ -129,7 +129,7 @@ inline glm::dvec3 brdfTimesCosineDielectric(const glm::dvec3& N, const glm::dvec
 }
 
 // Layer bits, numbered like CANDELA_LAYER_* in shaders/shared/scene_data.h.
-enum LayerBit : uint32_t { kLayerSpecular = 1, kLayerClearcoat = 2, kLayerSheen = 8 };
+enum LayerBit : uint32_t { kLayerSpecular = 1, kLayerClearcoat = 2, kLayerSheen = 8, kLayerAnisotropy = 16 };
 
 // KHR_materials_sheen's lobe f · N·L in the specification's form: the Charlie distribution
 // D = (2 + 1/α) sin(θ_h)^(1/α) / 2π with α = roughness² (roughness clamped like the GGX one) and the
@@ -163,7 +163,43 @@ struct Layers {
     glm::dvec3 sheenColor{0.0};
     double sheenRoughness = 0.0;
     double sheenAlbedo = 0.0;  // E(N·V), given
+    double anisotropy = 0.0;                    // strength
+    glm::dvec3 anisotropyDirection{1.0, 0.0, 0.0};  // T, unit, ⟂ N
 };
+
+// KHR_materials_anisotropy's material in the specification's form: the GGX lobe with
+// α_t = α + (1 − α) · strength² along T and α_b = α across (B = N × T),
+// D = 1 / (π α_t α_b ((T·H/α_t)² + (B·H/α_b)² + (N·H)²)²) and the height-correlated anisotropic
+// Smith visibility; Fresnel and diffuse as brdfTimesCosine, or with kLayerSpecular as
+// brdfTimesCosineDielectric. Both Cook-Torrance models use these D and Vis.
+inline glm::dvec3 brdfTimesCosineAnisotropic(const glm::dvec3& N, const glm::dvec3& V, const glm::dvec3& L,
+                                             const glm::dvec3& baseColor, double metallic, double perceptualRoughness,
+                                             const Layers& layers) {
+    const auto [NoL, NoV, NoH, VoH, hasHalfVector] = angles(N, V, L);
+    if (NoL <= 0.0) return glm::dvec3(0.0);
+    const glm::dvec3 H = hasHalfVector ? glm::normalize(V + L) : N;
+    const glm::dvec3 T = glm::normalize(layers.anisotropyDirection), B = glm::cross(N, T);
+    const double r = clampRoughness(perceptualRoughness);
+    const double ab = r * r, at = ab + (1.0 - ab) * layers.anisotropy * layers.anisotropy;
+    const double q = std::pow(glm::dot(T, H) / at, 2.0) + std::pow(glm::dot(B, H) / ab, 2.0) + NoH * NoH;
+    const double D = 1.0 / (kPi * at * ab * q * q);
+    const auto lambda = [&](const glm::dvec3& X, double NoX) {
+        return std::sqrt(at * at * std::pow(glm::dot(T, X), 2.0) + ab * ab * std::pow(glm::dot(B, X), 2.0) + NoX * NoX);
+    };
+    const double Vis = 0.5 / (NoL * lambda(V, NoV) + NoV * lambda(L, NoL));
+    const double specularBrdf = hasHalfVector ? D * Vis : 0.0;
+    const double w = std::pow(1.0 - VoH, 5.0);
+    const glm::dvec3 metal = fresnelSchlick(VoH, baseColor);
+    if (layers.bits & kLayerSpecular) {
+        const double rr = (layers.ior - 1.0) / (layers.ior + 1.0);
+        const glm::dvec3 f0 = glm::min(rr * rr * layers.specularColor, glm::dvec3(1.0)) * layers.specular;
+        const glm::dvec3 Fd = f0 + (glm::dvec3(layers.specular) - f0) * w;
+        const double maxF = std::max({Fd.x, Fd.y, Fd.z});
+        return ((1.0 - metallic) * (Fd * specularBrdf + (1.0 - maxF) * baseColor / kPi) + metallic * metal * specularBrdf) * NoL;
+    }
+    const glm::dvec3 F = fresnelSchlick(VoH, glm::dvec3(0.04) * (1.0 - metallic) + baseColor * metallic);
+    return (F * specularBrdf + (glm::dvec3(1.0) - F) * (1.0 - metallic) * baseColor / kPi) * NoL;
+}
 
 // The layered material in the specifications' form: the material (brdfTimesCosine, or with
 // kLayerSpecular brdfTimesCosineDielectric); with kLayerSheen, KHR_materials_sheen's albedo scaling
@@ -176,7 +212,8 @@ inline glm::dvec3 brdfTimesCosineLayered(const glm::dvec3& N, const glm::dvec3& 
                                          const glm::dvec3& baseColor, double metallic, double perceptualRoughness,
                                          uint32_t model, const Layers& layers) {
     glm::dvec3 material =
-        (layers.bits & kLayerSpecular)
+        (layers.bits & kLayerAnisotropy) ? brdfTimesCosineAnisotropic(N, V, L, baseColor, metallic, perceptualRoughness, layers)
+        : (layers.bits & kLayerSpecular)
             ? brdfTimesCosineDielectric(N, V, L, baseColor, metallic, perceptualRoughness, model, layers.ior,
                                         layers.specular, layers.specularColor)
             : brdfTimesCosine(N, V, L, baseColor, metallic, perceptualRoughness, model);

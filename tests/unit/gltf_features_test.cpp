@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace candela::scene::test {
 namespace {
@@ -418,6 +419,35 @@ TEST(GltfFeatures, SheenExtension) {
     EXPECT_TRUE(hasWarning(scene, "sheenColorFactor 1.5 is outside [0, 1] (using 1)"));
     EXPECT_TRUE(hasWarning(scene, "sheenRoughnessFactor 2 is outside [0, 1] (using 1)"));
     EXPECT_EQ(scene.warnings.size(), 2u);
+}
+
+TEST(GltfFeatures, AnisotropyExtension) {
+    // Strength (clamped), rotation (any angle, kept modulo 2π), the texture (linear), the default
+    // (strength 0: no layer), and the tangent frame it needs though there is no normal map.
+    TempDir dir;
+    GltfBuilder b = texturedTriangle("", smallPng());
+    b.doc["extensionsUsed"] = {"KHR_materials_anisotropy"};
+    b.doc["materials"] = Json::array({
+        {{"extensions", {{"KHR_materials_anisotropy",
+                          {{"anisotropyStrength", 0.6}, {"anisotropyRotation", 1.0}, {"anisotropyTexture", {{"index", 0}}}}}}}},
+        {{"extensions", {{"KHR_materials_anisotropy", {{"anisotropyRotation", 0.5}}}}}},
+        {{"extensions", {{"KHR_materials_anisotropy", {{"anisotropyStrength", 4}, {"anisotropyRotation", 7.0}}}}}}});
+    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    ASSERT_EQ(scene.materials.size(), 3u);
+    const Material& m = scene.materials[0];
+    EXPECT_FLOAT_EQ(m.anisotropyStrength, 0.6f);
+    EXPECT_FLOAT_EQ(m.anisotropyRotation, 1.0f);
+    ASSERT_TRUE(m.anisotropy.present());
+    EXPECT_FALSE(scene.images.at(size_t(m.anisotropy.image)).srgb);
+    EXPECT_EQ(m.layers(), uint32_t(kLayerAnisotropy));
+    EXPECT_EQ(scene.materials[1].layers(), 0u);
+    EXPECT_FLOAT_EQ(scene.materials[2].anisotropyStrength, 1.0f);
+    EXPECT_NEAR(scene.materials[2].anisotropyRotation, 7.0 - 2.0 * std::numbers::pi, 1e-6);
+    EXPECT_TRUE(hasWarning(scene, "anisotropyStrength 4 is outside [0, 1] (using 1)"));
+    EXPECT_EQ(scene.warnings.size(), 1u);
+    // The tangent frame the direction lives in: generated (MikkTSpace) though there is no normal map.
+    ASSERT_TRUE(m.tangentSpaceMap().has_value());
+    EXPECT_TRUE(scene.materials[1].tangentSpaceMap() == std::nullopt);
 }
 
 TEST(GltfFeatures, SpecularGlossinessIsConvertedToTheSpecularLayer) {
