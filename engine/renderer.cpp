@@ -538,6 +538,11 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
         frame.notes.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
     for (const std::string& line : mForward.explanation()) frame.notes.push_back(line);
     for (const std::string& line : mIbl->explanation()) frame.notes.push_back(line);
+    if (frame.sheenLut)
+        frame.notes.emplace_back(mSheenLut->computed() ? "sheen LUT: imported (computed by an earlier frame)"
+                                                       : "sheen LUT: computed by this frame's ibl_sheen_lut pass (once per run)");
+    else
+        frame.notes.emplace_back("left out: sheen LUT (no material has a sheen)");
     if (frame.debugView != passes::DebugView::None)
         frame.notes.push_back(std::string("debug view: ") + passes::debugViewName(frame.debugView) +
                               (passes::debugViewIsLight(frame.debugView) ? " (tonemapped as the image is)"

@@ -7,6 +7,9 @@
 #
 #   tools/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]      defaults: 60 s; gltf hdr exr
 #   FUZZ_RUNS=N tools/fuzz.sh 0 gltf                     run N executions instead of a time
+#   FUZZ_STEP=prepare tools/fuzz.sh                      only build and write the seeds
+#   FUZZ_STEP=run tools/fuzz.sh 30 hdr                   only run (after a prepare): two such runs
+#                                                        may go in parallel, one per core
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
@@ -14,13 +17,16 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(gltf hdr exr)
 
-cmake --preset fuzz >/dev/null
-cmake --build --preset fuzz -j"$(nproc)"
 build=build/fuzz
 bin=$build/tests/fuzz
-rm -rf "$build/seeds"
-"$bin/make_fuzz_seeds" "$build/seeds"
-mkdir -p "$build/artifacts"
+if [ "${FUZZ_STEP:-all}" != run ]; then
+  cmake --preset fuzz >/dev/null
+  cmake --build --preset fuzz -j"$(nproc)"
+  rm -rf "$build/seeds"
+  "$bin/make_fuzz_seeds" "$build/seeds"
+  mkdir -p "$build/artifacts"
+fi
+[ "${FUZZ_STEP:-all}" = prepare ] && exit 0
 
 for target in "${targets[@]}"; do
   work="$build/corpus/$target"  # grows across local runs; new inputs land here

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <set>
 
@@ -217,7 +218,7 @@ void loadAnisotropy(const LoadContext& ctx, const tinygltf::Model& model, ImageT
     const tinygltf::Value& e = it->second;
     if (auto strength = number(e, "anisotropyStrength"))
         out.anisotropyStrength = clampedFactor(ctx, *strength, 0.0, 1.0, what + " anisotropyStrength");
-    if (auto rotation = number(e, "anisotropyRotation")) out.anisotropyRotation = float(std::remainder(*rotation, 2.0 * M_PI));
+    if (auto rotation = number(e, "anisotropyRotation")) out.anisotropyRotation = float(std::remainder(*rotation, 2.0 * std::numbers::pi));
     out.anisotropy = extensionTexture(ctx, model, images, e, "anisotropyTexture", false, what);
 }
 

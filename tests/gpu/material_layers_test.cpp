@@ -45,6 +45,7 @@ TEST_F(GpuTest, ScenesWithoutLayersKeepTheCoreProgramAndVariants) {
     renderer.capture({.width = 64, .height = 36, .scene = &grid});
     EXPECT_EQ(variantLine(renderer.explain()), "forward: 49 draws; variants: pbr ×49");
     EXPECT_TRUE(contains(renderer.explain(), "left out: material layers"));
+    EXPECT_TRUE(contains(renderer.explain(), "left out: sheen LUT"));
     renderer.capture({.width = 64, .height = 36, .scene = &helmet});
     EXPECT_EQ(variantLine(renderer.explain()), "forward: 1 draws; variants: pbr+normal-map ×1");
     EXPECT_TRUE(contains(renderer.explain(), "left out: material layers"));
@@ -191,6 +192,7 @@ TEST_F(GpuTest, SheenKeepsTheWhiteFurnace) {
         ASSERT_EQ(frameProblem(frame), "");
         EXPECT_TRUE(contains(renderer.explain(), "pays for layers: sheen"));
         EXPECT_TRUE(contains(renderer.explain(), "ibl: sheen cube"));
+        EXPECT_TRUE(contains(renderer.explain(), "sheen LUT: "));
         const scene::ViewSetup view = Renderer::resolveView(scene, settings.camera, 320.0f / 180.0f);
         const std::vector<bool> interior = interiorMask(frame, 2);
         double worst = 0.0, highest = -1.0;
