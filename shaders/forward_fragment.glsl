@@ -145,7 +145,6 @@ Clearcoat gCoat;
 vec3 gCoatLight = vec3(0.0f);
 Sheen gSheen;
 Anisotropy gAnisotropy;
-float gSheenAlbedo = 0.0f;  // E(N·V) of the sheen
 vec3 gSheenLight = vec3(0.0f);
 
 // The layers this variant evaluates: the material's, none under Blinn-Phong (kept for comparison
@@ -199,15 +198,15 @@ Anisotropy layerAnisotropy(MaterialLayerData layer, vec3 n) {
     return anisotropyLayer(strength, along, cross(n, along));
 }
 
-// The sheen on shading normal `n`, and its albedo E(N·V) from the LUT into gSheenAlbedo.
+// The sheen on shading normal `n`, with its albedo E(N·V) from the LUT.
 Sheen layerSheen(MaterialLayerData layer, vec3 n, vec3 v) {
     if (!hasLayer(CANDELA_LAYER_SHEEN)) return sheenLayer(vec3(0.0f), 0.0f, 0.0f);
     vec3 color = layer.sheenColor * texture(sheenColorTexture, layerUv(CANDELA_LAYER_TEX_SHEEN_COLOR)).rgb;
     float roughness =
         clamp(layer.sheenRoughness * texture(sheenRoughnessTexture, layerUv(CANDELA_LAYER_TEX_SHEEN_ROUGHNESS)).a, 0.0f, 1.0f);
     float NoV = clamp(dot(n, v), CANDELA_MIN_NOV, 1.0f);
-    gSheenAlbedo = textureLod(sheenLut, brdfLutUv(NoV, roughness, float(textureSize(sheenLut, 0).x)), 0.0f).r;
-    return sheenLayer(color, roughness, gSheenAlbedo);
+    float albedo = textureLod(sheenLut, brdfLutUv(NoV, roughness, float(textureSize(sheenLut, 0).x)), 0.0f).r;
+    return sheenLayer(color, roughness, albedo);
 }
 #endif
 
@@ -290,7 +289,7 @@ BrdfLobes imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float 
         light.specular *= gSheen.baseWeight;
         vec3 r = iblLookupDirection(reflect(-v, n), push.ibl.rotation);
         vec3 prefilteredSheen = textureLod(sheenCube, r, gSheen.roughness * push.ibl.maxLod).rgb;
-        gSheenLight += push.ibl.intensity * iblSheen(gSheen, prefilteredSheen, gSheenAlbedo, ao) *
+        gSheenLight += push.ibl.intensity * iblSheen(gSheen, prefilteredSheen, ao) *
                        (hasLayer(CANDELA_LAYER_CLEARCOAT) ? gCoat.baseWeight : 1.0f);
     }
     if (hasLayer(CANDELA_LAYER_CLEARCOAT)) {

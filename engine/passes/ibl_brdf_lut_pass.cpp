@@ -9,23 +9,27 @@ using namespace graph;
 
 IblBrdfLutPass::IblBrdfLutPass(vk::Context& context) : mPipeline(vk::Pipeline::compute(context, "ibl_brdf_lut.comp")) {}
 
-TextureId IblBrdfLutPass::add(RenderGraph& graph, TextureId lut, uint32_t samples) const {
+TextureId addLutPass(RenderGraph& graph, const char* name, const vk::Pipeline& pipeline, TextureId lut, uint32_t samples) {
     struct Data {
         TextureId lut;
     };
     const Data& data = graph.addPass<Data>(
-        "ibl_brdf_lut", PassType::Compute,
+        name, PassType::Compute,
         [&](PassBuilder& builder, Data& d) { d.lut = builder.write(lut, Usage::StorageWrite, WriteMode::Discard); },
-        [this, samples](const Data& d, PassContext& ctx) {
+        [&pipeline, samples](const Data& d, PassContext& ctx) {
             const uint32_t size = ctx.desc(d.lut).width;
             const shading::IblLutPush push{.size = size, .samples = samples};
-            const VkDescriptorSet set = vk::DescriptorWriter(mPipeline.program(), 0)
+            const VkDescriptorSet set = vk::DescriptorWriter(pipeline.program(), 0)
                                             .image("lut", ctx.view(d.lut), ctx.layout(d.lut))
                                             .commit(ctx.context(), ctx.descriptors());
             const uint32_t groups = groupCount(size, CANDELA_IBL_GROUP);
-            dispatchCompute(ctx, mPipeline, set, &push, sizeof(push), groups, groups, 1);
+            dispatchCompute(ctx, pipeline, set, &push, sizeof(push), groups, groups, 1);
         });
     return data.lut;
+}
+
+TextureId IblBrdfLutPass::add(RenderGraph& graph, TextureId lut, uint32_t samples) const {
+    return addLutPass(graph, "ibl_brdf_lut", mPipeline, lut, samples);
 }
 
 }  // namespace candela::passes

@@ -22,4 +22,11 @@ private:
     vk::Pipeline mPipeline;
 };
 
+// Adds compute pass `name` running `pipeline` (set 0: the storage image "lut"; push constants
+// shading::IblLutPush {size, samples}) over every texel of the square `lut`, whose contents it
+// discards; returns the new version. The LUT passes (BRDF, sheen) share it. `pipeline` must outlive
+// the graph's execution.
+graph::TextureId addLutPass(graph::RenderGraph& graph, const char* name, const vk::Pipeline& pipeline, graph::TextureId lut,
+                            uint32_t samples);
+
 }  // namespace candela::passes

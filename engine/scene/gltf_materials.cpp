@@ -86,6 +86,12 @@ TextureRef textureRef(const LoadContext& ctx, const tinygltf::Model& model, Imag
     return ref;
 }
 
+// The object of extension `name` in `extensions`, or null.
+const tinygltf::Value* findExtension(const tinygltf::ExtensionMap& extensions, const char* name) {
+    const auto it = extensions.find(name);
+    return it == extensions.end() ? nullptr : &it->second;
+}
+
 // Every (glTF image, srgb) pair the materials' textures name, skipping indices out of range.
 std::set<std::pair<int, bool>> imageUses(const tinygltf::Model& model) {
     std::set<std::pair<int, bool>> uses;
@@ -100,10 +106,8 @@ std::set<std::pair<int, bool>> imageUses(const tinygltf::Model& model) {
         add(m.occlusionTexture.index, false);
         // The texture index of extension `name`'s textureInfo `key` (-1 without one).
         const auto index = [&](const char* name, const char* key) {
-            const auto it = m.extensions.find(name);
-            if (it == m.extensions.end()) return -1;
-            const tinygltf::Value& e = it->second;
-            return e.Has(key) && e.Get(key).Has("index") ? e.Get(key).Get("index").GetNumberAsInt() : -1;
+            const tinygltf::Value* e = findExtension(m.extensions, name);
+            return e && e->Has(key) && e->Get(key).Has("index") ? e->Get(key).Get("index").GetNumberAsInt() : -1;
         };
         add(index("KHR_materials_specular", "specularTexture"), false);
         add(index("KHR_materials_specular", "specularColorTexture"), true);
@@ -151,6 +155,15 @@ float clampedFactor(const LoadContext& ctx, double value, double lo, double hi, 
     return float(clamped);
 }
 
+// The array factor `key` of extension object `e`, when present, into `out`, each component
+// clamped to [lo, hi] with a warning as clampedFactor does (the schema check vetted its length).
+template <int N>
+void clampedFactors(const LoadContext& ctx, const tinygltf::Value& e, const char* key, double lo, double hi,
+                    const std::string& what, glm::vec<N, float>& out) {
+    if (!e.Has(key)) return;
+    for (int i = 0; i < N; ++i) out[i] = clampedFactor(ctx, e.Get(key).Get(i).GetNumberAsDouble(), lo, hi, what + " " + key);
+}
+
 // KHR_materials_ior and KHR_materials_specular into `out`.
 void loadSpecular(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
                   const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
@@ -161,17 +174,12 @@ void loadSpecular(const LoadContext& ctx, const tinygltf::Model& model, ImageTab
             else out.ior = clampedFactor(ctx, *ior, 1.0, INFINITY, what + " ior");
         }
     }
-    const auto it = extensions.find("KHR_materials_specular");
-    if (it == extensions.end()) return;
-    const tinygltf::Value& e = it->second;
+    const tinygltf::Value* found = findExtension(extensions, "KHR_materials_specular");
+    if (!found) return;
+    const tinygltf::Value& e = *found;
     if (auto specular = number(e, "specularFactor"))
         out.specularFactor = clampedFactor(ctx, *specular, 0.0, 1.0, what + " specularFactor");
-    if (e.Has("specularColorFactor")) {
-        const tinygltf::Value& c = e.Get("specularColorFactor");
-        for (int i = 0; i < 3; ++i)
-            out.specularColorFactor[i] =
-                clampedFactor(ctx, c.Get(i).GetNumberAsDouble(), 0.0, INFINITY, what + " specularColorFactor");
-    }
+    clampedFactors(ctx, e, "specularColorFactor", 0.0, INFINITY, what, out.specularColorFactor);
     out.specular = extensionTexture(ctx, model, images, e, "specularTexture", false, what);
     out.specularColor = extensionTexture(ctx, model, images, e, "specularColorTexture", true, what);
 }
@@ -179,9 +187,9 @@ void loadSpecular(const LoadContext& ctx, const tinygltf::Model& model, ImageTab
 // KHR_materials_clearcoat into `out`.
 void loadClearcoat(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
                    const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
-    const auto it = extensions.find("KHR_materials_clearcoat");
-    if (it == extensions.end()) return;
-    const tinygltf::Value& e = it->second;
+    const tinygltf::Value* found = findExtension(extensions, "KHR_materials_clearcoat");
+    if (!found) return;
+    const tinygltf::Value& e = *found;
     if (auto factor = number(e, "clearcoatFactor"))
         out.clearcoatFactor = clampedFactor(ctx, *factor, 0.0, 1.0, what + " clearcoatFactor");
     if (auto roughness = number(e, "clearcoatRoughnessFactor"))
@@ -197,13 +205,10 @@ void loadClearcoat(const LoadContext& ctx, const tinygltf::Model& model, ImageTa
 // KHR_materials_sheen into `out`.
 void loadSheen(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
                const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
-    const auto it = extensions.find("KHR_materials_sheen");
-    if (it == extensions.end()) return;
-    const tinygltf::Value& e = it->second;
-    if (e.Has("sheenColorFactor"))
-        for (int i = 0; i < 3; ++i)
-            out.sheenColorFactor[i] =
-                clampedFactor(ctx, e.Get("sheenColorFactor").Get(i).GetNumberAsDouble(), 0.0, 1.0, what + " sheenColorFactor");
+    const tinygltf::Value* found = findExtension(extensions, "KHR_materials_sheen");
+    if (!found) return;
+    const tinygltf::Value& e = *found;
+    clampedFactors(ctx, e, "sheenColorFactor", 0.0, 1.0, what, out.sheenColorFactor);
     if (auto roughness = number(e, "sheenRoughnessFactor"))
         out.sheenRoughnessFactor = clampedFactor(ctx, *roughness, 0.0, 1.0, what + " sheenRoughnessFactor");
     out.sheenColor = extensionTexture(ctx, model, images, e, "sheenColorTexture", true, what);
@@ -213,9 +218,9 @@ void loadSheen(const LoadContext& ctx, const tinygltf::Model& model, ImageTable&
 // KHR_materials_anisotropy into `out`.
 void loadAnisotropy(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
                     const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
-    const auto it = extensions.find("KHR_materials_anisotropy");
-    if (it == extensions.end()) return;
-    const tinygltf::Value& e = it->second;
+    const tinygltf::Value* found = findExtension(extensions, "KHR_materials_anisotropy");
+    if (!found) return;
+    const tinygltf::Value& e = *found;
     if (auto strength = number(e, "anisotropyStrength"))
         out.anisotropyStrength = clampedFactor(ctx, *strength, 0.0, 1.0, what + " anisotropyStrength");
     if (auto rotation = number(e, "anisotropyRotation")) out.anisotropyRotation = float(std::remainder(*rotation, 2.0 * std::numbers::pi));
@@ -254,18 +259,13 @@ int roughnessFromGlossiness(Scene& scene, int source, float glossiness, std::map
 void loadSpecularGlossiness(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
                             const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what, Scene& scene,
                             std::map<std::pair<int, float>, int>& derived) {
-    const auto it = extensions.find("KHR_materials_pbrSpecularGlossiness");
-    if (it == extensions.end()) return;
-    const tinygltf::Value& e = it->second;
+    const tinygltf::Value* found = findExtension(extensions, "KHR_materials_pbrSpecularGlossiness");
+    if (!found) return;
+    const tinygltf::Value& e = *found;
     out.baseColorFactor = glm::vec4(1.0f);
-    if (e.Has("diffuseFactor"))
-        for (int i = 0; i < 4; ++i)
-            out.baseColorFactor[i] = clampedFactor(ctx, e.Get("diffuseFactor").Get(i).GetNumberAsDouble(), 0.0, 1.0, what + " diffuseFactor");
+    clampedFactors(ctx, e, "diffuseFactor", 0.0, 1.0, what, out.baseColorFactor);
     out.specularColorFactor = glm::vec3(1.0f);
-    if (e.Has("specularFactor"))
-        for (int i = 0; i < 3; ++i)
-            out.specularColorFactor[i] =
-                clampedFactor(ctx, e.Get("specularFactor").Get(i).GetNumberAsDouble(), 0.0, 1.0, what + " specularFactor");
+    clampedFactors(ctx, e, "specularFactor", 0.0, 1.0, what, out.specularColorFactor);
     float glossiness = 1.0f;
     if (auto g = number(e, "glossinessFactor")) glossiness = clampedFactor(ctx, *g, 0.0, 1.0, what + " glossinessFactor");
     out.metallicFactor = 0.0f;

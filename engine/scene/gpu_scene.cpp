@@ -63,27 +63,27 @@ MaterialData materialData(const Material& m) {
     return out;
 }
 
+// The material's layer textures in slot order (CANDELA_LAYER_TEX_*).
+std::array<const TextureRef*, CANDELA_LAYER_TEX_COUNT> layerTextures(const Material& m) {
+    return {&m.specular,       &m.specularColor, &m.clearcoat,      &m.clearcoatRoughness,
+            &m.clearcoatNormal, &m.sheenColor,    &m.sheenRoughness, &m.anisotropy};
+}
+
 MaterialLayerData materialLayerData(const Material& m) {
     MaterialLayerData out{};
     out.specularColor = m.specularColorFactor;
     out.specular = m.specularFactor;
     out.ior = m.ior;
-    out.uv[CANDELA_LAYER_TEX_SPECULAR] = uvTransform(m.specular);
-    out.uv[CANDELA_LAYER_TEX_SPECULAR_COLOR] = uvTransform(m.specularColor);
     out.clearcoat = m.clearcoatFactor;
     out.clearcoatRoughness = m.clearcoatRoughnessFactor;
     out.clearcoatNormalScale = m.clearcoatNormalScale;
-    out.uv[CANDELA_LAYER_TEX_CLEARCOAT] = uvTransform(m.clearcoat);
-    out.uv[CANDELA_LAYER_TEX_CLEARCOAT_ROUGHNESS] = uvTransform(m.clearcoatRoughness);
-    out.uv[CANDELA_LAYER_TEX_CLEARCOAT_NORMAL] = uvTransform(m.clearcoatNormal);
     out.sheenColor = m.sheenColorFactor;
     out.sheenRoughness = m.sheenRoughnessFactor;
-    out.uv[CANDELA_LAYER_TEX_SHEEN_COLOR] = uvTransform(m.sheenColor);
-    out.uv[CANDELA_LAYER_TEX_SHEEN_ROUGHNESS] = uvTransform(m.sheenRoughness);
     out.anisotropy = m.anisotropyStrength;
     out.anisotropyRotation = m.anisotropyRotation;
     out.anisotropyTextured = m.anisotropy.present() ? 1.0f : 0.0f;
-    out.uv[CANDELA_LAYER_TEX_ANISOTROPY] = uvTransform(m.anisotropy);
+    const auto textures = layerTextures(m);
+    for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) out.uv[slot] = uvTransform(*textures[slot]);
     return out;
 }
 
@@ -225,10 +225,11 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     for (const Material& m : scene.materials) {
         mBindings.push_back({binding(m.baseColor, mWhite), binding(m.metallicRoughness, mWhite), binding(m.normal, mFlatNormal),
                              binding(m.occlusion, mWhite), binding(m.emissive, mWhite)});
-        mLayerBindings.push_back({binding(m.specular, mWhite), binding(m.specularColor, mWhite), binding(m.clearcoat, mWhite),
-                                  binding(m.clearcoatRoughness, mWhite), binding(m.clearcoatNormal, mFlatNormal),
-                                  binding(m.sheenColor, mWhite), binding(m.sheenRoughness, mWhite),
-                                  binding(m.anisotropy, mWhite)});
+        // Missing layer textures read white (factor × 1), the coat's normal map flat.
+        const auto textures = layerTextures(m);
+        auto& layerBindings = mLayerBindings.emplace_back();
+        for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot)
+            layerBindings[slot] = binding(*textures[slot], slot == CANDELA_LAYER_TEX_CLEARCOAT_NORMAL ? mFlatNormal : mWhite);
     }
 }
 

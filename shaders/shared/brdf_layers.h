@@ -97,6 +97,22 @@ CANDELA_FN vec3 fresnelDielectricMetal(float VoH, vec3 baseColor, float metallic
     return mix(fresnelDielectric(VoH, d), metal, metallic);
 }
 
+// The Appendix B material toward a light with angles `g` (g.NoL > 0), given its specular lobe
+// D · Vis: the dielectric Fresnel `d` and the metal's mixed by metallic on the specular lobe, the
+// diffuse weighted by the dielectric part's 1 − max(F_d).
+CANDELA_FN BrdfLobes dielectricMaterialLobes(BrdfAngles g, float specularBrdf, vec3 baseColor, float metallic,
+                                             DielectricFresnel d) {
+    float w = schlickWeight(g.VoH);
+    vec3 dielectric = d.f0 + (vec3(d.f90) - d.f0) * w;
+    vec3 metal = baseColor + (vec3(1.0f) - baseColor) * w;
+    BrdfLobes lobes;
+    lobes.specular = mix(dielectric, metal, metallic) * (specularBrdf * g.specularWeight) * g.NoL;
+    // 1 − max(F_d), the specification's diffuse weight.
+    float diffuseWeight = minComponent(oneMinusFresnelDielectric(w, d));
+    lobes.diffuse = (1.0f - metallic) * diffuseWeight * baseColor * (1.0f / CANDELA_PI) * g.NoL;
+    return lobes;
+}
+
 // brdfLobesTimesCosine (shared/brdf.h) with the dielectric Fresnel `d` and the Appendix B mix.
 // `model` is CANDELA_SHADING_PBR or CANDELA_SHADING_PBR_SCHLICK_GGX.
 CANDELA_FN BrdfLobes brdfLobesTimesCosineDielectric(vec3 N, vec3 V, vec3 L, vec3 baseColor, float metallic,
@@ -111,14 +127,7 @@ CANDELA_FN BrdfLobes brdfLobesTimesCosineDielectric(vec3 N, vec3 V, vec3 L, vec3
     float D = distributionGgx(g.NoH, g.oneMinusNoH2, a);
     float Vis = model == CANDELA_SHADING_PBR_SCHLICK_GGX ? visibilitySchlickGgx(g.NoV, g.NoL, roughness)
                                                           : visibilitySmithGgxCorrelated(g.NoV, g.NoL, a);
-    float w = schlickWeight(g.VoH);
-    vec3 dielectric = d.f0 + (vec3(d.f90) - d.f0) * w;
-    vec3 metal = baseColor + (vec3(1.0f) - baseColor) * w;
-    lobes.specular = mix(dielectric, metal, metallic) * (D * Vis * g.specularWeight) * g.NoL;
-    // 1 − max(F_d), the specification's diffuse weight.
-    float diffuseWeight = minComponent(oneMinusFresnelDielectric(w, d));
-    lobes.diffuse = (1.0f - metallic) * diffuseWeight * baseColor * (1.0f / CANDELA_PI) * g.NoL;
-    return lobes;
+    return dielectricMaterialLobes(g, D * Vis, baseColor, metallic, d);
 }
 
 // iblShadeLobes (shared/ibl.h) with the dielectric Fresnel `d`: the split sum's directional albedo
@@ -259,22 +268,24 @@ CANDELA_FN float sheenTimesCosine(vec3 N, vec3 V, vec3 L, float perceptualRoughn
 struct Sheen {
     vec3 color;
     float roughness;
-    float baseWeight;
+    float albedo;      // min(E(N·V), 1)
+    float baseWeight;  // 1 − max(colour) · albedo
 };
 
 CANDELA_FN Sheen sheenLayer(vec3 color, float perceptualRoughness, float albedo) {
     Sheen s;
     s.color = color;
     s.roughness = perceptualRoughness;
-    s.baseWeight = 1.0f - max(color.x, max(color.y, color.z)) * min(albedo, 1.0f);
+    s.albedo = min(albedo, 1.0f);
+    s.baseWeight = 1.0f - max(color.x, max(color.y, color.z)) * s.albedo;
     return s;
 }
 
 // The sheen under image-based light: sheenColor · min(E(N·V), 1) · the Charlie-prefiltered
 // environment, darkened by the occlusion. With a white sheen in a uniform environment it reflects
 // exactly what the material beneath loses (white furnace).
-CANDELA_FN vec3 iblSheen(Sheen s, vec3 prefiltered, float albedo, float occlusion) {
-    return s.color * (min(albedo, 1.0f) * occlusion) * prefiltered;
+CANDELA_FN vec3 iblSheen(Sheen s, vec3 prefiltered, float occlusion) {
+    return s.color * (s.albedo * occlusion) * prefiltered;
 }
 
 // ---- Anisotropy ----
@@ -330,21 +341,11 @@ CANDELA_FN BrdfLobes brdfLobesTimesCosineAnisotropic(vec3 N, vec3 V, vec3 L, vec
     float at = mix(ab, 1.0f, an.strength * an.strength);
     float D = distributionGgxAnisotropic(g.NoH, dot(an.t, H), dot(an.b, H), at, ab);
     float Vis = visibilityGgxAnisotropic(g.NoV, g.NoL, dot(an.t, V), dot(an.b, V), dot(an.t, L), dot(an.b, L), at, ab);
-    float w = schlickWeight(g.VoH);
-    vec3 metal = baseColor + (vec3(1.0f) - baseColor) * w;
-    vec3 F;
-    float diffuseWeight;
-    if (specularLayer) {
-        vec3 dielectric = d.f0 + (vec3(d.f90) - d.f0) * w;
-        F = mix(dielectric, metal, metallic);
-        diffuseWeight = (1.0f - metallic) * minComponent(oneMinusFresnelDielectric(w, d));
-        lobes.diffuse = diffuseWeight * baseColor * (1.0f / CANDELA_PI) * g.NoL;
-    } else {
-        vec3 f0 = mix(vec3(0.04f), baseColor, metallic);
-        F = f0 + (vec3(1.0f) - f0) * w;
-        lobes.diffuse = (vec3(1.0f) - F) * (1.0f - metallic) * baseColor * (1.0f / CANDELA_PI) * g.NoL;
-    }
+    if (specularLayer) return dielectricMaterialLobes(g, D * Vis, baseColor, metallic, d);
+    // The core's Fresnel and diffuse weight (shared/brdf.h).
+    vec3 F = fresnelSchlick(g.VoH, mix(vec3(0.04f), baseColor, metallic));
     lobes.specular = F * (D * Vis * g.specularWeight) * g.NoL;
+    lobes.diffuse = (vec3(1.0f) - F) * (1.0f - metallic) * baseColor * (1.0f / CANDELA_PI) * g.NoL;
     return lobes;
 }
 

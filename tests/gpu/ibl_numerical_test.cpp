@@ -132,32 +132,24 @@ TEST_F(IblFurnaceTest, WhiteSpheresInAUniformEnvironmentReflectOneWithMultiscatt
     const std::vector<Sphere> spheres = furnaceSpheres();
     const scene::Scene scene = sphereScene(spheres, 64, 32);
     Renderer renderer(context());
-    RenderSettings settings{.width = 320, .height = 180, .floatOutput = true, .scene = &scene,
-                            .camera = furnaceCamera(), .defaultLights = false, .environment = &env,
-                            .iblQuality = smallQuality()};
-    settings.ibl.skybox = false;
+    const RenderSettings settings = furnaceSettings(scene, env);
     const CapturedFrame frame = renderer.capture(settings);
     ASSERT_EQ(frameProblem(frame), "");
-    const scene::ViewSetup view = Renderer::resolveView(scene, settings.camera, 320.0f / 180.0f);
-    const std::vector<bool> interior = interiorMask(frame, 2);
     std::vector<size_t> count(spheres.size(), 0);
     std::vector<double> worst(spheres.size(), 0.0);
     size_t strays = 0;  // interior pixels whose ray misses every sphere
-    for (uint32_t y = 0; y < frame.height; ++y)
-        for (uint32_t x = 0; x < frame.width; ++x) {
-            if (!interior[size_t(y) * frame.width + x]) continue;
-            const Hit hit = castRay(view, frame.width, frame.height, x, y, spheres);
-            if (hit.sphere < 0) {
-                ++strays;
-                continue;
-            }
-            const glm::vec4 p = pixel(frame, x, y);
-            const double e = std::max({std::abs(p.r - 1.0), std::abs(p.g - 1.0), std::abs(p.b - 1.0)});
-            EXPECT_LE(e, 0.02) << "pixel (" << x << ", " << y << ") = " << p.r << ", " << p.g << ", " << p.b
-                               << " on sphere " << hit.sphere;
-            ++count[size_t(hit.sphere)];
-            worst[size_t(hit.sphere)] = std::max(worst[size_t(hit.sphere)], e);
+    for (const FurnacePixel& fp : furnacePixels(frame, scene, settings, spheres)) {
+        if (fp.sphere < 0) {
+            ++strays;
+            continue;
         }
+        const glm::vec4 p = fp.value;
+        const double e = std::max({std::abs(p.r - 1.0), std::abs(p.g - 1.0), std::abs(p.b - 1.0)});
+        EXPECT_LE(e, 0.02) << "pixel (" << fp.x << ", " << fp.y << ") = " << p.r << ", " << p.g << ", " << p.b
+                           << " on sphere " << fp.sphere;
+        ++count[size_t(fp.sphere)];
+        worst[size_t(fp.sphere)] = std::max(worst[size_t(fp.sphere)], e);
+    }
     EXPECT_EQ(strays, 0u);
     double overall = 0.0;
     for (size_t i = 0; i < spheres.size(); ++i) {

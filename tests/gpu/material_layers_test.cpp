@@ -90,29 +90,20 @@ TEST_F(GpuTest, ClearcoatKeepsTheWhiteFurnace) {
         scene.materials[i].roughnessFactor = 0.5f;
     }
     Renderer renderer(context());
-    RenderSettings settings{.width = 320, .height = 180, .floatOutput = true, .scene = &scene,
-                            .camera = furnaceCamera(), .defaultLights = false, .environment = &env,
-                            .iblQuality = smallQuality()};
-    settings.ibl.skybox = false;
+    const RenderSettings settings = furnaceSettings(scene, env);
     const CapturedFrame frame = renderer.capture(settings);
     ASSERT_EQ(frameProblem(frame), "");
     EXPECT_TRUE(contains(renderer.explain(), "pays for layers: clearcoat"));
-    const scene::ViewSetup view = Renderer::resolveView(scene, settings.camera, 320.0f / 180.0f);
-    const std::vector<bool> interior = interiorMask(frame, 2);
     std::vector<size_t> count(spheres.size(), 0);
     double worst = 0.0, highest = -1.0;
-    for (uint32_t y = 0; y < frame.height; ++y)
-        for (uint32_t x = 0; x < frame.width; ++x) {
-            if (!interior[size_t(y) * frame.width + x]) continue;
-            const Hit hit = castRay(view, frame.width, frame.height, x, y, spheres);
-            ASSERT_GE(hit.sphere, 0) << "interior pixel (" << x << ", " << y << ") misses every sphere";
-            ++count[size_t(hit.sphere)];
-            const glm::vec4 p = pixel(frame, x, y);
-            for (int c = 0; c < 3; ++c) {
-                worst = std::max(worst, std::abs(double(p[c]) - 1.0));
-                highest = std::max(highest, double(p[c]) - 1.0);
-            }
+    for (const FurnacePixel& fp : furnacePixels(frame, scene, settings, spheres)) {
+        ASSERT_GE(fp.sphere, 0) << "interior pixel (" << fp.x << ", " << fp.y << ") misses every sphere";
+        ++count[size_t(fp.sphere)];
+        for (int c = 0; c < 3; ++c) {
+            worst = std::max(worst, std::abs(double(fp.value[c]) - 1.0));
+            highest = std::max(highest, double(fp.value[c]) - 1.0);
         }
+    }
     for (size_t i = 0; i < spheres.size(); ++i) EXPECT_GT(count[i], 1000u) << "sphere " << i;
     measured("clearcoatFurnaceMaxAbsError", worst);
     measured("clearcoatFurnaceMaxAboveOne", highest);
@@ -184,28 +175,20 @@ TEST_F(GpuTest, SheenKeepsTheWhiteFurnace) {
             scene.materials[i].sheenRoughnessFactor = spheres[i].roughness;
             scene.materials[i].roughnessFactor = 0.5f;
         }
-        RenderSettings settings{.width = 320, .height = 180, .floatOutput = true, .scene = &scene,
-                                .camera = furnaceCamera(), .defaultLights = false, .environment = &env,
-                                .iblQuality = smallQuality()};
-        settings.ibl.skybox = false;
+        const RenderSettings settings = furnaceSettings(scene, env);
         const CapturedFrame frame = renderer.capture(settings);
         ASSERT_EQ(frameProblem(frame), "");
         EXPECT_TRUE(contains(renderer.explain(), "pays for layers: sheen"));
         EXPECT_TRUE(contains(renderer.explain(), "ibl: sheen cube"));
         EXPECT_TRUE(contains(renderer.explain(), "sheen LUT: "));
-        const scene::ViewSetup view = Renderer::resolveView(scene, settings.camera, 320.0f / 180.0f);
-        const std::vector<bool> interior = interiorMask(frame, 2);
         double worst = 0.0, highest = -1.0;
         size_t count = 0;
-        for (uint32_t y = 0; y < frame.height; ++y)
-            for (uint32_t x = 0; x < frame.width; ++x) {
-                if (!interior[size_t(y) * frame.width + x] || castRay(view, frame.width, frame.height, x, y, spheres).sphere < 0)
-                    continue;
-                ++count;
-                const glm::vec4 p = pixel(frame, x, y);
-                worst = std::max(worst, std::abs(double(p.r) - 1.0));
-                for (int c = 0; c < 3; ++c) highest = std::max(highest, double(p[c]) - 1.0);
-            }
+        for (const FurnacePixel& fp : furnacePixels(frame, scene, settings, spheres)) {
+            if (fp.sphere < 0) continue;
+            ++count;
+            worst = std::max(worst, std::abs(double(fp.value.r) - 1.0));
+            for (int c = 0; c < 3; ++c) highest = std::max(highest, double(fp.value[c]) - 1.0);
+        }
         const std::string which = color == glm::vec3(1.0f) ? "white" : "coloured";
         EXPECT_GT(count, 10000u);
         measured("sheenFurnaceMaxAbsError." + which, worst);

@@ -176,4 +176,35 @@ inline ibl::IblQuality smallQuality() {
     return q;
 }
 
+// The settings of a furnace frame of `scene` in `env`: 320×180 float output, the furnace camera,
+// no punctual lights, the small IBL quality, no skybox. `scene` and `env` must outlive the settings.
+inline RenderSettings furnaceSettings(const scene::Scene& scene, const scene::Environment& env) {
+    RenderSettings settings{.width = 320, .height = 180, .floatOutput = true, .scene = &scene,
+                            .camera = furnaceCamera(), .defaultLights = false, .environment = &env,
+                            .iblQuality = smallQuality()};
+    settings.ibl.skybox = false;
+    return settings;
+}
+
+// One interior pixel of a furnace frame and the sphere it sees (−1: its ray misses them all).
+struct FurnacePixel {
+    uint32_t x, y;
+    int sphere;
+    glm::vec4 value;
+};
+
+// The interior pixels of `frame` (covered, and no uncovered pixel within 2 px), rendered of
+// `scene` with `settings`, each with the sphere of `spheres` its ray hits.
+inline std::vector<FurnacePixel> furnacePixels(const CapturedFrame& frame, const scene::Scene& scene,
+                                               const RenderSettings& settings, const std::vector<Sphere>& spheres) {
+    const scene::ViewSetup view = Renderer::resolveView(scene, settings.camera, float(frame.width) / float(frame.height));
+    const std::vector<bool> interior = interiorMask(frame, 2);
+    std::vector<FurnacePixel> out;
+    for (uint32_t y = 0; y < frame.height; ++y)
+        for (uint32_t x = 0; x < frame.width; ++x)
+            if (interior[size_t(y) * frame.width + x])
+                out.push_back({x, y, castRay(view, frame.width, frame.height, x, y, spheres).sphere, pixel(frame, x, y)});
+    return out;
+}
+
 }  // namespace candela::test

@@ -74,6 +74,17 @@ void forEachCombination(F&& f) {
                                     f(N, direction(cv, 0.0), direction(cl, phi), base, metallic, roughness, model, layer);
 }
 
+// Prints what `stats` measured for `lobe` and checks it: relative error within `tolerance`,
+// absolute error below the floor within kAbsoluteTolerance, and no NaN, Inf or negative value
+// (`bad` counts them).
+void expectWithinTolerance(const char* lobe, const ref::ErrorStats& stats, uint64_t bad, double tolerance) {
+    std::cout << lobe << ": " << stats.compared << " values, max relative error " << stats.maxRelative
+              << ", max absolute error below the floor " << stats.maxAbsolute << "\n  worst: " << stats.worstRelative << "\n";
+    EXPECT_EQ(bad, 0u) << "NaN, Inf or negative values";
+    EXPECT_LE(stats.maxRelative, tolerance) << stats.worstRelative;
+    EXPECT_LE(stats.maxAbsolute, kAbsoluteTolerance) << stats.worstAbsolute;
+}
+
 TEST(BrdfLayers, FloatMatchesDoubleReference) {
     ref::ErrorStats stats{.floor = kFloor};
     forEachCombination([&](glm::vec3 N, glm::vec3 V, glm::vec3 L, glm::vec3 base, float metallic, float roughness,
@@ -91,10 +102,7 @@ TEST(BrdfLayers, FloatMatchesDoubleReference) {
                 return s.str();
             });
     });
-    std::cout << "specular layer: " << stats.compared << " values, max relative error " << stats.maxRelative
-              << ", max absolute error below the floor " << stats.maxAbsolute << "\n  worst: " << stats.worstRelative << "\n";
-    EXPECT_LE(stats.maxRelative, kTolerance) << stats.worstRelative;
-    EXPECT_LE(stats.maxAbsolute, kAbsoluteTolerance) << stats.worstAbsolute;
+    expectWithinTolerance("specular layer", stats, 0, kTolerance);  // finiteness: FiniteAndNonNegativeEverywhere
 }
 
 TEST(BrdfLayers, FiniteAndNonNegativeEverywhere) {
@@ -214,11 +222,7 @@ TEST(BrdfLayers, ClearcoatFloatMatchesDoubleReference) {
             });
         }
     });
-    std::cout << "clearcoat: " << stats.compared << " values, max relative error " << stats.maxRelative
-              << ", max absolute error below the floor " << stats.maxAbsolute << "\n  worst: " << stats.worstRelative << "\n";
-    EXPECT_EQ(bad, 0u) << "NaN, Inf or negative values";
-    EXPECT_LE(stats.maxRelative, kTolerance) << stats.worstRelative;
-    EXPECT_LE(stats.maxAbsolute, kAbsoluteTolerance) << stats.worstAbsolute;
+    expectWithinTolerance("clearcoat", stats, bad, kTolerance);
 }
 
 TEST(BrdfLayers, ClearcoatOfWeightZeroIsTheMaterialAndGrazingLetsNothingThrough) {
@@ -340,11 +344,7 @@ TEST(BrdfLayers, SheenFloatMatchesDoubleReference) {
                                 });
                             }
                         }
-    std::cout << "sheen: " << stats.compared << " values, max relative error " << stats.maxRelative
-              << ", max absolute error below the floor " << stats.maxAbsolute << "\n  worst: " << stats.worstRelative << "\n";
-    EXPECT_EQ(bad, 0u) << "NaN, Inf or negative values";
-    EXPECT_LE(stats.maxRelative, 1e-4) << stats.worstRelative;
-    EXPECT_LE(stats.maxAbsolute, kAbsoluteTolerance) << stats.worstAbsolute;
+    expectWithinTolerance("sheen", stats, bad, 1e-4);
 }
 
 // The sheen under image-based light, as the forward pass combines it: a white material that alone
@@ -359,7 +359,7 @@ TEST(BrdfLayers, SheenUnderImageBasedLightKeepsTheWhiteFurnace) {
             const shading::BrdfLobes base = shading::iblShadeLobes(glm::vec3(1.0f), glm::vec3(1.0f), glm::vec2(0.6f, 0.2f),
                                                                     glm::vec3(0.04f), glm::vec3(1.0f), true, 1.0f, 1.0f);
             const glm::vec3 total =
-                (base.diffuse + base.specular) * sheen.baseWeight + shading::iblSheen(sheen, glm::vec3(1.0f), albedo, 1.0f);
+                (base.diffuse + base.specular) * sheen.baseWeight + shading::iblSheen(sheen, glm::vec3(1.0f), 1.0f);
             const int brightest = color.x >= color.y && color.x >= color.z ? 0 : (color.y >= color.z ? 1 : 2);
             worst = std::max(worst, std::abs(double(total[brightest]) - 1.0));
             for (int c = 0; c < 3; ++c) highest = std::max(highest, double(total[c]) - 1.0);
@@ -415,11 +415,7 @@ TEST(BrdfLayers, AnisotropyFloatMatchesDoubleReference) {
                                                 });
                                             }
                                         }
-    std::cout << "anisotropy: " << stats.compared << " values, max relative error " << stats.maxRelative
-              << ", max absolute error below the floor " << stats.maxAbsolute << "\n  worst: " << stats.worstRelative << "\n";
-    EXPECT_EQ(bad, 0u) << "NaN, Inf or negative values";
-    EXPECT_LE(stats.maxRelative, kTolerance) << stats.worstRelative;
-    EXPECT_LE(stats.maxAbsolute, kAbsoluteTolerance) << stats.worstAbsolute;
+    expectWithinTolerance("anisotropy", stats, bad, kTolerance);
 }
 
 TEST(BrdfLayers, AnisotropyOfStrengthZeroIsTheIsotropicLobe) {
