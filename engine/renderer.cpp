@@ -514,6 +514,13 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
                                  {.hdr = forward.hdr, .depth = forward.depth, .specular = ibl->maps.specular, .params = ibl->params},
                                  &mParameters);
     }
+    // Transmissive draws over the opaque image (sky included), which they see through.
+    frame.transmission = mForward.hasTransmissiveDraws();
+    if (frame.transmission) {
+        if (!mTransmissionBackground) mTransmissionBackground = std::make_unique<passes::TransmissionBackgroundPass>(mContext);
+        frame.hdr = mForward.addTransmissive(graph, {.hdr = frame.hdr, .depth = forward.depth},
+                                             mTransmissionBackground->add(graph, frame.hdr));
+    }
     // UNORM target: the tonemap shader encodes sRGB itself, which also lets it dither.
     const TextureId ldr = target ? *target
                                  : graph.createTexture("ldr", {.width = settings.width,
@@ -543,6 +550,13 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
                                                        : "sheen LUT: computed by this frame's ibl_sheen_lut pass (once per run)");
     else
         frame.notes.emplace_back("left out: sheen LUT (no material has a sheen)");
+    if (frame.transmission)
+        frame.notes.emplace_back("transmission: 'transmission_background' copies the opaque image into a mip chain; "
+                                 "'forward_transmission' draws the transmissive and blended draws over it");
+    else
+        frame.notes.emplace_back(frame.debugView != passes::DebugView::None
+                                     ? "left out: transmission background (debug view: transmissive draws show data)"
+                                     : "left out: transmission background (no transmissive material in the frame)");
     if (frame.debugView != passes::DebugView::None)
         frame.notes.push_back(std::string("debug view: ") + passes::debugViewName(frame.debugView) +
                               (passes::debugViewIsLight(frame.debugView) ? " (tonemapped as the image is)"

@@ -20,6 +20,7 @@
 #include "passes/skin_morph_pass.h"
 #include "passes/skybox_pass.h"
 #include "passes/tonemap_pass.h"
+#include "passes/transmission_background_pass.h"
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
 #include "scene/scene_pose.h"
@@ -141,6 +142,7 @@ struct Frame {
     graph::TextureId ldr;  // the 8-bit image: tonemapped scene, or encoded pattern
     bool ibl = false;      // image-based lighting: the maps are imported
     bool sheenLut = false; // the sheen LUT is imported (a material has a sheen)
+    bool transmission = false;  // transmissive draws: transmission_background and forward_transmission
     bool skybox = false;
     passes::DebugView debugView = passes::DebugView::None;
     // The IBL precompute passes added: declared pass indices [precomputeBegin, precomputeEnd).
@@ -285,6 +287,7 @@ private:
     std::unique_ptr<ibl::IblMaps> mIbl;
     std::unique_ptr<ibl::SheenLut> mSheenLut;  // created with the first scene that has a sheen
     std::unique_ptr<passes::SkyboxPass> mSkybox;  // created with the first environment
+    std::unique_ptr<passes::TransmissionBackgroundPass> mTransmissionBackground;  // created with the first transmissive draw
     std::unique_ptr<passes::CalibrationPass> mCalibration;  // created by the first renderCalibration
     const scene::Scene* mUploaded = nullptr;
     bool mUploadedDefaultLights = false;

@@ -5,7 +5,7 @@
 // a = the combination's linear index (y · width + x), so a test can check every value against its
 // double-precision reference and that both sides enumerated the same combination. With kLayers,
 // the Cook-Torrance models evaluate the layers of the push constants (shared/brdf_layers.h: the
-// specular layer, the anisotropy, the sheen, the clearcoat) with the function the forward pass's layered program uses;
+// specular layer, the anisotropy, the transmission, the sheen, the clearcoat) with the function the forward pass's layered program uses;
 // Blinn-Phong stays the core's there too.
 #include "shared/brdf_layers.h"
 #include "shared/brdf_probe.h"
@@ -24,15 +24,21 @@ void main() {
     uvec2 texel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(texel, uvec2(CANDELA_BRDF_PROBE_WIDTH, CANDELA_BRDF_PROBE_HEIGHT)))) return;
     BrdfProbeSample s = brdfProbeSample(texel);
+    if (params.transmission.y > 0.5f) s.L.z = -s.L.z;
     vec3 radiance;
     if (kLayers && s.model != CANDELA_SHADING_BLINN_PHONG) {
-        DielectricFresnel d = dielectricFresnel(params.ior, params.specularColor.rgb, params.specular);
+        // The core Fresnel unless the specular layer is probed (as the forward pass: the transmission
+        // weighs by it too).
+        DielectricFresnel d = (params.layers & CANDELA_LAYER_SPECULAR) != 0u
+                                  ? dielectricFresnel(params.ior, params.specularColor.rgb, params.specular)
+                                  : coreDielectricFresnel();
         Clearcoat coat = clearcoatLayer(params.clearcoat, params.clearcoatRoughness, params.clearcoatNormal.xyz, s.V);
         Sheen sheen = sheenLayer(params.sheenColor.rgb, params.sheenRoughness, params.sheenAlbedo);
         Anisotropy an = anisotropyLayer(params.anisotropy.w, params.anisotropy.xyz, cross(s.N, params.anisotropy.xyz));
-        LayeredLobes lobes = layeredLobesTimesCosine(s.N, s.V, s.L, s.baseColor, s.metallic, s.perceptualRoughness, s.model,
-                                                     params.layers, d, an, sheen, coat);
-        radiance = lobes.diffuse + lobes.specular + lobes.sheen + vec3(lobes.clearcoat);
+        Transmission tr = transmissionLayer(params.transmission.x, s.perceptualRoughness, params.ior);
+        LayeredLobes lobes = layeredLobesTimesCosine(s.N, s.V, s.L, s.L, s.baseColor, s.metallic, s.perceptualRoughness, s.model,
+                                                     params.layers, d, an, tr, sheen, coat);
+        radiance = lobes.diffuse + lobes.specular + lobes.transmission + lobes.sheen + vec3(lobes.clearcoat);
     } else {
         radiance = brdfTimesCosine(s.N, s.V, s.L, s.baseColor, s.metallic, s.perceptualRoughness, s.model);
     }

@@ -59,10 +59,15 @@ layout(set = 1, binding = 10) uniform sampler2D clearcoatNormalTexture;
 layout(set = 1, binding = 11) uniform sampler2D sheenColorTexture;
 layout(set = 1, binding = 12) uniform sampler2D sheenRoughnessTexture;
 layout(set = 1, binding = 13) uniform sampler2D anisotropyTexture;
+layout(set = 1, binding = 14) uniform sampler2D transmissionTexture;
+layout(set = 1, binding = 15) uniform sampler2D thicknessTexture;
 // The layers' maps (set 3, the layered program only; placeholders where the frame has none): the
-// sheen albedo LUT E(N·V, sheen roughness) and the Charlie-prefiltered environment.
+// sheen albedo LUT E(N·V, sheen roughness), the Charlie-prefiltered environment, and what lies
+// behind the transmissive draws (the opaque image, mip m box-filtered 2^m × 2^m; passes/
+// transmission_background_pass.h).
 layout(set = 3, binding = 0) uniform sampler2D sheenLut;
 layout(set = 3, binding = 1) uniform samplerCube sheenCube;
+layout(set = 3, binding = 2) uniform sampler2D transmissionBackground;
 #endif
 // Image-based lighting (always bound; placeholders when the frame has no environment).
 layout(set = 2, binding = 0) uniform samplerCube specularCube;
@@ -145,7 +150,13 @@ Clearcoat gCoat;
 vec3 gCoatLight = vec3(0.0f);
 Sheen gSheen;
 Anisotropy gAnisotropy;
+Transmission gTransmission;
 vec3 gSheenLight = vec3(0.0f);
+vec3 gTransmissionLight = vec3(0.0f);
+// The volume beneath a transmitting surface: the ray refracted through its thickness (world units;
+// zero when thin-walled) and the transmittance along it.
+vec3 gVolumeRay = vec3(0.0f);
+vec3 gVolumeTransmittance = vec3(1.0f);
 
 // The layers this variant evaluates: the material's, none under Blinn-Phong (kept for comparison
 // with the original project, it has no Fresnel to layer).
@@ -198,6 +209,41 @@ Anisotropy layerAnisotropy(MaterialLayerData layer, vec3 n) {
     return anisotropyLayer(strength, along, cross(n, along));
 }
 
+// The transmission: its weight and BTDF roughness (the material's, scaled by the IOR).
+Transmission layerTransmission(MaterialLayerData layer, float roughness) {
+    if (!hasLayer(CANDELA_LAYER_TRANSMISSION)) return transmissionLayer(0.0f, 0.0f, 1.5f);
+    float weight = layer.transmission * texture(transmissionTexture, layerUv(CANDELA_LAYER_TEX_TRANSMISSION)).r;
+    return transmissionLayer(clamp(weight, 0.0f, 1.0f), roughness, layer.ior);
+}
+
+// The volume (KHR_materials_volume) on shading normal `n`: V refracted into it (IOR below 1 taken as
+// 1) across its thickness — thicknessFactor × texture (G) in the mesh's units, scaled by the draw's
+// world transform (the mean of its axes' scales) — sets gVolumeRay and gVolumeTransmittance.
+void layerVolume(MaterialLayerData layer, vec3 n, vec3 v) {
+    if (!hasLayer(CANDELA_LAYER_VOLUME)) return;
+    float thickness = layer.thickness * texture(thicknessTexture, layerUv(CANDELA_LAYER_TEX_THICKNESS)).g;
+    mat4 world = draws[push.counts.y].world;
+    float scale = (length(world[0].xyz) + length(world[1].xyz) + length(world[2].xyz)) * (1.0f / 3.0f);
+    vec3 refracted = refract(-v, n, 1.0f / max(layer.ior, 1.0f));
+    gVolumeRay = normalize(refracted) * (max(thickness, 0.0f) * scale);
+    gVolumeTransmittance = volumeTransmittance(layer.attenuationColor, layer.attenuationDistance, length(gVolumeRay));
+}
+
+// The light from behind a transmitting surface: the background (the opaque image) where the ray
+// leaves the volume (at the surface itself when thin-walled), at the mip of the BTDF's roughness
+// (log2(width) · roughness, as the Khronos sample viewer), attenuated by the volume. Where that exit
+// point is behind the camera, the background straight behind the fragment. alpha: the background's
+// coverage there.
+vec4 transmittedBackground() {
+    vec2 size = vec2(textureSize(transmissionBackground, 0));
+    vec2 uv = gl_FragCoord.xy / size;
+    vec4 clip = push.viewProjection * vec4(inWorldPosition + gVolumeRay, 1.0f);
+    if (clip.w > 1e-6f) uv = clamp(clip.xy / clip.w * 0.5f + 0.5f, vec2(0.0f), vec2(1.0f));
+    float lod = log2(max(size.x, size.y)) * gTransmission.roughness;
+    vec4 behind = textureLod(transmissionBackground, uv, lod);
+    return vec4(behind.rgb * gVolumeTransmittance, behind.a);
+}
+
 // The sheen on shading normal `n`, with its albedo E(N·V) from the LUT.
 Sheen layerSheen(MaterialLayerData layer, vec3 n, vec3 v) {
     if (!hasLayer(CANDELA_LAYER_SHEEN)) return sheenLayer(vec3(0.0f), 0.0f, 0.0f);
@@ -212,14 +258,16 @@ Sheen layerSheen(MaterialLayerData layer, vec3 n, vec3 v) {
 
 // f(V, L) · (N·L) of the fragment's material toward light direction `l`, as diffuse and specular
 // (in the layered program: beneath the sheen and the coat, whose own reflections go to `sheen` and
-// `coat`).
-BrdfLobes surfaceLobes(vec3 n, vec3 v, vec3 l, vec3 baseColor, float metallic, float roughness, out vec3 sheen,
-                       out float coat) {
+// `coat`; the light transmitted from `lt` — `l` seen from where a volume's ray leaves it — to
+// `transmission`).
+BrdfLobes surfaceLobes(vec3 n, vec3 v, vec3 l, vec3 lt, vec3 baseColor, float metallic, float roughness, out vec3 sheen,
+                       out float coat, out vec3 transmission) {
 #ifdef CANDELA_MATERIAL_LAYERS
-    LayeredLobes layered = layeredLobesTimesCosine(n, v, l, baseColor, metallic, roughness, kShadingModel, layerBits(),
-                                                   gDielectric, gAnisotropy, gSheen, gCoat);
+    LayeredLobes layered = layeredLobesTimesCosine(n, v, l, lt, baseColor, metallic, roughness, kShadingModel, layerBits(),
+                                                   gDielectric, gAnisotropy, gTransmission, gSheen, gCoat);
     sheen = layered.sheen;
     coat = layered.clearcoat;
+    transmission = layered.transmission;
     BrdfLobes lobes;
     lobes.diffuse = layered.diffuse;
     lobes.specular = layered.specular;
@@ -227,6 +275,7 @@ BrdfLobes surfaceLobes(vec3 n, vec3 v, vec3 l, vec3 baseColor, float metallic, f
 #else
     sheen = vec3(0.0f);
     coat = 0.0f;
+    transmission = vec3(0.0f);
     return brdfLobesTimesCosine(n, v, l, baseColor, metallic, roughness, kShadingModel);
 #endif
 }
@@ -274,9 +323,11 @@ BrdfLobes imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float 
     vec3 diffuseColor = baseColor * (1.0f - metallic);
     BrdfLobes light;
 #ifdef CANDELA_MATERIAL_LAYERS
-    if (hasLayer(CANDELA_LAYER_SPECULAR))
+    // Transmission takes its share of the Lambert part (the rest of it is the light from behind,
+    // added in main with or without an environment).
+    if (hasLayer(CANDELA_LAYER_SPECULAR) || hasLayer(CANDELA_LAYER_TRANSMISSION))
         light = iblShadeLobesDielectric(prefiltered, irradiance, lut, baseColor, metallic, gDielectric, kMultiscatter, ao,
-                                        specularOcclusion(NoV, ao, roughness));
+                                        specularOcclusion(NoV, ao, roughness), 1.0f - gTransmission.weight);
     else
 #endif
     light = iblShadeLobes(prefiltered, irradiance, lut, f0, diffuseColor, kMultiscatter, ao,
@@ -447,6 +498,8 @@ void main() {
     gCoat = layerClearcoat(layer, facedNormal(), v);
     gSheen = layerSheen(layer, n, v);
     gAnisotropy = layerAnisotropy(layer, n);
+    gTransmission = layerTransmission(layer, roughness);
+    layerVolume(layer, n, v);
 #endif
 
     BrdfLobes lit;
@@ -458,15 +511,25 @@ void main() {
             LightData light = lights[i];
             float attenuation;
             vec3 l = lightDirection(light, attenuation);
+            vec3 lt = l;
+#ifdef CANDELA_MATERIAL_LAYERS
+            // Through a volume, a point or spot light is seen from where the refracted ray leaves it.
+            if (hasLayer(CANDELA_LAYER_VOLUME) && light.directionType.w != float(CANDELA_LIGHT_DIRECTIONAL)) {
+                vec3 toLight = light.positionRange.xyz - (inWorldPosition + gVolumeRay);
+                lt = dot(toLight, toLight) > 0.0f ? normalize(toLight) : l;
+            }
+#endif
             vec3 sheen;
             float coat;
-            BrdfLobes lobes = surfaceLobes(n, v, l, baseColor.rgb, metallic, roughness, sheen, coat);
+            vec3 transmission;
+            BrdfLobes lobes = surfaceLobes(n, v, l, lt, baseColor.rgb, metallic, roughness, sheen, coat, transmission);
             vec3 radiance = (light.color * light.intensity) * attenuation;
             lit.diffuse += lobes.diffuse * radiance;
             lit.specular += lobes.specular * radiance;
 #ifdef CANDELA_MATERIAL_LAYERS
             gSheenLight += sheen * radiance;
             gCoatLight += coat * radiance;
+            gTransmissionLight += transmission * radiance * gVolumeTransmittance;
 #endif
         }
     }
@@ -482,11 +545,27 @@ void main() {
     vec3 emissive = m.emissive.rgb * sampleSlot(emissiveTexture, CANDELA_TEX_EMISSIVE).rgb;
     vec3 coatLight = vec3(0.0f);
     vec3 sheenLight = vec3(0.0f);
+    vec3 transmissionLight = vec3(0.0f);
+    vec3 throughput = vec3(0.0f);  // the fraction of the light behind that comes through
+    float backgroundAlpha = 1.0f;
 #ifdef CANDELA_MATERIAL_LAYERS
     // The emission lies beneath the coat too.
     if (hasLayer(CANDELA_LAYER_CLEARCOAT)) emissive *= gCoat.baseWeight;
     coatLight = gCoatLight;
     sheenLight = gSheenLight;
+    if (hasLayer(CANDELA_LAYER_TRANSMISSION)) {
+        // The light from behind, through the part of the surface the reflections leave: with an
+        // environment the split sum's (A, B) weigh it as they weigh the Lambert part, without one
+        // Karis's analytic fit of them.
+        float NoV = clamp(dot(n, v), CANDELA_MIN_NOV, 1.0f);
+        vec2 lut = kIbl ? splitSumAt(NoV, roughness) : envBrdfApproximation(NoV, roughness);
+        throughput = iblTransmission(gTransmission, vec3(1.0f), lut, baseColor.rgb, metallic, gDielectric, kMultiscatter) *
+                     gVolumeTransmittance * (hasLayer(CANDELA_LAYER_SHEEN) ? gSheen.baseWeight : 1.0f) *
+                     (hasLayer(CANDELA_LAYER_CLEARCOAT) ? gCoat.baseWeight : 1.0f);
+        vec4 behind = transmittedBackground();
+        backgroundAlpha = behind.a;
+        transmissionLight = gTransmissionLight + throughput * behind.rgb;
+    }
 #endif
 
     if (kDebugView != CANDELA_DEBUG_NONE) {
@@ -502,6 +581,7 @@ void main() {
         else if (kDebugView == CANDELA_DEBUG_SPECULAR) value = lit.specular;
         else if (kDebugView == CANDELA_DEBUG_CLEARCOAT) value = coatLight;
         else if (kDebugView == CANDELA_DEBUG_SHEEN) value = sheenLight;
+        else if (kDebugView == CANDELA_DEBUG_TRANSMISSION) value = asData(throughput);
         else if (kDebugView == CANDELA_DEBUG_ANISOTROPY) {
 #ifdef CANDELA_MATERIAL_LAYERS
             // T as n·0.5+0.5, scaled by the strength; black without anisotropy.
@@ -518,8 +598,11 @@ void main() {
         return;
     }
 
-    vec3 color = lit.diffuse + lit.specular + sheenLight + coatLight + reference + emissive;
+    vec3 color = lit.diffuse + lit.specular + sheenLight + coatLight + transmissionLight + reference + emissive;
     // Radiance can exceed half-float range with extreme lights: keep it finite.
     color = min(color, vec3(60000.0f));
-    outColor = vec4(color * alpha, alpha);
+    // Where the background behind a transmitting surface is uncovered (a transparent background),
+    // the part of it that comes through stays uncovered: coverage 1 − mean(throughput) · (1 − its alpha).
+    float coverage = alpha * (1.0f - (throughput.r + throughput.g + throughput.b) * (1.0f / 3.0f) * (1.0f - backgroundAlpha));
+    outColor = vec4(color * alpha, coverage);
 }

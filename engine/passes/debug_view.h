@@ -5,7 +5,8 @@
 // (relative to its peak), G (Smith) and F (Schlick). The diffuse and the specular light alone
 // (punctual + environment). Material layers (docs/materials.md): the light the clearcoat reflects
 // and the coat's normal (black where there is no coat), the light the sheen reflects, the
-// anisotropy direction (scaled by its strength). Names only: no Vulkan (the command-line
+// anisotropy direction (scaled by its strength), the transmission's throughput (the fraction of the
+// light behind the surface that comes through, per channel). Names only: no Vulkan (the command-line
 // parser uses them).
 
 #include <cstdint>
@@ -18,7 +19,7 @@ namespace candela::passes {
 
 enum class DebugView : uint32_t {
     None = 0, BaseColor, GeometricNormal, MappedNormal, Roughness, Metallic, Occlusion, Emissive, D, G, F, Diffuse, Specular,
-    Clearcoat, ClearcoatNormal, Sheen, Anisotropy
+    Clearcoat, ClearcoatNormal, Sheen, Anisotropy, Transmission
 };
 
 inline constexpr std::pair<DebugView, const char*> kDebugViewNames[] = {
@@ -38,7 +39,8 @@ inline constexpr std::pair<DebugView, const char*> kDebugViewNames[] = {
     {DebugView::Clearcoat, "clearcoat"},
     {DebugView::ClearcoatNormal, "clearcoat-normal"},
     {DebugView::Sheen, "sheen"},
-    {DebugView::Anisotropy, "anisotropy-direction"}};
+    {DebugView::Anisotropy, "anisotropy-direction"},
+    {DebugView::Transmission, "transmission"}};
 
 // The names above; nullopt for anything else.
 inline std::optional<DebugView> parseDebugView(std::string_view name) {

@@ -18,11 +18,14 @@ ForwardLayerSet::ForwardLayerSet(vk::Context& context) : mLinear(vk::createSampl
     mPlaceholderCube = vk::Image(context, {.width = 1, .height = 1, .arrayLayers = 6, .format = VK_FORMAT_R16G16B16A16_SFLOAT,
                                           .usage = usage, .cube = true, .name = "layer_placeholder_cube"});
     mPlaceholderLut = vk::Image(context, {.format = IblSheenLutPass::kFormat, .usage = usage, .name = "layer_placeholder_lut"});
+    mPlaceholderBackground =
+        vk::Image(context, {.format = VK_FORMAT_R16G16B16A16_SFLOAT, .usage = usage, .name = "layer_placeholder_background"});
     static const std::array<std::byte, 8> zeros{};
     vk::Uploader upload(context);
     for (uint32_t face = 0; face < 6; ++face)
         upload.image(mPlaceholderCube, std::span(zeros), 0, face, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     upload.image(mPlaceholderLut, std::span(zeros).first(4), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    upload.image(mPlaceholderBackground, std::span(zeros), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     upload.submitAndWait();
 }
 
@@ -31,6 +34,7 @@ LayerMaps ForwardLayerSet::declare(PassBuilder& builder, const LayerMaps* maps) 
     LayerMaps out;
     if (maps->sheenLut.valid()) out.sheenLut = builder.sample(maps->sheenLut);
     if (maps->sheenCube.valid()) out.sheenCube = builder.sample(maps->sheenCube);
+    if (maps->transmission.valid()) out.transmission = builder.sample(maps->transmission);
     return out;
 }
 
@@ -42,6 +46,7 @@ VkDescriptorSet ForwardLayerSet::write(const PassContext& ctx, const vk::Program
     vk::DescriptorWriter writer(program, 3);
     image(writer, "sheenLut", d.sheenLut, mPlaceholderLut);
     image(writer, "sheenCube", d.sheenCube, mPlaceholderCube);
+    image(writer, "transmissionBackground", d.transmission, mPlaceholderBackground);
     return writer.commit(ctx.context(), ctx.descriptors());
 }
 

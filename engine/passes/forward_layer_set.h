@@ -1,6 +1,7 @@
 #pragma once
 // ForwardLayerSet: descriptor set 3 of the forward pass's layered program — the maps the material
-// layers read (the sheen albedo LUT, the Charlie-prefiltered environment), declared in the pass's
+// layers read (the sheen albedo LUT, the Charlie-prefiltered environment, the background behind
+// transmissive draws), declared in the pass's
 // setup from the frame's handles and written in its execute callback from what the pass context
 // resolves them to. What a frame lacks is bound to a 1×1 placeholder this object owns; a variant
 // that reads a map only exists when the frame has it. The core program has no set 3.
@@ -20,6 +21,7 @@ namespace candela::passes {
 struct LayerMaps {
     graph::TextureId sheenLut;   // R32F E(N·V, sheen roughness) (ibl::SheenLut)
     graph::TextureId sheenCube;  // RGBA16F cube, mip m Charlie-prefiltered at sheen roughness m / (levels − 1)
+    graph::TextureId transmission;  // RGBA16F, the opaque image with its box-filtered mips (TransmissionBackgroundPass)
 };
 
 class ForwardLayerSet {
@@ -37,6 +39,7 @@ private:
     vk::Sampler mLinear;  // clamp to edge, trilinear
     vk::Image mPlaceholderCube;
     vk::Image mPlaceholderLut;
+    vk::Image mPlaceholderBackground;  // transparent black
 };
 
 }  // namespace candela::passes

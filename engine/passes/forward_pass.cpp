@@ -5,6 +5,7 @@
 #include "shared/scene_data.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace candela::passes {
 
@@ -12,10 +13,12 @@ using namespace graph;
 
 static_assert(uint32_t(DebugView::Specular) == CANDELA_DEBUG_SPECULAR && uint32_t(DebugView::D) == CANDELA_DEBUG_D);
 static_assert(uint32_t(DebugView::ClearcoatNormal) == CANDELA_DEBUG_CLEARCOAT_NORMAL &&
-              uint32_t(DebugView::Sheen) == CANDELA_DEBUG_SHEEN && uint32_t(DebugView::Anisotropy) == CANDELA_DEBUG_ANISOTROPY);
+              uint32_t(DebugView::Sheen) == CANDELA_DEBUG_SHEEN && uint32_t(DebugView::Anisotropy) == CANDELA_DEBUG_ANISOTROPY &&
+              uint32_t(DebugView::Transmission) == CANDELA_DEBUG_TRANSMISSION);
 static_assert(scene::kLayerSpecular == CANDELA_LAYER_SPECULAR && scene::kLayerClearcoat == CANDELA_LAYER_CLEARCOAT &&
               scene::kLayerClearcoatNormal == CANDELA_LAYER_CLEARCOAT_NORMAL && scene::kLayerSheen == CANDELA_LAYER_SHEEN &&
-              scene::kLayerAnisotropy == CANDELA_LAYER_ANISOTROPY);
+              scene::kLayerAnisotropy == CANDELA_LAYER_ANISOTROPY && scene::kLayerTransmission == CANDELA_LAYER_TRANSMISSION &&
+              scene::kLayerVolume == CANDELA_LAYER_VOLUME);
 
 namespace {
 
@@ -119,7 +122,8 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene) {
                                                                "normalTexture", "occlusionTexture", "emissiveTexture"};
     static constexpr const char* kLayerSlots[CANDELA_LAYER_TEX_COUNT] = {
         "specularTexture",  "specularColorTexture",   "clearcoatTexture",     "clearcoatRoughnessTexture",
-        "clearcoatNormalTexture", "sheenColorTexture", "sheenRoughnessTexture", "anisotropyTexture"};
+        "clearcoatNormalTexture", "sheenColorTexture", "sheenRoughnessTexture", "anisotropyTexture",
+        "transmissionTexture", "thicknessTexture"};
     for (uint32_t material = 0; material < gpuScene.scene().materials.size(); ++material) {
         // A layered material's set follows the layered program's layout: its core textures, then
         // every material's layer parameters and its own layer textures.
@@ -141,13 +145,16 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene) {
     }
 }
 
+// Whether a draw of material `m` is drawn after the opaque image exists (it reads what lies behind).
+static bool transmissive(const scene::Material& m) { return layered(m) && (m.layers() & scene::kLayerTransmission); }
+
 ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
                                      ShadingModel model, const Ibl* ibl, shader::ParameterRegistry* parameters,
                                      DebugView debugView, const PosedDraws* posed, const DeformedVertices* deformed,
                                      const LayerMaps* layerMaps) {
     const scene::Scene& scene = mScene->scene();
     const std::span<const scene::Draw> draws = posed ? posed->draws : std::span<const scene::Draw>(scene.draws);
-    std::vector<DrawItem> opaque, blended;
+    std::vector<DrawItem> opaque, blended, transmitting;
     std::map<std::string, uint32_t> variantCounts;
     uint32_t hidden = 0;
     uint32_t drawData = 0;  // the draw buffer holds one entry per draw, one per instance for instanced ones
@@ -160,18 +167,29 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
         const Variant v = variantOf(draw, model, ibl, debugView);
         ++variantCounts[v.name()];
         const glm::vec3 centre = 0.5f * (draw.bounds.min + draw.bounds.max);
-        (v.blend ? blended : opaque)
+        // Debug views show data, not what lies behind: transmissive draws are then drawn with the rest.
+        const bool behind = transmissive(scene.materials[draw.material]) && debugView == DebugView::None;
+        (behind ? transmitting : v.blend ? blended : opaque)
             .push_back({.pipeline = &pipeline(v), .depth = glm::length(centre - view.eye),
                         .firstIndex = draw.firstIndex, .indexCount = draw.indexCount, .material = draw.material,
                         .flipWinding = draw.flipWinding, .doubleSided = scene.materials[draw.material].doubleSided,
                         .vertexOffset = deformed ? deformed->vertexOffset[i] : kRestVertices,
                         .drawData = drawData, .instances = std::max(draw.instanceCount, 1u), .layered = v.layers != 0});
     }
-    // Opaque grouped by pipeline (fewer binds); blended back to front.
+    // Opaque grouped by pipeline (fewer binds); blended back to front. With transmissive draws, the
+    // blended ones follow them (sorted together back to front) in the pass after the opaque image.
+    const auto backToFront = [](const DrawItem& a, const DrawItem& b) { return a.depth > b.depth; };
     std::stable_sort(opaque.begin(), opaque.end(), [](const DrawItem& a, const DrawItem& b) { return a.pipeline < b.pipeline; });
-    std::stable_sort(blended.begin(), blended.end(), [](const DrawItem& a, const DrawItem& b) { return a.depth > b.depth; });
     std::vector<DrawItem> items = std::move(opaque);
-    items.insert(items.end(), blended.begin(), blended.end());
+    mBehind.clear();
+    if (transmitting.empty()) {
+        std::stable_sort(blended.begin(), blended.end(), backToFront);
+        items.insert(items.end(), blended.begin(), blended.end());
+    } else {
+        mBehind = std::move(transmitting);
+        mBehind.insert(mBehind.end(), blended.begin(), blended.end());
+        std::stable_sort(mBehind.begin(), mBehind.end(), backToFront);
+    }
 
     mExplanation.clear();
     uint32_t instanced = 0;
@@ -199,47 +217,71 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
     if (!anyLayered)
         mExplanation.emplace_back("left out: material layers (no material uses a KHR_materials_* layer; core forward program only)");
 
-    struct Data {
-        TextureId hdr;
-        TextureId depth;
-        IblHandles ibl;  // as declared: resolved in execute
-        LayerMaps layers;   // as declared
-        BufferId draws;     // the posed draw data, when animated
-        BufferId lights;    // the posed light data, when a light is animated
-        BufferId deformed;  // the deformed vertices, when some draw is deformed
-    };
     shading::ForwardPush push{};
     push.viewProjection = view.viewProjection;
     push.eye = glm::vec4(view.eye, 1.0f);
     push.counts = glm::uvec4(mScene->lightCount(), 0, 0, 0);
     if (ibl) push.ibl = ibl->params;
     if (parameters) parameters->apply("forward", "Push", reflection().pushConstants.members, push);
+    mFrame = FrameInputs{.push = push,
+                         .ibl = ibl ? std::optional<IblHandles>(ibl->maps) : std::nullopt,
+                         .layerMaps = layerMaps ? *layerMaps : LayerMaps{},
+                         .posedDraws = posed ? posed->data : BufferId{},
+                         .posedLights = posed ? posed->lights : BufferId{},
+                         .deformed = deformed ? deformed->vertices : BufferId{}};
+    const DrawTargets& targets = addDrawPass(graph, "forward", std::move(items), [&](PassBuilder& builder) {
+        const TextureId hdr = builder.createTexture("hdr", {.width = width, .height = height, .format = kHdrFormat});
+        const TextureId depth = builder.createTexture("depth", {.width = width, .height = height, .format = kDepthFormat});
+        return DrawTargets{builder.writeColor(hdr, VkClearColorValue{{0.0f, 0.0f, 0.0f, 0.0f}}),
+                           builder.writeDepth(depth, 0.0f)};  // reverse-Z: far = 0
+    });
+    return {targets.hdr, targets.depth};
+}
+
+TextureId ForwardPass::addTransmissive(RenderGraph& graph, const Output& opaque, TextureId background) {
+    if (mBehind.empty()) throw std::logic_error("ForwardPass::addTransmissive: the last add() has no transmissive draw");
+    mFrame.layerMaps.transmission = background;
+    const DrawTargets& targets = addDrawPass(graph, "forward_transmission", std::move(mBehind), [&](PassBuilder& builder) {
+        return DrawTargets{builder.writeColor(opaque.hdr, std::nullopt), builder.writeDepth(opaque.depth, std::nullopt)};
+    });
+    mBehind.clear();
+    return targets.hdr;
+}
+
+const ForwardPass::DrawTargets& ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::vector<DrawItem> items,
+                                                        const std::function<DrawTargets(PassBuilder&)>& targets) {
+    struct Data {
+        DrawTargets targets;
+        IblHandles ibl;     // as declared: resolved in execute
+        LayerMaps layers;   // as declared
+        BufferId draws;     // the posed draw data, when animated
+        BufferId lights;    // the posed light data, when a light is animated
+        BufferId deformed;  // the deformed vertices, when some draw is deformed
+    };
+    const FrameInputs& in = mFrame;
     const scene::GpuScene* gpuScene = mScene;
     const std::vector<VkDescriptorSet>* materialSets = &mMaterialSets;
     const ForwardIblSet* iblSets = &mIblSet;
     const vk::Program* program = &pipeline(Variant{}).program();  // every variant shares the set layouts
-    // Set 3, of the layered program only: written when a layered draw is in the frame.
+    // Set 3, of the layered program only: written when a layered draw is in the pass.
     const auto layeredItem = std::find_if(items.begin(), items.end(), [](const DrawItem& item) { return item.layered; });
     const vk::Program* layeredProgram = layeredItem != items.end() ? &layeredItem->pipeline->program() : nullptr;
     const ForwardLayerSet* layerSets = &mLayerSet;
     const Data& data = graph.addPass<Data>(
-        "forward", PassType::Graphics,
+        std::move(name), PassType::Graphics,
         [&](PassBuilder& builder, Data& d) {
-            const TextureId hdr = builder.createTexture("hdr", {.width = width, .height = height, .format = kHdrFormat});
-            const TextureId depth = builder.createTexture("depth", {.width = width, .height = height, .format = kDepthFormat});
-            d.hdr = builder.writeColor(hdr, VkClearColorValue{{0.0f, 0.0f, 0.0f, 0.0f}});
-            d.depth = builder.writeDepth(depth, 0.0f);  // reverse-Z: far = 0
-            d.ibl = ForwardIblSet::declare(builder, ibl ? &ibl->maps : nullptr);
-            if (layeredProgram) d.layers = ForwardLayerSet::declare(builder, layerMaps);
-            if (posed)
-                d.draws = builder.read(posed->data, Usage::StorageRead,
+            d.targets = targets(builder);
+            d.ibl = ForwardIblSet::declare(builder, in.ibl ? &*in.ibl : nullptr);
+            if (layeredProgram) d.layers = ForwardLayerSet::declare(builder, &in.layerMaps);
+            if (in.posedDraws.valid())
+                d.draws = builder.read(in.posedDraws, Usage::StorageRead,
                                        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-            if (posed && posed->lights.valid())
-                d.lights = builder.read(posed->lights, Usage::StorageRead, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-            if (deformed) d.deformed = builder.read(deformed->vertices, Usage::Vertex);
+            if (in.posedLights.valid())
+                d.lights = builder.read(in.posedLights, Usage::StorageRead, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            if (in.deformed.valid()) d.deformed = builder.read(in.deformed, Usage::Vertex);
         },
-        [items, frameConstants = push, gpuScene, staticSceneSet = mSceneSet, materialSets, iblSets, layerSets, program,
-         layeredProgram](const Data& d, PassContext& ctx) {
+        [items = std::move(items), frameConstants = in.push, gpuScene, staticSceneSet = mSceneSet, materialSets, iblSets,
+         layerSets, program, layeredProgram](const Data& d, PassContext& ctx) {
             shading::ForwardPush constants = frameConstants;
             const VkDescriptorSet iblSet = iblSets->write(ctx, *program, d.ibl);
             const VkDescriptorSet layerSet = layeredProgram ? layerSets->write(ctx, *layeredProgram, d.layers) : VK_NULL_HANDLE;
@@ -287,7 +329,7 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
             }
             ctx.endRendering();
         });
-    return {data.hdr, data.depth};
+    return data.targets;
 }
 
 }  // namespace candela::passes

@@ -2,7 +2,11 @@
 // Forward pass (graphics): draws a GpuScene into an HDR target (RGBA16F, alpha = coverage,
 // premultiplied) with a reverse-Z depth buffer — opaque and alpha-masked draws first, then
 // alpha-blended ones sorted back to front. Each draw uses a pipeline variant chosen by
-// specialization constants, so what a draw does not use costs nothing.
+// specialization constants, so what a draw does not use costs nothing. Draws of transmissive
+// materials (KHR_materials_transmission) see what lies behind them: when a frame has one, "forward"
+// draws the opaque draws only and addTransmissive() adds "forward_transmission", which draws the
+// transmissive and the blended draws back to front over the opaque image, reading its copy
+// (TransmissionBackgroundPass).
 
 #include "graph/render_graph.h"
 #include "passes/debug_view.h"
@@ -11,12 +15,15 @@
 #include "passes/ibl_handles.h"
 #include "shader/parameter_registry.h"
 #include "shared/ibl.h"
+#include "shared/scene_data.h"
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
 #include "vk/descriptors.h"
 #include "vk/pipeline_cache.h"
 
 #include <climits>
+#include <functional>
+#include <optional>
 #include <memory>
 #include <span>
 #include <string>
@@ -75,6 +82,13 @@ public:
                ShadingModel model, const Ibl* ibl = nullptr, shader::ParameterRegistry* parameters = nullptr,
                DebugView debugView = DebugView::None, const PosedDraws* posed = nullptr,
                const DeformedVertices* deformed = nullptr, const LayerMaps* layerMaps = nullptr);
+    // Whether the last add() left transmissive draws (and the blended ones) for addTransmissive().
+    bool hasTransmissiveDraws() const { return !mBehind.empty(); }
+    // Adds "forward_transmission": the draws the last add() left, over its `opaque` targets (after
+    // whatever drew into them since, e.g. the skybox), reading `background` (the opaque image with
+    // its mips) behind the transmissive ones. Returns the HDR target's new version. Precondition:
+    // hasTransmissiveDraws().
+    graph::TextureId addTransmissive(graph::RenderGraph& graph, const Output& opaque, graph::TextureId background);
     // The reflection of the forward shaders without layers (every variant shares sets 0 and 2 and
     // the push constants; the layered program adds to set 1).
     const shader::ShaderReflection& reflection() { return pipeline(Variant{}).program().reflection(); }
@@ -118,6 +132,21 @@ private:
         uint32_t instances;    // instanced draws: how many (else 1)
         bool layered;          // drawn by the layered program (binds set 3)
     };
+    // What every forward pass of one frame reads, taken by add().
+    struct FrameInputs {
+        shading::ForwardPush push{};
+        std::optional<IblHandles> ibl;
+        LayerMaps layerMaps;
+        graph::BufferId posedDraws, posedLights, deformed;  // invalid where the frame has none
+    };
+    struct DrawTargets {
+        graph::TextureId hdr;
+        graph::TextureId depth;
+    };
+    // Adds a graphics pass `name` recording `items` into the targets `targets` declares, reading
+    // mFrame's inputs. Returns the targets as written.
+    const DrawTargets& addDrawPass(graph::RenderGraph& graph, std::string name, std::vector<DrawItem> items,
+                                   const std::function<DrawTargets(graph::PassBuilder&)>& targets);
     const vk::Pipeline& pipeline(const Variant& variant);
     static vk::GraphicsPipelineDesc desc(const Variant& variant);
     Variant variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl, DebugView debugView) const;
@@ -131,6 +160,8 @@ private:
     VkDescriptorSet mSceneSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> mMaterialSets;
     std::vector<std::string> mExplanation;
+    FrameInputs mFrame;
+    std::vector<DrawItem> mBehind;  // the draws add() left for addTransmissive()
 };
 
 }  // namespace candela::passes

@@ -116,6 +116,8 @@ std::set<std::pair<int, bool>> imageUses(const tinygltf::Model& model) {
         add(index("KHR_materials_sheen", "sheenColorTexture"), true);
         add(index("KHR_materials_sheen", "sheenRoughnessTexture"), false);
         add(index("KHR_materials_anisotropy", "anisotropyTexture"), false);
+        add(index("KHR_materials_transmission", "transmissionTexture"), false);
+        add(index("KHR_materials_volume", "thicknessTexture"), false);
         add(index("KHR_materials_pbrSpecularGlossiness", "diffuseTexture"), true);
         add(index("KHR_materials_pbrSpecularGlossiness", "specularGlossinessTexture"), true);
     }
@@ -225,6 +227,30 @@ void loadAnisotropy(const LoadContext& ctx, const tinygltf::Model& model, ImageT
         out.anisotropyStrength = clampedFactor(ctx, *strength, 0.0, 1.0, what + " anisotropyStrength");
     if (auto rotation = number(e, "anisotropyRotation")) out.anisotropyRotation = float(std::remainder(*rotation, 2.0 * std::numbers::pi));
     out.anisotropy = extensionTexture(ctx, model, images, e, "anisotropyTexture", false, what);
+}
+
+// KHR_materials_transmission and KHR_materials_volume into `out`.
+void loadTransmission(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
+                      const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+    if (const tinygltf::Value* found = findExtension(extensions, "KHR_materials_transmission")) {
+        const tinygltf::Value& e = *found;
+        if (auto transmission = number(e, "transmissionFactor"))
+            out.transmissionFactor = clampedFactor(ctx, *transmission, 0.0, 1.0, what + " transmissionFactor");
+        out.transmission = extensionTexture(ctx, model, images, e, "transmissionTexture", false, what);
+    }
+    const tinygltf::Value* found = findExtension(extensions, "KHR_materials_volume");
+    if (!found) return;
+    const tinygltf::Value& e = *found;
+    if (auto thickness = number(e, "thicknessFactor"))
+        out.thicknessFactor = clampedFactor(ctx, *thickness, 0.0, INFINITY, what + " thicknessFactor");
+    out.thickness = extensionTexture(ctx, model, images, e, "thicknessTexture", false, what);
+    clampedFactors(ctx, e, "attenuationColor", 0.0, 1.0, what, out.attenuationColor);
+    if (auto distance = number(e, "attenuationDistance")) {
+        if (!std::isfinite(*distance)) ctx.fail(what + " attenuationDistance is not a finite number");
+        // The specification: > 0, infinity when absent. 0 keeps that meaning here.
+        if (*distance <= 0.0) ctx.warn(what + " attenuationDistance " + shortNumber(*distance) + " is not > 0: no absorption");
+        else out.attenuationDistance = float(*distance);
+    }
 }
 
 // A copy of image `source` whose G channel holds 1 − glossiness · A (roughness, as the
@@ -348,6 +374,7 @@ void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTa
         loadClearcoat(ctx, model, images, m.extensions, out, what);
         loadSheen(ctx, model, images, m.extensions, out, what);
         loadAnisotropy(ctx, model, images, m.extensions, out, what);
+        loadTransmission(ctx, model, images, m.extensions, out, what);
 
         out.baseColor = textureRef(ctx, model, images, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
                                    pbr.baseColorTexture.extensions, true, what + " baseColorTexture");

@@ -201,6 +201,12 @@ void checkDocument(const Checker& c, const Json& root) {
             if (const Json* an = c.child(*ext, pe, "KHR_materials_anisotropy",
                                          {{"anisotropyStrength", Kind::Number}, {"anisotropyRotation", Kind::Number}}))
                 c.textureInfo(*an, pe + ".KHR_materials_anisotropy", "anisotropyTexture");
+            if (const Json* tr = c.child(*ext, pe, "KHR_materials_transmission", {{"transmissionFactor", Kind::Number}}))
+                c.textureInfo(*tr, pe + ".KHR_materials_transmission", "transmissionTexture");
+            if (const Json* volume = c.child(*ext, pe, "KHR_materials_volume",
+                                             {{"thicknessFactor", Kind::Number}, {"attenuationDistance", Kind::Number},
+                                              {"attenuationColor", Kind::NumberArray, 3}}))
+                c.textureInfo(*volume, pe + ".KHR_materials_volume", "thicknessTexture");
             if (const Json* sg = c.child(*ext, pe, "KHR_materials_pbrSpecularGlossiness",
                                          {{"diffuseFactor", Kind::NumberArray, 4}, {"specularFactor", Kind::NumberArray, 3},
                                           {"glossinessFactor", Kind::Number}})) {

@@ -65,8 +65,8 @@ MaterialData materialData(const Material& m) {
 
 // The material's layer textures in slot order (CANDELA_LAYER_TEX_*).
 std::array<const TextureRef*, CANDELA_LAYER_TEX_COUNT> layerTextures(const Material& m) {
-    return {&m.specular,       &m.specularColor, &m.clearcoat,      &m.clearcoatRoughness,
-            &m.clearcoatNormal, &m.sheenColor,    &m.sheenRoughness, &m.anisotropy};
+    return {&m.specular,       &m.specularColor, &m.clearcoat,      &m.clearcoatRoughness, &m.clearcoatNormal,
+            &m.sheenColor,     &m.sheenRoughness, &m.anisotropy,    &m.transmission,       &m.thickness};
 }
 
 MaterialLayerData materialLayerData(const Material& m) {
@@ -82,6 +82,10 @@ MaterialLayerData materialLayerData(const Material& m) {
     out.anisotropy = m.anisotropyStrength;
     out.anisotropyRotation = m.anisotropyRotation;
     out.anisotropyTextured = m.anisotropy.present() ? 1.0f : 0.0f;
+    out.transmission = m.transmissionFactor;
+    out.thickness = m.thicknessFactor;
+    out.attenuationColor = m.attenuationColor;
+    out.attenuationDistance = m.attenuationDistance;
     const auto textures = layerTextures(m);
     for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) out.uv[slot] = uvTransform(*textures[slot]);
     return out;

@@ -135,6 +135,20 @@ struct Material {
     float anisotropyRotation = 0.0f;
     TextureRef anisotropy;  // linear, RG direction, B strength
 
+    // KHR_materials_transmission: the fraction transmissionFactor · texture (R) of the light that
+    // enters the dielectric part and is transmitted through it (tinted by the base colour, blurred by
+    // the roughness) instead of diffusely re-emitted. Factor 0 (the default): no transmission.
+    float transmissionFactor = 0.0f;
+    TextureRef transmission;  // linear, R channel
+    // KHR_materials_volume (meaningful only with transmission): the volume's thickness beneath the
+    // surface, thicknessFactor · texture (G), in the mesh's units (0, the default: thin-walled), and
+    // its absorption: light keeps attenuationColor after attenuationDistance (world units; 0 stands
+    // for the specification's default, infinity: no absorption).
+    float thicknessFactor = 0.0f;
+    TextureRef thickness;  // linear, G channel
+    glm::vec3 attenuationColor{1.0f};
+    float attenuationDistance = 0.0f;
+
     // The layers beyond the core model this material uses (MaterialLayer bits): only those are
     // evaluated for it (see docs/materials.md).
     uint32_t layers() const;
@@ -161,12 +175,19 @@ enum MaterialLayer : uint32_t {
     kLayerSheen = 1u << 3,
     // An anisotropic GGX lobe (KHR_materials_anisotropy with a non-zero strength).
     kLayerAnisotropy = 1u << 4,
+    // Transmission (KHR_materials_transmission with a non-zero factor): drawn after the opaque
+    // draws, reading what lies behind them.
+    kLayerTransmission = 1u << 5,
+    // A volume beneath the transmitting surface (KHR_materials_volume with a thickness): refraction
+    // through it and absorption along it.
+    kLayerVolume = 1u << 6,
 };
 
 // The names of the layers in `layers` (MaterialLayer bits), in bit order: "specular", "clearcoat",
-// "clearcoat-normal-map", "sheen", "anisotropy".
+// "clearcoat-normal-map", "sheen", "anisotropy", "transmission", "volume".
 inline std::vector<std::string_view> layerNames(uint32_t layers) {
-    constexpr std::string_view kNames[] = {"specular", "clearcoat", "clearcoat-normal-map", "sheen", "anisotropy"};
+    constexpr std::string_view kNames[] = {"specular", "clearcoat",    "clearcoat-normal-map", "sheen",
+                                           "anisotropy", "transmission", "volume"};
     std::vector<std::string_view> out;
     for (uint32_t bit = 0; bit < std::size(kNames); ++bit)
         if (layers & (1u << bit)) out.push_back(kNames[bit]);
@@ -184,6 +205,10 @@ inline uint32_t Material::layers() const {
     // The specification: a zero sheen colour factor disables the layer.
     if (sheenColorFactor != glm::vec3(0.0f)) out |= kLayerSheen;
     if (anisotropyStrength > 0.0f) out |= kLayerAnisotropy;
+    // The specifications: no transmission without its factor; a volume only beneath a transmitting
+    // surface, and thickness 0 is thin-walled (no refraction, no absorption).
+    if (transmissionFactor > 0.0f)
+        out |= kLayerTransmission | (thicknessFactor > 0.0f ? kLayerVolume : 0u);
     return out;
 }
 

@@ -28,6 +28,17 @@
 // direction T (in the tangent plane) with α_t = mix(α, 1, anisotropy²) along T and α_b = α across,
 // D = 1 / (π α_t α_b ((T·H/α_t)² + (B·H/α_b)² + (N·H)²)²) and the height-correlated anisotropic
 // Smith visibility (Heitz 2014), as the extension's specification gives them.
+//
+// Transmission (KHR_materials_transmission): the dielectric part's diffuse lobe is replaced, for the
+// fraction `transmission`, by a microfacet BTDF tinted by the base colour:
+//   dielectric base = mix(diffuse_brdf, specular_btdf(α_t) · baseColor, transmission),
+// specular_btdf = D_T · V_T at the transmission half vector H_T = normalize(V + L − 2(N·L)N) (the
+// light mirrored through the thin surface), with the separable Smith visibility the specification's
+// implementation notes give, and α_t the roughness scaled by the IOR as in the Khronos sample viewer
+// (roughness · clamp(2·ior − 2, 0, 1): an index-matched surface does not blur). The base layer's
+// weight 1 − max(F_d) is taken at V·H_T. Light reaches it from behind the surface only (N·L < 0).
+// KHR_materials_volume adds refraction through a thickness and Beer-Lambert absorption along it
+// (the forward pass's geometry: volumeTransmittance).
 #ifndef CANDELA_SHARED_BRDF_LAYERS_H
 #define CANDELA_SHARED_BRDF_LAYERS_H
 
@@ -86,6 +97,15 @@ CANDELA_FN float schlickWeight(float VoH) {
     return x2 * x2 * x;
 }
 
+// 1 − (1 − V·H)⁵ as V·H (1 + x + x² + x³ + x⁴), x = 1 − V·H: no cancellation at small V·H (grazing
+// transmission, where H_T meets N), where 1 − schlickWeight would keep no correct digit.
+CANDELA_FN float schlickComplement(float VoH) {
+    float c = clamp(VoH, 0.0f, 1.0f);
+    float x = 1.0f - c;
+    float x2 = x * x;
+    return c * (1.0f + x + x2 + x2 * x + x2 * x2);
+}
+
 // The dielectric Fresnel at V·H.
 CANDELA_FN vec3 fresnelDielectric(float VoH, DielectricFresnel d) {
     return d.f0 + (vec3(d.f90) - d.f0) * schlickWeight(VoH);
@@ -130,33 +150,118 @@ CANDELA_FN BrdfLobes brdfLobesTimesCosineDielectric(vec3 N, vec3 V, vec3 L, vec3
     return dielectricMaterialLobes(g, D * Vis, baseColor, metallic, d);
 }
 
+// What the dielectric part of a material does not reflect of image-based light:
+// 1 − max(E_d + multiscatter_d), E_d = f0·A + f90·B the split sum's directional albedo and, with
+// `multiscatter`, multiscatter_d = E_d · F_avg (1 − A − B) / (1 − F_avg (1 − A − B)), F_avg = f0 + (f90 − f0)/21;
+// computed from 1 − f0 without cancellation. The weight of the Lambert and transmitted parts.
+CANDELA_FN float iblDielectricUnreflected(vec2 lut, DielectricFresnel d, bool multiscatter) {
+    float lost = 1.0f - (lut.x + lut.y);
+    // 1 − E_d = (1 − f0)A + (1 − f90)B + (1 − A − B).
+    vec3 unreflected = d.oneMinusF0 * lut.x + vec3((1.0f - d.f90) * lut.y + lost);
+    if (multiscatter) {
+        vec3 single = d.f0 * lut.x + d.f90 * lut.y;
+        vec3 average = d.f0 + (vec3(d.f90) - d.f0) * (1.0f / 21.0f);
+        unreflected -= single * average / (vec3(1.0f) - lost * average) * lost;
+    }
+    return max(minComponent(unreflected), 0.0f);
+}
+
 // iblShadeLobes (shared/ibl.h) with the dielectric Fresnel `d`: the split sum's directional albedo
 // E = f0·A + f90·B per part (dielectric, metal), mixed by metallic; multiscatter as there, with
-// F_avg = f0 + (f90 − f0)/21; the diffuse weighted by what the dielectric part does not reflect,
-// 1 − max(E_d + multiscatter_d), computed from 1 − f0 without cancellation.
+// F_avg = f0 + (f90 − f0)/21; the diffuse weighted by iblDielectricUnreflected and by
+// `diffuseFraction` (1 − transmission: the rest is transmitted, iblTransmission).
 CANDELA_FN BrdfLobes iblShadeLobesDielectric(vec3 prefiltered, vec3 irradiance, vec2 lut, vec3 baseColor, float metallic,
                                              DielectricFresnel d, bool multiscatter, float diffuseOcclusion,
-                                             float specularOcclusionFactor) {
+                                             float specularOcclusionFactor, float diffuseFraction) {
     vec3 f0 = mix(d.f0, baseColor, metallic);
     vec3 f90 = mix(vec3(d.f90), vec3(1.0f), metallic);
     vec3 singleScatter = f0 * lut.x + f90 * lut.y;
-    vec3 dielectricSingle = d.f0 * lut.x + d.f90 * lut.y;
     float lost = 1.0f - (lut.x + lut.y);
-    // 1 − E_d = (1 − f0)A + (1 − f90)B + (1 − A − B), from the cancellation-free 1 − f0.
-    vec3 dielectricUnreflected = d.oneMinusF0 * lut.x + vec3((1.0f - d.f90) * lut.y + lost);
     vec3 multiScatter = vec3(0.0f);
-    vec3 dielectricMulti = vec3(0.0f);
     if (multiscatter) {
         vec3 averageFresnel = f0 + (f90 - f0) * (1.0f / 21.0f);
         multiScatter = singleScatter * averageFresnel / (vec3(1.0f) - lost * averageFresnel) * lost;
-        vec3 dielectricAverage = d.f0 + (vec3(d.f90) - d.f0) * (1.0f / 21.0f);
-        dielectricMulti = dielectricSingle * dielectricAverage / (vec3(1.0f) - lost * dielectricAverage) * lost;
     }
-    float diffuseWeight = max(minComponent(dielectricUnreflected - dielectricMulti), 0.0f);
+    float diffuseWeight = iblDielectricUnreflected(lut, d, multiscatter);
     BrdfLobes lobes;
     lobes.specular = prefiltered * singleScatter * specularOcclusionFactor;
-    lobes.diffuse = (multiScatter + baseColor * ((1.0f - metallic) * diffuseWeight)) * irradiance * diffuseOcclusion;
+    lobes.diffuse = (multiScatter + baseColor * ((1.0f - metallic) * diffuseWeight * diffuseFraction)) * irradiance *
+                    diffuseOcclusion;
     return lobes;
+}
+
+// ---- Transmission ----
+
+// The transmission of one shading point: its weight (transmissionFactor × texture) and the
+// perceptual roughness of its BTDF (the material's, scaled by clamp(2·ior − 2, 0, 1)).
+struct Transmission {
+    float weight;
+    float roughness;
+};
+
+CANDELA_FN Transmission transmissionLayer(float transmission, float perceptualRoughness, float ior) {
+    Transmission t;
+    t.weight = transmission;
+    t.roughness = perceptualRoughness * clamp(2.0f * ior - 2.0f, 0.0f, 1.0f);
+    return t;
+}
+
+// The light transmitted from L behind the surface (N·L < 0; 0 otherwise) toward V, times |N·L|:
+// transmission · (1 − metallic) · baseColor · (1 − max(F_d(V·H_T))) · D_T · V_T · |N·L|.
+CANDELA_FN vec3 transmissionTimesCosine(vec3 N, vec3 V, vec3 L, vec3 baseColor, float metallic, DielectricFresnel d,
+                                        Transmission t) {
+    float NoL = dot(N, L);
+    if (NoL >= 0.0f || t.weight <= 0.0f) return vec3(0.0f);
+    vec3 H = V + (L - 2.0f * NoL * N);  // V plus L mirrored through the surface
+    float lengthH = length(H);
+    if (lengthH <= 1e-6f) return vec3(0.0f);
+    H = H / lengthH;
+    float NoH = dot(N, H);
+    float VoH = dot(V, H);
+    // The specification's χ⁺ terms: N·H_T > 0, H_T·L / N·L > 0 and H_T·V / N·V > 0.
+    if (NoH <= 0.0f || dot(H, L) >= 0.0f || VoH <= 0.0f) return vec3(0.0f);
+    float roughness = clampRoughness(t.roughness);
+    float a = roughness * roughness;
+    vec3 NxH = cross(N, H);
+    float D = distributionGgx(NoH, dot(NxH, NxH), a);
+    float NoV = max(dot(N, V), CANDELA_MIN_NOV);
+    float absNoL = -NoL;
+    float a2 = a * a;
+    // V_T · |N·L|: the |N·L| over |N·L| + √(α² + (1 − α²) N·L²) stays finite as N·L → 0.
+    float visTimesCosine = absNoL / ((absNoL + sqrt(a2 + (1.0f - a2) * absNoL * absNoL)) *
+                                     (NoV + sqrt(a2 + (1.0f - a2) * NoV * NoV)));
+    // 1 − F_d = (1 − f0)(1 − w) + (1 − f90) w with 1 − w free of cancellation.
+    float complement = schlickComplement(VoH);
+    float unreflected = minComponent(d.oneMinusF0 * complement + vec3((1.0f - d.f90) * (1.0f - complement)));
+    return baseColor * (t.weight * (1.0f - metallic) * unreflected * D * visTimesCosine);
+}
+
+// The transmission under image-based light: `behind` (the light from behind the surface, already
+// blurred by the roughness and attenuated by the volume) through the dielectric part's
+// transmitted fraction — the same weight the Lambert part has in iblShadeLobesDielectric, so a
+// transmitting material in a uniform environment keeps the white furnace.
+CANDELA_FN vec3 iblTransmission(Transmission t, vec3 behind, vec2 lut, vec3 baseColor, float metallic, DielectricFresnel d,
+                                bool multiscatter) {
+    return behind * baseColor * (t.weight * (1.0f - metallic) * iblDielectricUnreflected(lut, d, multiscatter));
+}
+
+// The split sum's (A, B) at (N·V, perceptual roughness) without a LUT: Karis's analytic fit
+// ("Physically Based Shading on Mobile", 2014), within a few percent of the LUT. Weighs the
+// transmitted light of frames without an environment (and so without the BRDF LUT).
+CANDELA_FN vec2 envBrdfApproximation(float NoV, float perceptualRoughness) {
+    vec4 r = perceptualRoughness * vec4(-1.0f, -0.0275f, -0.572f, 0.022f) + vec4(1.0f, 0.0425f, 1.04f, -0.04f);
+    float a004 = min(r.x * r.x, exp2(-9.28f * NoV)) * r.x + r.y;
+    return clamp(vec2(-1.04f, 1.04f) * a004 + vec2(r.z, r.w), vec2(0.0f), vec2(1.0f));
+}
+
+// Beer-Lambert transmittance along `distance` through a volume whose light keeps
+// `attenuationColor` after `attenuationDistance` (0: infinite, no absorption): colour^(distance /
+// attenuationDistance), as exp(−σ · distance) with σ = −ln(max(colour, 1e-30)) / attenuationDistance,
+// so a black colour, a distance of 0 or 1e-6 and a thickness of 1e6 all stay finite.
+CANDELA_FN vec3 volumeTransmittance(vec3 attenuationColor, float attenuationDistance, float distance) {
+    if (attenuationDistance <= 0.0f || distance <= 0.0f) return vec3(1.0f);
+    vec3 sigma = -log(max(attenuationColor, vec3(1e-30f))) / attenuationDistance;
+    return exp(-sigma * distance);
 }
 
 // ---- Clearcoat ----
@@ -368,18 +473,22 @@ CANDELA_FN vec3 anisotropicBentNormal(vec3 N, vec3 V, float perceptualRoughness,
 // layer's dielectric Fresnel `d` when `layers` has CANDELA_LAYER_SPECULAR; with an anisotropic GGX
 // lobe `an` when it has CANDELA_LAYER_ANISOTROPY), beneath the sheen
 // `sheen` when `layers` has CANDELA_LAYER_SHEEN, and both beneath the coat `coat` when `layers` has
-// CANDELA_LAYER_CLEARCOAT. The forward pass passes its kLayers, a specialization constant, so the
+// CANDELA_LAYER_CLEARCOAT; with CANDELA_LAYER_TRANSMISSION the fraction `tr` of the diffuse lobe
+// becomes the transmission lobe toward `Lt` (L, or the direction to the light from where a volume's
+// refracted ray leaves it; d is then the dielectric Fresnel of its weight: the core's without the
+// specular layer). The forward pass passes its kLayers, a specialization constant, so the
 // branches not taken are compiled out.
 struct LayeredLobes {
     vec3 diffuse;    // the material's, beneath the sheen and the coat
     vec3 specular;   // the material's, beneath the sheen and the coat
+    vec3 transmission;  // the material's transmitted light (from L behind), beneath the sheen and the coat
     vec3 sheen;      // the sheen's, beneath the coat
     float clearcoat; // the coat's (colourless)
 };
 
-CANDELA_FN LayeredLobes layeredLobesTimesCosine(vec3 N, vec3 V, vec3 L, vec3 baseColor, float metallic,
+CANDELA_FN LayeredLobes layeredLobesTimesCosine(vec3 N, vec3 V, vec3 L, vec3 Lt, vec3 baseColor, float metallic,
                                                 float perceptualRoughness, uint model, uint layers, DielectricFresnel d,
-                                                Anisotropy an, Sheen sheen, Clearcoat coat) {
+                                                Anisotropy an, Transmission tr, Sheen sheen, Clearcoat coat) {
     BrdfLobes base;
     if ((layers & CANDELA_LAYER_ANISOTROPY) != 0u)
         base = brdfLobesTimesCosineAnisotropic(N, V, L, baseColor, metallic, perceptualRoughness,
@@ -391,16 +500,23 @@ CANDELA_FN LayeredLobes layeredLobesTimesCosine(vec3 N, vec3 V, vec3 L, vec3 bas
     LayeredLobes layered;
     layered.diffuse = base.diffuse;
     layered.specular = base.specular;
+    layered.transmission = vec3(0.0f);
     layered.sheen = vec3(0.0f);
     layered.clearcoat = 0.0f;
+    if ((layers & CANDELA_LAYER_TRANSMISSION) != 0u) {
+        layered.diffuse *= 1.0f - tr.weight;
+        layered.transmission = transmissionTimesCosine(N, V, Lt, baseColor, metallic, d, tr);
+    }
     if ((layers & CANDELA_LAYER_SHEEN) != 0u) {
         layered.diffuse *= sheen.baseWeight;
         layered.specular *= sheen.baseWeight;
+        layered.transmission *= sheen.baseWeight;
         layered.sheen = sheen.color * sheenTimesCosine(N, V, L, sheen.roughness);
     }
     if ((layers & CANDELA_LAYER_CLEARCOAT) != 0u) {
         layered.diffuse *= coat.baseWeight;
         layered.specular *= coat.baseWeight;
+        layered.transmission *= coat.baseWeight;
         layered.sheen *= coat.baseWeight;
         layered.clearcoat = clearcoatTimesCosine(coat, V, L, model);
     }

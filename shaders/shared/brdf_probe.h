@@ -45,6 +45,9 @@ struct BrdfProbeParams {
     vec4 clearcoatNormal;  // xyz: unit (the base normal is +Z)
     vec4 sheenColor;       // rgb
     vec4 anisotropy;       // xyz: the unit direction T in the tangent plane (z = 0), w: strength
+    // x: the transmission weight (KHR_materials_transmission), y: 1 to mirror L through the surface
+    // (L.z → −L.z), so that the grid's light directions probe the back side the BTDF lights from.
+    vec4 transmission;
 };
 
 // One combination of the grid: the inputs of brdfTimesCosine.
@@ -133,7 +136,7 @@ CANDELA_FN BrdfProbeSample brdfProbeSample(uvec2 texel) {
 CANDELA_NAMESPACE_END
 
 #ifdef __cplusplus
-static_assert(sizeof(candela::shading::BrdfProbeParams) == 96);
+static_assert(sizeof(candela::shading::BrdfProbeParams) == 112);
 #endif
 
 #endif

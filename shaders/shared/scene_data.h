@@ -33,6 +33,7 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_DEBUG_CLEARCOAT_NORMAL 14u  // the coat's normal (after its normal map)
 #define CANDELA_DEBUG_SHEEN 15u             // the light the sheen reflects
 #define CANDELA_DEBUG_ANISOTROPY 16u        // the anisotropy direction T (and strength)
+#define CANDELA_DEBUG_TRANSMISSION 17u      // the fraction of the light behind that comes through
 
 #define CANDELA_ALPHA_OPAQUE 0u
 #define CANDELA_ALPHA_MASK 1u
@@ -52,6 +53,8 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_LAYER_CLEARCOAT_NORMAL 4u  // its clearcoatNormalTexture (the coat's TBN work)
 #define CANDELA_LAYER_SHEEN 8u             // KHR_materials_sheen
 #define CANDELA_LAYER_ANISOTROPY 16u       // KHR_materials_anisotropy
+#define CANDELA_LAYER_TRANSMISSION 32u     // KHR_materials_transmission
+#define CANDELA_LAYER_VOLUME 64u           // KHR_materials_volume with a thickness
 
 // Texture slots of the layers, bound after the core ones in descriptor set 1 of the layered
 // program (bindings 6 and up; binding 5 is the MaterialLayers buffer).
@@ -63,7 +66,9 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_LAYER_TEX_SHEEN_COLOR 5
 #define CANDELA_LAYER_TEX_SHEEN_ROUGHNESS 6
 #define CANDELA_LAYER_TEX_ANISOTROPY 7
-#define CANDELA_LAYER_TEX_COUNT 8
+#define CANDELA_LAYER_TEX_TRANSMISSION 8
+#define CANDELA_LAYER_TEX_THICKNESS 9
+#define CANDELA_LAYER_TEX_COUNT 10
 
 // One punctual light (KHR_lights_punctual), world space.
 struct LightData {
@@ -116,7 +121,13 @@ struct MaterialLayerData {
     /*Range(0, 1)*/ float anisotropy;  // KHR_materials_anisotropy anisotropyStrength
     /*Range(-3.2, 3.2)*/ float anisotropyRotation;  // radians, counter-clockwise from the tangent
     /*Ignore*/ float anisotropyTextured;  // 1: anisotropyTexture gives direction (RG) and strength (B)
+    /*Range(0, 1)*/ float transmission;  // KHR_materials_transmission transmissionFactor
+    /*Color*/ vec3 attenuationColor;   // KHR_materials_volume attenuationColor
+    /*Range(0, 10)*/ float thickness;  // thicknessFactor (mesh units; 0: thin-walled)
+    /*Range(0, 10)*/ float attenuationDistance;  // world units; 0: infinite (no absorption)
     /*Ignore*/ float pad0;
+    /*Ignore*/ float pad1;
+    /*Ignore*/ float pad2;
     /*Ignore*/ UvTransform uv[CANDELA_LAYER_TEX_COUNT];
 };
 
@@ -157,7 +168,7 @@ CANDELA_NAMESPACE_END
 static_assert(sizeof(candela::shading::LightData) == 64);
 static_assert(sizeof(candela::shading::DrawData) == 144);
 static_assert(sizeof(candela::shading::MaterialData) == 64 + 32 * CANDELA_TEX_COUNT);
-static_assert(sizeof(candela::shading::MaterialLayerData) == 64 + 32 * CANDELA_LAYER_TEX_COUNT);
+static_assert(sizeof(candela::shading::MaterialLayerData) == 96 + 32 * CANDELA_LAYER_TEX_COUNT);
 static_assert(sizeof(candela::shading::ForwardPush) == 128);
 #endif
 

@@ -82,7 +82,8 @@ glm::dvec3 referenceOf(const shading::BrdfProbeSample& s, const shading::BrdfPro
                              .sheenRoughness = layer->sheenRoughness,
                              .sheenAlbedo = layer->sheenAlbedo,
                              .anisotropy = layer->anisotropy.w,
-                             .anisotropyDirection = glm::dvec3(layer->anisotropy)};
+                             .anisotropyDirection = glm::dvec3(layer->anisotropy),
+                             .transmission = layer->transmission.x};
     return ref::brdfTimesCosineLayered(glm::dvec3(s.N), glm::dvec3(s.V), glm::dvec3(s.L), glm::dvec3(s.baseColor),
                                        s.metallic, s.perceptualRoughness, s.model, layers);
 }
@@ -95,7 +96,8 @@ void checkProbe(const std::vector<glm::vec4>& texels, float intensity, const sha
     for (uint32_t y = 0; y < BrdfProbePass::kHeight; ++y)
         for (uint32_t x = 0; x < BrdfProbePass::kWidth; ++x) {
             const glm::vec4& got = texels[size_t(y) * BrdfProbePass::kWidth + x];
-            const shading::BrdfProbeSample s = shading::brdfProbeSample(glm::uvec2(x, y));
+            shading::BrdfProbeSample s = shading::brdfProbeSample(glm::uvec2(x, y));
+            if (layer && layer->transmission.y > 0.5f) s.L.z = -s.L.z;  // as the probe mirrors it
             const glm::dvec3 expected = referenceOf(s, layer) * double(intensity);
             for (int c = 0; c < 4; ++c) nonFinite += std::isfinite(got[c]) ? 0 : 1;
             wrongIndex += got.w == float(y * BrdfProbePass::kWidth + x) ? 0 : 1;
@@ -212,6 +214,32 @@ TEST_F(GpuTest, AnisotropyProbeMatchesDoubleReference) {
     for (const shading::BrdfProbeParams& c : cases) {
         SCOPED_TRACE(::testing::Message() << "layers " << c.layers << ", strength " << c.anisotropy.w << ", T ("
                                           << c.anisotropy.x << ", " << c.anisotropy.y << "), intensity " << c.intensity);
+        checkProbe(runProbe(context(), c, BrdfProbePass::Brdf::Layers), c.intensity, &c);
+    }
+}
+
+// The transmission (KHR_materials_transmission) over the grid, with the light in front (the BTDF
+// gives nothing, the diffuse lobe loses the transmitted fraction) and mirrored behind the surface:
+// weight 1 and 0.5, IOR 1.5 (the roughness as it is), 1.2 (scaled by 0.4) and 1 (no blur: the
+// clamped roughness 0, the stiffest lobe), over the core Fresnel and the specular layer, under a
+// coat, and at intensity 1e6. Same metric and tolerances as the core BRDF.
+TEST_F(GpuTest, TransmissionProbeMatchesDoubleReference) {
+    const auto transmission = [](float intensity, uint32_t layers, float weight, float ior, bool behind) {
+        return shading::BrdfProbeParams{.intensity = intensity, .ior = ior, .specular = 1.0f, .layers = layers,
+                                        .specularColor = glm::vec4(1.0f, 0.5f, 0.25f, 0.0f), .clearcoat = 0.7f,
+                                        .clearcoatRoughness = 0.3f, .clearcoatNormal = glm::vec4(0.0f, 0.0f, 1.0f, 0.0f),
+                                        .transmission = glm::vec4(weight, behind ? 1.0f : 0.0f, 0.0f, 0.0f)};
+    };
+    const uint32_t t = CANDELA_LAYER_TRANSMISSION;
+    const shading::BrdfProbeParams cases[] = {
+        transmission(1.0f, t, 1.0f, 1.5f, false),  transmission(1.0f, t, 1.0f, 1.5f, true),
+        transmission(1.0f, t, 0.5f, 1.2f, true),   transmission(1.0f, t, 1.0f, 1.0f, true),
+        transmission(1.0f, t | CANDELA_LAYER_SPECULAR, 1.0f, 1.33f, true),
+        transmission(1.0f, t | CANDELA_LAYER_CLEARCOAT, 1.0f, 1.5f, true), transmission(1e6f, t, 1.0f, 1.0f, true)};
+    for (const shading::BrdfProbeParams& c : cases) {
+        SCOPED_TRACE(::testing::Message() << "layers " << c.layers << ", transmission " << c.transmission.x << ", IOR "
+                                          << c.ior << (c.transmission.y > 0.5f ? ", light behind" : ", light in front")
+                                          << ", intensity " << c.intensity);
         checkProbe(runProbe(context(), c, BrdfProbePass::Brdf::Layers), c.intensity, &c);
     }
 }

@@ -148,6 +148,7 @@ TEST(BrdfLayers, SpecularZeroIsLambertAndIorOneReflectsNothingHeadOn) {
 
 shading::Sheen noSheen() { return shading::sheenLayer(glm::vec3(0.0f), 0.0f, 0.0f); }
 shading::Anisotropy noAnisotropy() { return shading::anisotropyLayer(0.0f, glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)); }
+shading::Transmission noTransmission() { return shading::transmissionLayer(0.0f, 0.0f, 1.5f); }
 
 struct Coat {
     uint32_t bits;
@@ -175,8 +176,8 @@ std::vector<Coat> coats() {
 glm::vec3 coatedFloat(glm::vec3 N, glm::vec3 V, glm::vec3 L, glm::vec3 base, float metallic, float roughness, uint32_t model,
                       const Coat& coat) {
     const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
-        N, V, L, base, metallic, roughness, model, coat.bits, shading::dielectricFresnel(coat.ior, glm::vec3(1.0f), 1.0f),
-        noAnisotropy(), noSheen(), shading::clearcoatLayer(coat.weight, coat.roughness, coat.normal, V));
+        N, V, L, L, base, metallic, roughness, model, coat.bits, shading::dielectricFresnel(coat.ior, glm::vec3(1.0f), 1.0f),
+        noAnisotropy(), noTransmission(), noSheen(), shading::clearcoatLayer(coat.weight, coat.roughness, coat.normal, V));
     return lobes.diffuse + lobes.specular + lobes.sheen + glm::vec3(lobes.clearcoat);
 }
 
@@ -229,7 +230,7 @@ TEST(BrdfLayers, ClearcoatOfWeightZeroIsTheMaterialAndGrazingLetsNothingThrough)
     const glm::vec3 N(0.0f, 0.0f, 1.0f), V = direction(0.6, 0.0), L = direction(0.7, 2.0), base(0.8f, 0.5f, 0.2f);
     const shading::Clearcoat none = shading::clearcoatLayer(0.0f, 0.3f, N, V);
     const shading::LayeredLobes coated = shading::layeredLobesTimesCosine(
-        N, V, L, base, 0.3f, 0.5f, ref::kPbr, CANDELA_LAYER_CLEARCOAT, shading::coreDielectricFresnel(), noAnisotropy(), noSheen(), none);
+        N, V, L, L, base, 0.3f, 0.5f, ref::kPbr, CANDELA_LAYER_CLEARCOAT, shading::coreDielectricFresnel(), noAnisotropy(), noTransmission(), noSheen(), none);
     const shading::BrdfLobes plain = shading::brdfLobesTimesCosine(N, V, L, base, 0.3f, 0.5f, ref::kPbr);
     EXPECT_EQ(coated.diffuse, plain.diffuse);
     EXPECT_EQ(coated.specular, plain.specular);
@@ -323,8 +324,8 @@ TEST(BrdfLayers, SheenFloatMatchesDoubleReference) {
                         for (float metallic : {0.0f, 1.0f}) {
                             const glm::vec3 V = direction(cv, 0.0), L = direction(cl, phi), base(0.5f, 0.4f, 0.3f);
                             const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
-                                N, V, L, base, metallic, 0.5f, model, sc.bits, shading::coreDielectricFresnel(),
-                                noAnisotropy(), shading::sheenLayer(sc.color, sc.roughness, sc.albedo),
+                                N, V, L, L, base, metallic, 0.5f, model, sc.bits, shading::coreDielectricFresnel(),
+                                noAnisotropy(), noTransmission(), shading::sheenLayer(sc.color, sc.roughness, sc.albedo),
                                 shading::clearcoatLayer(1.0f, 0.2f, N, V));
                             const glm::vec3 got = lobes.diffuse + lobes.specular + lobes.sheen + glm::vec3(lobes.clearcoat);
                             const ref::Layers layers{.bits = sc.bits, .clearcoat = 1.0, .clearcoatRoughness = 0.2,
@@ -391,9 +392,9 @@ TEST(BrdfLayers, AnisotropyFloatMatchesDoubleReference) {
                                             const glm::vec3 V = direction(cv, 0.0), L = direction(cl, phi);
                                             const float ior = (bits & CANDELA_LAYER_SPECULAR) ? 1.33f : 1.5f;
                                             const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
-                                                N, V, L, base, metallic, roughness, model, bits,
+                                                N, V, L, L, base, metallic, roughness, model, bits,
                                                 shading::dielectricFresnel(ior, glm::vec3(1.0f), 1.0f),
-                                                shading::anisotropyLayer(strength, T, glm::cross(N, T)), noSheen(),
+                                                shading::anisotropyLayer(strength, T, glm::cross(N, T)), noTransmission(), noSheen(),
                                                 shading::clearcoatLayer(0.0f, 0.0f, N, V));
                                             const glm::vec3 got = lobes.diffuse + lobes.specular;
                                             const ref::Layers layers{.bits = bits, .ior = ior, .anisotropy = strength,
@@ -428,6 +429,104 @@ TEST(BrdfLayers, AnisotropyOfStrengthZeroIsTheIsotropicLobe) {
         EXPECT_NEAR(aniso.specular[c], iso.specular[c], 1e-6 * iso.specular[c]) << c;
         EXPECT_NEAR(aniso.diffuse[c], iso.diffuse[c], 1e-6 * iso.diffuse[c]) << c;
     }
+}
+
+// The transmission (KHR_materials_transmission) in float against the double reference: weight 1
+// and 0.5, IOR 1.5, 1.2 and 1 (no blur: the stiffest lobe, the clamped roughness 0), over the core
+// Fresnel and the specular layer, the light in front (the diffuse lobe loses the transmitted
+// fraction) and mirrored behind the surface (the BTDF).
+TEST(BrdfLayers, TransmissionFloatMatchesDoubleReference) {
+    ref::ErrorStats stats{.floor = kFloor};
+    uint64_t bad = 0;
+    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    for (float weight : {1.0f, 0.5f})
+        for (float ior : {1.5f, 1.2f, 1.0f})
+            for (uint32_t bits : {uint32_t(CANDELA_LAYER_TRANSMISSION), uint32_t(CANDELA_LAYER_TRANSMISSION | CANDELA_LAYER_SPECULAR)})
+                for (uint32_t model : {uint32_t(ref::kPbr), uint32_t(ref::kPbrSchlickGgx)})
+                    for (double cv : kCosines)
+                        for (double cl : kCosines)
+                            for (double side : {1.0, -1.0})
+                                for (double phi : {0.0, std::numbers::pi / 2, std::numbers::pi})
+                                    for (float roughness : {0.0f, 0.3f, 1.0f})
+                                        for (float metallic : kMetallics)
+                                            for (const glm::vec3& base : kBaseColors) {
+                                                const glm::vec3 V = direction(cv, 0.0), L = direction(side * cl, phi);
+                                                const glm::vec3 color(1.0f, 0.5f, 0.25f);
+                                                const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
+                                                    N, V, L, L, base, metallic, roughness, model, bits,
+                                                    (bits & CANDELA_LAYER_SPECULAR) ? shading::dielectricFresnel(ior, color, 1.0f)
+                                                                                    : shading::coreDielectricFresnel(),
+                                                    noAnisotropy(), shading::transmissionLayer(weight, roughness, ior), noSheen(),
+                                                    shading::clearcoatLayer(0.0f, 0.0f, N, V));
+                                                const glm::vec3 got = lobes.diffuse + lobes.specular + lobes.transmission;
+                                                const ref::Layers layers{.bits = bits, .ior = ior, .specularColor = glm::dvec3(color),
+                                                                         .transmission = weight};
+                                                const glm::dvec3 expected = ref::brdfTimesCosineLayered(
+                                                    glm::dvec3(N), glm::dvec3(V), glm::dvec3(L), glm::dvec3(base), metallic,
+                                                    roughness, model, layers);
+                                                for (int c = 0; c < 3; ++c) {
+                                                    bad += std::isfinite(got[c]) && got[c] >= 0.0f ? 0 : 1;
+                                                    stats.add(got[c], expected[c], [&] {
+                                                        std::ostringstream s;
+                                                        s.precision(9);
+                                                        s << "transmission " << weight << " ior " << ior << " bits " << bits
+                                                          << " V=(" << V.x << "," << V.z << ") L=(" << L.x << "," << L.y << ","
+                                                          << L.z << ") roughness " << roughness << " metallic " << metallic
+                                                          << " channel " << c << ": float " << got[c] << ", double " << expected[c];
+                                                        return s.str();
+                                                    });
+                                                }
+                                            }
+    expectWithinTolerance("transmission", stats, bad, kTolerance);
+}
+
+// Under image-based light the transmitted part has the Lambert part's weight: with the light behind
+// equal to the irradiance (a uniform environment seen through the surface) a transmitting material
+// reflects and transmits exactly what the same material without transmission reflects, for any
+// split-sum (A, B), Fresnel and weight — so it keeps the white furnace wherever the opaque one does.
+TEST(BrdfLayers, TransmissionUnderImageBasedLightKeepsTheWhiteFurnace) {
+    double worst = 0.0;
+    for (float a = 0.0f; a <= 1.0f; a += 0.125f)
+        for (float b = 0.0f; a + b <= 1.0f; b += 0.125f)
+            for (const shading::DielectricFresnel& d :
+                 {shading::coreDielectricFresnel(), shading::dielectricFresnel(1.0f, glm::vec3(1.0f), 1.0f),
+                  shading::dielectricFresnel(10.0f, glm::vec3(1.0f, 0.5f, 0.25f), 0.5f)})
+                for (float weight : {0.0f, 0.5f, 1.0f})
+                    for (float metallic : {0.0f, 0.5f}) {
+                        const glm::vec3 base(1.0f), one(1.0f);
+                        const glm::vec2 lut(a, b);
+                        const shading::BrdfLobes opaque =
+                            shading::iblShadeLobesDielectric(one, one, lut, base, metallic, d, true, 1.0f, 1.0f, 1.0f);
+                        const shading::BrdfLobes lobes =
+                            shading::iblShadeLobesDielectric(one, one, lut, base, metallic, d, true, 1.0f, 1.0f, 1.0f - weight);
+                        const glm::vec3 transmitted = shading::iblTransmission(shading::transmissionLayer(weight, 0.5f, 1.5f), one,
+                                                                               lut, base, metallic, d, true);
+                        for (int c = 0; c < 3; ++c)
+                            worst = std::max(worst, std::abs(double(lobes.diffuse[c] + lobes.specular[c] + transmitted[c]) -
+                                                             double(opaque.diffuse[c] + opaque.specular[c])));
+                    }
+    std::cout << "transmission IBL furnace: max |with - without| " << worst << "\n";
+    EXPECT_LE(worst, 1e-6);
+}
+
+// KHR_materials_volume's Beer-Lambert transmittance at the extremes: thickness 0 and 1e6,
+// attenuation distance 1e-6 and infinity (0), a black attenuation colour — finite, in [0, 1], and
+// colour^(distance / attenuation distance) where that is representable.
+TEST(BrdfLayers, VolumeTransmittanceAtTheExtremes) {
+    const glm::vec3 color(1.0f, 0.5f, 0.0f);
+    for (float attenuationDistance : {0.0f, 1e-6f, 1.0f, 1e6f})
+        for (float distance : {0.0f, 1e-6f, 0.5f, 1.0f, 1e6f}) {
+            const glm::vec3 t = shading::volumeTransmittance(color, attenuationDistance, distance);
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_TRUE(std::isfinite(t[c]) && t[c] >= 0.0f && t[c] <= 1.0f)
+                    << "distance " << distance << " attenuation distance " << attenuationDistance << ": " << t[c];
+                const double expected = attenuationDistance == 0.0f || distance == 0.0f
+                                            ? 1.0
+                                            : std::pow(std::max(double(color[c]), 1e-30), double(distance) / attenuationDistance);
+                EXPECT_NEAR(t[c], expected, 1e-6 + 1e-5 * expected) << "distance " << distance << " attenuation distance "
+                                                                      << attenuationDistance << " channel " << c;
+            }
+        }
 }
 
 }  // namespace

@@ -129,7 +129,7 @@ inline glm::dvec3 brdfTimesCosineDielectric(const glm::dvec3& N, const glm::dvec
 }
 
 // Layer bits, numbered like CANDELA_LAYER_* in shaders/shared/scene_data.h.
-enum LayerBit : uint32_t { kLayerSpecular = 1, kLayerClearcoat = 2, kLayerSheen = 8, kLayerAnisotropy = 16 };
+enum LayerBit : uint32_t { kLayerSpecular = 1, kLayerClearcoat = 2, kLayerSheen = 8, kLayerAnisotropy = 16, kLayerTransmission = 32 };
 
 // KHR_materials_sheen's lobe f · N·L in the specification's form: the Charlie distribution
 // D = (2 + 1/α) sin(θ_h)^(1/α) / 2π with α = roughness² (roughness clamped like the GGX one) and the
@@ -165,7 +165,58 @@ struct Layers {
     double sheenAlbedo = 0.0;  // E(N·V), given
     double anisotropy = 0.0;                    // strength
     glm::dvec3 anisotropyDirection{1.0, 0.0, 0.0};  // T, unit, ⟂ N
+    double transmission = 0.0;  // weight
 };
+
+// The diffuse lobe times N·L of the material brdfTimesCosineLayered starts from: with the specular
+// layer (1 − metallic)(1 − max(F_d)) · baseColor/π, else the core's (1 − F)(1 − metallic) · baseColor/π.
+inline glm::dvec3 diffuseTimesCosine(const glm::dvec3& N, const glm::dvec3& V, const glm::dvec3& L,
+                                     const glm::dvec3& baseColor, double metallic, const Layers& layers) {
+    const auto [NoL, NoV, NoH, VoH, hasHalfVector] = angles(N, V, L);
+    if (NoL <= 0.0) return glm::dvec3(0.0);
+    if (layers.bits & kLayerSpecular) {
+        const double r = (layers.ior - 1.0) / (layers.ior + 1.0);
+        const glm::dvec3 f0 = glm::min(r * r * layers.specularColor, glm::dvec3(1.0)) * layers.specular;
+        const glm::dvec3 F = f0 + (glm::dvec3(layers.specular) - f0) * std::pow(1.0 - VoH, 5.0);
+        return (1.0 - metallic) * (1.0 - std::max({F.x, F.y, F.z})) * baseColor / kPi * NoL;
+    }
+    const glm::dvec3 F = fresnelSchlick(VoH, glm::dvec3(0.04) * (1.0 - metallic) + baseColor * metallic);
+    return (glm::dvec3(1.0) - F) * (1.0 - metallic) * baseColor / kPi * NoL;
+}
+
+// KHR_materials_transmission's lobe times |N·L| in the specification's form (its implementation
+// notes): for L behind the surface, transmission · (1 − metallic) · baseColor · (1 − max(F_d)) ·
+// D_T · V_T · |N·L| with H_T = normalize(V − 2(N·L)N + L), the GGX D_T with χ⁺(N·H_T), the
+// separable V_T with χ⁺(H_T·L / N·L) χ⁺(H_T·V / N·V), α = (roughness · clamp(2 ior − 2, 0, 1))²
+// (roughness clamped like the GGX one), F_d the dielectric Fresnel at V·H_T (the core's f0 0.04,
+// f90 1 without the specular layer).
+inline glm::dvec3 transmissionTimesCosine(const glm::dvec3& N, const glm::dvec3& V, const glm::dvec3& L,
+                                          const glm::dvec3& baseColor, double metallic, double perceptualRoughness,
+                                          const Layers& layers) {
+    const double NoL = glm::dot(N, L);
+    if (NoL >= 0.0 || layers.transmission <= 0.0) return glm::dvec3(0.0);
+    const glm::dvec3 sum = V - 2.0 * NoL * N + L;
+    if (glm::length(sum) <= 1e-6) return glm::dvec3(0.0);
+    const glm::dvec3 H = glm::normalize(sum);
+    const double NoV = std::max(glm::dot(N, V), 1e-4);
+    const double NoH = glm::dot(N, H), VoH = glm::dot(V, H), LoH = glm::dot(L, H);
+    if (NoH <= 0.0 || LoH / NoL <= 0.0 || VoH / NoV <= 0.0) return glm::dvec3(0.0);
+    const double roughness = clampRoughness(perceptualRoughness * std::clamp(2.0 * layers.ior - 2.0, 0.0, 1.0));
+    const double a = roughness * roughness, a2 = a * a;
+    const double q = NoH * NoH * (a2 - 1.0) + 1.0;
+    const double D = a2 / (kPi * q * q);
+    const double absNoL = -NoL;
+    const double Vt = 1.0 / ((absNoL + std::sqrt(a2 + (1.0 - a2) * absNoL * absNoL)) * (NoV + std::sqrt(a2 + (1.0 - a2) * NoV * NoV)));
+    glm::dvec3 f0(0.04), f90(1.0);
+    if (layers.bits & kLayerSpecular) {
+        const double r = (layers.ior - 1.0) / (layers.ior + 1.0);
+        f0 = glm::min(r * r * layers.specularColor, glm::dvec3(1.0)) * layers.specular;
+        f90 = glm::dvec3(layers.specular);
+    }
+    const glm::dvec3 F = f0 + (f90 - f0) * std::pow(1.0 - VoH, 5.0);
+    const double maxF = std::max({F.x, F.y, F.z});
+    return layers.transmission * (1.0 - metallic) * (1.0 - maxF) * D * Vt * absNoL * baseColor;
+}
 
 // KHR_materials_anisotropy's material in the specification's form: the GGX lobe with
 // α_t = α + (1 − α) · strength² along T and α_b = α across (B = N × T),
@@ -217,6 +268,11 @@ inline glm::dvec3 brdfTimesCosineLayered(const glm::dvec3& N, const glm::dvec3& 
             ? brdfTimesCosineDielectric(N, V, L, baseColor, metallic, perceptualRoughness, model, layers.ior,
                                         layers.specular, layers.specularColor)
             : brdfTimesCosine(N, V, L, baseColor, metallic, perceptualRoughness, model);
+    if (layers.bits & kLayerTransmission) {
+        // The transmitted fraction of the diffuse lobe becomes the BTDF.
+        material += transmissionTimesCosine(N, V, L, baseColor, metallic, perceptualRoughness, layers) -
+                    layers.transmission * diffuseTimesCosine(N, V, L, baseColor, metallic, layers);
+    }
     if (layers.bits & kLayerSheen) {
         const double maxColor = std::max({layers.sheenColor.x, layers.sheenColor.y, layers.sheenColor.z});
         material = material * (1.0 - maxColor * std::min(layers.sheenAlbedo, 1.0)) +

@@ -450,6 +450,53 @@ TEST(GltfFeatures, AnisotropyExtension) {
     EXPECT_TRUE(scene.materials[1].tangentSpaceMap() == std::nullopt);
 }
 
+TEST(GltfFeatures, TransmissionAndVolumeExtensions) {
+    // Transmission (factor, linear texture, default 0: no layer), volume (thickness, its linear
+    // texture, attenuation; a volume without transmission or with thickness 0 is no layer), clamping
+    // and the specification's infinite default attenuation distance (0 here).
+    TempDir dir;
+    GltfBuilder b = texturedTriangle("", smallPng());
+    b.doc["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_volume"};
+    b.doc["materials"] = Json::array({
+        {{"extensions",
+          {{"KHR_materials_transmission", {{"transmissionFactor", 0.8}, {"transmissionTexture", {{"index", 0}}}}},
+           {"KHR_materials_volume",
+            {{"thicknessFactor", 2.5}, {"thicknessTexture", {{"index", 0}}}, {"attenuationDistance", 0.25},
+             {"attenuationColor", {1.0, 0.5, 0.25}}}}}}},
+        {{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}},
+        {{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                         {"KHR_materials_volume", {{"attenuationColor", {0.5, 0.5, 0.5}}}}}}},
+        {{"extensions", {{"KHR_materials_volume", {{"thicknessFactor", 1.0}}}}}},
+        {{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 3}}},
+                         {"KHR_materials_volume",
+                          {{"thicknessFactor", -1}, {"attenuationDistance", 0}, {"attenuationColor", {2, 0.5, -1}}}}}}}});
+    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    ASSERT_EQ(scene.materials.size(), 5u);
+    const Material& m = scene.materials[0];
+    EXPECT_FLOAT_EQ(m.transmissionFactor, 0.8f);
+    EXPECT_FLOAT_EQ(m.thicknessFactor, 2.5f);
+    EXPECT_FLOAT_EQ(m.attenuationDistance, 0.25f);
+    expectVec(m.attenuationColor, {1.0f, 0.5f, 0.25f});
+    ASSERT_TRUE(m.transmission.present() && m.thickness.present());
+    EXPECT_FALSE(scene.images.at(size_t(m.transmission.image)).srgb);
+    EXPECT_FALSE(scene.images.at(size_t(m.thickness.image)).srgb);
+    EXPECT_EQ(m.layers(), uint32_t(kLayerTransmission | kLayerVolume));
+    EXPECT_EQ(scene.materials[1].layers(), uint32_t(kLayerTransmission));  // thin-walled
+    EXPECT_FLOAT_EQ(scene.materials[1].attenuationDistance, 0.0f);          // infinite
+    EXPECT_EQ(scene.materials[2].layers(), uint32_t(kLayerTransmission));  // thickness 0: thin-walled
+    EXPECT_EQ(scene.materials[3].layers(), 0u);                            // a volume needs transmission
+    EXPECT_FLOAT_EQ(scene.materials[4].transmissionFactor, 1.0f);
+    EXPECT_FLOAT_EQ(scene.materials[4].thicknessFactor, 0.0f);
+    EXPECT_FLOAT_EQ(scene.materials[4].attenuationDistance, 0.0f);
+    expectVec(scene.materials[4].attenuationColor, {1.0f, 0.5f, 0.0f});
+    EXPECT_TRUE(hasWarning(scene, "transmissionFactor 3 is outside [0, 1] (using 1)"));
+    EXPECT_TRUE(hasWarning(scene, "thicknessFactor -1 is outside [0, inf] (using 0)"));
+    EXPECT_TRUE(hasWarning(scene, "attenuationDistance 0 is not > 0: no absorption"));
+    EXPECT_TRUE(hasWarning(scene, "attenuationColor 2 is outside [0, 1] (using 1)"));
+    EXPECT_TRUE(hasWarning(scene, "attenuationColor -1 is outside [0, 1] (using 0)"));
+    EXPECT_EQ(scene.warnings.size(), 5u);
+}
+
 TEST(GltfFeatures, SpecularGlossinessIsConvertedToTheSpecularLayer) {
     // diffuse → base colour (factor and sRGB texture), metallic 0, roughness = 1 − glossiness (a
     // derived texture from the specularGlossiness alpha), specular colour = specularFactor × the
