@@ -294,6 +294,10 @@ const ForwardPass::DrawTargets& ForwardPass::addDrawPass(RenderGraph& graph, std
                                                    .commit(ctx.context(), ctx.descriptors());
             VkCommandBuffer cmd = ctx.cmd();
             ctx.beginRendering();
+            if (items.empty()) {  // e.g. only transmissive draws: the pass just clears
+                ctx.endRendering();
+                return;
+            }
             const VkDeviceSize offset = 0;
             const VkBuffer rest = gpuScene->vertexBuffer();
             const VkBuffer deformedVertices = d.deformed.valid() ? ctx.buffer(d.deformed) : VK_NULL_HANDLE;

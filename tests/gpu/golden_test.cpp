@@ -111,6 +111,14 @@ const GoldenCase kCases[] = {
     // bottle (left): the two should look alike.
     {"ibl_spec_gloss_vs_metal_rough", "SpecGlossVsMetalRough/glTF/SpecGlossVsMetalRough.gltf", {0.0f, 90.0f, 0.0f},
      "studio_small_03_1k.hdr"},
+    // KHR_materials_transmission: thin-walled spheres (plain, masked, textured, rough, metallic) in
+    // front of a checkered backdrop, seen through the transmission background.
+    {"ibl_transmission_test", "TransmissionTest/glTF-Binary/TransmissionTest.glb", {0.0f, 90.0f, 1.1f},
+     "studio_small_03_1k.hdr"},
+    // KHR_materials_transmission with KHR_materials_volume and KHR_materials_ior: roughness 0 … 1
+    // (the background's mips) across, IOR 1 … 2.42 (the blur scales with it; none at IOR 1) down.
+    {"ibl_transmission_roughness_test", "TransmissionRoughnessTest/glTF-Binary/TransmissionRoughnessTest.glb",
+     {0.0f, 90.0f, 1.3f}, "studio_small_03_1k.hdr"},
     {"interpolation_test_t0_9", "InterpolationTest/glTF-Binary/InterpolationTest.glb", {0.0f, 90.0f, 20.0f}, "", 0.0f, "all", 0.9},
 };
 

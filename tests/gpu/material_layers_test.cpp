@@ -112,6 +112,101 @@ TEST_F(GpuTest, ClearcoatKeepsTheWhiteFurnace) {
 }
 
 
+// White furnace of the transmission: the furnace spheres made transmissive (weight 1, thin-walled,
+// and with a volume of thickness 0.5 and a white attenuation colour), roughness 0 … 1 across,
+// dielectric (bottom) and metal (top), seen over the skybox of a uniform environment of radiance 1
+// — so what lies behind each sphere (the transmission background: the sky) is 1 too, at every mip.
+// What the Lambert part of the dielectric loses is transmitted with the same weight
+// (shared/brdf_layers.h), so every interior pixel is 1 as without transmission. Interior pixels
+// from a frame of the same spheres without skybox. Metric and tolerances as the clearcoat's.
+TEST_F(GpuTest, TransmissionKeepsTheWhiteFurnace) {
+    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
+    const std::vector<Sphere> spheres = furnaceSpheres();
+    const scene::Scene opaque = sphereScene(spheres, 64, 32);
+    Renderer renderer(context());
+    const CapturedFrame coverage = renderer.capture(furnaceSettings(opaque, env));
+    for (float thickness : {0.0f, 0.5f}) {
+        SCOPED_TRACE(thickness == 0.0f ? "thin-walled" : "volume of thickness 0.5");
+        scene::Scene scene = opaque;
+        for (scene::Material& m : scene.materials) {
+            m.transmissionFactor = 1.0f;
+            m.thicknessFactor = thickness;
+        }
+        RenderSettings settings = furnaceSettings(scene, env);
+        settings.ibl.skybox = true;
+        const CapturedFrame frame = renderer.capture(settings);
+        ASSERT_EQ(frameProblem(frame), "");
+        EXPECT_TRUE(contains(renderer.explain(), thickness > 0.0f ? "pays for layers: transmission+volume"
+                                                                  : "pays for layers: transmission "));
+        EXPECT_TRUE(contains(renderer.explain(), "transmission: 'transmission_background'"));
+        std::vector<size_t> count(spheres.size(), 0);
+        double worst = 0.0, highest = -1.0;
+        for (const FurnacePixel& fp : furnacePixels(frame, scene, settings, spheres, &coverage)) {
+            ASSERT_GE(fp.sphere, 0) << "interior pixel (" << fp.x << ", " << fp.y << ") misses every sphere";
+            ++count[size_t(fp.sphere)];
+            for (int c = 0; c < 3; ++c) {
+                worst = std::max(worst, std::abs(double(fp.value[c]) - 1.0));
+                highest = std::max(highest, double(fp.value[c]) - 1.0);
+            }
+        }
+        for (size_t i = 0; i < spheres.size(); ++i) EXPECT_GT(count[i], 1000u) << "sphere " << i;
+        measured(thickness > 0.0f ? "transmissionVolumeFurnaceMaxAbsError" : "transmissionFurnaceMaxAbsError", worst);
+        measured(thickness > 0.0f ? "transmissionVolumeFurnaceMaxAboveOne" : "transmissionFurnaceMaxAboveOne", highest);
+        EXPECT_LE(worst, 0.02);
+        EXPECT_LE(highest, 1.0 / 1024.0);
+    }
+}
+
+// The stiff cases of transmission and volume, in one frame lit by the studio-like
+// environment, a point light behind the spheres and one in front: transmission roughness 0 and 1,
+// thickness 0 and 1e6 (the refracted ray leaves far behind the camera's view), attenuation distance
+// 1e-6 (all absorbed) and infinity, a black attenuation colour, IOR 1 and 10. Metric: every value of
+// the float frame finite and non-negative, alpha in [0, 1] (frameProblem); the volumes of distance
+// 1e-6 transmit nothing of what lies behind them (their pixels no brighter than the thin-walled ones).
+TEST_F(GpuTest, TransmissionExtremesStayFinite) {
+    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(0.5f, 0.7f, 1.0f));
+    const std::vector<Sphere> spheres = furnaceSpheres();
+    scene::Scene scene = sphereScene(spheres, 64, 32);
+    for (size_t i = 0; i < spheres.size(); ++i) {
+        scene::Material& m = scene.materials[i];
+        m.metallicFactor = 0.0f;
+        m.transmissionFactor = 1.0f;
+        m.roughnessFactor = i % 2 == 0 ? 0.0f : 1.0f;
+        m.ior = i % 3 == 0 ? 1.0f : (i % 3 == 1 ? 10.0f : 1.5f);
+        m.thicknessFactor = i < 3 ? 0.0f : (i < 6 ? 1e6f : 1.0f);
+        m.attenuationDistance = i % 4 == 0 ? 1e-6f : 0.0f;  // 0: infinite
+        m.attenuationColor = i % 5 == 0 ? glm::vec3(0.0f) : glm::vec3(0.5f, 0.8f, 1.0f);
+    }
+    scene::Light behind, front;
+    behind.position = glm::vec3(0.0f, 0.0f, -6.0f);
+    behind.intensity = 1e5f;
+    front.position = glm::vec3(2.0f, 3.0f, 8.0f);
+    front.intensity = 50.0f;
+    scene.lights = {behind, front};
+    Renderer renderer(context());
+    RenderSettings settings = furnaceSettings(scene, env);
+    settings.ibl.skybox = true;
+    const CapturedFrame frame = renderer.capture(settings);
+    EXPECT_EQ(frameProblem(frame), "");
+    EXPECT_TRUE(contains(renderer.explain(), "transmission+volume"));
+    // The throughput (debug view `transmission`): none through 1e6 of a medium of attenuation
+    // distance 1e-6 (sphere 4), some through the thin walls (sphere 1).
+    settings.debugView = passes::DebugView::Transmission;
+    const CapturedFrame throughput = renderer.capture(settings);
+    EXPECT_EQ(frameProblem(throughput), "");
+    settings.debugView = passes::DebugView::None;
+    settings.ibl.skybox = false;
+    const CapturedFrame coverage = renderer.capture(settings);
+    float absorbed = 0.0f, thin = 1.0f;
+    for (const FurnacePixel& fp : furnacePixels(throughput, scene, settings, spheres, &coverage)) {
+        const float brightest = std::max({fp.value.r, fp.value.g, fp.value.b});
+        if (fp.sphere == 4) absorbed = std::max(absorbed, brightest);
+        if (fp.sphere == 1) thin = std::min(thin, brightest);
+    }
+    EXPECT_EQ(absorbed, 0.0f);
+    EXPECT_GT(thin, 0.05f);
+}
+
 // The sheen albedo LUT (ibl_sheen_lut.comp, a midpoint quadrature over the half vector) against
 // E(N·V, r) = ∫ f_sheen · N·L dω of the double-precision sheen reference, integrated over the half
 // vector on a 16× finer grid in cos θ_h and 8× in φ, at 20 texels (N·V 0 … 1, roughness 0 … 1).

@@ -193,12 +193,14 @@ struct FurnacePixel {
     glm::vec4 value;
 };
 
-// The interior pixels of `frame` (covered, and no uncovered pixel within 2 px), rendered of
-// `scene` with `settings`, each with the sphere of `spheres` its ray hits.
+// The interior pixels of `frame` (covered, and no uncovered pixel within 2 px — in `coverage`, when
+// given: a frame of the same geometry whose alpha is its coverage, for frames drawn over a skybox),
+// rendered of `scene` with `settings`, each with the sphere of `spheres` its ray hits.
 inline std::vector<FurnacePixel> furnacePixels(const CapturedFrame& frame, const scene::Scene& scene,
-                                               const RenderSettings& settings, const std::vector<Sphere>& spheres) {
+                                               const RenderSettings& settings, const std::vector<Sphere>& spheres,
+                                               const CapturedFrame* coverage = nullptr) {
     const scene::ViewSetup view = Renderer::resolveView(scene, settings.camera, float(frame.width) / float(frame.height));
-    const std::vector<bool> interior = interiorMask(frame, 2);
+    const std::vector<bool> interior = interiorMask(coverage ? *coverage : frame, 2);
     std::vector<FurnacePixel> out;
     for (uint32_t y = 0; y < frame.height; ++y)
         for (uint32_t x = 0; x < frame.width; ++x)
