@@ -792,6 +792,32 @@ std::vector<Row> catalogue() {
           "KHR_materials_anisotropy.anisotropyRotation: expected a number, got the string \"1\"");
     warning("material layers", "AnisotropyStrengthNegative", layered({{"KHR_materials_anisotropy", {{"anisotropyStrength", -1}}}}),
             "anisotropyStrength -1 is outside [0, 1] (using 0)", true);
+    // KHR_materials_transmission and KHR_materials_volume.
+    loads("material layers", "TransmissionVolumeFactorsOnly",
+          layered({{"KHR_materials_transmission", {{"transmissionFactor", 1}}},
+                   {"KHR_materials_volume", {{"thicknessFactor", 0.5}, {"attenuationDistance", 2}, {"attenuationColor", {1, 0.5, 0.2}}}}}));
+    error("material layers", "TransmissionFactorString", layered({{"KHR_materials_transmission", {{"transmissionFactor", "1"}}}}),
+          "KHR_materials_transmission.transmissionFactor: expected a number, got the string \"1\"");
+    error("material layers", "TransmissionTextureMissing",
+          layered({{"KHR_materials_transmission", {{"transmissionFactor", 1}, {"transmissionTexture", {{"index", 5}}}}}}),
+          "transmissionTexture: texture 5 does not exist");
+    error("material layers", "AttenuationColorTwoComponents",
+          layered({{"KHR_materials_transmission", {{"transmissionFactor", 1}}},
+                   {"KHR_materials_volume", {{"attenuationColor", {1, 1}}}}}),
+          "KHR_materials_volume.attenuationColor: expected an array of 3 numbers");
+    error("material layers", "ThicknessTextureMissing",
+          layered({{"KHR_materials_transmission", {{"transmissionFactor", 1}}},
+                   {"KHR_materials_volume", {{"thicknessFactor", 1}, {"thicknessTexture", {{"index", 4}}}}}}),
+          "thicknessTexture: texture 4 does not exist");
+    warning("material layers", "TransmissionAboveOne", layered({{"KHR_materials_transmission", {{"transmissionFactor", 2}}}}),
+            "transmissionFactor 2 is outside [0, 1] (using 1)", true);
+    warning("material layers", "ThicknessNegative",
+            layered({{"KHR_materials_transmission", {{"transmissionFactor", 1}}}, {"KHR_materials_volume", {{"thicknessFactor", -2}}}}),
+            "thicknessFactor -2 is outside [0, inf] (using 0)", true);
+    warning("material layers", "AttenuationDistanceZero",
+            layered({{"KHR_materials_transmission", {{"transmissionFactor", 1}}},
+                     {"KHR_materials_volume", {{"thicknessFactor", 1}, {"attenuationDistance", 0}}}}),
+            "attenuationDistance 0 is not > 0: no absorption", true);
     // KHR_materials_pbrSpecularGlossiness and KHR_materials_variants.
     loads("material layers", "SpecularGlossinessFactorsOnly",
           layered({{"KHR_materials_pbrSpecularGlossiness", {{"diffuseFactor", {0.8, 0.2, 0.2, 1}}, {"glossinessFactor", 0.6}}}}));
