@@ -5,7 +5,7 @@
 // a = the combination's linear index (y · width + x), so a test can check every value against its
 // double-precision reference and that both sides enumerated the same combination. With kLayers,
 // the Cook-Torrance models evaluate the layers of the push constants (shared/brdf_layers.h: the
-// specular layer, the anisotropy, the transmission, the sheen, the clearcoat) with the function the forward pass's layered program uses;
+// specular layer, the thin film, the anisotropy, the transmission, the sheen, the clearcoat) with the function the forward pass's layered program uses;
 // Blinn-Phong stays the core's there too.
 #include "shared/brdf_layers.h"
 #include "shared/brdf_probe.h"
@@ -32,6 +32,9 @@ void main() {
         DielectricFresnel d = (params.layers & CANDELA_LAYER_SPECULAR) != 0u
                                   ? dielectricFresnel(params.ior, params.specularColor.rgb, params.specular)
                                   : coreDielectricFresnel();
+        if ((params.layers & CANDELA_LAYER_IRIDESCENCE) != 0u)
+            d = withThinFilm(d, params.iridescence.x, params.iridescence.y, params.iridescence.z, params.iridescence.w,
+                             clamp(dot(s.N, s.V), CANDELA_MIN_NOV, 1.0f), s.baseColor);
         Clearcoat coat = clearcoatLayer(params.clearcoat, params.clearcoatRoughness, params.clearcoatNormal.xyz, s.V);
         Sheen sheen = sheenLayer(params.sheenColor.rgb, params.sheenRoughness, params.sheenAlbedo);
         Anisotropy an = anisotropyLayer(params.anisotropy.w, params.anisotropy.xyz, cross(s.N, params.anisotropy.xyz));

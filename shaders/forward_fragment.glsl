@@ -61,6 +61,8 @@ layout(set = 1, binding = 12) uniform sampler2D sheenRoughnessTexture;
 layout(set = 1, binding = 13) uniform sampler2D anisotropyTexture;
 layout(set = 1, binding = 14) uniform sampler2D transmissionTexture;
 layout(set = 1, binding = 15) uniform sampler2D thicknessTexture;
+layout(set = 1, binding = 16) uniform sampler2D iridescenceTexture;
+layout(set = 1, binding = 17) uniform sampler2D iridescenceThicknessTexture;
 // The layers' maps (set 3, the layered program only; placeholders where the frame has none): the
 // sheen albedo LUT E(N·V, sheen roughness), the Charlie-prefiltered environment, and what lies
 // behind the transmissive draws (the opaque image, mip m box-filtered 2^m × 2^m; passes/
@@ -168,12 +170,26 @@ vec2 layerUv(int slot) {
     return (slot & 1) == 0 ? pair.xy : pair.zw;
 }
 
+// The thin film's thickness in nm (KHR_materials_iridescence: the maximum without a texture).
+float gFilmThickness = 0.0f;
+
 // Specialization-constant branches only: uniform, so the samples inside keep their derivatives.
-DielectricFresnel layerDielectric(MaterialLayerData layer) {
-    if (!hasLayer(CANDELA_LAYER_SPECULAR)) return coreDielectricFresnel();
-    float specular = layer.specular * texture(specularTexture, layerUv(CANDELA_LAYER_TEX_SPECULAR)).a;
-    vec3 color = layer.specularColor * texture(specularColorTexture, layerUv(CANDELA_LAYER_TEX_SPECULAR_COLOR)).rgb;
-    return dielectricFresnel(layer.ior, color, specular);
+// The dielectric Fresnel (the specular layer's or the core's) with the thin film at N·V over it and
+// over the metal's `baseColor`, seen from the coat's IOR where `coat` covers it.
+DielectricFresnel layerDielectric(MaterialLayerData layer, float NoV, vec3 baseColor, float coat) {
+    DielectricFresnel d = coreDielectricFresnel();
+    if (hasLayer(CANDELA_LAYER_SPECULAR)) {
+        float specular = layer.specular * texture(specularTexture, layerUv(CANDELA_LAYER_TEX_SPECULAR)).a;
+        vec3 color = layer.specularColor * texture(specularColorTexture, layerUv(CANDELA_LAYER_TEX_SPECULAR_COLOR)).rgb;
+        d = dielectricFresnel(layer.ior, color, specular);
+    }
+    if (hasLayer(CANDELA_LAYER_IRIDESCENCE)) {
+        float weight = clamp(layer.iridescence * texture(iridescenceTexture, layerUv(CANDELA_LAYER_TEX_IRIDESCENCE)).r, 0.0f, 1.0f);
+        float g = texture(iridescenceThicknessTexture, layerUv(CANDELA_LAYER_TEX_IRIDESCENCE_THICKNESS)).g;
+        gFilmThickness = max(mix(layer.iridescenceThicknessMinimum, layer.iridescenceThicknessMaximum, g), 0.0f);
+        d = withThinFilm(d, weight, max(layer.iridescenceIor, 1.0f), gFilmThickness, 1.0f + 0.5f * coat, NoV, baseColor);
+    }
+    return d;
 }
 
 // The coat on the faced normal `faced` (its own normal map, if any; not the material's).
@@ -325,7 +341,7 @@ BrdfLobes imageBasedLight(MaterialData m, vec3 n, vec3 v, vec3 baseColor, float 
 #ifdef CANDELA_MATERIAL_LAYERS
     // Transmission takes its share of the Lambert part (the rest of it is the light from behind,
     // added in main with or without an environment).
-    if (hasLayer(CANDELA_LAYER_SPECULAR) || hasLayer(CANDELA_LAYER_TRANSMISSION))
+    if (hasLayer(CANDELA_LAYER_SPECULAR) || hasLayer(CANDELA_LAYER_TRANSMISSION) || hasLayer(CANDELA_LAYER_IRIDESCENCE))
         light = iblShadeLobesDielectric(prefiltered, irradiance, lut, baseColor, metallic, gDielectric, kMultiscatter, ao,
                                         specularOcclusion(NoV, ao, roughness), 1.0f - gTransmission.weight);
     else
@@ -471,7 +487,8 @@ vec3 termTowardFirstLight(vec3 n, vec3 v, vec3 baseColor, float metallic, float 
     if (kDebugView == CANDELA_DEBUG_D) return vec3(distributionGgx(NoH, dot(NxH, NxH), a) * CANDELA_PI * a * a);
     if (kDebugView == CANDELA_DEBUG_G) return vec3(visibilitySmithGgxCorrelated(NoV, NoL, a) * 4.0f * NoL * NoV);
 #ifdef CANDELA_MATERIAL_LAYERS
-    if (hasLayer(CANDELA_LAYER_SPECULAR)) return fresnelDielectricMetal(clamp(dot(v, h), 0.0f, 1.0f), baseColor, metallic, gDielectric);
+    if (hasLayer(CANDELA_LAYER_SPECULAR) || hasLayer(CANDELA_LAYER_IRIDESCENCE))
+        return fresnelDielectricMetal(clamp(dot(v, h), 0.0f, 1.0f), baseColor, metallic, gDielectric);
 #endif
     return fresnelSchlick(clamp(dot(v, h), 0.0f, 1.0f), mix(vec3(0.04f), baseColor, metallic));
 }
@@ -494,8 +511,9 @@ void main() {
     vec3 v = normalize(push.eye.xyz - inWorldPosition);
 #ifdef CANDELA_MATERIAL_LAYERS
     MaterialLayerData layer = layers[draws[push.counts.y].material.x];
-    gDielectric = layerDielectric(layer);
     gCoat = layerClearcoat(layer, facedNormal(), v);
+    gDielectric = layerDielectric(layer, clamp(dot(n, v), CANDELA_MIN_NOV, 1.0f), baseColor.rgb,
+                                  hasLayer(CANDELA_LAYER_CLEARCOAT) ? gCoat.weight : 0.0f);
     gSheen = layerSheen(layer, n, v);
     gAnisotropy = layerAnisotropy(layer, n);
     gTransmission = layerTransmission(layer, roughness);
@@ -582,6 +600,16 @@ void main() {
         else if (kDebugView == CANDELA_DEBUG_CLEARCOAT) value = coatLight;
         else if (kDebugView == CANDELA_DEBUG_SHEEN) value = sheenLight;
         else if (kDebugView == CANDELA_DEBUG_TRANSMISSION) value = asData(throughput);
+        else if (kDebugView == CANDELA_DEBUG_IRIDESCENCE_THICKNESS || kDebugView == CANDELA_DEBUG_IRIDESCENCE_FRESNEL) {
+#ifdef CANDELA_MATERIAL_LAYERS
+            // The film's thickness in µm as grey (1 µm white), and the Fresnel it gives at N·V (the
+            // material's, dielectric and metal mixed, with the film at its weight); black without a film.
+            if (hasLayer(CANDELA_LAYER_IRIDESCENCE) && gDielectric.film > 0.0f) {
+                if (kDebugView == CANDELA_DEBUG_IRIDESCENCE_THICKNESS) value = asData(vec3(gFilmThickness * 1e-3f));
+                else value = asData(fresnelDielectricMetal(clamp(dot(n, v), 0.0f, 1.0f), baseColor.rgb, metallic, gDielectric));
+            }
+#endif
+        }
         else if (kDebugView == CANDELA_DEBUG_ANISOTROPY) {
 #ifdef CANDELA_MATERIAL_LAYERS
             // T as n·0.5+0.5, scaled by the strength; black without anisotropy.

@@ -6,7 +6,8 @@
 // (punctual + environment). Material layers (docs/materials.md): the light the clearcoat reflects
 // and the coat's normal (black where there is no coat), the light the sheen reflects, the
 // anisotropy direction (scaled by its strength), the transmission's throughput (the fraction of the
-// light behind the surface that comes through, per channel). Names only: no Vulkan (the command-line
+// light behind the surface that comes through, per channel), the thin film's thickness and the
+// Fresnel it gives. Names only: no Vulkan (the command-line
 // parser uses them).
 
 #include <cstdint>
@@ -19,7 +20,7 @@ namespace candela::passes {
 
 enum class DebugView : uint32_t {
     None = 0, BaseColor, GeometricNormal, MappedNormal, Roughness, Metallic, Occlusion, Emissive, D, G, F, Diffuse, Specular,
-    Clearcoat, ClearcoatNormal, Sheen, Anisotropy, Transmission
+    Clearcoat, ClearcoatNormal, Sheen, Anisotropy, Transmission, IridescenceThickness, IridescenceFresnel
 };
 
 inline constexpr std::pair<DebugView, const char*> kDebugViewNames[] = {
@@ -40,7 +41,9 @@ inline constexpr std::pair<DebugView, const char*> kDebugViewNames[] = {
     {DebugView::ClearcoatNormal, "clearcoat-normal"},
     {DebugView::Sheen, "sheen"},
     {DebugView::Anisotropy, "anisotropy-direction"},
-    {DebugView::Transmission, "transmission"}};
+    {DebugView::Transmission, "transmission"},
+    {DebugView::IridescenceThickness, "iridescence-thickness"},
+    {DebugView::IridescenceFresnel, "iridescence-fresnel"}};
 
 // The names above; nullopt for anything else.
 inline std::optional<DebugView> parseDebugView(std::string_view name) {

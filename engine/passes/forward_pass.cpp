@@ -14,11 +14,13 @@ using namespace graph;
 static_assert(uint32_t(DebugView::Specular) == CANDELA_DEBUG_SPECULAR && uint32_t(DebugView::D) == CANDELA_DEBUG_D);
 static_assert(uint32_t(DebugView::ClearcoatNormal) == CANDELA_DEBUG_CLEARCOAT_NORMAL &&
               uint32_t(DebugView::Sheen) == CANDELA_DEBUG_SHEEN && uint32_t(DebugView::Anisotropy) == CANDELA_DEBUG_ANISOTROPY &&
-              uint32_t(DebugView::Transmission) == CANDELA_DEBUG_TRANSMISSION);
+              uint32_t(DebugView::Transmission) == CANDELA_DEBUG_TRANSMISSION &&
+              uint32_t(DebugView::IridescenceThickness) == CANDELA_DEBUG_IRIDESCENCE_THICKNESS &&
+              uint32_t(DebugView::IridescenceFresnel) == CANDELA_DEBUG_IRIDESCENCE_FRESNEL);
 static_assert(scene::kLayerSpecular == CANDELA_LAYER_SPECULAR && scene::kLayerClearcoat == CANDELA_LAYER_CLEARCOAT &&
               scene::kLayerClearcoatNormal == CANDELA_LAYER_CLEARCOAT_NORMAL && scene::kLayerSheen == CANDELA_LAYER_SHEEN &&
               scene::kLayerAnisotropy == CANDELA_LAYER_ANISOTROPY && scene::kLayerTransmission == CANDELA_LAYER_TRANSMISSION &&
-              scene::kLayerVolume == CANDELA_LAYER_VOLUME);
+              scene::kLayerVolume == CANDELA_LAYER_VOLUME && scene::kLayerIridescence == CANDELA_LAYER_IRIDESCENCE);
 
 namespace {
 
@@ -123,7 +125,7 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene) {
     static constexpr const char* kLayerSlots[CANDELA_LAYER_TEX_COUNT] = {
         "specularTexture",  "specularColorTexture",   "clearcoatTexture",     "clearcoatRoughnessTexture",
         "clearcoatNormalTexture", "sheenColorTexture", "sheenRoughnessTexture", "anisotropyTexture",
-        "transmissionTexture", "thicknessTexture"};
+        "transmissionTexture", "thicknessTexture", "iridescenceTexture", "iridescenceThicknessTexture"};
     for (uint32_t material = 0; material < gpuScene.scene().materials.size(); ++material) {
         // A layered material's set follows the layered program's layout: its core textures, then
         // every material's layer parameters and its own layer textures.

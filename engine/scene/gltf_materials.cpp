@@ -118,6 +118,8 @@ std::set<std::pair<int, bool>> imageUses(const tinygltf::Model& model) {
         add(index("KHR_materials_anisotropy", "anisotropyTexture"), false);
         add(index("KHR_materials_transmission", "transmissionTexture"), false);
         add(index("KHR_materials_volume", "thicknessTexture"), false);
+        add(index("KHR_materials_iridescence", "iridescenceTexture"), false);
+        add(index("KHR_materials_iridescence", "iridescenceThicknessTexture"), false);
         add(index("KHR_materials_pbrSpecularGlossiness", "diffuseTexture"), true);
         add(index("KHR_materials_pbrSpecularGlossiness", "specularGlossinessTexture"), true);
     }
@@ -253,6 +255,23 @@ void loadTransmission(const LoadContext& ctx, const tinygltf::Model& model, Imag
     }
 }
 
+// KHR_materials_iridescence into `out`.
+void loadIridescence(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
+                     const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+    const tinygltf::Value* found = findExtension(extensions, "KHR_materials_iridescence");
+    if (!found) return;
+    const tinygltf::Value& e = *found;
+    if (auto factor = number(e, "iridescenceFactor"))
+        out.iridescenceFactor = clampedFactor(ctx, *factor, 0.0, 1.0, what + " iridescenceFactor");
+    if (auto ior = number(e, "iridescenceIor")) out.iridescenceIor = clampedFactor(ctx, *ior, 1.0, INFINITY, what + " iridescenceIor");
+    if (auto minimum = number(e, "iridescenceThicknessMinimum"))
+        out.iridescenceThicknessMinimum = clampedFactor(ctx, *minimum, 0.0, INFINITY, what + " iridescenceThicknessMinimum");
+    if (auto maximum = number(e, "iridescenceThicknessMaximum"))
+        out.iridescenceThicknessMaximum = clampedFactor(ctx, *maximum, 0.0, INFINITY, what + " iridescenceThicknessMaximum");
+    out.iridescence = extensionTexture(ctx, model, images, e, "iridescenceTexture", false, what);
+    out.iridescenceThickness = extensionTexture(ctx, model, images, e, "iridescenceThicknessTexture", false, what);
+}
+
 // A copy of image `source` whose G channel holds 1 − glossiness · A (roughness, as the
 // metallic-roughness texture's G), B = 0 (metallic) and R, A = 255; appended to scene.images once
 // per (image, glossiness) through `made`.
@@ -375,6 +394,7 @@ void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTa
         loadSheen(ctx, model, images, m.extensions, out, what);
         loadAnisotropy(ctx, model, images, m.extensions, out, what);
         loadTransmission(ctx, model, images, m.extensions, out, what);
+        loadIridescence(ctx, model, images, m.extensions, out, what);
 
         out.baseColor = textureRef(ctx, model, images, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
                                    pbr.baseColorTexture.extensions, true, what + " baseColorTexture");

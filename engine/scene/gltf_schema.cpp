@@ -207,6 +207,13 @@ void checkDocument(const Checker& c, const Json& root) {
                                              {{"thicknessFactor", Kind::Number}, {"attenuationDistance", Kind::Number},
                                               {"attenuationColor", Kind::NumberArray, 3}}))
                 c.textureInfo(*volume, pe + ".KHR_materials_volume", "thicknessTexture");
+            if (const Json* film = c.child(*ext, pe, "KHR_materials_iridescence",
+                                           {{"iridescenceFactor", Kind::Number}, {"iridescenceIor", Kind::Number},
+                                            {"iridescenceThicknessMinimum", Kind::Number},
+                                            {"iridescenceThicknessMaximum", Kind::Number}})) {
+                c.textureInfo(*film, pe + ".KHR_materials_iridescence", "iridescenceTexture");
+                c.textureInfo(*film, pe + ".KHR_materials_iridescence", "iridescenceThicknessTexture");
+            }
             if (const Json* sg = c.child(*ext, pe, "KHR_materials_pbrSpecularGlossiness",
                                          {{"diffuseFactor", Kind::NumberArray, 4}, {"specularFactor", Kind::NumberArray, 3},
                                           {"glossinessFactor", Kind::Number}})) {

@@ -66,7 +66,8 @@ MaterialData materialData(const Material& m) {
 // The material's layer textures in slot order (CANDELA_LAYER_TEX_*).
 std::array<const TextureRef*, CANDELA_LAYER_TEX_COUNT> layerTextures(const Material& m) {
     return {&m.specular,       &m.specularColor, &m.clearcoat,      &m.clearcoatRoughness, &m.clearcoatNormal,
-            &m.sheenColor,     &m.sheenRoughness, &m.anisotropy,    &m.transmission,       &m.thickness};
+            &m.sheenColor,     &m.sheenRoughness, &m.anisotropy,    &m.transmission,       &m.thickness,
+            &m.iridescence,    &m.iridescenceThickness};
 }
 
 MaterialLayerData materialLayerData(const Material& m) {
@@ -86,6 +87,10 @@ MaterialLayerData materialLayerData(const Material& m) {
     out.thickness = m.thicknessFactor;
     out.attenuationColor = m.attenuationColor;
     out.attenuationDistance = m.attenuationDistance;
+    out.iridescence = m.iridescenceFactor;
+    out.iridescenceIor = m.iridescenceIor;
+    out.iridescenceThicknessMinimum = m.iridescenceThicknessMinimum;
+    out.iridescenceThicknessMaximum = m.iridescenceThicknessMaximum;
     const auto textures = layerTextures(m);
     for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) out.uv[slot] = uvTransform(*textures[slot]);
     return out;

@@ -149,6 +149,16 @@ struct Material {
     glm::vec3 attenuationColor{1.0f};
     float attenuationDistance = 0.0f;
 
+    // KHR_materials_iridescence: a thin film over the material, weight iridescenceFactor · texture
+    // (R), IOR iridescenceIor, thickness mix(minimum, maximum, thickness texture G) nm (the maximum
+    // without a texture). Factor 0 (the default): no film.
+    float iridescenceFactor = 0.0f;
+    float iridescenceIor = 1.3f;
+    float iridescenceThicknessMinimum = 100.0f;
+    float iridescenceThicknessMaximum = 400.0f;
+    TextureRef iridescence;           // linear, R channel
+    TextureRef iridescenceThickness;  // linear, G channel
+
     // The layers beyond the core model this material uses (MaterialLayer bits): only those are
     // evaluated for it (see docs/materials.md).
     uint32_t layers() const;
@@ -181,13 +191,15 @@ enum MaterialLayer : uint32_t {
     // A volume beneath the transmitting surface (KHR_materials_volume with a thickness): refraction
     // through it and absorption along it.
     kLayerVolume = 1u << 6,
+    // A thin film (KHR_materials_iridescence with a non-zero factor) changing the Fresnel term.
+    kLayerIridescence = 1u << 7,
 };
 
 // The names of the layers in `layers` (MaterialLayer bits), in bit order: "specular", "clearcoat",
-// "clearcoat-normal-map", "sheen", "anisotropy", "transmission", "volume".
+// "clearcoat-normal-map", "sheen", "anisotropy", "transmission", "volume", "iridescence".
 inline std::vector<std::string_view> layerNames(uint32_t layers) {
-    constexpr std::string_view kNames[] = {"specular", "clearcoat",    "clearcoat-normal-map", "sheen",
-                                           "anisotropy", "transmission", "volume"};
+    constexpr std::string_view kNames[] = {"specular",   "clearcoat",    "clearcoat-normal-map", "sheen",
+                                           "anisotropy", "transmission", "volume",               "iridescence"};
     std::vector<std::string_view> out;
     for (uint32_t bit = 0; bit < std::size(kNames); ++bit)
         if (layers & (1u << bit)) out.push_back(kNames[bit]);
@@ -209,6 +221,10 @@ inline uint32_t Material::layers() const {
     // surface, and thickness 0 is thin-walled (no refraction, no absorption).
     if (transmissionFactor > 0.0f)
         out |= kLayerTransmission | (thicknessFactor > 0.0f ? kLayerVolume : 0u);
+    // The specification: factor 0 disables the film. A film of thickness 0 everywhere is none either.
+    const bool filmAnywhere =
+        iridescenceThicknessMaximum > 0.0f || (iridescenceThickness.present() && iridescenceThicknessMinimum > 0.0f);
+    if (iridescenceFactor > 0.0f && filmAnywhere) out |= kLayerIridescence;
     return out;
 }
 

@@ -39,6 +39,13 @@
 // weight 1 − max(F_d) is taken at V·H_T. Light reaches it from behind the surface only (N·L < 0).
 // KHR_materials_volume adds refraction through a thickness and Beer-Lambert absorption along it
 // (the forward pass's geometry: volumeTransmittance).
+//
+// Iridescence (KHR_materials_iridescence): a thin film over the material changes its Fresnel term,
+//   F = mix(F_schlick, F_film, iridescence)  for the dielectric part (F_film over f0) and the metal
+//   (F_film over baseColor),
+// F_film the specification's approximation of Belcour & Barla 2017 (two interfaces with Schlick
+// Fresnel, the first-order phase shift, the analytic spectral integration in XYZ). Evaluated once
+// per shading point at N·V, as the Khronos sample viewer does (the same value for every light).
 #ifndef CANDELA_SHARED_BRDF_LAYERS_H
 #define CANDELA_SHARED_BRDF_LAYERS_H
 
@@ -52,10 +59,16 @@ CANDELA_NAMESPACE_BEGIN
 // incidence.
 // 1 − f0 is kept apart, computed without cancellation: near f0 = 1 (large IORs, IOR 0) the diffuse
 // weight 1 − F would otherwise lose all its digits in float.
+// With iridescence, the thin film's Fresnel at N·V over the dielectric (filmDielectric, and 1 minus it
+// without cancellation) and over the metal (filmMetal), mixed in with weight `film` (0: none).
 struct DielectricFresnel {
     vec3 f0;
     float f90;
     vec3 oneMinusF0;
+    float film;
+    vec3 filmDielectric;
+    vec3 filmOneMinusDielectric;
+    vec3 filmMetal;
 };
 
 // The core material's: IOR 1.5 (f0 = 0.04), f90 = 1.
@@ -64,6 +77,10 @@ CANDELA_FN DielectricFresnel coreDielectricFresnel() {
     d.f0 = vec3(0.04f);
     d.f90 = 1.0f;
     d.oneMinusF0 = vec3(0.96f);
+    d.film = 0.0f;
+    d.filmDielectric = vec3(0.0f);
+    d.filmOneMinusDielectric = vec3(1.0f);
+    d.filmMetal = vec3(0.0f);
     return d;
 }
 
@@ -80,21 +97,11 @@ CANDELA_FN DielectricFresnel dielectricFresnel(float ior, vec3 specularColor, fl
     d.f0 = min(vec3(r2) * specularColor, vec3(1.0f)) * specular;
     d.f90 = specular;
     d.oneMinusF0 = vec3(1.0f - specular) + specular * oneMinusClamped;
+    d.film = 0.0f;
+    d.filmDielectric = vec3(0.0f);
+    d.filmOneMinusDielectric = vec3(1.0f);
+    d.filmMetal = vec3(0.0f);
     return d;
-}
-
-CANDELA_FN float minComponent(vec3 c) { return min(c.x, min(c.y, c.z)); }
-
-// 1 − F_d at Schlick weight w: (1 − f0)(1 − w) + (1 − f90) w, from the cancellation-free 1 − f0.
-CANDELA_FN vec3 oneMinusFresnelDielectric(float w, DielectricFresnel d) {
-    return d.oneMinusF0 * (1.0f - w) + vec3((1.0f - d.f90) * w);
-}
-
-// Schlick's weight (1 − V·H)⁵.
-CANDELA_FN float schlickWeight(float VoH) {
-    float x = 1.0f - clamp(VoH, 0.0f, 1.0f);
-    float x2 = x * x;
-    return x2 * x2 * x;
 }
 
 // 1 − (1 − V·H)⁵ as V·H (1 + x + x² + x³ + x⁴), x = 1 − V·H: no cancellation at small V·H (grazing
@@ -106,15 +113,144 @@ CANDELA_FN float schlickComplement(float VoH) {
     return c * (1.0f + x + x2 + x2 * x + x2 * x2);
 }
 
-// The dielectric Fresnel at V·H.
+// ---- Iridescence (the thin film) ----
+
+// The XYZ colour matching functions' Fourier transform at optical path difference `opd` (nm) with
+// phase shift `shift`, as Rec. 709 RGB (the specification's Gaussian fit).
+CANDELA_FN vec3 filmSensitivity(float opd, vec3 shift) {
+    float phase = 2.0f * CANDELA_PI * opd * 1.0e-9f;
+    vec3 val = vec3(5.4856e-13f, 4.4201e-13f, 5.2481e-13f);
+    vec3 pos = vec3(1.6810e+06f, 1.7953e+06f, 2.2084e+06f);
+    vec3 var = vec3(4.3278e+09f, 9.3046e+09f, 6.6121e+09f);
+    vec3 xyz = val * sqrt(2.0f * CANDELA_PI * var) * cos(pos * phase + shift) * exp(-(phase * phase) * var);
+    xyz.x += 9.7470e-14f * sqrt(2.0f * CANDELA_PI * 4.5282e+09f) * cos(2.2399e+06f * phase + shift.x) *
+             exp(-4.5282e+09f * (phase * phase));
+    xyz = xyz * (1.0f / 1.0685e-7f);
+    return vec3(3.2404542f * xyz.x - 1.5371385f * xyz.y - 0.4985314f * xyz.z,
+                -0.9692660f * xyz.x + 1.8760108f * xyz.y + 0.0415560f * xyz.z,
+                0.0556434f * xyz.x - 0.2040259f * xyz.y + 1.0572252f * xyz.z);
+}
+
+CANDELA_FN float filmSchlick(float r0, float cosTheta) {
+    float x = 1.0f - clamp(cosTheta, 0.0f, 1.0f);
+    float x2 = x * x;
+    return r0 + (1.0f - r0) * (x2 * x2 * x);
+}
+CANDELA_FN vec3 filmSchlick(vec3 r0, float cosTheta) {
+    float x = 1.0f - clamp(cosTheta, 0.0f, 1.0f);
+    float x2 = x * x;
+    return r0 + (vec3(1.0f) - r0) * (x2 * x2 * x);
+}
+
+// The Fresnel reflectance of a thin film and 1 minus it, each computed without cancellation (at
+// grazing views the reflectance nears 1 and 1 − it would keep no digit).
+struct ThinFilm {
+    vec3 reflectance;
+    vec3 oneMinusReflectance;
+};
+
+CANDELA_FN ThinFilm thinFilm(vec3 reflectance, vec3 oneMinusReflectance) {
+    ThinFilm f;
+    f.reflectance = reflectance;
+    f.oneMinusReflectance = oneMinusReflectance;
+    return f;
+}
+
+// The thin film of IOR `filmIor` and `thickness` nm between a medium of IOR `outsideIor` and a base
+// of normal reflectance `baseF0`, at cos θ₁ = `cosTheta1` — the specification's implementation notes,
+// with the base's IOR from min(baseF0, 0.9999) (their "+ 0.0001" guard would turn an F0 of 1 into a
+// negative IOR). Thickness 0 (no film): Schlick's Fresnel of the base.
+CANDELA_FN ThinFilm thinFilmFresnel(float outsideIor, float filmIor, float cosTheta1, float thickness, vec3 baseF0) {
+    if (thickness <= 0.0f)
+        return thinFilm(filmSchlick(baseF0, cosTheta1), (vec3(1.0f) - baseF0) * schlickComplement(cosTheta1));
+    float ratio = outsideIor / filmIor;
+    // Snell: cos²θ₂ = 1 − ratio² sin²θ₁, as (1 − ratio)(1 + ratio) + ratio² cos²θ₁ — at grazing views
+    // 1 − cos²θ₁ would round to 1 and lose θ₂.
+    float cosTheta2Squared = (1.0f - ratio) * (1.0f + ratio) + ratio * ratio * (cosTheta1 * cosTheta1);
+    if (cosTheta2Squared < 0.0f) return thinFilm(vec3(1.0f), vec3(0.0f));  // total internal reflection
+    float cosTheta2 = sqrt(cosTheta2Squared);
+    // First interface (outside → film).
+    float q0 = (filmIor - outsideIor) / (filmIor + outsideIor);
+    float r12 = filmSchlick(q0 * q0, cosTheta1);
+    // 1 − R12 = (1 − R0)(1 − x⁵): no cancellation at grazing views, where R12 → 1.
+    float t121 = (1.0f - q0 * q0) * schlickComplement(cosTheta1);
+    float phi12 = filmIor < outsideIor ? CANDELA_PI : 0.0f;
+    float phi21 = CANDELA_PI - phi12;
+    // Second interface (film → base).
+    vec3 s = sqrt(min(baseF0, vec3(0.9999f)));
+    vec3 baseIor = (vec3(1.0f) + s) / (vec3(1.0f) - s);
+    vec3 q1 = (baseIor - vec3(filmIor)) / (baseIor + vec3(filmIor));
+    vec3 r23 = filmSchlick(q1 * q1, cosTheta2);
+    vec3 t23 = (vec3(1.0f) - q1 * q1) * schlickComplement(cosTheta2);
+    vec3 phi23 = vec3(baseIor.x < filmIor ? CANDELA_PI : 0.0f, baseIor.y < filmIor ? CANDELA_PI : 0.0f,
+                      baseIor.z < filmIor ? CANDELA_PI : 0.0f);
+    float opd = 2.0f * filmIor * thickness * cosTheta2;
+    vec3 phi = vec3(phi21) + phi23;
+    // Compound terms and the analytic spectral integration (orders 0, 1, 2).
+    // R123 = R12 R23 clamped to [1e-5, 0.9999], and 1 − R123 = T121 + R12 T23 clamped to match:
+    // 1 − R123 near the upper clamp keeps its digits.
+    vec3 r123 = clamp(r12 * r23, vec3(1e-5f), vec3(0.9999f));
+    vec3 oneMinusR123 = clamp(vec3(t121) + r12 * t23, vec3(1e-4f), vec3(1.0f - 1e-5f));
+    vec3 rootR123 = sqrt(r123);
+    vec3 rs = (t121 * t121) * r23 / oneMinusR123;
+    // I = R12 + Rs + Σ C_m S_m, and 1 − I = T121 − Rs − Σ C_m S_m from the cancellation-free T121.
+    vec3 cm = rs - vec3(t121);
+    vec3 oscillation = vec3(0.0f);
+    for (int m = 1; m <= 2; ++m) {
+        cm *= rootR123;
+        oscillation += cm * (2.0f * filmSensitivity(float(m) * opd, float(m) * phi));
+    }
+    vec3 intensity = vec3(r12) + rs + oscillation;
+    vec3 oneMinus = vec3(t121) - rs - oscillation;
+    return thinFilm(max(intensity, vec3(0.0f)), min(oneMinus, vec3(1.0f)));
+}
+
+// `d` with a thin film of weight `iridescence` (0 … 1), IOR `filmIor`, `thickness` nm, seen at N·V
+// = `NoV` from a medium of IOR `outsideIor` (1, or the coat's 1.5 under a clearcoat), over the
+// dielectric's f0 and the metal's `baseColor`. Thickness 0 is no film.
+CANDELA_FN DielectricFresnel withThinFilm(DielectricFresnel d, float iridescence, float filmIor, float thickness,
+                                          float outsideIor, float NoV, vec3 baseColor) {
+    DielectricFresnel filmed = d;
+    filmed.film = thickness > 0.0f ? iridescence : 0.0f;
+    ThinFilm dielectric = thinFilmFresnel(outsideIor, filmIor, NoV, thickness, d.f0);
+    filmed.filmDielectric = dielectric.reflectance;
+    filmed.filmOneMinusDielectric = dielectric.oneMinusReflectance;
+    filmed.filmMetal = thinFilmFresnel(outsideIor, filmIor, NoV, thickness, baseColor).reflectance;
+    return filmed;
+}
+
+CANDELA_FN float minComponent(vec3 c) { return min(c.x, min(c.y, c.z)); }
+
+// Schlick's weight (1 − V·H)⁵.
+CANDELA_FN float schlickWeight(float VoH) {
+    float x = 1.0f - clamp(VoH, 0.0f, 1.0f);
+    float x2 = x * x;
+    return x2 * x2 * x;
+}
+
+// The dielectric Fresnel at V·H (with the thin film's, when there is one).
 CANDELA_FN vec3 fresnelDielectric(float VoH, DielectricFresnel d) {
-    return d.f0 + (vec3(d.f90) - d.f0) * schlickWeight(VoH);
+    vec3 F = d.f0 + (vec3(d.f90) - d.f0) * schlickWeight(VoH);
+    return d.film > 0.0f ? mix(F, d.filmDielectric, d.film) : F;
+}
+
+// The metal's Fresnel at V·H: Schlick with F0 = baseColor, F90 = 1 (with the thin film's).
+CANDELA_FN vec3 fresnelMetal(float VoH, vec3 baseColor, DielectricFresnel d) {
+    vec3 F = baseColor + (vec3(1.0f) - baseColor) * schlickWeight(VoH);
+    return d.film > 0.0f ? mix(F, d.filmMetal, d.film) : F;
+}
+
+// 1 − F_d at V·H without cancellation (with the thin film's 1 − F_film mixed in).
+CANDELA_FN vec3 oneMinusFresnelDielectricAt(float VoH, DielectricFresnel d) {
+    // (1 − f0)(1 − w) + (1 − f90) w with 1 − w = schlickComplement: no cancellation at small V·H.
+    float complement = schlickComplement(VoH);
+    vec3 oneMinus = d.oneMinusF0 * complement + vec3((1.0f - d.f90) * (1.0f - complement));
+    return d.film > 0.0f ? mix(oneMinus, d.filmOneMinusDielectric, d.film) : oneMinus;
 }
 
 // The Fresnel of the whole material: dielectric and metal (F0 = baseColor, F90 = 1) mixed by metallic.
 CANDELA_FN vec3 fresnelDielectricMetal(float VoH, vec3 baseColor, float metallic, DielectricFresnel d) {
-    vec3 metal = baseColor + (vec3(1.0f) - baseColor) * schlickWeight(VoH);
-    return mix(fresnelDielectric(VoH, d), metal, metallic);
+    return mix(fresnelDielectric(VoH, d), fresnelMetal(VoH, baseColor, d), metallic);
 }
 
 // The Appendix B material toward a light with angles `g` (g.NoL > 0), given its specular lobe
@@ -122,13 +258,10 @@ CANDELA_FN vec3 fresnelDielectricMetal(float VoH, vec3 baseColor, float metallic
 // diffuse weighted by the dielectric part's 1 − max(F_d).
 CANDELA_FN BrdfLobes dielectricMaterialLobes(BrdfAngles g, float specularBrdf, vec3 baseColor, float metallic,
                                              DielectricFresnel d) {
-    float w = schlickWeight(g.VoH);
-    vec3 dielectric = d.f0 + (vec3(d.f90) - d.f0) * w;
-    vec3 metal = baseColor + (vec3(1.0f) - baseColor) * w;
     BrdfLobes lobes;
-    lobes.specular = mix(dielectric, metal, metallic) * (specularBrdf * g.specularWeight) * g.NoL;
+    lobes.specular = fresnelDielectricMetal(g.VoH, baseColor, metallic, d) * (specularBrdf * g.specularWeight) * g.NoL;
     // 1 − max(F_d), the specification's diffuse weight.
-    float diffuseWeight = minComponent(oneMinusFresnelDielectric(w, d));
+    float diffuseWeight = minComponent(oneMinusFresnelDielectricAt(g.VoH, d));
     lobes.diffuse = (1.0f - metallic) * diffuseWeight * baseColor * (1.0f / CANDELA_PI) * g.NoL;
     return lobes;
 }
@@ -156,10 +289,14 @@ CANDELA_FN BrdfLobes brdfLobesTimesCosineDielectric(vec3 N, vec3 V, vec3 L, vec3
 // computed from 1 − f0 without cancellation. The weight of the Lambert and transmitted parts.
 CANDELA_FN float iblDielectricUnreflected(vec2 lut, DielectricFresnel d, bool multiscatter) {
     float lost = 1.0f - (lut.x + lut.y);
-    // 1 − E_d = (1 − f0)A + (1 − f90)B + (1 − A − B).
+    // 1 − E_d = (1 − f0)A + (1 − f90)B + (1 − A − B); with a thin film, mixed with 1 − F_film (A + B).
     vec3 unreflected = d.oneMinusF0 * lut.x + vec3((1.0f - d.f90) * lut.y + lost);
+    vec3 single = d.f0 * lut.x + d.f90 * lut.y;
+    if (d.film > 0.0f) {
+        unreflected = mix(unreflected, vec3(lost) + d.filmOneMinusDielectric * (lut.x + lut.y), d.film);
+        single = mix(single, d.filmDielectric * (lut.x + lut.y), d.film);
+    }
     if (multiscatter) {
-        vec3 single = d.f0 * lut.x + d.f90 * lut.y;
         vec3 average = d.f0 + (vec3(d.f90) - d.f0) * (1.0f / 21.0f);
         unreflected -= single * average / (vec3(1.0f) - lost * average) * lost;
     }
@@ -167,7 +304,8 @@ CANDELA_FN float iblDielectricUnreflected(vec2 lut, DielectricFresnel d, bool mu
 }
 
 // iblShadeLobes (shared/ibl.h) with the dielectric Fresnel `d`: the split sum's directional albedo
-// E = f0·A + f90·B per part (dielectric, metal), mixed by metallic; multiscatter as there, with
+// E = f0·A + f90·B per part (dielectric, metal), mixed by metallic (with a thin film: mixed with
+// F_film · (A + B)); multiscatter as there, with
 // F_avg = f0 + (f90 − f0)/21; the diffuse weighted by iblDielectricUnreflected and by
 // `diffuseFraction` (1 − transmission: the rest is transmitted, iblTransmission).
 CANDELA_FN BrdfLobes iblShadeLobesDielectric(vec3 prefiltered, vec3 irradiance, vec2 lut, vec3 baseColor, float metallic,
@@ -176,6 +314,9 @@ CANDELA_FN BrdfLobes iblShadeLobesDielectric(vec3 prefiltered, vec3 irradiance, 
     vec3 f0 = mix(d.f0, baseColor, metallic);
     vec3 f90 = mix(vec3(d.f90), vec3(1.0f), metallic);
     vec3 singleScatter = f0 * lut.x + f90 * lut.y;
+    // A thin film's Fresnel (at N·V) taken outside the lobe's albedo A + B.
+    if (d.film > 0.0f)
+        singleScatter = mix(singleScatter, mix(d.filmDielectric, d.filmMetal, metallic) * (lut.x + lut.y), d.film);
     float lost = 1.0f - (lut.x + lut.y);
     vec3 multiScatter = vec3(0.0f);
     if (multiscatter) {
@@ -230,9 +371,7 @@ CANDELA_FN vec3 transmissionTimesCosine(vec3 N, vec3 V, vec3 L, vec3 baseColor, 
     // V_T · |N·L|: the |N·L| over |N·L| + √(α² + (1 − α²) N·L²) stays finite as N·L → 0.
     float visTimesCosine = absNoL / ((absNoL + sqrt(a2 + (1.0f - a2) * absNoL * absNoL)) *
                                      (NoV + sqrt(a2 + (1.0f - a2) * NoV * NoV)));
-    // 1 − F_d = (1 − f0)(1 − w) + (1 − f90) w with 1 − w free of cancellation.
-    float complement = schlickComplement(VoH);
-    float unreflected = minComponent(d.oneMinusF0 * complement + vec3((1.0f - d.f90) * (1.0f - complement)));
+    float unreflected = minComponent(oneMinusFresnelDielectricAt(VoH, d));
     return baseColor * (t.weight * (1.0f - metallic) * unreflected * D * visTimesCosine);
 }
 
@@ -469,8 +608,8 @@ CANDELA_FN vec3 anisotropicBentNormal(vec3 N, vec3 V, float perceptualRoughness,
 
 // ---- All layers ----
 
-// f(V, L) · (N·L) of a layered material: the material's lobes (the core's, or with the specular
-// layer's dielectric Fresnel `d` when `layers` has CANDELA_LAYER_SPECULAR; with an anisotropic GGX
+// f(V, L) · (N·L) of a layered material: the material's lobes (the core's, or with the dielectric
+// Fresnel `d` when `layers` has CANDELA_LAYER_SPECULAR or CANDELA_LAYER_IRIDESCENCE — the thin film in d; with an anisotropic GGX
 // lobe `an` when it has CANDELA_LAYER_ANISOTROPY), beneath the sheen
 // `sheen` when `layers` has CANDELA_LAYER_SHEEN, and both beneath the coat `coat` when `layers` has
 // CANDELA_LAYER_CLEARCOAT; with CANDELA_LAYER_TRANSMISSION the fraction `tr` of the diffuse lobe
@@ -490,10 +629,11 @@ CANDELA_FN LayeredLobes layeredLobesTimesCosine(vec3 N, vec3 V, vec3 L, vec3 Lt,
                                                 float perceptualRoughness, uint model, uint layers, DielectricFresnel d,
                                                 Anisotropy an, Transmission tr, Sheen sheen, Clearcoat coat) {
     BrdfLobes base;
+    // The specular layer and a thin film change the Fresnel: the Appendix B mix with `d`.
+    bool dielectric = (layers & (CANDELA_LAYER_SPECULAR | CANDELA_LAYER_IRIDESCENCE)) != 0u;
     if ((layers & CANDELA_LAYER_ANISOTROPY) != 0u)
-        base = brdfLobesTimesCosineAnisotropic(N, V, L, baseColor, metallic, perceptualRoughness,
-                                               (layers & CANDELA_LAYER_SPECULAR) != 0u, d, an);
-    else if ((layers & CANDELA_LAYER_SPECULAR) != 0u)
+        base = brdfLobesTimesCosineAnisotropic(N, V, L, baseColor, metallic, perceptualRoughness, dielectric, d, an);
+    else if (dielectric)
         base = brdfLobesTimesCosineDielectric(N, V, L, baseColor, metallic, perceptualRoughness, model, d);
     else
         base = brdfLobesTimesCosine(N, V, L, baseColor, metallic, perceptualRoughness, model);

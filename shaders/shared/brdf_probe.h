@@ -48,6 +48,9 @@ struct BrdfProbeParams {
     // x: the transmission weight (KHR_materials_transmission), y: 1 to mirror L through the surface
     // (L.z → −L.z), so that the grid's light directions probe the back side the BTDF lights from.
     vec4 transmission;
+    // x: the thin film's weight (KHR_materials_iridescence), y: its IOR, z: its thickness (nm), w: the
+    // IOR above it.
+    vec4 iridescence;
 };
 
 // One combination of the grid: the inputs of brdfTimesCosine.
@@ -136,7 +139,7 @@ CANDELA_FN BrdfProbeSample brdfProbeSample(uvec2 texel) {
 CANDELA_NAMESPACE_END
 
 #ifdef __cplusplus
-static_assert(sizeof(candela::shading::BrdfProbeParams) == 112);
+static_assert(sizeof(candela::shading::BrdfProbeParams) == 128);
 #endif
 
 #endif

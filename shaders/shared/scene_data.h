@@ -34,6 +34,8 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_DEBUG_SHEEN 15u             // the light the sheen reflects
 #define CANDELA_DEBUG_ANISOTROPY 16u        // the anisotropy direction T (and strength)
 #define CANDELA_DEBUG_TRANSMISSION 17u      // the fraction of the light behind that comes through
+#define CANDELA_DEBUG_IRIDESCENCE_THICKNESS 18u  // the thin film's thickness (µm)
+#define CANDELA_DEBUG_IRIDESCENCE_FRESNEL 19u    // the Fresnel the thin film gives at N·V
 
 #define CANDELA_ALPHA_OPAQUE 0u
 #define CANDELA_ALPHA_MASK 1u
@@ -55,6 +57,7 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_LAYER_ANISOTROPY 16u       // KHR_materials_anisotropy
 #define CANDELA_LAYER_TRANSMISSION 32u     // KHR_materials_transmission
 #define CANDELA_LAYER_VOLUME 64u           // KHR_materials_volume with a thickness
+#define CANDELA_LAYER_IRIDESCENCE 128u     // KHR_materials_iridescence
 
 // Texture slots of the layers, bound after the core ones in descriptor set 1 of the layered
 // program (bindings 6 and up; binding 5 is the MaterialLayers buffer).
@@ -68,7 +71,9 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_LAYER_TEX_ANISOTROPY 7
 #define CANDELA_LAYER_TEX_TRANSMISSION 8
 #define CANDELA_LAYER_TEX_THICKNESS 9
-#define CANDELA_LAYER_TEX_COUNT 10
+#define CANDELA_LAYER_TEX_IRIDESCENCE 10
+#define CANDELA_LAYER_TEX_IRIDESCENCE_THICKNESS 11
+#define CANDELA_LAYER_TEX_COUNT 12
 
 // One punctual light (KHR_lights_punctual), world space.
 struct LightData {
@@ -125,6 +130,10 @@ struct MaterialLayerData {
     /*Color*/ vec3 attenuationColor;   // KHR_materials_volume attenuationColor
     /*Range(0, 10)*/ float thickness;  // thicknessFactor (mesh units; 0: thin-walled)
     /*Range(0, 10)*/ float attenuationDistance;  // world units; 0: infinite (no absorption)
+    /*Range(0, 1)*/ float iridescence;           // KHR_materials_iridescence iridescenceFactor
+    /*Range(1, 3)*/ float iridescenceIor;        // the film's IOR
+    /*Range(0, 1200)*/ float iridescenceThicknessMinimum;  // nm (iridescenceThicknessTexture.g = 0)
+    /*Range(0, 1200)*/ float iridescenceThicknessMaximum;  // nm (texture 1, or no texture)
     /*Ignore*/ float pad0;
     /*Ignore*/ float pad1;
     /*Ignore*/ float pad2;
@@ -168,7 +177,7 @@ CANDELA_NAMESPACE_END
 static_assert(sizeof(candela::shading::LightData) == 64);
 static_assert(sizeof(candela::shading::DrawData) == 144);
 static_assert(sizeof(candela::shading::MaterialData) == 64 + 32 * CANDELA_TEX_COUNT);
-static_assert(sizeof(candela::shading::MaterialLayerData) == 96 + 32 * CANDELA_LAYER_TEX_COUNT);
+static_assert(sizeof(candela::shading::MaterialLayerData) == 112 + 32 * CANDELA_LAYER_TEX_COUNT);
 static_assert(sizeof(candela::shading::ForwardPush) == 128);
 #endif
 

@@ -83,7 +83,11 @@ glm::dvec3 referenceOf(const shading::BrdfProbeSample& s, const shading::BrdfPro
                              .sheenAlbedo = layer->sheenAlbedo,
                              .anisotropy = layer->anisotropy.w,
                              .anisotropyDirection = glm::dvec3(layer->anisotropy),
-                             .transmission = layer->transmission.x};
+                             .transmission = layer->transmission.x,
+                             .iridescence = layer->iridescence.x,
+                             .iridescenceIor = layer->iridescence.y,
+                             .iridescenceThickness = layer->iridescence.z,
+                             .outsideIor = layer->iridescence.w};
     return ref::brdfTimesCosineLayered(glm::dvec3(s.N), glm::dvec3(s.V), glm::dvec3(s.L), glm::dvec3(s.baseColor),
                                        s.metallic, s.perceptualRoughness, s.model, layers);
 }
@@ -241,6 +245,38 @@ TEST_F(GpuTest, TransmissionProbeMatchesDoubleReference) {
                                           << c.ior << (c.transmission.y > 0.5f ? ", light behind" : ", light in front")
                                           << ", intensity " << c.intensity);
         checkProbe(runProbe(context(), c, BrdfProbePass::Brdf::Layers), c.intensity, &c);
+    }
+}
+
+// The thin film (KHR_materials_iridescence) over the grid: weight 1 and 0.5, film IOR 1.3 and 2,
+// thickness 400 nm, 150 nm and 0 (no film), from air and from under a coat (outside IOR 1.5), over
+// the core Fresnel, the specular layer and with the anisotropy and the transmission (the Fresnel they
+// share), and at intensity 1e6. Same metric; tolerance 1e-4, the thin-film Fresnel's own in float:
+// the spectral terms take cosines of phases of tens of radians, and under a coat (outside IOR 1.5
+// over a film of 1.3) Snell's cos²θ₂ nears 0 close to total internal reflection (docs/materials.md).
+TEST_F(GpuTest, IridescenceProbeMatchesDoubleReference) {
+    const auto film = [](float intensity, uint32_t layers, float weight, float ior, float thickness, float outside) {
+        return shading::BrdfProbeParams{.intensity = intensity, .ior = 1.33f, .specular = 1.0f, .layers = layers,
+                                        .specularColor = glm::vec4(1.0f, 0.5f, 0.25f, 0.0f), .clearcoat = 0.7f,
+                                        .clearcoatRoughness = 0.3f, .clearcoatNormal = glm::vec4(0.0f, 0.0f, 1.0f, 0.0f),
+                                        .anisotropy = glm::vec4(1.0f, 0.0f, 0.0f, 0.6f),
+                                        .transmission = glm::vec4(0.5f, 0.0f, 0.0f, 0.0f),
+                                        .iridescence = glm::vec4(weight, ior, thickness, outside)};
+    };
+    const uint32_t i = CANDELA_LAYER_IRIDESCENCE;
+    const shading::BrdfProbeParams cases[] = {
+        film(1.0f, i, 1.0f, 1.3f, 400.0f, 1.0f),
+        film(1.0f, i, 0.5f, 2.0f, 150.0f, 1.0f),
+        film(1.0f, i, 1.0f, 1.3f, 0.0f, 1.0f),
+        film(1.0f, i | CANDELA_LAYER_SPECULAR | CANDELA_LAYER_CLEARCOAT, 1.0f, 1.3f, 400.0f, 1.5f),
+        film(1.0f, i | CANDELA_LAYER_ANISOTROPY, 1.0f, 1.8f, 600.0f, 1.0f),
+        film(1.0f, i | CANDELA_LAYER_TRANSMISSION, 1.0f, 1.3f, 400.0f, 1.0f),
+        film(1e6f, i, 1.0f, 1.3f, 400.0f, 1.0f)};
+    for (const shading::BrdfProbeParams& c : cases) {
+        SCOPED_TRACE(::testing::Message() << "layers " << c.layers << ", film weight " << c.iridescence.x << ", IOR "
+                                          << c.iridescence.y << ", thickness " << c.iridescence.z << " nm, outside IOR "
+                                          << c.iridescence.w << ", intensity " << c.intensity);
+        checkProbe(runProbe(context(), c, BrdfProbePass::Brdf::Layers), c.intensity, &c, 1e-4);
     }
 }
 

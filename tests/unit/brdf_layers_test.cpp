@@ -55,8 +55,10 @@ glm::vec3 layeredFloat(glm::vec3 N, glm::vec3 V, glm::vec3 L, glm::vec3 base, fl
 
 glm::dvec3 layeredReference(glm::vec3 N, glm::vec3 V, glm::vec3 L, glm::vec3 base, float metallic, float roughness,
                             uint32_t model, const Layer& layer) {
+    const ref::Layers layers{.bits = ref::kLayerSpecular, .ior = layer.ior, .specular = layer.specular,
+                             .specularColor = glm::dvec3(layer.color)};
     return ref::brdfTimesCosineDielectric(glm::dvec3(N), glm::dvec3(V), glm::dvec3(L), glm::dvec3(base), metallic, roughness,
-                                          model, layer.ior, layer.specular, glm::dvec3(layer.color));
+                                          model, layers);
 }
 
 // Calls `f(N, V, L, base, metallic, roughness, model, layer)` over the grid.
@@ -527,6 +529,100 @@ TEST(BrdfLayers, VolumeTransmittanceAtTheExtremes) {
                                                                       << attenuationDistance << " channel " << c;
             }
         }
+}
+
+// The thin film (KHR_materials_iridescence) in float against the double reference: the thin-film
+// Fresnel itself over N·V, thickness (0 … 1200 nm), film IOR (1, 1.3, 2.5, below and above the
+// base) and base F0 (0, 0.04, a metal's colour, 1), outside IOR 1 and 1.5; then the layered lobes
+// with a film of weight 1 and 0.5 over the core Fresnel and the specular layer.
+TEST(BrdfLayers, IridescenceFloatMatchesDoubleReference) {
+    ref::ErrorStats film{.floor = kFloor}, oneMinus{.floor = kFloor};
+    uint64_t bad = 0;
+    for (float outside : {1.0f, 1.5f})
+        for (float ior : {1.0f, 1.3f, 2.5f})
+            for (float thickness : {0.0f, 50.0f, 150.0f, 400.0f, 800.0f, 1200.0f})
+                for (double cosine : {1e-4, 0.05, 0.3, 0.7, 1.0})
+                    for (const glm::vec3& f0 : {glm::vec3(0.0f), glm::vec3(0.04f), glm::vec3(0.955f, 0.638f, 0.538f), glm::vec3(1.0f)}) {
+                        const shading::ThinFilm got = shading::thinFilmFresnel(outside, ior, float(cosine), thickness, f0);
+                        const glm::dvec3 expected = ref::thinFilmFresnel(outside, ior, double(float(cosine)), thickness, glm::dvec3(f0));
+                        for (int c = 0; c < 3; ++c) {
+                            bad += std::isfinite(got.reflectance[c]) && got.reflectance[c] >= 0.0f ? 0 : 1;
+                            const auto describe = [&](float value, double reference) {
+                                std::ostringstream s;
+                                s.precision(9);
+                                s << "outside " << outside << " film IOR " << ior << " thickness " << thickness << " cos "
+                                  << cosine << " f0 " << f0[c] << " channel " << c << ": float " << value << ", double "
+                                  << reference;
+                                return s.str();
+                            };
+                            film.add(got.reflectance[c], expected[c], [&] { return describe(got.reflectance[c], expected[c]); });
+                            oneMinus.add(got.oneMinusReflectance[c], 1.0 - expected[c],
+                                         [&] { return describe(got.oneMinusReflectance[c], 1.0 - expected[c]); });
+                        }
+                    }
+    // The spectral integration's cosines of phases of tens of radians lose float digits (~1e-7
+    // absolute): a looser bound than the lobes' — 1e-4 on F, and 2e-3 on 1 − F, which over a mirror
+    // base (F0 = 1) is only 2e-4 (docs/materials.md).
+    expectWithinTolerance("thin-film Fresnel", film, bad, 1e-4);
+    expectWithinTolerance("thin-film 1 - Fresnel", oneMinus, 0, 2e-3);
+
+    ref::ErrorStats stats{.floor = kFloor};
+    bad = 0;
+    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    for (float weight : {1.0f, 0.5f})
+        for (uint32_t bits : {uint32_t(CANDELA_LAYER_IRIDESCENCE), uint32_t(CANDELA_LAYER_IRIDESCENCE | CANDELA_LAYER_SPECULAR)})
+            for (uint32_t model : {uint32_t(ref::kPbr), uint32_t(ref::kPbrSchlickGgx)})
+                for (double cv : kCosines)
+                    for (double cl : kCosines)
+                        for (double phi : {0.0, std::numbers::pi / 2, std::numbers::pi})
+                            for (float roughness : {0.0f, 0.3f, 1.0f})
+                                for (float metallic : kMetallics)
+                                    for (const glm::vec3& base : kBaseColors) {
+                                        const glm::vec3 V = direction(cv, 0.0), L = direction(cl, phi);
+                                        const glm::vec3 color(1.0f, 0.5f, 0.25f);
+                                        shading::DielectricFresnel d = (bits & CANDELA_LAYER_SPECULAR)
+                                                                           ? shading::dielectricFresnel(1.33f, color, 1.0f)
+                                                                           : shading::coreDielectricFresnel();
+                                        const float NoV = std::clamp(glm::dot(N, V), 1e-4f, 1.0f);
+                                        d = shading::withThinFilm(d, weight, 1.3f, 400.0f, 1.0f, NoV, base);
+                                        const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
+                                            N, V, L, L, base, metallic, roughness, model, bits, d, noAnisotropy(), noTransmission(),
+                                            noSheen(), shading::clearcoatLayer(0.0f, 0.0f, N, V));
+                                        const glm::vec3 got = lobes.diffuse + lobes.specular;
+                                        const ref::Layers layers{.bits = bits, .ior = 1.33, .specularColor = glm::dvec3(color),
+                                                                 .iridescence = weight, .iridescenceIor = double(1.3f)};
+                                        const glm::dvec3 expected = ref::brdfTimesCosineLayered(
+                                            glm::dvec3(N), glm::dvec3(V), glm::dvec3(L), glm::dvec3(base), metallic, roughness,
+                                            model, layers);
+                                        for (int c = 0; c < 3; ++c) {
+                                            bad += std::isfinite(got[c]) && got[c] >= 0.0f ? 0 : 1;
+                                            stats.add(got[c], expected[c], [&] {
+                                                std::ostringstream s;
+                                                s.precision(9);
+                                                s << "film " << weight << " bits " << bits << " V=(" << V.x << "," << V.z << ") L=("
+                                                  << L.x << "," << L.y << "," << L.z << ") roughness " << roughness << " metallic "
+                                                  << metallic << " channel " << c << ": float " << got[c] << ", double " << expected[c];
+                                                return s.str();
+                                            });
+                                        }
+                                    }
+    expectWithinTolerance("iridescence", stats, bad, kTolerance);
+}
+
+// Thickness 0 is no film: withThinFilm leaves the Fresnel as it is, and thinFilmFresnel gives
+// Schlick's Fresnel of the base.
+TEST(BrdfLayers, IridescenceOfThicknessZeroIsNoFilm) {
+    const shading::DielectricFresnel d = shading::withThinFilm(shading::coreDielectricFresnel(), 1.0f, 1.3f, 0.0f, 1.0f, 0.5f,
+                                                               glm::vec3(0.9f, 0.6f, 0.3f));
+    EXPECT_EQ(d.film, 0.0f);
+    const glm::vec3 N(0.0f, 0.0f, 1.0f), V = direction(0.6, 0.0), L = direction(0.7, 2.0), base(0.8f, 0.5f, 0.2f);
+    const shading::BrdfLobes with = shading::brdfLobesTimesCosineDielectric(N, V, L, base, 0.3f, 0.4f, ref::kPbr, d);
+    const shading::BrdfLobes without =
+        shading::brdfLobesTimesCosineDielectric(N, V, L, base, 0.3f, 0.4f, ref::kPbr, shading::coreDielectricFresnel());
+    EXPECT_EQ(with.specular, without.specular);
+    EXPECT_EQ(with.diffuse, without.diffuse);
+    const glm::vec3 schlick = shading::thinFilmFresnel(1.0f, 1.3f, 0.5f, 0.0f, glm::vec3(0.04f)).reflectance;
+    EXPECT_NEAR(schlick.x, 0.04 + 0.96 * std::pow(0.5, 5.0), 1e-7);
 }
 
 }  // namespace

@@ -101,35 +101,10 @@ inline glm::dvec3 brdfTimesCosine(const glm::dvec3& N, const glm::dvec3& V, cons
     return (diffuse + specular) * NoL;
 }
 
-// The specular layer (KHR_materials_ior, KHR_materials_specular; shaders/shared/brdf_layers.h) in the
-// specification's form: dielectric Fresnel F_d = f0 + (f90 − f0)(1 − V·H)⁵ with
-// f0 = min(((ior − 1)/(ior + 1))² · specularColor, 1) · specular and f90 = specular; the material
-// (1 − metallic) · (F_d · specular_brdf + (1 − max(F_d)) · diffuse_brdf) + metallic · F_m · specular_brdf,
-// F_m = Schlick(baseColor). Cook-Torrance models only (the layer has no Blinn-Phong form).
-inline glm::dvec3 brdfTimesCosineDielectric(const glm::dvec3& N, const glm::dvec3& V, const glm::dvec3& L,
-                                            const glm::dvec3& baseColor, double metallic, double perceptualRoughness,
-                                            uint32_t model, double ior, double specular, const glm::dvec3& specularColor) {
-    const auto [NoL, NoV, NoH, VoH, hasHalfVector] = angles(N, V, L);
-    if (NoL <= 0.0) return glm::dvec3(0.0);
-    const double roughness = clampRoughness(perceptualRoughness);
-    const double a = roughness * roughness;
-    const double r = (ior - 1.0) / (ior + 1.0);
-    const glm::dvec3 f0 = glm::min(r * r * specularColor, glm::dvec3(1.0)) * specular;
-    const double w = std::pow(1.0 - VoH, 5.0);
-    const glm::dvec3 dielectricFresnel = f0 + (glm::dvec3(specular) - f0) * w;
-    const glm::dvec3 metalFresnel = fresnelSchlick(VoH, baseColor);
-    const double D = distributionGgx(NoH, a);
-    const double Vis = model == kPbrSchlickGgx ? visibilitySchlickGgx(NoV, NoL, roughness)
-                                               : visibilitySmithGgxCorrelated(NoV, NoL, a);
-    const double specularBrdf = hasHalfVector ? D * Vis : 0.0;
-    const double maxFresnel = std::max({dielectricFresnel.x, dielectricFresnel.y, dielectricFresnel.z});
-    const glm::dvec3 dielectric = dielectricFresnel * specularBrdf + (1.0 - maxFresnel) * baseColor / kPi;
-    const glm::dvec3 metal = metalFresnel * specularBrdf;
-    return ((1.0 - metallic) * dielectric + metallic * metal) * NoL;
-}
-
 // Layer bits, numbered like CANDELA_LAYER_* in shaders/shared/scene_data.h.
-enum LayerBit : uint32_t { kLayerSpecular = 1, kLayerClearcoat = 2, kLayerSheen = 8, kLayerAnisotropy = 16, kLayerTransmission = 32 };
+enum LayerBit : uint32_t {
+    kLayerSpecular = 1, kLayerClearcoat = 2, kLayerSheen = 8, kLayerAnisotropy = 16, kLayerTransmission = 32, kLayerIridescence = 128
+};
 
 // KHR_materials_sheen's lobe f · N·L in the specification's form: the Charlie distribution
 // D = (2 + 1/α) sin(θ_h)^(1/α) / 2π with α = roughness² (roughness clamped like the GGX one) and the
@@ -166,18 +141,116 @@ struct Layers {
     double anisotropy = 0.0;                    // strength
     glm::dvec3 anisotropyDirection{1.0, 0.0, 0.0};  // T, unit, ⟂ N
     double transmission = 0.0;  // weight
+    double iridescence = 0.0;                 // the thin film's weight
+    double iridescenceIor = 1.3, iridescenceThickness = 400.0;  // its IOR and thickness (nm)
+    double outsideIor = 1.0;                  // the medium above the film (1, or a coat's 1.5)
 };
 
+// KHR_materials_iridescence's thin-film Fresnel in the specification's form (its implementation
+// notes, after Belcour & Barla 2017): the first interface's Schlick reflectance R12 at cos θ₁, the
+// second's R23 at cos θ₂ (Snell) over a base of IOR (1 + √F0)/(1 − √F0), F0 ≤ 0.9999; phases π or
+// 0 by the IORs' order; the compound R12 R23 clamped to [1e-5, 0.9999]; orders 0, 1, 2 of the
+// analytic spectral integration with the Gaussian fit of the XYZ sensitivities, to Rec. 709; no
+// film (thickness 0): Schlick's Fresnel of the base.
+inline glm::dvec3 thinFilmFresnel(double outsideIor, double filmIor, double cos1, double thickness, const glm::dvec3& baseF0) {
+    const auto schlick = [](double r0, double c) { return r0 + (1.0 - r0) * std::pow(1.0 - std::clamp(c, 0.0, 1.0), 5.0); };
+    if (thickness <= 0.0) return {schlick(baseF0.x, cos1), schlick(baseF0.y, cos1), schlick(baseF0.z, cos1)};
+    const double sin2Squared = std::pow(outsideIor / filmIor, 2.0) * (1.0 - cos1 * cos1);
+    if (sin2Squared > 1.0) return glm::dvec3(1.0);
+    const double cos2 = std::sqrt(1.0 - sin2Squared);
+    const double r12 = schlick(std::pow((filmIor - outsideIor) / (filmIor + outsideIor), 2.0), cos1);
+    const double t121 = 1.0 - r12;
+    const double phi12 = filmIor < outsideIor ? kPi : 0.0;
+    const double opd = 2.0 * filmIor * thickness * cos2;
+    const auto sensitivity = [](double opdNm, const glm::dvec3& shift) {
+        const double phase = 2.0 * kPi * opdNm * 1e-9;
+        const glm::dvec3 val(5.4856e-13, 4.4201e-13, 5.2481e-13), pos(1.6810e+06, 1.7953e+06, 2.2084e+06),
+            var(4.3278e+09, 9.3046e+09, 6.6121e+09);
+        glm::dvec3 xyz;
+        for (int c = 0; c < 3; ++c)
+            xyz[c] = val[c] * std::sqrt(2.0 * kPi * var[c]) * std::cos(pos[c] * phase + shift[c]) * std::exp(-phase * phase * var[c]);
+        xyz.x += 9.7470e-14 * std::sqrt(2.0 * kPi * 4.5282e+09) * std::cos(2.2399e+06 * phase + shift.x) *
+                 std::exp(-4.5282e+09 * phase * phase);
+        xyz /= 1.0685e-7;
+        return glm::dvec3(3.2404542 * xyz.x - 1.5371385 * xyz.y - 0.4985314 * xyz.z,
+                          -0.9692660 * xyz.x + 1.8760108 * xyz.y + 0.0415560 * xyz.z,
+                          0.0556434 * xyz.x - 0.2040259 * xyz.y + 1.0572252 * xyz.z);
+    };
+    glm::dvec3 out(0.0), phi(0.0), r23(0.0), cm(0.0);
+    for (int c = 0; c < 3; ++c) {
+        const double s = std::sqrt(std::min(baseF0[c], 0.9999));
+        const double baseIor = (1.0 + s) / (1.0 - s);
+        r23[c] = schlick(std::pow((baseIor - filmIor) / (baseIor + filmIor), 2.0), cos2);
+        phi[c] = (kPi - phi12) + (baseIor < filmIor ? kPi : 0.0);
+        const double rs = t121 * t121 * r23[c] / (1.0 - std::clamp(r12 * r23[c], 1e-5, 0.9999));
+        out[c] = r12 + rs;
+        cm[c] = rs - t121;
+    }
+    for (int m = 1; m <= 2; ++m) {
+        const glm::dvec3 s = 2.0 * sensitivity(m * opd, double(m) * phi);
+        for (int c = 0; c < 3; ++c) {
+            cm[c] *= std::sqrt(std::clamp(r12 * r23[c], 1e-5, 0.9999));
+            out[c] += cm[c] * s[c];
+        }
+    }
+    return glm::max(out, glm::dvec3(0.0));
+}
+
+// The Fresnel terms of the Appendix B material at V·H: the dielectric's F_d = f0 + (f90 − f0)(1 − V·H)⁵
+// (with kLayerSpecular f0 = min(((ior − 1)/(ior + 1))² · specularColor, 1) · specular, f90 = specular;
+// else the core's 0.04 and 1) and the metal's Schlick(baseColor), each mixed with kLayerIridescence's
+// thin-film Fresnel at N·V (over f0, and over baseColor) by its weight.
+struct Fresnels {
+    glm::dvec3 dielectric, metal;
+};
+inline Fresnels appendixBFresnels(double VoH, double NoV, const glm::dvec3& baseColor, const Layers& layers) {
+    glm::dvec3 f0(0.04), f90(1.0);
+    if (layers.bits & kLayerSpecular) {
+        const double r = (layers.ior - 1.0) / (layers.ior + 1.0);
+        f0 = glm::min(r * r * layers.specularColor, glm::dvec3(1.0)) * layers.specular;
+        f90 = glm::dvec3(layers.specular);
+    }
+    Fresnels out{f0 + (f90 - f0) * std::pow(1.0 - VoH, 5.0), fresnelSchlick(VoH, baseColor)};
+    if ((layers.bits & kLayerIridescence) && layers.iridescenceThickness > 0.0) {
+        const double cos1 = std::clamp(NoV, kMinNoV, 1.0);
+        const auto film = [&](const glm::dvec3& base) {
+            return thinFilmFresnel(layers.outsideIor, layers.iridescenceIor, cos1, layers.iridescenceThickness, base);
+        };
+        out.dielectric += (film(f0) - out.dielectric) * layers.iridescence;
+        out.metal += (film(baseColor) - out.metal) * layers.iridescence;
+    }
+    return out;
+}
+
+// The specular layer (KHR_materials_ior, KHR_materials_specular) and the thin film
+// (KHR_materials_iridescence) in the specifications' form, the material
+// (1 − metallic) · (F_d · specular_brdf + (1 − max(F_d)) · diffuse_brdf) + metallic · F_m · specular_brdf
+// with appendixBFresnels. Cook-Torrance models only (the layers have no Blinn-Phong form).
+inline glm::dvec3 brdfTimesCosineDielectric(const glm::dvec3& N, const glm::dvec3& V, const glm::dvec3& L,
+                                            const glm::dvec3& baseColor, double metallic, double perceptualRoughness,
+                                            uint32_t model, const Layers& layers) {
+    const auto [NoL, NoV, NoH, VoH, hasHalfVector] = angles(N, V, L);
+    if (NoL <= 0.0) return glm::dvec3(0.0);
+    const double roughness = clampRoughness(perceptualRoughness);
+    const double a = roughness * roughness;
+    const Fresnels F = appendixBFresnels(VoH, NoV, baseColor, layers);
+    const double D = distributionGgx(NoH, a);
+    const double Vis = model == kPbrSchlickGgx ? visibilitySchlickGgx(NoV, NoL, roughness)
+                                               : visibilitySmithGgxCorrelated(NoV, NoL, a);
+    const double specularBrdf = hasHalfVector ? D * Vis : 0.0;
+    const double maxFresnel = std::max({F.dielectric.x, F.dielectric.y, F.dielectric.z});
+    const glm::dvec3 dielectric = F.dielectric * specularBrdf + (1.0 - maxFresnel) * baseColor / kPi;
+    return ((1.0 - metallic) * dielectric + metallic * F.metal * specularBrdf) * NoL;
+}
+
 // The diffuse lobe times N·L of the material brdfTimesCosineLayered starts from: with the specular
-// layer (1 − metallic)(1 − max(F_d)) · baseColor/π, else the core's (1 − F)(1 − metallic) · baseColor/π.
+// layer or a thin film (1 − metallic)(1 − max(F_d)) · baseColor/π (appendixBFresnels), else the core's (1 − F)(1 − metallic) · baseColor/π.
 inline glm::dvec3 diffuseTimesCosine(const glm::dvec3& N, const glm::dvec3& V, const glm::dvec3& L,
                                      const glm::dvec3& baseColor, double metallic, const Layers& layers) {
     const auto [NoL, NoV, NoH, VoH, hasHalfVector] = angles(N, V, L);
     if (NoL <= 0.0) return glm::dvec3(0.0);
-    if (layers.bits & kLayerSpecular) {
-        const double r = (layers.ior - 1.0) / (layers.ior + 1.0);
-        const glm::dvec3 f0 = glm::min(r * r * layers.specularColor, glm::dvec3(1.0)) * layers.specular;
-        const glm::dvec3 F = f0 + (glm::dvec3(layers.specular) - f0) * std::pow(1.0 - VoH, 5.0);
+    if (layers.bits & (kLayerSpecular | kLayerIridescence)) {
+        const glm::dvec3 F = appendixBFresnels(VoH, NoV, baseColor, layers).dielectric;
         return (1.0 - metallic) * (1.0 - std::max({F.x, F.y, F.z})) * baseColor / kPi * NoL;
     }
     const glm::dvec3 F = fresnelSchlick(VoH, glm::dvec3(0.04) * (1.0 - metallic) + baseColor * metallic);
@@ -207,13 +280,7 @@ inline glm::dvec3 transmissionTimesCosine(const glm::dvec3& N, const glm::dvec3&
     const double D = a2 / (kPi * q * q);
     const double absNoL = -NoL;
     const double Vt = 1.0 / ((absNoL + std::sqrt(a2 + (1.0 - a2) * absNoL * absNoL)) * (NoV + std::sqrt(a2 + (1.0 - a2) * NoV * NoV)));
-    glm::dvec3 f0(0.04), f90(1.0);
-    if (layers.bits & kLayerSpecular) {
-        const double r = (layers.ior - 1.0) / (layers.ior + 1.0);
-        f0 = glm::min(r * r * layers.specularColor, glm::dvec3(1.0)) * layers.specular;
-        f90 = glm::dvec3(layers.specular);
-    }
-    const glm::dvec3 F = f0 + (f90 - f0) * std::pow(1.0 - VoH, 5.0);
+    const glm::dvec3 F = appendixBFresnels(VoH, NoV, baseColor, layers).dielectric;
     const double maxF = std::max({F.x, F.y, F.z});
     return layers.transmission * (1.0 - metallic) * (1.0 - maxF) * D * Vt * absNoL * baseColor;
 }
@@ -239,14 +306,12 @@ inline glm::dvec3 brdfTimesCosineAnisotropic(const glm::dvec3& N, const glm::dve
     };
     const double Vis = 0.5 / (NoL * lambda(V, NoV) + NoV * lambda(L, NoL));
     const double specularBrdf = hasHalfVector ? D * Vis : 0.0;
-    const double w = std::pow(1.0 - VoH, 5.0);
-    const glm::dvec3 metal = fresnelSchlick(VoH, baseColor);
-    if (layers.bits & kLayerSpecular) {
-        const double rr = (layers.ior - 1.0) / (layers.ior + 1.0);
-        const glm::dvec3 f0 = glm::min(rr * rr * layers.specularColor, glm::dvec3(1.0)) * layers.specular;
-        const glm::dvec3 Fd = f0 + (glm::dvec3(layers.specular) - f0) * w;
-        const double maxF = std::max({Fd.x, Fd.y, Fd.z});
-        return ((1.0 - metallic) * (Fd * specularBrdf + (1.0 - maxF) * baseColor / kPi) + metallic * metal * specularBrdf) * NoL;
+    if (layers.bits & (kLayerSpecular | kLayerIridescence)) {
+        const Fresnels F = appendixBFresnels(VoH, NoV, baseColor, layers);
+        const double maxF = std::max({F.dielectric.x, F.dielectric.y, F.dielectric.z});
+        return ((1.0 - metallic) * (F.dielectric * specularBrdf + (1.0 - maxF) * baseColor / kPi) +
+                metallic * F.metal * specularBrdf) *
+               NoL;
     }
     const glm::dvec3 F = fresnelSchlick(VoH, glm::dvec3(0.04) * (1.0 - metallic) + baseColor * metallic);
     return (F * specularBrdf + (glm::dvec3(1.0) - F) * (1.0 - metallic) * baseColor / kPi) * NoL;
@@ -264,9 +329,8 @@ inline glm::dvec3 brdfTimesCosineLayered(const glm::dvec3& N, const glm::dvec3& 
                                          uint32_t model, const Layers& layers) {
     glm::dvec3 material =
         (layers.bits & kLayerAnisotropy) ? brdfTimesCosineAnisotropic(N, V, L, baseColor, metallic, perceptualRoughness, layers)
-        : (layers.bits & kLayerSpecular)
-            ? brdfTimesCosineDielectric(N, V, L, baseColor, metallic, perceptualRoughness, model, layers.ior,
-                                        layers.specular, layers.specularColor)
+        : (layers.bits & (kLayerSpecular | kLayerIridescence))
+            ? brdfTimesCosineDielectric(N, V, L, baseColor, metallic, perceptualRoughness, model, layers)
             : brdfTimesCosine(N, V, L, baseColor, metallic, perceptualRoughness, model);
     if (layers.bits & kLayerTransmission) {
         // The transmitted fraction of the diffuse lobe becomes the BTDF.
