@@ -818,6 +818,19 @@ std::vector<Row> catalogue() {
             layered({{"KHR_materials_transmission", {{"transmissionFactor", 1}}},
                      {"KHR_materials_volume", {{"thicknessFactor", 1}, {"attenuationDistance", 0}}}}),
             "attenuationDistance 0 is not > 0: no absorption", true);
+    // KHR_materials_iridescence.
+    loads("material layers", "IridescenceFactorsOnly",
+          layered({{"KHR_materials_iridescence", {{"iridescenceFactor", 1}, {"iridescenceIor", 1.6}, {"iridescenceThicknessMaximum", 500}}}}));
+    error("material layers", "IridescenceIorString", layered({{"KHR_materials_iridescence", {{"iridescenceIor", "1.3"}}}}),
+          "KHR_materials_iridescence.iridescenceIor: expected a number, got the string \"1.3\"");
+    error("material layers", "IridescenceThicknessTextureMissing",
+          layered({{"KHR_materials_iridescence", {{"iridescenceFactor", 1}, {"iridescenceThicknessTexture", {{"index", 7}}}}}}),
+          "iridescenceThicknessTexture: texture 7 does not exist");
+    warning("material layers", "IridescenceFactorAboveOne", layered({{"KHR_materials_iridescence", {{"iridescenceFactor", 1.5}}}}),
+            "iridescenceFactor 1.5 is outside [0, 1] (using 1)", true);
+    warning("material layers", "IridescenceThicknessNegative",
+            layered({{"KHR_materials_iridescence", {{"iridescenceFactor", 1}, {"iridescenceThicknessMaximum", -100}}}}),
+            "iridescenceThicknessMaximum -100 is outside [0, inf] (using 0)", true);
     // KHR_materials_pbrSpecularGlossiness and KHR_materials_variants.
     loads("material layers", "SpecularGlossinessFactorsOnly",
           layered({{"KHR_materials_pbrSpecularGlossiness", {{"diffuseFactor", {0.8, 0.2, 0.2, 1}}, {"glossinessFactor", 0.6}}}}));

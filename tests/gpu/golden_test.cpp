@@ -119,6 +119,9 @@ const GoldenCase kCases[] = {
     // (the background's mips) across, IOR 1 … 2.42 (the blur scales with it; none at IOR 1) down.
     {"ibl_transmission_roughness_test", "TransmissionRoughnessTest/glTF-Binary/TransmissionRoughnessTest.glb",
      {0.0f, 90.0f, 1.3f}, "studio_small_03_1k.hdr"},
+    // KHR_materials_iridescence (with transmission and volume on the glass): the globe's carnival
+    // glaze and the shade's iridescent lining, seen from a little below.
+    {"ibl_iridescence_lamp", "IridescenceLamp/glTF/IridescenceLamp.gltf", {20.0f, 100.0f, 0.9f}, "studio_small_03_1k.hdr"},
     {"interpolation_test_t0_9", "InterpolationTest/glTF-Binary/InterpolationTest.glb", {0.0f, 90.0f, 20.0f}, "", 0.0f, "all", 0.9},
 };
 

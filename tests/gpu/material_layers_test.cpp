@@ -207,6 +207,48 @@ TEST_F(GpuTest, TransmissionExtremesStayFinite) {
     EXPECT_GT(thin, 0.05f);
 }
 
+// The thin film's stiff cases in one frame (KHR_materials_iridescence): thickness 0 (no film),
+// 1 nm and 1200 nm, a film of the outside's IOR (1: no first interface), a film of IOR 1.3 under a
+// coat (outside 1.5: total internal reflection at grazing views), over white metal (F0 = 1, the
+// base IOR's guard) and black, lit by the environment and a 1e5 light. Metric: every value of the
+// float frame finite and non-negative, alpha in [0, 1]; the debug views iridescence-thickness and
+// -fresnel too, and the film of thickness 0 shows none (black in iridescence-fresnel).
+TEST_F(GpuTest, IridescenceExtremesStayFinite) {
+    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(0.5f, 0.7f, 1.0f));
+    const std::vector<Sphere> spheres = furnaceSpheres();
+    scene::Scene scene = sphereScene(spheres, 64, 32);
+    const float thicknesses[] = {0.0f, 1.0f, 1200.0f, 400.0f, 400.0f};
+    for (size_t i = 0; i < spheres.size(); ++i) {
+        scene::Material& m = scene.materials[i];
+        m.iridescenceFactor = 1.0f;
+        m.iridescenceThicknessMaximum = thicknesses[i % 5];
+        m.iridescenceIor = i % 5 == 3 ? 1.0f : 1.3f;
+        m.clearcoatFactor = i % 5 == 4 ? 1.0f : 0.0f;
+        m.baseColorFactor = i % 2 == 0 ? glm::vec4(1.0f) : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    }
+    scene::Light light;
+    light.position = glm::vec3(0.0f, 4.0f, 6.0f);
+    light.intensity = 1e5f;
+    scene.lights = {light};
+    Renderer renderer(context());
+    RenderSettings settings = furnaceSettings(scene, env);
+    EXPECT_EQ(frameProblem(renderer.capture(settings)), "");
+    EXPECT_TRUE(contains(renderer.explain(), "pays for layers: iridescence"));
+    settings.debugView = passes::DebugView::IridescenceThickness;
+    EXPECT_EQ(frameProblem(renderer.capture(settings)), "");
+    settings.debugView = passes::DebugView::IridescenceFresnel;
+    const CapturedFrame fresnel = renderer.capture(settings);
+    EXPECT_EQ(frameProblem(fresnel), "");
+    float noFilm = 0.0f, film = 0.0f;
+    for (const FurnacePixel& fp : furnacePixels(fresnel, scene, settings, spheres)) {
+        const float brightest = std::max({fp.value.r, fp.value.g, fp.value.b});
+        if (fp.sphere == 0) noFilm = std::max(noFilm, brightest);
+        if (fp.sphere == 2) film = std::max(film, brightest);
+    }
+    EXPECT_EQ(noFilm, 0.0f);
+    EXPECT_GT(film, 0.0f);
+}
+
 // The sheen albedo LUT (ibl_sheen_lut.comp, a midpoint quadrature over the half vector) against
 // E(N·V, r) = ∫ f_sheen · N·L dω of the double-precision sheen reference, integrated over the half
 // vector on a 16× finer grid in cos θ_h and 8× in φ, at 20 texels (N·V 0 … 1, roughness 0 … 1).

@@ -497,6 +497,49 @@ TEST(GltfFeatures, TransmissionAndVolumeExtensions) {
     EXPECT_EQ(scene.warnings.size(), 5u);
 }
 
+TEST(GltfFeatures, IridescenceExtension) {
+    // Factor, IOR, thickness range, both textures (linear), the defaults (IOR 1.3, 100 … 400 nm;
+    // factor 0: no layer), clamping, and a film of thickness 0 everywhere (no layer).
+    TempDir dir;
+    GltfBuilder b = texturedTriangle("", smallPng());
+    b.doc["extensionsUsed"] = {"KHR_materials_iridescence"};
+    b.doc["materials"] = Json::array({
+        {{"extensions",
+          {{"KHR_materials_iridescence",
+            {{"iridescenceFactor", 0.8}, {"iridescenceIor", 1.8}, {"iridescenceThicknessMinimum", 200},
+             {"iridescenceThicknessMaximum", 600}, {"iridescenceTexture", {{"index", 0}}},
+             {"iridescenceThicknessTexture", {{"index", 0}}}}}}}},
+        {{"extensions", {{"KHR_materials_iridescence", {{"iridescenceFactor", 1}}}}}},
+        {{"extensions", {{"KHR_materials_iridescence", {{"iridescenceIor", 1.5}}}}}},
+        {{"extensions", {{"KHR_materials_iridescence", {{"iridescenceFactor", 1}, {"iridescenceThicknessMaximum", 0}}}}}},
+        {{"extensions",
+          {{"KHR_materials_iridescence", {{"iridescenceFactor", 2}, {"iridescenceIor", 0.5}, {"iridescenceThicknessMinimum", -5}}}}}}});
+    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    ASSERT_EQ(scene.materials.size(), 5u);
+    const Material& m = scene.materials[0];
+    EXPECT_FLOAT_EQ(m.iridescenceFactor, 0.8f);
+    EXPECT_FLOAT_EQ(m.iridescenceIor, 1.8f);
+    EXPECT_FLOAT_EQ(m.iridescenceThicknessMinimum, 200.0f);
+    EXPECT_FLOAT_EQ(m.iridescenceThicknessMaximum, 600.0f);
+    ASSERT_TRUE(m.iridescence.present() && m.iridescenceThickness.present());
+    EXPECT_FALSE(scene.images.at(size_t(m.iridescence.image)).srgb);
+    EXPECT_EQ(m.layers(), uint32_t(kLayerIridescence));
+    const Material& defaults = scene.materials[1];
+    EXPECT_FLOAT_EQ(defaults.iridescenceIor, 1.3f);
+    EXPECT_FLOAT_EQ(defaults.iridescenceThicknessMinimum, 100.0f);
+    EXPECT_FLOAT_EQ(defaults.iridescenceThicknessMaximum, 400.0f);
+    EXPECT_EQ(defaults.layers(), uint32_t(kLayerIridescence));
+    EXPECT_EQ(scene.materials[2].layers(), 0u);  // factor 0
+    EXPECT_EQ(scene.materials[3].layers(), 0u);  // thickness 0 everywhere
+    EXPECT_FLOAT_EQ(scene.materials[4].iridescenceFactor, 1.0f);
+    EXPECT_FLOAT_EQ(scene.materials[4].iridescenceIor, 1.0f);
+    EXPECT_FLOAT_EQ(scene.materials[4].iridescenceThicknessMinimum, 0.0f);
+    EXPECT_TRUE(hasWarning(scene, "iridescenceFactor 2 is outside [0, 1] (using 1)"));
+    EXPECT_TRUE(hasWarning(scene, "iridescenceIor 0.5 is outside [1, inf] (using 1)"));
+    EXPECT_TRUE(hasWarning(scene, "iridescenceThicknessMinimum -5 is outside [0, inf] (using 0)"));
+    EXPECT_EQ(scene.warnings.size(), 3u);
+}
+
 TEST(GltfFeatures, SpecularGlossinessIsConvertedToTheSpecularLayer) {
     // diffuse → base colour (factor and sRGB texture), metallic 0, roughness = 1 − glossiness (a
     // derived texture from the specularGlossiness alpha), specular colour = specularFactor × the
