@@ -563,10 +563,10 @@ void main() {
     vec3 emissive = m.emissive.rgb * sampleSlot(emissiveTexture, CANDELA_TEX_EMISSIVE).rgb;
     vec3 coatLight = vec3(0.0f);
     vec3 sheenLight = vec3(0.0f);
+#ifdef CANDELA_MATERIAL_LAYERS
     vec3 transmissionLight = vec3(0.0f);
     vec3 throughput = vec3(0.0f);  // the fraction of the light behind that comes through
     float backgroundAlpha = 1.0f;
-#ifdef CANDELA_MATERIAL_LAYERS
     // The emission lies beneath the coat too.
     if (hasLayer(CANDELA_LAYER_CLEARCOAT)) emissive *= gCoat.baseWeight;
     coatLight = gCoatLight;
@@ -599,7 +599,11 @@ void main() {
         else if (kDebugView == CANDELA_DEBUG_SPECULAR) value = lit.specular;
         else if (kDebugView == CANDELA_DEBUG_CLEARCOAT) value = coatLight;
         else if (kDebugView == CANDELA_DEBUG_SHEEN) value = sheenLight;
-        else if (kDebugView == CANDELA_DEBUG_TRANSMISSION) value = asData(throughput);
+        else if (kDebugView == CANDELA_DEBUG_TRANSMISSION) {
+#ifdef CANDELA_MATERIAL_LAYERS
+            value = asData(throughput);
+#endif
+        }
         else if (kDebugView == CANDELA_DEBUG_IRIDESCENCE_THICKNESS || kDebugView == CANDELA_DEBUG_IRIDESCENCE_FRESNEL) {
 #ifdef CANDELA_MATERIAL_LAYERS
             // The film's thickness in µm as grey (1 µm white), and the Fresnel it gives at N·V (the
@@ -626,11 +630,16 @@ void main() {
         return;
     }
 
-    vec3 color = lit.diffuse + lit.specular + sheenLight + coatLight + transmissionLight + reference + emissive;
-    // Radiance can exceed half-float range with extreme lights: keep it finite.
-    color = min(color, vec3(60000.0f));
+    vec3 color = lit.diffuse + lit.specular + sheenLight + coatLight + reference + emissive;
+#ifdef CANDELA_MATERIAL_LAYERS
+    color += transmissionLight;
     // Where the background behind a transmitting surface is uncovered (a transparent background),
     // the part of it that comes through stays uncovered: coverage 1 − mean(throughput) · (1 − its alpha).
     float coverage = alpha * (1.0f - (throughput.r + throughput.g + throughput.b) * (1.0f / 3.0f) * (1.0f - backgroundAlpha));
+#else
+    float coverage = alpha;
+#endif
+    // Radiance can exceed half-float range with extreme lights: keep it finite.
+    color = min(color, vec3(60000.0f));
     outColor = vec4(color * alpha, coverage);
 }
