@@ -104,6 +104,15 @@ CANDELA_FN DielectricFresnel dielectricFresnel(float ior, vec3 specularColor, fl
     return d;
 }
 
+CANDELA_FN float minComponent(vec3 c) { return min(c.x, min(c.y, c.z)); }
+
+// Schlick's weight (1 − V·H)⁵.
+CANDELA_FN float schlickWeight(float VoH) {
+    float x = 1.0f - clamp(VoH, 0.0f, 1.0f);
+    float x2 = x * x;
+    return x2 * x2 * x;
+}
+
 // 1 − (1 − V·H)⁵ as V·H (1 + x + x² + x³ + x⁴), x = 1 − V·H: no cancellation at small V·H (grazing
 // transmission, where H_T meets N), where 1 − schlickWeight would keep no correct digit.
 CANDELA_FN float schlickComplement(float VoH) {
@@ -131,17 +140,6 @@ CANDELA_FN vec3 filmSensitivity(float opd, vec3 shift) {
                 0.0556434f * xyz.x - 0.2040259f * xyz.y + 1.0572252f * xyz.z);
 }
 
-CANDELA_FN float filmSchlick(float r0, float cosTheta) {
-    float x = 1.0f - clamp(cosTheta, 0.0f, 1.0f);
-    float x2 = x * x;
-    return r0 + (1.0f - r0) * (x2 * x2 * x);
-}
-CANDELA_FN vec3 filmSchlick(vec3 r0, float cosTheta) {
-    float x = 1.0f - clamp(cosTheta, 0.0f, 1.0f);
-    float x2 = x * x;
-    return r0 + (vec3(1.0f) - r0) * (x2 * x2 * x);
-}
-
 // The Fresnel reflectance of a thin film and 1 minus it, each computed without cancellation (at
 // grazing views the reflectance nears 1 and 1 − it would keep no digit).
 struct ThinFilm {
@@ -162,7 +160,7 @@ CANDELA_FN ThinFilm thinFilm(vec3 reflectance, vec3 oneMinusReflectance) {
 // negative IOR). Thickness 0 (no film): Schlick's Fresnel of the base.
 CANDELA_FN ThinFilm thinFilmFresnel(float outsideIor, float filmIor, float cosTheta1, float thickness, vec3 baseF0) {
     if (thickness <= 0.0f)
-        return thinFilm(filmSchlick(baseF0, cosTheta1), (vec3(1.0f) - baseF0) * schlickComplement(cosTheta1));
+        return thinFilm(fresnelSchlick(cosTheta1, baseF0), (vec3(1.0f) - baseF0) * schlickComplement(cosTheta1));
     float ratio = outsideIor / filmIor;
     // Snell: cos²θ₂ = 1 − ratio² sin²θ₁, as (1 − ratio)(1 + ratio) + ratio² cos²θ₁ — at grazing views
     // 1 − cos²θ₁ would round to 1 and lose θ₂.
@@ -171,7 +169,7 @@ CANDELA_FN ThinFilm thinFilmFresnel(float outsideIor, float filmIor, float cosTh
     float cosTheta2 = sqrt(cosTheta2Squared);
     // First interface (outside → film).
     float q0 = (filmIor - outsideIor) / (filmIor + outsideIor);
-    float r12 = filmSchlick(q0 * q0, cosTheta1);
+    float r12 = q0 * q0 + (1.0f - q0 * q0) * schlickWeight(cosTheta1);
     // 1 − R12 = (1 − R0)(1 − x⁵): no cancellation at grazing views, where R12 → 1.
     float t121 = (1.0f - q0 * q0) * schlickComplement(cosTheta1);
     float phi12 = filmIor < outsideIor ? CANDELA_PI : 0.0f;
@@ -180,7 +178,7 @@ CANDELA_FN ThinFilm thinFilmFresnel(float outsideIor, float filmIor, float cosTh
     vec3 s = sqrt(min(baseF0, vec3(0.9999f)));
     vec3 baseIor = (vec3(1.0f) + s) / (vec3(1.0f) - s);
     vec3 q1 = (baseIor - vec3(filmIor)) / (baseIor + vec3(filmIor));
-    vec3 r23 = filmSchlick(q1 * q1, cosTheta2);
+    vec3 r23 = fresnelSchlick(cosTheta2, q1 * q1);
     vec3 t23 = (vec3(1.0f) - q1 * q1) * schlickComplement(cosTheta2);
     vec3 phi23 = vec3(baseIor.x < filmIor ? CANDELA_PI : 0.0f, baseIor.y < filmIor ? CANDELA_PI : 0.0f,
                       baseIor.z < filmIor ? CANDELA_PI : 0.0f);
@@ -217,15 +215,6 @@ CANDELA_FN DielectricFresnel withThinFilm(DielectricFresnel d, float iridescence
     filmed.filmOneMinusDielectric = dielectric.oneMinusReflectance;
     filmed.filmMetal = thinFilmFresnel(outsideIor, filmIor, NoV, thickness, baseColor).reflectance;
     return filmed;
-}
-
-CANDELA_FN float minComponent(vec3 c) { return min(c.x, min(c.y, c.z)); }
-
-// Schlick's weight (1 − V·H)⁵.
-CANDELA_FN float schlickWeight(float VoH) {
-    float x = 1.0f - clamp(VoH, 0.0f, 1.0f);
-    float x2 = x * x;
-    return x2 * x2 * x;
 }
 
 // The dielectric Fresnel at V·H (with the thin film's, when there is one).
