@@ -209,4 +209,47 @@ inline std::vector<FurnacePixel> furnacePixels(const CapturedFrame& frame, const
     return out;
 }
 
+// The white-furnace check of `pixels` (interior pixels of a frame of `sphereCount` spheres that
+// should all reflect exactly 1): every pixel sees a sphere, every sphere has over 1000 of them; over
+// RGB, max |x − 1| within 0.02 and max x − 1 within one RGBA16F step (1/1024), printed as
+// "[ measured ] <key>MaxAbsError" and "<key>MaxAboveOne".
+inline void expectWhiteFurnace(const std::vector<FurnacePixel>& pixels, size_t sphereCount, const std::string& key) {
+    std::vector<size_t> count(sphereCount, 0);
+    double worst = 0.0, highest = -1.0;
+    for (const FurnacePixel& fp : pixels) {
+        ASSERT_GE(fp.sphere, 0) << "interior pixel (" << fp.x << ", " << fp.y << ") misses every sphere";
+        ++count[size_t(fp.sphere)];
+        for (int c = 0; c < 3; ++c) {
+            worst = std::max(worst, std::abs(double(fp.value[c]) - 1.0));
+            highest = std::max(highest, double(fp.value[c]) - 1.0);
+        }
+    }
+    for (size_t i = 0; i < sphereCount; ++i) EXPECT_GT(count[i], 1000u) << "sphere " << i;
+    measured(key + "MaxAbsError", worst);
+    measured(key + "MaxAboveOne", highest);
+    EXPECT_LE(worst, 0.02);
+    EXPECT_LE(highest, 1.0 / 1024.0);
+}
+
+// Per channel, the lowest and the highest value of a sphere's interior pixels (+inf and −inf for
+// a sphere without pixels, so a check on it fails).
+struct ChannelRange {
+    glm::vec3 lowest{INFINITY};
+    glm::vec3 highest{-INFINITY};
+};
+
+inline std::vector<ChannelRange> channelRange(const std::vector<FurnacePixel>& pixels, size_t sphereCount) {
+    std::vector<ChannelRange> range(sphereCount);
+    for (const FurnacePixel& fp : pixels) {
+        if (fp.sphere < 0) continue;
+        ChannelRange& r = range[size_t(fp.sphere)];
+        r.lowest = glm::min(r.lowest, glm::vec3(fp.value));
+        r.highest = glm::max(r.highest, glm::vec3(fp.value));
+    }
+    return range;
+}
+
+inline float minComponent(glm::vec3 v) { return std::min({v.x, v.y, v.z}); }
+inline float maxComponent(glm::vec3 v) { return std::max({v.x, v.y, v.z}); }
+
 }  // namespace candela::test

@@ -15,6 +15,7 @@
 #include <iostream>
 #include <numbers>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace candela::test {
@@ -85,6 +86,55 @@ void expectWithinTolerance(const char* lobe, const ref::ErrorStats& stats, uint6
     EXPECT_EQ(bad, 0u) << "NaN, Inf or negative values";
     EXPECT_LE(stats.maxRelative, tolerance) << stats.worstRelative;
     EXPECT_LE(stats.maxAbsolute, kAbsoluteTolerance) << stats.worstAbsolute;
+}
+
+// One input of the layers' float tests: what the float and the double evaluation both take.
+struct LobeInput {
+    glm::vec3 N, V, L, base;
+    float metallic, roughness;
+    uint32_t model;
+};
+
+// Calls `f(input)` over the grid the layers' float tests share: both Cook-Torrance models, N·V and
+// N·L from kCosines — with `behindToo`, each L also mirrored below the surface — azimuths 0, π/2
+// and π, roughness 0 (clamped), 0.3 and 1, kMetallics, kBaseColors.
+template <class F>
+void forEachLobeInput(bool behindToo, F&& f) {
+    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    for (uint32_t model : {uint32_t(ref::kPbr), uint32_t(ref::kPbrSchlickGgx)})
+        for (double cv : kCosines)
+            for (double cl : kCosines)
+                for (double side : {1.0, -1.0})
+                    for (double phi : {0.0, std::numbers::pi / 2, std::numbers::pi})
+                        for (float roughness : {0.0f, 0.3f, 1.0f})
+                            for (float metallic : kMetallics)
+                                for (const glm::vec3& base : kBaseColors) {
+                                    if (side < 0.0 && !behindToo) continue;
+                                    f(LobeInput{N, direction(cv, 0.0), direction(side * cl, phi), base, metallic, roughness, model});
+                                }
+}
+
+// The reference of `in` with `layers` (ref::brdfTimesCosineLayered).
+glm::dvec3 referenceOf(const LobeInput& in, const ref::Layers& layers) {
+    return ref::brdfTimesCosineLayered(glm::dvec3(in.N), glm::dvec3(in.V), glm::dvec3(in.L), glm::dvec3(in.base), in.metallic,
+                                       in.roughness, in.model, layers);
+}
+
+// Adds the three channels of `got` against `expected` to `stats` and counts the non-finite or
+// negative ones in `bad`; `layer` names the layer settings in the worst cases' descriptions.
+void compareChannels(ref::ErrorStats& stats, uint64_t& bad, const LobeInput& in, glm::vec3 got, glm::dvec3 expected,
+                     const std::string& layer) {
+    for (int c = 0; c < 3; ++c) {
+        bad += std::isfinite(got[c]) && got[c] >= 0.0f ? 0 : 1;
+        stats.add(got[c], expected[c], [&] {
+            std::ostringstream s;
+            s.precision(9);
+            s << layer << " model " << in.model << " V=(" << in.V.x << "," << in.V.y << "," << in.V.z << ") L=(" << in.L.x << ","
+              << in.L.y << "," << in.L.z << ") metallic " << in.metallic << " roughness " << in.roughness << " channel " << c
+              << ": float " << got[c] << ", double " << expected[c];
+            return s.str();
+        });
+    }
 }
 
 TEST(BrdfLayers, FloatMatchesDoubleReference) {
@@ -175,56 +225,23 @@ std::vector<Coat> coats() {
     return out;
 }
 
-glm::vec3 coatedFloat(glm::vec3 N, glm::vec3 V, glm::vec3 L, glm::vec3 base, float metallic, float roughness, uint32_t model,
-                      const Coat& coat) {
-    const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
-        N, V, L, L, base, metallic, roughness, model, coat.bits, shading::dielectricFresnel(coat.ior, glm::vec3(1.0f), 1.0f),
-        noAnisotropy(), noTransmission(), noSheen(), shading::clearcoatLayer(coat.weight, coat.roughness, coat.normal, V));
-    return lobes.diffuse + lobes.specular + lobes.sheen + glm::vec3(lobes.clearcoat);
-}
-
-glm::dvec3 coatedReference(glm::vec3 N, glm::vec3 V, glm::vec3 L, glm::vec3 base, float metallic, float roughness,
-                           uint32_t model, const Coat& coat) {
-    const ref::Layers layers{.bits = coat.bits, .ior = coat.ior, .clearcoat = coat.weight,
-                             .clearcoatRoughness = coat.roughness, .clearcoatNormal = glm::dvec3(coat.normal)};
-    return ref::brdfTimesCosineLayered(glm::dvec3(N), glm::dvec3(V), glm::dvec3(L), glm::dvec3(base), metallic, roughness,
-                                       model, layers);
-}
-
-template <class F>
-void forEachCoatedCombination(F&& f) {
-    const glm::vec3 N(0.0f, 0.0f, 1.0f);
-    for (const Coat& coat : coats())
-        for (uint32_t model : {uint32_t(ref::kPbr), uint32_t(ref::kPbrSchlickGgx)})
-            for (double cv : kCosines)
-                for (double cl : kCosines)
-                    for (double phi : {0.0, std::numbers::pi / 2, std::numbers::pi})
-                        for (float roughness : {0.0f, 0.3f, 1.0f})
-                            for (float metallic : kMetallics)
-                                for (const glm::vec3& base : kBaseColors)
-                                    f(N, direction(cv, 0.0), direction(cl, phi), base, metallic, roughness, model, coat);
-}
-
 TEST(BrdfLayers, ClearcoatFloatMatchesDoubleReference) {
     ref::ErrorStats stats{.floor = kFloor};
     uint64_t bad = 0;
-    forEachCoatedCombination([&](glm::vec3 N, glm::vec3 V, glm::vec3 L, glm::vec3 base, float metallic, float roughness,
-                                 uint32_t model, const Coat& coat) {
-        const glm::vec3 got = coatedFloat(N, V, L, base, metallic, roughness, model, coat);
-        const glm::dvec3 expected = coatedReference(N, V, L, base, metallic, roughness, model, coat);
-        for (int c = 0; c < 3; ++c) {
-            bad += std::isfinite(got[c]) && got[c] >= 0.0f ? 0 : 1;
-            stats.add(got[c], expected[c], [&] {
-                std::ostringstream s;
-                s.precision(9);
-                s << "coat " << coat.weight << " roughness " << coat.roughness << " normal z " << coat.normal.z << " bits "
-                  << coat.bits << " model " << model << " V=(" << V.x << "," << V.y << "," << V.z << ") L=(" << L.x << ","
-                  << L.y << "," << L.z << ") metallic " << metallic << " roughness " << roughness << " channel " << c
-                  << ": float " << got[c] << ", double " << expected[c];
-                return s.str();
-            });
-        }
-    });
+    for (const Coat& coat : coats()) {
+        std::ostringstream name;
+        name << "coat " << coat.weight << " roughness " << coat.roughness << " normal z " << coat.normal.z << " bits " << coat.bits;
+        const ref::Layers layers{.bits = coat.bits, .ior = coat.ior, .clearcoat = coat.weight,
+                                 .clearcoatRoughness = coat.roughness, .clearcoatNormal = glm::dvec3(coat.normal)};
+        forEachLobeInput(false, [&](const LobeInput& in) {
+            const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
+                in.N, in.V, in.L, in.L, in.base, in.metallic, in.roughness, in.model, coat.bits,
+                shading::dielectricFresnel(coat.ior, glm::vec3(1.0f), 1.0f), noAnisotropy(), noTransmission(), noSheen(),
+                shading::clearcoatLayer(coat.weight, coat.roughness, coat.normal, in.V));
+            compareChannels(stats, bad, in, lobes.diffuse + lobes.specular + lobes.sheen + glm::vec3(lobes.clearcoat),
+                            referenceOf(in, layers), name.str());
+        });
+    }
     expectWithinTolerance("clearcoat", stats, bad, kTolerance);
 }
 
@@ -380,44 +397,22 @@ TEST(BrdfLayers, SheenUnderImageBasedLightKeepsTheWhiteFurnace) {
 TEST(BrdfLayers, AnisotropyFloatMatchesDoubleReference) {
     ref::ErrorStats stats{.floor = kFloor};
     uint64_t bad = 0;
-    const glm::vec3 N(0.0f, 0.0f, 1.0f);
     for (float strength : {0.5f, 1.0f})
         for (const glm::vec3& T : {glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.8660254f, 0.5f, 0.0f)})
-            for (uint32_t bits : {uint32_t(CANDELA_LAYER_ANISOTROPY), uint32_t(CANDELA_LAYER_ANISOTROPY | CANDELA_LAYER_SPECULAR)})
-                for (uint32_t model : {uint32_t(ref::kPbr), uint32_t(ref::kPbrSchlickGgx)})
-                    for (double cv : kCosines)
-                        for (double cl : kCosines)
-                            for (double phi : {0.0, std::numbers::pi / 2, std::numbers::pi})
-                                for (float roughness : {0.0f, 0.3f, 1.0f})
-                                    for (float metallic : kMetallics)
-                                        for (const glm::vec3& base : kBaseColors) {
-                                            const glm::vec3 V = direction(cv, 0.0), L = direction(cl, phi);
-                                            const float ior = (bits & CANDELA_LAYER_SPECULAR) ? 1.33f : 1.5f;
-                                            const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
-                                                N, V, L, L, base, metallic, roughness, model, bits,
-                                                shading::dielectricFresnel(ior, glm::vec3(1.0f), 1.0f),
-                                                shading::anisotropyLayer(strength, T, glm::cross(N, T)), noTransmission(), noSheen(),
-                                                shading::clearcoatLayer(0.0f, 0.0f, N, V));
-                                            const glm::vec3 got = lobes.diffuse + lobes.specular;
-                                            const ref::Layers layers{.bits = bits, .ior = ior, .anisotropy = strength,
-                                                                     .anisotropyDirection = glm::dvec3(T)};
-                                            const glm::dvec3 expected = ref::brdfTimesCosineLayered(
-                                                glm::dvec3(N), glm::dvec3(V), glm::dvec3(L), glm::dvec3(base), metallic,
-                                                roughness, model, layers);
-                                            for (int c = 0; c < 3; ++c) {
-                                                bad += std::isfinite(got[c]) && got[c] >= 0.0f ? 0 : 1;
-                                                stats.add(got[c], expected[c], [&] {
-                                                    std::ostringstream s;
-                                                    s.precision(9);
-                                                    s << "strength " << strength << " T=(" << T.x << "," << T.y << ") bits "
-                                                      << bits << " V=(" << V.x << "," << V.z << ") L=(" << L.x << ","
-                                                      << L.y << "," << L.z << ") roughness " << roughness << " metallic "
-                                                      << metallic << " channel " << c << ": float " << got[c]
-                                                      << ", double " << expected[c];
-                                                    return s.str();
-                                                });
-                                            }
-                                        }
+            for (uint32_t bits : {uint32_t(CANDELA_LAYER_ANISOTROPY), uint32_t(CANDELA_LAYER_ANISOTROPY | CANDELA_LAYER_SPECULAR)}) {
+                const float ior = (bits & CANDELA_LAYER_SPECULAR) ? 1.33f : 1.5f;
+                std::ostringstream name;
+                name << "strength " << strength << " T=(" << T.x << "," << T.y << ") bits " << bits;
+                const ref::Layers layers{.bits = bits, .ior = ior, .anisotropy = strength, .anisotropyDirection = glm::dvec3(T)};
+                forEachLobeInput(false, [&](const LobeInput& in) {
+                    const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
+                        in.N, in.V, in.L, in.L, in.base, in.metallic, in.roughness, in.model, bits,
+                        shading::dielectricFresnel(ior, glm::vec3(1.0f), 1.0f),
+                        shading::anisotropyLayer(strength, T, glm::cross(in.N, T)), noTransmission(), noSheen(),
+                        shading::clearcoatLayer(0.0f, 0.0f, in.N, in.V));
+                    compareChannels(stats, bad, in, lobes.diffuse + lobes.specular, referenceOf(in, layers), name.str());
+                });
+            }
     expectWithinTolerance("anisotropy", stats, bad, kTolerance);
 }
 
@@ -440,45 +435,23 @@ TEST(BrdfLayers, AnisotropyOfStrengthZeroIsTheIsotropicLobe) {
 TEST(BrdfLayers, TransmissionFloatMatchesDoubleReference) {
     ref::ErrorStats stats{.floor = kFloor};
     uint64_t bad = 0;
-    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    const glm::vec3 color(1.0f, 0.5f, 0.25f);
     for (float weight : {1.0f, 0.5f})
         for (float ior : {1.5f, 1.2f, 1.0f})
-            for (uint32_t bits : {uint32_t(CANDELA_LAYER_TRANSMISSION), uint32_t(CANDELA_LAYER_TRANSMISSION | CANDELA_LAYER_SPECULAR)})
-                for (uint32_t model : {uint32_t(ref::kPbr), uint32_t(ref::kPbrSchlickGgx)})
-                    for (double cv : kCosines)
-                        for (double cl : kCosines)
-                            for (double side : {1.0, -1.0})
-                                for (double phi : {0.0, std::numbers::pi / 2, std::numbers::pi})
-                                    for (float roughness : {0.0f, 0.3f, 1.0f})
-                                        for (float metallic : kMetallics)
-                                            for (const glm::vec3& base : kBaseColors) {
-                                                const glm::vec3 V = direction(cv, 0.0), L = direction(side * cl, phi);
-                                                const glm::vec3 color(1.0f, 0.5f, 0.25f);
-                                                const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
-                                                    N, V, L, L, base, metallic, roughness, model, bits,
-                                                    (bits & CANDELA_LAYER_SPECULAR) ? shading::dielectricFresnel(ior, color, 1.0f)
-                                                                                    : shading::coreDielectricFresnel(),
-                                                    noAnisotropy(), shading::transmissionLayer(weight, roughness, ior), noSheen(),
-                                                    shading::clearcoatLayer(0.0f, 0.0f, N, V));
-                                                const glm::vec3 got = lobes.diffuse + lobes.specular + lobes.transmission;
-                                                const ref::Layers layers{.bits = bits, .ior = ior, .specularColor = glm::dvec3(color),
-                                                                         .transmission = weight};
-                                                const glm::dvec3 expected = ref::brdfTimesCosineLayered(
-                                                    glm::dvec3(N), glm::dvec3(V), glm::dvec3(L), glm::dvec3(base), metallic,
-                                                    roughness, model, layers);
-                                                for (int c = 0; c < 3; ++c) {
-                                                    bad += std::isfinite(got[c]) && got[c] >= 0.0f ? 0 : 1;
-                                                    stats.add(got[c], expected[c], [&] {
-                                                        std::ostringstream s;
-                                                        s.precision(9);
-                                                        s << "transmission " << weight << " ior " << ior << " bits " << bits
-                                                          << " V=(" << V.x << "," << V.z << ") L=(" << L.x << "," << L.y << ","
-                                                          << L.z << ") roughness " << roughness << " metallic " << metallic
-                                                          << " channel " << c << ": float " << got[c] << ", double " << expected[c];
-                                                        return s.str();
-                                                    });
-                                                }
-                                            }
+            for (uint32_t bits : {uint32_t(CANDELA_LAYER_TRANSMISSION), uint32_t(CANDELA_LAYER_TRANSMISSION | CANDELA_LAYER_SPECULAR)}) {
+                std::ostringstream name;
+                name << "transmission " << weight << " ior " << ior << " bits " << bits;
+                const shading::DielectricFresnel d =
+                    (bits & CANDELA_LAYER_SPECULAR) ? shading::dielectricFresnel(ior, color, 1.0f) : shading::coreDielectricFresnel();
+                const ref::Layers layers{.bits = bits, .ior = ior, .specularColor = glm::dvec3(color), .transmission = weight};
+                forEachLobeInput(true, [&](const LobeInput& in) {
+                    const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
+                        in.N, in.V, in.L, in.L, in.base, in.metallic, in.roughness, in.model, bits, d, noAnisotropy(),
+                        shading::transmissionLayer(weight, in.roughness, ior), noSheen(), shading::clearcoatLayer(0.0f, 0.0f, in.N, in.V));
+                    compareChannels(stats, bad, in, lobes.diffuse + lobes.specular + lobes.transmission, referenceOf(in, layers),
+                                    name.str());
+                });
+            }
     expectWithinTolerance("transmission", stats, bad, kTolerance);
 }
 
@@ -568,44 +541,23 @@ TEST(BrdfLayers, IridescenceFloatMatchesDoubleReference) {
 
     ref::ErrorStats stats{.floor = kFloor};
     bad = 0;
-    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    const glm::vec3 color(1.0f, 0.5f, 0.25f);
     for (float weight : {1.0f, 0.5f})
-        for (uint32_t bits : {uint32_t(CANDELA_LAYER_IRIDESCENCE), uint32_t(CANDELA_LAYER_IRIDESCENCE | CANDELA_LAYER_SPECULAR)})
-            for (uint32_t model : {uint32_t(ref::kPbr), uint32_t(ref::kPbrSchlickGgx)})
-                for (double cv : kCosines)
-                    for (double cl : kCosines)
-                        for (double phi : {0.0, std::numbers::pi / 2, std::numbers::pi})
-                            for (float roughness : {0.0f, 0.3f, 1.0f})
-                                for (float metallic : kMetallics)
-                                    for (const glm::vec3& base : kBaseColors) {
-                                        const glm::vec3 V = direction(cv, 0.0), L = direction(cl, phi);
-                                        const glm::vec3 color(1.0f, 0.5f, 0.25f);
-                                        shading::DielectricFresnel d = (bits & CANDELA_LAYER_SPECULAR)
-                                                                           ? shading::dielectricFresnel(1.33f, color, 1.0f)
-                                                                           : shading::coreDielectricFresnel();
-                                        const float NoV = std::clamp(glm::dot(N, V), 1e-4f, 1.0f);
-                                        d = shading::withThinFilm(d, weight, 1.3f, 400.0f, 1.0f, NoV, base);
-                                        const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
-                                            N, V, L, L, base, metallic, roughness, model, bits, d, noAnisotropy(), noTransmission(),
-                                            noSheen(), shading::clearcoatLayer(0.0f, 0.0f, N, V));
-                                        const glm::vec3 got = lobes.diffuse + lobes.specular;
-                                        const ref::Layers layers{.bits = bits, .ior = 1.33, .specularColor = glm::dvec3(color),
-                                                                 .iridescence = weight, .iridescenceIor = double(1.3f)};
-                                        const glm::dvec3 expected = ref::brdfTimesCosineLayered(
-                                            glm::dvec3(N), glm::dvec3(V), glm::dvec3(L), glm::dvec3(base), metallic, roughness,
-                                            model, layers);
-                                        for (int c = 0; c < 3; ++c) {
-                                            bad += std::isfinite(got[c]) && got[c] >= 0.0f ? 0 : 1;
-                                            stats.add(got[c], expected[c], [&] {
-                                                std::ostringstream s;
-                                                s.precision(9);
-                                                s << "film " << weight << " bits " << bits << " V=(" << V.x << "," << V.z << ") L=("
-                                                  << L.x << "," << L.y << "," << L.z << ") roughness " << roughness << " metallic "
-                                                  << metallic << " channel " << c << ": float " << got[c] << ", double " << expected[c];
-                                                return s.str();
-                                            });
-                                        }
-                                    }
+        for (uint32_t bits : {uint32_t(CANDELA_LAYER_IRIDESCENCE), uint32_t(CANDELA_LAYER_IRIDESCENCE | CANDELA_LAYER_SPECULAR)}) {
+            std::ostringstream name;
+            name << "film " << weight << " bits " << bits;
+            const ref::Layers layers{.bits = bits, .ior = 1.33, .specularColor = glm::dvec3(color), .iridescence = weight,
+                                     .iridescenceIor = double(1.3f)};
+            forEachLobeInput(false, [&](const LobeInput& in) {
+                const shading::DielectricFresnel d = shading::withThinFilm(
+                    (bits & CANDELA_LAYER_SPECULAR) ? shading::dielectricFresnel(1.33f, color, 1.0f) : shading::coreDielectricFresnel(),
+                    weight, 1.3f, 400.0f, 1.0f, std::clamp(glm::dot(in.N, in.V), 1e-4f, 1.0f), in.base);
+                const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
+                    in.N, in.V, in.L, in.L, in.base, in.metallic, in.roughness, in.model, bits, d, noAnisotropy(), noTransmission(),
+                    noSheen(), shading::clearcoatLayer(0.0f, 0.0f, in.N, in.V));
+                compareChannels(stats, bad, in, lobes.diffuse + lobes.specular, referenceOf(in, layers), name.str());
+            });
+        }
     expectWithinTolerance("iridescence", stats, bad, kTolerance);
 }
 
