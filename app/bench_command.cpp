@@ -5,6 +5,7 @@
 
 #include "commands.h"
 
+#include "core/check.h"
 #include "core/log.h"
 #include "statistics.h"
 
@@ -50,10 +51,12 @@ int runBench(const RenderOptions& options) {
     std::vector<double> frameMs, calibrationMs, calibrationGpuMs;
     std::map<std::string, std::vector<double>> passGpuMs;
     std::vector<std::string> passOrder;
+    passes::DrawStats drawStats;  // of the last frame
     for (uint32_t i = 0; i < options.frames; ++i) {
         advance(i);
         const FrameTiming frame = renderer.renderFrame(settings);
         frameMs.push_back(frame.submitWaitMs);
+        drawStats = renderer.drawStats();
         const graph::GraphDecl& decl = renderer.lastGraph().declaration();
         for (uint32_t pass : renderer.lastGraph().compiled().order) {
             const std::string& name = decl.passes[pass].name;
@@ -89,6 +92,20 @@ int runBench(const RenderOptions& options) {
                           {"ratioToCalibrationGpu", gpu >= 0.0 && calibrationGpu > 0.0 ? gpu / calibrationGpu : -1.0}});
     }
     out["passes"] = passes;
+    out["draws"] = {{"scene", drawStats.sceneDraws},
+                    {"submitted", drawStats.submittedDraws},
+                    {"culled", drawStats.culledDraws},
+                    {"coarserLevel", drawStats.coarserDraws},
+                    {"sceneTriangles", drawStats.sceneTriangles},
+                    {"submittedTriangles", drawStats.submittedTriangles},
+                    {"stateChanges", drawStats.stateChanges()},
+                    {"pipelineBinds", drawStats.pipelineBinds},
+                    {"descriptorBinds", drawStats.descriptorBinds}};
+    out["geometry"] = {{"meshes", scene.geometry.meshes},
+                       {"simplifiedMeshes", scene.geometry.simplifiedMeshes},
+                       {"indexBytes", scene.geometry.indexBytes},
+                       {"lodIndexBytes", scene.geometry.lodIndexBytes},
+                       {"prepareMs", scene.geometry.milliseconds}};
     if (pose.animated())
         out["animation"] = {{"playing", pose.playing().size()}, {"evaluateMedianMs", median(animationMs)},
                             {"evaluateMaxMs", *std::max_element(animationMs.begin(), animationMs.end())}};
@@ -102,6 +119,16 @@ int runBench(const RenderOptions& options) {
         if (const auto& d = scene.decompression; d.dracoPrimitives + d.meshoptViews > 0)
             std::printf("  geometry decompression: %.2f ms (%zu Draco primitives, %zu meshopt bufferViews)\n",
                         d.milliseconds, d.dracoPrimitives, d.meshoptViews);
+        const auto& g = scene.geometry;
+        std::printf("  geometry:    %zu meshes, %zu with levels of detail: +%.1f%% index memory (%s full, %s levels), "
+                    "prepared in %.1f ms\n",
+                    g.meshes, g.simplifiedMeshes, g.indexBytes ? 100.0 * double(g.lodIndexBytes) / double(g.indexBytes) : 0.0,
+                    formatBytes(g.indexBytes).c_str(), formatBytes(g.lodIndexBytes).c_str(), g.milliseconds);
+        std::printf("  draws:       %u of %u submitted (%u culled, %u at a coarser level), %llu of %llu triangles, "
+                    "%u state changes (%u pipeline, %u descriptor-set binds)\n",
+                    drawStats.submittedDraws, drawStats.sceneDraws, drawStats.culledDraws, drawStats.coarserDraws,
+                    (unsigned long long)drawStats.submittedTriangles, (unsigned long long)drawStats.sceneTriangles,
+                    drawStats.stateChanges(), drawStats.pipelineBinds, drawStats.descriptorBinds);
         std::printf("  calibration: median %.2f ms, min %.2f ms (GPU %.2f ms)\n", calibration, minimum(calibrationMs),
                     calibrationGpu);
         std::printf("  frame:       median %.2f ms (%.2fx calibration), min %.2f ms (%.2fx)\n", median(frameMs),

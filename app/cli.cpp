@@ -250,6 +250,18 @@ Command parseCommandLine(const std::vector<std::string>& args) {
             if (v != "on" && v != "off") throw UserError("--scene-lights: expected on or off, got '" + v + "'");
             o.sceneLights = v == "on";
         };
+        table.withValue["--lod-error"] = [&](const std::string& v) {
+            o.lodErrorPixels = parseNumber("--lod-error", v);
+            if (!(o.lodErrorPixels >= 0.0f)) throw UserError("--lod-error: expected pixels ≥ 0, got '" + v + "'");
+        };
+        table.withValue["--lod"] = [&](const std::string& v) {
+            if (v != "on" && v != "off") throw UserError("--lod: expected on or off, got '" + v + "'");
+            o.lodErrorPixels = v == "on" ? 1.0f : 0.0f;
+        };
+        table.withValue["--cull"] = [&](const std::string& v) {
+            if (v != "on" && v != "off") throw UserError("--cull: expected on or off, got '" + v + "'");
+            o.frustumCulling = v == "on";
+        };
         table.withValue["--variant"] = [&](const std::string& v) {
             if (v.empty()) throw UserError("--variant: expected a variant name");
             o.variant = v;
@@ -443,6 +455,10 @@ render options:
   --no-default-lights   a scene without punctual lights normally gets a default key and fill light
   --scene-lights on|off the file's own KHR_lights_punctual lights (off: image-based lighting only,
                         for comparisons; the scene then counts as one without lights) [on]
+  --lod-error PIXELS    draw each mesh at the coarsest level of detail whose geometric error covers
+                        at most PIXELS on screen; 0: full detail [1]
+  --lod on|off          --lod-error 1 or 0
+  --cull on|off         leave out draws outside the view frustum [on]
   --variant NAME        draw the file's KHR_materials_variants variant NAME (an unknown name is an
                         error that lists the file's variants) [the default materials]
   --explain             print which passes and shader variants were left out, and why

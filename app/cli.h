@@ -39,6 +39,8 @@ struct RenderOptions {
     bool defaultLights = true;        // --no-default-lights turns off the key/fill lights of light-less scenes
     bool sceneLights = true;          // --scene-lights off leaves out the file's own punctual lights
     std::string variant;              // --variant NAME: a KHR_materials_variants variant ("" = defaults)
+    float lodErrorPixels = 1.0f;      // --lod-error PIXELS (0, or --lod off: full detail)
+    bool frustumCulling = true;       // --cull on|off
     bool explain = false;             // --explain
     uint32_t frames = 20;             // bench: --frames N; view: frames to render before exiting (0: until closed)
     std::string screenshot;           // view: --screenshot FILE (saves the last of --frames N)

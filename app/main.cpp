@@ -66,6 +66,7 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
     settings.disabledPasses = options.disabledPasses;
     settings.defaultLights = options.defaultLights;
     settings.sceneLights = options.sceneLights;
+    settings.drawSelection = {.frustumCulling = options.frustumCulling, .lodErrorPixels = options.lodErrorPixels};
     if (options.camera) settings.camera.gltfCamera = *options.camera;
     if (options.cameraOrbit) settings.camera.orbit = glm::vec3((*options.cameraOrbit)[0], (*options.cameraOrbit)[1], (*options.cameraOrbit)[2]);
     if (options.target) settings.camera.target = glm::vec3((*options.target)[0], (*options.target)[1], (*options.target)[2]);

@@ -504,7 +504,7 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
     const passes::ForwardPass::Output forward =
         mForward.add(graph, settings.width, settings.height, view, settings.shading, ibl ? &*ibl : nullptr, &mParameters,
                      settings.debugView, posed ? &*posed : nullptr, deformed ? &*deformed : nullptr,
-                     layerMaps ? &*layerMaps : nullptr);
+                     layerMaps ? &*layerMaps : nullptr, settings.drawSelection);
     frame.debugView = settings.debugView;
     frame.hdr = forward.hdr;
     frame.skybox = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;

@@ -74,6 +74,8 @@ struct RenderSettings {
     // under image-based lighting alone — the scene then counts as one without lights.
     bool sceneLights = true;
     passes::TonemapSettings tonemap;
+    // Frustum culling and the level-of-detail error (--lod-error, --cull).
+    passes::DrawSelection drawSelection;
     // Image-based lighting: the environment (null: none; read during the call only, hashed when the
     // pointer or the quality changes), what to precompute and how to look it up.
     const scene::Environment* environment = nullptr;
@@ -187,6 +189,9 @@ public:
                         CapturedFrame* screenshot = nullptr);
     // Per-pass GPU times of the latest frame known to be complete, in execution order.
     const std::vector<PassTime>& completedPassTimes() const { return mCompletedTimes; }
+    // What the forward passes of the last frame drew (scene vs submitted draws and triangles,
+    // state changes; the latter once the frame is recorded).
+    const passes::DrawStats& drawStats() const { return mForward.drawStats(); }
     // The last IBL precompute that completed.
     const PrecomputeTime& lastPrecompute() const { return mLastPrecompute; }
     // The GPU time of the pass named `pass` in that frame; negative if it did not run there.

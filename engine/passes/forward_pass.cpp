@@ -3,8 +3,12 @@
 #include "graph/graph_executor.h"
 #include "shared/brdf.h"
 #include "shared/scene_data.h"
+#include "scene/frustum.h"
+#include "scene/mesh_lod.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <tuple>
 #include <stdexcept>
 
 namespace candela::passes {
@@ -33,6 +37,28 @@ std::string plusLayerNames(uint32_t layers) {
 
 // Whether material `m` is drawn by the layered program.
 bool layered(const scene::Material& m) { return !m.unlit && m.layers() != 0; }
+
+// The level of detail `draw` is drawn at from `view` on a target `height` pixels tall: the coarsest
+// of its chain whose error covers at most `maxPixels` (its full detail without a chain).
+scene::LodLevel levelOf(const scene::Scene& scene, const scene::Draw& draw, const scene::ViewSetup& view, uint32_t height,
+                        float maxPixels) {
+    if (draw.lod < 0 || !(maxPixels > 0.0f)) return {draw.firstIndex, draw.indexCount, 0.0f};
+    float scale = scene::maxScale(draw.world);
+    if (draw.instanceCount > 0) {
+        float instanceScale = 0.0f;
+        for (uint32_t i = 0; i < draw.instanceCount; ++i)
+            instanceScale = std::max(instanceScale, scene::maxScale(scene.instances[draw.firstInstance + i]));
+        scale *= instanceScale;
+    }
+    const scene::LodChain& chain = scene.lodChains[size_t(draw.lod)];
+    return chain.levels[scene::selectLod(chain, scale, scene::pixelsPerUnit(view, height, draw.bounds), maxPixels)];
+}
+
+std::string formatPixels(float pixels) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", double(pixels));
+    return text;
+}
 
 }  // namespace
 
@@ -153,19 +179,32 @@ static bool transmissive(const scene::Material& m) { return layered(m) && (m.lay
 ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
                                      ShadingModel model, const Ibl* ibl, shader::ParameterRegistry* parameters,
                                      DebugView debugView, const PosedDraws* posed, const DeformedVertices* deformed,
-                                     const LayerMaps* layerMaps) {
+                                     const LayerMaps* layerMaps, const DrawSelection& selection) {
     const scene::Scene& scene = mScene->scene();
     const std::span<const scene::Draw> draws = posed ? posed->draws : std::span<const scene::Draw>(scene.draws);
     std::vector<DrawItem> opaque, blended, transmitting;
     std::map<std::string, uint32_t> variantCounts;
     uint32_t hidden = 0;
     uint32_t drawData = 0;  // the draw buffer holds one entry per draw, one per instance for instanced ones
+    mStats = DrawStats{};
+    const scene::Frustum frustum(view.viewProjection);
     for (uint32_t i = 0; i < draws.size(); drawData += std::max(draws[i].instanceCount, 1u), ++i) {
         const scene::Draw& draw = draws[i];
         if (draw.hidden) {
             ++hidden;
             continue;
         }
+        const uint32_t instances = std::max(draw.instanceCount, 1u);
+        ++mStats.sceneDraws;
+        mStats.sceneTriangles += uint64_t(draw.indexCount / 3) * instances;
+        if (selection.frustumCulling && !frustum.intersects(draw.bounds)) {
+            ++mStats.culledDraws;
+            continue;
+        }
+        const scene::LodLevel level = levelOf(scene, draw, view, height, selection.lodErrorPixels);
+        mStats.coarserDraws += level.firstIndex != draw.firstIndex;
+        ++mStats.submittedDraws;
+        mStats.submittedTriangles += uint64_t(level.indexCount / 3) * instances;
         const Variant v = variantOf(draw, model, ibl, debugView);
         ++variantCounts[v.name()];
         const glm::vec3 centre = 0.5f * (draw.bounds.min + draw.bounds.max);
@@ -173,15 +212,18 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
         const bool behind = transmissive(scene.materials[draw.material]) && debugView == DebugView::None;
         (behind ? transmitting : v.blend ? blended : opaque)
             .push_back({.pipeline = &pipeline(v), .depth = glm::length(centre - view.eye),
-                        .firstIndex = draw.firstIndex, .indexCount = draw.indexCount, .material = draw.material,
+                        .firstIndex = level.firstIndex, .indexCount = level.indexCount, .material = draw.material,
                         .flipWinding = draw.flipWinding, .doubleSided = scene.materials[draw.material].doubleSided,
                         .vertexOffset = deformed ? deformed->vertexOffset[i] : kRestVertices,
-                        .drawData = drawData, .instances = std::max(draw.instanceCount, 1u), .layered = v.layers != 0});
+                        .drawData = drawData, .instances = instances, .layered = v.layers != 0});
     }
-    // Opaque grouped by pipeline (fewer binds); blended back to front. With transmissive draws, the
-    // blended ones follow them (sorted together back to front) in the pass after the opaque image.
+    // Opaque grouped by pipeline, then by material (fewer binds); blended back to front. With
+    // transmissive draws, the blended ones follow them (sorted together back to front) in the pass
+    // after the opaque image.
     const auto backToFront = [](const DrawItem& a, const DrawItem& b) { return a.depth > b.depth; };
-    std::stable_sort(opaque.begin(), opaque.end(), [](const DrawItem& a, const DrawItem& b) { return a.pipeline < b.pipeline; });
+    std::stable_sort(opaque.begin(), opaque.end(), [](const DrawItem& a, const DrawItem& b) {
+        return std::tie(a.pipeline, a.material) < std::tie(b.pipeline, b.material);
+    });
     std::vector<DrawItem> items = std::move(opaque);
     mBehind.clear();
     if (transmitting.empty()) {
@@ -201,6 +243,13 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
                        "; variants:";
     for (const auto& [name, count] : variantCounts) used += " " + name + " ×" + std::to_string(count);
     mExplanation.push_back(used);
+    mExplanation.push_back(
+        "draws: " + std::to_string(mStats.submittedDraws) + " of " + std::to_string(mStats.sceneDraws) + " submitted (" +
+        std::to_string(mStats.culledDraws) + " outside the view frustum" +
+        (selection.frustumCulling ? "" : ", culling off") + "), " + std::to_string(mStats.submittedTriangles) + " of " +
+        std::to_string(mStats.sceneTriangles) + " triangles; " + std::to_string(mStats.coarserDraws) +
+        " draws at a coarser level of detail (" +
+        (selection.lodErrorPixels > 0.0f ? "error ≤ " + formatPixels(selection.lodErrorPixels) + " px" : std::string("levels of detail off")) + ")");
     if (posed)
         mExplanation.push_back("animated: draw matrices of this frame's pose, written by the CPU into a per-frame buffer" +
                                (hidden ? " (" + std::to_string(hidden) + " draws scaled to nothing, not drawn)" : std::string()));
@@ -283,7 +332,7 @@ const ForwardPass::DrawTargets& ForwardPass::addDrawPass(RenderGraph& graph, std
             if (in.deformed.valid()) d.deformed = builder.read(in.deformed, Usage::Vertex);
         },
         [items = std::move(items), frameConstants = in.push, gpuScene, staticSceneSet = mSceneSet, materialSets, iblSets,
-         layerSets, program, layeredProgram](const Data& d, PassContext& ctx) {
+         layerSets, program, layeredProgram, stats = &mStats](const Data& d, PassContext& ctx) {
             shading::ForwardPush constants = frameConstants;
             const VkDescriptorSet iblSet = iblSets->write(ctx, *program, d.ibl);
             const VkDescriptorSet layerSet = layeredProgram ? layerSets->write(ctx, *layeredProgram, d.layers) : VK_NULL_HANDLE;
@@ -306,30 +355,50 @@ const ForwardPass::DrawTargets& ForwardPass::addDrawPass(RenderGraph& graph, std
             VkBuffer boundVertices = rest;
             vkCmdBindVertexBuffers(cmd, 0, 1, &rest, &offset);
             vkCmdBindIndexBuffer(cmd, gpuScene->indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
+            stats->bufferBinds += 2;
+            // State is set only where it changes: the draws come sorted by pipeline and material.
             const vk::Pipeline* bound = nullptr;
+            uint32_t boundMaterial = UINT32_MAX;
+            std::optional<VkCullModeFlags> cullMode;
+            std::optional<VkFrontFace> frontFace;
+            const auto bindSet = [&](uint32_t set, const VkDescriptorSet& descriptors) {
+                vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), set, 1, &descriptors, 0, nullptr);
+                ++stats->descriptorBinds;
+            };
             for (const DrawItem& item : items) {
                 if (item.pipeline != bound) {
                     bound = item.pipeline;
                     bound->bind(cmd);
-                    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 0, 1, &sceneSet, 0,
-                                            nullptr);
-                    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 2, 1, &iblSet, 0,
-                                            nullptr);
-                    if (item.layered)
-                        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 3, 1, &layerSet, 0,
-                                                nullptr);
+                    ++stats->pipelineBinds;
+                    // Core and layered programs differ from set 1 on: rebind every set after a switch.
+                    bindSet(0, sceneSet);
+                    bindSet(2, iblSet);
+                    if (item.layered) bindSet(3, layerSet);
+                    boundMaterial = UINT32_MAX;
                 }
-                vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 1, 1,
-                                        &(*materialSets)[item.material], 0, nullptr);
-                vkCmdSetCullMode(cmd, item.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
+                if (item.material != boundMaterial) {
+                    boundMaterial = item.material;
+                    bindSet(1, (*materialSets)[item.material]);
+                }
+                if (const VkCullModeFlags wanted = item.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT; cullMode != wanted) {
+                    cullMode = wanted;
+                    vkCmdSetCullMode(cmd, wanted);
+                    ++stats->dynamicStates;
+                }
                 // glTF fronts are counter-clockwise; a mirroring transform turns them clockwise.
-                vkCmdSetFrontFace(cmd, item.flipWinding ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
+                if (const VkFrontFace wanted = item.flipWinding ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE;
+                    frontFace != wanted) {
+                    frontFace = wanted;
+                    vkCmdSetFrontFace(cmd, wanted);
+                    ++stats->dynamicStates;
+                }
                 constants.counts.y = item.drawData;
                 bound->pushConstants(cmd, &constants, sizeof(constants));
                 const bool restVertices = item.vertexOffset == kRestVertices;
                 if (const VkBuffer wanted = restVertices ? rest : deformedVertices; wanted != boundVertices) {
                     boundVertices = wanted;
                     vkCmdBindVertexBuffers(cmd, 0, 1, &boundVertices, &offset);
+                    ++stats->bufferBinds;
                 }
                 vkCmdDrawIndexed(cmd, item.indexCount, item.instances, item.firstIndex, restVertices ? 0 : item.vertexOffset, 0);
             }

@@ -33,6 +33,24 @@ namespace candela::passes {
 
 enum class ShadingModel : uint32_t { Pbr = 0, PbrSchlickGgx = 1, BlinnPhong = 2 };
 
+// Which draws and which of their levels of detail a frame submits (docs/geometry.md).
+struct DrawSelection {
+    // Leave out draws whose world bounds lie outside the view frustum.
+    bool frustumCulling = true;
+    // Draw each mesh at the coarsest level of detail whose error covers at most this many
+    // pixels on screen; 0: full detail.
+    float lodErrorPixels = 1.0f;
+};
+// What the last frame drew: draws and triangles of the scene (visible ones, each instance
+// counted) against those submitted, and the state changes recorded to draw them.
+struct DrawStats {
+    uint32_t sceneDraws = 0, submittedDraws = 0, culledDraws = 0;
+    uint32_t coarserDraws = 0;  // submitted at a level of detail beyond the full one
+    uint64_t sceneTriangles = 0, submittedTriangles = 0;
+    uint32_t pipelineBinds = 0, descriptorBinds = 0, dynamicStates = 0, bufferBinds = 0;
+    uint32_t stateChanges() const { return pipelineBinds + descriptorBinds + dynamicStates + bufferBinds; }
+};
+
 class ForwardPass {
 public:
     explicit ForwardPass(vk::Context& context);
@@ -76,12 +94,13 @@ public:
     // Adds the pass drawing the current scene as seen from `view`, lit by the scene's lights and,
     // when `ibl` is given, the environment; posed by `posed` and drawn from `deformed` vertices
     // where given; the layered program reads `layerMaps` (the sheen LUT and cube) where given.
-    // Returns the written targets.
+    // `selection` culls draws and picks their levels of detail. Returns the written targets.
     // With `parameters`, the user's values for the per-frame push constants apply ("forward", "Push").
     Output add(graph::RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
                ShadingModel model, const Ibl* ibl = nullptr, shader::ParameterRegistry* parameters = nullptr,
                DebugView debugView = DebugView::None, const PosedDraws* posed = nullptr,
-               const DeformedVertices* deformed = nullptr, const LayerMaps* layerMaps = nullptr);
+               const DeformedVertices* deformed = nullptr, const LayerMaps* layerMaps = nullptr,
+               const DrawSelection& selection = {});
     // Whether the last add() left transmissive draws (and the blended ones) for addTransmissive().
     bool hasTransmissiveDraws() const { return !mBehind.empty(); }
     // Adds "forward_transmission": the draws the last add() left, over its `opaque` targets (after
@@ -96,6 +115,9 @@ public:
     // has a material with a layer; null otherwise.
     const shader::ShaderReflection* layeredReflection();
 
+    // What the last add() selected, and (once the frame is recorded) the state changes of both
+    // of its draw passes.
+    const DrawStats& drawStats() const { return mStats; }
     // What the last add() used and left out, one line each, for `--explain`.
     const std::vector<std::string>& explanation() const { return mExplanation; }
 
@@ -162,6 +184,7 @@ private:
     std::vector<std::string> mExplanation;
     FrameInputs mFrame;
     std::vector<DrawItem> mBehind;  // the draws add() left for addTransmissive()
+    DrawStats mStats;
 };
 
 }  // namespace candela::passes

@@ -8,6 +8,7 @@ namespace candela::scene {
 // The original project's showcase: a 7×7 grid of UV spheres (radius 1, 2.5 m apart) in the XY
 // plane facing +Z, metallic rising left → right (0 → 1) and roughness bottom → top (0.05 → 1),
 // base colour a dark red, lit by 4 white point lights of 300 cd in front of the grid's corners.
+// The spheres (64 × 32) have levels of detail: 24 × 12, 20 × 10, 16 × 8, 12 × 6 and 8 × 4.
 Scene makeSphereGrid();
 
 // Appends a UV sphere (sectors around Y, stacks from +Y to −Y) with normals, tangents along +φ

@@ -4,6 +4,7 @@
 #include "scene/gltf_animations.h"
 #include "scene/gltf_draco.h"
 #include "scene/gltf_meshopt.h"
+#include "scene/mesh_optimize.h"
 #include "scene/gltf_file.h"
 #include "scene/gltf_images.h"
 #include "scene/gltf_materials.h"
@@ -100,6 +101,7 @@ void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, cons
     gltf::loadVariantNames(ctx, model, scene);
     gltf::loadNodes(ctx, model, options.sceneIndex, scene);
     gltf::loadAnimations(ctx, model, scene);
+    if (options.prepareGeometry) prepareGeometry(scene);
 }
 
 }  // namespace

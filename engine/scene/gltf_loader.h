@@ -22,6 +22,10 @@ struct LoadOptions {
     uint64_t maxTotalImageBytes = uint64_t(2) << 30;
     // The glTF scene to load (--scene-index); unset: the file's `scene`, else scene 0.
     std::optional<uint32_t> sceneIndex;
+    // Prepare the geometry for drawing (scene/mesh_optimize.h: reordered for the vertex cache,
+    // overdraw and fetch, with levels of detail). false keeps the file's triangle and vertex order
+    // and builds no levels.
+    bool prepareGeometry = true;
 };
 
 // Loads `path`. Throws candela::UserError with one line "PATH: problem" for anything malformed

@@ -265,6 +265,19 @@ struct Skin {
     std::vector<glm::mat4> inverseBind;  // one per joint (identity when the file has none)
 };
 
+// One level of detail of a primitive: an index range of Scene::indices over the same vertices as the
+// full-detail triangles, and how far its surface may lie from theirs.
+struct LodLevel {
+    uint32_t firstIndex = 0;
+    uint32_t indexCount = 0;
+    float error = 0.0f;  // mesh units: the simplifier's bound on the distance to the full-detail surface
+};
+// A primitive's levels of detail (scene/mesh_lod.h builds them): levels[0] is the full detail (the
+// draw's own range, error 0), each further level coarser, with a larger error.
+struct LodChain {
+    std::vector<LodLevel> levels;
+};
+
 // One drawn primitive instance: an index range of Scene::indices (into Scene::vertices) with the
 // world transform of its node. Non-triangle-list topologies are converted to lists on load.
 struct Draw {
@@ -288,6 +301,9 @@ struct Draw {
     // node's instances so that all of one draw mirror alike (flipWinding holds for each).
     uint32_t firstInstance = 0;
     uint32_t instanceCount = 0;  // 0: not instanced (one copy at `world`)
+    // Index into Scene::lodChains: the simplified versions of this draw's triangles; -1: full
+    // detail only (deformed primitives, and meshes that do not simplify).
+    int32_t lod = -1;
 };
 
 // KHR_materials_variants of one draw: its own material and the material each variant that maps it
@@ -344,6 +360,7 @@ struct Scene {
     std::vector<Deformation> deformations;  // Draw::deformation
     std::vector<glm::mat4> instances;       // Draw::firstInstance: each instance's TRS in its node's space
     std::vector<Skin> skins;                // Draw::skin
+    std::vector<LodChain> lodChains;        // Draw::lod
     // The file's scenes by name (unnamed ones as "scene N") and the one loaded; empty for files
     // without scenes and for built-in scenes.
     std::vector<std::string> sceneNames;
@@ -362,6 +379,16 @@ struct Scene {
         size_t dracoPrimitives = 0;
         size_t meshoptViews = 0;
     } decompression;
+    // What preparing the geometry for drawing did (scene/mesh_optimize.h): the distinct meshes
+    // (index ranges the draws use), how many got a chain of levels of detail, the index memory of
+    // their full detail and of the chains' further levels, and the wall time it took.
+    struct GeometryPreparation {
+        size_t meshes = 0;
+        size_t simplifiedMeshes = 0;
+        uint64_t indexBytes = 0;
+        uint64_t lodIndexBytes = 0;
+        double milliseconds = 0.0;
+    } geometry;
 };
 
 }  // namespace candela::scene

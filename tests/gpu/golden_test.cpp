@@ -46,6 +46,10 @@ struct GoldenCase {
     const char* animation = "";
     double time = 0.0;
     const char* variant = "";  // KHR_materials_variants: the variant to draw ("" the default materials)
+    // The level-of-detail error, pixels (--lod-error). The goldens pin the shading, so they draw
+    // full detail (0) but for the *_lod cases, which pin the default; how far levels of detail
+    // may move an image is measured against full detail by lod_test.cpp.
+    float lodError = 0.0f;
 };
 
 constexpr uint32_t kWidth = 256, kHeight = 192;
@@ -55,6 +59,11 @@ constexpr double kMaxDifferingShare = 0.001;
 
 const GoldenCase kCases[] = {
     {"default_scene", ""},
+    // The default level-of-detail error (1 px): at this size the spheres are drawn 8 × 4 and the
+    // helmet at a simplified level.
+    {"default_scene_lod", "", {0.0f, 90.0f, 0.0f}, "", 0.0f, "", 0.0, "", 1.0f},
+    {"ibl_damaged_helmet_lod", "DamagedHelmet/glTF-Binary/DamagedHelmet.glb", {-30.0f, 80.0f, 0.0f}, "studio_small_03_1k.hdr",
+     0.0f, "", 0.0, "", 1.0f},
     {"damaged_helmet", "DamagedHelmet/glTF-Binary/DamagedHelmet.glb", {-30.0f, 80.0f, 0.0f}},
     {"metal_rough_spheres", "MetalRoughSpheresNoTextures/glTF/MetalRoughSpheresNoTextures.gltf"},
     {"normal_tangent", "NormalTangentTest/glTF/NormalTangentTest.gltf"},
@@ -177,6 +186,7 @@ std::optional<std::vector<uint8_t>> render(vk::Context& context, const GoldenCas
     pose.evaluate(c.time);
     RenderSettings settings{.width = kWidth, .height = kHeight, .scene = &scene, .pose = &pose};
     settings.camera.orbit = c.orbit;
+    settings.drawSelection.lodErrorPixels = c.lodError;
     settings.tonemap.background = shading::srgbDecode(glm::vec3(0x26 / 255.0f));
     if (environment) {
         settings.environment = &*environment;

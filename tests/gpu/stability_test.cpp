@@ -218,6 +218,9 @@ scene::Scene scaled(scene::Scene scene, float k, ScaleBy by) {
     if (by == ScaleBy::Vertices) {
         for (scene::Vertex& v : scene.vertices) v.position *= k;
         for (scene::Draw& d : scene.draws) d.world[3] = glm::vec4(glm::vec3(d.world[3]) * k, 1.0f);
+        // Errors of the levels of detail are in mesh units: they scale with the vertices.
+        for (scene::LodChain& chain : scene.lodChains)
+            for (scene::LodLevel& level : chain.levels) level.error *= k;
     } else {
         for (scene::Draw& d : scene.draws) d.world = glm::scale(glm::mat4(1.0f), glm::vec3(k)) * d.world;
     }

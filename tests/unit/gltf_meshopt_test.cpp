@@ -107,7 +107,8 @@ TEST(GltfMeshopt, GltfpackedDamagedHelmetMatchesTheOriginal) {
     const Scene original = loadGltf(sharedModels() / "DamagedHelmet/glTF-Binary/DamagedHelmet.glb");
     const Scene packed = loadGltf(gltfpacked(dir, "DamagedHelmet/glTF-Binary/DamagedHelmet.glb"));
     EXPECT_TRUE(packed.warnings.empty()) << packed.warnings.front();
-    EXPECT_EQ(packed.indices.size(), original.indices.size());
+    // Full detail (the levels of detail of the two differ with the quantized positions).
+    EXPECT_EQ(packed.geometry.indexBytes, original.geometry.indexBytes);
     expectBoundsNear(packed.bounds, original.bounds, 2e-3f);
 }
 
