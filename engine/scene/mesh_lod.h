@@ -33,18 +33,19 @@ struct SimplifiedLevel {
 };
 
 // Simplifies the triangle list `indices` (into `vertices`) into successively coarser levels,
-// each simplified from the full detail (so its error is measured against it) with the mesh's
+// each simplified from the one before and its error measured against the full detail, with the mesh's
 // open borders locked (no cracks where primitives meet) and its attribute seams (vertices sharing
 // a position with different normals or UVs) kept. Returns the levels beyond the full detail,
 // coarsest last; empty when the mesh does not simplify. Precondition: every index < vertices.size().
 std::vector<SimplifiedLevel> simplifyChain(std::span<const Vertex> vertices, std::span<const uint32_t> indices,
                                            const LodChainSettings& settings = {});
 
-// How far the surfaces of two triangle lists over the same vertices lie apart: the largest
-// distance from a vertex of one to the surface of the other, and from the centre and edge
-// midpoints of a triangle of one to the surface of the other, both ways (a sampled Hausdorff
-// distance). Mesh units. Precondition: every index < vertices.size(), both lists non-empty.
-float surfaceDeviation(std::span<const Vertex> vertices, std::span<const uint32_t> a, std::span<const uint32_t> b);
+// How far the surface of the triangle list `coarse` lies from that of `fine` (both over
+// `vertices`): the largest distance from a vertex of `fine` to the surface of `coarse`, and from
+// the corners, edge midpoints and centre of a triangle of `coarse` to the surface of `fine` (a
+// sampled Hausdorff distance; `fine`'s small triangles are sampled at their corners only). Mesh
+// units. Precondition: every index < vertices.size(), both lists non-empty.
+float surfaceDeviation(std::span<const Vertex> vertices, std::span<const uint32_t> fine, std::span<const uint32_t> coarse);
 
 // Index of the coarsest level of `chain` whose error, in world units (× `worldScale`, the
 // draw's largest mesh-to-world scale), covers at most `maxPixels` at `pixelsPerUnit` (what one

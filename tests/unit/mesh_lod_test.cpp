@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -96,11 +97,121 @@ TEST(MeshLod, SurfaceDeviationMatchesBruteForce) {
     const std::vector<uint32_t> b(s.indices.begin() + coarse, s.indices.begin() + coarse + coarseCount);
     const float brute = std::max(oneSidedDistance(s.vertices, a, b), oneSidedDistance(s.vertices, b, a));
     const float grid = surfaceDeviation(s.vertices, a, b);
-    EXPECT_GE(grid, brute * 0.9999f);  // it samples edge midpoints and centres too: never less
+    EXPECT_GE(grid, brute * 0.9999f);  // it samples the coarse edge midpoints and centres too: never less
     EXPECT_LE(grid, brute * 1.5f);
     // Analytically: a 10 × 5 sphere's quads at the equator dip below the unit sphere by 1 − cos²18°
     // at their centres (half of 36° each way).
     EXPECT_NEAR(grid, 1.0f - std::cos(glm::radians(18.0f)) * std::cos(glm::radians(18.0f)), 0.002f);
+}
+
+TEST(MeshLod, DistanceDoublingMovesOneLevel) {
+    // Errors doubling along the chain: from a perspective view, doubling the distance halves the
+    // projected error and moves the choice one level coarser.
+    LodChain chain;
+    for (float error : {0.0f, 0.01f, 0.02f, 0.04f, 0.08f}) chain.levels.push_back({0, 3, error});
+    OrbitCamera camera;
+    const ViewSetup view = camera.view(1.0f);
+    const auto levelAt = [&](float distance) {
+        const glm::vec3 centre = view.eye + glm::normalize(camera.target - view.eye) * (distance + 0.5f);
+        return selectLod(chain, 1.0f, pixelsPerUnit(view, 1000, Aabb{centre - 0.5f / std::sqrt(3.0f), centre + 0.5f / std::sqrt(3.0f)}), 1.0f);
+    };
+    // 1 px at distance d: error = d · 2 tan(22.5°) / 1000 ≈ d · 8.3e-4; level 1 (0.01) from d ≈ 12.
+    const uint32_t first = levelAt(13.0f);
+    EXPECT_EQ(first, 1u);
+    EXPECT_EQ(levelAt(26.0f), first + 1);
+    EXPECT_EQ(levelAt(52.0f), first + 2);
+    EXPECT_EQ(levelAt(104.0f), first + 3);
+    EXPECT_EQ(levelAt(6.0f), 0u);
+    // No error allowed, or the eye inside the bounds: full detail.
+    EXPECT_EQ(selectLod(chain, 1.0f, 1.0f, 0.0f), 0u);
+    EXPECT_EQ(selectLod(chain, 1.0f, pixelsPerUnit(view, 1000, Aabb{view.eye - 1.0f, view.eye + 1.0f}), 1.0f), 0u);
+    // A world scale of 2 doubles every error: one level finer.
+    const glm::vec3 centre = view.eye + glm::normalize(camera.target - view.eye) * 26.5f;
+    EXPECT_EQ(selectLod(chain, 2.0f, pixelsPerUnit(view, 1000, Aabb{centre - 0.2f, centre + 0.2f}), 1.0f), first);
+}
+
+TEST(MeshLod, MaxScaleIsExactForTrsAndNeverLessUnderShear) {
+    const glm::mat4 rotation = glm::rotate(glm::mat4(1.0f), 0.7f, glm::normalize(glm::vec3(1, 2, 3)));
+    EXPECT_NEAR(maxScale(rotation * glm::scale(glm::mat4(1.0f), glm::vec3(2.0f))), 2.0f, 1e-5f);
+    EXPECT_NEAR(maxScale(glm::translate(glm::mat4(1.0f), glm::vec3(5)) * rotation * glm::scale(glm::mat4(1.0f), glm::vec3(1, 3, 2))), 3.0f, 1e-5f);
+    glm::mat4 shear(1.0f);
+    shear[1][0] = 1.0f;  // x += y: largest singular value (1 + √5) / 2
+    EXPECT_GE(maxScale(shear), 1.618f);
+}
+
+TEST(MeshLod, OpenBordersStayLocked) {
+    // A bumpy 33 × 33 grid with an open border: every border edge of the full detail is still a
+    // border edge of every level (no crack against a neighbouring primitive).
+    Scene s;
+    constexpr uint32_t n = 33;
+    for (uint32_t y = 0; y < n; ++y)
+        for (uint32_t x = 0; x < n; ++x) {
+            Vertex v;
+            v.position = glm::vec3(float(x), float(y), 0.3f * std::sin(0.4f * float(x)) * std::cos(0.3f * float(y)));
+            s.vertices.push_back(v);
+        }
+    for (uint32_t y = 0; y + 1 < n; ++y)
+        for (uint32_t x = 0; x + 1 < n; ++x) {
+            const uint32_t a = y * n + x;
+            s.indices.insert(s.indices.end(), {a, a + 1, a + n + 1, a, a + n + 1, a + n});
+        }
+    const auto borderEdges = [](const std::vector<uint32_t>& indices) {
+        std::map<std::pair<uint32_t, uint32_t>, int> count;
+        for (size_t t = 0; t < indices.size(); t += 3)
+            for (int e = 0; e < 3; ++e) {
+                const uint32_t a = indices[t + e], b = indices[t + (e + 1) % 3];
+                ++count[{std::min(a, b), std::max(a, b)}];
+            }
+        std::set<uint32_t> vertices;
+        for (const auto& [edge, c] : count)
+            if (c == 1) vertices.insert(edge.first), vertices.insert(edge.second);
+        return vertices;
+    };
+    const std::set<uint32_t> border = borderEdges(s.indices);
+    ASSERT_EQ(border.size(), 4u * (n - 1));
+    const std::vector<SimplifiedLevel> levels = simplifyChain(s.vertices, s.indices);
+    ASSERT_FALSE(levels.empty());
+    for (const SimplifiedLevel& level : levels) {
+        const std::set<uint32_t> kept(level.indices.begin(), level.indices.end());
+        for (uint32_t v : border) EXPECT_TRUE(kept.count(v)) << "border vertex " << v << " collapsed";
+    }
+}
+
+TEST(MeshLod, PreparationKeepsBlendOrderAndDeformedMeshesAndTheTrianglesDrawn) {
+    Scene s;
+    for (int m = 0; m < 3; ++m) appendUvSphere(s, 1.0f, 32, 16);
+    const uint32_t perSphere = uint32_t(s.indices.size() / 3);
+    s.materials.resize(2);
+    s.materials[1].alphaMode = AlphaMode::Blend;
+    s.deformations.resize(1);
+    for (uint32_t m = 0; m < 3; ++m) s.draws.push_back({.firstIndex = m * perSphere, .indexCount = perSphere, .material = m == 1 ? 1u : 0u, .deformation = m == 2 ? 0 : -1});
+    const Scene before = s;
+    prepareGeometry(s);
+    // The triangles each draw shows, as sets of corner positions, are the same.
+    const auto triangles = [](const Scene& scene, const Draw& d) {
+        std::multiset<std::array<float, 9>> out;
+        for (uint32_t i = 0; i < d.indexCount; i += 3) {
+            std::array<float, 9> t;
+            for (int c = 0; c < 3; ++c)
+                for (int k = 0; k < 3; ++k) t[size_t(c * 3 + k)] = scene.vertices[scene.indices[d.firstIndex + i + uint32_t(c)]].position[k];
+            out.insert(t);
+        }
+        return out;
+    };
+    for (size_t d = 0; d < 3; ++d) EXPECT_EQ(triangles(s, s.draws[d]), triangles(before, before.draws[d])) << "draw " << d;
+    // The blended sphere keeps its triangle order (its vertices may move: compare corner positions).
+    for (uint32_t i = perSphere; i < 2 * perSphere; ++i)
+        ASSERT_EQ(s.vertices[s.indices[i]].position, before.vertices[before.indices[i]].position) << "index " << i;
+    // The deformed one gets no chain and keeps its vertices where they were (its triangles may be reordered).
+    const uint32_t deformedFirst = before.indices[2 * perSphere];
+    EXPECT_TRUE(std::equal(s.vertices.begin() + deformedFirst, s.vertices.end(), before.vertices.begin() + deformedFirst,
+                           [](const Vertex& a, const Vertex& b) { return a.position == b.position && a.uv0 == b.uv0; }));
+    EXPECT_GE(s.draws[0].lod, 0);
+    EXPECT_GE(s.draws[1].lod, 0);
+    EXPECT_EQ(s.draws[2].lod, -1);
+    EXPECT_EQ(s.geometry.meshes, 3u);
+    EXPECT_EQ(s.geometry.simplifiedMeshes, 2u);
+    EXPECT_LE(s.geometry.lodIndexBytes, s.geometry.indexBytes / 2);
 }
 
 }  // namespace
