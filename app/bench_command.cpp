@@ -4,6 +4,7 @@
 // that drift affects both alike.
 
 #include "commands.h"
+#include "frame_measurement.h"
 
 #include "core/check.h"
 #include "core/log.h"
@@ -42,33 +43,9 @@ int runBench(const RenderOptions& options) {
     };
     vk::Context context(contextDesc(options.common));
     Renderer renderer(context);
-
-    // Warm-up: pipelines, transient pools, scene upload.
-    for (int i = 0; i < 2; ++i) {
-        renderer.renderFrame(settings);
-        renderer.renderCalibration(settings.width, settings.height);
-    }
-    std::vector<double> frameMs, calibrationMs, calibrationGpuMs;
-    std::map<std::string, std::vector<double>> passGpuMs;
-    std::vector<std::string> passOrder;
-    passes::DrawStats drawStats;  // of the last frame
-    for (uint32_t i = 0; i < options.frames; ++i) {
-        advance(i);
-        const FrameTiming frame = renderer.renderFrame(settings);
-        frameMs.push_back(frame.submitWaitMs);
-        drawStats = renderer.drawStats();
-        const graph::GraphDecl& decl = renderer.lastGraph().declaration();
-        for (uint32_t pass : renderer.lastGraph().compiled().order) {
-            const std::string& name = decl.passes[pass].name;
-            // Passes can come and go between frames (skin_morph with the pose): list every one seen.
-            if (std::find(passOrder.begin(), passOrder.end(), name) == passOrder.end()) passOrder.push_back(name);
-            if (frame.timings.gpuMs[pass] >= 0.0) passGpuMs[name].push_back(frame.timings.gpuMs[pass]);
-        }
-        const FrameTiming calibration = renderer.renderCalibration(settings.width, settings.height);
-        calibrationMs.push_back(calibration.submitWaitMs);
-        const uint32_t calibrationPass = *renderer.lastGraph().findPass("calibration");
-        if (calibration.timings.gpuMs[calibrationPass] >= 0.0) calibrationGpuMs.push_back(calibration.timings.gpuMs[calibrationPass]);
-    }
+    const FrameMeasurement m = measureFrames(renderer, settings, options.frames, advance);
+    const std::vector<double>&frameMs = m.frameMs, &calibrationMs = m.calibrationMs, &calibrationGpuMs = m.calibrationGpuMs;
+    const passes::DrawStats& drawStats = m.drawStats;
 
     const double calibration = median(calibrationMs), calibrationGpu = median(calibrationGpuMs);
     nlohmann::ordered_json out;
@@ -81,12 +58,14 @@ int runBench(const RenderOptions& options) {
     out["geometryDecompressionMs"] = scene.decompression.milliseconds;  // part of it: Draco and meshopt
     out["calibration"] = {{"medianMs", calibration}, {"minMs", minimum(calibrationMs)}, {"gpuMedianMs", calibrationGpu}};
     out["frame"] = {{"medianMs", median(frameMs)},
+                    {"cpuMedianMs", median(m.cpuMs)},
                     {"minMs", minimum(frameMs)},
                     {"medianRatio", median(frameMs) / calibration},
                     {"minRatio", minimum(frameMs) / minimum(calibrationMs)}};
     nlohmann::ordered_json passes = nlohmann::ordered_json::array();
-    for (const std::string& name : passOrder) {
-        const double gpu = median(passGpuMs[name]);
+    for (const std::string& name : m.passOrder) {
+        const auto times = m.passGpuMs.find(name);
+        const double gpu = times == m.passGpuMs.end() ? -1.0 : median(times->second);
         passes.push_back({{"name", name},
                           {"gpuMedianMs", gpu},
                           {"ratioToCalibrationGpu", gpu >= 0.0 && calibrationGpu > 0.0 ? gpu / calibrationGpu : -1.0}});
@@ -131,8 +110,9 @@ int runBench(const RenderOptions& options) {
                     drawStats.stateChanges(), drawStats.pipelineBinds, drawStats.descriptorBinds);
         std::printf("  calibration: median %.2f ms, min %.2f ms (GPU %.2f ms)\n", calibration, minimum(calibrationMs),
                     calibrationGpu);
-        std::printf("  frame:       median %.2f ms (%.2fx calibration), min %.2f ms (%.2fx)\n", median(frameMs),
-                    median(frameMs) / calibration, minimum(frameMs), minimum(frameMs) / minimum(calibrationMs));
+        std::printf("  frame:       median %.2f ms (%.2fx calibration), min %.2f ms (%.2fx); CPU building and recording %.2f ms\n",
+                    median(frameMs), median(frameMs) / calibration, minimum(frameMs), minimum(frameMs) / minimum(calibrationMs),
+                    median(m.cpuMs));
         if (pose.animated())
             std::printf("  animation:   %zu playing, CPU evaluation median %.4f ms, max %.4f ms per frame\n",
                         pose.playing().size(), out["animation"]["evaluateMedianMs"].get<double>(),

@@ -163,6 +163,10 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         table.withValue["--graph-json"] = [&](const std::string& v) { o.graphJson = v; };
         table.withValue["--disable-pass"] = [&](const std::string& v) { o.disabledPasses.push_back(v); };
         table.withValue["--scene"] = [&](const std::string& v) { o.scene = v; };
+        table.withValue["--grid"] = [&](const std::string& v) {
+            o.grid = parseDimension("--grid", v);
+            if (o.grid == 0 || o.grid > 1000) throw UserError("--grid: expected 1 to 1000 spheres a side, got '" + v + "'");
+        };
         table.withValue["--scene-index"] = [&](const std::string& v) { o.sceneIndex = parseDimension("--scene-index", v); };
         table.withValue["--animation"] = [&](const std::string& v) {
             for (size_t start = 0;;) {
@@ -258,6 +262,10 @@ Command parseCommandLine(const std::vector<std::string>& args) {
             if (v != "on" && v != "off") throw UserError("--lod: expected on or off, got '" + v + "'");
             o.lodErrorPixels = v == "on" ? 1.0f : 0.0f;
         };
+        table.withValue["--specular-aa"] = [&](const std::string& v) {
+            if (v != "on" && v != "off") throw UserError("--specular-aa: expected on or off, got '" + v + "'");
+            o.specularAa = v == "on";
+        };
         table.withValue["--cull"] = [&](const std::string& v) {
             if (v != "on" && v != "off") throw UserError("--cull: expected on or off, got '" + v + "'");
             o.frustumCulling = v == "on";
@@ -352,6 +360,35 @@ Command parseCommandLine(const std::vector<std::string>& args) {
             if (o.referenceSamples < 16) throw UserError("--reference-samples: need at least 16");
         };
         table.switches["--quick"] = [&] { o.quick = true; };
+    } else if (name == "scale-report") {
+        command.kind = Command::Kind::ScaleReport;
+        ScaleReportOptions& o = command.scaleReport;
+        addCommon(table, o.common);
+        table.withValue["--out"] = [&](const std::string& v) {
+            if (v.empty()) throw UserError("--out: expected a directory");
+            o.out = v;
+        };
+        table.withValue["--sizes"] = [&](const std::string& v) {
+            o.sizes.clear();
+            for (size_t start = 0;;) {
+                const size_t comma = v.find(',', start);
+                const uint32_t side = parseDimension("--sizes", v.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+                if (side == 0 || side > 1000) throw UserError("--sizes: expected grid sides from 1 to 1000, got '" + v + "'");
+                o.sizes.push_back(side);
+                if (comma == std::string::npos) break;
+                start = comma + 1;
+            }
+        };
+        table.withValue["--frames"] = [&](const std::string& v) {
+            o.frames = parseDimension("--frames", v);
+            if (o.frames == 0) throw UserError("--frames: need at least 1 frame");
+        };
+        table.withValue["--lod-error"] = [&](const std::string& v) {
+            o.lodErrorPixels = parseNumber("--lod-error", v);
+            if (!(o.lodErrorPixels > 0.0f)) throw UserError("--lod-error: expected pixels > 0, got '" + v + "'");
+        };
+        table.withValue["--width"] = [&](const std::string& v) { o.width = parseDimension("--width", v); };
+        table.withValue["--height"] = [&](const std::string& v) { o.height = parseDimension("--height", v); };
     } else if (name == "soak") {
         command.kind = Command::Kind::Soak;
         SoakOptions& o = command.soak;
@@ -372,7 +409,7 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         };
     } else {
         throw UserError("unknown command '" + name +
-                        "' (commands: render, view, bench, ibl-report, soak, info; see candela --help)");
+                        "' (commands: render, view, bench, ibl-report, scale-report, soak, info; see candela --help)");
     }
     bool help = false;
     table.switches["--help"] = [&] { help = true; };
@@ -399,6 +436,8 @@ usage:
                              calibration pass run in the same process
   candela ibl-report [opts]  sweep the IBL quality settings: precompute time against the error of the
                              maps and of the final image, as CSV, markdown and log-log plots
+  candela scale-report [opts]  frame time against scene triangles for N x N sphere grids, levels of
+                             detail on and off, as CSV, markdown and a log-log plot
   candela soak [options]     render many frames headless, switching the environment, and report host
                              and device memory over time (leaks show as growth after warm-up)
   candela info [options]     list the Vulkan devices, the one chosen and why, and the features enabled
@@ -411,6 +450,7 @@ render options:
   --graph-json FILE     write the compiled render graph as JSON (passes, resources, barriers, timings)
   --disable-pass NAME   switch a pass off (repeatable); passes that lose their input are culled too
   --scene FILE          a glTF 2.0 scene (.gltf or .glb) [the built-in 7x7 sphere grid]
+  --grid N              the built-in grid with N x N spheres over its 7 x 7 materials, framed alike [7]
   --animation LIST      the glTF animations to play: indices or names, all or none (rest pose);
                         comma-separated or repeated [0, when the scene has animations]
   --time SECONDS        the moment of the animations to draw; each loops over its own duration [0]
@@ -459,6 +499,8 @@ render options:
                         at most PIXELS on screen; 0: full detail [1]
   --lod on|off          --lod-error 1 or 0
   --cull on|off         leave out draws outside the view frustum [on]
+  --specular-aa on|off  widen the roughness by the normal's change across a pixel and by what a
+                        normal map's mips average away (less shimmering highlights) [off]
   --variant NAME        draw the file's KHR_materials_variants variant NAME (an unknown name is an
                         error that lists the file's variants) [the default materials]
   --explain             print which passes and shader variants were left out, and why
@@ -477,6 +519,13 @@ view options: the render options (except --out, --width and --height: the window
   mouse and keys: right-drag rotate, middle-drag pan, wheel zoom, F frame the scene, R reset the
   camera, space pause/play the animation, P or F12 screenshot (candela-screenshot.png), Esc quit; drop a .gltf/.glb to open it,
   an .hdr/.exr to light the scene with it
+
+scale-report options: the built-in grid at N x N spheres (framed alike), levels of detail on and off
+  --sizes N,N,...       grid sides [1,2,5,10,20,50,100]
+  --frames N            frames measured per setting [5]
+  --lod-error PIXELS    the level-of-detail error of the "on" runs [1]
+  --width W, --height H [1280, 720]
+  --out DIR             where report.csv, report.md and frame_vs_triangles.png go [scale-report]
 
 bench options: the render options that choose the scene, camera and shading, and
   --frames N            frames to measure after warm-up [20]

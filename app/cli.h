@@ -41,6 +41,7 @@ struct RenderOptions {
     std::string variant;              // --variant NAME: a KHR_materials_variants variant ("" = defaults)
     float lodErrorPixels = 1.0f;      // --lod-error PIXELS (0, or --lod off: full detail)
     bool frustumCulling = true;       // --cull on|off
+    bool specularAa = false;          // --specular-aa on|off
     bool explain = false;             // --explain
     uint32_t frames = 20;             // bench: --frames N; view: frames to render before exiting (0: until closed)
     std::string screenshot;           // view: --screenshot FILE (saves the last of --frames N)
@@ -50,6 +51,7 @@ struct RenderOptions {
     std::string iblReport;            // view: --ibl-report FILE (an ibl-report CSV for the environment panel)
     std::vector<std::string> panels = {"graph", "parameters", "stats"};  // view: --panels A,B,... (open at start)
     bool json = false;                // bench: --json
+    uint32_t grid = 7;                // --grid N: N × N spheres of the built-in grid
     std::string out = "candela.png";  // --out FILE (.png, .exr, .pfm)
     uint32_t width = 1280;            // --width W
     uint32_t height = 720;            // --height H
@@ -95,12 +97,23 @@ struct SoakOptions {
     std::string out;             // --out FILE.csv (optional)
 };
 
+struct ScaleReportOptions {
+    CommonOptions common;
+    std::string out = "scale-report";                            // --out DIR (created)
+    std::vector<uint32_t> sizes = {1, 2, 5, 10, 20, 50, 100};     // --sizes N,N,...: grid sides
+    uint32_t frames = 5;                                          // --frames N per setting
+    float lodErrorPixels = 1.0f;                                  // --lod-error PIXELS: the "on" setting
+    uint32_t width = 1280;                                        // --width, --height
+    uint32_t height = 720;
+};
+
 struct Command {
-    enum class Kind { Help, Render, View, Info, Bench, IblReport, Soak } kind = Kind::Help;
+    enum class Kind { Help, Render, View, Info, Bench, IblReport, Soak, ScaleReport } kind = Kind::Help;
     RenderOptions render;  // render, view and bench
     InfoOptions info;
     IblReportOptions iblReport;
     SoakOptions soak;
+    ScaleReportOptions scaleReport;
 };
 
 // Parses argv[1..]. No arguments or --help → Kind::Help.

@@ -9,6 +9,8 @@
 #include "scene/scene_pose.h"
 #include "vk/context.h"
 
+#include <filesystem>
+#include <initializer_list>
 #include <optional>
 
 namespace candela::app {
@@ -19,6 +21,7 @@ int runView(const RenderOptions& options);
 int runInfo(const InfoOptions& options);
 int runIblReport(const IblReportOptions& options);
 int runSoak(const SoakOptions& options);
+int runScaleReport(const ScaleReportOptions& options);
 
 // Shared by render and bench: the context description and the render settings the flags choose.
 vk::ContextDesc contextDesc(const CommonOptions& common);
@@ -28,6 +31,9 @@ std::optional<scene::Environment> loadEnvironment(const RenderOptions& options);
 // The pose --animation and --time ask for (a UserError names the scene's animations when one
 // does not exist). Precondition: `scene` outlives it.
 scene::ScenePose loadPose(const RenderOptions& options, const scene::Scene& scene);
+// Creates the report folder `out` and checks that each of `files` can be written in it; a
+// UserError names the folder or file otherwise (ibl-report, scale-report).
+void prepareReportFolder(const std::filesystem::path& out, std::initializer_list<const char*> files);
 // Precondition: `scene` and `environment` outlive the settings.
 RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& scene,
                               const scene::Environment* environment);

@@ -80,11 +80,7 @@ const ibl::CachedImage* findImage(const std::vector<ibl::CachedImage>& images, c
 
 int runIblReport(const IblReportOptions& options) {
     const std::filesystem::path out = options.out;
-    std::error_code ec;
-    std::filesystem::create_directories(out, ec);
-    if (ec) throw UserError(out.string() + ": cannot create the report folder: " + ec.message());
-    for (const char* file : {"report.csv", "report.md", "specular.png", "irradiance.png", "lut.png", "image.png"})
-        io::checkWritable(out / file);
+    prepareReportFolder(out, {"report.csv", "report.md", "specular.png", "irradiance.png", "lut.png", "image.png"});
 
     const scene::Environment environment =
         options.env == "sky" ? scene::makeProceduralSky() : scene::loadEnvironment(options.env);

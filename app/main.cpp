@@ -30,11 +30,19 @@ vk::ContextDesc contextDesc(const CommonOptions& common) {
 
 scene::Scene loadScene(const RenderOptions& options) {
     if (options.sceneIndex && options.scene.empty()) throw UserError("--scene-index: give a glTF file with --scene");
-    scene::Scene scene = options.scene.empty() ? scene::makeSphereGrid()
+    if (options.grid != 7 && !options.scene.empty()) throw UserError("--grid: sizes the built-in sphere grid; not with --scene");
+    scene::Scene scene = options.scene.empty() ? scene::makeSphereGrid(options.grid)
                                                : scene::loadGltf(options.scene, {.sceneIndex = options.sceneIndex});
     for (const std::string& warning : scene.warnings) log::warn(options.scene + ": " + warning);
     if (!options.variant.empty()) scene::selectVariant(scene, scene::variantIndex(scene, options.variant));
     return scene;
+}
+
+void prepareReportFolder(const std::filesystem::path& out, std::initializer_list<const char*> files) {
+    std::error_code ec;
+    std::filesystem::create_directories(out, ec);
+    if (ec) throw UserError(out.string() + ": cannot create the report folder: " + ec.message());
+    for (const char* file : files) io::checkWritable(out / file);
 }
 
 scene::ScenePose loadPose(const RenderOptions& options, const scene::Scene& scene) {
@@ -67,6 +75,7 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
     settings.defaultLights = options.defaultLights;
     settings.sceneLights = options.sceneLights;
     settings.drawSelection = {.frustumCulling = options.frustumCulling, .lodErrorPixels = options.lodErrorPixels};
+    settings.shadingOptions.specularAntiAliasing = options.specularAa;
     if (options.camera) settings.camera.gltfCamera = *options.camera;
     if (options.cameraOrbit) settings.camera.orbit = glm::vec3((*options.cameraOrbit)[0], (*options.cameraOrbit)[1], (*options.cameraOrbit)[2]);
     if (options.target) settings.camera.target = glm::vec3((*options.target)[0], (*options.target)[1], (*options.target)[2]);
@@ -208,6 +217,7 @@ int main(int argc, char** argv) {
             case app::Command::Kind::Bench: return app::runBench(command.render);
             case app::Command::Kind::IblReport: return app::runIblReport(command.iblReport);
             case app::Command::Kind::Soak: return app::runSoak(command.soak);
+            case app::Command::Kind::ScaleReport: return app::runScaleReport(command.scaleReport);
         }
     } catch (const UserError& e) {
         log::error(e.what());

@@ -284,9 +284,11 @@ void Renderer::finishFrame() {
 }
 
 FrameTiming Renderer::execute(Frame frame, const RenderSettings& settings) {
+    const auto started = frame.started;
     const auto submitted = submit(std::move(frame), settings);
     mFrames.waitCurrent();
     FrameTiming timing;
+    timing.cpuMs = std::chrono::duration<double, std::milli>(submitted - started).count();
     timing.submitWaitMs = msSince(submitted);
     finishFrame();
     timing.timings = mCompletedTimings;
@@ -504,7 +506,8 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
     const passes::ForwardPass::Output forward =
         mForward.add(graph, settings.width, settings.height, view, settings.shading, ibl ? &*ibl : nullptr, &mParameters,
                      settings.debugView, posed ? &*posed : nullptr, deformed ? &*deformed : nullptr,
-                     layerMaps ? &*layerMaps : nullptr, settings.drawSelection);
+                     layerMaps ? &*layerMaps : nullptr, settings.drawSelection,
+                     settings.shadingOptions);
     frame.debugView = settings.debugView;
     frame.hdr = forward.hdr;
     frame.skybox = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;

@@ -76,6 +76,8 @@ struct RenderSettings {
     passes::TonemapSettings tonemap;
     // Frustum culling and the level-of-detail error (--lod-error, --cull).
     passes::DrawSelection drawSelection;
+    // Specular anti-aliasing (--specular-aa).
+    passes::ShadingOptions shadingOptions;
     // Image-based lighting: the environment (null: none; read during the call only, hashed when the
     // pointer or the quality changes), what to precompute and how to look it up.
     const scene::Environment* environment = nullptr;
@@ -121,6 +123,7 @@ struct PassTime {
 };
 
 struct FrameTiming {
+    double cpuMs = 0.0;           // CPU wall time to build, compile and record the frame and submit it
     double submitWaitMs = 0.0;    // CPU wall time from submit to the fence
     graph::GraphTimings timings;  // per declared pass of that frame's graph
 };

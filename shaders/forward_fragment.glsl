@@ -32,6 +32,9 @@ layout(constant_id = 9) const uint kDebugView = CANDELA_DEBUG_NONE;
 // The layers this variant evaluates (CANDELA_LAYER_* bits): a material pays only for its own.
 layout(constant_id = 10) const uint kLayers = 0u;
 #endif
+// Specular anti-aliasing: roughness widened by the normal's change across the pixel and by what the
+// normal map's mip averaged away (specularAntiAliasedRoughness, shared/brdf.h).
+layout(constant_id = 11) const bool kSpecularAa = false;
 
 layout(std430, set = 0, binding = 0) readonly buffer Lights {
     LightData lights[];
@@ -132,17 +135,31 @@ vec3 mapNormal(vec3 n, vec3 tangentNormal, float scale) {
     return dot(mapped, mapped) > 1e-12f ? normalize(mapped) : n;
 }
 
+// The length of the mean normal the normal map's filtered texel stands for (its A: 1 at mip 0,
+// less where a mip averaged diverging normals; scene/normal_map_mips.h), set by shadingNormal.
+float gNormalMapLength = 1.0f;
+
 // Shading normal: the faced normal, perturbed by the normal map when the variant has one and
 // `mapped` is set.
 vec3 shadingNormal(MaterialData m, bool mapped) {
     vec3 n = facedNormal();
     if (kNormalMap && mapped) {
         // Sampled outside any non-uniform branch: implicit-LOD sampling needs uniform control flow.
-        vec3 tangentNormal = sampleSlot(normalTexture, CANDELA_TEX_NORMAL).xyz * 2.0f - 1.0f;
-        n = mapNormal(n, tangentNormal, m.normalScale);
+        vec4 texel = sampleSlot(normalTexture, CANDELA_TEX_NORMAL);
+        n = mapNormal(n, texel.xyz * 2.0f - 1.0f, m.normalScale);
+        gNormalMapLength = texel.a;
     }
     return n;
 }
+
+// |∂n/∂x|² + |∂n/∂y|² of the faced (interpolated vertex) normal, for geometric specular AA; the
+// normal map's detail is accounted for by its filtered length instead.
+float normalChange() {
+    vec3 n = facedNormal();
+    vec3 dx = dFdx(n), dy = dFdy(n);
+    return dot(dx, dx) + dot(dy, dy);
+}
+float gNormalChange = 0.0f;
 
 #ifdef CANDELA_MATERIAL_LAYERS
 // This fragment's layers, set by main before any lighting: the dielectric Fresnel (the core's f0
@@ -198,10 +215,13 @@ Clearcoat layerClearcoat(MaterialLayerData layer, vec3 faced, vec3 v) {
     float weight = layer.clearcoat * texture(clearcoatTexture, layerUv(CANDELA_LAYER_TEX_CLEARCOAT)).r;
     float roughness = layer.clearcoatRoughness * texture(clearcoatRoughnessTexture, layerUv(CANDELA_LAYER_TEX_CLEARCOAT_ROUGHNESS)).g;
     vec3 nc = faced;
+    float mapLength = 1.0f;
     if (hasLayer(CANDELA_LAYER_CLEARCOAT_NORMAL)) {
-        vec3 tangentNormal = texture(clearcoatNormalTexture, layerUv(CANDELA_LAYER_TEX_CLEARCOAT_NORMAL)).xyz * 2.0f - 1.0f;
-        nc = mapNormal(faced, tangentNormal, layer.clearcoatNormalScale);
+        vec4 texel = texture(clearcoatNormalTexture, layerUv(CANDELA_LAYER_TEX_CLEARCOAT_NORMAL));
+        nc = mapNormal(faced, texel.xyz * 2.0f - 1.0f, layer.clearcoatNormalScale);
+        mapLength = texel.a;
     }
+    if (kSpecularAa) roughness = specularAntiAliasedRoughness(clamp(roughness, 0.0f, 1.0f), gNormalChange, mapLength);
     return clearcoatLayer(clamp(weight, 0.0f, 1.0f), clamp(roughness, 0.0f, 1.0f), nc, v);
 }
 
@@ -507,8 +527,13 @@ void main() {
     vec4 mr = sampleSlot(metallicRoughnessTexture, CANDELA_TEX_METALLIC_ROUGHNESS);
     float metallic = clamp(m.metallic * mr.b, 0.0f, 1.0f);
     float roughness = clamp(m.roughness * mr.g, 0.0f, 1.0f);
+    float materialRoughness = roughness;  // before specular AA: the transmission and the roughness debug view
     vec3 n = shadingNormal(m, true);
     vec3 v = normalize(push.eye.xyz - inWorldPosition);
+    if (kSpecularAa) {
+        gNormalChange = normalChange();
+        roughness = specularAntiAliasedRoughness(roughness, gNormalChange, gNormalMapLength);
+    }
 #ifdef CANDELA_MATERIAL_LAYERS
     MaterialLayerData layer = layers[draws[push.counts.y].material.x];
     gCoat = layerClearcoat(layer, facedNormal(), v);
@@ -516,7 +541,9 @@ void main() {
                                   hasLayer(CANDELA_LAYER_CLEARCOAT) ? gCoat.weight : 0.0f);
     gSheen = layerSheen(layer, n, v);
     gAnisotropy = layerAnisotropy(layer, n);
-    gTransmission = layerTransmission(layer, roughness);
+    // The material's roughness: what lies behind a thin surface does not change with its curvature
+    // across the pixel (specular AA widens the reflection only).
+    gTransmission = layerTransmission(layer, materialRoughness);
     layerVolume(layer, n, v);
 #endif
 
@@ -591,7 +618,7 @@ void main() {
         if (kDebugView == CANDELA_DEBUG_BASE_COLOR) value = baseColor.rgb;
         else if (kDebugView == CANDELA_DEBUG_GEOMETRIC_NORMAL) value = asData(shadingNormal(m, false) * 0.5f + 0.5f);
         else if (kDebugView == CANDELA_DEBUG_MAPPED_NORMAL) value = asData(n * 0.5f + 0.5f);
-        else if (kDebugView == CANDELA_DEBUG_ROUGHNESS) value = asData(vec3(roughness));
+        else if (kDebugView == CANDELA_DEBUG_ROUGHNESS) value = asData(vec3(materialRoughness));
         else if (kDebugView == CANDELA_DEBUG_METALLIC) value = asData(vec3(metallic));
         else if (kDebugView == CANDELA_DEBUG_OCCLUSION) value = asData(vec3(occlusion(m)));
         else if (kDebugView == CANDELA_DEBUG_EMISSIVE) value = emissive;

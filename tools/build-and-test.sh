@@ -4,9 +4,9 @@
 # synchronization validation, CLI tests of the real executable, and the viewer under Xvfb. Then
 # builds with AddressSanitizer + UndefinedBehaviorSanitizer and runs the unit tests (loaders on
 # malformed input, graph compilation) and the CLI tests (the bad-input catalogue against the
-# sanitized executable) again. Last, a bounded libFuzzer run of each file reader (clang, ASan +
-# UBSan; docs/fuzzing.md): 60 s of glTF/GLB beside 30 s each of Radiance .hdr and OpenEXR.
-# Each stage's start is printed with the time since the script began.
+# sanitized executable) again; those replay every input fuzzing ever found. The libFuzzer runs
+# themselves are in tools/nightly.sh (CI time, docs/testing.md). Each stage's start is printed with
+# the time since the script began.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
@@ -40,13 +40,4 @@ two_shards build/asan/tests/unit/candela_unit_tests
 stage "sanitized CLI tests"
 # The CLI tests start the Vulkan driver: LeakSanitizer off for them, as in tests/CMakeLists.txt.
 ASAN_OPTIONS=detect_leaks=0 two_shards build/asan/tests/cli/candela_cli_tests
-stage "fuzzing"
-# Built once, then the glTF harness and the two image harnesses run side by side, one per core.
-FUZZ_STEP=prepare tools/fuzz.sh
-FUZZ_STEP=run tools/fuzz.sh 60 gltf &
-gltf=$!
-status=0
-FUZZ_STEP=run tools/fuzz.sh 30 hdr exr || status=1
-wait "$gltf" || status=1
-[ "$status" -eq 0 ]
 stage "done"

@@ -135,7 +135,7 @@ void writeLogLogPlot(const std::filesystem::path& path, const PlotSpec& spec) {
     canvas.text((left + right) / 2 - Canvas::textWidth(spec.xLabel) / 2, bottom + 30, spec.xLabel, ink);
     canvas.text(10, top - 20, spec.yLabel, ink);
 
-    const std::vector<size_t> front = paretoFront(spec.points);
+    const std::vector<size_t> front = spec.paretoLine ? paretoFront(spec.points) : std::vector<size_t>{};
     for (size_t i = 1; i < front.size(); ++i)
         canvas.line(sx(spec.points[front[i - 1]].x), sy(spec.points[front[i - 1]].y), sx(spec.points[front[i]].x),
                     sy(spec.points[front[i]].y), Rgb{0, 0, 0}, 2);

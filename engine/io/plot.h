@@ -25,6 +25,7 @@ struct PlotSpec {
     std::vector<std::string> series;  // legend names
     std::vector<PlotPoint> points;
     std::optional<size_t> highlight;  // index of a point to ring and name in the legend ("default")
+    bool paretoLine = true;           // draw the Pareto front (reports of cost against error)
     uint32_t width = 960;
     uint32_t height = 640;
 };

@@ -73,6 +73,7 @@ std::string ForwardPass::Variant::name() const {
     if (ibl && !unlit) out += std::string("+ibl-") + (irradianceSh ? "sh9" : "cube") + (multiscatter ? "" : "-single-scatter") +
                (referenceSamples ? "-reference" + std::to_string(referenceSamples) : "");
     out += plusLayerNames(layers);
+    if (specularAa && !unlit) out += "+specular-aa";
     if (debugView != DebugView::None) out += std::string("+debug-") + debugViewName(debugView);
     return out;
 }
@@ -104,13 +105,14 @@ vk::GraphicsPipelineDesc ForwardPass::desc(const Variant& v) {
                              {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv0)},
                              {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv1)},
                              {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, color)}}};
-    // Only the layered program has kLayers (constant 10): core pipelines stay as they were.
-    if (v.layers) out.specialization.push_back(v.layers);
+    // Only the layered program has kLayers (constant 10; 0 for the core program, which ignores it).
+    out.specialization.push_back(v.layers);
+    out.specialization.push_back(v.specularAa);
     return out;
 }
 
 ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl,
-                                            DebugView debugView) const {
+                                            DebugView debugView, const ShadingOptions& shading) const {
     const scene::Material& m = mScene->scene().materials[draw.material];
     Variant v;
     v.unlit = m.unlit;
@@ -125,6 +127,7 @@ ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingMode
     v.referenceSamples = v.ibl ? ibl->referenceSamples : 0;
     v.debugView = debugView;
     v.layers = layered(m) ? m.layers() : 0;
+    v.specularAa = !m.unlit && shading.specularAntiAliasing;
     return v;
 }
 
@@ -179,7 +182,8 @@ static bool transmissive(const scene::Material& m) { return layered(m) && (m.lay
 ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
                                      ShadingModel model, const Ibl* ibl, shader::ParameterRegistry* parameters,
                                      DebugView debugView, const PosedDraws* posed, const DeformedVertices* deformed,
-                                     const LayerMaps* layerMaps, const DrawSelection& selection) {
+                                     const LayerMaps* layerMaps, const DrawSelection& selection,
+                                     const ShadingOptions& shading) {
     const scene::Scene& scene = mScene->scene();
     const std::span<const scene::Draw> draws = posed ? posed->draws : std::span<const scene::Draw>(scene.draws);
     std::vector<DrawItem> opaque, blended, transmitting;
@@ -205,7 +209,7 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
         mStats.coarserDraws += level.firstIndex != draw.firstIndex;
         ++mStats.submittedDraws;
         mStats.submittedTriangles += uint64_t(level.indexCount / 3) * instances;
-        const Variant v = variantOf(draw, model, ibl, debugView);
+        const Variant v = variantOf(draw, model, ibl, debugView, shading);
         ++variantCounts[v.name()];
         const glm::vec3 centre = 0.5f * (draw.bounds.min + draw.bounds.max);
         // Debug views show data, not what lies behind: transmissive draws are then drawn with the rest.

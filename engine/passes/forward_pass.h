@@ -34,6 +34,14 @@ namespace candela::passes {
 enum class ShadingModel : uint32_t { Pbr = 0, PbrSchlickGgx = 1, BlinnPhong = 2 };
 
 // Which draws and which of their levels of detail a frame submits (docs/geometry.md).
+// How the forward pass shades (docs/shading.md).
+struct ShadingOptions {
+    // Specular anti-aliasing: roughness widened by the normal's change across the pixel and by
+    // what a normal map's mip averaged away. Off by default until its error is measured against
+    // a supersampled reference with the temporal measure too (docs/shading.md).
+    bool specularAntiAliasing = false;
+};
+
 struct DrawSelection {
     // Leave out draws whose world bounds lie outside the view frustum.
     bool frustumCulling = true;
@@ -94,13 +102,14 @@ public:
     // Adds the pass drawing the current scene as seen from `view`, lit by the scene's lights and,
     // when `ibl` is given, the environment; posed by `posed` and drawn from `deformed` vertices
     // where given; the layered program reads `layerMaps` (the sheen LUT and cube) where given.
-    // `selection` culls draws and picks their levels of detail. Returns the written targets.
+    // `selection` culls draws and picks their levels of detail; `shading` turns specular
+    // anti-aliasing on or off. Returns the written targets.
     // With `parameters`, the user's values for the per-frame push constants apply ("forward", "Push").
     Output add(graph::RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
                ShadingModel model, const Ibl* ibl = nullptr, shader::ParameterRegistry* parameters = nullptr,
                DebugView debugView = DebugView::None, const PosedDraws* posed = nullptr,
                const DeformedVertices* deformed = nullptr, const LayerMaps* layerMaps = nullptr,
-               const DrawSelection& selection = {});
+               const DrawSelection& selection = {}, const ShadingOptions& shading = {});
     // Whether the last add() left transmissive draws (and the blended ones) for addTransmissive().
     bool hasTransmissiveDraws() const { return !mBehind.empty(); }
     // Adds "forward_transmission": the draws the last add() left, over its `opaque` targets (after
@@ -140,6 +149,7 @@ private:
         // KHR_materials_* layers the material uses (scene::MaterialLayer bits): non-zero selects the
         // layered program (forward_layers.*), whose kLayers evaluates just these.
         uint32_t layers = 0;
+        bool specularAa = false;  // specular anti-aliasing (kSpecularAa)
         auto operator<=>(const Variant&) const = default;
         std::string name() const;
     };
@@ -171,7 +181,8 @@ private:
                                    const std::function<DrawTargets(graph::PassBuilder&)>& targets);
     const vk::Pipeline& pipeline(const Variant& variant);
     static vk::GraphicsPipelineDesc desc(const Variant& variant);
-    Variant variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl, DebugView debugView) const;
+    Variant variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl, DebugView debugView,
+                      const ShadingOptions& shading) const;
 
     vk::Context& mContext;
     vk::PipelineCache<Variant> mPipelines;

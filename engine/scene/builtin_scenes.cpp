@@ -7,6 +7,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace candela::scene {
 
@@ -39,11 +41,12 @@ std::pair<uint32_t, uint32_t> appendUvSphere(Scene& scene, float radius, uint32_
     return {firstIndex, static_cast<uint32_t>(scene.indices.size()) - firstIndex};
 }
 
-Scene makeSphereGrid() {
-    constexpr int kRows = 7, kColumns = 7;
+Scene makeSphereGrid(uint32_t side) {
+    constexpr int kRows = 7, kColumns = 7;  // the materials
     constexpr float kSpacing = 2.5f;
+    if (side == 0) throw std::invalid_argument("makeSphereGrid: a grid of 0 spheres");
     Scene scene;
-    scene.source = "built-in: sphere grid";
+    scene.source = side == 7 ? "built-in: sphere grid" : "built-in: sphere grid " + std::to_string(side) + "x" + std::to_string(side);
     const auto [firstIndex, indexCount] = appendUvSphere(scene, 1.0f, 64, 32);
     // Its levels of detail: coarser tessellations of the same sphere (the simplifier would stop at
     // about 440 triangles: it locks the poles' coincident vertices), each with its measured
@@ -69,12 +72,16 @@ Scene makeSphereGrid() {
             // Roughness 0 would make a point light's highlight a delta: start at 0.05 as the original did.
             material.roughnessFactor = glm::clamp(static_cast<float>(row) / (kRows - 1), 0.05f, 1.0f);
             scene.materials.push_back(material);
-
+        }
+    for (uint32_t row = 0; row < side; ++row)
+        for (uint32_t column = 0; column < side; ++column) {
             Draw draw;
             draw.firstIndex = firstIndex;
             draw.indexCount = indexCount;
-            draw.material = static_cast<uint32_t>(scene.materials.size() - 1);
-            const glm::vec3 offset((column - (kColumns - 1) / 2.0f) * kSpacing, (row - (kRows - 1) / 2.0f) * kSpacing, 0.0f);
+            // Sphere (row, column) wears the material of its part of the 7 × 7 grid.
+            draw.material = row * kRows / side * kColumns + column * kColumns / side;
+            const float centre = (float(side) - 1.0f) / 2.0f;
+            const glm::vec3 offset((float(column) - centre) * kSpacing, (float(row) - centre) * kSpacing, 0.0f);
             draw.world = glm::translate(glm::mat4(1.0f), offset);
             draw.localBounds = sphereBounds;
             draw.lod = 0;
@@ -83,11 +90,14 @@ Scene makeSphereGrid() {
             scene.bounds.extend(draw.bounds);
             scene.draws.push_back(draw);
         }
+    // In front of the grid's corners; a larger grid gets them further out and brighter by the
+    // square of the distance (the same irradiance where the 7 × 7 grid has its spheres).
+    const float reach = float(side) / 7.0f;
     for (const glm::vec2 corner : {glm::vec2(-10, 10), glm::vec2(10, 10), glm::vec2(-10, -10), glm::vec2(10, -10)}) {
         Light light;
         light.type = LightType::Point;
-        light.intensity = 300.0f;
-        light.position = glm::vec3(corner, 10.0f);
+        light.intensity = 300.0f * reach * reach;
+        light.position = glm::vec3(corner, 10.0f) * reach;
         scene.lights.push_back(light);
     }
     prepareGeometry(scene);

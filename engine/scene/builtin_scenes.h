@@ -9,7 +9,10 @@ namespace candela::scene {
 // plane facing +Z, metallic rising left → right (0 → 1) and roughness bottom → top (0.05 → 1),
 // base colour a dark red, lit by 4 white point lights of 300 cd in front of the grid's corners.
 // The spheres (64 × 32) have levels of detail: 24 × 12, 20 × 10, 16 × 8, 12 × 6 and 8 × 4.
-Scene makeSphereGrid();
+// With `side` other than 7: side × side spheres over the same 7 × 7 materials (each sphere wearing
+// its part of the grid's), the lights as far out, relative to the grid, and as bright where the
+// spheres are (`bench --grid N`). Throws std::invalid_argument for side 0.
+Scene makeSphereGrid(uint32_t side = 7);
 
 // Appends a UV sphere (sectors around Y, stacks from +Y to −Y) with normals, tangents along +φ
 // and UVs, to `scene`'s vertex and index arrays; returns the first index and index count.

@@ -1,5 +1,7 @@
 #include "scene/gpu_scene.h"
 
+#include "scene/normal_map_mips.h"
+
 #include "scene/texture_transform.h"
 #include "shared/scene_data.h"
 #include "vk/upload.h"
@@ -193,7 +195,20 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     mLightData = mSceneLights;
     mMaterialData = mSceneMaterials;
 
-    for (const Image& source : scene.images) {
+    // Which images are normal maps (of the base or of the coat) and which are read otherwise: a
+    // normal map's mips keep the length its averaging loses (scene/normal_map_mips.h), in A — an
+    // image read both ways gets a second copy for its normal-map use.
+    std::vector<bool> normalUse(scene.images.size()), otherUse(scene.images.size());
+    for (const Material& m : scene.materials) {
+        const auto mark = [&](const TextureRef& ref, bool normal) {
+            if (ref.present() && size_t(ref.image) < scene.images.size()) (normal ? normalUse : otherUse)[size_t(ref.image)] = true;
+        };
+        mark(m.normal, true);
+        for (const TextureRef* ref : {&m.baseColor, &m.metallicRoughness, &m.occlusion, &m.emissive}) mark(*ref, false);
+        const auto layers = layerTextures(m);
+        for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) mark(*layers[size_t(slot)], slot == CANDELA_LAYER_TEX_CLEARCOAT_NORMAL);
+    }
+    const auto upload = [&](const Image& source, bool normalMap) {
         const uint32_t mips = std::bit_width(std::max(source.width, source.height));
         vk::Image image(context, {.width = source.width,
                                   .height = source.height,
@@ -202,9 +217,22 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
                                   .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
                                            VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                   .name = source.name.c_str()});
-        uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                       /*generateMips=*/true);
-        mImages.push_back(std::move(image));
+        if (normalMap) {
+            const std::vector<std::vector<uint8_t>> chain = normalMapMipChain(source);
+            for (uint32_t mip = 0; mip < chain.size(); ++mip)
+                uploader.image(image, std::as_bytes(std::span(chain[mip])), mip, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        } else {
+            uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                           /*generateMips=*/true);
+        }
+        return image;
+    };
+    mNormalImage.assign(scene.images.size(), -1);
+    for (size_t i = 0; i < scene.images.size(); ++i) {
+        mImages.push_back(upload(scene.images[i], normalUse[i] && !otherUse[i]));
+        if (!normalUse[i]) continue;
+        mNormalImage[i] = otherUse[i] ? int32_t(scene.images.size() + mExtraImages.size()) : int32_t(i);
+        if (otherUse[i]) mExtraImages.push_back(upload(scene.images[i], true));
     }
     mWhite = solidTexture(context, uploader, {255, 255, 255, 255}, VK_FORMAT_R8G8B8A8_UNORM, "default white");
     mFlatNormal = solidTexture(context, uploader, {128, 128, 255, 255}, VK_FORMAT_R8G8B8A8_UNORM, "default normal");
@@ -224,21 +252,27 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
                                                   .addressV = VK_SAMPLER_ADDRESS_MODE_REPEAT,
                                                   .maxAnisotropy = maxAnisotropy});
 
-    // A texture's view and sampler, or `fallback` (1×1) with the default sampler without one.
-    const auto binding = [&](const TextureRef& ref, const vk::Image& fallback) {
+    // A texture's view (its normal-map copy for a normal map) and sampler, or `fallback` (1×1) with
+    // the default sampler without one.
+    const auto binding = [&](const TextureRef& ref, const vk::Image& fallback, bool normalMap = false) {
         const bool has = ref.present() && static_cast<size_t>(ref.image) < mImages.size();
         const bool hasSampler = ref.sampler >= 0 && static_cast<size_t>(ref.sampler) < mSamplers.size();
-        return Binding{has ? mImages[ref.image].view() : fallback.view(),
-                       hasSampler ? mSamplers[ref.sampler].get() : mDefaultSampler.get()};
+        const vk::Image* image = !has ? &fallback
+                                 : normalMap && mNormalImage[size_t(ref.image)] >= int32_t(mImages.size())
+                                     ? &mExtraImages[size_t(mNormalImage[size_t(ref.image)]) - mImages.size()]
+                                     : &mImages[size_t(ref.image)];
+        return Binding{image->view(), hasSampler ? mSamplers[ref.sampler].get() : mDefaultSampler.get()};
     };
     for (const Material& m : scene.materials) {
-        mBindings.push_back({binding(m.baseColor, mWhite), binding(m.metallicRoughness, mWhite), binding(m.normal, mFlatNormal),
-                             binding(m.occlusion, mWhite), binding(m.emissive, mWhite)});
+        mBindings.push_back({binding(m.baseColor, mWhite), binding(m.metallicRoughness, mWhite),
+                             binding(m.normal, mFlatNormal, true), binding(m.occlusion, mWhite), binding(m.emissive, mWhite)});
         // Missing layer textures read white (factor × 1), the coat's normal map flat.
         const auto textures = layerTextures(m);
         auto& layerBindings = mLayerBindings.emplace_back();
-        for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot)
-            layerBindings[slot] = binding(*textures[slot], slot == CANDELA_LAYER_TEX_CLEARCOAT_NORMAL ? mFlatNormal : mWhite);
+        for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) {
+            const bool coatNormal = slot == CANDELA_LAYER_TEX_CLEARCOAT_NORMAL;
+            layerBindings[slot] = binding(*textures[slot], coatNormal ? mFlatNormal : mWhite, coatNormal);
+        }
     }
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // GpuScene: a scene::Scene uploaded to the device — vertex and index buffers, storage buffers of
 // lights, draws and materials (shared/scene_data.h layouts), textures with generated mip chains,
-// samplers, and 1×1 defaults for absent textures. Geometry and textures are immutable after
+// samplers, and 1×1 defaults for absent textures. A normal map's mips are filtered on the CPU and
+// keep, in A, the length their averaging loses (scene/normal_map_mips.h), for specular anti-aliasing. Geometry and textures are immutable after
 // upload (re-upload on change); the light and material buffers can be rewritten (live edits).
 
 #include "scene/scene.h"
@@ -89,7 +90,11 @@ private:
     std::vector<shading::LightData> mSceneLights, mLightData;
     std::vector<shading::MaterialData> mSceneMaterials, mMaterialData;
     std::vector<shading::MaterialLayerData> mSceneLayers, mLayerData;
-    std::vector<vk::Image> mImages;
+    std::vector<vk::Image> mImages;       // per Scene::images entry
+    std::vector<vk::Image> mExtraImages;  // normal-map copies of images also read otherwise
+    // Per Scene::images entry: the image its normal-map use reads (an mImages index, or
+    // mImages.size() + an mExtraImages index); -1 when no material uses it as a normal map.
+    std::vector<int32_t> mNormalImage;
     std::vector<vk::Sampler> mSamplers;
     vk::Sampler mDefaultSampler;
     vk::Image mWhite, mFlatNormal;

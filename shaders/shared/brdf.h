@@ -31,6 +31,22 @@ CANDELA_FN float clampRoughness(float perceptualRoughness) {
     return clamp(perceptualRoughness, CANDELA_MIN_ROUGHNESS, 1.0f);
 }
 
+// Specular anti-aliasing (docs/shading.md): the perceptual roughness widened, in α² = roughness⁴,
+//  - by the normal's change across the pixel (geometric specular AA, Tokuyoshi & Kaplanyan 2019,
+//    "Improved Geometric Specular Antialiasing"): + min(2σ² · (|∂n/∂x|² + |∂n/∂y|²), κ) with the
+//    pixel filter's variance σ² = 0.25 and the clamp κ = 0.18; `normalChange` is the sum of squares;
+//  - by what a normal-map mip averaged away (Toksvig's idea, as a von Mises-Fisher lobe: Han et al.
+//    2007, Neubelt & Pettineo 2013): a mean normal of length r has κ_vMF = (3r − r³)/(1 − r²) and
+//    adds 2/κ_vMF; r = 1 (mip 0, or normals that agree) adds nothing, r → 0 gives α² = 1.
+CANDELA_FN float specularAntiAliasedRoughness(float perceptualRoughness, float normalChange, float meanNormalLength) {
+    float a = perceptualRoughness * perceptualRoughness;
+    float a2 = a * a + min(2.0f * 0.25f * max(normalChange, 0.0f), 0.18f);
+    float r = clamp(meanNormalLength, 0.0f, 1.0f);
+    if (r < 1e-4f) return 1.0f;
+    if (r < 0.9999f) a2 += 2.0f * (1.0f - r * r) / (3.0f * r - r * r * r);
+    return sqrt(sqrt(min(a2, 1.0f)));
+}
+
 // GGX normal distribution. `a` = clamped roughness². Filament's form, with 1 − (N·H)² passed in as
 // |N × H|²: from a float N·H near 1 (spacing 6e-8), 1 − N·H·N·H cancels catastrophically where the
 // lobe of the smallest roughness lives (1 − (N·H)² ~ a² = 4e-6): up to 10% error in D.

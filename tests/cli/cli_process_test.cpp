@@ -188,7 +188,16 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"FpsZero", "render --frames 3 --fps 0 --out {dir}/x_%d.png", "--fps: expected frames per second > 0, got '0'"},
                       BadInput{"SceneIndexBeyondTheFile", "render --scene {dir}/triangle.gltf --scene-index 3 --out {dir}/x.png", "scene 3 does not exist (the file has 1 scenes)"},
                       BadInput{"SceneIndexWithoutScene", "render --scene-index 1 --out {dir}/x.png", "--scene-index: give a glTF file with --scene"},
-                      BadInput{"MemoryBudgetZero", "render --memory-budget 0 --out {dir}/x.png", "--memory-budget: need at least 1 MiB"}),
+                      BadInput{"MemoryBudgetZero", "render --memory-budget 0 --out {dir}/x.png", "--memory-budget: need at least 1 MiB"},
+                      // Geometry and shading options.
+                      BadInput{"LodErrorNegative", "render --lod-error -1 --out {dir}/x.png", "--lod-error: expected pixels ≥ 0, got '-1'"},
+                      BadInput{"LodMaybe", "render --lod maybe --out {dir}/x.png", "--lod: expected on or off, got 'maybe'"},
+                      BadInput{"CullMaybe", "render --cull maybe --out {dir}/x.png", "--cull: expected on or off, got 'maybe'"},
+                      BadInput{"SpecularAaMaybe", "render --specular-aa 1 --out {dir}/x.png", "--specular-aa: expected on or off, got '1'"},
+                      BadInput{"GridZero", "bench --grid 0", "--grid: expected 1 to 1000 spheres a side, got '0'"},
+                      BadInput{"GridWithScene", "render --grid 3 --scene {dir}/triangle.gltf --out {dir}/x.png", "--grid: sizes the built-in sphere grid; not with --scene"},
+                      BadInput{"ScaleReportSizeZero", "scale-report --sizes 1,0 --out {dir}/r", "--sizes: expected grid sides from 1 to 1000, got '1,0'"},
+                      BadInput{"ScaleReportUnwritableOut", "scale-report --out /proc/candela-report", "/proc/candela-report: cannot create the report folder"}),
     [](const ::testing::TestParamInfo<BadInput>& row) { return std::string(row.param.name); });
 
 TEST(Cli, HelpExitsZero) { EXPECT_EQ(run("--help").exitCode, 0); }
@@ -286,7 +295,8 @@ TEST(Cli, FloatOutputsCullTheTonemapPass) {
     const auto dir = tempDir();
     for (const char* name : {"frame.exr", "frame.pfm"}) {
         const auto out = dir / name, json = dir / "graph.json";
-        const Result r = run("render --env none --validate --width 96 --height 64 --out " + out.string() +
+        // Specular AA off: at this size it would spread the sub-pixel highlights below 1.
+        const Result r = run("render --env none --validate --specular-aa off --width 96 --height 64 --out " + out.string() +
                              " --graph-json " + json.string());
         ASSERT_EQ(r.exitCode, 0) << r.stderrText;
         if (out.extension() == ".pfm") {
@@ -393,6 +403,36 @@ TEST(Cli, IblReportWritesTablesAndPlotsWithTheDefaultMarked) {
     ASSERT_NE(plot, nullptr);
     stbi_image_free(plot);
     EXPECT_EQ(w, 960);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, ScaleReportSweepsGridSizesWithLevelsOfDetailOnAndOff) {
+    const auto dir = tempDir() / "scale-report";
+    const Result r = run("scale-report --validate --sizes 1,3 --frames 1 --width 64 --height 36 --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    for (const char* file : {"report.csv", "report.md", "frame_vs_triangles.png"}) EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+    std::ifstream csv(dir / "report.csv");
+    std::string header, line;
+    std::getline(csv, header);
+    EXPECT_EQ(header.rfind("side,lod_error_px,scene_draws,submitted_draws,culled_draws,scene_triangles,submitted_triangles", 0), 0u);
+    std::vector<std::vector<std::string>> rows;
+    while (std::getline(csv, line)) {
+        std::vector<std::string>& row = rows.emplace_back();
+        for (size_t start = 0;;) {
+            const size_t comma = line.find(',', start);
+            row.push_back(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+            if (comma == std::string::npos) break;
+            start = comma + 1;
+        }
+    }
+    ASSERT_EQ(rows.size(), 4u);  // 1 and 3, levels of detail on (1 px) and off
+    EXPECT_EQ(rows[2][0], "3");
+    EXPECT_EQ(rows[2][2], "9");                       // draws
+    EXPECT_EQ(std::stoull(rows[2][5]), 9ull * 3968);  // 64 × 32 spheres: 64 × (2 · 32 − 2) triangles
+    EXPECT_EQ(rows[3][1], "0");
+    EXPECT_EQ(rows[3][6], rows[3][5]);                // off: every triangle
+    EXPECT_LT(std::stoull(rows[2][6]), std::stoull(rows[2][5]) / 10);  // on, 64 × 36 pixels: the coarsest levels
+    EXPECT_NE(r.stderrText.find("scale-report: 4/4"), std::string::npos) << r.stderrText;
     std::filesystem::remove_all(dir);
 }
 

@@ -214,6 +214,8 @@ TEST_F(IblFurnaceTest, WithoutMultiscatterMetalsReflectTheirDirectionalAlbedo) {
         quality.lutSamples = run.lutSamples;
         RenderSettings settings{.width = kSize, .height = kSize, .floatOutput = true, .scene = &scene,
                                 .defaultLights = false, .environment = &env, .iblQuality = quality};
+        // The albedo at the spheres' own roughness: no specular AA widening it.
+        settings.shadingOptions.specularAntiAliasing = false;
         settings.ibl.skybox = false;
         settings.ibl.multiscatter = false;
         const std::string prefix = std::string(run.name) + ".noMultiscatter";
@@ -751,6 +753,8 @@ TEST_F(IblRotationTest, RotatedLookupEqualsTheMapRotatedOnTheCpu) {
         settings.camera.orbit = glm::vec3(0.0f, 90.0f, 3.0f);  // the sphere ≈ 55 px in radius
         settings.camera.target = glm::vec3(0.0f);
         settings.ibl.skybox = false;
+        // The mirror reads mip 0 only at roughness exactly 0: no specular AA widening it.
+        settings.shadingOptions.specularAntiAliasing = false;
         const CapturedFrame unrotated = renderer.capture(settings);
         settings.ibl.rotationDegrees = 90.0f;
         const CapturedFrame rotated = renderer.capture(settings);

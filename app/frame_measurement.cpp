@@ -1,0 +1,35 @@
+#include "frame_measurement.h"
+
+#include <algorithm>
+
+namespace candela::app {
+
+FrameMeasurement measureFrames(Renderer& renderer, const RenderSettings& settings, uint32_t frames,
+                               const std::function<void(uint32_t)>& beforeFrame) {
+    for (int i = 0; i < 2; ++i) {
+        renderer.renderFrame(settings);
+        renderer.renderCalibration(settings.width, settings.height);
+    }
+    FrameMeasurement out;
+    for (uint32_t i = 0; i < frames; ++i) {
+        if (beforeFrame) beforeFrame(i);
+        const FrameTiming frame = renderer.renderFrame(settings);
+        out.frameMs.push_back(frame.submitWaitMs);
+        out.cpuMs.push_back(frame.cpuMs);
+        out.drawStats = renderer.drawStats();
+        const graph::GraphDecl& decl = renderer.lastGraph().declaration();
+        for (uint32_t pass : renderer.lastGraph().compiled().order) {
+            const std::string& name = decl.passes[pass].name;
+            // Passes can come and go between frames (skin_morph with the pose): list every one seen.
+            if (std::find(out.passOrder.begin(), out.passOrder.end(), name) == out.passOrder.end()) out.passOrder.push_back(name);
+            if (frame.timings.gpuMs[pass] >= 0.0) out.passGpuMs[name].push_back(frame.timings.gpuMs[pass]);
+        }
+        const FrameTiming calibration = renderer.renderCalibration(settings.width, settings.height);
+        out.calibrationMs.push_back(calibration.submitWaitMs);
+        const uint32_t calibrationPass = *renderer.lastGraph().findPass("calibration");
+        if (calibration.timings.gpuMs[calibrationPass] >= 0.0) out.calibrationGpuMs.push_back(calibration.timings.gpuMs[calibrationPass]);
+    }
+    return out;
+}
+
+}  // namespace candela::app

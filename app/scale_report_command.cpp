@@ -1,0 +1,96 @@
+// `candela scale-report`: how the frame's cost grows with the scene. The built-in sphere grid at
+// N × N spheres (framed alike: the same screen area, each sphere smaller as N grows) under the
+// procedural sky, with levels of detail on and off: frame time (and its ratio to the calibration
+// pass of the same run), CPU time to build and record the frame, draws and triangles submitted.
+// Writes report.csv, report.md and frame_vs_triangles.png (log-log). See docs/geometry.md.
+
+#include "commands.h"
+#include "frame_measurement.h"
+#include "statistics.h"
+
+#include "core/check.h"
+#include "io/plot.h"
+#include "scene/builtin_scenes.h"
+#include "scene/procedural_sky.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <list>
+
+namespace candela::app {
+namespace {
+
+struct Row {
+    uint32_t side = 0;
+    float lodErrorPixels = 0.0f;
+    passes::DrawStats draws;
+    double frameMs = 0.0, calibrationMs = 0.0, cpuMs = 0.0, forwardGpuMs = -1.0;
+    double ratio() const { return frameMs / calibrationMs; }
+};
+
+void writeReport(const std::filesystem::path& out, const std::vector<Row>& rows, const ScaleReportOptions& options,
+                 const std::string& device) {
+    std::ofstream csv(out / "report.csv");
+    csv << "side,lod_error_px,scene_draws,submitted_draws,culled_draws,scene_triangles,submitted_triangles,frame_ms,"
+           "calibration_ms,frame_ratio,cpu_ms,forward_gpu_ms\n";
+    for (const Row& r : rows)
+        csv << r.side << "," << r.lodErrorPixels << "," << r.draws.sceneDraws << "," << r.draws.submittedDraws << ","
+            << r.draws.culledDraws << "," << r.draws.sceneTriangles << "," << r.draws.submittedTriangles << "," << r.frameMs
+            << "," << r.calibrationMs << "," << r.ratio() << "," << r.cpuMs << "," << r.forwardGpuMs << "\n";
+    std::ofstream md(out / "report.md");
+    md << "# Scale report\n\nThe built-in sphere grid at N × N spheres, framed alike, under the procedural sky, "
+       << options.width << "×" << options.height << " on " << device << ", median of " << options.frames
+       << " frames; frame time as a ratio to the calibration pass of the same run.\n\n"
+       << "| N | draws | levels of detail | triangles in the scene | submitted | frame / calibration | CPU build + record (ms) |\n"
+       << "|---|---|---|---|---|---|---|\n";
+    for (const Row& r : rows) {
+        char line[256];
+        std::snprintf(line, sizeof line, "| %u | %u | %s | %llu | %llu | %.2f× | %.2f |\n", r.side, r.draws.sceneDraws,
+                      r.lodErrorPixels > 0.0f ? "on" : "off", (unsigned long long)r.draws.sceneTriangles,
+                      (unsigned long long)r.draws.submittedTriangles, r.ratio(), r.cpuMs);
+        md << line;
+    }
+    io::PlotSpec plot{.title = "Frame time against scene triangles (N x N sphere grid)",
+                      .xLabel = "triangles in the scene",
+                      .yLabel = "frame time / calibration",
+                      .series = {"levels of detail on", "levels of detail off"},
+                      .paretoLine = false};
+    for (const Row& r : rows)
+        plot.points.push_back({double(r.draws.sceneTriangles), r.ratio(), "N=" + std::to_string(r.side), r.lodErrorPixels > 0.0f ? 0u : 1u});
+    io::writeLogLogPlot(out / "frame_vs_triangles.png", plot);
+}
+
+}  // namespace
+
+int runScaleReport(const ScaleReportOptions& options) {
+    prepareReportFolder(options.out, {"report.csv", "report.md", "frame_vs_triangles.png"});
+    const scene::Environment sky = scene::makeProceduralSky();
+    vk::Context context(contextDesc(options.common));
+    Renderer renderer(context);
+    // The renderer keeps pointing at the last scene it drew: every scene lives until the end.
+    std::list<scene::Scene> scenes;
+    std::vector<Row> rows;
+    const size_t steps = options.sizes.size() * 2;
+    for (uint32_t side : options.sizes) {
+        const scene::Scene& grid = scenes.emplace_back(scene::makeSphereGrid(side));
+        for (const float lodError : {options.lodErrorPixels, 0.0f}) {
+            RenderSettings settings{.width = options.width, .height = options.height, .scene = &grid, .environment = &sky};
+            settings.drawSelection.lodErrorPixels = lodError;
+            renderer.validateSettings(settings);
+            const FrameMeasurement m = measureFrames(renderer, settings, options.frames);
+            Row row{.side = side, .lodErrorPixels = lodError, .draws = m.drawStats, .frameMs = median(m.frameMs),
+                    .calibrationMs = median(m.calibrationMs), .cpuMs = median(m.cpuMs)};
+            if (auto forward = m.passGpuMs.find("forward"); forward != m.passGpuMs.end()) row.forwardGpuMs = median(forward->second);
+            rows.push_back(row);
+            std::fprintf(stderr, "scale-report: %zu/%zu  N=%u, levels of detail %s: %.2fx calibration, %llu of %llu triangles\n",
+                         rows.size(), steps, side, lodError > 0.0f ? "on" : "off", row.ratio(),
+                         (unsigned long long)row.draws.submittedTriangles, (unsigned long long)row.draws.sceneTriangles);
+        }
+    }
+    writeReport(options.out, rows, options, context.report().name);
+    std::printf("wrote %s/report.csv, report.md, frame_vs_triangles.png\n", options.out.c_str());
+    return 0;
+}
+
+}  // namespace candela::app
