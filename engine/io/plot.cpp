@@ -154,8 +154,12 @@ void writeLogLogPlot(const std::filesystem::path& path, const PlotSpec& spec) {
         canvas.rect(right + 20, ly, right + 29, ly + 9, kSeriesColors[s % std::size(kSeriesColors)]);
         canvas.text(right + 36, ly, spec.series[s], ink);
     }
-    canvas.line(right + 16, ly + 5, right + 32, ly + 5, Rgb{0, 0, 0}, 2);
-    canvas.text(right + 36, ly, "Pareto front", ink);
+    if (spec.paretoLine) {
+        canvas.line(right + 16, ly + 5, right + 32, ly + 5, Rgb{0, 0, 0}, 2);
+        canvas.text(right + 36, ly, "Pareto front", ink);
+    } else {
+        ly -= 18;
+    }
     if (spec.highlight) {
         ly += 18;
         canvas.ring(right + 24, ly + 4, 6, Rgb{220, 0, 0});
