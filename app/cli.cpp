@@ -86,6 +86,17 @@ float parseNumber(const std::string& flag, const std::string& value) {
     return number;
 }
 
+// The comma-separated items of `value`, empty ones included ("" gives one empty item).
+static std::vector<std::string> commaSeparated(const std::string& value) {
+    std::vector<std::string> items;
+    for (size_t start = 0;;) {
+        const size_t comma = value.find(',', start);
+        items.push_back(value.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (comma == std::string::npos) return items;
+        start = comma + 1;
+    }
+}
+
 std::array<float, 3> parseTriple(const std::string& flag, const std::string& value) {
     std::array<float, 3> out{};
     size_t start = 0;
@@ -169,13 +180,9 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         };
         table.withValue["--scene-index"] = [&](const std::string& v) { o.sceneIndex = parseDimension("--scene-index", v); };
         table.withValue["--animation"] = [&](const std::string& v) {
-            for (size_t start = 0;;) {
-                const size_t comma = v.find(',', start);
-                const std::string item = v.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+            for (const std::string& item : commaSeparated(v)) {
                 if (item.empty()) throw UserError("--animation: expected indices, names, all or none, got '" + v + "'");
                 o.animations.push_back(item);
-                if (comma == std::string::npos) break;
-                start = comma + 1;
             }
         };
         table.withValue["--time"] = [&](const std::string& v) { o.time = parseSeconds("--time", v); };
@@ -318,15 +325,11 @@ Command parseCommandLine(const std::vector<std::string>& args) {
                 static const std::vector<std::string> known = {"graph", "parameters", "materials", "environment",
                                                                "camera", "animation", "debug", "stats"};
                 o.panels.clear();
-                size_t start = 0;
-                while (start <= v.size()) {
-                    const size_t comma = std::min(v.find(',', start), v.size());
-                    const std::string panel = v.substr(start, comma - start);
+                for (const std::string& panel : commaSeparated(v)) {
                     if (std::find(known.begin(), known.end(), panel) == known.end())
                         throw UserError("--panels: unknown panel '" + panel +
                                         "' (graph, parameters, materials, environment, camera, debug, stats)");
                     o.panels.push_back(panel);
-                    start = comma + 1;
                 }
             };
             table.withValue["--ibl-report"] = [&](const std::string& v) {
@@ -370,13 +373,10 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         };
         table.withValue["--sizes"] = [&](const std::string& v) {
             o.sizes.clear();
-            for (size_t start = 0;;) {
-                const size_t comma = v.find(',', start);
-                const uint32_t side = parseDimension("--sizes", v.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+            for (const std::string& item : commaSeparated(v)) {
+                const uint32_t side = parseDimension("--sizes", item);
                 if (side == 0 || side > 1000) throw UserError("--sizes: expected grid sides from 1 to 1000, got '" + v + "'");
                 o.sizes.push_back(side);
-                if (comma == std::string::npos) break;
-                start = comma + 1;
             }
         };
         table.withValue["--frames"] = [&](const std::string& v) {

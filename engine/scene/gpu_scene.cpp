@@ -227,12 +227,13 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
         }
         return image;
     };
-    mNormalImage.assign(scene.images.size(), -1);
+    // Per image: its normal-map copy in mExtraImages, or -1 (the image serves its normal-map use itself).
+    std::vector<int32_t> normalCopy(scene.images.size(), -1);
     for (size_t i = 0; i < scene.images.size(); ++i) {
         mImages.push_back(upload(scene.images[i], normalUse[i] && !otherUse[i]));
-        if (!normalUse[i]) continue;
-        mNormalImage[i] = otherUse[i] ? int32_t(scene.images.size() + mExtraImages.size()) : int32_t(i);
-        if (otherUse[i]) mExtraImages.push_back(upload(scene.images[i], true));
+        if (!normalUse[i] || !otherUse[i]) continue;
+        normalCopy[i] = int32_t(mExtraImages.size());
+        mExtraImages.push_back(upload(scene.images[i], true));
     }
     mWhite = solidTexture(context, uploader, {255, 255, 255, 255}, VK_FORMAT_R8G8B8A8_UNORM, "default white");
     mFlatNormal = solidTexture(context, uploader, {128, 128, 255, 255}, VK_FORMAT_R8G8B8A8_UNORM, "default normal");
@@ -257,10 +258,9 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     const auto binding = [&](const TextureRef& ref, const vk::Image& fallback, bool normalMap = false) {
         const bool has = ref.present() && static_cast<size_t>(ref.image) < mImages.size();
         const bool hasSampler = ref.sampler >= 0 && static_cast<size_t>(ref.sampler) < mSamplers.size();
-        const vk::Image* image = !has ? &fallback
-                                 : normalMap && mNormalImage[size_t(ref.image)] >= int32_t(mImages.size())
-                                     ? &mExtraImages[size_t(mNormalImage[size_t(ref.image)]) - mImages.size()]
-                                     : &mImages[size_t(ref.image)];
+        const vk::Image* image = !has                                     ? &fallback
+                                 : normalMap && normalCopy[size_t(ref.image)] >= 0 ? &mExtraImages[size_t(normalCopy[size_t(ref.image)])]
+                                                                                   : &mImages[size_t(ref.image)];
         return Binding{image->view(), hasSampler ? mSamplers[ref.sampler].get() : mDefaultSampler.get()};
     };
     for (const Material& m : scene.materials) {

@@ -92,9 +92,6 @@ private:
     std::vector<shading::MaterialLayerData> mSceneLayers, mLayerData;
     std::vector<vk::Image> mImages;       // per Scene::images entry
     std::vector<vk::Image> mExtraImages;  // normal-map copies of images also read otherwise
-    // Per Scene::images entry: the image its normal-map use reads (an mImages index, or
-    // mImages.size() + an mExtraImages index); -1 when no material uses it as a normal map.
-    std::vector<int32_t> mNormalImage;
     std::vector<vk::Sampler> mSamplers;
     vk::Sampler mDefaultSampler;
     vk::Image mWhite, mFlatNormal;
