@@ -71,6 +71,8 @@ int runBench(const RenderOptions& options) {
                           {"ratioToCalibrationGpu", gpu >= 0.0 && calibrationGpu > 0.0 ? gpu / calibrationGpu : -1.0}});
     }
     out["passes"] = passes;
+    const vk::MsaaChoice msaa = renderer.msaa(settings.msaa);
+    out["msaa"] = {{"samples", msaa.samples}, {"reason", msaa.reason}};
     out["draws"] = {{"scene", drawStats.sceneDraws},
                     {"submitted", drawStats.submittedDraws},
                     {"culled", drawStats.culledDraws},
@@ -95,6 +97,7 @@ int runBench(const RenderOptions& options) {
         std::printf("%s at %ux%u on %s, %u frames (CPU wall time around submit+wait)\n", scene.source.c_str(),
                     settings.width, settings.height, context.report().name.c_str(), options.frames);
         std::printf("  scene load:  %.2f ms (reading and decoding the file)\n", loadMs);
+        std::printf("  msaa:        %s\n", msaa.reason.c_str());
         if (const auto& d = scene.decompression; d.dracoPrimitives + d.meshoptViews > 0)
             std::printf("  geometry decompression: %.2f ms (%zu Draco primitives, %zu meshopt bufferViews)\n",
                         d.milliseconds, d.dracoPrimitives, d.meshoptViews);

@@ -273,6 +273,10 @@ Command parseCommandLine(const std::vector<std::string>& args) {
             if (v != "on" && v != "off") throw UserError("--specular-aa: expected on or off, got '" + v + "'");
             o.specularAa = v == "on";
         };
+        table.withValue["--msaa"] = [&](const std::string& v) {
+            if (v != "1" && v != "2" && v != "4" && v != "8") throw UserError("--msaa: expected 1, 2, 4 or 8, got '" + v + "'");
+            o.msaa = uint32_t(std::stoul(v));
+        };
         table.withValue["--cull"] = [&](const std::string& v) {
             if (v != "on" && v != "off") throw UserError("--cull: expected on or off, got '" + v + "'");
             o.frustumCulling = v == "on";
@@ -499,6 +503,9 @@ render options:
                         at most PIXELS on screen; 0: full detail [1]
   --lod on|off          --lod-error 1 or 0
   --cull on|off         leave out draws outside the view frustum [on]
+  --msaa 1|2|4|8        samples per pixel of the scene's draw targets, resolved into the HDR image;
+                        clamped to what the device supports, with a warning [4 on GPUs, 1 on CPU
+                        devices such as lavapipe: `candela info` says which]
   --specular-aa on|off  widen the roughness by the normal's change across a pixel and by what a
                         normal map's mips average away (less shimmering highlights) [off]
   --variant NAME        draw the file's KHR_materials_variants variant NAME (an unknown name is an

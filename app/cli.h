@@ -42,6 +42,7 @@ struct RenderOptions {
     float lodErrorPixels = 1.0f;      // --lod-error PIXELS (0, or --lod off: full detail)
     bool frustumCulling = true;       // --cull on|off
     bool specularAa = false;          // --specular-aa on|off
+    std::optional<uint32_t> msaa;     // --msaa 1|2|4|8 (unset: the device default)
     bool explain = false;             // --explain
     uint32_t frames = 20;             // bench: --frames N; view: frames to render before exiting (0: until closed)
     std::string screenshot;           // view: --screenshot FILE (saves the last of --frames N)

@@ -76,6 +76,7 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
     settings.sceneLights = options.sceneLights;
     settings.drawSelection = {.frustumCulling = options.frustumCulling, .lodErrorPixels = options.lodErrorPixels};
     settings.shadingOptions.specularAntiAliasing = options.specularAa;
+    settings.msaa = options.msaa;
     if (options.camera) settings.camera.gltfCamera = *options.camera;
     if (options.cameraOrbit) settings.camera.orbit = glm::vec3((*options.cameraOrbit)[0], (*options.cameraOrbit)[1], (*options.cameraOrbit)[2]);
     if (options.target) settings.camera.target = glm::vec3((*options.target)[0], (*options.target)[1], (*options.target)[2]);
@@ -194,6 +195,8 @@ int runInfo(const InfoOptions& options) {
                                              std::to_string(r.timestampPeriodNs) + " ns")
                                                 .c_str()
                                           : "not supported");
+    const vk::MsaaChoice msaa = vk::chooseMsaa(context.properties().deviceType, context.attachmentSampleCounts(), std::nullopt);
+    std::printf("  MSAA: %s; supported: %s\n", msaa.reason.c_str(), vk::sampleCountList(context.attachmentSampleCounts()).c_str());
     std::printf("  features enabled:");
     for (const std::string& f : r.enabledFeatures) std::printf(" %s", f.c_str());
     std::printf("\n  layers enabled:");

@@ -455,8 +455,18 @@ void Renderer::buildPatternGraph(Frame& frame, const RenderSettings& settings) {
     frame.ldr = mEncode.add(graph, frame.hdr, ldr);
 }
 
+vk::MsaaChoice Renderer::msaa(std::optional<uint32_t> requested) const {
+    return vk::chooseMsaa(mContext.properties().deviceType, mContext.attachmentSampleCounts(), requested);
+}
+
 void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std::optional<TextureId> target) {
     RenderGraph& graph = *frame.graph;
+    const vk::MsaaChoice msaa = this->msaa(settings.msaa);
+    mSamples = msaa.samples;
+    if (msaa.clamped && mMsaaWarnedFor != settings.msaa) {
+        log::warn("--msaa: " + msaa.reason);
+        mMsaaWarnedFor = settings.msaa;
+    }
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
     const scene::ScenePose* pose = settings.pose ? settings.pose : mRestPose.get();
     const scene::ViewSetup view = resolveView(*settings.scene, settings.camera, aspect, pose);
@@ -504,26 +514,24 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
     mParameters.beginFrame();
     applySceneParameters();
     const passes::ForwardPass::Output forward =
-        mForward.add(graph, settings.width, settings.height, view, settings.shading, ibl ? &*ibl : nullptr, &mParameters,
+        mForward.add(graph, {settings.width, settings.height, mSamples}, view, settings.shading, ibl ? &*ibl : nullptr, &mParameters,
                      settings.debugView, posed ? &*posed : nullptr, deformed ? &*deformed : nullptr,
                      layerMaps ? &*layerMaps : nullptr, settings.drawSelection,
                      settings.shadingOptions);
     frame.debugView = settings.debugView;
-    frame.hdr = forward.hdr;
+    passes::DrawTarget drawn = forward;
     frame.skybox = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;
     if (frame.skybox) {
         if (!mSkybox) mSkybox = std::make_unique<passes::SkyboxPass>(mContext);
-        frame.hdr = mSkybox->add(graph, view,
-                                 {.hdr = forward.hdr, .depth = forward.depth, .specular = ibl->maps.specular, .params = ibl->params},
-                                 &mParameters);
+        drawn = mSkybox->add(graph, view, {.target = drawn, .specular = ibl->maps.specular, .params = ibl->params}, &mParameters);
     }
     // Transmissive draws over the opaque image (sky included), which they see through.
     frame.transmission = mForward.hasTransmissiveDraws();
     if (frame.transmission) {
         if (!mTransmissionBackground) mTransmissionBackground = std::make_unique<passes::TransmissionBackgroundPass>(mContext);
-        frame.hdr = mForward.addTransmissive(graph, {.hdr = frame.hdr, .depth = forward.depth},
-                                             mTransmissionBackground->add(graph, frame.hdr));
+        drawn = mForward.addTransmissive(graph, drawn, mTransmissionBackground->add(graph, drawn.hdr));
     }
+    frame.hdr = drawn.hdr;
     // UNORM target: the tonemap shader encodes sRGB itself, which also lets it dither.
     const TextureId ldr = target ? *target
                                  : graph.createTexture("ldr", {.width = settings.width,
@@ -546,6 +554,11 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
                                  " punctual lights (--scene-lights off)");
     if (mUploadedDefaultLights)
         frame.notes.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
+    frame.notes.push_back("msaa: " + msaa.reason +
+                          (msaa.samples == 1 ? std::string()
+                           : mContext.alphaToOne()
+                               ? "; alpha-masked materials use alpha to coverage"
+                               : "; alpha-masked materials keep the alpha test (the device has no alphaToOne)"));
     for (const std::string& line : mForward.explanation()) frame.notes.push_back(line);
     for (const std::string& line : mIbl->explanation()) frame.notes.push_back(line);
     if (frame.sheenLut)

@@ -27,6 +27,7 @@
 #include "shader/parameter_registry.h"
 #include "vk/buffer.h"
 #include "vk/frame.h"
+#include "vk/msaa.h"
 
 #include <chrono>
 #include <filesystem>
@@ -78,6 +79,9 @@ struct RenderSettings {
     passes::DrawSelection drawSelection;
     // Specular anti-aliasing (--specular-aa).
     passes::ShadingOptions shadingOptions;
+    // MSAA sample count of the draw targets (--msaa: 1, 2, 4 or 8); nullopt: the device default
+    // (vk::chooseMsaa). Clamped to what the device supports, with a warning.
+    std::optional<uint32_t> msaa;
     // Image-based lighting: the environment (null: none; read during the call only, hashed when the
     // pointer or the quality changes), what to precompute and how to look it up.
     const scene::Environment* environment = nullptr;
@@ -195,6 +199,8 @@ public:
     // What the forward passes of the last frame drew (scene vs submitted draws and triangles,
     // state changes; the latter once the frame is recorded).
     const passes::DrawStats& drawStats() const { return mForward.drawStats(); }
+    // The sample count `requested` (RenderSettings::msaa) gives on this device, and why.
+    vk::MsaaChoice msaa(std::optional<uint32_t> requested) const;
     // The last IBL precompute that completed.
     const PrecomputeTime& lastPrecompute() const { return mLastPrecompute; }
     // The GPU time of the pass named `pass` in that frame; negative if it did not run there.
@@ -315,6 +321,8 @@ private:
     graph::GraphTimings mCompletedTimings;  // of the latest completed frame, by declared pass
     PrecomputeTime mLastPrecompute;
     Frame mLast;  // the last frame submitted
+    uint32_t mSamples = 1;                   // of the frame being built
+    std::optional<uint32_t> mMsaaWarnedFor;  // the clamped request last warned of (once per request)
 };
 
 }  // namespace candela

@@ -35,6 +35,9 @@ layout(constant_id = 10) const uint kLayers = 0u;
 // Specular anti-aliasing: roughness widened by the normal's change across the pixel and by what the
 // normal map's mip averaged away (specularAntiAliasedRoughness, shared/brdf.h).
 layout(constant_id = 11) const bool kSpecularAa = false;
+// Alpha to coverage (MSAA, alpha-masked materials): the pipeline turns the output alpha into the
+// sample coverage (and stores alpha 1: alphaToOne) instead of the alpha test's all-or-nothing.
+layout(constant_id = 12) const bool kAlphaToCoverage = false;
 
 layout(std430, set = 0, binding = 0) readonly buffer Lights {
     LightData lights[];
@@ -516,11 +519,18 @@ vec3 termTowardFirstLight(vec3 n, vec3 v, vec3 baseColor, float metallic, float 
 void main() {
     MaterialData m = materials[draws[push.counts.y].material.x];
     vec4 baseColor = m.baseColorFactor * inColor * sampleSlot(baseColorTexture, CANDELA_TEX_BASE_COLOR);
-    if (kAlphaMask && baseColor.a < m.alphaCutoff) discard;
+    // The fraction of the pixel inside the cutoff's edge: alpha sharpened so that it crosses 0 → 1
+    // over one pixel around the cutoff (Castaño 2010; Golus 2017), which alpha to coverage turns
+    // into that many samples. Without MSAA the alpha test.
+    float maskCoverage = 1.0f;
+    if (kAlphaMask && kAlphaToCoverage) {
+        maskCoverage = clamp((baseColor.a - m.alphaCutoff) / max(fwidth(baseColor.a), 1e-4f) + 0.5f, 0.0f, 1.0f);
+        if (maskCoverage <= 0.0f) discard;
+    } else if (kAlphaMask && baseColor.a < m.alphaCutoff) discard;
     float alpha = m.alphaMode == float(CANDELA_ALPHA_BLEND) ? baseColor.a : 1.0f;
 
     if (kUnlit && kDebugView == CANDELA_DEBUG_NONE) {
-        outColor = vec4(baseColor.rgb * alpha, alpha);
+        outColor = vec4(baseColor.rgb * alpha, alpha * maskCoverage);
         return;
     }
 
@@ -653,7 +663,7 @@ void main() {
 #endif
         }
         else value = asData(termTowardFirstLight(n, v, baseColor.rgb, metallic, roughness));
-        outColor = vec4(min(value, vec3(60000.0f)) * alpha, alpha);
+        outColor = vec4(min(value, vec3(60000.0f)) * alpha, alpha * maskCoverage);
         return;
     }
 
@@ -668,5 +678,5 @@ void main() {
 #endif
     // Radiance can exceed half-float range with extreme lights: keep it finite.
     color = min(color, vec3(60000.0f));
-    outColor = vec4(color * alpha, coverage);
+    outColor = vec4(color * alpha, coverage * maskCoverage);
 }

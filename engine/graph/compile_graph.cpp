@@ -26,6 +26,7 @@ CompiledGraph compileGraph(const GraphDecl& decl, const CompileOptions& options)
     const GraphAnalysis analysis = detail::validateGraph(decl, compiled);
     detail::cullPasses(decl, analysis, compiled);
     detail::orderPasses(analysis, compiled);
+    detail::findUnreadWrites(decl, compiled);
     detail::computeLifetimes(decl, compiled);
     detail::planAliasing(decl, options, compiled);
     detail::planBarriers(decl, compiled);
@@ -42,6 +43,40 @@ void addEdge(std::vector<PassEdge>& edges, uint32_t self, PassEdge edge) {
     const bool known = std::any_of(edges.begin(), edges.end(),
                                    [&](const PassEdge& e) { return e.pass == edge.pass; });
     if (!known) edges.push_back(edge);
+}
+
+bool isAttachment(Usage usage) {
+    return usage == Usage::ColorAttachment || usage == Usage::DepthAttachment || usage == Usage::DepthRead;
+}
+
+// Multisampled images are attachments only; a pass's attachments share one sample count; a
+// resolve names a multisampled colour attachment the pass writes. Precondition: indices checked.
+void checkMultisampling(const GraphDecl& decl, const PassDecl& pass) {
+    uint32_t samples = 0;
+    for (const auto* list : {&pass.reads, &pass.writes})
+        for (const AccessDecl& access : *list) {
+            const ResourceDecl& resource = decl.resources[access.resource];
+            const uint32_t count = resource.texture.samples;
+            if (resource.kind != ResourceKind::Texture) continue;
+            if (count > 1 && !isAttachment(access.usage))
+                throw GraphError("pass " + quoted(pass.name) + " uses multisampled " + quoted(resource.name) + " as " +
+                                 usageName(access.usage) + ": a multisampled image is an attachment only (resolve it to read it)");
+            if (!isAttachment(access.usage)) continue;
+            if (samples != 0 && count != samples)
+                throw GraphError("pass " + quoted(pass.name) + " draws into attachments of " + std::to_string(samples) +
+                                 " and " + std::to_string(count) + " samples (" + quoted(resource.name) + ")");
+            samples = count;
+        }
+    for (const AccessDecl& access : pass.writes) {
+        if (access.usage != Usage::ResolveAttachment) continue;
+        const bool drawn = std::any_of(pass.writes.begin(), pass.writes.end(), [&](const AccessDecl& a) {
+            return a.usage == Usage::ColorAttachment && a.resource == access.resolveSource &&
+                   decl.resources[a.resource].texture.samples > 1;
+        });
+        if (!drawn)
+            throw GraphError("pass " + quoted(pass.name) + " resolves into " + quoted(decl.resources[access.resource].name) +
+                             " from no multisampled colour attachment it writes");
+    }
 }
 
 // Index ranges, usage direction and version 0 writes: the checks that need no producer table.
@@ -68,6 +103,7 @@ void checkAccesses(const GraphDecl& decl) {
                 throw GraphError("pass " + quoted(pass.name) + " writes " + quoted(resource) +
                                  " (version 0): a write produces a version > 0");
         }
+        checkMultisampling(decl, pass);
     }
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Internal to candela_graph: the compile steps run by compileGraph() (compiled_graph.h), in order
-// validate → cull → order → lifetimes → aliasing → barriers, and the dependency analysis they share.
+// validate → cull → order → unread writes → lifetimes → aliasing → barriers, and the dependency analysis they share.
 // Each step is a free function that fills its part of CompiledGraph and appends its name to
 // CompiledGraph::steps. Not installed and not used outside engine/graph.
 
@@ -45,6 +45,9 @@ void cullPasses(const GraphDecl& decl, const GraphAnalysis& analysis, CompiledGr
 
 // Step "order" (order_passes.cpp): fills compiled.order with the surviving passes.
 void orderPasses(const GraphAnalysis& analysis, CompiledGraph& compiled);
+
+// Step "unread writes" (find_unread_writes.cpp): fills PassInfo::unreadWrites from compiled.order.
+void findUnreadWrites(const GraphDecl& decl, CompiledGraph& compiled);
 
 // Step "lifetimes" (compile_graph.cpp): fills compiled.lifetimes from compiled.order.
 void computeLifetimes(const GraphDecl& decl, CompiledGraph& compiled);

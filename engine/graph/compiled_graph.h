@@ -28,6 +28,10 @@ struct PassInfo {
     bool bypassed = false;
     // Resources this pass draws over whose producer does not run: cleared (AccessDecl::clearIfLost).
     std::vector<uint32_t> clearedLostInputs;
+    // Resources this pass writes whose result no later running pass reads and which are no output
+    // of the graph: an attachment among them is not stored (store op don't-care) and a resolve
+    // into one is not done (a later pass resolves over it). Running passes only.
+    std::vector<uint32_t> unreadWrites;
 };
 
 // Memory a resource needs, as the device reports it (or a size model in tests).
@@ -39,7 +43,7 @@ struct MemoryRequirement {
 // Called with the resource's index in GraphDecl::resources and its declaration.
 using MemoryRequirementsFn = std::function<MemoryRequirement(uint32_t resource, const ResourceDecl&)>;
 
-// Default size model: texel size × texels over all mips and layers, 256-byte alignment (tests,
+// Default size model: texel size × texels over all mips, layers and samples, 256-byte alignment (tests,
 // and anywhere no device is at hand).
 MemoryRequirement estimateMemoryRequirement(const ResourceDecl& resource);
 
@@ -93,7 +97,7 @@ struct CompiledGraph {
     std::vector<std::string> steps;              // names of the compile steps, in the order they ran
 };
 
-// Runs the compile steps: validate → cull → order → lifetimes → aliasing → barriers.
+// Runs the compile steps: validate → cull → order → unread writes → lifetimes → aliasing → barriers.
 // Throws GraphError (naming the pass and the resource) on cycles, reads of versions nobody
 // writes, two passes writing the same version, and invalid handles. Makes no Vulkan calls
 // (memoryRequirements is the caller's; the executor passes one that asks the device).

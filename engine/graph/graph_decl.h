@@ -40,6 +40,9 @@ struct AccessDecl {
     // Preserving attachment writes only: when the pass that should produce the consumed version
     // does not run, clear to this value instead of culling this pass (overlays such as the UI).
     std::optional<VkClearValue> clearIfLost;
+    // ResolveAttachment writes only: the multisampled colour attachment of the same pass whose
+    // samples are averaged into this image when the pass ends rendering.
+    uint32_t resolveSource = kInvalidIndex;
 };
 
 struct PassDecl {

@@ -98,6 +98,11 @@ std::optional<VkClearValue> PassContext::lostContentsClear(TextureId written) co
     return std::nullopt;
 }
 
+bool PassContext::resultRead(uint32_t resource) const {
+    const std::vector<uint32_t>& unread = mGraph->compiled().passes[mPassIndex].unreadWrites;
+    return std::find(unread.begin(), unread.end(), resource) == unread.end();
+}
+
 void PassContext::beginRendering() const {
     std::vector<VkRenderingAttachmentInfo> colors;
     VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
@@ -106,11 +111,15 @@ void PassContext::beginRendering() const {
     const auto attachment = [&](const AccessDecl& a, VkImageLayout layout, bool write) {
         const TextureId id{a.resource, a.version};
         if (extent.width == 0) extent = this->extent(id);
+        // A result no later pass reads is not stored (a multisampled attachment then never leaves
+        // tile memory on GPUs that have it).
         VkRenderingAttachmentInfo info{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
                                        .imageView = view(id),
                                        .imageLayout = layout,
                                        .loadOp = VK_ATTACHMENT_LOAD_OP_LOAD,
-                                       .storeOp = write ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_NONE};
+                                       .storeOp = !write                 ? VK_ATTACHMENT_STORE_OP_NONE
+                                                  : resultRead(a.resource) ? VK_ATTACHMENT_STORE_OP_STORE
+                                                                           : VK_ATTACHMENT_STORE_OP_DONT_CARE};
         if (a.clear) {
             info.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
             info.clearValue = *a.clear;
@@ -127,6 +136,20 @@ void PassContext::beginRendering() const {
         if (a.usage == Usage::DepthAttachment) {
             depth = attachment(a, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
             hasDepth = true;
+        }
+    }
+    // Resolves into the single-sample images, skipped where a later pass resolves over the result.
+    for (const AccessDecl& a : mPass->writes) {
+        if (a.usage != Usage::ResolveAttachment || !resultRead(a.resource)) continue;
+        for (size_t c = 0, i = 0; i < mPass->writes.size(); ++i) {
+            const AccessDecl& color = mPass->writes[i];
+            if (color.usage != Usage::ColorAttachment) continue;
+            if (color.resource == a.resolveSource) {
+                colors[c].resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+                colors[c].resolveImageView = view({a.resource, a.version});
+                colors[c].resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+            }
+            ++c;
         }
     }
     for (const AccessDecl& a : mPass->reads)

@@ -83,12 +83,15 @@ public:
     std::optional<VkClearValue> lostContentsClear(TextureId written) const;
 
     // Begins dynamic rendering on the pass's declared colour/depth attachments (load op from the
-    // declaration: clear, load, or don't-care for discarding writes) and sets viewport and scissor
-    // to the first attachment's size.
+    // declaration: clear, load, or don't-care for discarding writes; store op: store, or don't-care
+    // where no later pass reads the result) with their resolves (PassBuilder::resolve, unless a
+    // later pass resolves over them), and sets viewport and scissor to the first attachment's size.
     void beginRendering() const;
     void endRendering() const;
 
 private:
+    // Whether a later pass (or the graph's caller) reads what this pass writes into `resource`.
+    bool resultRead(uint32_t resource) const;
     // The declared access to this handle; throws GraphError if there is none.
     const AccessDecl& declared(ResourceKind kind, uint32_t index, uint32_t version) const;
 

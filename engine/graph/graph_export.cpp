@@ -4,6 +4,7 @@
 
 #include "graph/compile_steps.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <vulkan/vulkan.hpp>
 
@@ -51,12 +52,16 @@ bool timed(const GraphTimings* timings, uint32_t pass) {
     return timings != nullptr && pass < timings->gpuMs.size() && timings->gpuMs[pass] >= 0.0;
 }
 
-Json accessesJson(const GraphDecl& decl, const std::vector<AccessDecl>& accesses) {
+// `unread`: the pass's writes whose result nothing reads (PassInfo::unreadWrites; null for reads).
+Json accessesJson(const GraphDecl& decl, const std::vector<AccessDecl>& accesses, const std::vector<uint32_t>* unread) {
     Json list = Json::array();
     for (const AccessDecl& access : accesses) {
-        list.push_back({{"resource", decl.resources[access.resource].name},
-                        {"version", access.version},
-                        {"usage", usageName(access.usage)}});
+        Json entry = {{"resource", decl.resources[access.resource].name},
+                      {"version", access.version},
+                      {"usage", usageName(access.usage)}};
+        if (access.usage == Usage::ResolveAttachment) entry["resolveFrom"] = decl.resources[access.resolveSource].name;
+        if (unread) entry["read"] = std::find(unread->begin(), unread->end(), access.resource) == unread->end();
+        list.push_back(std::move(entry));
     }
     return list;
 }
@@ -90,6 +95,7 @@ std::string resourceLabel(const ResourceDecl& resource, const Lifetime& lifetime
     if (resource.kind == ResourceKind::Texture) {
         label += std::to_string(resource.texture.width) + "x" + std::to_string(resource.texture.height) +
                  " " + formatName(resource.texture.format);
+        if (resource.texture.samples > 1) label += " x" + std::to_string(resource.texture.samples) + " samples";
     } else {
         label += std::to_string(resource.buffer.size) + " bytes";
     }
@@ -182,8 +188,8 @@ std::string exportJson(const GraphDecl& decl, const CompiledGraph& compiled, con
                       {"reason", cullReasonName(info.cullReason)},
                       {"detail", info.cullDetail}};
         if (timed(timings, p)) entry["gpuMs"] = timings->gpuMs[p];
-        entry["reads"] = accessesJson(decl, pass.reads);
-        entry["writes"] = accessesJson(decl, pass.writes);
+        entry["reads"] = accessesJson(decl, pass.reads, nullptr);
+        entry["writes"] = accessesJson(decl, pass.writes, &info.unreadWrites);
         passes.push_back(std::move(entry));
     }
     root["passes"] = std::move(passes);
@@ -206,6 +212,7 @@ std::string exportJson(const GraphDecl& decl, const CompiledGraph& compiled, con
              {"width", texture ? Json(resource.texture.width) : Json(nullptr)},
              {"height", texture ? Json(resource.texture.height) : Json(nullptr)},
              {"format", texture ? Json(formatName(resource.texture.format)) : Json(nullptr)},
+             {"samples", texture ? Json(resource.texture.samples) : Json(nullptr)},
              {"size", placed ? placement.size : estimateMemoryRequirement(resource).size},
              {"first", optionalIndex(compiled.lifetimes[r].first)},
              {"last", optionalIndex(compiled.lifetimes[r].last)},

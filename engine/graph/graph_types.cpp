@@ -29,6 +29,7 @@ const char* usageName(Usage usage) {
     case Usage::ColorAttachment: return "ColorAttachment";
     case Usage::DepthAttachment: return "DepthAttachment";
     case Usage::DepthRead: return "DepthRead";
+    case Usage::ResolveAttachment: return "ResolveAttachment";
     case Usage::TransferSrc: return "TransferSrc";
     case Usage::TransferDst: return "TransferDst";
     case Usage::Uniform: return "Uniform";
@@ -45,6 +46,7 @@ bool usageWrites(Usage usage) {
     case Usage::StorageReadWrite:
     case Usage::ColorAttachment:
     case Usage::DepthAttachment:
+    case Usage::ResolveAttachment:
     case Usage::TransferDst:
         return true;
     default:
@@ -84,6 +86,12 @@ AccessSync accessSync(Usage usage, PassType passType, ResourceKind kind,
                 VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
                     VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                 VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL};
+        break;
+    case Usage::ResolveAttachment:
+        // Resolves run in the colour-attachment-output stage as attachment writes, for colour and
+        // depth alike (Vulkan spec, "Render Pass Load/Store/Resolve Operations").
+        sync = {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
         break;
     case Usage::DepthRead:
         sync = {kDepthTests, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT,

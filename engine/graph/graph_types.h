@@ -19,6 +19,7 @@ enum class ResourceKind : uint8_t { Texture, Buffer };
 enum class PassType : uint8_t { Graphics, Compute, Transfer };
 
 // Description of a texture. A cube map has cube = true and arrayLayers a multiple of 6.
+// samples > 1: a multisampled colour or depth attachment (one mip, one layer, 2D).
 struct TextureDesc {
     uint32_t width = 1;
     uint32_t height = 1;
@@ -27,6 +28,7 @@ struct TextureDesc {
     uint32_t arrayLayers = 1;
     VkFormat format = VK_FORMAT_UNDEFINED;
     bool cube = false;
+    uint32_t samples = 1;
 };
 
 struct BufferDesc {
@@ -59,6 +61,7 @@ enum class Usage : uint8_t {
     ColorAttachment,   // colour attachment (write; reads too when the previous contents are loaded)
     DepthAttachment,   // depth attachment with depth writes
     DepthRead,         // depth attachment, test only (read-only layout)
+    ResolveAttachment, // single-sample image a multisampled colour attachment is resolved into (write)
     TransferSrc,       // copy/blit source
     TransferDst,       // copy/blit/clear destination
     Uniform,           // uniform buffer

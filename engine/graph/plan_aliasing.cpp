@@ -34,7 +34,7 @@ MemoryRequirement estimateMemoryRequirement(const ResourceDecl& resource) {
         texels += VkDeviceSize{std::max(desc.width >> mip, 1u)} * std::max(desc.height >> mip, 1u) *
                   std::max(desc.depth >> mip, 1u);
     }
-    requirement.size = alignUp(texels * std::max(desc.arrayLayers, 1u) *
+    requirement.size = alignUp(texels * std::max(desc.arrayLayers, 1u) * std::max(desc.samples, 1u) *
                                    (texelSize != 0 ? texelSize : kFallbackTexelSize),
                                kDefaultAlignment);
     return requirement;

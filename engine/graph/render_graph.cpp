@@ -137,6 +137,30 @@ TextureId PassBuilder::writeDepth(TextureId texture, std::optional<float> clearD
     return {texture.index, access.version};
 }
 
+TextureId PassBuilder::resolve(TextureId multisampled, TextureId target) {
+    const PassDecl& pass = mGraph.mDecl.passes[mPass];
+    const std::string what = "pass " + quoted(pass.name) + " resolves";
+    const ResourceDecl& source = checkHandle(mGraph.mDecl, what, ResourceKind::Texture, multisampled.index, multisampled.version);
+    const ResourceDecl& into = checkHandle(mGraph.mDecl, what + " into", ResourceKind::Texture, target.index, target.version);
+    const auto colorWrite = std::find_if(pass.writes.begin(), pass.writes.end(), [&](const AccessDecl& a) {
+        return a.resource == multisampled.index && a.version == multisampled.version && a.usage == Usage::ColorAttachment;
+    });
+    if (colorWrite == pass.writes.end())
+        throw GraphError(what + " " + quoted(source.name) + ", which is not a colour attachment it writes (writeColor first)");
+    if (source.texture.samples < 2)
+        throw GraphError(what + " " + quoted(source.name) + ", which has 1 sample (nothing to resolve)");
+    if (into.texture.samples != 1 || into.texture.width != source.texture.width ||
+        into.texture.height != source.texture.height || into.texture.format != source.texture.format)
+        throw GraphError(what + " " + quoted(source.name) + " into " + quoted(into.name) +
+                         ", which is not a single-sample image of its size and format");
+    const WriteMode mode = colorWrite->mode;
+    const uint32_t sourceIndex = multisampled.index;
+    AccessDecl& access =
+        mGraph.addWrite(mPass, ResourceKind::Texture, target.index, target.version, Usage::ResolveAttachment, mode, 0);
+    access.resolveSource = sourceIndex;
+    return {target.index, access.version};
+}
+
 void PassBuilder::sideEffect() { mGraph.mDecl.passes[mPass].sideEffect = true; }
 
 TextureId RenderGraph::importTexture(std::string name, const TextureDesc& desc, const ResourceState& initial,

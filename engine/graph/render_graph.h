@@ -71,6 +71,14 @@ public:
     // the UI, that must stay visible whatever else is switched off.
     TextureId drawOver(TextureId texture, VkClearColorValue fallback);
     TextureId writeDepth(TextureId texture, std::optional<float> clearDepth);
+    // Resolves the multisampled colour attachment `multisampled` (the version this pass's
+    // writeColor returned) into the single-sample `target` of the same size and format when the
+    // pass ends rendering (a render-pass resolve: the average of the samples). Returns target's
+    // new version. The resolve replaces all of target; it counts as preserving when the colour
+    // write does (a pass drawing over an image resolves over its earlier resolve), so switching
+    // such a pass off bypasses it. The graph skips a resolve whose result no later pass reads
+    // (PassInfo::unreadWrites). Throws GraphError for any other pairing.
+    TextureId resolve(TextureId multisampled, TextureId target);
 
     // Keeps the pass alive even if no output depends on it.
     void sideEffect();

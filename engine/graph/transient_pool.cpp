@@ -28,7 +28,8 @@ vk::ImageDesc imageDescOf(const GraphDecl& decl, uint32_t resource) {
             .format = r.texture.format,
             .usage = imageUsageOf(decl, resource),
             .cube = r.texture.cube,
-            .name = r.name.c_str()};
+            .name = r.name.c_str(),
+            .samples = r.texture.samples};
 }
 
 }  // namespace
@@ -41,7 +42,8 @@ VkImageUsageFlags imageUsageOf(const GraphDecl& decl, uint32_t resource) {
             case Usage::StorageRead:
             case Usage::StorageWrite:
             case Usage::StorageReadWrite: flags |= VK_IMAGE_USAGE_STORAGE_BIT; break;
-            case Usage::ColorAttachment: flags |= VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT; break;
+            case Usage::ColorAttachment:
+            case Usage::ResolveAttachment: flags |= VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT; break;
             case Usage::DepthAttachment:
             case Usage::DepthRead: flags |= VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT; break;
             case Usage::TransferSrc: flags |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT; break;
@@ -49,6 +51,11 @@ VkImageUsageFlags imageUsageOf(const GraphDecl& decl, uint32_t resource) {
             default: break;
         }
     });
+    // Used only as an attachment within render passes: its memory may be lazily allocated (on
+    // tile-based GPUs a multisampled attachment that is never stored then takes no memory at all).
+    constexpr VkImageUsageFlags kAttachments =
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    if (flags != 0 && (flags & ~kAttachments) == 0) flags |= VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
     return flags;
 }
 
@@ -88,15 +95,21 @@ MemoryRequirementsFn deviceMemoryRequirements(vk::Context& context, const GraphD
                                                          .pCreateInfo = &info};
             vkGetDeviceBufferMemoryRequirements(context.device(), &query, &requirements);
         }
-        // Transients always live in device-local memory: restrict the types accordingly.
-        uint32_t typeBits = requirements.memoryRequirements.memoryTypeBits;
+        // Transients always live in device-local memory: restrict the types accordingly; transient
+        // attachments to lazily allocated memory where the device has it (tile-based GPUs).
+        const uint32_t typeBits = requirements.memoryRequirements.memoryTypeBits;
         const VkPhysicalDeviceMemoryProperties& props = context.allocator().properties();
-        uint32_t deviceLocal = 0;
-        for (uint32_t i = 0; i < props.memoryTypeCount; ++i)
-            if ((typeBits & (1u << i)) && (props.memoryTypes[i].propertyFlags & VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT))
-                deviceLocal |= 1u << i;
+        const auto typesWith = [&](VkMemoryPropertyFlags wanted) {
+            uint32_t bits = 0;
+            for (uint32_t i = 0; i < props.memoryTypeCount; ++i)
+                if ((typeBits & (1u << i)) && (props.memoryTypes[i].propertyFlags & wanted) == wanted) bits |= 1u << i;
+            return bits;
+        };
+        uint32_t types = typesWith(VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        if (r.kind == ResourceKind::Texture && (imageUsageOf(decl, resource) & VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT))
+            if (const uint32_t lazy = typesWith(VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT)) types = lazy;
         return MemoryRequirement{requirements.memoryRequirements.size, requirements.memoryRequirements.alignment,
-                                 deviceLocal ? deviceLocal : typeBits};
+                                 types ? types : typeBits};
     };
 }
 
@@ -108,7 +121,7 @@ void TransientPool::realize(const GraphDecl& decl, const CompiledGraph& compiled
         const ResourceDecl& d = decl.resources[r];
         signature << r << ':' << static_cast<int>(d.kind) << ':' << d.texture.width << 'x' << d.texture.height << 'x'
                   << d.texture.depth << ':' << d.texture.mipLevels << ':' << d.texture.arrayLayers << ':'
-                  << d.texture.format << ':' << d.texture.cube << ':' << d.buffer.size << ':'
+                  << d.texture.format << ':' << d.texture.cube << ':' << d.texture.samples << ':' << d.buffer.size << ':'
                   << (d.kind == ResourceKind::Texture ? imageUsageOf(decl, r) : bufferUsageOf(decl, r)) << '@'
                   << p.heap << '+' << p.offset << ';';
     }

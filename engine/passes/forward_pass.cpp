@@ -74,6 +74,8 @@ std::string ForwardPass::Variant::name() const {
                (referenceSamples ? "-reference" + std::to_string(referenceSamples) : "");
     out += plusLayerNames(layers);
     if (specularAa && !unlit) out += "+specular-aa";
+    if (samples > 1) out += "+msaa" + std::to_string(samples);
+    if (alphaToCoverage) out += "+alpha-to-coverage";
     if (debugView != DebugView::None) out += std::string("+debug-") + debugViewName(debugView);
     return out;
 }
@@ -95,6 +97,8 @@ vk::GraphicsPipelineDesc ForwardPass::desc(const Variant& v) {
         .depthWrite = !v.blend,
         .depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL,
         .blend = v.blend ? vk::BlendMode::Premultiplied : vk::BlendMode::None,
+        .samples = v.samples,
+        .alphaToCoverage = v.alphaToCoverage,
         .dynamicCullMode = true,
         .specialization = {v.normalMap, v.lights, v.unlit, v.alphaMask, static_cast<uint32_t>(v.model), v.ibl,
                            v.irradianceSh, v.multiscatter, v.referenceSamples, static_cast<uint32_t>(v.debugView)},
@@ -108,11 +112,12 @@ vk::GraphicsPipelineDesc ForwardPass::desc(const Variant& v) {
     // Only the layered program has kLayers (constant 10; 0 for the core program, which ignores it).
     out.specialization.push_back(v.layers);
     out.specialization.push_back(v.specularAa);
+    out.specialization.push_back(v.alphaToCoverage);
     return out;
 }
 
 ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl,
-                                            DebugView debugView, const ShadingOptions& shading) const {
+                                            DebugView debugView, const ShadingOptions& shading, uint32_t samples) const {
     const scene::Material& m = mScene->scene().materials[draw.material];
     Variant v;
     v.unlit = m.unlit;
@@ -128,6 +133,8 @@ ForwardPass::Variant ForwardPass::variantOf(const scene::Draw& draw, ShadingMode
     v.debugView = debugView;
     v.layers = layered(m) ? m.layers() : 0;
     v.specularAa = !m.unlit && shading.specularAntiAliasing;
+    v.samples = samples;
+    v.alphaToCoverage = v.alphaMask && samples > 1 && mContext.alphaToOne();
     return v;
 }
 
@@ -179,7 +186,7 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene) {
 // Whether a draw of material `m` is drawn after the opaque image exists (it reads what lies behind).
 static bool transmissive(const scene::Material& m) { return layered(m) && (m.layers() & scene::kLayerTransmission); }
 
-ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
+ForwardPass::Output ForwardPass::add(RenderGraph& graph, const DrawTargetSize& size, const scene::ViewSetup& view,
                                      ShadingModel model, const Ibl* ibl, shader::ParameterRegistry* parameters,
                                      DebugView debugView, const PosedDraws* posed, const DeformedVertices* deformed,
                                      const LayerMaps* layerMaps, const DrawSelection& selection,
@@ -205,11 +212,11 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
             ++mStats.culledDraws;
             continue;
         }
-        const scene::LodLevel level = levelOf(scene, draw, view, height, selection.lodErrorPixels);
+        const scene::LodLevel level = levelOf(scene, draw, view, size.height, selection.lodErrorPixels);
         mStats.coarserDraws += level.firstIndex != draw.firstIndex;
         ++mStats.submittedDraws;
         mStats.submittedTriangles += uint64_t(level.indexCount / 3) * instances;
-        const Variant v = variantOf(draw, model, ibl, debugView, shading);
+        const Variant v = variantOf(draw, model, ibl, debugView, shading, size.samples);
         ++variantCounts[v.name()];
         const glm::vec3 centre = 0.5f * (draw.bounds.min + draw.bounds.max);
         // Debug views show data, not what lies behind: transmissive draws are then drawn with the rest.
@@ -284,29 +291,25 @@ ForwardPass::Output ForwardPass::add(RenderGraph& graph, uint32_t width, uint32_
                          .posedDraws = posed ? posed->data : BufferId{},
                          .posedLights = posed ? posed->lights : BufferId{},
                          .deformed = deformed ? deformed->vertices : BufferId{}};
-    const DrawTargets& targets = addDrawPass(graph, "forward", std::move(items), [&](PassBuilder& builder) {
-        const TextureId hdr = builder.createTexture("hdr", {.width = width, .height = height, .format = kHdrFormat});
-        const TextureId depth = builder.createTexture("depth", {.width = width, .height = height, .format = kDepthFormat});
-        return DrawTargets{builder.writeColor(hdr, VkClearColorValue{{0.0f, 0.0f, 0.0f, 0.0f}}),
-                           builder.writeDepth(depth, 0.0f)};  // reverse-Z: far = 0
+    return addDrawPass(graph, "forward", std::move(items), [&](PassBuilder& builder) {
+        return drawInto(builder, createDrawTarget(builder, size), true, DepthUse::Clear);
     });
-    return {targets.hdr, targets.depth};
 }
 
-TextureId ForwardPass::addTransmissive(RenderGraph& graph, const Output& opaque, TextureId background) {
+ForwardPass::Output ForwardPass::addTransmissive(RenderGraph& graph, const Output& opaque, TextureId background) {
     if (mBehind.empty()) throw std::logic_error("ForwardPass::addTransmissive: the last add() has no transmissive draw");
     mFrame.layerMaps.transmission = background;
-    const DrawTargets& targets = addDrawPass(graph, "forward_transmission", std::move(mBehind), [&](PassBuilder& builder) {
-        return DrawTargets{builder.writeColor(opaque.hdr, std::nullopt), builder.writeDepth(opaque.depth, std::nullopt)};
+    const DrawTarget& targets = addDrawPass(graph, "forward_transmission", std::move(mBehind), [&](PassBuilder& builder) {
+        return drawInto(builder, opaque, false, DepthUse::Write);
     });
     mBehind.clear();
-    return targets.hdr;
+    return targets;
 }
 
-const ForwardPass::DrawTargets& ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::vector<DrawItem> items,
-                                                        const std::function<DrawTargets(PassBuilder&)>& targets) {
+const DrawTarget& ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::vector<DrawItem> items,
+                                           const std::function<DrawTarget(PassBuilder&)>& targets) {
     struct Data {
-        DrawTargets targets;
+        DrawTarget targets;
         IblHandles ibl;     // as declared: resolved in execute
         LayerMaps layers;   // as declared
         BufferId draws;     // the posed draw data, when animated

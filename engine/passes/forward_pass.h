@@ -10,6 +10,7 @@
 
 #include "graph/render_graph.h"
 #include "passes/debug_view.h"
+#include "passes/draw_target.h"
 #include "passes/forward_ibl_set.h"
 #include "passes/forward_layer_set.h"
 #include "passes/ibl_handles.h"
@@ -68,10 +69,7 @@ public:
     // Call once per GpuScene; precondition: the GPU no longer uses the previous scene's sets.
     void setScene(const scene::GpuScene& scene);
 
-    struct Output {
-        graph::TextureId hdr;
-        graph::TextureId depth;
-    };
+    using Output = DrawTarget;
 
     // Image-based lighting of one frame: the maps to read (set 2, written every frame from what the
     // pass context resolves them to) and how to read them.
@@ -103,9 +101,10 @@ public:
     // when `ibl` is given, the environment; posed by `posed` and drawn from `deformed` vertices
     // where given; the layered program reads `layerMaps` (the sheen LUT and cube) where given.
     // `selection` culls draws and picks their levels of detail; `shading` turns specular
-    // anti-aliasing on or off. Returns the written targets.
+    // anti-aliasing on or off. Creates the targets at `size` (MSAA at size.samples > 1, with
+    // alpha to coverage for alpha-masked draws) and returns them as written.
     // With `parameters`, the user's values for the per-frame push constants apply ("forward", "Push").
-    Output add(graph::RenderGraph& graph, uint32_t width, uint32_t height, const scene::ViewSetup& view,
+    Output add(graph::RenderGraph& graph, const DrawTargetSize& size, const scene::ViewSetup& view,
                ShadingModel model, const Ibl* ibl = nullptr, shader::ParameterRegistry* parameters = nullptr,
                DebugView debugView = DebugView::None, const PosedDraws* posed = nullptr,
                const DeformedVertices* deformed = nullptr, const LayerMaps* layerMaps = nullptr,
@@ -114,9 +113,9 @@ public:
     bool hasTransmissiveDraws() const { return !mBehind.empty(); }
     // Adds "forward_transmission": the draws the last add() left, over its `opaque` targets (after
     // whatever drew into them since, e.g. the skybox), reading `background` (the opaque image with
-    // its mips) behind the transmissive ones. Returns the HDR target's new version. Precondition:
+    // its mips) behind the transmissive ones. Returns the targets' new versions. Precondition:
     // hasTransmissiveDraws().
-    graph::TextureId addTransmissive(graph::RenderGraph& graph, const Output& opaque, graph::TextureId background);
+    Output addTransmissive(graph::RenderGraph& graph, const Output& opaque, graph::TextureId background);
     // The reflection of the forward shaders without layers (every variant shares sets 0 and 2 and
     // the push constants; the layered program adds to set 1).
     const shader::ShaderReflection& reflection() { return pipeline(Variant{}).program().reflection(); }
@@ -130,8 +129,8 @@ public:
     // What the last add() used and left out, one line each, for `--explain`.
     const std::vector<std::string>& explanation() const { return mExplanation; }
 
-    static constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-    static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+    static constexpr VkFormat kHdrFormat = passes::kHdrFormat;
+    static constexpr VkFormat kDepthFormat = passes::kDepthFormat;
 
 private:
     struct Variant {
@@ -150,6 +149,8 @@ private:
         // layered program (forward_layers.*), whose kLayers evaluates just these.
         uint32_t layers = 0;
         bool specularAa = false;  // specular anti-aliasing (kSpecularAa)
+        uint32_t samples = 1;     // of the targets
+        bool alphaToCoverage = false;  // alpha-masked draws at samples > 1 where the device has alphaToOne
         auto operator<=>(const Variant&) const = default;
         std::string name() const;
     };
@@ -171,18 +172,14 @@ private:
         LayerMaps layerMaps;
         graph::BufferId posedDraws, posedLights, deformed;  // invalid where the frame has none
     };
-    struct DrawTargets {
-        graph::TextureId hdr;
-        graph::TextureId depth;
-    };
     // Adds a graphics pass `name` recording `items` into the targets `targets` declares, reading
     // mFrame's inputs. Returns the targets as written.
-    const DrawTargets& addDrawPass(graph::RenderGraph& graph, std::string name, std::vector<DrawItem> items,
-                                   const std::function<DrawTargets(graph::PassBuilder&)>& targets);
+    const DrawTarget& addDrawPass(graph::RenderGraph& graph, std::string name, std::vector<DrawItem> items,
+                                  const std::function<DrawTarget(graph::PassBuilder&)>& targets);
     const vk::Pipeline& pipeline(const Variant& variant);
     static vk::GraphicsPipelineDesc desc(const Variant& variant);
     Variant variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl, DebugView debugView,
-                      const ShadingOptions& shading) const;
+                      const ShadingOptions& shading, uint32_t samples) const;
 
     vk::Context& mContext;
     vk::PipelineCache<Variant> mPipelines;

@@ -11,11 +11,10 @@ using namespace graph;
 
 SkyboxPass::SkyboxPass(vk::Context& context) : mContext(context), mSampler(vk::createSampler(context, {})) {}
 
-TextureId SkyboxPass::add(RenderGraph& graph, const scene::ViewSetup& view, const Inputs& in,
+DrawTarget SkyboxPass::add(RenderGraph& graph, const scene::ViewSetup& view, const Inputs& in,
                           shader::ParameterRegistry* parameters) {
     struct Data {
-        TextureId hdr;
-        TextureId depth;
+        DrawTarget target;
         TextureId specular;
         const vk::Pipeline* pipeline = nullptr;
         shading::SkyboxPush push{};
@@ -24,18 +23,19 @@ TextureId SkyboxPass::add(RenderGraph& graph, const scene::ViewSetup& view, cons
         "skybox", PassType::Graphics,
         [&](PassBuilder& builder, Data& d) {
             d.specular = builder.sample(in.specular);
-            d.depth = builder.read(in.depth, Usage::DepthRead);
-            d.hdr = builder.writeColor(in.hdr, std::nullopt);
-            const VkFormat color = builder.desc(in.hdr).format;
-            const VkFormat depth = builder.desc(in.depth).format;
-            d.pipeline = &mPipelines.get(mContext, {color, depth}, [&] {
+            d.target = drawInto(builder, in.target, false, DepthUse::Test);
+            const VkFormat color = builder.desc(in.target.color).format;
+            const VkFormat depth = builder.desc(in.target.depth).format;
+            const uint32_t samples = samplesOf(builder, in.target);
+            d.pipeline = &mPipelines.get(mContext, {color, depth, samples}, [&] {
                 return vk::Pipeline::graphics(mContext, "fullscreen.vert", "skybox.frag",
                                               {.colorFormats = {color},
                                                .depthFormat = depth,
                                                .depthTest = true,
                                                .depthWrite = false,
                                                .depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL,
-                                               .blend = vk::BlendMode::Under});
+                                               .blend = vk::BlendMode::Under,
+                                               .samples = samples});
             });
             d.push = {.inverseViewProjection = glm::inverse(view.viewProjection),
                       .eye = glm::vec4(view.eye, 1.0f),
@@ -46,7 +46,7 @@ TextureId SkyboxPass::add(RenderGraph& graph, const scene::ViewSetup& view, cons
         [sampler = mSampler.get()](const Data& d, PassContext& ctx) {
             drawFullscreenSampling(ctx, *d.pipeline, "specularCube", d.specular, sampler, &d.push, sizeof(d.push));
         });
-    return data.hdr;
+    return data.target;
 }
 
 }  // namespace candela::passes

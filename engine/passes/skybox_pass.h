@@ -6,13 +6,14 @@
 // blur level's mip.
 
 #include "graph/render_graph.h"
+#include "passes/draw_target.h"
 #include "shader/parameter_registry.h"
 #include "scene/camera.h"
 #include "shared/ibl.h"
 #include "vk/pipeline_cache.h"
 #include "vk/sampler.h"
 
-#include <utility>
+#include <tuple>
 
 namespace candela::passes {
 
@@ -21,20 +22,20 @@ public:
     explicit SkyboxPass(vk::Context& context);
 
     struct Inputs {
-        graph::TextureId hdr;       // RGBA16F, premultiplied, alpha = coverage
-        graph::TextureId depth;     // D32 reverse-Z, 0 = nothing drawn
+        DrawTarget target;          // as the forward pass left it (depth: 0 = nothing drawn)
         graph::TextureId specular;  // specular cube (IblHandles::specular)
         shading::IblParams params;  // skyboxLod: the mip shown
     };
-    // Adds the pass; returns the HDR target's new version. The pass object must outlive execution.
+    // Adds the pass drawing into the target's colour (and resolving it, with MSAA); returns the
+    // target's new versions. The pass object must outlive execution.
     // With `parameters`, the user's values for its push constants apply ("skybox", "Push").
-    graph::TextureId add(graph::RenderGraph& graph, const scene::ViewSetup& view, const Inputs& inputs,
+    DrawTarget add(graph::RenderGraph& graph, const scene::ViewSetup& view, const Inputs& inputs,
                          shader::ParameterRegistry* parameters = nullptr);
 
 private:
     vk::Context& mContext;
-    // Pipelines by (colour format, depth format) of the targets.
-    vk::PipelineCache<std::pair<VkFormat, VkFormat>> mPipelines;
+    // Pipelines by (colour format, depth format, samples) of the targets.
+    vk::PipelineCache<std::tuple<VkFormat, VkFormat, uint32_t>> mPipelines;
     vk::Sampler mSampler;  // trilinear
 };
 

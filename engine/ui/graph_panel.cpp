@@ -1,7 +1,8 @@
 // The render-graph panel: every declared pass of the last frame in execution order (culled ones
 // after, greyed, with the reason), an enabled checkbox per pass (effective next frame), its GPU
-// time, the resources it reads and writes, the transient memory before and after aliasing, and
-// export of the graph as dot and JSON.
+// time, the resources it reads and writes (sample counts, resolves, results nothing reads), the
+// MSAA sample count (a choice), the transient memory before and after aliasing, and export of the
+// graph as dot and JSON.
 
 #include "graph/graph_export.h"
 #include "ui/panels.h"
@@ -9,15 +10,24 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <bit>
 #include <string>
 
 namespace candela::ui {
 
 namespace {
 
-std::string accessText(const graph::GraphDecl& decl, const graph::AccessDecl& access) {
-    return decl.resources[access.resource].name + " v" + std::to_string(access.version) + " (" +
-           graph::usageName(access.usage) + ")";
+// `unread`: the pass's writes nothing reads (null for reads).
+std::string accessText(const graph::GraphDecl& decl, const graph::AccessDecl& access, const std::vector<uint32_t>* unread) {
+    const graph::ResourceDecl& resource = decl.resources[access.resource];
+    std::string text = resource.name + " v" + std::to_string(access.version) + " (" + graph::usageName(access.usage);
+    if (resource.texture.samples > 1) text += ", " + std::to_string(resource.texture.samples) + " samples";
+    if (access.usage == graph::Usage::ResolveAttachment) text += " of " + decl.resources[access.resolveSource].name;
+    text += ")";
+    if (unread && std::find(unread->begin(), unread->end(), access.resource) != unread->end())
+        text += access.usage == graph::Usage::ResolveAttachment ? " - skipped: resolved over later" : " - not stored: nothing reads it";
+    return text;
 }
 
 double mib(VkDeviceSize bytes) { return double(bytes) / (1024.0 * 1024.0); }
@@ -29,6 +39,16 @@ void drawGraphPanel(Viewer& viewer) {
     if (!graph.isCompiled()) return;
     const graph::GraphDecl& decl = graph.declaration();
     const graph::CompiledGraph& compiled = graph.compiled();
+
+    // MSAA: the choice applies from the next frame; the device may clamp it.
+    RenderSettings& settings = viewer.settings();
+    static constexpr const char* kCounts[] = {"device default", "1", "2", "4", "8"};
+    int current = settings.msaa ? 1 + std::countr_zero(*settings.msaa) : 0;
+    ImGui::SetNextItemWidth(140.0f);
+    if (ImGui::Combo("MSAA", &current, kCounts, IM_ARRAYSIZE(kCounts)))
+        settings.msaa = current == 0 ? std::nullopt : std::optional<uint32_t>(1u << (current - 1));
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", viewer.renderer().msaa(settings.msaa).reason.c_str());
 
     std::vector<uint32_t> rows = compiled.order;
     for (uint32_t p = 0; p < decl.passes.size(); ++p)
@@ -60,8 +80,10 @@ void drawGraphPanel(Viewer& viewer) {
             }
             if (open) {
                 if (culled) ImGui::TextDisabled("culled: %s", info.cullDetail.c_str());
-                for (const graph::AccessDecl& a : pass.reads) ImGui::BulletText("reads %s", accessText(decl, a).c_str());
-                for (const graph::AccessDecl& a : pass.writes) ImGui::BulletText("writes %s", accessText(decl, a).c_str());
+                for (const graph::AccessDecl& a : pass.reads)
+                    ImGui::BulletText("reads %s", accessText(decl, a, nullptr).c_str());
+                for (const graph::AccessDecl& a : pass.writes)
+                    ImGui::BulletText("writes %s", accessText(decl, a, &info.unreadWrites).c_str());
                 ImGui::TreePop();
             }
             ImGui::PopID();

@@ -242,6 +242,11 @@ void Context::createDevice(const ContextDesc& desc) {
         features.features.samplerAnisotropy = VK_TRUE;
         mReport.enabledFeatures.emplace_back("samplerAnisotropy");
     }
+    if (supported.alphaToOne) {
+        features.features.alphaToOne = VK_TRUE;
+        mAlphaToOne = true;
+        mReport.enabledFeatures.emplace_back("alphaToOne");
+    }
 
     std::vector<const char*> extensions;
     if (desc.presentSupport) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);

@@ -88,6 +88,12 @@ public:
     const DeviceReport& report() const { return mReport; }
     MemoryAllocator& allocator() { return *mAllocator; }
     bool validationEnabled() const { return mValidation; }
+    // Whether the alphaToOne feature is enabled (alpha to coverage that stores alpha 1).
+    bool alphaToOne() const { return mAlphaToOne; }
+    // The MSAA sample counts the device can render colour and depth attachments with (bits of 1, 2, 4, 8, ...).
+    VkSampleCountFlags attachmentSampleCounts() const {
+        return mProperties.limits.framebufferColorSampleCounts & mProperties.limits.framebufferDepthSampleCounts;
+    }
 
     // Validation messages (warnings and errors) seen since creation.
     uint32_t validationMessageCount() const { return mValidationCount.load(); }
@@ -141,6 +147,7 @@ private:
 
     // Members in start-up order: destruction runs in reverse.
     bool mValidation = false;
+    bool mAlphaToOne = false;
     bool mPrintValidation = true;
     bool mDebugUtils = false;
     std::function<void(const ValidationMessage&)> mOnValidation;

@@ -51,7 +51,7 @@ VkImageCreateInfo imageCreateInfo(const ImageDesc& desc) {
             .extent = {desc.width, desc.height, desc.depth},
             .mipLevels = desc.mipLevels,
             .arrayLayers = desc.arrayLayers,
-            .samples = VK_SAMPLE_COUNT_1_BIT,
+            .samples = static_cast<VkSampleCountFlagBits>(desc.samples),
             .tiling = VK_IMAGE_TILING_OPTIMAL,
             .usage = desc.usage,
             .sharingMode = VK_SHARING_MODE_EXCLUSIVE,

@@ -26,6 +26,7 @@ struct ImageDesc {
     bool cube = false;  // arrayLayers must be a multiple of 6
     MemoryUsage memory = MemoryUsage::GpuOnly;
     const char* name = nullptr;
+    uint32_t samples = 1;  // a power of two; > 1: a multisampled attachment (one mip, one layer)
 
     // e.g. ImageDesc::renderTarget(w, h, VK_FORMAT_R16G16B16A16_SFLOAT)
     static ImageDesc renderTarget(uint32_t width, uint32_t height, VkFormat format);

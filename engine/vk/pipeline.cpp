@@ -127,7 +127,9 @@ Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std
                                                         .frontFace = desc.frontFace,
                                                         .lineWidth = 1.0f};
     const VkPipelineMultisampleStateCreateInfo multisample{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO, .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO, .rasterizationSamples = static_cast<VkSampleCountFlagBits>(desc.samples),
+        .alphaToCoverageEnable = desc.alphaToCoverage,
+        .alphaToOneEnable = desc.alphaToCoverage};
     const VkPipelineDepthStencilStateCreateInfo depth{.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
                                                       .depthTestEnable = desc.depthTest,
                                                       .depthWriteEnable = desc.depthWrite,

@@ -60,6 +60,10 @@ struct GraphicsPipelineDesc {
     bool depthWrite = false;
     VkCompareOp depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse-Z
     BlendMode blend = BlendMode::None;
+    uint32_t samples = 1;  // rasterization samples: the sample count of the attachments drawn into
+    // Coverage from the fragment's alpha, and alpha 1 stored (alphaToOne). Precondition: samples > 1
+    // and Context::alphaToOne().
+    bool alphaToCoverage = false;
     // Cull mode and front face set per draw with vkCmdSetCullMode/FrontFace (Vulkan 1.3 core);
     // cullMode and frontFace above are then ignored.
     bool dynamicCullMode = false;

@@ -9,7 +9,7 @@
 namespace candela::graph {
 namespace {
 
-const std::vector<std::string> kSteps{"validate", "cull", "order", "lifetimes", "aliasing", "barriers"};
+const std::vector<std::string> kSteps{"validate", "cull", "order", "unread writes", "lifetimes", "aliasing", "barriers"};
 
 TEST(GraphCompile, RunsTheNamedStepsInOrder) {
     RenderGraph graph;

@@ -96,7 +96,7 @@ TEST(GraphExport, JsonDescribesPassesResourcesHeapsAndBarriers) {
     EXPECT_EQ(barriers[3]["newLayout"], "PresentSrcKHR");
 
     EXPECT_EQ(json["steps"],
-              (nlohmann::json{"validate", "cull", "order", "lifetimes", "aliasing", "barriers"}));
+              (nlohmann::json{"validate", "cull", "order", "unread writes", "lifetimes", "aliasing", "barriers"}));
 }
 
 TEST(GraphExport, DotListsPassesResourcesAndCulling) {
