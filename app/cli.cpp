@@ -267,7 +267,7 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         };
         table.withValue["--lod"] = [&](const std::string& v) {
             if (v != "on" && v != "off") throw UserError("--lod: expected on or off, got '" + v + "'");
-            o.lodErrorPixels = v == "on" ? 1.0f : 0.0f;
+            o.lodErrorPixels = v == "on" ? passes::DrawSelection::kDefaultLodErrorPixels : 0.0f;
         };
         table.withValue["--specular-aa"] = [&](const std::string& v) {
             if (v != "on" && v != "off") throw UserError("--specular-aa: expected on or off, got '" + v + "'");
@@ -393,6 +393,47 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         };
         table.withValue["--width"] = [&](const std::string& v) { o.width = parseDimension("--width", v); };
         table.withValue["--height"] = [&](const std::string& v) { o.height = parseDimension("--height", v); };
+    } else if (name == "quality-report") {
+        command.kind = Command::Kind::QualityReport;
+        QualityReportOptions& o = command.qualityReport;
+        addCommon(table, o.common);
+        table.withValue["--out"] = [&](const std::string& v) {
+            if (v.empty()) throw UserError("--out: expected a directory");
+            o.out = v;
+        };
+        table.withValue["--scenes"] = [&](const std::string& v) {
+            o.scenes = commaSeparated(v);
+            if (o.scenes.empty() || std::find(o.scenes.begin(), o.scenes.end(), "") != o.scenes.end())
+                throw UserError("--scenes: expected default or glTF files, comma-separated, got '" + v + "'");
+        };
+        table.withValue["--env"] = [&](const std::string& v) {
+            if (v.empty() || v == "none") throw UserError("--env: expected an .hdr/.exr file or sky");
+            o.env = v;
+        };
+        table.withValue["--msaa"] = [&](const std::string& v) {
+            o.msaa.clear();
+            for (const std::string& item : commaSeparated(v)) {
+                if (item != "1" && item != "2" && item != "4" && item != "8")
+                    throw UserError("--msaa: expected sample counts from 1, 2, 4, 8, got '" + v + "'");
+                o.msaa.push_back(uint32_t(std::stoul(item)));
+            }
+        };
+        table.withValue["--lod-errors"] = [&](const std::string& v) {
+            o.lodErrors.clear();
+            for (const std::string& item : commaSeparated(v)) {
+                const float pixels = parseNumber("--lod-errors", item);
+                if (!(pixels >= 0.0f)) throw UserError("--lod-errors: expected pixels ≥ 0, got '" + v + "'");
+                o.lodErrors.push_back(pixels);
+            }
+        };
+        const std::pair<const char*, uint32_t QualityReportOptions::*> counts[] = {
+            {"--frames", &QualityReportOptions::frames}, {"--orbit-frames", &QualityReportOptions::orbitFrames},
+            {"--width", &QualityReportOptions::width}, {"--height", &QualityReportOptions::height}};
+        for (const auto& [flag, member] : counts)
+            table.withValue[flag] = [&o, flag, member](const std::string& v) {
+                o.*member = parseDimension(flag, v);
+                if (o.*member == 0) throw UserError(std::string(flag) + ": must be at least 1");
+            };
     } else if (name == "soak") {
         command.kind = Command::Kind::Soak;
         SoakOptions& o = command.soak;
@@ -413,7 +454,7 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         };
     } else {
         throw UserError("unknown command '" + name +
-                        "' (commands: render, view, bench, ibl-report, scale-report, soak, info; see candela --help)");
+                        "' (commands: render, view, bench, ibl-report, scale-report, quality-report, soak, info; see candela --help)");
     }
     bool help = false;
     table.switches["--help"] = [&] { help = true; };
@@ -442,6 +483,8 @@ usage:
                              maps and of the final image, as CSV, markdown and log-log plots
   candela scale-report [opts]  frame time against scene triangles for N x N sphere grids, levels of
                              detail on and off, as CSV, markdown and a log-log plot
+  candela quality-report [opts]  image error (against a 16-sample reference, and frame to frame over a
+                             slow orbit) against frame time for MSAA x specular AA x LOD error
   candela soak [options]     render many frames headless, switching the environment, and report host
                              and device memory over time (leaks show as growth after warm-up)
   candela info [options]     list the Vulkan devices, the one chosen and why, and the features enabled
@@ -500,8 +543,8 @@ render options:
   --scene-lights on|off the file's own KHR_lights_punctual lights (off: image-based lighting only,
                         for comparisons; the scene then counts as one without lights) [on]
   --lod-error PIXELS    draw each mesh at the coarsest level of detail whose geometric error covers
-                        at most PIXELS on screen; 0: full detail [1]
-  --lod on|off          --lod-error 1 or 0
+                        at most PIXELS on screen; 0: full detail [0.5]
+  --lod on|off          --lod-error 0.5 or 0
   --cull on|off         leave out draws outside the view frustum [on]
   --msaa 1|2|4|8        samples per pixel of the scene's draw targets, resolved into the HDR image;
                         clamped to what the device supports, with a warning [4 on GPUs, 1 on CPU
@@ -527,10 +570,20 @@ view options: the render options (except --out, --width and --height: the window
   camera, space pause/play the animation, P or F12 screenshot (candela-screenshot.png), Esc quit; drop a .gltf/.glb to open it,
   an .hdr/.exr to light the scene with it
 
+quality-report options: MSAA x specular AA x level-of-detail error, error against a 16-sample reference
+  --scenes A,B,...      default (the built-in grid under the sky) and/or glTF files [default]
+  --env ENV             the glTF scenes' environment: an .hdr/.exr file or sky [sky]
+  --msaa N,N,...        sample counts (those the device lacks are clamped, noted) [1,2,4,8]
+  --lod-errors PX,...   level-of-detail errors in pixels [0,0.5,1,2,4]
+  --frames N            timed frames per setting [5]
+  --orbit-frames N      frames of the 1-degree-per-frame orbit (error and temporal difference) [6]
+  --width W, --height H [640, 360] (the reference renders 4x each)
+  --out DIR             where report.csv, report.md and the plots go [quality-report]
+
 scale-report options: the built-in grid at N x N spheres (framed alike), levels of detail on and off
   --sizes N,N,...       grid sides [1,2,5,10,20,50,100]
   --frames N            frames measured per setting [5]
-  --lod-error PIXELS    the level-of-detail error of the "on" runs [1]
+  --lod-error PIXELS    the level-of-detail error of the "on" runs [0.5]
   --width W, --height H [1280, 720]
   --out DIR             where report.csv, report.md and frame_vs_triangles.png go [scale-report]
 

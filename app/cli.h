@@ -3,6 +3,7 @@
 // Every malformed argument throws candela::UserError with a one-line message naming the flag.
 
 #include "ibl/ibl_settings.h"
+#include "passes/draw_selection.h"
 
 #include <array>
 #include <optional>
@@ -39,7 +40,7 @@ struct RenderOptions {
     bool defaultLights = true;        // --no-default-lights turns off the key/fill lights of light-less scenes
     bool sceneLights = true;          // --scene-lights off leaves out the file's own punctual lights
     std::string variant;              // --variant NAME: a KHR_materials_variants variant ("" = defaults)
-    float lodErrorPixels = 1.0f;      // --lod-error PIXELS (0, or --lod off: full detail)
+    float lodErrorPixels = passes::DrawSelection::kDefaultLodErrorPixels;  // --lod-error PIXELS (0, or --lod off: full detail)
     bool frustumCulling = true;       // --cull on|off
     bool specularAa = false;          // --specular-aa on|off
     std::optional<uint32_t> msaa;     // --msaa 1|2|4|8 (unset: the device default)
@@ -103,18 +104,32 @@ struct ScaleReportOptions {
     std::string out = "scale-report";                            // --out DIR (created)
     std::vector<uint32_t> sizes = {1, 2, 5, 10, 20, 50, 100};     // --sizes N,N,...: grid sides
     uint32_t frames = 5;                                          // --frames N per setting
-    float lodErrorPixels = 1.0f;                                  // --lod-error PIXELS: the "on" setting
+    float lodErrorPixels = passes::DrawSelection::kDefaultLodErrorPixels;  // --lod-error PIXELS: the "on" setting
     uint32_t width = 1280;                                        // --width, --height
     uint32_t height = 720;
 };
 
+struct QualityReportOptions {
+    CommonOptions common;
+    std::string out = "quality-report";           // --out DIR (created)
+    std::vector<std::string> scenes = {"default"};  // --scenes default,FILE,...: the built-in grid or glTF files
+    std::string env = "sky";                      // --env FILE|sky: the glTF scenes' environment (the grid: the sky)
+    std::vector<uint32_t> msaa = {1, 2, 4, 8};    // --msaa N,N,...
+    std::vector<float> lodErrors = {0.0f, 0.5f, 1.0f, 2.0f, 4.0f};  // --lod-errors PX,PX,...
+    uint32_t frames = 5;                          // --frames N: timed frames per setting
+    uint32_t orbitFrames = 6;                     // --orbit-frames N: frames of the 1°-per-frame orbit
+    uint32_t width = 640;                         // --width, --height
+    uint32_t height = 360;
+};
+
 struct Command {
-    enum class Kind { Help, Render, View, Info, Bench, IblReport, Soak, ScaleReport } kind = Kind::Help;
+    enum class Kind { Help, Render, View, Info, Bench, IblReport, Soak, ScaleReport, QualityReport } kind = Kind::Help;
     RenderOptions render;  // render, view and bench
     InfoOptions info;
     IblReportOptions iblReport;
     SoakOptions soak;
     ScaleReportOptions scaleReport;
+    QualityReportOptions qualityReport;
 };
 
 // Parses argv[1..]. No arguments or --help → Kind::Help.

@@ -22,6 +22,7 @@ int runInfo(const InfoOptions& options);
 int runIblReport(const IblReportOptions& options);
 int runSoak(const SoakOptions& options);
 int runScaleReport(const ScaleReportOptions& options);
+int runQualityReport(const QualityReportOptions& options);
 
 // Shared by render and bench: the context description and the render settings the flags choose.
 vk::ContextDesc contextDesc(const CommonOptions& common);

@@ -462,7 +462,6 @@ vk::MsaaChoice Renderer::msaa(std::optional<uint32_t> requested) const {
 void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std::optional<TextureId> target) {
     RenderGraph& graph = *frame.graph;
     const vk::MsaaChoice msaa = this->msaa(settings.msaa);
-    mSamples = msaa.samples;
     if (msaa.clamped && mMsaaWarnedFor != settings.msaa) {
         log::warn("--msaa: " + msaa.reason);
         mMsaaWarnedFor = settings.msaa;
@@ -514,7 +513,7 @@ void Renderer::buildSceneGraph(Frame& frame, const RenderSettings& settings, std
     mParameters.beginFrame();
     applySceneParameters();
     const passes::ForwardPass::Output forward =
-        mForward.add(graph, {settings.width, settings.height, mSamples}, view, settings.shading, ibl ? &*ibl : nullptr, &mParameters,
+        mForward.add(graph, {settings.width, settings.height, msaa.samples}, view, settings.shading, ibl ? &*ibl : nullptr, &mParameters,
                      settings.debugView, posed ? &*posed : nullptr, deformed ? &*deformed : nullptr,
                      layerMaps ? &*layerMaps : nullptr, settings.drawSelection,
                      settings.shadingOptions);

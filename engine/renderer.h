@@ -321,7 +321,6 @@ private:
     graph::GraphTimings mCompletedTimings;  // of the latest completed frame, by declared pass
     PrecomputeTime mLastPrecompute;
     Frame mLast;  // the last frame submitted
-    uint32_t mSamples = 1;                   // of the frame being built
     std::optional<uint32_t> mMsaaWarnedFor;  // the clamped request last warned of (once per request)
 };
 

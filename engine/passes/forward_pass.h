@@ -10,6 +10,7 @@
 
 #include "graph/render_graph.h"
 #include "passes/debug_view.h"
+#include "passes/draw_selection.h"
 #include "passes/draw_target.h"
 #include "passes/forward_ibl_set.h"
 #include "passes/forward_layer_set.h"
@@ -33,32 +34,6 @@
 namespace candela::passes {
 
 enum class ShadingModel : uint32_t { Pbr = 0, PbrSchlickGgx = 1, BlinnPhong = 2 };
-
-// Which draws and which of their levels of detail a frame submits (docs/geometry.md).
-// How the forward pass shades (docs/shading.md).
-struct ShadingOptions {
-    // Specular anti-aliasing: roughness widened by the normal's change across the pixel and by
-    // what a normal map's mip averaged away. Off by default until its error is measured against
-    // a supersampled reference with the temporal measure too (docs/shading.md).
-    bool specularAntiAliasing = false;
-};
-
-struct DrawSelection {
-    // Leave out draws whose world bounds lie outside the view frustum.
-    bool frustumCulling = true;
-    // Draw each mesh at the coarsest level of detail whose error covers at most this many
-    // pixels on screen; 0: full detail.
-    float lodErrorPixels = 1.0f;
-};
-// What the last frame drew: draws and triangles of the scene (visible ones, each instance
-// counted) against those submitted, and the state changes recorded to draw them.
-struct DrawStats {
-    uint32_t sceneDraws = 0, submittedDraws = 0, culledDraws = 0;
-    uint32_t coarserDraws = 0;  // submitted at a level of detail beyond the full one
-    uint64_t sceneTriangles = 0, submittedTriangles = 0;
-    uint32_t pipelineBinds = 0, descriptorBinds = 0, dynamicStates = 0, bufferBinds = 0;
-    uint32_t stateChanges() const { return pipelineBinds + descriptorBinds + dynamicStates + bufferBinds; }
-};
 
 class ForwardPass {
 public:

@@ -197,7 +197,13 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"GridZero", "bench --grid 0", "--grid: expected 1 to 1000 spheres a side, got '0'"},
                       BadInput{"GridWithScene", "render --grid 3 --scene {dir}/triangle.gltf --out {dir}/x.png", "--grid: sizes the built-in sphere grid; not with --scene"},
                       BadInput{"ScaleReportSizeZero", "scale-report --sizes 1,0 --out {dir}/r", "--sizes: expected grid sides from 1 to 1000, got '1,0'"},
-                      BadInput{"ScaleReportUnwritableOut", "scale-report --out /proc/candela-report", "/proc/candela-report: cannot create the report folder"}),
+                      BadInput{"ScaleReportUnwritableOut", "scale-report --out /proc/candela-report", "/proc/candela-report: cannot create the report folder"},
+                      BadInput{"MsaaThree", "render --msaa 3 --out {dir}/x.png", "--msaa: expected 1, 2, 4 or 8, got '3'"},
+                      BadInput{"QualityReportMsaaSixteen", "quality-report --msaa 1,16 --out {dir}/r", "--msaa: expected sample counts from 1, 2, 4, 8, got '1,16'"},
+                      BadInput{"QualityReportNegativeLodError", "quality-report --lod-errors 0,-2 --out {dir}/r", "--lod-errors: expected pixels ≥ 0, got '0,-2'"},
+                      BadInput{"QualityReportMissingScene", "quality-report --scenes default,{dir}/missing.glb --out {dir}/r", "{dir}/missing.glb"},
+                      BadInput{"QualityReportSameSceneTwice", "quality-report --scenes default,default --out {dir}/r", "--scenes: two scenes named 'default'"},
+                      BadInput{"QualityReportEnvNone", "quality-report --env none --out {dir}/r", "--env: expected an .hdr/.exr file or sky"}),
     [](const ::testing::TestParamInfo<BadInput>& row) { return std::string(row.param.name); });
 
 TEST(Cli, HelpExitsZero) { EXPECT_EQ(run("--help").exitCode, 0); }
@@ -436,6 +442,35 @@ TEST(Cli, ScaleReportSweepsGridSizesWithLevelsOfDetailOnAndOff) {
     std::filesystem::remove_all(dir);
 }
 
+TEST(Cli, QualityReportSweepsMsaaSpecularAaAndLevelsOfDetail) {
+    // A reduced sweep on the built-in grid: every setting a row with its error and temporal
+    // difference, the device's clamp of --msaa 2 noted, the default ringed in the plots.
+    const auto dir = tempDir() / "quality-report";
+    const Result r = run("quality-report --validate --msaa 1,2,4 --lod-errors 0,0.5 --frames 1 --orbit-frames 2 --width 64 "
+                         "--height 36 --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    for (const char* file : {"report.csv", "report.md", "default_error.png", "default_temporal.png"})
+        EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+    std::ifstream csv(dir / "report.csv");
+    std::string header, line;
+    std::getline(csv, header);
+    EXPECT_EQ(header.rfind("scene,msaa,specular_aa,lod_error_px,frame_ratio,frame_ms,mean_error,p99_error,temporal", 0), 0u);
+    size_t rows = 0, defaults = 0;
+    while (std::getline(csv, line)) {
+        ++rows;
+        defaults += line.back() == '1';
+    }
+    // lavapipe renders 1 and 4 samples: 2 is clamped to 1 and not measured twice.
+    EXPECT_EQ(rows, 2u * 2u * 2u);
+    EXPECT_EQ(defaults, 1u);
+    std::ifstream md(dir / "report.md");
+    const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("MSAA 2: not supported here"), std::string::npos) << text;
+    EXPECT_NE(text.find("★"), std::string::npos);
+    EXPECT_NE(r.stderrText.find("quality-report: default 8/8"), std::string::npos) << r.stderrText;
+    std::filesystem::remove_all(dir);
+}
+
 TEST(Cli, InfoListsDevicesAndTheChoice) {
     const std::string command = std::string(CANDELA_EXECUTABLE) + " info 2>&1";
     FILE* pipe = popen(command.c_str(), "r");
@@ -446,6 +481,10 @@ TEST(Cli, InfoListsDevicesAndTheChoice) {
     EXPECT_NE(out.find("chosen:"), std::string::npos) << out;
     EXPECT_NE(out.find("why:"), std::string::npos) << out;
     EXPECT_NE(out.find("features enabled: dynamicRendering synchronization2 maintenance4"), std::string::npos) << out;
+    // The MSAA default of the chosen device and why (1 on CPU devices such as lavapipe, 4 on GPUs).
+    EXPECT_TRUE(out.find("MSAA: 1 sample (no MSAA) (default on CPU devices") != std::string::npos ||
+                out.find("MSAA: 4 samples (default on GPUs") != std::string::npos)
+        << out;
 }
 
 }  // namespace

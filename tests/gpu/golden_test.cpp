@@ -59,11 +59,11 @@ constexpr double kMaxDifferingShare = 0.001;
 
 const GoldenCase kCases[] = {
     {"default_scene", ""},
-    // The default level-of-detail error (1 px): at this size the spheres are drawn 8 × 4 and the
-    // helmet at a simplified level.
-    {"default_scene_lod", "", {0.0f, 90.0f, 0.0f}, "", 0.0f, "", 0.0, "", 1.0f},
+    // The default level-of-detail error (passes::DrawSelection::kDefaultLodErrorPixels): at this
+    // size the spheres are drawn at coarser tessellations and the helmet at a simplified level.
+    {"default_scene_lod", "", {0.0f, 90.0f, 0.0f}, "", 0.0f, "", 0.0, "", passes::DrawSelection::kDefaultLodErrorPixels},
     {"ibl_damaged_helmet_lod", "DamagedHelmet/glTF-Binary/DamagedHelmet.glb", {-30.0f, 80.0f, 0.0f}, "studio_small_03_1k.hdr",
-     0.0f, "", 0.0, "", 1.0f},
+     0.0f, "", 0.0, "", passes::DrawSelection::kDefaultLodErrorPixels},
     {"damaged_helmet", "DamagedHelmet/glTF-Binary/DamagedHelmet.glb", {-30.0f, 80.0f, 0.0f}},
     {"metal_rough_spheres", "MetalRoughSpheresNoTextures/glTF/MetalRoughSpheresNoTextures.gltf"},
     {"normal_tangent", "NormalTangentTest/glTF/NormalTangentTest.gltf"},
