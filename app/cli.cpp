@@ -20,10 +20,31 @@ struct FlagTable {
     std::function<void(const std::string&)> positional;  // null: no positional arguments
 };
 
+}  // namespace
+
+const CommonOptions& Command::common() const {
+    static const CommonOptions defaults;
+    switch (kind) {
+        case Kind::Help: return defaults;
+        case Kind::Render:
+        case Kind::View:
+        case Kind::Bench: return render.common;
+        case Kind::Info: return info.common;
+        case Kind::IblReport: return iblReport.common;
+        case Kind::Soak: return soak.common;
+        case Kind::ScaleReport: return scaleReport.common;
+        case Kind::QualityReport: return qualityReport.common;
+    }
+    return defaults;
+}
+
+namespace {
+
 void addCommon(FlagTable& table, CommonOptions& common) {
     table.withValue["--device"] = [&](const std::string& v) { common.device = v; };
     table.switches["--validate"] = [&] { common.validate = true; };
     table.switches["--verbose"] = [&] { common.verbose = true; };
+    table.switches["--quiet"] = [&] { common.quiet = true; };
     table.withValue["--memory-budget"] = [&](const std::string& v) {
         common.memoryBudgetMib = parseDimension("--memory-budget", v);
         if (common.memoryBudgetMib == 0) throw UserError("--memory-budget: need at least 1 MiB");
@@ -610,7 +631,11 @@ soak options:
 common options:
   --device SEL          device index or case-insensitive name substring (see candela info)
   --validate            Khronos validation with synchronization validation (also CANDELA_VALIDATE=1)
-  --verbose             print progress and timings
+  --verbose             also print notes (such as the degenerate triangles a glTF file's primitives
+                        had, dropped quietly) and timings
+  --quiet               no progress line on long commands (ibl-report, soak, quality-report,
+                        scale-report, image sequences); one that rewrites itself on a terminal, a
+                        plain line every 10 s otherwise
   --memory-budget MIB   allocate at most MIB MiB of device memory (simulates a small device: what does
                         not fit is an error naming the resource, exit code 4, or a lower IBL resolution
                         with a warning)

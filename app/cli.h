@@ -16,6 +16,7 @@ struct CommonOptions {
     std::string device;     // --device INDEX|NAME
     bool validate = false;  // --validate
     bool verbose = false;   // --verbose
+    bool quiet = false;     // --quiet: no progress lines
     uint32_t memoryBudgetMib = 0;  // --memory-budget MIB (0: the device's memory)
 };
 
@@ -130,6 +131,8 @@ struct Command {
     SoakOptions soak;
     ScaleReportOptions scaleReport;
     QualityReportOptions qualityReport;
+    // The common options of the command (defaults for help).
+    const CommonOptions& common() const;
 };
 
 // Parses argv[1..]. No arguments or --help → Kind::Help.

@@ -10,6 +10,7 @@
 
 #include "core/check.h"
 #include "core/log.h"
+#include "core/progress.h"
 #include "ibl_report.h"
 #include "statistics.h"
 #include "io/image_file.h"
@@ -107,6 +108,9 @@ int runIblReport(const IblReportOptions& options) {
     // Ground truth: the reflectance equation integrated per pixel against the environment itself
     // (its brightest texels summed, the rest sampled); its convergence is shown by the same render
     // at a quarter of the samples.
+    const std::vector<Setting> settings = sweep(options.quick);
+    Progress progress("ibl-report", settings.size() + 1, options.common.quiet);
+    progress.step(0, "ground truth (" + std::to_string(options.referenceSamples) + " samples per pixel)");
     renderer.setReferenceEnvironment(environment);
     renderer.precomputeIbl(environment, ibl::IblQuality{});
     frame.iblQuality = ibl::IblQuality{};
@@ -119,12 +123,14 @@ int runIblReport(const IblReportOptions& options) {
     frame.ibl.referenceSamples = 0;
     io::writeExr(out / "ground_truth.exr", truth.width, truth.height, truth.rgba32f);
     report::writePreview(out / "ground_truth.png", truth);
+    progress.clear();
     std::printf("ground truth: %u samples per lobe per pixel and %u texels summed, %.0f ms; a quarter of the samples "
                 "differs by %.2e relative RMSE, %.2e mean relative error\n", options.referenceSamples,
                 renderer.iblMaps().referenceTexelCount(), truthMs, convergence.rmse, convergence.meanRelative);
 
     std::vector<Result> results;
-    for (const Setting& setting : sweep(options.quick)) {
+    for (const Setting& setting : settings) {
+        progress.step(results.size() + 1, setting.group + " " + setting.label);
         Result r{.setting = setting};
         std::vector<double> wall, gpu, setup, ratio;
         for (uint32_t i = 0; i < options.repeats; ++i) {
@@ -154,6 +160,7 @@ int runIblReport(const IblReportOptions& options) {
             report::writePreview(out / "default.png", image);
             report::writeErrorMap(out / "default_error.png", image, truth.rgba32f);
         }
+        progress.clear();
         std::printf("%-24s %-10s precompute %8.1f ms = %5.2fx calibration (setup %6.1f ms); specular RMSE %.2e mean %.2e; "
                     "irradiance RMSE %.2e; LUT max %.1e; image RMSE %.2e mean %.2e\n",
                     setting.group.c_str(), setting.label.c_str(), r.wallMs, r.ratio, r.setupMs, r.specularRmse(),
@@ -161,6 +168,8 @@ int runIblReport(const IblReportOptions& options) {
         std::fflush(stdout);
         results.push_back(std::move(r));
     }
+    progress.step(settings.size() + 1, "writing the report");
+    progress.finish();
 
     report::writeCsv(out, results);
     report::writeMarkdown(out,

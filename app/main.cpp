@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "core/check.h"
 #include "core/log.h"
+#include "core/progress.h"
 #include "graph/graph_export.h"
 #include "io/image_file.h"
 #include "renderer.h"
@@ -34,6 +35,7 @@ scene::Scene loadScene(const RenderOptions& options) {
     scene::Scene scene = options.scene.empty() ? scene::makeSphereGrid(options.grid)
                                                : scene::loadGltf(options.scene, {.sceneIndex = options.sceneIndex});
     for (const std::string& warning : scene.warnings) log::warn(options.scene + ": " + warning);
+    for (const std::string& note : scene.notes) log::info(options.scene + ": " + note);
     if (!options.variant.empty()) scene::selectVariant(scene, scene::variantIndex(scene, options.variant));
     return scene;
 }
@@ -126,6 +128,7 @@ int runRender(const RenderOptions& options) {
     vk::Context context(contextDesc(options.common));
     Renderer renderer(context);
     CapturedFrame frame;
+    Progress progress("render", options.frames, options.common.quiet || !sequence);
     for (uint32_t i = 0; i < options.frames; ++i) {
         if (sequence) {
             pose.evaluate(options.time + double(i) / options.fps);
@@ -139,6 +142,7 @@ int runRender(const RenderOptions& options) {
             case io::ImageFileFormat::Exr: io::writeExr(out, frame.width, frame.height, frame.rgba32f); break;
             case io::ImageFileFormat::Pfm: io::writePfm(out, frame.width, frame.height, frame.rgba32f); break;
         }
+        progress.clear();
         std::printf("wrote %s (%ux%u", out.c_str(), frame.width, frame.height);
         if (sequence) std::printf(", t = %.4f s", pose.time());
         std::printf("): submit+wait %.2f ms, readback %.2f ms", frame.submitWaitMs, frame.readbackMs);
@@ -147,7 +151,10 @@ int runRender(const RenderOptions& options) {
             if (frame.timings.gpuMs.size() > pass && frame.timings.gpuMs[pass] >= 0.0)
                 std::printf("; %s %.2f ms GPU", decl.passes[pass].name.c_str(), frame.timings.gpuMs[pass]);
         std::printf("\n");
+        std::fflush(stdout);
+        progress.step(i + 1, "frames written");
     }
+    progress.finish();
     if (options.explain)
         for (const std::string& line : renderer.explain()) std::printf("%s\n", line.c_str());
     // The graph exports describe the last frame.
@@ -212,6 +219,7 @@ int main(int argc, char** argv) {
     using namespace candela;
     try {
         const app::Command command = app::parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
+        log::setVerbose(command.common().verbose);  // before anything loads: loaders print notes with --verbose
         switch (command.kind) {
             case app::Command::Kind::Help: std::fputs(app::usageText().c_str(), stdout); return 0;
             case app::Command::Kind::Render: return app::runRender(command.render);

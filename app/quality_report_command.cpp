@@ -15,6 +15,7 @@
 
 #include "core/check.h"
 #include "core/log.h"
+#include "core/progress.h"
 #include "io/image_file.h"
 #include "io/image_error.h"
 #include "io/plot.h"
@@ -172,6 +173,7 @@ int runQualityReport(const QualityReportOptions& options) {
     for (const std::string& entry : options.scenes) {
         scene::Scene& scene = loaded.emplace_back(entry == "default" ? scene::makeSphereGrid() : scene::loadGltf(entry));
         for (const std::string& warning : scene.warnings) log::warn(entry + ": " + warning);
+        for (const std::string& note : scene.notes) log::info(entry + ": " + note);
     }
 
     vk::Context context(contextDesc(options.common));
@@ -187,8 +189,9 @@ int runQualityReport(const QualityReportOptions& options) {
             sampleCounts.push_back(choice.samples);
     }
     const size_t perScene = sampleCounts.size() * 2 * options.lodErrors.size();
-    const auto started = std::chrono::steady_clock::now();
-    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
+    // Steps: per scene its reference, then its settings.
+    Progress progress("quality-report", options.scenes.size() * (perScene + 1), options.common.quiet);
+    size_t done = 0;
 
     std::vector<SceneResult> results;
     auto scene = loaded.begin();
@@ -201,11 +204,13 @@ int runQualityReport(const QualityReportOptions& options) {
         base.drawSelection.lodErrorPixels = 0.0f;
         base.msaa = 1;
         renderer.validateSettings(base);
-        const double referenceStart = elapsed();
-        std::fprintf(stderr, "quality-report: %s: reference (%ux%u, %u frames) ...\n", result.name.c_str(),
-                     options.width * kReferenceScale, options.height * kReferenceScale, options.orbitFrames);
+        progress.step(done, result.name + ": reference (" + std::to_string(options.width * kReferenceScale) + "x" +
+                                std::to_string(options.height * kReferenceScale) + ", " + std::to_string(options.orbitFrames) +
+                                " frames)");
+        const auto referenceStart = std::chrono::steady_clock::now();
         const std::vector<std::vector<uint8_t>> reference = orbitFrames(renderer, base, options.orbitFrames, kReferenceScale);
-        result.referenceSeconds = elapsed() - referenceStart;
+        result.referenceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - referenceStart).count();
+        ++done;
         result.referenceTemporal = io::meanFrameToFrameDifference(reference);
         for (uint32_t samples : sampleCounts)
             for (bool specularAa : {false, true})
@@ -225,11 +230,11 @@ int runQualityReport(const QualityReportOptions& options) {
                     row.isDefault = samples == defaultMsaa.samples && specularAa == passes::ShadingOptions{}.specularAntiAliasing &&
                                     lodError == passes::DrawSelection::kDefaultLodErrorPixels;
                     result.rows.push_back(row);
-                    const double done = double(s * perScene + result.rows.size()), total = double(options.scenes.size() * perScene);
-                    std::fprintf(stderr, "quality-report: %s %zu/%zu  %s: %.2fx calibration, error %.3f (p99 %.0f), temporal %.3f (error %.3f)  "
-                                 "[%.0f s elapsed, ~%.0f s left]\n",
-                                 result.name.c_str(), result.rows.size(), perScene, settingName(row).c_str(), row.frameRatio,
-                                 row.error.mean, row.error.p99, row.temporal, row.temporalError, elapsed(), elapsed() / done * (total - done));
+                    char detail[200];
+                    std::snprintf(detail, sizeof detail, "%s %s: %.2fx calibration, error %.3f (p99 %.0f), temporal error %.3f",
+                                  result.name.c_str(), settingName(row).c_str(), row.frameRatio, row.error.mean, row.error.p99,
+                                  row.temporalError);
+                    progress.step(++done, detail);
                 }
         std::vector<io::PlotPoint> points;
         for (const Row& r : result.rows) points.push_back({r.frameRatio, r.error.mean});
@@ -237,6 +242,7 @@ int runQualityReport(const QualityReportOptions& options) {
         std::sort(result.rows.begin(), result.rows.end(), [](const Row& a, const Row& b) { return a.frameRatio < b.frameRatio; });
         results.push_back(std::move(result));
     }
+    progress.finish();
     writeReport(options.out, results, options, context.report().name, defaultMsaa, notes);
     std::printf("wrote %s/report.csv, report.md and 2 plots per scene\n", options.out.c_str());
     if (context.validationMessageCount() > 0) {

@@ -9,6 +9,7 @@
 #include "statistics.h"
 
 #include "core/check.h"
+#include "core/progress.h"
 #include "io/plot.h"
 #include "scene/builtin_scenes.h"
 #include "scene/procedural_sky.h"
@@ -71,7 +72,7 @@ int runScaleReport(const ScaleReportOptions& options) {
     // The renderer keeps pointing at the last scene it drew: every scene lives until the end.
     std::list<scene::Scene> scenes;
     std::vector<Row> rows;
-    const size_t steps = options.sizes.size() * 2;
+    Progress progress("scale-report", options.sizes.size() * 2, options.common.quiet);
     for (uint32_t side : options.sizes) {
         const scene::Scene& grid = scenes.emplace_back(scene::makeSphereGrid(side));
         for (const float lodError : {options.lodErrorPixels, 0.0f}) {
@@ -83,11 +84,14 @@ int runScaleReport(const ScaleReportOptions& options) {
                     .calibrationMs = median(m.calibrationMs), .cpuMs = median(m.cpuMs)};
             if (auto forward = m.passGpuMs.find("forward"); forward != m.passGpuMs.end()) row.forwardGpuMs = median(forward->second);
             rows.push_back(row);
-            std::fprintf(stderr, "scale-report: %zu/%zu  N=%u, levels of detail %s: %.2fx calibration, %llu of %llu triangles\n",
-                         rows.size(), steps, side, lodError > 0.0f ? "on" : "off", row.ratio(),
-                         (unsigned long long)row.draws.submittedTriangles, (unsigned long long)row.draws.sceneTriangles);
+            char detail[160];
+            std::snprintf(detail, sizeof detail, "N=%u, levels of detail %s: %.2fx calibration, %llu of %llu triangles", side,
+                          lodError > 0.0f ? "on" : "off", row.ratio(), (unsigned long long)row.draws.submittedTriangles,
+                          (unsigned long long)row.draws.sceneTriangles);
+            progress.step(rows.size(), detail);
         }
     }
+    progress.finish();
     writeReport(options.out, rows, options, context.report().name);
     std::printf("wrote %s/report.csv, report.md, frame_vs_triangles.png\n", options.out.c_str());
     return 0;

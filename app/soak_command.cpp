@@ -3,6 +3,7 @@
 
 #include "commands.h"
 #include "core/check.h"
+#include "core/progress.h"
 #include "io/image_file.h"
 #include "scene/builtin_scenes.h"
 #include "soak.h"
@@ -35,10 +36,12 @@ int runSoak(const SoakOptions& options) {
                 options.frames, options.width, options.height, options.switchEvery, environments.size());
     std::printf("%8s %10s %10s %12s %14s %12s %10s\n", "frame", "RSS MiB", "heap MiB", "Vk objects", "device MiB",
                 "allocations", "frame ms");
+    Progress progress("soak", options.frames, options.common.quiet);
     const std::vector<SoakSample> samples =
         runSoak(renderer, context, settings, environments,
                 {.frames = options.frames, .switchEvery = options.switchEvery, .sampleEvery = options.sampleEvery},
                 [&](const SoakSample& s) {
+                    progress.clear();
                     std::printf("%8u %10.1f %10.1f %12lld %14.1f %12u %10.2f\n", s.frame, mib(s.residentBytes),
                                 mib(s.heapBytes), static_cast<long long>(s.liveVulkanObjects), mib(s.deviceMemoryBytes),
                                 s.liveAllocations, s.lastFrameMs);
@@ -46,7 +49,12 @@ int runSoak(const SoakOptions& options) {
                     if (csv)
                         csv << s.frame << ',' << s.residentBytes << ',' << s.heapBytes << ',' << s.liveVulkanObjects << ','
                             << s.deviceMemoryBytes << ',' << s.liveAllocations << ',' << s.lastFrameMs << '\n';
+                    char detail[64];
+                    std::snprintf(detail, sizeof detail, "frames; RSS %.1f MiB, device %.1f MiB", mib(s.residentBytes),
+                                  mib(s.deviceMemoryBytes));
+                    progress.step(s.frame, detail);
                 });
+    progress.finish();
     if (!options.out.empty() && !csv) throw UserError(options.out + ": cannot write");
     // Growth after warm-up: from the first sample at or after one full cycle of environments.
     const uint32_t warmUp = options.switchEvery * uint32_t(environments.size());

@@ -39,11 +39,43 @@ std::string printable(std::string text) {
 
 void LoadContext::fail(const std::string& problem) const { throw UserError(path + ": " + printable(problem)); }
 
-void LoadContext::warn(const std::string& text) const {
+namespace {
+
+// `kind`: "warnings" or "notes", for the line that ends a full list.
+void record(std::vector<std::string>& list, const std::string& text, const char* kind) {
     const std::string message = printable(text);
-    if (std::find(warnings->begin(), warnings->end(), message) != warnings->end()) return;
-    if (warnings->size() < kMaxWarnings) warnings->push_back(message);
-    else if (warnings->size() == kMaxWarnings) warnings->push_back("further warnings suppressed");
+    if (std::find(list.begin(), list.end(), message) != list.end()) return;
+    if (list.size() < kMaxWarnings) list.push_back(message);
+    else if (list.size() == kMaxWarnings) list.push_back(std::string("further ") + kind + " suppressed");
+}
+
+}  // namespace
+
+void LoadContext::warn(const std::string& text) const { record(*warnings, text, "warnings"); }
+
+void LoadContext::note(const std::string& text) const {
+    if (notes) record(*notes, text, "notes");
+}
+
+void LoadContext::tally(Severity severity, const Fact& fact, const std::string& what, size_t amount) const {
+    Count& count = tallies[fact.one];
+    if (count.elements == 0) count = {severity, fact, what, 0, 0};
+    ++count.elements;
+    count.amount += amount;
+}
+
+void LoadContext::finish() const {
+    for (const auto& [key, count] : tallies) {
+        const Fact& fact = count.fact;
+        const std::string text =
+            !fact.many ? fact.one : std::to_string(count.amount) + " " + (count.amount == 1 ? fact.one : fact.many);
+        const std::string line = (count.elements == 1 ? count.firstWhat
+                                                      : std::to_string(count.elements) + " " + fact.element + "s") +
+                                 ": " + text;
+        if (count.severity == Severity::Warning) warn(line);
+        else note(line);
+    }
+    tallies.clear();
 }
 
 bool fitsFloat(double value) { return std::abs(value) <= double(std::numeric_limits<float>::max()); }
@@ -70,6 +102,9 @@ constexpr std::array<std::string_view, 18> kSupportedExtensions = {
     "KHR_lights_punctual", "KHR_mesh_quantization", "EXT_mesh_gpu_instancing", "KHR_draco_mesh_compression",
     "EXT_meshopt_compression"};
 
+// Extensions that carry metadata only: leaving them out changes nothing drawn.
+constexpr std::array<std::string_view, 2> kMetadataExtensions = {"KHR_xmp", "KHR_xmp_json_ld"};
+
 bool supported(const std::string& extension) {
     return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), extension) != kSupportedExtensions.end();
 }
@@ -81,8 +116,12 @@ void checkAsset(const gltf::LoadContext& ctx, const tinygltf::Model& model) {
         if (!supported(extension)) ctx.fail("requires unsupported extension " + extension);
     for (const std::string& extension : model.extensionsUsed)
         if (!supported(extension) && std::find(model.extensionsRequired.begin(), model.extensionsRequired.end(),
-                                               extension) == model.extensionsRequired.end())
-            ctx.warn("extension " + extension + " is not supported (ignored)");
+                                               extension) == model.extensionsRequired.end()) {
+            if (std::find(kMetadataExtensions.begin(), kMetadataExtensions.end(), extension) != kMetadataExtensions.end())
+                ctx.note("extension " + extension + " (metadata, nothing drawn) is not read");
+            else
+                ctx.warn("extension " + extension + " is not supported (ignored)");
+        }
 }
 
 void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, const std::filesystem::path& path,
@@ -110,18 +149,19 @@ Scene loadGltfFromMemory(std::span<const uint8_t> bytes, const std::filesystem::
                          const LoadOptions& options) {
     Scene scene;
     scene.source = path.string();
-    const gltf::LoadContext ctx{path.string(), &scene.warnings};
+    const gltf::LoadContext ctx{path.string(), &scene.warnings, &scene.notes};
     try {
         loadInto(ctx, bytes, path, options, scene);
     } catch (const std::bad_alloc&) {
         ctx.fail("out of memory");
     }
+    ctx.finish();
     return scene;
 }
 
 Scene loadGltf(const std::filesystem::path& path, const LoadOptions& options) {
     std::vector<std::string> unused;
-    const gltf::LoadContext ctx{path.string(), &unused};
+    const gltf::LoadContext ctx{path.string(), &unused, nullptr};
     std::vector<uint8_t> bytes;
     try {
         bytes = gltf::readGltfFile(ctx, path);

@@ -185,13 +185,15 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
     const std::string what = label("mesh", meshIndex, mesh.name) + " primitive " + std::to_string(primitiveIndex);
     const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
     if (mode >= TINYGLTF_MODE_POINTS && mode <= TINYGLTF_MODE_LINE_STRIP) {
-        ctx.warn(what + ": " + modeName(mode) + " skipped (only triangles are drawn)");
+        // One line per file: "4 primitives: points or lines, not drawn (only triangles are)".
+        ctx.tally(Severity::Warning, {"primitive", "points or lines, not drawn (only triangles are)"},
+                  what + " (" + modeName(mode) + ")");
         return {};
     }
     if (mode > TINYGLTF_MODE_TRIANGLE_FAN) ctx.fail(what + ": invalid mode " + std::to_string(mode));
     const auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) {
-        ctx.warn(what + ": no POSITION attribute, skipped");
+        ctx.tally(Severity::Warning, {"primitive", "no POSITION attribute, not drawn"}, what);
         return {};
     }
 
@@ -219,10 +221,11 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
     if (mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
         ctx.warn(what + ": " + std::to_string(indices.size()) + " indices is not a multiple of 3 (extra dropped)");
     indices = toTriangleList(mode, indices);
+    // Degenerate triangles cover no pixel: the glTF-Validator reports them as information.
     if (const size_t dropped = dropZeroAreaTriangles(vertices, indices))
-        ctx.warn(what + ": " + std::to_string(dropped) + " zero-area triangle" + (dropped == 1 ? "" : "s") + " dropped");
+        ctx.tally(Severity::Note, {"primitive", "zero-area triangle dropped", "zero-area triangles dropped"}, what, dropped);
     if (indices.empty()) {
-        ctx.warn(what + ": no triangles, skipped");
+        ctx.tally(Severity::Note, {"primitive", "no triangles, skipped"}, what);
         return {};
     }
 

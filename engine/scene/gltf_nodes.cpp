@@ -280,7 +280,7 @@ private:
         Draw probe{.localBounds = Aabb{glm::vec3(0.0f), glm::vec3(0.0f)}};
         const bool movable = mMovable[size_t(sceneNode)];
         if (skin < 0 && placeDraw(probe, world) == Placement::Singular && !movable)
-            return mCtx.warn(what + ": zero scale (a singular world transform); its mesh is not drawn");
+            return mCtx.tally(Severity::Note, {"node", "zero scale, not drawn"}, what);
         // Instances, in at most two groups — those that mirror and those that do not — so that each
         // draw has one winding; shared by the mesh's primitives.
         std::optional<std::vector<glm::mat4>> instances = readInstances(node, what);

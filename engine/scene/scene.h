@@ -371,7 +371,11 @@ struct Scene {
     std::vector<std::string> variants;
     std::vector<DrawVariants> drawVariants;
     Aabb bounds;  // world space, over all draws
-    std::vector<std::string> warnings;  // non-fatal problems met while loading
+    // Met while loading, one line each: problems that make the render differ from what the file
+    // intends (printed), and facts the glTF-Validator reports as information, such as degenerate
+    // triangles (printed with --verbose).
+    std::vector<std::string> warnings;
+    std::vector<std::string> notes;
     // What the file's compressed geometry cost to load (KHR_draco_mesh_compression,
     // EXT_meshopt_compression): wall time of the decoding, and what was decoded. Zero otherwise.
     struct Decompression {

@@ -152,6 +152,7 @@ bool Viewer::openFile(const std::filesystem::path& path, std::optional<uint32_t>
         if (ext == ".gltf" || ext == ".glb") {
             scene::Scene loaded = scene::loadGltf(path, {.sceneIndex = sceneIndex});
             for (const std::string& warning : loaded.warnings) log::warn(path.string() + ": " + warning);
+            for (const std::string& note : loaded.notes) log::info(path.string() + ": " + note);
             // Replaced in place: the renderer is told, waits for the frames in flight and uploads
             // the new one at the next frame.
             mRenderer->sceneReplaced();

@@ -4,7 +4,8 @@
 //            file and containing the row's fragment (no crash, hang or partial output);
 //   Warning: exit code 0, the image written at its size, and a "candela: warning:" line naming
 //            the file and containing the fragment; `visible` says whether the scene still shows
-//            something (pixels unlike the background) or draws nothing.
+//            something (pixels unlike the background) or draws nothing;
+//   Note:    as Warning, but nothing on stderr unless --verbose, which prints the line.
 // Rows marked `fixedIn6` needed a change to the loaders when the catalogue was written (the count
 // is in docs/robustness.md). Under the asan preset the same rows run against the sanitized
 // executable, so each is also free of out-of-bounds reads and undefined behaviour.
@@ -25,7 +26,9 @@
 namespace candela::scene::test {
 namespace {
 
-enum class Outcome { Error, Warning, Loads };  // Loads: renders quietly (valid, if unusual)
+// Loads: renders quietly (valid, if unusual). Note: renders quietly too, and with --verbose says
+// what it left out (facts the glTF-Validator reports as information, such as degenerate triangles).
+enum class Outcome { Error, Warning, Note, Loads };
 
 struct Row {
     std::string kind;   // the class of malformed input
@@ -228,6 +231,9 @@ std::vector<Row> catalogue() {
     auto warning = [&](std::string kind, std::string name, Make make, std::string fragment, bool visible,
                        bool fixed = false) {
         rows.push_back({std::move(kind), std::move(name), std::move(make), Outcome::Warning, std::move(fragment), visible, fixed});
+    };
+    auto note = [&](std::string kind, std::string name, Make make, std::string fragment, bool visible, bool fixed = false) {
+        rows.push_back({std::move(kind), std::move(name), std::move(make), Outcome::Note, std::move(fragment), visible, fixed});
     };
     auto loads = [&](std::string kind, std::string name, Make make) {
         rows.push_back({std::move(kind), std::move(name), std::move(make), Outcome::Loads, "", true, false});
@@ -552,24 +558,24 @@ std::vector<Row> catalogue() {
     warning("NaN/Inf", "ExrTexelNegative", bytesAs("env.exr", [] { return goodExr(-4.0f); }), "replaced", true);
 
     // -- Degenerate geometry.
-    warning("degenerate", "ZeroAreaTriangle", gltfOf([] {
+    note("degenerate", "ZeroAreaTriangle", gltfOf([] {
         GltfBuilder b;  // one real triangle and one with all three corners on a line
         const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0, 2, 0, 0, 3, 0, 0}, "VEC3", 3);
         b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}}, b.addIndices({0, 1, 2, 1, 3, 4}))}})});
         return b;
     }), "zero-area", true, true);
-    warning("degenerate", "AllTrianglesZeroArea", gltfOf([] {
+    note("degenerate", "AllTrianglesZeroArea", gltfOf([] {
         GltfBuilder b;
         const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 2, 0, 0}, "VEC3", 3);
         b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}}, b.addIndices({0, 1, 2}))}})});
         return b;
     }), "zero-area", false, true);
-    warning("degenerate", "ZeroScale", gltfEdited([](Json& j) { j["nodes"][0]["scale"] = {0, 0, 0}; }), "zero scale", false, true);
-    warning("degenerate", "ZeroScaleOneAxis", gltfEdited([](Json& j) { j["nodes"][0]["scale"] = {1, 0, 1}; }), "zero scale", false, true);
-    warning("degenerate", "ZeroScaleParent", gltfEdited([](Json& j) {
+    note("degenerate", "ZeroScale", gltfEdited([](Json& j) { j["nodes"][0]["scale"] = {0, 0, 0}; }), "zero scale, not drawn", false, true);
+    note("degenerate", "ZeroScaleOneAxis", gltfEdited([](Json& j) { j["nodes"][0]["scale"] = {1, 0, 1}; }), "zero scale, not drawn", false, true);
+    note("degenerate", "ZeroScaleParent", gltfEdited([](Json& j) {
         j["nodes"].push_back({{"children", {0}}, {"scale", {0, 0, 0}}});
         j["scenes"][0]["nodes"] = {1};
-    }), "zero scale", false, true);
+    }), "zero scale, not drawn", false, true);
 
     // -- Animations (the loader validates them so that playback needs no checks).
     const std::vector<float> move = {0, 0, 0, 1, 0, 0};
@@ -887,10 +893,18 @@ TEST_P(Catalogue, StatedOutcomeAndExitCode) {
         return;
     }
     EXPECT_EQ(r.exitCode, 0) << r.stderrText;
-    if (row.outcome == Outcome::Loads) {
+    if (row.outcome == Outcome::Loads || row.outcome == Outcome::Note) {
         EXPECT_EQ(r.stderrText, "") << "a valid file renders quietly";
     }
-    bool named = row.outcome == Outcome::Loads;
+    if (row.outcome == Outcome::Note) {
+        const candela::test::Result verbose = candela::test::run(args + " --verbose");
+        bool said = false;
+        for (const std::string& line : lines(verbose.stderrText))
+            said = said || (line.rfind("candela: ", 0) == 0 && line.find(file.string()) != std::string::npos &&
+                            line.find(row.fragment) != std::string::npos);
+        EXPECT_TRUE(said) << "--verbose does not say '" << row.fragment << "' of the file:\n" << verbose.stderrText;
+    }
+    bool named = row.outcome == Outcome::Loads || row.outcome == Outcome::Note;
     for (const std::string& line : stderrLines) {
         EXPECT_EQ(line.rfind("candela: warning: ", 0), 0u) << line;
         named = named || (line.find(file.string()) != std::string::npos && line.find(row.fragment) != std::string::npos);
@@ -921,8 +935,9 @@ TEST(CatalogueSummary, CountsRows) {
     const std::vector<Row> rows = catalogue();
     const auto errors = std::count_if(rows.begin(), rows.end(), [](const Row& r) { return r.outcome == Outcome::Error; });
     const auto fixed = std::count_if(rows.begin(), rows.end(), [](const Row& r) { return r.fixedIn6; });
-    std::printf("bad-input catalogue: %zu rows (%td errors, %td warnings), %td needed a fix\n", rows.size(), errors,
-                std::ptrdiff_t(rows.size()) - errors, fixed);
+    const auto notes = std::count_if(rows.begin(), rows.end(), [](const Row& r) { return r.outcome == Outcome::Note; });
+    std::printf("bad-input catalogue: %zu rows (%td errors, %td notes for --verbose, %td warnings or quiet loads), %td needed a fix\n",
+                rows.size(), errors, notes, std::ptrdiff_t(rows.size()) - errors - notes, fixed);
     EXPECT_GE(rows.size(), 100u);
 }
 
