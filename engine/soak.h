@@ -21,6 +21,7 @@ struct SoakSample {
     uint32_t frame = 0;            // frames rendered so far
     uint64_t residentBytes = 0;    // host RSS
     uint64_t heapBytes = 0;        // C heap in live allocations (not the allocator's cache)
+    uint64_t heapMappedBytes = 0;  // of which in blocks mapped on their own (large allocations)
     int64_t liveVulkanObjects = 0; // created through the device layer and not destroyed
     uint64_t deviceMemoryBytes = 0;  // held in VkDeviceMemory objects
     uint32_t liveAllocations = 0;
@@ -28,8 +29,8 @@ struct SoakSample {
 };
 
 // Renders options.frames frames of `settings` (its environment is replaced by environments[k] for
-// frames k·switchEvery …, cycling), sampling after frame 1 and every sampleEvery frames; `onSample`
-// sees each sample as it is taken. Preconditions: `environments` is not empty; the renderer's
+// frames k·switchEvery …, cycling), sampling after frame 1 and every sampleEvery frames, each
+// once the GPU is idle; `onSample` sees each sample as it is taken. Preconditions: `environments` is not empty; the renderer's
 // context is otherwise idle.
 std::vector<SoakSample> runSoak(Renderer& renderer, vk::Context& context, RenderSettings settings,
                                 const std::vector<scene::Environment>& environments, const SoakOptions& options,

@@ -22,4 +22,12 @@ uint64_t heapInUseBytes() {
 #endif
 }
 
+uint64_t heapMappedBytes() {
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+    return uint64_t(mallinfo2().hblkhd);
+#else
+    return 0;
+#endif
+}
+
 }  // namespace candela

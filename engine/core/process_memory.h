@@ -10,5 +10,9 @@ uint64_t residentBytes();
 // Bytes of the C heap in use by live allocations (glibc mallinfo2: small blocks + mmapped ones);
 // unlike the RSS, not inflated by memory the allocator keeps cached. 0 where not available.
 uint64_t heapInUseBytes();
+// The part of heapInUseBytes() in blocks the allocator mapped on their own (glibc: allocations
+// above its mmap threshold, 128 KiB growing to 32 MiB): a single large allocation alive when the
+// sample is taken shows here whole. 0 where not available.
+uint64_t heapMappedBytes();
 
 }  // namespace candela

@@ -6,6 +6,9 @@
 #include "scene/builtin_scenes.h"
 #include "soak.h"
 
+#include <cstdio>
+#include <string>
+
 namespace candela::test {
 namespace {
 
@@ -27,8 +30,17 @@ TEST_F(GpuTest, SoakKeepsObjectsAndMemoryFlatAfterWarmUp) {
         EXPECT_EQ(samples[i].liveAllocations, reference.liveAllocations) << "frame " << samples[i].frame;
     }
     // The C heap in live allocations must not grow (the RSS moves in steps with memory the driver
-    // maps outside the heap: reported by `candela soak`, not a pass/fail figure).
-    EXPECT_LT(double(samples.back().heapBytes), double(reference.heapBytes) + 2.0 * (1 << 20));
+    // maps outside the heap: reported by `candela soak`, not a pass/fail figure). On failure every
+    // sample is printed, the heap split into arena and separately mapped blocks.
+    std::string table = "frame   heap MiB   of which mapped MiB   RSS MiB";
+    for (const SoakSample& s : samples) {
+        char line[128];
+        std::snprintf(line, sizeof line, "\n%5u %10.2f %21.2f %9.1f", s.frame, double(s.heapBytes) / (1 << 20),
+                      double(s.heapMappedBytes) / (1 << 20), double(s.residentBytes) / (1 << 20));
+        table += line;
+    }
+    EXPECT_LT(double(samples.back().heapBytes), double(reference.heapBytes) + 2.0 * (1 << 20)) << table;
+    std::printf("%s\n", table.c_str());
 }
 
 }  // namespace
