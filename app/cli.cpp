@@ -51,6 +51,14 @@ void addCommon(FlagTable& table, CommonOptions& common) {
     };
 }
 
+// --out DIR of the report commands: the folder their files go to (created when they run).
+void addOutputFolder(FlagTable& table, std::string& out) {
+    table.withValue["--out"] = [&out](const std::string& v) {
+        if (v.empty()) throw UserError("--out: expected a directory");
+        out = v;
+    };
+}
+
 void parseFlags(const std::string& command, const std::vector<std::string>& args, size_t first, const FlagTable& table) {
     for (size_t i = first; i < args.size(); ++i) {
         std::string flag = args[i];
@@ -373,10 +381,7 @@ Command parseCommandLine(const std::vector<std::string>& args) {
             if (v.empty() || v == "none") throw UserError("--env: ibl-report needs an environment (a file or sky)");
             o.env = v;
         };
-        table.withValue["--out"] = [&](const std::string& v) {
-            if (v.empty()) throw UserError("--out: expected a directory");
-            o.out = v;
-        };
+        addOutputFolder(table, o.out);
         table.withValue["--repeats"] = [&](const std::string& v) {
             o.repeats = parseDimension("--repeats", v);
             if (o.repeats == 0) throw UserError("--repeats: need at least 1");
@@ -392,10 +397,7 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         command.kind = Command::Kind::ScaleReport;
         ScaleReportOptions& o = command.scaleReport;
         addCommon(table, o.common);
-        table.withValue["--out"] = [&](const std::string& v) {
-            if (v.empty()) throw UserError("--out: expected a directory");
-            o.out = v;
-        };
+        addOutputFolder(table, o.out);
         table.withValue["--sizes"] = [&](const std::string& v) {
             o.sizes.clear();
             for (const std::string& item : commaSeparated(v)) {
@@ -418,10 +420,7 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         command.kind = Command::Kind::QualityReport;
         QualityReportOptions& o = command.qualityReport;
         addCommon(table, o.common);
-        table.withValue["--out"] = [&](const std::string& v) {
-            if (v.empty()) throw UserError("--out: expected a directory");
-            o.out = v;
-        };
+        addOutputFolder(table, o.out);
         table.withValue["--scenes"] = [&](const std::string& v) {
             o.scenes = commaSeparated(v);
             if (o.scenes.empty() || std::find(o.scenes.begin(), o.scenes.end(), "") != o.scenes.end())

@@ -5,6 +5,7 @@
 
 #include "graph/graph_decl.h"
 
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -32,6 +33,10 @@ struct PassInfo {
     // of the graph: an attachment among them is not stored (store op don't-care) and a resolve
     // into one is not done (a later pass resolves over it). Running passes only.
     std::vector<uint32_t> unreadWrites;
+    // Whether `resource` is among unreadWrites: what this pass writes into it nothing reads.
+    bool writeUnread(uint32_t resource) const {
+        return std::find(unreadWrites.begin(), unreadWrites.end(), resource) != unreadWrites.end();
+    }
 };
 
 // Memory a resource needs, as the device reports it (or a size model in tests).

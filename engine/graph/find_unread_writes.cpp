@@ -8,7 +8,6 @@
 
 #include "graph/compile_steps.h"
 
-#include <algorithm>
 
 namespace candela::graph::detail {
 
@@ -41,9 +40,7 @@ void findUnreadWrites(const GraphDecl& decl, CompiledGraph& compiled) {
             NextUse next = NextUse::None;
             for (size_t j = i + 1; j < compiled.order.size() && next == NextUse::None; ++j)
                 next = useBy(decl.passes[compiled.order[j]], write.resource);
-            if (next != NextUse::Reads && std::find(info.unreadWrites.begin(), info.unreadWrites.end(), write.resource) ==
-                                              info.unreadWrites.end())
-                info.unreadWrites.push_back(write.resource);
+            if (next != NextUse::Reads && !info.writeUnread(write.resource)) info.unreadWrites.push_back(write.resource);
         }
     }
     compiled.steps.emplace_back("unread writes");

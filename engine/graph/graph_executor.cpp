@@ -98,13 +98,10 @@ std::optional<VkClearValue> PassContext::lostContentsClear(TextureId written) co
     return std::nullopt;
 }
 
-bool PassContext::resultRead(uint32_t resource) const {
-    const std::vector<uint32_t>& unread = mGraph->compiled().passes[mPassIndex].unreadWrites;
-    return std::find(unread.begin(), unread.end(), resource) == unread.end();
-}
-
 void PassContext::beginRendering() const {
+    const PassInfo& planned = mGraph->compiled().passes[mPassIndex];
     std::vector<VkRenderingAttachmentInfo> colors;
+    std::vector<uint32_t> colorResources;  // the resource of each of `colors`
     VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     bool hasDepth = false;
     VkExtent2D extent{0, 0};
@@ -117,9 +114,9 @@ void PassContext::beginRendering() const {
                                        .imageView = view(id),
                                        .imageLayout = layout,
                                        .loadOp = VK_ATTACHMENT_LOAD_OP_LOAD,
-                                       .storeOp = !write                 ? VK_ATTACHMENT_STORE_OP_NONE
-                                                  : resultRead(a.resource) ? VK_ATTACHMENT_STORE_OP_STORE
-                                                                           : VK_ATTACHMENT_STORE_OP_DONT_CARE};
+                                       .storeOp = !write                            ? VK_ATTACHMENT_STORE_OP_NONE
+                                                  : planned.writeUnread(a.resource) ? VK_ATTACHMENT_STORE_OP_DONT_CARE
+                                                                                    : VK_ATTACHMENT_STORE_OP_STORE};
         if (a.clear) {
             info.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
             info.clearValue = *a.clear;
@@ -132,7 +129,10 @@ void PassContext::beginRendering() const {
         return info;
     };
     for (const AccessDecl& a : mPass->writes) {
-        if (a.usage == Usage::ColorAttachment) colors.push_back(attachment(a, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, true));
+        if (a.usage == Usage::ColorAttachment) {
+            colors.push_back(attachment(a, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, true));
+            colorResources.push_back(a.resource);
+        }
         if (a.usage == Usage::DepthAttachment) {
             depth = attachment(a, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
             hasDepth = true;
@@ -140,17 +140,11 @@ void PassContext::beginRendering() const {
     }
     // Resolves into the single-sample images, skipped where a later pass resolves over the result.
     for (const AccessDecl& a : mPass->writes) {
-        if (a.usage != Usage::ResolveAttachment || !resultRead(a.resource)) continue;
-        for (size_t c = 0, i = 0; i < mPass->writes.size(); ++i) {
-            const AccessDecl& color = mPass->writes[i];
-            if (color.usage != Usage::ColorAttachment) continue;
-            if (color.resource == a.resolveSource) {
-                colors[c].resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
-                colors[c].resolveImageView = view({a.resource, a.version});
-                colors[c].resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-            }
-            ++c;
-        }
+        if (a.usage != Usage::ResolveAttachment || planned.writeUnread(a.resource)) continue;
+        const size_t c = size_t(std::find(colorResources.begin(), colorResources.end(), a.resolveSource) - colorResources.begin());
+        colors[c].resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;  // validation made sure the source is one of them
+        colors[c].resolveImageView = view({a.resource, a.version});
+        colors[c].resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     }
     for (const AccessDecl& a : mPass->reads)
         if (a.usage == Usage::DepthRead) {

@@ -90,8 +90,6 @@ public:
     void endRendering() const;
 
 private:
-    // Whether a later pass (or the graph's caller) reads what this pass writes into `resource`.
-    bool resultRead(uint32_t resource) const;
     // The declared access to this handle; throws GraphError if there is none.
     const AccessDecl& declared(ResourceKind kind, uint32_t index, uint32_t version) const;
 

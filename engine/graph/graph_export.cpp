@@ -4,7 +4,6 @@
 
 #include "graph/compile_steps.h"
 
-#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <vulkan/vulkan.hpp>
 
@@ -52,15 +51,15 @@ bool timed(const GraphTimings* timings, uint32_t pass) {
     return timings != nullptr && pass < timings->gpuMs.size() && timings->gpuMs[pass] >= 0.0;
 }
 
-// `unread`: the pass's writes whose result nothing reads (PassInfo::unreadWrites; null for reads).
-Json accessesJson(const GraphDecl& decl, const std::vector<AccessDecl>& accesses, const std::vector<uint32_t>* unread) {
+// `writer`: for writes, the pass's PassInfo, whose unreadWrites give "read" (null for reads).
+Json accessesJson(const GraphDecl& decl, const std::vector<AccessDecl>& accesses, const PassInfo* writer) {
     Json list = Json::array();
     for (const AccessDecl& access : accesses) {
         Json entry = {{"resource", decl.resources[access.resource].name},
                       {"version", access.version},
                       {"usage", usageName(access.usage)}};
         if (access.usage == Usage::ResolveAttachment) entry["resolveFrom"] = decl.resources[access.resolveSource].name;
-        if (unread) entry["read"] = std::find(unread->begin(), unread->end(), access.resource) == unread->end();
+        if (writer) entry["read"] = !writer->writeUnread(access.resource);
         list.push_back(std::move(entry));
     }
     return list;
@@ -189,7 +188,7 @@ std::string exportJson(const GraphDecl& decl, const CompiledGraph& compiled, con
                       {"detail", info.cullDetail}};
         if (timed(timings, p)) entry["gpuMs"] = timings->gpuMs[p];
         entry["reads"] = accessesJson(decl, pass.reads, nullptr);
-        entry["writes"] = accessesJson(decl, pass.writes, &info.unreadWrites);
+        entry["writes"] = accessesJson(decl, pass.writes, &info);
         passes.push_back(std::move(entry));
     }
     root["passes"] = std::move(passes);

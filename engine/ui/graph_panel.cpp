@@ -10,7 +10,6 @@
 
 #include <imgui.h>
 
-#include <algorithm>
 #include <bit>
 #include <string>
 
@@ -18,14 +17,14 @@ namespace candela::ui {
 
 namespace {
 
-// `unread`: the pass's writes nothing reads (null for reads).
-std::string accessText(const graph::GraphDecl& decl, const graph::AccessDecl& access, const std::vector<uint32_t>* unread) {
+// `writer`: for writes, the pass's PassInfo (whose unreadWrites are marked); null for reads.
+std::string accessText(const graph::GraphDecl& decl, const graph::AccessDecl& access, const graph::PassInfo* writer) {
     const graph::ResourceDecl& resource = decl.resources[access.resource];
     std::string text = resource.name + " v" + std::to_string(access.version) + " (" + graph::usageName(access.usage);
     if (resource.texture.samples > 1) text += ", " + std::to_string(resource.texture.samples) + " samples";
     if (access.usage == graph::Usage::ResolveAttachment) text += " of " + decl.resources[access.resolveSource].name;
     text += ")";
-    if (unread && std::find(unread->begin(), unread->end(), access.resource) != unread->end())
+    if (writer && writer->writeUnread(access.resource))
         text += access.usage == graph::Usage::ResolveAttachment ? " - skipped: resolved over later" : " - not stored: nothing reads it";
     return text;
 }
@@ -83,7 +82,7 @@ void drawGraphPanel(Viewer& viewer) {
                 for (const graph::AccessDecl& a : pass.reads)
                     ImGui::BulletText("reads %s", accessText(decl, a, nullptr).c_str());
                 for (const graph::AccessDecl& a : pass.writes)
-                    ImGui::BulletText("writes %s", accessText(decl, a, &info.unreadWrites).c_str());
+                    ImGui::BulletText("writes %s", accessText(decl, a, &info).c_str());
                 ImGui::TreePop();
             }
             ImGui::PopID();
