@@ -86,6 +86,7 @@ int runIblReport(const IblReportOptions& options) {
     const scene::Environment environment =
         options.env == "sky" ? scene::makeProceduralSky() : scene::loadEnvironment(options.env);
     for (const std::string& warning : environment.warnings) log::warn(warning);
+    for (const std::string& note : environment.notes) log::info(note);
     const scene::Environment reference = ibl::referenceEnvironment(environment);
     ibl::ReferenceCache cache;
 

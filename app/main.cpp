@@ -57,6 +57,7 @@ std::optional<scene::Environment> loadEnvironment(const RenderOptions& options) 
     if (options.env == "none") return std::nullopt;
     scene::Environment env = options.env == "sky" ? scene::makeProceduralSky() : scene::loadEnvironment(options.env);
     for (const std::string& warning : env.warnings) log::warn(warning);
+    for (const std::string& note : env.notes) log::info(note);
     return env;
 }
 

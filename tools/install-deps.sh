@@ -7,7 +7,7 @@ packages=(
   g++ cmake ninja-build pkg-config
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libspirv-cross-c-shared-dev
-  libglm-dev libstb-dev libtinyexr-dev libtinygltf-dev nlohmann-json3-dev zlib1g-dev
+  libglm-dev libstb-dev libopenexr-dev libtinygltf-dev nlohmann-json3-dev zlib1g-dev
   libgtest-dev
   libglfw3-dev libimgui-dev glslang-dev xvfb xauth
   clang libclang-rt-14-dev

@@ -2,8 +2,11 @@
 
 #include "core/check.h"
 
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
 #include <stb_image_write.h>
-#include <tinyexr.h>
 
 #include <algorithm>
 #include <cctype>
@@ -59,12 +62,26 @@ void writePng(const std::filesystem::path& path, uint32_t width, uint32_t height
 
 void writeExr(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const float> rgba) {
     checkSize(path, width, height, rgba.size(), 4);
-    const char* error = nullptr;
-    const int result = SaveEXR(rgba.data(), static_cast<int>(width), static_cast<int>(height), 4, /*save_as_fp16=*/1,
-                               path.c_str(), &error);
-    if (result != TINYEXR_SUCCESS) {
-        const std::string message = error ? error : "unknown error";
-        if (error) FreeEXRErrorMessage(error);
+    // Half RGBA, ZIP (lossless; 16 scanlines per chunk), through OpenEXR's C++ library. It writes
+    // only from slices of the channels' own type, so the floats are rounded to half here.
+    Imf::Header header(static_cast<int>(width), static_cast<int>(height));
+    header.compression() = Imf::ZIP_COMPRESSION;
+    const std::vector<Imath::half> halves(rgba.begin(), rgba.end());
+    Imf::FrameBuffer frame;
+    const char* names[] = {"R", "G", "B", "A"};
+    char* base = reinterpret_cast<char*>(const_cast<Imath::half*>(halves.data()));  // only read by OutputFile
+    for (size_t c = 0; c < 4; ++c) {
+        header.channels().insert(names[c], Imf::Channel(Imf::HALF));
+        frame.insert(names[c], Imf::Slice(Imf::HALF, base + c * sizeof(Imath::half), 4 * sizeof(Imath::half),
+                                          size_t(width) * 4 * sizeof(Imath::half)));
+    }
+    try {
+        Imf::OutputFile file(path.c_str(), header);
+        file.setFrameBuffer(frame);
+        file.writePixels(static_cast<int>(height));
+    } catch (const std::exception& e) {
+        std::string message = e.what();
+        std::replace(message.begin(), message.end(), '\n', ' ');
         throw UserError(path.string() + ": cannot write EXR: " + message);
     }
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Writing captured frames to disk: PNG (8-bit, sRGB-encoded), OpenEXR (linear half float, through
-// tinyexr) and PFM (linear 32-bit float RGB, written by hand: it is a 3-line header and raw floats).
+// OpenEXR's C++ library) and PFM (linear 32-bit float RGB, written by hand: it is a 3-line header and raw floats).
 // Every failure is a UserError naming the file and the problem.
 
 #include <cstdint>

@@ -28,6 +28,7 @@ struct Environment {
     std::vector<float> rgb;              // linear RGB, width × height × 3 floats, top row first
     uint32_t replacedTexels = 0;         // texels that had a NaN, ±Inf or negative channel
     std::vector<std::string> warnings;   // one line each, "SOURCE: ...", for the front end to print
+    std::vector<std::string> notes;      // facts that change nothing the file intends, for --verbose
 
     size_t texelCount() const { return size_t(width) * height; }
     // The three floats of texel (x, y), y = 0 the top row. Preconditions: x < width, y < height.

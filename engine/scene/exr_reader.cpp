@@ -2,11 +2,18 @@
 
 #include "core/check.h"
 
-#include <tinyexr.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfIO.h>
+#include <OpenEXR/ImfInputPart.h>
+#include <OpenEXR/ImfMultiPartInputFile.h>
+#include <openexr.h>
 
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <exception>
+#include <optional>
+#include <vector>
 
 namespace candela::scene {
 namespace {
@@ -15,96 +22,258 @@ namespace {
     throw UserError(source + ": " + problem);
 }
 
-// tinyexr's messages end in newlines and may hold several lines; ours are one line.
-std::string takeMessage(const char* error) {
+// One line of printable characters from OpenEXR's message or exception text.
+std::string oneLine(const char* text) {
     std::string out;
-    if (error) {
-        for (const char* c = error; *c && out.size() < 300; ++c) {
-            if (*c == '\n' || *c == '\r') {
-                if (!out.empty() && out.back() != ' ') out += "; ";
-            } else if (static_cast<unsigned char>(*c) >= 0x20) {
-                out += *c;
-            }
-        }
-        FreeEXRErrorMessage(error);
-    }
-    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+    for (const char* c = text; *c && out.size() < 300; ++c)
+        if (static_cast<unsigned char>(*c) >= 0x20) out += *c;
+        else if (!out.empty() && out.back() != ' ') out += ' ';
+    while (!out.empty() && out.back() == ' ') out.pop_back();
     return out.empty() ? std::string("unknown error") : out;
 }
 
-// Owns a parsed EXRHeader / loaded EXRImage (tinyexr's C structs).
-struct HeaderGuard {
-    EXRHeader header;
-    HeaderGuard() { InitEXRHeader(&header); }
-    ~HeaderGuard() { FreeEXRHeader(&header); }
-    HeaderGuard(const HeaderGuard&) = delete;
-    HeaderGuard& operator=(const HeaderGuard&) = delete;
+// The file in memory, and the first message OpenEXR reported for it (its error callback may
+// fire several times for one failure; the first names the cause).
+struct Stream {
+    std::span<const uint8_t> bytes;
+    std::string message;
 };
-// tinyexr 1.0.1 frees a partly decoded image itself when LoadEXRImageFromMemory fails, but frees
-// only `num_channels` planes (still 0 then) and leaves `images` dangling. So `num_channels` is set
-// before loading, and after a failure the guard forgets the image instead of freeing it twice.
-struct ImageGuard {
-    EXRImage image;
-    explicit ImageGuard(int channels) {
-        InitEXRImage(&image);
-        image.num_channels = channels;
+
+int64_t readBytes(exr_const_context_t, void* user, void* buffer, uint64_t size, uint64_t offset,
+                  exr_stream_error_func_ptr_t) {
+    const auto& bytes = static_cast<const Stream*>(user)->bytes;
+    if (offset >= bytes.size()) return 0;
+    const uint64_t count = std::min<uint64_t>(size, bytes.size() - offset);
+    std::memcpy(buffer, bytes.data() + offset, count);
+    return int64_t(count);
+}
+
+int64_t streamSize(exr_const_context_t, void* user) { return int64_t(static_cast<const Stream*>(user)->bytes.size()); }
+
+void keepMessage(exr_const_context_t context, exr_result_t, const char* message) {
+    void* user = nullptr;
+    if (exr_get_user_data(context, &user) != EXR_ERR_SUCCESS || !user || !message) return;
+    std::string& kept = static_cast<Stream*>(user)->message;
+    if (kept.empty()) kept = oneLine(message);
+}
+
+// Owns an open OpenEXRCore read context: the headers parsed and validated.
+class Context {
+public:
+    Context(Stream& stream, const std::string& source, const EnvironmentLoadOptions& options) : mStream(stream) {
+        exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+        init.error_handler_fn = keepMessage;
+        init.user_data = &stream;
+        init.read_fn = readBytes;
+        init.size_fn = streamSize;
+        // A data window beyond what we could display is refused while the header is parsed,
+        // before OpenEXR sizes any table or buffer from it.
+        init.max_image_width = int(options.maxWidth);
+        init.max_image_height = int(options.maxHeight);
+        init.max_tile_width = int(options.maxWidth);
+        init.max_tile_height = int(options.maxHeight);
+        // A missing or corrupt chunk table is an error, not a reason to scan the file for chunks.
+        init.flags = EXR_CONTEXT_FLAG_DISABLE_CHUNK_RECONSTRUCTION;
+        check(exr_start_read(&mContext, source.c_str(), &init), source, "invalid EXR header");
     }
-    ~ImageGuard() { FreeEXRImage(&image); }
-    void forget() { InitEXRImage(&image); }
-    ImageGuard(const ImageGuard&) = delete;
-    ImageGuard& operator=(const ImageGuard&) = delete;
+    ~Context() { exr_finish(&mContext); }
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    exr_const_context_t get() const { return mContext; }
+
+    // Throws "SOURCE: WHAT: OpenEXR's message" unless `result` is success.
+    void check(exr_result_t result, const std::string& source, const std::string& what) const {
+        if (result == EXR_ERR_SUCCESS) return;
+        const std::string detail = !mStream.message.empty() ? mStream.message : exr_get_default_error_message(result);
+        fail(source, what + ": " + detail);
+    }
+
+private:
+    Stream& mStream;
+    exr_context_t mContext = nullptr;
 };
 
-uint32_t le32(const uint8_t* p) { return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24; }
+struct Box {
+    int64_t minX, minY, maxX, maxY;
+    int64_t width() const { return maxX - minX + 1; }
+    int64_t height() const { return maxY - minY + 1; }
+    std::string text() const {
+        return "(" + std::to_string(minX) + "," + std::to_string(minY) + ")-(" + std::to_string(maxX) + "," +
+               std::to_string(maxY) + ")";
+    }
+};
+Box box(const exr_attr_box2i_t& b) { return {b.min.x, b.min.y, b.max.x, b.max.y}; }
 
-// tinyexr 1.0.1's PIZ decoder copies a chunk's bitmap (whose extent the chunk's first four bytes
-// give) without checking that the chunk holds it: a heap over-read found by fuzzing
-// (tests/fuzz/regressions/exr/). So the chunks of a PIZ file are checked here before tinyexr
-// decodes them: every offset-table entry must name a chunk inside the file, and a compressed
-// chunk must hold its bitmap range, bitmap and a Huffman block with its header and a bit count
-// that is not negative. Scanline files only; the offset
-// table follows the header (8 bytes of magic and version, then header_len bytes).
-void checkPizChunks(std::span<const uint8_t> bytes, const EXRHeader& header, int64_t width, int64_t height,
-                    const std::string& source) {
-    if (header.compression_type != TINYEXR_COMPRESSIONTYPE_PIZ) return;
-    constexpr int64_t kLinesPerChunk = 32;
-    uint64_t bytesPerLine = 0;
-    for (int c = 0; c < header.num_channels; ++c)
-        bytesPerLine += uint64_t(width) * (header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF ? 2 : 4);
-    const int64_t chunks = (height + kLinesPerChunk - 1) / kLinesPerChunk;
-    const uint64_t table = 8 + uint64_t(header.header_len);
-    for (int64_t i = 0; i < chunks; ++i) {
-        const std::string chunk = "chunk " + std::to_string(i);
-        const uint64_t entry = table + uint64_t(i) * 8;
-        if (entry + 8 > bytes.size()) fail(source, "truncated EXR offset table");
-        const uint64_t offset = uint64_t(le32(&bytes[entry])) | uint64_t(le32(&bytes[entry + 4])) << 32;
-        // An entry pointing into the header or the table itself (0 for an unfinished file) would
-        // make tinyexr rebuild the table by walking chunk headers, which this check cannot follow.
-        if (offset < table + uint64_t(chunks) * 8) fail(source, "EXR offset table entry " + std::to_string(i) + " points into the header");
-        if (offset > bytes.size() || bytes.size() - offset < 8) fail(source, "EXR " + chunk + " lies outside the file");
-        const uint64_t size = le32(&bytes[offset + 4]);
-        if (size > bytes.size() - offset - 8) fail(source, "EXR " + chunk + " runs past the end of the file");
-        // tinyexr takes the chunk's line count from the line number the chunk itself states, and
-        // decodes a chunk whose size equals those lines uncompressed as stored (no PIZ).
-        const int64_t line = int32_t(le32(&bytes[offset]));
-        const int64_t lines = std::min(line + kLinesPerChunk, int64_t(header.data_window.max_y) + 1) - line;
-        if (lines <= 0) continue;  // tinyexr refuses the chunk
-        if (size == uint64_t(lines) * bytesPerLine) continue;
-        const uint8_t* data = &bytes[offset + 8];
-        if (size < 8) fail(source, "corrupt PIZ data in EXR " + chunk);
-        const uint32_t minNonZero = uint32_t(data[0]) | uint32_t(data[1]) << 8;
-        const uint32_t maxNonZero = uint32_t(data[2]) | uint32_t(data[3]) << 8;
-        const uint64_t bitmap = minNonZero <= maxNonZero ? maxNonZero - minNonZero + 1 : 0;
-        if (4 + bitmap + 4 > size) fail(source, "corrupt PIZ data in EXR " + chunk + " (bitmap past the chunk's end)");
-        // Then the Huffman block: its length, and a 20-byte header whose fourth word is the bit
-        // count. tinyexr reads that header without checking the length and computes with a
-        // negative bit count in signed overflow (a second fuzz finding).
-        const uint8_t* huffman = data + 4 + bitmap;
-        const int32_t length = int32_t(le32(huffman));
-        if (length < 20 || uint64_t(length) > size - (4 + bitmap + 4))
-            fail(source, "corrupt PIZ data in EXR " + chunk + " (Huffman block length " + std::to_string(length) + ")");
-        if (int32_t(le32(huffman + 4 + 12)) < 0)
-            fail(source, "corrupt PIZ data in EXR " + chunk + " (negative Huffman bit count)");
+// The channels a part offers for colour: R, G, B, or Y for grey (names as written, no layers).
+struct ColourChannels {
+    std::array<std::string, 3> names;  // R, G, B, or Y three times
+    bool grey = false;
+};
+
+std::optional<ColourChannels> colourChannels(const exr_attr_chlist_t& list) {
+    bool r = false, g = false, b = false, y = false;
+    for (int c = 0; c < list.num_channels; ++c) {
+        const std::string name(list.entries[c].name.str, size_t(list.entries[c].name.length));
+        r |= name == "R";
+        g |= name == "G";
+        b |= name == "B";
+        y |= name == "Y";
+    }
+    if (r && g && b) return ColourChannels{{"R", "G", "B"}, false};
+    if (y) return ColourChannels{{"Y", "Y", "Y"}, true};
+    return std::nullopt;
+}
+
+// Refuses what the chosen channels cannot give: UINT samples, sub-sampling, and a Y channel with
+// chroma beside it (a luminance/chroma file, which is not grey).
+void checkColourChannels(const exr_attr_chlist_t& list, const ColourChannels& colour, const std::string& source) {
+    for (int c = 0; c < list.num_channels; ++c) {
+        const exr_attr_chlist_entry_t& entry = list.entries[c];
+        const std::string name(entry.name.str, size_t(entry.name.length));
+        if (colour.grey && (name == "RY" || name == "BY"))
+            fail(source, "luminance/chroma EXR (Y, RY, BY) is not supported; save it as RGB");
+        if (std::find(colour.names.begin(), colour.names.end(), name) == colour.names.end()) continue;
+        if (entry.pixel_type != EXR_PIXEL_HALF && entry.pixel_type != EXR_PIXEL_FLOAT)
+            fail(source, "channel " + name + " is UINT; only HALF and FLOAT are supported");
+        if (entry.x_sampling != 1 || entry.y_sampling != 1) fail(source, "channel " + name + " is sub-sampled; not supported");
+    }
+}
+
+// The part to read: the first non-deep part with colour channels.
+struct Choice {
+    int part = -1;
+    ColourChannels colour;
+};
+
+Choice choosePart(const Context& context, const std::string& source) {
+    int parts = 0;
+    context.check(exr_get_count(context.get(), &parts), source, "invalid EXR header");
+    int deep = 0;
+    for (int p = 0; p < parts; ++p) {
+        exr_storage_t storage{};
+        context.check(exr_get_storage(context.get(), p, &storage), source, "invalid EXR header");
+        if (storage == EXR_STORAGE_DEEP_SCANLINE || storage == EXR_STORAGE_DEEP_TILED) {
+            ++deep;
+            continue;
+        }
+        const exr_attr_chlist_t* list = nullptr;
+        context.check(exr_get_channels(context.get(), p, &list), source, "invalid EXR header");
+        if (auto colour = colourChannels(*list)) {
+            checkColourChannels(*list, *colour, source);
+            return {p, *colour};
+        }
+    }
+    if (deep == parts) fail(source, "deep EXR is not supported (it holds samples at depths, not one colour per pixel)");
+    fail(source, parts > 1 ? "no part with R, G, B (or Y) channels in this " + std::to_string(parts) + "-part EXR"
+                           : "no R, G, B (or Y) channels");
+}
+
+// A name from the file for a message: bytes outside printable ASCII shown as '?'.
+std::string printable(std::string name) {
+    for (char& c : name)
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e) c = '?';
+    return name;
+}
+
+// OpenEXR's C++ library 3.1 allocates an attribute's value at the size the file states before
+// reading it (a 400-byte file claiming a 1.8 GB attribute: a fuzz finding), and where an attribute
+// appears twice it keeps the last copy while OpenEXRCore validated the first. So before the C++
+// library parses the headers that OpenEXRCore accepted, every header is walked as the file layout
+// defines it: each attribute's name and type end within the length limit, no name repeats within a
+// header, and each value fits in the bytes that remain. Then both libraries read the same values,
+// and no allocation exceeds the file.
+void checkAttributeLayout(std::span<const uint8_t> bytes, const std::string& source) {
+    const uint32_t flags = uint32_t(bytes[5]) | uint32_t(bytes[6]) << 8 | uint32_t(bytes[7]) << 16;
+    const size_t maxName = (flags & 0x04) ? 255 : 31;  // bit 10 of the version field: long names
+    const bool multiPart = flags & 0x10;                 // bit 12
+    size_t at = 8;
+    auto text = [&](const char* what) {
+        const size_t end = std::min(bytes.size(), at + maxName + 1);
+        const uint8_t* begin = bytes.data() + at;
+        const uint8_t* nul = std::find(begin, bytes.data() + end, uint8_t(0));
+        if (nul == bytes.data() + end)
+            fail(source, std::string("invalid EXR header: attribute ") + what + " at byte " + std::to_string(at) +
+                             " is unterminated or longer than " + std::to_string(maxName) + " characters");
+        std::string value(reinterpret_cast<const char*>(begin), size_t(nul - begin));
+        at += value.size() + 1;
+        return value;
+    };
+    for (int header = 0;; ++header) {
+        std::vector<std::string> names;
+        while (true) {
+            if (at >= bytes.size()) fail(source, "invalid EXR header: the file ends inside header " + std::to_string(header));
+            if (bytes[at] == 0) break;
+            const std::string name = text("name");
+            if (std::find(names.begin(), names.end(), name) != names.end())
+                fail(source, "invalid EXR header: attribute '" + printable(name) + "' appears twice in header " + std::to_string(header));
+            names.push_back(name);
+            text("type");
+            if (bytes.size() - at < 4) fail(source, "invalid EXR header: the file ends inside attribute '" + printable(name) + "'");
+            const int32_t size = int32_t(uint32_t(bytes[at]) | uint32_t(bytes[at + 1]) << 8 | uint32_t(bytes[at + 2]) << 16 |
+                                         uint32_t(bytes[at + 3]) << 24);
+            at += 4;
+            if (size < 0 || uint64_t(size) > bytes.size() - at)
+                fail(source, "invalid EXR header: attribute '" + printable(name) + "' claims " + std::to_string(size) + " bytes, " +
+                                 std::to_string(bytes.size() - at) + " remain");
+            at += size_t(size);
+        }
+        ++at;  // the header's terminating NUL
+        // A multi-part file's header list ends with an empty header (one more NUL).
+        if (!multiPart || (at < bytes.size() && bytes[at] == 0)) return;
+    }
+}
+
+// The file in memory as OpenEXR's C++ library reads it: every read is bounds-checked.
+class MemoryStream final : public Imf::IStream {
+public:
+    explicit MemoryStream(std::span<const uint8_t> bytes) : Imf::IStream("(memory)"), mBytes(bytes) {}
+    bool read(char c[], int n) override {
+        if (n < 0 || uint64_t(n) > mBytes.size() - mPosition) throw std::runtime_error("unexpected end of file");
+        std::memcpy(c, mBytes.data() + mPosition, size_t(n));
+        mPosition += uint64_t(n);
+        return mPosition < mBytes.size();
+    }
+    uint64_t tellg() override { return mPosition; }
+    void seekg(uint64_t position) override {
+        if (position > mBytes.size()) throw std::runtime_error("seek past the end of the file");
+        mPosition = position;
+    }
+
+private:
+    std::span<const uint8_t> mBytes;
+    uint64_t mPosition = 0;
+};
+
+// Decodes the rows of `part` that meet the display window into `env` (display-window sized,
+// zero-filled) through OpenEXR's C++ library, which converts HALF to FLOAT and reads scanline and
+// tiled parts alike (tiled: level 0). The headers were validated by OpenEXRCore before.
+void decodePixels(std::span<const uint8_t> bytes, int part, const ColourChannels& colour, const Box& data,
+                  const Box& display, Environment& env) {
+    const int64_t y0 = std::max(data.minY, display.minY), y1 = std::min(data.maxY, display.maxY);
+    const int64_t x0 = std::max(data.minX, display.minX), x1 = std::min(data.maxX, display.maxX);
+    if (y0 > y1 || x0 > x1) return;  // no data inside the picture
+    MemoryStream stream(bytes);
+    // No threads of OpenEXR's own; a corrupt chunk table is an error, not a reason to scan the file.
+    Imf::MultiPartInputFile file(stream, 0, /*reconstructChunkOffsetTable=*/false);
+    Imf::InputPart input(file, part);
+    // Full data-window rows y0..y1, RGB interleaved (Y lands in R).
+    const int64_t width = data.width(), rows = y1 - y0 + 1;
+    std::vector<float> scratch(size_t(width) * size_t(rows) * 3, 0.0f);
+    Imf::FrameBuffer frame;
+    for (size_t k = 0; k < (colour.grey ? 1u : 3u); ++k)
+        frame.insert(colour.names[k], Imf::Slice::Make(Imf::FLOAT, scratch.data() + k, Imath::V2i(int(data.minX), int(y0)),
+                                                       width, rows, 3 * sizeof(float), size_t(width) * 3 * sizeof(float)));
+    input.setFrameBuffer(frame);
+    input.readPixels(int(y0), int(y1));
+    for (int64_t y = y0; y <= y1; ++y) {
+        const float* from = scratch.data() + (size_t(y - y0) * size_t(width) + size_t(x0 - data.minX)) * 3;
+        float* to = env.texel(uint32_t(x0 - display.minX), uint32_t(y - display.minY));
+        for (int64_t x = x0; x <= x1; ++x, from += 3, to += 3) {
+            to[0] = from[0];
+            to[1] = colour.grey ? from[0] : from[1];
+            to[2] = colour.grey ? from[0] : from[2];
+        }
     }
 }
 
@@ -116,70 +285,46 @@ bool looksLikeExr(std::span<const uint8_t> bytes) {
 
 Environment decodeExr(std::span<const uint8_t> bytes, const std::string& source, const EnvironmentLoadOptions& options) {
     if (!looksLikeExr(bytes)) fail(source, "not an OpenEXR file (bad magic number)");
-    EXRVersion version;
-    if (ParseEXRVersionFromMemory(&version, bytes.data(), bytes.size()) != TINYEXR_SUCCESS)
-        fail(source, bytes.size() < 8 ? "truncated EXR (" + std::to_string(bytes.size()) + " bytes)"
-                                      : "unsupported OpenEXR version field");
-    if (version.multipart) fail(source, "multi-part EXR is not supported");
-    if (version.non_image) fail(source, "deep EXR is not supported");
-    if (version.tiled) fail(source, "tiled EXR is not supported (save it with scanlines)");
+    if (bytes.size() < 8) fail(source, "truncated EXR (" + std::to_string(bytes.size()) + " bytes)");
+    Stream stream{bytes, {}};
+    const Context context(stream, source, options);
+    const Choice choice = choosePart(context, source);
+    const int part = choice.part;
+    exr_const_context_t ctx = context.get();
 
-    HeaderGuard parsed;
-    EXRHeader& header = parsed.header;
-    const char* error = nullptr;
-    if (ParseEXRHeaderFromMemory(&header, &version, bytes.data(), bytes.size(), &error) != TINYEXR_SUCCESS)
-        fail(source, "invalid EXR header: " + takeMessage(error));
-    if (header.tiled) fail(source, "tiled EXR is not supported (save it with scanlines)");
-
-    // 64-bit arithmetic: the window's corners are arbitrary 32-bit integers.
-    const EXRBox2i& window = header.data_window;
-    const int64_t width = int64_t(window.max_x) - window.min_x + 1;
-    const int64_t height = int64_t(window.max_y) - window.min_y + 1;
-    if (width <= 0 || height <= 0)
-        fail(source, "empty or inverted EXR data window (" + std::to_string(window.min_x) + "," +
-                         std::to_string(window.min_y) + ")-(" + std::to_string(window.max_x) + "," +
-                         std::to_string(window.max_y) + ")");
-    checkEnvironmentSize(source, uint64_t(width), uint64_t(height), options);
-
-    // R, G, B (or Y for grey); everything else is ignored.
-    std::array<int, 3> rgb = {-1, -1, -1};
-    int grey = -1;
-    for (int c = 0; c < header.num_channels; ++c) {
-        const char* name = header.channels[c].name;
-        const int index = !std::strcmp(name, "R") ? 0 : !std::strcmp(name, "G") ? 1 : !std::strcmp(name, "B") ? 2 : -1;
-        if (index < 0 && std::strcmp(name, "Y")) continue;
-        if (header.pixel_types[c] != TINYEXR_PIXELTYPE_HALF && header.pixel_types[c] != TINYEXR_PIXELTYPE_FLOAT)
-            fail(source, std::string("channel ") + name + " is UINT; only HALF and FLOAT are supported");
-        if (header.channels[c].x_sampling != 1 || header.channels[c].y_sampling != 1)
-            fail(source, std::string("channel ") + name + " is sub-sampled; not supported");
-        if (index >= 0) rgb[size_t(index)] = c;
-        else grey = c;
-        header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
-    }
-    if (rgb[0] < 0 || rgb[1] < 0 || rgb[2] < 0) {
-        if (grey < 0) fail(source, "no R, G, B (or Y) channels");
-        rgb = {grey, grey, grey};
-    }
-
-    checkPizChunks(bytes, header, width, height, source);
-    ImageGuard loaded(header.num_channels);
-    EXRImage& image = loaded.image;
-    if (LoadEXRImageFromMemory(&image, &header, bytes.data(), bytes.size(), &error) != TINYEXR_SUCCESS) {
-        loaded.forget();
-        fail(source, "cannot decode EXR pixels: " + takeMessage(error));
-    }
-    if (!image.images || image.width != width || image.height != height)
-        fail(source, "cannot decode EXR pixels: unexpected image layout");
+    exr_attr_box2i_t dataBox{}, displayBox{};
+    context.check(exr_get_data_window(ctx, part, &dataBox), source, "invalid EXR header");
+    context.check(exr_get_display_window(ctx, part, &displayBox), source, "invalid EXR header");
+    const Box data = box(dataBox), display = box(displayBox);
+    if (display.width() <= 0 || display.height() <= 0)
+        fail(source, "empty or inverted EXR display window " + display.text());
+    checkEnvironmentSize(source, uint64_t(display.width()), uint64_t(display.height()), options);
 
     Environment env;
     env.source = source;
-    env.width = uint32_t(width);
-    env.height = uint32_t(height);
-    env.rgb.resize(env.texelCount() * 3);
-    const size_t count = env.texelCount();
-    for (size_t c = 0; c < 3; ++c) {
-        const float* plane = reinterpret_cast<const float*>(image.images[rgb[c]]);
-        for (size_t i = 0; i < count; ++i) env.rgb[i * 3 + c] = plane[i];
+    env.width = uint32_t(display.width());
+    env.height = uint32_t(display.height());
+    env.rgb.assign(env.texelCount() * 3, 0.0f);
+
+    int parts = 0;
+    context.check(exr_get_count(ctx, &parts), source, "invalid EXR header");
+    if (parts > 1) {
+        const char* name = nullptr;
+        const std::string named = exr_get_name(ctx, part, &name) == EXR_ERR_SUCCESS && name ? " '" + printable(name) + "'" : "";
+        env.notes.push_back(source + ": " + std::to_string(parts) + "-part EXR: part " + std::to_string(part) + named +
+                            " used (the first with " + (choice.colour.grey ? "Y" : "R, G, B") + ")");
+    }
+    const bool covered = data.minX <= display.minX && data.minY <= display.minY && data.maxX >= display.maxX &&
+                         data.maxY >= display.maxY;
+    if (!covered)
+        env.notes.push_back(source + ": the data window " + data.text() + " does not cover the display window " +
+                            display.text() + "; the rest is black");
+
+    checkAttributeLayout(bytes, source);
+    try {
+        decodePixels(bytes, part, choice.colour, data, display, env);
+    } catch (const std::exception& e) {
+        fail(source, "cannot decode EXR pixels: " + oneLine(e.what()));
     }
     return env;
 }

@@ -1,11 +1,18 @@
 #pragma once
-// Internal to loadEnvironment: OpenEXR equirectangular maps through tinyexr's EXRHeader API.
+// Internal to loadEnvironment: OpenEXR equirectangular maps through the reference implementation
+// (Debian's libopenexr-dev 3.1). Its C library, OpenEXRCore, parses and validates the headers first:
+// every attribute against the file's size, the data window against our limits (per call, no global
+// state), before any table or pixel buffer is sized from them. Its C++ library then decodes the
+// pixels: OpenEXRCore 3.1 has no DWAA/DWAB decoder, the C++ library has every one.
 //
-// Accepted: single-part scanline images with R, G, B channels (an A channel and any others are
-// ignored) or a single Y channel (grey), each HALF or FLOAT, any compression tinyexr reads (none,
-// RLE, ZIPS, ZIP, PIZ). Rejected with a clear message: multi-part, deep and tiled files, UINT or
-// sub-sampled channels, files without R, G, B (or Y). The data window's top row (min y) becomes row
-// 0; its size is checked against the load options before tinyexr allocates any pixels.
+// Accepted: scanline and tiled parts (the full-resolution level of a mipmapped or ripmapped file),
+// every compression OpenEXR has (none, RLE, ZIPS, ZIP, PIZ, PXR24, B44, B44A, DWAA, DWAB), HALF
+// and FLOAT channels: R, G, B (an A channel and any others are ignored) or a single Y channel
+// (grey). The picture is the display window: data outside it is cropped, display pixels without
+// data are black (the format's convention), with a note. Multi-part files: the first non-deep part
+// with R, G, B (or Y) is used, with a note naming it. Refused with a one-line error: deep images,
+// UINT or sub-sampled colour channels, luminance/chroma files (Y with RY, BY), files without R, G,
+// B or Y, and display or data windows beyond the load options' limits.
 
 #include "scene/environment.h"
 
@@ -18,9 +25,9 @@ namespace candela::scene {
 // True when `bytes` starts with the OpenEXR magic number 76 2f 31 01.
 bool looksLikeExr(std::span<const uint8_t> bytes);
 
-// Decodes a whole OpenEXR file held in `bytes`; `source` (the path) prefixes every error. The
-// result is not sanitized (half and float channels may hold NaN, Inf and negatives). Throws
-// UserError "SOURCE: problem" for anything malformed or unsupported.
+// Decodes a whole OpenEXR file held in `bytes`; `source` (the path) prefixes every error and
+// note. The result is not sanitized (half and float channels may hold NaN, Inf and negatives).
+// Throws UserError "SOURCE: problem" for anything malformed or unsupported.
 Environment decodeExr(std::span<const uint8_t> bytes, const std::string& source, const EnvironmentLoadOptions& options);
 
 }  // namespace candela::scene

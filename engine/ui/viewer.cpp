@@ -171,6 +171,7 @@ bool Viewer::openFile(const std::filesystem::path& path, std::optional<uint32_t>
             // runs the precompute in the next frame.
             auto loaded = std::make_unique<scene::Environment>(scene::loadEnvironment(path));
             for (const std::string& warning : loaded->warnings) log::warn(warning);
+            for (const std::string& note : loaded->notes) log::info(note);
             mRenderer->waitIdle();
             mEnvironment = std::move(loaded);
             // Show it: the skybox becomes the background, as `--env` does with the default background.

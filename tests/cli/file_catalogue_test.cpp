@@ -183,7 +183,7 @@ Bytes goodHdr() { return HdrWriter{}.write(testTexels(64, 32), 64, 32); }
 // A small valid OpenEXR file (half RGB, ZIP).
 Bytes goodExr(float special = 1.0f) {
     auto plane = [&](float base) {
-        ExrChannel c{"", TINYEXR_PIXELTYPE_HALF, std::vector<float>(64 * 32, base)};
+        ExrChannel c{"", ExrType::Half, std::vector<float>(64 * 32, base)};
         c.values[5] = special;  // texel 5 of every channel
         return c;
     };
@@ -286,7 +286,7 @@ std::vector<Row> catalogue() {
               "truncated: the file ends (" + std::to_string(keep) + " bytes) inside scanline");
     const size_t exrSize = goodExr().size();
     for (const auto& [keep, fragment] : std::vector<std::pair<size_t, std::string>>{
-             {3, "not an OpenEXR file (bad magic number)"}, {8, "invalid EXR header: Insufficient data size"},
+             {3, "not an OpenEXR file (bad magic number)"}, {8, "invalid EXR header: End of file attempting to read header"},
              {40, "invalid EXR header"}, {200, "invalid EXR header"}, {exrSize / 2, "invalid EXR header"},
              {exrSize - 1, "cannot decode EXR pixels"}})
         error("truncated", "Exr" + std::to_string(keep), truncated("env.exr", [] { return goodExr(); }, keep), fragment);
@@ -348,7 +348,7 @@ std::vector<Row> catalogue() {
         }
         setU32(b, headerEnd + 1, 0x7FFFFFF0);
         return b;
-    }), "cannot decode EXR pixels: Invalid offset value");
+    }), "cannot decode EXR pixels: seek past the end of the file");
 
     // -- JSON type errors.
     error("JSON type", "VersionNumber", gltfEdited([](Json& j) { j["asset"]["version"] = 2; }), "version");
@@ -439,12 +439,12 @@ std::vector<Row> catalogue() {
         Bytes b = goodExr();
         for (const char* window : {"dataWindow", "displayWindow"}) setU32(b, exrAttribute(b, window) + 8, 999999);  // xMax
         return b;
-    }), "exceeds the limit");
+    }), "invalid EXR header: Invalid width (1000000) too large (max 16384)");
     error("absurd size", "ExrInvertedWindow", bytesAs("env.exr", [] {
         Bytes b = goodExr();
         setU32(b, exrAttribute(b, "dataWindow"), 100);  // xMin > xMax
         return b;
-    }), "empty or inverted EXR data window (100,0)-(63,31)");
+    }), "invalid EXR header: Invalid data window (100, 0 - 63, 31)");
 
     // -- Decompression bombs: small files that would decode to far more memory.
     error("decompression bomb", "Png16kSquare", [](const fs::path& dir) {
@@ -471,7 +471,7 @@ std::vector<Row> catalogue() {
             setU32(b, exrAttribute(b, window) + 12, 32767);
         }
         return b;
-    }), "exceeds the limit");
+    }), "invalid EXR header: Invalid width (65536) too large (max 16384)");
 
     // -- URIs escaping the model's folder.
     auto escaping = [&](std::string name, std::string uri, std::string fragment) {
@@ -556,6 +556,33 @@ std::vector<Row> catalogue() {
     warning("NaN/Inf", "ExrTexelsNanInf", bytesAs("env.exr", [] { return goodExr(kNan); }), "replaced", true);
     warning("NaN/Inf", "ExrTexelInf", bytesAs("env.exr", [] { return goodExr(kInf); }), "replaced", true);
     warning("NaN/Inf", "ExrTexelNegative", bytesAs("env.exr", [] { return goodExr(-4.0f); }), "replaced", true);
+
+    // -- EXR structure: deep data and luminance/chroma are refused; a multi-part file and a data
+    //    window smaller than the display window render with a note.
+    auto rgbPart = [](const std::string& name, ExrLayout layout = {}) {
+        std::vector<ExrChannel> channels;
+        for (const char* c : {"R", "G", "B"}) channels.push_back({c, ExrType::Half, std::vector<float>(64 * 32, 0.5f)});
+        return ExrPart{name, 64, 32, channels, layout, false};
+    };
+    error("EXR structure", "ExrDeep", bytesAs("env.exr", [&] {
+        ExrPart deep = rgbPart("deep", {Imf::ZIPS_COMPRESSION});
+        deep.deep = true;
+        return makeExrParts({deep});
+    }), "deep EXR is not supported");
+    error("EXR structure", "ExrLuminanceChroma", bytesAs("env.exr", [] {
+        return makeExr(64, 32, {{"Y", ExrType::Half, std::vector<float>(64 * 32, 0.5f)},
+                                {"RY", ExrType::Half, std::vector<float>(32 * 16, 0.0f), 2},
+                                {"BY", ExrType::Half, std::vector<float>(32 * 16, 0.0f), 2}});
+    }), "luminance/chroma EXR (Y, RY, BY) is not supported");
+    note("EXR structure", "ExrMultiPart", bytesAs("env.exr", [&] {
+        ExrPart depth{"depth", 64, 32, {{"Z", ExrType::Float, std::vector<float>(64 * 32, 1.0f)}}, {}, false};
+        return makeExrParts({depth, rgbPart("beauty")});
+    }), "2-part EXR: part 1 'beauty' used", true);
+    note("EXR structure", "ExrDataWindowInsideDisplay", bytesAs("env.exr", [&] {
+        ExrLayout layout;
+        layout.display = Imath::Box2i({-8, -4}, {71, 35});
+        return makeExrParts({rgbPart("", layout)});
+    }), "does not cover the display window", true);
 
     // -- Degenerate geometry.
     note("degenerate", "ZeroAreaTriangle", gltfOf([] {

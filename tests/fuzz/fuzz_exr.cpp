@@ -1,5 +1,5 @@
-// libFuzzer entry point: the OpenEXR reader (tinyexr's header and decompression, Candela's channel
-// selection and size checks).
+// libFuzzer entry point: the OpenEXR reader (OpenEXRCore's header parsing and decompression,
+// Candela's part and channel choice, window handling and size checks).
 #include "fuzz_targets.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

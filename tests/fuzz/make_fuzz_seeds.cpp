@@ -6,8 +6,9 @@
 //  - HDR: the environment tests' Radiance writer (flat, new-style RLE, old-style RLE, flipped axes,
 //    EXPOSURE and comment headers) and crops of ../shared/assets/environments re-encoded with the
 //    header lines of the original files.
-//  - EXR: tinyexr-written files in half and float, every compression tinyexr writes, RGB, RGBA,
-//    Y and extra channels.
+//  - EXR: files written with OpenEXR's C++ library (the tests' writer): half and float scanlines
+//    under every compression, tiled files (one level, mipmaps, ripmaps), RGBA, Y, extra and UINT
+//    channels, data window ≠ display window, multi-part files and a deep part.
 // Seeds are generated rather than committed so that they follow the writers the tests use.
 #include "environment_test_util.h"
 #include "draco_test_util.h"
@@ -243,26 +244,43 @@ void makeHdrSeeds(const fs::path& dir) {
 
 void makeExrSeeds(const fs::path& dir) {
     const uint32_t w = 16, h = 8;
-    auto channel = [&](const std::string& name, int type, float scale) {
+    auto channel = [&](const std::string& name, ExrType type, float scale) {
         ExrChannel c{name, type, std::vector<float>(size_t(w) * h)};
         for (size_t i = 0; i < c.values.size(); ++i) c.values[i] = scale * float((i * 37) % 101) / 7.0f;
         return c;
     };
+    auto rgb = [&](ExrType type) { return std::vector<ExrChannel>{channel("R", type, 1), channel("G", type, 2), channel("B", type, 3)}; };
     int count = 0;
-    for (int compression : {TINYEXR_COMPRESSIONTYPE_NONE, TINYEXR_COMPRESSIONTYPE_RLE, TINYEXR_COMPRESSIONTYPE_ZIPS,
-                            TINYEXR_COMPRESSIONTYPE_ZIP, TINYEXR_COMPRESSIONTYPE_PIZ}) {
-        for (int type : {TINYEXR_PIXELTYPE_HALF, TINYEXR_PIXELTYPE_FLOAT}) {
-            const std::string suffix = std::to_string(compression) + (type == TINYEXR_PIXELTYPE_HALF ? "_half" : "_float");
-            write(dir / ("rgb_" + suffix + ".exr"), makeExr(w, h, {channel("R", type, 1), channel("G", type, 2), channel("B", type, 3)}, compression));
-            ++count;
-        }
-    }
-    write(dir / "rgba_half.exr", makeExr(w, h, {channel("R", TINYEXR_PIXELTYPE_HALF, 1), channel("G", TINYEXR_PIXELTYPE_HALF, 1),
-                                                 channel("B", TINYEXR_PIXELTYPE_HALF, 1), channel("A", TINYEXR_PIXELTYPE_HALF, 1)}));
-    write(dir / "y_float.exr", makeExr(w, h, {channel("Y", TINYEXR_PIXELTYPE_FLOAT, 5)}, TINYEXR_COMPRESSIONTYPE_PIZ));
-    write(dir / "extra_channels.exr", makeExr(w, h, {channel("R", TINYEXR_PIXELTYPE_FLOAT, 1), channel("G", TINYEXR_PIXELTYPE_FLOAT, 1),
-                                                      channel("B", TINYEXR_PIXELTYPE_FLOAT, 1), channel("Z", TINYEXR_PIXELTYPE_FLOAT, 1)}));
-    count += 3;
+    auto save = [&](const std::string& name, const Bytes& bytes) {
+        write(dir / name, bytes);
+        ++count;
+    };
+    for (Imf::Compression compression : candela::test::kExrCompressions)
+        for (ExrType type : {ExrType::Half, ExrType::Float})
+            save("rgb_" + candela::test::compressionName(compression) + (type == ExrType::Half ? "_half" : "_float") + ".exr",
+                 makeExr(w, h, rgb(type), {compression}));
+    for (Imf::LevelMode levels : {Imf::ONE_LEVEL, Imf::MIPMAP_LEVELS, Imf::RIPMAP_LEVELS})
+        for (Imf::Compression compression : {Imf::ZIP_COMPRESSION, Imf::PIZ_COMPRESSION, Imf::DWAA_COMPRESSION})
+            save("tiled_" + std::to_string(int(levels)) + "_" + candela::test::compressionName(compression) + ".exr",
+                 makeExr(w, h, rgb(ExrType::Half), {compression, true, 8, levels}));
+    std::vector<ExrChannel> rgba = rgb(ExrType::Half);
+    rgba.push_back(channel("A", ExrType::Half, 1));
+    save("rgba_half.exr", makeExr(w, h, rgba));
+    save("y_float.exr", makeExr(w, h, {channel("Y", ExrType::Float, 5)}, {Imf::PIZ_COMPRESSION}));
+    std::vector<ExrChannel> extra = rgb(ExrType::Float);
+    extra.push_back(channel("Z", ExrType::Float, 1));
+    extra.push_back(channel("id", ExrType::Uint, 1));
+    save("extra_channels.exr", makeExr(w, h, extra, {Imf::RLE_COMPRESSION}));
+    ExrLayout windows;
+    windows.dataX = -3;
+    windows.dataY = 2;
+    windows.display = Imath::Box2i({0, 0}, {15, 7});
+    save("windows.exr", makeExr(w, h, rgb(ExrType::Half), windows));
+    const ExrPart z{"depth", w, h, {channel("Z", ExrType::Float, 1)}, {}, false};
+    const ExrPart deep{"deep", w, h, rgb(ExrType::Float), {Imf::ZIPS_COMPRESSION}, true};
+    const ExrPart colour{"beauty", w, h, rgb(ExrType::Half), {Imf::PIZ_COMPRESSION, true, 8}, false};
+    save("multipart.exr", makeExrParts({z, deep, colour}));
+    save("deep.exr", makeExrParts({deep}));
     std::printf("exr seeds: %d\n", count);
 }
 

@@ -1,15 +1,15 @@
 #pragma once
 // Helpers for the environment tests: a temporary folder, an independent Radiance RGBE writer (flat,
-// new-style RLE and old-style RLE scanlines, any header) and EXR writers through tinyexr, so every
-// test builds its input files itself.
+// new-style RLE and old-style RLE scanlines, any header) and EXR writers through OpenEXR's C++
+// library (exr_test_writer.h), so every test builds its input files itself.
 
 #include "core/check.h"
 #include "scene/environment.h"
 
+#include "exr_test_writer.h"
 #include "temp_dir.h"
 
 #include <gtest/gtest.h>
-#include <tinyexr.h>
 
 #include <algorithm>
 #include <array>
@@ -168,68 +168,13 @@ inline std::vector<Rgbe> testTexels(uint32_t width, uint32_t height) {
 
 // ---- EXR -----------------------------------------------------------------------------------------
 
-struct ExrChannel {
-    std::string name;
-    int pixelType = TINYEXR_PIXELTYPE_FLOAT;  // stored type; values are given as floats (or uints)
-    std::vector<float> values;                // width × height, top row first
-};
-
-// An OpenEXR file in memory through tinyexr's EXRHeader API (scanlines, `compression`).
-inline Bytes makeExr(uint32_t width, uint32_t height, std::vector<ExrChannel> channels,
-                     int compression = TINYEXR_COMPRESSIONTYPE_ZIP) {
-    // EXR channels are stored sorted by name.
-    std::sort(channels.begin(), channels.end(), [](const ExrChannel& a, const ExrChannel& b) { return a.name < b.name; });
-    EXRHeader header;
-    InitEXRHeader(&header);
-    EXRImage image;
-    InitEXRImage(&image);
-    std::vector<EXRChannelInfo> infos(channels.size());
-    std::vector<int> types(channels.size()), requested(channels.size());
-    std::vector<std::vector<uint32_t>> uints(channels.size());
-    std::vector<unsigned char*> planes(channels.size());
-    for (size_t c = 0; c < channels.size(); ++c) {
-        std::memset(&infos[c], 0, sizeof(EXRChannelInfo));
-        std::strncpy(infos[c].name, channels[c].name.c_str(), 255);
-        // Values are passed as FLOAT (converted to half by tinyexr) or UINT.
-        const bool isUint = channels[c].pixelType == TINYEXR_PIXELTYPE_UINT;
-        types[c] = isUint ? TINYEXR_PIXELTYPE_UINT : TINYEXR_PIXELTYPE_FLOAT;
-        requested[c] = channels[c].pixelType;
-        if (isUint) {
-            uints[c].assign(channels[c].values.begin(), channels[c].values.end());
-            planes[c] = reinterpret_cast<unsigned char*>(uints[c].data());
-        } else {
-            planes[c] = reinterpret_cast<unsigned char*>(channels[c].values.data());
-        }
-    }
-    header.num_channels = int(channels.size());
-    header.channels = infos.data();
-    header.pixel_types = types.data();
-    header.requested_pixel_types = requested.data();
-    header.compression_type = compression;
-    image.num_channels = int(channels.size());
-    image.images = planes.data();
-    image.width = int(width);
-    image.height = int(height);
-    unsigned char* memory = nullptr;
-    const char* error = nullptr;
-    const size_t size = SaveEXRImageToMemory(&image, &header, &memory, &error);
-    if (size == 0) {
-        ADD_FAILURE() << "SaveEXRImageToMemory: " << (error ? error : "?");
-        if (error) FreeEXRErrorMessage(error);
-        return {};
-    }
-    Bytes bytes(memory, memory + size);
-    std::free(memory);
-    return bytes;
-}
-
-// RGB(A) float planes from interleaved RGB texels.
-inline std::vector<ExrChannel> rgbChannels(const std::vector<float>& rgb, int pixelType, bool alpha = false) {
-    std::vector<ExrChannel> channels = {{"R", pixelType, {}}, {"G", pixelType, {}}, {"B", pixelType, {}}};
-    for (size_t i = 0; i < rgb.size(); ++i) channels[i % 3].values.push_back(rgb[i]);
-    if (alpha) channels.push_back({"A", pixelType, std::vector<float>(rgb.size() / 3, 1.0f)});
-    return channels;
-}
+using candela::test::ExrChannel;
+using candela::test::ExrLayout;
+using candela::test::ExrPart;
+using candela::test::ExrType;
+using candela::test::makeExr;
+using candela::test::makeExrParts;
+using candela::test::rgbChannels;
 
 // Solid-angle-weighted mean luminance (Rec. 709 weights) of an equirectangular map.
 inline double meanLuminance(const Environment& env) {

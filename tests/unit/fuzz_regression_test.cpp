@@ -4,6 +4,9 @@
 // no sanitizer report. New findings are added as files; see docs/fuzzing.md.
 #include "fuzz_targets.h"
 
+#include "core/check.h"
+#include "scene/exr_reader.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -50,6 +53,18 @@ TEST(FuzzRegressions, ExrInputsLoadOrFailCleanly) {
         SCOPED_TRACE(file.string());
         const std::vector<uint8_t> bytes = bytesOf(file);
         fuzzExr(bytes.data(), bytes.size());
+    }
+}
+
+// The finding behind checkAttributeLayout (docs/fuzzing.md, finding 8): OpenEXRCore accepts this
+// header, OpenEXR's C++ library would allocate the 1.8 GB its mangled attribute claims. Refused first.
+TEST(FuzzRegressions, ExrAttributeBeyondTheFileIsRefusedBeforeTheCppLibraryReadsIt) {
+    const std::vector<uint8_t> bytes = bytesOf(kRegressions / "exr" / "attribute-size-past-end.exr");
+    try {
+        scene::decodeExr(bytes, "a.exr", {});
+        ADD_FAILURE() << "loaded";
+    } catch (const UserError& e) {
+        EXPECT_EQ(std::string(e.what()), std::string("a.exr: invalid EXR header: attribute 'screenWiv/1") + std::string(3, '?') + "' claims 1851877475 bytes, 385 remain");
     }
 }
 
