@@ -6,6 +6,7 @@
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfInputPart.h>
 #include <OpenEXR/ImfMultiPartInputFile.h>
+#include <OpenEXR/ImfThreading.h>
 #include <openexr.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <cstring>
 #include <exception>
 #include <optional>
+#include <thread>
 #include <vector>
 
 namespace candela::scene {
@@ -176,13 +178,68 @@ std::string printable(std::string name) {
     return name;
 }
 
-// OpenEXR's C++ library 3.1 allocates an attribute's value at the size the file states before
-// reading it (a 400-byte file claiming a 1.8 GB attribute: a fuzz finding), and where an attribute
-// appears twice it keeps the last copy while OpenEXRCore validated the first. So before the C++
-// library parses the headers that OpenEXRCore accepted, every header is walked as the file layout
-// defines it: each attribute's name and type end within the length limit, no name repeats within a
-// header, and each value fits in the bytes that remain. Then both libraries read the same values,
-// and no allocation exceeds the file.
+// The bytes a value of a fixed-size attribute type takes (the file layout's table), 0 for the
+// types whose size varies.
+size_t fixedValueSize(const std::string& type) {
+    static const std::pair<const char*, size_t> sizes[] = {
+        {"box2i", 16}, {"box2f", 16}, {"compression", 1}, {"deepImageState", 1}, {"double", 8}, {"envmap", 1},
+        {"float", 4}, {"int", 4}, {"keycode", 28}, {"lineOrder", 1}, {"m33f", 36}, {"m33d", 72}, {"m44f", 64},
+        {"m44d", 128}, {"rational", 8}, {"tiledesc", 9}, {"timecode", 8}, {"v2i", 8}, {"v2f", 8}, {"v2d", 16},
+        {"v3i", 12}, {"v3f", 12}, {"v3d", 24}, {"chromaticities", 32}};
+    for (const auto& [name, size] : sizes)
+        if (type == name) return size;
+    return 0;
+}
+
+// Whether a variable-size value of `type` fills exactly its `size` bytes at `value`, as OpenEXR's
+// C++ library reads it: a channel list runs to its empty name, a preview holds width × height
+// RGBA8 pixels after its two sizes, a string vector is length-prefixed strings, a float vector
+// whole floats. (Strings and unknown types are read by their size.)
+bool valueFillsItsSize(const std::string& type, const uint8_t* value, size_t size) {
+    if (type == "chlist") {
+        size_t at = 0;
+        while (true) {
+            const uint8_t* nul = std::find(value + at, value + size, uint8_t(0));
+            if (nul == value + size) return false;
+            const size_t name = size_t(nul - (value + at));
+            at += name + 1;
+            if (name == 0) return at == size;
+            if (size - at < 16) return false;  // pixel type, pLinear and reserved, x and y sampling
+            at += 16;
+        }
+    }
+    if (type == "stringvector") {  // strings, each after its int32 length
+        size_t at = 0;
+        while (at < size) {
+            if (size - at < 4) return false;
+            const int32_t length = int32_t(uint32_t(value[at]) | uint32_t(value[at + 1]) << 8 |
+                                           uint32_t(value[at + 2]) << 16 | uint32_t(value[at + 3]) << 24);
+            at += 4;
+            if (length < 0 || size_t(length) > size - at) return false;
+            at += size_t(length);
+        }
+        return true;
+    }
+    if (type == "floatvector") return size % 4 == 0;
+    if (type == "preview") {
+        if (size < 8) return false;
+        const uint64_t width = uint64_t(value[0]) | uint64_t(value[1]) << 8 | uint64_t(value[2]) << 16 | uint64_t(value[3]) << 24;
+        const uint64_t height = uint64_t(value[4]) | uint64_t(value[5]) << 8 | uint64_t(value[6]) << 16 | uint64_t(value[7]) << 24;
+        return width * height * 4 == size - 8;
+    }
+    return true;
+}
+
+// OpenEXR's C++ library 3.1 trusts an attribute's stated size where OpenEXRCore checks it: it
+// allocates an unknown attribute's value at that size before reading (a 650-byte file claiming a
+// 1.8 GB attribute: a fuzz finding), reads a known type's natural size whatever the file says (a
+// box2i claiming 35 bytes put it 19 bytes off, into a string it sized at 1.9 GB: a second
+// finding), reads a channel list to its terminator, and keeps the last copy of a repeated attribute
+// where OpenEXRCore validated the first. So before the C++ library parses the headers OpenEXRCore
+// accepted, every header is walked as the file layout defines it: names and types end within the
+// length limit, no name repeats within a header, every value fits in the bytes that remain, a
+// fixed-size type has exactly its size, and a channel list or preview fills exactly its own. Then
+// both libraries read the same attributes from the same bytes, and no allocation exceeds the file.
 void checkAttributeLayout(std::span<const uint8_t> bytes, const std::string& source) {
     const uint32_t flags = uint32_t(bytes[5]) | uint32_t(bytes[6]) << 8 | uint32_t(bytes[7]) << 16;
     const size_t maxName = (flags & 0x04) ? 255 : 31;  // bit 10 of the version field: long names
@@ -208,7 +265,7 @@ void checkAttributeLayout(std::span<const uint8_t> bytes, const std::string& sou
             if (std::find(names.begin(), names.end(), name) != names.end())
                 fail(source, "invalid EXR header: attribute '" + printable(name) + "' appears twice in header " + std::to_string(header));
             names.push_back(name);
-            text("type");
+            const std::string type = text("type");
             if (bytes.size() - at < 4) fail(source, "invalid EXR header: the file ends inside attribute '" + printable(name) + "'");
             const int32_t size = int32_t(uint32_t(bytes[at]) | uint32_t(bytes[at + 1]) << 8 | uint32_t(bytes[at + 2]) << 16 |
                                          uint32_t(bytes[at + 3]) << 24);
@@ -216,6 +273,10 @@ void checkAttributeLayout(std::span<const uint8_t> bytes, const std::string& sou
             if (size < 0 || uint64_t(size) > bytes.size() - at)
                 fail(source, "invalid EXR header: attribute '" + printable(name) + "' claims " + std::to_string(size) + " bytes, " +
                                  std::to_string(bytes.size() - at) + " remain");
+            const size_t fixed = fixedValueSize(type);
+            if ((fixed && size_t(size) != fixed) || !valueFillsItsSize(type, bytes.data() + at, size_t(size)))
+                fail(source, "invalid EXR header: attribute '" + printable(name) + "' of type " + printable(type) + " has " +
+                                 std::to_string(size) + " bytes, not what its type holds");
             at += size_t(size);
         }
         ++at;  // the header's terminating NUL
@@ -245,35 +306,52 @@ private:
     uint64_t mPosition = 0;
 };
 
+// OpenEXR decodes chunks on its process-wide thread pool: sized once, to the machine's cores.
+int decodeThreads() {
+    static const int threads = [] {
+        const int n = int(std::max(1u, std::thread::hardware_concurrency()));
+        Imf::setGlobalThreadCount(n);
+        return n;
+    }();
+    return threads;
+}
+
 // Decodes the rows of `part` that meet the display window into `env` (display-window sized,
 // zero-filled) through OpenEXR's C++ library, which converts HALF to FLOAT and reads scanline and
-// tiled parts alike (tiled: level 0). The headers were validated by OpenEXRCore before.
+// tiled parts alike (tiled: level 0). The headers were validated by OpenEXRCore before. When the
+// data window's columns lie within the display window (nearly every file) the library writes into
+// `env` directly; otherwise (overscan) whole data rows go to a scratch block first and the display
+// part is copied out. Y lands in R and is copied to G and B.
 void decodePixels(std::span<const uint8_t> bytes, int part, const ColourChannels& colour, const Box& data,
                   const Box& display, Environment& env) {
     const int64_t y0 = std::max(data.minY, display.minY), y1 = std::min(data.maxY, display.maxY);
     const int64_t x0 = std::max(data.minX, display.minX), x1 = std::min(data.maxX, display.maxX);
     if (y0 > y1 || x0 > x1) return;  // no data inside the picture
     MemoryStream stream(bytes);
-    // No threads of OpenEXR's own; a corrupt chunk table is an error, not a reason to scan the file.
-    Imf::MultiPartInputFile file(stream, 0, /*reconstructChunkOffsetTable=*/false);
+    // A corrupt chunk table is an error, not a reason to scan the file for chunks.
+    Imf::MultiPartInputFile file(stream, decodeThreads(), /*reconstructChunkOffsetTable=*/false);
     Imf::InputPart input(file, part);
-    // Full data-window rows y0..y1, RGB interleaved (Y lands in R).
-    const int64_t width = data.width(), rows = y1 - y0 + 1;
-    std::vector<float> scratch(size_t(width) * size_t(rows) * 3, 0.0f);
+
+    const bool direct = data.minX >= display.minX && data.maxX <= display.maxX;
+    const int64_t rows = y1 - y0 + 1;
+    std::vector<float> scratch(direct ? 0 : size_t(data.width()) * size_t(rows) * 3);
+    float* target = direct ? env.texel(uint32_t(data.minX - display.minX), uint32_t(y0 - display.minY)) : scratch.data();
+    const size_t rowStride = (direct ? size_t(env.width) : size_t(data.width())) * 3 * sizeof(float);
     Imf::FrameBuffer frame;
     for (size_t k = 0; k < (colour.grey ? 1u : 3u); ++k)
-        frame.insert(colour.names[k], Imf::Slice::Make(Imf::FLOAT, scratch.data() + k, Imath::V2i(int(data.minX), int(y0)),
-                                                       width, rows, 3 * sizeof(float), size_t(width) * 3 * sizeof(float)));
+        frame.insert(colour.names[k], Imf::Slice::Make(Imf::FLOAT, target + k, Imath::V2i(int(data.minX), int(y0)),
+                                                       data.width(), rows, 3 * sizeof(float), rowStride));
     input.setFrameBuffer(frame);
     input.readPixels(int(y0), int(y1));
+
     for (int64_t y = y0; y <= y1; ++y) {
-        const float* from = scratch.data() + (size_t(y - y0) * size_t(width) + size_t(x0 - data.minX)) * 3;
         float* to = env.texel(uint32_t(x0 - display.minX), uint32_t(y - display.minY));
-        for (int64_t x = x0; x <= x1; ++x, from += 3, to += 3) {
-            to[0] = from[0];
-            to[1] = colour.grey ? from[0] : from[1];
-            to[2] = colour.grey ? from[0] : from[2];
-        }
+        const float* from = direct ? to : scratch.data() + (size_t(y - y0) * size_t(data.width()) + size_t(x0 - data.minX)) * 3;
+        if (!direct || colour.grey)
+            for (int64_t x = x0; x <= x1; ++x, from += 3, to += 3) {
+                const float r = from[0], g = colour.grey ? r : from[1], b = colour.grey ? r : from[2];
+                to[0] = r, to[1] = g, to[2] = b;
+            }
     }
 }
 

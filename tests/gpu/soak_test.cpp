@@ -6,6 +6,7 @@
 #include "scene/builtin_scenes.h"
 #include "soak.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -30,8 +31,13 @@ TEST_F(GpuTest, SoakKeepsObjectsAndMemoryFlatAfterWarmUp) {
         EXPECT_EQ(samples[i].liveAllocations, reference.liveAllocations) << "frame " << samples[i].frame;
     }
     // The C heap in live allocations must not grow (the RSS moves in steps with memory the driver
-    // maps outside the heap: reported by `candela soak`, not a pass/fail figure). On failure every
-    // sample is printed, the heap split into arena and separately mapped blocks.
+    // maps outside the heap: reported by `candela soak`, not a pass/fail figure). It is held in two
+    // parts (docs/robustness.md, "The CI flake"): the arena — small allocations, Candela's, the
+    // loader's, the validation layer's — must not grow by 2 MiB; blocks mapped on their own are
+    // lavapipe's device memory and llvmpipe's per-frame bins, whole blocks of up to tens of MB that
+    // are alive at a sample or not by timing, so a leak of them is one that stays: the smallest of
+    // the last three samples (frames 500–600) must be within 2 MiB of the reference. On failure
+    // every sample is printed.
     std::string table = "frame   heap MiB   of which mapped MiB   RSS MiB";
     for (const SoakSample& s : samples) {
         char line[128];
@@ -39,7 +45,12 @@ TEST_F(GpuTest, SoakKeepsObjectsAndMemoryFlatAfterWarmUp) {
                       double(s.heapMappedBytes) / (1 << 20), double(s.residentBytes) / (1 << 20));
         table += line;
     }
-    EXPECT_LT(double(samples.back().heapBytes), double(reference.heapBytes) + 2.0 * (1 << 20)) << table;
+    const auto arena = [](const SoakSample& s) { return double(s.heapBytes - s.heapMappedBytes); };
+    const auto mapped = [](const SoakSample& s) { return double(s.heapMappedBytes); };
+    constexpr double kLimit = 2.0 * (1 << 20);
+    EXPECT_LT(arena(samples.back()), arena(reference) + kLimit) << table;
+    const double mappedFloor = std::min({mapped(samples[10]), mapped(samples[11]), mapped(samples[12])});
+    EXPECT_LT(mappedFloor, mapped(reference) + kLimit) << table;
     std::printf("%s\n", table.c_str());
 }
 
