@@ -174,6 +174,23 @@ std::vector<BadCase> badCases() {
             setI32(b, exrAttribute(b, "dataWindow", "box2i") + 8, -3);
             return b;
         }, "invalid EXR header: Invalid data window (0, 0 - -3, 7)");
+    // Attribute sizes are checked against their type and the file before anything is allocated
+    // from them (OpenEXRCore's strict header validation; fuzzing found what the lenient one lets by).
+    exr("ExrAttributeBeyondTheFile", [] {
+            Bytes b = validExr();
+            const std::string attribute = std::string("foo") + '\0' + "bar" + '\0';
+            Bytes inserted(attribute.begin(), attribute.end());
+            inserted.insert(inserted.end(), {0x00, 0x00, 0x00, 0x70, 'x', 'y', 'z'});  // 0x70000000 bytes
+            b.insert(b.begin() + 8, inserted.begin(), inserted.end());
+            return b;
+        }, "invalid EXR header: Attribute 'foo', type 'bar': Invalid size 1879048192");
+    exr("ExrWindowOfTheWrongSize", [] {
+            Bytes b = validExr();
+            const size_t at = exrAttribute(b, "dataWindow", "box2i");
+            setI32(b, at - 4, 35);
+            b.insert(b.begin() + std::ptrdiff_t(at + 16), 19, 0);
+            return b;
+        }, "invalid EXR header: Attribute 'dataWindow': Invalid size 35");
     // The display window is the picture we allocate: held to the same limits.
     exr("ExrHugeDisplayWindow", [] {
             Bytes b = validExr();
