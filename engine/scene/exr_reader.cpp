@@ -25,7 +25,7 @@ namespace {
     throw UserError(source + ": " + problem);
 }
 
-// One line of printable characters from OpenEXR's message or exception text.
+// One line without control characters, from OpenEXR's messages, exceptions and part names.
 std::string oneLine(const char* text) {
     std::string out;
     for (const char* c = text; *c && out.size() < 300; ++c)
@@ -177,13 +177,6 @@ Choice choosePart(const Context& context, const std::string& source) {
                            : "no R, G, B (or Y) channels");
 }
 
-// A name from the file for a message: bytes outside printable ASCII shown as '?'.
-std::string printable(std::string name) {
-    for (char& c : name)
-        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e) c = '?';
-    return name;
-}
-
 // The file in memory as OpenEXR's C++ library reads it: every read is bounds-checked.
 class MemoryStream final : public Imf::IStream {
 public:
@@ -293,7 +286,7 @@ Environment decodeExr(std::span<const uint8_t> bytes, const std::string& source,
     context.check(exr_get_count(ctx, &parts), source, "invalid EXR header");
     if (parts > 1) {
         const char* name = nullptr;
-        const std::string named = exr_get_name(ctx, part, &name) == EXR_ERR_SUCCESS && name ? " '" + printable(name) + "'" : "";
+        const std::string named = exr_get_name(ctx, part, &name) == EXR_ERR_SUCCESS && name && *name ? " '" + oneLine(name) + "'" : "";
         env.notes.push_back(source + ": " + std::to_string(parts) + "-part EXR: part " + std::to_string(part) + named +
                             " used (the first with " + (choice.colour.grey ? "Y" : "R, G, B") + ")");
     }

@@ -1,9 +1,10 @@
 #pragma once
 // Internal to loadEnvironment: OpenEXR equirectangular maps through the reference implementation
-// (Debian's libopenexr-dev 3.1). Its C library, OpenEXRCore, parses and validates the headers first:
-// every attribute against the file's size, the data window against our limits (per call, no global
-// state), before any table or pixel buffer is sized from them. Its C++ library then decodes the
-// pixels: OpenEXRCore 3.1 has no DWAA/DWAB decoder, the C++ library has every one.
+// (Debian's libopenexr-dev 3.1). Its C library, OpenEXRCore, parses and strictly validates the
+// headers first: every attribute against its type and the file's size, the data window against our
+// limits (per call, no global state), before any table or pixel buffer is sized from them. Its C++
+// library then decodes the pixels (OpenEXRCore 3.1 has no DWAA/DWAB decoder, the C++ library has
+// every one), on its thread pool, after checking that it read the same windows.
 //
 // Accepted: scanline and tiled parts (the full-resolution level of a mipmapped or ripmapped file),
 // every compression OpenEXR has (none, RLE, ZIPS, ZIP, PIZ, PXR24, B44, B44A, DWAA, DWAB), HALF
