@@ -145,6 +145,38 @@ TEST(ExrWindows, DisplayWindowIsThePictureDataOutsideIsCroppedMissingIsBlack) {
     }
 }
 
+TEST(ExrWindows, DataWindowInsideTheDisplayWindowIsDecodedInPlace) {
+    // Data (2, 1)–(5, 2) inside display (0, 0)–(7, 3): the library writes straight into the
+    // picture; the texels around the data stay black. Grey (Y) and colour alike.
+    const uint32_t width = 4, height = 2;
+    std::vector<float> y(width * height);
+    for (size_t i = 0; i < y.size(); ++i) y[i] = 1.0f + float(i);
+    ExrLayout layout;
+    layout.dataX = 2;
+    layout.dataY = 1;
+    layout.display = Imath::Box2i({0, 0}, {7, 3});
+    for (bool grey : {true, false}) {
+        SCOPED_TRACE(grey ? "Y" : "RGB");
+        std::vector<float> rgb;
+        for (float v : y) rgb.insert(rgb.end(), {v, 2.0f * v, 3.0f * v});
+        EnvTempDir dir;
+        const Environment env = loadBytes(
+            dir, makeExr(width, height, grey ? std::vector<ExrChannel>{{"Y", ExrType::Half, y}} : rgbChannels(rgb, ExrType::Float), layout));
+        ASSERT_EQ(env.width, 8u);
+        ASSERT_EQ(env.height, 4u);
+        for (uint32_t py = 0; py < 4; ++py)
+            for (uint32_t px = 0; px < 8; ++px) {
+                const bool inside = px >= 2 && px <= 5 && py >= 1 && py <= 2;
+                const float v = inside ? y[(py - 1) * width + (px - 2)] : 0.0f;
+                const float* t = env.texel(px, py);
+                EXPECT_EQ(t[0], v) << px << "," << py;
+                EXPECT_EQ(t[1], grey ? v : 2.0f * v) << px << "," << py;
+                EXPECT_EQ(t[2], grey ? v : 3.0f * v) << px << "," << py;
+            }
+        EXPECT_EQ(env.notes.size(), 1u);
+    }
+}
+
 TEST(ExrParts, FirstColourPartIsUsedWithANote) {
     const uint32_t width = 8, height = 4;
     const std::vector<float> rgb = halfExactRgb(width, height);
