@@ -66,10 +66,10 @@ void writeExr(const std::filesystem::path& path, uint32_t width, uint32_t height
     // only from slices of the channels' own type, so the floats are rounded to half here.
     Imf::Header header(static_cast<int>(width), static_cast<int>(height));
     header.compression() = Imf::ZIP_COMPRESSION;
-    const std::vector<Imath::half> halves(rgba.begin(), rgba.end());
+    std::vector<Imath::half> halves(rgba.begin(), rgba.end());
     Imf::FrameBuffer frame;
     const char* names[] = {"R", "G", "B", "A"};
-    char* base = reinterpret_cast<char*>(const_cast<Imath::half*>(halves.data()));  // only read by OutputFile
+    char* base = reinterpret_cast<char*>(halves.data());
     for (size_t c = 0; c < 4; ++c) {
         header.channels().insert(names[c], Imf::Channel(Imf::HALF));
         frame.insert(names[c], Imf::Slice(Imf::HALF, base + c * sizeof(Imath::half), 4 * sizeof(Imath::half),

@@ -63,7 +63,8 @@ void keepMessage(exr_const_context_t context, exr_result_t, const char* message)
 // Owns an open OpenEXRCore read context: the headers parsed and validated.
 class Context {
 public:
-    Context(Stream& stream, const std::string& source, const EnvironmentLoadOptions& options) : mStream(stream) {
+    Context(Stream& stream, const std::string& source, const EnvironmentLoadOptions& options)
+        : mStream(stream), mSource(source) {
         exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
         init.error_handler_fn = keepMessage;
         init.user_data = &stream;
@@ -80,7 +81,7 @@ public:
         // with defaults, and the C++ library, which trusts stated sizes and reads on, then sizes
         // its buffers from values nothing validated (three fuzz findings, docs/fuzzing.md 8–10).
         init.flags = EXR_CONTEXT_FLAG_STRICT_HEADER | EXR_CONTEXT_FLAG_DISABLE_CHUNK_RECONSTRUCTION;
-        check(exr_start_read(&mContext, source.c_str(), &init), source, "invalid EXR header");
+        check(exr_start_read(&mContext, source.c_str(), &init));
     }
     ~Context() { exr_finish(&mContext); }
     Context(const Context&) = delete;
@@ -88,15 +89,16 @@ public:
 
     exr_const_context_t get() const { return mContext; }
 
-    // Throws "SOURCE: WHAT: OpenEXR's message" unless `result` is success.
-    void check(exr_result_t result, const std::string& source, const std::string& what) const {
+    // Throws "SOURCE: invalid EXR header: OpenEXR's message" unless `result` is success.
+    void check(exr_result_t result) const {
         if (result == EXR_ERR_SUCCESS) return;
         const std::string detail = !mStream.message.empty() ? mStream.message : exr_get_default_error_message(result);
-        fail(source, what + ": " + detail);
+        fail(mSource, "invalid EXR header: " + detail);
     }
 
 private:
     Stream& mStream;
+    const std::string& mSource;
     exr_context_t mContext = nullptr;
 };
 
@@ -152,24 +154,25 @@ void checkColourChannels(const exr_attr_chlist_t& list, const ColourChannels& co
 struct Choice {
     int part = -1;
     ColourChannels colour;
+    int parts = 0;  // in the file
 };
 
 Choice choosePart(const Context& context, const std::string& source) {
     int parts = 0;
-    context.check(exr_get_count(context.get(), &parts), source, "invalid EXR header");
+    context.check(exr_get_count(context.get(), &parts));
     int deep = 0;
     for (int p = 0; p < parts; ++p) {
         exr_storage_t storage{};
-        context.check(exr_get_storage(context.get(), p, &storage), source, "invalid EXR header");
+        context.check(exr_get_storage(context.get(), p, &storage));
         if (storage == EXR_STORAGE_DEEP_SCANLINE || storage == EXR_STORAGE_DEEP_TILED) {
             ++deep;
             continue;
         }
         const exr_attr_chlist_t* list = nullptr;
-        context.check(exr_get_channels(context.get(), p, &list), source, "invalid EXR header");
+        context.check(exr_get_channels(context.get(), p, &list));
         if (auto colour = colourChannels(*list)) {
             checkColourChannels(*list, *colour, source);
-            return {p, *colour};
+            return {p, *colour, parts};
         }
     }
     if (deep == parts) fail(source, "deep EXR is not supported (it holds samples at depths, not one colour per pixel)");
@@ -269,8 +272,8 @@ Environment decodeExr(std::span<const uint8_t> bytes, const std::string& source,
     exr_const_context_t ctx = context.get();
 
     exr_attr_box2i_t dataBox{}, displayBox{};
-    context.check(exr_get_data_window(ctx, part, &dataBox), source, "invalid EXR header");
-    context.check(exr_get_display_window(ctx, part, &displayBox), source, "invalid EXR header");
+    context.check(exr_get_data_window(ctx, part, &dataBox));
+    context.check(exr_get_display_window(ctx, part, &displayBox));
     const Box data = box(dataBox), display = box(displayBox);
     if (display.width() <= 0 || display.height() <= 0)
         fail(source, "empty or inverted EXR display window " + display.text());
@@ -282,12 +285,10 @@ Environment decodeExr(std::span<const uint8_t> bytes, const std::string& source,
     env.height = uint32_t(display.height());
     env.rgb.assign(env.texelCount() * 3, 0.0f);
 
-    int parts = 0;
-    context.check(exr_get_count(ctx, &parts), source, "invalid EXR header");
-    if (parts > 1) {
+    if (choice.parts > 1) {
         const char* name = nullptr;
         const std::string named = exr_get_name(ctx, part, &name) == EXR_ERR_SUCCESS && name && *name ? " '" + oneLine(name) + "'" : "";
-        env.notes.push_back(source + ": " + std::to_string(parts) + "-part EXR: part " + std::to_string(part) + named +
+        env.notes.push_back(source + ": " + std::to_string(choice.parts) + "-part EXR: part " + std::to_string(part) + named +
                             " used (the first with " + (choice.colour.grey ? "Y" : "R, G, B") + ")");
     }
     const bool covered = data.minX <= display.minX && data.minY <= display.minY && data.maxX >= display.maxX &&

@@ -56,6 +56,14 @@ void setI32(Bytes& bytes, size_t at, int32_t v) {
     for (int i = 0; i < 4; ++i) bytes[at + size_t(i)] = uint8_t(uint32_t(v) >> (8 * i));
 }
 
+// validExr() with one int32 of a window attribute (dataWindow or displayWindow: xMin, yMin, xMax,
+// yMax at byte offsets 0, 4, 8, 12 of its value) set to `v`.
+Bytes exrWithWindowValue(const std::string& window, size_t offset, int32_t v) {
+    Bytes b = validExr();
+    setI32(b, exrAttribute(b, window, "box2i") + offset, v);
+    return b;
+}
+
 std::function<fs::path(const fs::path&)> file(const std::string& name, std::function<Bytes()> bytes) {
     return [name, bytes](const fs::path& dir) {
         writeBytes(dir / name, bytes());
@@ -157,11 +165,7 @@ std::vector<BadCase> badCases() {
     for (size_t back : {size_t(1), size_t(30)})
         exr("ExrTruncatedPixelsBy" + std::to_string(back), [back] { Bytes b = validExr(); b.resize(b.size() - back); return b; },
             "cannot decode EXR pixels");
-    exr("ExrAbsurdSize", [] {
-            Bytes b = validExr();
-            setI32(b, exrAttribute(b, "dataWindow", "box2i") + 8, 99999);
-            return b;
-        }, "invalid EXR header: Invalid width (100000) too large (max 16384)");
+    exr("ExrAbsurdSize", [] { return exrWithWindowValue("dataWindow", 8, 99999); }, "invalid EXR header: Invalid width (100000) too large (max 16384)");
     exr("ExrHugeWindow", [] {
             Bytes b = validExr();
             const size_t at = exrAttribute(b, "dataWindow", "box2i");
@@ -169,11 +173,7 @@ std::vector<BadCase> badCases() {
             setI32(b, at + 8, INT32_MAX);
             return b;
         }, "invalid EXR header: Invalid data window (-2147483648, 0 - 2147483647, 7)");
-    exr("ExrInvertedWindow", [] {
-            Bytes b = validExr();
-            setI32(b, exrAttribute(b, "dataWindow", "box2i") + 8, -3);
-            return b;
-        }, "invalid EXR header: Invalid data window (0, 0 - -3, 7)");
+    exr("ExrInvertedWindow", [] { return exrWithWindowValue("dataWindow", 8, -3); }, "invalid EXR header: Invalid data window (0, 0 - -3, 7)");
     // Attribute sizes are checked against their type and the file before anything is allocated
     // from them (OpenEXRCore's strict header validation; fuzzing found what the lenient one lets by).
     exr("ExrAttributeBeyondTheFile", [] {
@@ -192,16 +192,8 @@ std::vector<BadCase> badCases() {
             return b;
         }, "invalid EXR header: Attribute 'dataWindow': Invalid size 35");
     // The display window is the picture we allocate: held to the same limits.
-    exr("ExrHugeDisplayWindow", [] {
-            Bytes b = validExr();
-            setI32(b, exrAttribute(b, "displayWindow", "box2i") + 8, 99999);
-            return b;
-        }, "image size 100000x8 exceeds the limit 16384x8192");
-    exr("ExrInvertedDisplayWindow", [] {
-            Bytes b = validExr();
-            setI32(b, exrAttribute(b, "displayWindow", "box2i") + 12, -3);
-            return b;
-        }, "display window");
+    exr("ExrHugeDisplayWindow", [] { return exrWithWindowValue("displayWindow", 8, 99999); }, "image size 100000x8 exceeds the limit 16384x8192");
+    exr("ExrInvertedDisplayWindow", [] { return exrWithWindowValue("displayWindow", 12, -3); }, "display window");
     exr("ExrNoRgb", [] { return makeExr(4, 2, {{"Z", ExrType::Float, std::vector<float>(8, 1.0f)}}); }, "no R, G, B (or Y) channels");
     exr("ExrUintRed", [] {
             std::vector<ExrChannel> channels = rgbChannels(std::vector<float>(24, 1.0f), ExrType::Float);
