@@ -221,7 +221,7 @@ passes::IblHandles IblMaps::addToGraph(RenderGraph& graph, ImportBindings& impor
     mLastFrame = {.precompute = computeMaps, .lut = mLutPending, .source = mSource};
     // Maps about to be computed have no contents to keep: they start undefined.
     const ResourceState mapsInitial = computeMaps ? ResourceState{} : kRestState;
-    maps.specular = import(graph, imports, "ibl_specular", mSpecular.image, mSpecular.mipViews, mapsInitial, kRestState);
+    maps.specular = import(graph, imports, kSpecularName, mSpecular.image, mSpecular.mipViews, mapsInitial, kRestState);
     if (mIrradianceCube.image)
         maps.irradianceCube = import(graph, imports, "ibl_irradiance", mIrradianceCube.image, mIrradianceCube.mipViews,
                                      mapsInitial, kRestState);

@@ -97,6 +97,8 @@ public:
 
     // What the last addToGraph did and left out, one line each (`--explain`).
     std::vector<std::string> explanation() const;
+    // The name of the specular cube in a graph the maps were added to (a frame lit by them declares it).
+    static constexpr const char* kSpecularName = "ibl_specular";
     // The cache file used or written for the current maps (empty without a cache directory).
     const std::filesystem::path& cacheFile() const { return mCacheFile; }
 

@@ -41,10 +41,11 @@ vk::Image cube(vk::Context& context, vk::Uploader& uploader, uint32_t size, uint
 
 }  // namespace
 
-CalibrationPass::CalibrationPass(vk::Context& context)
-    : mPipeline(vk::Pipeline::graphics(context, "fullscreen.vert", "calibration.frag",
-                                       {.colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT}})),
-      mSampler(vk::createSampler(context, {})) {
+CalibrationPass::CalibrationPass(vk::Context& context) : mContext(context) {}
+
+void CalibrationPass::createResources() {
+    vk::Context& context = mContext;
+    mSampler = vk::createSampler(context, {});
     vk::Uploader uploader(context);
     mIrradiance = cube(context, uploader, 8, 1, glm::vec4(0.3f, 0.35f, 0.4f, 1.0f), "calibration irradiance");
     mPrefiltered = cube(context, uploader, 32, 6, glm::vec4(0.8f, 0.8f, 0.9f, 1.0f), "calibration prefiltered");
@@ -58,7 +59,12 @@ CalibrationPass::CalibrationPass(vk::Context& context)
     uploader.submitAndWait();
 }
 
-TextureId CalibrationPass::add(RenderGraph& graph, uint32_t width, uint32_t height) const {
+TextureId CalibrationPass::add(RenderGraph& graph, uint32_t width, uint32_t height) {
+    if (!mLut) createResources();
+    const vk::Pipeline* pipeline = &mPipelines.get(mContext, 0, [&] {
+        return vk::Pipeline::graphics(mContext, "fullscreen.vert", "calibration.frag",
+                                      {.colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT}});
+    });
     struct Data {
         TextureId target;
     };
@@ -69,14 +75,14 @@ TextureId CalibrationPass::add(RenderGraph& graph, uint32_t width, uint32_t heig
                 builder.createTexture("calibration", {.width = width, .height = height, .format = VK_FORMAT_R16G16B16A16_SFLOAT});
             d.target = builder.write(target, Usage::ColorAttachment, WriteMode::Discard);
         },
-        [this](const Data&, PassContext& ctx) {
+        [this, pipeline](const Data&, PassContext& ctx) {
             const VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-            const VkDescriptorSet set = vk::DescriptorWriter(mPipeline.program(), 0)
+            const VkDescriptorSet set = vk::DescriptorWriter(pipeline->program(), 0)
                                             .image("irradianceMap", mIrradiance.view(), layout, mSampler.get())
                                             .image("prefilteredMap", mPrefiltered.view(), layout, mSampler.get())
                                             .image("brdfLut", mLut.view(), layout, mSampler.get())
                                             .commit(ctx.context(), ctx.descriptors());
-            drawFullscreenTriangle(ctx, mPipeline, set);
+            drawFullscreenTriangle(ctx, *pipeline, set);
         });
     graph.exportTexture(data.target);
     return data.target;

@@ -1,19 +1,23 @@
 #pragma once
-// Forward pass (graphics): draws a GpuScene into an HDR target (RGBA16F, alpha = coverage,
-// premultiplied) with a reverse-Z depth buffer — opaque and alpha-masked draws first, then
-// alpha-blended ones sorted back to front. Each draw uses a pipeline variant chosen by
-// specialization constants, so what a draw does not use costs nothing. Draws of transmissive
-// materials (KHR_materials_transmission) see what lies behind them: when a frame has one, "forward"
-// draws the opaque draws only and addTransmissive() adds "forward_transmission", which draws the
-// transmissive and the blended draws back to front over the opaque image, reading its copy
-// (TransmissionBackgroundPass).
+// Forward pass (graphics): draws ranges of a frame's draw list (passes/draw_list.h) into an HDR
+// target (RGBA16F, alpha = coverage, premultiplied) with a reverse-Z depth buffer. Each draw uses
+// the pipeline variant of its material key and the frame's bits (passes/forward_variant.h).
+//
+// A frame adds "forward" (addOpaque: the opaque and masked ranges, then the blended one sorted
+// back to front) and, when the list has transmissive draws, "forward_transmission"
+// (addTransmissive: the transmissive and blended draws back to front over the opaque image, reading
+// its copy with mips, TransmissionBackgroundPass). Both take what they draw from their arguments:
+// the pass keeps no state between calls. What every draw of the frame shares (push constants, the
+// maps and per-frame buffers it reads) is made once per frame by frameInputs().
 
 #include "graph/render_graph.h"
 #include "passes/debug_view.h"
+#include "passes/draw_list.h"
 #include "passes/draw_selection.h"
 #include "passes/draw_target.h"
 #include "passes/forward_ibl_set.h"
 #include "passes/forward_layer_set.h"
+#include "passes/forward_variant.h"
 #include "passes/ibl_handles.h"
 #include "shader/parameter_registry.h"
 #include "shared/ibl.h"
@@ -25,15 +29,13 @@
 
 #include <climits>
 #include <functional>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace candela::passes {
-
-enum class ShadingModel : uint32_t { Pbr = 0, PbrSchlickGgx = 1, BlinnPhong = 2 };
 
 class ForwardPass {
 public:
@@ -41,10 +43,9 @@ public:
 
     // Binds the scene's buffers and textures into persistent descriptor sets (sets 0 and 1). The
     // scene is uploaded once and changes only while the GPU is idle, so it is no graph resource.
-    // Call once per GpuScene; precondition: the GPU no longer uses the previous scene's sets.
-    void setScene(const scene::GpuScene& scene);
-
-    using Output = DrawTarget;
+    // Call once per GpuScene; `keys` are its materials' (MaterialKeys::of). Preconditions: the GPU no
+    // longer uses the previous scene's sets; `scene` and `keys` outlive their use by this pass.
+    void setScene(const scene::GpuScene& scene, const MaterialKeys& keys);
 
     // Image-based lighting of one frame: the maps to read (set 2, written every frame from what the
     // pass context resolves them to) and how to read them.
@@ -57,13 +58,12 @@ public:
         // integrated per pixel with this many samples per lobe from the specular cube's mip 0.
         uint32_t referenceSamples = 0;
     };
-    // An animated scene's draws in this frame's pose: where each is (one per scene draw, same
-    // order; hidden ones are skipped) and the buffer holding their shading::DrawData, which the
-    // pass reads instead of the scene's static draw buffer (set 0 is then written per frame).
+    // An animated scene's draws in this frame's pose: the buffer of their shading::DrawData, read
+    // instead of the scene's static draw buffer (set 0 is then written per frame), and this frame's
+    // light data when a light moves with the pose (else invalid).
     struct PosedDraws {
-        std::span<const scene::Draw> draws;
         graph::BufferId data;
-        graph::BufferId lights;  // this frame's light data when a light moves with the pose; else invalid
+        graph::BufferId lights;
     };
     // This frame's deformed vertices (the skin_morph pass's output) and, per scene draw, the
     // vertex offset that maps its indices into them (kRestVertices: drawn from the scene's own).
@@ -72,102 +72,81 @@ public:
         std::vector<int32_t> vertexOffset;
     };
     static constexpr int32_t kRestVertices = INT32_MIN;
-    // Adds the pass drawing the current scene as seen from `view`, lit by the scene's lights and,
-    // when `ibl` is given, the environment; posed by `posed` and drawn from `deformed` vertices
-    // where given; the layered program reads `layerMaps` (the sheen LUT and cube) where given.
-    // `selection` culls draws and picks their levels of detail; `shading` turns specular
-    // anti-aliasing on or off. Creates the targets at `size` (MSAA at size.samples > 1, with
-    // alpha to coverage for alpha-masked draws) and returns them as written.
-    // With `parameters`, the user's values for the per-frame push constants apply ("forward", "Push").
-    Output add(graph::RenderGraph& graph, const DrawTargetSize& size, const scene::ViewSetup& view,
-               ShadingModel model, const Ibl* ibl = nullptr, shader::ParameterRegistry* parameters = nullptr,
-               DebugView debugView = DebugView::None, const PosedDraws* posed = nullptr,
-               const DeformedVertices* deformed = nullptr, const LayerMaps* layerMaps = nullptr,
-               const DrawSelection& selection = {}, const ShadingOptions& shading = {});
-    // Whether the last add() left transmissive draws (and the blended ones) for addTransmissive().
-    bool hasTransmissiveDraws() const { return !mBehind.empty(); }
-    // Adds "forward_transmission": the draws the last add() left, over its `opaque` targets (after
-    // whatever drew into them since, e.g. the skybox), reading `background` (the opaque image with
-    // its mips) behind the transmissive ones. Returns the targets' new versions. Precondition:
-    // hasTransmissiveDraws().
-    Output addTransmissive(graph::RenderGraph& graph, const Output& opaque, graph::TextureId background);
+
+    // What a frame's forward draws are lit by and read; the optional parts are absent when null.
+    struct FrameDesc {
+        const scene::ViewSetup& view;
+        ShadingModel model = ShadingModel::Pbr;
+        const Ibl* ibl = nullptr;
+        DebugView debugView = DebugView::None;
+        ShadingOptions shading;
+        uint32_t samples = 1;                       // of the draw targets
+        const PosedDraws* posed = nullptr;
+        const DeformedVertices* deformed = nullptr;
+        const LayerMaps* layerMaps = nullptr;        // the sheen LUT and cube, for the layered program
+        shader::ParameterRegistry* parameters = nullptr;  // the user's values for "forward", "Push"
+    };
+    // What every forward draw pass of one frame shares, made once per frame.
+    struct FrameInputs {
+        shading::ForwardPush push{};
+        FrameVariant variant;
+        std::optional<IblHandles> ibl;
+        LayerMaps layerMaps;
+        graph::BufferId posedDraws, posedLights, deformed;  // invalid where the frame has none
+        std::vector<int32_t> vertexOffset;  // per scene draw (DeformedVertices); empty: rest vertices
+    };
+    // The frame's inputs, with the user's values for the push constants applied (once per frame).
+    FrameInputs frameInputs(const FrameDesc& desc);
+
+    // Adds "forward": clears new targets of `size` and draws the list's opaque and masked ranges,
+    // then its blended one unless the list has transmissive draws (addTransmissive draws those).
+    // State changes recorded are added to `recorded` (if given; it must outlive the recording).
+    DrawTarget addOpaque(graph::RenderGraph& graph, const DrawTargetSize& size, const DrawList& list,
+                         const FrameInputs& frame, DrawStats* recorded = nullptr);
+    // Adds "forward_transmission": the list's transmissive and blended draws back to front over the
+    // `opaque` targets (after whatever drew into them since, e.g. the skybox), reading `background`
+    // (the opaque image with its mips) behind the transmissive ones. Returns the targets' new
+    // versions. Precondition: the list has transmissive draws.
+    DrawTarget addTransmissive(graph::RenderGraph& graph, const DrawTarget& opaque, graph::TextureId background,
+                               const DrawList& list, const FrameInputs& frame, DrawStats* recorded = nullptr);
+
+    // What the frame's forward draws use and leave out, one line each, for `--explain`.
+    std::vector<std::string> describe(const DrawList& list, const FrameInputs& frame, const DrawSelection& selection) const;
+
     // The reflection of the forward shaders without layers (every variant shares sets 0 and 2 and
     // the push constants; the layered program adds to set 1).
-    const shader::ShaderReflection& reflection() { return pipeline(Variant{}).program().reflection(); }
+    const shader::ShaderReflection& reflection() { return pipeline(ForwardVariant{}).program().reflection(); }
     // The reflection of the layered program (its MaterialLayers buffer), when the current scene
     // has a material with a layer; null otherwise.
     const shader::ShaderReflection* layeredReflection();
-
-    // What the last add() selected, and (once the frame is recorded) the state changes of both
-    // of its draw passes.
-    const DrawStats& drawStats() const { return mStats; }
-    // What the last add() used and left out, one line each, for `--explain`.
-    const std::vector<std::string>& explanation() const { return mExplanation; }
 
     static constexpr VkFormat kHdrFormat = passes::kHdrFormat;
     static constexpr VkFormat kDepthFormat = passes::kDepthFormat;
 
 private:
-    struct Variant {
-        bool normalMap = false;
-        bool lights = false;
-        bool unlit = false;
-        bool alphaMask = false;
-        bool blend = false;
-        ShadingModel model = ShadingModel::Pbr;
-        bool ibl = false;
-        bool irradianceSh = true;
-        bool multiscatter = true;
-        uint32_t referenceSamples = 0;
-        DebugView debugView = DebugView::None;
-        // KHR_materials_* layers the material uses (scene::MaterialLayer bits): non-zero selects the
-        // layered program (forward_layers.*), whose kLayers evaluates just these.
-        uint32_t layers = 0;
-        bool specularAa = false;  // specular anti-aliasing (kSpecularAa)
-        uint32_t samples = 1;     // of the targets
-        bool alphaToCoverage = false;  // alpha-masked draws at samples > 1 where the device has alphaToOne
-        auto operator<=>(const Variant&) const = default;
-        std::string name() const;
-    };
-    // What execute needs of one draw, taken at setup (the scene's draw or its posed copy).
-    struct DrawItem {
+    // A list item with its pipeline, as recorded.
+    struct Recorded {
         const vk::Pipeline* pipeline;
-        float depth;  // view distance, for sorting blended draws
-        uint32_t firstIndex, indexCount, material;
-        bool flipWinding, doubleSided;
+        DrawListItem item;
         int32_t vertexOffset;  // kRestVertices: the scene's vertex buffer; else into the deformed one
-        uint32_t drawData;     // index of its (first instance's) entry in the draw buffer
-        uint32_t instances;    // instanced draws: how many (else 1)
         bool layered;          // drawn by the layered program (binds set 3)
     };
-    // What every forward pass of one frame reads, taken by add().
-    struct FrameInputs {
-        shading::ForwardPush push{};
-        std::optional<IblHandles> ibl;
-        LayerMaps layerMaps;
-        graph::BufferId posedDraws, posedLights, deformed;  // invalid where the frame has none
-    };
-    // Adds a graphics pass `name` recording `items` into the targets `targets` declares, reading
-    // mFrame's inputs. Returns the targets as written.
-    const DrawTarget& addDrawPass(graph::RenderGraph& graph, std::string name, std::vector<DrawItem> items,
-                                  const std::function<DrawTarget(graph::PassBuilder&)>& targets);
-    const vk::Pipeline& pipeline(const Variant& variant);
-    static vk::GraphicsPipelineDesc desc(const Variant& variant);
-    Variant variantOf(const scene::Draw& draw, ShadingModel model, const Ibl* ibl, DebugView debugView,
-                      const ShadingOptions& shading, uint32_t samples) const;
+    // Adds a graphics pass `name` recording `items` in order into the targets `targets` declares,
+    // reading `frame`'s inputs. Returns the targets as written.
+    DrawTarget addDrawPass(graph::RenderGraph& graph, std::string name, std::span<const DrawListItem> items,
+                           const FrameInputs& frame, DrawStats* recorded,
+                           const std::function<DrawTarget(graph::PassBuilder&)>& targets);
+    const vk::Pipeline& pipeline(const ForwardVariant& variant);
 
     vk::Context& mContext;
-    vk::PipelineCache<Variant> mPipelines;
+    vk::PipelineCache<ForwardVariant> mPipelines;
     ForwardIblSet mIblSet;
     ForwardLayerSet mLayerSet;
     const scene::GpuScene* mScene = nullptr;
+    const MaterialKeys* mKeys = nullptr;
     std::unique_ptr<vk::DescriptorAllocator> mSets;
     VkDescriptorSet mSceneSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> mMaterialSets;
-    std::vector<std::string> mExplanation;
-    FrameInputs mFrame;
-    std::vector<DrawItem> mBehind;  // the draws add() left for addTransmissive()
-    DrawStats mStats;
 };
 
 }  // namespace candela::passes

@@ -45,9 +45,11 @@ SkinMorphFrame skinMorphFrame(const scene::GpuScene& gpuScene, const scene::Scen
     return out;
 }
 
-SkinMorphPass::SkinMorphPass(vk::Context& context) : mPipeline(vk::Pipeline::compute(context, "skin_morph.comp")) {}
+SkinMorphPass::SkinMorphPass(vk::Context& context) : mContext(context) {}
 
-BufferId SkinMorphPass::add(RenderGraph& graph, const Inputs& in) const {
+BufferId SkinMorphPass::add(RenderGraph& graph, const Inputs& in) {
+    const vk::Pipeline* pipeline =
+        &mPipelines.get(mContext, 0, [&] { return vk::Pipeline::compute(mContext, "skin_morph.comp"); });
     struct Data {
         BufferId joints, active, deformed;
     };
@@ -60,8 +62,8 @@ BufferId SkinMorphPass::add(RenderGraph& graph, const Inputs& in) const {
                 "deformed_vertices", {.size = VkDeviceSize(std::max(in.vertexCount, 1u)) * sizeof(scene::Vertex)});
             d.deformed = builder.write(deformed, Usage::StorageWrite, WriteMode::Discard);
         },
-        [this, scene = in.scene, jobs = in.jobs](const Data& d, PassContext& ctx) {
-            const VkDescriptorSet set = vk::DescriptorWriter(mPipeline.program(), 0)
+        [pipeline, scene = in.scene, jobs = in.jobs](const Data& d, PassContext& ctx) {
+            const VkDescriptorSet set = vk::DescriptorWriter(pipeline->program(), 0)
                                             .buffer("BaseVertices", scene->vertexBuffer())
                                             .buffer("Deltas", scene->deltaBuffer())
                                             .buffer("Influences", scene->influenceBuffer())
@@ -69,11 +71,11 @@ BufferId SkinMorphPass::add(RenderGraph& graph, const Inputs& in) const {
                                             .buffer("ActiveTargets", ctx.buffer(d.active))
                                             .buffer("Deformed", ctx.buffer(d.deformed))
                                             .commit(ctx.context(), ctx.descriptors());
-            mPipeline.bind(ctx.cmd());
-            vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, mPipeline.layout(), 0, 1, &set, 0, nullptr);
+            pipeline->bind(ctx.cmd());
+            vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline->layout(), 0, 1, &set, 0, nullptr);
             // The jobs write disjoint ranges: no barrier between them.
             for (const shading::SkinMorphPush& job : jobs) {
-                mPipeline.pushConstants(ctx.cmd(), &job, sizeof(job));
+                pipeline->pushConstants(ctx.cmd(), &job, sizeof(job));
                 vkCmdDispatch(ctx.cmd(), groupCount(job.vertexCount, CANDELA_SKIN_MORPH_GROUP_SIZE), 1, 1);
             }
         });

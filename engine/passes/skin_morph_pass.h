@@ -8,7 +8,7 @@
 #include "scene/gpu_scene.h"
 #include "scene/scene_pose.h"
 #include "shared/skin_morph.h"
-#include "vk/pipeline.h"
+#include "vk/pipeline_cache.h"
 
 #include <vector>
 
@@ -43,10 +43,11 @@ public:
     };
     // Adds the pass; returns the written deformed-vertex buffer (vertexCount × scene::Vertex).
     // The pass object and the scene must outlive the graph's execution.
-    graph::BufferId add(graph::RenderGraph& graph, const Inputs& inputs) const;
+    graph::BufferId add(graph::RenderGraph& graph, const Inputs& inputs);
 
 private:
-    vk::Pipeline mPipeline;
+    vk::Context& mContext;
+    vk::PipelineCache<int> mPipelines;  // the one pipeline, built at the first add()
 };
 
 }  // namespace candela::passes

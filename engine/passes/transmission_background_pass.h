@@ -6,7 +6,7 @@
 // Added only when a transmissive material is in the frame (Renderer).
 
 #include "graph/render_graph.h"
-#include "vk/pipeline.h"
+#include "vk/pipeline_cache.h"
 #include "vk/sampler.h"
 
 namespace candela::passes {
@@ -17,14 +17,15 @@ public:
 
     // Adds the pass reading `hdr` (sampled) and writing a new transient "transmission_background".
     // Returns it. The pass object must outlive execution.
-    graph::TextureId add(graph::RenderGraph& graph, graph::TextureId hdr) const;
+    graph::TextureId add(graph::RenderGraph& graph, graph::TextureId hdr);
 
     static constexpr VkFormat kFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
     // Mips of a width × height background: down to 1 × 1.
     static uint32_t mipLevels(uint32_t width, uint32_t height);
 
 private:
-    vk::Pipeline mPipeline;
+    vk::Context& mContext;
+    vk::PipelineCache<int> mPipelines;  // the one pipeline, built at the first add()
     vk::Sampler mSampler;  // bilinear, clamp to edge, mip 0 of the bound view
 };
 

@@ -77,12 +77,12 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
     contextDesc.presentSupport = Window::presentSupport;
     mContext = std::make_unique<vk::Context>(contextDesc);
     mSwapchain = std::make_unique<vk::Swapchain>(*mContext, mWindow->createSurface(mContext->instance()), desc.vsync);
-    mRenderer = std::make_unique<Renderer>(*mContext, desc.framesInFlight);
+    mRenderer = std::make_unique<Renderer>(*mContext, RendererOptions{.framesInFlight = desc.framesInFlight,
+                                                                        .unknownPassIsError = false});
     if (mUi) mImGui = std::make_unique<ImGuiContextOwner>(mWindow->handle());
     mHotReload = std::make_unique<ShaderHotReload>(desc.shaderDir.empty() ? std::filesystem::path(CANDELA_SHADER_SOURCE_DIR)
                                                                           : desc.shaderDir);
 
-    mSettings.unknownPassIsError = false;
     mSettings.floatOutput = false;
     const float aspect = visibleAspect();
     if (!mSettings.camera.orbitCamera) {

@@ -37,8 +37,8 @@ TEST_F(GpuTest, SynchronizationValidationCatchesAGraphWithoutBarriers) {
     // Proves the layer is on and watching: the same graph with its planned barriers removed must be
     // reported (the planned barriers are what keeps every other test clean).
     expectValidationMessages();
-    Renderer renderer(context());
-    renderer.capture({.width = 32, .height = 32, .emitBarriers = false});
+    Renderer renderer(context(), {.emitBarriers = false});
+    renderer.capture({.width = 32, .height = 32});
     bool hazard = false;
     for (const vk::ValidationMessage& m : context().validationMessages())
         hazard = hazard || m.text.find("SYNC-HAZARD") != std::string::npos;

@@ -120,6 +120,8 @@ TEST_F(GpuTest, TransmissionKeepsTheWhiteFurnace) {
         }
         RenderSettings settings = furnaceSettings(scene, env);
         settings.ibl.skybox = true;
+        // Each pass of the loop makes a new scene at the same address: upload it anew.
+        renderer.sceneReplaced();
         const CapturedFrame frame = renderer.capture(settings);
         ASSERT_EQ(frameProblem(frame), "");
         EXPECT_TRUE(contains(renderer.explain(), thickness > 0.0f ? "pays for layers: transmission+volume"
@@ -283,6 +285,7 @@ TEST_F(GpuTest, SheenKeepsTheWhiteFurnace) {
             scene.materials[i].roughnessFactor = 0.5f;
         }
         const RenderSettings settings = furnaceSettings(scene, env);
+        renderer.sceneReplaced();  // each colour's scene is a new one at the same address
         const CapturedFrame frame = renderer.capture(settings);
         ASSERT_EQ(frameProblem(frame), "");
         EXPECT_TRUE(contains(renderer.explain(), "pays for layers: sheen"));

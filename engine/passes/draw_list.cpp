@@ -1,0 +1,158 @@
+#include "passes/draw_list.h"
+
+#include "scene/frustum.h"
+#include "scene/mesh_lod.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <tuple>
+
+namespace candela::passes {
+
+namespace {
+
+// The level of detail `draw` is drawn at from `view` on a target `height` pixels tall: the coarsest
+// of its chain whose error covers at most `maxPixels` (its full detail without a chain).
+scene::LodLevel levelOf(const scene::Scene& scene, const scene::Draw& draw, const scene::ViewSetup& view, uint32_t height,
+                        float maxPixels) {
+    if (draw.lod < 0 || !(maxPixels > 0.0f)) return {draw.firstIndex, draw.indexCount, 0.0f};
+    float scale = scene::maxScale(draw.world);
+    if (draw.instanceCount > 0) {
+        float instanceScale = 0.0f;
+        for (uint32_t i = 0; i < draw.instanceCount; ++i)
+            instanceScale = std::max(instanceScale, scene::maxScale(scene.instances[draw.firstInstance + i]));
+        scale *= instanceScale;
+    }
+    const scene::LodChain& chain = scene.lodChains[size_t(draw.lod)];
+    return chain.levels[scene::selectLod(chain, scale, scene::pixelsPerUnit(view, height, draw.bounds), maxPixels)];
+}
+
+DrawRange rangeOf(const MaterialKey& key, bool transmission) {
+    if (key.transmissive && transmission) return DrawRange::Transmissive;
+    if (key.blend) return DrawRange::Blended;
+    return key.alphaMask ? DrawRange::Masked : DrawRange::Opaque;
+}
+
+bool sortedBackToFront(DrawRange range) { return range == DrawRange::Transmissive || range == DrawRange::Blended; }
+
+std::string formatPixels(float pixels) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", double(pixels));
+    return text;
+}
+
+}  // namespace
+
+const char* drawRangeName(DrawRange range) {
+    switch (range) {
+    case DrawRange::Opaque: return "opaque";
+    case DrawRange::Masked: return "masked";
+    case DrawRange::Transmissive: return "transmissive";
+    case DrawRange::Blended: return "blended";
+    }
+    return "?";
+}
+
+MaterialKey materialKeyOf(const scene::Material& m) {
+    const bool layered = !m.unlit && m.layers() != 0;
+    return {.unlit = m.unlit,
+            .normalMap = !m.unlit && m.normal.present(),
+            .alphaMask = m.alphaMode == scene::AlphaMode::Mask,
+            .blend = m.alphaMode == scene::AlphaMode::Blend,
+            .layers = layered ? m.layers() : 0,
+            .transmissive = layered && (m.layers() & scene::kLayerTransmission) != 0};
+}
+
+MaterialKeys MaterialKeys::of(const scene::Scene& scene) {
+    MaterialKeys out;
+    out.ofMaterial.reserve(scene.materials.size());
+    for (const scene::Material& m : scene.materials) {
+        const MaterialKey key = materialKeyOf(m);
+        const auto found = std::find(out.keys.begin(), out.keys.end(), key);
+        out.ofMaterial.push_back(uint32_t(found - out.keys.begin()));
+        if (found == out.keys.end()) out.keys.push_back(key);
+    }
+    return out;
+}
+
+std::span<const DrawListItem> DrawList::range(DrawRange r) const { return ranges(r, r); }
+
+std::span<const DrawListItem> DrawList::ranges(DrawRange first, DrawRange last) const {
+    const uint32_t begin = rangeStart[size_t(first)], end = rangeStart[size_t(last) + 1];
+    return std::span<const DrawListItem>(items).subspan(begin, end - begin);
+}
+
+std::vector<DrawListItem> DrawList::backToFront(DrawRange a, DrawRange b) const {
+    const std::span<const DrawListItem> first = range(a), second = range(b);
+    std::vector<DrawListItem> out(first.size() + second.size());
+    std::merge(first.begin(), first.end(), second.begin(), second.end(), out.begin(),
+               [](const DrawListItem& x, const DrawListItem& y) { return x.depth > y.depth; });
+    return out;
+}
+
+DrawList buildDrawList(const DrawListInputs& in) {
+    DrawList list;
+    const scene::Frustum frustum(in.view.viewProjection);
+    uint32_t drawData = 0;  // the draw buffer holds one entry per draw, one per instance for instanced ones
+    for (uint32_t i = 0; i < in.draws.size(); drawData += std::max(in.draws[i].instanceCount, 1u), ++i) {
+        const scene::Draw& draw = in.draws[i];
+        if (draw.hidden) {
+            ++list.hiddenDraws;
+            continue;
+        }
+        ++list.draws;
+        list.instances += draw.instanceCount;
+        const uint32_t instances = std::max(draw.instanceCount, 1u);
+        DrawStats& stats = list.stats;
+        ++stats.sceneDraws;
+        stats.sceneTriangles += uint64_t(draw.indexCount / 3) * instances;
+        if (in.selection.frustumCulling && !frustum.intersects(draw.bounds)) {
+            ++stats.culledDraws;
+            continue;
+        }
+        const scene::LodLevel level = levelOf(in.scene, draw, in.view, in.targetHeight, in.selection.lodErrorPixels);
+        stats.coarserDraws += level.firstIndex != draw.firstIndex;
+        ++stats.submittedDraws;
+        stats.submittedTriangles += uint64_t(level.indexCount / 3) * instances;
+        const uint32_t key = in.keys.ofMaterial[draw.material];
+        const glm::vec3 centre = 0.5f * (draw.bounds.min + draw.bounds.max);
+        list.items.push_back({.draw = i,
+                              .material = draw.material,
+                              .key = key,
+                              .firstIndex = level.firstIndex,
+                              .indexCount = level.indexCount,
+                              .drawData = drawData,
+                              .instances = instances,
+                              .depth = glm::length(centre - in.view.eye),
+                              .flipWinding = draw.flipWinding,
+                              .doubleSided = in.scene.materials[draw.material].doubleSided,
+                              .range = rangeOf(in.keys.keys[key], in.transmission)});
+    }
+    // The sort key: the range first; then material key and material (grouping pipelines and
+    // material sets), or distance back to front. Stable: equal keys keep the scene's order.
+    std::stable_sort(list.items.begin(), list.items.end(), [](const DrawListItem& a, const DrawListItem& b) {
+        if (a.range != b.range) return a.range < b.range;
+        if (sortedBackToFront(a.range)) return a.depth > b.depth;
+        return std::tie(a.key, a.material) < std::tie(b.key, b.material);
+    });
+    uint32_t item = 0;
+    for (size_t r = 0; r < kDrawRangeCount; ++r) {
+        list.rangeStart[r] = item;
+        while (item < list.items.size() && size_t(list.items[item].range) == r) ++item;
+    }
+    list.rangeStart[kDrawRangeCount] = item;
+    return list;
+}
+
+std::string describeSelection(const DrawList& list, const DrawSelection& selection) {
+    const DrawStats& s = list.stats;
+    return "draws: " + std::to_string(s.submittedDraws) + " of " + std::to_string(s.sceneDraws) + " submitted (" +
+           std::to_string(s.culledDraws) + " outside the view frustum" + (selection.frustumCulling ? "" : ", culling off") +
+           "), " + std::to_string(s.submittedTriangles) + " of " + std::to_string(s.sceneTriangles) + " triangles; " +
+           std::to_string(s.coarserDraws) + " draws at a coarser level of detail (" +
+           (selection.lodErrorPixels > 0.0f ? "error ≤ " + formatPixels(selection.lodErrorPixels) + " px"
+                                            : std::string("levels of detail off")) +
+           ")";
+}
+
+}  // namespace candela::passes

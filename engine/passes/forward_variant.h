@@ -1,0 +1,63 @@
+#pragma once
+// The forward program's pipeline variants. A variant is the material's key (passes::MaterialKey,
+// fixed at load) combined with the frame's bits (FrameVariant: lights, image-based lighting, debug
+// view, specular anti-aliasing, sample count), so what a draw does not use costs nothing: each
+// bit is a specialization constant of forward.frag / forward_layers.frag. Names only, no Vulkan calls.
+
+#include "passes/debug_view.h"
+#include "passes/draw_list.h"
+
+#include <compare>
+#include <cstdint>
+#include <string>
+
+namespace candela::passes {
+
+enum class ShadingModel : uint32_t { Pbr = 0, PbrSchlickGgx = 1, BlinnPhong = 2 };
+
+// The frame's half of a variant: the same for every draw of the frame.
+struct FrameVariant {
+    ShadingModel model = ShadingModel::Pbr;
+    bool lights = false;  // the scene has punctual lights
+    bool ibl = false;     // image-based lighting
+    bool irradianceSh = true;
+    bool multiscatter = true;
+    uint32_t referenceSamples = 0;  // > 0: the ground-truth integrator (ibl-report)
+    DebugView debugView = DebugView::None;
+    bool specularAa = false;
+    uint32_t samples = 1;           // of the draw targets
+    bool alphaToCoverage = false;   // masked draws use alpha to coverage (samples > 1 and the device has alphaToOne)
+};
+
+// One pipeline of the forward program: the specialization constants and the pipeline state.
+struct ForwardVariant {
+    bool normalMap = false;
+    bool lights = false;
+    bool unlit = false;
+    bool alphaMask = false;
+    bool blend = false;
+    ShadingModel model = ShadingModel::Pbr;
+    bool ibl = false;
+    bool irradianceSh = true;
+    bool multiscatter = true;
+    uint32_t referenceSamples = 0;
+    DebugView debugView = DebugView::None;
+    // KHR_materials_* layers the material uses (scene::MaterialLayer bits): non-zero selects the
+    // layered program (forward_layers.*), whose kLayers evaluates just these.
+    uint32_t layers = 0;
+    bool specularAa = false;
+    uint32_t samples = 1;
+    bool alphaToCoverage = false;
+    auto operator<=>(const ForwardVariant&) const = default;
+    // E.g. "pbr+normal-map+ibl-sh9+msaa4" (for --explain).
+    std::string name() const;
+};
+
+// The variant drawing a material of `key` in a frame of `frame`: unlit materials ignore the frame's
+// lighting and shading bits.
+ForwardVariant forwardVariant(const MaterialKey& key, const FrameVariant& frame);
+
+// The layer names of `layers` (scene::MaterialLayer bits), each preceded by "+".
+std::string plusLayerNames(uint32_t layers);
+
+}  // namespace candela::passes

@@ -1,0 +1,244 @@
+#include "render/frame_builder.h"
+
+#include "core/check.h"
+#include "core/log.h"
+#include "shared/tonemap.h"
+#include "vk/context.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace candela {
+
+using namespace graph;
+
+namespace {
+constexpr VkFormat kLdrFormat = VK_FORMAT_R8G8B8A8_SRGB;
+}  // namespace
+
+FrameBuilder::FrameBuilder(vk::Context& context, SceneState& scene, shader::ParameterRegistry& parameters)
+    : mContext(context), mScene(scene), mParameters(parameters), mPattern(context), mEncode(context, kLdrFormat),
+      mForward(context), mSkybox(context), mTransmissionBackground(context), mSkinMorph(context), mTonemap(context),
+      mCalibration(context) {}
+
+void FrameBuilder::sceneUploaded() { mForward.setScene(mScene.gpuScene(), mScene.materialKeys()); }
+
+vk::MsaaChoice FrameBuilder::msaa(std::optional<uint32_t> requested) const {
+    return vk::chooseMsaa(mContext.properties().deviceType, mContext.attachmentSampleCounts(), requested);
+}
+
+void FrameBuilder::buildPattern(Frame& frame, const RenderSettings& settings) {
+    RenderGraph& graph = *frame.graph;
+    frame.hdr = mPattern.add(graph, settings.width, settings.height, settings.patternExposure);
+    const TextureId ldr = graph.createTexture("ldr", {.width = settings.width, .height = settings.height, .format = kLdrFormat});
+    frame.ldr = mEncode.add(graph, frame.hdr, ldr);
+}
+
+void FrameBuilder::buildCalibration(Frame& frame, uint32_t width, uint32_t height) {
+    mCalibration.add(*frame.graph, width, height);
+}
+
+passes::IblHandles FrameBuilder::addIblMaps(Frame& frame, bool reference) {
+    const auto declared = [&] { return static_cast<uint32_t>(frame.graph->declaration().passes.size()); };
+    frame.precomputeBegin = declared();
+    const passes::IblHandles maps = mScene.iblMaps().addToGraph(*frame.graph, frame.imports, reference);
+    frame.precomputeEnd = declared();
+    return maps;
+}
+
+std::optional<passes::ForwardPass::DeformedVertices> FrameBuilder::addSkinMorph(Frame& frame, const scene::ScenePose& pose) {
+    const scene::GpuScene& gpuScene = mScene.gpuScene();
+    if (gpuScene.scene().deformations.empty()) return std::nullopt;  // a static scene: its graph stays as it was
+    passes::SkinMorphFrame work = passes::skinMorphFrame(gpuScene, pose);
+    if (work.jobs.empty()) {
+        frame.notes.emplace_back("left out: skin_morph (no draw is skinned or has a non-zero morph weight in this pose)");
+        return std::nullopt;
+    }
+    const passes::SkinMorphPass::Inputs inputs{.scene = &gpuScene,
+                                               .jobs = work.jobs,
+                                               .vertexCount = work.vertexCount,
+                                               .joints = frame.addHostUpload("joint_matrices", bytesOf(work.joints)),
+                                               .activeTargets = frame.addHostUpload("morph_weights", bytesOf(work.activeTargets))};
+    frame.notes.push_back("skin_morph: " + std::to_string(work.jobs.size()) + " draws deformed (" +
+                          std::to_string(work.skinnedDraws) + " skinned), " + std::to_string(work.activeTargets.size()) +
+                          " morph targets with a non-zero weight, " + std::to_string(work.vertexCount) + " vertices (" +
+                          formatBytes(uint64_t(work.vertexCount) * sizeof(scene::Vertex)) + " per frame in flight)");
+    return passes::ForwardPass::DeformedVertices{.vertices = mSkinMorph.add(*frame.graph, inputs),
+                                                 .vertexOffset = std::move(work.vertexOffset)};
+}
+
+passes::ForwardPass::PosedDraws FrameBuilder::addPosedDraws(Frame& frame, const scene::Scene& scene,
+                                                            const scene::ScenePose& pose) {
+    passes::ForwardPass::PosedDraws posed{.data = frame.addHostUpload("posed_draws", bytesOf(scene::drawDataOf(scene, pose.draws())))};
+    if (!pose.animatedLights().empty() && mScene.sceneLightsUsed()) {
+        // The lights as the buffer holds them (the user's edits included), moved where the pose puts them.
+        std::vector<shading::LightData> lights = mScene.gpuScene().lights();
+        for (uint32_t l : pose.animatedLights()) {
+            const shading::LightData placed = scene::lightData(pose.lights()[l]);
+            lights[l].positionRange = glm::vec4(glm::vec3(placed.positionRange), lights[l].positionRange.w);
+            lights[l].directionType = glm::vec4(glm::vec3(placed.directionType), lights[l].directionType.w);
+        }
+        posed.lights = frame.addHostUpload("posed_lights", bytesOf(lights));
+    }
+    return posed;
+}
+
+std::optional<passes::ForwardPass::Ibl> FrameBuilder::addIbl(Frame& frame, const RenderSettings& settings) {
+    const ibl::IblMaps& maps = mScene.iblMaps();
+    if (!maps.hasEnvironment()) return std::nullopt;
+    const float theta = glm::radians(settings.ibl.rotationDegrees);
+    const float maxLod = float(maps.specularLevels() - 1);
+    return passes::ForwardPass::Ibl{.maps = addIblMaps(frame, settings.ibl.referenceSamples > 0),
+                                    .params = {.rotation = glm::vec4(std::cos(theta), std::sin(theta), 0.0f, 0.0f),
+                                               .intensity = settings.ibl.intensity,
+                                               .maxLod = maxLod,
+                                               .skyboxLod = std::clamp(settings.ibl.skyboxBlur, 0.0f, 1.0f) * maxLod,
+                                               .lutSize = float(maps.lutSize())},
+                                    .irradianceSh = maps.quality().irradiance == ibl::IrradianceMode::Sh9,
+                                    .multiscatter = settings.ibl.multiscatter,
+                                    .referenceSamples = settings.ibl.referenceSamples};
+}
+
+passes::TonemapSettings FrameBuilder::tonemapOf(const RenderSettings& settings, bool ibl) const {
+    passes::TonemapSettings tonemap = settings.tonemap;
+    if (settings.debugView == passes::DebugView::None) return tonemap;
+    // Debug views have no skybox: where it was the background, a neutral grey (#262626) is.
+    if (ibl && settings.ibl.skybox && !tonemap.background) tonemap.background = shading::srgbDecode(glm::vec3(38.0f / 255.0f));
+    if (!passes::debugViewIsLight(settings.debugView)) {
+        tonemap.op = passes::Tonemap::Linear;  // data as it is
+        tonemap.exposureEv = 0.0f;
+        tonemap.dither = false;
+    }
+    return tonemap;
+}
+
+void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std::optional<TextureId> target) {
+    RenderGraph& graph = *frame.graph;
+    const vk::MsaaChoice msaa = this->msaa(settings.msaa);
+    if (msaa.clamped && mMsaaWarnedFor != settings.msaa) {
+        log::warn("--msaa: " + msaa.reason);
+        mMsaaWarnedFor = settings.msaa;
+    }
+    const scene::Scene& scene = *settings.scene;
+    const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
+    const scene::ScenePose* pose = settings.pose ? settings.pose : mScene.restPose();
+    const scene::ViewSetup view = resolveView(scene, settings.camera, aspect, pose);
+    const auto deformed = pose ? addSkinMorph(frame, *pose) : std::nullopt;
+    const bool animated = pose && pose->animated();
+    const auto posed = animated ? std::optional(addPosedDraws(frame, scene, *pose)) : std::nullopt;
+    const std::optional<passes::ForwardPass::Ibl> ibl = addIbl(frame, settings);
+    // The material layers' maps: the sheen LUT (computed once) and, with an environment, the sheen cube.
+    std::optional<passes::LayerMaps> layerMaps;
+    if (mScene.hasSheen())
+        layerMaps = passes::LayerMaps{.sheenLut = mScene.sheenLut().addToGraph(graph, frame.imports),
+                                      .sheenCube = ibl ? ibl->maps.sheen : TextureId{}};
+    mParameters.beginFrame();
+    mScene.applyParameters(mParameters, mForward.reflection(), mForward.layeredReflection());
+
+    // Debug views show data, not what lies behind: transmissive draws are then drawn with the rest.
+    const passes::DrawList list = passes::buildDrawList({.scene = scene,
+                                                         .keys = mScene.materialKeys(),
+                                                         .draws = animated ? std::span(pose->draws()) : std::span(scene.draws),
+                                                         .view = view,
+                                                         .targetHeight = settings.height,
+                                                         .selection = settings.drawSelection,
+                                                         .transmission = settings.debugView == passes::DebugView::None});
+    const passes::ForwardPass::FrameInputs inputs = mForward.frameInputs({.view = view,
+                                                                          .model = settings.shading,
+                                                                          .ibl = ibl ? &*ibl : nullptr,
+                                                                          .debugView = settings.debugView,
+                                                                          .shading = settings.shadingOptions,
+                                                                          .samples = msaa.samples,
+                                                                          .posed = posed ? &*posed : nullptr,
+                                                                          .deformed = deformed ? &*deformed : nullptr,
+                                                                          .layerMaps = layerMaps ? &*layerMaps : nullptr,
+                                                                          .parameters = &mParameters});
+    mStats = list.stats;
+    passes::DrawTarget drawn = mForward.addOpaque(graph, {settings.width, settings.height, msaa.samples}, list, inputs, &mStats);
+    const bool skybox = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;
+    if (skybox)
+        drawn = mSkybox.add(graph, view, {.target = drawn, .specular = ibl->maps.specular, .params = ibl->params}, &mParameters);
+    // Transmissive draws over the opaque image (sky included), which they see through.
+    const bool transmission = !list.empty(passes::DrawRange::Transmissive);
+    if (transmission)
+        drawn = mForward.addTransmissive(graph, drawn, mTransmissionBackground.add(graph, drawn.hdr), list, inputs, &mStats);
+    frame.hdr = drawn.hdr;
+    // UNORM target: the tonemap shader encodes sRGB itself, which also lets it dither.
+    const TextureId ldr = target ? *target
+                                 : graph.createTexture("ldr", {.width = settings.width,
+                                                               .height = settings.height,
+                                                               .format = VK_FORMAT_R8G8B8A8_UNORM});
+    frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemapOf(settings, ibl.has_value()), &mParameters);
+
+    addNotes(frame, settings, msaa, mForward.describe(list, inputs, settings.drawSelection),
+             {.sheenLut = layerMaps.has_value(), .transmission = transmission, .ibl = ibl.has_value(), .skybox = skybox});
+}
+
+void FrameBuilder::addNotes(Frame& frame, const RenderSettings& settings, const vk::MsaaChoice& msaa,
+                            std::vector<std::string> forward, const Scheduled& scheduled) {
+    std::vector<std::string>& notes = frame.notes;
+    if (!mScene.sceneLightsUsed() && !settings.scene->lights.empty())
+        notes.emplace_back("left out: the scene's " + std::to_string(settings.scene->lights.size()) +
+                           " punctual lights (--scene-lights off)");
+    if (mScene.defaultLightsAdded())
+        notes.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
+    notes.push_back("msaa: " + msaa.reason +
+                    (msaa.samples == 1 ? std::string()
+                     : mContext.alphaToOne()
+                         ? "; alpha-masked materials use alpha to coverage"
+                         : "; alpha-masked materials keep the alpha test (the device has no alphaToOne)"));
+    notes.insert(notes.end(), std::make_move_iterator(forward.begin()), std::make_move_iterator(forward.end()));
+    for (const std::string& line : mScene.iblMaps().explanation()) notes.push_back(line);
+    if (scheduled.sheenLut)
+        notes.emplace_back(mScene.sheenLut().computed() ? "sheen LUT: imported (computed by an earlier frame)"
+                                                        : "sheen LUT: computed by this frame's ibl_sheen_lut pass (once per run)");
+    else
+        notes.emplace_back("left out: sheen LUT (no material has a sheen)");
+    const passes::DebugView debugView = settings.debugView;
+    if (scheduled.transmission)
+        notes.emplace_back("transmission: 'transmission_background' copies the opaque image into a mip chain; "
+                           "'forward_transmission' draws the transmissive and blended draws over it");
+    else
+        notes.emplace_back(debugView != passes::DebugView::None
+                               ? "left out: transmission background (debug view: transmissive draws show data)"
+                               : "left out: transmission background (no transmissive material in the frame)");
+    if (debugView != passes::DebugView::None)
+        notes.push_back(std::string("debug view: ") + passes::debugViewName(debugView) +
+                        (passes::debugViewIsLight(debugView) ? " (tonemapped as the image is)"
+                                                             : " (shown as data: linear tonemap at exposure 0)"));
+    if (scheduled.ibl && !scheduled.skybox)
+        notes.emplace_back(debugView != passes::DebugView::None ? "left out: skybox (debug view)"
+                                                                : "left out: skybox (the background is not the environment)");
+}
+
+scene::ViewSetup FrameBuilder::resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                           const scene::ScenePose* pose) {
+    if (pose && !pose->animated()) pose = nullptr;
+    if (camera.orbitCamera) {
+        scene::ViewSetup view = camera.orbitCamera->view(aspect);
+        if (camera.lensShiftX != 0.0f) {
+            view.projection = glm::translate(glm::mat4(1.0f), glm::vec3(camera.lensShiftX, 0.0f, 0.0f)) * view.projection;
+            view.viewProjection = view.projection * view.view;
+        }
+        return view;
+    }
+    if (camera.gltfCamera) {
+        if (*camera.gltfCamera >= scene.cameras.size())
+            throw UserError("--camera " + std::to_string(*camera.gltfCamera) + ": the scene has " +
+                            std::to_string(scene.cameras.size()) + " cameras");
+        return scene::cameraView((pose ? pose->cameras() : scene.cameras)[*camera.gltfCamera], aspect);
+    }
+    const glm::vec3 angles = camera.orbit.value_or(glm::vec3(0.0f, 90.0f, 0.0f));
+    scene::OrbitCamera orbit = scene::OrbitCamera::framing(pose ? pose->animationBounds() : scene.bounds, aspect, angles.x,
+                                                           angles.y, camera.fovYDegrees);
+    if (angles.z > 0.0f) {
+        orbit.radius = angles.z;
+        orbit.znear = angles.z * 1e-3f;
+    }
+    if (camera.target) orbit.target = *camera.target;
+    return orbit.view(aspect);
+}
+
+}  // namespace candela

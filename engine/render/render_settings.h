@@ -1,0 +1,76 @@
+#pragma once
+// RenderSettings: what one frame is — what to draw (the scene, its pose, the environment), how
+// (camera, shading, debug view, tonemap, draw selection, MSAA, image-based lighting) and into what
+// (size, 8-bit or float). How the renderer runs frames (frames in flight, the viewer's tolerance of
+// unknown pass toggles, test hooks) is Renderer::Options.
+
+#include "ibl/ibl_settings.h"
+#include "passes/debug_view.h"
+#include "passes/draw_selection.h"
+#include "passes/forward_variant.h"
+#include "passes/tonemap_pass.h"
+#include "scene/camera.h"
+#include "scene/environment.h"
+#include "scene/scene.h"
+#include "scene/scene_pose.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace candela {
+
+// Which camera looks at the scene: a glTF camera, or the orbit camera (framing the scene bounds
+// unless the distance or target is given).
+struct CameraSettings {
+    std::optional<uint32_t> gltfCamera;     // --camera INDEX
+    std::optional<glm::vec3> orbit;         // --camera-orbit θ°,φ°,r (r ≤ 0: frame the bounds)
+    std::optional<glm::vec3> target;        // --target X,Y,Z
+    float fovYDegrees = 45.0f;              // --fov
+    // An interactive camera (the viewer's), used as is; overrides the three above.
+    std::optional<scene::OrbitCamera> orbitCamera;
+    // Moves the image centre right by this many NDC units (off-axis projection): the viewer
+    // centres the scene in the part of the window its side panel leaves free.
+    float lensShiftX = 0.0f;
+};
+
+struct RenderSettings {
+    uint32_t width = 1280;
+    uint32_t height = 720;
+    bool floatOutput = false;  // capture linear HDR (EXR/PFM) instead of 8-bit sRGB (PNG)
+    // The scene to draw; null renders the foundation's procedural test pattern instead.
+    const scene::Scene* scene = nullptr;
+    // The scene as its animations pose it this frame (a pose of `scene`, owned by the caller);
+    // null, or a pose that animates nothing, draws the loaded rest pose with the static draw data.
+    const scene::ScenePose* pose = nullptr;
+    CameraSettings camera;
+    passes::ShadingModel shading = passes::ShadingModel::Pbr;
+    // A debug view of the forward pass instead of the shaded image (a variant of the frame graph:
+    // no skybox; data views are tonemapped linearly at exposure 0, see passes::DebugView).
+    passes::DebugView debugView = passes::DebugView::None;
+    // A scene without punctual lights gets a default key and fill light (directional), so that
+    // it is visible before image-based lighting exists; false leaves it unlit.
+    bool defaultLights = true;
+    // The scene's own punctual lights (KHR_lights_punctual); false leaves them out, for comparisons
+    // under image-based lighting alone — the scene then counts as one without lights.
+    bool sceneLights = true;
+    passes::TonemapSettings tonemap;
+    // Frustum culling and the level-of-detail error (--lod-error, --cull).
+    passes::DrawSelection drawSelection;
+    // Specular anti-aliasing (--specular-aa).
+    passes::ShadingOptions shadingOptions;
+    // MSAA sample count of the draw targets (--msaa: 1, 2, 4 or 8); nullopt: the device default
+    // (vk::chooseMsaa). Clamped to what the device supports, with a warning.
+    std::optional<uint32_t> msaa;
+    // Image-based lighting: the environment (null: none; read during the call only, hashed when the
+    // pointer or the quality changes), what to precompute and how to look it up.
+    const scene::Environment* environment = nullptr;
+    ibl::IblQuality iblQuality;
+    ibl::IblLook ibl;
+    std::filesystem::path iblCacheDir;  // empty: no on-disk cache
+    float patternExposure = 1.0f;  // test pattern only
+    std::vector<std::string> disabledPasses;  // runtime toggles by pass name
+};
+
+}  // namespace candela

@@ -1,0 +1,98 @@
+#pragma once
+// SceneState: what the device holds of the scene a frame draws — the uploaded scene (GpuScene)
+// and its materials' keys, the rest pose of a deformable scene, the image-based-lighting maps of
+// the environment (with the memory fallback), the sheen LUT — and the user's edits of its lights
+// and materials (through the parameter registry), written into its buffers. It decides when to
+// upload: a different scene, a different light choice, a different environment or quality.
+// Anything it replaces may be read by frames in flight: it waits for them first (FrameRunner).
+
+#include "ibl/ibl_maps.h"
+#include "ibl/ibl_settings.h"
+#include "ibl/sheen_lut.h"
+#include "passes/draw_list.h"
+#include "render/frame_runner.h"
+#include "scene/environment.h"
+#include "scene/gpu_scene.h"
+#include "scene/scene_pose.h"
+#include "shader/parameter_registry.h"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace candela {
+
+// The scene a frame draws, as far as the device is concerned.
+struct SceneChoice {
+    const scene::Scene* scene = nullptr;
+    bool defaultLights = true;  // a scene without punctual lights gets a key and a fill light
+    bool sceneLights = true;    // the scene's own punctual lights (false: left out)
+};
+
+class SceneState {
+public:
+    // Preconditions: `context` and `runner` outlive the state.
+    SceneState(vk::Context& context, FrameRunner& runner);
+
+    // Uploads `choice` unless it is what is uploaded; returns whether it uploaded (the passes then
+    // bind the new scene).
+    bool prepareScene(const SceneChoice& choice);
+    // Gives the maps `environment` at `quality` (the sheen cube only when a material has a sheen)
+    // unless they have it already. Precondition: a scene is uploaded.
+    void prepareEnvironment(const scene::Environment* environment, ibl::IblQuality quality,
+                            const std::filesystem::path& cacheDir);
+    // Waits for the GPU and gives the maps this environment and quality (see IblMaps::setEnvironment);
+    // out of device memory, lowers the cube size (with a warning) rather than fail. `force`:
+    // recompute, never read from the cache.
+    void useEnvironment(const scene::Environment* environment, const ibl::IblQuality& quality,
+                        const std::filesystem::path& cacheDir, bool force);
+    // Runs the scene's lights and materials through `parameters` (their blocks in the forward
+    // program's `reflection` and, for layers, `layered`); rewrites their buffers (after waiting for
+    // the GPU) when the user changed one.
+    void applyParameters(shader::ParameterRegistry& parameters, const shader::ShaderReflection& reflection,
+                         const shader::ShaderReflection* layered);
+
+    // The last frame completed: the maps and the sheen LUT take over what it computed.
+    void frameCompleted(const graph::RenderGraph& graph);
+    // The Scene object last drawn was replaced in place: the next frame uploads it anew.
+    void sceneReplaced();
+    // After shaders were replaced: a replaced IBL shader discards the maps (computed again).
+    void shadersReplaced(const std::vector<std::string>& names);
+    // The next frame runs the IBL precompute again (not from the cache).
+    void recomputeIbl();
+
+    const scene::GpuScene& gpuScene() const { return *mGpuScene; }
+    const passes::MaterialKeys& materialKeys() const { return mKeys; }
+    // The rest pose of an uploaded scene with skins or morph targets (drawn when a frame brings no
+    // pose of its own: skinned meshes are placed by their joints even at rest); null otherwise.
+    const scene::ScenePose* restPose() const { return mRestPose.get(); }
+    bool defaultLightsAdded() const { return mUploaded.defaultLights; }
+    bool sceneLightsUsed() const { return mUploaded.sceneLights; }
+    bool hasSheen() const { return mHasSheen; }
+    ibl::IblMaps& iblMaps() { return *mIbl; }
+    ibl::SheenLut& sheenLut() { return mSheenLut; }
+
+    // The key and fill lights added to scenes without lights (SceneChoice::defaultLights).
+    static std::vector<scene::Light> defaultLights();
+
+private:
+    void resetIblMaps();  // new, empty maps (after waiting for the frames in flight)
+
+    vk::Context& mContext;
+    FrameRunner& mRunner;
+    std::unique_ptr<scene::GpuScene> mGpuScene;
+    passes::MaterialKeys mKeys;
+    std::unique_ptr<scene::ScenePose> mRestPose;
+    SceneChoice mUploaded{nullptr, false, true};  // what mGpuScene holds (lights as resolved)
+    bool mHasSheen = false;
+    // Replaced whole when reset (a failed allocation's leftovers go with the old object).
+    std::unique_ptr<ibl::IblMaps> mIbl;
+    ibl::SheenLut mSheenLut;
+    // What mIbl was last set up with (the environment is re-hashed only when these change).
+    const scene::Environment* mEnvironment = nullptr;
+    ibl::IblQuality mIblQuality;
+    std::filesystem::path mIblCacheDir;
+};
+
+}  // namespace candela
