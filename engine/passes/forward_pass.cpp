@@ -84,8 +84,11 @@ ForwardPass::ForwardPass(vk::Context& context) : mContext(context), mIblSet(cont
 
 const vk::Pipeline& ForwardPass::pipeline(const Variant& v) {
     return mPipelines.get(mContext, v, [&] {
+        // The ground truth of `ibl-report` (referenceSamples) is a program of its own, for core materials.
+        if (v.referenceSamples && v.layers) throw std::logic_error("ForwardPass: the ground truth integrates core materials only");
         return v.layers ? vk::Pipeline::graphics(mContext, "forward_layers.vert", "forward_layers.frag", desc(v))
-                        : vk::Pipeline::graphics(mContext, "forward.vert", "forward.frag", desc(v));
+                        : vk::Pipeline::graphics(mContext, "forward.vert",
+                                                 v.referenceSamples ? "forward_reference.frag" : "forward.frag", desc(v));
     });
 }
 
