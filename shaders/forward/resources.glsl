@@ -39,27 +39,16 @@ layout(std430, set = 0, binding = 1) readonly buffer Draws {
 layout(std430, set = 0, binding = 2) readonly buffer Materials {
     MaterialData materials[];
 };
-layout(set = 1, binding = 0) uniform sampler2D baseColorTexture;
-layout(set = 1, binding = 1) uniform sampler2D metallicRoughnessTexture;
-layout(set = 1, binding = 2) uniform sampler2D normalTexture;
-layout(set = 1, binding = 3) uniform sampler2D occlusionTexture;
-layout(set = 1, binding = 4) uniform sampler2D emissiveTexture;
+// The material's textures (set 1): one sampler per row of shared/forward_tables.h's texture tables,
+// named after its field ("baseColorTexture").
+#define CANDELA_MATERIAL_SAMPLER(NAME, field, slot, bindingNumber, normalMap) \
+    layout(set = 1, binding = bindingNumber) uniform sampler2D field##Texture;
+CANDELA_CORE_TEXTURES(CANDELA_MATERIAL_SAMPLER)
 #ifdef CANDELA_MATERIAL_LAYERS
 layout(std430, set = 1, binding = 5) readonly buffer MaterialLayers {
     MaterialLayerData layers[];
 };
-layout(set = 1, binding = 6) uniform sampler2D specularTexture;
-layout(set = 1, binding = 7) uniform sampler2D specularColorTexture;
-layout(set = 1, binding = 8) uniform sampler2D clearcoatTexture;
-layout(set = 1, binding = 9) uniform sampler2D clearcoatRoughnessTexture;
-layout(set = 1, binding = 10) uniform sampler2D clearcoatNormalTexture;
-layout(set = 1, binding = 11) uniform sampler2D sheenColorTexture;
-layout(set = 1, binding = 12) uniform sampler2D sheenRoughnessTexture;
-layout(set = 1, binding = 13) uniform sampler2D anisotropyTexture;
-layout(set = 1, binding = 14) uniform sampler2D transmissionTexture;
-layout(set = 1, binding = 15) uniform sampler2D thicknessTexture;
-layout(set = 1, binding = 16) uniform sampler2D iridescenceTexture;
-layout(set = 1, binding = 17) uniform sampler2D iridescenceThicknessTexture;
+CANDELA_LAYER_TEXTURES(CANDELA_MATERIAL_SAMPLER)
 // The layers' maps (set 3, the layered program only; placeholders where the frame has none): the
 // sheen albedo LUT E(N·V, sheen roughness), the Charlie-prefiltered environment, and what lies
 // behind the transmissive draws (the opaque image, mip m box-filtered 2^m × 2^m; passes/
