@@ -2,12 +2,13 @@
 #extension GL_GOOGLE_include_directive : require
 // The sheen LUT (KHR_materials_sheen): texel (x, y) holds the sheen lobe's directional albedo
 // E(N·V, r) = ∫ f_sheen · N·L dω_L for N·V = x/(size−1) and perceptual sheen roughness
-// r = y/(size−1) (clamped as shared/brdf_layers.h clamps it), which scales the material beneath
+// r = y/(size−1) (clamped as shared/brdf_sheen.h clamps it), which scales the material beneath
 // the sheen and the sheen's image-based light. A deterministic midpoint quadrature over the half
 // vector — cos θ_h in kCosineSteps, φ_h over [0, π] (the lobe is symmetric about the view plane) in
 // kAzimuthSteps — with dω_L = 4 V·H dω_h; the Charlie peak (width ≈ √α in cos θ_h) spans at least
 // 6 steps at the smallest roughness.
-#include "shared/brdf_layers.h"
+#include "shared/brdf_sheen.h"
+#include "shared/ibl.h"
 
 layout(local_size_x = CANDELA_IBL_GROUP, local_size_y = CANDELA_IBL_GROUP) in;
 

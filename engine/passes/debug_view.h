@@ -1,14 +1,11 @@
 #pragma once
-// The forward pass's debug views: what it writes instead of the shaded colour (CANDELA_DEBUG_* in
-// shared/scene_data.h). Material inputs: base colour, normals before and after the normal map,
-// roughness, metallic, occlusion, emissive. The GGX terms toward the first punctual light: D
-// (relative to its peak), G (Smith) and F (Schlick). The diffuse and the specular light alone
-// (punctual + environment). Material layers (docs/materials.md): the light the clearcoat reflects
-// and the coat's normal (black where there is no coat), the light the sheen reflects, the
-// anisotropy direction (scaled by its strength), the transmission's throughput (the fraction of the
-// light behind the surface that comes through, per channel), the thin film's thickness and the
-// Fresnel it gives. Names only: no Vulkan (the command-line
+// The forward pass's debug views: what it writes instead of the shaded colour — material inputs,
+// the GGX terms toward the first punctual light, the light of each lobe, the layers' parameters —
+// one per row of shared/forward_tables.h's CANDELA_DEBUG_VIEWS, which says what each shows (the
+// shaders' CANDELA_DEBUG_* come from the same rows). Names only: no Vulkan (the command-line
 // parser uses them).
+
+#include "shared/forward_tables.h"
 
 #include <cstdint>
 #include <optional>
@@ -18,59 +15,47 @@
 
 namespace candela::passes {
 
-enum class DebugView : uint32_t {
-    None = 0, BaseColor, GeometricNormal, MappedNormal, Roughness, Metallic, Occlusion, Emissive, D, G, F, Diffuse, Specular,
-    Clearcoat, ClearcoatNormal, Sheen, Anisotropy, Transmission, IridescenceThickness, IridescenceFresnel
-};
+#define CANDELA_DEBUG_VIEW_ENUMERATOR(NAME, Name, value, name, light) Name = value,
+enum class DebugView : uint32_t { CANDELA_DEBUG_VIEWS(CANDELA_DEBUG_VIEW_ENUMERATOR) };
+#undef CANDELA_DEBUG_VIEW_ENUMERATOR
 
-inline constexpr std::pair<DebugView, const char*> kDebugViewNames[] = {
-    {DebugView::None, "none"},
-    {DebugView::BaseColor, "base-color"},
-    {DebugView::GeometricNormal, "geometric-normal"},
-    {DebugView::MappedNormal, "mapped-normal"},
-    {DebugView::Roughness, "roughness"},
-    {DebugView::Metallic, "metallic"},
-    {DebugView::Occlusion, "occlusion"},
-    {DebugView::Emissive, "emissive"},
-    {DebugView::D, "d"},
-    {DebugView::G, "g"},
-    {DebugView::F, "f"},
-    {DebugView::Diffuse, "diffuse"},
-    {DebugView::Specular, "specular"},
-    {DebugView::Clearcoat, "clearcoat"},
-    {DebugView::ClearcoatNormal, "clearcoat-normal"},
-    {DebugView::Sheen, "sheen"},
-    {DebugView::Anisotropy, "anisotropy-direction"},
-    {DebugView::Transmission, "transmission"},
-    {DebugView::IridescenceThickness, "iridescence-thickness"},
-    {DebugView::IridescenceFresnel, "iridescence-fresnel"}};
+// Each view with its name (the command line's and the viewer's) and whether it shows light.
+struct DebugViewRow {
+    DebugView view;
+    const char* name;
+    bool light;
+};
+#define CANDELA_DEBUG_VIEW_ROW(NAME, Name, value, name, light) {DebugView::Name, name, light},
+inline constexpr DebugViewRow kDebugViews[] = {CANDELA_DEBUG_VIEWS(CANDELA_DEBUG_VIEW_ROW)};
+#undef CANDELA_DEBUG_VIEW_ROW
 
 // The names above; nullopt for anything else.
 inline std::optional<DebugView> parseDebugView(std::string_view name) {
-    for (const auto& [view, text] : kDebugViewNames)
-        if (name == text) return view;
+    for (const DebugViewRow& row : kDebugViews)
+        if (name == row.name) return row.view;
     return std::nullopt;
 }
 
 inline const char* debugViewName(DebugView view) {
-    for (const auto& [v, text] : kDebugViewNames)
-        if (v == view) return text;
+    for (const DebugViewRow& row : kDebugViews)
+        if (row.view == view) return row.name;
     return "?";
 }
 
 // Every view but None, in menu order.
 inline std::vector<DebugView> allDebugViews() {
     std::vector<DebugView> views;
-    for (const auto& [view, text] : kDebugViewNames)
-        if (view != DebugView::None) views.push_back(view);
+    for (const DebugViewRow& row : kDebugViews)
+        if (row.view != DebugView::None) views.push_back(row.view);
     return views;
 }
 
 // Data and material colours are shown as they are (linear tonemap, exposure 0); the diffuse,
-// specular and clearcoat light go through the frame's tonemap like the full image.
+// specular, clearcoat and sheen light go through the frame's tonemap like the full image.
 inline bool debugViewIsLight(DebugView view) {
-    return view == DebugView::Diffuse || view == DebugView::Specular || view == DebugView::Clearcoat ||
-           view == DebugView::Sheen;
+    for (const DebugViewRow& row : kDebugViews)
+        if (row.view == view) return row.light;
+    return false;
 }
 
 }  // namespace candela::passes

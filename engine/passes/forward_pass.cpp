@@ -13,17 +13,6 @@ namespace candela::passes {
 
 using namespace graph;
 
-static_assert(uint32_t(DebugView::Specular) == CANDELA_DEBUG_SPECULAR && uint32_t(DebugView::D) == CANDELA_DEBUG_D);
-static_assert(uint32_t(DebugView::ClearcoatNormal) == CANDELA_DEBUG_CLEARCOAT_NORMAL &&
-              uint32_t(DebugView::Sheen) == CANDELA_DEBUG_SHEEN && uint32_t(DebugView::Anisotropy) == CANDELA_DEBUG_ANISOTROPY &&
-              uint32_t(DebugView::Transmission) == CANDELA_DEBUG_TRANSMISSION &&
-              uint32_t(DebugView::IridescenceThickness) == CANDELA_DEBUG_IRIDESCENCE_THICKNESS &&
-              uint32_t(DebugView::IridescenceFresnel) == CANDELA_DEBUG_IRIDESCENCE_FRESNEL);
-static_assert(scene::kLayerSpecular == CANDELA_LAYER_SPECULAR && scene::kLayerClearcoat == CANDELA_LAYER_CLEARCOAT &&
-              scene::kLayerClearcoatNormal == CANDELA_LAYER_CLEARCOAT_NORMAL && scene::kLayerSheen == CANDELA_LAYER_SHEEN &&
-              scene::kLayerAnisotropy == CANDELA_LAYER_ANISOTROPY && scene::kLayerTransmission == CANDELA_LAYER_TRANSMISSION &&
-              scene::kLayerVolume == CANDELA_LAYER_VOLUME && scene::kLayerIridescence == CANDELA_LAYER_IRIDESCENCE);
-
 namespace {
 
 vk::GraphicsPipelineDesc pipelineDesc(const ForwardVariant& v) {
@@ -59,8 +48,11 @@ ForwardPass::ForwardPass(vk::Context& context) : mContext(context), mIblSet(cont
 
 const vk::Pipeline& ForwardPass::pipeline(const ForwardVariant& v) {
     return mPipelines.get(mContext, v, [&] {
+        // The ground truth of `ibl-report` (referenceSamples) is a program of its own, for core materials.
+        if (v.referenceSamples && v.layers) throw std::logic_error("ForwardPass: the ground truth integrates core materials only");
         return v.layers ? vk::Pipeline::graphics(mContext, "forward_layers.vert", "forward_layers.frag", pipelineDesc(v))
-                        : vk::Pipeline::graphics(mContext, "forward.vert", "forward.frag", pipelineDesc(v));
+                        : vk::Pipeline::graphics(mContext, "forward.vert",
+                                                 v.referenceSamples ? "forward_reference.frag" : "forward.frag", pipelineDesc(v));
     });
 }
 
@@ -83,12 +75,6 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene, const MaterialKeys& 
                     .buffer(ForwardBlock<shading::DrawData>::name, gpuScene.drawBuffer())
                     .buffer(ForwardBlock<shading::MaterialData>::name, gpuScene.materialBuffer())
                     .commit(mContext, *mSets);
-    static constexpr const char* kSlots[CANDELA_TEX_COUNT] = {"baseColorTexture", "metallicRoughnessTexture",
-                                                               "normalTexture", "occlusionTexture", "emissiveTexture"};
-    static constexpr const char* kLayerSlots[CANDELA_LAYER_TEX_COUNT] = {
-        "specularTexture",  "specularColorTexture",   "clearcoatTexture",     "clearcoatRoughnessTexture",
-        "clearcoatNormalTexture", "sheenColorTexture", "sheenRoughnessTexture", "anisotropyTexture",
-        "transmissionTexture", "thicknessTexture", "iridescenceTexture", "iridescenceThicknessTexture"};
     for (uint32_t material = 0; material < gpuScene.scene().materials.size(); ++material) {
         // A layered material's set follows the layered program's layout: its core textures, then
         // every material's layer parameters and its own layer textures.
@@ -97,13 +83,13 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene, const MaterialKeys& 
         vk::DescriptorWriter writer(program, 1);
         for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
             const scene::GpuScene::Binding b = gpuScene.texture(material, slot);
-            writer.image(kSlots[slot], b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
+            writer.image(scene::kCoreTextureSlots[slot].sampler, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
         }
         if (layers) {
             writer.buffer(ForwardBlock<shading::MaterialLayerData>::name, gpuScene.materialLayerBuffer());
             for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) {
                 const scene::GpuScene::Binding b = gpuScene.layerTexture(material, slot);
-                writer.image(kLayerSlots[slot], b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
+                writer.image(scene::kLayerTextureSlots[slot].sampler, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
             }
         }
         mMaterialSets.push_back(writer.commit(mContext, *mSets));

@@ -1,6 +1,6 @@
 #include "passes/ibl_sample_tables.h"
 
-#include "shared/brdf_layers.h"
+#include "shared/brdf_sheen.h"
 #include "shared/ibl.h"
 
 #include <algorithm>

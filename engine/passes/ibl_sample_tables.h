@@ -26,7 +26,7 @@ SampleTable prefilterSamples(float roughness, uint32_t count, uint32_t sourceFac
 
 // Charlie (sheen) prefilter samples for perceptual sheen roughness r (n = v, as the split sum
 // assumes): directions l distributed exactly as the sheen lobe f_sheen(n, n, l) · n·l
-// (shared/brdf_layers.h) — θ by inverting its marginal, tabulated in double (the lobe underflows a
+// (shared/brdf_sheen.h) — θ by inverting its marginal, tabulated in double (the lobe underflows a
 // float at small roughness), φ uniform — so every sample weighs 1. Lods as for prefilterSamples.
 SampleTable charlieSamples(float roughness, uint32_t count, uint32_t sourceFaceSize, uint32_t sourceMips,
                            bool filtered, float lodBias);

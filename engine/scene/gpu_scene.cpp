@@ -60,16 +60,8 @@ MaterialData materialData(const Material& m) {
                                                          : float(CANDELA_ALPHA_OPAQUE);
     out.alphaCutoff = m.alphaCutoff;
     out.alphaMode = mode;
-    const TextureRef* refs[] = {&m.baseColor, &m.metallicRoughness, &m.normal, &m.occlusion, &m.emissive};
-    for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) out.uv[slot] = uvTransform(*refs[slot]);
+    for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) out.uv[slot] = uvTransform(m.texture(slot));
     return out;
-}
-
-// The material's layer textures in slot order (CANDELA_LAYER_TEX_*).
-std::array<const TextureRef*, CANDELA_LAYER_TEX_COUNT> layerTextures(const Material& m) {
-    return {&m.specular,       &m.specularColor, &m.clearcoat,      &m.clearcoatRoughness, &m.clearcoatNormal,
-            &m.sheenColor,     &m.sheenRoughness, &m.anisotropy,    &m.transmission,       &m.thickness,
-            &m.iridescence,    &m.iridescenceThickness};
 }
 
 MaterialLayerData materialLayerData(const Material& m) {
@@ -93,8 +85,7 @@ MaterialLayerData materialLayerData(const Material& m) {
     out.iridescenceIor = m.iridescenceIor;
     out.iridescenceThicknessMinimum = m.iridescenceThicknessMinimum;
     out.iridescenceThicknessMaximum = m.iridescenceThicknessMaximum;
-    const auto textures = layerTextures(m);
-    for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) out.uv[slot] = uvTransform(*textures[slot]);
+    for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) out.uv[slot] = uvTransform(m.layerTexture(slot));
     return out;
 }
 
@@ -203,10 +194,8 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
         const auto mark = [&](const TextureRef& ref, bool normal) {
             if (ref.present() && size_t(ref.image) < scene.images.size()) (normal ? normalUse : otherUse)[size_t(ref.image)] = true;
         };
-        mark(m.normal, true);
-        for (const TextureRef* ref : {&m.baseColor, &m.metallicRoughness, &m.occlusion, &m.emissive}) mark(*ref, false);
-        const auto layers = layerTextures(m);
-        for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) mark(*layers[size_t(slot)], slot == CANDELA_LAYER_TEX_CLEARCOAT_NORMAL);
+        for (const TextureSlot& slot : kCoreTextureSlots) mark(m.*slot.field, slot.normalMap);
+        for (const TextureSlot& slot : kLayerTextureSlots) mark(m.*slot.field, slot.normalMap);
     }
     const auto upload = [&](const Image& source, bool normalMap) {
         const uint32_t mips = std::bit_width(std::max(source.width, source.height));
@@ -263,16 +252,15 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
                                                                                    : &mImages[size_t(ref.image)];
         return Binding{image->view(), hasSampler ? mSamplers[ref.sampler].get() : mDefaultSampler.get()};
     };
+    // Missing textures read white (factor × 1), missing normal maps flat.
+    const auto slotBinding = [&](const Material& m, const TextureSlot& slot) {
+        return binding(m.*slot.field, slot.normalMap ? mFlatNormal : mWhite, slot.normalMap);
+    };
     for (const Material& m : scene.materials) {
-        mBindings.push_back({binding(m.baseColor, mWhite), binding(m.metallicRoughness, mWhite),
-                             binding(m.normal, mFlatNormal, true), binding(m.occlusion, mWhite), binding(m.emissive, mWhite)});
-        // Missing layer textures read white (factor × 1), the coat's normal map flat.
-        const auto textures = layerTextures(m);
+        auto& bindings = mBindings.emplace_back();
+        for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) bindings[slot] = slotBinding(m, kCoreTextureSlots[slot]);
         auto& layerBindings = mLayerBindings.emplace_back();
-        for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) {
-            const bool coatNormal = slot == CANDELA_LAYER_TEX_CLEARCOAT_NORMAL;
-            layerBindings[slot] = binding(*textures[slot], coatNormal ? mFlatNormal : mWhite, coatNormal);
-        }
+        for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) layerBindings[slot] = slotBinding(m, kLayerTextureSlots[slot]);
     }
 }
 

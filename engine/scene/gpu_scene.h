@@ -70,13 +70,13 @@ public:
                  const std::vector<shading::MaterialLayerData>& layers);
 
     // The view and sampler bound to texture slot `slot` (CANDELA_TEX_*) of material `material`:
-    // the material's texture, or a 1×1 default (white, or a flat normal for the normal slot).
+    // the material's texture, or a 1×1 default (white, or a flat normal for a normal-map slot).
     struct Binding {
         VkImageView view;
         VkSampler sampler;
     };
     Binding texture(uint32_t material, int slot) const;
-    // The same for layer texture slot `slot` (CANDELA_LAYER_TEX_*): a 1×1 white default.
+    // The same for layer texture slot `slot` (CANDELA_LAYER_TEX_*).
     Binding layerTexture(uint32_t material, int slot) const;
 
     const Scene& scene() const { return *mScene; }

@@ -5,6 +5,7 @@
 // clockwise front faces.
 
 #include "scene/node_tree.h"
+#include "shared/forward_tables.h"
 
 #include <glm/glm.hpp>
 
@@ -93,11 +94,13 @@ struct Material {
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
     bool unlit = false;  // KHR_materials_unlit
-    TextureRef baseColor;          // sRGB
-    TextureRef metallicRoughness;  // linear: G = roughness, B = metallic
-    TextureRef normal;             // linear, tangent space
-    TextureRef occlusion;          // linear, R channel
-    TextureRef emissive;           // sRGB
+    // Its textures, one per row of shared/forward_tables.h's CANDELA_CORE_TEXTURES and
+    // CANDELA_LAYER_TEXTURES (which give each one's channels and colour space): baseColor,
+    // metallicRoughness, normal, occlusion, emissive; specular, specularColor, clearcoat, … .
+#define CANDELA_MATERIAL_TEXTURE_FIELD(NAME, field, slot, binding, normalMap) TextureRef field;
+    CANDELA_CORE_TEXTURES(CANDELA_MATERIAL_TEXTURE_FIELD)
+    CANDELA_LAYER_TEXTURES(CANDELA_MATERIAL_TEXTURE_FIELD)
+#undef CANDELA_MATERIAL_TEXTURE_FIELD
 
     // KHR_materials_ior and KHR_materials_specular: the dielectric Fresnel term,
     //   f0 = min(((ior − 1)/(ior + 1))² · specularColor, 1) · specular,  f90 = specular,
@@ -107,8 +110,6 @@ struct Material {
     float ior = 1.5f;
     float specularFactor = 1.0f;
     glm::vec3 specularColorFactor{1.0f};
-    TextureRef specular;       // linear, A channel
-    TextureRef specularColor;  // sRGB, RGB channels
 
     // KHR_materials_clearcoat: a GGX coat over the material, clearcoat = clearcoatFactor ·
     // texture (R), its perceptual roughness clearcoatRoughnessFactor · texture (G), on its own
@@ -116,36 +117,28 @@ struct Material {
     float clearcoatFactor = 0.0f;
     float clearcoatRoughnessFactor = 0.0f;
     float clearcoatNormalScale = 1.0f;
-    TextureRef clearcoat;           // linear, R channel
-    TextureRef clearcoatRoughness;  // linear, G channel
-    TextureRef clearcoatNormal;     // linear, tangent space
 
     // KHR_materials_sheen: a Charlie sheen over the material (beneath the coat), colour
     // sheenColorFactor · texture (RGB, sRGB), perceptual roughness sheenRoughnessFactor · texture
     // (A). A black sheen colour (the default) disables the layer.
     glm::vec3 sheenColorFactor{0.0f};
     float sheenRoughnessFactor = 0.0f;
-    TextureRef sheenColor;      // sRGB, RGB channels
-    TextureRef sheenRoughness;  // linear, A channel
 
     // KHR_materials_anisotropy: the GGX lobe stretched along a direction in the tangent plane —
     // the anisotropyTexture's RG (else the tangent), rotated by anisotropyRotation (radians) —
     // with strength anisotropyStrength · texture B. Strength 0 (the default): isotropic.
     float anisotropyStrength = 0.0f;
     float anisotropyRotation = 0.0f;
-    TextureRef anisotropy;  // linear, RG direction, B strength
 
     // KHR_materials_transmission: the fraction transmissionFactor · texture (R) of the light that
     // enters the dielectric part and is transmitted through it (tinted by the base colour, blurred by
     // the roughness) instead of diffusely re-emitted. Factor 0 (the default): no transmission.
     float transmissionFactor = 0.0f;
-    TextureRef transmission;  // linear, R channel
     // KHR_materials_volume (meaningful only with transmission): the volume's thickness beneath the
     // surface, thicknessFactor · texture (G), in the mesh's units (0, the default: thin-walled), and
     // its absorption: light keeps attenuationColor after attenuationDistance (world units; 0 stands
     // for the specification's default, infinity: no absorption).
     float thicknessFactor = 0.0f;
-    TextureRef thickness;  // linear, G channel
     glm::vec3 attenuationColor{1.0f};
     float attenuationDistance = 0.0f;
 
@@ -156,12 +149,14 @@ struct Material {
     float iridescenceIor = 1.3f;
     float iridescenceThicknessMinimum = 100.0f;
     float iridescenceThicknessMaximum = 400.0f;
-    TextureRef iridescence;           // linear, R channel
-    TextureRef iridescenceThickness;  // linear, G channel
 
     // The layers beyond the core model this material uses (MaterialLayer bits): only those are
     // evaluated for it (see docs/materials.md).
     uint32_t layers() const;
+    // The texture of core texture slot `slot` (CANDELA_TEX_*) and of layer texture slot `slot`
+    // (CANDELA_LAYER_TEX_*). Precondition: `slot` is below CANDELA_TEX_COUNT / CANDELA_LAYER_TEX_COUNT.
+    const TextureRef& texture(int slot) const;
+    const TextureRef& layerTexture(int slot) const;
     // The texture whose coordinates the material's tangent frame follows — its normal map, else the
     // coat's (KHR_materials_clearcoat asks for the same coordinates), else the anisotropy texture or,
     // for an untextured anisotropy, set 0 — or nullopt when the material needs no tangent frame.
@@ -173,36 +168,40 @@ struct Material {
     }
 };
 
-// Layers of a material beyond glTF's core metallic-roughness model, as bits.
-enum MaterialLayer : uint32_t {
-    // A dielectric Fresnel other than the core's (KHR_materials_ior, KHR_materials_specular).
-    kLayerSpecular = 1u << 0,
-    // A coat (KHR_materials_clearcoat with a non-zero factor) ...
-    kLayerClearcoat = 1u << 1,
-    // ... with its own normal map.
-    kLayerClearcoatNormal = 1u << 2,
-    // A sheen (KHR_materials_sheen with a non-black colour).
-    kLayerSheen = 1u << 3,
-    // An anisotropic GGX lobe (KHR_materials_anisotropy with a non-zero strength).
-    kLayerAnisotropy = 1u << 4,
-    // Transmission (KHR_materials_transmission with a non-zero factor): drawn after the opaque
-    // draws, reading what lies behind them.
-    kLayerTransmission = 1u << 5,
-    // A volume beneath the transmitting surface (KHR_materials_volume with a thickness): refraction
-    // through it and absorption along it.
-    kLayerVolume = 1u << 6,
-    // A thin film (KHR_materials_iridescence with a non-zero factor) changing the Fresnel term.
-    kLayerIridescence = 1u << 7,
+// One texture slot of a material (a row of shared/forward_tables.h's texture tables): the
+// Material field, the forward programs' sampler for it and its binding in descriptor set 1, and
+// whether it holds a tangent-space normal map (a flat normal when absent, mips filtered as normals).
+struct TextureSlot {
+    TextureRef Material::*field;
+    const char* sampler;
+    uint32_t binding;
+    bool normalMap;
 };
+
+#define CANDELA_TEXTURE_SLOT(NAME, field, slot, binding, normalMap) {&Material::field, #field "Texture", binding, normalMap},
+// The core texture slots and the layer texture slots, in slot order (CANDELA_TEX_*, CANDELA_LAYER_TEX_*).
+inline constexpr TextureSlot kCoreTextureSlots[] = {CANDELA_CORE_TEXTURES(CANDELA_TEXTURE_SLOT)};
+inline constexpr TextureSlot kLayerTextureSlots[] = {CANDELA_LAYER_TEXTURES(CANDELA_TEXTURE_SLOT)};
+#undef CANDELA_TEXTURE_SLOT
+
+inline const TextureRef& Material::texture(int slot) const { return this->*kCoreTextureSlots[slot].field; }
+inline const TextureRef& Material::layerTexture(int slot) const { return this->*kLayerTextureSlots[slot].field; }
+
+// Layers of a material beyond glTF's core metallic-roughness model, as bits (kLayerSpecular, …: the
+// rows of shared/forward_tables.h's CANDELA_LAYER_BITS, which say what each stands for).
+#define CANDELA_MATERIAL_LAYER(NAME, Name, bit, name) kLayer##Name = bit,
+enum MaterialLayer : uint32_t { CANDELA_LAYER_BITS(CANDELA_MATERIAL_LAYER) };
+#undef CANDELA_MATERIAL_LAYER
 
 // The names of the layers in `layers` (MaterialLayer bits), in bit order: "specular", "clearcoat",
 // "clearcoat-normal-map", "sheen", "anisotropy", "transmission", "volume", "iridescence".
 inline std::vector<std::string_view> layerNames(uint32_t layers) {
-    constexpr std::string_view kNames[] = {"specular",   "clearcoat",    "clearcoat-normal-map", "sheen",
-                                           "anisotropy", "transmission", "volume",               "iridescence"};
+#define CANDELA_LAYER_NAME(NAME, Name, bit, name) std::pair<uint32_t, std::string_view>{bit, name},
+    constexpr std::pair<uint32_t, std::string_view> kNames[] = {CANDELA_LAYER_BITS(CANDELA_LAYER_NAME)};
+#undef CANDELA_LAYER_NAME
     std::vector<std::string_view> out;
-    for (uint32_t bit = 0; bit < std::size(kNames); ++bit)
-        if (layers & (1u << bit)) out.push_back(kNames[bit]);
+    for (const auto& [bit, name] : kNames)
+        if (layers & bit) out.push_back(name);
     return out;
 }
 

@@ -9,6 +9,7 @@
 
 #include <imgui.h>
 
+#include <span>
 #include <string>
 
 namespace candela::ui {
@@ -56,21 +57,11 @@ void drawMaterialPanel(Viewer& viewer) {
     ImGui::TextDisabled("or left-click a mesh");
     const scene::Material& m = scene.materials[selected];
     std::string textures;
-    const std::pair<const char*, const scene::TextureRef*> slots[] = {{"base colour", &m.baseColor},
-                                                                      {"metallic-roughness", &m.metallicRoughness},
-                                                                      {"normal", &m.normal},
-                                                                      {"occlusion", &m.occlusion},
-                                                                      {"emissive", &m.emissive},
-                                                                      {"specular", &m.specular},
-                                                                      {"specular colour", &m.specularColor},
-                                                                      {"clearcoat", &m.clearcoat},
-                                                                      {"clearcoat roughness", &m.clearcoatRoughness},
-                                                                      {"clearcoat normal", &m.clearcoatNormal},
-                                                                      {"sheen colour", &m.sheenColor},
-                                                                      {"sheen roughness", &m.sheenRoughness},
-                                                                      {"anisotropy", &m.anisotropy}};
-    for (const auto& [name, ref] : slots)
-        if (ref->present()) textures += (textures.empty() ? "" : ", ") + std::string(name);
+    // Named as glTF names them (the forward programs' samplers: "baseColorTexture", …).
+    for (const auto& table : {std::span<const scene::TextureSlot>(scene::kCoreTextureSlots),
+                              std::span<const scene::TextureSlot>(scene::kLayerTextureSlots)})
+        for (const scene::TextureSlot& slot : table)
+            if ((m.*slot.field).present()) textures += (textures.empty() ? "" : ", ") + std::string(slot.sampler);
     ImGui::TextWrapped("textures: %s", textures.empty() ? "none" : textures.c_str());
     ImGui::Text("alpha: %s%s%s", alphaModeName(m.alphaMode), m.doubleSided ? ", double-sided" : "", m.unlit ? ", unlit" : "");
     shader::ParameterRegistry& registry = viewer.renderer().parameters();

@@ -7,6 +7,7 @@
 #define CANDELA_SHARED_SCENE_DATA_H
 
 #include "shared/compat.h"
+#include "shared/forward_tables.h"
 #include "shared/ibl.h"
 
 CANDELA_NAMESPACE_BEGIN
@@ -15,65 +16,9 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_LIGHT_POINT 1u
 #define CANDELA_LIGHT_SPOT 2u
 
-// Debug views of the forward pass (specialization constant kDebugView; see passes/forward_pass.h).
-#define CANDELA_DEBUG_NONE 0u
-#define CANDELA_DEBUG_BASE_COLOR 1u
-#define CANDELA_DEBUG_GEOMETRIC_NORMAL 2u
-#define CANDELA_DEBUG_MAPPED_NORMAL 3u
-#define CANDELA_DEBUG_ROUGHNESS 4u
-#define CANDELA_DEBUG_METALLIC 5u
-#define CANDELA_DEBUG_OCCLUSION 6u
-#define CANDELA_DEBUG_EMISSIVE 7u
-#define CANDELA_DEBUG_D 8u
-#define CANDELA_DEBUG_G 9u
-#define CANDELA_DEBUG_F 10u
-#define CANDELA_DEBUG_DIFFUSE 11u
-#define CANDELA_DEBUG_SPECULAR 12u
-#define CANDELA_DEBUG_CLEARCOAT 13u         // the light the clearcoat reflects
-#define CANDELA_DEBUG_CLEARCOAT_NORMAL 14u  // the coat's normal (after its normal map)
-#define CANDELA_DEBUG_SHEEN 15u             // the light the sheen reflects
-#define CANDELA_DEBUG_ANISOTROPY 16u        // the anisotropy direction T (and strength)
-#define CANDELA_DEBUG_TRANSMISSION 17u      // the fraction of the light behind that comes through
-#define CANDELA_DEBUG_IRIDESCENCE_THICKNESS 18u  // the thin film's thickness (µm)
-#define CANDELA_DEBUG_IRIDESCENCE_FRESNEL 19u    // the Fresnel the thin film gives at N·V
-
 #define CANDELA_ALPHA_OPAQUE 0u
 #define CANDELA_ALPHA_MASK 1u
 #define CANDELA_ALPHA_BLEND 2u
-
-// Texture slots of a material, in binding order of descriptor set 1.
-#define CANDELA_TEX_BASE_COLOR 0
-#define CANDELA_TEX_METALLIC_ROUGHNESS 1
-#define CANDELA_TEX_NORMAL 2
-#define CANDELA_TEX_OCCLUSION 3
-#define CANDELA_TEX_EMISSIVE 4
-#define CANDELA_TEX_COUNT 5
-
-// Material layers beyond the core model (bits of the layered program's kLayers; scene::MaterialLayer).
-#define CANDELA_LAYER_SPECULAR 1u          // KHR_materials_ior, KHR_materials_specular
-#define CANDELA_LAYER_CLEARCOAT 2u         // KHR_materials_clearcoat
-#define CANDELA_LAYER_CLEARCOAT_NORMAL 4u  // its clearcoatNormalTexture (the coat's TBN work)
-#define CANDELA_LAYER_SHEEN 8u             // KHR_materials_sheen
-#define CANDELA_LAYER_ANISOTROPY 16u       // KHR_materials_anisotropy
-#define CANDELA_LAYER_TRANSMISSION 32u     // KHR_materials_transmission
-#define CANDELA_LAYER_VOLUME 64u           // KHR_materials_volume with a thickness
-#define CANDELA_LAYER_IRIDESCENCE 128u     // KHR_materials_iridescence
-
-// Texture slots of the layers, bound after the core ones in descriptor set 1 of the layered
-// program (bindings 6 and up; binding 5 is the MaterialLayers buffer).
-#define CANDELA_LAYER_TEX_SPECULAR 0
-#define CANDELA_LAYER_TEX_SPECULAR_COLOR 1
-#define CANDELA_LAYER_TEX_CLEARCOAT 2
-#define CANDELA_LAYER_TEX_CLEARCOAT_ROUGHNESS 3
-#define CANDELA_LAYER_TEX_CLEARCOAT_NORMAL 4
-#define CANDELA_LAYER_TEX_SHEEN_COLOR 5
-#define CANDELA_LAYER_TEX_SHEEN_ROUGHNESS 6
-#define CANDELA_LAYER_TEX_ANISOTROPY 7
-#define CANDELA_LAYER_TEX_TRANSMISSION 8
-#define CANDELA_LAYER_TEX_THICKNESS 9
-#define CANDELA_LAYER_TEX_IRIDESCENCE 10
-#define CANDELA_LAYER_TEX_IRIDESCENCE_THICKNESS 11
-#define CANDELA_LAYER_TEX_COUNT 12
 
 // One punctual light (KHR_lights_punctual), world space.
 struct LightData {

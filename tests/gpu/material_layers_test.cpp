@@ -77,7 +77,7 @@ TEST_F(GpuTest, LayeredProgramAtTheCoreValuesDrawsTheCoreImage) {
 // the furnace spheres (IblFurnaceTest) with the roughness of each column moved to a coat of weight
 // 1 (coat roughness 0 … 1) over a white material of roughness 0.5, dielectric (bottom row) or metal
 // (top row), each of which alone reflects exactly 1. The coat takes clearcoat · F_c and the material
-// beneath loses as much (shared/brdf_layers.h), so every interior pixel reflects 1.
+// beneath loses as much (shared/brdf_clearcoat.h), so every interior pixel reflects 1.
 // Metric: over interior pixels (no uncovered pixel within 2 px) and RGB, max |x − 1| and max x − 1.
 // Tolerances: 0.02 (the bound), and never above 1 by more than one RGBA16F step (1/1024).
 TEST_F(GpuTest, ClearcoatKeepsTheWhiteFurnace) {
@@ -103,7 +103,7 @@ TEST_F(GpuTest, ClearcoatKeepsTheWhiteFurnace) {
 // dielectric (bottom) and metal (top), seen over the skybox of a uniform environment of radiance 1
 // — so what lies behind each sphere (the transmission background: the sky) is 1 too, at every mip.
 // What the Lambert part of the dielectric loses is transmitted with the same weight
-// (shared/brdf_layers.h), so every interior pixel is 1 as without transmission. Interior pixels
+// (shared/brdf_transmission.h), so every interior pixel is 1 as without transmission. Interior pixels
 // from a frame of the same spheres without skybox. Metric and tolerances as the clearcoat's.
 TEST_F(GpuTest, TransmissionKeepsTheWhiteFurnace) {
     const scene::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));

@@ -1,4 +1,4 @@
-// How far KHR_materials_anisotropy's image-based approximation (shared/brdf_layers.h
+// How far KHR_materials_anisotropy's image-based approximation (shared/brdf_anisotropy.h
 // anisotropicBentNormal: the split sum read about a normal bent across the brushing, as the
 // specification's implementation notes and the Khronos sample viewer do) is from the anisotropic
 // lobe integrated against the environment — docs/materials.md quotes these figures.
@@ -15,7 +15,7 @@
 // stress case — a uniform 1 plus a soft bright patch (1 + 40 (s·L)⁸ where s·L > 0) 25° off the
 // mirror direction along the brushing, where the stretched lobe's highlight is.
 #include "brdf_reference.h"
-#include "shared/brdf_layers.h"
+#include "shared/brdf_anisotropy.h"
 
 #include <gtest/gtest.h>
 

@@ -320,7 +320,7 @@ inline glm::dvec3 brdfTimesCosineAnisotropic(const glm::dvec3& N, const glm::dve
 // The layered material in the specifications' form: the material (brdfTimesCosine, or with
 // kLayerSpecular brdfTimesCosineDielectric); with kLayerSheen, KHR_materials_sheen's albedo scaling
 //   sheenColor · f_sheen + material · (1 − max(sheenColor) · min(E(N·V), 1))  (E clamped: see
-//   shaders/shared/brdf_layers.h);
+//   shaders/shared/brdf_sheen.h);
 // and, with kLayerClearcoat, over both KHR_materials_clearcoat's
 //   mix(material, D(α_c) G(α_c) / (4 N_c·V N_c·L), clearcoat · F_c),  F_c = 0.04 + 0.96 (1 − N_c·V)⁵,
 // with N_c·V, N_c·L, the half vector and the coat's roughness clamped as listed at the top.

@@ -1,0 +1,203 @@
+// Lighting of the forward programs: a Surface (forward/surface.glsl) lit by punctual lights and by
+// the environment, Surface → radiance toward the viewer, per lobe (SurfaceLight). The BRDFs are
+// shared/brdf.h's and, in the layered program, shared/brdf_layers.h's; the split sum is
+// shared/ibl.h's. Nothing here reads a stage input: what the fragment stage alone knows (its pixel)
+// is an argument.
+#ifndef CANDELA_FORWARD_LIGHTING_GLSL
+#define CANDELA_FORWARD_LIGHTING_GLSL
+
+#include "forward/resources.glsl"
+#include "forward/surface.glsl"
+#include "shared/ibl.h"
+
+// Radiance toward the viewer, per lobe: the material's diffuse and specular reflection and its
+// transmitted light (from punctual lights behind it), and the sheen's and the coat's own
+// reflections. Only the layered program has the last three.
+struct SurfaceLight {
+    vec3 diffuse;
+    vec3 specular;
+    vec3 transmission;
+    vec3 sheen;
+    vec3 coat;
+};
+
+SurfaceLight noLight() {
+    SurfaceLight light;
+    light.diffuse = vec3(0.0f);
+    light.specular = vec3(0.0f);
+    light.transmission = vec3(0.0f);
+    light.sheen = vec3(0.0f);
+    light.coat = vec3(0.0f);
+    return light;
+}
+
+SurfaceLight plus(SurfaceLight a, SurfaceLight b) {
+    a.diffuse += b.diffuse;
+    a.specular += b.specular;
+    a.transmission += b.transmission;
+    a.sheen += b.sheen;
+    a.coat += b.coat;
+    return a;
+}
+
+// Direction to punctual light `light` from world position `p` and its attenuation there.
+vec3 lightDirection(LightData light, vec3 p, out float attenuation) {
+    attenuation = 1.0f;
+    if (light.directionType.w == float(CANDELA_LIGHT_DIRECTIONAL)) return -light.directionType.xyz;
+    vec3 toLight = light.positionRange.xyz - p;
+    float distance2 = dot(toLight, toLight);
+    vec3 l = toLight * inversesqrt(max(distance2, 1e-30f));
+    attenuation = rangeAttenuation(distance2, light.positionRange.w);
+    if (light.directionType.w == float(CANDELA_LIGHT_SPOT)) attenuation *= spotAttenuation(-l, light.directionType.xyz, light.cone);
+    return l;
+}
+
+// What punctual light `light` sends from `s` toward the viewer. In the layered program the
+// material lies beneath the sheen and the coat (layeredLobesTimesCosine combines them), and its
+// transmitted light comes through the volume: a point or spot light is seen from where the
+// refracted ray leaves it, and attenuated along that ray.
+SurfaceLight lightRadiance(Surface s, LightData light) {
+    float attenuation;
+    vec3 l = lightDirection(light, s.position, attenuation);
+    vec3 radiance = (light.color * light.intensity) * attenuation;
+    SurfaceLight lit = noLight();
+#ifdef CANDELA_MATERIAL_LAYERS
+    vec3 lt = l;
+    if (hasLayer(CANDELA_LAYER_VOLUME) && light.directionType.w != float(CANDELA_LIGHT_DIRECTIONAL)) {
+        vec3 toLight = light.positionRange.xyz - (s.position + s.layers.volume.ray);
+        lt = dot(toLight, toLight) > 0.0f ? normalize(toLight) : l;
+    }
+    LayeredLobes lobes = layeredLobesTimesCosine(s.normal, s.v, l, lt, s.baseColor, s.metallic, s.roughness, kShadingModel,
+                                                 layerBits(), s.layers.dielectric, s.layers.anisotropy,
+                                                 s.layers.transmission, s.layers.sheen, s.layers.coat);
+    lit.diffuse = lobes.diffuse * radiance;
+    lit.specular = lobes.specular * radiance;
+    lit.sheen = lobes.sheen * radiance;
+    lit.coat = lobes.clearcoat * radiance;
+    lit.transmission = lobes.transmission * radiance * s.layers.volume.transmittance;
+#else
+    BrdfLobes lobes = brdfLobesTimesCosine(s.normal, s.v, l, s.baseColor, s.metallic, s.roughness, kShadingModel);
+    lit.diffuse = lobes.diffuse * radiance;
+    lit.specular = lobes.specular * radiance;
+#endif
+    return lit;
+}
+
+// The environment's irradiance / π at world normal `n`.
+vec3 irradianceAt(vec3 n) {
+    vec3 nEnv = iblLookupDirection(n, push.ibl.rotation);
+    if (!kIrradianceSh) return textureLod(irradianceCube, nEnv, 0.0f).rgb;
+    vec3 irradiance = vec3(0.0f);
+    for (uint i = 0u; i < 9u; ++i) irradiance += sh[i].rgb * shBasis(i, nEnv);
+    return max(irradiance, vec3(0.0f));  // order-2 ringing can dip below 0
+}
+
+// The prefiltered environment in the mirror direction of `v` about `n` at perceptual roughness
+// `roughness`.
+vec3 prefilteredAt(vec3 n, vec3 v, float roughness) {
+    vec3 r = iblLookupDirection(reflect(-v, n), push.ibl.rotation);
+    // Roughness 0 reads mip 0 (the environment) exactly; the mips in between are linearly blended.
+    return textureLod(specularCube, r, roughness * push.ibl.maxLod).rgb;
+}
+
+// The split sum's (A, B) at (N·V, perceptual roughness).
+vec2 splitSumAt(float NoV, float roughness) {
+    return textureLod(brdfLut, brdfLutUv(NoV, roughness, push.ibl.lutSize), 0.0f).rg;
+}
+
+// Light from the environment (split sum), each lobe on its own: the material's diffuse and
+// specular reflection and the sheen's and the coat's — not yet layered (underLayers does that).
+// Occlusion (glTF: indirect light only) darkens the diffuse terms and, through specular occlusion,
+// the specular ones.
+SurfaceLight imageBasedLight(Surface s) {
+    float ao = s.occlusion;
+    float NoV = clamp(dot(s.normal, s.v), CANDELA_MIN_NOV, 1.0f);
+    vec3 prefiltered;
+#ifdef CANDELA_MATERIAL_LAYERS
+    if (hasLayer(CANDELA_LAYER_ANISOTROPY))
+        prefiltered = prefilteredAt(anisotropicBentNormal(s.normal, s.v, s.roughness, s.layers.anisotropy), s.v, s.roughness);
+    else
+#endif
+    prefiltered = prefilteredAt(s.normal, s.v, s.roughness);
+    vec3 irradiance = irradianceAt(s.normal);
+    vec2 lut = splitSumAt(NoV, s.roughness);
+    vec3 diffuseColor = s.baseColor * (1.0f - s.metallic);
+    BrdfLobes lobes;
+#ifdef CANDELA_MATERIAL_LAYERS
+    // Transmission takes its share of the Lambert part (the rest of it is the light from behind,
+    // transmittedThroughput, with or without an environment).
+    if (hasLayer(CANDELA_LAYER_SPECULAR) || hasLayer(CANDELA_LAYER_TRANSMISSION) || hasLayer(CANDELA_LAYER_IRIDESCENCE))
+        lobes = iblShadeLobesDielectric(prefiltered, irradiance, lut, s.baseColor, s.metallic, s.layers.dielectric,
+                                        kMultiscatter, ao, specularOcclusion(NoV, ao, s.roughness),
+                                        1.0f - s.layers.transmission.weight);
+    else
+#endif
+    lobes = iblShadeLobes(prefiltered, irradiance, lut, s.f0, diffuseColor, kMultiscatter, ao,
+                          specularOcclusion(NoV, ao, s.roughness));
+    SurfaceLight light = noLight();
+    light.diffuse = lobes.diffuse * push.ibl.intensity;
+    light.specular = lobes.specular * push.ibl.intensity;
+#ifdef CANDELA_MATERIAL_LAYERS
+    if (hasLayer(CANDELA_LAYER_SHEEN)) {
+        vec3 r = iblLookupDirection(reflect(-s.v, s.normal), push.ibl.rotation);
+        vec3 prefilteredSheen = textureLod(sheenCube, r, s.layers.sheen.roughness * push.ibl.maxLod).rgb;
+        light.sheen = push.ibl.intensity * iblSheen(s.layers.sheen, prefilteredSheen, ao);
+    }
+    if (hasLayer(CANDELA_LAYER_CLEARCOAT)) {
+        Clearcoat coat = s.layers.coat;
+        light.coat = push.ibl.intensity * iblClearcoat(coat, prefilteredAt(coat.normal, s.v, coat.roughness),
+                                                       irradianceAt(coat.normal), splitSumAt(coat.NoV, coat.roughness),
+                                                       kMultiscatter, ao, specularOcclusion(coat.NoV, ao, coat.roughness));
+    }
+#endif
+    return light;
+}
+
+#ifdef CANDELA_MATERIAL_LAYERS
+// `light`, reflected by the material and its layers each on its own, as it leaves the layered
+// surface: the material beneath the sheen (which passes its baseWeight of it), both beneath the
+// coat (likewise). Punctual lights are layered per light by layeredLobesTimesCosine; this is the
+// same for light summed otherwise (the environment's).
+SurfaceLight underLayers(SurfaceLight light, Surface s) {
+    if (hasLayer(CANDELA_LAYER_SHEEN)) {
+        light.diffuse *= s.layers.sheen.baseWeight;
+        light.specular *= s.layers.sheen.baseWeight;
+        light.transmission *= s.layers.sheen.baseWeight;
+    }
+    if (hasLayer(CANDELA_LAYER_CLEARCOAT)) {
+        light.diffuse *= s.layers.coat.baseWeight;
+        light.specular *= s.layers.coat.baseWeight;
+        light.transmission *= s.layers.coat.baseWeight;
+        light.sheen *= s.layers.coat.baseWeight;
+    }
+    return light;
+}
+
+// The fraction of the light behind `s` that its material lets through toward the viewer (not yet
+// beneath the sheen and the coat), through the part of the surface the reflections leave: with an
+// environment the split sum's (A, B) weigh it as they weigh the Lambert part, without one Karis's
+// analytic fit of them; and the volume's transmittance.
+vec3 transmittedThroughput(Surface s) {
+    float NoV = clamp(dot(s.normal, s.v), CANDELA_MIN_NOV, 1.0f);
+    vec2 lut = kIbl ? splitSumAt(NoV, s.roughness) : envBrdfApproximation(NoV, s.roughness);
+    return iblTransmission(s.layers.transmission, vec3(1.0f), lut, s.baseColor, s.metallic, s.layers.dielectric,
+                           kMultiscatter) * s.layers.volume.transmittance;
+}
+
+// The light from behind a transmitting surface: the background (the opaque image) where the ray
+// leaves the volume (at the surface itself when thin-walled), at the mip of the BTDF's roughness
+// (log2(width) · roughness, as the Khronos sample viewer), attenuated by the volume. Where that exit
+// point is behind the camera, the background straight behind `pixel` (window coordinates). alpha:
+// the background's coverage there.
+vec4 transmittedBackground(Surface s, vec2 pixel) {
+    vec2 size = vec2(textureSize(transmissionBackground, 0));
+    vec2 uv = pixel / size;
+    vec4 clip = push.viewProjection * vec4(s.position + s.layers.volume.ray, 1.0f);
+    if (clip.w > 1e-6f) uv = clamp(clip.xy / clip.w * 0.5f + 0.5f, vec2(0.0f), vec2(1.0f));
+    float lod = log2(max(size.x, size.y)) * s.layers.transmission.roughness;
+    vec4 behind = textureLod(transmissionBackground, uv, lod);
+    return vec4(behind.rgb * s.layers.volume.transmittance, behind.a);
+}
+#endif
+
+#endif

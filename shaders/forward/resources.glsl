@@ -1,0 +1,87 @@
+// What the forward programs read besides their stage inputs: specialization constants, descriptor
+// sets 0–3 and push constants. Included by the fragment stage (forward_fragment.glsl) and, through
+// it, by the material evaluation and lighting it calls (forward/material_eval.glsl,
+// forward/lighting.glsl) — a compute shader that calls those includes this file too.
+#ifndef CANDELA_FORWARD_RESOURCES_GLSL
+#define CANDELA_FORWARD_RESOURCES_GLSL
+
+#include "shared/brdf.h"
+#include "shared/scene_data.h"
+
+layout(constant_id = 0) const bool kNormalMap = false;
+layout(constant_id = 1) const bool kLights = true;
+layout(constant_id = 2) const bool kUnlit = false;
+layout(constant_id = 3) const bool kAlphaMask = false;
+layout(constant_id = 4) const uint kShadingModel = CANDELA_SHADING_PBR;
+layout(constant_id = 5) const bool kIbl = false;
+layout(constant_id = 6) const bool kIrradianceSh = true;  // else the irradiance cube
+layout(constant_id = 7) const bool kMultiscatter = true;
+// constant_id 8 is the ground truth's sample count (forward/reference_ibl.glsl: its program only).
+// A debug view (CANDELA_DEBUG_*) instead of the shaded colour.
+layout(constant_id = 9) const uint kDebugView = CANDELA_DEBUG_NONE;
+#ifdef CANDELA_MATERIAL_LAYERS
+// The layers this variant evaluates (CANDELA_LAYER_* bits): a material pays only for its own.
+layout(constant_id = 10) const uint kLayers = 0u;
+#endif
+// Specular anti-aliasing: roughness widened by the normal's change across the pixel and by what the
+// normal map's mip averaged away (specularAntiAliasedRoughness, shared/brdf.h).
+layout(constant_id = 11) const bool kSpecularAa = false;
+// Alpha to coverage (MSAA, alpha-masked materials): the pipeline turns the output alpha into the
+// sample coverage (and stores alpha 1: alphaToOne) instead of the alpha test's all-or-nothing.
+layout(constant_id = 12) const bool kAlphaToCoverage = false;
+
+layout(std430, set = 0, binding = 0) readonly buffer Lights {
+    LightData lights[];
+};
+layout(std430, set = 0, binding = 1) readonly buffer Draws {
+    DrawData draws[];
+};
+layout(std430, set = 0, binding = 2) readonly buffer Materials {
+    MaterialData materials[];
+};
+// The material's textures (set 1): one sampler per row of shared/forward_tables.h's texture tables,
+// named after its field ("baseColorTexture").
+#define CANDELA_MATERIAL_SAMPLER(NAME, field, slot, bindingNumber, normalMap) \
+    layout(set = 1, binding = bindingNumber) uniform sampler2D field##Texture;
+CANDELA_CORE_TEXTURES(CANDELA_MATERIAL_SAMPLER)
+#ifdef CANDELA_MATERIAL_LAYERS
+layout(std430, set = 1, binding = 5) readonly buffer MaterialLayers {
+    MaterialLayerData layers[];
+};
+CANDELA_LAYER_TEXTURES(CANDELA_MATERIAL_SAMPLER)
+// The layers' maps (set 3, the layered program only; placeholders where the frame has none): the
+// sheen albedo LUT E(N·V, sheen roughness), the Charlie-prefiltered environment, and what lies
+// behind the transmissive draws (the opaque image, mip m box-filtered 2^m × 2^m; passes/
+// transmission_background_pass.h).
+layout(set = 3, binding = 0) uniform sampler2D sheenLut;
+layout(set = 3, binding = 1) uniform samplerCube sheenCube;
+layout(set = 3, binding = 2) uniform sampler2D transmissionBackground;
+#endif
+// Image-based lighting (always bound; placeholders when the frame has no environment).
+layout(set = 2, binding = 0) uniform samplerCube specularCube;
+layout(set = 2, binding = 1) uniform samplerCube irradianceCube;
+layout(set = 2, binding = 2) uniform sampler2D brdfLut;
+layout(std140, set = 2, binding = 3) uniform IrradianceSh {
+    vec4 sh[9];  // convolved, /π: irradiance(n)/π = Σ sh[i] · Y_i(n)
+};
+// The ground truth's inputs (read by forward/reference_ibl.glsl only), declared in every forward
+// program so that set 2 has one layout: the pass writes it once and binds it for every pipeline.
+// The environment as an equirectangular map (nearest texels; alpha 0 marks the brightest texels,
+// which are summed explicitly instead of sampled) and the list of those texels:
+// referenceTexels[0] = (count, width, height, 0), then per texel (x, y, 0, 0) and (radiance, 0).
+layout(set = 2, binding = 4) uniform sampler2D referenceEquirect;
+layout(std430, set = 2, binding = 5) readonly buffer ReferenceTexels {
+    vec4 referenceTexels[];
+};
+layout(push_constant) uniform Push {
+    ForwardPush push;
+};
+
+#ifdef CANDELA_MATERIAL_LAYERS
+// The layers this variant evaluates: the material's, none under Blinn-Phong (kept for comparison
+// with the original project, it has no Fresnel to layer).
+uint layerBits() { return kShadingModel == CANDELA_SHADING_BLINN_PHONG ? 0u : kLayers; }
+bool hasLayer(uint bit) { return (layerBits() & bit) != 0u; }
+#endif
+
+#endif

@@ -1,0 +1,80 @@
+// The forward shader's structure (docs/shading.md): material evaluation and lighting are shared
+// GLSL that a compute shader calls unchanged, and the ground truth of `ibl-report` is only in its
+// own program.
+#include "shader/builtin_shaders.h"
+#include "shader/glsl_compiler.h"
+#include "shader/reflection.h"
+#include "temp_dir.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+namespace candela::test {
+namespace {
+
+// A compute shader that evaluates a material and lights it with the forward pass's own functions:
+// only the stage's part — the inputs and how textures are read — is its own.
+constexpr const char* kComputeBody = R"(
+layout(local_size_x = 8) in;
+vec4 materialTexture(sampler2D t, vec2 uv) { return textureLod(t, uv, 0.0f); }
+#include "forward/material_eval.glsl"
+#include "forward/lighting.glsl"
+layout(set = 4, binding = 0) writeonly buffer Radiance { vec4 radiance[]; };
+void main() {
+    SurfaceInputs inputs;
+    inputs.draw = gl_GlobalInvocationID.x;
+    inputs.eye = vec3(0.0f, 0.0f, 5.0f);
+    inputs.position = vec3(0.0f);
+    inputs.normal = vec3(0.0f, 0.0f, 1.0f);
+    inputs.tangent = vec4(1.0f, 0.0f, 0.0f, 1.0f);
+    inputs.faceNormal = vec3(0.0f, 0.0f, 1.0f);
+    inputs.frontFacing = true;
+    inputs.color = vec4(1.0f);
+    inputs.normalChange = 0.0f;
+    for (int i = 0; i < CANDELA_TEX_COUNT; ++i) inputs.uv[i] = vec2(0.5f);
+#ifdef CANDELA_MATERIAL_LAYERS
+    for (int i = 0; i < CANDELA_LAYER_TEX_COUNT; ++i) inputs.layerUv[i] = vec2(0.5f);
+#endif
+    Surface s = evaluateMaterial(inputs, materialBaseColor(inputs).rgb);
+    SurfaceLight lit = plus(lightRadiance(s, lights[0]), imageBasedLight(s));
+    radiance[gl_GlobalInvocationID.x] = vec4(lit.diffuse + lit.specular + lit.sheen + lit.coat, 1.0f);
+}
+)";
+
+shader::CompileResult compileCompute(const TempDir& dir, const std::string& name, const std::string& defines) {
+    const std::filesystem::path file = dir / (name + ".comp.glsl");
+    std::ofstream(file) << "#version 460\n#extension GL_GOOGLE_include_directive : require\n" << defines << kComputeBody;
+    return shader::compileGlsl(file, CANDELA_SHADER_SOURCE_DIR);
+}
+
+TEST(ForwardShader, MaterialEvaluationAndLightingCompileInAComputeShader) {
+    const TempDir dir("candela_forward_shader");
+    for (const auto& [name, defines] : {std::pair<std::string, std::string>{"core", ""},
+                                        {"layered", "#define CANDELA_MATERIAL_LAYERS\n"}}) {
+        const shader::CompileResult result = compileCompute(dir, name, defines);
+        EXPECT_TRUE(result.ok()) << name << ": " << (result.errors.empty() ? "" : result.errors.front());
+    }
+}
+
+// Whether the sources embedded in built-in shader `name` mention `text`.
+bool embeds(const std::string& name, const std::string& text) {
+    for (const std::string& source : shader::embeddedSources(shader::builtinShader(name)))
+        if (source.find(text) != std::string::npos) return true;
+    return false;
+}
+
+TEST(ForwardShader, GroundTruthOnlyInTheReportsProgram) {
+    EXPECT_TRUE(embeds("forward_reference.frag", "vec3 referenceImageBasedLight("));
+    for (const char* production : {"forward.frag", "forward_layers.frag"}) {
+        EXPECT_TRUE(embeds(production, "Surface evaluateMaterial(")) << production;
+        // The embedded sources are the files the program included (forward_fragment.glsl itself names
+        // the ground truth where only the report's program compiles it).
+        EXPECT_FALSE(embeds(production, "vec3 referenceImageBasedLight(")) << production;
+        EXPECT_FALSE(embeds(production, "kReferenceSamples")) << production;
+    }
+}
+
+}  // namespace
+}  // namespace candela::test
