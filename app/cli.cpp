@@ -264,7 +264,9 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         };
         table.switches["--no-multiscatter"] = [&] { o.iblLook.multiscatter = false; };
         table.withValue["--irradiance"] = [&](const std::string& v) {
-            o.iblQuality.irradiance = ibl::parseIrradianceMode("--irradiance", v);
+            const std::optional<ibl::IrradianceMode> mode = ibl::parseIrradianceMode(v);
+            if (!mode) throw UserError("--irradiance '" + v + "': expected sh9 or cube");
+            o.iblQuality.irradiance = *mode;
         };
         table.withValue["--ibl-lod-bias"] = [&](const std::string& v) {
             o.iblQuality.lodBias = parseNumber("--ibl-lod-bias", v);

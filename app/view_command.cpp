@@ -61,7 +61,8 @@ int runView(const RenderOptions& options) {
     desc.ui = options.ui;
     desc.shaderDir = options.shaderDir;
     desc.iblReport = options.iblReport;
-    desc.openPanels = std::set<std::string>(options.panels.begin(), options.panels.end());
+    desc.openPanels.clear();
+    for (const std::string& panel : options.panels) desc.openPanels.insert(*ui::parsePanel(panel));  // validated by the parser
     ui::Viewer viewer(desc, std::move(content));
     if (options.frames > 0) {
         // frame() also returns true for frames not rendered (minimized window): count rendered ones.
