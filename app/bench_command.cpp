@@ -30,7 +30,7 @@ int runBench(const RenderOptions& options) {
     const auto loadStart = std::chrono::steady_clock::now();
     const scene::Scene scene = loadScene(options);
     const double loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart).count();
-    const std::optional<scene::Environment> environment = loadEnvironment(options);
+    const std::optional<scene::Environment> environment = loadEnvironment(options.env);
     RenderSettings settings = renderSettings(options, scene, environment ? &*environment : nullptr);
     // Frame i shows the animations at --time + i/60 s: each frame pays for evaluating its pose.
     scene::ScenePose pose = loadPose(options, scene);
