@@ -147,7 +147,7 @@ TEST(CliFlags, TheIssuesExamplesAreErrorsNamingTheFlag) {
     EXPECT_EQ(errorOf({"view", "--graph-dot", "g.dot", "--explain"}), "view does not take --graph-dot (it is a flag of render)");
     EXPECT_EQ(errorOf({"bench", "--out", "x.png"}), "bench does not take --out (it is a flag of render, ibl-report, "
                                                     "scale-report, quality-report and soak)");
-    EXPECT_EQ(errorOf({"view", "--explain"}), "view does not take --explain (it is a flag of render)");
+    EXPECT_EQ(errorOf({"view", "--explain"}), "view does not take --explain (it is a flag of render and bench)");
     EXPECT_EQ(errorOf({"view", "--dither"}), "view does not take --dither (it is a flag of render and bench)");
     EXPECT_EQ(errorOf({"info", "--quiet"}).rfind("info does not take --quiet", 0), 0u);
 }

@@ -375,7 +375,7 @@ TEST(Cli, FloatOutputsCullTheTonemapPass) {
 }
 
 TEST(Cli, BenchReportsFrameAndPassesAsRatiosToCalibration) {
-    const std::string command = std::string(CANDELA_EXECUTABLE) + " bench --validate --frames 2 --width 48 --height 32 --json";
+    const std::string command = std::string(CANDELA_EXECUTABLE) + " bench --validate --frames 2 --width 48 --height 32 --json --explain";
     FILE* pipe = popen(command.c_str(), "r");
     std::string out;
     std::array<char, 4096> buffer;
@@ -391,6 +391,9 @@ TEST(Cli, BenchReportsFrameAndPassesAsRatiosToCalibration) {
     EXPECT_EQ(report["passes"][0]["name"], "forward");
     EXPECT_EQ(report["passes"][1]["name"], "skybox");
     EXPECT_EQ(report["passes"][2]["name"], "tonemap");
+    // --explain: of the measured frames (not of a calibration run), in the JSON.
+    ASSERT_TRUE(report["explain"].is_array());
+    EXPECT_FALSE(report["explain"].empty());
 }
 
 TEST(Cli, DefaultRenderIsLitByTheProceduralSkyWithPrecomputeFirst) {
