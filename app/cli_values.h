@@ -3,9 +3,11 @@
 // candela::UserError of one line, "--flag: expected …, got '…'". Pure, unit-tested.
 
 #include "core/check.h"
+#include "core/name_table.h"
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -53,8 +55,7 @@ std::vector<std::string> namesOf(const std::pair<E, const char*> (&table)[N]) {
 template <class E, size_t N>
 E parseChoice(const std::string& flag, const std::pair<E, const char*> (&table)[N], const std::string& text,
               const std::string& otherForm = "") {
-    for (const auto& [value, name] : table)
-        if (text == name) return value;
+    if (const std::optional<E> value = valueNamed(table, text)) return *value;
     throw UserError(flag + ": expected " + joinChoices(namesOf(table), otherForm) + ", got '" + text + "'");
 }
 

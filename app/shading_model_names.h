@@ -4,6 +4,8 @@
 // declaration, so the values below are written as numbers. main.cpp, which sees the definition,
 // checks at compile time that each name gives the model it stands for.
 
+#include "core/name_table.h"
+
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -20,9 +22,7 @@ inline constexpr std::pair<passes::ShadingModel, const char*> kShadingModelNames
 
 // The model named `name` in kShadingModelNames; nullopt for anything else.
 constexpr std::optional<passes::ShadingModel> parseShadingModel(std::string_view name) {
-    for (const auto& [model, text] : kShadingModelNames)
-        if (name == text) return model;
-    return std::nullopt;
+    return valueNamed(kShadingModelNames, name);
 }
 
 }  // namespace candela::app

@@ -3,6 +3,8 @@
 // reruns them, and it is part of the on-disk cache key); IblLook only changes how the maps are read
 // at shading time (rotation, intensity, skybox), so changing it reruns nothing. Pure data.
 
+#include "core/name_table.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -19,16 +21,10 @@ inline constexpr std::pair<IrradianceMode, const char*> kIrradianceModeNames[] =
 
 // The mode named `name` in kIrradianceModeNames; nullopt for anything else.
 constexpr std::optional<IrradianceMode> parseIrradianceMode(std::string_view name) {
-    for (const auto& [mode, text] : kIrradianceModeNames)
-        if (name == text) return mode;
-    return std::nullopt;
+    return valueNamed(kIrradianceModeNames, name);
 }
 
-constexpr const char* irradianceModeName(IrradianceMode mode) {
-    for (const auto& [m, text] : kIrradianceModeNames)
-        if (m == mode) return text;
-    return "?";
-}
+constexpr const char* irradianceModeName(IrradianceMode mode) { return nameOf(kIrradianceModeNames, mode); }
 
 struct IblQuality {
     uint32_t cubeSize = 256;          // face size of the float environment cube and of specular mip 0 (2^k, 16..2048)

@@ -10,6 +10,8 @@
 // Fresnel it gives. Names only: no Vulkan (the command-line
 // parser uses them).
 
+#include "core/name_table.h"
+
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -46,17 +48,9 @@ inline constexpr std::pair<DebugView, const char*> kDebugViewNames[] = {
     {DebugView::IridescenceFresnel, "iridescence-fresnel"}};
 
 // The names above; nullopt for anything else.
-inline std::optional<DebugView> parseDebugView(std::string_view name) {
-    for (const auto& [view, text] : kDebugViewNames)
-        if (name == text) return view;
-    return std::nullopt;
-}
+constexpr std::optional<DebugView> parseDebugView(std::string_view name) { return valueNamed(kDebugViewNames, name); }
 
-inline const char* debugViewName(DebugView view) {
-    for (const auto& [v, text] : kDebugViewNames)
-        if (v == view) return text;
-    return "?";
-}
+constexpr const char* debugViewName(DebugView view) { return nameOf(kDebugViewNames, view); }
 
 // Every view but None, in menu order.
 inline std::vector<DebugView> allDebugViews() {

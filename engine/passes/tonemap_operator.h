@@ -2,6 +2,8 @@
 // The tone mapping operators of the tonemap pass (passes/tonemap_pass.h) and their names, the one
 // table that the pass, the command line (--tonemap) and the tests read. Names only: no Vulkan.
 
+#include "core/name_table.h"
+
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -18,16 +20,8 @@ inline constexpr std::pair<Tonemap, const char*> kTonemapNames[] = {{Tonemap::Pb
                                                                      {Tonemap::Linear, "linear"}};
 
 // The operator named `name` in kTonemapNames; nullopt for anything else.
-constexpr std::optional<Tonemap> parseTonemap(std::string_view name) {
-    for (const auto& [op, text] : kTonemapNames)
-        if (name == text) return op;
-    return std::nullopt;
-}
+constexpr std::optional<Tonemap> parseTonemap(std::string_view name) { return valueNamed(kTonemapNames, name); }
 
-constexpr const char* tonemapName(Tonemap op) {
-    for (const auto& [o, text] : kTonemapNames)
-        if (o == op) return text;
-    return "?";
-}
+constexpr const char* tonemapName(Tonemap op) { return nameOf(kTonemapNames, op); }
 
 }  // namespace candela::passes

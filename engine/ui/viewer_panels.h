@@ -2,6 +2,8 @@
 // The viewer's side-panel sections and their names: the one table that the viewer, the command
 // line (--panels) and the tests read. Names only: no Vulkan, no ImGui.
 
+#include "core/name_table.h"
+
 #include <cstdint>
 #include <optional>
 #include <set>
@@ -22,10 +24,6 @@ inline constexpr std::pair<Panel, const char*> kPanelNames[] = {
 inline const std::set<Panel> kPanelsOpenByDefault = {Panel::Graph, Panel::Parameters, Panel::Stats};
 
 // The panel named `name` in kPanelNames; nullopt for anything else.
-constexpr std::optional<Panel> parsePanel(std::string_view name) {
-    for (const auto& [panel, text] : kPanelNames)
-        if (name == text) return panel;
-    return std::nullopt;
-}
+constexpr std::optional<Panel> parsePanel(std::string_view name) { return valueNamed(kPanelNames, name); }
 
 }  // namespace candela::ui
