@@ -86,16 +86,17 @@ std::string unknownCommandMessage(const std::string& name) {
 
 bool isHelp(const std::string& arg) { return arg == "--help" || arg == "-h"; }
 
-// The checks that involve more than one flag.
+// The checks that involve more than one flag (or a flag and view's SCENE).
 void checkCombinations(const Command& command) {
+    if (command.kind != Kind::Render && command.kind != Kind::View && command.kind != Kind::Bench) return;
     const RenderOptions& o = command.render;
+    if (o.sceneIndex && o.scene.empty()) throw UserError("--scene-index: give a glTF file with --scene");
+    if (o.grid && !o.scene.empty()) throw UserError("--grid: sizes the built-in sphere grid; not with --scene");
     if (command.kind == Kind::View && !o.screenshot.empty() && o.frames == 0)
         throw UserError("--screenshot: also give --frames N (the frame to save; the viewer then exits)");
-    if (command.kind == Kind::Render || command.kind == Kind::Bench || command.kind == Kind::View) {
-        o.iblQuality.validate();
-        if (o.env.kind == EnvironmentChoice::Kind::None && o.background.kind == Background::Kind::Skybox)
-            throw UserError("--background skybox: there is no environment to show (--env none)");
-    }
+    o.iblQuality.validate();
+    if (o.env.kind == EnvironmentChoice::Kind::None && o.background.kind == Background::Kind::Skybox)
+        throw UserError("--background skybox: there is no environment to show (--env none)");
 }
 
 }  // namespace
@@ -127,7 +128,7 @@ Command parseCommandLine(const std::vector<std::string>& args) {
     }
     command.kind = info->kind;
     for (const Flag& flag : flagTable())
-        if (const FlagUse* use = flag.use(command.kind); use && !use->defaultValue.empty()) flag.set(command, use->defaultValue);
+        if (const FlagUse* use = flag.use(command.kind); use && !use->defaultValue.empty()) flag.set(command, flag.name, use->defaultValue);
 
     for (size_t i = 1; i < args.size(); ++i) {
         std::string name = args[i];
@@ -150,14 +151,14 @@ Command parseCommandLine(const std::vector<std::string>& args) {
             throw UserError(info->name + " does not take " + name + " (it is a flag of " + commandList(flag->commands(), false) + ")");
         if (flag->isSwitch()) {
             if (value) throw UserError(name + " takes no value");
-            flag->set(command, "");
+            flag->set(command, name, "");
             continue;
         }
         if (!value) {
             if (i + 1 >= args.size()) throw UserError(name + " needs a value");
             value = args[++i];
         }
-        flag->set(command, *value);
+        flag->set(command, name, *value);
     }
     checkCombinations(command);
     return command;

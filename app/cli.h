@@ -89,7 +89,7 @@ struct RenderOptions {
     std::string iblReport;        // view: --ibl-report FILE (an ibl-report CSV for the environment panel)
     std::set<ui::Panel> panels;   // view: --panels A,B,... (open at start)
     bool json = false;            // bench: --json
-    uint32_t grid = 0;            // --grid N: N × N spheres of the built-in grid
+    std::optional<uint32_t> grid;  // --grid N: N × N spheres of the built-in grid (unset: its own 7 × 7)
     std::string out;              // render: --out FILE (.png, .exr, .pfm)
     uint32_t width = 0;           // --width W
     uint32_t height = 0;          // --height H

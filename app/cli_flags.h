@@ -62,8 +62,8 @@ struct Flag {
     std::vector<std::string> choices;
     std::string otherForm;
     // Parses `value` ("" for a switch) into the options of `command` (whose kind takes the flag);
-    // UserError naming the flag when it is malformed.
-    std::function<void(Command& command, const std::string& value)> set;
+    // a UserError naming the flag (`name`, passed as `flag`) when it is malformed.
+    std::function<void(Command& command, const std::string& flag, const std::string& value)> set;
     // A value that parses for every command taking the flag and differs from its default (tests).
     std::string example;
 

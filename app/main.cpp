@@ -35,10 +35,9 @@ vk::ContextDesc contextDesc(const CommonOptions& common) {
 }
 
 scene::Scene loadScene(const RenderOptions& options) {
-    if (options.sceneIndex && options.scene.empty()) throw UserError("--scene-index: give a glTF file with --scene");
-    if (options.grid != 7 && !options.scene.empty()) throw UserError("--grid: sizes the built-in sphere grid; not with --scene");
-    scene::Scene scene = options.scene.empty() ? scene::makeSphereGrid(options.grid)
-                                               : scene::loadGltf(options.scene, {.sceneIndex = options.sceneIndex});
+    scene::Scene scene = !options.scene.empty() ? scene::loadGltf(options.scene, {.sceneIndex = options.sceneIndex})
+                         : options.grid     ? scene::makeSphereGrid(*options.grid)
+                                            : scene::makeSphereGrid();
     for (const std::string& warning : scene.warnings) log::warn(options.scene + ": " + warning);
     for (const std::string& note : scene.notes) log::info(options.scene + ": " + note);
     if (!options.variant.empty()) scene::selectVariant(scene, scene::variantIndex(scene, options.variant));

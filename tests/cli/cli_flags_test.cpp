@@ -19,7 +19,8 @@ namespace {
 
 // Flags that a command takes only together with another: the companions both sides of a
 // comparison get.
-const std::map<std::string, std::vector<std::string>> kCompanions = {{"--screenshot", {"--frames", "2"}}};
+const std::map<std::string, std::vector<std::string>> kCompanions = {{"--screenshot", {"--frames", "2"}},
+                                                                      {"--scene-index", {"--scene", "model.glb"}}};
 
 std::vector<std::string> argsWith(const CommandInfo& command, const Flag& flag) {
     std::vector<std::string> args = {command.name, flag.name};
