@@ -22,9 +22,9 @@
 
 namespace candela::app {
 
-// The defaults of the options below that have a flag are the flag table's (applied by
-// parseCommandLine before the arguments); the members' own initial values are what a command
-// gets from a flag it does not take.
+// An option whose flag declares a default in the table gets it from there (parseCommandLine
+// applies the defaults of the command's flags before reading the arguments); the initial values
+// below are those of switches and of flags whose default is "not given".
 
 struct CommonOptions {
     std::string device;            // --device INDEX|NAME

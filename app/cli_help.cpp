@@ -3,6 +3,7 @@
 #include "cli.h"
 #include "cli_flags.h"
 
+#include <algorithm>
 #include <map>
 
 namespace candela::app {
