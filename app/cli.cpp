@@ -112,7 +112,10 @@ Command parseCommandLine(const std::vector<std::string>& args) {
     Command command;
     if (args.empty() || isHelp(args[0]) || args[0] == "help") {
         // `candela help COMMAND` is `candela COMMAND --help`.
-        if (args.size() > 1 && args[0] == "help" && findCommand(args[1])) command.helpCommand = args[1];
+        if (args.size() > 1 && args[0] == "help") {
+            if (!findCommand(args[1])) throw UserError(unknownCommandMessage(args[1]));
+            command.helpCommand = args[1];
+        }
         return command;
     }
     if (args[0] == "--version") {

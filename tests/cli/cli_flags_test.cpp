@@ -244,6 +244,7 @@ TEST(CliFlags, HelpAndVersion) {
         EXPECT_EQ(parseCommandLine({help}).helpCommand, "");
     }
     EXPECT_EQ(parseCommandLine({"help", "soak"}).helpCommand, "soak");
+    EXPECT_EQ(errorOf({"help", "sook"}).rfind("unknown command 'sook' (did you mean soak?", 0), 0u);
     EXPECT_EQ(parseCommandLine({"--version"}).kind, Command::Kind::Version);
     EXPECT_THROW(parseCommandLine({"--version", "render"}), UserError);
     const std::string version = versionText();
