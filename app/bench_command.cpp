@@ -30,7 +30,7 @@ int runBench(const RenderOptions& options) {
     const auto loadStart = std::chrono::steady_clock::now();
     const scene::Scene scene = loadScene(options);
     const double loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart).count();
-    const std::optional<scene::Environment> environment = loadEnvironment(options);
+    const std::optional<scene::Environment> environment = loadEnvironment(options.env);
     RenderSettings settings = renderSettings(options, scene, environment ? &*environment : nullptr);
     // Frame i shows the animations at --time + i/60 s: each frame pays for evaluating its pose.
     scene::ScenePose pose = loadPose(options, scene);
@@ -90,6 +90,7 @@ int runBench(const RenderOptions& options) {
     if (pose.animated())
         out["animation"] = {{"playing", pose.playing().size()}, {"evaluateMedianMs", median(animationMs)},
                             {"evaluateMaxMs", *std::max_element(animationMs.begin(), animationMs.end())}};
+    if (options.explain) out["explain"] = m.explain;
 
     if (options.json) {
         std::printf("%s\n", out.dump(2).c_str());
@@ -123,6 +124,8 @@ int runBench(const RenderOptions& options) {
         for (const auto& p : passes)
             std::printf("  pass %-12s GPU median %.2f ms (%.2fx calibration GPU)\n", p["name"].get<std::string>().c_str(),
                         p["gpuMedianMs"].get<double>(), p["ratioToCalibrationGpu"].get<double>());
+        if (options.explain)
+            for (const std::string& line : m.explain) std::printf("%s\n", line.c_str());
     }
     if (context.validationMessageCount() > 0) {
         log::error(std::to_string(context.validationMessageCount()) + " validation messages");

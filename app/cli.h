@@ -1,155 +1,189 @@
 #pragma once
 // Command-line parsing for the `candela` executable. Pure (no Vulkan), unit-tested.
 // Every malformed argument throws candela::UserError with a one-line message naming the flag.
+// The flags — name, value, help, default, the commands that take them and how each is parsed —
+// are declared once, in the flag table (cli_flags.h); the options below hold the parsed values.
 
+#include "cli_values.h"
 #include "ibl/ibl_settings.h"
+#include "passes/debug_view.h"
 #include "passes/draw_selection.h"
+#include "passes/tonemap_operator.h"
+#include "shading_model_names.h"
+#include "ui/viewer_panels.h"
 
 #include <array>
 #include <optional>
+#include <set>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace candela::app {
 
+// An option whose flag declares a default in the table gets it from there (parseCommandLine
+// applies the defaults of the command's flags before reading the arguments); the initial values
+// below are those of switches and of flags whose default is "not given".
+
 struct CommonOptions {
-    std::string device;     // --device INDEX|NAME
-    bool validate = false;  // --validate
-    bool verbose = false;   // --verbose
-    bool quiet = false;     // --quiet: no progress lines
+    std::string device;            // --device INDEX|NAME
+    bool validate = false;         // --validate
+    bool verbose = false;          // --verbose
+    bool quiet = false;            // --quiet: no progress lines
     uint32_t memoryBudgetMib = 0;  // --memory-budget MIB (0: the device's memory)
+    bool operator==(const CommonOptions&) const = default;
 };
 
+// --env: the environment that lights the scene.
+struct EnvironmentChoice {
+    enum class Kind { Sky, None, File } kind = Kind::Sky;  // Sky: the built-in procedural sky
+    std::string file;                                      // Kind::File: an equirectangular .hdr/.exr
+    bool operator==(const EnvironmentChoice&) const = default;
+};
+
+// --background: what shows where the scene draws nothing.
+struct Background {
+    enum class Kind { Auto, Skybox, Transparent, Color } kind = Kind::Auto;  // Auto: the skybox with an environment, #262626 without
+    std::array<float, 3> srgb{};  // Kind::Color: sRGB-encoded components in [0,1]
+    bool operator==(const Background&) const = default;
+};
+
+inline constexpr std::pair<Background::Kind, const char*> kBackgroundNames[] = {
+    {Background::Kind::Auto, "auto"}, {Background::Kind::Skybox, "skybox"}, {Background::Kind::Transparent, "transparent"}};
+
+// The options of render, view and bench.
 struct RenderOptions {
     CommonOptions common;
-    std::string scene;                // --scene FILE (.gltf/.glb); empty: the built-in sphere grid
+    std::string scene;                   // --scene FILE (.gltf/.glb), or view's SCENE; empty: the built-in sphere grid
     std::optional<uint32_t> sceneIndex;  // --scene-index N: which of the file's scenes [its `scene`, else 0]
-    std::optional<uint32_t> camera;   // --camera INDEX (glTF camera)
+    std::optional<uint32_t> camera;      // --camera INDEX (glTF camera)
     std::optional<std::array<float, 3>> cameraOrbit;  // --camera-orbit THETA,PHI,RADIUS
     std::optional<std::array<float, 3>> target;       // --target X,Y,Z
-    float fovDegrees = 45.0f;         // --fov DEGREES (vertical)
-    std::string shading = "pbr";      // --shading pbr|pbr-schlick-ggx|blinn-phong
-    std::string debugView = "none";   // --debug-view NAME (passes::parseDebugView)
-    std::string tonemap = "pbr-neutral";  // --tonemap pbr-neutral|aces|agx|reinhard|linear
-    float exposureEv = 0.0f;          // --exposure EV
-    std::string background = "auto";  // --background auto|transparent|#rrggbb|skybox
-    std::string env = "sky";          // --env FILE|sky|none (sky: the built-in procedural sky)
-    ibl::IblQuality iblQuality;       // --irradiance, --ibl-cube-size, --ibl-prefilter-samples, ...
-    ibl::IblLook iblLook;             // --env-rotation, --env-intensity, --skybox-blur, --no-multiscatter
-    std::string iblCache;             // --ibl-cache DIR
-    bool dither = false;              // --dither
-    bool defaultLights = true;        // --no-default-lights turns off the key/fill lights of light-less scenes
-    bool sceneLights = true;          // --scene-lights off leaves out the file's own punctual lights
-    std::string variant;              // --variant NAME: a KHR_materials_variants variant ("" = defaults)
-    float lodErrorPixels = passes::DrawSelection::kDefaultLodErrorPixels;  // --lod-error PIXELS (0, or --lod off: full detail)
-    bool frustumCulling = true;       // --cull on|off
-    bool specularAa = false;          // --specular-aa on|off
-    std::optional<uint32_t> msaa;     // --msaa 1|2|4|8 (unset: the device default)
-    bool explain = false;             // --explain
-    uint32_t frames = 20;             // bench: --frames N; view: frames to render before exiting (0: until closed)
-    std::string screenshot;           // view: --screenshot FILE (saves the last of --frames N)
-    bool vsync = true;                // view: --no-vsync
-    bool ui = true;                   // view: --no-ui
-    std::string shaderDir;            // view: --shaders DIR (hot reload; default: the source tree's shaders/)
-    std::string iblReport;            // view: --ibl-report FILE (an ibl-report CSV for the environment panel)
-    std::vector<std::string> panels = {"graph", "parameters", "stats"};  // view: --panels A,B,... (open at start)
-    bool json = false;                // bench: --json
-    uint32_t grid = 7;                // --grid N: N × N spheres of the built-in grid
-    std::string out = "candela.png";  // --out FILE (.png, .exr, .pfm)
-    uint32_t width = 1280;            // --width W
-    uint32_t height = 720;            // --height H
-    std::string graphDot;             // --graph-dot FILE
-    std::string graphJson;            // --graph-json FILE
+    float fovDegrees = 0.0f;                         // --fov DEGREES (vertical)
+    passes::ShadingModel shading{};                  // --shading
+    passes::DebugView debugView{};                   // --debug-view
+    passes::Tonemap tonemap{};                       // --tonemap
+    float exposureEv = 0.0f;                         // --exposure EV
+    Background background;                           // --background
+    EnvironmentChoice env;                           // --env FILE|sky|none
+    ibl::IblQuality iblQuality;  // --irradiance, --ibl-cube-size, --ibl-prefilter-samples, ...
+    ibl::IblLook iblLook;        // --env-rotation, --env-intensity, --skybox-blur, --no-multiscatter
+    std::string iblCache;        // --ibl-cache DIR
+    bool dither = false;         // --dither (render, bench; the viewer always dithers)
+    bool defaultLights = true;   // --no-default-lights turns off the key/fill lights of light-less scenes
+    bool sceneLights = true;     // --scene-lights off leaves out the file's own punctual lights
+    std::string variant;         // --variant NAME: a KHR_materials_variants variant ("" = defaults)
+    float lodErrorPixels = 0.0f;  // --lod-error PIXELS (0, or --lod off: full detail)
+    bool frustumCulling = true;   // --cull on|off
+    bool specularAa = false;      // --specular-aa on|off
+    std::optional<uint32_t> msaa;  // --msaa 1|2|4|8 (unset: the device default)
+    bool explain = false;          // --explain (render, bench)
+    // --frames N: render: frames of an image sequence; bench: frames measured; view: frames to
+    // render before exiting (0: until the window is closed).
+    uint32_t frames = 0;
+    std::string screenshot;       // view: --screenshot FILE (saves the last of --frames N)
+    bool vsync = true;            // view: --no-vsync
+    bool ui = true;               // view: --no-ui
+    std::string shaderDir;        // view: --shaders DIR (hot reload; default: the source tree's shaders/)
+    std::string iblReport;        // view: --ibl-report FILE (an ibl-report CSV for the environment panel)
+    std::set<ui::Panel> panels;   // view: --panels A,B,... (open at start)
+    bool json = false;            // bench: --json
+    std::optional<uint32_t> grid;  // --grid N: N × N spheres of the built-in grid (unset: its own 7 × 7)
+    std::string out;              // render: --out FILE (.png, .exr, .pfm)
+    uint32_t width = 0;           // --width W
+    uint32_t height = 0;          // --height H
+    std::string graphDot;         // render: --graph-dot FILE
+    std::string graphJson;        // render: --graph-json FILE
     std::vector<std::string> disabledPasses;  // --disable-pass NAME (repeatable)
     // --animation LIST (repeatable, comma-separated: indices, names, all, none); empty: animation 0
     std::vector<std::string> animations;
-    double time = 0.0;                // --time SECONDS (each animation loops over its duration)
-    // render: an image sequence of --frames N (default 1) frames at --fps F, written to the --out
-    // pattern (one %d, e.g. frame_%04d.png); frame i shows --time + i / F, and with
-    // --turntable DEGREES the orbit camera turns that far over the sequence.
-    double fps = 30.0;
+    double time = 0.0;  // --time SECONDS (each animation loops over its duration)
+    // render: an image sequence of --frames N frames at --fps F, written to the --out pattern (one
+    // %d, e.g. frame_%04d.png); frame i shows --time + i / F, and with --turntable DEGREES the
+    // orbit camera turns that far over the sequence.
+    double fps = 0.0;
     float turntableDegrees = 0.0f;
+    bool operator==(const RenderOptions&) const = default;
 };
-
-// The file name of frame `index` of an image sequence: `pattern` with its one %d or %0Nd replaced.
-// Throws UserError when the pattern does not hold exactly one such field (% written as %%).
-std::string sequenceFileName(const std::string& pattern, uint32_t index);
 
 struct InfoOptions {
     CommonOptions common;
+    bool operator==(const InfoOptions&) const = default;
 };
 
 struct IblReportOptions {
     CommonOptions common;
-    std::string env = "sky";            // --env FILE|sky
-    std::string out = "ibl-report";     // --out DIR (created)
-    uint32_t repeats = 3;               // --repeats N: precompute runs per setting (median)
-    bool quick = false;                 // --quick: a reduced sweep (tests, smoke runs)
-    uint32_t width = 320;               // --width, --height: end-to-end image size
-    uint32_t height = 180;
-    uint32_t referenceSamples = 4096;   // --reference-samples N: per pixel of the ground-truth render
+    EnvironmentChoice env;          // --env FILE|sky (never None)
+    std::string out;                // --out DIR (created)
+    uint32_t repeats = 0;           // --repeats N: precompute runs per setting (median)
+    bool quick = false;             // --quick: a reduced sweep (tests, smoke runs)
+    uint32_t width = 0;             // --width, --height: end-to-end image size
+    uint32_t height = 0;
+    uint32_t referenceSamples = 0;  // --reference-samples N: per pixel of the ground-truth render
+    bool operator==(const IblReportOptions&) const = default;
 };
 
 struct SoakOptions {
     CommonOptions common;
-    uint32_t frames = 10000;     // --frames N
-    uint32_t switchEvery = 100;  // --switch-every K: frames per environment
-    uint32_t sampleEvery = 100;  // --sample-every K
-    uint32_t width = 320;        // --width, --height
-    uint32_t height = 180;
-    std::string out;             // --out FILE.csv (optional)
+    uint32_t frames = 0;       // --frames N
+    uint32_t switchEvery = 0;  // --switch-every K: frames per environment
+    uint32_t sampleEvery = 0;  // --sample-every K
+    uint32_t width = 0;        // --width, --height
+    uint32_t height = 0;
+    std::string out;           // --out FILE.csv (optional)
+    bool operator==(const SoakOptions&) const = default;
 };
 
 struct ScaleReportOptions {
     CommonOptions common;
-    std::string out = "scale-report";                            // --out DIR (created)
-    std::vector<uint32_t> sizes = {1, 2, 5, 10, 20, 50, 100};     // --sizes N,N,...: grid sides
-    uint32_t frames = 5;                                          // --frames N per setting
-    float lodErrorPixels = passes::DrawSelection::kDefaultLodErrorPixels;  // --lod-error PIXELS: the "on" setting
-    uint32_t width = 1280;                                        // --width, --height
-    uint32_t height = 720;
+    std::string out;               // --out DIR (created)
+    std::vector<uint32_t> sizes;   // --sizes N,N,...: grid sides
+    uint32_t frames = 0;           // --frames N per setting
+    float lodErrorPixels = 0.0f;   // --lod-error PIXELS: the "on" setting
+    uint32_t width = 0;            // --width, --height
+    uint32_t height = 0;
+    bool operator==(const ScaleReportOptions&) const = default;
 };
 
 struct QualityReportOptions {
     CommonOptions common;
-    std::string out = "quality-report";           // --out DIR (created)
-    std::vector<std::string> scenes = {"default"};  // --scenes default,FILE,...: the built-in grid or glTF files
-    std::string env = "sky";                      // --env FILE|sky: the glTF scenes' environment (the grid: the sky)
-    std::vector<uint32_t> msaa = {1, 2, 4, 8};    // --msaa N,N,...
-    std::vector<float> lodErrors = {0.0f, 0.5f, 1.0f, 2.0f, 4.0f};  // --lod-errors PX,PX,...
-    uint32_t frames = 5;                          // --frames N: timed frames per setting
-    uint32_t orbitFrames = 6;                     // --orbit-frames N: frames of the 1°-per-frame orbit
-    uint32_t width = 640;                         // --width, --height
-    uint32_t height = 360;
+    std::string out;                  // --out DIR (created)
+    std::vector<std::string> scenes;  // --scenes default,FILE,...: the built-in grid or glTF files
+    EnvironmentChoice env;            // --env FILE|sky: the glTF scenes' environment (the grid: the sky)
+    std::vector<uint32_t> msaa;       // --msaa N,N,...
+    std::vector<float> lodErrors;     // --lod-errors PX,PX,...
+    uint32_t frames = 0;              // --frames N: timed frames per setting
+    uint32_t orbitFrames = 0;         // --orbit-frames N: frames of the 1°-per-frame orbit
+    uint32_t width = 0;               // --width, --height
+    uint32_t height = 0;
+    bool operator==(const QualityReportOptions&) const = default;
 };
 
 struct Command {
-    enum class Kind { Help, Render, View, Info, Bench, IblReport, Soak, ScaleReport, QualityReport } kind = Kind::Help;
-    RenderOptions render;  // render, view and bench
+    enum class Kind { Help, Render, View, Info, Bench, IblReport, Soak, ScaleReport, QualityReport, Version } kind = Kind::Help;
+    std::string helpCommand;  // Help: the command whose flags to list ("" for `candela --help`)
+    RenderOptions render;     // render, view and bench
     InfoOptions info;
     IblReportOptions iblReport;
     SoakOptions soak;
     ScaleReportOptions scaleReport;
     QualityReportOptions qualityReport;
-    // The common options of the command (defaults for help).
+    // The common options of the command (defaults for help and version).
     const CommonOptions& common() const;
+    CommonOptions& common();
+    bool operator==(const Command&) const = default;
 };
 
-// Parses argv[1..]. No arguments or --help → Kind::Help.
+// Parses argv[1..]. No arguments, --help or -h → Kind::Help (with a command: that command's
+// help); --version → Kind::Version.
 Command parseCommandLine(const std::vector<std::string>& args);
 
-// Usage text printed by `candela --help`.
+// `candela --help`: the commands and every flag, grouped by the commands that take them.
 std::string usageText();
-
-// Parses a decimal integer in [0, 2^32): "--width" and "abc" → UserError naming the flag.
-uint32_t parseDimension(const std::string& flag, const std::string& value);
-// Parses a finite decimal number; anything else → UserError naming the flag.
-float parseNumber(const std::string& flag, const std::string& value);
-// Parses a finite number of seconds >= 0, in double precision.
-double parseSeconds(const std::string& flag, const std::string& value);
-// Parses "A,B,C" (three finite numbers).
-std::array<float, 3> parseTriple(const std::string& flag, const std::string& value);
-// Parses "#rrggbb" into sRGB-encoded components in [0,1].
-std::array<float, 3> parseHexColor(const std::string& flag, const std::string& value);
+// `candela COMMAND --help`: the flags of `command` only. Precondition: `command` is a command name.
+std::string commandHelp(std::string_view command);
+// `candela --version`: "candela 0.1.0" (CMake's PROJECT_VERSION).
+std::string versionText();
 
 }  // namespace candela::app

@@ -27,8 +27,9 @@ int runQualityReport(const QualityReportOptions& options);
 // Shared by render and bench: the context description and the render settings the flags choose.
 vk::ContextDesc contextDesc(const CommonOptions& common);
 scene::Scene loadScene(const RenderOptions& options);
-// The environment --env asks for: a file, the procedural sky, or none (nullopt). Warnings are logged.
-std::optional<scene::Environment> loadEnvironment(const RenderOptions& options);
+// The environment --env asks for: a file, the procedural sky, or none (nullopt). Its warnings are
+// logged, and its notes with --verbose.
+std::optional<scene::Environment> loadEnvironment(const EnvironmentChoice& choice);
 // The pose --animation and --time ask for (a UserError names the scene's animations when one
 // does not exist). Precondition: `scene` outlives it.
 scene::ScenePose loadPose(const RenderOptions& options, const scene::Scene& scene);

@@ -17,6 +17,7 @@ FrameMeasurement measureFrames(Renderer& renderer, const RenderSettings& setting
         out.frameMs.push_back(frame.submitWaitMs);
         out.cpuMs.push_back(frame.cpuMs);
         out.drawStats = renderer.drawStats();
+        if (i + 1 == frames) out.explain = renderer.explain();
         const graph::GraphDecl& decl = renderer.lastGraph().declaration();
         for (uint32_t pass : renderer.lastGraph().compiled().order) {
             const std::string& name = decl.passes[pass].name;

@@ -19,6 +19,7 @@ struct FrameMeasurement {
     std::map<std::string, std::vector<double>> passGpuMs;
     std::vector<std::string> passOrder;    // every pass seen, in the order first met
     passes::DrawStats drawStats;           // of the last frame
+    std::vector<std::string> explain;      // Renderer::explain() of the last frame (not of a calibration run)
 };
 
 // Two warm-up frames (pipelines, transient pools, the scene's upload), then `frames` frames each

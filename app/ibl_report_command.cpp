@@ -15,7 +15,6 @@
 #include "statistics.h"
 #include "io/image_file.h"
 #include "scene/builtin_scenes.h"
-#include "scene/procedural_sky.h"
 
 #include <algorithm>
 #include <chrono>
@@ -83,10 +82,7 @@ int runIblReport(const IblReportOptions& options) {
     const std::filesystem::path out = options.out;
     prepareReportFolder(out, {"report.csv", "report.md", "specular.png", "irradiance.png", "lut.png", "image.png"});
 
-    const scene::Environment environment =
-        options.env == "sky" ? scene::makeProceduralSky() : scene::loadEnvironment(options.env);
-    for (const std::string& warning : environment.warnings) log::warn(warning);
-    for (const std::string& note : environment.notes) log::info(note);
+    const scene::Environment environment = *loadEnvironment(options.env);  // the parser refuses --env none
     const scene::Environment reference = ibl::referenceEnvironment(environment);
     ibl::ReferenceCache cache;
 

@@ -22,6 +22,11 @@
 
 namespace candela::app {
 
+// The parser's shading-model names (shading_model_names.h) against the enum they stand for.
+static_assert(parseShadingModel("pbr") == passes::ShadingModel::Pbr &&
+              parseShadingModel("pbr-schlick-ggx") == passes::ShadingModel::PbrSchlickGgx &&
+              parseShadingModel("blinn-phong") == passes::ShadingModel::BlinnPhong && std::size(kShadingModelNames) == 3);
+
 vk::ContextDesc contextDesc(const CommonOptions& common) {
     log::setVerbose(common.verbose);
     return {.validation = common.validate,
@@ -30,10 +35,9 @@ vk::ContextDesc contextDesc(const CommonOptions& common) {
 }
 
 scene::Scene loadScene(const RenderOptions& options) {
-    if (options.sceneIndex && options.scene.empty()) throw UserError("--scene-index: give a glTF file with --scene");
-    if (options.grid != 7 && !options.scene.empty()) throw UserError("--grid: sizes the built-in sphere grid; not with --scene");
-    scene::Scene scene = options.scene.empty() ? scene::makeSphereGrid(options.grid)
-                                               : scene::loadGltf(options.scene, {.sceneIndex = options.sceneIndex});
+    scene::Scene scene = !options.scene.empty() ? scene::loadGltf(options.scene, {.sceneIndex = options.sceneIndex})
+                         : options.grid     ? scene::makeSphereGrid(*options.grid)
+                                            : scene::makeSphereGrid();
     for (const std::string& warning : scene.warnings) log::warn(options.scene + ": " + warning);
     for (const std::string& note : scene.notes) log::info(options.scene + ": " + note);
     if (!options.variant.empty()) scene::selectVariant(scene, scene::variantIndex(scene, options.variant));
@@ -53,9 +57,10 @@ scene::ScenePose loadPose(const RenderOptions& options, const scene::Scene& scen
     return pose;
 }
 
-std::optional<scene::Environment> loadEnvironment(const RenderOptions& options) {
-    if (options.env == "none") return std::nullopt;
-    scene::Environment env = options.env == "sky" ? scene::makeProceduralSky() : scene::loadEnvironment(options.env);
+std::optional<scene::Environment> loadEnvironment(const EnvironmentChoice& choice) {
+    if (choice.kind == EnvironmentChoice::Kind::None) return std::nullopt;
+    scene::Environment env =
+        choice.kind == EnvironmentChoice::Kind::Sky ? scene::makeProceduralSky() : scene::loadEnvironment(choice.file);
     for (const std::string& warning : env.warnings) log::warn(warning);
     for (const std::string& note : env.notes) log::info(note);
     return env;
@@ -84,11 +89,9 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
     if (options.cameraOrbit) settings.camera.orbit = glm::vec3((*options.cameraOrbit)[0], (*options.cameraOrbit)[1], (*options.cameraOrbit)[2]);
     if (options.target) settings.camera.target = glm::vec3((*options.target)[0], (*options.target)[1], (*options.target)[2]);
     settings.camera.fovYDegrees = options.fovDegrees;
-    settings.shading = options.shading == "blinn-phong"       ? passes::ShadingModel::BlinnPhong
-                       : options.shading == "pbr-schlick-ggx" ? passes::ShadingModel::PbrSchlickGgx
-                                                              : passes::ShadingModel::Pbr;
-    settings.tonemap.op = *passes::parseTonemap(options.tonemap);  // validated by the parser
-    settings.debugView = *passes::parseDebugView(options.debugView);
+    settings.shading = options.shading;
+    settings.tonemap.op = options.tonemap;
+    settings.debugView = options.debugView;
     settings.tonemap.exposureEv = options.exposureEv;
     settings.tonemap.dither = options.dither;
     settings.environment = environment;
@@ -96,13 +99,13 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
     settings.ibl = options.iblLook;
     settings.iblCacheDir = options.iblCache;
     // With an environment the skybox is the background unless another one is asked for.
-    const std::string background =
-        options.background == "auto" ? (environment ? "skybox" : "#262626") : options.background;
-    settings.ibl.skybox = background == "skybox";
-    if (background != "transparent" && background != "skybox") {
-        const std::array<float, 3> srgb = parseHexColor("--background", background);
-        settings.tonemap.background = shading::srgbDecode(glm::vec3(srgb[0], srgb[1], srgb[2]));
-    }
+    Background background = options.background;
+    constexpr float kGrey = 0x26 / 255.0f;  // #262626
+    if (background.kind == Background::Kind::Auto)
+        background = environment ? Background{Background::Kind::Skybox} : Background{Background::Kind::Color, {kGrey, kGrey, kGrey}};
+    settings.ibl.skybox = background.kind == Background::Kind::Skybox;
+    if (background.kind == Background::Kind::Color)
+        settings.tonemap.background = shading::srgbDecode(glm::vec3(background.srgb[0], background.srgb[1], background.srgb[2]));
     // The default key and fill lights stand in for an environment: with one, light-less scenes
     // are lit by it alone.
     if (environment) settings.defaultLights = false;
@@ -119,7 +122,7 @@ int runRender(const RenderOptions& options) {
         if (!path.empty()) io::checkWritable(path);
 
     const scene::Scene scene = loadScene(options);
-    const std::optional<scene::Environment> environment = loadEnvironment(options);
+    const std::optional<scene::Environment> environment = loadEnvironment(options.env);
     RenderSettings settings = renderSettings(options, scene, environment ? &*environment : nullptr);
     settings.floatOutput = io::isFloatFormat(format);
     scene::ScenePose pose = loadPose(options, scene);
@@ -222,7 +225,10 @@ int main(int argc, char** argv) {
         const app::Command command = app::parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
         log::setVerbose(command.common().verbose);  // before anything loads: loaders print notes with --verbose
         switch (command.kind) {
-            case app::Command::Kind::Help: std::fputs(app::usageText().c_str(), stdout); return 0;
+            case app::Command::Kind::Help:
+                std::fputs((command.helpCommand.empty() ? app::usageText() : app::commandHelp(command.helpCommand)).c_str(), stdout);
+                return 0;
+            case app::Command::Kind::Version: std::printf("%s\n", app::versionText().c_str()); return 0;
             case app::Command::Kind::Render: return app::runRender(command.render);
             case app::Command::Kind::View: return app::runView(command.render);
             case app::Command::Kind::Info: return app::runInfo(command.info);

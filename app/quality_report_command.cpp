@@ -168,7 +168,7 @@ int runQualityReport(const QualityReportOptions& options) {
     // Everything the sweep needs is loaded first, so that a bad file fails before minutes of work.
     const scene::Environment sky = scene::makeProceduralSky();
     std::optional<scene::Environment> fileEnvironment;
-    if (options.env != "sky") fileEnvironment = scene::loadEnvironment(options.env);
+    if (options.env.kind == EnvironmentChoice::Kind::File) fileEnvironment = loadEnvironment(options.env);
     std::list<scene::Scene> loaded;  // the renderer keeps pointing at the last scene it drew
     for (const std::string& entry : options.scenes) {
         scene::Scene& scene = loaded.emplace_back(entry == "default" ? scene::makeSphereGrid() : scene::loadGltf(entry));

@@ -43,7 +43,7 @@ int runView(const RenderOptions& options) {
     ui::ViewerContent content;
     content.scene = loadScene(options);
     if (!options.variant.empty()) content.variant = scene::variantIndex(content.scene, options.variant);
-    if (std::optional<scene::Environment> env = loadEnvironment(options))
+    if (std::optional<scene::Environment> env = loadEnvironment(options.env))
         content.environment = std::make_unique<scene::Environment>(std::move(*env));
     // The viewer owns the scene and environment from now on and points each frame's settings at
     // them itself.
@@ -61,7 +61,7 @@ int runView(const RenderOptions& options) {
     desc.ui = options.ui;
     desc.shaderDir = options.shaderDir;
     desc.iblReport = options.iblReport;
-    desc.openPanels = std::set<std::string>(options.panels.begin(), options.panels.end());
+    desc.openPanels = options.panels;
     ui::Viewer viewer(desc, std::move(content));
     if (options.frames > 0) {
         // frame() also returns true for frames not rendered (minimized window): count rendered ones.

@@ -20,14 +20,6 @@ void requireRange(const char* name, uint32_t value, uint32_t min, uint32_t max) 
 }
 }  // namespace
 
-IrradianceMode parseIrradianceMode(std::string_view flag, std::string_view value) {
-    if (value == "sh9") return IrradianceMode::Sh9;
-    if (value == "cube") return IrradianceMode::Cube;
-    throw UserError(std::string(flag) + " '" + std::string(value) + "': expected sh9 or cube");
-}
-
-const char* irradianceModeName(IrradianceMode mode) { return mode == IrradianceMode::Sh9 ? "sh9" : "cube"; }
-
 void IblQuality::validate() const {
     requirePowerOfTwo("--ibl-cube-size", cubeSize, 16, 2048);
     requireRange("--ibl-levels", specularLevels, 2, 16);

@@ -3,17 +3,28 @@
 // reruns them, and it is part of the on-disk cache key); IblLook only changes how the maps are read
 // at shading time (rotation, intensity, skybox), so changing it reruns nothing. Pure data.
 
+#include "core/name_table.h"
+
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace candela::ibl {
 
 enum class IrradianceMode : uint8_t { Sh9, Cube };
 
-// Parses "sh9" / "cube"; throws UserError naming `flag` otherwise.
-IrradianceMode parseIrradianceMode(std::string_view flag, std::string_view value);
-const char* irradianceModeName(IrradianceMode mode);
+// The modes' names: the one table that --irradiance and the ibl-report tables read.
+inline constexpr std::pair<IrradianceMode, const char*> kIrradianceModeNames[] = {{IrradianceMode::Sh9, "sh9"},
+                                                                                   {IrradianceMode::Cube, "cube"}};
+
+// The mode named `name` in kIrradianceModeNames; nullopt for anything else.
+constexpr std::optional<IrradianceMode> parseIrradianceMode(std::string_view name) {
+    return valueNamed(kIrradianceModeNames, name);
+}
+
+constexpr const char* irradianceModeName(IrradianceMode mode) { return nameOf(kIrradianceModeNames, mode); }
 
 struct IblQuality {
     uint32_t cubeSize = 256;          // face size of the float environment cube and of specular mip 0 (2^k, 16..2048)
@@ -59,6 +70,7 @@ struct IblLook {
     // > 0: shade with the ground truth (the reflectance equation integrated per pixel with this many
     // samples per lobe) instead of the split sum; for `ibl-report`. Slow.
     uint32_t referenceSamples = 0;
+    bool operator==(const IblLook&) const = default;
 };
 
 }  // namespace candela::ibl

@@ -5,6 +5,7 @@
 // shaders' CANDELA_DEBUG_* come from the same rows). Names only: no Vulkan (the command-line
 // parser uses them).
 
+#include "core/name_table.h"
 #include "shared/forward_tables.h"
 
 #include <cstdint>
@@ -29,18 +30,15 @@ struct DebugViewRow {
 inline constexpr DebugViewRow kDebugViews[] = {CANDELA_DEBUG_VIEWS(CANDELA_DEBUG_VIEW_ROW)};
 #undef CANDELA_DEBUG_VIEW_ROW
 
-// The names above; nullopt for anything else.
-inline std::optional<DebugView> parseDebugView(std::string_view name) {
-    for (const DebugViewRow& row : kDebugViews)
-        if (name == row.name) return row.view;
-    return std::nullopt;
-}
+// The same rows as the names table the command line and the lookups read.
+#define CANDELA_DEBUG_VIEW_NAME(NAME, Name, value, name, light) std::pair<DebugView, const char*>{DebugView::Name, name},
+inline constexpr std::pair<DebugView, const char*> kDebugViewNames[] = {CANDELA_DEBUG_VIEWS(CANDELA_DEBUG_VIEW_NAME)};
+#undef CANDELA_DEBUG_VIEW_NAME
 
-inline const char* debugViewName(DebugView view) {
-    for (const DebugViewRow& row : kDebugViews)
-        if (row.view == view) return row.name;
-    return "?";
-}
+// The names above; nullopt for anything else.
+constexpr std::optional<DebugView> parseDebugView(std::string_view name) { return valueNamed(kDebugViewNames, name); }
+
+constexpr const char* debugViewName(DebugView view) { return nameOf(kDebugViewNames, view); }
 
 // Every view but None, in menu order.
 inline std::vector<DebugView> allDebugViews() {

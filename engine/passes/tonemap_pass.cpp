@@ -14,27 +14,7 @@ bool isSrgbFormat(VkFormat format) {
     return format == VK_FORMAT_R8G8B8A8_SRGB || format == VK_FORMAT_B8G8R8A8_SRGB || format == VK_FORMAT_A8B8G8R8_SRGB_PACK32;
 }
 
-constexpr struct {
-    Tonemap op;
-    const char* name;
-} kNames[] = {{Tonemap::PbrNeutral, "pbr-neutral"},
-              {Tonemap::Aces, "aces"},
-              {Tonemap::Agx, "agx"},
-              {Tonemap::Reinhard, "reinhard"},
-              {Tonemap::Linear, "linear"}};
 }  // namespace
-
-std::optional<Tonemap> parseTonemap(std::string_view name) {
-    for (const auto& entry : kNames)
-        if (name == entry.name) return entry.op;
-    return std::nullopt;
-}
-
-const char* tonemapName(Tonemap op) {
-    for (const auto& entry : kNames)
-        if (op == entry.op) return entry.name;
-    return "?";
-}
 
 TonemapPass::TonemapPass(vk::Context& context)
     : mContext(context),

@@ -3,6 +3,7 @@
 // encoding of the HDR frame into an 8-bit target (full-screen triangle).
 
 #include "graph/render_graph.h"
+#include "passes/tonemap_operator.h"
 #include "shader/parameter_registry.h"
 #include "vk/pipeline_cache.h"
 #include "vk/sampler.h"
@@ -10,17 +11,10 @@
 #include <glm/glm.hpp>
 
 #include <optional>
-#include <string_view>
 #include <utility>
 #include <vector>
 
 namespace candela::passes {
-
-enum class Tonemap : uint32_t { PbrNeutral = 0, Aces = 1, Agx = 2, Reinhard = 3, Linear = 4 };
-
-// Parses "pbr-neutral", "aces", "agx", "reinhard", "linear"; nullopt for anything else.
-std::optional<Tonemap> parseTonemap(std::string_view name);
-const char* tonemapName(Tonemap op);
 
 struct TonemapSettings {
     float exposureEv = 0.0f;  // exposure in stops: radiance × 2^EV

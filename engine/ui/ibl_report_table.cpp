@@ -78,7 +78,7 @@ IblReportTable parseIblReport(std::string_view csv, std::string name) {
         q.specularLevels = uint32_t(number("levels"));
         q.prefilterSamples = uint32_t(number("prefilter_samples"));
         q.filteredSampling = number("filtered") != 0.0;
-        q.irradiance = text("irradiance") == "cube" ? ibl::IrradianceMode::Cube : ibl::IrradianceMode::Sh9;
+        q.irradiance = ibl::parseIrradianceMode(text("irradiance")).value_or(ibl::IrradianceMode::Sh9);
         q.shSourceSize = uint32_t(number("sh_size"));
         q.irradianceSamples = uint32_t(number("irradiance_samples"));
         q.lutSize = uint32_t(number("lut_size"));

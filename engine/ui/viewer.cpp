@@ -327,17 +327,17 @@ void Viewer::drawUi() {
         ImGui::PopStyleColor();
     }
     const struct {
-        const char* key;
+        Panel key;
         const char* title;
         void (*draw)(Viewer&);
-    } panels[] = {{"graph", "Render graph", drawGraphPanel},
-                  {"parameters", "Shader parameters", drawParameterPanel},
-                  {"materials", "Materials", drawMaterialPanel},
-                  {"environment", "Environment / IBL", drawEnvironmentPanel},
-                  {"camera", "Camera", drawCameraPanel},
-                  {"animation", "Animation", drawAnimationPanel},
-                  {"debug", "Debug view", drawDebugViewPanel},
-                  {"stats", "Frame stats", drawStatsPanel}};
+    } panels[] = {{Panel::Graph, "Render graph", drawGraphPanel},
+                  {Panel::Parameters, "Shader parameters", drawParameterPanel},
+                  {Panel::Materials, "Materials", drawMaterialPanel},
+                  {Panel::Environment, "Environment / IBL", drawEnvironmentPanel},
+                  {Panel::Camera, "Camera", drawCameraPanel},
+                  {Panel::Animation, "Animation", drawAnimationPanel},
+                  {Panel::Debug, "Debug view", drawDebugViewPanel},
+                  {Panel::Stats, "Frame stats", drawStatsPanel}};
     for (const auto& panel : panels) {
         ImGui::SetNextItemOpen(mOpenPanels.count(panel.key) > 0, ImGuiCond_Once);
         if (ImGui::CollapsingHeader(panel.title)) panel.draw(*this);

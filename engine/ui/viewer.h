@@ -13,6 +13,7 @@
 #include "ui/hot_reload.h"
 #include "ui/ibl_report_table.h"
 #include "ui/orbit_controls.h"
+#include "ui/viewer_panels.h"
 #include "ui/window.h"
 #include "vk/context.h"
 
@@ -46,8 +47,8 @@ struct ViewerDesc {
     std::filesystem::path shaderDir;
     // An ibl-report CSV shown in the environment panel before the compiled-in ones (empty: none).
     std::filesystem::path iblReport;
-    // The panels open at start: graph, parameters, materials, environment, camera, debug, stats.
-    std::set<std::string> openPanels = {"graph", "parameters", "stats"};
+    // The panels open at start.
+    std::set<Panel> openPanels = kPanelsOpenByDefault;
 };
 
 // What the viewer shows at start: the scene and environment (owned by the viewer from now on) and
@@ -172,7 +173,7 @@ private:
 
     bool mUi = true;
     float mPanelWidth = 0.0f;  // pixels covered by the side panel (0 without UI)
-    std::set<std::string> mOpenPanels;
+    std::set<Panel> mOpenPanels;
     bool mRecreate = false;
     bool mSimulatedMinimized = false;
     scene::Scene mScene;

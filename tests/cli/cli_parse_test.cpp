@@ -70,6 +70,10 @@ TEST(CliParse, Errors) {
     EXPECT_THROW(parseCommandLine({"render", "stray"}), UserError);
     EXPECT_THROW(parseCommandLine({"info", "--out", "x.png"}), UserError);
     EXPECT_THROW(parseCommandLine({"render", "--out"}), UserError);
+    // Checked while parsing, before anything loads: --grid sizes the built-in grid only.
+    EXPECT_THROW(parseCommandLine({"view", "a.glb", "--grid", "3"}), UserError);
+    EXPECT_THROW(parseCommandLine({"render", "--grid", "7", "--scene", "a.glb"}), UserError);
+    EXPECT_THROW(parseCommandLine({"bench", "--scene-index", "1"}), UserError);
 }
 
 }  // namespace

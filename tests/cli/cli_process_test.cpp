@@ -118,10 +118,15 @@ TEST_P(BadInputTest, OneLineErrorAndNonZeroExit) {
 
 INSTANTIATE_TEST_SUITE_P(
     Catalogue, BadInputTest,
-    ::testing::Values(BadInput{"UnknownOption", "render --frobnicate", "unknown option '--frobnicate'"},
+    ::testing::Values(BadInput{"UnknownFlag", "render --frobnicate", "unknown flag --frobnicate for render"},
+                      BadInput{"UnknownFlagNamesTheNearest", "render --scen x.glb", "unknown flag --scen for render (did you mean --scene?)"},
+                      BadInput{"BenchTakesNoGraphExport", "bench --graph-json {dir}/g.json --out {dir}/x.png --explain",
+                               "bench does not take --graph-json (it is a flag of render)"},
+                      BadInput{"ViewTakesNoGraphExport", "view --graph-dot {dir}/g.dot --explain",
+                               "view does not take --graph-dot (it is a flag of render)"},
                       BadInput{"UnknownCommand", "explode", "unknown command 'explode'"},
-                      BadInput{"ZeroWidth", "render --width 0 --out /tmp/candela_zero.png", "at least 1x1"},
-                      BadInput{"ZeroHeight", "render --height 0 --out /tmp/candela_zero.png", "at least 1x1"},
+                      BadInput{"ZeroWidth", "render --width 0 --out /tmp/candela_zero.png", "--width: must be at least 1"},
+                      BadInput{"ZeroHeight", "render --height 0 --out /tmp/candela_zero.png", "--height: must be at least 1"},
                       BadInput{"NegativeWidth", "render --width -5", "--width: expected a whole number"},
                       BadInput{"TrailingGarbageHeight", "render --height 12abc", "--height: expected a whole number"},
                       BadInput{"WidthBeyondUint32", "render --width 99999999999", "--width: expected a whole number"},
@@ -151,8 +156,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"CameraBeyondSceneCameras", "render --scene {dir}/triangle.gltf --camera 3 --out {dir}/x.png", "--camera 3: the scene has 0 cameras"},
                       BadInput{"CameraOrbitTwoNumbers", "render --camera-orbit 30,45 --out {dir}/x.png", "--camera-orbit: expected three comma-separated numbers, got '30,45'"},
                       BadInput{"FovZero", "render --fov 0 --out {dir}/x.png", "--fov: expected degrees between 0 and 180, got '0'"},
-                      BadInput{"TonemapUnknown", "render --tonemap filmic --out {dir}/x.png", "--tonemap: unknown operator 'filmic'"},
-                      BadInput{"ShadingUnknown", "render --shading lambert --out {dir}/x.png", "--shading: unknown model 'lambert'"},
+                      BadInput{"TonemapUnknown", "render --tonemap filmic --out {dir}/x.png", "--tonemap: expected pbr-neutral, aces, agx, reinhard or linear, got 'filmic'"},
+                      BadInput{"ShadingUnknown", "render --shading lambert --out {dir}/x.png", "--shading: expected pbr, pbr-schlick-ggx or blinn-phong, got 'lambert'"},
                       BadInput{"BackgroundFiveHexDigits", "render --background '#12345' --out {dir}/x.png", "--background: expected #rrggbb, got '#12345'"},
                       BadInput{"BackgroundSkyboxWithoutEnvironment", "render --env none --background skybox --out {dir}/x.png", "--background skybox: there is no environment to show (--env none)"},
                       // Environments and image-based lighting.
@@ -160,19 +165,19 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"EnvironmentTruncated", "render --env {dir}/truncated.hdr --out {dir}/x.png", "{dir}/truncated.hdr: "},
                       BadInput{"EnvironmentIntensityNegative", "render --env-intensity -1 --out {dir}/x.png", "--env-intensity: must be ≥ 0, got '-1'"},
                       BadInput{"EnvironmentRotationNotANumber", "render --env-rotation east --out {dir}/x.png", "--env-rotation: expected a number, got 'east'"},
-                      BadInput{"IrradianceUnknown", "render --irradiance sh16 --out {dir}/x.png", "--irradiance 'sh16': expected sh9 or cube"},
+                      BadInput{"IrradianceUnknown", "render --irradiance sh16 --out {dir}/x.png", "--irradiance: expected sh9 or cube, got 'sh16'"},
                       BadInput{"IblCubeSizeNotPowerOfTwo", "render --ibl-cube-size 100 --out {dir}/x.png", "--ibl-cube-size 100: must be a power of two from 16 to 2048"},
                       BadInput{"IblShSizeAboveCube", "render --ibl-cube-size 64 --ibl-sh-size 128 --out {dir}/x.png", "--ibl-sh-size 128: must be a power of two from 1 to 64"},
                       BadInput{"IblPrefilterSamplesZero", "render --ibl-prefilter-samples 0 --out {dir}/x.png", "--ibl-prefilter-samples 0: must be from 1 to 65536"},
                       BadInput{"IblReportWithoutEnvironment", "ibl-report --env none --out {dir}/r", "--env: ibl-report needs an environment"},
-                      BadInput{"IblReportZeroRepeats", "ibl-report --repeats 0 --out {dir}/r", "--repeats: need at least 1"},
+                      BadInput{"IblReportZeroRepeats", "ibl-report --repeats 0 --out {dir}/r", "--repeats: must be at least 1"},
                       BadInput{"IblReportUnwritableOut", "ibl-report --out /proc/candela-report", "/proc/candela-report: cannot create the report folder"},
                       BadInput{"SkyboxBlurAboveOne", "render --skybox-blur 2 --out {dir}/x.png", "--skybox-blur: expected 0 (sharp) to 1, got '2'"},
                       BadInput{"ExposureNan", "render --exposure nan --out {dir}/x.png", "--exposure: expected a number, got 'nan'"},
                       BadInput{"DebugViewUnknown", "render --debug-view normals --out {dir}/x.png",
-                               "--debug-view: unknown view 'normals' (base-color, geometric-normal, mapped-normal, roughness, "
+                               "--debug-view: expected none, base-color, geometric-normal, mapped-normal, roughness, "
                                "metallic, occlusion, emissive, d, g, f, diffuse, specular, clearcoat, clearcoat-normal, sheen, "
-                               "anisotropy-direction, transmission, iridescence-thickness, iridescence-fresnel)"},
+                               "anisotropy-direction, transmission, iridescence-thickness or iridescence-fresnel, got 'normals'"},
                       BadInput{"ViewScreenshotWithoutFrames", "view --screenshot {dir}/x.png",
                                "--screenshot: also give --frames N (the frame to save; the viewer then exits)"},
                       BadInput{"ViewTwoScenes", "view a.glb b.glb", "unexpected argument 'b.glb': the scene is already a.glb"},
@@ -199,14 +204,43 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"ScaleReportSizeZero", "scale-report --sizes 1,0 --out {dir}/r", "--sizes: expected grid sides from 1 to 1000, got '1,0'"},
                       BadInput{"ScaleReportUnwritableOut", "scale-report --out /proc/candela-report", "/proc/candela-report: cannot create the report folder"},
                       BadInput{"MsaaThree", "render --msaa 3 --out {dir}/x.png", "--msaa: expected 1, 2, 4 or 8, got '3'"},
-                      BadInput{"QualityReportMsaaSixteen", "quality-report --msaa 1,16 --out {dir}/r", "--msaa: expected sample counts from 1, 2, 4, 8, got '1,16'"},
+                      BadInput{"QualityReportMsaaSixteen", "quality-report --msaa 1,16 --out {dir}/r", "--msaa: expected 1, 2, 4 or 8, got '16'"},
                       BadInput{"QualityReportNegativeLodError", "quality-report --lod-errors 0,-2 --out {dir}/r", "--lod-errors: expected pixels ≥ 0, got '0,-2'"},
                       BadInput{"QualityReportMissingScene", "quality-report --scenes default,{dir}/missing.glb --out {dir}/r", "{dir}/missing.glb"},
                       BadInput{"QualityReportSameSceneTwice", "quality-report --scenes default,default --out {dir}/r", "--scenes: two scenes named 'default'"},
-                      BadInput{"QualityReportEnvNone", "quality-report --env none --out {dir}/r", "--env: expected an .hdr/.exr file or sky"}),
+                      BadInput{"QualityReportEnvNone", "quality-report --env none --out {dir}/r", "--env: quality-report needs an environment (an .hdr/.exr file or sky)"}),
     [](const ::testing::TestParamInfo<BadInput>& row) { return std::string(row.param.name); });
 
 TEST(Cli, HelpExitsZero) { EXPECT_EQ(run("--help").exitCode, 0); }
+
+TEST(Cli, CommandHelpListsThatCommandsFlagsOnly) {
+    const Result render = run("render --help");
+    EXPECT_EQ(render.exitCode, 0);
+    EXPECT_EQ(render.stderrText, "");
+    EXPECT_EQ(render.stdoutText.rfind("usage: candela render", 0), 0u) << render.stdoutText;
+    EXPECT_NE(render.stdoutText.find("\n  --graph-json FILE"), std::string::npos);
+    EXPECT_EQ(render.stdoutText.find("--screenshot"), std::string::npos);
+    const Result view = run("view -h");
+    EXPECT_EQ(view.exitCode, 0);
+    EXPECT_NE(view.stdoutText.find("\n  --screenshot FILE"), std::string::npos);
+    EXPECT_EQ(view.stdoutText.find("--graph-json"), std::string::npos);
+}
+
+TEST(Cli, VersionIsTheProjects) {
+    const Result r = run("--version");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.stdoutText, "candela " CANDELA_PROJECT_VERSION "\n");
+    EXPECT_EQ(r.stderrText, "");
+}
+
+TEST(Cli, RejectedFlagsWriteNothing) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "candela_cli_rejected";
+    std::filesystem::create_directories(dir);
+    EXPECT_EQ(run("bench --graph-json " + (dir / "g.json").string() + " --out " + (dir / "x.png").string() + " --explain").exitCode, 2);
+    EXPECT_EQ(run("view --graph-dot " + (dir / "g.dot").string() + " --explain").exitCode, 2);
+    EXPECT_TRUE(std::filesystem::is_empty(dir));
+    std::filesystem::remove_all(dir);
+}
 
 TEST(Cli, ImageSequenceWritesOneFilePerFrame) {
     const std::filesystem::path model = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models/BoxAnimated/glTF-Binary/BoxAnimated.glb";
@@ -341,7 +375,7 @@ TEST(Cli, FloatOutputsCullTheTonemapPass) {
 }
 
 TEST(Cli, BenchReportsFrameAndPassesAsRatiosToCalibration) {
-    const std::string command = std::string(CANDELA_EXECUTABLE) + " bench --validate --frames 2 --width 48 --height 32 --json";
+    const std::string command = std::string(CANDELA_EXECUTABLE) + " bench --validate --frames 2 --width 48 --height 32 --json --explain";
     FILE* pipe = popen(command.c_str(), "r");
     std::string out;
     std::array<char, 4096> buffer;
@@ -357,6 +391,9 @@ TEST(Cli, BenchReportsFrameAndPassesAsRatiosToCalibration) {
     EXPECT_EQ(report["passes"][0]["name"], "forward");
     EXPECT_EQ(report["passes"][1]["name"], "skybox");
     EXPECT_EQ(report["passes"][2]["name"], "tonemap");
+    // --explain: of the measured frames (not of a calibration run), in the JSON.
+    ASSERT_TRUE(report["explain"].is_array());
+    EXPECT_FALSE(report["explain"].empty());
 }
 
 TEST(Cli, DefaultRenderIsLitByTheProceduralSkyWithPrecomputeFirst) {

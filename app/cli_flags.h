@@ -1,0 +1,82 @@
+#pragma once
+// The command line's two tables: the commands, and the flags — each flag declared once with its
+// value, help, default, the commands that take it and how it is parsed into the typed options of
+// cli.h. The parser, `candela --help`, `candela COMMAND --help` and the tests all read them.
+
+#include "cli.h"
+
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace candela::app {
+
+// A set of commands (Command::Kind).
+struct CommandSet {
+    uint32_t bits = 0;
+    constexpr CommandSet(std::initializer_list<Command::Kind> kinds) {
+        for (Command::Kind kind : kinds) bits |= 1u << unsigned(kind);
+    }
+    constexpr bool contains(Command::Kind kind) const { return (bits >> unsigned(kind)) & 1u; }
+    bool operator==(const CommandSet&) const = default;
+};
+
+struct CommandInfo {
+    Command::Kind kind;
+    std::string name;       // "render"
+    std::string arguments;  // what follows the name in the usage line: "[SCENE] [flags]"
+    std::string summary;    // what the command does
+    std::string notes;      // printed after the flags in the command's help ("" none)
+};
+
+// Every command, in the order help lists them.
+const std::vector<CommandInfo>& commandTable();
+// The command named `name`; null for none.
+const CommandInfo* findCommand(std::string_view name);
+// The commands of `set` as "render, view and bench", or "every command"; with `allBut`, a set of
+// more than four as "every command but info".
+std::string commandList(CommandSet set, bool allBut = true);
+
+// What a flag means to some of the commands that take it.
+struct FlagUse {
+    CommandSet commands;
+    std::string value;  // the value's name in help ("N", "FILE"; "{choices}": "on|off"); "" for a switch
+    // What the flag does; "{choices}" stands for the accepted names of an enum-valued flag.
+    std::string help;
+    // The value these commands have without the flag, as the flag would give it ("" none, or a
+    // default that is no value of the flag, which `help` then describes). The parser applies it
+    // before the arguments, so help and behaviour share this one declaration.
+    std::string defaultValue;
+};
+
+struct Flag {
+    std::string name;           // "--frames"
+    std::vector<FlagUse> uses;  // disjoint command sets
+    // Enum-valued flags: the names accepted (from the enum's own table), and a form accepted
+    // besides them ("#rrggbb"); help and errors list exactly these.
+    std::vector<std::string> choices;
+    std::string otherForm;
+    // Parses `value` ("" for a switch) into the options of `command` (whose kind takes the flag);
+    // a UserError naming the flag (`name`, passed as `flag`) when it is malformed.
+    std::function<void(Command& command, const std::string& flag, const std::string& value)> set;
+    // A value that parses for every command taking the flag and differs from its default (tests).
+    std::string example;
+
+    bool isSwitch() const { return uses.front().value.empty(); }
+    // The use for `kind`; null when `kind` does not take the flag.
+    const FlagUse* use(Command::Kind kind) const;
+    // The commands that take the flag.
+    CommandSet commands() const;
+};
+
+// Every flag, in the order help lists them. -h/--help and --version are not in it.
+const std::vector<Flag>& flagTable();
+// The flag named `name`; null for none.
+const Flag* findFlag(std::string_view name);
+
+}  // namespace candela::app
