@@ -6,7 +6,7 @@
 #include "commands.h"
 #include "frame_measurement.h"
 
-#include "core/check.h"
+#include "core/errors.h"
 #include "core/log.h"
 #include "statistics.h"
 

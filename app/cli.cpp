@@ -1,7 +1,7 @@
 #include "cli.h"
 
 #include "cli_flags.h"
-#include "core/check.h"
+#include "core/errors.h"
 
 #include <algorithm>
 

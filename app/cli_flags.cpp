@@ -1,6 +1,6 @@
 #include "cli_flags.h"
 
-#include "core/check.h"
+#include "core/errors.h"
 
 #include <algorithm>
 #include <charconv>

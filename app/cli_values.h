@@ -2,7 +2,7 @@
 // Parsers of flag values. Each takes the flag's name for its message: anything malformed is a
 // candela::UserError of one line, "--flag: expected …, got '…'". Pure, unit-tested.
 
-#include "core/check.h"
+#include "core/errors.h"
 #include "core/name_table.h"
 
 #include <array>

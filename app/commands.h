@@ -2,11 +2,11 @@
 // The `candela` subcommands. Each returns the process exit code; user errors are thrown as
 // candela::UserError and reported by main().
 
+#include "assets/environment.h"
 #include "cli.h"
-#include "renderer.h"
-#include "scene/environment.h"
+#include "pose/scene_pose.h"
+#include "render/renderer.h"
 #include "scene/scene.h"
-#include "scene/scene_pose.h"
 #include "vk/context.h"
 
 #include <filesystem>

@@ -3,7 +3,7 @@
 // `scale-report`: frames and calibration runs interleaved, so that the machine's drift affects both
 // alike; figures as medians and ratios to the calibration of the same run.
 
-#include "renderer.h"
+#include "render/renderer.h"
 
 #include <functional>
 #include <map>

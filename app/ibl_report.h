@@ -2,9 +2,9 @@
 // `candela ibl-report`: the data of one report and the files it writes (CSV, markdown, log-log
 // plots, previews). The measuring is in ibl_report_command.cpp.
 
-#include "ibl/ibl_errors.h"
 #include "ibl/ibl_settings.h"
-#include "renderer.h"
+#include "render/renderer.h"
+#include "reports/ibl_errors.h"
 
 #include <filesystem>
 #include <string>

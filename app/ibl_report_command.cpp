@@ -2,19 +2,19 @@
 // leaves. For every setting of a sweep (prefilter samples with and without filtered importance
 // sampling, cube size, irradiance as SH9 or cube, BRDF LUT size and samples) it measures the
 // precompute time (CPU wall around submit+wait, median of --repeats runs, also as a ratio to the
-// calibration pass) and compares the maps with the double-precision reference (ibl/ibl_errors.h),
+// calibration pass) and compares the maps with the double-precision reference (reports/ibl_errors.h),
 // then renders the default scene and compares it with a ground-truth render that integrates the
 // reflectance equation per pixel. Writes report.csv, report.md and log-log plots to --out.
 
 #include "commands.h"
 
-#include "core/check.h"
+#include "core/errors.h"
 #include "core/log.h"
 #include "core/progress.h"
 #include "ibl_report.h"
 #include "statistics.h"
-#include "io/image_file.h"
-#include "scene/builtin_scenes.h"
+#include "assets/image_file.h"
+#include "assets/builtin_scenes.h"
 
 #include <algorithm>
 #include <chrono>

@@ -2,9 +2,9 @@
 
 #include "ibl_report.h"
 
-#include "core/check.h"
-#include "io/image_file.h"
-#include "io/plot.h"
+#include "assets/image_file.h"
+#include "core/errors.h"
+#include "reports/plot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -111,7 +111,7 @@ void writeMarkdown(const std::filesystem::path& out, const Context& c, const std
     md << "# IBL quality report\n\nEnvironment: " << c.environment << ". Device: " << c.device << ". Calibration pass (1280x720): "
        << fixed(c.calibrationMs, 1) << " ms. Precompute times are the median of " << c.repeats
        << " runs of submit+wait, each next to a calibration run (× calibration: median of the ratios). Errors "
-          "are relative luminance errors against the double-precision reference (ibl/ibl_errors.h): RMSE "
+          "are relative luminance errors against the double-precision reference (reports/ibl_errors.h): RMSE "
           "(dominated by the brightest values), mean relative and max relative error (each value against its "
           "reference plus 1% of the mean). Specular: averaged over the roughness > 0 levels, 128 texels each "
           "(max: the worst level); irradiance: 256 directions; LUT: max absolute error of A and B; image: the "

@@ -2,17 +2,17 @@
 // user as one line on stderr and a non-zero exit code.
 
 #include "commands.h"
-#include "core/check.h"
+#include "assets/builtin_scenes.h"
+#include "assets/gltf_loader.h"
+#include "assets/image_file.h"
+#include "assets/procedural_sky.h"
 #include "core/log.h"
 #include "core/progress.h"
 #include "graph/graph_export.h"
-#include "io/image_file.h"
-#include "renderer.h"
-#include "scene/builtin_scenes.h"
-#include "scene/gltf_loader.h"
+#include "render/renderer.h"
 #include "scene/material_variants.h"
-#include "scene/procedural_sky.h"
 #include "shared/tonemap.h"
+#include "vk/check.h"
 #include "vk/context.h"
 #include "vk/device_select.h"
 

@@ -13,15 +13,15 @@
 #include "frame_measurement.h"
 #include "statistics.h"
 
-#include "core/check.h"
+#include "core/errors.h"
 #include "core/log.h"
 #include "core/progress.h"
-#include "io/image_file.h"
-#include "io/image_error.h"
-#include "io/plot.h"
-#include "scene/builtin_scenes.h"
-#include "scene/gltf_loader.h"
-#include "scene/procedural_sky.h"
+#include "assets/image_file.h"
+#include "reports/image_error.h"
+#include "reports/plot.h"
+#include "assets/builtin_scenes.h"
+#include "assets/gltf_loader.h"
+#include "assets/procedural_sky.h"
 
 #include <chrono>
 #include <cstdio>

@@ -8,11 +8,11 @@
 #include "frame_measurement.h"
 #include "statistics.h"
 
-#include "core/check.h"
+#include "assets/builtin_scenes.h"
+#include "assets/procedural_sky.h"
+#include "core/errors.h"
 #include "core/progress.h"
-#include "io/plot.h"
-#include "scene/builtin_scenes.h"
-#include "scene/procedural_sky.h"
+#include "reports/plot.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -2,11 +2,11 @@
 // every K frames, with host RSS, live Vulkan objects and device memory sampled as it runs.
 
 #include "commands.h"
-#include "core/check.h"
+#include "assets/builtin_scenes.h"
+#include "assets/image_file.h"
+#include "core/errors.h"
 #include "core/progress.h"
-#include "io/image_file.h"
-#include "scene/builtin_scenes.h"
-#include "soak.h"
+#include "soak/soak.h"
 
 #include <cstdio>
 #include <fstream>

@@ -2,9 +2,9 @@
 // scripted run that renders N frames, saves the last and exits.
 
 #include "commands.h"
-#include "core/check.h"
+#include "assets/image_file.h"
+#include "core/errors.h"
 #include "core/log.h"
-#include "io/image_file.h"
 #include "scene/material_variants.h"
 #include "statistics.h"
 #include "ui/viewer.h"

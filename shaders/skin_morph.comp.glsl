@@ -4,7 +4,7 @@
 // non-zero morph weights, then, when skinned, places it by the weighted sum of its joint matrices
 // (normals by the cofactor of that matrix, so non-uniform scale stays correct) — the glTF 2.0
 // order. Writes the result into the frame's deformed-vertex buffer, which the forward pass draws
-// from. The CPU reference is scene/skinning.h deformVertices.
+// from. The CPU reference is pose/skinning.h deformVertices.
 #include "shared/skin_morph.h"
 
 layout(local_size_x = CANDELA_SKIN_MORPH_GROUP_SIZE) in;

@@ -34,9 +34,10 @@ stage "release tests"
 ctest --preset release -j"$(nproc)" --timeout 600
 stage "sanitized build"
 cmake --preset asan >/dev/null
-cmake --build --preset asan -j"$(nproc)" --target candela_unit_tests candela candela_cli_tests
+cmake --build --preset asan -j"$(nproc)" --target candela_unit_tests candela_engine_unit_tests candela candela_cli_tests
 stage "sanitized unit tests"
 two_shards build/asan/tests/unit/candela_unit_tests
+two_shards build/asan/tests/unit/candela_engine_unit_tests
 stage "sanitized CLI tests"
 # The CLI tests start the Vulkan driver: LeakSanitizer off for them, as in tests/CMakeLists.txt.
 ASAN_OPTIONS=detect_leaks=0 two_shards build/asan/tests/cli/candela_cli_tests

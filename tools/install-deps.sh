@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  g++ cmake ninja-build pkg-config
+  g++ cmake ninja-build pkg-config python3
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libspirv-cross-c-shared-dev
   libglm-dev libstb-dev libopenexr-dev libtinygltf-dev nlohmann-json3-dev zlib1g-dev

@@ -1,6 +1,6 @@
 #include "ibl/ibl_cache_file.h"
 
-#include "core/check.h"
+#include "core/errors.h"
 
 #include <algorithm>
 #include <array>

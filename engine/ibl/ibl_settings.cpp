@@ -1,6 +1,6 @@
 #include "ibl/ibl_settings.h"
 
-#include "core/check.h"
+#include "core/errors.h"
 
 #include <algorithm>
 #include <bit>

@@ -1,6 +1,6 @@
 #include "passes/brdf_probe_pass.h"
 
-#include "graph/graph_executor.h"
+#include "executor/graph_executor.h"
 
 namespace candela::passes {
 

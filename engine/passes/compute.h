@@ -1,7 +1,7 @@
 #pragma once
 // Small recording helpers shared by the compute passes.
 
-#include "graph/graph_executor.h"
+#include "executor/graph_executor.h"
 #include "vk/commands.h"
 #include "vk/pipeline.h"
 

@@ -1,7 +1,7 @@
 #include "passes/draw_list.h"
 
+#include "geometry/mesh_lod.h"
 #include "scene/frustum.h"
-#include "scene/mesh_lod.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,6 +1,6 @@
 #include "passes/forward_ibl_set.h"
 
-#include "graph/graph_executor.h"
+#include "executor/graph_executor.h"
 #include "passes/ibl_brdf_lut_pass.h"
 #include "passes/ibl_irradiance_sh_pass.h"
 #include "vk/descriptors.h"

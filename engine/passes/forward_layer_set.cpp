@@ -1,6 +1,6 @@
 #include "passes/forward_layer_set.h"
 
-#include "graph/graph_executor.h"
+#include "executor/graph_executor.h"
 #include "passes/ibl_sheen_lut_pass.h"
 #include "vk/descriptors.h"
 #include "vk/upload.h"

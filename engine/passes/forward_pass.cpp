@@ -1,6 +1,6 @@
 #include "passes/forward_pass.h"
 
-#include "graph/graph_executor.h"
+#include "executor/graph_executor.h"
 #include "passes/forward_blocks.h"
 #include "shared/brdf.h"
 #include "shared/scene_data.h"

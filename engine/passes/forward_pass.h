@@ -23,7 +23,7 @@
 #include "shared/ibl.h"
 #include "shared/scene_data.h"
 #include "scene/camera.h"
-#include "scene/gpu_scene.h"
+#include "gpu_scene/gpu_scene.h"
 #include "vk/descriptors.h"
 #include "vk/pipeline_cache.h"
 

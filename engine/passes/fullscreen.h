@@ -3,7 +3,7 @@
 // rendering on the pass's declared attachments, bind the pipeline and descriptor set 0, push
 // constants if any, draw one triangle covering the viewport, end rendering.
 
-#include "graph/graph_executor.h"
+#include "executor/graph_executor.h"
 #include "vk/descriptors.h"
 #include "vk/pipeline.h"
 

@@ -1,6 +1,6 @@
 #include "passes/pattern_pass.h"
 
-#include "graph/graph_executor.h"
+#include "executor/graph_executor.h"
 #include "shared/pattern.h"
 
 namespace candela::passes {

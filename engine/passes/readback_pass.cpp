@@ -1,6 +1,6 @@
 #include "passes/readback_pass.h"
 
-#include "graph/graph_executor.h"
+#include "executor/graph_executor.h"
 #include "vk/image.h"
 
 namespace candela::passes {

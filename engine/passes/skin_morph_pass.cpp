@@ -1,6 +1,6 @@
 #include "passes/skin_morph_pass.h"
 
-#include "graph/graph_executor.h"
+#include "executor/graph_executor.h"
 #include "passes/compute.h"
 #include "vk/descriptors.h"
 

@@ -4,9 +4,9 @@
 // transient buffer, which the forward pass reads as its vertex buffer for those draws. Declared
 // only for a pose with deformed draws; a static scene's graph never has it.
 
+#include "gpu_scene/gpu_scene.h"
 #include "graph/render_graph.h"
-#include "scene/gpu_scene.h"
-#include "scene/scene_pose.h"
+#include "pose/scene_pose.h"
 #include "shared/skin_morph.h"
 #include "vk/pipeline_cache.h"
 

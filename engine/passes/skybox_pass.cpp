@@ -1,6 +1,6 @@
 #include "passes/skybox_pass.h"
 
-#include "graph/graph_executor.h"
+#include "executor/graph_executor.h"
 #include "passes/fullscreen.h"
 
 #include <glm/gtc/matrix_inverse.hpp>

@@ -3,7 +3,7 @@
 // bound to its imported resources, the handles of its results, the data the CPU writes for it, and
 // what `--explain` says of it; the presentable image it may render into; its timings.
 
-#include "graph/graph_executor.h"
+#include "executor/graph_executor.h"
 #include "graph/render_graph.h"
 
 #include <chrono>

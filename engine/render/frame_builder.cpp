@@ -1,6 +1,6 @@
 #include "render/frame_builder.h"
 
-#include "core/check.h"
+#include "core/errors.h"
 #include "core/log.h"
 #include "shared/tonemap.h"
 #include "vk/context.h"

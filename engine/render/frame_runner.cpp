@@ -1,6 +1,6 @@
 #include "render/frame_runner.h"
 
-#include "core/check.h"
+#include "core/errors.h"
 
 #include <algorithm>
 

@@ -4,7 +4,7 @@
 // submits it — waiting on and signalling a presentable image's semaphores when given — and keeps
 // it as the last frame. When a frame is known complete it takes its per-pass GPU times.
 
-#include "graph/transient_pool.h"
+#include "executor/transient_pool.h"
 #include "render/frame.h"
 #include "vk/frame.h"
 #include "vk/host_upload_ring.h"

@@ -4,15 +4,15 @@
 // (size, 8-bit or float). How the renderer runs frames (frames in flight, the viewer's tolerance of
 // unknown pass toggles, test hooks) is Renderer::Options.
 
+#include "assets/environment.h"
 #include "ibl/ibl_settings.h"
 #include "passes/debug_view.h"
 #include "passes/draw_selection.h"
 #include "passes/forward_variant.h"
 #include "passes/tonemap_pass.h"
+#include "pose/scene_pose.h"
 #include "scene/camera.h"
-#include "scene/environment.h"
 #include "scene/scene.h"
-#include "scene/scene_pose.h"
 
 #include <filesystem>
 #include <optional>

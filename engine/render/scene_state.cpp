@@ -1,8 +1,8 @@
 #include "render/scene_state.h"
 
-#include "core/check.h"
 #include "core/log.h"
 #include "passes/forward_blocks.h"
+#include "vk/check.h"
 #include "vk/context.h"
 
 #include <algorithm>

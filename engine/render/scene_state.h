@@ -6,14 +6,14 @@
 // upload: a different scene, a different light choice, a different environment or quality.
 // Anything it replaces may be read by frames in flight: it waits for them first (FrameRunner).
 
-#include "ibl/ibl_maps.h"
+#include "assets/environment.h"
+#include "gpu_scene/gpu_scene.h"
 #include "ibl/ibl_settings.h"
-#include "ibl/sheen_lut.h"
+#include "ibl_maps/ibl_maps.h"
+#include "ibl_maps/sheen_lut.h"
 #include "passes/draw_list.h"
+#include "pose/scene_pose.h"
 #include "render/frame_runner.h"
-#include "scene/environment.h"
-#include "scene/gpu_scene.h"
-#include "scene/scene_pose.h"
 #include "shader/parameter_registry.h"
 
 #include <filesystem>

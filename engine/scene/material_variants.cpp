@@ -1,6 +1,6 @@
 #include "scene/material_variants.h"
 
-#include "core/check.h"
+#include "core/errors.h"
 
 namespace candela::scene {
 

@@ -4,7 +4,7 @@
 // Conventions follow glTF 2.0: right-handed, +Y up, metres, linear colour factors, counter-
 // clockwise front faces.
 
-#include "scene/node_tree.h"
+#include "animation/node_tree.h"
 #include "shared/forward_tables.h"
 
 #include <glm/glm.hpp>
@@ -271,7 +271,7 @@ struct LodLevel {
     uint32_t indexCount = 0;
     float error = 0.0f;  // mesh units: the simplifier's bound on the distance to the full-detail surface
 };
-// A primitive's levels of detail (scene/mesh_lod.h builds them): levels[0] is the full detail (the
+// A primitive's levels of detail (geometry/mesh_lod.h builds them): levels[0] is the full detail (the
 // draw's own range, error 0), each further level coarser, with a larger error.
 struct LodChain {
     std::vector<LodLevel> levels;
@@ -352,7 +352,7 @@ struct Scene {
     std::vector<Camera> cameras;
     // The loaded scene's node hierarchy, depth-first (a parent before its children), with the
     // world transforms the draws, lights and cameras above were placed with. Empty for built-in
-    // scenes. Animations move them (scene/node_tree.h, scene/scene_pose.h).
+    // scenes. Animations move them (animation/node_tree.h, pose/scene_pose.h).
     std::vector<SceneNode> nodes;
     // The file's animations, in file order; channels name Scene::nodes indices.
     std::vector<Animation> animations;
@@ -382,7 +382,7 @@ struct Scene {
         size_t dracoPrimitives = 0;
         size_t meshoptViews = 0;
     } decompression;
-    // What preparing the geometry for drawing did (scene/mesh_optimize.h): the distinct meshes
+    // What preparing the geometry for drawing did (geometry/mesh_optimize.h): the distinct meshes
     // (index ranges the draws use), how many got a chain of levels of detail, the index memory of
     // their full detail and of the chains' further levels, and the wall time it took.
     struct GeometryPreparation {

@@ -2,9 +2,9 @@
 
 #include "core/log.h"
 #include "shader/builtin_shaders.h"
-#include "shader/glsl_compiler.h"
 #include "shader/reflection.h"
 #include "shader/shader_library.h"
+#include "ui/glsl_compiler.h"
 
 #include <algorithm>
 #include <system_error>

@@ -1,6 +1,6 @@
 #include "ui/ibl_report_table.h"
 
-#include "core/check.h"
+#include "core/errors.h"
 
 #include <charconv>
 #include <fstream>

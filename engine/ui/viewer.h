@@ -6,9 +6,9 @@
 //
 // The UI's controls call the public actions below; tests and scripted runs call the same ones.
 
-#include "renderer.h"
-#include "scene/scene_pose.h"
-#include "scene/environment.h"
+#include "render/renderer.h"
+#include "pose/scene_pose.h"
+#include "assets/environment.h"
 #include "scene/scene.h"
 #include "ui/hot_reload.h"
 #include "ui/ibl_report_table.h"

@@ -1,6 +1,6 @@
 #include "ui/window.h"
 
-#include "core/check.h"
+#include "vk/check.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

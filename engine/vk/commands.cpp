@@ -1,6 +1,6 @@
 #include "vk/commands.h"
 
-#include "core/check.h"
+#include "vk/check.h"
 
 #include <algorithm>
 #include <initializer_list>

@@ -1,7 +1,7 @@
 #include "vk/context.h"
 
-#include "core/check.h"
 #include "core/log.h"
+#include "vk/check.h"
 #include "vk/device_select.h"
 
 #include <algorithm>

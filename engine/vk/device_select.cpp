@@ -1,6 +1,6 @@
 #include "vk/device_select.h"
 
-#include "core/check.h"
+#include "core/errors.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,6 +1,6 @@
 #include "vk/frame.h"
 
-#include "core/check.h"
+#include "vk/check.h"
 #include "vk/commands.h"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "vk/image.h"
 
-#include "core/check.h"
+#include "vk/check.h"
 #include "vk/context.h"
 
 #include <utility>

@@ -1,8 +1,8 @@
 #include "vk/pipeline.h"
 
-#include "core/check.h"
 #include "core/log.h"
 #include "shader/shader_library.h"
+#include "vk/check.h"
 
 
 

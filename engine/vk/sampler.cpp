@@ -1,6 +1,6 @@
 #include "vk/sampler.h"
 
-#include "core/check.h"
+#include "vk/check.h"
 
 #include <algorithm>
 

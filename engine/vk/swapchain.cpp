@@ -1,6 +1,6 @@
 #include "vk/swapchain.h"
 
-#include "core/check.h"
+#include "vk/check.h"
 #include "vk/commands.h"
 #include "vk/context.h"
 

@@ -1,6 +1,6 @@
 #include "vk/timestamps.h"
 
-#include "core/check.h"
+#include "vk/check.h"
 
 namespace candela::vk {
 

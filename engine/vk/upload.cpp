@@ -1,6 +1,6 @@
 #include "vk/upload.h"
 
-#include "core/check.h"
+#include "core/errors.h"
 #include "vk/commands.h"
 
 #include <algorithm>

@@ -184,7 +184,7 @@ Surface evaluateMaterial(SurfaceInputs inputs, vec3 baseColor) {
     s.facedNormal = facedNormal(inputs);
     s.normal = s.facedNormal;
     // The length of the mean normal the normal map's filtered texel stands for (its A: 1 at mip 0,
-    // less where a mip averaged diverging normals; scene/normal_map_mips.h).
+    // less where a mip averaged diverging normals; geometry/normal_map_mips.h).
     float normalMapLength = 1.0f;
     if (kNormalMap) {
         vec4 texel = materialTexture(normalTexture, inputs.uv[CANDELA_TEX_NORMAL]);

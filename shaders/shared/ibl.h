@@ -1,6 +1,6 @@
 // Image-based lighting, shared by the precompute compute shaders, the forward and skybox shaders and
 // the C++ side (push-constant structs, CPU tests of the shading algebra). A double-precision
-// reference of the integrals lives in engine/ibl/ibl_reference.h, written independently.
+// reference of the integrals lives in engine/reports/ibl_reference.h, written independently.
 //
 // Maps (all in the environment's own frame, rotation 0; lookups turn world directions by the
 // environment rotation first, see iblLookupDirection):

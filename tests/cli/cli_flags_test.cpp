@@ -6,7 +6,7 @@
 
 #include "cli.h"
 #include "cli_flags.h"
-#include "core/check.h"
+#include "core/errors.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 #include "cli.h"
-#include "core/check.h"
+#include "core/errors.h"
 
 #include <gtest/gtest.h>
 

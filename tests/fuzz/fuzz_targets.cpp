@@ -1,12 +1,12 @@
 #include "fuzz_targets.h"
 
-#include "core/check.h"
-#include "scene/environment.h"
-#include "scene/exr_reader.h"
-#include "scene/gltf_loader.h"
-#include "scene/hdr_reader.h"
-#include "scene/scene_pose.h"
-#include "scene/skinning.h"
+#include "assets/environment.h"
+#include "assets/exr_reader.h"
+#include "assets/gltf_loader.h"
+#include "assets/hdr_reader.h"
+#include "core/errors.h"
+#include "pose/scene_pose.h"
+#include "pose/skinning.h"
 
 #include <algorithm>
 #include <cmath>

@@ -15,7 +15,7 @@
 #include "gltf_test_util.h"
 #include "meshopt_test_util.h"
 
-#include "scene/environment.h"
+#include "assets/environment.h"
 
 #include <cstdio>
 #include <fstream>

@@ -7,10 +7,10 @@
 #include "graph/graph_export.h"
 #include "graph_runner.h"
 #include "passes/skin_morph_pass.h"
-#include "scene/skinning.h"
-#include "renderer.h"
-#include "scene/gltf_loader.h"
-#include "scene/scene_pose.h"
+#include "pose/skinning.h"
+#include "render/renderer.h"
+#include "assets/gltf_loader.h"
+#include "pose/scene_pose.h"
 
 #include <cstdio>
 #include <cstring>

@@ -2,8 +2,8 @@
 // passes compute, evaluated on the CPU from the same shared pattern function.
 #include "gpu_test.h"
 
-#include "core/check.h"
-#include "renderer.h"
+#include "core/errors.h"
+#include "render/renderer.h"
 #include "shared/pattern.h"
 
 #include <glm/gtc/packing.hpp>

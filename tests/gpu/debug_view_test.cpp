@@ -2,9 +2,9 @@
 // as its value, the lobes add up to the image, and the graph variant leaves out the skybox.
 #include "gpu_test.h"
 
-#include "renderer.h"
-#include "scene/builtin_scenes.h"
-#include "scene/procedural_sky.h"
+#include "assets/builtin_scenes.h"
+#include "assets/procedural_sky.h"
+#include "render/renderer.h"
 #include "shared/tonemap.h"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -2,8 +2,8 @@
 // descriptor completeness, and VK_CHECK's error text.
 #include "gpu_test.h"
 
-#include "core/check.h"
 #include "vk/buffer.h"
+#include "vk/check.h"
 #include "vk/commands.h"
 #include "vk/descriptors.h"
 #include "vk/image.h"

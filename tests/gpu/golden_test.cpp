@@ -14,13 +14,13 @@
 #include "gpu_test.h"
 #include "compressed_test_util.h"
 
-#include "io/image_file.h"
-#include "renderer.h"
-#include "scene/builtin_scenes.h"
-#include "scene/gltf_loader.h"
+#include "assets/builtin_scenes.h"
+#include "assets/gltf_loader.h"
+#include "assets/image_file.h"
+#include "assets/procedural_sky.h"
+#include "pose/scene_pose.h"
+#include "render/renderer.h"
 #include "scene/material_variants.h"
-#include "scene/procedural_sky.h"
-#include "scene/scene_pose.h"
 #include "shared/tonemap.h"
 
 #include <stb_image.h>

@@ -2,7 +2,7 @@
 // the graph plans must be exactly what synchronization validation needs.
 #include "gpu_test.h"
 
-#include "renderer.h"
+#include "render/renderer.h"
 
 namespace candela::test {
 namespace {

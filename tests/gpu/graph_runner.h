@@ -3,7 +3,7 @@
 // host-visible buffer as an output of the graph (final state: host read); run() compiles the
 // graph, realizes its transients, executes it in a frame slot and waits; read() returns the bytes.
 
-#include "graph/graph_executor.h"
+#include "executor/graph_executor.h"
 #include "passes/readback_pass.h"
 #include "vk/buffer.h"
 #include "vk/frame.h"

@@ -6,10 +6,10 @@
 
 #include "gpu_test.h"
 
+#include "assets/builtin_scenes.h"
+#include "assets/procedural_sky.h"
 #include "ibl/ibl_cache_file.h"
-#include "renderer.h"
-#include "scene/builtin_scenes.h"
-#include "scene/procedural_sky.h"
+#include "render/renderer.h"
 
 #include <algorithm>
 #include <filesystem>

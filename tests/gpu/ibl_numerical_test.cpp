@@ -1,6 +1,6 @@
 // Numerical tests of image-based lighting on the GPU (lavapipe, validation on): the rendered white
 // furnace, directional albedo without multiscatter, the precomputed maps of a constant
-// environment, the BRDF LUT against the double-precision reference (engine/ibl/ibl_reference.h),
+// environment, the BRDF LUT against the double-precision reference (engine/reports/ibl_reference.h),
 // SH9 projections of known environments, extreme environments and the environment rotation.
 //
 // Every test states its metric and tolerance next to the check and prints what it measured
@@ -9,11 +9,11 @@
 // Small sizes throughout (cube 64, frames ≤ 320×180) keep the file's run time low on lavapipe.
 #include "sphere_furnace.h"
 
-#include "ibl/ibl_maps.h"
-#include "ibl/ibl_reference.h"
-#include "renderer.h"
-#include "scene/builtin_scenes.h"
-#include "scene/environment.h"
+#include "assets/builtin_scenes.h"
+#include "assets/environment.h"
+#include "ibl_maps/ibl_maps.h"
+#include "render/renderer.h"
+#include "reports/ibl_reference.h"
 #include "shared/ibl.h"
 
 #include <glm/gtc/matrix_transform.hpp>

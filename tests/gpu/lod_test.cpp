@@ -2,9 +2,9 @@
 // pixel, and the default level-of-detail error changes the default scene by less than its target.
 #include "gpu_test.h"
 
-#include "renderer.h"
-#include "scene/builtin_scenes.h"
-#include "scene/procedural_sky.h"
+#include "assets/builtin_scenes.h"
+#include "assets/procedural_sky.h"
+#include "render/renderer.h"
 
 #include <algorithm>
 #include <cmath>

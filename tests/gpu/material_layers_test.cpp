@@ -6,13 +6,13 @@
 #include "sphere_furnace.h"
 
 #include "../unit/brdf_reference.h"
-#include "ibl/sheen_lut.h"
+#include "ibl_maps/sheen_lut.h"
 #include "passes/ibl_sheen_lut_pass.h"
 #include "passes/readback_pass.h"
 
-#include "renderer.h"
-#include "scene/builtin_scenes.h"
-#include "scene/gltf_loader.h"
+#include "assets/builtin_scenes.h"
+#include "assets/gltf_loader.h"
+#include "render/renderer.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -3,10 +3,10 @@
 // a lower resolution; a frame whose transients do not fit fails and the next one still renders.
 #include "gpu_test.h"
 
-#include "core/check.h"
-#include "renderer.h"
-#include "scene/builtin_scenes.h"
-#include "scene/procedural_sky.h"
+#include "assets/builtin_scenes.h"
+#include "assets/procedural_sky.h"
+#include "render/renderer.h"
+#include "vk/check.h"
 
 #include <gtest/gtest.h>
 

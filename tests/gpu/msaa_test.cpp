@@ -3,10 +3,10 @@
 // validation-clean at every sample count --msaa accepts (counts the device lacks are clamped).
 #include "gpu_test.h"
 
-#include "renderer.h"
-#include "scene/builtin_scenes.h"
-#include "scene/gltf_loader.h"
-#include "scene/procedural_sky.h"
+#include "assets/builtin_scenes.h"
+#include "assets/gltf_loader.h"
+#include "assets/procedural_sky.h"
+#include "render/renderer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

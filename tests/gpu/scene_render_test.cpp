@@ -1,9 +1,9 @@
 // The scene frame graph (forward → tonemap → readback) on the built-in sphere grid.
 #include "gpu_test.h"
 
-#include "io/image_file.h"
-#include "renderer.h"
-#include "scene/builtin_scenes.h"
+#include "assets/builtin_scenes.h"
+#include "assets/image_file.h"
+#include "render/renderer.h"
 #include "shared/tonemap.h"
 
 #include <algorithm>

@@ -1,10 +1,10 @@
-// A short soak (engine/soak.h): frames with the environment switched every 50 frames. After one
+// A short soak (engine/soak/soak.h): frames with the environment switched every 50 frames. After one
 // cycle through the environments, live Vulkan objects and device memory must stay exactly where
 // they are, and the C heap must not keep growing.
 #include "gpu_test.h"
 
-#include "scene/builtin_scenes.h"
-#include "soak.h"
+#include "assets/builtin_scenes.h"
+#include "soak/soak.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -5,10 +5,10 @@
 // "[ measured ]" lines the tests print.
 #include "gpu_test.h"
 
+#include "assets/builtin_scenes.h"
+#include "assets/environment.h"
 #include "ibl/ibl_settings.h"
-#include "renderer.h"
-#include "scene/builtin_scenes.h"
-#include "scene/environment.h"
+#include "render/renderer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -11,9 +11,9 @@
 // Comparisons between two renders of the same view state their metric and tolerance where made.
 #include "gpu_test.h"
 
-#include "io/image_file.h"
-#include "renderer.h"
-#include "scene/builtin_scenes.h"
+#include "assets/builtin_scenes.h"
+#include "assets/image_file.h"
+#include "render/renderer.h"
 #include "shared/tonemap.h"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -5,7 +5,7 @@
 // tables against the shaders' bindings: tests/unit/forward_tables_test.cpp.
 #include "gpu_test.h"
 
-#include "scene/gpu_scene.h"
+#include "gpu_scene/gpu_scene.h"
 
 #include <set>
 #include <string>

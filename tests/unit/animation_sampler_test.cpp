@@ -2,7 +2,7 @@
 // values, the shorter arc for rotations, clamping, equal key times, a single key, long playback, and
 // the validation messages the loader will report.
 
-#include "scene/animation_sampler.h"
+#include "animation/animation_sampler.h"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 // max absolute error below. Tolerance: relative 1e-5 (as for the core Cook-Torrance BRDF,
 // brdf_test.cpp), absolute 1e-9.
 #include "brdf_reference.h"
-#include "ibl/ibl_reference.h"
+#include "reports/ibl_reference.h"
 #include "shared/brdf_layers.h"
 
 #include <gtest/gtest.h>

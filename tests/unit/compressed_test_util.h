@@ -6,7 +6,7 @@
 #include "bad_input_expect.h"
 #include "gltf_test_util.h"
 
-#include "scene/scene_pose.h"
+#include "pose/scene_pose.h"
 
 #include <cstdlib>
 

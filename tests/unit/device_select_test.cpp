@@ -1,5 +1,5 @@
 // Device and queue-family choice on the layouts of real GPUs, not only lavapipe's single family.
-#include "core/check.h"
+#include "core/errors.h"
 #include "vk/device_select.h"
 
 #include <gtest/gtest.h>

@@ -3,8 +3,8 @@
 // new-style RLE and old-style RLE scanlines, any header) and EXR writers through OpenEXR's C++
 // library (exr_test_writer.h), so every test builds its input files itself.
 
-#include "core/check.h"
-#include "scene/environment.h"
+#include "assets/environment.h"
+#include "core/errors.h"
 
 #include "exr_test_writer.h"
 #include "temp_dir.h"

@@ -5,7 +5,7 @@
 // are held to a relative error.
 #include "environment_test_util.h"
 
-#include "io/image_file.h"
+#include "assets/image_file.h"
 
 #include <limits>
 

@@ -1,6 +1,6 @@
 #pragma once
 // OpenEXR files in memory for the tests and the fuzz seeds, written through OpenEXR's C++ library:
-// an implementation independent of the reader under test (engine/scene/exr_reader.cpp uses
+// an implementation independent of the reader under test (engine/assets/exr_reader.cpp uses
 // OpenEXRCore). Any compression, scanline or tiled (any level mode), HALF/FLOAT/UINT and
 // sub-sampled channels, data and display windows, several parts, deep parts.
 

@@ -2,9 +2,9 @@
 // GLSL that a compute shader calls unchanged, and the ground truth of `ibl-report` is only in its
 // own program.
 #include "shader/builtin_shaders.h"
-#include "shader/glsl_compiler.h"
 #include "shader/reflection.h"
 #include "temp_dir.h"
+#include "ui/glsl_compiler.h"
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 // no sanitizer report. New findings are added as files; see docs/fuzzing.md.
 #include "fuzz_targets.h"
 
-#include "core/check.h"
-#include "scene/exr_reader.h"
+#include "assets/exr_reader.h"
+#include "core/errors.h"
 
 #include <gtest/gtest.h>
 

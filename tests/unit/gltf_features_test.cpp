@@ -1,7 +1,7 @@
 // One positive test per loader feature, each on a tiny glTF written by the test itself.
 #include "gltf_test_util.h"
 
-#include "scene/gltf_mesh.h"
+#include "assets/gltf_mesh.h"
 #include "scene/material_variants.h"
 
 #include <glm/gtc/matrix_transform.hpp>

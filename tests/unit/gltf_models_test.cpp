@@ -2,7 +2,7 @@
 // absent). Expected counts and values come from the models' JSON.
 #include "gltf_test_util.h"
 
-#include "scene/tangents.h"
+#include "geometry/tangents.h"
 #include "scene/texture_transform.h"
 
 #include <glm/gtc/matrix_transform.hpp>

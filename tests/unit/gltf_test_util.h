@@ -3,8 +3,8 @@
 // embedded, or .glb) and a minimal PNG encoder (stored deflate blocks), so every test builds its
 // input files itself.
 
-#include "core/check.h"
-#include "scene/gltf_loader.h"
+#include "assets/gltf_loader.h"
+#include "core/errors.h"
 
 #include "temp_dir.h"
 

@@ -4,7 +4,7 @@
 // resolves; "skybox" draws over the colour, tests the depth and resolves; "tonemap" samples the
 // resolved image into an imported output.
 
-#include "graph/transient_pool.h"
+#include "executor/transient_pool.h"
 #include "graph_test_util.h"
 
 #include <gtest/gtest.h>

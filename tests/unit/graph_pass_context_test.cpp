@@ -2,7 +2,7 @@
 // barrier planner put it in. No GPU: the imported resources are bound to made-up handles, and
 // nothing here records a command.
 
-#include "graph/graph_executor.h"
+#include "executor/graph_executor.h"
 #include "graph_test_util.h"
 
 #include <gtest/gtest.h>

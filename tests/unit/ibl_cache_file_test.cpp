@@ -5,7 +5,7 @@
 // no out-of-bounds read.
 #include "bad_input_expect.h"
 
-#include "core/check.h"
+#include "core/errors.h"
 #include "ibl/ibl_cache_file.h"
 
 #include "temp_dir.h"

@@ -1,8 +1,8 @@
-// The error metrics of `candela ibl-report` (engine/ibl/ibl_errors.h), on maps built on the CPU:
+// The error metrics of `candela ibl-report` (engine/reports/ibl_errors.h), on maps built on the CPU:
 // maps holding the reference values themselves must measure ≈ 0 (only half-float rounding), and
 // a single wrong texel, a wrong orientation or a NaN must show.
-#include "ibl/ibl_errors.h"
-#include "ibl/ibl_reference.h"
+#include "reports/ibl_errors.h"
+#include "reports/ibl_reference.h"
 #include "shared/ibl.h"
 
 #include <glm/gtc/packing.hpp>

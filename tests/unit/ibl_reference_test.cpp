@@ -1,8 +1,8 @@
-// The double-precision IBL reference (engine/ibl/ibl_reference.h): the split-sum terms against
+// The double-precision IBL reference (engine/reports/ibl_reference.h): the split-sum terms against
 // their own refinement, a brute-force integral over light directions and the Khronos glTF Sample
 // Viewer's LUT; the environment integrals against closed forms.
 #include "brdf_reference.h"
-#include "ibl/ibl_reference.h"
+#include "reports/ibl_reference.h"
 
 #include <gtest/gtest.h>
 #include <stb_image.h>

@@ -1,5 +1,5 @@
 // The ibl-report figures the viewer's environment panel shows (ui/ibl_report_table.h).
-#include "core/check.h"
+#include "core/errors.h"
 #include "ui/ibl_report_table.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // IBL quality settings (validation, cache-key text).
 
-#include "core/check.h"
+#include "core/errors.h"
 #include "ibl/ibl_settings.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // io::image_error: the box downsample of a supersampled reference, the display encoding (the
 // tonemap pass's: PBR Neutral, sRGB, 8 bits) and the display-value differences of the reports.
 
-#include "io/image_error.h"
+#include "reports/image_error.h"
 #include "shared/tonemap.h"
 
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
-// Levels of detail (scene/mesh_lod.h) and the geometry preparation (scene/mesh_optimize.h): the
+// Levels of detail (geometry/mesh_lod.h) and the geometry preparation (geometry/mesh_optimize.h): the
 // simplified levels against the surface they stand for, locked borders and seams, the choice of a
 // level from its projected error, and what the preparation must leave alone.
-#include "scene/builtin_scenes.h"
-#include "scene/mesh_lod.h"
-#include "scene/mesh_optimize.h"
+#include "assets/builtin_scenes.h"
+#include "geometry/mesh_lod.h"
+#include "geometry/mesh_optimize.h"
 
 #include <gtest/gtest.h>
 

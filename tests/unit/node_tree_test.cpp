@@ -2,9 +2,9 @@
 // update (the animated ones and their descendants, nothing else), partial updates equal to a full
 // one, and channels writing translation, rotation, scale and morph weights.
 
-#include "scene/node_tree.h"
+#include "animation/node_tree.h"
 
-#include "core/check.h"
+#include "core/errors.h"
 
 #include <gtest/gtest.h>
 

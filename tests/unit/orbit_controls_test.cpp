@@ -1,6 +1,6 @@
-// Mouse control of the orbit camera (ui/orbit_controls.h) and picking (scene/picking.h).
-#include "scene/builtin_scenes.h"
-#include "scene/picking.h"
+// Mouse control of the orbit camera (ui/orbit_controls.h) and picking (pose/picking.h).
+#include "assets/builtin_scenes.h"
+#include "pose/picking.h"
 #include "ui/orbit_controls.h"
 
 #include <gtest/gtest.h>

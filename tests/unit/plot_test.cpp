@@ -1,6 +1,6 @@
 // Report plots: the Pareto front and the PNG writer.
 
-#include "io/plot.h"
+#include "reports/plot.h"
 
 #include "temp_dir.h"
 

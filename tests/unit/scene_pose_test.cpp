@@ -3,9 +3,9 @@
 // of what no animation moves, and small hand-built files for what the samples do not cover.
 #include "gltf_test_util.h"
 
-#include "scene/scene_pose.h"
-#include "scene/picking.h"
-#include "scene/skinning.h"
+#include "pose/scene_pose.h"
+#include "pose/picking.h"
+#include "pose/skinning.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

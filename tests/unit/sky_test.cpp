@@ -1,7 +1,7 @@
 // The equirectangular orientation convention (shaders/shared/environment.h) and the procedural sky.
 #include "environment_test_util.h"
 
-#include "scene/procedural_sky.h"
+#include "assets/procedural_sky.h"
 #include "shared/environment.h"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,6 +1,6 @@
 // Specular anti-aliasing: the roughness widening (shared/brdf.h) against the formulas it states, and
-// the normal-map mip chain that keeps what its averaging loses (scene/normal_map_mips.h).
-#include "scene/normal_map_mips.h"
+// the normal-map mip chain that keeps what its averaging loses (geometry/normal_map_mips.h).
+#include "geometry/normal_map_mips.h"
 #include "shared/brdf.h"
 
 #include <gtest/gtest.h>

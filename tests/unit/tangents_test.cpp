@@ -1,5 +1,5 @@
 // The MikkTSpace-compatible tangent generator on hand-made meshes with known answers.
-#include "scene/tangents.h"
+#include "geometry/tangents.h"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 // resizes and a minimize, saves screenshots, opens dropped files, picks a material, exits 0.
 
 #include "../unit/temp_dir.h"
-#include "scene/builtin_scenes.h"
-#include "scene/procedural_sky.h"
+#include "assets/builtin_scenes.h"
+#include "assets/procedural_sky.h"
 #include "ui/viewer.h"
 #include "xvfb.h"
 

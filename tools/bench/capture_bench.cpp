@@ -4,7 +4,7 @@
 //
 //   build/release/tools/bench/candela_capture_bench [width=1920] [height=1080] [frames=20]
 
-#include "renderer.h"
+#include "render/renderer.h"
 #include "vk/context.h"
 
 #include <algorithm>

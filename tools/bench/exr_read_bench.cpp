@@ -10,8 +10,8 @@
 //
 //   build/release/tools/bench/candela_exr_read_bench OUT_DIR [rounds=7] FILE.hdr...
 
-#include "scene/environment.h"
-#include "scene/exr_reader.h"
+#include "assets/environment.h"
+#include "assets/exr_reader.h"
 
 #include "exr_test_writer.h"
 

@@ -6,8 +6,8 @@
 //
 //   build/release/tools/bench/candela_pose_bench FILE.glb [frames=4000]
 
-#include "scene/gltf_loader.h"
-#include "scene/scene_pose.h"
+#include "assets/gltf_loader.h"
+#include "pose/scene_pose.h"
 
 #include <algorithm>
 #include <chrono>

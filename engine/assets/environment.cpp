@@ -1,0 +1,131 @@
+#include "assets/environment.h"
+
+#include "assets/exr_reader.h"
+#include "assets/hdr_reader.h"
+#include "core/errors.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <limits>
+
+namespace candela::scene {
+namespace {
+
+constexpr float kHalfMax = 65504.0f;
+
+std::string lowerExtension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+
+std::vector<uint8_t> readFile(const std::filesystem::path& path) {
+    const std::string name = path.string();
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw UserError(name + ": is a directory");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw UserError(name + ": cannot open: " + std::strerror(errno));
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    if (size < 0) throw UserError(name + ": cannot read");
+    if (size == 0) throw UserError(name + ": empty file");
+    in.seekg(0, std::ios::beg);
+    std::vector<uint8_t> bytes(static_cast<size_t>(size));
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), size)) throw UserError(name + ": read failed");
+    return bytes;
+}
+
+}  // namespace
+
+void checkEnvironmentSize(const std::string& source, uint64_t width, uint64_t height,
+                          const EnvironmentLoadOptions& options) {
+    const std::string size = std::to_string(width) + "x" + std::to_string(height);
+    if (width == 0 || height == 0) throw UserError(source + ": zero image size " + size);
+    if (width > options.maxWidth || height > options.maxHeight)
+        throw UserError(source + ": image size " + size + " exceeds the limit " + std::to_string(options.maxWidth) +
+                        "x" + std::to_string(options.maxHeight));
+}
+
+Environment loadEnvironment(const std::filesystem::path& path, const EnvironmentLoadOptions& options) {
+    const std::string source = path.string();
+    const std::vector<uint8_t> bytes = readFile(path);
+    Environment env;
+    if (looksLikeHdr(bytes)) {
+        env = decodeHdr(bytes, source, options);
+    } else if (looksLikeExr(bytes)) {
+        env = decodeExr(bytes, source, options);
+    } else {
+        // Neither magic: let the extension's decoder name the problem.
+        const std::string ext = lowerExtension(path);
+        if (ext == ".hdr" || ext == ".pic" || ext == ".rgbe") decodeHdr(bytes, source, options);
+        if (ext == ".exr") decodeExr(bytes, source, options);
+        throw UserError(source + ": unknown environment format (expected a Radiance .hdr or an OpenEXR .exr file)");
+    }
+    if (env.width != 2 * env.height)
+        env.warnings.push_back(source + ": " + std::to_string(env.width) + "x" + std::to_string(env.height) +
+                               " is not 2:1; it is mapped as equirectangular anyway");
+    sanitizeEnvironment(env);
+    return env;
+}
+
+uint32_t sanitizeEnvironment(Environment& env) {
+    // +Inf becomes the brightest finite value, so an overflowed sun stays the brightest texel.
+    float brightest = kHalfMax;
+    for (float v : env.rgb)
+        if (std::isfinite(v)) brightest = std::max(brightest, v);
+
+    uint32_t texels = 0, nans = 0, infinities = 0, negatives = 0;
+    const size_t count = env.rgb.size() / 3;
+    for (size_t i = 0; i < count; ++i) {
+        bool replaced = false;
+        for (size_t c = 0; c < 3; ++c) {
+            float& v = env.rgb[i * 3 + c];
+            if (std::isnan(v)) {
+                v = 0.0f, replaced = true, ++nans;
+            } else if (v == std::numeric_limits<float>::infinity()) {
+                v = brightest, replaced = true, ++infinities;
+            } else if (v < 0.0f) {
+                v = 0.0f, replaced = true, ++negatives;
+            } else if (v == 0.0f) {
+                v = 0.0f;  // −0 → +0
+            }
+        }
+        texels += replaced ? 1 : 0;
+    }
+    if (texels > 0) {
+        char brightestText[32];
+        std::snprintf(brightestText, sizeof brightestText, "%g", double(brightest));
+        env.warnings.push_back(env.source + ": replaced " + std::to_string(texels) + " texel" +
+                               (texels == 1 ? "" : "s") + " holding NaN, Inf or negative values (" +
+                               std::to_string(nans) + " NaN and " + std::to_string(negatives) +
+                               " negative values set to 0, " + std::to_string(infinities) + " +Inf set to " +
+                               brightestText + ")");
+    }
+    env.replacedTexels += texels;
+    return texels;
+}
+
+uint64_t contentHash(const Environment& env) {
+    uint64_t hash = 0xcbf29ce484222325ull;
+    auto mix = [&hash](uint32_t word) {
+        for (int i = 0; i < 4; ++i) {
+            hash ^= (word >> (8 * i)) & 0xffu;
+            hash *= 0x100000001b3ull;
+        }
+    };
+    mix(env.width);
+    mix(env.height);
+    for (float v : env.rgb) {
+        uint32_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        mix(bits);
+    }
+    return hash;
+}
+
+}  // namespace candela::scene

@@ -1,0 +1,162 @@
+#include "assets/gltf_images.h"
+
+#include "assets/gltf_accessors.h"
+
+#include "core/errors.h"
+
+#include <stb_image.h>
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <memory>
+
+namespace candela::scene::gltf {
+namespace {
+
+struct StbiFree {
+    void operator()(void* p) const { stbi_image_free(p); }
+};
+
+// The size a PNG declares in its IHDR chunk. stb_image refuses (in stbi_info too) PNGs whose
+// decoded size would pass 1 GiB, with a reason that names no size; this finds the size to report.
+bool pngDeclaredSize(std::span<const uint8_t> bytes, uint32_t& width, uint32_t& height) {
+    static const uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    if (bytes.size() < 24 || std::memcmp(bytes.data(), kSignature, 8) != 0 || std::memcmp(&bytes[12], "IHDR", 4) != 0)
+        return false;
+    auto be32 = [&](size_t at) {
+        return uint32_t(bytes[at]) << 24 | uint32_t(bytes[at + 1]) << 16 | uint32_t(bytes[at + 2]) << 8 | bytes[at + 3];
+    };
+    width = be32(16);
+    height = be32(20);
+    return true;
+}
+
+std::string sizeProblem(uint32_t width, uint32_t height, uint32_t maxDimension) {
+    return "image size " + std::to_string(width) + "x" + std::to_string(height) + " exceeds the limit of " +
+           std::to_string(maxDimension) + " pixels per side";
+}
+
+std::string stbiReason() {
+    const char* reason = stbi_failure_reason();
+    return reason ? reason : "unknown reason";
+}
+
+}  // namespace
+
+std::pair<uint32_t, uint32_t> checkImageHeader(const LoadContext& ctx, std::span<const uint8_t> bytes,
+                                               const std::string& what, uint32_t maxDimension, bool unreadableOk) {
+    if (bytes.empty()) ctx.fail(what + ": no image data");
+    if (bytes.size() > size_t(std::numeric_limits<int>::max())) ctx.fail(what + ": image data larger than 2 GiB");
+    const int length = int(bytes.size());
+    int width = 0, height = 0, channels = 0;
+    // Read only the header first: an absurd declared size must not reach the decoder's allocation.
+    if (!stbi_info_from_memory(bytes.data(), length, &width, &height, &channels)) {
+        const std::string reason = stbiReason();
+        uint32_t pngWidth = 0, pngHeight = 0;
+        if (pngDeclaredSize(bytes, pngWidth, pngHeight) && (pngWidth > maxDimension || pngHeight > maxDimension))
+            ctx.fail(what + ": " + sizeProblem(pngWidth, pngHeight, maxDimension));
+        if (unreadableOk) return {0, 0};
+        ctx.fail(what + ": cannot decode image (" + reason + ")");
+    }
+    if (width <= 0 || height <= 0 || uint32_t(width) > maxDimension || uint32_t(height) > maxDimension)
+        ctx.fail(what + ": " + sizeProblem(uint32_t(std::max(width, 0)), uint32_t(std::max(height, 0)), maxDimension));
+    return {uint32_t(width), uint32_t(height)};
+}
+
+DecodedImage decodeImage(const LoadContext& ctx, std::span<const uint8_t> bytes, const std::string& what,
+                         uint32_t maxDimension) {
+    const auto [width, height] = checkImageHeader(ctx, bytes, what, maxDimension);
+    const int length = int(bytes.size());
+    DecodedImage image;
+    int w = 0, h = 0, channels = 0;
+    const size_t texels = size_t(width) * size_t(height);
+    if (stbi_is_16_bit_from_memory(bytes.data(), length)) {
+        std::unique_ptr<uint16_t, StbiFree> pixels(stbi_load_16_from_memory(bytes.data(), length, &w, &h, &channels, 4));
+        if (!pixels) ctx.fail(what + ": cannot decode image (" + stbiReason() + ")");
+        if (uint32_t(w) != width || uint32_t(h) != height) ctx.fail(what + ": image size changed while decoding");
+        // Round to nearest (stb_image's own 16→8 path truncates).
+        image.rgba8.resize(texels * 4);
+        for (size_t i = 0; i < texels * 4; ++i) image.rgba8[i] = uint8_t((uint32_t(pixels.get()[i]) * 255u + 32767u) / 65535u);
+    } else {
+        std::unique_ptr<uint8_t, StbiFree> pixels(stbi_load_from_memory(bytes.data(), length, &w, &h, &channels, 4));
+        if (!pixels) ctx.fail(what + ": cannot decode image (" + stbiReason() + ")");
+        if (uint32_t(w) != width || uint32_t(h) != height) ctx.fail(what + ": image size changed while decoding");
+        image.rgba8.assign(pixels.get(), pixels.get() + texels * 4);
+    }
+    image.width = width;
+    image.height = height;
+    return image;
+}
+
+ImageTable::ImageTable(const LoadContext& ctx, const tinygltf::Model& model,
+                       std::map<int, std::vector<uint8_t>> uriImages, const LoadOptions& options, Scene& scene)
+    : mCtx(ctx), mModel(model), mEncoded(std::move(uriImages)), mOptions(options), mScene(scene) {}
+
+std::span<const uint8_t> ImageTable::encoded(int index, const std::string& what) {
+    // URI images were read while parsing; the rest must come from a bufferView.
+    if (auto it = mEncoded.find(index); it != mEncoded.end()) return it->second;
+    const tinygltf::Image& image = mModel.images[size_t(index)];
+    if (image.bufferView < 0) mCtx.fail(what + ": no image data");
+    return bufferViewBytes(mCtx, mModel, image.bufferView, what);
+}
+
+uint64_t ImageTable::declaredBytes(int index) {
+    const std::string what = label("image", index, mModel.images[size_t(index)].name);
+    const auto [width, height] = checkImageHeader(mCtx, encoded(index, what), what, mOptions.maxImageDimension);
+    const uint64_t bytes = uint64_t(width) * height * 4;
+    if (bytes > mOptions.maxImageBytes)
+        mCtx.fail(what + ": " + std::to_string(width) + "x" + std::to_string(height) + " decodes to " + formatBytes(bytes) +
+                  " of RGBA8, above the limit of " + formatBytes(mOptions.maxImageBytes) + " per image");
+    return bytes;
+}
+
+void ImageTable::checkDecodedSize(const std::set<std::pair<int, bool>>& uses) {
+    uint64_t total = 0;
+    for (const auto& [image, srgb] : uses) {
+        if (image < 0 || size_t(image) >= mModel.images.size()) continue;
+        total += declaredBytes(image);
+    }
+    if (total > mOptions.maxTotalImageBytes)
+        mCtx.fail("decoded images would take " + formatBytes(total) + ", above the limit of " +
+                  formatBytes(mOptions.maxTotalImageBytes) + " per scene");
+}
+
+DecodedImage& ImageTable::decoded(int index) {
+    auto it = mDecoded.find(index);
+    if (it != mDecoded.end()) return it->second;
+    const std::string what = label("image", index, mModel.images[size_t(index)].name);
+    declaredBytes(index);  // the per-image limit, before any pixel is decoded
+    DecodedImage& out = mDecoded[index] = decodeImage(mCtx, encoded(index, what), what, mOptions.maxImageDimension);
+    mEncoded.erase(index);
+    return out;
+}
+
+int ImageTable::resolve(int index, bool srgb) {
+    if (auto it = mEntries.find({index, srgb}); it != mEntries.end()) return it->second;
+    const tinygltf::Image& source = mModel.images[size_t(index)];
+    Image image;
+    image.name = !source.name.empty() ? source.name
+                 : (!source.uri.empty() && source.uri.rfind("data:", 0) != 0) ? source.uri
+                                                                               : "image " + std::to_string(index);
+    image.srgb = srgb;
+    // The pixels move into the first entry; a second use (other encoding) copies from there.
+    if (auto other = mEntries.find({index, !srgb}); other != mEntries.end()) {
+        const Image& first = mScene.images[size_t(other->second)];
+        image.width = first.width;
+        image.height = first.height;
+        image.rgba8 = first.rgba8;
+    } else {
+        DecodedImage& pixels = decoded(index);
+        image.width = pixels.width;
+        image.height = pixels.height;
+        image.rgba8 = std::move(pixels.rgba8);
+    }
+    const int entry = int(mScene.images.size());
+    mScene.images.push_back(std::move(image));
+    mEntries[{index, srgb}] = entry;
+    return entry;
+}
+
+}  // namespace candela::scene::gltf

@@ -1,0 +1,75 @@
+#pragma once
+// Internal to the glTF loader: image decoding (any format stb_image reads, to RGBA8) and the table
+// that maps (glTF image, sRGB or linear use) to Scene::images entries.
+
+#include "assets/gltf_context.h"
+#include "assets/gltf_loader.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <map>
+#include <set>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tinygltf {
+class Model;
+}
+
+namespace candela::scene::gltf {
+
+struct DecodedImage {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    std::vector<uint8_t> rgba8;  // width × height × 4, top row first
+};
+
+// Reads the declared size with stbi_info_from_memory (no pixel is decoded) and rejects a width or
+// height above `maxDimension`; returns (width, height). A header stb_image cannot read fails too,
+// unless `unreadableOk` (then (0, 0) is returned). Throws via ctx.fail("WHAT: problem").
+std::pair<uint32_t, uint32_t> checkImageHeader(const LoadContext& ctx, std::span<const uint8_t> bytes,
+                                               const std::string& what, uint32_t maxDimension,
+                                               bool unreadableOk = false);
+
+// Decodes `bytes` to RGBA8 after checkImageHeader, so an absurd declared size allocates nothing.
+// 16-bit sources are rounded to 8 bits. Throws via ctx.fail("WHAT: problem").
+DecodedImage decodeImage(const LoadContext& ctx, std::span<const uint8_t> bytes, const std::string& what,
+                         uint32_t maxDimension);
+
+// Creates Scene::images entries on demand, decoding only the images materials use. An image used
+// both as sRGB (base colour, emissive) and as linear data becomes two entries. `uriImages` holds
+// the encoded bytes of images given by URI (glTF image index → file contents). Borrows ctx, model,
+// options and scene for its lifetime.
+class ImageTable {
+public:
+    ImageTable(const LoadContext& ctx, const tinygltf::Model& model, std::map<int, std::vector<uint8_t>> uriImages,
+               const LoadOptions& options, Scene& scene);
+
+    // Fails, before anything is decoded, when the entries `uses` ((glTF image, srgb) pairs) would
+    // exceed the options' per-image or per-scene decoded size. Indices out of range are skipped
+    // (resolve's callers report them).
+    void checkDecodedSize(const std::set<std::pair<int, bool>>& uses);
+
+    // The Scene::images index for glTF image `image` used with the given encoding; decodes it on first
+    // use (bufferView images are range-checked here). Precondition: 0 <= image < model.images.size().
+    int resolve(int image, bool srgb);
+
+private:
+    DecodedImage& decoded(int image);
+    // The encoded bytes of glTF image `image` (bufferView images are range-checked here).
+    std::span<const uint8_t> encoded(int image, const std::string& what);
+    // The RGBA8 bytes the image's header declares; fails above the per-image limit.
+    uint64_t declaredBytes(int image);
+
+    const LoadContext& mCtx;
+    const tinygltf::Model& mModel;
+    std::map<int, std::vector<uint8_t>> mEncoded;
+    std::map<int, DecodedImage> mDecoded;
+    const LoadOptions& mOptions;
+    Scene& mScene;
+    std::map<std::pair<int, bool>, int> mEntries;  // (glTF image, srgb) → Scene::images index
+};
+
+}  // namespace candela::scene::gltf

@@ -1,0 +1,47 @@
+#pragma once
+// Internal to the glTF loader: one mesh primitive → vertices and a triangle list in the Scene.
+
+#include "assets/gltf_context.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace tinygltf {
+class Model;
+}
+
+namespace candela::scene::gltf {
+
+struct PrimitiveGeometry {
+    bool drawable = false;  // false: skipped (points, lines, no POSITION, no triangles), with a warning
+    uint32_t firstIndex = 0;
+    uint32_t indexCount = 0;
+    Aabb bounds;  // local (mesh) space
+    int32_t deformation = -1;        // Scene::deformations entry (morph targets, skin weights)
+    size_t renormalizedWeights = 0;  // vertices whose skin weights were more than 1% off 1
+};
+
+// Reads primitive `primitive` of mesh `mesh` (both indices valid) and appends it to scene.vertices
+// and scene.indices as a triangle list, with absolute indices. Strips and fans are converted;
+// normals are computed flat when absent; tangents are generated (MikkTSpace, on the texture
+// coordinates of `tangentMap`) when `tangentMap` is given (a material of the primitive has a normal
+// map: Material::tangentSpaceMap) and the primitive has no TANGENT, splitting vertices whose corners
+// disagree.
+// Throws UserError (via ctx) on malformed data: out-of-range accessors or indices, non-finite
+// positions, attribute counts that differ from POSITION's.
+PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model& model, int mesh, int primitive,
+                                  const TextureRef* tangentMap, Scene& scene);
+
+// Converts an index sequence of glTF topology `mode` (TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN)
+// to a triangle list with the winding the specification defines. Strip and fan triangles that
+// repeat an index (degenerate stitching) are dropped; a partial trailing list triangle is dropped.
+std::vector<uint32_t> toTriangleList(int mode, std::span<const uint32_t> indices);
+
+// Removes the triangles of a triangle list whose corners are collinear or coincide (exactly zero
+// area: they cover no pixel and give no normal or tangent); returns how many were removed.
+// Precondition: every index < vertices.size().
+size_t dropZeroAreaTriangles(std::span<const Vertex> vertices, std::vector<uint32_t>& indices);
+
+}  // namespace candela::scene::gltf

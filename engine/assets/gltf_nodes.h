@@ -1,0 +1,23 @@
+#pragma once
+// Internal to the glTF loader: the node hierarchy → draws, cameras and lights in world space.
+
+#include "assets/gltf_context.h"
+#include "scene/scene.h"
+
+#include <optional>
+
+namespace tinygltf {
+class Model;
+}
+
+namespace candela::scene::gltf {
+
+// Walks scene `sceneIndex` (unset: the file's default scene, else scene 0; every parentless node
+// if the file has no scenes) and records the file's scene names and the one chosen, composing TRS or matrix transforms. Appends one Draw per (node, mesh primitive) —
+// geometry is converted once per primitive and shared by every node using the mesh — plus the
+// nodes' cameras and KHR_lights_punctual lights, and sets scene.bounds. Precondition: the glTF
+// materials are already in scene.materials (same order); a default material is appended if a
+// primitive has none. Throws UserError on cycles, nodes reachable twice, and bad indices.
+void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, std::optional<uint32_t> sceneIndex, Scene& scene);
+
+}  // namespace candela::scene::gltf

@@ -1,0 +1,123 @@
+#include "geometry/mesh_optimize.h"
+
+#include <meshoptimizer.h>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <numeric>
+
+namespace candela::scene {
+
+namespace {
+
+// One distinct mesh: an index range and what the draws using it ask of it.
+struct Mesh {
+    uint32_t firstIndex = 0, indexCount = 0;
+    uint32_t minVertex = UINT32_MAX, maxVertex = 0;
+    bool deformed = false;      // morph targets or a skin: no levels, vertices stay in place
+    bool blended = false;       // some draw blends it: its triangle order stays
+    bool sharesVertices = false;  // another mesh indexes the same vertices: they stay in place
+    std::vector<uint32_t> draws;
+};
+
+std::vector<Mesh> distinctMeshes(const Scene& scene) {
+    std::map<std::pair<uint32_t, uint32_t>, size_t> byRange;
+    std::vector<Mesh> meshes;
+    const auto blends = [&](uint32_t material) { return scene.materials[material].alphaMode == AlphaMode::Blend; };
+    for (uint32_t d = 0; d < scene.draws.size(); ++d) {
+        const Draw& draw = scene.draws[d];
+        if (draw.indexCount == 0) continue;
+        const auto [it, added] = byRange.try_emplace({draw.firstIndex, draw.indexCount}, meshes.size());
+        if (added) meshes.push_back({.firstIndex = draw.firstIndex, .indexCount = draw.indexCount});
+        Mesh& mesh = meshes[it->second];
+        mesh.deformed |= draw.deformation >= 0 || draw.skin >= 0;
+        mesh.blended |= blends(draw.material);
+        mesh.draws.push_back(d);
+    }
+    for (const DrawVariants& variants : scene.drawVariants) {
+        const Draw& draw = scene.draws[variants.draw];
+        if (auto it = byRange.find({draw.firstIndex, draw.indexCount}); it != byRange.end())
+            for (const auto& [variant, material] : variants.materials) meshes[it->second].blended |= blends(material);
+    }
+    for (Mesh& mesh : meshes)
+        for (uint32_t i = 0; i < mesh.indexCount; ++i) {
+            const uint32_t v = scene.indices[mesh.firstIndex + i];
+            mesh.minVertex = std::min(mesh.minVertex, v);
+            mesh.maxVertex = std::max(mesh.maxVertex, v);
+        }
+    // Meshes whose vertex ranges overlap keep their vertices where they are.
+    std::vector<size_t> order(meshes.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return meshes[a].minVertex < meshes[b].minVertex; });
+    uint32_t reach = 0;
+    size_t reachMesh = SIZE_MAX;
+    for (size_t i : order) {
+        if (reachMesh != SIZE_MAX && meshes[i].minVertex <= reach) meshes[i].sharesVertices = meshes[reachMesh].sharesVertices = true;
+        if (reachMesh == SIZE_MAX || meshes[i].maxVertex > reach) reach = meshes[i].maxVertex, reachMesh = i;
+    }
+    return meshes;
+}
+
+// Reorders the vertices [base, base + count) of `scene` for fetch locality in the order `local`
+// (indices relative to base) first uses them, and rewrites `local` and every level's indices.
+void reorderVertices(Scene& scene, uint32_t base, uint32_t count, std::vector<uint32_t>& local,
+                     std::vector<SimplifiedLevel>& levels) {
+    std::vector<uint32_t> remap(count);
+    uint32_t next = uint32_t(meshopt_optimizeVertexFetchRemap(remap.data(), local.data(), local.size(), count));
+    for (uint32_t& r : remap)
+        if (r == ~0u) r = next++;  // vertices no triangle uses (e.g. of dropped zero-area triangles) go last
+    std::vector<Vertex> reordered(count);
+    meshopt_remapVertexBuffer(reordered.data(), scene.vertices.data() + base, count, sizeof(Vertex), remap.data());
+    std::copy(reordered.begin(), reordered.end(), scene.vertices.begin() + base);
+    meshopt_remapIndexBuffer(local.data(), local.data(), local.size(), remap.data());
+    for (SimplifiedLevel& level : levels)
+        meshopt_remapIndexBuffer(level.indices.data(), level.indices.data(), level.indices.size(), remap.data());
+}
+
+}  // namespace
+
+void prepareGeometry(Scene& scene, const LodChainSettings& settings) {
+    const auto start = std::chrono::steady_clock::now();
+    Scene::GeometryPreparation& report = scene.geometry;
+    const std::vector<Mesh> meshes = distinctMeshes(scene);
+    report.meshes = meshes.size();
+    for (const Mesh& mesh : meshes) {
+        const uint32_t base = mesh.minVertex, count = mesh.maxVertex - mesh.minVertex + 1;
+        const std::span<const Vertex> vertices(scene.vertices.data() + base, count);
+        std::vector<uint32_t> local(scene.indices.begin() + mesh.firstIndex,
+                                    scene.indices.begin() + mesh.firstIndex + mesh.indexCount);
+        for (uint32_t& i : local) i -= base;
+        if (!mesh.blended) {
+            meshopt_optimizeVertexCache(local.data(), local.data(), local.size(), count);
+            meshopt_optimizeOverdraw(local.data(), local.data(), local.size(), &vertices[0].position.x, count,
+                                     sizeof(Vertex), 1.05f);
+        }
+        // A mesh that comes with its chain (the built-in spheres') keeps it.
+        const int32_t givenChain = scene.draws[mesh.draws.front()].lod;
+        std::vector<SimplifiedLevel> levels = mesh.deformed || givenChain >= 0 ? std::vector<SimplifiedLevel>{}
+                                                                               : simplifyChain(vertices, local, settings);
+        if (!mesh.deformed && !mesh.sharesVertices) reorderVertices(scene, base, count, local, levels);
+        for (uint32_t i = 0; i < mesh.indexCount; ++i) scene.indices[mesh.firstIndex + i] = local[i] + base;
+        report.indexBytes += uint64_t(mesh.indexCount) * sizeof(uint32_t);
+        if (givenChain >= 0) {
+            const LodChain& chain = scene.lodChains[size_t(givenChain)];
+            for (size_t i = 1; i < chain.levels.size(); ++i) report.lodIndexBytes += chain.levels[i].indexCount * sizeof(uint32_t);
+            report.simplifiedMeshes += chain.levels.size() > 1;
+        }
+        if (levels.empty()) continue;
+        LodChain chain;
+        chain.levels.push_back({mesh.firstIndex, mesh.indexCount, 0.0f});
+        for (const SimplifiedLevel& level : levels) {
+            chain.levels.push_back({uint32_t(scene.indices.size()), uint32_t(level.indices.size()), level.error});
+            for (uint32_t i : level.indices) scene.indices.push_back(i + base);
+            report.lodIndexBytes += level.indices.size() * sizeof(uint32_t);
+        }
+        for (uint32_t d : mesh.draws) scene.draws[d].lod = int32_t(scene.lodChains.size());
+        scene.lodChains.push_back(std::move(chain));
+        ++report.simplifiedMeshes;
+    }
+    report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace candela::scene

@@ -1,0 +1,286 @@
+#include "gpu_scene/gpu_scene.h"
+
+#include "geometry/normal_map_mips.h"
+
+#include "scene/texture_transform.h"
+#include "shared/scene_data.h"
+#include "vk/upload.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <stdexcept>
+
+namespace candela::scene {
+namespace {
+
+using namespace shading;
+
+VkSamplerAddressMode addressMode(Wrap wrap) {
+    switch (wrap) {
+        case Wrap::Repeat: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+        case Wrap::MirroredRepeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+        case Wrap::ClampToEdge: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    }
+    return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+}
+
+VkFilter filterOf(Filter f) { return f == Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR; }
+
+template <class T>
+vk::Buffer uploadedBuffer(vk::Context& context, vk::Uploader& uploader, const std::vector<T>& items, const char* name,
+                          VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
+    // Zero-sized buffers are invalid: keep one (unused) element.
+    const VkDeviceSize size = std::max<VkDeviceSize>(items.size() * sizeof(T), sizeof(T));
+    vk::Buffer buffer(context, {.size = size, .usage = usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, .name = name});
+    uploader.buffer(buffer, std::as_bytes(std::span(items)));
+    return buffer;
+}
+
+UvTransform uvTransform(const TextureRef& ref) {
+    // Rows of the affine KHR_texture_transform matrix (the loader's convention, shared with tangent
+    // generation), plus the texture coordinate set in r0.w.
+    const glm::mat3 m = textureTransformMatrix(ref.transform);
+    UvTransform out;
+    out.r0 = glm::vec4(m[0][0], m[1][0], m[2][0], static_cast<float>(ref.texCoord));
+    out.r1 = glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f);
+    return out;
+}
+
+MaterialData materialData(const Material& m) {
+    MaterialData out{};
+    out.baseColorFactor = m.baseColorFactor;
+    out.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f);
+    out.metallic = m.metallicFactor;
+    out.roughness = m.roughnessFactor;
+    out.normalScale = m.normalScale;
+    out.occlusionStrength = m.occlusionStrength;
+    const float mode = m.alphaMode == AlphaMode::Mask ? float(CANDELA_ALPHA_MASK)
+                       : m.alphaMode == AlphaMode::Blend ? float(CANDELA_ALPHA_BLEND)
+                                                         : float(CANDELA_ALPHA_OPAQUE);
+    out.alphaCutoff = m.alphaCutoff;
+    out.alphaMode = mode;
+    for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) out.uv[slot] = uvTransform(m.texture(slot));
+    return out;
+}
+
+MaterialLayerData materialLayerData(const Material& m) {
+    MaterialLayerData out{};
+    out.specularColor = m.specularColorFactor;
+    out.specular = m.specularFactor;
+    out.ior = m.ior;
+    out.clearcoat = m.clearcoatFactor;
+    out.clearcoatRoughness = m.clearcoatRoughnessFactor;
+    out.clearcoatNormalScale = m.clearcoatNormalScale;
+    out.sheenColor = m.sheenColorFactor;
+    out.sheenRoughness = m.sheenRoughnessFactor;
+    out.anisotropy = m.anisotropyStrength;
+    out.anisotropyRotation = m.anisotropyRotation;
+    out.anisotropyTextured = m.anisotropy.present() ? 1.0f : 0.0f;
+    out.transmission = m.transmissionFactor;
+    out.thickness = m.thicknessFactor;
+    out.attenuationColor = m.attenuationColor;
+    out.attenuationDistance = m.attenuationDistance;
+    out.iridescence = m.iridescenceFactor;
+    out.iridescenceIor = m.iridescenceIor;
+    out.iridescenceThicknessMinimum = m.iridescenceThicknessMinimum;
+    out.iridescenceThicknessMaximum = m.iridescenceThicknessMaximum;
+    for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) out.uv[slot] = uvTransform(m.layerTexture(slot));
+    return out;
+}
+
+vk::Image solidTexture(vk::Context& context, vk::Uploader& uploader, std::array<uint8_t, 4> rgba, VkFormat format,
+                       const char* name) {
+    vk::Image image(context, {.format = format,
+                              .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                              .name = name});
+    uploader.image(image, std::as_bytes(std::span(rgba)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    return image;
+}
+
+}  // namespace
+
+shading::LightData lightData(const Light& l) {
+    using namespace shading;
+    LightData out{};
+    const float type = l.type == LightType::Directional ? float(CANDELA_LIGHT_DIRECTIONAL)
+                       : l.type == LightType::Spot    ? float(CANDELA_LIGHT_SPOT)
+                                                      : float(CANDELA_LIGHT_POINT);
+    out.positionRange = glm::vec4(l.position, l.range);
+    out.directionType = glm::vec4(glm::normalize(l.direction), type);
+    out.color = l.color;
+    out.intensity = l.intensity;
+    const float cosOuter = std::cos(l.outerConeAngle), cosInner = std::cos(l.innerConeAngle);
+    const float scale = 1.0f / std::max(cosInner - cosOuter, 1e-4f);
+    out.cone = glm::vec4(scale, -cosOuter * scale, 0.0f, 0.0f);
+    return out;
+}
+
+shading::DrawData drawData(const Draw& draw) {
+    shading::DrawData data{};
+    data.world = draw.world;
+    // In double: the float determinant overflows for world scales near 1e13 (the loader checks the
+    // double one is non-zero).
+    data.normalMatrix = glm::mat4(glm::mat3(glm::transpose(glm::inverse(glm::dmat3(draw.world)))));
+    data.material = glm::uvec4(draw.material, 0, 0, 0);
+    return data;
+}
+
+std::vector<shading::DrawData> drawDataOf(const Scene& scene, std::span<const Draw> draws, std::vector<uint32_t>* first) {
+    std::vector<shading::DrawData> out;
+    if (first) first->clear();
+    for (const Draw& d : draws) {
+        if (first) first->push_back(uint32_t(out.size()));
+        if (d.instanceCount == 0) {
+            out.push_back(d.hidden ? shading::DrawData{} : drawData(d));
+            continue;
+        }
+        for (uint32_t i = 0; i < d.instanceCount; ++i) {
+            Draw instance = d;
+            instance.world = d.world * scene.instances[d.firstInstance + i];
+            out.push_back(d.hidden ? shading::DrawData{} : drawData(instance));
+        }
+    }
+    return out;
+}
+
+GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights, float maxAnisotropy,
+                   bool sceneLights)
+    : mScene(&scene), mContext(&context) {
+    vk::Uploader uploader(context);
+    const bool deformable = !scene.deformations.empty();
+    mVertices = uploadedBuffer(context, uploader, scene.vertices, "vertices",
+                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | (deformable ? VK_BUFFER_USAGE_STORAGE_BUFFER_BIT : 0));
+    if (deformable) {
+        std::vector<MorphDelta> deltas;
+        std::vector<JointInfluence> influences;
+        for (const Deformation& d : scene.deformations) {
+            mDeltaBase.push_back(uint32_t(deltas.size()));
+            mInfluenceBase.push_back(uint32_t(influences.size()));
+            deltas.insert(deltas.end(), d.deltas.begin(), d.deltas.end());
+            influences.insert(influences.end(), d.influences.begin(), d.influences.end());
+        }
+        mDeltas = uploadedBuffer(context, uploader, deltas, "morph_deltas");
+        mInfluences = uploadedBuffer(context, uploader, influences, "skin_influences");
+    }
+    mIndices = uploadedBuffer(context, uploader, scene.indices, "indices", VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+
+    std::vector<LightData>& lights = mSceneLights;
+    if (sceneLights)
+        for (const Light& l : scene.lights) lights.push_back(lightData(l));
+    for (const Light& l : extraLights) lights.push_back(lightData(l));
+    mLightCount = static_cast<uint32_t>(lights.size());
+    mLights = uploadedBuffer(context, uploader, lights, "lights");
+
+    const std::vector<DrawData> draws = drawDataOf(scene, scene.draws);
+    mDraws = uploadedBuffer(context, uploader, draws, "draws");
+
+    std::vector<MaterialData>& materials = mSceneMaterials;
+    for (const Material& m : scene.materials) materials.push_back(materialData(m));
+    mMaterials = uploadedBuffer(context, uploader, materials, "materials");
+    if (std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.layers() != 0; })) {
+        for (const Material& m : scene.materials) mSceneLayers.push_back(materialLayerData(m));
+        mMaterialLayers = uploadedBuffer(context, uploader, mSceneLayers, "material_layers");
+        mLayerData = mSceneLayers;
+    }
+    mLightData = mSceneLights;
+    mMaterialData = mSceneMaterials;
+
+    // Which images are normal maps (of the base or of the coat) and which are read otherwise: a
+    // normal map's mips keep the length its averaging loses (geometry/normal_map_mips.h), in A — an
+    // image read both ways gets a second copy for its normal-map use.
+    std::vector<bool> normalUse(scene.images.size()), otherUse(scene.images.size());
+    for (const Material& m : scene.materials) {
+        const auto mark = [&](const TextureRef& ref, bool normal) {
+            if (ref.present() && size_t(ref.image) < scene.images.size()) (normal ? normalUse : otherUse)[size_t(ref.image)] = true;
+        };
+        for (const TextureSlot& slot : kCoreTextureSlots) mark(m.*slot.field, slot.normalMap);
+        for (const TextureSlot& slot : kLayerTextureSlots) mark(m.*slot.field, slot.normalMap);
+    }
+    const auto upload = [&](const Image& source, bool normalMap) {
+        const uint32_t mips = std::bit_width(std::max(source.width, source.height));
+        vk::Image image(context, {.width = source.width,
+                                  .height = source.height,
+                                  .mipLevels = mips,
+                                  .format = source.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
+                                  .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                           VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                  .name = source.name.c_str()});
+        if (normalMap) {
+            const std::vector<std::vector<uint8_t>> chain = normalMapMipChain(source);
+            for (uint32_t mip = 0; mip < chain.size(); ++mip)
+                uploader.image(image, std::as_bytes(std::span(chain[mip])), mip, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        } else {
+            uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                           /*generateMips=*/true);
+        }
+        return image;
+    };
+    // Per image: its normal-map copy in mExtraImages, or -1 (the image serves its normal-map use itself).
+    std::vector<int32_t> normalCopy(scene.images.size(), -1);
+    for (size_t i = 0; i < scene.images.size(); ++i) {
+        mImages.push_back(upload(scene.images[i], normalUse[i] && !otherUse[i]));
+        if (!normalUse[i] || !otherUse[i]) continue;
+        normalCopy[i] = int32_t(mExtraImages.size());
+        mExtraImages.push_back(upload(scene.images[i], true));
+    }
+    mWhite = solidTexture(context, uploader, {255, 255, 255, 255}, VK_FORMAT_R8G8B8A8_UNORM, "default white");
+    mFlatNormal = solidTexture(context, uploader, {128, 128, 255, 255}, VK_FORMAT_R8G8B8A8_UNORM, "default normal");
+    uploader.submitAndWait();
+
+    for (const Sampler& s : scene.samplers)
+        mSamplers.push_back(vk::createSampler(context, {.filter = filterOf(s.magFilter),
+                                                        .minFilter = filterOf(s.minFilter),
+                                                        .mipmapMode = s.mipFilter == Filter::Nearest
+                                                                          ? VK_SAMPLER_MIPMAP_MODE_NEAREST
+                                                                          : VK_SAMPLER_MIPMAP_MODE_LINEAR,
+                                                        .addressU = addressMode(s.wrapU),
+                                                        .addressV = addressMode(s.wrapV),
+                                                        .maxAnisotropy = maxAnisotropy,
+                                                        .maxLod = s.mipmaps ? VK_LOD_CLAMP_NONE : 0.0f}));
+    mDefaultSampler = vk::createSampler(context, {.addressU = VK_SAMPLER_ADDRESS_MODE_REPEAT,
+                                                  .addressV = VK_SAMPLER_ADDRESS_MODE_REPEAT,
+                                                  .maxAnisotropy = maxAnisotropy});
+
+    // A texture's view (its normal-map copy for a normal map) and sampler, or `fallback` (1×1) with
+    // the default sampler without one.
+    const auto binding = [&](const TextureRef& ref, const vk::Image& fallback, bool normalMap = false) {
+        const bool has = ref.present() && static_cast<size_t>(ref.image) < mImages.size();
+        const bool hasSampler = ref.sampler >= 0 && static_cast<size_t>(ref.sampler) < mSamplers.size();
+        const vk::Image* image = !has                                     ? &fallback
+                                 : normalMap && normalCopy[size_t(ref.image)] >= 0 ? &mExtraImages[size_t(normalCopy[size_t(ref.image)])]
+                                                                                   : &mImages[size_t(ref.image)];
+        return Binding{image->view(), hasSampler ? mSamplers[ref.sampler].get() : mDefaultSampler.get()};
+    };
+    // Missing textures read white (factor × 1), missing normal maps flat.
+    const auto slotBinding = [&](const Material& m, const TextureSlot& slot) {
+        return binding(m.*slot.field, slot.normalMap ? mFlatNormal : mWhite, slot.normalMap);
+    };
+    for (const Material& m : scene.materials) {
+        auto& bindings = mBindings.emplace_back();
+        for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) bindings[slot] = slotBinding(m, kCoreTextureSlots[slot]);
+        auto& layerBindings = mLayerBindings.emplace_back();
+        for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) layerBindings[slot] = slotBinding(m, kLayerTextureSlots[slot]);
+    }
+}
+
+void GpuScene::rewrite(const std::vector<LightData>& lights, const std::vector<MaterialData>& materials,
+                       const std::vector<MaterialLayerData>& layers) {
+    if (lights.size() != mSceneLights.size() || materials.size() != mSceneMaterials.size() ||
+        layers.size() != mSceneLayers.size())
+        throw std::invalid_argument("GpuScene::rewrite: the light, material and layer counts cannot change");
+    vk::Uploader uploader(*mContext);
+    if (!lights.empty()) uploader.buffer(mLights, std::as_bytes(std::span(lights)));
+    if (!materials.empty()) uploader.buffer(mMaterials, std::as_bytes(std::span(materials)));
+    if (!layers.empty()) uploader.buffer(mMaterialLayers, std::as_bytes(std::span(layers)));
+    uploader.submitAndWait();
+    mLightData = lights;
+    mMaterialData = materials;
+    mLayerData = layers;
+}
+
+GpuScene::Binding GpuScene::texture(uint32_t material, int slot) const { return mBindings.at(material)[slot]; }
+
+GpuScene::Binding GpuScene::layerTexture(uint32_t material, int slot) const { return mLayerBindings.at(material)[slot]; }
+
+}  // namespace candela::scene

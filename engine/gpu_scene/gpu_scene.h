@@ -1,0 +1,102 @@
+#pragma once
+// GpuScene: a scene::Scene uploaded to the device — vertex and index buffers, storage buffers of
+// lights, draws and materials (shared/scene_data.h layouts), textures with generated mip chains,
+// samplers, and 1×1 defaults for absent textures. A normal map's mips are filtered on the CPU and
+// keep, in A, the length their averaging loses (geometry/normal_map_mips.h), for specular anti-aliasing. Geometry and textures are immutable after
+// upload (re-upload on change); the light and material buffers can be rewritten (live edits).
+
+#include "scene/scene.h"
+#include "shared/scene_data.h"
+#include "vk/buffer.h"
+#include "vk/image.h"
+#include "vk/sampler.h"
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace candela::scene {
+
+// A draw as the forward shaders read it: world and normal matrix, material index. Precondition:
+// draw.world is not singular (hidden draws are not drawn).
+shading::DrawData drawData(const Draw& draw);
+// The draw data of every draw in order, an instanced draw taking one entry per instance (world ·
+// instance matrix) — the layout of the draw buffers; hidden draws get zeros. `first[d]` receives
+// the index of draw d's first entry (what the forward pass pushes; the shader adds the instance).
+std::vector<shading::DrawData> drawDataOf(const Scene& scene, std::span<const Draw> draws, std::vector<uint32_t>* first = nullptr);
+// A light as the forward shaders read it (position and range, direction and type, colour,
+// intensity, cone terms).
+shading::LightData lightData(const Light& light);
+
+class GpuScene {
+public:
+    // Uploads `scene` (one batched submit) with `extraLights` appended to its lights (to nothing but
+    // them without `sceneLights`), and samplers limited to `maxAnisotropy`. Precondition:
+    // scene.draws reference valid ranges and materials (the loader guarantees it). `scene` must
+    // outlive the GpuScene.
+    GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights = {},
+             float maxAnisotropy = 8.0f, bool sceneLights = true);
+
+    VkBuffer vertexBuffer() const { return mVertices.handle(); }
+    VkBuffer indexBuffer() const { return mIndices.handle(); }
+    VkBuffer lightBuffer() const { return mLights.handle(); }
+    VkBuffer drawBuffer() const { return mDraws.handle(); }
+    VkBuffer materialBuffer() const { return mMaterials.handle(); }
+    // The layer parameters of every material (shading::MaterialLayerData), for the layered forward
+    // program; a null handle when no material has a layer (Material::layers()).
+    VkBuffer materialLayerBuffer() const { return mMaterialLayers.handle(); }
+    // Morph-target deltas and skin influences of every Scene::deformations entry, concatenated
+    // (MorphDelta and JointInfluence layouts); null handles when the scene has no deformations.
+    // The vertex buffer can then also be read as a storage buffer (by the skin_morph pass).
+    VkBuffer deltaBuffer() const { return mDeltas.handle(); }
+    VkBuffer influenceBuffer() const { return mInfluences.handle(); }
+    // Where deformation `d`'s data starts in those buffers (in elements).
+    uint32_t deltaBase(size_t d) const { return mDeltaBase[d]; }
+    uint32_t influenceBase(size_t d) const { return mInfluenceBase[d]; }
+    uint32_t lightCount() const { return mLightCount; }
+
+    // The lights and materials as the scene defines them, and as the buffers hold them now
+    // (shared/scene_data.h layouts).
+    const std::vector<shading::LightData>& sceneLights() const { return mSceneLights; }
+    const std::vector<shading::MaterialData>& sceneMaterials() const { return mSceneMaterials; }
+    const std::vector<shading::LightData>& lights() const { return mLightData; }
+    const std::vector<shading::MaterialData>& materials() const { return mMaterialData; }
+    // The same for the material layers (empty when no material has a layer).
+    const std::vector<shading::MaterialLayerData>& sceneMaterialLayers() const { return mSceneLayers; }
+    const std::vector<shading::MaterialLayerData>& materialLayers() const { return mLayerData; }
+    // Rewrites the buffers (same element counts as the scene's) and waits for the copy.
+    // Precondition: no frame in flight reads them (the caller waits for the GPU).
+    void rewrite(const std::vector<shading::LightData>& lights, const std::vector<shading::MaterialData>& materials,
+                 const std::vector<shading::MaterialLayerData>& layers);
+
+    // The view and sampler bound to texture slot `slot` (CANDELA_TEX_*) of material `material`:
+    // the material's texture, or a 1×1 default (white, or a flat normal for a normal-map slot).
+    struct Binding {
+        VkImageView view;
+        VkSampler sampler;
+    };
+    Binding texture(uint32_t material, int slot) const;
+    // The same for layer texture slot `slot` (CANDELA_LAYER_TEX_*).
+    Binding layerTexture(uint32_t material, int slot) const;
+
+    const Scene& scene() const { return *mScene; }
+
+private:
+    const Scene* mScene;
+    vk::Buffer mVertices, mIndices, mLights, mDraws, mMaterials, mMaterialLayers, mDeltas, mInfluences;
+    std::vector<uint32_t> mDeltaBase, mInfluenceBase;
+    uint32_t mLightCount = 0;
+    vk::Context* mContext;
+    std::vector<shading::LightData> mSceneLights, mLightData;
+    std::vector<shading::MaterialData> mSceneMaterials, mMaterialData;
+    std::vector<shading::MaterialLayerData> mSceneLayers, mLayerData;
+    std::vector<vk::Image> mImages;       // per Scene::images entry
+    std::vector<vk::Image> mExtraImages;  // normal-map copies of images also read otherwise
+    std::vector<vk::Sampler> mSamplers;
+    vk::Sampler mDefaultSampler;
+    vk::Image mWhite, mFlatNormal;
+    std::vector<std::array<Binding, CANDELA_TEX_COUNT>> mBindings;             // per material, per slot
+    std::vector<std::array<Binding, CANDELA_LAYER_TEX_COUNT>> mLayerBindings;  // per material, per layer slot
+};
+
+}  // namespace candela::scene

@@ -1,0 +1,309 @@
+#include "ibl_maps/ibl_maps.h"
+
+#include "core/errors.h"
+#include "core/log.h"
+#include "executor/graph_executor.h"
+#include "passes/ibl_brdf_lut_pass.h"
+#include "passes/ibl_cubemap_pass.h"
+#include "passes/ibl_irradiance_cube_pass.h"
+#include "passes/ibl_irradiance_sh_pass.h"
+#include "passes/ibl_prefilter_pass.h"
+#include "reports/ibl_errors.h"
+#include "reports/ibl_reference.h"
+#include "vk/context.h"
+#include "vk/upload.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <span>
+
+namespace candela::ibl {
+
+using namespace graph;
+
+namespace {
+
+constexpr VkDeviceSize kShBytes = passes::IblIrradianceShPass::kBytes;
+// An input uploaded by vk::Uploader, which waited and made it visible to shader reads: nothing to
+// wait for, already in the layout for sampling.
+constexpr ResourceState kUploadedState{VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+
+TextureDesc graphDesc(const vk::ImageDesc& d) {
+    return {.width = d.width, .height = d.height, .mipLevels = d.mipLevels, .arrayLayers = d.arrayLayers,
+            .format = d.format, .cube = d.cube};
+}
+
+// The environment's RGB texels as RGBA (alpha 1), the layout of the RGBA32F upload.
+std::vector<float> rgbaTexels(const scene::Environment& env) {
+    std::vector<float> rgba(env.texelCount() * 4, 1.0f);
+    for (size_t i = 0; i < env.texelCount(); ++i)
+        for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = env.rgb[i * 3 + c];
+    return rgba;
+}
+
+}  // namespace
+
+IblMaps::IblMaps(vk::Context& context) : mContext(context) {}
+
+IblMaps::~IblMaps() = default;
+
+void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
+    const auto luminance = [&](size_t i) {
+        return ibl::luminance({env.rgb[i * 3], env.rgb[i * 3 + 1], env.rgb[i * 3 + 2]});
+    };
+    double totalSolidAngle = 0, totalPower = 0;
+    for (uint32_t y = 0; y < env.height; ++y) {
+        const double solidAngle = reference::texelSolidAngle(y, env.width, env.height);
+        for (uint32_t x = 0; x < env.width; ++x) totalPower += luminance(size_t(y) * env.width + x) * solidAngle;
+        totalSolidAngle += solidAngle * env.width;
+    }
+    const double threshold = 20.0 * totalPower / totalSolidAngle;
+    std::vector<uint32_t> bright;
+    for (uint32_t i = 0; i < env.texelCount(); ++i)
+        if (luminance(i) > threshold) bright.push_back(i);
+    std::sort(bright.begin(), bright.end(), [&](uint32_t a, uint32_t b) { return luminance(a) > luminance(b); });
+    if (bright.size() > kMaxReferenceTexels) bright.resize(kMaxReferenceTexels);
+
+    std::vector<float> rgba = rgbaTexels(env);
+    std::vector<glm::vec4> texels{glm::vec4(float(bright.size()), float(env.width), float(env.height), 0)};
+    for (uint32_t i : bright) {
+        rgba[size_t(i) * 4 + 3] = 0.0f;
+        texels.emplace_back(float(i % env.width), float(i / env.width), 0.0f, 0.0f);
+        texels.emplace_back(env.rgb[size_t(i) * 3], env.rgb[size_t(i) * 3 + 1], env.rgb[size_t(i) * 3 + 2], 0.0f);
+    }
+    mReferenceEquirect = vk::Image(mContext, {.width = env.width, .height = env.height, .format = kFloatCubeFormat,
+                                              .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                              .name = "ibl_reference_equirect"});
+    mReferenceTexels = vk::Buffer(mContext, {.size = texels.size() * sizeof(glm::vec4),
+                                             .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                             .name = "ibl_reference_texels"});
+    mReferenceTexelCount = static_cast<uint32_t>(bright.size());
+    vk::Uploader upload(mContext);
+    upload.image(mReferenceEquirect, std::as_bytes(std::span(rgba)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    upload.buffer(mReferenceTexels, std::as_bytes(std::span(texels)));
+    upload.submitAndWait();
+}
+
+uint32_t IblMaps::sheenFaceSize(const IblQuality& q) {
+    return std::min(q.cubeSize, std::max(64u, 1u << (q.levels() - 1)));
+}
+
+uint32_t IblMaps::lutSize() const { return mLut.image ? mLut.image.desc().width : 1; }
+
+void IblMaps::createMaps(const IblQuality& q) {
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
+                                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    auto makeCube = [&](Target& target, uint32_t size, uint32_t mips, const char* name) {
+        if (target.image && target.image.desc().width == size && target.image.desc().mipLevels == mips) return;
+        target.image = vk::Image(mContext, {.width = size, .height = size, .mipLevels = mips, .arrayLayers = 6,
+                                            .format = kSpecularFormat, .usage = usage, .cube = true, .name = name});
+        target.mipViews = target.image.createMipViews();
+    };
+    makeCube(mSpecular, q.cubeSize, q.levels(), "ibl_specular");
+    if (q.sheen) makeCube(mSheen, sheenFaceSize(q), q.levels(), "ibl_sheen");
+    else mSheen = {};
+    if (q.irradiance == IrradianceMode::Cube) {
+        makeCube(mIrradianceCube, q.irradianceSize, 1, "ibl_irradiance");
+        mSh = {};
+    } else {
+        mIrradianceCube = {};
+        if (!mSh)
+            mSh = vk::Buffer(mContext, {.size = kShBytes,
+                                        .usage = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                                 VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                        .name = "ibl_sh"});
+    }
+    if (!mLut.image || mLut.image.desc().width != q.lutSize) {
+        mLut.image = vk::Image(mContext, {.width = q.lutSize, .height = q.lutSize, .format = kLutFormat, .usage = usage,
+                                          .name = "ibl_brdf_lut"});
+        mLutComputedFor.clear();
+    }
+    mLutPending = mLutComputedFor != q.lutCanonical();
+}
+
+void IblMaps::createPrecomputeInputs(const scene::Environment& env) {
+    mEquirect = vk::Image(mContext, {.width = env.width, .height = env.height, .format = kFloatCubeFormat,
+                                     .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                     .name = "ibl_equirect"});
+    const std::vector<float> rgba = rgbaTexels(env);
+    vk::Uploader upload(mContext);
+    upload.image(mEquirect, std::as_bytes(std::span(rgba)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    upload.submitAndWait();
+
+    const uint32_t size = mQuality.cubeSize;
+    const uint32_t mips = static_cast<uint32_t>(std::bit_width(size));
+    mFloatCube.image = vk::Image(mContext, {.width = size, .height = size, .mipLevels = mips, .arrayLayers = 6,
+                                            .format = kFloatCubeFormat,
+                                            .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
+                                            .cube = true, .name = "ibl_float_cube"});
+    mFloatCube.mipViews = mFloatCube.image.createMipViews();
+}
+
+void IblMaps::ensurePasses() {
+    if (mCubemapPass) return;
+    mCubemapPass = std::make_unique<passes::IblCubemapPass>(mContext);
+    mPrefilterPass = std::make_unique<passes::IblPrefilterPass>(mContext);
+    mShPass = std::make_unique<passes::IblIrradianceShPass>(mContext);
+    mIrradianceCubePass = std::make_unique<passes::IblIrradianceCubePass>(mContext);
+    mLutPass = std::make_unique<passes::IblBrdfLutPass>(mContext);
+    mSheenPass = std::make_unique<passes::IblPrefilterPass>(mContext, passes::IblPrefilterPass::Lobe::Charlie);
+}
+
+bool IblMaps::setEnvironment(const scene::Environment* env, const IblQuality& quality,
+                             const std::filesystem::path& cacheDir, bool force) {
+    if (!env) {
+        if (mSource == MapsSource::None) return false;
+        mSource = MapsSource::None;
+        mSpecular = {};
+        mIrradianceCube = {};
+        mSheen = {};
+        mSh = {};
+        mEquirect = {};
+        mFloatCube = {};
+        mCacheFile.clear();
+        mCacheNote.clear();
+        return true;  // the LUT stays: it does not depend on the environment
+    }
+    quality.validate();
+    const uint64_t hash = scene::contentHash(*env);
+    if (!force && mSource != MapsSource::None && hash == mEnvironmentHash && quality == mQuality &&
+        cacheDir == mCacheDir)
+        return false;
+    mQuality = quality;
+    mLevels = quality.levels();
+    mEnvironmentHash = hash;
+    mEnvironmentName = env->source;
+    mEquirectWidth = env->width;
+    mEquirectHeight = env->height;
+    mCacheDir = cacheDir;
+    mCacheFile.clear();
+    mCacheNote.clear();
+    createMaps(quality);
+    if (force) mLutPending = true;
+    mEquirect = {};
+    mFloatCube = {};
+    if (!cacheDir.empty() && loadCache()) {
+        mSource = MapsSource::Cache;
+        return true;
+    }
+    createPrecomputeInputs(*env);
+    ensurePasses();
+    const uint32_t floatMips = mFloatCube.image.desc().mipLevels;
+    mPrefilterPass->prepare(mLevels, quality.prefilterSamples, quality.cubeSize, floatMips, quality.filteredSampling,
+                            quality.lodBias);
+    if (quality.sheen)
+        mSheenPass->prepare(mLevels, kSheenSamples, quality.cubeSize, floatMips, quality.filteredSampling, quality.lodBias);
+    if (quality.irradiance == IrradianceMode::Cube)
+        mIrradianceCubePass->prepare(quality.irradianceSamples, quality.cubeSize, floatMips, quality.filteredSampling,
+                            quality.lodBias);
+    mSource = MapsSource::Pending;
+    return true;
+}
+
+TextureId IblMaps::import(RenderGraph& graph, ImportBindings& imports, const char* name, const vk::Image& image,
+                          const std::vector<vk::ImageView>& mipViews, const ResourceState& initial,
+                          std::optional<ResourceState> final) {
+    const TextureId texture = graph.importTexture(name, graphDesc(image.desc()), initial, final);
+    std::vector<VkImageView> views;
+    for (const vk::ImageView& view : mipViews) views.push_back(view.get());
+    imports.bind(texture, image.handle(), image.view(), std::move(views));
+    return texture;
+}
+
+passes::IblHandles IblMaps::addToGraph(RenderGraph& graph, ImportBindings& imports, bool reference) {
+    if (!hasEnvironment()) throw InternalError("IblMaps::addToGraph without an environment");
+    passes::IblHandles maps;
+    const bool computeMaps = mSource == MapsSource::Pending;
+    mPrecomputeAdded = computeMaps;
+    mLutAdded = mLutPending;
+    mLastFrame = {.precompute = computeMaps, .lut = mLutPending, .source = mSource};
+    // Maps about to be computed have no contents to keep: they start undefined.
+    const ResourceState mapsInitial = computeMaps ? ResourceState{} : kRestState;
+    maps.specular = import(graph, imports, kSpecularName, mSpecular.image, mSpecular.mipViews, mapsInitial, kRestState);
+    if (mIrradianceCube.image)
+        maps.irradianceCube = import(graph, imports, "ibl_irradiance", mIrradianceCube.image, mIrradianceCube.mipViews,
+                                     mapsInitial, kRestState);
+    if (mSh) {
+        maps.sh = graph.importBuffer("ibl_sh", {.size = kShBytes}, computeMaps ? ResourceState{} : kShRestState,
+                                     kShRestState);
+        imports.bind(maps.sh, mSh.handle());
+    }
+    maps.lut = import(graph, imports, "ibl_brdf_lut", mLut.image, mLut.mipViews,
+                      mLutPending ? ResourceState{} : kRestState, kRestState);
+    if (mSheen.image) maps.sheen = import(graph, imports, "ibl_sheen", mSheen.image, mSheen.mipViews, mapsInitial, kRestState);
+    if (reference && mReferenceEquirect) {
+        maps.referenceEquirect = import(graph, imports, "ibl_reference_equirect", mReferenceEquirect, {}, kUploadedState, {});
+        maps.referenceTexels = graph.importBuffer("ibl_reference_texels", {.size = mReferenceTexels.size()}, ResourceState{});
+        imports.bind(maps.referenceTexels, mReferenceTexels.handle());
+    }
+    if (computeMaps || mLutPending) ensurePasses();
+    if (mLutPending) maps.lut = mLutPass->add(graph, maps.lut, mQuality.lutSamples);
+    if (!computeMaps) return maps;
+
+    // The equirect was uploaded for sampling; the float cube is written whole.
+    const TextureId equirect = import(graph, imports, "ibl_equirect", mEquirect, {}, kUploadedState, {});
+    const TextureId cube = import(graph, imports, "ibl_float_cube", mFloatCube.image, mFloatCube.mipViews, {}, {});
+    const passes::IblCubemapPass::Outputs resampled =
+        mCubemapPass->add(graph, {.equirect = equirect, .cube = cube, .specular = maps.specular});
+    maps.specular = mPrefilterPass->add(graph, {.source = resampled.cube, .specular = resampled.specular});
+    if (maps.sheen.valid()) maps.sheen = mSheenPass->add(graph, {.source = resampled.cube, .specular = maps.sheen});
+    if (mQuality.irradiance == IrradianceMode::Sh9)
+        maps.sh = mShPass->add(graph, {.source = resampled.cube,
+                                       .projectedFaceSize = mQuality.shSourceSize,
+                                       .coefficients = maps.sh});
+    else
+        maps.irradianceCube = mIrradianceCubePass->add(graph, {.source = resampled.cube, .irradiance = maps.irradianceCube});
+    return maps;
+}
+
+namespace {
+bool passRan(const RenderGraph& graph, const char* name) {
+    const std::optional<uint32_t> pass = graph.findPass(name);
+    return pass && graph.compiled().passes[*pass].cullReason == CullReason::None;
+}
+}  // namespace
+
+void IblMaps::frameCompleted(const RenderGraph& graph) {
+    if (mLutAdded && passRan(graph, "ibl_brdf_lut")) {
+        mLutComputedFor = mQuality.lutCanonical();
+        mLutPending = false;
+    }
+    mLutAdded = false;
+    if (!mPrecomputeAdded) return;
+    mPrecomputeAdded = false;
+    // E.g. a pass was disabled: compute again next frame.
+    if (!passRan(graph, "ibl_prefilter") || (mSheen.image && !passRan(graph, "ibl_sheen_prefilter"))) return;
+    mSource = MapsSource::Computed;
+    mEquirect = {};
+    mFloatCube = {};
+    if (!mCacheDir.empty() && !mLutPending) writeCache();
+}
+
+std::vector<std::string> IblMaps::explanation() const {
+    std::vector<std::string> lines;
+    if (!hasEnvironment()) {
+        lines.emplace_back("left out: image-based lighting (no environment): no precompute, no skybox, no IBL shading");
+        return lines;
+    }
+    lines.push_back("ibl: environment '" + mEnvironmentName + "' (" + std::to_string(mEquirectWidth) + "x" +
+                    std::to_string(mEquirectHeight) + "), " + mQuality.canonical());
+    if (mLastFrame.precompute)
+        lines.emplace_back("ibl: maps computed by this frame's precompute passes");
+    else if (mLastFrame.source == MapsSource::Cache)
+        lines.push_back("left out: IBL precompute (maps loaded from the cache " + mCacheFile.string() + ")");
+    else
+        lines.emplace_back("left out: IBL precompute (environment and quality unchanged; maps imported)");
+    if (!mLastFrame.lut) lines.emplace_back("left out: BRDF LUT pass (LUT settings unchanged)");
+    lines.emplace_back(mQuality.irradiance == IrradianceMode::Sh9
+                           ? "left out: irradiance cube (irradiance from SH9; --irradiance cube)"
+                           : "left out: SH9 projection (irradiance from the cube; --irradiance sh9)");
+    lines.emplace_back(mQuality.sheen ? "ibl: sheen cube (Charlie-prefiltered, " + std::to_string(sheenFaceSize(mQuality)) +
+                                            " texels) for the scene's KHR_materials_sheen materials"
+                                      : "left out: sheen cube (no material has a sheen)");
+    if (!mCacheNote.empty()) lines.push_back("ibl cache: " + mCacheNote);
+    return lines;
+}
+
+}  // namespace candela::ibl

@@ -1,0 +1,169 @@
+#include "pose/scene_pose.h"
+
+#include "core/errors.h"
+#include "pose/node_placement.h"
+#include "pose/skinning.h"
+
+#include <algorithm>
+#include <charconv>
+#include <set>
+
+namespace candela::scene {
+namespace {
+
+// Indices of the items whose node is marked in `moved` (one flag per node).
+template <typename T>
+std::vector<uint32_t> onMovedNodes(const std::vector<T>& items, const std::vector<uint8_t>& moved) {
+    std::vector<uint32_t> out;
+    for (uint32_t i = 0; i < items.size(); ++i)
+        if (items[i].node >= 0 && size_t(items[i].node) < moved.size() && moved[size_t(items[i].node)]) out.push_back(i);
+    return out;
+}
+
+std::string animationList(const Scene& scene) {
+    if (scene.animations.empty()) return "the scene has no animations";
+    std::string out = "its animations: ";
+    for (size_t i = 0; i < scene.animations.size(); ++i)
+        out += (i ? ", " : "") + std::to_string(i) + " '" + scene.animations[i].name + "'";
+    return out;
+}
+
+}  // namespace
+
+std::vector<uint32_t> selectAnimations(const Scene& scene, std::span<const std::string> names) {
+    std::set<uint32_t> chosen;
+    if (names.empty()) {
+        if (!scene.animations.empty()) chosen.insert(0);
+        return {chosen.begin(), chosen.end()};
+    }
+    for (const std::string& name : names) {
+        if (name == "none") continue;
+        if (name == "all") {
+            for (uint32_t i = 0; i < scene.animations.size(); ++i) chosen.insert(i);
+            continue;
+        }
+        uint32_t index = 0;
+        const auto [end, error] = std::from_chars(name.data(), name.data() + name.size(), index);
+        if (error == std::errc() && end == name.data() + name.size()) {
+            if (index >= scene.animations.size())
+                throw UserError("no animation " + name + " (" + animationList(scene) + ")");
+            chosen.insert(index);
+            continue;
+        }
+        const auto it = std::find_if(scene.animations.begin(), scene.animations.end(),
+                                     [&](const Animation& a) { return a.name == name; });
+        if (it == scene.animations.end()) throw UserError("no animation named '" + name + "' (" + animationList(scene) + ")");
+        chosen.insert(uint32_t(it - scene.animations.begin()));
+    }
+    return {chosen.begin(), chosen.end()};
+}
+
+ScenePose::ScenePose(const Scene& scene, std::vector<uint32_t> playing)
+    : mScene(&scene), mPlaying(std::move(playing)), mNodes(scene.nodes), mDraws(scene.draws), mLights(scene.lights),
+      mCameras(scene.cameras) {
+    std::vector<uint32_t> targets;
+    for (uint32_t a : mPlaying)
+        for (const AnimationChannel& channel : scene.animations[a].channels) targets.push_back(channel.node);
+    mDependent = dependentNodes(mNodes, targets);
+    std::vector<uint8_t> moved(mNodes.size(), 0);
+    for (uint32_t node : mDependent) moved[node] = 1;
+    mAnimatedDraws = onMovedNodes(mDraws, moved);
+    // A skinned draw moves with its joints, wherever its own node is.
+    mJoints.resize(scene.skins.size());
+    mJointBounds.resize(mDraws.size());
+    std::vector<uint8_t> skinMoved(scene.skins.size(), 0);
+    for (size_t s = 0; s < scene.skins.size(); ++s) {
+        scene::jointMatrices(scene.skins[s], mNodes, mJoints[s]);
+        for (uint32_t joint : scene.skins[s].joints) skinMoved[s] |= moved[joint];
+        if (skinMoved[s]) mMovedSkins.push_back(uint32_t(s));
+    }
+    for (uint32_t d = 0; d < mDraws.size(); ++d) {
+        const Draw& draw = mDraws[d];
+        if (draw.skin < 0) continue;
+        mJointBounds[d] = jointMeshBounds(scene.deformations[size_t(draw.deformation)], scene.skins[size_t(draw.skin)], scene.vertices);
+        if (skinMoved[size_t(draw.skin)] && !std::binary_search(mAnimatedDraws.begin(), mAnimatedDraws.end(), d))
+            mAnimatedDraws.insert(std::upper_bound(mAnimatedDraws.begin(), mAnimatedDraws.end(), d), d);
+    }
+    mAnimatedLights = onMovedNodes(mLights, moved);
+    mAnimatedCameras = onMovedNodes(mCameras, moved);
+    mAnimationBounds = animated() ? boundsOverAnimation(1024) : scene.bounds;
+    evaluate(0.0);
+}
+
+double ScenePose::duration() const {
+    double longest = 0.0;
+    for (uint32_t a : mPlaying) longest = std::max(longest, mScene->animations[a].duration);
+    return longest;
+}
+
+void ScenePose::evaluate(double time, bool loop) {
+    mTime = time;
+    mLoop = loop;
+    if (!animated()) return;
+    for (uint32_t a : mPlaying) {
+        const Animation& animation = mScene->animations[a];
+        applyAnimation(animation, loop ? loopTime(time, animation.duration) : time, mNodes);
+    }
+    updateWorldTransforms(mNodes, mDependent);
+    for (uint32_t s : mMovedSkins) scene::jointMatrices(mScene->skins[s], mNodes, mJoints[s]);
+    for (uint32_t d : mAnimatedDraws) place(d);
+    for (uint32_t l : mAnimatedLights) placeLight(mLights[l], mNodes[size_t(mLights[l].node)].world);
+    // A camera whose node is scaled to nothing keeps its last placement.
+    for (uint32_t c : mAnimatedCameras) placeCamera(mCameras[c], mNodes[size_t(mCameras[c].node)].world);
+}
+
+void ScenePose::place(uint32_t d) {
+    Draw& draw = mDraws[d];
+    const glm::vec3 reach =
+        draw.deformation >= 0 ? morphReach(mScene->deformations[size_t(draw.deformation)], weights(draw)) : glm::vec3(0.0f);
+    if (draw.skin >= 0) placeSkinnedDraw(draw, skinnedBounds(mJointBounds[d], mJoints[size_t(draw.skin)], reach));
+    else placeDraw(draw, mNodes[size_t(draw.node)].world, reach,
+                   std::span(mScene->instances).subspan(draw.firstInstance, draw.instanceCount));
+}
+
+std::span<const float> ScenePose::weights(const Draw& draw) const {
+    if (draw.node < 0) return {};
+    return mNodes[size_t(draw.node)].weights;
+}
+
+std::vector<uint32_t> ScenePose::deformedDraws() const {
+    std::vector<uint32_t> out;
+    for (uint32_t d = 0; d < mDraws.size(); ++d) {
+        const Draw& draw = mDraws[d];
+        if (draw.hidden || draw.deformation < 0) continue;
+        const std::span<const float> w = weights(draw);
+        const bool morphed = mScene->deformations[size_t(draw.deformation)].targetCount > 0 &&
+                             std::any_of(w.begin(), w.end(), [](float x) { return x != 0.0f; });
+        if (draw.skin >= 0 || morphed) out.push_back(d);
+    }
+    return out;
+}
+
+Aabb ScenePose::bounds() const {
+    Aabb out;
+    for (const Draw& d : mDraws)
+        if (!d.hidden) out.extend(d.bounds);
+    return out;
+}
+
+Aabb ScenePose::boundsOverAnimation(size_t maxSamples) {
+    std::vector<double> times{0.0};
+    for (uint32_t a : mPlaying)
+        for (const AnimationChannel& channel : mScene->animations[a].channels)
+            for (float t : mScene->animations[a].samplers[channel.sampler].times) times.push_back(double(t));
+    std::sort(times.begin(), times.end());
+    times.erase(std::unique(times.begin(), times.end()), times.end());
+    if (times.size() > maxSamples && maxSamples >= 2) {
+        const double last = times.back();
+        times.clear();
+        for (size_t i = 0; i < maxSamples; ++i) times.push_back(last * double(i) / double(maxSamples - 1));
+    }
+    Aabb out;
+    for (double t : times) {
+        evaluate(t, /*loop=*/false);
+        out.extend(bounds());
+    }
+    return out;
+}
+
+}  // namespace candela::scene

@@ -1,0 +1,179 @@
+#include "render/renderer.h"
+
+#include "core/errors.h"
+#include "passes/readback_pass.h"
+#include "vk/context.h"
+
+#include <chrono>
+
+namespace candela {
+
+using namespace graph;
+
+namespace {
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+}  // namespace
+
+Renderer::Renderer(vk::Context& context, RendererOptions options)
+    : mContext(context), mOptions(options), mRunner(context, options.framesInFlight), mScene(context, mRunner),
+      mBuilder(context, mScene, mParameters), mReadback(context) {}
+
+Renderer::~Renderer() { mRunner.waitIdle(); }
+
+void Renderer::validateSettings(const RenderSettings& settings) const {
+    const uint32_t limit = mContext.properties().limits.maxImageDimension2D;
+    if (settings.width == 0 || settings.height == 0)
+        throw UserError("image size must be at least 1x1 (got " + std::to_string(settings.width) + "x" +
+                        std::to_string(settings.height) + ")");
+    if (settings.width > limit || settings.height > limit)
+        throw UserError("image size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                        " exceeds the device limit of " + std::to_string(limit) + " pixels per side");
+}
+
+vk::MsaaChoice Renderer::msaa(std::optional<uint32_t> requested) const { return mBuilder.msaa(requested); }
+
+void Renderer::sceneReplaced() { mScene.sceneReplaced(); }
+void Renderer::shadersReplaced(const std::vector<std::string>& names) { mScene.shadersReplaced(names); }
+void Renderer::recomputeIbl() { mScene.recomputeIbl(); }
+
+void Renderer::setReferenceEnvironment(const scene::Environment& environment) {
+    mRunner.waitIdle();
+    mScene.iblMaps().setReferenceEnvironment(environment);
+}
+
+Frame Renderer::beginFrame(const RenderSettings& settings, const PresentTarget* present) {
+    Frame frame;  // started now: a precompute's frame time includes the environment's upload
+    validateSettings(settings);
+    if (present && !settings.scene) throw UserError("rendering to a window needs a scene");
+    if (settings.scene) {
+        if (mScene.prepareScene({settings.scene, settings.defaultLights, settings.sceneLights})) mBuilder.sceneUploaded();
+        mScene.prepareEnvironment(settings.environment, settings.iblQuality, settings.iblCacheDir);
+    }
+    std::optional<TextureId> target;
+    if (present) {
+        // The image's old contents are discarded; the semaphore wait (at colour-attachment output)
+        // orders the first write after the presentation engine has released it.
+        const ResourceState acquiredState{.stages = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT};
+        const ResourceState presentState{.stages = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                         .layout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR};
+        target = frame.graph->importTexture(
+            "swapchain", {.width = settings.width, .height = settings.height, .format = present->format},
+            acquiredState, presentState);
+        frame.imports.bind(*target, present->image, present->view);
+    }
+    if (settings.scene) mBuilder.buildScene(frame, settings, target);
+    else mBuilder.buildPattern(frame, settings);
+    return frame;
+}
+
+std::chrono::steady_clock::time_point Renderer::submit(Frame frame, const RenderSettings& settings,
+                                                       const PresentTarget* present) {
+    return mRunner.submit(std::move(frame), {.disabledPasses = settings.disabledPasses,
+                                             .unknownPassIsError = mOptions.unknownPassIsError,
+                                             .emitBarriers = mOptions.emitBarriers,
+                                             .present = present});
+}
+
+void Renderer::finishFrame() {
+    const Frame& last = mRunner.last();
+    mScene.frameCompleted(*last.graph);
+    if (!last.precomputes()) return;
+    mLastPrecompute = {.frameMs = msSince(last.started), .gpuMs = mRunner.lastPrecomputeGpuMs()};
+}
+
+FrameTiming Renderer::execute(Frame frame, const RenderSettings& settings) {
+    const auto started = frame.started;
+    const auto submitted = submit(std::move(frame), settings);
+    mRunner.waitCurrent();
+    FrameTiming timing;
+    timing.cpuMs = std::chrono::duration<double, std::milli>(submitted - started).count();
+    timing.submitWaitMs = msSince(submitted);
+    finishFrame();
+    timing.timings = mRunner.completedTimings();
+    return timing;
+}
+
+FrameTiming Renderer::renderFrame(const RenderSettings& settings) {
+    Frame frame = beginFrame(settings);
+    // Without a readback the frame's result is kept alive as an exported output, as a swapchain
+    // image would be.
+    frame.graph->exportTexture(frame.ldr);
+    return execute(std::move(frame), settings);
+}
+
+FrameTiming Renderer::renderCalibration(uint32_t width, uint32_t height) {
+    validateSettings({.width = width, .height = height});
+    Frame frame;
+    mBuilder.buildCalibration(frame, width, height);
+    return execute(std::move(frame), {});
+}
+
+FrameTiming Renderer::precomputeIbl(const scene::Environment& environment, const ibl::IblQuality& quality) {
+    Frame frame;  // started now: the frame time includes the environment's upload, as beginFrame's does
+    mScene.useEnvironment(&environment, quality, {}, /*force=*/true);
+    mBuilder.addIblMaps(frame, /*reference=*/false);
+    return execute(std::move(frame), {});
+}
+
+CapturedFrame Renderer::capture(const RenderSettings& settings) {
+    Frame frame = beginFrame(settings);
+    const VkDeviceSize texel = settings.floatOutput ? 8 : 4;  // RGBA16F or RGBA8
+    const size_t texels = static_cast<size_t>(settings.width) * settings.height;
+    passes::addReadbackPass(*frame.graph, settings.floatOutput ? frame.hdr : frame.ldr, mReadback.import(frame, texel * texels));
+    const FrameTiming timing = execute(std::move(frame), settings);
+
+    CapturedFrame captured;
+    captured.width = settings.width;
+    captured.height = settings.height;
+    captured.submitWaitMs = timing.submitWaitMs;
+    captured.timings = timing.timings;
+    const RenderGraph& graph = *mRunner.last().graph;
+    const PassInfo& readbackInfo = graph.compiled().passes[*graph.findPass("readback")];
+    if (readbackInfo.cullReason != CullReason::None)
+        throw UserError("nothing to capture: the readback pass was culled (" + readbackInfo.cullDetail + ")");
+    const auto readStart = std::chrono::steady_clock::now();
+    if (settings.floatOutput) captured.rgba32f = mReadback.rgba32f(texels);
+    else captured.rgba8 = mReadback.rgba8(texels, false);
+    captured.readbackMs = msSince(readStart);
+    return captured;
+}
+
+void Renderer::renderToTarget(const RenderSettings& settings, const PresentTarget& target, const OverlayFn& overlay,
+                              CapturedFrame* screenshot) {
+    Frame frame = beginFrame(settings, &target);
+    TextureId output = frame.ldr;
+    if (overlay) output = overlay(*frame.graph, output);
+    const size_t texels = size_t(settings.width) * settings.height;
+    if (screenshot) passes::addReadbackPass(*frame.graph, output, mReadback.import(frame, VkDeviceSize(4) * texels));
+    // A frame that imports the IBL maps is waited for, so that the maps learn that a precompute
+    // completed before the next frame is built. (Only frames that ran one need it; waiting for
+    // those alone would keep frames in flight with an environment — not changed here.)
+    const bool ibl = frame.graph->findResource(ibl::IblMaps::kSpecularName).has_value();
+    submit(std::move(frame), settings, &target);
+    if (!screenshot && !ibl) return;
+    mRunner.waitCurrent();
+    finishFrame();
+    if (!screenshot) return;
+    screenshot->width = settings.width;
+    screenshot->height = settings.height;
+    screenshot->timings = mRunner.completedTimings();
+    const bool bgra = target.format == VK_FORMAT_B8G8R8A8_UNORM || target.format == VK_FORMAT_B8G8R8A8_SRGB;
+    screenshot->rgba8 = mReadback.rgba8(texels, bgra);
+}
+
+std::vector<std::string> Renderer::explain() const {
+    std::vector<std::string> lines;
+    const RenderGraph& graph = *mRunner.last().graph;
+    const GraphDecl& decl = graph.declaration();
+    for (uint32_t p = 0; p < decl.passes.size(); ++p) {
+        const PassInfo& info = graph.compiled().passes[p];
+        if (info.cullReason != CullReason::None)
+            lines.push_back("left out: pass '" + decl.passes[p].name + "' (" + info.cullDetail + ")");
+    }
+    lines.insert(lines.end(), mRunner.last().notes.begin(), mRunner.last().notes.end());
+    return lines;
+}
+
+}  // namespace candela

@@ -1,0 +1,171 @@
+#include "reports/plot.h"
+
+#include "assets/image_file.h"
+#include "core/errors.h"
+
+#include <stb_easy_font.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+
+namespace candela::io {
+
+namespace {
+
+using Rgb = std::array<uint8_t, 3>;
+
+constexpr Rgb kSeriesColors[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {214, 39, 40},
+                                 {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {127, 127, 127}};
+
+bool usable(const PlotPoint& p) { return std::isfinite(p.x) && std::isfinite(p.y) && p.x > 0 && p.y > 0; }
+
+class Canvas {
+public:
+    Canvas(uint32_t width, uint32_t height) : mWidth(width), mHeight(height), mPixels(size_t(width) * height * 4, 255) {}
+
+    void pixel(int x, int y, Rgb c) {
+        if (x < 0 || y < 0 || x >= int(mWidth) || y >= int(mHeight)) return;
+        uint8_t* p = &mPixels[(size_t(y) * mWidth + x) * 4];
+        p[0] = c[0], p[1] = c[1], p[2] = c[2], p[3] = 255;
+    }
+    void rect(int x0, int y0, int x1, int y1, Rgb c) {
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) pixel(x, y, c);
+    }
+    void line(double x0, double y0, double x1, double y1, Rgb c, int thickness = 1) {
+        const int steps = int(std::max(std::abs(x1 - x0), std::abs(y1 - y0))) + 1;
+        for (int i = 0; i <= steps; ++i) {
+            const double t = double(i) / steps;
+            const int x = int(std::lround(x0 + (x1 - x0) * t)), y = int(std::lround(y0 + (y1 - y0) * t));
+            rect(x - thickness / 2, y - thickness / 2, x - thickness / 2 + thickness, y - thickness / 2 + thickness, c);
+        }
+    }
+    void ring(double cx, double cy, double radius, Rgb c) {
+        for (int i = 0; i < 360; ++i) {
+            const double a = i * 3.14159265358979 / 180.0;
+            rect(int(cx + radius * std::cos(a)) - 1, int(cy + radius * std::sin(a)) - 1,
+                 int(cx + radius * std::cos(a)) + 1, int(cy + radius * std::sin(a)) + 1, c);
+        }
+    }
+    // stb_easy_font text at (x, y) (top left), scaled by `scale`.
+    void text(int x, int y, const std::string& s, Rgb c, int scale = 1) {
+        static std::array<char, 60000> buffer;
+        std::string copy = s;
+        const int quads = stb_easy_font_print(0, 0, copy.data(), nullptr, buffer.data(), int(buffer.size()));
+        const auto* v = reinterpret_cast<const float*>(buffer.data());  // 4 vertices × (x, y, z, colour) per quad
+        for (int q = 0; q < quads; ++q) {
+            const float* quad = v + q * 16;
+            rect(x + int(quad[0]) * scale, y + int(quad[1]) * scale, x + int(quad[8]) * scale, y + int(quad[9]) * scale, c);
+        }
+    }
+    static int textWidth(const std::string& s, int scale = 1) {
+        std::string copy = s;
+        return stb_easy_font_width(copy.data()) * scale;
+    }
+    const std::vector<uint8_t>& pixels() const { return mPixels; }
+
+private:
+    uint32_t mWidth, mHeight;
+    std::vector<uint8_t> mPixels;
+};
+
+std::string decadeLabel(int exponent) {
+    if (exponent >= 0 && exponent <= 4) return std::to_string(int(std::lround(std::pow(10.0, exponent))));
+    if (exponent < 0 && exponent >= -3) {
+        std::string s = "0.";
+        for (int i = 1; i < -exponent; ++i) s += "0";
+        return s + "1";
+    }
+    return "1e" + std::to_string(exponent);
+}
+
+}  // namespace
+
+std::vector<size_t> paretoFront(const std::vector<PlotPoint>& points) {
+    std::vector<size_t> order;
+    for (size_t i = 0; i < points.size(); ++i)
+        if (usable(points[i])) order.push_back(i);
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        return points[a].x < points[b].x || (points[a].x == points[b].x && points[a].y < points[b].y);
+    });
+    std::vector<size_t> front;
+    double bestY = INFINITY;
+    for (size_t i : order) {
+        if (points[i].y < bestY) {
+            front.push_back(i);
+            bestY = points[i].y;
+        }
+    }
+    return front;
+}
+
+void writeLogLogPlot(const std::filesystem::path& path, const PlotSpec& spec) {
+    Canvas canvas(spec.width, spec.height);
+    const int left = 90, right = int(spec.width) - 200, top = 50, bottom = int(spec.height) - 60;
+    double minX = INFINITY, maxX = -INFINITY, minY = INFINITY, maxY = -INFINITY;
+    for (const PlotPoint& p : spec.points) {
+        if (!usable(p)) continue;
+        minX = std::min(minX, p.x), maxX = std::max(maxX, p.x);
+        minY = std::min(minY, p.y), maxY = std::max(maxY, p.y);
+    }
+    if (!std::isfinite(minX)) minX = 1, maxX = 10, minY = 1, maxY = 10;
+    const double lx0 = std::floor(std::log10(minX)), lx1 = std::max(std::ceil(std::log10(maxX)), lx0 + 1);
+    const double ly0 = std::floor(std::log10(minY)), ly1 = std::max(std::ceil(std::log10(maxY)), ly0 + 1);
+    auto sx = [&](double x) { return left + (std::log10(x) - lx0) / (lx1 - lx0) * (right - left); };
+    auto sy = [&](double y) { return bottom - (std::log10(y) - ly0) / (ly1 - ly0) * (bottom - top); };
+
+    const Rgb grid{225, 225, 225}, axis{60, 60, 60}, ink{20, 20, 20};
+    for (int e = int(lx0); e <= int(lx1); ++e) {
+        for (int k = 1; k < 10 && e + std::log10(k) <= lx1; ++k)
+            canvas.line(sx(k * std::pow(10.0, e)), top, sx(k * std::pow(10.0, e)), bottom, k == 1 ? Rgb{200, 200, 200} : grid);
+        const std::string label = decadeLabel(e);
+        canvas.text(int(sx(std::pow(10.0, e))) - Canvas::textWidth(label) / 2, bottom + 8, label, ink);
+    }
+    for (int e = int(ly0); e <= int(ly1); ++e) {
+        for (int k = 1; k < 10 && e + std::log10(k) <= ly1; ++k)
+            canvas.line(left, sy(k * std::pow(10.0, e)), right, sy(k * std::pow(10.0, e)), k == 1 ? Rgb{200, 200, 200} : grid);
+        const std::string label = decadeLabel(e);
+        canvas.text(left - 8 - Canvas::textWidth(label), int(sy(std::pow(10.0, e))) - 4, label, ink);
+    }
+    canvas.line(left, bottom, right, bottom, axis, 2);
+    canvas.line(left, top, left, bottom, axis, 2);
+    canvas.text(left, 15, spec.title, ink, 2);
+    canvas.text((left + right) / 2 - Canvas::textWidth(spec.xLabel) / 2, bottom + 30, spec.xLabel, ink);
+    canvas.text(10, top - 20, spec.yLabel, ink);
+
+    const std::vector<size_t> front = spec.paretoLine ? paretoFront(spec.points) : std::vector<size_t>{};
+    for (size_t i = 1; i < front.size(); ++i)
+        canvas.line(sx(spec.points[front[i - 1]].x), sy(spec.points[front[i - 1]].y), sx(spec.points[front[i]].x),
+                    sy(spec.points[front[i]].y), Rgb{0, 0, 0}, 2);
+    for (const PlotPoint& p : spec.points) {
+        if (!usable(p)) continue;
+        const Rgb c = kSeriesColors[p.series % std::size(kSeriesColors)];
+        const int x = int(sx(p.x)), y = int(sy(p.y));
+        canvas.rect(x - 4, y - 4, x + 5, y + 5, c);
+        if (!p.label.empty()) canvas.text(x + 7, y - 10, p.label, c);
+    }
+    if (spec.highlight && *spec.highlight < spec.points.size() && usable(spec.points[*spec.highlight]))
+        canvas.ring(sx(spec.points[*spec.highlight].x), sy(spec.points[*spec.highlight].y), 11, Rgb{220, 0, 0});
+
+    int ly = top;
+    for (size_t s = 0; s < spec.series.size(); ++s, ly += 18) {
+        canvas.rect(right + 20, ly, right + 29, ly + 9, kSeriesColors[s % std::size(kSeriesColors)]);
+        canvas.text(right + 36, ly, spec.series[s], ink);
+    }
+    if (spec.paretoLine) {
+        canvas.line(right + 16, ly + 5, right + 32, ly + 5, Rgb{0, 0, 0}, 2);
+        canvas.text(right + 36, ly, "Pareto front", ink);
+    } else {
+        ly -= 18;
+    }
+    if (spec.highlight) {
+        ly += 18;
+        canvas.ring(right + 24, ly + 4, 6, Rgb{220, 0, 0});
+        canvas.text(right + 36, ly, "default setting", ink);
+    }
+    writePng(path, spec.width, spec.height, canvas.pixels());
+}
+
+}  // namespace candela::io
