@@ -1,5 +1,6 @@
 // The `candela` executable end to end: exit codes, one-line errors, and the files it writes.
 #include "run_candela.h"
+#include "temp_dir.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -19,10 +20,10 @@ namespace {
 using candela::test::Result;
 using candela::test::run;
 
+// The process's scratch folder, removed when the process exits (ctest runs each test in its own).
 std::filesystem::path tempDir() {
-    auto dir = std::filesystem::temp_directory_path() / ("candela_cli_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
-    return dir;
+    static const candela::test::TempDir dir("candela_cli");
+    return dir.path();
 }
 
 // A bad-input row: the arguments, and a fragment the one-line error must contain.
@@ -48,7 +49,7 @@ void appendU32(std::string& out, uint32_t v) {
 //   folder.gltf/                    a directory
 //   variants.gltf                   the triangle with KHR_materials_variants "red" and "blue"
 std::filesystem::path writeSceneFiles() {
-    const auto dir = std::filesystem::temp_directory_path() / ("candela_cli_scenes_" + std::to_string(::getpid()));
+    const auto dir = tempDir() / "scenes";
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir / "folder.gltf");
     const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};

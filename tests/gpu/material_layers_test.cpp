@@ -39,13 +39,15 @@ TEST_F(GpuTest, ScenesWithoutLayersKeepTheCoreProgramAndVariants) {
     // The sphere grid and DamagedHelmet: the variant lines as they were before the layers existed,
     // and the layered program left out.
     const scene::Scene grid = scene::makeSphereGrid();
-    const scene::Scene helmet =
-        scene::loadGltf(std::filesystem::path(CANDELA_SHARED_ASSETS) / "models/DamagedHelmet/glTF-Binary/DamagedHelmet.glb");
     Renderer renderer(context());
     renderer.capture({.width = 64, .height = 36, .scene = &grid});
     EXPECT_EQ(variantLine(renderer.explain()), "forward: 49 draws; variants: pbr ×49");
     EXPECT_TRUE(contains(renderer.explain(), "left out: material layers"));
     EXPECT_TRUE(contains(renderer.explain(), "left out: sheen LUT"));
+    const std::filesystem::path helmetPath =
+        std::filesystem::path(CANDELA_SHARED_ASSETS) / "models/DamagedHelmet/glTF-Binary/DamagedHelmet.glb";
+    if (!std::filesystem::exists(helmetPath)) GTEST_SKIP() << "shared asset missing: the helmet half is not run";
+    const scene::Scene helmet = scene::loadGltf(helmetPath);
     renderer.capture({.width = 64, .height = 36, .scene = &helmet});
     EXPECT_EQ(variantLine(renderer.explain()), "forward: 1 draws; variants: pbr+normal-map ×1");
     EXPECT_TRUE(contains(renderer.explain(), "left out: material layers"));
