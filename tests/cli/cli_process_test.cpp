@@ -20,9 +20,11 @@ namespace {
 using candela::test::Result;
 using candela::test::run;
 
-// The process's scratch folder, removed when the process exits (ctest runs each test in its own).
+// The process's scratch folder, removed when the process exits (ctest runs each test in its own;
+// the sanitized stage runs them all in one). Made again when a test removed it.
 std::filesystem::path tempDir() {
     static const candela::test::TempDir dir("candela_cli");
+    std::filesystem::create_directories(dir.path());
     return dir.path();
 }
 
