@@ -7,6 +7,7 @@
 // are specialization constants (forward/resources.glsl), so what a draw does not use costs
 // nothing: no normal map → no TBN work; no lights → no light loop; unlit → no BRDF; no environment
 // → no image-based lighting; in the layered program, only the layers the material uses.
+#extension GL_EXT_demote_to_helper_invocation : require
 #include "forward/resources.glsl"
 
 layout(location = 0) in vec3 inWorldPosition;
@@ -70,8 +71,8 @@ void main() {
     float maskCoverage = 1.0f;
     if (kAlphaMask && kAlphaToCoverage) {
         maskCoverage = clamp((baseColor.a - alphaCutoff) / max(fwidth(baseColor.a), 1e-4f) + 0.5f, 0.0f, 1.0f);
-        if (maskCoverage <= 0.0f) discard;
-    } else if (kAlphaMask && baseColor.a < alphaCutoff) discard;
+        if (maskCoverage <= 0.0f) demote;
+    } else if (kAlphaMask && baseColor.a < alphaCutoff) demote;
     float alpha = materialOf(inputs).alphaMode == float(CANDELA_ALPHA_BLEND) ? baseColor.a : 1.0f;
 
     if (kUnlit && kDebugView == CANDELA_DEBUG_NONE) {

@@ -61,6 +61,7 @@ std::string unsuitableReason(VkInstance instance, VkPhysicalDevice device, const
     if (!features13.dynamicRendering) return "no dynamicRendering";
     if (!features13.synchronization2) return "no synchronization2";
     if (!features13.maintenance4) return "no maintenance4";
+    if (!features13.shaderDemoteToHelperInvocation) return "no shaderDemoteToHelperInvocation";
     if (presentSupport && !hasDeviceExtension(device, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) return "no VK_KHR_swapchain";
     try {
         chooseQueueFamilies(queueFamilies(device), presentFamilies(instance, device, presentSupport));
@@ -233,11 +234,14 @@ void Context::createDevice(const ContextDesc& desc) {
     VkPhysicalDeviceFeatures supported{};
     vkGetPhysicalDeviceFeatures(mPhysicalDevice, &supported);
     VkPhysicalDeviceVulkan13Features features13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+                                                .shaderDemoteToHelperInvocation = VK_TRUE,
                                                 .synchronization2 = VK_TRUE,
                                                 .dynamicRendering = VK_TRUE,
                                                 .maintenance4 = VK_TRUE};
     VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &features13};
-    mReport.enabledFeatures = {"dynamicRendering", "synchronization2", "maintenance4"};
+    // Demote (not discard) for the alpha test: derivatives and implicit-LOD sampling stay defined
+    // in the quad after it (required by Vulkan 1.3).
+    mReport.enabledFeatures = {"dynamicRendering", "synchronization2", "maintenance4", "shaderDemoteToHelperInvocation"};
     if (supported.samplerAnisotropy) {
         features.features.samplerAnisotropy = VK_TRUE;
         mReport.enabledFeatures.emplace_back("samplerAnisotropy");

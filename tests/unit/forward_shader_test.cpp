@@ -8,7 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
+#include <span>
+#include <vector>
 #include <string>
 
 namespace candela::test {
@@ -73,6 +76,30 @@ TEST(ForwardShader, GroundTruthOnlyInTheReportsProgram) {
         // the ground truth where only the report's program compiles it).
         EXPECT_FALSE(embeds(production, "vec3 referenceImageBasedLight(")) << production;
         EXPECT_FALSE(embeds(production, "kReferenceSamples")) << production;
+    }
+}
+
+// The opcodes of the SPIR-V instructions of `words` (after the 5-word header).
+std::vector<uint32_t> opcodes(std::span<const uint32_t> words) {
+    std::vector<uint32_t> out;
+    for (size_t i = 5; i < words.size();) {
+        const uint32_t count = words[i] >> 16;
+        out.push_back(words[i] & 0xFFFFu);
+        i += std::max(count, 1u);
+    }
+    return out;
+}
+
+// The alpha test demotes the fragment to a helper invocation instead of terminating it, so the
+// derivatives and implicit-LOD samples its quad neighbours take after it stay defined.
+TEST(ForwardShader, TheAlphaTestDemotesInsteadOfTerminating) {
+    constexpr uint32_t kOpKill = 252, kOpTerminateInvocation = 4416, kOpDemoteToHelperInvocation = 5380;
+    for (const char* program : {"forward.frag", "forward_layers.frag", "forward_reference.frag"}) {
+        const std::vector<uint32_t> ops = opcodes(shader::builtinShader(program));
+        ASSERT_FALSE(ops.empty()) << program;
+        EXPECT_NE(std::find(ops.begin(), ops.end(), kOpDemoteToHelperInvocation), ops.end()) << program;
+        EXPECT_EQ(std::find(ops.begin(), ops.end(), kOpKill), ops.end()) << program;
+        EXPECT_EQ(std::find(ops.begin(), ops.end(), kOpTerminateInvocation), ops.end()) << program;
     }
 }
 
