@@ -9,7 +9,7 @@
 #include "passes/debug_view.h"
 #include "passes/draw_selection.h"
 #include "passes/tonemap_operator.h"
-#include "shading_model_names.h"
+#include "passes/shading_model.h"
 #include "ui/viewer_panels.h"
 
 #include <array>

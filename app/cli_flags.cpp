@@ -244,8 +244,8 @@ std::vector<Flag> makeFlagTable() {
                    "the shading model: {choices} (pbr: height-correlated Smith GGX; pbr-schlick-ggx: the original "
                    "project's geometry term; blinn-phong: its first shader)",
                    "pbr"}},
-         .choices = namesOf(kShadingModelNames),
-         .set = [](Command& c, Str flag, Str v) { c.render.shading = parseChoice(flag, kShadingModelNames, v); },
+         .choices = namesOf(passes::kShadingModelNames),
+         .set = [](Command& c, Str flag, Str v) { c.render.shading = parseChoice(flag, passes::kShadingModelNames, v); },
          .example = "blinn-phong"},
         {.name = "--debug-view",
          .uses = {{kRenderViewBench, "NAME",

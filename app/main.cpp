@@ -22,11 +22,6 @@
 
 namespace candela::app {
 
-// The parser's shading-model names (shading_model_names.h) against the enum they stand for.
-static_assert(parseShadingModel("pbr") == passes::ShadingModel::Pbr &&
-              parseShadingModel("pbr-schlick-ggx") == passes::ShadingModel::PbrSchlickGgx &&
-              parseShadingModel("blinn-phong") == passes::ShadingModel::BlinnPhong && std::size(kShadingModelNames) == 3);
-
 vk::ContextDesc contextDesc(const CommonOptions& common) {
     log::setVerbose(common.verbose);
     return {.validation = common.validate,

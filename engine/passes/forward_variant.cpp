@@ -31,9 +31,7 @@ ForwardVariant forwardVariant(const MaterialKey& key, const FrameVariant& frame)
 }
 
 std::string ForwardVariant::name() const {
-    std::string out = unlit ? "unlit" : model == ShadingModel::BlinnPhong ? "blinn-phong"
-                                    : model == ShadingModel::PbrSchlickGgx ? "pbr-schlick-ggx"
-                                                                           : "pbr";
+    std::string out = unlit ? "unlit" : shadingModelName(model);
     if (normalMap) out += "+normal-map";
     if (!unlit && !lights) out += "+no-lights";
     if (alphaMask) out += "+alpha-mask";

@@ -6,14 +6,13 @@
 
 #include "passes/debug_view.h"
 #include "passes/draw_list.h"
+#include "passes/shading_model.h"
 
 #include <compare>
 #include <cstdint>
 #include <string>
 
 namespace candela::passes {
-
-enum class ShadingModel : uint32_t { Pbr = 0, PbrSchlickGgx = 1, BlinnPhong = 2 };
 
 // The frame's half of a variant: the same for every draw of the frame.
 struct FrameVariant {

@@ -215,9 +215,10 @@ TEST(CliFlags, EnumNamesRoundTrip) {
         EXPECT_STREQ(ibl::irradianceModeName(mode), name);
     }
     std::set<passes::ShadingModel> models;
-    for (const auto& [model, name] : kShadingModelNames) {
+    for (const auto& [model, name] : passes::kShadingModelNames) {
         EXPECT_EQ(parseCommandLine({"render", "--shading", name}).render.shading, model);
         EXPECT_TRUE(models.insert(model).second) << name;
+        EXPECT_STREQ(passes::shadingModelName(model), name);
     }
     for (const auto& [panel, name] : ui::kPanelNames)
         EXPECT_EQ(parseCommandLine({"view", "--panels", name}).render.panels, std::set<ui::Panel>{panel});

@@ -1,0 +1,26 @@
+#pragma once
+// The forward pass's shading models and their names, the one table that the forward variants'
+// names, the command line (--shading) and the tests read. Names only: no Vulkan.
+
+#include "core/name_table.h"
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <utility>
+
+namespace candela::passes {
+
+enum class ShadingModel : uint32_t { Pbr = 0, PbrSchlickGgx = 1, BlinnPhong = 2 };
+
+inline constexpr std::pair<ShadingModel, const char*> kShadingModelNames[] = {
+    {ShadingModel::Pbr, "pbr"}, {ShadingModel::PbrSchlickGgx, "pbr-schlick-ggx"}, {ShadingModel::BlinnPhong, "blinn-phong"}};
+
+// The model named `name` in kShadingModelNames; nullopt for anything else.
+constexpr std::optional<ShadingModel> parseShadingModel(std::string_view name) {
+    return valueNamed(kShadingModelNames, name);
+}
+
+constexpr const char* shadingModelName(ShadingModel model) { return nameOf(kShadingModelNames, model); }
+
+}  // namespace candela::passes
