@@ -154,8 +154,12 @@ std::vector<std::string> ForwardPass::describe(const DrawList& list, const Frame
                                                const DrawSelection& selection) const {
     std::vector<std::string> out;
     const scene::Scene& scene = mScene->scene();
+    // Draws per material key, then per variant name (keys of one frame may share a variant).
+    std::vector<uint32_t> perKey(mKeys->keys.size(), 0);
+    for (const DrawListItem& item : list.items) ++perKey[item.key];
     std::map<std::string, uint32_t> variantCounts;
-    for (const DrawListItem& item : list.items) ++variantCounts[forwardVariant(mKeys->keys[item.key], frame.variant).name()];
+    for (uint32_t key = 0; key < perKey.size(); ++key)
+        if (perKey[key]) variantCounts[forwardVariant(mKeys->keys[key], frame.variant).name()] += perKey[key];
     std::string used = "forward: " + std::to_string(list.draws) + " draws" +
                        (list.instances ? " (" + std::to_string(list.instances) + " instances in instanced draws)" : std::string()) +
                        "; variants:";

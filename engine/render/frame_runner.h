@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,7 +25,7 @@ public:
     ~FrameRunner();  // waits for the frames in flight
 
     struct SubmitOptions {
-        std::vector<std::string> disabledPasses;  // pass names switched off in this frame
+        std::span<const std::string> disabledPasses;  // pass names switched off in this frame (read during submit)
         // false: a disabled pass the frame does not declare is ignored (the viewer keeps toggles
         // across scene and environment changes); true: it is a UserError (the command line).
         bool unknownPassIsError = true;
