@@ -11,6 +11,7 @@
 #include "passes/tonemap_operator.h"
 #include "passes/shading_model.h"
 #include "ui/viewer_panels.h"
+#include "vk/device_profile.h"
 
 #include <array>
 #include <optional>
@@ -32,6 +33,7 @@ struct CommonOptions {
     bool verbose = false;          // --verbose
     bool quiet = false;            // --quiet: no progress lines
     uint32_t memoryBudgetMib = 0;  // --memory-budget MIB (0: the device's memory)
+    std::optional<vk::DeviceProfile> deviceProfile;  // --device-profile NAME (unset: CANDELA_DEVICE_PROFILE)
     bool operator==(const CommonOptions&) const = default;
 };
 
@@ -90,6 +92,7 @@ struct RenderOptions {
     std::set<ui::Panel> panels;   // view: --panels A,B,... (open at start)
     bool json = false;            // bench: --json
     std::optional<uint32_t> grid;  // --grid N: N × N spheres of the built-in grid (unset: its own 7 × 7)
+    bool distinctMaterials = false;  // --distinct-materials: a material per sphere of the grid
     std::string out;              // render: --out FILE (.png, .exr, .pfm)
     uint32_t width = 0;           // --width W
     uint32_t height = 0;          // --height H

@@ -189,6 +189,10 @@ std::vector<Flag> makeFlagTable() {
                  throw UserError(flag + ": expected 1 to 1000 spheres a side, got '" + v + "'");
          },
          .example = "3"},
+        {.name = "--distinct-materials",
+         .uses = {{kRenderViewBench, "",
+                   "the built-in grid with a material of its own on every sphere (N x N materials: a stress scene)", ""}},
+         .set = [](Command& c, Str, Str) { c.render.distinctMaterials = true; }},
         {.name = "--variant",
          .uses = {{kRenderViewBench, "NAME",
                    "draw the file's KHR_materials_variants variant NAME (an unknown name is an error that lists the "
@@ -472,6 +476,17 @@ std::vector<Flag> makeFlagTable() {
          .uses = {{kAll, "SEL", "device index or case-insensitive name substring (see candela info)", ""}},
          .set = [](Command& c, Str, Str v) { c.common().device = v; },
          .example = "0"},
+        {.name = "--device-profile",
+         .uses = {{kAll, "NAME",
+                   "see the device through a profile: minimum (what Vulkan 1.3 guarantees), desktop or apple (published "
+                   "device reports) or native, the device itself [CANDELA_DEVICE_PROFILE, else native]",
+                   ""}},
+         .set = [](Command& c, Str flag, Str v) {
+             const std::optional<vk::DeviceProfile> profile = vk::parseDeviceProfile(v);
+             if (!profile) throw UserError(flag + ": no device profile '" + v + "' (profiles: " + vk::deviceProfileList() + ")");
+             c.common().deviceProfile = *profile;
+         },
+         .example = "minimum"},
         {.name = "--validate",
          .uses = {{kAll, "", "Khronos validation with synchronization validation (also CANDELA_VALIDATE=1)", ""}},
          .set = [](Command& c, Str, Str) { c.common().validate = true; }},

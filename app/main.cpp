@@ -26,13 +26,13 @@ vk::ContextDesc contextDesc(const CommonOptions& common) {
     log::setVerbose(common.verbose);
     return {.validation = common.validate,
             .deviceSelector = common.device,
-            .deviceMemoryBudget = uint64_t(common.memoryBudgetMib) << 20};
+            .deviceMemoryBudget = uint64_t(common.memoryBudgetMib) << 20,
+            .profile = common.deviceProfile};
 }
 
 scene::Scene loadScene(const RenderOptions& options) {
     scene::Scene scene = !options.scene.empty() ? scene::loadGltf(options.scene, {.sceneIndex = options.sceneIndex})
-                         : options.grid     ? scene::makeSphereGrid(*options.grid)
-                                            : scene::makeSphereGrid();
+                                            : scene::makeSphereGrid(options.grid.value_or(7), options.distinctMaterials);
     for (const std::string& warning : scene.warnings) log::warn(options.scene + ": " + warning);
     for (const std::string& note : scene.notes) log::info(options.scene + ": " + note);
     if (!options.variant.empty()) scene::selectVariant(scene, scene::variantIndex(scene, options.variant));
@@ -203,8 +203,26 @@ int runInfo(const InfoOptions& options) {
                                           : "not supported");
     const vk::MsaaChoice msaa = vk::chooseMsaa(context.properties().deviceType, context.attachmentSampleCounts(), std::nullopt);
     std::printf("  MSAA: %s; supported: %s\n", msaa.reason.c_str(), vk::sampleCountList(context.attachmentSampleCounts()).c_str());
+    const vk::DeviceCaps& caps = context.caps();
+    std::printf("  device profile: %s (%s)\n", r.profile.c_str(), vk::deviceProfileSource(context.profile()));
+    std::printf("  per-stage limits: %u samplers, %u sampled images, %u storage buffers, %u storage images\n",
+                caps.limits.maxPerStageDescriptorSamplers, caps.limits.maxPerStageDescriptorSampledImages,
+                caps.limits.maxPerStageDescriptorStorageBuffers, caps.limits.maxPerStageDescriptorStorageImages);
+    std::printf("  sizes: storage buffer range %s, allocation %s, buffer %s, 2D image %u\n",
+                formatBytes(caps.limits.maxStorageBufferRange).c_str(), formatBytes(caps.limits.maxMemoryAllocationSize).c_str(),
+                formatBytes(caps.limits.maxBufferSize).c_str(), caps.limits.maxImageDimension2D);
+    std::printf("  memory: %s\n", caps.hasMemoryType(VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT)
+                                      ? "lazily allocated memory for transient attachments"
+                                      : "no lazily allocated memory");
+    std::printf("  fallbacks:");
+    if (context.choices().fallbacks.empty()) std::printf(" none (the device has every format feature Candela prefers)");
+    std::printf("\n");
+    for (const std::string& f : context.choices().fallbacks) std::printf("    %s\n", f.c_str());
     std::printf("  features enabled:");
     for (const std::string& f : r.enabledFeatures) std::printf(" %s", f.c_str());
+    std::printf("\n  extensions enabled:");
+    if (r.enabledExtensions.empty()) std::printf(" (none)");
+    for (const std::string& e : r.enabledExtensions) std::printf(" %s", e.c_str());
     std::printf("\n  layers enabled:");
     if (r.enabledLayers.empty()) std::printf(" (none)");
     for (const std::string& l : r.enabledLayers) std::printf(" %s", l.c_str());

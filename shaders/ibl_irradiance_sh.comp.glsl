@@ -29,7 +29,7 @@ void main() {
         uint x = t % push.faceSize;
         uint y = (t % faceTexels) / push.faceSize;
         vec3 d = normalize(cubeFaceDirection(face, (vec2(x, y) + 0.5f) / float(push.faceSize)));
-        vec3 radiance = textureLod(source, d, push.lod).rgb * cubeTexelSolidAngle(x, y, push.faceSize);
+        vec3 radiance = textureLod(source, d, push.lod).rgb * push.inverseScale * cubeTexelSolidAngle(x, y, push.faceSize);
         for (uint c = 0u; c < 9u; ++c) sum[c] += radiance * shBasis(c, d);
     }
     for (uint c = 0u; c < 9u; ++c) partial[tid][c] = sum[c];

@@ -41,7 +41,7 @@ std::pair<uint32_t, uint32_t> appendUvSphere(Scene& scene, float radius, uint32_
     return {firstIndex, static_cast<uint32_t>(scene.indices.size()) - firstIndex};
 }
 
-Scene makeSphereGrid(uint32_t side) {
+Scene makeSphereGrid(uint32_t side, bool materialPerSphere) {
     constexpr int kRows = 7, kColumns = 7;  // the materials
     constexpr float kSpacing = 2.5f;
     if (side == 0) throw std::invalid_argument("makeSphereGrid: a grid of 0 spheres");
@@ -73,13 +73,24 @@ Scene makeSphereGrid(uint32_t side) {
             material.roughnessFactor = glm::clamp(static_cast<float>(row) / (kRows - 1), 0.05f, 1.0f);
             scene.materials.push_back(material);
         }
+    const std::vector<Material> cells = std::move(scene.materials);
+    scene.materials = materialPerSphere ? std::vector<Material>{} : cells;
     for (uint32_t row = 0; row < side; ++row)
         for (uint32_t column = 0; column < side; ++column) {
             Draw draw;
             draw.firstIndex = firstIndex;
             draw.indexCount = indexCount;
-            // Sphere (row, column) wears the material of its part of the 7 × 7 grid.
+            // Sphere (row, column) wears the material of its part of the 7 × 7 grid, or a copy of
+            // it in a colour of its own.
             draw.material = row * kRows / side * kColumns + column * kColumns / side;
+            if (materialPerSphere) {
+                Material own = cells[draw.material];
+                draw.material = static_cast<uint32_t>(scene.materials.size());
+                own.name = "sphere " + std::to_string(draw.material);
+                own.baseColorFactor = glm::vec4(0.05f, 0.05f, 0.05f, 1.0f);
+                own.baseColorFactor[draw.material % 3] = 0.8f;
+                scene.materials.push_back(std::move(own));
+            }
             const float centre = (float(side) - 1.0f) / 2.0f;
             const glm::vec3 offset((float(column) - centre) * kSpacing, (float(row) - centre) * kSpacing, 0.0f);
             draw.world = glm::translate(glm::mat4(1.0f), offset);

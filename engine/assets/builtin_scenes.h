@@ -11,8 +11,11 @@ namespace candela::scene {
 // The spheres (64 × 32) have levels of detail: 24 × 12, 20 × 10, 16 × 8, 12 × 6 and 8 × 4.
 // With `side` other than 7: side × side spheres over the same 7 × 7 materials (each sphere wearing
 // its part of the grid's), the lights as far out, relative to the grid, and as bright where the
-// spheres are (`bench --grid N`). Throws std::invalid_argument for side 0.
-Scene makeSphereGrid(uint32_t side = 7);
+// spheres are (`bench --grid N`). With `materialPerSphere` every sphere wears a material of its
+// own (side² materials, a stress scene: --distinct-materials): its grid cell's metallic and
+// roughness, and a base colour cycling red, green, blue by material index. Throws
+// std::invalid_argument for side 0.
+Scene makeSphereGrid(uint32_t side = 7, bool materialPerSphere = false);
 
 // Appends a UV sphere (sectors around Y, stacks from +Y to −Y) with normals, tangents along +φ
 // and UVs, to `scene`'s vertex and index arrays; returns the first index and index count.

@@ -73,7 +73,7 @@ void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
         texels.emplace_back(float(i % env.width), float(i / env.width), 0.0f, 0.0f);
         texels.emplace_back(env.rgb[size_t(i) * 3], env.rgb[size_t(i) * 3 + 1], env.rgb[size_t(i) * 3 + 2], 0.0f);
     }
-    mReferenceEquirect = vk::Image(mContext, {.width = env.width, .height = env.height, .format = kFloatCubeFormat,
+    mReferenceEquirect = vk::Image(mContext, {.width = env.width, .height = env.height, .format = kEquirectFormat,
                                               .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                               .name = "ibl_reference_equirect"});
     mReferenceTexels = vk::Buffer(mContext, {.size = texels.size() * sizeof(glm::vec4),
@@ -116,7 +116,8 @@ void IblMaps::createMaps(const IblQuality& q) {
                                         .name = "ibl_sh"});
     }
     if (!mLut.image || mLut.image.desc().width != q.lutSize) {
-        mLut.image = vk::Image(mContext, {.width = q.lutSize, .height = q.lutSize, .format = kLutFormat, .usage = usage,
+        mLut.image = vk::Image(mContext, {.width = q.lutSize, .height = q.lutSize,
+                                          .format = passes::IblBrdfLutPass::format(mContext), .usage = usage,
                                           .name = "ibl_brdf_lut"});
         mLutComputedFor.clear();
     }
@@ -124,10 +125,13 @@ void IblMaps::createMaps(const IblQuality& q) {
 }
 
 void IblMaps::createPrecomputeInputs(const scene::Environment& env) {
-    mEquirect = vk::Image(mContext, {.width = env.width, .height = env.height, .format = kFloatCubeFormat,
+    mEquirect = vk::Image(mContext, {.width = env.width, .height = env.height, .format = kEquirectFormat,
                                      .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                      .name = "ibl_equirect"});
     const std::vector<float> rgba = rgbaTexels(env);
+    float brightest = 0.0f;
+    for (size_t i = 0; i < rgba.size(); i += 4) brightest = std::max({brightest, rgba[i], rgba[i + 1], rgba[i + 2]});
+    mFloatCubeScale = passes::IblCubemapPass::floatCubeScale(mContext, brightest);
     vk::Uploader upload(mContext);
     upload.image(mEquirect, std::as_bytes(std::span(rgba)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     upload.submitAndWait();
@@ -135,7 +139,7 @@ void IblMaps::createPrecomputeInputs(const scene::Environment& env) {
     const uint32_t size = mQuality.cubeSize;
     const uint32_t mips = static_cast<uint32_t>(std::bit_width(size));
     mFloatCube.image = vk::Image(mContext, {.width = size, .height = size, .mipLevels = mips, .arrayLayers = 6,
-                                            .format = kFloatCubeFormat,
+                                            .format = mContext.choices().floatCube,
                                             .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
                                             .cube = true, .name = "ibl_float_cube"});
     mFloatCube.mipViews = mFloatCube.image.createMipViews();
@@ -246,15 +250,19 @@ passes::IblHandles IblMaps::addToGraph(RenderGraph& graph, ImportBindings& impor
     const TextureId equirect = import(graph, imports, "ibl_equirect", mEquirect, {}, kUploadedState, {});
     const TextureId cube = import(graph, imports, "ibl_float_cube", mFloatCube.image, mFloatCube.mipViews, {}, {});
     const passes::IblCubemapPass::Outputs resampled =
-        mCubemapPass->add(graph, {.equirect = equirect, .cube = cube, .specular = maps.specular});
-    maps.specular = mPrefilterPass->add(graph, {.source = resampled.cube, .specular = resampled.specular});
-    if (maps.sheen.valid()) maps.sheen = mSheenPass->add(graph, {.source = resampled.cube, .specular = maps.sheen});
+        mCubemapPass->add(graph, {.equirect = equirect, .cube = cube, .specular = maps.specular, .cubeScale = mFloatCubeScale});
+    const float scale = mFloatCubeScale;
+    maps.specular = mPrefilterPass->add(graph, {.source = resampled.cube, .specular = resampled.specular, .sourceScale = scale});
+    if (maps.sheen.valid())
+        maps.sheen = mSheenPass->add(graph, {.source = resampled.cube, .specular = maps.sheen, .sourceScale = scale});
     if (mQuality.irradiance == IrradianceMode::Sh9)
         maps.sh = mShPass->add(graph, {.source = resampled.cube,
                                        .projectedFaceSize = mQuality.shSourceSize,
-                                       .coefficients = maps.sh});
+                                       .coefficients = maps.sh,
+                                       .sourceScale = scale});
     else
-        maps.irradianceCube = mIrradianceCubePass->add(graph, {.source = resampled.cube, .irradiance = maps.irradianceCube});
+        maps.irradianceCube = mIrradianceCubePass->add(
+            graph, {.source = resampled.cube, .irradiance = maps.irradianceCube, .sourceScale = scale});
     return maps;
 }
 

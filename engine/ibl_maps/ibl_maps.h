@@ -104,8 +104,9 @@ public:
 
     // Placeholders' and maps' formats.
     static constexpr VkFormat kSpecularFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-    static constexpr VkFormat kFloatCubeFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-    static constexpr VkFormat kLutFormat = VK_FORMAT_R16G16_SFLOAT;
+    // The environment's equirectangular upload (read with texelFetch: no filtering needed). The
+    // float cube's and the LUT's formats depend on the device (vk::DeviceChoices).
+    static constexpr VkFormat kEquirectFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
     // The sheen cube's face: 64 texels (the sheen lobe is broad), or more when the levels need it.
     static uint32_t sheenFaceSize(const IblQuality& quality);
     static constexpr uint32_t kSheenSamples = 64;  // Charlie samples per texel of sheen mip 0 (4× per coarser mip)
@@ -148,6 +149,7 @@ private:
     // Precompute inputs, alive from setEnvironment until the frame that used them completed.
     vk::Image mEquirect;
     Target mFloatCube;
+    float mFloatCubeScale = 1.0f;  // the float cube holds radiance × this (IblCubemapPass::floatCubeScale)
     // Passes (created with the first environment).
     std::unique_ptr<passes::IblCubemapPass> mCubemapPass;
     std::unique_ptr<passes::IblPrefilterPass> mPrefilterPass;

@@ -13,14 +13,14 @@ SheenLut::~SheenLut() = default;
 
 TextureId SheenLut::addToGraph(RenderGraph& graph, ImportBindings& imports) {
     if (!mImage) {
-        mImage = vk::Image(mContext, {.width = kSize, .height = kSize, .format = passes::IblSheenLutPass::kFormat,
+        mImage = vk::Image(mContext, {.width = kSize, .height = kSize, .format = passes::IblSheenLutPass::format(mContext),
                                       .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
                                                VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                       .name = "ibl_sheen_lut"});
         mPass = std::make_unique<passes::IblSheenLutPass>(mContext);
     }
     const TextureId lut = graph.importTexture("ibl_sheen_lut",
-                                              {.width = kSize, .height = kSize, .format = passes::IblSheenLutPass::kFormat},
+                                              {.width = kSize, .height = kSize, .format = passes::IblSheenLutPass::format(mContext)},
                                               mComputed ? IblMaps::kRestState : ResourceState{}, IblMaps::kRestState);
     imports.bind(lut, mImage.handle(), mImage.view(), {});
     mAdded = !mComputed;

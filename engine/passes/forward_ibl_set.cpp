@@ -31,7 +31,7 @@ ForwardIblSet::ForwardIblSet(vk::Context& context)
       mNearest(vk::createSampler(context, vk::kNearestSampler)) {
     mPlaceholderCube = vk::Image(context, {.width = 1, .height = 1, .arrayLayers = 6, .format = kCubeFormat,
                                           .usage = kUsage, .cube = true, .name = "ibl_placeholder_cube"});
-    mPlaceholderLut = vk::Image(context, {.format = IblBrdfLutPass::kFormat, .usage = kUsage, .name = "ibl_placeholder_lut"});
+    mPlaceholderLut = vk::Image(context, {.format = IblBrdfLutPass::format(context), .usage = kUsage, .name = "ibl_placeholder_lut"});
     mPlaceholderSh = vk::Buffer(context, {.size = IblIrradianceShPass::kBytes,
                                           .usage = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                           .name = "ibl_placeholder_sh"});
@@ -42,7 +42,7 @@ ForwardIblSet::ForwardIblSet(vk::Context& context)
     vk::Uploader upload(context);
     for (uint32_t face = 0; face < 6; ++face)
         upload.image(mPlaceholderCube, zeros(8), 0, face, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    upload.image(mPlaceholderLut, zeros(4), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    upload.image(mPlaceholderLut, zeros(formatTexelSize(mPlaceholderLut.desc().format)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     upload.buffer(mPlaceholderSh, zeros(IblIrradianceShPass::kBytes));
     upload.image(mPlaceholderEquirect, zeros(16), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     upload.buffer(mPlaceholderTexels, zeros(16));

@@ -17,14 +17,14 @@ ForwardLayerSet::ForwardLayerSet(vk::Context& context) : mLinear(vk::createSampl
     constexpr VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     mPlaceholderCube = vk::Image(context, {.width = 1, .height = 1, .arrayLayers = 6, .format = VK_FORMAT_R16G16B16A16_SFLOAT,
                                           .usage = usage, .cube = true, .name = "layer_placeholder_cube"});
-    mPlaceholderLut = vk::Image(context, {.format = IblSheenLutPass::kFormat, .usage = usage, .name = "layer_placeholder_lut"});
+    mPlaceholderLut = vk::Image(context, {.format = IblSheenLutPass::format(context), .usage = usage, .name = "layer_placeholder_lut"});
     mPlaceholderBackground =
         vk::Image(context, {.format = VK_FORMAT_R16G16B16A16_SFLOAT, .usage = usage, .name = "layer_placeholder_background"});
     static const std::array<std::byte, 8> zeros{};
     vk::Uploader upload(context);
     for (uint32_t face = 0; face < 6; ++face)
         upload.image(mPlaceholderCube, std::span(zeros), 0, face, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    upload.image(mPlaceholderLut, std::span(zeros).first(4), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    upload.image(mPlaceholderLut, std::span(zeros).first(graph::formatTexelSize(mPlaceholderLut.desc().format)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     upload.image(mPlaceholderBackground, std::span(zeros), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     upload.submitAndWait();
 }

@@ -70,6 +70,14 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene, const MaterialKeys& 
     mMaterialSets.clear();
     // Every variant has the same set layouts, so sets written for one pipeline fit them all.
     const vk::Pipeline& any = pipeline(ForwardVariant{});
+    // One pool for the scene's sets: the scene set and a material set per material (layered
+    // materials' sets follow the layered layout).
+    vk::DescriptorCounts total = vk::DescriptorCounts::ofSet(any.program(), 0);
+    for (uint32_t material = 0; material < gpuScene.scene().materials.size(); ++material) {
+        const uint32_t layers = keys[material].layers;
+        total += vk::DescriptorCounts::ofSet(layers ? pipeline(ForwardVariant{.layers = layers}).program() : any.program(), 1);
+    }
+    mSets->reserve(total);
     mSceneSet = vk::DescriptorWriter(any.program(), 0)
                     .buffer(ForwardBlock<shading::LightData>::name, gpuScene.lightBuffer())
                     .buffer(ForwardBlock<shading::DrawData>::name, gpuScene.drawBuffer())

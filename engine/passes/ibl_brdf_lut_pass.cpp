@@ -7,7 +7,11 @@ namespace candela::passes {
 
 using namespace graph;
 
-IblBrdfLutPass::IblBrdfLutPass(vk::Context& context) : mPipeline(vk::Pipeline::compute(context, "ibl_brdf_lut.comp")) {}
+IblBrdfLutPass::IblBrdfLutPass(vk::Context& context)
+    : mPipeline(vk::Pipeline::compute(context, format(context) == VK_FORMAT_R16G16_SFLOAT ? "ibl_brdf_lut.comp"
+                                                                                           : "ibl_brdf_lut_rgba16f.comp")) {}
+
+VkFormat IblBrdfLutPass::format(const vk::Context& context) { return context.choices().brdfLut; }
 
 TextureId addLutPass(RenderGraph& graph, const char* name, const vk::Pipeline& pipeline, TextureId lut, uint32_t samples) {
     struct Data {

@@ -10,9 +10,19 @@ namespace candela::passes {
 
 using namespace graph;
 
+namespace {
+bool halfCube(const vk::Context& context) { return context.choices().floatCube == VK_FORMAT_R16G16B16A16_SFLOAT; }
+}  // namespace
+
+float IblCubemapPass::floatCubeScale(const vk::Context& context, float brightest) {
+    if (!halfCube(context) || !(brightest > CANDELA_HALF_MAX)) return 1.0f;
+    return std::exp2(-std::ceil(std::log2(brightest / CANDELA_HALF_MAX)));
+}
+
 IblCubemapPass::IblCubemapPass(vk::Context& context)
-    : mResample(vk::Pipeline::compute(context, "ibl_cubemap.comp")),
-      mDownsample(vk::Pipeline::compute(context, "ibl_cube_downsample.comp")),
+    : mResample(vk::Pipeline::compute(context, halfCube(context) ? "ibl_cubemap_half.comp" : "ibl_cubemap.comp")),
+      mDownsample(vk::Pipeline::compute(context, halfCube(context) ? "ibl_cube_downsample_half.comp"
+                                                                   : "ibl_cube_downsample.comp")),
       mSampler(vk::createSampler(context, vk::kNearestSampler)) {}
 
 uint32_t IblCubemapPass::supersampleFactor(uint32_t faceSize, uint32_t equirectWidth, uint32_t equirectHeight) {
@@ -34,12 +44,13 @@ IblCubemapPass::Outputs IblCubemapPass::add(RenderGraph& graph, const Inputs& in
             d.cube = builder.write(in.cube, Usage::StorageReadWrite, WriteMode::Discard);
             d.specular = builder.write(in.specular, Usage::StorageWrite, WriteMode::Discard);
         },
-        [this](const Data& d, PassContext& ctx) {
+        [this, cubeScale = in.cubeScale](const Data& d, PassContext& ctx) {
             const TextureDesc& equirect = ctx.desc(d.equirect);
             const TextureDesc& cube = ctx.desc(d.cube);
             const shading::IblCubemapPush push{
                 .faceSize = cube.width,
-                .supersample = supersampleFactor(cube.width, equirect.width, equirect.height)};
+                .supersample = supersampleFactor(cube.width, equirect.width, equirect.height),
+                .cubeScale = cubeScale};
             const VkDescriptorSet set =
                 vk::DescriptorWriter(mResample.program(), 0)
                     .image("equirect", ctx.view(d.equirect), ctx.layout(d.equirect), mSampler.get())

@@ -17,9 +17,13 @@ public:
 
     struct Inputs {
         graph::TextureId equirect;  // RGBA32F equirectangular map, rotation 0
-        // RGBA32F cube, all mips written (contents discarded); an imported one needs its mip views bound.
+        // Float cube (DeviceChoices::floatCube), all mips written (contents discarded); an imported
+        // one needs its mip views bound.
         graph::TextureId cube;
         graph::TextureId specular;  // RGBA16F cube of the same face size; mip 0 written (contents discarded)
+        // The float cube holds radiance × cubeScale (a power of two: exact): below 1 when a
+        // half-float cube (floatCubeScale) would overflow. The specular cube holds radiance.
+        float cubeScale = 1.0f;
     };
     struct Outputs {
         graph::TextureId cube;
@@ -30,6 +34,11 @@ public:
 
     // k of the k×k taps per cube texel: enough that the taps' spacing matches the source texels.
     static uint32_t supersampleFactor(uint32_t faceSize, uint32_t equirectWidth, uint32_t equirectHeight);
+    // Inputs::cubeScale for an environment whose brightest texel is `brightest`: 1 with an RGBA32F
+    // float cube; with the RGBA16F fallback, the largest power of two ≤ 1 that keeps it under the
+    // half-float maximum (dark texels then lose precision below 2^-24 × 1/scale instead of the
+    // brightest overflowing).
+    static float floatCubeScale(const vk::Context& context, float brightest);
 
 private:
     vk::Pipeline mResample;

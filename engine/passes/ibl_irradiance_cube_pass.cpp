@@ -40,12 +40,12 @@ TextureId IblIrradianceCubePass::add(RenderGraph& graph, const Inputs& in) const
             d.source = builder.sample(in.source);
             d.irradiance = builder.write(in.irradiance, Usage::StorageWrite, WriteMode::Discard);
         },
-        [this](const Data& d, PassContext& ctx) {
+        [this, inverseScale = 1.0f / in.sourceScale](const Data& d, PassContext& ctx) {
             const uint32_t faceSize = ctx.desc(d.irradiance).width;
             const shading::IblFilterPush push{.faceSize = faceSize,
                                               .firstSample = 0,
                                               .sampleCount = mSampleCount,
-                                              .inverseWeight = mInverseWeight};
+                                              .inverseWeight = mInverseWeight * inverseScale};
             const VkDescriptorSet set =
                 vk::DescriptorWriter(mPipeline.program(), 0)
                     .image("source", ctx.view(d.source), ctx.layout(d.source), mSampler.get())

@@ -23,6 +23,7 @@ public:
         graph::TextureId source;  // float environment cube
         // RGBA16F cube, one mip, contents discarded; an imported one needs its mip view bound.
         graph::TextureId irradiance;
+        float sourceScale = 1.0f;  // the source holds radiance × sourceScale (IblCubemapPass::Inputs::cubeScale)
     };
     // Adds the pass; returns the irradiance cube's new version. The pass object must outlive execution.
     graph::TextureId add(graph::RenderGraph& graph, const Inputs& inputs) const;

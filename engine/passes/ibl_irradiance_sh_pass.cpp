@@ -23,9 +23,9 @@ BufferId IblIrradianceShPass::add(RenderGraph& graph, const Inputs& in) const {
             d.source = builder.sample(in.source);
             d.coefficients = builder.write(in.coefficients, Usage::StorageWrite, WriteMode::Discard);
         },
-        [this, projected = in.projectedFaceSize](const Data& d, PassContext& ctx) {
+        [this, projected = in.projectedFaceSize, inverseScale = 1.0f / in.sourceScale](const Data& d, PassContext& ctx) {
             const uint32_t lod = std::countr_zero(ctx.desc(d.source).width) - std::countr_zero(projected);
-            const shading::IblShPush push{.faceSize = projected, .lod = float(lod)};
+            const shading::IblShPush push{.faceSize = projected, .lod = float(lod), .inverseScale = inverseScale};
             const VkDescriptorSet set =
                 vk::DescriptorWriter(mPipeline.program(), 0)
                     .image("source", ctx.view(d.source), ctx.layout(d.source), mSampler.get())

@@ -17,6 +17,7 @@ public:
         graph::TextureId source;  // float environment cube (face size a power of two)
         uint32_t projectedFaceSize;  // face size of the mip projected (a power of two ≤ sourceFaceSize)
         graph::BufferId coefficients;  // ≥ kBytes, storage usage; contents discarded
+        float sourceScale = 1.0f;      // the source holds radiance × sourceScale (IblCubemapPass::Inputs::cubeScale)
     };
     // Adds the pass; returns the buffer's new version. The pass object must outlive execution.
     graph::BufferId add(graph::RenderGraph& graph, const Inputs& inputs) const;

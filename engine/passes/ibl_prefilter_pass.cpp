@@ -56,13 +56,13 @@ TextureId IblPrefilterPass::add(RenderGraph& graph, const Inputs& in) const {
             d.specular = builder.write(in.specular, Usage::StorageWrite,
                                        mLobe == Lobe::Ggx ? WriteMode::Preserve : WriteMode::Discard);
         },
-        [this](const Data& d, PassContext& ctx) {
+        [this, inverseScale = 1.0f / in.sourceScale](const Data& d, PassContext& ctx) {
             const uint32_t faceSize = ctx.desc(d.specular).width;
             for (uint32_t mip = firstMip(); mip < ctx.desc(d.specular).mipLevels && mip < mRanges.size(); ++mip) {
                 const shading::IblFilterPush push{.faceSize = std::max(faceSize >> mip, 1u),
                                                   .firstSample = mRanges[mip].first,
                                                   .sampleCount = mRanges[mip].count,
-                                                  .inverseWeight = mRanges[mip].inverseWeight};
+                                                  .inverseWeight = mRanges[mip].inverseWeight * inverseScale};
                 const VkDescriptorSet set =
                     vk::DescriptorWriter(mPipeline.program(), 0)
                         .image("source", ctx.view(d.source), ctx.layout(d.source), mSampler.get())

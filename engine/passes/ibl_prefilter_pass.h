@@ -33,6 +33,7 @@ public:
         // RGBA16F cube, one mip per level (GGX: mip 0 already written); an imported one needs its
         // mip views bound.
         graph::TextureId specular;
+        float sourceScale = 1.0f;  // the source holds radiance × sourceScale (IblCubemapPass::Inputs::cubeScale)
     };
     static constexpr uint32_t kMaxSamples = 4096;
 

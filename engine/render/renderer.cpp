@@ -23,7 +23,7 @@ Renderer::Renderer(vk::Context& context, RendererOptions options)
 Renderer::~Renderer() { mRunner.waitIdle(); }
 
 void Renderer::validateSettings(const RenderSettings& settings) const {
-    const uint32_t limit = mContext.properties().limits.maxImageDimension2D;
+    const uint32_t limit = mContext.caps().limits.maxImageDimension2D;
     if (settings.width == 0 || settings.height == 0)
         throw UserError("image size must be at least 1x1 (got " + std::to_string(settings.width) + "x" +
                         std::to_string(settings.height) + ")");

@@ -2,6 +2,7 @@
 
 #include "core/log.h"
 #include "vk/check.h"
+#include "vk/device_choices.h"
 #include "vk/device_select.h"
 
 #include <algorithm>
@@ -50,19 +51,25 @@ bool hasDeviceExtension(VkPhysicalDevice device, const char* name) {
                        [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
-// Why a device cannot run Candela, or "" if it can.
-std::string unsuitableReason(VkInstance instance, VkPhysicalDevice device, const PresentSupportFn& presentSupport) {
+// Why a device cannot run Candela seen through `profile`, or "" if it can.
+std::string unsuitableReason(VkInstance instance, VkPhysicalDevice device, const PresentSupportFn& presentSupport,
+                             DeviceProfile profile) {
     VkPhysicalDeviceProperties properties;
     vkGetPhysicalDeviceProperties(device, &properties);
     if (properties.apiVersion < VK_API_VERSION_1_3) return "Vulkan " + versionString(properties.apiVersion) + " < 1.3";
     VkPhysicalDeviceVulkan13Features features13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &features13};
+    VkPhysicalDeviceVulkan12Features features12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+                                                .pNext = &features13};
+    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &features12};
     vkGetPhysicalDeviceFeatures2(device, &features);
+    if (!features12.separateDepthStencilLayouts) return "no separateDepthStencilLayouts";
     if (!features13.dynamicRendering) return "no dynamicRendering";
     if (!features13.synchronization2) return "no synchronization2";
     if (!features13.maintenance4) return "no maintenance4";
     if (!features13.shaderDemoteToHelperInvocation) return "no shaderDemoteToHelperInvocation";
     if (presentSupport && !hasDeviceExtension(device, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) return "no VK_KHR_swapchain";
+    if (std::string missing = missingCapability(narrowCaps(queryDeviceCaps(device), profile)); !missing.empty())
+        return missing;
     try {
         chooseQueueFamilies(queueFamilies(device), presentFamilies(instance, device, presentSupport));
     } catch (const std::exception& e) {
@@ -89,7 +96,8 @@ Context::DeviceOwner::~DeviceOwner() {
 Context::Context(const ContextDesc& desc)
     : mValidation(desc.validation || envFlag("CANDELA_VALIDATE")),
       mPrintValidation(desc.printValidationMessages),
-      mOnValidation(desc.onValidationMessage) {
+      mOnValidation(desc.onValidationMessage),
+      mProfile(desc.profile ? *desc.profile : deviceProfileFromEnvironment()) {
     const auto step = [](const char* part, auto&& run) {
         try {
             run();
@@ -103,7 +111,7 @@ Context::Context(const ContextDesc& desc)
     step("device selection", [&] { pickPhysicalDevice(desc); });
     step("device creation", [&] { createDevice(desc); });
     step("memory allocator", [&] {
-        mAllocator = std::make_unique<MemoryAllocator>(mPhysicalDevice, mDevice.handle);
+        mAllocator = std::make_unique<MemoryAllocator>(mPhysicalDevice, mDevice.handle, mCaps.memoryTypeMask);
         mAllocator->setBudget(desc.deviceMemoryBudget);
     });
 }
@@ -202,11 +210,14 @@ void Context::pickPhysicalDevice(const ContextDesc& desc) {
     for (VkPhysicalDevice device : devices) {
         VkPhysicalDeviceProperties properties;
         vkGetPhysicalDeviceProperties(device, &properties);
-        candidates.push_back({properties.deviceName, properties.deviceType, properties.apiVersion, unsuitableReason(mInstance.handle, device, desc.presentSupport)});
+        candidates.push_back({properties.deviceName, properties.deviceType, properties.apiVersion, unsuitableReason(mInstance.handle, device, desc.presentSupport, mProfile)});
     }
     const DeviceChoice choice = chooseDevice(candidates, desc.deviceSelector);
     mPhysicalDevice = devices[choice.index];
     vkGetPhysicalDeviceProperties(mPhysicalDevice, &mProperties);
+    mCaps = narrowCaps(queryDeviceCaps(mPhysicalDevice), mProfile);
+    mChoices = chooseForDevice(mCaps);
+    mReport.profile = deviceProfileName(mProfile);
     mReport.name = mProperties.deviceName;
     mReport.type = deviceTypeName(mProperties.deviceType);
     mReport.reason = choice.reason;
@@ -231,29 +242,39 @@ void Context::createDevice(const ContextDesc& desc) {
                               .queueCount = 1,
                               .pQueuePriorities = &priority});
 
-    VkPhysicalDeviceFeatures supported{};
-    vkGetPhysicalDeviceFeatures(mPhysicalDevice, &supported);
     VkPhysicalDeviceVulkan13Features features13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
                                                 .shaderDemoteToHelperInvocation = VK_TRUE,
                                                 .synchronization2 = VK_TRUE,
                                                 .dynamicRendering = VK_TRUE,
                                                 .maintenance4 = VK_TRUE};
-    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &features13};
+    // The depth buffer's layouts (DEPTH_ATTACHMENT_OPTIMAL, DEPTH_READ_ONLY_OPTIMAL) need it.
+    VkPhysicalDeviceVulkan12Features features12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+                                                .pNext = &features13,
+                                                .separateDepthStencilLayouts = VK_TRUE};
+    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &features12};
     // Demote (not discard) for the alpha test: derivatives and implicit-LOD sampling stay defined
     // in the quad after it (required by Vulkan 1.3).
-    mReport.enabledFeatures = {"dynamicRendering", "synchronization2", "maintenance4", "shaderDemoteToHelperInvocation"};
-    if (supported.samplerAnisotropy) {
-        features.features.samplerAnisotropy = VK_TRUE;
-        mReport.enabledFeatures.emplace_back("samplerAnisotropy");
-    }
-    if (supported.alphaToOne) {
-        features.features.alphaToOne = VK_TRUE;
-        mAlphaToOne = true;
-        mReport.enabledFeatures.emplace_back("alphaToOne");
-    }
+    mReport.enabledFeatures = {"dynamicRendering", "synchronization2", "maintenance4", "shaderDemoteToHelperInvocation",
+                               "separateDepthStencilLayouts"};
+    // Optional features: enabled when the caps (narrowed by the profile) have them.
+    const DeviceFeatures& optional = mCaps.features;
+    const auto enable = [&](bool available, VkBool32& feature, const char* name) {
+        if (!available) return;
+        feature = VK_TRUE;
+        mReport.enabledFeatures.emplace_back(name);
+    };
+    enable(optional.samplerAnisotropy, features.features.samplerAnisotropy, "samplerAnisotropy");
+    enable(optional.alphaToOne, features.features.alphaToOne, "alphaToOne");
+    enable(optional.fullDrawIndexUint32, features.features.fullDrawIndexUint32, "fullDrawIndexUint32");
+    enable(optional.shaderStorageImageExtendedFormats, features.features.shaderStorageImageExtendedFormats,
+           "shaderStorageImageExtendedFormats");
+    mAlphaToOne = optional.alphaToOne;
 
     std::vector<const char*> extensions;
     if (desc.presentSupport) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    // A portability driver (MoltenVK) must have VK_KHR_portability_subset enabled when it has it.
+    if (mCaps.extensions.portabilitySubset) extensions.push_back("VK_KHR_portability_subset");
+    if (mCaps.extensions.memoryBudget) extensions.push_back(VK_EXT_MEMORY_BUDGET_EXTENSION_NAME);
     for (const char* e : extensions) mReport.enabledExtensions.emplace_back(e);
     const VkDeviceCreateInfo info{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
                                   .pNext = &features,

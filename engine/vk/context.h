@@ -6,6 +6,9 @@
 // allocator); each part is a member in that order, so a failure unwinds what was started and
 // destruction runs in reverse. The error names the part that failed.
 
+#include "vk/device_caps.h"
+#include "vk/device_choices.h"
+#include "vk/profile_caps.h"
 #include "vk/memory.h"
 
 #include <vulkan/vulkan_core.h>
@@ -15,6 +18,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +46,9 @@ struct ContextDesc {
     // Caps the device memory Candela allocates (bytes; 0: none), to simulate small devices
     // (--memory-budget). Beyond it allocations fail with OutOfDeviceMemory.
     uint64_t deviceMemoryBudget = 0;
+    // Narrows Candela's view of the device to a profile (--device-profile); unset: the profile
+    // CANDELA_DEVICE_PROFILE names, else Native.
+    std::optional<DeviceProfile> profile;
     // Set when frames will be presented to a window: the graphics queue must be able to present,
     // devices without VK_KHR_swapchain are unsuitable, and the extension is enabled.
     PresentSupportFn presentSupport;
@@ -63,6 +70,7 @@ struct DeviceReport {
     std::string reason;            // why it was chosen
     uint32_t apiVersion = 0;
     std::string driverName, driverInfo;
+    std::string profile;           // the device profile in use ("native" when none)
     std::vector<std::string> enabledFeatures;
     std::vector<std::string> enabledExtensions;
     std::vector<std::string> enabledLayers;
@@ -86,14 +94,18 @@ public:
     const QueueInfo& transferQueue() const { return mTransfer; }  // may be the graphics queue
     const VkPhysicalDeviceProperties& properties() const { return mProperties; }
     const DeviceReport& report() const { return mReport; }
+    // What Candela may use of the device, narrowed by the device profile. Every device-dependent
+    // choice reads this rather than the driver.
+    const DeviceCaps& caps() const { return mCaps; }
+    DeviceProfile profile() const { return mProfile; }
+    // The formats and fallbacks chosen from caps().
+    const DeviceChoices& choices() const { return mChoices; }
     MemoryAllocator& allocator() { return *mAllocator; }
     bool validationEnabled() const { return mValidation; }
     // Whether the alphaToOne feature is enabled (alpha to coverage that stores alpha 1).
     bool alphaToOne() const { return mAlphaToOne; }
     // The MSAA sample counts the device can render colour and depth attachments with (bits of 1, 2, 4, 8, ...).
-    VkSampleCountFlags attachmentSampleCounts() const {
-        return mProperties.limits.framebufferColorSampleCounts & mProperties.limits.framebufferDepthSampleCounts;
-    }
+    VkSampleCountFlags attachmentSampleCounts() const { return mCaps.attachmentSampleCounts(); }
 
     // Validation messages (warnings and errors) seen since creation.
     uint32_t validationMessageCount() const { return mValidationCount.load(); }
@@ -151,6 +163,7 @@ private:
     bool mPrintValidation = true;
     bool mDebugUtils = false;
     std::function<void(const ValidationMessage&)> mOnValidation;
+    DeviceProfile mProfile = DeviceProfile::Native;
     std::atomic<uint32_t> mValidationCount{0};
     mutable std::mutex mValidationMutex;
     std::vector<ValidationMessage> mValidationMessages;
@@ -158,6 +171,8 @@ private:
     MessengerOwner mMessenger;
     VkPhysicalDevice mPhysicalDevice = VK_NULL_HANDLE;
     VkPhysicalDeviceProperties mProperties{};
+    DeviceCaps mCaps;
+    DeviceChoices mChoices;
     DeviceReport mReport;
     DeviceOwner mDevice;
     QueueInfo mGraphics, mCompute, mTransfer;

@@ -7,39 +7,93 @@
 
 namespace candela::vk {
 
-void DescriptorAllocator::addPool() {
-    const VkDescriptorPoolSize sizes[] = {
-        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 256}, {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 256},
-        {VK_DESCRIPTOR_TYPE_SAMPLER, 64},                 {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 128},
-        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 128},         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 128},
-    };
-    const VkDescriptorPoolCreateInfo info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
-                                          .maxSets = 256,
-                                          .poolSizeCount = static_cast<uint32_t>(std::size(sizes)),
-                                          .pPoolSizes = sizes};
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateDescriptorPool(mContext->device(), &info, nullptr, &pool));
-    mPools.emplace_back(*mContext, pool);
+DescriptorCounts DescriptorCounts::ofSet(const Program& program, uint32_t set) {
+    DescriptorCounts counts;
+    counts.sets = 1;
+    for (const shader::DescriptorBinding& b : program.reflection().bindings) {
+        if (b.set != set) continue;
+        const auto* type = std::find(std::begin(kTypes), std::end(kTypes), b.type);
+        if (type == std::end(kTypes))
+            throw InternalError(program.name() + ": binding '" + b.name + "' has a descriptor type the pools do not hold");
+        counts.descriptors[type - std::begin(kTypes)] += b.count;
+    }
+    return counts;
 }
 
-VkDescriptorSet DescriptorAllocator::allocate(VkDescriptorSetLayout layout) {
-    for (;;) {
-        if (mCurrent == mPools.size()) addPool();
+DescriptorCounts& DescriptorCounts::operator+=(const DescriptorCounts& other) {
+    sets += other.sets;
+    for (size_t i = 0; i < kTypeCount; ++i) descriptors[i] += other.descriptors[i];
+    return *this;
+}
+
+DescriptorCounts DescriptorCounts::operator*(uint32_t times) const {
+    DescriptorCounts out;
+    out.sets = sets * times;
+    for (size_t i = 0; i < kTypeCount; ++i) out.descriptors[i] = descriptors[i] * times;
+    return out;
+}
+
+bool DescriptorCounts::holds(const DescriptorCounts& need) const {
+    if (need.sets > sets) return false;
+    for (size_t i = 0; i < kTypeCount; ++i)
+        if (need.descriptors[i] > descriptors[i]) return false;
+    return true;
+}
+
+void DescriptorAllocator::addPool(const DescriptorCounts& need) {
+    // The largest of: the default pool, twice the last pool, what reserve() announced, the request.
+    DescriptorCounts size;
+    size.sets = mPoolSets;
+    for (uint32_t& d : size.descriptors) d = mPoolSets * kDefaultPerSet;
+    if (!mPools.empty()) size = mPools.back().capacity * 2;
+    for (const DescriptorCounts* other : {static_cast<const DescriptorCounts*>(&mReserved), &need}) {
+        size.sets = std::max(size.sets, other->sets);
+        for (size_t i = 0; i < DescriptorCounts::kTypeCount; ++i)
+            size.descriptors[i] = std::max(size.descriptors[i], other->descriptors[i]);
+    }
+    mReserved = {};
+    std::vector<VkDescriptorPoolSize> sizes;
+    for (size_t i = 0; i < DescriptorCounts::kTypeCount; ++i)
+        if (size.descriptors[i] > 0) sizes.push_back({DescriptorCounts::kTypes[i], size.descriptors[i]});
+    const VkDescriptorPoolCreateInfo info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
+                                          .maxSets = size.sets,
+                                          .poolSizeCount = static_cast<uint32_t>(sizes.size()),
+                                          .pPoolSizes = sizes.data()};
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateDescriptorPool(mContext->device(), &info, nullptr, &pool));
+    mPools.push_back({DescriptorPool(*mContext, pool), size, size});
+}
+
+VkDescriptorSet DescriptorAllocator::allocate(VkDescriptorSetLayout layout, const DescriptorCounts& counts) {
+    // Past pools that cannot hold the set: each pool is tried once per reset, so a full pool is
+    // left behind for good.
+    while (mCurrent < mPools.size() && !mPools[mCurrent].left.holds(counts)) ++mCurrent;
+    for (bool fresh = false;; fresh = true) {
+        if (mCurrent == mPools.size()) addPool(counts);
+        Pool& pool = mPools[mCurrent];
         const VkDescriptorSetAllocateInfo info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO,
-                                               .descriptorPool = mPools[mCurrent].get(),
+                                               .descriptorPool = pool.pool.get(),
                                                .descriptorSetCount = 1,
                                                .pSetLayouts = &layout};
         VkDescriptorSet set = VK_NULL_HANDLE;
         const VkResult result = vkAllocateDescriptorSets(mContext->device(), &info, &set);
-        if (result == VK_SUCCESS) return set;
-        // A full pool is not an error: move on to the next one (created on demand).
+        if (result == VK_SUCCESS) {
+            pool.left.sets -= counts.sets;
+            for (size_t i = 0; i < DescriptorCounts::kTypeCount; ++i) pool.left.descriptors[i] -= counts.descriptors[i];
+            return set;
+        }
+        // The driver may still refuse (fragmentation): move to a new pool, once.
         if (result != VK_ERROR_OUT_OF_POOL_MEMORY && result != VK_ERROR_FRAGMENTED_POOL) VK_CHECK(result);
-        if (++mCurrent > 64) throw InternalError("descriptor set layout does not fit an empty pool");
+        if (fresh) VK_CHECK(result);
+        mCurrent = mPools.size();
     }
 }
 
 void DescriptorAllocator::reset() {
-    for (DescriptorPool& pool : mPools) VK_CHECK(vkResetDescriptorPool(mContext->device(), pool.get(), 0));
+    for (Pool& pool : mPools) {
+        VK_CHECK(vkResetDescriptorPool(mContext->device(), pool.pool.get(), 0));
+        pool.left = pool.capacity;
+    }
     mCurrent = 0;
 }
 
@@ -79,7 +133,7 @@ VkDescriptorSet DescriptorWriter::commit(Context& context, DescriptorAllocator& 
             throw InternalError(mProgram->name() + ": binding '" + b.name + "' (set " + std::to_string(mSet) +
                                    ", binding " + std::to_string(b.binding) + ") was not written");
     }
-    const VkDescriptorSet set = allocator.allocate(mProgram->setLayout(mSet));
+    const VkDescriptorSet set = allocator.allocate(mProgram->setLayout(mSet), DescriptorCounts::ofSet(*mProgram, mSet));
     std::vector<VkWriteDescriptorSet> writes;
     writes.reserve(mWrites.size());
     for (const Pending& p : mWrites) {

@@ -7,23 +7,65 @@
 #include "vk/handle.h"
 #include "vk/pipeline.h"
 
+#include <iterator>
 #include <string_view>
 #include <vector>
 
 namespace candela::vk {
 
+// The descriptors one or more sets take, by type (the pool sizes a set layout needs).
+struct DescriptorCounts {
+    // The descriptor types Candela's programs use; a pool holds only these.
+    static constexpr VkDescriptorType kTypes[] = {
+        VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_DESCRIPTOR_TYPE_SAMPLER,
+        VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,          VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+    static constexpr size_t kTypeCount = std::size(kTypes);
+
+    uint32_t sets = 0;
+    uint32_t descriptors[kTypeCount] = {};
+
+    // The counts of one set of `program`'s layout `set`. Throws InternalError for a descriptor
+    // type outside kTypes.
+    static DescriptorCounts ofSet(const Program& program, uint32_t set);
+    DescriptorCounts& operator+=(const DescriptorCounts& other);
+    DescriptorCounts operator*(uint32_t times) const;
+    // Whether `need` fits in what is left of these counts.
+    bool holds(const DescriptorCounts& need) const;
+};
+
+// Hands out descriptor sets from pools. It tracks what each pool has left itself and moves to the
+// next pool before a pool would overflow, so running out of a pool is the same on every device
+// (lavapipe never checks pool capacity; AMD and Intel fail the allocation). There is no cap: a
+// new pool is made when none has room, sized for the request, for what reserve() announced, or
+// twice the previous pool, whichever is largest.
 class DescriptorAllocator {
 public:
-    explicit DescriptorAllocator(Context& context) : mContext(&context) {}
-    // Allocates a set; grows by another pool when the current one is full.
-    VkDescriptorSet allocate(VkDescriptorSetLayout layout);
+    // `poolSets`: the sets of the first pool (its descriptors: kDefaultPerSet of each type per set).
+    explicit DescriptorAllocator(Context& context, uint32_t poolSets = 64) : mContext(&context), mPoolSets(poolSets) {}
+    // Allocates a set of `layout`, which takes `counts` (DescriptorCounts::ofSet, sets = 1).
+    VkDescriptorSet allocate(VkDescriptorSetLayout layout, const DescriptorCounts& counts);
+    // Announces that `total` will be allocated (e.g. one set per material of a scene): the next
+    // pool made holds all of it, so a scene's sets take one pool.
+    void reserve(const DescriptorCounts& total) { mReserved = total; }
     // Recycles every set handed out. Precondition: the GPU no longer uses them.
     void reset();
+    // Pools made so far (tests).
+    size_t poolCount() const { return mPools.size(); }
+
+    // Descriptors of each type per set in a default pool.
+    static constexpr uint32_t kDefaultPerSet = 4;
 
 private:
-    void addPool();
+    struct Pool {
+        DescriptorPool pool;
+        DescriptorCounts capacity;
+        DescriptorCounts left;
+    };
+    void addPool(const DescriptorCounts& need);
     Context* mContext;
-    std::vector<DescriptorPool> mPools;
+    uint32_t mPoolSets;
+    DescriptorCounts mReserved;
+    std::vector<Pool> mPools;
     size_t mCurrent = 0;
 };
 

@@ -42,8 +42,8 @@ VkMemoryPropertyFlags preferredFlags(MemoryUsage usage) {
 
 }  // namespace
 
-MemoryAllocator::MemoryAllocator(VkPhysicalDevice physicalDevice, VkDevice device, VkDeviceSize blockSize)
-    : mPhysicalDevice(physicalDevice), mDevice(device), mBlockSize(blockSize) {
+MemoryAllocator::MemoryAllocator(VkPhysicalDevice physicalDevice, VkDevice device, uint32_t typeMask, VkDeviceSize blockSize)
+    : mPhysicalDevice(physicalDevice), mDevice(device), mTypeMask(typeMask), mBlockSize(blockSize) {
     vkGetPhysicalDeviceMemoryProperties(mPhysicalDevice, &mProperties);
 }
 
@@ -58,7 +58,7 @@ uint32_t MemoryAllocator::findMemoryType(uint32_t typeBits, MemoryUsage usage) c
     uint32_t best = ~0u;
     int bestScore = -1;
     for (uint32_t i = 0; i < mProperties.memoryTypeCount; ++i) {
-        if (!(typeBits & (1u << i))) continue;
+        if (!(typeBits & mTypeMask & (1u << i))) continue;
         const VkMemoryPropertyFlags flags = mProperties.memoryTypes[i].propertyFlags;
         if ((flags & required) != required) continue;
         const int score = __builtin_popcount(flags & preferred);

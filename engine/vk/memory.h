@@ -60,7 +60,10 @@ struct MemoryStats {
 
 class MemoryAllocator {
 public:
-    MemoryAllocator(VkPhysicalDevice physicalDevice, VkDevice device, VkDeviceSize blockSize = 64ull << 20);
+    // Allocates only from the memory types in `typeMask` (DeviceCaps::memoryTypeMask: a device
+    // profile may hide some).
+    MemoryAllocator(VkPhysicalDevice physicalDevice, VkDevice device, uint32_t typeMask = ~0u,
+                    VkDeviceSize blockSize = 64ull << 20);
     ~MemoryAllocator();
     MemoryAllocator(const MemoryAllocator&) = delete;
     MemoryAllocator& operator=(const MemoryAllocator&) = delete;
@@ -83,6 +86,7 @@ public:
 
     MemoryStats stats() const;
     const VkPhysicalDeviceMemoryProperties& properties() const { return mProperties; }
+    uint32_t typeMask() const { return mTypeMask; }
     // Index of the best memory type for `usage` among `typeBits`; throws if none fits.
     uint32_t findMemoryType(uint32_t typeBits, MemoryUsage usage) const;
 
@@ -102,6 +106,7 @@ private:
 
     VkPhysicalDevice mPhysicalDevice;
     VkDevice mDevice;
+    uint32_t mTypeMask = ~0u;
     VkDeviceSize mBlockSize;
     VkDeviceSize mBudget = 0;
     VkPhysicalDeviceMemoryProperties mProperties{};

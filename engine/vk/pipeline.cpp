@@ -3,6 +3,8 @@
 #include "core/log.h"
 #include "shader/shader_library.h"
 #include "vk/check.h"
+#include "vk/context.h"
+#include "vk/device_choices.h"
 
 
 
@@ -24,6 +26,12 @@ Program::Program(Context& context, const std::vector<std::string_view>& shaderNa
         mStages.push_back({reflections.back().stage, ShaderModule(context, module)});
     }
     mReflection = shader::mergeReflections(reflections);
+    // A program the device cannot bind is refused here, naming the limit, rather than left to the
+    // driver (lavapipe would accept it; a GPU with the limit fails or misrenders).
+    if (const std::string over = descriptorLimitViolation(mReflection.bindings, mReflection.pushConstants.size, context.caps());
+        !over.empty())
+        throw UserError(context.report().name + " (device profile " + context.report().profile + ") cannot run " + mName +
+                        ": " + over);
 
     uint32_t setCount = 0;
     for (const shader::DescriptorBinding& b : mReflection.bindings) setCount = std::max(setCount, b.set + 1);

@@ -7,10 +7,7 @@
 namespace candela::vk {
 
 Sampler createSampler(Context& context, const SamplerDesc& desc) {
-    const bool anisotropy = desc.maxAnisotropy > 1.0f && context.report().enabledFeatures.end() !=
-                                                            std::find(context.report().enabledFeatures.begin(),
-                                                                      context.report().enabledFeatures.end(),
-                                                                      "samplerAnisotropy");
+    const bool anisotropy = desc.maxAnisotropy > 1.0f && context.caps().features.samplerAnisotropy;
     const VkSamplerCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
         .magFilter = desc.filter,
@@ -20,7 +17,7 @@ Sampler createSampler(Context& context, const SamplerDesc& desc) {
         .addressModeV = desc.addressV,
         .addressModeW = desc.addressW,
         .anisotropyEnable = anisotropy ? VK_TRUE : VK_FALSE,
-        .maxAnisotropy = anisotropy ? std::min(desc.maxAnisotropy, context.properties().limits.maxSamplerAnisotropy) : 1.0f,
+        .maxAnisotropy = anisotropy ? std::min(desc.maxAnisotropy, context.caps().limits.maxSamplerAnisotropy) : 1.0f,
         .minLod = 0.0f,
         .maxLod = desc.maxLod};
     VkSampler sampler = VK_NULL_HANDLE;

@@ -33,7 +33,8 @@ CANDELA_NAMESPACE_BEGIN
 struct IblCubemapPush {
     uint faceSize;
     uint supersample;  // k: k×k bilinear taps per cube texel (k ≥ 1), for sources finer than the cube
-    uint pad0, pad1;
+    float cubeScale;   // the float cube holds radiance × cubeScale (a power of two; < 1 keeps a half-float cube in range)
+    uint pad1;
 };
 
 // ibl_cube_downsample.comp: 2×2 box filter from one mip to the next.
@@ -55,7 +56,8 @@ struct IblFilterPush {
 struct IblShPush {
     uint faceSize;  // of the source mip read
     float lod;      // that mip's level
-    uint pad0, pad1;
+    float inverseScale;  // 1 / IblCubemapPush::cubeScale: back to radiance
+    uint pad1;
 };
 
 // ibl_brdf_lut.comp

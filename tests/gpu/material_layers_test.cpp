@@ -233,7 +233,7 @@ TEST_F(GpuTest, SheenLutMatchesTheDoubleReference) {
     const passes::IblSheenLutPass pass(context());
     GraphRunner runner(context());
     graph::RenderGraph graph;
-    const graph::TextureId lut = graph.createTexture("sheen_lut", {.width = kSize, .height = kSize, .format = passes::IblSheenLutPass::kFormat});
+    const graph::TextureId lut = graph.createTexture("sheen_lut", {.width = kSize, .height = kSize, .format = passes::IblSheenLutPass::format(context())});
     const graph::BufferId target = runner.readbackBuffer(graph, "sheen lut readback", sizeof(float) * kSize * kSize);
     passes::addReadbackPass(graph, pass.add(graph, lut), target);
     runner.run(graph);

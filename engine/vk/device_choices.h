@@ -1,0 +1,41 @@
+#pragma once
+// What Candela chooses from a device's capabilities (DeviceCaps, possibly narrowed by a profile):
+// the formats of the maps it computes, with the fallback a device takes when it lacks a format
+// feature; what a device must have at all; and whether a program's descriptors fit the per-stage
+// limits. Pure functions, unit-tested on the caps of the device profiles.
+
+#include "shader/reflection.h"
+#include "vk/device_caps.h"
+
+#include <string>
+#include <vector>
+
+namespace candela::vk {
+
+struct DeviceChoices {
+    // The environment's float cube (written by compute, sampled with linear filtering by the
+    // prefilter): RGBA32F, or RGBA16F where RGBA32F is not linearly filterable.
+    VkFormat floatCube = VK_FORMAT_R32G32B32A32_SFLOAT;
+    // The sheen albedo LUT (written by compute, sampled with linear filtering): R32F, or RGBA16F
+    // where R32F is not linearly filterable.
+    VkFormat sheenLut = VK_FORMAT_R32_SFLOAT;
+    // The BRDF LUT (written by compute, sampled with linear filtering): RG16F, or RGBA16F where
+    // RG16F cannot be a storage image (an extended storage format).
+    VkFormat brdfLut = VK_FORMAT_R16G16_SFLOAT;
+    // One line per fallback taken ("BRDF LUT: R16G16B16A16_SFLOAT instead of R16G16_SFLOAT (no
+    // STORAGE_IMAGE)"); empty when the device has everything.
+    std::vector<std::string> fallbacks;
+};
+
+DeviceChoices chooseForDevice(const DeviceCaps& caps);
+
+// Why a device cannot run Candela at all — a format feature or limit no fallback replaces — or ""
+// if it can.
+std::string missingCapability(const DeviceCaps& caps);
+
+// Whether the descriptors and push constants of `bindings` fit the device's per-stage and
+// per-pipeline limits: "" if they do, else one line naming the stage, the count and the limit.
+std::string descriptorLimitViolation(const std::vector<shader::DescriptorBinding>& bindings, uint32_t pushConstantBytes,
+                                     const DeviceCaps& caps);
+
+}  // namespace candela::vk
