@@ -105,36 +105,37 @@ void PassContext::beginRendering() const {
     VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     bool hasDepth = false;
     VkExtent2D extent{0, 0};
-    const auto attachment = [&](const AccessDecl& a, VkImageLayout layout, bool write) {
+    // Load and store operations as the graph's "attachments" step planned them: a result no later
+    // pass reads is not stored (a multisampled attachment then never leaves tile memory on GPUs
+    // that have it), and nothing is loaded that no earlier pass wrote.
+    const auto attachment = [&](const AccessDecl& a, VkImageLayout layout) {
         const TextureId id{a.resource, a.version};
         if (extent.width == 0) extent = this->extent(id);
-        // A result no later pass reads is not stored (a multisampled attachment then never leaves
-        // tile memory on GPUs that have it).
+        const AttachmentOps* ops = planned.attachmentOps(a.resource);
+        if (!ops) throw GraphError(std::string("pass '") + passName() + "' has no planned attachment operations for '" +
+                                   mGraph->declaration().resources[a.resource].name + "'");
         VkRenderingAttachmentInfo info{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
                                        .imageView = view(id),
-                                       .imageLayout = layout,
-                                       .loadOp = VK_ATTACHMENT_LOAD_OP_LOAD,
-                                       .storeOp = !write                            ? VK_ATTACHMENT_STORE_OP_NONE
-                                                  : planned.writeUnread(a.resource) ? VK_ATTACHMENT_STORE_OP_DONT_CARE
-                                                                                    : VK_ATTACHMENT_STORE_OP_STORE};
-        if (a.clear) {
-            info.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-            info.clearValue = *a.clear;
-        } else if (const std::optional<VkClearValue> fallback = write ? lostContentsClear(id) : std::nullopt) {
-            info.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-            info.clearValue = *fallback;
-        } else if (write && a.mode == WriteMode::Discard) {
-            info.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+                                       .imageLayout = layout};
+        switch (ops->load) {
+            case LoadOp::Load: info.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD; break;
+            case LoadOp::Clear: info.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR; info.clearValue = ops->clear; break;
+            case LoadOp::DontCare: info.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE; break;
+        }
+        switch (ops->store) {
+            case StoreOp::Store: info.storeOp = VK_ATTACHMENT_STORE_OP_STORE; break;
+            case StoreOp::DontCare: info.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE; break;
+            case StoreOp::None: info.storeOp = VK_ATTACHMENT_STORE_OP_NONE; break;
         }
         return info;
     };
     for (const AccessDecl& a : mPass->writes) {
         if (a.usage == Usage::ColorAttachment) {
-            colors.push_back(attachment(a, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, true));
+            colors.push_back(attachment(a, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL));
             colorResources.push_back(a.resource);
         }
         if (a.usage == Usage::DepthAttachment) {
-            depth = attachment(a, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
+            depth = attachment(a, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
             hasDepth = true;
         }
     }
@@ -148,7 +149,7 @@ void PassContext::beginRendering() const {
     }
     for (const AccessDecl& a : mPass->reads)
         if (a.usage == Usage::DepthRead) {
-            depth = attachment(a, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
+            depth = attachment(a, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL);
             hasDepth = true;
         }
     const VkRenderingInfo info{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,

@@ -82,10 +82,11 @@ public:
     // beginRendering() applies it; passes with their own render pass clear it themselves.
     std::optional<VkClearValue> lostContentsClear(TextureId written) const;
 
-    // Begins dynamic rendering on the pass's declared colour/depth attachments (load op from the
-    // declaration: clear, load, or don't-care for discarding writes; store op: store, or don't-care
-    // where no later pass reads the result) with their resolves (PassBuilder::resolve, unless a
-    // later pass resolves over them), and sets viewport and scissor to the first attachment's size.
+    // Begins dynamic rendering on the pass's declared colour/depth attachments with the load and
+    // store operations the graph planned (PassInfo::attachments: clear, load, or don't-care where
+    // nothing was written before; store, or don't-care where no later pass reads the result) and
+    // their resolves (PassBuilder::resolve, unless a later pass resolves over them), and sets
+    // viewport and scissor to the first attachment's size.
     void beginRendering() const;
     void endRendering() const;
 

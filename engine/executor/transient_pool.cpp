@@ -18,7 +18,7 @@ void forEachAccess(const GraphDecl& decl, uint32_t resource, Fn&& fn) {
     }
 }
 
-vk::ImageDesc imageDescOf(const GraphDecl& decl, uint32_t resource) {
+vk::ImageDesc imageDescOf(const GraphDecl& decl, uint32_t resource, bool transientAttachment) {
     const ResourceDecl& r = decl.resources[resource];
     return {.width = r.texture.width,
             .height = r.texture.height,
@@ -26,7 +26,7 @@ vk::ImageDesc imageDescOf(const GraphDecl& decl, uint32_t resource) {
             .mipLevels = r.texture.mipLevels,
             .arrayLayers = r.texture.arrayLayers,
             .format = r.texture.format,
-            .usage = imageUsageOf(decl, resource),
+            .usage = imageUsageOf(decl, resource, transientAttachment),
             .cube = r.texture.cube,
             .name = r.name.c_str(),
             .samples = r.texture.samples};
@@ -34,7 +34,7 @@ vk::ImageDesc imageDescOf(const GraphDecl& decl, uint32_t resource) {
 
 }  // namespace
 
-VkImageUsageFlags imageUsageOf(const GraphDecl& decl, uint32_t resource) {
+VkImageUsageFlags imageUsageOf(const GraphDecl& decl, uint32_t resource, bool transientAttachment) {
     VkImageUsageFlags flags = 0;
     forEachAccess(decl, resource, [&](Usage usage) {
         switch (usage) {
@@ -51,11 +51,12 @@ VkImageUsageFlags imageUsageOf(const GraphDecl& decl, uint32_t resource) {
             default: break;
         }
     });
-    // Used only as an attachment within render passes: its memory may be lazily allocated (on
-    // tile-based GPUs a multisampled attachment that is never stored then takes no memory at all).
+    // Its contents never leave the one render pass using it (CompiledGraph::transientAttachments):
+    // its memory may be lazily allocated (on tile-based GPUs it then takes no memory at all). The
+    // graph made sure every declared use is an attachment use, as TRANSIENT_ATTACHMENT requires.
     constexpr VkImageUsageFlags kAttachments =
         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
-    if (flags != 0 && (flags & ~kAttachments) == 0) flags |= VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
+    if (transientAttachment && flags != 0 && (flags & ~kAttachments) == 0) flags |= VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
     return flags;
 }
 
@@ -79,10 +80,10 @@ VkBufferUsageFlags bufferUsageOf(const GraphDecl& decl, uint32_t resource) {
 }
 
 MemoryRequirementsFn deviceMemoryRequirements(vk::Context& context, const GraphDecl& decl) {
-    return [&context, &decl](uint32_t resource, const ResourceDecl& r) {
+    return [&context, &decl](uint32_t resource, const ResourceDecl& r, bool transientAttachment) {
         VkMemoryRequirements2 requirements{.sType = VK_STRUCTURE_TYPE_MEMORY_REQUIREMENTS_2};
         if (r.kind == ResourceKind::Texture) {
-            const VkImageCreateInfo info = vk::imageCreateInfo(imageDescOf(decl, resource));
+            const VkImageCreateInfo info = vk::imageCreateInfo(imageDescOf(decl, resource, transientAttachment));
             const VkDeviceImageMemoryRequirements query{.sType = VK_STRUCTURE_TYPE_DEVICE_IMAGE_MEMORY_REQUIREMENTS,
                                                         .pCreateInfo = &info};
             vkGetDeviceImageMemoryRequirements(context.device(), &query, &requirements);
@@ -106,7 +107,8 @@ MemoryRequirementsFn deviceMemoryRequirements(vk::Context& context, const GraphD
             return bits;
         };
         uint32_t types = typesWith(VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        if (r.kind == ResourceKind::Texture && (imageUsageOf(decl, resource) & VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT))
+        if (r.kind == ResourceKind::Texture &&
+            (imageUsageOf(decl, resource, transientAttachment) & VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT))
             if (const uint32_t lazy = typesWith(VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT)) types = lazy;
         return MemoryRequirement{requirements.memoryRequirements.size, requirements.memoryRequirements.alignment,
                                  types ? types : typeBits};
@@ -122,7 +124,9 @@ void TransientPool::realize(const GraphDecl& decl, const CompiledGraph& compiled
         signature << r << ':' << static_cast<int>(d.kind) << ':' << d.texture.width << 'x' << d.texture.height << 'x'
                   << d.texture.depth << ':' << d.texture.mipLevels << ':' << d.texture.arrayLayers << ':'
                   << d.texture.format << ':' << d.texture.cube << ':' << d.texture.samples << ':' << d.buffer.size << ':'
-                  << (d.kind == ResourceKind::Texture ? imageUsageOf(decl, r) : bufferUsageOf(decl, r)) << '@'
+                  << (d.kind == ResourceKind::Texture ? imageUsageOf(decl, r, compiled.transientAttachments[r])
+                                                      : bufferUsageOf(decl, r))
+                  << '@'
                   << p.heap << '+' << p.offset << ';';
     }
     for (const Heap& h : compiled.heaps) signature << 'H' << static_cast<int>(h.kind) << ':' << h.size << ':' << h.memoryTypeBits << ';';
@@ -158,7 +162,7 @@ void TransientPool::realize(const GraphDecl& decl, const CompiledGraph& compiled
         const vk::ExternalMemory memory{heap.memory, heap.offset + p.offset, p.size, heap.memoryType};
         const ResourceDecl& d = decl.resources[r];
         if (d.kind == ResourceKind::Texture) {
-            mImages[r] = vk::Image(*mContext, imageDescOf(decl, r), memory);
+            mImages[r] = vk::Image(*mContext, imageDescOf(decl, r, compiled.transientAttachments[r]), memory);
             // Per-mip views serve storage writes of one mip at a time (PassContext::mipView).
             if ((mImages[r].desc().usage & VK_IMAGE_USAGE_STORAGE_BIT) && d.texture.depth == 1)
                 mMipViews[r] = mImages[r].createMipViews();

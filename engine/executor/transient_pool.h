@@ -13,12 +13,14 @@
 
 namespace candela::graph {
 
-// Vulkan usage flags a resource needs, from every access the declared graph makes of it.
-VkImageUsageFlags imageUsageOf(const GraphDecl& decl, uint32_t resource);
+// Vulkan usage flags a resource needs, from every access the declared graph makes of it; for a
+// transient attachment (CompiledGraph::transientAttachments) also TRANSIENT_ATTACHMENT.
+VkImageUsageFlags imageUsageOf(const GraphDecl& decl, uint32_t resource, bool transientAttachment);
 VkBufferUsageFlags bufferUsageOf(const GraphDecl& decl, uint32_t resource);
 
 // A MemoryRequirementsFn asking the device (vkGetDevice{Image,Buffer}MemoryRequirements: no
-// object is created) for each transient of `decl`. `decl` must outlive the function's use.
+// object is created) for each transient of `decl`; a transient attachment's memory types are
+// narrowed to lazily allocated ones where the device has them. `decl` must outlive the function's use.
 MemoryRequirementsFn deviceMemoryRequirements(vk::Context& context, const GraphDecl& decl);
 
 class TransientPool {
@@ -32,6 +34,8 @@ public:
     void realize(const GraphDecl& decl, const CompiledGraph& compiled);
 
     VkImage image(uint32_t resource) const { return mImages.at(resource).handle(); }
+    // The usage the transient image `resource` was created with.
+    VkImageUsageFlags imageUsage(uint32_t resource) const { return mImages.at(resource).desc().usage; }
     VkImageView view(uint32_t resource) const { return mImages.at(resource).view(); }
     // A view of one mip, all layers (see PassContext::mipView); null if the image has no such mip or
     // no per-mip views (made for 2D transients with storage usage).

@@ -28,6 +28,7 @@ CompiledGraph compileGraph(const GraphDecl& decl, const CompileOptions& options)
     detail::orderPasses(analysis, compiled);
     detail::findUnreadWrites(decl, compiled);
     detail::computeLifetimes(decl, compiled);
+    detail::planAttachments(decl, compiled);
     detail::planAliasing(decl, options, compiled);
     detail::planBarriers(decl, compiled);
     return compiled;

@@ -1,6 +1,7 @@
 #pragma once
 // Internal to candela_graph: the compile steps run by compileGraph() (compiled_graph.h), in order
-// validate → cull → order → unread writes → lifetimes → aliasing → barriers, and the dependency analysis they share.
+// validate → cull → order → unread writes → lifetimes → attachments → aliasing → barriers, and the
+// dependency analysis they share.
 // Each step is a free function that fills its part of CompiledGraph and appends its name to
 // CompiledGraph::steps. Not installed and not used outside engine/graph.
 
@@ -51,6 +52,10 @@ void findUnreadWrites(const GraphDecl& decl, CompiledGraph& compiled);
 
 // Step "lifetimes" (compile_graph.cpp): fills compiled.lifetimes from compiled.order.
 void computeLifetimes(const GraphDecl& decl, CompiledGraph& compiled);
+
+// Step "attachments" (plan_attachments.cpp): fills PassInfo::attachments of the running passes and
+// compiled.transientAttachments, from compiled.order, unreadWrites, clearedLostInputs and lifetimes.
+void planAttachments(const GraphDecl& decl, CompiledGraph& compiled);
 
 // Step "aliasing" (plan_aliasing.cpp): places used transients in heaps; fills placements, heaps and
 // the byte counts.

@@ -20,6 +20,28 @@ enum class CullReason : uint8_t {
 };
 const char* cullReasonName(CullReason reason);
 
+// How a render pass begins and ends on one of its attachments (PassBuilder::writeColor, writeDepth,
+// drawOver, read(…, DepthRead)): what the "attachments" step decided and beginRendering applies.
+enum class LoadOp : uint8_t {
+    Load,      // the contents an earlier running pass left (or an import's) are read
+    Clear,     // cleared to AttachmentOps::clear (declared, or clearIfLost when the input was lost)
+    DontCare,  // a discarding write, or a preserving one with nothing before it: undefined contents
+};
+enum class StoreOp : uint8_t {
+    Store,     // a later running pass, or the graph's output, reads what the pass wrote
+    DontCare,  // written, but nothing reads it (PassInfo::unreadWrites)
+    None,      // read only (DepthRead): the pass does not write it
+};
+const char* loadOpName(LoadOp op);
+const char* storeOpName(StoreOp op);
+
+struct AttachmentOps {
+    uint32_t resource = kInvalidIndex;
+    LoadOp load = LoadOp::Load;
+    StoreOp store = StoreOp::Store;
+    VkClearValue clear{};  // load == Clear only
+};
+
 struct PassInfo {
     uint32_t pass = kInvalidIndex;  // index into GraphDecl::passes
     CullReason cullReason = CullReason::None;
@@ -37,6 +59,16 @@ struct PassInfo {
     bool writeUnread(uint32_t resource) const {
         return std::find(unreadWrites.begin(), unreadWrites.end(), resource) != unreadWrites.end();
     }
+    // Load and store operations of each colour/depth attachment the pass declares (ColorAttachment
+    // and DepthAttachment writes, DepthRead reads), in declaration order (writes first). Running
+    // passes only. A pass declares at most one attachment access per resource.
+    std::vector<AttachmentOps> attachments;
+    // The operations on attachment `resource`; null if the pass has no attachment access to it.
+    const AttachmentOps* attachmentOps(uint32_t resource) const {
+        const auto it = std::find_if(attachments.begin(), attachments.end(),
+                                     [&](const AttachmentOps& ops) { return ops.resource == resource; });
+        return it == attachments.end() ? nullptr : &*it;
+    }
 };
 
 // Memory a resource needs, as the device reports it (or a size model in tests).
@@ -45,8 +77,11 @@ struct MemoryRequirement {
     VkDeviceSize alignment = 1;
     uint32_t memoryTypeBits = ~0u;
 };
-// Called with the resource's index in GraphDecl::resources and its declaration.
-using MemoryRequirementsFn = std::function<MemoryRequirement(uint32_t resource, const ResourceDecl&)>;
+// Called with the resource's index in GraphDecl::resources, its declaration and whether the
+// "attachments" step found it a transient attachment (CompiledGraph::transientAttachments: the
+// image then gets VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT and may live in lazily allocated memory).
+using MemoryRequirementsFn =
+    std::function<MemoryRequirement(uint32_t resource, const ResourceDecl&, bool transientAttachment)>;
 
 // Default size model: texel size × texels over all mips, layers and samples, 256-byte alignment (tests,
 // and anywhere no device is at hand).
@@ -92,6 +127,12 @@ struct CompiledGraph {
     std::vector<uint32_t> order;              // pass indices that run, in execution order
     std::vector<PassInfo> passes;             // one per declared pass, indexed like GraphDecl::passes
     std::vector<Lifetime> lifetimes;          // one per declared resource
+    // One per resource: a transient used by one running pass only, as colour or depth attachment
+    // that the pass neither loads nor stores (load op clear or don't-care, store op don't-care), and
+    // declared nowhere but as a colour/depth attachment. Its contents never leave the render pass,
+    // so it may be VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT in lazily allocated memory (tile memory
+    // alone on tile-based GPUs; Apple's memoryless textures).
+    std::vector<bool> transientAttachments;
     std::vector<Placement> placements;        // one per resource; heap == kInvalidIndex if not transient/used
     std::vector<Heap> heaps;
     std::vector<std::vector<Barrier>> barriers;  // barriers[i]: before order[i]
@@ -102,7 +143,8 @@ struct CompiledGraph {
     std::vector<std::string> steps;              // names of the compile steps, in the order they ran
 };
 
-// Runs the compile steps: validate → cull → order → unread writes → lifetimes → aliasing → barriers.
+// Runs the compile steps: validate → cull → order → unread writes → lifetimes → attachments →
+// aliasing → barriers.
 // Throws GraphError (naming the pass and the resource) on cycles, reads of versions nobody
 // writes, two passes writing the same version, and invalid handles. Makes no Vulkan calls
 // (memoryRequirements is the caller's; the executor passes one that asks the device).

@@ -51,15 +51,22 @@ bool timed(const GraphTimings* timings, uint32_t pass) {
     return timings != nullptr && pass < timings->gpuMs.size() && timings->gpuMs[pass] >= 0.0;
 }
 
-// `writer`: for writes, the pass's PassInfo, whose unreadWrites give "read" (null for reads).
-Json accessesJson(const GraphDecl& decl, const std::vector<AccessDecl>& accesses, const PassInfo* writer) {
+// `info`: the pass's PassInfo; `writes`: the list is its writes, whose unreadWrites give "read".
+// Attachments of a running pass carry their planned load and store operations.
+Json accessesJson(const GraphDecl& decl, const std::vector<AccessDecl>& accesses, const PassInfo& info, bool writes) {
     Json list = Json::array();
     for (const AccessDecl& access : accesses) {
         Json entry = {{"resource", decl.resources[access.resource].name},
                       {"version", access.version},
                       {"usage", usageName(access.usage)}};
         if (access.usage == Usage::ResolveAttachment) entry["resolveFrom"] = decl.resources[access.resolveSource].name;
-        if (writer) entry["read"] = !writer->writeUnread(access.resource);
+        if (writes) entry["read"] = !info.writeUnread(access.resource);
+        if (const AttachmentOps* ops = info.attachmentOps(access.resource);
+            ops && (access.usage == Usage::ColorAttachment || access.usage == Usage::DepthAttachment ||
+                    access.usage == Usage::DepthRead)) {
+            entry["loadOp"] = loadOpName(ops->load);
+            entry["storeOp"] = storeOpName(ops->store);
+        }
         list.push_back(std::move(entry));
     }
     return list;
@@ -89,7 +96,8 @@ std::string dotEscape(const std::string& text) {
     return escaped;
 }
 
-std::string resourceLabel(const ResourceDecl& resource, const Lifetime& lifetime, const Placement& placement) {
+std::string resourceLabel(const ResourceDecl& resource, const Lifetime& lifetime, const Placement& placement,
+                          bool transientAttachment) {
     std::string label = dotEscape(resource.name) + "\\n";
     if (resource.kind == ResourceKind::Texture) {
         label += std::to_string(resource.texture.width) + "x" + std::to_string(resource.texture.height) +
@@ -100,6 +108,7 @@ std::string resourceLabel(const ResourceDecl& resource, const Lifetime& lifetime
     }
     if (resource.imported) label += " (imported)";
     if (resource.exported) label += " (exported)";
+    if (transientAttachment) label += " (transient attachment)";
     label += lifetime.used()
                  ? "\\nlife " + std::to_string(lifetime.first) + ".." + std::to_string(lifetime.last)
                  : std::string("\\nunused");
@@ -113,7 +122,8 @@ std::string resourceLabel(const ResourceDecl& resource, const Lifetime& lifetime
 // Both exports index compiled data by declared pass and resource.
 void checkMatches(const GraphDecl& decl, const CompiledGraph& compiled) {
     if (compiled.passes.size() != decl.passes.size() || compiled.lifetimes.size() != decl.resources.size() ||
-        compiled.placements.size() != decl.resources.size())
+        compiled.placements.size() != decl.resources.size() ||
+        compiled.transientAttachments.size() != decl.resources.size())
         throw GraphError("graph export: the compiled graph does not match the declaration (compile first)");
 }
 
@@ -151,7 +161,8 @@ std::string exportDot(const GraphDecl& decl, const CompiledGraph& compiled, cons
         const std::string style = compiled.lifetimes[r].used() ? "shape=ellipse"
                                                                : "shape=ellipse, color=grey, fontcolor=grey";
         dot += "  r" + std::to_string(r) + " [" + style + ", label=\"" +
-               resourceLabel(resource, compiled.lifetimes[r], compiled.placements[r]) + "\"];\n";
+               resourceLabel(resource, compiled.lifetimes[r], compiled.placements[r], compiled.transientAttachments[r]) +
+               "\"];\n";
     }
     for (uint32_t p : passes) {
         const std::string pass = std::string("p") + std::to_string(p);
@@ -187,8 +198,8 @@ std::string exportJson(const GraphDecl& decl, const CompiledGraph& compiled, con
                       {"reason", cullReasonName(info.cullReason)},
                       {"detail", info.cullDetail}};
         if (timed(timings, p)) entry["gpuMs"] = timings->gpuMs[p];
-        entry["reads"] = accessesJson(decl, pass.reads, nullptr);
-        entry["writes"] = accessesJson(decl, pass.writes, &info);
+        entry["reads"] = accessesJson(decl, pass.reads, info, false);
+        entry["writes"] = accessesJson(decl, pass.writes, info, true);
         passes.push_back(std::move(entry));
     }
     root["passes"] = std::move(passes);
@@ -212,6 +223,7 @@ std::string exportJson(const GraphDecl& decl, const CompiledGraph& compiled, con
              {"height", texture ? Json(resource.texture.height) : Json(nullptr)},
              {"format", texture ? Json(formatName(resource.texture.format)) : Json(nullptr)},
              {"samples", texture ? Json(resource.texture.samples) : Json(nullptr)},
+             {"transientAttachment", bool(compiled.transientAttachments[r])},
              {"size", placed ? placement.size : estimateMemoryRequirement(resource).size},
              {"first", optionalIndex(compiled.lifetimes[r].first)},
              {"last", optionalIndex(compiled.lifetimes[r].last)},

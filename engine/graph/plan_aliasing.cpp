@@ -89,8 +89,9 @@ void planAliasing(const GraphDecl& decl, const CompileOptions& options, Compiled
     for (uint32_t r = 0; r < resourceCount; ++r) {
         const ResourceDecl& resource = decl.resources[r];
         if (resource.imported || !compiled.lifetimes[r].used()) continue;
-        MemoryRequirement requirement = options.memoryRequirements ? options.memoryRequirements(r, resource)
-                                                                   : estimateMemoryRequirement(resource);
+        MemoryRequirement requirement = options.memoryRequirements
+                                            ? options.memoryRequirements(r, resource, compiled.transientAttachments[r])
+                                            : estimateMemoryRequirement(resource);
         requirement.alignment = std::max<VkDeviceSize>(requirement.alignment, 1);
         requirements[r] = requirement;
         compiled.bytesRequested += requirement.size;

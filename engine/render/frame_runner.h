@@ -52,6 +52,8 @@ public:
     double lastPrecomputeGpuMs() const { return mLastPrecomputeGpuMs; }
     // Transient-pool rebuilds so far (tests: stays constant while the graph is unchanged).
     uint32_t transientRebuilds() const;
+    // The transient pool of the last submitted frame's slot: the images behind its graph's transients.
+    const graph::TransientPool& lastTransients() const { return *mTransients[mFrames.currentSlot()]; }
 
 private:
     // Copies the frame's host uploads into the current slot's buffers and binds them.

@@ -122,6 +122,8 @@ public:
     std::vector<std::string> explain() const;
     // Transient-pool rebuilds so far (tests: stays constant while the graph is unchanged).
     uint32_t transientRebuilds() const { return mRunner.transientRebuilds(); }
+    // The Vulkan images behind the last frame's transients (tests read their usage).
+    const graph::TransientPool& lastTransients() const { return mRunner.lastTransients(); }
     // The reflected shader parameters of the recent frames and the user's values for them: the
     // forward, skybox and tonemap push constants, and each light and material ("forward",
     // "Lights[i]" / "Materials[i]"). Values set here apply from the next frame.

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <list>
+#include <optional>
 #include <vector>
 
 namespace candela::test {
@@ -197,6 +198,38 @@ TEST_F(GpuTest, EveryFrameVariantIsValidationCleanAtEverySampleCount) {
                 }
     std::printf("%u frames validation-clean (device sample counts: %s)\n", frames,
                 vk::sampleCountList(context().attachmentSampleCounts()).c_str());
+}
+
+TEST_F(GpuTest, OnlyAttachmentsThatStayInOneRenderPassAreTransientImages) {
+    // #27 item 5: TRANSIENT_ATTACHMENT (and lazily allocated memory, where the device has it) only
+    // for an attachment used by one render pass that neither loads nor stores it. With a skybox the
+    // forward pass stores its multisampled colour and depth for the skybox to load; without an
+    // environment the forward pass is the only one drawing. The fixture checks validation.
+    const scene::Scene grid = scene::makeSphereGrid();
+    const scene::Environment sky = scene::makeProceduralSky();
+    Renderer renderer(context());
+    const auto usage = [&](const char* name) {
+        const std::optional<uint32_t> resource = renderer.lastGraph().findResource(name);
+        EXPECT_TRUE(resource.has_value()) << name;
+        return resource ? renderer.lastTransients().imageUsage(*resource) : VkImageUsageFlags(0);
+    };
+    constexpr VkImageUsageFlags kTransient = VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
+    RenderSettings settings{.width = 96, .height = 64, .scene = &grid, .environment = &sky};
+    settings.msaa = 4;
+    ASSERT_EQ(renderer.msaa(4).samples, 4u);
+    renderer.capture(settings);
+    EXPECT_EQ(usage("hdr_msaa"), VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
+    EXPECT_EQ(usage("depth"), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
+    EXPECT_EQ(usage("hdr") & kTransient, 0u);
+    settings.environment = nullptr;
+    renderer.capture(settings);
+    EXPECT_EQ(usage("hdr_msaa"), VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | kTransient);
+    EXPECT_EQ(usage("depth"), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | kTransient);
+    EXPECT_EQ(usage("hdr") & kTransient, 0u);  // resolved into and sampled by the tonemap
+    settings.msaa = 1;
+    renderer.capture(settings);
+    EXPECT_EQ(usage("depth"), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | kTransient);
+    EXPECT_EQ(usage("hdr") & kTransient, 0u);
 }
 
 TEST_F(GpuTest, MultisampledAttachmentsAreCountedInTheTransientMemory) {

@@ -91,7 +91,7 @@ TEST(GraphAliasing, AlignmentIsRespected) {
     RenderGraph graph;
     buildChain(graph, 2);
     CompileOptions options;
-    options.memoryRequirements = [](uint32_t, const ResourceDecl& r) {
+    options.memoryRequirements = [](uint32_t, const ResourceDecl& r, bool) {
         return r.name == "t0" ? MemoryRequirement{1000, 256, ~0u} : MemoryRequirement{100, 4096, ~0u};
     };
     const CompiledGraph& compiled = graph.compile(options);
@@ -138,7 +138,7 @@ TEST(GraphAliasing, IncompatibleMemoryTypesGetSeparateHeaps) {
     RenderGraph graph;
     buildChain(graph, 3);
     CompileOptions options;
-    options.memoryRequirements = [](uint32_t, const ResourceDecl& r) {
+    options.memoryRequirements = [](uint32_t, const ResourceDecl& r, bool) {
         const uint32_t bits = r.name == "t0" ? 0b01u : r.name == "t1" ? 0b11u : 0b10u;
         return MemoryRequirement{1024, 256, bits};
     };
@@ -196,7 +196,7 @@ TEST(GraphAliasing, RandomGraphsNeverOverlapLiveResources) {
         for (MemoryRequirement& requirement : requirements) {
             requirement = {256 * (1 + VkDeviceSize{pick(16)}), VkDeviceSize{1} << pick(12), 1u + pick(3)};
         }
-        options.memoryRequirements = [&](uint32_t resource, const ResourceDecl&) {
+        options.memoryRequirements = [&](uint32_t resource, const ResourceDecl&, bool) {
             return requirements[resource];
         };
         const CompiledGraph& compiled = graph.compile(options);

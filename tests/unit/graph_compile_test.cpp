@@ -9,7 +9,8 @@
 namespace candela::graph {
 namespace {
 
-const std::vector<std::string> kSteps{"validate", "cull", "order", "unread writes", "lifetimes", "aliasing", "barriers"};
+const std::vector<std::string> kSteps{"validate",  "cull",        "order",    "unread writes",
+                                      "lifetimes", "attachments", "aliasing", "barriers"};
 
 TEST(GraphCompile, RunsTheNamedStepsInOrder) {
     RenderGraph graph;

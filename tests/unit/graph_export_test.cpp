@@ -47,6 +47,9 @@ TEST(GraphExport, JsonDescribesPassesResourcesHeapsAndBarriers) {
     EXPECT_EQ(lighting["writes"][0]["resource"], "hdr");
     EXPECT_EQ(lighting["writes"][0]["version"], 1);
     EXPECT_EQ(lighting["writes"][0]["usage"], "ColorAttachment");
+    EXPECT_EQ(lighting["writes"][0]["loadOp"], "clear");
+    EXPECT_EQ(lighting["writes"][0]["storeOp"], "store");  // the tonemap samples it
+    EXPECT_EQ(json["passes"][2]["writes"][0]["loadOp"], "load");  // the imported target's contents
 
     const nlohmann::json& debug = json["passes"][1];
     EXPECT_EQ(debug["culled"], true);
@@ -70,6 +73,7 @@ TEST(GraphExport, JsonDescribesPassesResourcesHeapsAndBarriers) {
     EXPECT_EQ(hdr["last"], 1);
     EXPECT_EQ(hdr["heap"], 0);
     EXPECT_EQ(hdr["offset"], 0);
+    EXPECT_EQ(hdr["transientAttachment"], false);  // sampled
     EXPECT_TRUE(json["resources"][0]["heap"].is_null());  // imported
     EXPECT_TRUE(json["resources"][2]["first"].is_null());  // only used by the culled pass
 
@@ -96,7 +100,8 @@ TEST(GraphExport, JsonDescribesPassesResourcesHeapsAndBarriers) {
     EXPECT_EQ(barriers[3]["newLayout"], "PresentSrcKHR");
 
     EXPECT_EQ(json["steps"],
-              (nlohmann::json{"validate", "cull", "order", "unread writes", "lifetimes", "aliasing", "barriers"}));
+              (nlohmann::json{"validate", "cull", "order", "unread writes", "lifetimes", "attachments", "aliasing",
+                              "barriers"}));
 }
 
 TEST(GraphExport, DotListsPassesResourcesAndCulling) {

@@ -99,16 +99,36 @@ TEST(GraphMsaa, MultisampledTransientsTakeSamplesTimesTheMemory) {
     EXPECT_EQ(frame.graph.compiled().bytesRequested, 4 * 64 * 32 * 8 + 4 * 64 * 32 * 4 + 64 * 32 * 8);
 }
 
-TEST(GraphMsaa, AttachmentOnlyTransientsAreTransientAttachments) {
+TEST(GraphMsaa, AttachmentsTheNextPassLoadsAreNoTransientAttachments) {
+    // Forward stores the multisampled colour and depth for the skybox, which loads them: neither
+    // may live in lazily allocated (tile or memoryless) memory (graph_attachments_test.cpp has the rest).
     MsaaFrame frame;
+    const CompiledGraph& compiled = frame.graph.compile();
     const GraphDecl& decl = frame.graph.declaration();
-    EXPECT_EQ(imageUsageOf(decl, frame.msaa.index),
-              VkImageUsageFlags(VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT));
-    EXPECT_EQ(imageUsageOf(decl, frame.depth.index),
-              VkImageUsageFlags(VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT));
+    EXPECT_FALSE(compiled.transientAttachments[frame.msaa.index]);
+    EXPECT_FALSE(compiled.transientAttachments[frame.depth.index]);
+    EXPECT_EQ(imageUsageOf(decl, frame.msaa.index, compiled.transientAttachments[frame.msaa.index]),
+              VkImageUsageFlags(VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT));
+    EXPECT_EQ(imageUsageOf(decl, frame.depth.index, compiled.transientAttachments[frame.depth.index]),
+              VkImageUsageFlags(VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT));
     // The resolved image is sampled later: an ordinary image.
-    EXPECT_EQ(imageUsageOf(decl, frame.hdr.index),
+    EXPECT_FALSE(compiled.transientAttachments[frame.hdr.index]);
+    EXPECT_EQ(imageUsageOf(decl, frame.hdr.index, compiled.transientAttachments[frame.hdr.index]),
               VkImageUsageFlags(VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT));
+}
+
+TEST(GraphMsaa, WithTheSkyboxOffTheForwardPassKeepsItsAttachmentsToItself) {
+    MsaaFrame frame;
+    frame.graph.setPassEnabled("skybox", false);
+    const CompiledGraph& compiled = frame.graph.compile();
+    const GraphDecl& decl = frame.graph.declaration();
+    EXPECT_TRUE(compiled.transientAttachments[frame.msaa.index]);
+    EXPECT_TRUE(compiled.transientAttachments[frame.depth.index]);
+    EXPECT_EQ(imageUsageOf(decl, frame.msaa.index, true),
+              VkImageUsageFlags(VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT));
+    EXPECT_EQ(imageUsageOf(decl, frame.depth.index, true),
+              VkImageUsageFlags(VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT));
+    EXPECT_FALSE(compiled.transientAttachments[frame.hdr.index]);
 }
 
 TEST(GraphMsaa, ResolvesThatCannotWorkAreRefused) {
