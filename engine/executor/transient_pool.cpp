@@ -100,10 +100,12 @@ MemoryRequirementsFn deviceMemoryRequirements(vk::Context& context, const GraphD
         // attachments to lazily allocated memory where the device has it (tile-based GPUs).
         const uint32_t typeBits = requirements.memoryRequirements.memoryTypeBits;
         const VkPhysicalDeviceMemoryProperties& props = context.allocator().properties();
+        // Only the types the allocator may use (a device profile may hide lazily allocated ones).
+        const uint32_t usable = typeBits & context.allocator().typeMask();
         const auto typesWith = [&](VkMemoryPropertyFlags wanted) {
             uint32_t bits = 0;
             for (uint32_t i = 0; i < props.memoryTypeCount; ++i)
-                if ((typeBits & (1u << i)) && (props.memoryTypes[i].propertyFlags & wanted) == wanted) bits |= 1u << i;
+                if ((usable & (1u << i)) && (props.memoryTypes[i].propertyFlags & wanted) == wanted) bits |= 1u << i;
             return bits;
         };
         uint32_t types = typesWith(VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
@@ -111,7 +113,7 @@ MemoryRequirementsFn deviceMemoryRequirements(vk::Context& context, const GraphD
             (imageUsageOf(decl, resource, transientAttachment) & VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT))
             if (const uint32_t lazy = typesWith(VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT)) types = lazy;
         return MemoryRequirement{requirements.memoryRequirements.size, requirements.memoryRequirements.alignment,
-                                 types ? types : typeBits};
+                                 types ? types : usable};
     };
 }
 
