@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build pkg-config python3
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
-  libspirv-cross-c-shared-dev
+  libspirv-cross-c-shared-dev spirv-tools
   libglm-dev libstb-dev libopenexr-dev libtinygltf-dev nlohmann-json3-dev zlib1g-dev
   libgtest-dev
   libglfw3-dev libimgui-dev glslang-dev xvfb xauth

@@ -73,9 +73,12 @@ VkDescriptorSet ForwardIblSet::write(const PassContext& ctx, const vk::Program& 
     image(writer, "specularCube", d.specular, mPlaceholderCube, mTrilinear.get());
     image(writer, "irradianceCube", d.irradianceCube, mPlaceholderCube, mTrilinear.get());
     image(writer, "brdfLut", d.lut, mPlaceholderLut, mTrilinear.get());
-    image(writer, "referenceEquirect", d.referenceEquirect, mPlaceholderEquirect, mNearest.get());
     writer.buffer("IrradianceSh", d.sh.valid() ? ctx.buffer(d.sh) : mPlaceholderSh.handle());
-    writer.buffer("ReferenceTexels", d.referenceTexels.valid() ? ctx.buffer(d.referenceTexels) : mPlaceholderTexels.handle());
+    // The ground truth's inputs: declared by its program only.
+    if (program.declares(2, "referenceEquirect")) {
+        image(writer, "referenceEquirect", d.referenceEquirect, mPlaceholderEquirect, mNearest.get());
+        writer.buffer("ReferenceTexels", d.referenceTexels.valid() ? ctx.buffer(d.referenceTexels) : mPlaceholderTexels.handle());
+    }
     return writer.commit(ctx.context(), ctx.descriptors());
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // ForwardIblSet: descriptor set 2 of the forward pass (image-based lighting), declared in the pass's
 // setup from the frame's IBL handles and written in its execute callback from what the pass context
-// resolves them to. Every forward variant's layout has every IBL binding; what a frame lacks (no
-// environment, the irradiance form not in use, no ground truth) is bound to a 1×1 placeholder this
-// object owns and the variant in use never reads.
+// resolves them to. Every forward variant's layout has every IBL binding (the ground truth's
+// program also its inputs); what a frame lacks (no environment, the irradiance form not in use, no
+// ground truth) is bound to a 1×1 placeholder this object owns and the variant in use never reads.
 
 #include "graph/render_graph.h"
 #include "passes/ibl_handles.h"

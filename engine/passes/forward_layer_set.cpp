@@ -40,6 +40,7 @@ LayerMaps ForwardLayerSet::declare(PassBuilder& builder, const LayerMaps* maps) 
 
 VkDescriptorSet ForwardLayerSet::write(const PassContext& ctx, const vk::Program& program, const LayerMaps& d) const {
     const auto image = [&](vk::DescriptorWriter& writer, const char* name, TextureId handle, const vk::Image& fallback) {
+        if (!program.declares(3, name)) return;  // a variant without the layer that reads it
         if (handle.valid()) writer.image(name, ctx.view(handle), ctx.layout(handle), mLinear.get());
         else writer.image(name, fallback.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, mLinear.get());
     };

@@ -32,7 +32,9 @@ public:
     // Declares the fragment shader's reads of every valid handle of `maps` (null: none). Returns
     // the handles as declared, for write().
     static LayerMaps declare(graph::PassBuilder& builder, const LayerMaps* maps);
-    // Allocates set 3 of the layered `program` from the frame's descriptor pool and writes it.
+    // Allocates set 3 of the layered `program` from the frame's descriptor pool and writes the
+    // bindings it declares (a variant specialized to its layers declares only the maps they read).
+    // Precondition: the program has a set 3 with at least one binding.
     VkDescriptorSet write(const graph::PassContext& ctx, const vk::Program& program, const LayerMaps& declared) const;
 
 private:

@@ -15,7 +15,9 @@ using namespace graph;
 
 namespace {
 
-vk::GraphicsPipelineDesc pipelineDesc(const ForwardVariant& v) {
+// `specializeLayers`: the layered program is specialized to the variant's layers at load
+// (DeviceChoices::specializeLayeredProgram).
+vk::GraphicsPipelineDesc pipelineDesc(const ForwardVariant& v, bool specializeLayers) {
     vk::GraphicsPipelineDesc out{
         .colorFormats = {passes::kHdrFormat},
         .depthFormat = passes::kDepthFormat,
@@ -36,7 +38,14 @@ vk::GraphicsPipelineDesc pipelineDesc(const ForwardVariant& v) {
                              {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv1)},
                              {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, color)}}};
     // Only the layered program has kLayers (constant 10; 0 for the core program, which ignores it).
+    // Where the generic layered program exceeds the device's per-stage limits, it is specialized to
+    // the variant's layers at load: its material set (1) and layer maps (3) declare only what those
+    // layers read (docs/device-layer.md); sets 0 and 2 keep every binding, shared by all variants.
     out.specialization.push_back(v.layers);
+    if (v.layers && specializeLayers) {
+        out.frozenConstants = {10};
+        out.specializedSets = {1, 3};
+    }
     out.specialization.push_back(v.specularAa);
     out.specialization.push_back(v.alphaToCoverage);
     return out;
@@ -50,9 +59,10 @@ const vk::Pipeline& ForwardPass::pipeline(const ForwardVariant& v) {
     return mPipelines.get(mContext, v, [&] {
         // The ground truth of `ibl-report` (referenceSamples) is a program of its own, for core materials.
         if (v.referenceSamples && v.layers) throw std::logic_error("ForwardPass: the ground truth integrates core materials only");
-        return v.layers ? vk::Pipeline::graphics(mContext, "forward_layers.vert", "forward_layers.frag", pipelineDesc(v))
+        return v.layers ? vk::Pipeline::graphics(mContext, "forward_layers.vert", "forward_layers.frag",
+                                                 pipelineDesc(v, mContext.choices().specializeLayeredProgram))
                         : vk::Pipeline::graphics(mContext, "forward.vert",
-                                                 v.referenceSamples ? "forward_reference.frag" : "forward.frag", pipelineDesc(v));
+                                                 v.referenceSamples ? "forward_reference.frag" : "forward.frag", pipelineDesc(v, false));
     });
 }
 
@@ -95,9 +105,12 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene, const MaterialKeys& 
         }
         if (layers) {
             writer.buffer(ForwardBlock<shading::MaterialLayerData>::name, gpuScene.materialLayerBuffer());
+            // The program is specialized to the material's layers: only their textures are declared.
             for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) {
+                const char* name = scene::kLayerTextureSlots[slot].sampler;
+                if (!program.declares(1, name)) continue;
                 const scene::GpuScene::Binding b = gpuScene.layerTexture(material, slot);
-                writer.image(scene::kLayerTextureSlots[slot].sampler, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
+                writer.image(name, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
             }
         }
         mMaterialSets.push_back(writer.commit(mContext, *mSets));
@@ -211,11 +224,11 @@ DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::s
     std::vector<const vk::Pipeline*> pipelines(mKeys->keys.size(), nullptr);
     std::vector<Recorded> recordedItems;
     recordedItems.reserve(items.size());
-    const vk::Program* layeredProgram = nullptr;  // set 3, of the layered program only: written when a layered draw is in the pass
+    bool anyLayered = false;  // set 3 (the layer maps) is written when a layered draw is in the pass
     for (const DrawListItem& item : items) {
         const MaterialKey& key = mKeys->keys[item.key];
         if (!pipelines[item.key]) pipelines[item.key] = &pipeline(forwardVariant(key, frame.variant));
-        if (key.layers && !layeredProgram) layeredProgram = &pipelines[item.key]->program();
+        anyLayered = anyLayered || key.layers != 0;
         recordedItems.push_back({.pipeline = pipelines[item.key],
                                  .item = item,
                                  .vertexOffset = frame.vertexOffset.empty() ? kRestVertices : frame.vertexOffset[item.draw],
@@ -224,14 +237,16 @@ DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::s
     const scene::GpuScene* gpuScene = mScene;
     const std::vector<VkDescriptorSet>* materialSets = &mMaterialSets;
     const ForwardIblSet* iblSets = &mIblSet;
-    const vk::Program* program = &pipeline(ForwardVariant{}).program();  // every variant shares the set layouts
+    // Every variant of the frame shares the layouts of sets 0 and 2 (the ground truth's program adds
+    // its inputs to set 2: a frame draws with it or not at all).
+    const vk::Program* program = &pipeline(ForwardVariant{.referenceSamples = frame.variant.referenceSamples}).program();
     const ForwardLayerSet* layerSets = &mLayerSet;
     const Data& data = graph.addPass<Data>(
         std::move(name), PassType::Graphics,
         [&](PassBuilder& builder, Data& d) {
             d.targets = targets(builder);
             d.ibl = ForwardIblSet::declare(builder, frame.ibl ? &*frame.ibl : nullptr);
-            if (layeredProgram) d.layers = ForwardLayerSet::declare(builder, &frame.layerMaps);
+            if (anyLayered) d.layers = ForwardLayerSet::declare(builder, &frame.layerMaps);
             if (frame.posedDraws.valid())
                 d.draws = builder.read(frame.posedDraws, Usage::StorageRead,
                                        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
@@ -240,12 +255,18 @@ DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::s
             if (frame.deformed.valid()) d.deformed = builder.read(frame.deformed, Usage::Vertex);
         },
         [items = std::move(recordedItems), frameConstants = frame.push, gpuScene, staticSceneSet = mSceneSet, materialSets, iblSets,
-         layerSets, program, layeredProgram, stats](const Data& d, PassContext& ctx) {
+         layerSets, program, stats](const Data& d, PassContext& ctx) {
             DrawStats unused;
             DrawStats* counts = stats ? stats : &unused;
             shading::ForwardPush constants = frameConstants;
             const VkDescriptorSet iblSet = iblSets->write(ctx, *program, d.ibl);
-            const VkDescriptorSet layerSet = layeredProgram ? layerSets->write(ctx, *layeredProgram, d.layers) : VK_NULL_HANDLE;
+            // Set 3 of each layered variant in the pass (each specialized to its layers' maps).
+            std::vector<std::pair<const vk::Pipeline*, VkDescriptorSet>> layerSetsWritten;
+            const auto layerSetOf = [&](const vk::Pipeline& pipeline) {
+                for (const auto& [p, set] : layerSetsWritten)
+                    if (p == &pipeline) return set;
+                return layerSetsWritten.emplace_back(&pipeline, layerSets->write(ctx, pipeline.program(), d.layers)).second;
+            };
             // Posed draws: set 0 names this frame's draw buffer.
             const VkDescriptorSet sceneSet = !d.draws.valid() ? staticSceneSet
                                              : vk::DescriptorWriter(*program, 0)
@@ -284,7 +305,7 @@ DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::s
                     // Core and layered programs differ from set 1 on: rebind every set after a switch.
                     bindSet(0, sceneSet);
                     bindSet(2, iblSet);
-                    if (r.layered) bindSet(3, layerSet);
+                    if (r.layered && bound->program().setCount() > 3) bindSet(3, layerSetOf(*bound));
                     boundMaterial = UINT32_MAX;
                 }
                 if (item.material != boundMaterial) {

@@ -1,5 +1,7 @@
 #include "vk/device_choices.h"
 
+#include "shader/shader_library.h"
+
 #include <map>
 
 namespace candela::vk {
@@ -32,6 +34,15 @@ DeviceChoices chooseForDevice(const DeviceCaps& caps) {
                        kComputedMap, c);
     c.sheenLut = pick(caps, "sheen LUT", VK_FORMAT_R32_SFLOAT, VK_FORMAT_R16G16B16A16_SFLOAT, kComputedMap, c);
     c.brdfLut = pick(caps, "BRDF LUT", VK_FORMAT_R16G16_SFLOAT, VK_FORMAT_R16G16B16A16_SFLOAT, kComputedMap, c);
+    std::vector<shader::ShaderReflection> layered;
+    for (const char* name : {"forward_layers.vert", "forward_layers.frag"})
+        layered.push_back(shader::reflectSpirv(shader::shaderSpirv(name), name));
+    const shader::ShaderReflection generic = shader::mergeReflections(layered);
+    if (const std::string over = descriptorLimitViolation(generic.bindings, generic.pushConstants.size, caps); !over.empty()) {
+        c.specializeLayeredProgram = true;
+        c.fallbacks.push_back("layered materials: a program per layer combination, declaring only its layers' textures "
+                              "(the program with every layer has " + over + ")");
+    }
     return c;
 }
 

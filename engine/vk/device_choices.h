@@ -22,6 +22,11 @@ struct DeviceChoices {
     // The BRDF LUT (written by compute, sampled with linear filtering): RG16F, or RGBA16F where
     // RG16F cannot be a storage image (an extended storage format).
     VkFormat brdfLut = VK_FORMAT_R16G16_SFLOAT;
+    // Whether the layered forward program (forward_layers.*: every layer's textures and maps, 23
+    // samplers and 4 storage buffers in the fragment stage) exceeds the per-stage limits, so each
+    // layered variant is specialized at load to declare only its layers' descriptors
+    // (vk::ProgramSpecialization). A material whose layers still exceed them is refused by name.
+    bool specializeLayeredProgram = false;
     // One line per fallback taken ("BRDF LUT: R16G16B16A16_SFLOAT instead of R16G16_SFLOAT (no
     // STORAGE_IMAGE)"); empty when the device has everything.
     std::vector<std::string> fallbacks;

@@ -6,18 +6,25 @@
 #include "vk/context.h"
 #include "vk/device_choices.h"
 
-
+#include <algorithm>
 
 namespace candela::vk {
 
-Program::Program(Context& context, const std::vector<std::string_view>& shaderNames) {
-    std::vector<shader::ShaderReflection> reflections;
+Program::Program(Context& context, const std::vector<std::string_view>& shaderNames,
+                 const ProgramSpecialization& specialization) {
+    std::vector<shader::ShaderReflection> reflections, specializedReflections;
     for (std::string_view name : shaderNames) {
         mName += (mName.empty() ? "" : "+") + std::string(name);
-        const std::span<const uint32_t> spirv = shader::shaderSpirv(name);
-        if (spirv.empty()) throw std::runtime_error("no built-in shader named '" + std::string(name) + "'");
+        const std::span<const uint32_t> declared = shader::shaderSpirv(name);
+        if (declared.empty()) throw std::runtime_error("no built-in shader named '" + std::string(name) + "'");
         mSources.emplace_back(std::string(name), shader::shaderGeneration(name));
-        reflections.push_back(shader::reflectSpirv(spirv, std::string(name)));
+        reflections.push_back(shader::reflectSpirv(declared, std::string(name)));
+        std::vector<uint32_t> specialized;
+        if (!specialization.frozen.empty()) {
+            specialized = shader::specializeSpirv(declared, specialization.frozen, std::string(name));
+            specializedReflections.push_back(shader::reflectSpirv(specialized, std::string(name)));
+        }
+        const std::span<const uint32_t> spirv = specialized.empty() ? declared : std::span<const uint32_t>(specialized);
         const VkShaderModuleCreateInfo info{.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
                                             .codeSize = spirv.size_bytes(),
                                             .pCode = spirv.data()};
@@ -26,6 +33,16 @@ Program::Program(Context& context, const std::vector<std::string_view>& shaderNa
         mStages.push_back({reflections.back().stage, ShaderModule(context, module)});
     }
     mReflection = shader::mergeReflections(reflections);
+    if (!specializedReflections.empty()) {
+        // The specialized sets declare what the specialized code reads; the others keep every binding.
+        const shader::ShaderReflection used = shader::mergeReflections(specializedReflections);
+        const auto specializedSet = [&](uint32_t set) {
+            return std::find(specialization.sets.begin(), specialization.sets.end(), set) != specialization.sets.end();
+        };
+        std::erase_if(mReflection.bindings, [&](const shader::DescriptorBinding& b) { return specializedSet(b.set); });
+        for (const shader::DescriptorBinding& b : used.bindings)
+            if (specializedSet(b.set)) mReflection.bindings.push_back(b);
+    }
     // A program the device cannot bind is refused here, naming the limit, rather than left to the
     // driver (lavapipe would accept it; a GPU with the limit fails or misrenders).
     if (const std::string over = descriptorLimitViolation(mReflection.bindings, mReflection.pushConstants.size, context.caps());
@@ -61,6 +78,11 @@ Program::Program(Context& context, const std::vector<std::string_view>& shaderNa
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VK_CHECK(vkCreatePipelineLayout(context.device(), &info, nullptr, &layout));
     mLayout = PipelineLayout(context, layout);
+}
+
+bool Program::declares(uint32_t set, std::string_view name) const {
+    return std::any_of(mReflection.bindings.begin(), mReflection.bindings.end(),
+                       [&](const shader::DescriptorBinding& b) { return b.set == set && b.name == name; });
 }
 
 bool Program::stale() const {
@@ -106,7 +128,9 @@ Pipeline Pipeline::compute(Context& context, std::string_view shaderName, const 
 Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std::string_view fragmentShader,
                             const GraphicsPipelineDesc& desc) {
     Pipeline out;
-    out.mProgram = Program(context, {vertexShader, fragmentShader});
+    ProgramSpecialization programSpecialization{.sets = desc.specializedSets};
+    for (uint32_t id : desc.frozenConstants) programSpecialization.frozen.emplace_back(id, desc.specialization.at(id));
+    out.mProgram = Program(context, {vertexShader, fragmentShader}, programSpecialization);
     out.mBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
     out.mShaderNames = {std::string(vertexShader), std::string(fragmentShader)};
     out.mDesc = desc;

@@ -4,6 +4,7 @@
 // rendering, dynamic viewport and scissor). Both move-only; destruction is deferred.
 
 #include "shader/reflection.h"
+#include "shader/specialize.h"
 #include "vk/handle.h"
 
 #include <string>
@@ -12,13 +13,27 @@
 
 namespace candela::vk {
 
+// A program variant specialized at load (shader/specialize.h): `frozen` constants are fixed in the
+// SPIR-V and what they leave unused removed; the layouts of `sets` then declare only the bindings
+// the specialized code reads, the other sets every binding the shaders declare (so those sets stay
+// compatible across the variants of a program).
+struct ProgramSpecialization {
+    std::vector<shader::FrozenConstant> frozen;
+    std::vector<uint32_t> sets;
+};
+
 class Program {
 public:
     friend class Pipeline;
     Program() = default;
-    // Reflects the named shaders ("NAME.STAGE", their current SPIR-V: shader_library.h) and builds
-    // their layouts. Throws if a shader is missing or the stages disagree on a binding.
-    Program(Context& context, const std::vector<std::string_view>& shaderNames);
+    // Reflects the named shaders ("NAME.STAGE", their current SPIR-V: shader_library.h), specialized
+    // as `specialization` says, and builds their layouts. Throws if a shader is missing or the stages
+    // disagree on a binding; throws UserError if the layouts exceed the device's per-stage limits.
+    Program(Context& context, const std::vector<std::string_view>& shaderNames,
+            const ProgramSpecialization& specialization = {});
+
+    // Whether set `set` declares a binding named `name`.
+    bool declares(uint32_t set, std::string_view name) const;
 
     const shader::ShaderReflection& reflection() const { return mReflection; }
     VkPipelineLayout layout() const { return mLayout.get(); }
@@ -69,6 +84,10 @@ struct GraphicsPipelineDesc {
     bool dynamicCullMode = false;
     // Specialization constant values, constant_id = index (32-bit each: bool as 0/1, uint, float bits).
     std::vector<uint32_t> specialization;
+    // Constant ids fixed in the SPIR-V at load (values from `specialization`), and the descriptor
+    // sets whose layouts then declare only what the specialized code reads (ProgramSpecialization).
+    std::vector<uint32_t> frozenConstants;
+    std::vector<uint32_t> specializedSets;
     std::vector<VkVertexInputBindingDescription> vertexBindings;
     std::vector<VkVertexInputAttributeDescription> vertexAttributes;
 };

@@ -64,8 +64,10 @@ layout(set = 2, binding = 2) uniform sampler2D brdfLut;
 layout(std140, set = 2, binding = 3) uniform IrradianceSh {
     vec4 sh[9];  // convolved, /π: irradiance(n)/π = Σ sh[i] · Y_i(n)
 };
-// The ground truth's inputs (read by forward/reference_ibl.glsl only), declared in every forward
-// program so that set 2 has one layout: the pass writes it once and binds it for every pipeline.
+#ifdef CANDELA_IBL_REFERENCE
+// The ground truth's inputs (read by forward/reference_ibl.glsl), declared in its program only (a
+// frame draws with it or not at all): other programs keep the storage buffer and sampler for what
+// they read, within the per-stage limits of small devices (4 storage buffers, 16 samplers).
 // The environment as an equirectangular map (nearest texels; alpha 0 marks the brightest texels,
 // which are summed explicitly instead of sampled) and the list of those texels:
 // referenceTexels[0] = (count, width, height, 0), then per texel (x, y, 0, 0) and (radiance, 0).
@@ -73,6 +75,7 @@ layout(set = 2, binding = 4) uniform sampler2D referenceEquirect;
 layout(std430, set = 2, binding = 5) readonly buffer ReferenceTexels {
     vec4 referenceTexels[];
 };
+#endif
 layout(push_constant) uniform Push {
     ForwardPush push;
 };
@@ -81,7 +84,13 @@ layout(push_constant) uniform Push {
 // The layers this variant evaluates: the material's, none under Blinn-Phong (kept for comparison
 // with the original project, it has no Fresnel to layer).
 uint layerBits() { return kShadingModel == CANDELA_SHADING_BLINN_PHONG ? 0u : kLayers; }
-bool hasLayer(uint bit) { return (layerBits() & bit) != 0u; }
+// Whether the variant evaluates layer `bit`. The layered program is specialized to its kLayers at
+// load (vk::ProgramSpecialization): the test of kLayers comes first, alone, so that for a layer the
+// material lacks the whole branch — and the textures and maps it samples — folds away.
+bool hasLayer(uint bit) {
+    if ((kLayers & bit) == 0u) return false;
+    return kShadingModel != CANDELA_SHADING_BLINN_PHONG;
+}
 #endif
 
 #endif

@@ -349,9 +349,10 @@ TEST_F(IblMapsTest, ConstantEnvironmentGivesConstantMaps) {
 
 // ---- 4. BRDF LUT --------------------------------------------------------------------------------
 
-// The split-sum LUT, read back after a frame that computed it.
+// The split-sum LUT, read back after a frame that computed it; `format`: the format the device
+// stores it in (DeviceChoices::brdfLut).
 std::vector<glm::vec2> computeLut(Renderer& renderer, const scene::Scene& scene, const scene::Environment& env,
-                                  uint32_t size, uint32_t samples) {
+                                  uint32_t size, uint32_t samples, VkFormat format) {
     ibl::IblQuality quality = smallQuality();
     quality.cubeSize = 16;  // the LUT does not depend on the environment: keep the rest tiny
     quality.shSourceSize = 16;
@@ -367,7 +368,8 @@ std::vector<glm::vec2> computeLut(Renderer& renderer, const scene::Scene& scene,
     if (!lut) return ab;
     EXPECT_EQ(lut->width, size);
     EXPECT_EQ(lut->height, size);
-    EXPECT_EQ(lut->texelBytes, 4u);
+    // RG16F, or RGBA16F where RG16F is no storage format (the minimum device profile): the same halves.
+    EXPECT_EQ(lut->format, uint32_t(format));
     ab.resize(size_t(size) * size);
     forEachHalfTexel(*lut, [&](const TexelRef& t, const glm::vec4& v) { ab[size_t(t.y) * size + t.x] = {v.x, v.y}; });
     return ab;
@@ -426,7 +428,7 @@ TEST_F(IblLutTest, LutIsBoundedAndMatchesTheReferenceSplitSum) {
     Renderer renderer(context());
     const ibl::IblQuality defaults;
     const uint32_t size = defaults.lutSize;
-    const std::vector<glm::vec2> ab = computeLut(renderer, scene, env, size, defaults.lutSamples);
+    const std::vector<glm::vec2> ab = computeLut(renderer, scene, env, size, defaults.lutSamples, context().choices().brdfLut);
     ASSERT_EQ(ab.size(), size_t(size) * size);
 
     double maxSum = 0.0, worstRow0 = 0.0, minValue = 1e30;
@@ -450,7 +452,7 @@ TEST_F(IblLutTest, LutIsBoundedAndMatchesTheReferenceSplitSum) {
     measured("lutRoughness0MaxAbsErrorOfAPlusB", worstRow0);
     compareLutWithReference(ab, size, 8, 1e-2, "lutDefault");
 
-    const std::vector<glm::vec2> converged = computeLut(renderer, scene, env, 32, 8192);
+    const std::vector<glm::vec2> converged = computeLut(renderer, scene, env, 32, 8192, context().choices().brdfLut);
     ASSERT_EQ(converged.size(), 32u * 32u);
     compareLutWithReference(converged, 32, 1, 1e-2, "lut32x8192");
 }
@@ -575,7 +577,10 @@ MapStats checkMaps(const std::vector<CachedImage>& maps) {
 //       upload, precompute), well under the 20 s that would have called for 8192×64 and 64×4096
 //       instead. Also sh[0] against the reference projection: relative 1e-3 (measured 2.4e-6);
 //   (e) 333×97 (non-power-of-two; smooth): sh[0..8] against the reference projection, abs 1e-3
-//       (measured 1.7e-4).
+//       (measured 1.7e-4). Where the device stores the float cube in RGBA16F (the minimum device
+//       profile: no linear filtering of RGBA32F), every texel of the SH source is rounded to 11 bits
+//       and each mip of it averages rounded texels: abs 3e-3 there (measured 2.2e-3 on values up
+//       to 1.5, 4.5 half-float ulps).
 TEST_F(IblExtremeTest, ExtremeEnvironmentsGiveFiniteBoundedMapsAndFrames) {
     std::list<scene::Environment> environments;  // distinct addresses: the renderer re-hashes on a new pointer
     const std::vector<Sphere> spheres = {{glm::vec3(-2.5f, 0.0f, 0.0f), 1.0f, 1.0f, 0.0f},
@@ -709,7 +714,8 @@ TEST_F(IblExtremeTest, ExtremeEnvironmentsGiveFiniteBoundedMapsAndFrames) {
         for (size_t i = 0; i < 9; ++i)
             for (int ch = 0; ch < 3; ++ch) worst = std::max(worst, std::abs(gpu[i][ch] - reference[i][ch] * kBand[i]));
         measured("npot333x97.shMaxAbsErrorVsReference", worst);
-        EXPECT_LE(worst, 1e-3);
+        const bool halfCube = context().choices().floatCube == VK_FORMAT_R16G16B16A16_SFLOAT;
+        EXPECT_LE(worst, halfCube ? 3e-3 : 1e-3);
         run(env, cube, "npot333x97.cube");
     }
 }

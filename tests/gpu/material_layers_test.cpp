@@ -14,6 +14,8 @@
 #include "assets/gltf_loader.h"
 #include "render/renderer.h"
 
+#include <glm/gtc/packing.hpp>
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -233,11 +235,20 @@ TEST_F(GpuTest, SheenLutMatchesTheDoubleReference) {
     const passes::IblSheenLutPass pass(context());
     GraphRunner runner(context());
     graph::RenderGraph graph;
-    const graph::TextureId lut = graph.createTexture("sheen_lut", {.width = kSize, .height = kSize, .format = passes::IblSheenLutPass::format(context())});
-    const graph::BufferId target = runner.readbackBuffer(graph, "sheen lut readback", sizeof(float) * kSize * kSize);
+    // R32F, or RGBA16F where R32F is not linearly filterable (the minimum device profile).
+    const VkFormat format = passes::IblSheenLutPass::format(context());
+    const graph::TextureId lut = graph.createTexture("sheen_lut", {.width = kSize, .height = kSize, .format = format});
+    const uint32_t texelBytes = graph::formatTexelSize(format);
+    const graph::BufferId target = runner.readbackBuffer(graph, "sheen lut readback", texelBytes * kSize * kSize);
     passes::addReadbackPass(graph, pass.add(graph, lut), target);
     runner.run(graph);
-    const std::vector<float> texels = runner.read<float>(target);
+    std::vector<float> texels;
+    if (format == VK_FORMAT_R32_SFLOAT) {
+        texels = runner.read<float>(target);
+    } else {
+        const std::vector<uint16_t> halves = runner.read<uint16_t>(target);
+        for (size_t i = 0; i < halves.size(); i += 4) texels.push_back(glm::unpackHalf1x16(halves[i]));
+    }
     const auto reference = [](double NoV, double roughness) {
         const glm::dvec3 n(0.0, 0.0, 1.0), v(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
         constexpr int kU = 2048, kPhi = 256;

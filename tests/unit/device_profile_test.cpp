@@ -121,10 +121,19 @@ TEST(DeviceChoices, FallbacksFollowTheMissingFormatFeatures) {
     EXPECT_EQ(minimum.floatCube, VK_FORMAT_R16G16B16A16_SFLOAT);
     EXPECT_EQ(minimum.sheenLut, VK_FORMAT_R16G16B16A16_SFLOAT);
     EXPECT_EQ(minimum.brdfLut, VK_FORMAT_R16G16B16A16_SFLOAT);
-    ASSERT_EQ(minimum.fallbacks.size(), 3u);
+    ASSERT_EQ(minimum.fallbacks.size(), 4u);
     EXPECT_NE(minimum.fallbacks[2].find("BRDF LUT: R16G16B16A16_SFLOAT instead of R16G16_SFLOAT (no STORAGE_IMAGE)"),
               std::string::npos)
         << minimum.fallbacks[2];
+    // The layered program's 23 samplers exceed 16: its variants are specialized to their layers.
+    EXPECT_TRUE(minimum.specializeLayeredProgram);
+    EXPECT_NE(minimum.fallbacks[3].find("samplers in the fragment stage, the device allows 16"), std::string::npos)
+        << minimum.fallbacks[3];
+    EXPECT_FALSE(native.specializeLayeredProgram);
+    // Apple: 16 samplers (but every format): only the layered program's fallback.
+    const DeviceChoices apple = chooseForDevice(narrowCaps(generousDevice(), DeviceProfile::Apple));
+    EXPECT_TRUE(apple.specializeLayeredProgram);
+    EXPECT_EQ(apple.fallbacks.size(), 1u);
 
     // Only the missing feature moves a choice: RG16F with storage keeps the BRDF LUT.
     DeviceCaps partial = narrowCaps(generousDevice(), DeviceProfile::Minimum);

@@ -1,0 +1,25 @@
+#pragma once
+// Specialization at load: SPIR-V with some specialization constants fixed to values and the code
+// and resources those values leave unused removed (SPIRV-Tools' optimizer). A program variant then
+// declares only the descriptors it reads, so its layout fits per-stage limits a generic program
+// would exceed (the layered forward program on devices with 16 samplers per stage).
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace candela::shader {
+
+// A specialization constant (constant_id) and its value as the 32 bits Vulkan's
+// VkSpecializationInfo would pass (bool: 0 or 1).
+using FrozenConstant = std::pair<uint32_t, uint32_t>;
+
+// `spirv` with the constants in `frozen` fixed (constants `spirv` does not declare are ignored) and
+// dead code, functions and variables removed. Throws std::runtime_error naming `debugName` if the
+// optimizer fails. The other specialization constants stay specialization constants.
+std::vector<uint32_t> specializeSpirv(std::span<const uint32_t> spirv, std::span<const FrozenConstant> frozen,
+                                      const std::string& debugName);
+
+}  // namespace candela::shader

@@ -1,0 +1,90 @@
+// Specialization at load (shader/specialize.h) on the layered forward program: frozen constants
+// fold away the code of the layers a variant lacks, and with it their descriptors; constants not
+// frozen stay specialization constants.
+#include "shader/builtin_shaders.h"
+#include "shader/reflection.h"
+#include "shader/specialize.h"
+#include "shared/forward_tables.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace candela::shader {
+namespace {
+
+constexpr uint32_t kLayersId = 10, kDebugViewId = 9;
+
+bool declares(const ShaderReflection& r, const std::string& name) {
+    return std::any_of(r.bindings.begin(), r.bindings.end(), [&](const DescriptorBinding& b) { return b.name == name; });
+}
+
+uint32_t samplers(const ShaderReflection& r) {
+    uint32_t n = 0;
+    for (const DescriptorBinding& b : r.bindings) n += b.type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER ? b.count : 0;
+    return n;
+}
+
+// Whether `spirv` still decorates a constant with SpecId `id`.
+bool hasSpecId(const std::vector<uint32_t>& spirv, uint32_t id) {
+    for (size_t i = 5; i < spirv.size(); i += spirv[i] >> 16)
+        if ((spirv[i] & 0xFFFFu) == 71 && (spirv[i] >> 16) == 4 && spirv[i + 2] == 1 && spirv[i + 3] == id) return true;
+    return false;
+}
+
+TEST(Specialize, FreezingTheLayersRemovesTheTexturesOfTheOthers) {
+    const std::span<const uint32_t> generic = builtinShader("forward_layers.frag");
+    const ShaderReflection all = reflectSpirv(generic, "generic");
+    EXPECT_EQ(samplers(all), 23u);  // 5 core, 12 layer textures, 3 IBL maps, 3 layer maps
+
+    const FrozenConstant sheen[] = {{kLayersId, CANDELA_LAYER_SHEEN}};
+    const std::vector<uint32_t> spirv = specializeSpirv(generic, sheen, "sheen");
+    const ShaderReflection r = reflectSpirv(spirv, "sheen");
+    EXPECT_TRUE(declares(r, "sheenColorTexture"));
+    EXPECT_TRUE(declares(r, "sheenRoughnessTexture"));
+    EXPECT_TRUE(declares(r, "sheenLut"));
+    EXPECT_TRUE(declares(r, "sheenCube"));
+    EXPECT_FALSE(declares(r, "clearcoatTexture"));
+    EXPECT_FALSE(declares(r, "transmissionBackground"));
+    EXPECT_FALSE(declares(r, "iridescenceThicknessTexture"));
+    // The core textures and IBL maps stay: their use hangs on constants that were not frozen.
+    for (const char* name : {"baseColorTexture", "normalTexture", "emissiveTexture", "specularCube", "irradianceCube"})
+        EXPECT_TRUE(declares(r, name)) << name;
+    EXPECT_LE(samplers(r), 16u) << "fits the per-stage samplers every Vulkan device has";
+    EXPECT_FALSE(hasSpecId(spirv, kLayersId));
+    EXPECT_TRUE(hasSpecId(spirv, kDebugViewId));
+}
+
+TEST(Specialize, EveryOneLayerVariantFitsSixteenSamplers) {
+    const std::span<const uint32_t> generic = builtinShader("forward_layers.frag");
+    for (uint32_t bit = 1; bit <= 0x80u; bit <<= 1) {
+        const FrozenConstant layer[] = {{kLayersId, bit}};
+        const uint32_t count = samplers(reflectSpirv(specializeSpirv(generic, layer, "layer"), "layer"));
+        std::printf("[ measured ] layer bit %u: %u samplers\n", bit, count);
+        EXPECT_LE(count, 16u) << "layer bit " << bit;
+    }
+}
+
+TEST(Specialize, AVariantWithEveryLayerKeepsEveryTexture) {
+    const std::span<const uint32_t> generic = builtinShader("forward_layers.frag");
+    const FrozenConstant every[] = {{kLayersId, 0xFFu}};
+    const ShaderReflection r = reflectSpirv(specializeSpirv(generic, every, "every"), "every");
+    EXPECT_EQ(samplers(r), 23u);
+}
+
+TEST(Specialize, ConstantsTheShaderDoesNotDeclareAreIgnored) {
+    const std::span<const uint32_t> pattern = builtinShader("pattern.comp");
+    const FrozenConstant unknown[] = {{77, 1}};
+    const ShaderReflection r = reflectSpirv(specializeSpirv(pattern, unknown, "pattern"), "pattern");
+    EXPECT_TRUE(declares(r, "outImage"));
+}
+
+TEST(Specialize, MalformedSpirvIsAnErrorNotACrash) {
+    const uint32_t truncated[] = {0x07230203u, 0x00010600u, 0, 10, 0, (9u << 16) | 71u, 1};
+    const FrozenConstant any[] = {{kLayersId, 1}};
+    EXPECT_THROW(specializeSpirv(truncated, any, "truncated"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace candela::shader
