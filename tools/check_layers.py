@@ -58,7 +58,7 @@ LAYERS = {
 }
 ALL = sorted(LAYERS)
 CPU = ["core", "shared", "animation", "scene", "geometry", "pose", "assets", "ibl", "reports", "shader", "graph"]
-ENGINE_UNIT_TESTS = ["device_select_test.cpp", "device_profile_test.cpp", "msaa_choice_test.cpp", "graph_pass_context_test.cpp",
+ENGINE_UNIT_TESTS = ["device_select_test.cpp", "device_profile_test.cpp", "memory_type_test.cpp", "msaa_choice_test.cpp", "graph_pass_context_test.cpp",
                      "graph_msaa_test.cpp", "draw_list_test.cpp", "ibl_sample_tables_test.cpp",
                      "orbit_controls_test.cpp", "ibl_report_table_test.cpp", "forward_shader_test.cpp",
                      "forward_tables_test.cpp"]

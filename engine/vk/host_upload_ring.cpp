@@ -12,7 +12,7 @@ VkBuffer HostUploadRing::write(uint32_t slot, size_t index, std::span<const std:
     if (buffers.size() <= index) buffers.resize(index + 1);
     Buffer& buffer = buffers[index];
     if (!buffer || buffer.size() < bytes.size())
-        buffer = Buffer(mContext, {.size = size, .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, .memory = MemoryUsage::Upload, .name = name});
+        buffer = Buffer(mContext, {.size = size, .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, .memory = MemoryUsage::Stream, .name = name});
     if (!bytes.empty()) std::memcpy(buffer.mapped(), bytes.data(), bytes.size());
     buffer.flush();
     return buffer.handle();

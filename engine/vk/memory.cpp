@@ -25,7 +25,8 @@ VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) { return (value
 VkMemoryPropertyFlags requiredFlags(MemoryUsage usage) {
     switch (usage) {
         case MemoryUsage::GpuOnly: return 0;
-        case MemoryUsage::Upload: return VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+        case MemoryUsage::Upload:
+        case MemoryUsage::Stream: return VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
         case MemoryUsage::Readback: return VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT;
     }
     return 0;
@@ -35,9 +36,18 @@ VkMemoryPropertyFlags preferredFlags(MemoryUsage usage) {
     switch (usage) {
         case MemoryUsage::GpuOnly: return VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
         case MemoryUsage::Upload: return 0;
+        case MemoryUsage::Stream: return VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
         case MemoryUsage::Readback: return VK_MEMORY_PROPERTY_HOST_CACHED_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     }
     return 0;
+}
+
+// Flags a usage would rather not have (scored after the preferred ones).
+VkMemoryPropertyFlags avoidedFlags(MemoryUsage usage) {
+    switch (usage) {
+        case MemoryUsage::Upload: return VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;  // leave resizable BAR to Stream
+        default: return 0;
+    }
 }
 
 }  // namespace
@@ -52,18 +62,28 @@ MemoryAllocator::~MemoryAllocator() {
         if (block) vkFreeMemory(mDevice, block->memory, nullptr);
 }
 
-uint32_t MemoryAllocator::findMemoryType(uint32_t typeBits, MemoryUsage usage) const {
+uint32_t chooseMemoryType(const VkPhysicalDeviceMemoryProperties& properties, uint32_t typeBits, uint32_t typeMask,
+                          MemoryUsage usage) {
     const VkMemoryPropertyFlags required = requiredFlags(usage);
     const VkMemoryPropertyFlags preferred = preferredFlags(usage);
+    const VkMemoryPropertyFlags avoided = avoidedFlags(usage);
     uint32_t best = ~0u;
     int bestScore = -1;
-    for (uint32_t i = 0; i < mProperties.memoryTypeCount; ++i) {
-        if (!(typeBits & mTypeMask & (1u << i))) continue;
-        const VkMemoryPropertyFlags flags = mProperties.memoryTypes[i].propertyFlags;
+    for (uint32_t i = 0; i < properties.memoryTypeCount; ++i) {
+        if (!(typeBits & typeMask & (1u << i))) continue;
+        const VkMemoryPropertyFlags flags = properties.memoryTypes[i].propertyFlags;
         if ((flags & required) != required) continue;
-        const int score = __builtin_popcount(flags & preferred);
+        // Lazily allocated memory only when nothing else is allowed (the transient pool restricts
+        // transient attachments to it).
+        const bool lazy = flags & VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT;
+        const int score = 4 * __builtin_popcount(flags & preferred) + 2 * !(flags & avoided) + !lazy;
         if (score > bestScore) best = i, bestScore = score;
     }
+    return best;
+}
+
+uint32_t MemoryAllocator::findMemoryType(uint32_t typeBits, MemoryUsage usage) const {
+    const uint32_t best = chooseMemoryType(mProperties, typeBits, mTypeMask, usage);
     if (best == ~0u) throw std::runtime_error("no Vulkan memory type fits the resource's requirements");
     return best;
 }

@@ -20,7 +20,10 @@ namespace candela::vk {
 
 enum class MemoryUsage : uint8_t {
     GpuOnly,   // device-local
-    Upload,    // host-visible, coherent, for staging and per-frame constants
+    Upload,    // host-visible, coherent, for staging: preferably not device-local (a discrete GPU's
+               // host-visible device-local heap, resizable BAR, is small and kept for Stream)
+    Stream,    // host-visible, coherent, written by the host each frame and read by shaders:
+               // preferably device-local (resizable BAR, unified memory), else system memory
     Readback,  // host-visible, preferably cached, for reading results back
 };
 
@@ -57,6 +60,13 @@ struct MemoryStats {
     uint64_t allocatedBytes = 0;     // bytes handed out to resources
     uint32_t liveAllocations = 0;
 };
+
+// The memory type for `usage` among the types in `typeBits` & `typeMask` of `properties`: one with
+// the flags the usage requires, then the most preferred flags, then the fewest avoided ones (see
+// MemoryUsage), then not lazily allocated; ~0u if none has the required flags. Pure: unit-tested
+// on real GPUs' memory types.
+uint32_t chooseMemoryType(const VkPhysicalDeviceMemoryProperties& properties, uint32_t typeBits, uint32_t typeMask,
+                          MemoryUsage usage);
 
 class MemoryAllocator {
 public:

@@ -48,7 +48,11 @@ TEST_F(GpuTest, DeferredDestructionWaitsForTheFrame) {
     EXPECT_EQ(context().liveObjects(), 0);
 }
 
+// Also through 256 bytes of staging: the buffer goes in 128-byte pieces and the image (52-byte
+// rows) two rows at a time, over many submits, and reads back the same.
 TEST_F(GpuTest, UploadedBufferAndImageReadBackIdentical) {
+  for (const VkDeviceSize chunk : {VkDeviceSize(0), VkDeviceSize(256)}) {
+    SCOPED_TRACE("staging chunk " + std::to_string(chunk));
     std::vector<uint32_t> words(1000);
     std::iota(words.begin(), words.end(), 7u);
     vk::Buffer device(context(), {.size = words.size() * 4,
@@ -58,10 +62,16 @@ TEST_F(GpuTest, UploadedBufferAndImageReadBackIdentical) {
     for (size_t i = 0; i < texels.size(); ++i) texels[i] = static_cast<uint8_t>(i * 31 + 5);
     vk::Image image(context(), {.width = w, .height = h, .format = VK_FORMAT_R8G8B8A8_UNORM,
                                 .usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
-    vk::Uploader uploader(context());
+    vk::Uploader uploader(context(), chunk);
     uploader.buffer(device, std::as_bytes(std::span(words)));
     uploader.image(image, std::as_bytes(std::span(texels)), 0, 0, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     uploader.submitAndWait();
+    if (chunk) {
+        EXPECT_EQ(uploader.chunkBytes(), chunk);
+        EXPECT_GT(uploader.submits(), 10u);
+    } else {
+        EXPECT_EQ(uploader.submits(), 1u);
+    }
 
     vk::Buffer readback(context(), {.size = words.size() * 4 + texels.size(),
                                     .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -79,6 +89,7 @@ TEST_F(GpuTest, UploadedBufferAndImageReadBackIdentical) {
     readback.invalidate();
     EXPECT_EQ(std::memcmp(readback.mapped(), words.data(), words.size() * 4), 0);
     EXPECT_EQ(std::memcmp(readback.mapped() + words.size() * 4, texels.data(), texels.size()), 0);
+  }
 }
 
 TEST_F(GpuTest, DescriptorWriterRefusesUnwrittenBindingsAndUnknownNames) {
