@@ -4,11 +4,13 @@
 
 #include "scene/texture_transform.h"
 #include "shared/scene_data.h"
+#include "shared/skin_morph.h"
 #include "vk/upload.h"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 namespace candela::scene {
@@ -144,6 +146,24 @@ std::vector<shading::DrawData> drawDataOf(const Scene& scene, std::span<const Dr
     return out;
 }
 
+uint32_t deformationRecordWords(const Deformation& deformation) {
+    return deformation.influencesPerVertex * CANDELA_INFLUENCE_WORDS + deformation.targetCount * CANDELA_MORPH_DELTA_WORDS;
+}
+
+void appendDeformationRecords(const Deformation& d, std::vector<uint32_t>& words) {
+    static_assert(sizeof(MorphDelta) == CANDELA_MORPH_DELTA_WORDS * sizeof(uint32_t));
+    static_assert(sizeof(JointInfluence) == CANDELA_INFLUENCE_WORDS * sizeof(uint32_t));
+    const size_t first = words.size();
+    words.resize(first + size_t(d.vertexCount) * deformationRecordWords(d));
+    uint32_t* out = words.data() + first;
+    for (uint32_t v = 0; v < d.vertexCount; ++v) {
+        for (uint32_t i = 0; i < d.influencesPerVertex; ++i, out += CANDELA_INFLUENCE_WORDS)
+            std::memcpy(out, &d.influences[size_t(v) * d.influencesPerVertex + i], sizeof(JointInfluence));
+        for (uint32_t t = 0; t < d.targetCount; ++t, out += CANDELA_MORPH_DELTA_WORDS)
+            std::memcpy(out, &d.deltas[size_t(t) * d.vertexCount + v], sizeof(MorphDelta));
+    }
+}
+
 GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights, float maxAnisotropy,
                    bool sceneLights)
     : mScene(&scene), mContext(&context) {
@@ -152,16 +172,12 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     mVertices = uploadedBuffer(context, uploader, scene.vertices, "vertices",
                                VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | (deformable ? VK_BUFFER_USAGE_STORAGE_BUFFER_BIT : 0));
     if (deformable) {
-        std::vector<MorphDelta> deltas;
-        std::vector<JointInfluence> influences;
+        std::vector<uint32_t> words;
         for (const Deformation& d : scene.deformations) {
-            mDeltaBase.push_back(uint32_t(deltas.size()));
-            mInfluenceBase.push_back(uint32_t(influences.size()));
-            deltas.insert(deltas.end(), d.deltas.begin(), d.deltas.end());
-            influences.insert(influences.end(), d.influences.begin(), d.influences.end());
+            mDeformationWord.push_back(words.size());
+            appendDeformationRecords(d, words);
         }
-        mDeltas = uploadedBuffer(context, uploader, deltas, "morph_deltas");
-        mInfluences = uploadedBuffer(context, uploader, influences, "skin_influences");
+        mDeformation = uploadedBuffer(context, uploader, words, "deformation_records");
     }
     mIndices = uploadedBuffer(context, uploader, scene.indices, "indices", VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
