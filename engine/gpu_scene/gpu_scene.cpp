@@ -1,10 +1,12 @@
 #include "gpu_scene/gpu_scene.h"
 
+#include "core/errors.h"
 #include "geometry/normal_map_mips.h"
 
 #include "scene/texture_transform.h"
 #include "shared/scene_data.h"
 #include "shared/skin_morph.h"
+#include "vk/context.h"
 #include "vk/upload.h"
 
 #include <algorithm>
@@ -164,9 +166,19 @@ void appendDeformationRecords(const Deformation& d, std::vector<uint32_t>& words
     }
 }
 
+void checkIndexValues(const Scene& scene, const vk::DeviceCaps& caps) {
+    const uint32_t limit = caps.limits.maxDrawIndexedIndexValue;
+    const auto largest = std::max_element(scene.indices.begin(), scene.indices.end());
+    if (largest == scene.indices.end() || *largest <= limit) return;
+    throw UserError(scene.source + ": index value " + std::to_string(*largest) + " passes this device's maxDrawIndexedIndexValue (" +
+                    std::to_string(limit) + (caps.features.fullDrawIndexUint32 ? "" : "; no fullDrawIndexUint32") +
+                    "): the scene has too many vertices for it");
+}
+
 GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights, float maxAnisotropy,
                    bool sceneLights)
     : mScene(&scene), mContext(&context) {
+    checkIndexValues(scene, context.caps());
     vk::Uploader uploader(context);
     const bool deformable = !scene.deformations.empty();
     mVertices = uploadedBuffer(context, uploader, scene.vertices, "vertices",

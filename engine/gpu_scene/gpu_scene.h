@@ -8,6 +8,7 @@
 #include "scene/scene.h"
 #include "shared/scene_data.h"
 #include "vk/buffer.h"
+#include "vk/device_caps.h"
 #include "vk/image.h"
 #include "vk/sampler.h"
 
@@ -35,6 +36,12 @@ uint32_t deformationRecordWords(const Deformation& deformation);
 // Appends the records of `deformation`'s vertices, in vertex order, to `words` (vertex-major, so
 // the records of a run of vertices are contiguous: the skin_morph pass binds only those).
 void appendDeformationRecords(const Deformation& deformation, std::vector<uint32_t>& words);
+
+// Throws UserError (one line) when an index value of `scene` passes `caps`'s
+// maxDrawIndexedIndexValue — 2^24−1 on a device without fullDrawIndexUint32 (the minimum profile),
+// where drawing it would be undefined. The indices are absolute in the scene's one vertex buffer,
+// so this is a scene of more than 16,777,215 vertices on such a device.
+void checkIndexValues(const Scene& scene, const vk::DeviceCaps& caps);
 
 class GpuScene {
 public:
