@@ -1,14 +1,18 @@
 #include "gpu_scene/gpu_scene.h"
 
+#include "core/errors.h"
 #include "geometry/normal_map_mips.h"
 
 #include "scene/texture_transform.h"
 #include "shared/scene_data.h"
+#include "shared/skin_morph.h"
+#include "vk/context.h"
 #include "vk/upload.h"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 namespace candela::scene {
@@ -144,24 +148,48 @@ std::vector<shading::DrawData> drawDataOf(const Scene& scene, std::span<const Dr
     return out;
 }
 
+uint32_t deformationRecordWords(const Deformation& deformation) {
+    return deformation.influencesPerVertex * CANDELA_INFLUENCE_WORDS + deformation.targetCount * CANDELA_MORPH_DELTA_WORDS;
+}
+
+void appendDeformationRecords(const Deformation& d, std::vector<uint32_t>& words) {
+    static_assert(sizeof(MorphDelta) == CANDELA_MORPH_DELTA_WORDS * sizeof(uint32_t));
+    static_assert(sizeof(JointInfluence) == CANDELA_INFLUENCE_WORDS * sizeof(uint32_t));
+    const size_t first = words.size();
+    words.resize(first + size_t(d.vertexCount) * deformationRecordWords(d));
+    uint32_t* out = words.data() + first;
+    for (uint32_t v = 0; v < d.vertexCount; ++v) {
+        for (uint32_t i = 0; i < d.influencesPerVertex; ++i, out += CANDELA_INFLUENCE_WORDS)
+            std::memcpy(out, &d.influences[size_t(v) * d.influencesPerVertex + i], sizeof(JointInfluence));
+        for (uint32_t t = 0; t < d.targetCount; ++t, out += CANDELA_MORPH_DELTA_WORDS)
+            std::memcpy(out, &d.deltas[size_t(t) * d.vertexCount + v], sizeof(MorphDelta));
+    }
+}
+
+void checkIndexValues(const Scene& scene, const vk::DeviceCaps& caps) {
+    const uint32_t limit = caps.limits.maxDrawIndexedIndexValue;
+    const auto largest = std::max_element(scene.indices.begin(), scene.indices.end());
+    if (largest == scene.indices.end() || *largest <= limit) return;
+    throw UserError(scene.source + ": index value " + std::to_string(*largest) + " passes this device's maxDrawIndexedIndexValue (" +
+                    std::to_string(limit) + (caps.features.fullDrawIndexUint32 ? "" : "; no fullDrawIndexUint32") +
+                    "): the scene has too many vertices for it");
+}
+
 GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights, float maxAnisotropy,
                    bool sceneLights)
     : mScene(&scene), mContext(&context) {
+    checkIndexValues(scene, context.caps());
     vk::Uploader uploader(context);
     const bool deformable = !scene.deformations.empty();
     mVertices = uploadedBuffer(context, uploader, scene.vertices, "vertices",
                                VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | (deformable ? VK_BUFFER_USAGE_STORAGE_BUFFER_BIT : 0));
     if (deformable) {
-        std::vector<MorphDelta> deltas;
-        std::vector<JointInfluence> influences;
+        std::vector<uint32_t> words;
         for (const Deformation& d : scene.deformations) {
-            mDeltaBase.push_back(uint32_t(deltas.size()));
-            mInfluenceBase.push_back(uint32_t(influences.size()));
-            deltas.insert(deltas.end(), d.deltas.begin(), d.deltas.end());
-            influences.insert(influences.end(), d.influences.begin(), d.influences.end());
+            mDeformationWord.push_back(words.size());
+            appendDeformationRecords(d, words);
         }
-        mDeltas = uploadedBuffer(context, uploader, deltas, "morph_deltas");
-        mInfluences = uploadedBuffer(context, uploader, influences, "skin_influences");
+        mDeformation = uploadedBuffer(context, uploader, words, "deformation_records");
     }
     mIndices = uploadedBuffer(context, uploader, scene.indices, "indices", VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 

@@ -8,6 +8,7 @@
 #include "scene/scene.h"
 #include "shared/scene_data.h"
 #include "vk/buffer.h"
+#include "vk/device_caps.h"
 #include "vk/image.h"
 #include "vk/sampler.h"
 
@@ -28,6 +29,20 @@ std::vector<shading::DrawData> drawDataOf(const Scene& scene, std::span<const Dr
 // intensity, cone terms).
 shading::LightData lightData(const Light& light);
 
+// The words of one vertex's record of `deformation` in GpuScene::deformationBuffer: its
+// influencesPerVertex influences (CANDELA_INFLUENCE_WORDS each: joint, weight bits), then its
+// targetCount deltas (CANDELA_MORPH_DELTA_WORDS each: position, normal, tangent, uv, color).
+uint32_t deformationRecordWords(const Deformation& deformation);
+// Appends the records of `deformation`'s vertices, in vertex order, to `words` (vertex-major, so
+// the records of a run of vertices are contiguous: the skin_morph pass binds only those).
+void appendDeformationRecords(const Deformation& deformation, std::vector<uint32_t>& words);
+
+// Throws UserError (one line) when an index value of `scene` passes `caps`'s
+// maxDrawIndexedIndexValue — 2^24−1 on a device without fullDrawIndexUint32 (the minimum profile),
+// where drawing it would be undefined. The indices are absolute in the scene's one vertex buffer,
+// so this is a scene of more than 16,777,215 vertices on such a device.
+void checkIndexValues(const Scene& scene, const vk::DeviceCaps& caps);
+
 class GpuScene {
 public:
     // Uploads `scene` (one batched submit) with `extraLights` appended to its lights (to nothing but
@@ -45,14 +60,13 @@ public:
     // The layer parameters of every material (shading::MaterialLayerData), for the layered forward
     // program; a null handle when no material has a layer (Material::layers()).
     VkBuffer materialLayerBuffer() const { return mMaterialLayers.handle(); }
-    // Morph-target deltas and skin influences of every Scene::deformations entry, concatenated
-    // (MorphDelta and JointInfluence layouts); null handles when the scene has no deformations.
-    // The vertex buffer can then also be read as a storage buffer (by the skin_morph pass).
-    VkBuffer deltaBuffer() const { return mDeltas.handle(); }
-    VkBuffer influenceBuffer() const { return mInfluences.handle(); }
-    // Where deformation `d`'s data starts in those buffers (in elements).
-    uint32_t deltaBase(size_t d) const { return mDeltaBase[d]; }
-    uint32_t influenceBase(size_t d) const { return mInfluenceBase[d]; }
+    // The skin influences and morph-target deltas of every Scene::deformations entry in one buffer
+    // of 32-bit words, one record per vertex (appendDeformationRecords); a null handle when the
+    // scene has no deformations. The vertex buffer can then also be read as a storage buffer (by
+    // the skin_morph pass).
+    VkBuffer deformationBuffer() const { return mDeformation.handle(); }
+    // The word of that buffer where deformation `d`'s vertex 0 record starts.
+    uint64_t deformationWord(size_t d) const { return mDeformationWord[d]; }
     uint32_t lightCount() const { return mLightCount; }
 
     // The lights and materials as the scene defines them, and as the buffers hold them now
@@ -83,8 +97,8 @@ public:
 
 private:
     const Scene* mScene;
-    vk::Buffer mVertices, mIndices, mLights, mDraws, mMaterials, mMaterialLayers, mDeltas, mInfluences;
-    std::vector<uint32_t> mDeltaBase, mInfluenceBase;
+    vk::Buffer mVertices, mIndices, mLights, mDraws, mMaterials, mMaterialLayers, mDeformation;
+    std::vector<uint64_t> mDeformationWord;
     uint32_t mLightCount = 0;
     vk::Context* mContext;
     std::vector<shading::LightData> mSceneLights, mLightData;

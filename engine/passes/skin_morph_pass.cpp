@@ -1,42 +1,62 @@
 #include "passes/skin_morph_pass.h"
 
+#include "core/errors.h"
 #include "executor/graph_executor.h"
 #include "passes/compute.h"
+#include "vk/context.h"
 #include "vk/descriptors.h"
 
 #include <climits>
+#include <cstring>
 
 namespace candela::passes {
 
 using namespace graph;
 
 static_assert(sizeof(scene::Vertex) == CANDELA_VERTEX_FLOATS * sizeof(float));
-static_assert(sizeof(shading::ActiveMorphTarget) == sizeof(scene::JointInfluence));
+static_assert(sizeof(shading::ActiveMorphTarget) == CANDELA_ACTIVE_TARGET_WORDS * sizeof(uint32_t));
+static_assert(sizeof(glm::mat4) == CANDELA_JOINT_WORDS * sizeof(uint32_t));
+
+namespace {
+
+template <class T>
+void appendWords(std::vector<uint32_t>& words, const T& value) {
+    const size_t first = words.size();
+    words.resize(first + sizeof(T) / sizeof(uint32_t));
+    std::memcpy(words.data() + first, &value, sizeof(T));
+}
+
+}  // namespace
 
 SkinMorphFrame skinMorphFrame(const scene::GpuScene& gpuScene, const scene::ScenePose& pose) {
     const scene::Scene& scene = gpuScene.scene();
     SkinMorphFrame out;
     out.vertexOffset.assign(pose.draws().size(), INT32_MIN);
-    std::vector<uint32_t> jointBase(scene.skins.size());
+    // The joint matrices first, then each draw's non-zero weights.
+    std::vector<uint32_t> jointWord(scene.skins.size());
     for (size_t s = 0; s < scene.skins.size(); ++s) {
-        jointBase[s] = uint32_t(out.joints.size());
-        for (const glm::dmat4& m : pose.jointMatrices(uint32_t(s))) out.joints.emplace_back(m);
+        jointWord[s] = uint32_t(out.frameData.size());
+        for (const glm::dmat4& m : pose.jointMatrices(uint32_t(s))) appendWords(out.frameData, glm::mat4(m));
     }
     for (uint32_t d : pose.deformedDraws()) {
         const scene::Draw& draw = pose.draws()[d];
         const scene::Deformation& deformation = scene.deformations[size_t(draw.deformation)];
-        shading::SkinMorphPush job{.sourceFirstVertex = deformation.firstVertex,
-                                   .vertexCount = deformation.vertexCount,
-                                   .targetFirstVertex = out.vertexCount,
-                                   .deltaBase = gpuScene.deltaBase(size_t(draw.deformation)),
-                                   .activeBase = uint32_t(out.activeTargets.size()),
-                                   .jointBase = draw.skin >= 0 ? jointBase[size_t(draw.skin)] : 0,
-                                   .influenceBase = gpuScene.influenceBase(size_t(draw.deformation)),
-                                   .influencesPerVertex = draw.skin >= 0 ? deformation.influencesPerVertex : 0};
+        SkinMorphJob job{.sourceFirstVertex = deformation.firstVertex,
+                         .vertexCount = deformation.vertexCount,
+                         .targetFirstVertex = out.vertexCount,
+                         .recordWord = gpuScene.deformationWord(size_t(draw.deformation)),
+                         .recordWords = scene::deformationRecordWords(deformation),
+                         .deltaWord = deformation.influencesPerVertex * CANDELA_INFLUENCE_WORDS,
+                         .influencesPerVertex = draw.skin >= 0 ? deformation.influencesPerVertex : 0,
+                         .jointWord = draw.skin >= 0 ? jointWord[size_t(draw.skin)] : 0,
+                         .activeWord = uint32_t(out.frameData.size())};
         const std::span<const float> weights = pose.weights(draw);
         for (uint32_t t = 0; t < deformation.targetCount && t < weights.size(); ++t)
-            if (weights[t] != 0.0f) out.activeTargets.push_back({t, weights[t]});
-        job.activeCount = uint32_t(out.activeTargets.size()) - job.activeBase;
+            if (weights[t] != 0.0f) {
+                appendWords(out.frameData, shading::ActiveMorphTarget{t, weights[t]});
+                ++job.activeCount;
+            }
+        out.activeTargets += job.activeCount;
         out.vertexOffset[d] = int32_t(int64_t(out.vertexCount) - int64_t(deformation.firstVertex));
         out.vertexCount += deformation.vertexCount;
         out.skinnedDraws += draw.skin >= 0;
@@ -45,38 +65,48 @@ SkinMorphFrame skinMorphFrame(const scene::GpuScene& gpuScene, const scene::Scen
     return out;
 }
 
-SkinMorphPass::SkinMorphPass(vk::Context& context) : mContext(context) {}
+SkinMorphPass::SkinMorphPass(vk::Context& context, const std::optional<SkinMorphLimits>& limits)
+    : mContext(context), mLimits(limits ? *limits : SkinMorphLimits::of(context.caps())) {}
 
 BufferId SkinMorphPass::add(RenderGraph& graph, const Inputs& in) {
     const vk::Pipeline* pipeline =
         &mPipelines.get(mContext, 0, [&] { return vk::Pipeline::compute(mContext, "skin_morph.comp"); });
+    std::vector<SkinMorphDispatch> dispatches;
+    for (const SkinMorphJob& job : in.jobs) {
+        const std::vector<SkinMorphDispatch> split = skinMorphDispatches(job, mLimits);
+        dispatches.insert(dispatches.end(), split.begin(), split.end());
+    }
+    const VkDeviceSize frameBytes = graph.declaration().resources[in.frameData.index].buffer.size;
+    if (frameBytes > mLimits.maxStorageBufferRange)
+        throw UserError("skin_morph: this frame's joint matrices and morph weights (" + formatBytes(frameBytes) +
+                        ") pass the device's maxStorageBufferRange (" + formatBytes(mLimits.maxStorageBufferRange) + ")");
     struct Data {
-        BufferId joints, active, deformed;
+        BufferId frame, deformed;
     };
     const Data& data = graph.addPass<Data>(
         "skin_morph", PassType::Compute,
         [&](PassBuilder& builder, Data& d) {
-            d.joints = builder.read(in.joints, Usage::StorageRead);
-            d.active = builder.read(in.activeTargets, Usage::StorageRead);
+            d.frame = builder.read(in.frameData, Usage::StorageRead);
             const BufferId deformed = builder.createBuffer(
                 "deformed_vertices", {.size = VkDeviceSize(std::max(in.vertexCount, 1u)) * sizeof(scene::Vertex)});
             d.deformed = builder.write(deformed, Usage::StorageWrite, WriteMode::Discard);
         },
-        [pipeline, scene = in.scene, jobs = in.jobs](const Data& d, PassContext& ctx) {
-            const VkDescriptorSet set = vk::DescriptorWriter(pipeline->program(), 0)
-                                            .buffer("BaseVertices", scene->vertexBuffer())
-                                            .buffer("Deltas", scene->deltaBuffer())
-                                            .buffer("Influences", scene->influenceBuffer())
-                                            .buffer("Joints", ctx.buffer(d.joints))
-                                            .buffer("ActiveTargets", ctx.buffer(d.active))
-                                            .buffer("Deformed", ctx.buffer(d.deformed))
-                                            .commit(ctx.context(), ctx.descriptors());
+        [pipeline, scene = in.scene, dispatches = std::move(dispatches)](const Data& d, PassContext& ctx) {
             pipeline->bind(ctx.cmd());
-            vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline->layout(), 0, 1, &set, 0, nullptr);
-            // The jobs write disjoint ranges: no barrier between them.
-            for (const shading::SkinMorphPush& job : jobs) {
-                pipeline->pushConstants(ctx.cmd(), &job, sizeof(job));
-                vkCmdDispatch(ctx.cmd(), groupCount(job.vertexCount, CANDELA_SKIN_MORPH_GROUP_SIZE), 1, 1);
+            // Each dispatch binds the ranges its vertices need; they write disjoint ranges: no
+            // barrier between them.
+            for (const SkinMorphDispatch& dispatch : dispatches) {
+                const VkDescriptorSet set =
+                    vk::DescriptorWriter(pipeline->program(), 0)
+                        .buffer("BaseVertices", scene->vertexBuffer(), dispatch.vertices.offset, dispatch.vertices.size)
+                        .buffer("Deformation", scene->deformationBuffer(), dispatch.deformation.offset, dispatch.deformation.size)
+                        .buffer("FrameData", ctx.buffer(d.frame))
+                        .buffer("Deformed", ctx.buffer(d.deformed), dispatch.deformed.offset, dispatch.deformed.size)
+                        .commit(ctx.context(), ctx.descriptors());
+                vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline->layout(), 0, 1, &set, 0,
+                                        nullptr);
+                pipeline->pushConstants(ctx.cmd(), &dispatch.push, sizeof(dispatch.push));
+                vkCmdDispatch(ctx.cmd(), dispatch.groups.x, dispatch.groups.y, 1);
             }
         });
     return data.deformed;

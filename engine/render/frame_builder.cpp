@@ -59,10 +59,9 @@ std::optional<passes::ForwardPass::DeformedVertices> FrameBuilder::addSkinMorph(
     const passes::SkinMorphPass::Inputs inputs{.scene = &gpuScene,
                                                .jobs = work.jobs,
                                                .vertexCount = work.vertexCount,
-                                               .joints = frame.addHostUpload("joint_matrices", bytesOf(work.joints)),
-                                               .activeTargets = frame.addHostUpload("morph_weights", bytesOf(work.activeTargets))};
+                                               .frameData = frame.addHostUpload("skin_morph_frame", bytesOf(work.frameData))};
     frame.notes.push_back("skin_morph: " + std::to_string(work.jobs.size()) + " draws deformed (" +
-                          std::to_string(work.skinnedDraws) + " skinned), " + std::to_string(work.activeTargets.size()) +
+                          std::to_string(work.skinnedDraws) + " skinned), " + std::to_string(work.activeTargets) +
                           " morph targets with a non-zero weight, " + std::to_string(work.vertexCount) + " vertices (" +
                           formatBytes(uint64_t(work.vertexCount) * sizeof(scene::Vertex)) + " per frame in flight)");
     return passes::ForwardPass::DeformedVertices{.vertices = mSkinMorph.add(*frame.graph, inputs),

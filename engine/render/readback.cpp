@@ -1,6 +1,7 @@
 #include "render/readback.h"
 
 #include "passes/readback_pass.h"
+#include "vk/swapchain_choices.h"
 
 #include <glm/gtc/packing.hpp>
 
@@ -21,13 +22,9 @@ graph::BufferId Readback::import(Frame& frame, VkDeviceSize bytes) {
     return readback;
 }
 
-std::vector<uint8_t> Readback::rgba8(size_t texels, bool bgra) {
+std::vector<uint8_t> Readback::rgba8(size_t texels, VkFormat format) {
     mBuffer.invalidate();
-    std::vector<uint8_t> out(texels * 4);
-    std::memcpy(out.data(), mBuffer.mapped(), out.size());
-    if (bgra)
-        for (size_t i = 0; i < out.size(); i += 4) std::swap(out[i], out[i + 2]);
-    return out;
+    return vk::presentTexelsToRgba8(format, static_cast<const std::byte*>(mBuffer.mapped()), texels);
 }
 
 std::vector<float> Readback::rgba32f(size_t texels) {

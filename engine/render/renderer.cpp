@@ -135,7 +135,7 @@ CapturedFrame Renderer::capture(const RenderSettings& settings) {
         throw UserError("nothing to capture: the readback pass was culled (" + readbackInfo.cullDetail + ")");
     const auto readStart = std::chrono::steady_clock::now();
     if (settings.floatOutput) captured.rgba32f = mReadback.rgba32f(texels);
-    else captured.rgba8 = mReadback.rgba8(texels, false);
+    else captured.rgba8 = mReadback.rgba8(texels, VK_FORMAT_R8G8B8A8_UNORM);
     captured.readbackMs = msSince(readStart);
     return captured;
 }
@@ -159,8 +159,7 @@ void Renderer::renderToTarget(const RenderSettings& settings, const PresentTarge
     screenshot->width = settings.width;
     screenshot->height = settings.height;
     screenshot->timings = mRunner.completedTimings();
-    const bool bgra = target.format == VK_FORMAT_B8G8R8A8_UNORM || target.format == VK_FORMAT_B8G8R8A8_SRGB;
-    screenshot->rgba8 = mReadback.rgba8(texels, bgra);
+    screenshot->rgba8 = mReadback.rgba8(texels, target.format);
 }
 
 std::vector<std::string> Renderer::explain() const {

@@ -12,6 +12,7 @@
 #include "ui/imgui_pass.h"
 #include "ui/panels.h"
 #include "vk/swapchain.h"
+#include "vk/swapchain_choices.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -348,9 +349,11 @@ void Viewer::drawUi() {
 }
 
 bool Viewer::ensureSwapchain(VkExtent2D extent) {
-    const VkExtent2D current = mSwapchain->extent();
-    if (mSwapchain->valid() && !mRecreate && !mSwapchain->needsRecreate() && current.width == extent.width &&
-        current.height == extent.height)
+    if (!vk::swapchainNeedsRecreate({.valid = mSwapchain->valid(),
+                                     .outOfDate = mRecreate,
+                                     .presentModeChanged = mSwapchain->needsRecreate(),
+                                     .extent = mSwapchain->extent()},
+                                    mSwapchain->wantedExtent(extent)))
         return true;
     if (!mSwapchain->recreate(extent)) return false;
     mRecreate = false;

@@ -35,6 +35,7 @@ DeviceCaps queryDeviceCaps(VkPhysicalDevice device) {
     out.maxPerStageResources = l.maxPerStageResources;
     out.maxBoundDescriptorSets = l.maxBoundDescriptorSets;
     out.maxStorageBufferRange = l.maxStorageBufferRange;
+    out.minStorageBufferOffsetAlignment = l.minStorageBufferOffsetAlignment;
     out.maxUniformBufferRange = l.maxUniformBufferRange;
     out.maxPushConstantsSize = l.maxPushConstantsSize;
     out.maxImageDimension2D = l.maxImageDimension2D;

@@ -36,6 +36,8 @@ struct DeviceLimits {
     uint32_t maxPerStageResources = 0;
     uint32_t maxBoundDescriptorSets = 0;
     uint64_t maxStorageBufferRange = 0;
+    // A storage-buffer descriptor's offset must be a multiple of this (a power of two, at most 256).
+    uint64_t minStorageBufferOffsetAlignment = 256;
     uint64_t maxUniformBufferRange = 0;
     uint32_t maxPushConstantsSize = 0;
     uint32_t maxImageDimension2D = 0;

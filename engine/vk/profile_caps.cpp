@@ -68,6 +68,7 @@ constexpr ProfileData kMinimum{
                .maxPerStageResources = 128,
                .maxBoundDescriptorSets = 4,
                .maxStorageBufferRange = uint64_t(1) << 27,
+               .minStorageBufferOffsetAlignment = 256,
                .maxUniformBufferRange = 16384,
                .maxPushConstantsSize = 128,
                .maxImageDimension2D = 4096,
@@ -112,6 +113,7 @@ constexpr ProfileData kDesktop{
                .maxPerStageResources = 4294967295u,
                .maxBoundDescriptorSets = 32,
                .maxStorageBufferRange = 4294967295u,
+               .minStorageBufferOffsetAlignment = 0,  // not transcribed: the device's own stands
                .maxUniformBufferRange = 65536,
                .maxPushConstantsSize = 256,
                .maxImageDimension2D = 32768,
@@ -156,6 +158,7 @@ constexpr ProfileData kApple{
                .maxPerStageResources = 159,
                .maxBoundDescriptorSets = 8,
                .maxStorageBufferRange = 4294967295u,
+               .minStorageBufferOffsetAlignment = 0,  // not transcribed: the device's own stands
                .maxUniformBufferRange = 4294967295u,
                .maxPushConstantsSize = 4096,
                .maxImageDimension2D = 16384,
@@ -220,6 +223,8 @@ DeviceCaps narrowCaps(const DeviceCaps& device, DeviceProfile profile) {
     lower(l.maxPerStageResources, p.maxPerStageResources);
     lower(l.maxBoundDescriptorSets, p.maxBoundDescriptorSets);
     lower(l.maxStorageBufferRange, p.maxStorageBufferRange);
+    // An alignment is a floor: the profile's can only make it coarser.
+    l.minStorageBufferOffsetAlignment = std::max(l.minStorageBufferOffsetAlignment, p.minStorageBufferOffsetAlignment);
     lower(l.maxUniformBufferRange, p.maxUniformBufferRange);
     lower(l.maxPushConstantsSize, p.maxPushConstantsSize);
     lower(l.maxImageDimension2D, p.maxImageDimension2D);

@@ -1,29 +1,37 @@
 #include "vk/swapchain.h"
 
+#include "core/errors.h"
 #include "vk/check.h"
 #include "vk/commands.h"
 #include "vk/context.h"
+#include "vk/swapchain_choices.h"
 
 #include <algorithm>
 #include <string>
 
 namespace candela::vk {
 
-namespace {
-
-// The tonemap pass encodes sRGB itself (and dithers), and ImGui's colours are meant for a UNORM
-// target: prefer an 8-bit UNORM format in the sRGB colour space.
-VkSurfaceFormatKHR chooseFormat(const std::vector<VkSurfaceFormatKHR>& formats) {
-    for (VkFormat wanted : {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_A2B10G10R10_UNORM_PACK32})
-        for (const VkSurfaceFormatKHR& f : formats)
-            if (f.format == wanted && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) return f;
-    return formats.front();
-}
-
-}  // namespace
-
 Swapchain::Swapchain(Context& context, VkSurfaceKHR surface, bool vsync)
     : mContext(context), mSurface(surface), mVsync(vsync) {
+    // The device was chosen before the surface existed, by the window system's per-family check
+    // (ContextDesc::presentSupport); now ask about this very surface. On failure the surface is
+    // destroyed here (no destructor runs for a constructor that throws).
+    try {
+        std::vector<bool> support;
+        uint32_t families = 0;
+        vkGetPhysicalDeviceQueueFamilyProperties(context.physicalDevice(), &families, nullptr);
+        for (uint32_t family = 0; family < families; ++family) {
+            VkBool32 supported = VK_FALSE;
+            VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(context.physicalDevice(), family, surface, &supported));
+            support.push_back(supported == VK_TRUE);
+        }
+        if (std::string problem = presentSupportProblem(support, context.graphicsQueue().family, context.properties().deviceName);
+            !problem.empty())
+            throw UserError(problem);
+    } catch (...) {
+        vkDestroySurfaceKHR(context.instance(), surface, nullptr);
+        throw;
+    }
     uint32_t count = 0;
     VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(context.physicalDevice(), surface, &count, nullptr));
     mModes.resize(count);
@@ -62,15 +70,17 @@ void Swapchain::destroyImages() {
     mImages.clear();
 }
 
+VkExtent2D Swapchain::wantedExtent(VkExtent2D framebufferSize) const {
+    VkSurfaceCapabilitiesKHR caps;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(mContext.physicalDevice(), mSurface, &caps));
+    return chooseSwapchainExtent(caps, framebufferSize);
+}
+
 bool Swapchain::recreate(VkExtent2D framebufferSize) {
     VkPhysicalDevice gpu = mContext.physicalDevice();
     VkSurfaceCapabilitiesKHR caps;
     VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(gpu, mSurface, &caps));
-    VkExtent2D extent = caps.currentExtent;
-    if (extent.width == 0xFFFFFFFFu) {  // the surface size follows the swapchain's
-        extent.width = std::clamp(framebufferSize.width, caps.minImageExtent.width, caps.maxImageExtent.width);
-        extent.height = std::clamp(framebufferSize.height, caps.minImageExtent.height, caps.maxImageExtent.height);
-    }
+    const VkExtent2D extent = chooseSwapchainExtent(caps, framebufferSize);
     if (extent.width == 0 || extent.height == 0 || framebufferSize.width == 0 || framebufferSize.height == 0)
         return false;  // minimized: keep the old swapchain (if any) until there is something to show
 
@@ -78,9 +88,7 @@ bool Swapchain::recreate(VkExtent2D framebufferSize) {
     VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(gpu, mSurface, &count, nullptr));
     std::vector<VkSurfaceFormatKHR> formats(count);
     VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(gpu, mSurface, &count, formats.data()));
-    if (formats.empty()) throw VulkanError("the window surface offers no formats", VK_ERROR_FORMAT_NOT_SUPPORTED);
-
-    mFormat = chooseFormat(formats);
+    mFormat = chooseSurfaceFormat(formats);
     mPresentMode = choosePresentMode();
     mUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
     mMinImageCount = std::max(caps.minImageCount + 1, 3u);

@@ -30,15 +30,18 @@ struct SwapchainImage {
 
 class Swapchain {
 public:
-    // Takes ownership of `surface`. Precondition: the context's graphics queue can present to it
-    // (ContextDesc::presentSupport) and VK_KHR_swapchain is enabled. Creates no images yet.
+    // Takes ownership of `surface`. Precondition: VK_KHR_swapchain is enabled. Throws UserError
+    // (destroying the surface) when the context's graphics queue family cannot present to this
+    // surface (vkGetPhysicalDeviceSurfaceSupportKHR; the device was chosen before the surface
+    // existed). Creates no images yet.
     Swapchain(Context& context, VkSurfaceKHR surface, bool vsync);
     ~Swapchain();
     Swapchain(const Swapchain&) = delete;
     Swapchain& operator=(const Swapchain&) = delete;
 
     // (Re)creates the images for the surface's current size, or `framebufferSize` where the
-    // surface lets the application choose. Waits for the device to be idle first. Returns false,
+    // surface lets the application choose (chooseSwapchainExtent), in chooseSurfaceFormat's format
+    // (throws UserError when the surface offers none Candela can present). Waits for the device to be idle first. Returns false,
     // creating nothing, when the size is 0 (a minimized window): there is nothing to render to.
     bool recreate(VkExtent2D framebufferSize);
 
@@ -58,6 +61,9 @@ public:
     bool valid() const { return mSwapchain != VK_NULL_HANDLE; }
     VkFormat format() const { return mFormat.format; }
     VkExtent2D extent() const { return mExtent; }
+    // The extent recreate(framebufferSize) would give the images now (chooseSwapchainExtent of
+    // the surface's current capabilities): what swapchainNeedsRecreate compares extent() with.
+    VkExtent2D wantedExtent(VkExtent2D framebufferSize) const;
     uint32_t imageCount() const { return static_cast<uint32_t>(mImages.size()); }
     uint32_t minImageCount() const { return mMinImageCount; }
     VkPresentModeKHR presentMode() const { return mPresentMode; }

@@ -15,6 +15,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <optional>
+#include <tuple>
 
 namespace candela::test {
 namespace {
@@ -118,40 +120,23 @@ TEST_F(GpuTest, PosedDrawsMatchTheStaticPathWithTheSameMatrices) {
 namespace candela::test {
 namespace {
 
-// The skin_morph pass's vertices read back, against the double-precision CPU reference
-// (scene::deformVertices) of the same pose: within 1e-5 relative to the model's size.
-void expectGpuDeformationMatchesReference(vk::Context& context, const char* path, const std::vector<std::string>& animations,
-                                          double time) {
-    if (!std::filesystem::exists(model(path))) GTEST_SKIP() << "shared asset missing";
-    const scene::Scene scene = scene::loadGltf(model(path));
-    scene::ScenePose pose(scene, scene::selectAnimations(scene, animations));
-    pose.evaluate(time);
-    const scene::GpuScene gpuScene(context, scene);
-    const passes::SkinMorphFrame work = passes::skinMorphFrame(gpuScene, pose);
-    ASSERT_FALSE(work.jobs.empty());
-
+// The skin_morph pass's vertices for `work`, read back; the pass split by `limits` when given.
+std::vector<scene::Vertex> deformOnGpu(vk::Context& context, const scene::GpuScene& gpuScene,
+                                       const passes::SkinMorphFrame& work,
+                                       const std::optional<passes::SkinMorphLimits>& limits = std::nullopt) {
     GraphRunner runner(context);
     graph::RenderGraph graph;
-    std::vector<vk::Buffer> uploads;
-    const auto upload = [&](const char* name, const void* data, size_t bytes) {
-        bytes = std::max<size_t>(bytes, 16);
-        uploads.emplace_back(context, vk::BufferDesc{.size = bytes, .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                                     .memory = vk::MemoryUsage::Upload, .name = name});
-        if (data) std::memcpy(uploads.back().mapped(), data, bytes);
-        uploads.back().flush();
-        const graph::BufferId id = graph.importBuffer(name, {.size = bytes}, graph::ResourceState{});
-        runner.bind(id, uploads.back().handle());
-        return id;
-    };
-    uploads.reserve(2);
-    passes::SkinMorphPass pass(context);
-    const graph::BufferId deformed = pass.add(
-        graph, {.scene = &gpuScene,
-                .jobs = work.jobs,
-                .vertexCount = work.vertexCount,
-                .joints = upload("joints", work.joints.data(), work.joints.size() * sizeof(glm::mat4)),
-                .activeTargets = upload("active", work.activeTargets.empty() ? nullptr : work.activeTargets.data(),
-                                        work.activeTargets.size() * sizeof(shading::ActiveMorphTarget))});
+    const size_t frameBytes = std::max<size_t>(work.frameData.size() * sizeof(uint32_t), 16);
+    vk::Buffer frameData(context, vk::BufferDesc{.size = frameBytes, .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                                 .memory = vk::MemoryUsage::Upload, .name = "skin_morph_frame"});
+    std::memset(frameData.mapped(), 0, frameBytes);
+    if (!work.frameData.empty()) std::memcpy(frameData.mapped(), work.frameData.data(), work.frameData.size() * sizeof(uint32_t));
+    frameData.flush();
+    const graph::BufferId frameId = graph.importBuffer("skin_morph_frame", {.size = frameBytes}, graph::ResourceState{});
+    runner.bind(frameId, frameData.handle());
+    passes::SkinMorphPass pass(context, limits);
+    const graph::BufferId deformed =
+        pass.add(graph, {.scene = &gpuScene, .jobs = work.jobs, .vertexCount = work.vertexCount, .frameData = frameId});
     const VkDeviceSize bytes = VkDeviceSize(work.vertexCount) * sizeof(scene::Vertex);
     const graph::BufferId readback = runner.readbackBuffer(graph, "readback", bytes);
     struct Copy {
@@ -168,7 +153,21 @@ void expectGpuDeformationMatchesReference(vk::Context& context, const char* path
             vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(c.from), ctx.buffer(c.to), 1, &region);
         });
     runner.run(graph);
-    const std::vector<scene::Vertex> gpu = runner.read<scene::Vertex>(readback);
+    return runner.read<scene::Vertex>(readback);
+}
+
+// The skin_morph pass's vertices read back, against the double-precision CPU reference
+// (scene::deformVertices) of the same pose: within 1e-5 relative to the model's size.
+void expectGpuDeformationMatchesReference(vk::Context& context, const char* path, const std::vector<std::string>& animations,
+                                          double time) {
+    if (!std::filesystem::exists(model(path))) GTEST_SKIP() << "shared asset missing";
+    const scene::Scene scene = scene::loadGltf(model(path));
+    scene::ScenePose pose(scene, scene::selectAnimations(scene, animations));
+    pose.evaluate(time);
+    const scene::GpuScene gpuScene(context, scene);
+    const passes::SkinMorphFrame work = passes::skinMorphFrame(gpuScene, pose);
+    ASSERT_FALSE(work.jobs.empty());
+    const std::vector<scene::Vertex> gpu = deformOnGpu(context, gpuScene, work);
 
     const float size = glm::length(pose.animationBounds().max - pose.animationBounds().min);
     size_t compared = 0;
@@ -210,6 +209,37 @@ TEST_F(GpuTest, SkinnedVerticesMatchTheCpuReferenceCesiumMan) {
 TEST_F(GpuTest, MorphedVerticesMatchTheCpuReference) {
     expectGpuDeformationMatchesReference(context(), "MorphStressTest/glTF-Binary/MorphStressTest.glb", {"all"}, 0.6);
     expectGpuDeformationMatchesReference(context(), "AnimatedMorphCube/glTF-Binary/AnimatedMorphCube.glb", {}, 1.6);
+}
+
+// A device with a small maxStorageBufferRange, the largest offset alignment and few groups in X:
+// every draw is split into runs whose bound ranges start mid-element, dispatched as 2-D grids with a
+// partial last row. The result is bit for bit the one of a single dispatch per draw: every vertex
+// is written, with the values of its own source and records.
+TEST_F(GpuTest, SkinMorphSplitIntoSmallRangesAndTwoDimensionalGridsIsExact) {
+    // The ranges: Fox's records are 32 bytes (227 vertices a run, 4 groups), MorphStressTest's 640 (409 a run, 7 groups).
+    for (const auto& [path, animations, time, range] :
+         {std::tuple<const char*, std::vector<std::string>, double, uint64_t>{"Fox/glTF-Binary/Fox.glb", {"1"}, 0.37, 16 * 1024},
+          {"MorphStressTest/glTF-Binary/MorphStressTest.glb", {"all"}, 0.6, 256 * 1024}}) {
+        if (!std::filesystem::exists(model(path))) GTEST_SKIP() << "shared asset missing";
+        const scene::Scene scene = scene::loadGltf(model(path));
+        scene::ScenePose pose(scene, scene::selectAnimations(scene, animations));
+        pose.evaluate(time);
+        const scene::GpuScene gpuScene(context(), scene);
+        const passes::SkinMorphFrame work = passes::skinMorphFrame(gpuScene, pose);
+        const passes::SkinMorphLimits small{.maxStorageBufferRange = range, .storageOffsetAlignment = 256, .maxGroups = {3, 65535}};
+        size_t dispatches = 0, grids = 0;
+        for (const passes::SkinMorphJob& job : work.jobs)
+            for (const passes::SkinMorphDispatch& d : passes::skinMorphDispatches(job, small)) {
+                ++dispatches;
+                grids += d.groups.y > 1;
+            }
+        EXPECT_GT(dispatches, work.jobs.size()) << path;
+        EXPECT_GT(grids, 0u) << path;
+        const std::vector<scene::Vertex> whole = deformOnGpu(context(), gpuScene, work);
+        const std::vector<scene::Vertex> split = deformOnGpu(context(), gpuScene, work, small);
+        ASSERT_EQ(whole.size(), split.size());
+        EXPECT_EQ(std::memcmp(whole.data(), split.data(), whole.size() * sizeof(scene::Vertex)), 0) << path;
+    }
 }
 
 }  // namespace

@@ -25,6 +25,7 @@ DeviceCaps generousDevice() {
                    .maxPerStageResources = 1u << 20,
                    .maxBoundDescriptorSets = 32,
                    .maxStorageBufferRange = uint64_t(1) << 32,
+                   .minStorageBufferOffsetAlignment = 16,
                    .maxUniformBufferRange = 65536,
                    .maxPushConstantsSize = 256,
                    .maxImageDimension2D = 16384,
@@ -68,6 +69,8 @@ TEST(DeviceProfile, MinimumIsWhatVulkan13Guarantees) {
     EXPECT_EQ(caps.limits.maxPerStageDescriptorSampledImages, 16u);
     EXPECT_EQ(caps.limits.maxPerStageDescriptorStorageBuffers, 4u);
     EXPECT_EQ(caps.limits.maxStorageBufferRange, uint64_t(128) << 20);
+    EXPECT_EQ(caps.limits.minStorageBufferOffsetAlignment, 256u);  // an alignment narrows upwards
+    EXPECT_EQ(narrowCaps(generousDevice(), DeviceProfile::Desktop).limits.minStorageBufferOffsetAlignment, 16u);
     EXPECT_EQ(caps.limits.maxMemoryAllocationSize, uint64_t(1) << 30);
     EXPECT_EQ(caps.limits.maxBufferSize, uint64_t(1) << 30);
     EXPECT_EQ(caps.limits.maxImageDimension2D, 4096u);
