@@ -15,11 +15,24 @@ namespace candela::app {
 
 namespace {
 
-// After a scripted run: the median frame time after warm-up (the first frames include the IBL
-// precompute and pipeline creation) as a ratio to calibration passes run around the measurement.
-void printFrameSummary(ui::Viewer& viewer, const RenderOptions& options) {
+// The warm-up of a scripted run of `frames` frames: the first frames include the IBL precompute
+// and pipeline creation, so the summary leaves them out.
+size_t warmUpFrames(size_t frames) { return std::min<size_t>(5, frames / 2); }
+
+// What the renderer counted of CPU/GPU overlap, at one moment of a run.
+struct OverlapCounts {
+    vk::FrameRingStats ring;
+    uint64_t completionWaits = 0;
+    static OverlapCounts of(const Renderer& renderer) { return {renderer.frameRingStats(), renderer.completionWaits()}; }
+};
+
+// After a scripted run: the median frame time after warm-up as a ratio to calibration passes run
+// around the measurement, and how much the CPU's recording overlapped the GPU's work over those
+// frames (`from` and `to`: the counts at the end of warm-up and of the last frame).
+void printFrameSummary(ui::Viewer& viewer, const RenderOptions& options, const OverlapCounts& from,
+                       const OverlapCounts& to) {
     const std::vector<double>& times = viewer.frameTimesMs();
-    const size_t warmUp = std::min<size_t>(5, times.size() / 2);
+    const size_t warmUp = warmUpFrames(times.size());
     if (times.size() <= warmUp) return;
     std::vector<double> calibration;
     for (int i = 0; i < 3; ++i) calibration.push_back(viewer.calibrationMs());
@@ -30,6 +43,19 @@ void printFrameSummary(ui::Viewer& viewer, const RenderOptions& options) {
                 "frame = %.2fx calibration\n",
                 extent.width, extent.height, options.ui ? "on" : "off", viewer.vsync() ? "vsync" : "no vsync", frame,
                 times.size() - warmUp, warmUp, yardstick, frame / yardstick);
+    const uint64_t submits = to.ring.submits - from.ring.submits;
+    double measuredMs = 0.0;
+    for (size_t i = warmUp; i < times.size(); ++i) measuredMs += times[i];
+    if (submits == 0 || measuredMs <= 0.0) return;
+    const double blockedMs = to.ring.blockedMs - from.ring.blockedMs;
+    const uint64_t overlapped = to.ring.overlappedSubmits - from.ring.overlappedSubmits;
+    std::printf("overlap after warm-up: %llu of %llu frames submitted while the GPU still ran an earlier one (%.0f%%); "
+                "CPU blocked on fences %.1f ms per frame (%.0f%% of the frame time, %llu blocking waits); "
+                "%llu waits for the frame just submitted\n",
+                (unsigned long long)overlapped, (unsigned long long)submits, 100.0 * double(overlapped) / double(submits),
+                blockedMs / double(times.size() - warmUp), 100.0 * blockedMs / measuredMs,
+                (unsigned long long)(to.ring.blockingWaits - from.ring.blockingWaits),
+                (unsigned long long)(to.completionWaits - from.completionWaits));
 }
 
 }  // namespace
@@ -65,13 +91,17 @@ int runView(const RenderOptions& options) {
     ui::Viewer viewer(desc, std::move(content));
     if (options.frames > 0) {
         // frame() also returns true for frames not rendered (minimized window): count rendered ones.
+        while (viewer.framesRendered() < warmUpFrames(options.frames) && viewer.frame()) {
+        }
+        const OverlapCounts warm = OverlapCounts::of(viewer.renderer());
         while (viewer.framesRendered() + 1 < options.frames && viewer.frame()) {
         }
         if (!options.screenshot.empty()) viewer.requestScreenshot(options.screenshot);
         while (viewer.framesRendered() < options.frames && viewer.frame()) {
         }
+        const OverlapCounts last = OverlapCounts::of(viewer.renderer());
         viewer.renderer().waitIdle();
-        printFrameSummary(viewer, options);
+        printFrameSummary(viewer, options, warm, last);
     } else {
         viewer.run();
     }

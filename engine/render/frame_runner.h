@@ -36,7 +36,15 @@ public:
     // UserError for an unknown disabled pass (when that is an error).
     std::chrono::steady_clock::time_point submit(Frame frame, const SubmitOptions& options);
     // Waits for the last submitted frame (its timings are then the completed ones).
-    void waitCurrent() { mFrames.waitCurrent(); }
+    void waitCurrent() {
+        ++mCompletionWaits;
+        mFrames.waitCurrent();
+    }
+    // How many times waitCurrent() was called: the CPU stopped until the frame it had just
+    // submitted completed (captures, precompute frames), instead of running ahead.
+    uint64_t completionWaits() const { return mCompletionWaits; }
+    // Submits, overlapping submits and blocking fence waits so far (vk::FrameRingStats).
+    const vk::FrameRingStats& ringStats() const { return mFrames.stats(); }
     // Waits for every frame in flight.
     void waitIdle() { mFrames.waitIdle(); }
 
@@ -66,6 +74,7 @@ private:
     std::vector<PassTime> mCompletedTimes;
     graph::GraphTimings mCompletedTimings;  // of the latest completed frame, by declared pass
     double mLastPrecomputeGpuMs = -1.0;
+    uint64_t mCompletionWaits = 0;
     Frame mLast;
 };
 

@@ -86,6 +86,10 @@ public:
     double completedPassMs(std::string_view pass) const { return mRunner.completedPassMs(pass); }
     // Waits for every frame in flight.
     void waitIdle() { mRunner.waitIdle(); }
+    // How often the renderer waited for the frame it had just submitted (FrameRunner::completionWaits),
+    // and how far the CPU ran ahead of the GPU (submits while an earlier frame ran, blocking waits).
+    uint64_t completionWaits() const { return mRunner.completionWaits(); }
+    const vk::FrameRingStats& frameRingStats() const { return mRunner.ringStats(); }
     // The Scene object last drawn was replaced in place (same address, new contents): the next
     // frame uploads it anew. Waits for the frames in flight.
     void sceneReplaced();

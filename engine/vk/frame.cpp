@@ -4,6 +4,7 @@
 #include "vk/commands.h"
 
 #include <algorithm>
+#include <chrono>
 #include <utility>
 
 namespace candela::vk {
@@ -45,7 +46,12 @@ void FrameRing::collectCompleted() {
 void FrameRing::waitSlot(FrameSlot& slot) {
     if (!slot.submitted) return;
     VkFence fence = slot.fence.get();
-    VK_CHECK(vkWaitForFences(mContext->device(), 1, &fence, VK_TRUE, UINT64_MAX));
+    if (vkGetFenceStatus(mContext->device(), fence) != VK_SUCCESS) {
+        const auto start = std::chrono::steady_clock::now();
+        VK_CHECK(vkWaitForFences(mContext->device(), 1, &fence, VK_TRUE, UINT64_MAX));
+        ++mStats.blockingWaits;
+        mStats.blockedMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    }
     VK_CHECK(vkResetFences(mContext->device(), 1, &fence));
     slot.submitted = false;
     slot.timestamps->fetch();
@@ -70,6 +76,11 @@ FrameSlot& FrameRing::begin() {
 void FrameRing::submit(const std::vector<VkSemaphoreSubmitInfo>& waits, const std::vector<VkSemaphoreSubmitInfo>& signals) {
     FrameSlot& slot = mSlots[mCurrent];
     VK_CHECK(vkEndCommandBuffer(slot.cmd));
+    ++mStats.submits;
+    if (std::any_of(mSlots.begin(), mSlots.end(), [&](const FrameSlot& other) {
+            return other.submitted && vkGetFenceStatus(mContext->device(), other.fence.get()) != VK_SUCCESS;
+        }))
+        ++mStats.overlappedSubmits;
     const VkCommandBufferSubmitInfo cmdInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, .commandBuffer = slot.cmd};
     const VkSubmitInfo2 submitInfo{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
                                    .waitSemaphoreInfoCount = static_cast<uint32_t>(waits.size()),

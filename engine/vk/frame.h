@@ -26,6 +26,16 @@ struct FrameSlot {
     std::function<void(FrameSlot&)> completed;
 };
 
+// How far the CPU ran ahead of the GPU, counted since the ring was made (the viewer's summary,
+// tests). A frame overlaps when it is submitted while an earlier one is still executing: its
+// recording ran alongside the GPU's work.
+struct FrameRingStats {
+    uint64_t submits = 0;
+    uint64_t overlappedSubmits = 0;  // submits made while an earlier submitted frame was still running
+    uint64_t blockingWaits = 0;      // fence waits (begin, waitCurrent, waitIdle) that found the frame running
+    double blockedMs = 0.0;          // CPU wall time spent in those waits
+};
+
 class FrameRing {
 public:
     FrameRing(Context& context, uint32_t framesInFlight = 2, uint32_t timestampCapacity = 256);
@@ -45,6 +55,7 @@ public:
 
     uint32_t slotCount() const { return static_cast<uint32_t>(mSlots.size()); }
     uint32_t currentSlot() const { return mCurrent; }
+    const FrameRingStats& stats() const { return mStats; }
 
 private:
     void collectCompleted();
@@ -53,6 +64,7 @@ private:
     Context* mContext;
     std::vector<FrameSlot> mSlots;
     uint32_t mCurrent = 0;
+    FrameRingStats mStats;
 };
 
 }  // namespace candela::vk
