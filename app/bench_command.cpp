@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <chrono>
 #include <map>
+#include <optional>
 
 namespace candela::app {
 namespace {
@@ -91,6 +92,20 @@ int runBench(const RenderOptions& options) {
         out["animation"] = {{"playing", pose.playing().size()}, {"evaluateMedianMs", median(animationMs)},
                             {"evaluateMaxMs", *std::max_element(animationMs.begin(), animationMs.end())}};
     if (options.explain) out["explain"] = m.explain;
+    std::optional<InFlightMeasurement> inFlight;
+    if (options.inFlight) {
+        inFlight = measureFramesInFlight(renderer, context, settings, options.frames);
+        const vk::FrameRingStats& ring = inFlight->ring;
+        out["inFlight"] = {{"medianMs", median(inFlight->frameMs)},
+                           {"medianRatio", median(inFlight->frameMs) / calibration},
+                           {"wallMsPerFrame", inFlight->wallMsPerFrame},
+                           {"wallRatio", inFlight->wallMsPerFrame / calibration},
+                           {"submits", ring.submits},
+                           {"overlappedSubmits", ring.overlappedSubmits},
+                           {"blockingWaits", ring.blockingWaits},
+                           {"blockedMsPerFrame", ring.blockedMs / options.frames},
+                           {"completionWaits", inFlight->completionWaits}};
+    }
 
     if (options.json) {
         std::printf("%s\n", out.dump(2).c_str());
@@ -124,6 +139,16 @@ int runBench(const RenderOptions& options) {
         for (const auto& p : passes)
             std::printf("  pass %-12s GPU median %.2f ms (%.2fx calibration GPU)\n", p["name"].get<std::string>().c_str(),
                         p["gpuMedianMs"].get<double>(), p["ratioToCalibrationGpu"].get<double>());
+        if (inFlight) {
+            const vk::FrameRingStats& ring = inFlight->ring;
+            std::printf("  in flight:   median frame %.2f ms (%.2fx calibration), %.2f ms per frame to the last one's end "
+                        "(%.2fx), rendered offscreen as the viewer does; %llu of %llu submitted while an earlier frame still "
+                        "ran, CPU blocked on fences %.2f ms per frame, %llu waits for the frame just submitted\n",
+                        median(inFlight->frameMs), median(inFlight->frameMs) / calibration, inFlight->wallMsPerFrame,
+                        inFlight->wallMsPerFrame / calibration, (unsigned long long)ring.overlappedSubmits,
+                        (unsigned long long)ring.submits, ring.blockedMs / options.frames,
+                        (unsigned long long)inFlight->completionWaits);
+        }
         if (options.explain)
             for (const std::string& line : m.explain) std::printf("%s\n", line.c_str());
     }

@@ -91,6 +91,7 @@ struct RenderOptions {
     std::string iblReport;        // view: --ibl-report FILE (an ibl-report CSV for the environment panel)
     std::set<ui::Panel> panels;   // view: --panels A,B,... (open at start)
     bool json = false;            // bench: --json
+    bool inFlight = false;        // bench: --in-flight (also frames as the viewer runs them, offscreen)
     std::optional<uint32_t> grid;  // --grid N: N × N spheres of the built-in grid (unset: its own 7 × 7)
     bool distinctMaterials = false;  // --distinct-materials: a material per sphere of the grid
     std::string out;              // render: --out FILE (.png, .exr, .pfm)

@@ -145,6 +145,10 @@ std::vector<Flag> makeFlagTable() {
         {.name = "--json",
          .uses = {{{Kind::Bench}, "", "machine-readable output", ""}},
          .set = [](Command& c, Str, Str) { c.render.json = true; }},
+        {.name = "--in-flight",
+         .uses = {{{Kind::Bench}, "", "also run the frames as the viewer does, into an offscreen image with frames in "
+                                      "flight: frame time and how far recording overlaps the GPU", ""}},
+         .set = [](Command& c, Str, Str) { c.render.inFlight = true; }},
         // ---- the viewer ----
         {.name = "--screenshot",
          .uses = {{{Kind::View}, "FILE", "save the last of the --frames N frames, UI included, as PNG", ""}},

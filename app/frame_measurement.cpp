@@ -1,6 +1,9 @@
 #include "frame_measurement.h"
 
+#include "vk/image.h"
+
 #include <algorithm>
+#include <chrono>
 
 namespace candela::app {
 
@@ -30,6 +33,43 @@ FrameMeasurement measureFrames(Renderer& renderer, const RenderSettings& setting
         const uint32_t calibrationPass = *renderer.lastGraph().findPass("calibration");
         if (calibration.timings.gpuMs[calibrationPass] >= 0.0) out.calibrationGpuMs.push_back(calibration.timings.gpuMs[calibrationPass]);
     }
+    return out;
+}
+
+InFlightMeasurement measureFramesInFlight(Renderer& renderer, vk::Context& context, const RenderSettings& settings,
+                                          uint32_t frames) {
+    constexpr VkFormat kFormat = VK_FORMAT_R8G8B8A8_UNORM;
+    const vk::Image image(context, {.width = settings.width,
+                                    .height = settings.height,
+                                    .format = kFormat,
+                                    .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+                                    .name = "offscreen target"});
+    // No presentation engine: no semaphores; the image rests as the frame's last write left it.
+    const PresentTarget target{.image = image.handle(),
+                               .view = image.view(),
+                               .format = kFormat,
+                               .finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    for (int i = 0; i < 2; ++i) renderer.renderToTarget(settings, target, {});
+    renderer.waitIdle();
+    const vk::FrameRingStats ring = renderer.frameRingStats();
+    const uint64_t completionWaits = renderer.completionWaits();
+    InFlightMeasurement out;
+    const auto start = std::chrono::steady_clock::now();
+    auto previous = start;
+    for (uint32_t i = 0; i < frames; ++i) {
+        renderer.renderToTarget(settings, target, {});
+        const auto now = std::chrono::steady_clock::now();
+        out.frameMs.push_back(std::chrono::duration<double, std::milli>(now - previous).count());
+        previous = now;
+    }
+    out.ring = renderer.frameRingStats();
+    renderer.waitIdle();
+    out.wallMsPerFrame = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / frames;
+    out.ring.submits -= ring.submits;
+    out.ring.overlappedSubmits -= ring.overlappedSubmits;
+    out.ring.blockingWaits -= ring.blockingWaits;
+    out.ring.blockedMs -= ring.blockedMs;
+    out.completionWaits = renderer.completionWaits() - completionWaits;
     return out;
 }
 

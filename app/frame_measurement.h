@@ -28,4 +28,19 @@ struct FrameMeasurement {
 FrameMeasurement measureFrames(Renderer& renderer, const RenderSettings& settings, uint32_t frames,
                                const std::function<void(uint32_t)>& beforeFrame = {});
 
+// Frames run as the viewer runs them (Renderer::renderToTarget, up to the renderer's frames in
+// flight), presented into an offscreen image instead of a window: how often a frame ends and how
+// far the CPU's building and recording overlapped the GPU's work.
+struct InFlightMeasurement {
+    std::vector<double> frameMs;   // from the return of one renderToTarget to the next (the viewer's frame time)
+    double wallMsPerFrame = 0.0;   // all frames, until the GPU finished the last, divided by their number
+    vk::FrameRingStats ring;       // over the measured frames (submits, overlapping submits, blocking waits)
+    uint64_t completionWaits = 0;  // waits for the frame just submitted, over the measured frames
+};
+
+// Two warm-up frames (the IBL precompute among them), then `frames` frames into an offscreen RGBA8
+// image of the settings' size. Precondition: frames ≥ 1.
+InFlightMeasurement measureFramesInFlight(Renderer& renderer, vk::Context& context, const RenderSettings& settings,
+                                          uint32_t frames);
+
 }  // namespace candela::app

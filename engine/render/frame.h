@@ -52,15 +52,18 @@ std::vector<std::byte> bytesOf(const std::vector<T>& items) {
     return out;
 }
 
-// A presentable image to render into (a vk::Swapchain image): the tonemap writes it, the overlay
-// draws over it, and it ends in PRESENT_SRC_KHR. The frame waits on `acquired` before writing it
-// and signals `rendered` when done.
+// A presentable image to render into (a vk::Swapchain image, or an offscreen stand-in for one):
+// the tonemap writes it, the overlay draws over it, and it ends in `finalLayout`. The frame waits
+// on `acquired` (if not null) before writing it and signals `rendered` (if not null) when done.
 struct PresentTarget {
     VkImage image = VK_NULL_HANDLE;
     VkImageView view = VK_NULL_HANDLE;
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkSemaphore acquired = VK_NULL_HANDLE;
     VkSemaphore rendered = VK_NULL_HANDLE;
+    // PRESENT_SRC_KHR for a swapchain image; an offscreen target (`bench --in-flight`) names
+    // another (a device without VK_KHR_swapchain has no PRESENT_SRC_KHR).
+    VkImageLayout finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
 };
 
 // GPU time of one pass of a completed frame.

@@ -65,17 +65,18 @@ std::chrono::steady_clock::time_point FrameRunner::submit(Frame frame, const Sub
             mLastPrecomputeGpuMs += std::max(mCompletedTimings.gpuMs[pass], 0.0);
     };
     const auto submitted = std::chrono::steady_clock::now();
-    if (const PresentTarget* present = options.present)
-        mFrames.submit({{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
+    std::vector<VkSemaphoreSubmitInfo> waits, signals;
+    if (const PresentTarget* present = options.present; present && present->acquired)
+        waits.push_back({.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
                          .semaphore = present->acquired,
-                         .stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT}},
-                       // Signalled when all the frame's work, the transition to PRESENT_SRC included,
-                       // has completed (at the end of the batch, so it stalls nothing).
-                       {{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
-                         .semaphore = present->rendered,
-                         .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT}});
-    else
-        mFrames.submit();
+                         .stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT});
+    // Signalled when all the frame's work, the transition to PRESENT_SRC included, has completed
+    // (at the end of the batch, so it stalls nothing).
+    if (const PresentTarget* present = options.present; present && present->rendered)
+        signals.push_back({.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
+                           .semaphore = present->rendered,
+                           .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT});
+    mFrames.submit(waits, signals);
     mLast = std::move(frame);
     return submitted;
 }

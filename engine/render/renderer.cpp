@@ -57,7 +57,7 @@ Frame Renderer::beginFrame(const RenderSettings& settings, const PresentTarget* 
         // orders the first write after the presentation engine has released it.
         const ResourceState acquiredState{.stages = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT};
         const ResourceState presentState{.stages = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                                         .layout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR};
+                                         .layout = present->finalLayout};
         target = frame.graph->importTexture(
             "swapchain", {.width = settings.width, .height = settings.height, .format = present->format},
             acquiredState, presentState);
