@@ -11,4 +11,14 @@ graph::BufferId Frame::addHostUpload(std::string name, std::vector<std::byte> by
     return buffer;
 }
 
+bool Frame::computesMaps() const {
+    const graph::CompiledGraph& compiled = graph->compiled();
+    const auto runs = [&](uint32_t pass) {
+        return pass < compiled.passes.size() && compiled.passes[pass].cullReason == graph::CullReason::None;
+    };
+    for (uint32_t pass = precomputeBegin; pass < precomputeEnd; ++pass)
+        if (runs(pass)) return true;
+    return runs(sheenLutPass);
+}
+
 }  // namespace candela

@@ -25,6 +25,8 @@ struct Frame {
     graph::TextureId ldr;  // the 8-bit image: tonemapped scene, or encoded pattern
     // The IBL precompute passes added: declared pass indices [precomputeBegin, precomputeEnd).
     uint32_t precomputeBegin = 0, precomputeEnd = 0;
+    // The declared index of the pass computing the sheen LUT (ibl::SheenLut), if the frame added it.
+    uint32_t sheenLutPass = graph::kInvalidIndex;
     // What --explain says of the frame (variants, lights, IBL, what was left out), besides culled passes.
     std::vector<std::string> notes;
     // Data the CPU makes for this frame alone (the posed draws of an animated scene): each is
@@ -42,6 +44,11 @@ struct Frame {
     graph::BufferId addHostUpload(std::string name, std::vector<std::byte> bytes);
     // Whether the IBL precompute passes were added to this frame.
     bool precomputes() const { return precomputeBegin != precomputeEnd; }
+    // Whether a pass filling persistent maps runs in this frame: one of the IBL precompute passes
+    // (BRDF LUT included) or the sheen LUT pass. Their owners (ibl::IblMaps, ibl::SheenLut) take the
+    // results over only once told the frame completed (SceneState::frameCompleted), so the Renderer
+    // waits for such a frame before building the next. Precondition: the graph was compiled.
+    bool computesMaps() const;
 };
 
 // The bytes of `items`, for a host upload (an empty vector gives no bytes).

@@ -130,9 +130,12 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     const std::optional<passes::ForwardPass::Ibl> ibl = addIbl(frame, settings);
     // The material layers' maps: the sheen LUT (computed once) and, with an environment, the sheen cube.
     std::optional<passes::LayerMaps> layerMaps;
-    if (mScene.hasSheen())
+    if (mScene.hasSheen()) {
+        const auto declared = static_cast<uint32_t>(graph.declaration().passes.size());
         layerMaps = passes::LayerMaps{.sheenLut = mScene.sheenLut().addToGraph(graph, frame.imports),
                                       .sheenCube = ibl ? ibl->maps.sheen : TextureId{}};
+        if (graph.declaration().passes.size() > declared) frame.sheenLutPass = declared;  // not computed yet
+    }
     mParameters.beginFrame();
     mScene.applyParameters(mParameters, mForward.reflection(), mForward.layeredReflection());
 

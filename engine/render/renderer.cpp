@@ -147,12 +147,14 @@ void Renderer::renderToTarget(const RenderSettings& settings, const PresentTarge
     if (overlay) output = overlay(*frame.graph, output);
     const size_t texels = size_t(settings.width) * settings.height;
     if (screenshot) passes::addReadbackPass(*frame.graph, output, mReadback.import(frame, VkDeviceSize(4) * texels));
-    // A frame that imports the IBL maps is waited for, so that the maps learn that a precompute
-    // completed before the next frame is built. (Only frames that ran one need it; waiting for
-    // those alone would keep frames in flight with an environment — not changed here.)
-    const bool ibl = frame.graph->findResource(ibl::IblMaps::kSpecularName).has_value();
     submit(std::move(frame), settings, &target);
-    if (!screenshot && !ibl) return;
+    // Only a frame that computed persistent maps (the IBL precompute, the sheen LUT) is waited for,
+    // so that the maps are marked current before the next frame is built: that frame imports them
+    // as computed instead of running the precompute again, and their owners free the precompute's
+    // inputs and write the cache. Every other frame, with an environment or without, runs ahead
+    // (up to framesInFlight in flight): it only reads the maps, which the precompute frame's final
+    // barriers left visible to every later submission.
+    if (!screenshot && !mRunner.last().computesMaps()) return;
     mRunner.waitCurrent();
     finishFrame();
     if (!screenshot) return;

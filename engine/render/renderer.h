@@ -66,11 +66,12 @@ public:
     // output of the graph, as a swapchain image would be. Waits for the GPU.
     FrameTiming renderFrame(const RenderSettings& settings);
     // Renders one frame of the scene into `target` (settings.width × height must be its size) and
-    // submits it; the caller presents. Without an environment it does not wait for the GPU (up to
-    // framesInFlight frames are in flight); a frame with image-based lighting is waited for, so the
-    // maps learn of a completed precompute. With `screenshot`, the finished image (overlay
-    // included) is also read back into it as sRGB RGBA8 (this waits for the frame). Throws
-    // UserError as capture() does.
+    // submits it; the caller presents. It does not wait for the GPU (up to framesInFlight frames
+    // are in flight, with an environment or without) unless the frame computed persistent maps
+    // (Frame::computesMaps: the IBL precompute after an environment change, the sheen LUT once),
+    // which is waited for so that the maps are current for the next frame. With `screenshot`, the
+    // finished image (overlay included) is also read back into it as sRGB RGBA8 (this waits for
+    // the frame). Throws UserError as capture() does.
     void renderToTarget(const RenderSettings& settings, const PresentTarget& target, const OverlayFn& overlay,
                         CapturedFrame* screenshot = nullptr);
     // Per-pass GPU times of the latest frame known to be complete, in execution order.
