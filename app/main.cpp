@@ -211,9 +211,17 @@ int runInfo(const InfoOptions& options) {
     std::printf("  sizes: storage buffer range %s, allocation %s, buffer %s, 2D image %u\n",
                 formatBytes(caps.limits.maxStorageBufferRange).c_str(), formatBytes(caps.limits.maxMemoryAllocationSize).c_str(),
                 formatBytes(caps.limits.maxBufferSize).c_str(), caps.limits.maxImageDimension2D);
-    std::printf("  memory: %s\n", caps.hasMemoryType(VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT)
-                                      ? "lazily allocated memory for transient attachments"
-                                      : "no lazily allocated memory");
+    std::printf("  memory: %s; %s\n",
+                caps.hasMemoryType(VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT) ? "lazily allocated memory for transient attachments"
+                                                                            : "no lazily allocated memory",
+                caps.hasMemoryType(VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
+                    ? "per-frame data in host-visible device-local memory"
+                    : "per-frame data in system memory");
+    const auto heaps = context.allocator().heapBudgets();
+    std::printf("  heap budgets (VK_EXT_memory_budget):%s", heaps.empty() ? " not available\n" : "");
+    for (size_t i = 0; i < heaps.size(); ++i)
+        std::printf(" heap %zu %s of %s%s", i, formatBytes(heaps[i].first).c_str(), formatBytes(heaps[i].second).c_str(),
+                    i + 1 == heaps.size() ? "\n" : ";");
     std::printf("  fallbacks:");
     if (context.choices().fallbacks.empty()) std::printf(" none (the device has every format feature Candela prefers)");
     std::printf("\n");

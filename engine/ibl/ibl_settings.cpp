@@ -45,8 +45,10 @@ std::string IblQuality::canonical() const {
     std::string irradianceText = irradiance == IrradianceMode::Sh9
                                      ? "sh9:" + std::to_string(shSourceSize)
                                      : "cube:" + std::to_string(irradianceSize) + "x" + std::to_string(irradianceSamples);
-    return "v2 cube=" + std::to_string(cubeSize) + " levels=" + std::to_string(levels()) +
-           " prefilter=" + std::to_string(prefilterSamples) + (filteredSampling ? ":bias" + std::to_string(lodBias).substr(0, 5) : ":unfiltered") + " irradiance=" + irradianceText + " " + lutCanonical() + (sheen ? " sheen" : "");
+    // v3: the precompute reads the environment in half floats (scaled by a power of two).
+    return "v3 cube=" + std::to_string(cubeSize) + " levels=" + std::to_string(levels()) +
+           " prefilter=" + std::to_string(prefilterSamples) + (filteredSampling ? ":bias" + std::to_string(lodBias).substr(0, 5) : ":unfiltered") + " irradiance=" + irradianceText + " " + lutCanonical() + (sheen ? " sheen" : "") +
+           (equirectMaxSize ? " equirect<=" + std::to_string(equirectMaxSize) : "");
 }
 
 }  // namespace candela::ibl

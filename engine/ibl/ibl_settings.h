@@ -44,6 +44,10 @@ struct IblQuality {
     uint32_t irradianceSamples = 256; // cosine samples per irradiance texel (cube mode)
     uint32_t lutSize = 128;           // BRDF LUT is lutSize² (≥ 2)
     uint32_t lutSamples = 256;        // visible-normal samples per LUT texel
+    // 0: the environment at its own size; else its equirect is halved (2×2 box) until it is at
+    // most this wide and high before the precompute reads it (the memory fallback, a device's
+    // maxImageDimension2D). "equirect<=N" in the canonical text.
+    uint32_t equirectMaxSize = 0;
     // The Charlie-prefiltered cube for KHR_materials_sheen ("sheen" in the canonical text). Not a
     // user setting: the renderer asks for it when the scene has a sheen material.
     bool sheen = false;

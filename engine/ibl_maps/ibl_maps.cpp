@@ -10,10 +10,12 @@
 #include "passes/ibl_prefilter_pass.h"
 #include "reports/ibl_errors.h"
 #include "reports/ibl_reference.h"
+#include "shared/ibl.h"
 #include "vk/context.h"
 #include "vk/upload.h"
 
 #include <glm/glm.hpp>
+#include <glm/gtc/packing.hpp>
 
 #include <algorithm>
 #include <bit>
@@ -41,6 +43,34 @@ std::vector<float> rgbaTexels(const scene::Environment& env) {
     for (size_t i = 0; i < env.texelCount(); ++i)
         for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = env.rgb[i * 3 + c];
     return rgba;
+}
+
+// The environment's texels as RGBA half floats times `scale` (alpha 1), its equirect halved by
+// 2×2 boxes until it is at most `maxSize` texels wide and high (0: as it is); sets `width`, `height`.
+std::vector<uint16_t> halfTexels(const scene::Environment& env, uint32_t maxSize, float scale, uint32_t& width,
+                                 uint32_t& height) {
+    std::vector<float> rgb = env.rgb;
+    width = env.width;
+    height = env.height;
+    while (maxSize && (width > maxSize || height > maxSize) && width > 1 && height > 1) {
+        const uint32_t w = width / 2, h = height / 2;
+        std::vector<float> half(size_t(w) * h * 3);
+        for (uint32_t y = 0; y < h; ++y)
+            for (uint32_t x = 0; x < w; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    const auto at = [&](uint32_t sx, uint32_t sy) { return rgb[(size_t(sy) * width + sx) * 3 + c]; };
+                    half[(size_t(y) * w + x) * 3 + c] =
+                        0.25f * (at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) + at(2 * x, 2 * y + 1) + at(2 * x + 1, 2 * y + 1));
+                }
+        rgb = std::move(half);
+        width = w;
+        height = h;
+    }
+    std::vector<uint16_t> out(size_t(width) * height * 4, glm::packHalf1x16(1.0f));
+    for (size_t i = 0; i < size_t(width) * height; ++i)
+        for (int c = 0; c < 3; ++c)
+            out[i * 4 + c] = glm::packHalf1x16(std::min(rgb[i * 3 + c] * scale, CANDELA_HALF_MAX));
+    return out;
 }
 
 }  // namespace
@@ -73,7 +103,7 @@ void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
         texels.emplace_back(float(i % env.width), float(i / env.width), 0.0f, 0.0f);
         texels.emplace_back(env.rgb[size_t(i) * 3], env.rgb[size_t(i) * 3 + 1], env.rgb[size_t(i) * 3 + 2], 0.0f);
     }
-    mReferenceEquirect = vk::Image(mContext, {.width = env.width, .height = env.height, .format = kEquirectFormat,
+    mReferenceEquirect = vk::Image(mContext, {.width = env.width, .height = env.height, .format = kReferenceFormat,
                                               .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                               .name = "ibl_reference_equirect"});
     mReferenceTexels = vk::Buffer(mContext, {.size = texels.size() * sizeof(glm::vec4),
@@ -125,15 +155,20 @@ void IblMaps::createMaps(const IblQuality& q) {
 }
 
 void IblMaps::createPrecomputeInputs(const scene::Environment& env) {
-    mEquirect = vk::Image(mContext, {.width = env.width, .height = env.height, .format = kEquirectFormat,
+    // The environment in half floats: half the memory of RGBA32F (1 GiB for 16384 × 8192), times
+    // a power of two that keeps its brightest texel under the half-float maximum (exact; the
+    // cubemap pass divides it out).
+    float brightest = 0.0f;
+    for (float v : env.rgb) brightest = std::max(brightest, v);
+    mEquirectScale = passes::IblCubemapPass::halfFloatScale(brightest);
+    mFloatCubeScale = passes::IblCubemapPass::floatCubeScale(mContext, brightest);
+    uint32_t width = 0, height = 0;
+    const std::vector<uint16_t> texels = halfTexels(env, mQuality.equirectMaxSize, mEquirectScale, width, height);
+    mEquirect = vk::Image(mContext, {.width = width, .height = height, .format = kEquirectFormat,
                                      .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                      .name = "ibl_equirect"});
-    const std::vector<float> rgba = rgbaTexels(env);
-    float brightest = 0.0f;
-    for (size_t i = 0; i < rgba.size(); i += 4) brightest = std::max({brightest, rgba[i], rgba[i + 1], rgba[i + 2]});
-    mFloatCubeScale = passes::IblCubemapPass::floatCubeScale(mContext, brightest);
     vk::Uploader upload(mContext);
-    upload.image(mEquirect, std::as_bytes(std::span(rgba)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    upload.image(mEquirect, std::as_bytes(std::span(texels)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     upload.submitAndWait();
 
     const uint32_t size = mQuality.cubeSize;
@@ -171,6 +206,17 @@ bool IblMaps::setEnvironment(const scene::Environment* env, const IblQuality& qu
         return true;  // the LUT stays: it does not depend on the environment
     }
     quality.validate();
+    // An environment wider or higher than the device's images may be is halved until it fits.
+    IblQuality effective = quality;
+    const uint32_t deviceLimit = mContext.caps().limits.maxImageDimension2D;
+    if (env->width > deviceLimit || env->height > deviceLimit)
+        effective.equirectMaxSize = effective.equirectMaxSize ? std::min(effective.equirectMaxSize, deviceLimit) : deviceLimit;
+    return setEnvironmentAs(*env, effective, cacheDir, force);
+}
+
+bool IblMaps::setEnvironmentAs(const scene::Environment& environment, const IblQuality& quality,
+                               const std::filesystem::path& cacheDir, bool force) {
+    const scene::Environment* env = &environment;
     const uint64_t hash = scene::contentHash(*env);
     if (!force && mSource != MapsSource::None && hash == mEnvironmentHash && quality == mQuality &&
         cacheDir == mCacheDir)
@@ -250,7 +296,8 @@ passes::IblHandles IblMaps::addToGraph(RenderGraph& graph, ImportBindings& impor
     const TextureId equirect = import(graph, imports, "ibl_equirect", mEquirect, {}, kUploadedState, {});
     const TextureId cube = import(graph, imports, "ibl_float_cube", mFloatCube.image, mFloatCube.mipViews, {}, {});
     const passes::IblCubemapPass::Outputs resampled =
-        mCubemapPass->add(graph, {.equirect = equirect, .cube = cube, .specular = maps.specular, .cubeScale = mFloatCubeScale});
+        mCubemapPass->add(graph, {.equirect = equirect, .cube = cube, .specular = maps.specular,
+                                  .cubeScale = mFloatCubeScale, .equirectScale = mEquirectScale});
     const float scale = mFloatCubeScale;
     maps.specular = mPrefilterPass->add(graph, {.source = resampled.cube, .specular = resampled.specular, .sourceScale = scale});
     if (maps.sheen.valid())

@@ -104,9 +104,11 @@ public:
 
     // Placeholders' and maps' formats.
     static constexpr VkFormat kSpecularFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-    // The environment's equirectangular upload (read with texelFetch: no filtering needed). The
-    // float cube's and the LUT's formats depend on the device (vk::DeviceChoices).
-    static constexpr VkFormat kEquirectFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+    // The environment's equirectangular upload, read with texelFetch (no filtering needed): half
+    // floats, scaled (IblCubemapPass::halfFloatScale). The ground truth's stays RGBA32F. The float
+    // cube's and the LUT's formats depend on the device (vk::DeviceChoices).
+    static constexpr VkFormat kEquirectFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    static constexpr VkFormat kReferenceFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
     // The sheen cube's face: 64 texels (the sheen lobe is broad), or more when the levels need it.
     static uint32_t sheenFaceSize(const IblQuality& quality);
     static constexpr uint32_t kSheenSamples = 64;  // Charlie samples per texel of sheen mip 0 (4× per coarser mip)
@@ -128,6 +130,9 @@ private:
     static graph::TextureId import(graph::RenderGraph& graph, graph::ImportBindings& imports, const char* name,
                                    const vk::Image& image, const std::vector<vk::ImageView>& mipViews,
                                    const graph::ResourceState& initial, std::optional<graph::ResourceState> final);
+    // setEnvironment with the device's limits applied to `quality`.
+    bool setEnvironmentAs(const scene::Environment& env, const IblQuality& quality, const std::filesystem::path& cacheDir,
+                          bool force);
     void createMaps(const IblQuality& quality);
     void createPrecomputeInputs(const scene::Environment& environment);
     void ensurePasses();
@@ -150,6 +155,7 @@ private:
     vk::Image mEquirect;
     Target mFloatCube;
     float mFloatCubeScale = 1.0f;  // the float cube holds radiance × this (IblCubemapPass::floatCubeScale)
+    float mEquirectScale = 1.0f;   // the equirect holds radiance × this (IblCubemapPass::halfFloatScale)
     // Passes (created with the first environment).
     std::unique_ptr<passes::IblCubemapPass> mCubemapPass;
     std::unique_ptr<passes::IblPrefilterPass> mPrefilterPass;

@@ -14,9 +14,13 @@ namespace {
 bool halfCube(const vk::Context& context) { return context.choices().floatCube == VK_FORMAT_R16G16B16A16_SFLOAT; }
 }  // namespace
 
-float IblCubemapPass::floatCubeScale(const vk::Context& context, float brightest) {
-    if (!halfCube(context) || !(brightest > CANDELA_HALF_MAX)) return 1.0f;
+float IblCubemapPass::halfFloatScale(float brightest) {
+    if (!(brightest > CANDELA_HALF_MAX) || !std::isfinite(brightest)) return 1.0f;
     return std::exp2(-std::ceil(std::log2(brightest / CANDELA_HALF_MAX)));
+}
+
+float IblCubemapPass::floatCubeScale(const vk::Context& context, float brightest) {
+    return halfCube(context) ? halfFloatScale(brightest) : 1.0f;
 }
 
 IblCubemapPass::IblCubemapPass(vk::Context& context)
@@ -44,13 +48,14 @@ IblCubemapPass::Outputs IblCubemapPass::add(RenderGraph& graph, const Inputs& in
             d.cube = builder.write(in.cube, Usage::StorageReadWrite, WriteMode::Discard);
             d.specular = builder.write(in.specular, Usage::StorageWrite, WriteMode::Discard);
         },
-        [this, cubeScale = in.cubeScale](const Data& d, PassContext& ctx) {
+        [this, cubeScale = in.cubeScale, equirectInverseScale = 1.0f / in.equirectScale](const Data& d, PassContext& ctx) {
             const TextureDesc& equirect = ctx.desc(d.equirect);
             const TextureDesc& cube = ctx.desc(d.cube);
             const shading::IblCubemapPush push{
                 .faceSize = cube.width,
                 .supersample = supersampleFactor(cube.width, equirect.width, equirect.height),
-                .cubeScale = cubeScale};
+                .cubeScale = cubeScale,
+                .equirectInverseScale = equirectInverseScale};
             const VkDescriptorSet set =
                 vk::DescriptorWriter(mResample.program(), 0)
                     .image("equirect", ctx.view(d.equirect), ctx.layout(d.equirect), mSampler.get())

@@ -16,7 +16,7 @@ public:
     explicit IblCubemapPass(vk::Context& context);
 
     struct Inputs {
-        graph::TextureId equirect;  // RGBA32F equirectangular map, rotation 0
+        graph::TextureId equirect;  // equirectangular map (half floats), rotation 0: radiance × equirectScale
         // Float cube (DeviceChoices::floatCube), all mips written (contents discarded); an imported
         // one needs its mip views bound.
         graph::TextureId cube;
@@ -24,6 +24,7 @@ public:
         // The float cube holds radiance × cubeScale (a power of two: exact): below 1 when a
         // half-float cube (floatCubeScale) would overflow. The specular cube holds radiance.
         float cubeScale = 1.0f;
+        float equirectScale = 1.0f;  // halfFloatScale of the environment
     };
     struct Outputs {
         graph::TextureId cube;
@@ -39,6 +40,8 @@ public:
     // half-float maximum (dark texels then lose precision below 2^-24 × 1/scale instead of the
     // brightest overflowing).
     static float floatCubeScale(const vk::Context& context, float brightest);
+    // The largest power of two ≤ 1 that keeps `brightest` × it under the half-float maximum.
+    static float halfFloatScale(float brightest);
 
 private:
     vk::Pipeline mResample;

@@ -99,8 +99,13 @@ void SceneState::useEnvironment(const scene::Environment* environment, const ibl
             effective.cubeSize /= 2;
             effective.shSourceSize = std::min(effective.shSourceSize, effective.cubeSize);
             effective.irradianceSize = std::min(effective.irradianceSize, effective.cubeSize);
+            // The environment's upload shrinks too (halved, down to 4 × the cube's face).
+            const uint32_t equirect = effective.equirectMaxSize ? effective.equirectMaxSize
+                                                                 : std::max(environment->width, environment->height);
+            effective.equirectMaxSize = std::max(equirect / 2, 4 * effective.cubeSize);
             log::warn(std::string("not enough device memory for the IBL maps (") + e.what() +
-                      "): lowering the environment cube to " + std::to_string(effective.cubeSize) + " texels");
+                      "): lowering the environment cube to " + std::to_string(effective.cubeSize) +
+                      " texels and the environment to at most " + std::to_string(effective.equirectMaxSize) + " texels a side");
             force = true;
         }
     }

@@ -113,6 +113,7 @@ Context::Context(const ContextDesc& desc)
     step("memory allocator", [&] {
         mAllocator = std::make_unique<MemoryAllocator>(mPhysicalDevice, mDevice.handle, mCaps.memoryTypeMask);
         mAllocator->setBudget(desc.deviceMemoryBudget);
+        mAllocator->useHeapBudgets(mCaps.extensions.memoryBudget);
     });
 }
 

@@ -82,6 +82,24 @@ uint32_t chooseMemoryType(const VkPhysicalDeviceMemoryProperties& properties, ui
     return best;
 }
 
+std::string heapBudgetRefusal(VkDeviceSize usage, VkDeviceSize budget, VkDeviceSize size) {
+    if (budget == 0 || usage + size <= budget) return {};
+    return "the memory heap's budget of " + formatBytes(budget) + " would be passed (" + formatBytes(usage) +
+           " in use by this process, VK_EXT_memory_budget)";
+}
+
+std::vector<std::pair<VkDeviceSize, VkDeviceSize>> MemoryAllocator::heapBudgets() const {
+    std::vector<std::pair<VkDeviceSize, VkDeviceSize>> out;
+    if (!mHeapBudgets) return out;
+    VkPhysicalDeviceMemoryBudgetPropertiesEXT budget{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_BUDGET_PROPERTIES_EXT};
+    VkPhysicalDeviceMemoryProperties2 properties{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_PROPERTIES_2,
+                                                 .pNext = &budget};
+    vkGetPhysicalDeviceMemoryProperties2(mPhysicalDevice, &properties);
+    for (uint32_t i = 0; i < properties.memoryProperties.memoryHeapCount; ++i)
+        out.emplace_back(budget.heapUsage[i], budget.heapBudget[i]);
+    return out;
+}
+
 uint32_t MemoryAllocator::findMemoryType(uint32_t typeBits, MemoryUsage usage) const {
     const uint32_t best = chooseMemoryType(mProperties, typeBits, mTypeMask, usage);
     if (best == ~0u) throw std::runtime_error("no Vulkan memory type fits the resource's requirements");
@@ -91,6 +109,13 @@ uint32_t MemoryAllocator::findMemoryType(uint32_t typeBits, MemoryUsage usage) c
 VkDeviceMemory MemoryAllocator::allocateDeviceMemory(VkDeviceSize size, uint32_t memoryType, std::byte** mapped) {
     const VkMemoryAllocateInfo info{
         .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, .allocationSize = size, .memoryTypeIndex = memoryType};
+    if (mHeapBudgets) {
+        const auto budgets = heapBudgets();
+        const uint32_t heap = mProperties.memoryTypes[memoryType].heapIndex;
+        if (heap < budgets.size())
+            if (const std::string refusal = heapBudgetRefusal(budgets[heap].first, budgets[heap].second, size); !refusal.empty())
+                throw OutOfDeviceMemory("vkAllocateMemory of " + formatBytes(size) + ": " + refusal);
+    }
     if (mBudget > 0 && mStats.deviceMemoryBytes + size > mBudget)
         throw OutOfDeviceMemory("the device-memory budget of " + formatBytes(mBudget) + " is exhausted (" +
                                 formatBytes(mStats.deviceMemoryBytes) + " in use, " + formatBytes(size) + " more asked)");

@@ -14,6 +14,8 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace candela::vk {
@@ -68,6 +70,10 @@ struct MemoryStats {
 uint32_t chooseMemoryType(const VkPhysicalDeviceMemoryProperties& properties, uint32_t typeBits, uint32_t typeMask,
                           MemoryUsage usage);
 
+// Why an allocation of `size` bytes from a heap that uses `usage` of `budget` bytes
+// (VK_EXT_memory_budget) must be refused, or "" when it fits. Pure.
+std::string heapBudgetRefusal(VkDeviceSize usage, VkDeviceSize budget, VkDeviceSize size);
+
 class MemoryAllocator {
 public:
     // Allocates only from the memory types in `typeMask` (DeviceCaps::memoryTypeMask: a device
@@ -90,6 +96,13 @@ public:
     // test what happens when memory runs out. New blocks are then an eighth of the budget.
     void setBudget(VkDeviceSize bytes) { mBudget = bytes; }
     VkDeviceSize budget() const { return mBudget; }
+    // With VK_EXT_memory_budget enabled: before each vkAllocateMemory the heap's budget (what the
+    // driver says this process may use, other processes' use considered) is read, and an
+    // allocation that would pass it fails as OutOfDeviceMemory (so the memory fallbacks run)
+    // instead of paging or failing later.
+    void useHeapBudgets(bool enabled) { mHeapBudgets = enabled; }
+    // Per heap: bytes this process uses and may use (VK_EXT_memory_budget); empty without it.
+    std::vector<std::pair<VkDeviceSize, VkDeviceSize>> heapBudgets() const;
 
     // Frees blocks that hold no allocation. Context::waitIdleAndCollect calls it.
     void trim();
@@ -119,6 +132,7 @@ private:
     uint32_t mTypeMask = ~0u;
     VkDeviceSize mBlockSize;
     VkDeviceSize mBudget = 0;
+    bool mHeapBudgets = false;
     VkPhysicalDeviceMemoryProperties mProperties{};
     std::vector<std::unique_ptr<Block>> mBlocks;  // null entries are freed blocks (indices stay stable)
     MemoryStats mStats;

@@ -2,7 +2,8 @@
 // format qualifier) and include this file.
 #ifndef CANDELA_IBL_CUBEMAP_GLSL
 #define CANDELA_IBL_CUBEMAP_GLSL
-// IBL precompute, step 1: the equirectangular environment (RGBA32F, rotation 0) resampled into mip 0
+// IBL precompute, step 1: the equirectangular environment (half floats, scaled into range; rotation
+// 0) resampled into mip 0
 // of the float cube map, and into mip 0 of the specular cube (roughness 0 reflects the environment
 // itself; clamped to the half-float maximum). Each cube texel averages k×k bilinear taps spread over its footprint, so a
 // source finer than the cube is filtered rather than aliased. Bilinear by texelFetch: no linear
@@ -48,7 +49,7 @@ void main() {
             sum += bilinear(directionToEquirectUv(normalize(cubeFaceDirection(id.z, uv)), 0.0f));
         }
     }
-    vec3 radiance = sum / float(k * k);
+    vec3 radiance = sum / float(k * k) * push.equirectInverseScale;
 #ifdef CANDELA_FLOAT_CUBE_HALF
     imageStore(cubeMip0, ivec3(id), vec4(min(radiance * push.cubeScale, vec3(CANDELA_HALF_MAX)), 1.0f));
 #else

@@ -34,7 +34,7 @@ struct IblCubemapPush {
     uint faceSize;
     uint supersample;  // k: k×k bilinear taps per cube texel (k ≥ 1), for sources finer than the cube
     float cubeScale;   // the float cube holds radiance × cubeScale (a power of two; < 1 keeps a half-float cube in range)
-    uint pad1;
+    float equirectInverseScale;  // the equirect holds radiance / equirectInverseScale (half floats kept in range)
 };
 
 // ibl_cube_downsample.comp: 2×2 box filter from one mip to the next.

@@ -291,7 +291,8 @@ TEST(Cli, TimeAndAnimationChooseThePose) {
 }
 
 // A device-memory budget too small for anything is one line naming the resource and exit code 4;
-// one too small only for the default IBL maps lowers their resolution with a warning.
+// one too small only for the default IBL maps lowers their resolution (and the environment's) with
+// a warning.
 TEST(Cli, MemoryBudgetExhaustedOrDegraded) {
     const std::filesystem::path png = tempDir() / "budget.png";
     const Result tiny = run("render --memory-budget 1 --width 64 --height 36 --out " + png.string());
@@ -301,9 +302,14 @@ TEST(Cli, MemoryBudgetExhaustedOrDegraded) {
     EXPECT_NE(tiny.stderrText.find("the device-memory budget of 1.0 MiB is exhausted"), std::string::npos) << tiny.stderrText;
     EXPECT_FALSE(std::filesystem::exists(png));
 
-    const Result small = run("render --validate --memory-budget 8 --width 64 --height 36 --out " + png.string());
+    // 6 MiB: the sky's half-float upload (1 MiB) fails first, then the float cube; each step halves
+    // the cube and the environment's upload.
+    const Result small = run("render --validate --memory-budget 6 --width 64 --height 36 --out " + png.string());
     EXPECT_EQ(small.exitCode, 0) << small.stderrText;
-    EXPECT_NE(small.stderrText.find("lowering the environment cube to 64 texels"), std::string::npos) << small.stderrText;
+    EXPECT_NE(small.stderrText.find("cannot allocate 1.0 MiB for image 'ibl_equirect'"), std::string::npos) << small.stderrText;
+    EXPECT_NE(small.stderrText.find("lowering the environment cube to 64 texels and the environment to at most 256 texels a side"),
+              std::string::npos)
+        << small.stderrText;
     EXPECT_EQ(small.stderrText.find("validation"), std::string::npos) << small.stderrText;
     EXPECT_TRUE(std::filesystem::exists(png));
 }
@@ -513,6 +519,41 @@ TEST(Cli, QualityReportSweepsMsaaSpecularAaAndLevelsOfDetail) {
     EXPECT_NE(text.find("★"), std::string::npos);
     EXPECT_NE(r.stderrText.find("quality-report: 9/9"), std::string::npos) << r.stderrText;  // 8 settings and the reference
     std::filesystem::remove_all(dir);
+}
+
+// `candela info` through a device profile: the variable names it, the flag wins over the
+// variable, and an unknown name in either is a one-line error with exit code 2.
+TEST(Cli, InfoUnderADeviceProfileListsItsLimitsAndFallbacks) {
+    const auto capture = [](const std::string& prefix, const std::string& args, int* status) {
+        const std::string command = prefix + " " + std::string(CANDELA_EXECUTABLE) + " info " + args + " 2>&1";
+        FILE* pipe = popen(command.c_str(), "r");
+        std::string out;
+        std::array<char, 4096> buffer;
+        while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
+        *status = pclose(pipe);
+        return out;
+    };
+    int status = 0;
+    const std::string minimum = capture("CANDELA_DEVICE_PROFILE=minimum", "", &status);
+    EXPECT_EQ(status, 0) << minimum;
+    for (const char* line : {"device profile: minimum (Vulkan 1.3 specification",
+                             "per-stage limits: 16 samplers, 16 sampled images, 4 storage buffers, 4 storage images",
+                             "environment cube: R16G16B16A16_SFLOAT instead of R32G32B32A32_SFLOAT (no SAMPLED_IMAGE_FILTER_LINEAR)",
+                             "sheen LUT: R16G16B16A16_SFLOAT instead of R32_SFLOAT",
+                             "BRDF LUT: R16G16B16A16_SFLOAT instead of R16G16_SFLOAT (no STORAGE_IMAGE)",
+                             "layered materials: a program per layer combination"})
+        EXPECT_NE(minimum.find(line), std::string::npos) << line << "\n" << minimum;
+    const std::string native = capture("CANDELA_DEVICE_PROFILE=minimum", "--device-profile native", &status);
+    EXPECT_EQ(status, 0) << native;
+    EXPECT_NE(native.find("device profile: native"), std::string::npos) << native;
+    const std::string badVariable = capture("CANDELA_DEVICE_PROFILE=tiny", "", &status);
+    EXPECT_EQ(WEXITSTATUS(status), 2) << badVariable;
+    EXPECT_EQ(badVariable, "candela: error: CANDELA_DEVICE_PROFILE=tiny: no such device profile (profiles: native, minimum, "
+                           "desktop, apple)\n");
+    const Result badFlag = run("info --device-profile tiny");
+    EXPECT_EQ(badFlag.exitCode, 2);
+    EXPECT_EQ(badFlag.stderrText, "candela: error: --device-profile: no device profile 'tiny' (profiles: native, minimum, "
+                                  "desktop, apple)\n");
 }
 
 TEST(Cli, InfoListsDevicesAndTheChoice) {

@@ -67,5 +67,12 @@ TEST(MemoryType, NoTypeWithTheRequiredFlags) {
     EXPECT_EQ(chooseMemoryType(types({DL, DL | HV | HC}), ~0u, 0b01u, MemoryUsage::Stream), ~0u);
 }
 
+TEST(MemoryType, AnAllocationPastTheHeapBudgetIsRefused) {
+    EXPECT_EQ(heapBudgetRefusal(100 << 20, 256 << 20, 64 << 20), "");
+    EXPECT_EQ(heapBudgetRefusal(200 << 20, 256 << 20, 64 << 20),
+              "the memory heap's budget of 256.0 MiB would be passed (200.0 MiB in use by this process, VK_EXT_memory_budget)");
+    EXPECT_EQ(heapBudgetRefusal(0, 0, 64 << 20), "") << "a budget of 0 means none reported";
+}
+
 }  // namespace
 }  // namespace candela::vk
