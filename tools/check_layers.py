@@ -73,7 +73,7 @@ CONSUMERS = [
     # views, draw selections, tonemap operators, shading models and viewer panels are header-only enums with their
     # names tables; candela_passes and candela_ui are not linked.
     *[(f"app/{name}", ["ibl", "core", "shared"], CLI_ENUM_HEADERS)
-      for name in ["cli.h", "cli.cpp", "cli_flags.h", "cli_flags.cpp", "cli_help.cpp", "cli_values.h", "cli_values.cpp",
+      for name in ["cli.h", "cli.cpp", "cli_commands.cpp", "cli_flags.h", "cli_flags.cpp", "cli_help.cpp", "cli_values.h", "cli_values.cpp",
                    ]],
     ("app/", ALL, []),
     ("tools/bench/graph_compile_bench.cpp", ["graph"], []),
