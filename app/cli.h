@@ -32,6 +32,7 @@ struct CommonOptions {
     bool verbose = false;          // --verbose
     bool quiet = false;            // --quiet: no progress lines
     uint32_t memoryBudgetMib = 0;  // --memory-budget MIB (0: the device's memory)
+    std::string pipelineCache;     // --pipeline-cache DIR|off ("": the user's cache folder)
     bool operator==(const CommonOptions&) const = default;
 };
 

@@ -486,6 +486,15 @@ std::vector<Flag> makeFlagTable() {
              if (c.common().memoryBudgetMib == 0) throw UserError(flag + ": need at least 1 MiB");
          },
          .example = "64"},
+        {.name = "--pipeline-cache",
+         .uses = {{{Kind::Render, Kind::View, Kind::Bench, Kind::IblReport, Kind::ScaleReport, Kind::QualityReport, Kind::Soak},
+                   "DIR|off",
+                   "keep compiled pipelines in a file in DIR across runs, one per device and driver (a damaged or "
+                   "foreign file is ignored and replaced); off: in memory only [$XDG_CACHE_HOME/candela, else "
+                   "~/.cache/candela]",
+                   ""}},
+         .set = [](Command& c, Str flag, Str v) { c.common().pipelineCache = parsePath(flag, v); },
+         .example = "cache"},
         {.name = "--verbose",
          .uses = {{{Kind::Render, Kind::View, Kind::Bench, Kind::IblReport, Kind::QualityReport}, "",
                    "also print notes on the files read (such as the degenerate triangles a glTF file's primitives had, "

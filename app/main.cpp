@@ -6,6 +6,7 @@
 #include "assets/gltf_loader.h"
 #include "assets/image_file.h"
 #include "assets/procedural_sky.h"
+#include "core/cache_files.h"
 #include "core/log.h"
 #include "core/progress.h"
 #include "graph/graph_export.h"
@@ -26,7 +27,10 @@ vk::ContextDesc contextDesc(const CommonOptions& common) {
     log::setVerbose(common.verbose);
     return {.validation = common.validate,
             .deviceSelector = common.device,
-            .deviceMemoryBudget = uint64_t(common.memoryBudgetMib) << 20};
+            .deviceMemoryBudget = uint64_t(common.memoryBudgetMib) << 20,
+            .pipelineCacheFolder = common.pipelineCache == "off" ? std::filesystem::path()
+                                   : common.pipelineCache.empty() ? userCacheFolder()
+                                                                  : std::filesystem::path(common.pipelineCache)};
 }
 
 scene::Scene loadScene(const RenderOptions& options) {
@@ -178,7 +182,9 @@ std::string apiVersion(uint32_t v) {
 }  // namespace
 
 int runInfo(const InfoOptions& options) {
-    vk::Context context(contextDesc(options.common));
+    vk::ContextDesc desc = contextDesc(options.common);
+    desc.pipelineCacheFolder.clear();  // info builds no pipeline: it neither reads nor writes the cache
+    vk::Context context(desc);
     // List every device the loader sees, with the reason it is or is not usable.
     uint32_t count = 0;
     VK_CHECK(vkEnumeratePhysicalDevices(context.instance(), &count, nullptr));

@@ -61,7 +61,7 @@ CPU = ["core", "shared", "animation", "scene", "geometry", "pose", "assets", "ib
 ENGINE_UNIT_TESTS = ["device_select_test.cpp", "msaa_choice_test.cpp", "graph_pass_context_test.cpp",
                      "graph_msaa_test.cpp", "draw_list_test.cpp", "ibl_sample_tables_test.cpp",
                      "orbit_controls_test.cpp", "ibl_report_table_test.cpp", "forward_shader_test.cpp",
-                     "forward_tables_test.cpp"]
+                     "forward_tables_test.cpp", "pipeline_cache_file_test.cpp"]
 
 CLI_ENUM_HEADERS = ["passes/debug_view.h", "passes/draw_selection.h", "passes/tonemap_operator.h", "passes/shading_model.h",
                     "ui/viewer_panels.h"]

@@ -4,6 +4,7 @@
 #include "core/log.h"
 #include "shared/tonemap.h"
 #include "vk/context.h"
+#include "vk/pipeline_cache_file.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -190,6 +191,7 @@ void FrameBuilder::addNotes(Frame& frame, const RenderSettings& settings, const 
                          ? "; alpha-masked materials use alpha to coverage"
                          : "; alpha-masked materials keep the alpha test (the device has no alphaToOne)"));
     notes.insert(notes.end(), std::make_move_iterator(forward.begin()), std::make_move_iterator(forward.end()));
+    notes.push_back("pipeline cache: " + mContext.pipelineCacheFile().status());
     for (const std::string& line : mScene.iblMaps().explanation()) notes.push_back(line);
     if (scheduled.sheenLut)
         notes.emplace_back(mScene.sheenLut().computed() ? "sheen LUT: imported (computed by an earlier frame)"

@@ -3,6 +3,7 @@
 #include "core/log.h"
 #include "vk/check.h"
 #include "vk/device_select.h"
+#include "vk/pipeline_cache_file.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -105,6 +106,9 @@ Context::Context(const ContextDesc& desc)
     step("memory allocator", [&] {
         mAllocator = std::make_unique<MemoryAllocator>(mPhysicalDevice, mDevice.handle);
         mAllocator->setBudget(desc.deviceMemoryBudget);
+    });
+    step("pipeline cache", [&] {
+        mPipelineCache = std::make_unique<PipelineCacheFile>(mDevice.handle, mProperties, desc.pipelineCacheFolder);
     });
 }
 
@@ -306,6 +310,8 @@ std::vector<ValidationMessage> Context::validationMessages() const {
     std::lock_guard lock(mValidationMutex);
     return mValidationMessages;
 }
+
+VkPipelineCache Context::pipelineCache() const { return mPipelineCache ? mPipelineCache->handle() : VK_NULL_HANDLE; }
 
 void Context::defer(std::function<void()> destroy) { mDeferred.emplace_back(mFrame, std::move(destroy)); }
 

@@ -12,6 +12,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -19,6 +20,8 @@
 #include <vector>
 
 namespace candela::vk {
+
+class PipelineCacheFile;
 
 struct ValidationMessage {
     VkDebugUtilsMessageSeverityFlagBitsEXT severity;
@@ -49,6 +52,9 @@ struct ContextDesc {
     std::function<void(const ValidationMessage&)> onValidationMessage;
     // Print validation messages to stderr.
     bool printValidationMessages = true;
+    // The folder of the on-disk pipeline cache (vk/pipeline_cache_file.h; the front end's default
+    // is the user's cache folder, --pipeline-cache); empty: a cache in memory only, no file.
+    std::filesystem::path pipelineCacheFolder;
 };
 
 struct QueueInfo {
@@ -94,6 +100,11 @@ public:
     VkSampleCountFlags attachmentSampleCounts() const {
         return mProperties.limits.framebufferColorSampleCounts & mProperties.limits.framebufferDepthSampleCounts;
     }
+
+    // The pipeline cache every pipeline is created with (internally synchronized: any thread), and
+    // its file (written back when the context is destroyed).
+    VkPipelineCache pipelineCache() const;
+    const PipelineCacheFile& pipelineCacheFile() const { return *mPipelineCache; }
 
     // Validation messages (warnings and errors) seen since creation.
     uint32_t validationMessageCount() const { return mValidationCount.load(); }
@@ -166,6 +177,7 @@ private:
     PFN_vkCmdEndDebugUtilsLabelEXT mCmdEndLabel = nullptr;
     std::unique_ptr<MemoryAllocator> mAllocator;
     std::atomic<int64_t> mLiveObjects{0};
+    std::unique_ptr<PipelineCacheFile> mPipelineCache;  // written back and destroyed before the device
     uint64_t mFrame = 0;
     std::vector<std::pair<uint64_t, std::function<void()>>> mDeferred;
 };

@@ -90,7 +90,7 @@ Pipeline Pipeline::compute(Context& context, std::string_view shaderName, const 
                   .pSpecializationInfo = constants.get()},
         .layout = out.mProgram.layout()};
     VkPipeline pipeline = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+    VK_CHECK(vkCreateComputePipelines(context.device(), context.pipelineCache(), 1, &info, nullptr, &pipeline));
     out.mPipeline = PipelineHandle(context, pipeline);
     return out;
 }
@@ -172,7 +172,7 @@ Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std
                                             .pDynamicState = &dynamic,
                                             .layout = out.mProgram.layout()};
     VkPipeline pipeline = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateGraphicsPipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+    VK_CHECK(vkCreateGraphicsPipelines(context.device(), context.pipelineCache(), 1, &info, nullptr, &pipeline));
     out.mPipeline = PipelineHandle(context, pipeline);
     return out;
 }
