@@ -295,6 +295,16 @@ std::vector<Flag> makeFlagTable() {
              for (const std::string& item : commaSeparated(v)) c.qualityReport.msaa.push_back(parseChoice(flag, kSampleCounts, item));
          },
          .example = "2"},
+        {.name = "--precompile",
+         .uses = {{{Kind::Render, Kind::Bench}, "{choices}",
+                   "when the scene's pipeline variants compile: at each first draw (off), on worker threads before the "
+                   "frame's draws (frame), and also every debug view's in the background (debug-views)",
+                   passes::precompileName(passes::Precompile::Frame)},
+                  {{Kind::View}, "{choices}", "as for render; debug-views: a switch of the debug view does not stall",
+                   passes::precompileName(passes::Precompile::DebugViews)}},
+         .choices = namesOf(passes::kPrecompileNames),
+         .set = [](Command& c, Str flag, Str v) { c.render.precompile = parseChoice(flag, passes::kPrecompileNames, v); },
+         .example = "off"},
         {.name = "--specular-aa",
          .uses = {{kRenderViewBench, "{choices}",
                    "widen the roughness by the normal's change across a pixel and by what a normal map's mips average "

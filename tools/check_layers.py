@@ -64,13 +64,13 @@ ENGINE_UNIT_TESTS = ["device_select_test.cpp", "msaa_choice_test.cpp", "graph_pa
                      "forward_tables_test.cpp", "pipeline_cache_file_test.cpp"]
 
 CLI_ENUM_HEADERS = ["passes/debug_view.h", "passes/draw_selection.h", "passes/tonemap_operator.h", "passes/shading_model.h",
-                    "ui/viewer_panels.h"]
+                    "passes/precompile.h", "ui/viewer_panels.h"]
 
 # ---- Files outside engine/: the first row whose path matches (a file, or a folder ending in /) --
 # (path, folders it may include (and everything below them), single headers it may include besides)
 CONSUMERS = [
     # candela_cli: the argument parser, tested without the engine (tests/cli). The names of the debug
-    # views, draw selections, tonemap operators, shading models and viewer panels are header-only enums with their
+    # views, draw selections, tonemap operators, shading models, precompile choices and viewer panels are header-only enums with their
     # names tables; candela_passes and candela_ui are not linked.
     *[(f"app/{name}", ["ibl", "core", "shared"], CLI_ENUM_HEADERS)
       for name in ["cli.h", "cli.cpp", "cli_commands.cpp", "cli_flags.h", "cli_flags.cpp", "cli_help.cpp", "cli_values.h", "cli_values.cpp",

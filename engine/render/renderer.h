@@ -86,6 +86,9 @@ public:
     double completedPassMs(std::string_view pass) const { return mRunner.completedPassMs(pass); }
     // Waits for every frame in flight.
     void waitIdle() { mRunner.waitIdle(); }
+    // Waits for the pipelines queued ahead of use (RenderSettings::precompile) to be built
+    // (benchmarks: so that a measurement leaves them out).
+    void finishPipelineBuilds() { mBuilder.finishPipelineBuilds(); }
     // The Scene object last drawn was replaced in place (same address, new contents): the next
     // frame uploads it anew. Waits for the frames in flight.
     void sceneReplaced();

@@ -112,10 +112,11 @@ public:
 
     // Deferred destruction: `destroy` runs once the GPU has finished every frame submitted up to
     // now (see collect). Resource destructors use this, so a resource may be dropped while a
-    // frame in flight still uses it.
+    // frame in flight still uses it. Any thread (a pipeline built on a worker that fails drops
+    // its parts there); collect and waitIdleAndCollect run on the thread that submits.
     void defer(std::function<void()> destroy);
     // Number of the frame being recorded; incremented by FrameRing at each submit.
-    uint64_t currentFrame() const { return mFrame; }
+    uint64_t currentFrame() const { return mFrame.load(); }
     void advanceFrame() { ++mFrame; }
     // Runs deferred destructions queued at or before frame `completedFrame`.
     void collect(uint64_t completedFrame);
@@ -176,9 +177,10 @@ private:
     PFN_vkCmdBeginDebugUtilsLabelEXT mCmdBeginLabel = nullptr;
     PFN_vkCmdEndDebugUtilsLabelEXT mCmdEndLabel = nullptr;
     std::unique_ptr<MemoryAllocator> mAllocator;
-    std::atomic<int64_t> mLiveObjects{0};
     std::unique_ptr<PipelineCacheFile> mPipelineCache;  // written back and destroyed before the device
-    uint64_t mFrame = 0;
+    std::atomic<int64_t> mLiveObjects{0};
+    std::atomic<uint64_t> mFrame{0};
+    std::mutex mDeferredMutex;  // guards mDeferred
     std::vector<std::pair<uint64_t, std::function<void()>>> mDeferred;
 };
 

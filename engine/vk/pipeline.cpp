@@ -12,9 +12,12 @@ Program::Program(Context& context, const std::vector<std::string_view>& shaderNa
     std::vector<shader::ShaderReflection> reflections;
     for (std::string_view name : shaderNames) {
         mName += (mName.empty() ? "" : "+") + std::string(name);
-        const std::span<const uint32_t> spirv = shader::shaderSpirv(name);
+        // The SPIR-V and its generation together: a replacement on another thread meanwhile is
+        // either wholly in this program or makes it stale.
+        const shader::ShaderVersion version = shader::currentShader(name);
+        const std::span<const uint32_t> spirv = version.spirv;
         if (spirv.empty()) throw std::runtime_error("no built-in shader named '" + std::string(name) + "'");
-        mSources.emplace_back(std::string(name), shader::shaderGeneration(name));
+        mSources.emplace_back(std::string(name), version.generation);
         reflections.push_back(shader::reflectSpirv(spirv, std::string(name)));
         const VkShaderModuleCreateInfo info{.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
                                             .codeSize = spirv.size_bytes(),

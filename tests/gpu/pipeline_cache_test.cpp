@@ -1,5 +1,5 @@
 // The on-disk pipeline cache (vk/pipeline_cache_file.h) across two contexts, and the files it must
-// ignore.
+// ignore; pipelines built ahead of use on worker threads (vk/pipeline_cache.h, --precompile).
 // Every context here runs under validation with synchronization validation: any message fails.
 //
 // Mesa 22.3's lavapipe keeps no pipelines in its cache: its data is the 32-byte header alone, so
@@ -10,6 +10,7 @@
 
 #include "assets/builtin_scenes.h"
 #include "render/renderer.h"
+#include "vk/pipeline_cache.h"
 #include "vk/pipeline_cache_file.h"
 
 #include <algorithm>
@@ -153,6 +154,76 @@ TEST_F(PipelineCacheTest, NoFolderKeepsTheCacheInMemory) {
     renderFrame(*context);
     finish(context);
     EXPECT_TRUE(fs::is_empty(mDir.path()));
+}
+
+// ---- pipelines built ahead of use --------------------------------------------------------------
+
+TEST_F(GpuTest, PreparedBuildsRunOnWorkersAndFailuresSurfaceAtUse) {
+    {
+        WorkerPool workers(2);
+        vk::PipelineCache<int> cache;
+        vk::Context* ctx = &context();
+        cache.prepare(workers, 1, [ctx] { return vk::Pipeline::compute(*ctx, "pattern.comp"); }, WorkerPool::Priority::Soon);
+        cache.prepare(workers, 2, [ctx] { return vk::Pipeline::compute(*ctx, "no-such-shader.comp"); }, WorkerPool::Priority::Background);
+        cache.prepare(workers, 3, [ctx] { return vk::Pipeline::compute(*ctx, "pattern.comp"); }, WorkerPool::Priority::Background);
+        EXPECT_EQ(cache.pending(), 3u);
+        EXPECT_EQ(cache.size(), 0u);
+        bool madeHere = false;
+        const vk::Pipeline& one = cache.get(context(), 1, [&] {
+            madeHere = true;
+            return vk::Pipeline{};
+        });
+        EXPECT_FALSE(madeHere) << "a prepared key must take the prepared build";
+        EXPECT_NE(one.handle(), VK_NULL_HANDLE);
+        EXPECT_THROW(cache.get(context(), 2, [] { return vk::Pipeline{}; }), std::exception);
+        // The failed key is not kept: a later use builds it again.
+        EXPECT_NE(cache.get(context(), 2, [&] { return vk::Pipeline::compute(context(), "pattern.comp"); }).handle(), VK_NULL_HANDLE);
+        // Key 3 is never asked for: the cache's destruction keeps nothing alive.
+    }
+    context().waitIdleAndCollect();
+    EXPECT_EQ(context().liveObjects(), 0);
+}
+
+TEST_F(GpuTest, DebugViewsPreparedInTheBackgroundDrawLikeOnesBuiltAtFirstDraw) {
+    // The same debug view, once built at its first draw and once taken from the background builds:
+    // identical images (the pipelines are the same), no validation message, nothing leaked.
+    const scene::Scene grid = scene::makeSphereGrid();
+    RenderSettings settings{.width = 64, .height = 36, .scene = &grid};
+    CapturedFrame atFirstDraw, prepared;
+    {
+        Renderer renderer(context());
+        settings.precompile = passes::Precompile::Off;
+        renderer.capture(settings);
+        settings.debugView = passes::DebugView::Roughness;
+        atFirstDraw = renderer.capture(settings);
+    }
+    {
+        Renderer renderer(context());
+        settings.precompile = passes::Precompile::DebugViews;
+        settings.debugView = passes::DebugView::None;
+        renderer.capture(settings);
+        const std::vector<std::string> explained = renderer.explain();
+        const auto queued = std::find_if(explained.begin(), explained.end(),
+                                         [](const std::string& l) { return l.rfind("forward pipelines:", 0) == 0; });
+        ASSERT_NE(queued, explained.end());
+        EXPECT_EQ(queued->find(" 0 queued"), std::string::npos) << *queued;
+        renderer.finishPipelineBuilds();
+        settings.debugView = passes::DebugView::Roughness;
+        prepared = renderer.capture(settings);
+    }
+    EXPECT_EQ(prepared.rgba8, atFirstDraw.rgba8);
+    context().waitIdleAndCollect();
+    EXPECT_EQ(context().liveObjects(), 0);
+}
+
+TEST_F(GpuTest, RendererDestroyedWhileBackgroundBuildsRunLeaksNothing) {
+    const scene::Scene grid = scene::makeSphereGrid();
+    {
+        Renderer renderer(context());
+        renderer.capture({.width = 32, .height = 18, .scene = &grid, .precompile = passes::Precompile::DebugViews});
+    }  // most of the ~25 background builds are queued or running here
+    context().waitIdleAndCollect();
+    EXPECT_EQ(context().liveObjects(), 0);
 }
 
 }  // namespace
