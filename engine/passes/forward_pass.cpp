@@ -67,10 +67,11 @@ void ForwardPass::queue(const FrameVariant& frame, WorkerPool::Priority priority
     }
 }
 
-void ForwardPass::prepare(const FrameVariant& frame) {
-    if (mPrepared == frame) return;
+bool ForwardPass::prepare(const FrameVariant& frame) {
+    if (mPrepared == frame) return false;
     mPrepared = frame;
     queue(frame, WorkerPool::Priority::Soon);
+    return true;
 }
 
 void ForwardPass::prepareDebugViews(const FrameVariant& frame) {

@@ -114,9 +114,9 @@ public:
     // Queues the pipelines of every material key of the scene for a frame of `frame`'s bits on the
     // pass's worker threads (priority Soon), so that the frame's draws find them built or building
     // instead of compiling them one after the other (the draw that needs one first runs it itself
-    // if no worker has started it). Cheap when `frame` is the one last prepared. Precondition: a
-    // scene is set.
-    void prepare(const FrameVariant& frame);
+    // if no worker has started it). Cheap when `frame` is the one last prepared; returns whether it
+    // was not (something may have been queued). Precondition: a scene is set.
+    bool prepare(const FrameVariant& frame);
     // Queues, in the background, the same for every debug view (None included) of `frame`'s other
     // bits, so that a switch of the view finds them built. Cheap when done already for `frame`.
     void prepareDebugViews(const FrameVariant& frame);

@@ -13,8 +13,9 @@ enum class Precompile : uint8_t {
     Off,         // each variant at its first draw, on the thread recording the frame
     Frame,       // every variant the scene's materials need in the frame, on worker threads (and the
                  // recording thread) before its draws are recorded
-    DebugViews,  // Frame, and every debug view's variants of those in the background afterwards,
-                 // so that switching the view does not wait for a compiler (the viewer)
+    DebugViews,  // Frame, and every debug view's variants of those in the background, from the next
+                 // frame of the same bits on (not slowing the one that compiles), so that switching
+                 // the view does not wait for a compiler (the viewer)
 };
 
 inline constexpr std::pair<Precompile, const char*> kPrecompileNames[] = {

@@ -157,9 +157,10 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
                                                                           .layerMaps = layerMaps ? &*layerMaps : nullptr,
                                                                           .parameters = &mParameters});
     // The variants the scene needs now, compiled on the workers and here while the draws ask for
-    // them (not one after the other at each first draw); in the viewer, the debug views' after.
-    if (settings.precompile != passes::Precompile::Off) mForward.prepare(inputs.variant);
-    if (settings.precompile == passes::Precompile::DebugViews) mForward.prepareDebugViews(inputs.variant);
+    // them (not one after the other at each first draw); in the viewer, the debug views' after —
+    // from the next frame with the same bits on, so that they do not slow the frame that compiles.
+    const bool changed = settings.precompile != passes::Precompile::Off && mForward.prepare(inputs.variant);
+    if (settings.precompile == passes::Precompile::DebugViews && !changed) mForward.prepareDebugViews(inputs.variant);
     mStats = list.stats;
     passes::DrawTarget drawn = mForward.addOpaque(graph, {settings.width, settings.height, msaa.samples}, list, inputs, &mStats);
     const bool skybox = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;
