@@ -96,16 +96,10 @@ const vk::Program& ForwardPass::coreProgram() {
     return *mCoreProgram;
 }
 
-const vk::Program& ForwardPass::layeredProgram() {
-    if (!mLayeredProgram || mLayeredProgram->stale())
-        mLayeredProgram.emplace(mContext, std::vector<std::string_view>{"forward_layers.vert", "forward_layers.frag"});
-    return *mLayeredProgram;
-}
-
 const shader::ShaderReflection* ForwardPass::layeredReflection() {
     if (!mKeys) return nullptr;
     for (const MaterialKey& key : mKeys->keys)
-        if (key.layers) return &layeredProgram().reflection();
+        if (key.layers) return &pipeline(ForwardVariant{.layers = key.layers}).program().reflection();
     return nullptr;
 }
 
@@ -116,8 +110,9 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene, const MaterialKeys& 
     mPreparedViews.reset();
     mSets = std::make_unique<vk::DescriptorAllocator>(mContext);
     mMaterialSets.clear();
-    // Every variant has the set layouts of its program, so sets written with the program fit them
-    // all (and no pipeline is compiled for them here).
+    // Every core variant has the set layouts of the core program, so sets written with it fit them
+    // all (and no core pipeline is compiled for them here). A layered material's set follows the
+    // layered program of its layers, read from the pipeline of those layers.
     const vk::Program& core = coreProgram();
     mSceneSet = vk::DescriptorWriter(core, 0)
                     .buffer(ForwardBlock<shading::LightData>::name, gpuScene.lightBuffer())
@@ -128,7 +123,7 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene, const MaterialKeys& 
         // A layered material's set follows the layered program's layout: its core textures, then
         // every material's layer parameters and its own layer textures.
         const uint32_t layers = keys[material].layers;
-        const vk::Program& program = layers ? layeredProgram() : core;
+        const vk::Program& program = layers ? pipeline(ForwardVariant{.layers = layers}).program() : core;
         vk::DescriptorWriter writer(program, 1);
         for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
             const scene::GpuScene::Binding b = gpuScene.texture(material, slot);

@@ -155,10 +155,9 @@ private:
                            const FrameInputs& frame, DrawStats* recorded,
                            const std::function<DrawTarget(graph::PassBuilder&)>& targets);
     const vk::Pipeline& pipeline(const ForwardVariant& variant);
-    // The core and the layered program (shader modules, layouts, reflection: no pipeline), whose set
-    // layouts every core, resp. layered, variant shares.
+    // The core program (shader modules, layouts, reflection: no pipeline), whose set layouts every
+    // core variant shares and whose sets 0 and 2 every layered variant shares.
     const vk::Program& coreProgram();
-    const vk::Program& layeredProgram();
     // Queues the pipeline of every material key for `frame` (see prepare).
     void queue(const FrameVariant& frame, WorkerPool::Priority priority);
 
@@ -166,7 +165,7 @@ private:
     WorkerPool mWorkers;  // before mPipelines: outlives the builds it runs
     vk::PipelineCache<ForwardVariant> mPipelines;
     std::optional<FrameVariant> mPrepared, mPreparedViews;  // what prepare/prepareDebugViews last queued for
-    std::optional<vk::Program> mCoreProgram, mLayeredProgram;
+    std::optional<vk::Program> mCoreProgram;
     ForwardIblSet mIblSet;
     ForwardLayerSet mLayerSet;
     const scene::GpuScene* mScene = nullptr;
