@@ -29,11 +29,11 @@ namespace candela::app {
 
 struct CommonOptions {
     std::string device;            // --device INDEX|NAME
+    std::string pipelineCache;     // --pipeline-cache DIR|off ("": the user's cache folder)
     bool validate = false;         // --validate
     bool verbose = false;          // --verbose
     bool quiet = false;            // --quiet: no progress lines
     uint32_t memoryBudgetMib = 0;  // --memory-budget MIB (0: the device's memory)
-    std::string pipelineCache;     // --pipeline-cache DIR|off ("": the user's cache folder)
     bool operator==(const CommonOptions&) const = default;
 };
 
