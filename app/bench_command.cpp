@@ -6,6 +6,8 @@
 #include "commands.h"
 #include "frame_measurement.h"
 
+#include "vk/pipeline_cache_file.h"
+
 #include "core/errors.h"
 #include "core/log.h"
 #include "statistics.h"
@@ -25,6 +27,37 @@ double minimum(const std::vector<double>& values) {
     return values.empty() ? -1.0 : *std::min_element(values.begin(), values.end());
 }
 
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A switch of the debug view after the measured frames: the first frame in the new view (its
+// pipelines compiled then, or ahead of it by --precompile debug-views) and the one after it.
+struct DebugViewSwitch {
+    passes::DebugView to = passes::DebugView::None;
+    double firstMs = 0.0, nextMs = 0.0;  // wall time of each call
+};
+
+DebugViewSwitch switchDebugView(Renderer& renderer, const RenderSettings& settings) {
+    // Background builds (--precompile debug-views) are done long before a user's first switch:
+    // finished here, so that the two modes compare what the switch itself costs.
+    renderer.finishPipelineBuilds();
+    DebugViewSwitch out;
+    for (passes::DebugView view : passes::allDebugViews())
+        if (view != settings.debugView) {
+            out.to = view;
+            break;
+        }
+    RenderSettings switched = settings;
+    switched.debugView = out.to;
+    for (double* ms : {&out.firstMs, &out.nextMs}) {
+        const auto start = std::chrono::steady_clock::now();
+        renderer.renderFrame(switched);
+        *ms = msSince(start);
+    }
+    return out;
+}
+
 }  // namespace
 
 int runBench(const RenderOptions& options) {
@@ -42,9 +75,12 @@ int runBench(const RenderOptions& options) {
         pose.evaluate(options.time + frame / 60.0);
         animationMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     };
+    const auto startup = std::chrono::steady_clock::now();
     vk::Context context(contextDesc(options.common));
     Renderer renderer(context);
+    const double startupMs = msSince(startup);  // the device, the pipeline cache file, the renderer
     const FrameMeasurement m = measureFrames(renderer, settings, options.frames, advance);
+    const DebugViewSwitch viewSwitch = switchDebugView(renderer, settings);
     const std::vector<double>&frameMs = m.frameMs, &calibrationMs = m.calibrationMs, &calibrationGpuMs = m.calibrationGpuMs;
     const passes::DrawStats& drawStats = m.drawStats;
 
@@ -72,6 +108,15 @@ int runBench(const RenderOptions& options) {
                           {"ratioToCalibrationGpu", gpu >= 0.0 && calibrationGpu > 0.0 ? gpu / calibrationGpu : -1.0}});
     }
     out["passes"] = passes;
+    out["startupMs"] = startupMs;
+    out["firstFrame"] = {{"ms", m.firstFrameMs}, {"ratio", m.firstFrameMs / calibration}};
+    out["debugViewSwitch"] = {{"to", passes::debugViewName(viewSwitch.to)},
+                              {"firstMs", viewSwitch.firstMs},
+                              {"firstRatio", viewSwitch.firstMs / calibration},
+                              {"nextMs", viewSwitch.nextMs},
+                              {"nextRatio", viewSwitch.nextMs / calibration}};
+    out["pipelines"] = {{"precompile", passes::precompileName(settings.precompile)},
+                        {"cache", context.pipelineCacheFile().status()}};
     const vk::MsaaChoice msaa = renderer.msaa(settings.msaa);
     out["msaa"] = {{"samples", msaa.samples}, {"reason", msaa.reason}};
     out["draws"] = {{"scene", drawStats.sceneDraws},
@@ -132,6 +177,13 @@ int runBench(const RenderOptions& options) {
         std::printf("  frame:       median %.2f ms (%.2fx calibration), min %.2f ms (%.2fx); CPU building and recording %.2f ms\n",
                     median(frameMs), median(frameMs) / calibration, minimum(frameMs), minimum(frameMs) / minimum(calibrationMs),
                     median(m.cpuMs));
+        std::printf("  first frame: %.1f ms (%.1fx calibration) after a start-up of %.1f ms; pipelines: --precompile %s, "
+                    "cache %s\n",
+                    m.firstFrameMs, m.firstFrameMs / calibration, startupMs, passes::precompileName(settings.precompile),
+                    context.pipelineCacheFile().status().c_str());
+        std::printf("  debug-view switch to %s: first frame %.1f ms (%.1fx calibration), next %.1f ms (%.1fx)\n",
+                    passes::debugViewName(viewSwitch.to), viewSwitch.firstMs, viewSwitch.firstMs / calibration,
+                    viewSwitch.nextMs, viewSwitch.nextMs / calibration);
         if (pose.animated())
             std::printf("  animation:   %zu playing, CPU evaluation median %.4f ms, max %.4f ms per frame\n",
                         pose.playing().size(), out["animation"]["evaluateMedianMs"].get<double>(),

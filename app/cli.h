@@ -8,6 +8,7 @@
 #include "ibl/ibl_settings.h"
 #include "passes/debug_view.h"
 #include "passes/draw_selection.h"
+#include "passes/precompile.h"
 #include "passes/tonemap_operator.h"
 #include "passes/shading_model.h"
 #include "ui/viewer_panels.h"
@@ -29,6 +30,7 @@ namespace candela::app {
 
 struct CommonOptions {
     std::string device;            // --device INDEX|NAME
+    std::string pipelineCache;     // --pipeline-cache DIR|off ("": the user's cache folder)
     bool validate = false;         // --validate
     bool verbose = false;          // --verbose
     bool quiet = false;            // --quiet: no progress lines
@@ -80,6 +82,7 @@ struct RenderOptions {
     bool frustumCulling = true;   // --cull on|off
     bool specularAa = false;      // --specular-aa on|off
     std::optional<uint32_t> msaa;  // --msaa 1|2|4|8 (unset: the device default)
+    passes::Precompile precompile{};  // --precompile off|frame|debug-views
     bool explain = false;          // --explain (render, bench)
     // --frames N: render: frames of an image sequence; bench: frames measured; view: frames to
     // render before exiting (0: until the window is closed).

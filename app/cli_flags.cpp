@@ -303,6 +303,16 @@ std::vector<Flag> makeFlagTable() {
              for (const std::string& item : commaSeparated(v)) c.qualityReport.msaa.push_back(parseChoice(flag, kSampleCounts, item));
          },
          .example = "2"},
+        {.name = "--precompile",
+         .uses = {{{Kind::Render, Kind::Bench}, "{choices}",
+                   "when the scene's pipeline variants compile: at each first draw (off), on worker threads before the "
+                   "frame's draws (frame), and also every debug view's in the background (debug-views)",
+                   passes::precompileName(passes::Precompile::Frame)},
+                  {{Kind::View}, "{choices}", "as for render; debug-views: a switch of the debug view does not stall",
+                   passes::precompileName(passes::Precompile::DebugViews)}},
+         .choices = namesOf(passes::kPrecompileNames),
+         .set = [](Command& c, Str flag, Str v) { c.render.precompile = parseChoice(flag, passes::kPrecompileNames, v); },
+         .example = "off"},
         {.name = "--specular-aa",
          .uses = {{kRenderViewBench, "{choices}",
                    "widen the roughness by the normal's change across a pixel and by what a normal map's mips average "
@@ -505,6 +515,15 @@ std::vector<Flag> makeFlagTable() {
              if (c.common().memoryBudgetMib == 0) throw UserError(flag + ": need at least 1 MiB");
          },
          .example = "64"},
+        {.name = "--pipeline-cache",
+         .uses = {{{Kind::Render, Kind::View, Kind::Bench, Kind::IblReport, Kind::ScaleReport, Kind::QualityReport, Kind::Soak},
+                   "DIR|off",
+                   "keep compiled pipelines in a file in DIR across runs, one per device and driver (a damaged or "
+                   "foreign file is ignored and replaced); off: in memory only [$XDG_CACHE_HOME/candela, else "
+                   "~/.cache/candela]",
+                   ""}},
+         .set = [](Command& c, Str flag, Str v) { c.common().pipelineCache = parsePath(flag, v); },
+         .example = "cache"},
         {.name = "--verbose",
          .uses = {{{Kind::Render, Kind::View, Kind::Bench, Kind::IblReport, Kind::QualityReport}, "",
                    "also print notes on the files read (such as the degenerate triangles a glTF file's primitives had, "
@@ -522,52 +541,6 @@ std::vector<Flag> makeFlagTable() {
 }
 
 }  // namespace
-
-const std::vector<CommandInfo>& commandTable() {
-    static const std::vector<CommandInfo> commands = {
-        {Kind::Render, "render", "[flags]", "render a frame (or an image sequence) headless and write it to a file", ""},
-        {Kind::View, "view", "[SCENE] [flags]",
-         "open the interactive viewer (window, orbit camera, ImGui panels); SCENE: a .gltf/.glb file, as --scene",
-         "mouse and keys: right-drag rotate, middle-drag pan, wheel zoom, F frame the scene, R reset the camera, space "
-         "pause/play the animation, P or F12 screenshot (candela-screenshot.png), Esc quit; drop a .gltf/.glb to open "
-         "it, an .hdr/.exr to light the scene with it"},
-        {Kind::Bench, "bench", "[flags]",
-         "render N frames and report frame and pass times, also as ratios to a calibration pass run in the same process",
-         ""},
-        {Kind::IblReport, "ibl-report", "[flags]",
-         "sweep the IBL quality settings: precompute time against the error of the maps and of the final image, as "
-         "CSV, markdown and log-log plots",
-         ""},
-        {Kind::ScaleReport, "scale-report", "[flags]",
-         "frame time against scene triangles for N x N sphere grids, levels of detail on and off, as CSV, markdown and "
-         "a log-log plot",
-         ""},
-        {Kind::QualityReport, "quality-report", "[flags]",
-         "image error (against a 16-sample reference, and frame to frame over a slow orbit) against frame time for "
-         "MSAA x specular AA x LOD error",
-         ""},
-        {Kind::Soak, "soak", "[flags]",
-         "render many frames headless, switching the environment, and report host and device memory over time (leaks "
-         "show as growth after warm-up)",
-         ""},
-        {Kind::Info, "info", "[flags]", "list the Vulkan devices, the one chosen and why, and the features enabled", ""},
-    };
-    return commands;
-}
-
-const CommandInfo* findCommand(std::string_view name) {
-    for (const CommandInfo& command : commandTable())
-        if (command.name == name) return &command;
-    return nullptr;
-}
-
-std::string commandList(CommandSet set, bool allBut) {
-    std::vector<std::string> in, out;
-    for (const CommandInfo& command : commandTable()) (set.contains(command.kind) ? in : out).push_back(command.name);
-    if (out.empty()) return "every command";
-    if (allBut && in.size() > 4) return "every command but " + joinWords(out, "and");
-    return joinWords(in, "and");
-}
 
 const std::vector<Flag>& flagTable() {
     static const std::vector<Flag> flags = makeFlagTable();

@@ -2,6 +2,7 @@
 // The command line's two tables: the commands, and the flags — each flag declared once with its
 // value, help, default, the commands that take it and how it is parsed into the typed options of
 // cli.h. The parser, `candela --help`, `candela COMMAND --help` and the tests all read them.
+// (The commands are defined in cli_commands.cpp, the flags in cli_flags.cpp.)
 
 #include "cli.h"
 

@@ -24,7 +24,8 @@ int runSoak(const SoakOptions& options);
 int runScaleReport(const ScaleReportOptions& options);
 int runQualityReport(const QualityReportOptions& options);
 
-// Shared by render and bench: the context description and the render settings the flags choose.
+// Shared by render and bench: the context description (with the pipeline cache's folder:
+// --pipeline-cache, else the user's cache folder) and the render settings the flags choose.
 vk::ContextDesc contextDesc(const CommonOptions& common);
 scene::Scene loadScene(const RenderOptions& options);
 // The environment --env asks for: a file, the procedural sky, or none (nullopt). Its warnings are

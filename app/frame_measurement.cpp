@@ -9,11 +9,13 @@ namespace candela::app {
 
 FrameMeasurement measureFrames(Renderer& renderer, const RenderSettings& settings, uint32_t frames,
                                const std::function<void(uint32_t)>& beforeFrame) {
+    FrameMeasurement out;
     for (int i = 0; i < 2; ++i) {
+        const auto start = std::chrono::steady_clock::now();
         renderer.renderFrame(settings);
+        if (i == 0) out.firstFrameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         renderer.renderCalibration(settings.width, settings.height);
     }
-    FrameMeasurement out;
     for (uint32_t i = 0; i < frames; ++i) {
         if (beforeFrame) beforeFrame(i);
         const FrameTiming frame = renderer.renderFrame(settings);

@@ -13,6 +13,7 @@
 namespace candela::app {
 
 struct FrameMeasurement {
+    double firstFrameMs = 0.0;             // the first warm-up frame, wall time of the call (upload, pipelines, IBL...)
     std::vector<double> frameMs;           // submit to fence, per frame
     std::vector<double> cpuMs;             // building, compiling and recording, per frame
     std::vector<double> calibrationMs, calibrationGpuMs;

@@ -6,6 +6,7 @@
 #include "assets/gltf_loader.h"
 #include "assets/image_file.h"
 #include "assets/procedural_sky.h"
+#include "core/cache_files.h"
 #include "core/log.h"
 #include "core/progress.h"
 #include "graph/graph_export.h"
@@ -27,7 +28,10 @@ vk::ContextDesc contextDesc(const CommonOptions& common) {
     return {.validation = common.validate,
             .deviceSelector = common.device,
             .deviceMemoryBudget = uint64_t(common.memoryBudgetMib) << 20,
-            .profile = common.deviceProfile};
+            .profile = common.deviceProfile,
+            .pipelineCacheFolder = common.pipelineCache == "off" ? std::filesystem::path()
+                                   : common.pipelineCache.empty() ? userCacheFolder()
+                                                                  : std::filesystem::path(common.pipelineCache)};
 }
 
 scene::Scene loadScene(const RenderOptions& options) {
@@ -80,6 +84,7 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
     settings.drawSelection = {.frustumCulling = options.frustumCulling, .lodErrorPixels = options.lodErrorPixels};
     settings.shadingOptions.specularAntiAliasing = options.specularAa;
     settings.msaa = options.msaa;
+    settings.precompile = options.precompile;
     if (options.camera) settings.camera.gltfCamera = *options.camera;
     if (options.cameraOrbit) settings.camera.orbit = glm::vec3((*options.cameraOrbit)[0], (*options.cameraOrbit)[1], (*options.cameraOrbit)[2]);
     if (options.target) settings.camera.target = glm::vec3((*options.target)[0], (*options.target)[1], (*options.target)[2]);
@@ -178,7 +183,9 @@ std::string apiVersion(uint32_t v) {
 }  // namespace
 
 int runInfo(const InfoOptions& options) {
-    vk::Context context(contextDesc(options.common));
+    vk::ContextDesc desc = contextDesc(options.common);
+    desc.pipelineCacheFolder.clear();  // info builds no pipeline: it neither reads nor writes the cache
+    vk::Context context(desc);
     // List every device the loader sees, with the reason it is or is not usable.
     uint32_t count = 0;
     VK_CHECK(vkEnumeratePhysicalDevices(context.instance(), &count, nullptr));

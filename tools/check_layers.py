@@ -62,19 +62,19 @@ ENGINE_UNIT_TESTS = ["device_select_test.cpp", "device_profile_test.cpp", "memor
                      "graph_msaa_test.cpp", "draw_list_test.cpp", "ibl_sample_tables_test.cpp",
                      "orbit_controls_test.cpp", "ibl_report_table_test.cpp", "forward_shader_test.cpp",
                      "forward_tables_test.cpp", "skin_morph_dispatch_test.cpp", "index_values_test.cpp",
-                     "swapchain_choices_test.cpp"]
+                     "swapchain_choices_test.cpp", "pipeline_cache_file_test.cpp"]
 
 CLI_ENUM_HEADERS = ["passes/debug_view.h", "passes/draw_selection.h", "passes/tonemap_operator.h", "passes/shading_model.h",
-                    "ui/viewer_panels.h", "vk/device_profile.h"]
+                    "passes/precompile.h", "ui/viewer_panels.h", "vk/device_profile.h"]
 
 # ---- Files outside engine/: the first row whose path matches (a file, or a folder ending in /) --
 # (path, folders it may include (and everything below them), single headers it may include besides)
 CONSUMERS = [
     # candela_cli: the argument parser, tested without the engine (tests/cli). The names of the debug
-    # views, draw selections, tonemap operators, shading models and viewer panels are header-only enums with their
+    # views, draw selections, tonemap operators, shading models, precompile choices and viewer panels are header-only enums with their
     # names tables; candela_passes and candela_ui are not linked.
     *[(f"app/{name}", ["ibl", "core", "shared"], CLI_ENUM_HEADERS)
-      for name in ["cli.h", "cli.cpp", "cli_flags.h", "cli_flags.cpp", "cli_help.cpp", "cli_values.h", "cli_values.cpp",
+      for name in ["cli.h", "cli.cpp", "cli_commands.cpp", "cli_flags.h", "cli_flags.cpp", "cli_help.cpp", "cli_values.h", "cli_values.cpp",
                    ]],
     ("app/", ALL, []),
     ("tools/bench/graph_compile_bench.cpp", ["graph"], []),

@@ -1,16 +1,14 @@
 #include "ibl/ibl_cache_file.h"
 
+#include "core/cache_files.h"
 #include "core/errors.h"
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cerrno>
-#include <chrono>
 #include <cstring>
 #include <fstream>
 #include <limits>
-#include <random>
 #include <stdexcept>
 
 namespace candela::ibl {
@@ -19,23 +17,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::array<char, 12> kMagic = {'C', 'A', 'N', 'D', 'E', 'L', 'A', '-', 'I', 'B', 'L', '\0'};
-constexpr uint64_t kFnvBasis = 0xcbf29ce484222325ull;
-constexpr uint64_t kFnvPrime = 0x100000001b3ull;
-
-uint64_t fnvUpdate(uint64_t hash, const void* bytes, size_t size) {
-    const auto* p = static_cast<const unsigned char*>(bytes);
-    for (size_t i = 0; i < size; ++i) {
-        hash ^= p[i];
-        hash *= kFnvPrime;
-    }
-    return hash;
-}
-
-std::string hex16(uint64_t v) {
-    std::string s(16, '0');
-    for (int i = 15; i >= 0; --i, v >>= 4) s[size_t(i)] = "0123456789abcdef"[v & 0xf];
-    return s;
-}
 
 // `text` made printable on one line (control bytes become '?') and cut to `limit` characters.
 std::string printable(std::string_view text, size_t limit = 80) {
@@ -96,10 +77,10 @@ std::string dataSizeProblem(const CachedImage& image, uint64_t dataBytes) {
 // Little-endian fields into a stream, hashing every byte written.
 class Writer {
 public:
-    explicit Writer(std::ofstream& out) : mOut(out) {}
+    explicit Writer(std::ostream& out) : mOut(out) {}
     void bytes(const void* data, size_t size) {
         mOut.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
-        mHash = fnvUpdate(mHash, data, size);
+        mHash = fnv1a64Update(mHash, data, size);
     }
     void u32(uint32_t v) {
         const std::array<unsigned char, 4> b = {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
@@ -112,8 +93,8 @@ public:
     uint64_t hash() const { return mHash; }
 
 private:
-    std::ofstream& mOut;
-    uint64_t mHash = kFnvBasis;
+    std::ostream& mOut;
+    uint64_t mHash = kFnv1a64Basis;
 };
 
 // Little-endian fields from a stream of known size, hashing every byte read. A read that would
@@ -135,7 +116,7 @@ public:
         mIn.read(static_cast<char*>(data), static_cast<std::streamsize>(size));
         if (!mIn || uint64_t(mIn.gcount()) != size)
             return fail("read failed at byte " + std::to_string(mOffset) + " (" + what + "): " + std::strerror(errno));
-        mHash = fnvUpdate(mHash, data, size_t(size));
+        mHash = fnv1a64Update(mHash, data, size_t(size));
         mOffset += size;
         return true;
     }
@@ -157,7 +138,7 @@ private:
     std::ifstream& mIn;
     uint64_t mSize;
     uint64_t mOffset = 0;
-    uint64_t mHash = kFnvBasis;
+    uint64_t mHash = kFnv1a64Basis;
     std::string mProblem;
 };
 
@@ -196,29 +177,6 @@ bool readImage(Reader& in, uint32_t index, uint64_t& payload, CachedImage& image
     return in.bytes(image.data.data(), dataBytes, named + "'s data");
 }
 
-// 64 bits for a temporary file name unique among concurrent writers (processes and threads).
-uint64_t randomTag() {
-    static std::atomic<uint64_t> counter{0};
-    uint64_t tag = uint64_t(std::chrono::steady_clock::now().time_since_epoch().count()) ^ (counter++ * kFnvPrime);
-    try {
-        std::random_device device;
-        tag ^= uint64_t(device()) << 32 | device();
-    } catch (const std::exception&) {
-        // No entropy source: the clock and counter alone.
-    }
-    return tag;
-}
-
-// Removes the file at `path` on destruction unless released.
-struct TemporaryFile {
-    fs::path path;
-    bool keep = false;
-    ~TemporaryFile() {
-        std::error_code ec;
-        if (!keep) fs::remove(path, ec);
-    }
-};
-
 }  // namespace
 
 size_t CachedImage::expectedBytes() const {
@@ -241,8 +199,6 @@ size_t CachedImage::expectedBytes() const {
     return total >= kOverflow ? kOverflow : size_t(total);
 }
 
-uint64_t fnv1a64(std::string_view bytes) { return fnvUpdate(kFnvBasis, bytes.data(), bytes.size()); }
-
 std::filesystem::path cacheFilePath(const std::filesystem::path& dir, const IblCacheKey& key) {
     return dir / (hex16(key.environmentHash) + "-" + hex16(fnv1a64(key.settings)) + ".cibl");
 }
@@ -263,16 +219,7 @@ void writeCacheFile(const std::filesystem::path& path, const IblCacheKey& key, c
     if (payload > kIblCacheMaxPayloadBytes)
         invalid("the images' data adds up to more than " + std::to_string(kIblCacheMaxPayloadBytes) + " bytes");
 
-    std::error_code ec;
-    if (const fs::path dir = path.parent_path(); !dir.empty()) {
-        fs::create_directories(dir, ec);
-        if (ec) throw UserError(name + ": cannot create the directory '" + dir.string() + "': " + ec.message());
-    }
-    TemporaryFile temporary{path.parent_path() / (path.filename().string() + ".tmp-" + hex16(randomTag()))};
-    {
-        std::ofstream out(temporary.path, std::ios::binary | std::ios::trunc);
-        if (!out)
-            throw UserError(name + ": cannot create the temporary file '" + temporary.path.string() + "': " + std::strerror(errno));
+    writeFileAtomically(path, [&](std::ostream& out) {
         Writer writer(out);
         writer.bytes(kMagic.data(), kMagic.size());
         writer.u32(kIblCacheVersion);
@@ -288,14 +235,7 @@ void writeCacheFile(const std::filesystem::path& path, const IblCacheKey& key, c
             writer.bytes(image.data.data(), image.data.size());
         }
         writer.u64(writer.hash());
-        out.flush();
-        if (!out) throw UserError(name + ": write failed: " + std::strerror(errno));
-        out.close();
-        if (!out) throw UserError(name + ": write failed on close: " + std::strerror(errno));
-    }
-    fs::rename(temporary.path, path, ec);
-    if (ec) throw UserError(name + ": cannot rename the temporary file '" + temporary.path.string() + "' to it: " + ec.message());
-    temporary.keep = true;
+    });
 }
 
 std::optional<std::vector<CachedImage>> readCacheFile(const std::filesystem::path& path, const IblCacheKey& key,

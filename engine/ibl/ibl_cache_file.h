@@ -28,6 +28,8 @@
 //     checksum        u64       FNV-1a 64 of every byte before it
 // The images' dataBytes sum to at most kIblCacheMaxPayloadBytes.
 
+#include "core/cache_files.h"  // fnv1a64: the settings part of file names and the checksum
+
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -66,10 +68,6 @@ struct IblCacheKey {
     uint64_t environmentHash = 0;  // scene::contentHash of the environment
     std::string settings;          // canonical text of the quality settings, e.g. "cube=256 prefilter=64 ..."
 };
-
-// FNV-1a 64 (offset basis 0xcbf29ce484222325, prime 0x100000001b3) of `bytes`: the settings part
-// of cache file names and the file checksum.
-uint64_t fnv1a64(std::string_view bytes);
 
 // dir / "<16 lowercase hex digits of environmentHash>-<16 of fnv1a64(settings)>.cibl". Two keys
 // may share a name (a hash collision); readCacheFile compares the full key, so a collision is only

@@ -51,19 +51,59 @@ vk::GraphicsPipelineDesc pipelineDesc(const ForwardVariant& v, bool specializeLa
     return out;
 }
 
+// Builds variant `v`'s pipeline: what a worker runs, so it holds only the context and the variant.
+vk::Pipeline buildPipeline(vk::Context& context, const ForwardVariant& v) {
+    // The ground truth of `ibl-report` (referenceSamples) is a program of its own, for core materials.
+    if (v.referenceSamples && v.layers) throw std::logic_error("ForwardPass: the ground truth integrates core materials only");
+    return v.layers ? vk::Pipeline::graphics(context, "forward_layers.vert", "forward_layers.frag",
+                                             pipelineDesc(v, context.choices().specializeLayeredProgram))
+                    : vk::Pipeline::graphics(context, "forward.vert", v.referenceSamples ? "forward_reference.frag" : "forward.frag",
+                                             pipelineDesc(v, false));
+}
+
 }  // namespace
 
-ForwardPass::ForwardPass(vk::Context& context) : mContext(context), mIblSet(context), mLayerSet(context) {}
+ForwardPass::ForwardPass(vk::Context& context)
+    : mContext(context), mWorkers(WorkerPool::defaultThreads()), mIblSet(context), mLayerSet(context) {}
 
 const vk::Pipeline& ForwardPass::pipeline(const ForwardVariant& v) {
-    return mPipelines.get(mContext, v, [&] {
-        // The ground truth of `ibl-report` (referenceSamples) is a program of its own, for core materials.
-        if (v.referenceSamples && v.layers) throw std::logic_error("ForwardPass: the ground truth integrates core materials only");
-        return v.layers ? vk::Pipeline::graphics(mContext, "forward_layers.vert", "forward_layers.frag",
-                                                 pipelineDesc(v, mContext.choices().specializeLayeredProgram))
-                        : vk::Pipeline::graphics(mContext, "forward.vert",
-                                                 v.referenceSamples ? "forward_reference.frag" : "forward.frag", pipelineDesc(v, false));
-    });
+    return mPipelines.get(mContext, v, [&] { return buildPipeline(mContext, v); });
+}
+
+void ForwardPass::queue(const FrameVariant& frame, WorkerPool::Priority priority) {
+    for (const MaterialKey& key : mKeys->keys) {
+        const ForwardVariant v = forwardVariant(key, frame);
+        mPipelines.prepare(mWorkers, v, [context = &mContext, v] { return buildPipeline(*context, v); }, priority);
+    }
+}
+
+bool ForwardPass::prepare(const FrameVariant& frame) {
+    if (mPrepared == frame) return false;
+    mPrepared = frame;
+    queue(frame, WorkerPool::Priority::Soon);
+    return true;
+}
+
+void ForwardPass::prepareDebugViews(const FrameVariant& frame) {
+    FrameVariant base = frame;
+    base.debugView = DebugView::None;
+    if (mPreparedViews == base) return;
+    mPreparedViews = base;
+    // The shaded image first: the view a debug view is most often switched back to.
+    queue(base, WorkerPool::Priority::Background);
+    for (DebugView view : allDebugViews()) {
+        FrameVariant f = base;
+        f.debugView = view;
+        queue(f, WorkerPool::Priority::Background);
+    }
+}
+
+const vk::Program& ForwardPass::coreProgram() {
+    // Rebuilt when a shader was replaced (hot reload), like the pipelines: the user's parameters
+    // follow the new reflection. Replacements keep the layouts (shader_library.h), so sets
+    // written with the old one stay valid.
+    if (!mCoreProgram || mCoreProgram->stale()) mCoreProgram.emplace(mContext, std::vector<std::string_view>{"forward.vert", "forward.frag"});
+    return *mCoreProgram;
 }
 
 const shader::ShaderReflection* ForwardPass::layeredReflection() {
@@ -76,19 +116,23 @@ const shader::ShaderReflection* ForwardPass::layeredReflection() {
 void ForwardPass::setScene(const scene::GpuScene& gpuScene, const MaterialKeys& keys) {
     mScene = &gpuScene;
     mKeys = &keys;
+    mPrepared.reset();  // other keys: their variants are not queued yet
+    mPreparedViews.reset();
     mSets = std::make_unique<vk::DescriptorAllocator>(mContext);
     mMaterialSets.clear();
-    // Every variant has the same set layouts, so sets written for one pipeline fit them all.
-    const vk::Pipeline& any = pipeline(ForwardVariant{});
-    // One pool for the scene's sets: the scene set and a material set per material (layered
-    // materials' sets follow the layered layout).
-    vk::DescriptorCounts total = vk::DescriptorCounts::ofSet(any.program(), 0);
+    // Every core variant has the set layouts of the core program, so sets written with it fit them
+    // all (and no core pipeline is compiled for them here). A layered material's set follows the
+    // layered program of its layers (specialized to them where the device's limits need it), read
+    // from the pipeline of those layers.
+    const vk::Program& core = coreProgram();
+    // One pool for the scene's sets: the scene set and a material set per material.
+    vk::DescriptorCounts total = vk::DescriptorCounts::ofSet(core, 0);
     for (uint32_t material = 0; material < gpuScene.scene().materials.size(); ++material) {
         const uint32_t layers = keys[material].layers;
-        total += vk::DescriptorCounts::ofSet(layers ? pipeline(ForwardVariant{.layers = layers}).program() : any.program(), 1);
+        total += vk::DescriptorCounts::ofSet(layers ? pipeline(ForwardVariant{.layers = layers}).program() : core, 1);
     }
     mSets->reserve(total);
-    mSceneSet = vk::DescriptorWriter(any.program(), 0)
+    mSceneSet = vk::DescriptorWriter(core, 0)
                     .buffer(ForwardBlock<shading::LightData>::name, gpuScene.lightBuffer())
                     .buffer(ForwardBlock<shading::DrawData>::name, gpuScene.drawBuffer())
                     .buffer(ForwardBlock<shading::MaterialData>::name, gpuScene.materialBuffer())
@@ -97,7 +141,7 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene, const MaterialKeys& 
         // A layered material's set follows the layered program's layout: its core textures, then
         // every material's layer parameters and its own layer textures.
         const uint32_t layers = keys[material].layers;
-        const vk::Program& program = layers ? pipeline(ForwardVariant{.layers = layers}).program() : any.program();
+        const vk::Program& program = layers ? pipeline(ForwardVariant{.layers = layers}).program() : core;
         vk::DescriptorWriter writer(program, 1);
         for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
             const scene::GpuScene::Binding b = gpuScene.texture(material, slot);
@@ -237,9 +281,11 @@ DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::s
     const scene::GpuScene* gpuScene = mScene;
     const std::vector<VkDescriptorSet>* materialSets = &mMaterialSets;
     const ForwardIblSet* iblSets = &mIblSet;
-    // Every variant of the frame shares the layouts of sets 0 and 2 (the ground truth's program adds
-    // its inputs to set 2: a frame draws with it or not at all).
-    const vk::Program* program = &pipeline(ForwardVariant{.referenceSamples = frame.variant.referenceSamples}).program();
+    // Every variant of the frame shares the layouts of sets 0 and 2: the core program's, or in a
+    // ground-truth frame its own program's (which adds its inputs to set 2).
+    const vk::Program* program = frame.variant.referenceSamples
+                                     ? &pipeline(ForwardVariant{.referenceSamples = frame.variant.referenceSamples}).program()
+                                     : &coreProgram();
     const ForwardLayerSet* layerSets = &mLayerSet;
     const Data& data = graph.addPass<Data>(
         std::move(name), PassType::Graphics,

@@ -24,6 +24,7 @@
 #include "shared/scene_data.h"
 #include "scene/camera.h"
 #include "gpu_scene/gpu_scene.h"
+#include "core/worker_pool.h"
 #include "vk/descriptors.h"
 #include "vk/pipeline_cache.h"
 
@@ -110,12 +111,29 @@ public:
     DrawTarget addTransmissive(graph::RenderGraph& graph, const DrawTarget& opaque, graph::TextureId background,
                                const DrawList& list, const FrameInputs& frame, DrawStats* recorded = nullptr);
 
+    // Queues the pipelines of every material key of the scene for a frame of `frame`'s bits on the
+    // pass's worker threads (priority Soon), so that the frame's draws find them built or building
+    // instead of compiling them one after the other (the draw that needs one first runs it itself
+    // if no worker has started it). Cheap when `frame` is the one last prepared; returns whether it
+    // was not (something may have been queued). Precondition: a scene is set.
+    bool prepare(const FrameVariant& frame);
+    // Queues, in the background, the same for every debug view (None included) of `frame`'s other
+    // bits, so that a switch of the view finds them built. Cheap when done already for `frame`.
+    void prepareDebugViews(const FrameVariant& frame);
+    // Waits for every queued pipeline build (benchmarks: a measurement that must not include them).
+    void finishBuilds() { mPipelines.finish(); }
+    // Forward variants built so far, and queued builds not yet drawn with (of which finished).
+    struct BuildCounts {
+        size_t built = 0, queued = 0, queuedFinished = 0;
+    };
+    BuildCounts buildCounts() const { return {mPipelines.size(), mPipelines.pending(), mPipelines.pendingFinished()}; }
+
     // What the frame's forward draws use and leave out, one line each, for `--explain`.
     std::vector<std::string> describe(const DrawList& list, const FrameInputs& frame, const DrawSelection& selection) const;
 
     // The reflection of the forward shaders without layers (every variant shares sets 0 and 2 and
     // the push constants; the layered program adds to set 1).
-    const shader::ShaderReflection& reflection() { return pipeline(ForwardVariant{}).program().reflection(); }
+    const shader::ShaderReflection& reflection() { return coreProgram().reflection(); }
     // The reflection of the layered program (its MaterialLayers buffer), when the current scene
     // has a material with a layer; null otherwise.
     const shader::ShaderReflection* layeredReflection();
@@ -137,9 +155,17 @@ private:
                            const FrameInputs& frame, DrawStats* recorded,
                            const std::function<DrawTarget(graph::PassBuilder&)>& targets);
     const vk::Pipeline& pipeline(const ForwardVariant& variant);
+    // The core program (shader modules, layouts, reflection: no pipeline), whose set layouts every
+    // core variant shares and whose sets 0 and 2 every layered variant shares.
+    const vk::Program& coreProgram();
+    // Queues the pipeline of every material key for `frame` (see prepare).
+    void queue(const FrameVariant& frame, WorkerPool::Priority priority);
 
     vk::Context& mContext;
+    WorkerPool mWorkers;  // before mPipelines: outlives the builds it runs
     vk::PipelineCache<ForwardVariant> mPipelines;
+    std::optional<FrameVariant> mPrepared, mPreparedViews;  // what prepare/prepareDebugViews last queued for
+    std::optional<vk::Program> mCoreProgram;
     ForwardIblSet mIblSet;
     ForwardLayerSet mLayerSet;
     const scene::GpuScene* mScene = nullptr;

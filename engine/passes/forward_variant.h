@@ -26,6 +26,7 @@ struct FrameVariant {
     bool specularAa = false;
     uint32_t samples = 1;           // of the draw targets
     bool alphaToCoverage = false;   // masked draws use alpha to coverage (samples > 1 and the device has alphaToOne)
+    bool operator==(const FrameVariant&) const = default;
 };
 
 // One pipeline of the forward program: the specialization constants and the pipeline state.

@@ -4,6 +4,7 @@
 #include "core/log.h"
 #include "shared/tonemap.h"
 #include "vk/context.h"
+#include "vk/pipeline_cache_file.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -157,6 +158,11 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
                                                                           .deformed = deformed ? &*deformed : nullptr,
                                                                           .layerMaps = layerMaps ? &*layerMaps : nullptr,
                                                                           .parameters = &mParameters});
+    // The variants the scene needs now, compiled on the workers and here while the draws ask for
+    // them (not one after the other at each first draw); in the viewer, the debug views' after —
+    // from the next frame with the same bits on, so that they do not slow the frame that compiles.
+    const bool changed = settings.precompile != passes::Precompile::Off && mForward.prepare(inputs.variant);
+    if (settings.precompile == passes::Precompile::DebugViews && !changed) mForward.prepareDebugViews(inputs.variant);
     mStats = list.stats;
     passes::DrawTarget drawn = mForward.addOpaque(graph, {settings.width, settings.height, msaa.samples}, list, inputs, &mStats);
     const bool skybox = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;
@@ -192,6 +198,11 @@ void FrameBuilder::addNotes(Frame& frame, const RenderSettings& settings, const 
                          ? "; alpha-masked materials use alpha to coverage"
                          : "; alpha-masked materials keep the alpha test (the device has no alphaToOne)"));
     notes.insert(notes.end(), std::make_move_iterator(forward.begin()), std::make_move_iterator(forward.end()));
+    const passes::ForwardPass::BuildCounts builds = mForward.buildCounts();
+    notes.push_back("forward pipelines: " + std::to_string(builds.built) + " built, " + std::to_string(builds.queued) +
+                    " queued ahead of use (" + std::to_string(builds.queuedFinished) + " of them done) (--precompile " +
+                    passes::precompileName(settings.precompile) + ")");
+    notes.push_back("pipeline cache: " + mContext.pipelineCacheFile().status());
     for (const std::string& line : mScene.iblMaps().explanation()) notes.push_back(line);
     if (scheduled.sheenLut)
         notes.emplace_back(mScene.sheenLut().computed() ? "sheen LUT: imported (computed by an earlier frame)"

@@ -49,6 +49,8 @@ public:
     // The sample count `requested` (RenderSettings::msaa) gives on this device, and why.
     vk::MsaaChoice msaa(std::optional<uint32_t> requested) const;
     passes::ForwardPass& forward() { return mForward; }
+    // Waits for the pipelines queued ahead of use (RenderSettings::precompile) to be built.
+    void finishPipelineBuilds() { mForward.finishBuilds(); }
 
     // The view `camera` selects for `scene` at `aspect` (width / height). With an animated `pose`,
     // glTF cameras are where the pose puts them and framing contains the whole animation.

@@ -9,6 +9,7 @@
 #include "passes/debug_view.h"
 #include "passes/draw_selection.h"
 #include "passes/forward_variant.h"
+#include "passes/precompile.h"
 #include "passes/tonemap_pass.h"
 #include "pose/scene_pose.h"
 #include "scene/camera.h"
@@ -63,6 +64,8 @@ struct RenderSettings {
     // MSAA sample count of the draw targets (--msaa: 1, 2, 4 or 8); nullopt: the device default
     // (vk::chooseMsaa). Clamped to what the device supports, with a warning.
     std::optional<uint32_t> msaa;
+    // When the forward pass compiles the variants the frame needs (--precompile; docs/device-layer.md).
+    passes::Precompile precompile = passes::Precompile::Frame;
     // Image-based lighting: the environment (null: none; read during the call only, hashed when the
     // pointer or the quality changes), what to precompute and how to look it up.
     const scene::Environment* environment = nullptr;

@@ -83,6 +83,9 @@ public:
     vk::MsaaChoice msaa(std::optional<uint32_t> requested) const;
     // The last IBL precompute that completed.
     const PrecomputeTime& lastPrecompute() const { return mLastPrecompute; }
+    // Waits for the pipelines queued ahead of use (RenderSettings::precompile) to be built
+    // (benchmarks: so that a measurement leaves them out).
+    void finishPipelineBuilds() { mBuilder.finishPipelineBuilds(); }
     // The GPU time of the pass named `pass` in that frame; negative if it did not run there.
     double completedPassMs(std::string_view pass) const { return mRunner.completedPassMs(pass); }
     // Waits for every frame in flight.

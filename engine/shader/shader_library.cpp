@@ -3,6 +3,8 @@
 #include "shader/builtin_shaders.h"
 
 #include <map>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 
 namespace candela::shader {
@@ -10,39 +12,52 @@ namespace candela::shader {
 namespace {
 
 struct Replacement {
-    std::vector<uint32_t> spirv;  // empty: the built-in one
+    const std::vector<uint32_t>* spirv = nullptr;  // null: the built-in one
     uint64_t generation = 0;
 };
 
-std::map<std::string, Replacement, std::less<>>& replacements() {
-    static std::map<std::string, Replacement, std::less<>> table;
+// Every replacement's SPIR-V, kept to the end (a hot-reload session makes a few KiB per edit), so
+// that spans handed out never dangle.
+struct Library {
+    std::mutex mutex;
+    std::map<std::string, Replacement, std::less<>> replacements;
+    std::vector<std::unique_ptr<const std::vector<uint32_t>>> kept;
+};
+
+Library& library() {
+    static Library table;
     return table;
 }
 
 }  // namespace
 
-std::span<const uint32_t> shaderSpirv(std::string_view name) {
-    const auto it = replacements().find(name);
-    if (it != replacements().end() && !it->second.spirv.empty()) return it->second.spirv;
-    return builtinShader(name);
+ShaderVersion currentShader(std::string_view name) {
+    Library& lib = library();
+    std::lock_guard lock(lib.mutex);
+    const auto it = lib.replacements.find(name);
+    if (it == lib.replacements.end()) return {builtinShader(name), 0};
+    return {it->second.spirv ? std::span<const uint32_t>(*it->second.spirv) : builtinShader(name), it->second.generation};
 }
 
-uint64_t shaderGeneration(std::string_view name) {
-    const auto it = replacements().find(name);
-    return it == replacements().end() ? 0 : it->second.generation;
-}
+std::span<const uint32_t> shaderSpirv(std::string_view name) { return currentShader(name).spirv; }
+
+uint64_t shaderGeneration(std::string_view name) { return currentShader(name).generation; }
 
 void replaceShader(std::string_view name, std::vector<uint32_t> spirv) {
     if (builtinShader(name).empty()) throw std::invalid_argument("no built-in shader named '" + std::string(name) + "'");
-    Replacement& r = replacements()[std::string(name)];
-    r.spirv = std::move(spirv);
+    Library& lib = library();
+    std::lock_guard lock(lib.mutex);
+    Replacement& r = lib.replacements[std::string(name)];
+    r.spirv = spirv.empty() ? nullptr : lib.kept.emplace_back(std::make_unique<const std::vector<uint32_t>>(std::move(spirv))).get();
     ++r.generation;
 }
 
 void restoreBuiltinShaders() {
-    for (auto& [name, r] : replacements())
-        if (!r.spirv.empty()) {
-            r.spirv.clear();
+    Library& lib = library();
+    std::lock_guard lock(lib.mutex);
+    for (auto& [name, r] : lib.replacements)
+        if (r.spirv) {
+            r.spirv = nullptr;
             ++r.generation;
         }
 }

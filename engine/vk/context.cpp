@@ -4,6 +4,7 @@
 #include "vk/check.h"
 #include "vk/device_choices.h"
 #include "vk/device_select.h"
+#include "vk/pipeline_cache_file.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -114,6 +115,9 @@ Context::Context(const ContextDesc& desc)
         mAllocator = std::make_unique<MemoryAllocator>(mPhysicalDevice, mDevice.handle, mCaps.memoryTypeMask);
         mAllocator->setBudget(desc.deviceMemoryBudget);
         mAllocator->useHeapBudgets(mCaps.extensions.memoryBudget);
+    });
+    step("pipeline cache", [&] {
+        mPipelineCache = std::make_unique<PipelineCacheFile>(mDevice.handle, mProperties, desc.pipelineCacheFolder);
     });
 }
 
@@ -329,24 +333,39 @@ std::vector<ValidationMessage> Context::validationMessages() const {
     return mValidationMessages;
 }
 
-void Context::defer(std::function<void()> destroy) { mDeferred.emplace_back(mFrame, std::move(destroy)); }
+VkPipelineCache Context::pipelineCache() const { return mPipelineCache ? mPipelineCache->handle() : VK_NULL_HANDLE; }
+
+void Context::defer(std::function<void()> destroy) {
+    std::lock_guard lock(mDeferredMutex);
+    mDeferred.emplace_back(mFrame.load(), std::move(destroy));
+}
 
 void Context::collect(uint64_t completedFrame) {
     // Destructors may defer more work; swap out first so new entries are kept for later.
-    std::vector<std::pair<uint64_t, std::function<void()>>> pending;
-    pending.swap(mDeferred);
+    std::vector<std::pair<uint64_t, std::function<void()>>> pending, later;
+    {
+        std::lock_guard lock(mDeferredMutex);
+        pending.swap(mDeferred);
+    }
     for (auto& [frame, destroy] : pending) {
         if (frame <= completedFrame)
             destroy();
         else
-            mDeferred.emplace_back(frame, std::move(destroy));
+            later.emplace_back(frame, std::move(destroy));
     }
+    // The ones not due yet stay ahead of those deferred meanwhile, in the order they came.
+    std::lock_guard lock(mDeferredMutex);
+    mDeferred.insert(mDeferred.begin(), std::make_move_iterator(later.begin()), std::make_move_iterator(later.end()));
 }
 
 void Context::waitIdleAndCollect() {
     if (!mDevice.handle) return;
     VK_CHECK(vkDeviceWaitIdle(mDevice.handle));
-    while (!mDeferred.empty()) collect(~0ull);
+    const auto anyDeferred = [&] {
+        std::lock_guard lock(mDeferredMutex);
+        return !mDeferred.empty();
+    };
+    while (anyDeferred()) collect(~0ull);
     // A quiet point (scene or environment change, shutdown): give empty memory blocks back.
     if (mAllocator) mAllocator->trim();
 }

@@ -15,6 +15,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -23,6 +24,8 @@
 #include <vector>
 
 namespace candela::vk {
+
+class PipelineCacheFile;
 
 struct ValidationMessage {
     VkDebugUtilsMessageSeverityFlagBitsEXT severity;
@@ -56,6 +59,9 @@ struct ContextDesc {
     std::function<void(const ValidationMessage&)> onValidationMessage;
     // Print validation messages to stderr.
     bool printValidationMessages = true;
+    // The folder of the on-disk pipeline cache (vk/pipeline_cache_file.h; the front end's default
+    // is the user's cache folder, --pipeline-cache); empty: a cache in memory only, no file.
+    std::filesystem::path pipelineCacheFolder;
 };
 
 struct QueueInfo {
@@ -107,16 +113,22 @@ public:
     // The MSAA sample counts the device can render colour and depth attachments with (bits of 1, 2, 4, 8, ...).
     VkSampleCountFlags attachmentSampleCounts() const { return mCaps.attachmentSampleCounts(); }
 
+    // The pipeline cache every pipeline is created with (internally synchronized: any thread), and
+    // its file (written back when the context is destroyed).
+    VkPipelineCache pipelineCache() const;
+    const PipelineCacheFile& pipelineCacheFile() const { return *mPipelineCache; }
+
     // Validation messages (warnings and errors) seen since creation.
     uint32_t validationMessageCount() const { return mValidationCount.load(); }
     std::vector<ValidationMessage> validationMessages() const;
 
     // Deferred destruction: `destroy` runs once the GPU has finished every frame submitted up to
     // now (see collect). Resource destructors use this, so a resource may be dropped while a
-    // frame in flight still uses it.
+    // frame in flight still uses it. Any thread (a pipeline built on a worker that fails drops
+    // its parts there); collect and waitIdleAndCollect run on the thread that submits.
     void defer(std::function<void()> destroy);
     // Number of the frame being recorded; incremented by FrameRing at each submit.
-    uint64_t currentFrame() const { return mFrame; }
+    uint64_t currentFrame() const { return mFrame.load(); }
     void advanceFrame() { ++mFrame; }
     // Runs deferred destructions queued at or before frame `completedFrame`.
     void collect(uint64_t completedFrame);
@@ -180,8 +192,10 @@ private:
     PFN_vkCmdBeginDebugUtilsLabelEXT mCmdBeginLabel = nullptr;
     PFN_vkCmdEndDebugUtilsLabelEXT mCmdEndLabel = nullptr;
     std::unique_ptr<MemoryAllocator> mAllocator;
+    std::unique_ptr<PipelineCacheFile> mPipelineCache;  // written back and destroyed before the device
     std::atomic<int64_t> mLiveObjects{0};
-    uint64_t mFrame = 0;
+    std::atomic<uint64_t> mFrame{0};
+    std::mutex mDeferredMutex;  // guards mDeferred
     std::vector<std::pair<uint64_t, std::function<void()>>> mDeferred;
 };
 

@@ -15,9 +15,12 @@ Program::Program(Context& context, const std::vector<std::string_view>& shaderNa
     std::vector<shader::ShaderReflection> reflections, specializedReflections;
     for (std::string_view name : shaderNames) {
         mName += (mName.empty() ? "" : "+") + std::string(name);
-        const std::span<const uint32_t> declared = shader::shaderSpirv(name);
+        // The SPIR-V and its generation together: a replacement on another thread meanwhile is
+        // either wholly in this program or makes it stale.
+        const shader::ShaderVersion version = shader::currentShader(name);
+        const std::span<const uint32_t> declared = version.spirv;
         if (declared.empty()) throw std::runtime_error("no built-in shader named '" + std::string(name) + "'");
-        mSources.emplace_back(std::string(name), shader::shaderGeneration(name));
+        mSources.emplace_back(std::string(name), version.generation);
         reflections.push_back(shader::reflectSpirv(declared, std::string(name)));
         std::vector<uint32_t> specialized;
         if (!specialization.frozen.empty()) {
@@ -120,7 +123,7 @@ Pipeline Pipeline::compute(Context& context, std::string_view shaderName, const 
                   .pSpecializationInfo = constants.get()},
         .layout = out.mProgram.layout()};
     VkPipeline pipeline = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+    VK_CHECK(vkCreateComputePipelines(context.device(), context.pipelineCache(), 1, &info, nullptr, &pipeline));
     out.mPipeline = PipelineHandle(context, pipeline);
     return out;
 }
@@ -204,7 +207,7 @@ Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std
                                             .pDynamicState = &dynamic,
                                             .layout = out.mProgram.layout()};
     VkPipeline pipeline = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateGraphicsPipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+    VK_CHECK(vkCreateGraphicsPipelines(context.device(), context.pipelineCache(), 1, &info, nullptr, &pipeline));
     out.mPipeline = PipelineHandle(context, pipeline);
     return out;
 }

@@ -1,7 +1,9 @@
 #pragma once
 // Program: shader modules plus the descriptor-set layouts and pipeline layout derived from their
 // SPIR-V reflection. Pipeline: a compute or graphics pipeline built from a Program (dynamic
-// rendering, dynamic viewport and scissor). Both move-only; destruction is deferred.
+// rendering, dynamic viewport and scissor), through the context's pipeline cache. Both move-only;
+// destruction is deferred. Any thread may build them (a worker compiling ahead of the first draw:
+// vk/pipeline_cache.h); using and refreshing one stays with the thread recording frames.
 
 #include "shader/reflection.h"
 #include "shader/specialize.h"

@@ -1,8 +1,12 @@
 #pragma once
 // Runs the real `candela` executable (CANDELA_EXECUTABLE) for the CLI tests.
 
+#include "temp_dir.h"
+
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <cstdlib>
 
 #include <array>
 #include <cstdio>
@@ -12,6 +16,14 @@
 #include <string>
 
 namespace candela::test {
+
+// The executable's cache folder (XDG_CACHE_HOME, where its pipeline cache goes by default) is a
+// folder of this test process, removed at exit: the tests never write into the user's cache.
+inline const bool kPrivateCacheHome = [] {
+    static const TempDir home("candela_cli_cache_home");
+    ::setenv("XDG_CACHE_HOME", home.path().c_str(), 1);
+    return true;
+}();
 
 struct Result {
     int exitCode = -1;

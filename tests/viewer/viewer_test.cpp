@@ -58,6 +58,9 @@ protected:
         content.settings.tonemap.background = environment ? std::nullopt : std::optional(glm::vec3(0.02f));
         content.settings.iblQuality.cubeSize = 64;  // keeps the precompute short; the maps are not under test
         content.settings.iblQuality.prefilterSamples = 8;
+        // As `candela view` does: every debug view's variants built in the background, while the
+        // tests draw, edit parameters, reload shaders and replace the scene.
+        content.settings.precompile = passes::Precompile::DebugViews;
         mViewer = std::make_unique<ui::Viewer>(
             ui::ViewerDesc{.context = {.validation = true},
                            .window = {.width = 480, .height = 300},

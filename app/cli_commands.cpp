@@ -1,0 +1,54 @@
+// The command table (cli_flags.h): every command, its usage and what it does.
+#include "cli_flags.h"
+
+namespace candela::app {
+
+using Kind = Command::Kind;
+
+const std::vector<CommandInfo>& commandTable() {
+    static const std::vector<CommandInfo> commands = {
+        {Kind::Render, "render", "[flags]", "render a frame (or an image sequence) headless and write it to a file", ""},
+        {Kind::View, "view", "[SCENE] [flags]",
+         "open the interactive viewer (window, orbit camera, ImGui panels); SCENE: a .gltf/.glb file, as --scene",
+         "mouse and keys: right-drag rotate, middle-drag pan, wheel zoom, F frame the scene, R reset the camera, space "
+         "pause/play the animation, P or F12 screenshot (candela-screenshot.png), Esc quit; drop a .gltf/.glb to open "
+         "it, an .hdr/.exr to light the scene with it"},
+        {Kind::Bench, "bench", "[flags]",
+         "render N frames and report frame and pass times, also as ratios to a calibration pass run in the same process",
+         ""},
+        {Kind::IblReport, "ibl-report", "[flags]",
+         "sweep the IBL quality settings: precompute time against the error of the maps and of the final image, as "
+         "CSV, markdown and log-log plots",
+         ""},
+        {Kind::ScaleReport, "scale-report", "[flags]",
+         "frame time against scene triangles for N x N sphere grids, levels of detail on and off, as CSV, markdown and "
+         "a log-log plot",
+         ""},
+        {Kind::QualityReport, "quality-report", "[flags]",
+         "image error (against a 16-sample reference, and frame to frame over a slow orbit) against frame time for "
+         "MSAA x specular AA x LOD error",
+         ""},
+        {Kind::Soak, "soak", "[flags]",
+         "render many frames headless, switching the environment, and report host and device memory over time (leaks "
+         "show as growth after warm-up)",
+         ""},
+        {Kind::Info, "info", "[flags]", "list the Vulkan devices, the one chosen and why, and the features enabled", ""},
+    };
+    return commands;
+}
+
+const CommandInfo* findCommand(std::string_view name) {
+    for (const CommandInfo& command : commandTable())
+        if (command.name == name) return &command;
+    return nullptr;
+}
+
+std::string commandList(CommandSet set, bool allBut) {
+    std::vector<std::string> in, out;
+    for (const CommandInfo& command : commandTable()) (set.contains(command.kind) ? in : out).push_back(command.name);
+    if (out.empty()) return "every command";
+    if (allBut && in.size() > 4) return "every command but " + joinWords(out, "and");
+    return joinWords(in, "and");
+}
+
+}  // namespace candela::app
