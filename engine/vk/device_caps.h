@@ -26,6 +26,16 @@ inline constexpr VkFormat kCandelaFormats[] = {
     VK_FORMAT_X8_D24_UNORM_PACK32, VK_FORMAT_D16_UNORM,
 };
 
+// Format-feature shorthands for the tables of the profiles and the choices.
+namespace format_feature {
+inline constexpr VkFormatFeatureFlags2 kSampled = VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT;
+inline constexpr VkFormatFeatureFlags2 kLinear = VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+inline constexpr VkFormatFeatureFlags2 kStorage = VK_FORMAT_FEATURE_2_STORAGE_IMAGE_BIT;
+inline constexpr VkFormatFeatureFlags2 kColor = VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT;
+inline constexpr VkFormatFeatureFlags2 kBlend = VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BLEND_BIT;
+inline constexpr VkFormatFeatureFlags2 kDepth = VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT;
+}  // namespace format_feature
+
 // The limits Candela reads (a subset of VkPhysicalDeviceLimits and the Vulkan 1.1–1.3 properties).
 struct DeviceLimits {
     uint32_t maxPerStageDescriptorSamplers = 0;

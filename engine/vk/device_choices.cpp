@@ -7,12 +7,7 @@
 namespace candela::vk {
 namespace {
 
-constexpr VkFormatFeatureFlags2 kSampled = VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT;
-constexpr VkFormatFeatureFlags2 kLinear = VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
-constexpr VkFormatFeatureFlags2 kStorage = VK_FORMAT_FEATURE_2_STORAGE_IMAGE_BIT;
-constexpr VkFormatFeatureFlags2 kColor = VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT;
-constexpr VkFormatFeatureFlags2 kBlend = VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BLEND_BIT;
-constexpr VkFormatFeatureFlags2 kDepth = VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT;
+using namespace format_feature;
 
 // A computed map: written as a storage image, sampled with linear filtering.
 constexpr VkFormatFeatureFlags2 kComputedMap = kSampled | kLinear | kStorage;

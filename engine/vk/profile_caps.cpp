@@ -10,12 +10,9 @@ namespace candela::vk {
 namespace {
 
 // Format feature shorthands for the tables below.
-constexpr VkFormatFeatureFlags2 S = VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT;
-constexpr VkFormatFeatureFlags2 L = VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
-constexpr VkFormatFeatureFlags2 ST = VK_FORMAT_FEATURE_2_STORAGE_IMAGE_BIT;
-constexpr VkFormatFeatureFlags2 C = VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT;
-constexpr VkFormatFeatureFlags2 B = VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BLEND_BIT;
-constexpr VkFormatFeatureFlags2 D = VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT;
+constexpr VkFormatFeatureFlags2 S = format_feature::kSampled, L = format_feature::kLinear,
+                                ST = format_feature::kStorage, C = format_feature::kColor, B = format_feature::kBlend,
+                                D = format_feature::kDepth;
 // Blit and transfer: every format with any feature supports transfer (Vulkan 1.1).
 constexpr VkFormatFeatureFlags2 X = VK_FORMAT_FEATURE_2_BLIT_SRC_BIT | VK_FORMAT_FEATURE_2_BLIT_DST_BIT |
                                     VK_FORMAT_FEATURE_2_TRANSFER_SRC_BIT | VK_FORMAT_FEATURE_2_TRANSFER_DST_BIT;
