@@ -125,23 +125,24 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene, const MaterialKeys& 
     // layered program of its layers (specialized to them where the device's limits need it), read
     // from the pipeline of those layers.
     const vk::Program& core = coreProgram();
+    const size_t materials = gpuScene.scene().materials.size();
+    std::vector<const vk::Program*> programs(materials, &core);  // each material set's layout
+    for (uint32_t material = 0; material < materials; ++material)
+        if (const uint32_t layers = keys[material].layers) programs[material] = &pipeline(ForwardVariant{.layers = layers}).program();
     // One pool for the scene's sets: the scene set and a material set per material.
     vk::DescriptorCounts total = vk::DescriptorCounts::ofSet(core, 0);
-    for (uint32_t material = 0; material < gpuScene.scene().materials.size(); ++material) {
-        const uint32_t layers = keys[material].layers;
-        total += vk::DescriptorCounts::ofSet(layers ? pipeline(ForwardVariant{.layers = layers}).program() : core, 1);
-    }
+    for (const vk::Program* program : programs) total += vk::DescriptorCounts::ofSet(*program, 1);
     mSets->reserve(total);
     mSceneSet = vk::DescriptorWriter(core, 0)
                     .buffer(ForwardBlock<shading::LightData>::name, gpuScene.lightBuffer())
                     .buffer(ForwardBlock<shading::DrawData>::name, gpuScene.drawBuffer())
                     .buffer(ForwardBlock<shading::MaterialData>::name, gpuScene.materialBuffer())
                     .commit(mContext, *mSets);
-    for (uint32_t material = 0; material < gpuScene.scene().materials.size(); ++material) {
+    for (uint32_t material = 0; material < materials; ++material) {
         // A layered material's set follows the layered program's layout: its core textures, then
         // every material's layer parameters and its own layer textures.
         const uint32_t layers = keys[material].layers;
-        const vk::Program& program = layers ? pipeline(ForwardVariant{.layers = layers}).program() : core;
+        const vk::Program& program = *programs[material];
         vk::DescriptorWriter writer(program, 1);
         for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
             const scene::GpuScene::Binding b = gpuScene.texture(material, slot);

@@ -43,18 +43,10 @@ std::vector<bool> presentFamilies(VkInstance instance, VkPhysicalDevice device, 
     return present;
 }
 
-bool hasDeviceExtension(VkPhysicalDevice device, const char* name) {
-    uint32_t count = 0;
-    VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr));
-    std::vector<VkExtensionProperties> extensions(count);
-    VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data()));
-    return std::any_of(extensions.begin(), extensions.end(),
-                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
-}
-
-// Why a device cannot run Candela seen through `profile`, or "" if it can.
+// Why `device`, whose capabilities seen through the device profile are `caps`, cannot run
+// Candela, or "" if it can.
 std::string unsuitableReason(VkInstance instance, VkPhysicalDevice device, const PresentSupportFn& presentSupport,
-                             DeviceProfile profile) {
+                             const DeviceCaps& caps) {
     VkPhysicalDeviceProperties properties;
     vkGetPhysicalDeviceProperties(device, &properties);
     if (properties.apiVersion < VK_API_VERSION_1_3) return "Vulkan " + versionString(properties.apiVersion) + " < 1.3";
@@ -68,9 +60,8 @@ std::string unsuitableReason(VkInstance instance, VkPhysicalDevice device, const
     if (!features13.synchronization2) return "no synchronization2";
     if (!features13.maintenance4) return "no maintenance4";
     if (!features13.shaderDemoteToHelperInvocation) return "no shaderDemoteToHelperInvocation";
-    if (presentSupport && !hasDeviceExtension(device, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) return "no VK_KHR_swapchain";
-    if (std::string missing = missingCapability(narrowCaps(queryDeviceCaps(device), profile)); !missing.empty())
-        return missing;
+    if (presentSupport && !caps.extensions.swapchain) return "no VK_KHR_swapchain";
+    if (std::string missing = missingCapability(caps); !missing.empty()) return missing;
     try {
         chooseQueueFamilies(queueFamilies(device), presentFamilies(instance, device, presentSupport));
     } catch (const std::exception& e) {
@@ -212,15 +203,18 @@ void Context::pickPhysicalDevice(const ContextDesc& desc) {
     std::vector<VkPhysicalDevice> devices(count);
     VK_CHECK(vkEnumeratePhysicalDevices(mInstance.handle, &count, devices.data()));
     std::vector<DeviceCandidate> candidates;
+    std::vector<DeviceCaps> caps;  // each device's, seen through the profile
     for (VkPhysicalDevice device : devices) {
         VkPhysicalDeviceProperties properties;
         vkGetPhysicalDeviceProperties(device, &properties);
-        candidates.push_back({properties.deviceName, properties.deviceType, properties.apiVersion, unsuitableReason(mInstance.handle, device, desc.presentSupport, mProfile)});
+        caps.push_back(narrowCaps(queryDeviceCaps(device), mProfile));
+        candidates.push_back({properties.deviceName, properties.deviceType, properties.apiVersion,
+                              unsuitableReason(mInstance.handle, device, desc.presentSupport, caps.back())});
     }
     const DeviceChoice choice = chooseDevice(candidates, desc.deviceSelector);
     mPhysicalDevice = devices[choice.index];
     vkGetPhysicalDeviceProperties(mPhysicalDevice, &mProperties);
-    mCaps = narrowCaps(queryDeviceCaps(mPhysicalDevice), mProfile);
+    mCaps = std::move(caps[choice.index]);
     mChoices = chooseForDevice(mCaps);
     mReport.profile = deviceProfileName(mProfile);
     mReport.name = mProperties.deviceName;

@@ -66,6 +66,7 @@ DeviceCaps queryDeviceCaps(VkPhysicalDevice device) {
     };
     caps.extensions.memoryBudget = has(VK_EXT_MEMORY_BUDGET_EXTENSION_NAME);
     caps.extensions.portabilitySubset = has("VK_KHR_portability_subset");
+    caps.extensions.swapchain = has(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
 
     vkGetPhysicalDeviceMemoryProperties(device, &caps.memory);
     caps.memoryTypeMask = caps.memory.memoryTypeCount >= 32 ? ~0u : (1u << caps.memory.memoryTypeCount) - 1u;

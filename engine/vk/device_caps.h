@@ -74,6 +74,7 @@ struct DeviceFeatures {
 struct DeviceExtensions {
     bool memoryBudget = false;       // VK_EXT_memory_budget
     bool portabilitySubset = false;  // VK_KHR_portability_subset (must be enabled when present)
+    bool swapchain = false;          // VK_KHR_swapchain (needed to present; profiles leave it as it is)
 };
 
 struct DeviceCaps {
