@@ -9,6 +9,7 @@
 #include "passes/debug_view.h"
 #include "passes/draw_selection.h"
 #include "passes/precompile.h"
+#include "passes/shading_path.h"
 #include "passes/tonemap_operator.h"
 #include "passes/shading_model.h"
 #include "ui/viewer_panels.h"
@@ -83,6 +84,7 @@ struct RenderOptions {
     bool specularAa = false;      // --specular-aa on|off
     std::optional<uint32_t> msaa;  // --msaa 1|2|4|8 (unset: the device default)
     passes::Precompile precompile{};  // --precompile off|frame|debug-views
+    passes::ShadingPath shadingPath{};  // --shading-path auto|forward|visibility
     bool explain = false;          // --explain (render, bench)
     // --frames N: render: frames of an image sequence; bench: frames measured; view: frames to
     // render before exiting (0: until the window is closed).

@@ -313,6 +313,15 @@ std::vector<Flag> makeFlagTable() {
          .choices = namesOf(passes::kPrecompileNames),
          .set = [](Command& c, Str flag, Str v) { c.render.precompile = parseChoice(flag, passes::kPrecompileNames, v); },
          .example = "off"},
+        {.name = "--shading-path",
+         .uses = {{kRenderViewBench, "{choices}",
+                   "how opaque and masked surfaces are shaded: as their triangles are rasterized (forward), or once per "
+                   "covered pixel from a visibility buffer, in compute (visibility); auto: the device's default "
+                   "(candela info says which and why)",
+                   passes::shadingPathName(passes::ShadingPath::Auto)}},
+         .choices = namesOf(passes::kShadingPathNames),
+         .set = [](Command& c, Str flag, Str v) { c.render.shadingPath = parseChoice(flag, passes::kShadingPathNames, v); },
+         .example = "visibility"},
         {.name = "--specular-aa",
          .uses = {{kRenderViewBench, "{choices}",
                    "widen the roughness by the normal's change across a pixel and by what a normal map's mips average "

@@ -85,6 +85,7 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
     settings.shadingOptions.specularAntiAliasing = options.specularAa;
     settings.msaa = options.msaa;
     settings.precompile = options.precompile;
+    settings.shadingPath = options.shadingPath;
     if (options.camera) settings.camera.gltfCamera = *options.camera;
     if (options.cameraOrbit) settings.camera.orbit = glm::vec3((*options.cameraOrbit)[0], (*options.cameraOrbit)[1], (*options.cameraOrbit)[2]);
     if (options.target) settings.camera.target = glm::vec3((*options.target)[0], (*options.target)[1], (*options.target)[2]);

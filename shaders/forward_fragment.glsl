@@ -2,8 +2,8 @@
 // forward_layers.frag.glsl (materials with KHR_materials_* layers: CANDELA_MATERIAL_LAYERS defined,
 // the layer code and its descriptors compiled in) and by forward_reference.frag.glsl (the ground
 // truth of `candela ibl-report`: CANDELA_IBL_REFERENCE defined). Its main gathers the fragment's
-// inputs, evaluates the material (forward/material_eval.glsl: inputs → Surface), lights it
-// (forward/lighting.glsl: Surface → radiance per lobe) and combines the lobes and layers. Variants
+// inputs, applies the alpha test or alpha to coverage, and shades (forward/shade.glsl, which the
+// visibility path's compute shading calls too: the material evaluated, lit, its lobes combined). Variants
 // are specialization constants (forward/resources.glsl), so what a draw does not use costs
 // nothing: no normal map → no TBN work; no lights → no light loop; unlit → no BRDF; no environment
 // → no image-based lighting; in the layered program, only the layers the material uses.
@@ -22,14 +22,10 @@ layout(location = 4 + CANDELA_TEX_COUNT) in vec4 inLayerUv[(CANDELA_LAYER_TEX_CO
 layout(location = 0) out vec4 outColor;
 
 // Material textures are read with the fragment's own derivatives (see forward/material_eval.glsl).
-vec4 materialTexture(sampler2D t, vec2 uv) { return texture(t, uv); }
+#define CANDELA_CORE_TEXTURE(inputs, field, slot) texture(field##Texture, (inputs).uv[slot])
+#define CANDELA_LAYER_TEXTURE(inputs, field, slot) texture(field##Texture, (inputs).layerUv[slot])
 
-#include "forward/debug_views.glsl"
-#include "forward/lighting.glsl"
-#include "forward/material_eval.glsl"
-#ifdef CANDELA_IBL_REFERENCE
-#include "forward/reference_ibl.glsl"
-#endif
+#include "forward/shade.glsl"
 
 // What material evaluation reads of this fragment: its interpolants, the face normal from the
 // position's derivatives and, with specular AA, the normal's change across the pixel.
@@ -73,67 +69,6 @@ void main() {
         maskCoverage = clamp((baseColor.a - alphaCutoff) / max(fwidth(baseColor.a), 1e-4f) + 0.5f, 0.0f, 1.0f);
         if (maskCoverage <= 0.0f) demote;
     } else if (kAlphaMask && baseColor.a < alphaCutoff) demote;
-    float alpha = materialOf(inputs).alphaMode == float(CANDELA_ALPHA_BLEND) ? baseColor.a : 1.0f;
-
-    if (kUnlit && kDebugView == CANDELA_DEBUG_NONE) {
-        outColor = vec4(baseColor.rgb * alpha, alpha * maskCoverage);
-        return;
-    }
-
-    Surface s = evaluateMaterial(inputs, baseColor.rgb);
-    SurfaceLight lit = noLight();
-    if (kLights && !kUnlit) {
-        for (uint i = 0u; i < push.counts.x; ++i) lit = plus(lit, lightRadiance(s, lights[i]));
-    }
-#ifdef CANDELA_IBL_REFERENCE
-    vec3 reference = vec3(0.0f);
-    if (kIbl && !kUnlit) reference = referenceImageBasedLight(s, gl_FragCoord.xy);
-#else
-    if (kIbl && !kUnlit) {
-#ifdef CANDELA_MATERIAL_LAYERS
-        lit = plus(lit, underLayers(imageBasedLight(s), s));
-#else
-        lit = plus(lit, imageBasedLight(s));
-#endif
-    }
-#endif
-    vec3 emissive = s.emissive;
-    vec3 throughput = vec3(0.0f);  // the fraction of the light behind that comes through
-#ifdef CANDELA_MATERIAL_LAYERS
-    float backgroundAlpha = 1.0f;
-    // The emission lies beneath the coat too.
-    if (hasLayer(CANDELA_LAYER_CLEARCOAT)) emissive *= s.layers.coat.baseWeight;
-    if (hasLayer(CANDELA_LAYER_TRANSMISSION)) {
-        // The light from behind, beneath the sheen and the coat like the material's own.
-        SurfaceLight behind = noLight();
-        behind.transmission = transmittedThroughput(s);
-        throughput = underLayers(behind, s).transmission;
-        vec4 background = transmittedBackground(s, gl_FragCoord.xy);
-        backgroundAlpha = background.a;
-        lit.transmission += throughput * background.rgb;
-    }
-#endif
-
-    if (kDebugView != CANDELA_DEBUG_NONE) {
-        vec3 value = debugViewValue(s, lit, emissive, throughput);
-        outColor = vec4(min(value, vec3(60000.0f)) * alpha, alpha * maskCoverage);
-        return;
-    }
-
-    vec3 color = lit.diffuse + lit.specular + lit.sheen + lit.coat;
-#ifdef CANDELA_IBL_REFERENCE
-    color += reference;
-#endif
-    color += emissive;
-#ifdef CANDELA_MATERIAL_LAYERS
-    color += lit.transmission;
-    // Where the background behind a transmitting surface is uncovered (a transparent background),
-    // the part of it that comes through stays uncovered: coverage 1 − mean(throughput) · (1 − its alpha).
-    float coverage = alpha * (1.0f - (throughput.r + throughput.g + throughput.b) * (1.0f / 3.0f) * (1.0f - backgroundAlpha));
-#else
-    float coverage = alpha;
-#endif
-    // Radiance can exceed half-float range with extreme lights: keep it finite.
-    color = min(color, vec3(60000.0f));
-    outColor = vec4(color * alpha, coverage * maskCoverage);
+    outColor = shadeSurface(inputs, baseColor, gl_FragCoord.xy);
+    outColor.a *= maskCoverage;
 }

@@ -1,45 +1,4 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Exposure, tone mapping, background compositing and sRGB encoding of the HDR frame.
-// The HDR image's alpha is coverage (geometry writes 1, blended surfaces their alpha, the clear 0);
-// its RGB is premultiplied by coverage.
-#include "shared/tonemap.h"
-
-// Specialization constants: llvmpipe executes both sides of uniform branches, so the operator and
-// the output options are compiled in rather than selected at run time.
-layout(constant_id = 0) const uint kOperator = CANDELA_TONEMAP_PBR_NEUTRAL;
-layout(constant_id = 1) const bool kEncodeSrgb = true;
-layout(constant_id = 2) const bool kDither = false;
-layout(constant_id = 3) const bool kBackground = true;
-
-layout(set = 0, binding = 0) uniform sampler2D hdrImage;
-layout(push_constant) uniform Push {
-    TonemapParams params;
-};
-
-layout(location = 0) out vec4 outColor;
-
-// Triangular dither in [-1, 1) LSB from an integer hash of the pixel.
-float ditherNoise(uvec2 p) {
-    uint h = p.x * 1973u + p.y * 9277u + 89173u;
-    h = (h << 13u) ^ h;
-    h = h * (h * h * 15731u + 789221u) + 1376312589u;
-    float a = float(h & 0xffffu) / 65536.0f;
-    float b = float((h >> 16u) & 0xffffu) / 65536.0f;
-    return a + b - 1.0f;
-}
-
-void main() {
-    vec4 hdr = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0);
-    float coverage = clamp(hdr.a, 0.0f, 1.0f);
-    vec3 radiance = coverage > 0.0f ? hdr.rgb / coverage : vec3(0.0f);
-    vec3 display = applyTonemap(radiance * exp2(params.exposureEv), kOperator);
-    float alpha = coverage;
-    if (kBackground) {
-        display = mix(params.background.rgb, display, coverage);
-        alpha = 1.0f;
-    }
-    if (kEncodeSrgb) display = srgbEncode(display);
-    if (kDither) display += vec3(ditherNoise(uvec2(gl_FragCoord.xy)) / 255.0f);
-    outColor = vec4(display, alpha);
-}
+// The tonemap pass (tonemap/composite.glsl).
+#include "tonemap/composite.glsl"

@@ -59,13 +59,13 @@ LAYERS = {
 ALL = sorted(LAYERS)
 CPU = ["core", "shared", "animation", "scene", "geometry", "pose", "assets", "ibl", "reports", "shader", "graph"]
 ENGINE_UNIT_TESTS = ["device_select_test.cpp", "device_profile_test.cpp", "memory_type_test.cpp", "msaa_choice_test.cpp", "graph_pass_context_test.cpp",
-                     "graph_msaa_test.cpp", "draw_list_test.cpp", "ibl_sample_tables_test.cpp",
+                     "graph_msaa_test.cpp", "draw_list_test.cpp", "visibility_frame_test.cpp", "ibl_sample_tables_test.cpp",
                      "orbit_controls_test.cpp", "ibl_report_table_test.cpp", "forward_shader_test.cpp",
                      "forward_tables_test.cpp", "skin_morph_dispatch_test.cpp", "index_values_test.cpp",
                      "swapchain_choices_test.cpp", "pipeline_cache_file_test.cpp"]
 
 CLI_ENUM_HEADERS = ["passes/debug_view.h", "passes/draw_selection.h", "passes/tonemap_operator.h", "passes/shading_model.h",
-                    "passes/precompile.h", "ui/viewer_panels.h", "vk/device_profile.h"]
+                    "passes/precompile.h", "passes/shading_path.h", "ui/viewer_panels.h", "vk/device_profile.h"]
 
 # ---- Files outside engine/: the first row whose path matches (a file, or a folder ending in /) --
 # (path, folders it may include (and everything below them), single headers it may include besides)

@@ -180,10 +180,11 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     : mScene(&scene), mContext(&context) {
     checkIndexValues(scene, context.caps());
     vk::Uploader uploader(context);
-    const bool deformable = !scene.deformations.empty();
+    // Vertices and indices are read as storage buffers too: by the skin_morph pass and by the
+    // visibility path's compute shading, which fetches the triangles itself.
     mVertices = uploadedBuffer(context, uploader, scene.vertices, "vertices",
-                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | (deformable ? VK_BUFFER_USAGE_STORAGE_BUFFER_BIT : 0));
-    if (deformable) {
+                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    if (!scene.deformations.empty()) {
         std::vector<uint32_t> words;
         for (const Deformation& d : scene.deformations) {
             mDeformationWord.push_back(words.size());
@@ -191,7 +192,8 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
         }
         mDeformation = uploadedBuffer(context, uploader, words, "deformation_records");
     }
-    mIndices = uploadedBuffer(context, uploader, scene.indices, "indices", VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    mIndices = uploadedBuffer(context, uploader, scene.indices, "indices",
+                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 
     std::vector<LightData>& lights = mSceneLights;
     if (sceneLights)

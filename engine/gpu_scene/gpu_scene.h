@@ -62,8 +62,8 @@ public:
     VkBuffer materialLayerBuffer() const { return mMaterialLayers.handle(); }
     // The skin influences and morph-target deltas of every Scene::deformations entry in one buffer
     // of 32-bit words, one record per vertex (appendDeformationRecords); a null handle when the
-    // scene has no deformations. The vertex buffer can then also be read as a storage buffer (by
-    // the skin_morph pass).
+    // scene has no deformations. The vertex and index buffers are storage buffers too (read by
+    // the skin_morph pass and the visibility path's shading).
     VkBuffer deformationBuffer() const { return mDeformation.handle(); }
     // The word of that buffer where deformation `d`'s vertex 0 record starts.
     uint64_t deformationWord(size_t d) const { return mDeformationWord[d]; }
@@ -94,6 +94,9 @@ public:
     Binding layerTexture(uint32_t material, int slot) const;
 
     const Scene& scene() const { return *mScene; }
+    // The sizes of the vertex and index buffers in bytes (storage-buffer range checks).
+    VkDeviceSize vertexBytes() const { return mVertices.size(); }
+    VkDeviceSize indexBytes() const { return mIndices.size(); }
 
 private:
     const Scene* mScene;

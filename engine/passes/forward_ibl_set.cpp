@@ -18,7 +18,6 @@ namespace {
 constexpr VkFormat kCubeFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 constexpr VkFormat kEquirectFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkImageUsageFlags kUsage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-constexpr VkPipelineStageFlags2 kFragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
 
 std::span<const std::byte> zeros(size_t bytes) {
     static const std::array<std::byte, 256> buffer{};
@@ -49,16 +48,16 @@ ForwardIblSet::ForwardIblSet(vk::Context& context)
     upload.submitAndWait();
 }
 
-IblHandles ForwardIblSet::declare(PassBuilder& builder, const IblHandles* ibl) {
+IblHandles ForwardIblSet::declare(PassBuilder& builder, const IblHandles* ibl, VkPipelineStageFlags2 stages) {
     if (!ibl) return {};
     const IblHandles& in = *ibl;
     IblHandles out;
     if (in.specular.valid()) out.specular = builder.sample(in.specular);
     if (in.irradianceCube.valid()) out.irradianceCube = builder.sample(in.irradianceCube);
-    if (in.sh.valid()) out.sh = builder.read(in.sh, Usage::Uniform, kFragment);
+    if (in.sh.valid()) out.sh = builder.read(in.sh, Usage::Uniform, stages);
     if (in.lut.valid()) out.lut = builder.sample(in.lut);
     if (in.referenceEquirect.valid()) out.referenceEquirect = builder.sample(in.referenceEquirect);
-    if (in.referenceTexels.valid()) out.referenceTexels = builder.read(in.referenceTexels, Usage::StorageRead, kFragment);
+    if (in.referenceTexels.valid()) out.referenceTexels = builder.read(in.referenceTexels, Usage::StorageRead, stages);
     return out;
 }
 
@@ -80,6 +79,11 @@ VkDescriptorSet ForwardIblSet::write(const PassContext& ctx, const vk::Program& 
         writer.buffer("ReferenceTexels", d.referenceTexels.valid() ? ctx.buffer(d.referenceTexels) : mPlaceholderTexels.handle());
     }
     return writer.commit(ctx.context(), ctx.descriptors());
+}
+
+void ForwardIblSet::writeSpecular(vk::DescriptorWriter& writer, const PassContext& ctx, TextureId declared) const {
+    if (declared.valid()) writer.image("specularCube", ctx.view(declared), ctx.layout(declared), mTrilinear.get());
+    else writer.image("specularCube", mPlaceholderCube.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, mTrilinear.get());
 }
 
 }  // namespace candela::passes

@@ -8,6 +8,7 @@
 #include "graph/render_graph.h"
 #include "passes/ibl_handles.h"
 #include "vk/buffer.h"
+#include "vk/descriptors.h"
 #include "vk/image.h"
 #include "vk/pipeline.h"
 #include "vk/sampler.h"
@@ -25,10 +26,16 @@ public:
 
     // Declares the reads (by the fragment shader) of every valid handle of `ibl` (null: none) in the
     // pass `builder` belongs to. Returns the handles as declared, for write().
-    static IblHandles declare(graph::PassBuilder& builder, const IblHandles* ibl);
+    // `stages`: the shader stages reading the buffers (the fragment stage of the forward draws, the
+    // compute stage of the visibility path's shading).
+    static IblHandles declare(graph::PassBuilder& builder, const IblHandles* ibl,
+                              VkPipelineStageFlags2 stages = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
     // Allocates set 2 of `program` from the frame's descriptor pool and writes it: the declared maps
     // as `ctx` resolves them, placeholders for the invalid handles.
     VkDescriptorSet write(const graph::PassContext& ctx, const vk::Program& program, const IblHandles& declared) const;
+    // Writes the specular cube `declared` (a handle declare() returned; invalid: the placeholder) as
+    // binding "specularCube" of `writer`'s set (the visibility path's sky).
+    void writeSpecular(vk::DescriptorWriter& writer, const graph::PassContext& ctx, graph::TextureId declared) const;
 
 private:
     vk::Sampler mTrilinear;  // clamp to edge

@@ -28,8 +28,7 @@ vk::GraphicsPipelineDesc pipelineDesc(const ForwardVariant& v, bool specializeLa
         .samples = v.samples,
         .alphaToCoverage = v.alphaToCoverage,
         .dynamicCullMode = true,
-        .specialization = {v.normalMap, v.lights, v.unlit, v.alphaMask, static_cast<uint32_t>(v.model), v.ibl,
-                           v.irradianceSh, v.multiscatter, v.referenceSamples, static_cast<uint32_t>(v.debugView)},
+        .specialization = specializationConstants(v),
         .vertexBindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}},
         .vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
@@ -37,17 +36,14 @@ vk::GraphicsPipelineDesc pipelineDesc(const ForwardVariant& v, bool specializeLa
                              {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv0)},
                              {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv1)},
                              {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, color)}}};
-    // Only the layered program has kLayers (constant 10; 0 for the core program, which ignores it).
     // Where the generic layered program exceeds the device's per-stage limits, it is specialized to
-    // the variant's layers at load: its material set (1) and layer maps (3) declare only what those
-    // layers read (docs/device-layer.md); sets 0 and 2 keep every binding, shared by all variants.
-    out.specialization.push_back(v.layers);
+    // the variant's layers (kLayers, constant 10) at load: its material set (1) and layer maps (3)
+    // declare only what those layers read (docs/device-layer.md); sets 0 and 2 keep every binding,
+    // shared by all variants.
     if (v.layers && specializeLayers) {
         out.frozenConstants = {10};
         out.specializedSets = {1, 3};
     }
-    out.specialization.push_back(v.specularAa);
-    out.specialization.push_back(v.alphaToCoverage);
     return out;
 }
 
@@ -214,6 +210,14 @@ DrawTarget ForwardPass::addTransmissive(RenderGraph& graph, const DrawTarget& op
     const std::vector<DrawListItem> items = list.backToFront(DrawRange::Transmissive, DrawRange::Blended);
     return addDrawPass(graph, "forward_transmission", items, inputs, recorded,
                        [&](PassBuilder& builder) { return drawInto(builder, opaque, false, DepthUse::Write); });
+}
+
+DrawTarget ForwardPass::addBlended(RenderGraph& graph, const DrawTarget& target, const DrawList& list, const FrameInputs& frame,
+                                   DrawStats* recorded) {
+    if (list.empty(DrawRange::Blended) || !list.empty(DrawRange::Transmissive))
+        throw std::logic_error("ForwardPass::addBlended: the draw list needs blended draws and no transmissive ones");
+    return addDrawPass(graph, "forward_blended", list.range(DrawRange::Blended), frame, recorded,
+                       [&](PassBuilder& builder) { return drawInto(builder, target, false, DepthUse::Test); });
 }
 
 std::vector<std::string> ForwardPass::describe(const DrawList& list, const FrameInputs& frame,

@@ -111,6 +111,12 @@ public:
     DrawTarget addTransmissive(graph::RenderGraph& graph, const DrawTarget& opaque, graph::TextureId background,
                                const DrawList& list, const FrameInputs& frame, DrawStats* recorded = nullptr);
 
+    // Adds "forward_blended": the list's blended draws, back to front, over `target` (the visibility
+    // path's shaded image and its depth, tested but not written). Precondition: the list has blended
+    // draws and no transmissive ones (addTransmissive draws both then).
+    DrawTarget addBlended(graph::RenderGraph& graph, const DrawTarget& target, const DrawList& list, const FrameInputs& frame,
+                          DrawStats* recorded = nullptr);
+
     // Queues the pipelines of every material key of the scene for a frame of `frame`'s bits on the
     // pass's worker threads (priority Soon), so that the frame's draws find them built or building
     // instead of compiling them one after the other (the draw that needs one first runs it itself

@@ -30,6 +30,12 @@ ForwardVariant forwardVariant(const MaterialKey& key, const FrameVariant& frame)
     return v;
 }
 
+std::vector<uint32_t> specializationConstants(const ForwardVariant& v) {
+    return {v.normalMap,    v.lights,       v.unlit,    v.alphaMask, static_cast<uint32_t>(v.model),
+            v.ibl,          v.irradianceSh, v.multiscatter, v.referenceSamples, static_cast<uint32_t>(v.debugView),
+            v.layers,       v.specularAa,   v.alphaToCoverage};
+}
+
 std::string ForwardVariant::name() const {
     std::string out = unlit ? "unlit" : shadingModelName(model);
     if (normalMap) out += "+normal-map";

@@ -11,6 +11,7 @@
 #include <compare>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace candela::passes {
 
@@ -56,6 +57,11 @@ struct ForwardVariant {
 // The variant drawing a material of `key` in a frame of `frame`: unlit materials ignore the frame's
 // lighting and shading bits.
 ForwardVariant forwardVariant(const MaterialKey& key, const FrameVariant& frame);
+
+// The values of the forward programs' specialization constants for `v` (constant_id = index,
+// forward/resources.glsl), shared by the forward pass's pipelines and the visibility path's compute
+// shading. kLayers (10) is there for the core programs too, which ignore it.
+std::vector<uint32_t> specializationConstants(const ForwardVariant& v);
 
 // The layer names of `layers` (scene::MaterialLayer bits), each preceded by "+".
 std::string plusLayerNames(uint32_t layers);

@@ -18,15 +18,21 @@ bool isSrgbFormat(VkFormat format) {
 
 TonemapPass::TonemapPass(vk::Context& context)
     : mContext(context),
-      mSampler(vk::createSampler(context, vk::kNearestSampler)) {}
+      mSampler(vk::createSampler(context, vk::kNearestSampler)), mTrilinear(vk::createSampler(context, {})) {}
 
 TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, const TonemapSettings& settings,
-                           shader::ParameterRegistry* parameters) {
+                           shader::ParameterRegistry* parameters, const Sky* sky) {
+    // The push constants: TonemapParams, then the sky's (tonemap_sky.frag).
+    struct Push {
+        shading::TonemapParams params;
+        shading::TonemapSky sky;
+    };
     struct Data {
         TextureId hdr;
         TextureId target;
+        TextureId specular;
         const vk::Pipeline* pipeline = nullptr;
-        shading::TonemapParams params{};
+        Push push{};
     };
     const Data& data = graph.addPass<Data>(
         "tonemap", PassType::Graphics,
@@ -36,17 +42,28 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
             const VkFormat format = builder.desc(target).format;
             const std::vector<uint32_t> specialization{static_cast<uint32_t>(settings.op), isSrgbFormat(format) ? 0u : 1u,
                                                        settings.dither ? 1u : 0u, settings.background ? 1u : 0u};
-            d.pipeline = &mPipelines.get(mContext, {format, specialization}, [&] {
-                return vk::Pipeline::graphics(mContext, "fullscreen.vert", "tonemap.frag",
+            // The key's last entry selects the program (it is no constant of the shaders).
+            std::vector<uint32_t> key = specialization;
+            key.push_back(sky ? 1u : 0u);
+            d.pipeline = &mPipelines.get(mContext, {format, key}, [&] {
+                return vk::Pipeline::graphics(mContext, "fullscreen.vert", sky ? "tonemap_sky.frag" : "tonemap.frag",
                                               {.colorFormats = {format}, .specialization = specialization});
             });
-            d.params.background = settings.background ? glm::vec4(*settings.background, 1.0f) : glm::vec4(0.0f);
-            d.params.exposureEv = settings.exposureEv;
+            d.push.params.background = settings.background ? glm::vec4(*settings.background, 1.0f) : glm::vec4(0.0f);
+            d.push.params.exposureEv = settings.exposureEv;
+            if (sky) {
+                d.specular = builder.sample(sky->specular);
+                d.push.sky = sky->params;
+            }
             if (parameters)
-                parameters->apply("tonemap", "Push", d.pipeline->program().reflection().pushConstants.members, d.params);
+                parameters->apply("tonemap", "Push", d.pipeline->program().reflection().pushConstants.members, d.push);
         },
-        [sampler = mSampler.get()](const Data& d, PassContext& ctx) {
-            drawFullscreenSampling(ctx, *d.pipeline, "hdrImage", d.hdr, sampler, &d.params, sizeof(d.params));
+        [sampler = mSampler.get(), trilinear = mTrilinear.get()](const Data& d, PassContext& ctx) {
+            const uint32_t pushSize = d.specular.valid() ? sizeof(Push) : sizeof(shading::TonemapParams);
+            vk::DescriptorWriter writer(d.pipeline->program(), 0);
+            writer.image("hdrImage", ctx.view(d.hdr), ctx.layout(d.hdr), sampler);
+            if (d.specular.valid()) writer.image("specularCube", ctx.view(d.specular), ctx.layout(d.specular), trilinear);
+            drawFullscreenTriangle(ctx, *d.pipeline, writer.commit(ctx.context(), ctx.descriptors()), &d.push, pushSize);
         });
     return data.target;
 }

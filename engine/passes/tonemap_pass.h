@@ -1,10 +1,13 @@
 #pragma once
 // Tonemap pass (graphics): exposure, tone mapping operator, background compositing and sRGB
-// encoding of the HDR frame into an 8-bit target (full-screen triangle).
+// encoding of the HDR frame into an 8-bit target (full-screen triangle) — with the sky composited
+// under the image first when it is given (tonemap_sky.frag), instead of a skybox pass: one pass
+// over the image fewer where nothing reads the HDR image with its sky.
 
 #include "graph/render_graph.h"
 #include "passes/tonemap_operator.h"
 #include "shader/parameter_registry.h"
+#include "shared/tonemap.h"
 #include "vk/pipeline_cache.h"
 #include "vk/sampler.h"
 
@@ -31,14 +34,21 @@ public:
     // Adds the pass: samples `hdr` (RGBA16F, alpha = coverage), writes all of `target` (same size;
     // an _SRGB format is encoded by the hardware, a UNORM one by the shader). Returns its new version.
     // With `parameters`, the user's values for its push constants apply ("tonemap", "Push").
+    // With `sky`, the sky (the specular cube, shared/sky.glsl) is composited under `hdr` first.
+    struct Sky {
+        graph::TextureId specular;
+        shading::TonemapSky params;
+    };
     graph::TextureId add(graph::RenderGraph& graph, graph::TextureId hdr, graph::TextureId target,
-                         const TonemapSettings& settings, shader::ParameterRegistry* parameters = nullptr);
+                         const TonemapSettings& settings, shader::ParameterRegistry* parameters = nullptr,
+                         const Sky* sky = nullptr);
 
 private:
     vk::Context& mContext;
-    // Pipelines by target format and specialization (operator, sRGB encode, dither, background).
+    // Pipelines by target format and specialization (operator, sRGB encode, dither, background; sky).
     vk::PipelineCache<std::pair<VkFormat, std::vector<uint32_t>>> mPipelines;
-    vk::Sampler mSampler;
+    vk::Sampler mSampler;     // nearest (the HDR image)
+    vk::Sampler mTrilinear;   // the specular cube
 };
 
 }  // namespace candela::passes

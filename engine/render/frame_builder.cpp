@@ -6,6 +6,7 @@
 #include "vk/context.h"
 #include "vk/pipeline_cache_file.h"
 
+#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -22,9 +23,22 @@ constexpr VkFormat kLdrFormat = VK_FORMAT_R8G8B8A8_SRGB;
 FrameBuilder::FrameBuilder(vk::Context& context, SceneState& scene, shader::ParameterRegistry& parameters)
     : mContext(context), mScene(scene), mParameters(parameters), mPattern(context), mEncode(context, kLdrFormat),
       mForward(context), mSkybox(context), mTransmissionBackground(context), mSkinMorph(context), mTonemap(context),
-      mCalibration(context) {}
+      mCalibration(context), mVisibility(context) {}
 
-void FrameBuilder::sceneUploaded() { mForward.setScene(mScene.gpuScene(), mScene.materialKeys()); }
+void FrameBuilder::sceneUploaded() {
+    mForward.setScene(mScene.gpuScene(), mScene.materialKeys());
+    mVisibility.setScene(mScene.gpuScene(), mScene.materialKeys());
+}
+
+std::pair<passes::ShadingPath, std::string> FrameBuilder::shadingPath(passes::ShadingPath requested,
+                                                                      const passes::FrameVariant& variant) const {
+    using passes::ShadingPath;
+    if (requested == ShadingPath::Forward) return {ShadingPath::Forward, ""};
+    if (requested == ShadingPath::Auto) return {ShadingPath::Forward, "the device's default"};
+    if (!mVisibility.unsupported().empty()) return {ShadingPath::Forward, mVisibility.unsupported()};
+    if (const std::string why = VisibilityPath::frameUnsupported(variant); !why.empty()) return {ShadingPath::Forward, why};
+    return {ShadingPath::Visibility, ""};
+}
 
 vk::MsaaChoice FrameBuilder::msaa(std::optional<uint32_t> requested) const {
     return vk::chooseMsaa(mContext.properties().deviceType, mContext.attachmentSampleCounts(), requested);
@@ -164,12 +178,29 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     const bool changed = settings.precompile != passes::Precompile::Off && mForward.prepare(inputs.variant);
     if (settings.precompile == passes::Precompile::DebugViews && !changed) mForward.prepareDebugViews(inputs.variant);
     mStats = list.stats;
-    passes::DrawTarget drawn = mForward.addOpaque(graph, {settings.width, settings.height, msaa.samples}, list, inputs, &mStats);
     const bool skybox = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;
-    if (skybox)
+    const bool transmission = !list.empty(passes::DrawRange::Transmissive);
+    const passes::DrawTargetSize size{settings.width, settings.height, msaa.samples};
+    auto [path, pathReason] = shadingPath(settings.shadingPath, inputs.variant);
+    std::optional<passes::DrawTarget> visible;
+    if (path == passes::ShadingPath::Visibility)
+        visible = mVisibility.add(frame, {.size = size, .list = list, .keys = mScene.materialKeys(), .inputs = inputs, .recorded = &mStats},
+                                  frame.notes);
+    else
+        frame.notes.push_back(std::string("shading path: forward") + (pathReason.empty() ? "" : " (" + pathReason + ")"));
+    // The sky: composited under the image by the tonemap on the visibility path, unless the
+    // transmissive draws must see it (then, as on the forward path, the skybox pass draws it).
+    const bool skyInTonemap = skybox && visible && !transmission;
+    passes::DrawTarget drawn;
+    if (visible) {
+        drawn = *visible;
+        if (!transmission && !list.empty(passes::DrawRange::Blended)) drawn = mForward.addBlended(graph, drawn, list, inputs, &mStats);
+    } else {
+        drawn = mForward.addOpaque(graph, size, list, inputs, &mStats);
+    }
+    if (skybox && !skyInTonemap)
         drawn = mSkybox.add(graph, view, {.target = drawn, .specular = ibl->maps.specular, .params = ibl->params}, &mParameters);
     // Transmissive draws over the opaque image (sky included), which they see through.
-    const bool transmission = !list.empty(passes::DrawRange::Transmissive);
     if (transmission)
         drawn = mForward.addTransmissive(graph, drawn, mTransmissionBackground.add(graph, drawn.hdr), list, inputs, &mStats);
     frame.hdr = drawn.hdr;
@@ -178,10 +209,18 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
                                  : graph.createTexture("ldr", {.width = settings.width,
                                                                .height = settings.height,
                                                                .format = VK_FORMAT_R8G8B8A8_UNORM});
-    frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemapOf(settings, ibl.has_value()), &mParameters);
+    std::optional<passes::TonemapPass::Sky> sky;
+    if (skyInTonemap)
+        sky = passes::TonemapPass::Sky{
+            .specular = ibl->maps.specular,
+            .params = {.inverseViewProjection = glm::inverse(view.viewProjection),
+                       .eyeIntensity = glm::vec4(view.eye, ibl->params.intensity),
+                       .rotationLod = glm::vec4(ibl->params.rotation.x, ibl->params.rotation.y, ibl->params.skyboxLod, 0.0f)}};
+    frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemapOf(settings, ibl.has_value()), &mParameters, sky ? &*sky : nullptr);
 
     addNotes(frame, settings, msaa, mForward.describe(list, inputs, settings.drawSelection),
-             {.sheenLut = layerMaps.has_value(), .transmission = transmission, .ibl = ibl.has_value(), .skybox = skybox});
+             {.sheenLut = layerMaps.has_value(), .transmission = transmission, .ibl = ibl.has_value(), .skybox = skybox,
+              .skyInTonemap = skyInTonemap});
 }
 
 void FrameBuilder::addNotes(Frame& frame, const RenderSettings& settings, const vk::MsaaChoice& msaa,
@@ -221,6 +260,7 @@ void FrameBuilder::addNotes(Frame& frame, const RenderSettings& settings, const 
         notes.push_back(std::string("debug view: ") + passes::debugViewName(debugView) +
                         (passes::debugViewIsLight(debugView) ? " (tonemapped as the image is)"
                                                              : " (shown as data: linear tonemap at exposure 0)"));
+    if (scheduled.skyInTonemap) notes.emplace_back("sky: composited under the image by the tonemap (no skybox pass)");
     if (scheduled.ibl && !scheduled.skybox)
         notes.emplace_back(debugView != passes::DebugView::None ? "left out: skybox (debug view)"
                                                                 : "left out: skybox (the background is not the environment)");

@@ -3,7 +3,10 @@
 // state, and says what it left out and why (Frame::notes, for --explain). Owns the frame passes.
 //
 // Scene frame:   [skin_morph] → [IBL precompute, when the maps are pending] → forward (HDR + depth)
-//                → [skybox] → [transmission_background → forward_transmission] → tonemap (8-bit).
+//                → [skybox] → [transmission_background → forward_transmission] → tonemap (8-bit);
+//                on the visibility path (docs/shading-paths.md) visibility → visibility_classify →
+//                visibility_shade (the sky included) replace forward and skybox, and the blended
+//                draws follow in forward_blended when no transmissive draw does.
 // Test pattern:  pattern (compute, HDR) → encode (graphics, 8-bit sRGB).
 // Calibration:   calibration alone (benchmarks' unit of time).
 
@@ -18,6 +21,7 @@
 #include "render/frame.h"
 #include "render/render_settings.h"
 #include "render/scene_state.h"
+#include "render/visibility_path.h"
 #include "shader/parameter_registry.h"
 #include "vk/msaa.h"
 
@@ -58,6 +62,9 @@ public:
                                         const scene::ScenePose* pose = nullptr);
 
 private:
+    // The shading path of a frame of `variant` asked for `requested`: Visibility or Forward, and
+    // why (for --explain; "" when the request was followed without a reason to give).
+    std::pair<passes::ShadingPath, std::string> shadingPath(passes::ShadingPath requested, const passes::FrameVariant& variant) const;
     // Adds the skin_morph pass for the pose's deformed draws; nullopt (and a note) when none is.
     std::optional<passes::ForwardPass::DeformedVertices> addSkinMorph(Frame& frame, const scene::ScenePose& pose);
     // The posed draws' (and moved lights') per-frame buffers of an animated pose.
@@ -68,7 +75,7 @@ private:
     passes::TonemapSettings tonemapOf(const RenderSettings& settings, bool ibl) const;
     // What the scene frame added besides the forward draws.
     struct Scheduled {
-        bool sheenLut = false, transmission = false, ibl = false, skybox = false;
+        bool sheenLut = false, transmission = false, ibl = false, skybox = false, skyInTonemap = false;
     };
     // Adds the frame's notes: lights, MSAA, the forward passes' `forward` lines, the maps, sheen LUT,
     // transmission, debug view and skybox.
@@ -86,6 +93,7 @@ private:
     passes::SkinMorphPass mSkinMorph;
     passes::TonemapPass mTonemap;
     passes::CalibrationPass mCalibration;
+    VisibilityPath mVisibility;
     passes::DrawStats mStats;  // of the last scene frame; the recorder adds its state changes
     std::optional<uint32_t> mMsaaWarnedFor;  // the clamped request last warned of (once per request)
 };

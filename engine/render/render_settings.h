@@ -10,6 +10,7 @@
 #include "passes/draw_selection.h"
 #include "passes/forward_variant.h"
 #include "passes/precompile.h"
+#include "passes/shading_path.h"
 #include "passes/tonemap_pass.h"
 #include "pose/scene_pose.h"
 #include "scene/camera.h"
@@ -66,6 +67,8 @@ struct RenderSettings {
     std::optional<uint32_t> msaa;
     // When the forward pass compiles the variants the frame needs (--precompile; docs/device-layer.md).
     passes::Precompile precompile = passes::Precompile::Frame;
+    // How opaque and masked surfaces are shaded (--shading-path; docs/shading-paths.md).
+    passes::ShadingPath shadingPath = passes::ShadingPath::Auto;
     // Image-based lighting: the environment (null: none; read during the call only, hashed when the
     // pointer or the quality changes), what to precompute and how to look it up.
     const scene::Environment* environment = nullptr;

@@ -267,6 +267,7 @@ void Context::createDevice(const ContextDesc& desc) {
     enable(optional.fullDrawIndexUint32, features.features.fullDrawIndexUint32, "fullDrawIndexUint32");
     enable(optional.shaderStorageImageExtendedFormats, features.features.shaderStorageImageExtendedFormats,
            "shaderStorageImageExtendedFormats");
+    enable(optional.geometryShader, features.features.geometryShader, "geometryShader");
     mAlphaToOne = optional.alphaToOne;
 
     std::vector<const char*> extensions;

@@ -55,6 +55,7 @@ DeviceCaps queryDeviceCaps(VkPhysicalDevice device) {
     caps.features.alphaToOne = features.features.alphaToOne;
     caps.features.fullDrawIndexUint32 = features.features.fullDrawIndexUint32;
     caps.features.shaderStorageImageExtendedFormats = features.features.shaderStorageImageExtendedFormats;
+    caps.features.geometryShader = features.features.geometryShader;
 
     uint32_t count = 0;
     VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr));
@@ -115,6 +116,7 @@ std::string formatName(VkFormat format) {
         case VK_FORMAT_D32_SFLOAT: return "D32_SFLOAT";
         case VK_FORMAT_X8_D24_UNORM_PACK32: return "X8_D24_UNORM_PACK32";
         case VK_FORMAT_D16_UNORM: return "D16_UNORM";
+        case VK_FORMAT_R32G32_UINT: return "R32G32_UINT";
         default: return "format " + std::to_string(static_cast<int>(format));
     }
 }

@@ -23,7 +23,7 @@ inline constexpr VkFormat kCandelaFormats[] = {
     VK_FORMAT_B8G8R8A8_SRGB,       VK_FORMAT_A2B10G10R10_UNORM_PACK32, VK_FORMAT_R16_SFLOAT,
     VK_FORMAT_R16G16_SFLOAT,       VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32_SFLOAT,
     VK_FORMAT_R32G32_SFLOAT,       VK_FORMAT_R32G32B32A32_SFLOAT, VK_FORMAT_D32_SFLOAT,
-    VK_FORMAT_X8_D24_UNORM_PACK32, VK_FORMAT_D16_UNORM,
+    VK_FORMAT_X8_D24_UNORM_PACK32, VK_FORMAT_D16_UNORM,        VK_FORMAT_R32G32_UINT,
 };
 
 // Format-feature shorthands for the tables of the profiles and the choices.
@@ -68,6 +68,9 @@ struct DeviceFeatures {
     bool alphaToOne = false;
     bool fullDrawIndexUint32 = false;
     bool shaderStorageImageExtendedFormats = false;
+    // The fragment shader's gl_PrimitiveID (SPIR-V's Geometry capability), which the visibility
+    // buffer stores (docs/shading-paths.md).
+    bool geometryShader = false;
 };
 
 // The optional device extensions Candela can use.

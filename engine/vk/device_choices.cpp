@@ -21,6 +21,19 @@ VkFormat pick(const DeviceCaps& caps, const char* what, VkFormat preferred, VkFo
     return fallback;
 }
 
+// What the visibility path needs that the device lacks, or "".
+std::string visibilityUnsupported(const DeviceCaps& caps) {
+    if (!caps.features.geometryShader) return "geometryShader, for gl_PrimitiveID in the fragment stage";
+    if (!caps.supports(VK_FORMAT_R32G32_UINT, kSampled | kColor))
+        return "R32G32_UINT as a sampled colour attachment (the visibility image)";
+    std::vector<shader::ShaderReflection> shading;
+    for (const char* name : {"visibility_shade_layers.comp"}) shading.push_back(shader::reflectSpirv(shader::shaderSpirv(name), name));
+    const shader::ShaderReflection merged = shader::mergeReflections(shading);
+    if (const std::string over = descriptorLimitViolation(merged.bindings, merged.pushConstants.size, caps); !over.empty())
+        return "more than the device's limits for its compute shading: " + over;
+    return {};
+}
+
 }  // namespace
 
 DeviceChoices chooseForDevice(const DeviceCaps& caps) {
@@ -38,6 +51,8 @@ DeviceChoices chooseForDevice(const DeviceCaps& caps) {
         c.fallbacks.push_back("layered materials: a program per layer combination, declaring only its layers' textures "
                               "(the program with every layer has " + over + ")");
     }
+    c.visibilityUnsupported = visibilityUnsupported(caps);
+    if (!c.visibilityUnsupported.empty()) c.fallbacks.push_back("shading: the forward path only (the visibility path needs " + c.visibilityUnsupported + ")");
     return c;
 }
 

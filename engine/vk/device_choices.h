@@ -27,6 +27,11 @@ struct DeviceChoices {
     // layered variant is specialized at load to declare only its layers' descriptors
     // (vk::ProgramSpecialization). A material whose layers still exceed them is refused by name.
     bool specializeLayeredProgram = false;
+    // Why the visibility shading path (docs/shading-paths.md) cannot run here ("" if it can): it
+    // stores gl_PrimitiveID from the fragment stage (geometryShader), renders and samples
+    // R32G32_UINT, and its compute shading binds 5 sets, ~10 storage buffers and the layered
+    // program's 17 material textures besides the maps. Frames then take the forward path.
+    std::string visibilityUnsupported;
     // One line per fallback taken ("BRDF LUT: R16G16B16A16_SFLOAT instead of R16G16_SFLOAT (no
     // STORAGE_IMAGE)"); empty when the device has everything.
     std::vector<std::string> fallbacks;

@@ -52,6 +52,7 @@ constexpr FormatCeiling kMinimumFormats[] = {
     {VK_FORMAT_D32_SFLOAT, S | D | XS},
     {VK_FORMAT_X8_D24_UNORM_PACK32, 0},
     {VK_FORMAT_D16_UNORM, S | D | XS},
+    {VK_FORMAT_R32G32_UINT, S | ST | C | X},
 };
 
 // Vulkan 1.3's required limits ("Required Limits" in the specification's Limits chapter) and
@@ -100,6 +101,7 @@ constexpr FormatCeiling kDesktopFormats[] = {
     {VK_FORMAT_R32_SFLOAT, kAll},          {VK_FORMAT_R32G32_SFLOAT, kAll},
     {VK_FORMAT_R32G32B32A32_SFLOAT, kAll}, {VK_FORMAT_D32_SFLOAT, kDepth},
     {VK_FORMAT_X8_D24_UNORM_PACK32, kDepth}, {VK_FORMAT_D16_UNORM, kDepth},
+    {VK_FORMAT_R32G32_UINT, S | ST | C | X},
 };
 constexpr ProfileData kDesktop{
     .limits = {.maxPerStageDescriptorSamplers = 1048576,
@@ -126,7 +128,8 @@ constexpr ProfileData kDesktop{
     .features = {.samplerAnisotropy = true,
                  .alphaToOne = true,
                  .fullDrawIndexUint32 = true,
-                 .shaderStorageImageExtendedFormats = true},
+                 .shaderStorageImageExtendedFormats = true,
+                 .geometryShader = true},
     .extensions = {.memoryBudget = true},
     .lazyMemory = false,
     .formats = kDesktopFormats,
@@ -145,6 +148,7 @@ constexpr FormatCeiling kAppleFormats[] = {
     {VK_FORMAT_R32_SFLOAT, kAll},          {VK_FORMAT_R32G32_SFLOAT, kAll},
     {VK_FORMAT_R32G32B32A32_SFLOAT, kAll}, {VK_FORMAT_D32_SFLOAT, kDepth},
     {VK_FORMAT_X8_D24_UNORM_PACK32, 0},    {VK_FORMAT_D16_UNORM, kDepth},
+    {VK_FORMAT_R32G32_UINT, S | ST | C | X},
 };
 constexpr ProfileData kApple{
     .limits = {.maxPerStageDescriptorSamplers = 16,
@@ -171,7 +175,8 @@ constexpr ProfileData kApple{
     .features = {.samplerAnisotropy = true,
                  .alphaToOne = true,
                  .fullDrawIndexUint32 = true,
-                 .shaderStorageImageExtendedFormats = true},
+                 .shaderStorageImageExtendedFormats = true,
+                 .geometryShader = false},
     .extensions = {.memoryBudget = true, .portabilitySubset = true},
     .lazyMemory = true,
     .formats = kAppleFormats,
@@ -241,6 +246,7 @@ DeviceCaps narrowCaps(const DeviceCaps& device, DeviceProfile profile) {
     f.fullDrawIndexUint32 = f.fullDrawIndexUint32 && data->features.fullDrawIndexUint32;
     f.shaderStorageImageExtendedFormats =
         f.shaderStorageImageExtendedFormats && data->features.shaderStorageImageExtendedFormats;
+    f.geometryShader = f.geometryShader && data->features.geometryShader;
     if (!f.fullDrawIndexUint32) lower(l.maxDrawIndexedIndexValue, (1u << 24) - 1);
     if (!f.samplerAnisotropy) l.maxSamplerAnisotropy = 1.0f;
 

@@ -2,9 +2,11 @@
 // each KHR_materials_* layer) at one surface point, SurfaceInputs → Surface (forward/surface.glsl).
 // Nothing here reads a stage input or a derivative: the caller passes them in SurfaceInputs, and
 // defines, before including this file, how a material texture is read —
-//     vec4 materialTexture(sampler2D texture, vec2 uv)
-// (the fragment stage: texture(), with its implicit derivatives; a compute shader: textureLod or
-// textureGrad). Branches are on specialization constants only, so a sample inside one keeps its
+//     CANDELA_CORE_TEXTURE(inputs, field, slot)   core texture slot `slot` (CANDELA_TEX_*), whose
+//                                                 sampler is field##Texture in the forward programs
+//     CANDELA_LAYER_TEXTURE(inputs, field, slot)  layer texture slot `slot` (CANDELA_LAYER_TEX_*)
+// each a vec4 (the fragment stage: texture() of the slot's sampler, with its implicit derivatives;
+// the visibility path's compute shading: textureGrad() with the gradients it computed). Branches are on specialization constants only, so a sample inside one keeps its
 // derivatives and what a variant does not use is compiled out.
 #ifndef CANDELA_FORWARD_MATERIAL_EVAL_GLSL
 #define CANDELA_FORWARD_MATERIAL_EVAL_GLSL
@@ -45,7 +47,7 @@ MaterialData materialOf(SurfaceInputs inputs) { return materials[draws[inputs.dr
 // the alpha test can come first.
 vec4 materialBaseColor(SurfaceInputs inputs) {
     return materialOf(inputs).baseColorFactor * inputs.color *
-           materialTexture(baseColorTexture, inputs.uv[CANDELA_TEX_BASE_COLOR]);
+           CANDELA_CORE_TEXTURE(inputs, baseColor, CANDELA_TEX_BASE_COLOR);
 }
 
 #ifdef CANDELA_MATERIAL_LAYERS
@@ -55,8 +57,8 @@ MaterialLayerData materialLayersOf(SurfaceInputs inputs) { return layers[draws[i
 // specular layer).
 DielectricFresnel evaluateSpecular(MaterialLayerData layer, SurfaceInputs inputs) {
     if (!hasLayer(CANDELA_LAYER_SPECULAR)) return coreDielectricFresnel();
-    float specular = layer.specular * materialTexture(specularTexture, inputs.layerUv[CANDELA_LAYER_TEX_SPECULAR]).a;
-    vec3 color = layer.specularColor * materialTexture(specularColorTexture, inputs.layerUv[CANDELA_LAYER_TEX_SPECULAR_COLOR]).rgb;
+    float specular = layer.specular * CANDELA_LAYER_TEXTURE(inputs, specular, CANDELA_LAYER_TEX_SPECULAR).a;
+    vec3 color = layer.specularColor * CANDELA_LAYER_TEXTURE(inputs, specularColor, CANDELA_LAYER_TEX_SPECULAR_COLOR).rgb;
     return dielectricFresnel(layer.ior, color, specular);
 }
 
@@ -68,8 +70,8 @@ Iridescence evaluateIridescence(MaterialLayerData layer, SurfaceInputs inputs) {
     film.ior = 1.0f;
     film.thickness = 0.0f;
     if (!hasLayer(CANDELA_LAYER_IRIDESCENCE)) return film;
-    film.weight = clamp(layer.iridescence * materialTexture(iridescenceTexture, inputs.layerUv[CANDELA_LAYER_TEX_IRIDESCENCE]).r, 0.0f, 1.0f);
-    float g = materialTexture(iridescenceThicknessTexture, inputs.layerUv[CANDELA_LAYER_TEX_IRIDESCENCE_THICKNESS]).g;
+    film.weight = clamp(layer.iridescence * CANDELA_LAYER_TEXTURE(inputs, iridescence, CANDELA_LAYER_TEX_IRIDESCENCE).r, 0.0f, 1.0f);
+    float g = CANDELA_LAYER_TEXTURE(inputs, iridescenceThickness, CANDELA_LAYER_TEX_IRIDESCENCE_THICKNESS).g;
     film.thickness = max(mix(layer.iridescenceThicknessMinimum, layer.iridescenceThicknessMaximum, g), 0.0f);
     film.ior = max(layer.iridescenceIor, 1.0f);
     return film;
@@ -79,13 +81,13 @@ Iridescence evaluateIridescence(MaterialLayerData layer, SurfaceInputs inputs) {
 // material's), seen from `v`.
 Clearcoat evaluateClearcoat(MaterialLayerData layer, SurfaceInputs inputs, vec3 faced, vec3 v) {
     if (!hasLayer(CANDELA_LAYER_CLEARCOAT)) return clearcoatLayer(0.0f, 0.0f, faced, v);
-    float weight = layer.clearcoat * materialTexture(clearcoatTexture, inputs.layerUv[CANDELA_LAYER_TEX_CLEARCOAT]).r;
+    float weight = layer.clearcoat * CANDELA_LAYER_TEXTURE(inputs, clearcoat, CANDELA_LAYER_TEX_CLEARCOAT).r;
     float roughness =
-        layer.clearcoatRoughness * materialTexture(clearcoatRoughnessTexture, inputs.layerUv[CANDELA_LAYER_TEX_CLEARCOAT_ROUGHNESS]).g;
+        layer.clearcoatRoughness * CANDELA_LAYER_TEXTURE(inputs, clearcoatRoughness, CANDELA_LAYER_TEX_CLEARCOAT_ROUGHNESS).g;
     vec3 nc = faced;
     float mapLength = 1.0f;
     if (hasLayer(CANDELA_LAYER_CLEARCOAT_NORMAL)) {
-        vec4 texel = materialTexture(clearcoatNormalTexture, inputs.layerUv[CANDELA_LAYER_TEX_CLEARCOAT_NORMAL]);
+        vec4 texel = CANDELA_LAYER_TEXTURE(inputs, clearcoatNormal, CANDELA_LAYER_TEX_CLEARCOAT_NORMAL);
         nc = mapNormal(faced, inputs.tangent, texel.xyz * 2.0f - 1.0f, layer.clearcoatNormalScale);
         mapLength = texel.a;
     }
@@ -99,7 +101,7 @@ Clearcoat evaluateClearcoat(MaterialLayerData layer, SurfaceInputs inputs, vec3 
 Anisotropy evaluateAnisotropy(MaterialLayerData layer, SurfaceInputs inputs, vec3 n) {
     Anisotropy none = anisotropyLayer(0.0f, vec3(1.0f, 0.0f, 0.0f), vec3(0.0f, 1.0f, 0.0f));
     if (!hasLayer(CANDELA_LAYER_ANISOTROPY)) return none;
-    vec3 texel = materialTexture(anisotropyTexture, inputs.layerUv[CANDELA_LAYER_TEX_ANISOTROPY]).rgb;
+    vec3 texel = CANDELA_LAYER_TEXTURE(inputs, anisotropy, CANDELA_LAYER_TEX_ANISOTROPY).rgb;
     bool textured = layer.anisotropyTextured > 0.5f;
     vec2 direction = textured ? texel.rg * 2.0f - 1.0f : vec2(1.0f, 0.0f);
     float strength = clamp(layer.anisotropy * (textured ? texel.b : 1.0f), 0.0f, 1.0f);
@@ -117,7 +119,7 @@ Anisotropy evaluateAnisotropy(MaterialLayerData layer, SurfaceInputs inputs, vec
 // the IOR).
 Transmission evaluateTransmission(MaterialLayerData layer, SurfaceInputs inputs, float roughness) {
     if (!hasLayer(CANDELA_LAYER_TRANSMISSION)) return transmissionLayer(0.0f, 0.0f, 1.5f);
-    float weight = layer.transmission * materialTexture(transmissionTexture, inputs.layerUv[CANDELA_LAYER_TEX_TRANSMISSION]).r;
+    float weight = layer.transmission * CANDELA_LAYER_TEXTURE(inputs, transmission, CANDELA_LAYER_TEX_TRANSMISSION).r;
     return transmissionLayer(clamp(weight, 0.0f, 1.0f), roughness, layer.ior);
 }
 
@@ -129,7 +131,7 @@ Volume evaluateVolume(MaterialLayerData layer, SurfaceInputs inputs, vec3 n, vec
     volume.ray = vec3(0.0f);
     volume.transmittance = vec3(1.0f);
     if (!hasLayer(CANDELA_LAYER_VOLUME)) return volume;
-    float thickness = layer.thickness * materialTexture(thicknessTexture, inputs.layerUv[CANDELA_LAYER_TEX_THICKNESS]).g;
+    float thickness = layer.thickness * CANDELA_LAYER_TEXTURE(inputs, thickness, CANDELA_LAYER_TEX_THICKNESS).g;
     mat4 world = draws[inputs.draw].world;
     float scale = (length(world[0].xyz) + length(world[1].xyz) + length(world[2].xyz)) * (1.0f / 3.0f);
     vec3 refracted = refract(-v, n, 1.0f / max(layer.ior, 1.0f));
@@ -141,9 +143,9 @@ Volume evaluateVolume(MaterialLayerData layer, SurfaceInputs inputs, vec3 n, vec
 // KHR_materials_sheen on shading normal `n`, with its albedo E(N·V) from the LUT.
 Sheen evaluateSheen(MaterialLayerData layer, SurfaceInputs inputs, vec3 n, vec3 v) {
     if (!hasLayer(CANDELA_LAYER_SHEEN)) return sheenLayer(vec3(0.0f), 0.0f, 0.0f);
-    vec3 color = layer.sheenColor * materialTexture(sheenColorTexture, inputs.layerUv[CANDELA_LAYER_TEX_SHEEN_COLOR]).rgb;
+    vec3 color = layer.sheenColor * CANDELA_LAYER_TEXTURE(inputs, sheenColor, CANDELA_LAYER_TEX_SHEEN_COLOR).rgb;
     float roughness = clamp(
-        layer.sheenRoughness * materialTexture(sheenRoughnessTexture, inputs.layerUv[CANDELA_LAYER_TEX_SHEEN_ROUGHNESS]).a, 0.0f, 1.0f);
+        layer.sheenRoughness * CANDELA_LAYER_TEXTURE(inputs, sheenRoughness, CANDELA_LAYER_TEX_SHEEN_ROUGHNESS).a, 0.0f, 1.0f);
     float NoV = clamp(dot(n, v), CANDELA_MIN_NOV, 1.0f);
     float albedo = textureLod(sheenLut, brdfLutUv(NoV, roughness, float(textureSize(sheenLut, 0).x)), 0.0f).r;
     return sheenLayer(color, roughness, albedo);
@@ -178,7 +180,7 @@ Surface evaluateMaterial(SurfaceInputs inputs, vec3 baseColor) {
     s.position = inputs.position;
     s.v = normalize(inputs.eye - inputs.position);
     s.baseColor = baseColor;
-    vec4 mr = materialTexture(metallicRoughnessTexture, inputs.uv[CANDELA_TEX_METALLIC_ROUGHNESS]);
+    vec4 mr = CANDELA_CORE_TEXTURE(inputs, metallicRoughness, CANDELA_TEX_METALLIC_ROUGHNESS);
     s.metallic = clamp(m.metallic * mr.b, 0.0f, 1.0f);
     s.materialRoughness = clamp(m.roughness * mr.g, 0.0f, 1.0f);
     s.facedNormal = facedNormal(inputs);
@@ -187,15 +189,15 @@ Surface evaluateMaterial(SurfaceInputs inputs, vec3 baseColor) {
     // less where a mip averaged diverging normals; geometry/normal_map_mips.h).
     float normalMapLength = 1.0f;
     if (kNormalMap) {
-        vec4 texel = materialTexture(normalTexture, inputs.uv[CANDELA_TEX_NORMAL]);
+        vec4 texel = CANDELA_CORE_TEXTURE(inputs, normal, CANDELA_TEX_NORMAL);
         s.normal = mapNormal(s.facedNormal, inputs.tangent, texel.xyz * 2.0f - 1.0f, m.normalScale);
         normalMapLength = texel.a;
     }
     s.roughness = s.materialRoughness;
     if (kSpecularAa) s.roughness = specularAntiAliasedRoughness(s.materialRoughness, inputs.normalChange, normalMapLength);
     s.f0 = mix(vec3(0.04f), baseColor, s.metallic);
-    s.occlusion = 1.0f + m.occlusionStrength * (materialTexture(occlusionTexture, inputs.uv[CANDELA_TEX_OCCLUSION]).r - 1.0f);
-    s.emissive = m.emissive.rgb * materialTexture(emissiveTexture, inputs.uv[CANDELA_TEX_EMISSIVE]).rgb;
+    s.occlusion = 1.0f + m.occlusionStrength * (CANDELA_CORE_TEXTURE(inputs, occlusion, CANDELA_TEX_OCCLUSION).r - 1.0f);
+    s.emissive = m.emissive.rgb * CANDELA_CORE_TEXTURE(inputs, emissive, CANDELA_TEX_EMISSIVE).rgb;
 #ifdef CANDELA_MATERIAL_LAYERS
     s.ior = materialLayersOf(inputs).ior;
     s.layers = evaluateLayers(inputs, s);

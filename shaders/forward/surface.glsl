@@ -1,7 +1,8 @@
 // The two ends of material evaluation (forward/material_eval.glsl): SurfaceInputs, what a material
 // is evaluated from at one surface point, and Surface, everything the evaluation produces and the
 // lighting (forward/lighting.glsl) reads. The fragment stage fills SurfaceInputs from its
-// interpolants and derivatives (forward_fragment.glsl); a compute shader can fill them itself.
+// interpolants and derivatives (forward_fragment.glsl), the visibility path's compute shading from
+// the triangle it fetches (visibility/shade.glsl).
 #ifndef CANDELA_FORWARD_SURFACE_GLSL
 #define CANDELA_FORWARD_SURFACE_GLSL
 
@@ -24,6 +25,14 @@ struct SurfaceInputs {
     vec2 uv[CANDELA_TEX_COUNT];  // per core texture slot, after KHR_texture_transform
 #ifdef CANDELA_MATERIAL_LAYERS
     vec2 layerUv[CANDELA_LAYER_TEX_COUNT];  // per layer texture slot, likewise
+#endif
+#ifdef CANDELA_VISIBILITY_SHADING
+    // Compute shading has no implicit derivatives: each slot's coordinates one pixel to the right
+    // and one below, minus its own (visibility/shade.glsl computes them analytically).
+    vec2 uvDx[CANDELA_TEX_COUNT], uvDy[CANDELA_TEX_COUNT];
+#ifdef CANDELA_MATERIAL_LAYERS
+    vec2 layerUvDx[CANDELA_LAYER_TEX_COUNT], layerUvDy[CANDELA_LAYER_TEX_COUNT];
+#endif
 #endif
 };
 

@@ -22,6 +22,14 @@ struct TonemapParams {
     /*Ignore*/ float pad0, pad1, pad2;
 };
 
+// The sky tonemap_sky.frag composites under the image (shared/sky.glsl), after TonemapParams in its
+// push constants (128 bytes together).
+struct TonemapSky {
+    /*Ignore*/ mat4 inverseViewProjection;
+    /*Ignore*/ vec4 eyeIntensity;  // xyz: camera position (world); w: the environment's intensity
+    /*Ignore*/ vec4 rotationLod;   // xy: the environment rotation (IblParams::rotation); z: the mip shown; w unused
+};
+
 // Khronos PBR Neutral (https://github.com/KhronosGroup/ToneMapping, reference implementation).
 CANDELA_FN vec3 tonemapPbrNeutral(vec3 color) {
     float startCompression = 0.8f - 0.04f;
@@ -106,6 +114,7 @@ CANDELA_NAMESPACE_END
 
 #ifdef __cplusplus
 static_assert(sizeof(candela::shading::TonemapParams) == 32);
+static_assert(sizeof(candela::shading::TonemapParams) + sizeof(candela::shading::TonemapSky) == 128);
 #endif
 
 #endif

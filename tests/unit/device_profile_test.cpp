@@ -39,7 +39,7 @@ DeviceCaps generousDevice() {
                    .maxBufferSize = uint64_t(1) << 40,
                    .maxMemoryAllocationCount = 1u << 20};
     caps.features = {.samplerAnisotropy = true, .alphaToOne = true, .fullDrawIndexUint32 = true,
-                     .shaderStorageImageExtendedFormats = true};
+                     .shaderStorageImageExtendedFormats = true, .geometryShader = true};
     caps.extensions = {.memoryBudget = true};
     caps.memory.memoryTypeCount = 2;
     caps.memory.memoryTypes[0].propertyFlags = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
@@ -124,7 +124,7 @@ TEST(DeviceChoices, FallbacksFollowTheMissingFormatFeatures) {
     EXPECT_EQ(minimum.floatCube, VK_FORMAT_R16G16B16A16_SFLOAT);
     EXPECT_EQ(minimum.sheenLut, VK_FORMAT_R16G16B16A16_SFLOAT);
     EXPECT_EQ(minimum.brdfLut, VK_FORMAT_R16G16B16A16_SFLOAT);
-    ASSERT_EQ(minimum.fallbacks.size(), 4u);
+    ASSERT_EQ(minimum.fallbacks.size(), 5u);
     EXPECT_NE(minimum.fallbacks[2].find("BRDF LUT: R16G16B16A16_SFLOAT instead of R16G16_SFLOAT (no STORAGE_IMAGE)"),
               std::string::npos)
         << minimum.fallbacks[2];
@@ -132,11 +132,19 @@ TEST(DeviceChoices, FallbacksFollowTheMissingFormatFeatures) {
     EXPECT_TRUE(minimum.specializeLayeredProgram);
     EXPECT_NE(minimum.fallbacks[3].find("samplers in the fragment stage, the device allows 16"), std::string::npos)
         << minimum.fallbacks[3];
+    // No gl_PrimitiveID in the fragment stage (geometryShader): the forward path only.
+    EXPECT_NE(minimum.visibilityUnsupported.find("geometryShader"), std::string::npos) << minimum.visibilityUnsupported;
+    EXPECT_NE(minimum.fallbacks[4].find("shading: the forward path only"), std::string::npos) << minimum.fallbacks[4];
     EXPECT_FALSE(native.specializeLayeredProgram);
-    // Apple: 16 samplers (but every format): only the layered program's fallback.
+    EXPECT_TRUE(native.visibilityUnsupported.empty()) << native.visibilityUnsupported;
+    // Apple: 16 samplers (but every format): the layered program's fallback, and the forward path
+    // only (MoltenVK has no geometry shaders).
     const DeviceChoices apple = chooseForDevice(narrowCaps(generousDevice(), DeviceProfile::Apple));
     EXPECT_TRUE(apple.specializeLayeredProgram);
-    EXPECT_EQ(apple.fallbacks.size(), 1u);
+    ASSERT_EQ(apple.fallbacks.size(), 2u);
+    EXPECT_NE(apple.visibilityUnsupported.find("geometryShader"), std::string::npos);
+    // The desktop report (RTX 4070) has everything the visibility path needs.
+    EXPECT_TRUE(chooseForDevice(narrowCaps(generousDevice(), DeviceProfile::Desktop)).visibilityUnsupported.empty());
 
     // Only the missing feature moves a choice: RG16F with storage keeps the BRDF LUT.
     DeviceCaps partial = narrowCaps(generousDevice(), DeviceProfile::Minimum);

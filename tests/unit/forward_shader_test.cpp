@@ -21,7 +21,8 @@ namespace {
 // only the stage's part — the inputs and how textures are read — is its own.
 constexpr const char* kComputeBody = R"(
 layout(local_size_x = 8) in;
-vec4 materialTexture(sampler2D t, vec2 uv) { return textureLod(t, uv, 0.0f); }
+#define CANDELA_CORE_TEXTURE(inputs, field, slot) textureLod(field##Texture, (inputs).uv[slot], 0.0f)
+#define CANDELA_LAYER_TEXTURE(inputs, field, slot) textureLod(field##Texture, (inputs).layerUv[slot], 0.0f)
 #include "forward/material_eval.glsl"
 #include "forward/lighting.glsl"
 layout(set = 4, binding = 0) writeonly buffer Radiance { vec4 radiance[]; };

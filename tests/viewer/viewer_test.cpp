@@ -328,7 +328,7 @@ TEST_F(ViewerTest, HotReloadRebuildsPipelinesAndKeepsTheOldOnesOnErrors) {
     const int right = before.width * 3 / 4;
 
     // The tonemap writes pure red: the scene half turns red.
-    editFile(shaders / "tonemap.frag.glsl", "outColor = vec4(display, alpha);", "outColor = vec4(1.0, 0.0, 0.0, 1.0);");
+    editFile(shaders / "tonemap" / "composite.glsl", "outColor = vec4(display, alpha);", "outColor = vec4(1.0, 0.0, 0.0, 1.0);");
     frames(1);
     EXPECT_TRUE(mViewer->hotReload().errors().empty());
     EXPECT_GT(mViewer->lastReloadLatencyMs(), -1.0);  // from the save to the GPU finishing the frame
@@ -337,28 +337,29 @@ TEST_F(ViewerTest, HotReloadRebuildsPipelinesAndKeepsTheOldOnesOnErrors) {
     EXPECT_EQ(red.rgba[centre + 0], 255);
     EXPECT_EQ(red.rgba[centre + 1], 0);
 
-    // A compile error is reported with file and line; the red pipeline keeps running.
-    editFile(shaders / "tonemap.frag.glsl", "outColor = vec4(1.0, 0.0, 0.0, 1.0);", "outColor = vec4(1.0, 0.0, 0.0, 1.0) + undefinedThing;");
+    // A compile error is reported with file and line, by each shader that includes the file
+    // (tonemap.frag and tonemap_sky.frag); the red pipeline keeps running.
+    editFile(shaders / "tonemap" / "composite.glsl", "outColor = vec4(1.0, 0.0, 0.0, 1.0);", "outColor = vec4(1.0, 0.0, 0.0, 1.0) + undefinedThing;");
     frames(1);
-    ASSERT_EQ(mViewer->hotReload().errors().size(), 1u);
+    ASSERT_EQ(mViewer->hotReload().errors().size(), 2u);
     const std::string error = mViewer->hotReload().errors()[0];
-    EXPECT_NE(error.find("tonemap.frag.glsl:"), std::string::npos) << error;
+    EXPECT_NE(error.find("composite.glsl:"), std::string::npos) << error;
     EXPECT_NE(error.find("undefinedThing"), std::string::npos) << error;
     const Image stillRed = screenshot("still_red.png");
     EXPECT_EQ(stillRed.rgba[centre + 0], 255);
     EXPECT_EQ(stillRed.rgba[centre + 1], 0);
 
     // A changed descriptor layout is refused too (the sets would not match).
-    editFile(shaders / "tonemap.frag.glsl", " + undefinedThing;", ";");
-    editFile(shaders / "tonemap.frag.glsl", "layout(set = 0, binding = 0) uniform sampler2D hdrImage;",
-             "layout(set = 0, binding = 0) uniform sampler2D hdrImage;\nlayout(set = 0, binding = 1) uniform sampler2D extra;");
+    editFile(shaders / "tonemap" / "composite.glsl", " + undefinedThing;", ";");
+    editFile(shaders / "tonemap" / "composite.glsl", "layout(set = 0, binding = 0) uniform sampler2D hdrImage;",
+             "layout(set = 0, binding = 0) uniform sampler2D hdrImage;\nlayout(set = 0, binding = 5) uniform sampler2D extra;");
     frames(1);
-    ASSERT_EQ(mViewer->hotReload().errors().size(), 1u);
-    EXPECT_NE(mViewer->hotReload().errors()[0].find("descriptor bindings changed"), std::string::npos);
+    ASSERT_EQ(mViewer->hotReload().errors().size(), 2u);  // tonemap.frag and tonemap_sky.frag
+    for (const std::string& e : mViewer->hotReload().errors()) EXPECT_NE(e.find("descriptor bindings changed"), std::string::npos) << e;
 
     // A header edit reaches every shader that includes it.
-    editFile(shaders / "tonemap.frag.glsl", "\nlayout(set = 0, binding = 1) uniform sampler2D extra;", "");
-    editFile(shaders / "tonemap.frag.glsl", "outColor = vec4(1.0, 0.0, 0.0, 1.0);", "outColor = vec4(display, alpha);");
+    editFile(shaders / "tonemap" / "composite.glsl", "\nlayout(set = 0, binding = 5) uniform sampler2D extra;", "");
+    editFile(shaders / "tonemap" / "composite.glsl", "outColor = vec4(1.0, 0.0, 0.0, 1.0);", "outColor = vec4(display, alpha);");
     frames(1);
     EXPECT_TRUE(mViewer->hotReload().errors().empty());
     const Image restored = screenshot("restored.png");

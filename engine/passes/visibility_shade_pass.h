@@ -1,0 +1,80 @@
+#pragma once
+// Visibility shading (compute, docs/shading-paths.md): the pass "visibility_shade" writes the
+// covered pixels of the HDR image (RGBA16F, premultiplied, alpha = coverage, as the forward
+// pass's; cleared to transparent black before, "visibility_clear") from the visibility image — one
+// indirect dispatch per shading list (a shading variant with one material texture set) over the
+// tiles the classification listed for it (visibility_shade*.comp: the forward programs' material
+// and lighting code). A list no pixel needs dispatches no workgroup. The sky is composited later
+// (the tonemap, or the skybox pass).
+
+#include "gpu_scene/gpu_scene.h"
+#include "graph/render_graph.h"
+#include "passes/forward_ibl_set.h"
+#include "passes/forward_layer_set.h"
+#include "passes/forward_pass.h"
+#include "passes/visibility_classify_pass.h"
+#include "passes/visibility_frame.h"
+#include "passes/visibility_texture_sets.h"
+#include "vk/descriptors.h"
+#include "vk/pipeline_cache.h"
+#include "vk/sampler.h"
+
+#include <memory>
+#include <optional>
+
+namespace candela::passes {
+
+class VisibilityShadePass {
+public:
+    explicit VisibilityShadePass(vk::Context& context);
+
+    // Writes the scene's descriptor sets (lights, draws, materials; per texture set its textures
+    // and, where a material of it has layers, the layer parameters and textures). Preconditions as
+    // ForwardPass::setScene; `keys` and `sets` are the scene's and outlive their use.
+    void setScene(const scene::GpuScene& scene, const MaterialKeys& keys, const TextureSets& sets);
+
+    struct Inputs {
+        graph::TextureId visibility;  // VisibilityPass's, 1 sample
+        VisibilityTileLists tiles;
+        graph::BufferId draws;        // the frame's shading::VisibilityDraw table
+        graph::BufferId frameData;    // its shading::VisibilityFrame
+        shading::VisibilityFrame extent;
+        const VisibilityFrameTables* tables = nullptr;
+        const ForwardPass::FrameInputs* frame = nullptr;
+    };
+    // Adds "visibility_clear" and "visibility_shade"; returns the HDR image they write.
+    graph::TextureId add(graph::RenderGraph& graph, const Inputs& in);
+
+    // What a shading pipeline is specialized on: the list's variant, the texture slots its texture
+    // set fills (TextureSets::coreSlots, layerSlots) and whether the frame has deformed vertices.
+    struct ShadeKey {
+        ForwardVariant variant;
+        uint32_t coreSlots = ~0u, layerSlots = ~0u;
+        bool deformed = true;
+        auto operator<=>(const ShadeKey&) const = default;
+    };
+    // The compute pipeline of `key` (built at its first use).
+    const vk::Pipeline& pipeline(const ShadeKey& key);
+
+private:
+    // The programs without pipelines whose set layouts the variants share: the core one (sets 0, 1,
+    // 2 and 4 of every core variant; 0, 2 and 4 of every layered one) and the layered one (its set 1).
+    const vk::Program& program(bool layered);
+
+    vk::Context& mContext;
+    glm::uvec2 mTile;  // visibilityTileSize: the dispatches' workgroup size
+    vk::PipelineCache<ShadeKey> mPipelines;
+    const TextureSets* mTextureSets = nullptr;
+    ForwardIblSet mIblSet;
+    ForwardLayerSet mLayerSet;
+    vk::Sampler mNearest;
+    std::optional<vk::Program> mCoreProgram, mLayeredProgram;
+    const scene::GpuScene* mScene = nullptr;
+    std::unique_ptr<vk::DescriptorAllocator> mSets;
+    VkDescriptorSet mSceneSet = VK_NULL_HANDLE;
+    // Set 1 per texture set, of the core and the layered program (null where no material of the
+    // texture set uses that program).
+    std::vector<VkDescriptorSet> mCoreMaterialSets, mLayeredMaterialSets;
+};
+
+}  // namespace candela::passes

@@ -1,0 +1,70 @@
+#include "render/visibility_path.h"
+
+#include "core/errors.h"
+#include "vk/context.h"
+
+#include <map>
+
+namespace candela {
+
+VisibilityPath::VisibilityPath(vk::Context& context) : mContext(context), mRaster(context), mClassify(context), mShade(context) {}
+
+void VisibilityPath::setScene(const scene::GpuScene& scene, const passes::MaterialKeys& keys) {
+    mUnsupported = mContext.choices().visibilityUnsupported;
+    if (!mUnsupported.empty()) return;
+    const uint64_t range = mContext.caps().limits.maxStorageBufferRange;
+    for (const auto& [what, bytes] : {std::pair("vertices", scene.vertexBytes()), std::pair("indices", scene.indexBytes())})
+        if (bytes > range) {
+            mUnsupported = std::string("the scene's ") + what + " (" + formatBytes(bytes) +
+                           ") pass the device's maxStorageBufferRange (" + formatBytes(range) + ")";
+            return;
+        }
+    mTextureSets = passes::textureSetsOf(scene);
+    mRaster.setScene(scene, mTextureSets);
+    mShade.setScene(scene, keys, mTextureSets);
+}
+
+std::string VisibilityPath::frameUnsupported(const passes::FrameVariant& frame) {
+    if (frame.referenceSamples) return "the ground truth of ibl-report is a forward program";
+    if (frame.samples > 1) return "MSAA frames are drawn by the forward path";
+    return {};
+}
+
+std::optional<passes::DrawTarget> VisibilityPath::add(Frame& frame, const FrameDesc& desc, std::vector<std::string>& notes) {
+    const std::span<const passes::DrawListItem> items = desc.list.ranges(passes::DrawRange::Opaque, passes::DrawRange::Masked);
+    const std::optional<passes::VisibilityFrameTables> tables =
+        passes::visibilityFrameTables(items, desc.keys, mTextureSets.ofMaterial, desc.inputs.variant, desc.inputs.vertexOffset);
+    if (!tables) {
+        notes.push_back("shading path: forward (the frame needs more than " + std::to_string(CANDELA_VISIBILITY_MAX_LISTS) +
+                        " shading lists, the visibility path's limit)");
+        return std::nullopt;
+    }
+    graph::RenderGraph& graph = *frame.graph;
+    const shading::VisibilityFrame extent =
+        passes::visibilityExtent(desc.size.width, desc.size.height, passes::visibilityTileSize(mContext.properties().deviceType),
+                                 static_cast<uint32_t>(tables->lists.size()));
+    std::vector<shading::VisibilityDraw> draws = tables->draws;
+    if (draws.empty()) draws.emplace_back();  // a buffer is never empty
+    const graph::BufferId drawBuffer = frame.addHostUpload("visibility_draws", bytesOf(draws));
+    const graph::BufferId frameData = frame.addHostUpload("visibility_frame", bytesOf(std::vector{extent}));
+    const passes::VisibilityTargets targets = mRaster.add(graph, desc.size, items, desc.keys, desc.inputs, desc.recorded);
+    const passes::VisibilityTileLists tiles = mClassify.add(graph, targets.visibility, drawBuffer, frameData, extent);
+    const graph::TextureId hdr = mShade.add(graph, {.visibility = targets.visibility,
+                                                    .tiles = tiles,
+                                                    .draws = drawBuffer,
+                                                    .frameData = frameData,
+                                                    .extent = extent,
+                                                    .tables = &*tables,
+                                                    .frame = &desc.inputs});
+    std::string line = "shading path: visibility — " + std::to_string(items.size()) + " opaque and masked draws into a " +
+                       std::to_string(desc.size.width) + "×" + std::to_string(desc.size.height) +
+                       " visibility image, classified in " + std::to_string(extent.extent.w) + " tiles of " +
+                       std::to_string(extent.lists.z) + "×" + std::to_string(extent.lists.w) +
+                       "; one compute dispatch per shading list (variant × texture set):";
+    for (const passes::ShadingList& list : tables->lists)
+        line += " " + list.variant.name() + "/textures" + std::to_string(list.textureSet) + " ×" + std::to_string(list.items);
+    notes.push_back(line);
+    return passes::DrawTarget{.color = hdr, .depth = targets.depth, .hdr = hdr};
+}
+
+}  // namespace candela

@@ -1,0 +1,55 @@
+#pragma once
+// VisibilityPath: the visibility shading path of a scene frame (docs/shading-paths.md) — the
+// visibility pass (draw list → depth and per-pixel IDs), classification (tiles → per-list tile
+// lists and indirect arguments) and compute shading (each covered pixel once) —
+// and whether a frame can take it. FrameBuilder adds it instead of the forward pass's opaque draws;
+// the blended and transmissive draws follow on the forward pass either way.
+
+#include "passes/visibility_classify_pass.h"
+#include "passes/visibility_texture_sets.h"
+#include "passes/visibility_pass.h"
+#include "passes/visibility_shade_pass.h"
+#include "render/frame.h"
+
+#include <optional>
+#include <string>
+
+namespace candela {
+
+class VisibilityPath {
+public:
+    explicit VisibilityPath(vk::Context& context);
+
+    // Binds the scene, or records why it cannot take the path (sceneUnsupported()). Preconditions
+    // as ForwardPass::setScene.
+    void setScene(const scene::GpuScene& scene, const passes::MaterialKeys& keys);
+    // Why frames of the current scene cannot take the path ("" if they can): the device's reason,
+    // or the scene's (its vertices or indices past maxStorageBufferRange).
+    const std::string& unsupported() const { return mUnsupported; }
+    // Why a frame of these bits cannot ("" if it can): the ground truth (ibl-report) and MSAA are
+    // drawn by the forward path.
+    static std::string frameUnsupported(const passes::FrameVariant& frame);
+
+    struct FrameDesc {
+        passes::DrawTargetSize size;
+        const passes::DrawList& list;
+        const passes::MaterialKeys& keys;
+        const passes::ForwardPass::FrameInputs& inputs;
+        passes::DrawStats* recorded = nullptr;
+    };
+    // Adds the path's passes for the list's opaque and masked draws: the shaded image (transparent
+    // behind) and the depth, as targets the forward and skybox passes can draw over. nullopt (and
+    // nothing added) when the frame needs more shading lists than a tile's mask holds; `notes` gets
+    // what the path did, or why not.
+    std::optional<passes::DrawTarget> add(Frame& frame, const FrameDesc& desc, std::vector<std::string>& notes);
+
+private:
+    vk::Context& mContext;
+    passes::VisibilityPass mRaster;
+    passes::VisibilityClassifyPass mClassify;
+    passes::VisibilityShadePass mShade;
+    passes::TextureSets mTextureSets;
+    std::string mUnsupported;
+};
+
+}  // namespace candela
