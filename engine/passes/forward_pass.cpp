@@ -160,8 +160,11 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene, const MaterialKeys& 
 
 ForwardPass::FrameInputs ForwardPass::frameInputs(const FrameDesc& desc) {
     FrameInputs out;
+    uint32_t lightTypes = 0;
+    for (const shading::LightData& light : mScene->lights()) lightTypes |= 1u << static_cast<uint32_t>(light.directionType.w);
     out.variant = {.model = desc.model,
                    .lights = mScene->lightCount() > 0,
+                   .lightTypes = lightTypes,
                    .ibl = desc.ibl != nullptr,
                    .irradianceSh = !desc.ibl || desc.ibl->irradianceSh,
                    .multiscatter = !desc.ibl || desc.ibl->multiscatter,

@@ -15,6 +15,7 @@ ForwardVariant forwardVariant(const MaterialKey& key, const FrameVariant& frame)
     v.unlit = key.unlit;
     v.normalMap = key.normalMap;
     v.lights = !key.unlit && frame.lights;
+    v.lightTypes = v.lights ? frame.lightTypes : 0;
     v.alphaMask = key.alphaMask;
     v.blend = key.blend;
     v.model = key.unlit ? ShadingModel::Pbr : frame.model;
@@ -33,7 +34,7 @@ ForwardVariant forwardVariant(const MaterialKey& key, const FrameVariant& frame)
 std::vector<uint32_t> specializationConstants(const ForwardVariant& v) {
     return {v.normalMap,    v.lights,       v.unlit,    v.alphaMask, static_cast<uint32_t>(v.model),
             v.ibl,          v.irradianceSh, v.multiscatter, v.referenceSamples, static_cast<uint32_t>(v.debugView),
-            v.layers,       v.specularAa,   v.alphaToCoverage};
+            v.layers,       v.specularAa,   v.alphaToCoverage, 0, 0, 0, v.lightTypes};
 }
 
 std::string ForwardVariant::name() const {

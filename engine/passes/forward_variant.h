@@ -19,6 +19,7 @@ namespace candela::passes {
 struct FrameVariant {
     ShadingModel model = ShadingModel::Pbr;
     bool lights = false;  // the scene has punctual lights
+    uint32_t lightTypes = 0;  // of which types (bit 1 << CANDELA_LIGHT_*)
     bool ibl = false;     // image-based lighting
     bool irradianceSh = true;
     bool multiscatter = true;
@@ -34,6 +35,7 @@ struct FrameVariant {
 struct ForwardVariant {
     bool normalMap = false;
     bool lights = false;
+    uint32_t lightTypes = 0;  // bit 1 << CANDELA_LIGHT_* (with lights)
     bool unlit = false;
     bool alphaMask = false;
     bool blend = false;
@@ -59,8 +61,9 @@ struct ForwardVariant {
 ForwardVariant forwardVariant(const MaterialKey& key, const FrameVariant& frame);
 
 // The values of the forward programs' specialization constants for `v` (constant_id = index,
-// forward/resources.glsl), shared by the forward pass's pipelines and the visibility path's compute
-// shading. kLayers (10) is there for the core programs too, which ignore it.
+// forward/resources.glsl: 0–12 and 16; 13–15 are zero, the visibility path's shading sets them),
+// shared by the forward pass's pipelines and the visibility path's compute shading. kLayers (10)
+// is there for the core programs too, which ignore it.
 std::vector<uint32_t> specializationConstants(const ForwardVariant& v);
 
 // The layer names of `layers` (scene::MaterialLayer bits), each preceded by "+".

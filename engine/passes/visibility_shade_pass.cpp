@@ -41,7 +41,7 @@ const vk::Pipeline& VisibilityShadePass::pipeline(const ShadeKey& key) {
     if (key.variant.referenceSamples) throw std::logic_error("VisibilityShadePass: the ground truth is drawn by the forward path");
     return mPipelines.get(mContext, key, [&] {
         std::vector<uint32_t> constants = specializationConstants(key.variant);
-        constants.resize(16, 0);
+        constants.resize(std::max<size_t>(constants.size(), 16), 0);
         constants[13] = key.deformed;  // kDeformed, kCoreTextures, kLayerTextures (visibility/shade.glsl)
         constants[14] = key.coreSlots;
         constants[15] = key.layerSlots;

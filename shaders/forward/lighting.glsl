@@ -41,14 +41,22 @@ SurfaceLight plus(SurfaceLight a, SurfaceLight b) {
 }
 
 // Direction to punctual light `light` from world position `p` and its attenuation there.
+bool hasLightType(uint type) { return (kLightTypes & (1u << type)) != 0u; }
+
+// Whether `light` is of `type`: a constant where the frame has that type alone, or not at all.
+bool isLightType(LightData light, uint type) {
+    if (!hasLightType(type)) return false;
+    return kLightTypes == (1u << type) || light.directionType.w == float(type);
+}
+
 vec3 lightDirection(LightData light, vec3 p, out float attenuation) {
     attenuation = 1.0f;
-    if (light.directionType.w == float(CANDELA_LIGHT_DIRECTIONAL)) return -light.directionType.xyz;
+    if (isLightType(light, CANDELA_LIGHT_DIRECTIONAL)) return -light.directionType.xyz;
     vec3 toLight = light.positionRange.xyz - p;
     float distance2 = dot(toLight, toLight);
     vec3 l = toLight * inversesqrt(max(distance2, 1e-30f));
     attenuation = rangeAttenuation(distance2, light.positionRange.w);
-    if (light.directionType.w == float(CANDELA_LIGHT_SPOT)) attenuation *= spotAttenuation(-l, light.directionType.xyz, light.cone);
+    if (isLightType(light, CANDELA_LIGHT_SPOT)) attenuation *= spotAttenuation(-l, light.directionType.xyz, light.cone);
     return l;
 }
 
@@ -63,7 +71,7 @@ SurfaceLight lightRadiance(Surface s, LightData light) {
     SurfaceLight lit = noLight();
 #ifdef CANDELA_MATERIAL_LAYERS
     vec3 lt = l;
-    if (hasLayer(CANDELA_LAYER_VOLUME) && light.directionType.w != float(CANDELA_LIGHT_DIRECTIONAL)) {
+    if (hasLayer(CANDELA_LAYER_VOLUME) && !isLightType(light, CANDELA_LIGHT_DIRECTIONAL)) {
         vec3 toLight = light.positionRange.xyz - (s.position + s.layers.volume.ray);
         lt = dot(toLight, toLight) > 0.0f ? normalize(toLight) : l;
     }

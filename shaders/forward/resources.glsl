@@ -29,6 +29,10 @@ layout(constant_id = 11) const bool kSpecularAa = false;
 // Alpha to coverage (MSAA, alpha-masked materials): the pipeline turns the output alpha into the
 // sample coverage (and stores alpha 1: alphaToOne) instead of the alpha test's all-or-nothing.
 layout(constant_id = 12) const bool kAlphaToCoverage = false;
+// (13–15: the visibility path's compute shading, visibility/shade.glsl.)
+// The punctual light types the frame has (bit 1 << CANDELA_LIGHT_*): the code of the others is
+// compiled out of the light loop (llvmpipe pays for untaken branches).
+layout(constant_id = 16) const uint kLightTypes = 7u;
 
 layout(std430, set = 0, binding = 0) readonly buffer Lights {
     LightData lights[];
