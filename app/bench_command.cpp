@@ -58,6 +58,20 @@ DebugViewSwitch switchDebugView(Renderer& renderer, const RenderSettings& settin
     return out;
 }
 
+// The --explain line saying which shading path the frame took ("shading path: ...").
+std::string shadingPathLine(const std::vector<std::string>& explain) {
+    for (const std::string& line : explain)
+        if (line.starts_with("shading path: ")) return line.substr(14);
+    return "forward";
+}
+
+// Each shading path measured on its own (as the main measurement: frames interleaved with
+// calibration runs, as ratios to them), when the path was not chosen on the command line.
+struct PathMeasurement {
+    passes::ShadingPath path;
+    FrameMeasurement m;
+};
+
 }  // namespace
 
 int runBench(const RenderOptions& options) {
@@ -81,6 +95,13 @@ int runBench(const RenderOptions& options) {
     const double startupMs = msSince(startup);  // the device, the pipeline cache file, the renderer
     const FrameMeasurement m = measureFrames(renderer, settings, options.frames, advance);
     const DebugViewSwitch viewSwitch = switchDebugView(renderer, settings);
+    std::vector<PathMeasurement> paths;
+    if (settings.shadingPath == passes::ShadingPath::Auto)
+        for (const passes::ShadingPath path : {passes::ShadingPath::Forward, passes::ShadingPath::Visibility}) {
+            RenderSettings s = settings;
+            s.shadingPath = path;
+            paths.push_back({path, measureFrames(renderer, s, options.frames, advance)});
+        }
     const std::vector<double>&frameMs = m.frameMs, &calibrationMs = m.calibrationMs, &calibrationGpuMs = m.calibrationGpuMs;
     const passes::DrawStats& drawStats = m.drawStats;
 
@@ -108,6 +129,17 @@ int runBench(const RenderOptions& options) {
                           {"ratioToCalibrationGpu", gpu >= 0.0 && calibrationGpu > 0.0 ? gpu / calibrationGpu : -1.0}});
     }
     out["passes"] = passes;
+    out["shadingPath"] = shadingPathLine(m.explain);
+    nlohmann::ordered_json pathsOut = nlohmann::ordered_json::array();
+    for (const PathMeasurement& p : paths) {
+        const double pathCalibration = median(p.m.calibrationMs);
+        pathsOut.push_back({{"path", passes::shadingPathName(p.path)},
+                            {"took", shadingPathLine(p.m.explain)},
+                            {"medianMs", median(p.m.frameMs)},
+                            {"medianRatio", median(p.m.frameMs) / pathCalibration},
+                            {"minRatio", minimum(p.m.frameMs) / minimum(p.m.calibrationMs)}});
+    }
+    if (!paths.empty()) out["shadingPaths"] = pathsOut;
     out["startupMs"] = startupMs;
     out["firstFrame"] = {{"ms", m.firstFrameMs}, {"ratio", m.firstFrameMs / calibration}};
     out["debugViewSwitch"] = {{"to", passes::debugViewName(viewSwitch.to)},
@@ -188,6 +220,11 @@ int runBench(const RenderOptions& options) {
             std::printf("  animation:   %zu playing, CPU evaluation median %.4f ms, max %.4f ms per frame\n",
                         pose.playing().size(), out["animation"]["evaluateMedianMs"].get<double>(),
                         out["animation"]["evaluateMaxMs"].get<double>());
+        std::printf("  shading:     %s\n", out["shadingPath"].get<std::string>().c_str());
+        for (const auto& p : pathsOut)
+            std::printf("  path %-10s frame median %.2f ms (%.2fx calibration of its own run), min %.2fx: %s\n",
+                        p["path"].get<std::string>().c_str(), p["medianMs"].get<double>(), p["medianRatio"].get<double>(),
+                        p["minRatio"].get<double>(), p["took"].get<std::string>().substr(0, 60).c_str());
         for (const auto& p : passes)
             std::printf("  pass %-12s GPU median %.2f ms (%.2fx calibration GPU)\n", p["name"].get<std::string>().c_str(),
                         p["gpuMedianMs"].get<double>(), p["ratioToCalibrationGpu"].get<double>());

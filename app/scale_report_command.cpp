@@ -1,7 +1,9 @@
 // `candela scale-report`: how the frame's cost grows with the scene. The built-in sphere grid at
 // N × N spheres (framed alike: the same screen area, each sphere smaller as N grows) under the
-// procedural sky, with levels of detail on and off: frame time (and its ratio to the calibration
-// pass of the same run), CPU time to build and record the frame, draws and triangles submitted.
+// procedural sky, with levels of detail on and off, on both shading paths (docs/shading-paths.md;
+// the forward one alone where the device lacks the visibility path): frame time (and its ratio to
+// the calibration pass of the same run), CPU time to build and record the frame, draws and
+// triangles submitted.
 // Writes report.csv, report.md and frame_vs_triangles.png (log-log). See docs/geometry.md.
 
 #include "commands.h"
@@ -25,6 +27,7 @@ namespace {
 struct Row {
     uint32_t side = 0;
     float lodErrorPixels = 0.0f;
+    passes::ShadingPath path = passes::ShadingPath::Forward;
     passes::DrawStats draws;
     double frameMs = 0.0, calibrationMs = 0.0, cpuMs = 0.0, forwardGpuMs = -1.0;
     double ratio() const { return frameMs / calibrationMs; }
@@ -34,31 +37,34 @@ void writeReport(const std::filesystem::path& out, const std::vector<Row>& rows,
                  const std::string& device) {
     std::ofstream csv(out / "report.csv");
     csv << "side,lod_error_px,scene_draws,submitted_draws,culled_draws,scene_triangles,submitted_triangles,frame_ms,"
-           "calibration_ms,frame_ratio,cpu_ms,forward_gpu_ms\n";
+           "calibration_ms,frame_ratio,cpu_ms,forward_gpu_ms,shading_path\n";
     for (const Row& r : rows)
         csv << r.side << "," << r.lodErrorPixels << "," << r.draws.sceneDraws << "," << r.draws.submittedDraws << ","
             << r.draws.culledDraws << "," << r.draws.sceneTriangles << "," << r.draws.submittedTriangles << "," << r.frameMs
-            << "," << r.calibrationMs << "," << r.ratio() << "," << r.cpuMs << "," << r.forwardGpuMs << "\n";
+            << "," << r.calibrationMs << "," << r.ratio() << "," << r.cpuMs << "," << r.forwardGpuMs << ","
+            << passes::shadingPathName(r.path) << "\n";
     std::ofstream md(out / "report.md");
     md << "# Scale report\n\nThe built-in sphere grid at N × N spheres, framed alike, under the procedural sky, "
        << options.width << "×" << options.height << " on " << device << ", median of " << options.frames
        << " frames; frame time as a ratio to the calibration pass of the same run.\n\n"
-       << "| N | draws | levels of detail | triangles in the scene | submitted | frame / calibration | CPU build + record (ms) |\n"
-       << "|---|---|---|---|---|---|---|\n";
+       << "| N | draws | levels of detail | shading path | triangles in the scene | submitted | frame / calibration | CPU build + record (ms) |\n"
+       << "|---|---|---|---|---|---|---|---|\n";
     for (const Row& r : rows) {
         char line[256];
-        std::snprintf(line, sizeof line, "| %u | %u | %s | %llu | %llu | %.2f× | %.2f |\n", r.side, r.draws.sceneDraws,
-                      r.lodErrorPixels > 0.0f ? "on" : "off", (unsigned long long)r.draws.sceneTriangles,
+        std::snprintf(line, sizeof line, "| %u | %u | %s | %s | %llu | %llu | %.2f× | %.2f |\n", r.side, r.draws.sceneDraws,
+                      r.lodErrorPixels > 0.0f ? "on" : "off", passes::shadingPathName(r.path), (unsigned long long)r.draws.sceneTriangles,
                       (unsigned long long)r.draws.submittedTriangles, r.ratio(), r.cpuMs);
         md << line;
     }
     io::PlotSpec plot{.title = "Frame time against scene triangles (N x N sphere grid)",
                       .xLabel = "triangles in the scene",
                       .yLabel = "frame time / calibration",
-                      .series = {"levels of detail on", "levels of detail off"},
+                      .series = {"levels of detail on, forward", "levels of detail off, forward", "levels of detail on, visibility",
+                                 "levels of detail off, visibility"},
                       .paretoLine = false};
     for (const Row& r : rows)
-        plot.points.push_back({double(r.draws.sceneTriangles), r.ratio(), "N=" + std::to_string(r.side), r.lodErrorPixels > 0.0f ? 0u : 1u});
+        plot.points.push_back({double(r.draws.sceneTriangles), r.ratio(), "N=" + std::to_string(r.side),
+                               (r.lodErrorPixels > 0.0f ? 0u : 1u) + (r.path == passes::ShadingPath::Visibility ? 2u : 0u)});
     io::writeLogLogPlot(out / "frame_vs_triangles.png", plot);
 }
 
@@ -72,21 +78,25 @@ int runScaleReport(const ScaleReportOptions& options) {
     // The renderer keeps pointing at the last scene it drew: every scene lives until the end.
     std::list<scene::Scene> scenes;
     std::vector<Row> rows;
-    Progress progress("scale-report", options.sizes.size() * 2, options.common.quiet);
+    std::vector<passes::ShadingPath> paths = {passes::ShadingPath::Forward};
+    if (context.choices().visibilityUnsupported.empty()) paths.push_back(passes::ShadingPath::Visibility);
+    Progress progress("scale-report", options.sizes.size() * 2 * paths.size(), options.common.quiet);
     for (uint32_t side : options.sizes) {
         const scene::Scene& grid = scenes.emplace_back(scene::makeSphereGrid(side));
-        for (const float lodError : {options.lodErrorPixels, 0.0f}) {
+        for (const float lodError : {options.lodErrorPixels, 0.0f})
+        for (const passes::ShadingPath path : paths) {
             RenderSettings settings{.width = options.width, .height = options.height, .scene = &grid, .environment = &sky};
             settings.drawSelection.lodErrorPixels = lodError;
+            settings.shadingPath = path;
             renderer.validateSettings(settings);
             const FrameMeasurement m = measureFrames(renderer, settings, options.frames);
-            Row row{.side = side, .lodErrorPixels = lodError, .draws = m.drawStats, .frameMs = median(m.frameMs),
+            Row row{.side = side, .lodErrorPixels = lodError, .path = path, .draws = m.drawStats, .frameMs = median(m.frameMs),
                     .calibrationMs = median(m.calibrationMs), .cpuMs = median(m.cpuMs)};
             if (auto forward = m.passGpuMs.find("forward"); forward != m.passGpuMs.end()) row.forwardGpuMs = median(forward->second);
             rows.push_back(row);
-            char detail[160];
-            std::snprintf(detail, sizeof detail, "N=%u, levels of detail %s: %.2fx calibration, %llu of %llu triangles", side,
-                          lodError > 0.0f ? "on" : "off", row.ratio(), (unsigned long long)row.draws.submittedTriangles,
+            char detail[200];
+            std::snprintf(detail, sizeof detail, "N=%u, levels of detail %s, %s: %.2fx calibration, %llu of %llu triangles", side,
+                          lodError > 0.0f ? "on" : "off", passes::shadingPathName(path), row.ratio(), (unsigned long long)row.draws.submittedTriangles,
                           (unsigned long long)row.draws.sceneTriangles);
             progress.step(rows.size(), detail);
         }

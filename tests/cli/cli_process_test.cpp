@@ -481,14 +481,18 @@ TEST(Cli, ScaleReportSweepsGridSizesWithLevelsOfDetailOnAndOff) {
             start = comma + 1;
         }
     }
-    ASSERT_EQ(rows.size(), 4u);  // 1 and 3, levels of detail on (1 px) and off
-    EXPECT_EQ(rows[2][0], "3");
-    EXPECT_EQ(rows[2][2], "9");                       // draws
-    EXPECT_EQ(std::stoull(rows[2][5]), 9ull * 3968);  // 64 × 32 spheres: 64 × (2 · 32 − 2) triangles
-    EXPECT_EQ(rows[3][1], "0");
-    EXPECT_EQ(rows[3][6], rows[3][5]);                // off: every triangle
-    EXPECT_LT(std::stoull(rows[2][6]), std::stoull(rows[2][5]) / 10);  // on, 64 × 36 pixels: the coarsest levels
-    EXPECT_NE(r.stderrText.find("scale-report: 4/4"), std::string::npos) << r.stderrText;
+    // 1 and 3, levels of detail on (1 px) and off, each on the forward and the visibility path.
+    ASSERT_EQ(rows.size(), 8u);
+    EXPECT_EQ(rows[4][0], "3");
+    EXPECT_EQ(rows[4][2], "9");                       // draws
+    EXPECT_EQ(std::stoull(rows[4][5]), 9ull * 3968);  // 64 × 32 spheres: 64 × (2 · 32 − 2) triangles
+    EXPECT_EQ(rows[4].back(), "forward");
+    EXPECT_EQ(rows[5].back(), "visibility");
+    EXPECT_EQ(rows[5][6], rows[4][6]);                // the same draws on both paths
+    EXPECT_EQ(rows[6][1], "0");
+    EXPECT_EQ(rows[6][6], rows[6][5]);                // off: every triangle
+    EXPECT_LT(std::stoull(rows[4][6]), std::stoull(rows[4][5]) / 10);  // on, 64 × 36 pixels: the coarsest levels
+    EXPECT_NE(r.stderrText.find("scale-report: 8/8"), std::string::npos) << r.stderrText;
     std::filesystem::remove_all(dir);
 }
 

@@ -1,0 +1,104 @@
+// The visibility shading path (docs/shading-paths.md) beside the forward one: the passes it
+// schedules, debug views through both paths, and the frames that fall back to the forward path.
+// (Every golden case is also compared through both paths: golden_test.cpp, ShadingPathsAgree.)
+#include "gpu_test.h"
+
+#include "assets/builtin_scenes.h"
+#include "assets/procedural_sky.h"
+#include "render/renderer.h"
+
+#include <algorithm>
+
+namespace candela::test {
+namespace {
+
+constexpr uint32_t kWidth = 320, kHeight = 180;
+
+class ShadingPathTest : public GpuTest {
+protected:
+    void SetUp() override {
+        GpuTest::SetUp();
+        if (!context().choices().visibilityUnsupported.empty()) GTEST_SKIP() << context().choices().visibilityUnsupported;
+    }
+    CapturedFrame render(passes::ShadingPath path, passes::DebugView view = passes::DebugView::None,
+                         const scene::Environment* environment = nullptr, std::optional<uint32_t> msaa = std::nullopt) {
+        RenderSettings settings{.width = kWidth, .height = kHeight, .scene = &mGrid};
+        settings.shadingPath = path;
+        settings.debugView = view;
+        settings.environment = environment;
+        settings.msaa = msaa;
+        return renderer().capture(settings);
+    }
+    Renderer& renderer() {
+        if (!mRenderer) mRenderer = std::make_unique<Renderer>(context());
+        return *mRenderer;
+    }
+    bool explains(const std::string& fragment) const {
+        const std::vector<std::string> lines = mRenderer->explain();
+        return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(fragment) != std::string::npos; });
+    }
+    bool declares(const std::string& pass) const { return mRenderer->lastGraph().findPass(pass).has_value(); }
+
+    scene::Scene mGrid = scene::makeSphereGrid();
+    std::unique_ptr<Renderer> mRenderer;
+};
+
+// Mean and largest RGB difference, in levels.
+std::pair<double, int> difference(const CapturedFrame& a, const CapturedFrame& b) {
+    double sum = 0.0;
+    int largest = 0;
+    for (size_t i = 0; i < a.rgba8.size(); i += 4)
+        for (int ch = 0; ch < 3; ++ch) {
+            const int d = std::abs(int(a.rgba8[i + ch]) - int(b.rgba8[i + ch]));
+            sum += d;
+            largest = std::max(largest, d);
+        }
+    return {sum / double(a.rgba8.size() / 4 * 3), largest};
+}
+
+TEST_F(ShadingPathTest, VisibilityFramesScheduleItsPassesInsteadOfTheForwardOnes) {
+    const scene::Environment sky = scene::makeProceduralSky();
+    render(passes::ShadingPath::Visibility, passes::DebugView::None, &sky);
+    for (const char* pass : {"visibility", "visibility_classify", "visibility_clear", "visibility_shade", "tonemap"})
+        EXPECT_TRUE(declares(pass)) << pass;
+    // The sky is composited by the tonemap: no skybox pass, no forward draws.
+    EXPECT_FALSE(declares("forward"));
+    EXPECT_FALSE(declares("skybox"));
+    EXPECT_TRUE(explains("shading path: visibility"));
+    EXPECT_TRUE(explains("sky: composited under the image by the tonemap"));
+
+    render(passes::ShadingPath::Forward, passes::DebugView::None, &sky);
+    EXPECT_TRUE(declares("forward"));
+    EXPECT_TRUE(declares("skybox"));
+    EXPECT_FALSE(declares("visibility"));
+    EXPECT_TRUE(explains("shading path: forward"));
+}
+
+// Every debug view shows the same data through both paths (same tolerance as the goldens'
+// comparison of the paths: mean ≤ 0.05 levels; the grid has no textures, so no level-of-detail
+// difference: every channel within 2 levels).
+TEST_F(ShadingPathTest, DebugViewsAgreeOnBothPaths) {
+    for (passes::DebugView view : passes::allDebugViews()) {
+        const CapturedFrame forward = render(passes::ShadingPath::Forward, view);
+        const CapturedFrame visibility = render(passes::ShadingPath::Visibility, view);
+        ASSERT_TRUE(explains("shading path: visibility")) << passes::debugViewName(view);
+        const auto [mean, largest] = difference(forward, visibility);
+        EXPECT_LE(mean, 0.05) << passes::debugViewName(view);
+        EXPECT_LE(largest, 2) << passes::debugViewName(view);
+    }
+}
+
+TEST_F(ShadingPathTest, MsaaFramesTakeTheForwardPathAndSayWhy) {
+    render(passes::ShadingPath::Visibility, passes::DebugView::None, nullptr, 4);
+    EXPECT_TRUE(declares("forward"));
+    EXPECT_FALSE(declares("visibility"));
+    EXPECT_TRUE(explains("shading path: forward (MSAA frames are drawn by the forward path)"));
+}
+
+TEST_F(ShadingPathTest, AutoIsTheDevicesDefault) {
+    render(passes::ShadingPath::Auto);
+    EXPECT_TRUE(explains("shading path: forward (the device's default)"));
+}
+
+}  // namespace
+}  // namespace candela::test
