@@ -11,6 +11,7 @@
 #include "core/progress.h"
 #include "graph/graph_export.h"
 #include "render/renderer.h"
+#include "render/visibility_path.h"
 #include "scene/material_variants.h"
 #include "shared/tonemap.h"
 #include "vk/check.h"
@@ -211,6 +212,8 @@ int runInfo(const InfoOptions& options) {
                                           : "not supported");
     const vk::MsaaChoice msaa = vk::chooseMsaa(context.properties().deviceType, context.attachmentSampleCounts(), std::nullopt);
     std::printf("  MSAA: %s; supported: %s\n", msaa.reason.c_str(), vk::sampleCountList(context.attachmentSampleCounts()).c_str());
+    const auto [shadingPath, shadingWhy] = defaultShadingPath(context);
+    std::printf("  shading path: %s (%s; --shading-path)\n", passes::shadingPathName(shadingPath), shadingWhy.c_str());
     const vk::DeviceCaps& caps = context.caps();
     std::printf("  device profile: %s (%s)\n", r.profile.c_str(), vk::deviceProfileSource(context.profile()));
     std::printf("  per-stage limits: %u samplers, %u sampled images, %u storage buffers, %u storage images\n",

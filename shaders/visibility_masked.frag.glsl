@@ -10,6 +10,10 @@
 // shared/forward_tables.h), bound per draw.
 layout(set = 1, binding = 0) uniform sampler2D baseColorTexture;
 
+// Alpha to coverage (MSAA, the device has alphaToOne: as the forward pass decides) over kSamples.
+layout(constant_id = 0) const bool kAlphaToCoverage = false;
+layout(constant_id = 1) const uint kSamples = 1u;
+
 layout(location = 0) flat in uint inEntry;
 layout(location = 1) in vec2 inUv;
 layout(location = 2) in float inAlpha;
@@ -18,6 +22,17 @@ layout(location = 0) out uvec2 outId;
 void main() {
     MaterialData m = materials[draws[inEntry].material.x];
     float alpha = m.baseColorFactor.a * inAlpha * texture(baseColorTexture, inUv).a;
-    if (alpha < m.alphaCutoff) demote;
+    if (kAlphaToCoverage) {
+        // As the forward pass's alpha to coverage: alpha sharpened to cross the cutoff over one
+        // pixel, then that share of the samples (the integer visibility image has no alpha for the
+        // pipeline to turn into coverage, so the mask is written here).
+        float coverage = clamp((alpha - m.alphaCutoff) / max(fwidth(alpha), 1e-4f) + 0.5f, 0.0f, 1.0f);
+        uint covered = uint(coverage * float(kSamples) + 0.5f);
+        if (covered == 0u) demote;
+        gl_SampleMask[0] = int((1u << covered) - 1u);
+    } else {
+        if (alpha < m.alphaCutoff) demote;
+        gl_SampleMask[0] = -1;  // written on every path: an unwritten mask is undefined
+    }
     outId = uvec2(inEntry + 1u, uint(gl_PrimitiveID));
 }

@@ -50,8 +50,10 @@ bool isAttachment(Usage usage) {
     return usage == Usage::ColorAttachment || usage == Usage::DepthAttachment || usage == Usage::DepthRead;
 }
 
-// Multisampled images are attachments only; a pass's attachments share one sample count; a
-// resolve names a multisampled colour attachment the pass writes. Precondition: indices checked.
+// Multisampled images are attachments, or read sample by sample through a sampler (texelFetch of a
+// sampler2DMS: the visibility path's classification and shading); a pass's attachments share one
+// sample count; a resolve names a multisampled colour attachment the pass writes. Precondition:
+// indices checked.
 void checkMultisampling(const GraphDecl& decl, const PassDecl& pass) {
     uint32_t samples = 0;
     for (const auto* list : {&pass.reads, &pass.writes})
@@ -59,9 +61,10 @@ void checkMultisampling(const GraphDecl& decl, const PassDecl& pass) {
             const ResourceDecl& resource = decl.resources[access.resource];
             const uint32_t count = resource.texture.samples;
             if (resource.kind != ResourceKind::Texture) continue;
-            if (count > 1 && !isAttachment(access.usage))
+            if (count > 1 && !isAttachment(access.usage) && access.usage != Usage::Sampled)
                 throw GraphError("pass " + quoted(pass.name) + " uses multisampled " + quoted(resource.name) + " as " +
-                                 usageName(access.usage) + ": a multisampled image is an attachment only (resolve it to read it)");
+                                 usageName(access.usage) +
+                                 ": a multisampled image is an attachment or sampled (resolve it to use it otherwise)");
             if (!isAttachment(access.usage)) continue;
             if (samples != 0 && count != samples)
                 throw GraphError("pass " + quoted(pass.name) + " draws into attachments of " + std::to_string(samples) +

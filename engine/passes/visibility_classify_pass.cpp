@@ -16,8 +16,10 @@ VisibilityClassifyPass::VisibilityClassifyPass(vk::Context& context)
 
 VisibilityTileLists VisibilityClassifyPass::add(RenderGraph& graph, TextureId visibility, BufferId draws, BufferId frameData,
                                                 const shading::VisibilityFrame& extent) {
-    const vk::Pipeline* classify =
-        &mPipelines.get(mContext, 0, [&] { return vk::Pipeline::compute(mContext, "visibility_classify.comp"); });
+    const bool msaa = extent.samples.x > 1;
+    const vk::Pipeline* classify = &mPipelines.get(mContext, msaa ? 2 : 0, [&] {
+        return vk::Pipeline::compute(mContext, msaa ? "visibility_classify_msaa.comp" : "visibility_classify.comp");
+    });
     const vk::Pipeline* tiles = &mPipelines.get(mContext, 1, [&] { return vk::Pipeline::compute(mContext, "visibility_tiles.comp"); });
     const uint32_t lists = std::max(extent.lists.x, 1u);  // buffers are never empty
     struct Data {

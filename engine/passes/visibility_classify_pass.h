@@ -22,7 +22,7 @@ class VisibilityClassifyPass {
 public:
     explicit VisibilityClassifyPass(vk::Context& context);
 
-    // Adds "visibility_classify" reading `visibility` (1 sample) and the frame's `draws`
+    // Adds "visibility_classify" reading `visibility` (extent.samples.x samples) and the frame's `draws`
     // (shading::VisibilityDraw per draw entry) and `frameData` (shading::VisibilityFrame, whose
     // contents `extent` gives): extent.lists.x tile lists.
     VisibilityTileLists add(graph::RenderGraph& graph, graph::TextureId visibility, graph::BufferId draws,
@@ -30,7 +30,7 @@ public:
 
 private:
     vk::Context& mContext;
-    vk::PipelineCache<int> mPipelines;  // 0: classify, 1: tiles
+    vk::PipelineCache<int> mPipelines;  // 0: classify, 1: tiles, 2: classify a multisampled image
     vk::Sampler mNearest;               // the visibility image is read with texelFetch
 };
 

@@ -30,7 +30,9 @@ std::optional<VisibilityFrameTables> visibilityFrameTables(std::span<const DrawL
                                            [&](const ShadingList& l) { return l.variant == v && l.textureSet == textureSet; });
             found->second = static_cast<uint32_t>(same - out.lists.begin());
             if (same == out.lists.end()) {
-                if (out.lists.size() == CANDELA_VISIBILITY_MAX_LISTS) return std::nullopt;
+                // With MSAA each list has a tile list per distinct triangle a pixel's samples show.
+                const size_t limit = CANDELA_VISIBILITY_MAX_LISTS / std::max(frame.samples, 1u);
+                if (out.lists.size() == limit) return std::nullopt;
                 out.lists.push_back({.variant = v, .textureSet = textureSet});
             }
         }
@@ -50,11 +52,13 @@ glm::uvec2 visibilityTileSize(VkPhysicalDeviceType deviceType) {
     return deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? glm::uvec2(8, 1) : glm::uvec2(8, 8);
 }
 
-shading::VisibilityFrame visibilityExtent(uint32_t width, uint32_t height, glm::uvec2 tile, uint32_t lists) {
+shading::VisibilityFrame visibilityExtent(uint32_t width, uint32_t height, glm::uvec2 tile, uint32_t lists, uint32_t samples) {
     const uint32_t tilesX = (width + tile.x - 1) / tile.x;
     const uint32_t tilesY = (height + tile.y - 1) / tile.y;
+    const uint32_t tileLists = samples * lists;  // with MSAA a pixel's k-th distinct triangle: list k · lists + l
     return {.extent = glm::uvec4(width, height, tilesX, tilesX * tilesY),
-            .lists = glm::uvec4(lists, std::max(1u, (lists + 31) / 32), tile)};
+            .lists = glm::uvec4(tileLists, std::max(1u, (tileLists + 31) / 32), tile),
+            .samples = glm::uvec4(samples, lists, 0, 0)};
 }
 
 }  // namespace candela::passes

@@ -40,7 +40,8 @@ struct VisibilityFrameTables {
 // The tables of `items` (the opaque and masked ranges of the frame's draw list) drawn with `frame`'s
 // bits; `textureSetOf`, per scene material, its texture set; `vertexOffset`, per scene draw, maps a
 // deformed draw's indices into the deformed vertices (ForwardPass::kRestVertices or empty: the
-// scene's own). nullopt when the frame needs more than CANDELA_VISIBILITY_MAX_LISTS lists.
+// scene's own). nullopt when the frame needs more than CANDELA_VISIBILITY_MAX_LISTS lists (a
+// quarter of that at 4 samples: each list has a tile list per distinct triangle in a pixel).
 std::optional<VisibilityFrameTables> visibilityFrameTables(std::span<const DrawListItem> items, const MaterialKeys& keys,
                                                            std::span<const uint32_t> textureSetOf, const FrameVariant& frame,
                                                            std::span<const int32_t> vertexOffset);
@@ -51,7 +52,8 @@ std::optional<VisibilityFrameTables> visibilityFrameTables(std::span<const DrawL
 glm::uvec2 visibilityTileSize(VkPhysicalDeviceType deviceType);
 
 // The classification's tiling of a `width` × `height` image in tiles of `tile` pixels with `lists`
-// shading lists.
-shading::VisibilityFrame visibilityExtent(uint32_t width, uint32_t height, glm::uvec2 tile, uint32_t lists);
+// shading lists at `samples` samples per pixel (with MSAA each list has a tile list for the k-th
+// distinct triangle of its pixels, k < samples: visibility/shade.glsl).
+shading::VisibilityFrame visibilityExtent(uint32_t width, uint32_t height, glm::uvec2 tile, uint32_t lists, uint32_t samples = 1);
 
 }  // namespace candela::passes

@@ -23,6 +23,7 @@ const vk::Pipeline& VisibilityPass::pipeline(const Variant& v) {
                                       .vertexBindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}},
                                       .vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)}}};
         if (v.masked) {
+            desc.specialization = {v.alphaToCoverage, v.samples};  // kAlphaToCoverage, kSamples
             desc.vertexAttributes.push_back({3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv0)});
             desc.vertexAttributes.push_back({4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv1)});
             desc.vertexAttributes.push_back({5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, color)});
@@ -72,7 +73,9 @@ VisibilityTargets VisibilityPass::add(RenderGraph& graph, const DrawTargetSize& 
     recorded.reserve(items.size());
     for (const DrawListItem& item : items) {
         const bool masked = keys.keys[item.key].alphaMask;
-        recorded.push_back({.pipeline = &pipeline({.masked = masked, .samples = size.samples}),
+        recorded.push_back({.pipeline = &pipeline({.masked = masked,
+                                                   .samples = size.samples,
+                                                   .alphaToCoverage = masked && frame.variant.alphaToCoverage}),
                             .masked = masked,
                             .baseColor = masked ? mBaseColorSets[mTextureSets->ofMaterial[item.material]] : VK_NULL_HANDLE,
                             .item = item,

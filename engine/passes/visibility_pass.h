@@ -44,6 +44,7 @@ private:
     struct Variant {
         bool masked = false;
         uint32_t samples = 1;
+        bool alphaToCoverage = false;  // masked draws at MSAA (FrameVariant::alphaToCoverage)
         auto operator<=>(const Variant&) const = default;
     };
     const vk::Pipeline& pipeline(const Variant& variant);

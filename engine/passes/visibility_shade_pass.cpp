@@ -16,7 +16,10 @@ using namespace graph;
 
 namespace {
 constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-const char* shaderOf(bool layered) { return layered ? "visibility_shade_layers.comp" : "visibility_shade.comp"; }
+const char* shaderOf(bool layered, bool msaa) {
+    if (msaa) return layered ? "visibility_shade_layers_msaa.comp" : "visibility_shade_msaa.comp";
+    return layered ? "visibility_shade_layers.comp" : "visibility_shade.comp";
+}
 
 // `constants` with the tile size (the workgroup size) appended at its constant ids.
 std::vector<uint32_t> withTileSize(std::vector<uint32_t> constants, glm::uvec2 tile) {
@@ -33,7 +36,7 @@ VisibilityShadePass::VisibilityShadePass(vk::Context& context)
 
 const vk::Program& VisibilityShadePass::program(bool layered) {
     std::optional<vk::Program>& p = layered ? mLayeredProgram : mCoreProgram;
-    if (!p || p->stale()) p.emplace(mContext, std::vector<std::string_view>{shaderOf(layered)});
+    if (!p || p->stale()) p.emplace(mContext, std::vector<std::string_view>{shaderOf(layered, false)});
     return *p;
 }
 
@@ -41,11 +44,14 @@ const vk::Pipeline& VisibilityShadePass::pipeline(const ShadeKey& key) {
     if (key.variant.referenceSamples) throw std::logic_error("VisibilityShadePass: the ground truth is drawn by the forward path");
     return mPipelines.get(mContext, key, [&] {
         std::vector<uint32_t> constants = specializationConstants(key.variant);
-        constants.resize(std::max<size_t>(constants.size(), 16), 0);
-        constants[13] = key.deformed;  // kDeformed, kCoreTextures, kLayerTextures (visibility/shade.glsl)
+        constants.resize(std::max<size_t>(constants.size(), 19), 0);
+        constants[13] = key.deformed;  // kDeformed, kCoreTextures, kLayerTextures, kDistinct, kSamples (visibility/shade.glsl)
         constants[14] = key.coreSlots;
         constants[15] = key.layerSlots;
-        return vk::Pipeline::compute(mContext, shaderOf(key.variant.layers != 0), withTileSize(std::move(constants), mTile));
+        constants[17] = key.distinct;
+        constants[18] = key.variant.samples;
+        return vk::Pipeline::compute(mContext, shaderOf(key.variant.layers != 0, key.variant.samples > 1),
+                                     withTileSize(std::move(constants), mTile));
     });
 }
 
@@ -96,12 +102,17 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
     };
     std::vector<Dispatch> dispatches;
     bool anyLayered = false;
-    for (const ShadingList& list : in.tables->lists) {
+    // The tile lists in order: the shading lists, then with MSAA theirs for each further distinct
+    // triangle of a pixel (after every first one is stored).
+    const size_t lists = in.tables->lists.size();
+    for (size_t i = 0; i < in.extent.lists.x; ++i) {
+        const ShadingList& list = in.tables->lists[i % lists];
         const bool layered = list.variant.layers != 0;
         const ShadeKey key{.variant = list.variant,
                            .coreSlots = mTextureSets->coreSlots[list.textureSet],
                            .layerSlots = mTextureSets->layerSlots[list.textureSet],
-                           .deformed = frame.deformed.valid()};
+                           .deformed = frame.deformed.valid(),
+                           .distinct = static_cast<uint32_t>(i / lists)};
         dispatches.push_back({&pipeline(key), layered,
                               (layered ? mLayeredMaterialSets : mCoreMaterialSets).at(list.textureSet)});
         anyLayered = anyLayered || layered;

@@ -4,8 +4,10 @@
 // pass's; cleared to transparent black before, "visibility_clear") from the visibility image — one
 // indirect dispatch per shading list (a shading variant with one material texture set) over the
 // tiles the classification listed for it (visibility_shade*.comp: the forward programs' material
-// and lighting code). A list no pixel needs dispatches no workgroup. The sky is composited later
-// (the tonemap, or the skybox pass).
+// and lighting code); with MSAA one per list and k-th distinct triangle of a pixel's samples, each
+// shaded once, weighted by its samples' share and summed (the resolve; k > 0 only on triangle
+// edges). A list no pixel needs dispatches no workgroup. The sky is composited later (the tonemap,
+// or the skybox pass).
 
 #include "gpu_scene/gpu_scene.h"
 #include "graph/render_graph.h"
@@ -47,10 +49,13 @@ public:
 
     // What a shading pipeline is specialized on: the list's variant, the texture slots its texture
     // set fills (TextureSets::coreSlots, layerSlots) and whether the frame has deformed vertices.
+    // With MSAA (variant.samples > 1), `distinct`: which distinct triangle of a pixel's samples the
+    // pipeline shades (visibility/shade.glsl).
     struct ShadeKey {
         ForwardVariant variant;
         uint32_t coreSlots = ~0u, layerSlots = ~0u;
         bool deformed = true;
+        uint32_t distinct = 0;
         auto operator<=>(const ShadeKey&) const = default;
     };
     // The compute pipeline of `key` (built at its first use).

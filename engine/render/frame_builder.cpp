@@ -31,12 +31,16 @@ void FrameBuilder::sceneUploaded() {
 }
 
 std::pair<passes::ShadingPath, std::string> FrameBuilder::shadingPath(passes::ShadingPath requested,
-                                                                      const passes::FrameVariant& variant) const {
+                                                                      const passes::FrameVariant& variant,
+                                                                      const passes::DrawList& list) const {
     using passes::ShadingPath;
     if (requested == ShadingPath::Forward) return {ShadingPath::Forward, ""};
-    if (requested == ShadingPath::Auto) return {ShadingPath::Forward, "the device's default"};
+    if (requested == ShadingPath::Auto) {
+        const auto [path, why] = defaultShadingPath(mContext);
+        if (path == ShadingPath::Forward) return {ShadingPath::Forward, why};
+    }
     if (!mVisibility.unsupported().empty()) return {ShadingPath::Forward, mVisibility.unsupported()};
-    if (const std::string why = VisibilityPath::frameUnsupported(variant); !why.empty()) return {ShadingPath::Forward, why};
+    if (const std::string why = mVisibility.frameUnsupported(variant, list); !why.empty()) return {ShadingPath::Forward, why};
     return {ShadingPath::Visibility, ""};
 }
 
@@ -181,7 +185,7 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     const bool skybox = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;
     const bool transmission = !list.empty(passes::DrawRange::Transmissive);
     const passes::DrawTargetSize size{settings.width, settings.height, msaa.samples};
-    auto [path, pathReason] = shadingPath(settings.shadingPath, inputs.variant);
+    auto [path, pathReason] = shadingPath(settings.shadingPath, inputs.variant, list);
     std::optional<passes::DrawTarget> visible;
     if (path == passes::ShadingPath::Visibility)
         visible = mVisibility.add(frame, {.size = size, .list = list, .keys = mScene.materialKeys(), .inputs = inputs, .recorded = &mStats},

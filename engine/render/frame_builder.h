@@ -62,9 +62,10 @@ public:
                                         const scene::ScenePose* pose = nullptr);
 
 private:
-    // The shading path of a frame of `variant` asked for `requested`: Visibility or Forward, and
-    // why (for --explain; "" when the request was followed without a reason to give).
-    std::pair<passes::ShadingPath, std::string> shadingPath(passes::ShadingPath requested, const passes::FrameVariant& variant) const;
+    // The shading path of a frame of `variant` drawing `list` asked for `requested`: Visibility or
+    // Forward, and why (for --explain; "" when the request was followed without a reason to give).
+    std::pair<passes::ShadingPath, std::string> shadingPath(passes::ShadingPath requested, const passes::FrameVariant& variant,
+                                                            const passes::DrawList& list) const;
     // Adds the skin_morph pass for the pose's deformed draws; nullopt (and a note) when none is.
     std::optional<passes::ForwardPass::DeformedVertices> addSkinMorph(Frame& frame, const scene::ScenePose& pose);
     // The posed draws' (and moved lights') per-frame buffers of an animated pose.

@@ -24,9 +24,23 @@ void VisibilityPath::setScene(const scene::GpuScene& scene, const passes::Materi
     mShade.setScene(scene, keys, mTextureSets);
 }
 
-std::string VisibilityPath::frameUnsupported(const passes::FrameVariant& frame) {
+std::pair<passes::ShadingPath, std::string> defaultShadingPath(const vk::Context& context) {
+    if (!context.choices().visibilityUnsupported.empty())
+        return {passes::ShadingPath::Forward, "the device's default: the visibility path needs " + context.choices().visibilityUnsupported};
+    if (context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU)
+        return {passes::ShadingPath::Forward,
+                "the device's default: on lavapipe the visibility path measured as fast at one sample and slower at 4 "
+                "(docs/shading-paths.md)"};
+    return {passes::ShadingPath::Forward, "the device's default: the visibility path is not yet measured on GPUs"};
+}
+
+std::string VisibilityPath::frameUnsupported(const passes::FrameVariant& frame, const passes::DrawList& list) const {
     if (frame.referenceSamples) return "the ground truth of ibl-report is a forward program";
-    if (frame.samples > 1) return "MSAA frames are drawn by the forward path";
+    if (frame.samples == 1) return {};
+    if (!(mContext.caps().limits.sampledImageIntegerSampleCounts & frame.samples))
+        return "the device cannot sample a " + std::to_string(frame.samples) + "-sample integer image (the visibility image)";
+    if (!list.empty(passes::DrawRange::Blended) || !list.empty(passes::DrawRange::Transmissive))
+        return "MSAA frames with blended or transmissive draws are drawn by the forward path";
     return {};
 }
 
@@ -42,7 +56,7 @@ std::optional<passes::DrawTarget> VisibilityPath::add(Frame& frame, const FrameD
     graph::RenderGraph& graph = *frame.graph;
     const shading::VisibilityFrame extent =
         passes::visibilityExtent(desc.size.width, desc.size.height, passes::visibilityTileSize(mContext.properties().deviceType),
-                                 static_cast<uint32_t>(tables->lists.size()));
+                                 static_cast<uint32_t>(tables->lists.size()), desc.size.samples);
     std::vector<shading::VisibilityDraw> draws = tables->draws;
     if (draws.empty()) draws.emplace_back();  // a buffer is never empty
     const graph::BufferId drawBuffer = frame.addHostUpload("visibility_draws", bytesOf(draws));
@@ -58,11 +72,14 @@ std::optional<passes::DrawTarget> VisibilityPath::add(Frame& frame, const FrameD
                                                     .frame = &desc.inputs});
     std::string line = "shading path: visibility — " + std::to_string(items.size()) + " opaque and masked draws into a " +
                        std::to_string(desc.size.width) + "×" + std::to_string(desc.size.height) +
+                       (desc.size.samples > 1 ? " " + std::to_string(desc.size.samples) + "-sample" : std::string()) +
                        " visibility image, classified in " + std::to_string(extent.extent.w) + " tiles of " +
                        std::to_string(extent.lists.z) + "×" + std::to_string(extent.lists.w) +
                        "; one compute dispatch per shading list (variant × texture set):";
     for (const passes::ShadingList& list : tables->lists)
         line += " " + list.variant.name() + "/textures" + std::to_string(list.textureSet) + " ×" + std::to_string(list.items);
+    if (desc.size.samples > 1)
+        line += "; then, on triangle edges, each further distinct triangle of a pixel's samples (the resolve in the shading)";
     notes.push_back(line);
     return passes::DrawTarget{.color = hdr, .depth = targets.depth, .hdr = hdr};
 }

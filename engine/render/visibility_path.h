@@ -5,6 +5,7 @@
 // and whether a frame can take it. FrameBuilder adds it instead of the forward pass's opaque draws;
 // the blended and transmissive draws follow on the forward pass either way.
 
+#include "passes/shading_path.h"
 #include "passes/visibility_classify_pass.h"
 #include "passes/visibility_texture_sets.h"
 #include "passes/visibility_pass.h"
@@ -16,6 +17,10 @@
 
 namespace candela {
 
+// The path `--shading-path auto` takes on `context`'s device, and why (for `candela info` and
+// --explain; docs/shading-paths.md, "Choosing the default").
+std::pair<passes::ShadingPath, std::string> defaultShadingPath(const vk::Context& context);
+
 class VisibilityPath {
 public:
     explicit VisibilityPath(vk::Context& context);
@@ -26,9 +31,10 @@ public:
     // Why frames of the current scene cannot take the path ("" if they can): the device's reason,
     // or the scene's (its vertices or indices past maxStorageBufferRange).
     const std::string& unsupported() const { return mUnsupported; }
-    // Why a frame of these bits cannot ("" if it can): the ground truth (ibl-report) and MSAA are
-    // drawn by the forward path.
-    static std::string frameUnsupported(const passes::FrameVariant& frame);
+    // Why a frame of these bits and draws cannot ("" if it can): the ground truth (ibl-report) is a
+    // forward program; an MSAA frame needs the device to sample integer images at its sample count,
+    // and its blended and transmissive draws would need a multisampled image to draw over.
+    std::string frameUnsupported(const passes::FrameVariant& frame, const passes::DrawList& list) const;
 
     struct FrameDesc {
         passes::DrawTargetSize size;

@@ -45,6 +45,7 @@ DeviceCaps queryDeviceCaps(VkPhysicalDevice device) {
     out.maxSamplerAnisotropy = l.maxSamplerAnisotropy;
     out.framebufferColorSampleCounts = l.framebufferColorSampleCounts;
     out.framebufferDepthSampleCounts = l.framebufferDepthSampleCounts;
+    out.sampledImageIntegerSampleCounts = l.sampledImageIntegerSampleCounts;
     out.maxMemoryAllocationSize = p11.maxMemoryAllocationSize;
     out.maxBufferSize = p13.maxBufferSize;
     out.maxMemoryAllocationCount = l.maxMemoryAllocationCount;

@@ -57,6 +57,8 @@ struct DeviceLimits {
     float maxSamplerAnisotropy = 1.0f;
     VkSampleCountFlags framebufferColorSampleCounts = 0;
     VkSampleCountFlags framebufferDepthSampleCounts = 0;
+    // Sample counts of integer images a shader may sample (the visibility path's MSAA visibility image).
+    VkSampleCountFlags sampledImageIntegerSampleCounts = 0;
     uint64_t maxMemoryAllocationSize = 0;  // Vulkan 1.1 (maintenance3)
     uint64_t maxBufferSize = 0;            // Vulkan 1.3 (maintenance4)
     uint32_t maxMemoryAllocationCount = 0;

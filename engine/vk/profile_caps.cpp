@@ -76,6 +76,7 @@ constexpr ProfileData kMinimum{
                .maxSamplerAnisotropy = 1.0f,
                .framebufferColorSampleCounts = VK_SAMPLE_COUNT_1_BIT | VK_SAMPLE_COUNT_4_BIT,
                .framebufferDepthSampleCounts = VK_SAMPLE_COUNT_1_BIT | VK_SAMPLE_COUNT_4_BIT,
+               .sampledImageIntegerSampleCounts = VK_SAMPLE_COUNT_1_BIT,
                .maxMemoryAllocationSize = uint64_t(1) << 30,
                .maxBufferSize = uint64_t(1) << 30,
                .maxMemoryAllocationCount = 4096},
@@ -122,6 +123,7 @@ constexpr ProfileData kDesktop{
                .maxSamplerAnisotropy = 16.0f,
                .framebufferColorSampleCounts = 0xF,  // 1, 2, 4, 8
                .framebufferDepthSampleCounts = 0xF,
+               .sampledImageIntegerSampleCounts = 0xF,  // 1, 2, 4, 8
                .maxMemoryAllocationSize = 4292870144u,
                .maxBufferSize = 1099511562240u,
                .maxMemoryAllocationCount = 4096},
@@ -169,6 +171,7 @@ constexpr ProfileData kApple{
                .maxSamplerAnisotropy = 16.0f,
                .framebufferColorSampleCounts = 0x7,  // 1, 2, 4
                .framebufferDepthSampleCounts = 0x7,
+               .sampledImageIntegerSampleCounts = 0x7,  // 1, 2, 4
                .maxMemoryAllocationSize = 8589934592u,
                .maxBufferSize = 8589934592u,
                .maxMemoryAllocationCount = 1073741824u},
@@ -236,6 +239,7 @@ DeviceCaps narrowCaps(const DeviceCaps& device, DeviceProfile profile) {
     lower(l.maxSamplerAnisotropy, p.maxSamplerAnisotropy);
     l.framebufferColorSampleCounts &= p.framebufferColorSampleCounts;
     l.framebufferDepthSampleCounts &= p.framebufferDepthSampleCounts;
+    l.sampledImageIntegerSampleCounts &= p.sampledImageIntegerSampleCounts;
     lower(l.maxMemoryAllocationSize, p.maxMemoryAllocationSize);
     lower(l.maxBufferSize, p.maxBufferSize);
     lower(l.maxMemoryAllocationCount, p.maxMemoryAllocationCount);

@@ -34,14 +34,18 @@ struct VisibilityDraw {
 // The frame's tiling and lists (a storage buffer of the classification and shading passes).
 struct VisibilityFrame {
     uvec4 extent;  // width, height, tiles in x, tiles in all
-    uvec4 lists;   // x: shading lists, y: mask words per tile, zw: tile size
+    uvec4 lists;   // x: tile lists (N · L with MSAA), y: mask words per tile, zw: tile size
+    // x: samples per pixel, N; y: shading lists, L. With MSAA, tile list k · L + l holds the pixels
+    // whose k-th distinct covered ID (in sample order) shows shading list l (k < N; k > 0: pixels on
+    // triangle edges).
+    uvec4 samples;
 };
 
 CANDELA_NAMESPACE_END
 
 #ifdef __cplusplus
 static_assert(sizeof(candela::shading::VisibilityDraw) == 16);
-static_assert(sizeof(candela::shading::VisibilityFrame) == 32);
+static_assert(sizeof(candela::shading::VisibilityFrame) == 48);
 #endif
 
 #endif

@@ -23,8 +23,20 @@ layout(constant_id = 14) const uint kCoreTextures = 0xffffffffu;
 layout(constant_id = 15) const uint kLayerTextures = 0xffffffffu;
 
 // Set 4: what the visibility pass and the classification produced, and the geometry.
+#ifdef CANDELA_VISIBILITY_MSAA
+// With MSAA (visibility_shade*_msaa.comp) a pixel's samples may show several triangles. The
+// dispatch of "distinct" k shades, in each pixel of its list, the k-th distinct triangle its samples
+// show (in sample order, background skipped), weighted by the share of samples showing it: k = 0
+// stores (every covered pixel has a first), k > 0 adds to it (only pixels on triangle edges have a
+// second) — the resolve is part of shading, and MSAA costs only the edges' extra triangles.
+layout(constant_id = 17) const uint kDistinct = 0u;
+layout(constant_id = 18) const int kSamples = 4;
+layout(set = 4, binding = 0) uniform usampler2DMS visibility;  // per sample (draw entry + 1, primitive); 0: none
+layout(set = 4, binding = 1, rgba16f) uniform image2D shaded;
+#else
 layout(set = 4, binding = 0) uniform usampler2D visibility;  // (draw entry + 1, primitive); 0: none
 layout(set = 4, binding = 1, rgba16f) uniform writeonly image2D shaded;
+#endif
 layout(std430, set = 4, binding = 2) readonly buffer Vertices {
     float vertexFloats[];  // the scene's, CANDELA_VERTEX_FLOATS per vertex (scene::Vertex)
 };
@@ -174,15 +186,50 @@ SurfaceInputs visibleInputs(uint entry, uint primitive, ivec2 pixel, ivec2 size)
     return inputs;
 }
 
+// The shaded colour of `primitive` of draw entry `entry` at `pixel`.
+vec4 shadeVisible(uint entry, uint primitive, ivec2 pixel, ivec2 size) {
+    SurfaceInputs inputs = visibleInputs(entry, primitive, pixel, size);
+    // Masked materials passed the alpha test in the visibility pass: covered, alpha 1.
+    return shadeSurface(inputs, materialBaseColor(inputs), vec2(pixel) + 0.5f);
+}
+
+#ifdef CANDELA_VISIBILITY_MSAA
+// The kDistinct-th distinct covered ID of `pixel`'s samples, and how many samples show it (0: none).
+uvec2 distinctId(ivec2 pixel, out int count) {
+    uvec2 ids[kSamples];
+    for (int s = 0; s < kSamples; ++s) ids[s] = texelFetch(visibility, pixel, s).xy;
+    uvec2 id = uvec2(0u);
+    uint distinct = 0u;
+    for (int s = 0; s < kSamples; ++s) {
+        bool seen = ids[s].x == 0u;
+        for (int t = 0; t < s; ++t) seen = seen || ids[t] == ids[s];
+        if (!seen) {
+            if (distinct == kDistinct) id = ids[s];
+            ++distinct;
+        }
+    }
+    count = 0;
+    for (int s = 0; s < kSamples; ++s) count += id.x != 0u && ids[s] == id ? 1 : 0;
+    return id;
+}
+#endif
+
 void main() {
     uint tile = tileLists[push.counts.z * frame.extent.w + gl_WorkGroupID.x];
     ivec2 pixel = ivec2(tile & 0xffffu, tile >> 16u) * ivec2(gl_WorkGroupSize.xy) + ivec2(gl_LocalInvocationID.xy);
     ivec2 size = ivec2(frame.extent.xy);
     if (any(greaterThanEqual(pixel, size))) return;
+#ifdef CANDELA_VISIBILITY_MSAA
+    int count;
+    uvec2 id = distinctId(pixel, count);
+    uint list = push.counts.z - kDistinct * frame.samples.y;
+    if (id.x == 0u || visibilityDraws[id.x - 1u].list != list) return;
+    vec4 color = shadeVisible(id.x - 1u, id.y, pixel, size) * (float(count) / float(kSamples));
+    if (kDistinct > 0u) color += imageLoad(shaded, pixel);
+    imageStore(shaded, pixel, color);
+#else
     uvec2 id = texelFetch(visibility, pixel, 0).xy;
     if (id.x == 0u || visibilityDraws[id.x - 1u].list != push.counts.z) return;
-    SurfaceInputs inputs = visibleInputs(id.x - 1u, id.y, pixel, size);
-    // Masked materials passed the alpha test in the visibility pass: covered, alpha 1.
-    vec4 color = shadeSurface(inputs, materialBaseColor(inputs), vec2(pixel) + 0.5f);
-    imageStore(shaded, pixel, color);
+    imageStore(shaded, pixel, shadeVisible(id.x - 1u, id.y, pixel, size));
+#endif
 }

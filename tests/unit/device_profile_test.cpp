@@ -35,6 +35,7 @@ DeviceCaps generousDevice() {
                    .maxSamplerAnisotropy = 16,
                    .framebufferColorSampleCounts = 0x7F,
                    .framebufferDepthSampleCounts = 0x7F,
+                   .sampledImageIntegerSampleCounts = 0x7F,
                    .maxMemoryAllocationSize = uint64_t(1) << 33,
                    .maxBufferSize = uint64_t(1) << 40,
                    .maxMemoryAllocationCount = 1u << 20};

@@ -157,11 +157,23 @@ TEST(GraphMsaa, MultisampledImagesAreAttachmentsOfOneSampleCountPerPass) {
         addPass(graph, "draw", PassType::Graphics,
                 [&](PassBuilder& b) { msaa = b.writeColor(b.createTexture("msaa", kHdr4), VkClearColorValue{}); });
         addPass(graph, "read", PassType::Compute, [&](PassBuilder& b) {
-            b.sample(msaa);
+            b.read(msaa, Usage::StorageRead);
             b.sideEffect();
         });
         const std::string message = graphError([&] { graph.compile(); });
-        EXPECT_TRUE(contains(message, "uses multisampled 'msaa' as Sampled")) << message;
+        EXPECT_TRUE(contains(message, "uses multisampled 'msaa' as StorageRead")) << message;
+    }
+    {
+        // Sampled sample by sample (texelFetch of a sampler2DMS): allowed.
+        RenderGraph graph;
+        TextureId msaa;
+        addPass(graph, "draw", PassType::Graphics,
+                [&](PassBuilder& b) { msaa = b.writeColor(b.createTexture("msaa", kHdr4), VkClearColorValue{}); });
+        addPass(graph, "read", PassType::Compute, [&](PassBuilder& b) {
+            b.sample(msaa);
+            b.sideEffect();
+        });
+        EXPECT_NO_THROW(graph.compile());
     }
     {
         RenderGraph graph;
