@@ -1,5 +1,6 @@
 // `candela quality-report`: image error against run time for the anti-aliasing and geometry
-// settings — MSAA × specular anti-aliasing × level-of-detail error — on a set of scenes. Per
+// settings — MSAA × specular anti-aliasing × level-of-detail error, on each shading path the device
+// has (docs/shading-paths.md) — on a set of scenes. Per
 // setting: the frame time as a ratio to the calibration pass of the same run, the error against a
 // reference (full detail, no specular AA, 4× the width and height, i.e. 16 samples per pixel,
 // box-downsampled in linear radiance; both display-encoded as the tonemap pass does: mean and 99th
@@ -19,6 +20,7 @@
 #include "assets/image_file.h"
 #include "reports/image_error.h"
 #include "reports/plot.h"
+#include "render/visibility_path.h"
 #include "assets/builtin_scenes.h"
 #include "assets/gltf_loader.h"
 #include "assets/procedural_sky.h"
@@ -29,6 +31,7 @@
 #include <fstream>
 #include <list>
 #include <set>
+#include <tuple>
 
 namespace candela::app {
 namespace {
@@ -40,6 +43,7 @@ struct Row {
     uint32_t msaa = 1;
     bool specularAa = false;
     float lodError = 0.0f;
+    passes::ShadingPath path = passes::ShadingPath::Forward;
     double frameRatio = 0.0, frameMs = 0.0;
     io::DisplayError error;
     double temporal = 0.0;       // mean frame-to-frame difference over the orbit
@@ -77,19 +81,21 @@ std::vector<std::vector<uint8_t>> orbitFrames(Renderer& renderer, RenderSettings
 }
 
 std::string settingName(const Row& r) {
-    char text[96];
-    std::snprintf(text, sizeof text, "MSAA %u, specular AA %s, LOD %g px", r.msaa, r.specularAa ? "on" : "off", double(r.lodError));
+    char text[128];
+    std::snprintf(text, sizeof text, "MSAA %u, specular AA %s, LOD %g px, %s path", r.msaa, r.specularAa ? "on" : "off",
+                  double(r.lodError), passes::shadingPathName(r.path));
     return text;
 }
 
 void writeReport(const std::filesystem::path& out, const std::vector<SceneResult>& results, const QualityReportOptions& o,
                  const std::string& device, const vk::MsaaChoice& defaultMsaa, const std::vector<std::string>& notes) {
     std::ofstream csv(out / "report.csv");
-    csv << "scene,msaa,specular_aa,lod_error_px,frame_ratio,frame_ms,mean_error,p99_error,temporal,temporal_error,reference_temporal,"
-           "submitted_triangles,pareto,default\n";
+    csv << "scene,msaa,specular_aa,lod_error_px,shading_path,frame_ratio,frame_ms,mean_error,p99_error,temporal,temporal_error,"
+           "reference_temporal,submitted_triangles,pareto,default\n";
     for (const SceneResult& s : results)
         for (const Row& r : s.rows)
-            csv << r.scene << "," << r.msaa << "," << (r.specularAa ? "on" : "off") << "," << r.lodError << "," << r.frameRatio
+            csv << r.scene << "," << r.msaa << "," << (r.specularAa ? "on" : "off") << "," << r.lodError << ","
+                << passes::shadingPathName(r.path) << "," << r.frameRatio
                 << "," << r.frameMs << "," << r.error.mean << "," << r.error.p99 << "," << r.temporal << "," << r.temporalError << ","
                 << s.referenceTemporal << "," << r.triangles << "," << r.pareto << "," << r.isDefault << "\n";
 
@@ -116,11 +122,11 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
         std::snprintf(line, sizeof line, "## %s\n\nReference orbit (%.1f s to render): frame-to-frame difference %.3f/255.\n\n",
                       s.name.c_str(), s.referenceSeconds, s.referenceTemporal);
         md << line
-           << "| MSAA | specular AA | LOD error (px) | frame / calibration | mean error | p99 error | temporal | temporal error | triangles | |\n"
-           << "|---|---|---|---|---|---|---|---|---|---|\n";
+           << "| MSAA | specular AA | LOD error (px) | shading path | frame / calibration | mean error | p99 error | temporal | temporal error | triangles | |\n"
+           << "|---|---|---|---|---|---|---|---|---|---|---|\n";
         for (const Row& r : s.rows) {
-            std::snprintf(line, sizeof line, "| %u | %s | %g | %.2f× | %.3f | %.0f | %.3f | %.3f | %llu | %s%s |\n", r.msaa,
-                          r.specularAa ? "on" : "off", double(r.lodError), r.frameRatio, r.error.mean, r.error.p99,
+            std::snprintf(line, sizeof line, "| %u | %s | %g | %s | %.2f× | %.3f | %.0f | %.3f | %.3f | %llu | %s%s |\n", r.msaa,
+                          r.specularAa ? "on" : "off", double(r.lodError), passes::shadingPathName(r.path), r.frameRatio, r.error.mean, r.error.p99,
                           r.temporal, r.temporalError, (unsigned long long)r.triangles, r.pareto ? "★" : "", r.isDefault ? " default" : "");
             md << line;
         }
@@ -132,14 +138,15 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
                                                            : ": image error against frame time"),
                               .xLabel = "frame time / calibration",
                               .yLabel = temporal ? "temporal error: flicker vs the reference (of 255)" : "mean error (of 255)"};
-            // One series per (MSAA, specular AA), in that order in every scene's plots.
-            std::set<std::pair<uint32_t, bool>> keys;
-            for (const Row& r : s.rows) keys.insert({r.msaa, r.specularAa});
-            const std::vector<std::pair<uint32_t, bool>> series(keys.begin(), keys.end());
-            for (const auto& [msaa, specularAa] : series)
-                plot.series.push_back("MSAA " + std::to_string(msaa) + ", specular AA " + (specularAa ? "on" : "off"));
+            // One series per (MSAA, specular AA, shading path), in that order in every scene's plots.
+            std::set<std::tuple<uint32_t, bool, passes::ShadingPath>> keys;
+            for (const Row& r : s.rows) keys.insert({r.msaa, r.specularAa, r.path});
+            const std::vector<std::tuple<uint32_t, bool, passes::ShadingPath>> series(keys.begin(), keys.end());
+            for (const auto& [msaa, specularAa, path] : series)
+                plot.series.push_back("MSAA " + std::to_string(msaa) + ", specular AA " + (specularAa ? "on" : "off") + ", " +
+                                      passes::shadingPathName(path));
             for (const Row& r : s.rows) {
-                const auto it = std::find(series.begin(), series.end(), std::pair{r.msaa, r.specularAa});
+                const auto it = std::find(series.begin(), series.end(), std::tuple{r.msaa, r.specularAa, r.path});
                 char label[32];
                 std::snprintf(label, sizeof label, "%g px", double(r.lodError));
                 if (r.isDefault) plot.highlight = plot.points.size();
@@ -188,7 +195,10 @@ int runQualityReport(const QualityReportOptions& options) {
         if (std::find(sampleCounts.begin(), sampleCounts.end(), choice.samples) == sampleCounts.end())
             sampleCounts.push_back(choice.samples);
     }
-    const size_t perScene = sampleCounts.size() * 2 * options.lodErrors.size();
+    // Both shading paths where the device has the visibility path (docs/shading-paths.md).
+    std::vector<passes::ShadingPath> paths = {passes::ShadingPath::Forward};
+    if (context.choices().visibilityUnsupported.empty()) paths.push_back(passes::ShadingPath::Visibility);
+    const size_t perScene = sampleCounts.size() * 2 * options.lodErrors.size() * paths.size();
     // Steps: per scene its reference, then its settings.
     Progress progress("quality-report", options.scenes.size() * (perScene + 1), options.common.quiet);
     size_t done = 0;
@@ -214,21 +224,24 @@ int runQualityReport(const QualityReportOptions& options) {
         result.referenceTemporal = io::meanFrameToFrameDifference(reference);
         for (uint32_t samples : sampleCounts)
             for (bool specularAa : {false, true})
-                for (float lodError : options.lodErrors) {
+                for (float lodError : options.lodErrors)
+                for (passes::ShadingPath path : paths) {
                     RenderSettings settings = base;
+                    settings.shadingPath = path;
                     settings.msaa = samples;
                     settings.shadingOptions.specularAntiAliasing = specularAa;
                     settings.drawSelection.lodErrorPixels = lodError;
                     settings.camera.orbit = glm::vec3(0.0f, 90.0f, 0.0f);
                     const FrameMeasurement m = measureFrames(renderer, settings, options.frames);
                     const std::vector<std::vector<uint8_t>> frames = orbitFrames(renderer, settings, options.orbitFrames, 1);
-                    Row row{.scene = result.name, .msaa = samples, .specularAa = specularAa, .lodError = lodError,
+                    Row row{.scene = result.name, .msaa = samples, .specularAa = specularAa, .lodError = lodError, .path = path,
                             .frameRatio = median(m.frameMs) / median(m.calibrationMs), .frameMs = median(m.frameMs),
                             .error = io::displayError(frames, reference), .temporal = io::meanFrameToFrameDifference(frames),
                             .temporalError = io::meanTemporalError(frames, reference),
                             .triangles = m.drawStats.submittedTriangles};
                     row.isDefault = samples == defaultMsaa.samples && specularAa == passes::ShadingOptions{}.specularAntiAliasing &&
-                                    lodError == passes::DrawSelection::kDefaultLodErrorPixels;
+                                    lodError == passes::DrawSelection::kDefaultLodErrorPixels &&
+                                    path == defaultShadingPath(context).first;
                     result.rows.push_back(row);
                     char detail[200];
                     std::snprintf(detail, sizeof detail, "%s %s: %.2fx calibration, error %.3f (p99 %.0f), temporal error %.3f",

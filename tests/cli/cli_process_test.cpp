@@ -508,20 +508,21 @@ TEST(Cli, QualityReportSweepsMsaaSpecularAaAndLevelsOfDetail) {
     std::ifstream csv(dir / "report.csv");
     std::string header, line;
     std::getline(csv, header);
-    EXPECT_EQ(header.rfind("scene,msaa,specular_aa,lod_error_px,frame_ratio,frame_ms,mean_error,p99_error,temporal", 0), 0u);
+    EXPECT_EQ(header.rfind("scene,msaa,specular_aa,lod_error_px,shading_path,frame_ratio,frame_ms,mean_error,p99_error,temporal", 0), 0u);
     size_t rows = 0, defaults = 0;
     while (std::getline(csv, line)) {
         ++rows;
         defaults += line.back() == '1';
     }
-    // lavapipe renders 1 and 4 samples: 2 is clamped to 1 and not measured twice.
-    EXPECT_EQ(rows, 2u * 2u * 2u);
+    // lavapipe renders 1 and 4 samples: 2 is clamped to 1 and not measured twice; each setting on
+    // the forward and the visibility path.
+    EXPECT_EQ(rows, 2u * 2u * 2u * 2u);
     EXPECT_EQ(defaults, 1u);
     std::ifstream md(dir / "report.md");
     const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("MSAA 2: not supported here"), std::string::npos) << text;
     EXPECT_NE(text.find("★"), std::string::npos);
-    EXPECT_NE(r.stderrText.find("quality-report: 9/9"), std::string::npos) << r.stderrText;  // 8 settings and the reference
+    EXPECT_NE(r.stderrText.find("quality-report: 17/17"), std::string::npos) << r.stderrText;  // 16 settings and the reference
     std::filesystem::remove_all(dir);
 }
 
