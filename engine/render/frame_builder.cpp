@@ -193,8 +193,9 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     else
         frame.notes.push_back(std::string("shading path: forward") + (pathReason.empty() ? "" : " (" + pathReason + ")"));
     // The sky: composited under the image by the tonemap on the visibility path, unless the
-    // transmissive draws must see it (then, as on the forward path, the skybox pass draws it).
-    const bool skyInTonemap = skybox && visible && !transmission;
+    // transmissive draws must see it or the HDR image is the output (then, as on the forward path,
+    // the skybox pass draws it into the HDR image).
+    const bool skyInTonemap = skybox && visible && !transmission && !settings.floatOutput;
     passes::DrawTarget drawn;
     if (visible) {
         drawn = *visible;

@@ -76,6 +76,23 @@ TEST_F(ShadingPathTest, VisibilityFramesScheduleItsPassesInsteadOfTheForwardOnes
     EXPECT_TRUE(explains("shading path: forward"));
 }
 
+// A float (HDR) capture reads the image before the tonemap: the visibility path then draws the sky
+// into it with the skybox pass, as the forward path does (the quality report's frames are such).
+TEST_F(ShadingPathTest, FloatCapturesHaveTheSkyOnBothPaths) {
+    const scene::Environment sky = scene::makeProceduralSky();
+    RenderSettings settings{.width = kWidth, .height = kHeight, .floatOutput = true, .scene = &mGrid, .environment = &sky};
+    settings.shadingPath = passes::ShadingPath::Forward;
+    const CapturedFrame forward = renderer().capture(settings);
+    settings.shadingPath = passes::ShadingPath::Visibility;
+    const CapturedFrame visibility = renderer().capture(settings);
+    EXPECT_TRUE(declares("visibility_shade"));
+    EXPECT_TRUE(declares("skybox"));
+    double largest = 0.0;
+    for (size_t i = 0; i < forward.rgba32f.size(); ++i)
+        largest = std::max(largest, double(std::abs(forward.rgba32f[i] - visibility.rgba32f[i]) / std::max(1.0f, std::abs(forward.rgba32f[i]))));
+    EXPECT_LT(largest, 0.01);  // relative, or absolute below 1: the corner pixels show the sky on both
+}
+
 // Every debug view shows the same data through both paths (same tolerance as the goldens'
 // comparison of the paths: mean ≤ 0.05 levels; the grid has no textures, so no level-of-detail
 // difference: every channel within 2 levels).
