@@ -23,15 +23,21 @@ DrawTarget SkyboxPass::add(RenderGraph& graph, const scene::ViewSetup& view, con
         "skybox", PassType::Graphics,
         [&](PassBuilder& builder, Data& d) {
             d.specular = builder.sample(in.specular);
-            d.target = drawInto(builder, in.target, false, DepthUse::Test);
+            const bool depthTest = in.target.depth.valid();
+            if (depthTest) {
+                d.target = drawInto(builder, in.target, false, DepthUse::Test);
+            } else {
+                d.target = in.target;
+                d.target.color = d.target.hdr = builder.writeColor(in.target.color, std::nullopt);
+            }
             const VkFormat color = builder.desc(in.target.color).format;
-            const VkFormat depth = builder.desc(in.target.depth).format;
-            const uint32_t samples = samplesOf(builder, in.target);
+            const VkFormat depth = depthTest ? builder.desc(in.target.depth).format : VK_FORMAT_UNDEFINED;
+            const uint32_t samples = builder.desc(in.target.color).samples;
             d.pipeline = &mPipelines.get(mContext, {color, depth, samples}, [&] {
                 return vk::Pipeline::graphics(mContext, "fullscreen.vert", "skybox.frag",
                                               {.colorFormats = {color},
                                                .depthFormat = depth,
-                                               .depthTest = true,
+                                               .depthTest = depthTest,
                                                .depthWrite = false,
                                                .depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL,
                                                .blend = vk::BlendMode::Under,

@@ -22,7 +22,10 @@ public:
     explicit SkyboxPass(vk::Context& context);
 
     struct Inputs {
-        DrawTarget target;          // as the forward pass left it (depth: 0 = nothing drawn)
+        // As the forward pass left it (depth: 0 = nothing drawn). Without a depth (the visibility
+        // path's single-sample image over a multisampled depth) the sky is drawn under every pixel:
+        // covered ones (coverage 1) take none of it.
+        DrawTarget target;
         graph::TextureId specular;  // specular cube (IblHandles::specular)
         shading::IblParams params;  // skyboxLod: the mip shown
     };

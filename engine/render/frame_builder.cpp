@@ -203,8 +203,13 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     } else {
         drawn = mForward.addOpaque(graph, size, list, inputs, &mStats);
     }
-    if (skybox && !skyInTonemap)
-        drawn = mSkybox.add(graph, view, {.target = drawn, .specular = ibl->maps.specular, .params = ibl->params}, &mParameters);
+    if (skybox && !skyInTonemap) {
+        // The visibility path's image is resolved already: the sky goes under it without a depth test.
+        passes::DrawTarget under = drawn;
+        if (visible) under.depth = {};
+        drawn = mSkybox.add(graph, view, {.target = under, .specular = ibl->maps.specular, .params = ibl->params}, &mParameters);
+        if (visible) drawn.depth = visible->depth;
+    }
     // Transmissive draws over the opaque image (sky included), which they see through.
     if (transmission)
         drawn = mForward.addTransmissive(graph, drawn, mTransmissionBackground.add(graph, drawn.hdr), list, inputs, &mStats);

@@ -91,6 +91,17 @@ TEST_F(ShadingPathTest, FloatCapturesHaveTheSkyOnBothPaths) {
     for (size_t i = 0; i < forward.rgba32f.size(); ++i)
         largest = std::max(largest, double(std::abs(forward.rgba32f[i] - visibility.rgba32f[i]) / std::max(1.0f, std::abs(forward.rgba32f[i]))));
     EXPECT_LT(largest, 0.01);  // relative, or absolute below 1: the corner pixels show the sky on both
+    // At 4 samples too (the skybox pass draws under the resolved image, without a depth test).
+    settings.msaa = 4;
+    settings.shadingPath = passes::ShadingPath::Forward;
+    const CapturedFrame forward4 = renderer().capture(settings);
+    settings.shadingPath = passes::ShadingPath::Visibility;
+    const CapturedFrame visibility4 = renderer().capture(settings);
+    EXPECT_TRUE(explains("4-sample visibility image"));
+    largest = 0.0;
+    for (size_t i = 0; i < forward4.rgba32f.size(); ++i)
+        largest = std::max(largest, double(std::abs(forward4.rgba32f[i] - visibility4.rgba32f[i]) / std::max(1.0f, std::abs(forward4.rgba32f[i]))));
+    EXPECT_LT(largest, 0.01);
 }
 
 // Every debug view shows the same data through both paths (same tolerance as the goldens'
