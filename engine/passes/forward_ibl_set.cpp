@@ -81,9 +81,4 @@ VkDescriptorSet ForwardIblSet::write(const PassContext& ctx, const vk::Program& 
     return writer.commit(ctx.context(), ctx.descriptors());
 }
 
-void ForwardIblSet::writeSpecular(vk::DescriptorWriter& writer, const PassContext& ctx, TextureId declared) const {
-    if (declared.valid()) writer.image("specularCube", ctx.view(declared), ctx.layout(declared), mTrilinear.get());
-    else writer.image("specularCube", mPlaceholderCube.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, mTrilinear.get());
-}
-
 }  // namespace candela::passes

@@ -8,7 +8,6 @@
 #include "graph/render_graph.h"
 #include "passes/ibl_handles.h"
 #include "vk/buffer.h"
-#include "vk/descriptors.h"
 #include "vk/image.h"
 #include "vk/pipeline.h"
 #include "vk/sampler.h"
@@ -33,9 +32,6 @@ public:
     // Allocates set 2 of `program` from the frame's descriptor pool and writes it: the declared maps
     // as `ctx` resolves them, placeholders for the invalid handles.
     VkDescriptorSet write(const graph::PassContext& ctx, const vk::Program& program, const IblHandles& declared) const;
-    // Writes the specular cube `declared` (a handle declare() returned; invalid: the placeholder) as
-    // binding "specularCube" of `writer`'s set (the visibility path's sky).
-    void writeSpecular(vk::DescriptorWriter& writer, const graph::PassContext& ctx, graph::TextureId declared) const;
 
 private:
     vk::Sampler mTrilinear;  // clamp to edge

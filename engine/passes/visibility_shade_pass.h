@@ -36,7 +36,7 @@ public:
     void setScene(const scene::GpuScene& scene, const MaterialKeys& keys, const TextureSets& sets);
 
     struct Inputs {
-        graph::TextureId visibility;  // VisibilityPass's, 1 sample
+        graph::TextureId visibility;  // VisibilityPass's, at the frame's sample count
         VisibilityTileLists tiles;
         graph::BufferId draws;        // the frame's shading::VisibilityDraw table
         graph::BufferId frameData;    // its shading::VisibilityFrame
