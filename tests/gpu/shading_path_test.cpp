@@ -178,6 +178,32 @@ TEST_F(ShadingPathTest, MsaaFramesWithBlendedDrawsTakeTheForwardPathAndSayWhy) {
     EXPECT_TRUE(declares("forward_blended"));
 }
 
+// The viewer's edits of the lights (reflected parameter blocks, rewritten into the scene's buffers,
+// as material edits are) reach the visibility path's shading as they reach the forward pass.
+TEST_F(ShadingPathTest, EditedLightsReachTheComputeShading) {
+    const CapturedFrame before = render(passes::ShadingPath::Visibility);
+    shader::ParameterRegistry& registry = renderer().parameters();
+    for (int i = 0; i < 4; ++i) {
+        const std::string light = "Lights[" + std::to_string(i) + "]";
+        const shader::ParameterRegistry::Block* block = registry.find("forward", light);
+        ASSERT_NE(block, nullptr) << light;
+        for (const shader::BlockMember& m : block->members)
+            if (m.name == "intensity") {
+                const float zero = 0.0f;
+                registry.set("forward", light, m, std::as_bytes(std::span(&zero, 1)));
+            }
+    }
+    const CapturedFrame unlit = render(passes::ShadingPath::Visibility);
+    ASSERT_TRUE(explains("shading path: visibility"));
+    const auto [mean, largest] = difference(before, unlit);
+    EXPECT_GT(mean, 2.0) << "largest " << largest;  // the spheres cover ~12% of the image (measured: 4.3)
+    EXPECT_GT(largest, 100);
+    // And the forward path draws the same edited scene.
+    const auto [pathMean, pathLargest] = difference(render(passes::ShadingPath::Forward), unlit);
+    EXPECT_LE(pathMean, 0.05);
+    EXPECT_LE(pathLargest, 2);
+}
+
 TEST_F(ShadingPathTest, AutoIsTheDevicesDefault) {
     render(passes::ShadingPath::Auto);
     EXPECT_TRUE(explains("shading path: forward (the device's default: "));
