@@ -72,6 +72,36 @@ struct PathMeasurement {
     FrameMeasurement m;
 };
 
+// Frames run with serialized passes after the measured ones, for the per-pass wall times.
+constexpr uint32_t kSerialFrames = 3;
+
+// Per pass: the median GPU time (timestamps) and the median wall time of the pass run alone
+// (serialized), each also as a ratio to the calibration's.
+nlohmann::ordered_json passesJson(const FrameMeasurement& m) {
+    const double calibration = median(m.calibrationMs), calibrationGpu = median(m.calibrationGpuMs);
+    nlohmann::ordered_json passes = nlohmann::ordered_json::array();
+    for (const std::string& name : m.passOrder) {
+        const auto times = m.passGpuMs.find(name);
+        const double gpu = times == m.passGpuMs.end() ? -1.0 : median(times->second);
+        const auto serialTimes = m.passSerialMs.find(name);
+        const double serial = serialTimes == m.passSerialMs.end() ? -1.0 : median(serialTimes->second);
+        passes.push_back({{"name", name},
+                          {"gpuMedianMs", gpu},
+                          {"ratioToCalibrationGpu", gpu >= 0.0 && calibrationGpu > 0.0 ? gpu / calibrationGpu : -1.0},
+                          {"serialMedianMs", serial},
+                          {"serialRatio", serial >= 0.0 ? serial / calibration : -1.0}});
+    }
+    return passes;
+}
+
+void printPasses(const nlohmann::ordered_json& passes, const char* indent) {
+    for (const auto& p : passes)
+        std::printf("%spass %-20s GPU median %6.2f ms (%.2fx calibration GPU); alone %6.2f ms (%.2fx calibration)\n", indent,
+                    p["name"].get<std::string>().c_str(), p["gpuMedianMs"].get<double>(),
+                    p["ratioToCalibrationGpu"].get<double>(), p["serialMedianMs"].get<double>(),
+                    p["serialRatio"].get<double>());
+}
+
 }  // namespace
 
 int runBench(const RenderOptions& options) {
@@ -93,14 +123,14 @@ int runBench(const RenderOptions& options) {
     vk::Context context(contextDesc(options.common));
     Renderer renderer(context);
     const double startupMs = msSince(startup);  // the device, the pipeline cache file, the renderer
-    const FrameMeasurement m = measureFrames(renderer, settings, options.frames, advance);
+    const FrameMeasurement m = measureFrames(renderer, settings, options.frames, advance, std::min(options.frames, kSerialFrames));
     const DebugViewSwitch viewSwitch = switchDebugView(renderer, settings);
     std::vector<PathMeasurement> paths;
     if (settings.shadingPath == passes::ShadingPath::Auto)
         for (const passes::ShadingPath path : {passes::ShadingPath::Forward, passes::ShadingPath::Visibility}) {
             RenderSettings s = settings;
             s.shadingPath = path;
-            paths.push_back({path, measureFrames(renderer, s, options.frames, advance)});
+            paths.push_back({path, measureFrames(renderer, s, options.frames, advance, std::min(options.frames, kSerialFrames))});
         }
     const std::vector<double>&frameMs = m.frameMs, &calibrationMs = m.calibrationMs, &calibrationGpuMs = m.calibrationGpuMs;
     const passes::DrawStats& drawStats = m.drawStats;
@@ -120,14 +150,7 @@ int runBench(const RenderOptions& options) {
                     {"minMs", minimum(frameMs)},
                     {"medianRatio", median(frameMs) / calibration},
                     {"minRatio", minimum(frameMs) / minimum(calibrationMs)}};
-    nlohmann::ordered_json passes = nlohmann::ordered_json::array();
-    for (const std::string& name : m.passOrder) {
-        const auto times = m.passGpuMs.find(name);
-        const double gpu = times == m.passGpuMs.end() ? -1.0 : median(times->second);
-        passes.push_back({{"name", name},
-                          {"gpuMedianMs", gpu},
-                          {"ratioToCalibrationGpu", gpu >= 0.0 && calibrationGpu > 0.0 ? gpu / calibrationGpu : -1.0}});
-    }
+    const nlohmann::ordered_json passes = passesJson(m);
     out["passes"] = passes;
     out["shadingPath"] = shadingPathLine(m.explain);
     nlohmann::ordered_json pathsOut = nlohmann::ordered_json::array();
@@ -137,7 +160,8 @@ int runBench(const RenderOptions& options) {
                             {"took", shadingPathLine(p.m.explain)},
                             {"medianMs", median(p.m.frameMs)},
                             {"medianRatio", median(p.m.frameMs) / pathCalibration},
-                            {"minRatio", minimum(p.m.frameMs) / minimum(p.m.calibrationMs)}});
+                            {"minRatio", minimum(p.m.frameMs) / minimum(p.m.calibrationMs)},
+                            {"passes", passesJson(p.m)}});
     }
     if (!paths.empty()) out["shadingPaths"] = pathsOut;
     out["startupMs"] = startupMs;
@@ -221,13 +245,13 @@ int runBench(const RenderOptions& options) {
                         pose.playing().size(), out["animation"]["evaluateMedianMs"].get<double>(),
                         out["animation"]["evaluateMaxMs"].get<double>());
         std::printf("  shading:     %s\n", out["shadingPath"].get<std::string>().c_str());
-        for (const auto& p : pathsOut)
+        printPasses(passes, "  ");
+        for (const auto& p : pathsOut) {
             std::printf("  path %-10s frame median %.2f ms (%.2fx calibration of its own run), min %.2fx: %s\n",
                         p["path"].get<std::string>().c_str(), p["medianMs"].get<double>(), p["medianRatio"].get<double>(),
                         p["minRatio"].get<double>(), p["took"].get<std::string>().substr(0, 60).c_str());
-        for (const auto& p : passes)
-            std::printf("  pass %-12s GPU median %.2f ms (%.2fx calibration GPU)\n", p["name"].get<std::string>().c_str(),
-                        p["gpuMedianMs"].get<double>(), p["ratioToCalibrationGpu"].get<double>());
+            printPasses(p["passes"], "    ");
+        }
         if (inFlight) {
             const vk::FrameRingStats& ring = inFlight->ring;
             std::printf("  in flight:   median frame %.2f ms (%.2fx calibration), %.2f ms per frame to the last one's end "

@@ -8,7 +8,7 @@
 namespace candela::app {
 
 FrameMeasurement measureFrames(Renderer& renderer, const RenderSettings& settings, uint32_t frames,
-                               const std::function<void(uint32_t)>& beforeFrame) {
+                               const std::function<void(uint32_t)>& beforeFrame, uint32_t serialFrames) {
     FrameMeasurement out;
     for (int i = 0; i < 2; ++i) {
         const auto start = std::chrono::steady_clock::now();
@@ -34,6 +34,14 @@ FrameMeasurement measureFrames(Renderer& renderer, const RenderSettings& setting
         out.calibrationMs.push_back(calibration.submitWaitMs);
         const uint32_t calibrationPass = *renderer.lastGraph().findPass("calibration");
         if (calibration.timings.gpuMs[calibrationPass] >= 0.0) out.calibrationGpuMs.push_back(calibration.timings.gpuMs[calibrationPass]);
+    }
+    RenderSettings serial = settings;
+    serial.serialPasses = true;
+    for (uint32_t i = 0; i < serialFrames; ++i) {
+        const FrameTiming frame = renderer.renderFrame(serial);
+        const graph::GraphDecl& decl = renderer.lastGraph().declaration();
+        for (uint32_t pass : renderer.lastGraph().compiled().order)
+            if (frame.timings.serialMs[pass] >= 0.0) out.passSerialMs[decl.passes[pass].name].push_back(frame.timings.serialMs[pass]);
     }
     return out;
 }

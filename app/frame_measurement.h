@@ -18,16 +18,20 @@ struct FrameMeasurement {
     std::vector<double> cpuMs;             // building, compiling and recording, per frame
     std::vector<double> calibrationMs, calibrationGpuMs;
     std::map<std::string, std::vector<double>> passGpuMs;
+    // Per pass, from a few more frames run with RenderSettings::serialPasses: wall time of the
+    // pass submitted and waited for alone (what a CPU device's timestamps cannot show).
+    std::map<std::string, std::vector<double>> passSerialMs;
     std::vector<std::string> passOrder;    // every pass seen, in the order first met
     passes::DrawStats drawStats;           // of the last frame
     std::vector<std::string> explain;      // Renderer::explain() of the last frame (not of a calibration run)
 };
 
 // Two warm-up frames (pipelines, transient pools, the scene's upload), then `frames` frames each
-// followed by a calibration pass at the same size; `beforeFrame(i)` runs before frame i (e.g. to
-// pose an animation). Precondition: frames ≥ 1.
+// followed by a calibration pass at the same size, then `serialFrames` frames with serialized
+// passes (passSerialMs); `beforeFrame(i)` runs before frame i (e.g. to pose an animation; not
+// before the serialized ones). Precondition: frames ≥ 1.
 FrameMeasurement measureFrames(Renderer& renderer, const RenderSettings& settings, uint32_t frames,
-                               const std::function<void(uint32_t)>& beforeFrame = {});
+                               const std::function<void(uint32_t)>& beforeFrame = {}, uint32_t serialFrames = 0);
 
 // Frames run as the viewer runs them (Renderer::renderToTarget, up to the renderer's frames in
 // flight), presented into an offscreen image instead of a window: how often a frame ends and how

@@ -250,6 +250,7 @@ ExecutionRecord executeGraph(const ExecuteInputs& in) {
         const auto end = in.timestamps ? in.timestamps->write(in.cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT) : std::nullopt;
         if (begin && end) record.queries.push_back({pass, {*begin, *end}});
         in.context.endLabel(in.cmd);
+        if (in.afterPass) in.afterPass(pass);
     }
     emitBarriers(in, compiled.finalBarriers);
     return record;

@@ -9,6 +9,7 @@
 #include "vk/descriptors.h"
 #include "vk/timestamps.h"
 
+#include <functional>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -118,6 +119,9 @@ struct ExecuteInputs {
     VkCommandBuffer cmd;
     vk::DescriptorAllocator& descriptors;
     vk::TimestampPool* timestamps = nullptr;  // null: no timings
+    // Called after each pass's commands are recorded, with the pass's declared index (serialized
+    // timing: the caller submits and waits for what was recorded so far). May be empty.
+    std::function<void(uint32_t pass)> afterPass;
     // Testing hook: false skips every planned barrier, to prove that synchronization validation
     // catches what the barrier planner prevents.
     bool emitBarriers = true;

@@ -14,6 +14,12 @@ namespace candela::graph {
 // pass did not run or was not measured.
 struct GraphTimings {
     std::vector<double> gpuMs;
+    // Per declared pass: host wall milliseconds of the pass submitted and waited for alone
+    // (RenderSettings::serialPasses; negative for passes that did not run). Empty when the frame
+    // ran as one submit. On devices whose timestamps mark when commands are issued rather than
+    // when deferred work runs (llvmpipe rasterizes at the end of a render pass), only these show
+    // where the time goes.
+    std::vector<double> serialMs;
 };
 
 std::string exportDot(const GraphDecl& decl, const CompiledGraph& compiled,

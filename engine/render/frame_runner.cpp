@@ -43,6 +43,9 @@ std::chrono::steady_clock::time_point FrameRunner::submit(Frame frame, const Sub
     writeHostUploads(frame);
     TransientPool& transients = *mTransients[mFrames.currentSlot()];
     transients.realize(graph.declaration(), graph.compiled());
+    if (options.serialPasses && options.present) throw UserError("serialized pass timing renders headless frames only");
+    std::vector<double> serialMs;
+    if (options.serialPasses) serialMs.assign(graph.declaration().passes.size(), -1.0);
     ExecutionRecord record = executeGraph({.context = mContext,
                                            .graph = graph,
                                            .imports = frame.imports,
@@ -50,12 +53,18 @@ std::chrono::steady_clock::time_point FrameRunner::submit(Frame frame, const Sub
                                            .cmd = slot.cmd,
                                            .descriptors = *slot.descriptors,
                                            .timestamps = slot.timestamps.get(),
+                                           .afterPass = options.serialPasses
+                                                            ? std::function<void(uint32_t)>([&](uint32_t pass) {
+                                                                  serialMs[pass] = mFrames.flushAndResume();
+                                                              })
+                                                            : nullptr,
                                            .emitBarriers = options.emitBarriers});
     std::vector<std::string> names;
     for (uint32_t pass : graph.compiled().order) names.push_back(graph.declaration().passes[pass].name);
     slot.completed = [this, record = std::move(record), order = graph.compiled().order, names = std::move(names),
-                      precompute = std::make_pair(frame.precomputeBegin, frame.precomputeEnd)](vk::FrameSlot& done) {
+                      serialMs = std::move(serialMs), precompute = std::make_pair(frame.precomputeBegin, frame.precomputeEnd)](vk::FrameSlot& done) {
         mCompletedTimings = record.timings(*done.timestamps);
+        mCompletedTimings.serialMs = serialMs;
         mCompletedTimes.clear();
         for (size_t i = 0; i < order.size(); ++i)
             mCompletedTimes.push_back({names[i], order[i] < mCompletedTimings.gpuMs.size() ? mCompletedTimings.gpuMs[order[i]] : -1.0});

@@ -31,6 +31,7 @@ public:
         bool unknownPassIsError = true;
         bool emitBarriers = true;  // testing hook: false records no barriers (sync validation must object)
         const PresentTarget* present = nullptr;
+        bool serialPasses = false;  // RenderSettings::serialPasses; not with `present`
     };
     // Submits `frame` as above; it becomes the last frame. Returns when it was submitted. Throws
     // UserError for an unknown disabled pass (when that is an error).

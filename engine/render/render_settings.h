@@ -77,6 +77,10 @@ struct RenderSettings {
     std::filesystem::path iblCacheDir;  // empty: no on-disk cache
     float patternExposure = 1.0f;  // test pattern only
     std::vector<std::string> disabledPasses;  // runtime toggles by pass name
+    // Each pass submitted and waited for alone, its wall time in the frame's timings
+    // (graph::GraphTimings::serialMs): per-pass costs on devices whose timestamps miss deferred
+    // work. Slower frames; headless frames only (not with a presentable target).
+    bool serialPasses = false;
 };
 
 }  // namespace candela

@@ -73,7 +73,8 @@ std::chrono::steady_clock::time_point Renderer::submit(Frame frame, const Render
     return mRunner.submit(std::move(frame), {.disabledPasses = settings.disabledPasses,
                                              .unknownPassIsError = mOptions.unknownPassIsError,
                                              .emitBarriers = mOptions.emitBarriers,
-                                             .present = present});
+                                             .present = present,
+                                             .serialPasses = settings.serialPasses});
 }
 
 void Renderer::finishFrame() {

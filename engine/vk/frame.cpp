@@ -94,6 +94,26 @@ void FrameRing::submit(const std::vector<VkSemaphoreSubmitInfo>& waits, const st
     mContext->advanceFrame();
 }
 
+double FrameRing::flushAndResume() {
+    FrameSlot& slot = mSlots[mCurrent];
+    VK_CHECK(vkEndCommandBuffer(slot.cmd));
+    const VkCommandBufferSubmitInfo cmdInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, .commandBuffer = slot.cmd};
+    const VkSubmitInfo2 submitInfo{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2, .commandBufferInfoCount = 1, .pCommandBufferInfos = &cmdInfo};
+    VkFence fence = slot.fence.get();
+    const auto start = std::chrono::steady_clock::now();
+    VK_CHECK(vkQueueSubmit2(mContext->graphicsQueue().queue, 1, &submitInfo, fence));
+    VK_CHECK(vkWaitForFences(mContext->device(), 1, &fence, VK_TRUE, UINT64_MAX));
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    VK_CHECK(vkResetFences(mContext->device(), 1, &fence));
+    // The pool holds this one command buffer; resetting it keeps the slot's descriptors and
+    // timestamps, which the rest of the frame goes on using.
+    VK_CHECK(vkResetCommandPool(mContext->device(), slot.pool.get(), 0));
+    const VkCommandBufferBeginInfo info{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                        .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+    VK_CHECK(vkBeginCommandBuffer(slot.cmd, &info));
+    return ms;
+}
+
 void FrameRing::waitCurrent() {
     waitSlot(mSlots[mCurrent]);
     collectCompleted();

@@ -48,6 +48,12 @@ public:
     // Ends and submits the current frame to the graphics queue, with optional semaphores (swapchain).
     void submit(const std::vector<VkSemaphoreSubmitInfo>& waits = {},
                 const std::vector<VkSemaphoreSubmitInfo>& signals = {});
+    // Serialized timing: ends the current frame's command buffer, submits what it holds so far,
+    // waits for it and begins the same command buffer again, so that recording continues where it
+    // stopped. Returns the wall milliseconds from submit to completion. Precondition: begin() was
+    // called and submit() not yet; the frame waits on no semaphore (its first part would run
+    // before the wait).
+    double flushAndResume();
     // Waits for the current slot's frame (after submit), e.g. to read back results.
     void waitCurrent();
     // Waits for every submitted frame and runs all deferred destructions.

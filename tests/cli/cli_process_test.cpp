@@ -400,6 +400,18 @@ TEST(Cli, BenchReportsFrameAndPassesAsRatiosToCalibration) {
     EXPECT_EQ(report["passes"][0]["name"], "forward");
     EXPECT_EQ(report["passes"][1]["name"], "skybox");
     EXPECT_EQ(report["passes"][2]["name"], "tonemap");
+    // Each pass also run alone (submitted and waited for by itself): a wall time for every one.
+    for (const auto& pass : report["passes"]) {
+        EXPECT_GT(pass["serialMedianMs"].get<double>(), 0.0) << pass["name"];
+        EXPECT_NEAR(pass["serialRatio"].get<double>(),
+                    pass["serialMedianMs"].get<double>() / report["calibration"]["medianMs"].get<double>(), 1e-9);
+    }
+    // Both shading paths measured, each with its passes.
+    ASSERT_EQ(report["shadingPaths"].size(), 2u);
+    for (const auto& path : report["shadingPaths"]) {
+        ASSERT_FALSE(path["passes"].empty()) << path["path"];
+        for (const auto& pass : path["passes"]) EXPECT_GT(pass["serialMedianMs"].get<double>(), 0.0) << pass["name"];
+    }
     // --explain: of the measured frames (not of a calibration run), in the JSON.
     ASSERT_TRUE(report["explain"].is_array());
     EXPECT_FALSE(report["explain"].empty());

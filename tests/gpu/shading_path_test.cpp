@@ -204,6 +204,31 @@ TEST_F(ShadingPathTest, EditedLightsReachTheComputeShading) {
     EXPECT_LE(pathLargest, 2);
 }
 
+// Serialized pass timing (RenderSettings::serialPasses, bench's "alone" column): each pass is
+// submitted and waited for alone, on either path; the image is the one a single submit gives and
+// every pass that ran has a wall time (the split must also be clean under synchronization
+// validation, which the fixture checks).
+TEST_F(ShadingPathTest, SerializedPassesRenderTheSameFrameAndTimeEveryPass) {
+    for (const passes::ShadingPath path : {passes::ShadingPath::Forward, passes::ShadingPath::Visibility}) {
+        RenderSettings settings{.width = kWidth, .height = kHeight, .scene = &mGrid};
+        settings.shadingPath = path;
+        const CapturedFrame whole = renderer().capture(settings);
+        EXPECT_TRUE(whole.timings.serialMs.empty());
+        settings.serialPasses = true;
+        const CapturedFrame serial = renderer().capture(settings);
+        EXPECT_EQ(serial.rgba8, whole.rgba8) << passes::shadingPathName(path);
+        const graph::RenderGraph& g = renderer().lastGraph();
+        ASSERT_EQ(serial.timings.serialMs.size(), g.declaration().passes.size());
+        uint32_t timed = 0;
+        for (uint32_t pass = 0; pass < g.declaration().passes.size(); ++pass) {
+            const bool ran = std::find(g.compiled().order.begin(), g.compiled().order.end(), pass) != g.compiled().order.end();
+            EXPECT_EQ(serial.timings.serialMs[pass] >= 0.0, ran) << g.declaration().passes[pass].name;
+            timed += ran;
+        }
+        EXPECT_GE(timed, 3u);
+    }
+}
+
 TEST_F(ShadingPathTest, AutoIsTheDevicesDefault) {
     render(passes::ShadingPath::Auto);
     EXPECT_TRUE(explains("shading path: forward (the device's default: "));
