@@ -50,8 +50,10 @@ Image readPng(const std::filesystem::path& path) {
 
 class ViewerTest : public ::testing::Test {
 protected:
-    void open(bool ui = true, bool environment = true, const std::filesystem::path& shaderDir = {}) {
+    void open(bool ui = true, bool environment = true, const std::filesystem::path& shaderDir = {},
+              passes::ShadingPath shadingPath = passes::ShadingPath::Auto) {
         ui::ViewerContent content;
+        content.settings.shadingPath = shadingPath;
         content.scene = scene::makeSphereGrid();
         if (environment) content.environment = std::make_unique<scene::Environment>(scene::makeProceduralSky());
         content.settings.ibl.skybox = environment;
@@ -371,6 +373,51 @@ TEST_F(ViewerTest, HotReloadRebuildsPipelinesAndKeepsTheOldOnesOnErrors) {
     const Image green = screenshot("green.png");  // spheres green on the grey background
     EXPECT_GT(green.mean(right, green.width, 1), before.mean(right, before.width, 1) + 30.0);
     EXPECT_LT(green.mean(right, green.width, 0), before.mean(right, before.width, 0) - 10.0);
+}
+
+// The visibility path's compute shading reloads as the fragment programs do: an edit of
+// visibility/shade.glsl rebuilds its pipelines, and a compile error keeps the running ones.
+TEST_F(ViewerTest, HotReloadRebuildsTheComputeShadingOfTheVisibilityPath) {
+    const std::filesystem::path shaders = mDir / "shaders";
+    std::filesystem::copy(CANDELA_SHADER_SOURCE_DIR, shaders, std::filesystem::copy_options::recursive);
+    open(/*ui=*/false, /*environment=*/false, shaders, passes::ShadingPath::Visibility);
+    if (!mViewer->context().choices().visibilityUnsupported.empty())
+        GTEST_SKIP() << mViewer->context().choices().visibilityUnsupported;
+    ASSERT_TRUE(mViewer->hotReload().enabled());
+    frames(1);
+    ASSERT_TRUE(ran("visibility_shade"));
+    const Image before = screenshot("before.png");
+    // The middle sphere of the 7×7 grid is under the centre of the window.
+    const size_t centre = (size_t(before.height / 2) * before.width + before.width / 2) * 4;
+    ASSERT_LT(before.rgba[centre + 2], 200);
+
+    const std::string store = "imageStore(shaded, pixel, shadeVisible(id.x - 1u, id.y, pixel, size));";
+    // Blue, dark enough that the tone mapping keeps it saturated; the shading still runs (its
+    // alpha is kept), so the edit changes the colour and nothing else.
+    const std::string blue =
+        "imageStore(shaded, pixel, shadeVisible(id.x - 1u, id.y, pixel, size) * vec4(0.0, 0.0, 0.0, 1.0) + vec4(0.0, 0.0, 0.5, 0.0));";
+    editFile(shaders / "visibility" / "shade.glsl", store, blue);
+    frames(1);
+    EXPECT_TRUE(mViewer->hotReload().errors().empty());
+    const Image shadedBlue = screenshot("blue.png");
+    EXPECT_LT(shadedBlue.rgba[centre + 0], 10);
+    EXPECT_LT(shadedBlue.rgba[centre + 1], 10);
+    EXPECT_GT(shadedBlue.rgba[centre + 2], 150);
+    EXPECT_EQ(shadedBlue.rgba[2 * 4 + 2], before.rgba[2 * 4 + 2]);  // the background is not shaded
+
+    // A compile error names the file and line in every shader that includes it; blue stays.
+    editFile(shaders / "visibility" / "shade.glsl", blue, "imageStore(shaded, pixel, undefinedThing);");
+    frames(1);
+    ASSERT_FALSE(mViewer->hotReload().errors().empty());
+    const std::string error = mViewer->hotReload().errors()[0];
+    EXPECT_NE(error.find("visibility/shade.glsl:"), std::string::npos) << error;
+    EXPECT_NE(error.find("undefinedThing"), std::string::npos) << error;
+    EXPECT_EQ(screenshot("still_blue.png").rgba, shadedBlue.rgba);
+
+    editFile(shaders / "visibility" / "shade.glsl", "imageStore(shaded, pixel, undefinedThing);", store);
+    frames(1);
+    EXPECT_TRUE(mViewer->hotReload().errors().empty());
+    EXPECT_EQ(screenshot("restored.png").rgba, before.rgba);
 }
 
 }  // namespace
