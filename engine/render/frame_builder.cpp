@@ -22,7 +22,7 @@ constexpr VkFormat kLdrFormat = VK_FORMAT_R8G8B8A8_SRGB;
 
 FrameBuilder::FrameBuilder(vk::Context& context, SceneState& scene, shader::ParameterRegistry& parameters)
     : mContext(context), mScene(scene), mParameters(parameters), mPattern(context), mEncode(context, kLdrFormat),
-      mForward(context), mSkybox(context), mTransmissionBackground(context), mSkinMorph(context), mTonemap(context),
+      mForward(context), mSkybox(context), mExpand(context), mTransmissionBackground(context), mSkinMorph(context), mTonemap(context),
       mCalibration(context), mVisibility(context) {}
 
 void FrameBuilder::sceneUploaded() {
@@ -31,8 +31,7 @@ void FrameBuilder::sceneUploaded() {
 }
 
 std::pair<passes::ShadingPath, std::string> FrameBuilder::shadingPath(passes::ShadingPath requested,
-                                                                      const passes::FrameVariant& variant,
-                                                                      const passes::DrawList& list) const {
+                                                                      const passes::FrameVariant& variant) const {
     using passes::ShadingPath;
     if (requested == ShadingPath::Forward) return {ShadingPath::Forward, ""};
     if (requested == ShadingPath::Auto) {
@@ -40,7 +39,7 @@ std::pair<passes::ShadingPath, std::string> FrameBuilder::shadingPath(passes::Sh
         if (path == ShadingPath::Forward) return {ShadingPath::Forward, why};
     }
     if (!mVisibility.unsupported().empty()) return {ShadingPath::Forward, mVisibility.unsupported()};
-    if (const std::string why = mVisibility.frameUnsupported(variant, list); !why.empty()) return {ShadingPath::Forward, why};
+    if (const std::string why = mVisibility.frameUnsupported(variant); !why.empty()) return {ShadingPath::Forward, why};
     return {ShadingPath::Visibility, ""};
 }
 
@@ -185,7 +184,7 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     const bool skybox = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;
     const bool transmission = !list.empty(passes::DrawRange::Transmissive);
     const passes::DrawTargetSize size{settings.width, settings.height, msaa.samples};
-    auto [path, pathReason] = shadingPath(settings.shadingPath, inputs.variant, list);
+    auto [path, pathReason] = shadingPath(settings.shadingPath, inputs.variant);
     std::optional<passes::DrawTarget> visible;
     if (path == passes::ShadingPath::Visibility)
         visible = mVisibility.add(frame, {.size = size, .list = list, .keys = mScene.materialKeys(), .inputs = inputs, .recorded = &mStats},
@@ -197,18 +196,22 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     // the skybox pass draws it into the HDR image).
     const bool skyInTonemap = skybox && visible && !transmission && !settings.floatOutput;
     passes::DrawTarget drawn;
+    const auto addSkybox = [&](const passes::DrawTarget& over) {
+        return mSkybox.add(graph, view, {.target = over, .specular = ibl->maps.specular, .params = ibl->params}, &mParameters);
+    };
     if (visible) {
         drawn = *visible;
+        // The image is resolved already: the sky goes under it without a depth test.
+        if (skybox && !skyInTonemap) {
+            drawn = addSkybox({.color = drawn.color, .hdr = drawn.hdr});
+            drawn.depth = visible->depth;
+        }
+        // At MSAA, blended and transmissive draws need an image at the frame's sample count.
+        if (size.samples > 1 && (transmission || !list.empty(passes::DrawRange::Blended))) drawn = mExpand.add(graph, drawn);
         if (!transmission && !list.empty(passes::DrawRange::Blended)) drawn = mForward.addBlended(graph, drawn, list, inputs, &mStats);
     } else {
         drawn = mForward.addOpaque(graph, size, list, inputs, &mStats);
-    }
-    if (skybox && !skyInTonemap) {
-        // The visibility path's image is resolved already: the sky goes under it without a depth test.
-        passes::DrawTarget under = drawn;
-        if (visible) under.depth = {};
-        drawn = mSkybox.add(graph, view, {.target = under, .specular = ibl->maps.specular, .params = ibl->params}, &mParameters);
-        if (visible) drawn.depth = visible->depth;
+        if (skybox) drawn = addSkybox(drawn);
     }
     // Transmissive draws over the opaque image (sky included), which they see through.
     if (transmission)

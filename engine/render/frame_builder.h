@@ -5,14 +5,16 @@
 // Scene frame:   [skin_morph] → [IBL precompute, when the maps are pending] → forward (HDR + depth)
 //                → [skybox] → [transmission_background → forward_transmission] → tonemap (8-bit);
 //                on the visibility path (docs/shading-paths.md) visibility → visibility_classify →
-//                visibility_shade (the sky included) replace forward and skybox, and the blended
-//                draws follow in forward_blended when no transmissive draw does.
+//                visibility_shade replace forward (the sky composited by the tonemap, or drawn under
+//                the image by skybox), and the blended draws follow in forward_blended when no
+//                transmissive draw does; at MSAA, msaa_expand first gives them a multisampled image.
 // Test pattern:  pattern (compute, HDR) → encode (graphics, 8-bit sRGB).
 // Calibration:   calibration alone (benchmarks' unit of time).
 
 #include "passes/calibration_pass.h"
 #include "passes/encode_pass.h"
 #include "passes/forward_pass.h"
+#include "passes/msaa_expand_pass.h"
 #include "passes/pattern_pass.h"
 #include "passes/skin_morph_pass.h"
 #include "passes/skybox_pass.h"
@@ -62,10 +64,10 @@ public:
                                         const scene::ScenePose* pose = nullptr);
 
 private:
-    // The shading path of a frame of `variant` drawing `list` asked for `requested`: Visibility or
-    // Forward, and why (for --explain; "" when the request was followed without a reason to give).
-    std::pair<passes::ShadingPath, std::string> shadingPath(passes::ShadingPath requested, const passes::FrameVariant& variant,
-                                                            const passes::DrawList& list) const;
+    // The shading path of a frame of `variant` asked for `requested`: Visibility or Forward, and
+    // why (for --explain; "" when the request was followed without a reason to give).
+    std::pair<passes::ShadingPath, std::string> shadingPath(passes::ShadingPath requested,
+                                                            const passes::FrameVariant& variant) const;
     // Adds the skin_morph pass for the pose's deformed draws; nullopt (and a note) when none is.
     std::optional<passes::ForwardPass::DeformedVertices> addSkinMorph(Frame& frame, const scene::ScenePose& pose);
     // The posed draws' (and moved lights') per-frame buffers of an animated pose.
@@ -90,6 +92,7 @@ private:
     passes::EncodePass mEncode;
     passes::ForwardPass mForward;
     passes::SkyboxPass mSkybox;
+    passes::MsaaExpandPass mExpand;
     passes::TransmissionBackgroundPass mTransmissionBackground;
     passes::SkinMorphPass mSkinMorph;
     passes::TonemapPass mTonemap;

@@ -34,13 +34,11 @@ std::pair<passes::ShadingPath, std::string> defaultShadingPath(const vk::Context
     return {passes::ShadingPath::Forward, "the device's default: the visibility path is not yet measured on GPUs"};
 }
 
-std::string VisibilityPath::frameUnsupported(const passes::FrameVariant& frame, const passes::DrawList& list) const {
+std::string VisibilityPath::frameUnsupported(const passes::FrameVariant& frame) const {
     if (frame.referenceSamples) return "the ground truth of ibl-report is a forward program";
     if (frame.samples == 1) return {};
     if (!(mContext.caps().limits.sampledImageIntegerSampleCounts & frame.samples))
         return "the device cannot sample a " + std::to_string(frame.samples) + "-sample integer image (the visibility image)";
-    if (!list.empty(passes::DrawRange::Blended) || !list.empty(passes::DrawRange::Transmissive))
-        return "MSAA frames with blended or transmissive draws are drawn by the forward path";
     return {};
 }
 

@@ -31,10 +31,9 @@ public:
     // Why frames of the current scene cannot take the path ("" if they can): the device's reason,
     // or the scene's (its vertices or indices past maxStorageBufferRange).
     const std::string& unsupported() const { return mUnsupported; }
-    // Why a frame of these bits and draws cannot ("" if it can): the ground truth (ibl-report) is a
-    // forward program; an MSAA frame needs the device to sample integer images at its sample count,
-    // and its blended and transmissive draws would need a multisampled image to draw over.
-    std::string frameUnsupported(const passes::FrameVariant& frame, const passes::DrawList& list) const;
+    // Why a frame of these bits cannot ("" if it can): the ground truth (ibl-report) is a
+    // forward program; an MSAA frame needs the device to sample integer images at its sample count.
+    std::string frameUnsupported(const passes::FrameVariant& frame) const;
 
     struct FrameDesc {
         passes::DrawTargetSize size;
