@@ -191,10 +191,13 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
                                   frame.notes);
     else
         frame.notes.push_back(std::string("shading path: forward") + (pathReason.empty() ? "" : " (" + pathReason + ")"));
-    // The sky: composited under the image by the tonemap on the visibility path, unless the
-    // transmissive draws must see it or the HDR image is the output (then, as on the forward path,
-    // the skybox pass draws it into the HDR image).
-    const bool skyInTonemap = skybox && visible && !transmission && !settings.floatOutput;
+    // The sky: composited under the image by the tonemap (one full-screen pass fewer), unless the
+    // transmissive draws must see it or the HDR image is the output (then the skybox pass draws it
+    // into the HDR image). Switching the skybox pass off (--disable-pass skybox, the viewer's
+    // toggle) still switches the sky off: the pass is then declared, to be disabled.
+    const bool skyboxDisabled = std::find(settings.disabledPasses.begin(), settings.disabledPasses.end(), "skybox") !=
+                                settings.disabledPasses.end();
+    const bool skyInTonemap = skybox && !transmission && !settings.floatOutput && !skyboxDisabled;
     passes::DrawTarget drawn;
     const auto addSkybox = [&](const passes::DrawTarget& over) {
         return mSkybox.add(graph, view, {.target = over, .specular = ibl->maps.specular, .params = ibl->params}, &mParameters);
@@ -211,7 +214,7 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
         if (!transmission && !list.empty(passes::DrawRange::Blended)) drawn = mForward.addBlended(graph, drawn, list, inputs, &mStats);
     } else {
         drawn = mForward.addOpaque(graph, size, list, inputs, &mStats);
-        if (skybox) drawn = addSkybox(drawn);
+        if (skybox && !skyInTonemap) drawn = addSkybox(drawn);
     }
     // Transmissive draws over the opaque image (sky included), which they see through.
     if (transmission)

@@ -396,10 +396,10 @@ TEST(Cli, BenchReportsFrameAndPassesAsRatiosToCalibration) {
     const double ratio = report["frame"]["medianRatio"].get<double>();
     EXPECT_NEAR(ratio, report["frame"]["medianMs"].get<double>() / report["calibration"]["medianMs"].get<double>(), 1e-9);
     // Measured frames come after the warm-up, which ran the IBL precompute: they hold none.
-    ASSERT_EQ(report["passes"].size(), 3u);
+    // The sky is composited by the tonemap.
+    ASSERT_EQ(report["passes"].size(), 2u);
     EXPECT_EQ(report["passes"][0]["name"], "forward");
-    EXPECT_EQ(report["passes"][1]["name"], "skybox");
-    EXPECT_EQ(report["passes"][2]["name"], "tonemap");
+    EXPECT_EQ(report["passes"][1]["name"], "tonemap");
     // Each pass also run alone (submitted and waited for by itself): a wall time for every one.
     for (const auto& pass : report["passes"]) {
         EXPECT_GT(pass["serialMedianMs"].get<double>(), 0.0) << pass["name"];
@@ -430,13 +430,14 @@ TEST(Cli, DefaultRenderIsLitByTheProceduralSkyWithPrecomputeFirst) {
     auto position = [&](const std::string& name) {
         return static_cast<size_t>(std::find(order.begin(), order.end(), name) - order.begin());
     };
-    ASSERT_EQ(order.size(), 8u) << graph["order"].dump();
+    ASSERT_EQ(order.size(), 7u) << graph["order"].dump();
     for (const char* precompute : {"ibl_brdf_lut", "ibl_cubemap", "ibl_prefilter", "ibl_irradiance_sh"})
         EXPECT_LT(position(precompute), position("forward")) << precompute;
     EXPECT_LT(position("ibl_cubemap"), position("ibl_prefilter"));
     EXPECT_LT(position("ibl_cubemap"), position("ibl_irradiance_sh"));
-    EXPECT_EQ(position("skybox"), position("forward") + 1);
-    EXPECT_EQ(position("tonemap"), position("skybox") + 1);
+    // The sky is composited by the tonemap, right after the forward pass.
+    EXPECT_EQ(position("tonemap"), position("forward") + 1);
+    EXPECT_NE(r.stdoutText.find("sky: composited under the image by the tonemap"), std::string::npos) << r.stdoutText;
     EXPECT_NE(r.stdoutText.find("ibl: environment 'procedural sky'"), std::string::npos) << r.stdoutText;
     EXPECT_NE(r.stdoutText.find("ibl: maps computed by this frame's precompute passes"), std::string::npos) << r.stdoutText;
     EXPECT_NE(r.stdoutText.find("left out: irradiance cube"), std::string::npos) << r.stdoutText;

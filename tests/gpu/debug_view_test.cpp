@@ -157,7 +157,15 @@ TEST_F(DebugViewTest, IsAGraphVariantWithoutTheSkybox) {
     const std::vector<std::string> lines = renderer().explain();
     EXPECT_NE(std::find(lines.begin(), lines.end(), "debug view: roughness (shown as data: linear tonemap at exposure 0)"),
               lines.end());
+    EXPECT_NE(std::find(lines.begin(), lines.end(), "left out: skybox (debug view)"), lines.end());
+    // Without the debug view the sky is back: composited by the tonemap, or by the skybox pass into
+    // a float capture.
     settings.debugView = passes::DebugView::None;
+    renderer().capture(settings);
+    const std::vector<std::string> shaded = renderer().explain();
+    EXPECT_NE(std::find(shaded.begin(), shaded.end(), "sky: composited under the image by the tonemap (no skybox pass)"),
+              shaded.end());
+    settings.floatOutput = true;
     renderer().capture(settings);
     EXPECT_TRUE(renderer().lastGraph().findPass("skybox").has_value());
 }

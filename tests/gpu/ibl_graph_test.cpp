@@ -76,9 +76,10 @@ TEST_F(IblGraphTest, PrecomputeRunsOnceThenOnlyWhenEnvironmentOrQualityChanges) 
     RenderSettings s = settings(&mSky);
     renderer.capture(s);
     std::vector<std::string> passes = ranPasses(renderer);
-    for (const char* name : {"ibl_brdf_lut", "ibl_cubemap", "ibl_prefilter", "ibl_irradiance_sh", "forward", "skybox"})
+    for (const char* name : {"ibl_brdf_lut", "ibl_cubemap", "ibl_prefilter", "ibl_irradiance_sh", "forward", "tonemap"})
         EXPECT_TRUE(has(passes, name)) << name;
     EXPECT_FALSE(has(passes, "ibl_irradiance_cube"));
+    EXPECT_TRUE(explains(renderer, "sky: composited under the image by the tonemap (no skybox pass)"));
     EXPECT_TRUE(explains(renderer, "ibl: maps computed by this frame's precompute passes"));
     EXPECT_TRUE(explains(renderer, "variants: pbr+ibl-sh9 ×49"));
 

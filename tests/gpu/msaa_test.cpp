@@ -165,9 +165,10 @@ TEST_F(GpuTest, AlphaToCoverageSmoothsTheCutoffOfAnAlphaMaskedMaterial) {
 
 TEST_F(GpuTest, EveryFrameVariantIsValidationCleanAtEverySampleCount) {
     // The fixture fails the test on any validation message (synchronization validation included).
-    // The variants of the draw passes: forward alone (no environment), forward + skybox (sky),
-    // forward + skybox + transmission background + forward_transmission (TransmissionTest), alpha
-    // masks (AlphaBlendModeTest), the skybox switched off (bypassed); each at --msaa 1, 2, 4, 8.
+    // The variants of the draw passes: forward alone (no environment), forward with the sky
+    // composited by the tonemap (sky), forward + skybox (a float capture, or transmission) + transmission
+    // background + forward_transmission (TransmissionTest), alpha masks (AlphaBlendModeTest), the
+    // skybox switched off (bypassed); each at --msaa 1, 2, 4, 8.
     std::list<scene::Scene> scenes;
     scenes.push_back(scene::makeSphereGrid());
     for (const char* model : {"TransmissionTest/glTF-Binary/TransmissionTest.glb",
@@ -178,16 +179,20 @@ TEST_F(GpuTest, EveryFrameVariantIsValidationCleanAtEverySampleCount) {
     const scene::Environment sky = scene::makeProceduralSky();
     Renderer renderer(context());
     uint32_t frames = 0;
+    enum class Sky { Default, SkyboxPass, SkyboxDisabled };
     for (const scene::Scene& scene : scenes)
         for (const scene::Environment* environment : {static_cast<const scene::Environment*>(nullptr), &sky})
             for (uint32_t samples : {1u, 2u, 4u, 8u})
-                for (bool skybox : {true, false}) {
-                    if (!environment && !skybox) continue;
+                for (Sky skyCase : {Sky::Default, Sky::SkyboxPass, Sky::SkyboxDisabled}) {
+                    if (!environment && skyCase != Sky::Default) continue;
                     RenderSettings settings{.width = 96, .height = 64, .scene = &scene, .environment = environment};
                     settings.msaa = samples;
-                    if (!skybox) settings.disabledPasses = {"skybox"};
+                    // A float capture reads the HDR image: the skybox pass draws the sky into it.
+                    settings.floatOutput = skyCase != Sky::Default;
+                    if (skyCase == Sky::SkyboxDisabled) settings.disabledPasses = {"skybox"};
                     const CapturedFrame frame = renderer.capture(settings);
-                    ASSERT_EQ(frame.rgba8.size(), 96u * 64u * 4u);
+                    if (settings.floatOutput) ASSERT_EQ(frame.rgba32f.size(), 96u * 64u * 4u);
+                    else ASSERT_EQ(frame.rgba8.size(), 96u * 64u * 4u);
                     const uint32_t expected = renderer.msaa(samples).samples;
                     const graph::GraphDecl& decl = renderer.lastGraph().declaration();
                     const auto depth = renderer.lastGraph().findResource("depth");
@@ -202,9 +207,10 @@ TEST_F(GpuTest, EveryFrameVariantIsValidationCleanAtEverySampleCount) {
 
 TEST_F(GpuTest, OnlyAttachmentsThatStayInOneRenderPassAreTransientImages) {
     // #27 item 5: TRANSIENT_ATTACHMENT (and lazily allocated memory, where the device has it) only
-    // for an attachment used by one render pass that neither loads nor stores it. With a skybox the
-    // forward pass stores its multisampled colour and depth for the skybox to load; without an
-    // environment the forward pass is the only one drawing. The fixture checks validation.
+    // for an attachment used by one render pass that neither loads nor stores it. With a skybox pass
+    // the forward pass stores its multisampled colour and depth for the skybox to load; with the sky
+    // in the tonemap or without an environment the forward pass is the only one drawing. The
+    // fixture checks validation.
     const scene::Scene grid = scene::makeSphereGrid();
     const scene::Environment sky = scene::makeProceduralSky();
     Renderer renderer(context());
@@ -217,10 +223,17 @@ TEST_F(GpuTest, OnlyAttachmentsThatStayInOneRenderPassAreTransientImages) {
     RenderSettings settings{.width = 96, .height = 64, .scene = &grid, .environment = &sky};
     settings.msaa = 4;
     ASSERT_EQ(renderer.msaa(4).samples, 4u);
+    settings.floatOutput = true;  // the skybox pass draws the sky into the HDR image (not the tonemap)
     renderer.capture(settings);
+    ASSERT_TRUE(renderer.lastGraph().findPass("skybox").has_value());
     EXPECT_EQ(usage("hdr_msaa"), VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
     EXPECT_EQ(usage("depth"), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
     EXPECT_EQ(usage("hdr") & kTransient, 0u);
+    // With the sky composited by the tonemap the forward pass is the only one drawing.
+    settings.floatOutput = false;
+    renderer.capture(settings);
+    EXPECT_EQ(usage("hdr_msaa"), VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | kTransient);
+    EXPECT_EQ(usage("depth"), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | kTransient);
     settings.environment = nullptr;
     renderer.capture(settings);
     EXPECT_EQ(usage("hdr_msaa"), VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | kTransient);

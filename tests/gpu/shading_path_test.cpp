@@ -64,7 +64,7 @@ TEST_F(ShadingPathTest, VisibilityFramesScheduleItsPassesInsteadOfTheForwardOnes
     render(passes::ShadingPath::Visibility, passes::DebugView::None, &sky);
     for (const char* pass : {"visibility", "visibility_classify", "visibility_clear", "visibility_shade", "tonemap"})
         EXPECT_TRUE(declares(pass)) << pass;
-    // The sky is composited by the tonemap: no skybox pass, no forward draws.
+    // The sky is composited by the tonemap (on either path): no skybox pass, no forward draws.
     EXPECT_FALSE(declares("forward"));
     EXPECT_FALSE(declares("skybox"));
     EXPECT_TRUE(explains("shading path: visibility"));
@@ -72,9 +72,9 @@ TEST_F(ShadingPathTest, VisibilityFramesScheduleItsPassesInsteadOfTheForwardOnes
 
     render(passes::ShadingPath::Forward, passes::DebugView::None, &sky);
     EXPECT_TRUE(declares("forward"));
-    EXPECT_TRUE(declares("skybox"));
     EXPECT_FALSE(declares("visibility"));
     EXPECT_TRUE(explains("shading path: forward"));
+    EXPECT_TRUE(explains("sky: composited under the image by the tonemap"));
 }
 
 // A float (HDR) capture reads the image before the tonemap: the visibility path then draws the sky
