@@ -230,6 +230,33 @@ TEST_F(ShadingPathTest, EditedLightsReachTheComputeShading) {
     EXPECT_LE(pathLargest, 2);
 }
 
+// The material inspector's edits (the "Materials[i]" blocks, rewritten into the scene's material
+// buffer) reach the compute shading too: the middle sphere's base colour set to pure red.
+TEST_F(ShadingPathTest, EditedMaterialsReachTheComputeShading) {
+    const CapturedFrame before = render(passes::ShadingPath::Visibility);
+    shader::ParameterRegistry& registry = renderer().parameters();
+    const shader::ParameterRegistry::Block* block = registry.find("forward", "Materials[24]");
+    ASSERT_NE(block, nullptr);
+    bool edited = false;
+    for (const shader::BlockMember& m : block->members)
+        if (m.name == "baseColorFactor") {
+            const float red[4] = {1.0f, 0.0f, 0.0f, 1.0f};
+            registry.set("forward", "Materials[24]", m, std::as_bytes(std::span(red)));
+            edited = true;
+        }
+    ASSERT_TRUE(edited);
+    const CapturedFrame redSphere = render(passes::ShadingPath::Visibility);
+    ASSERT_TRUE(explains("shading path: visibility"));
+    // The middle sphere (material 24) is under the image's centre.
+    const size_t centre = (size_t(kHeight / 2) * kWidth + kWidth / 2) * 4;
+    EXPECT_GT(int(redSphere.rgba8[centre]) - int(redSphere.rgba8[centre + 1]), 60)
+        << "was " << int(before.rgba8[centre]) << "," << int(before.rgba8[centre + 1]);
+    // And the forward path draws the same edited scene.
+    const auto [pathMean, pathLargest] = difference(render(passes::ShadingPath::Forward), redSphere);
+    EXPECT_LE(pathMean, 0.05);
+    EXPECT_LE(pathLargest, 2);
+}
+
 // Serialized pass timing (RenderSettings::serialPasses, bench's "alone" column): each pass is
 // submitted and waited for alone, on either path; the image is the one a single submit gives and
 // every pass that ran has a wall time (the split must also be clean under synchronization
