@@ -8,6 +8,32 @@
 #include <utility>
 
 namespace candela::vk {
+namespace {
+
+// Resets the slot's pool (its one command buffer) and begins recording the command buffer again.
+void restartCommands(Context& context, FrameSlot& slot) {
+    VK_CHECK(vkResetCommandPool(context.device(), slot.pool.get(), 0));
+    const VkCommandBufferBeginInfo info{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                        .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+    VK_CHECK(vkBeginCommandBuffer(slot.cmd, &info));
+}
+
+// Ends the slot's command buffer and submits it to the graphics queue, signalling the slot's fence.
+void submitCommands(Context& context, FrameSlot& slot, const std::vector<VkSemaphoreSubmitInfo>& waits = {},
+                    const std::vector<VkSemaphoreSubmitInfo>& signals = {}) {
+    VK_CHECK(vkEndCommandBuffer(slot.cmd));
+    const VkCommandBufferSubmitInfo cmdInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, .commandBuffer = slot.cmd};
+    const VkSubmitInfo2 submitInfo{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
+                                   .waitSemaphoreInfoCount = static_cast<uint32_t>(waits.size()),
+                                   .pWaitSemaphoreInfos = waits.data(),
+                                   .commandBufferInfoCount = 1,
+                                   .pCommandBufferInfos = &cmdInfo,
+                                   .signalSemaphoreInfoCount = static_cast<uint32_t>(signals.size()),
+                                   .pSignalSemaphoreInfos = signals.data()};
+    VK_CHECK(vkQueueSubmit2(context.graphicsQueue().queue, 1, &submitInfo, slot.fence.get()));
+}
+
+}  // namespace
 
 FrameRing::FrameRing(Context& context, uint32_t framesInFlight, uint32_t timestampCapacity) : mContext(&context) {
     mSlots.resize(std::max(1u, framesInFlight));
@@ -64,10 +90,7 @@ FrameSlot& FrameRing::begin() {
     waitSlot(slot);
     collectCompleted();
     slot.descriptors->reset();
-    VK_CHECK(vkResetCommandPool(mContext->device(), slot.pool.get(), 0));
-    const VkCommandBufferBeginInfo info{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
-                                        .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
-    VK_CHECK(vkBeginCommandBuffer(slot.cmd, &info));
+    restartCommands(*mContext, slot);
     slot.frame = mContext->currentFrame();
     slot.timestamps->reset(slot.cmd);
     return slot;
@@ -75,42 +98,27 @@ FrameSlot& FrameRing::begin() {
 
 void FrameRing::submit(const std::vector<VkSemaphoreSubmitInfo>& waits, const std::vector<VkSemaphoreSubmitInfo>& signals) {
     FrameSlot& slot = mSlots[mCurrent];
-    VK_CHECK(vkEndCommandBuffer(slot.cmd));
     ++mStats.submits;
     if (std::any_of(mSlots.begin(), mSlots.end(), [&](const FrameSlot& other) {
             return other.submitted && vkGetFenceStatus(mContext->device(), other.fence.get()) != VK_SUCCESS;
         }))
         ++mStats.overlappedSubmits;
-    const VkCommandBufferSubmitInfo cmdInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, .commandBuffer = slot.cmd};
-    const VkSubmitInfo2 submitInfo{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
-                                   .waitSemaphoreInfoCount = static_cast<uint32_t>(waits.size()),
-                                   .pWaitSemaphoreInfos = waits.data(),
-                                   .commandBufferInfoCount = 1,
-                                   .pCommandBufferInfos = &cmdInfo,
-                                   .signalSemaphoreInfoCount = static_cast<uint32_t>(signals.size()),
-                                   .pSignalSemaphoreInfos = signals.data()};
-    VK_CHECK(vkQueueSubmit2(mContext->graphicsQueue().queue, 1, &submitInfo, slot.fence.get()));
+    submitCommands(*mContext, slot, waits, signals);
     slot.submitted = true;
     mContext->advanceFrame();
 }
 
 double FrameRing::flushAndResume() {
     FrameSlot& slot = mSlots[mCurrent];
-    VK_CHECK(vkEndCommandBuffer(slot.cmd));
-    const VkCommandBufferSubmitInfo cmdInfo{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, .commandBuffer = slot.cmd};
-    const VkSubmitInfo2 submitInfo{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2, .commandBufferInfoCount = 1, .pCommandBufferInfos = &cmdInfo};
     VkFence fence = slot.fence.get();
     const auto start = std::chrono::steady_clock::now();
-    VK_CHECK(vkQueueSubmit2(mContext->graphicsQueue().queue, 1, &submitInfo, fence));
+    submitCommands(*mContext, slot);
     VK_CHECK(vkWaitForFences(mContext->device(), 1, &fence, VK_TRUE, UINT64_MAX));
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     VK_CHECK(vkResetFences(mContext->device(), 1, &fence));
-    // The pool holds this one command buffer; resetting it keeps the slot's descriptors and
-    // timestamps, which the rest of the frame goes on using.
-    VK_CHECK(vkResetCommandPool(mContext->device(), slot.pool.get(), 0));
-    const VkCommandBufferBeginInfo info{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
-                                        .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
-    VK_CHECK(vkBeginCommandBuffer(slot.cmd, &info));
+    // Unlike begin(), this keeps the slot's descriptors and timestamps, which the rest of the
+    // frame goes on using.
+    restartCommands(*mContext, slot);
     return ms;
 }
 

@@ -59,6 +59,17 @@ std::pair<double, int> difference(const CapturedFrame& a, const CapturedFrame& b
     return {sum / double(a.rgba8.size() / 4 * 3), largest};
 }
 
+// Pixels whose largest RGB difference is more than `levels`.
+size_t pixelsDifferingBy(const CapturedFrame& a, const CapturedFrame& b, int levels) {
+    size_t differing = 0;
+    for (size_t i = 0; i < a.rgba8.size(); i += 4) {
+        int d = 0;
+        for (int ch = 0; ch < 3; ++ch) d = std::max(d, std::abs(int(a.rgba8[i + ch]) - int(b.rgba8[i + ch])));
+        differing += d > levels;
+    }
+    return differing;
+}
+
 TEST_F(ShadingPathTest, VisibilityFramesScheduleItsPassesInsteadOfTheForwardOnes) {
     const scene::Environment sky = scene::makeProceduralSky();
     render(passes::ShadingPath::Visibility, passes::DebugView::None, &sky);
@@ -156,12 +167,7 @@ TEST_F(ShadingPathTest, MsaaAlphaMaskedCoverageMatchesTheForwardPathButOnTheMask
     const CapturedFrame forward = render(passes::ShadingPath::Forward, passes::DebugView::None, nullptr, 4);
     const CapturedFrame visibility = render(passes::ShadingPath::Visibility, passes::DebugView::None, nullptr, 4);
     ASSERT_TRUE(explains("4-sample visibility image"));
-    size_t differing = 0;
-    for (size_t i = 0; i < forward.rgba8.size(); i += 4) {
-        int d = 0;
-        for (int ch = 0; ch < 3; ++ch) d = std::max(d, std::abs(int(forward.rgba8[i + ch]) - int(visibility.rgba8[i + ch])));
-        differing += d > 3;
-    }
+    const size_t differing = pixelsDifferingBy(forward, visibility, 3);
     const auto [mean, largest] = difference(forward, visibility);
     EXPECT_LE(mean, 0.1) << "largest " << largest;
     EXPECT_LE(double(differing) / (kWidth * kHeight), 0.005) << differing << " pixels; largest " << largest;
@@ -187,12 +193,7 @@ TEST_F(ShadingPathTest, MsaaBlendedAndTransmissiveDrawsFollowTheVisibilityPathsS
         ASSERT_TRUE(explains("4-sample visibility image")) << model;
         EXPECT_TRUE(declares("msaa_expand")) << model;
         EXPECT_TRUE(declares(std::string(model) == "TransmissionTest" ? "forward_transmission" : "forward_blended")) << model;
-        size_t differing = 0;
-        for (size_t i = 0; i < forward.rgba8.size(); i += 4) {
-            int d = 0;
-            for (int ch = 0; ch < 3; ++ch) d = std::max(d, std::abs(int(forward.rgba8[i + ch]) - int(visibility.rgba8[i + ch])));
-            differing += d > 3;
-        }
+        const size_t differing = pixelsDifferingBy(forward, visibility, 3);
         const auto [mean, largest] = difference(forward, visibility);
         EXPECT_LE(mean, 0.1) << model << ": largest " << largest;
         EXPECT_LE(double(differing) / (kWidth * kHeight), 0.005) << model << ": " << differing << " pixels; largest " << largest;
