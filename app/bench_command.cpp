@@ -144,6 +144,12 @@ int runBench(const RenderOptions& options) {
     out["frames"] = options.frames;
     out["sceneLoadMs"] = loadMs;  // reading and decoding the file, CPU
     out["geometryDecompressionMs"] = scene.decompression.milliseconds;  // part of it: Draco and meshopt
+    const scene::Scene::TextureDecoding& textures = scene.textureDecoding;
+    out["textures"] = {{"decodeMs", textures.milliseconds},  // part of it: PNG, JPEG, WebP, KTX2 to RGBA8
+                       {"formats", textures.formats},
+                       {"encodedBytes", textures.encodedBytes},
+                       {"decodedBytes", textures.decodedBytes},
+                       {"deviceBytes", renderer.sceneTextureBytes()}};
     out["calibration"] = {{"medianMs", calibration}, {"minMs", minimum(calibrationMs)}, {"gpuMedianMs", calibrationGpu}};
     out["frame"] = {{"medianMs", median(frameMs)},
                     {"cpuMedianMs", median(m.cpuMs)},
@@ -215,6 +221,13 @@ int runBench(const RenderOptions& options) {
                     settings.width, settings.height, context.report().name.c_str(), options.frames);
         std::printf("  scene load:  %.2f ms (reading and decoding the file)\n", loadMs);
         std::printf("  msaa:        %s\n", msaa.reason.c_str());
+        if (!textures.formats.empty()) {
+            std::string formats;
+            for (const auto& [format, count] : textures.formats) formats += (formats.empty() ? "" : ", ") + std::to_string(count) + " " + format;
+            std::printf("  textures:    %s decoded in %.1f ms (%s in files, %s of RGBA8); %s on the device\n", formats.c_str(),
+                        textures.milliseconds, formatBytes(textures.encodedBytes).c_str(), formatBytes(textures.decodedBytes).c_str(),
+                        formatBytes(renderer.sceneTextureBytes()).c_str());
+        }
         if (const auto& d = scene.decompression; d.dracoPrimitives + d.meshoptViews > 0)
             std::printf("  geometry decompression: %.2f ms (%zu Draco primitives, %zu meshopt bufferViews)\n",
                         d.milliseconds, d.dracoPrimitives, d.meshoptViews);

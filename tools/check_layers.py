@@ -39,7 +39,8 @@ LAYERS = {
     "scene":     ("candela_scene",     ["animation", "shared", "core"]),
     "geometry":  ("candela_geometry",  ["scene"]),
     "pose":      ("candela_pose",      ["scene", "core"]),
-    "assets":    ("candela_assets",    ["scene", "geometry", "pose", "shared", "core"]),
+    "textures":  ("candela_textures",  ["core"]),
+    "assets":    ("candela_assets",    ["scene", "geometry", "pose", "textures", "shared", "core"]),
     "ibl":       ("candela_ibl",       ["core"]),
     "reports":   ("candela_reports",   ["assets", "ibl", "shared", "core"]),
     "shader":    ("candela_shader",    []),
@@ -57,7 +58,7 @@ LAYERS = {
                                         "ibl", "core"]),
 }
 ALL = sorted(LAYERS)
-CPU = ["core", "shared", "animation", "scene", "geometry", "pose", "assets", "ibl", "reports", "shader", "graph"]
+CPU = ["core", "shared", "animation", "scene", "geometry", "pose", "textures", "assets", "ibl", "reports", "shader", "graph"]
 ENGINE_UNIT_TESTS = ["device_select_test.cpp", "device_profile_test.cpp", "memory_type_test.cpp", "msaa_choice_test.cpp", "graph_pass_context_test.cpp",
                      "graph_msaa_test.cpp", "draw_list_test.cpp", "visibility_frame_test.cpp", "ibl_sample_tables_test.cpp",
                      "orbit_controls_test.cpp", "ibl_report_table_test.cpp", "forward_shader_test.cpp",

@@ -12,6 +12,7 @@ packages=(
   libglfw3-dev libimgui-dev glslang-dev xvfb xauth
   clang libclang-rt-14-dev
   libdraco-dev libmeshoptimizer-dev gltfpack
+  libwebp-dev libzstd-dev
 )
 
 missing=()

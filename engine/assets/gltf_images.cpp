@@ -3,11 +3,14 @@
 #include "assets/gltf_accessors.h"
 
 #include "core/errors.h"
+#include "textures/ktx2_file.h"
+#include "textures/webp_image.h"
 
 #include <stb_image.h>
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <limits>
 #include <memory>
@@ -45,9 +48,44 @@ std::string stbiReason() {
 
 }  // namespace
 
-std::pair<uint32_t, uint32_t> checkImageHeader(const LoadContext& ctx, std::span<const uint8_t> bytes,
-                                               const std::string& what, uint32_t maxDimension, bool unreadableOk) {
+uint64_t ImageHeader::decodedBytes() const {
+    uint64_t bytes = 0;
+    for (uint32_t level = 0; level < levels; ++level)
+        bytes += uint64_t(std::max(1u, width >> level)) * std::max(1u, height >> level) * 4;
+    return bytes;
+}
+
+namespace {
+
+// The header of a format candela_textures reads: (width, height, levels), or a UserError.
+ImageHeader texturesHeader(std::span<const uint8_t> bytes, uint32_t maxDimension) {
+    if (textures::isKtx2(bytes)) {
+        const textures::Ktx2Info info = textures::readKtx2Info(bytes, maxDimension);
+        return {info.width, info.height, info.levelCount};
+    }
+    const auto [width, height] = textures::webpSize(bytes, maxDimension);
+    return {width, height, 1};
+}
+
+// Forwards a decoder's notes and warnings to the load's log, naming the image.
+void report(const LoadContext& ctx, const textures::DecodedTexture& texture, const std::string& what) {
+    for (const std::string& note : texture.notes) ctx.note(what + ": " + note);
+    for (const std::string& warning : texture.warnings) ctx.warn(what + ": " + warning);
+}
+
+}  // namespace
+
+ImageHeader checkImageHeader(const LoadContext& ctx, std::span<const uint8_t> bytes, const std::string& what,
+                             uint32_t maxDimension, bool unreadableOk) {
     if (bytes.empty()) ctx.fail(what + ": no image data");
+    if (textures::isKtx2(bytes) || textures::isWebp(bytes)) {
+        try {
+            return texturesHeader(bytes, maxDimension);
+        } catch (const UserError& e) {
+            if (unreadableOk) return {0, 0, 1};
+            ctx.fail(what + ": " + e.what());
+        }
+    }
     if (bytes.size() > size_t(std::numeric_limits<int>::max())) ctx.fail(what + ": image data larger than 2 GiB");
     const int length = int(bytes.size());
     int width = 0, height = 0, channels = 0;
@@ -57,19 +95,47 @@ std::pair<uint32_t, uint32_t> checkImageHeader(const LoadContext& ctx, std::span
         uint32_t pngWidth = 0, pngHeight = 0;
         if (pngDeclaredSize(bytes, pngWidth, pngHeight) && (pngWidth > maxDimension || pngHeight > maxDimension))
             ctx.fail(what + ": " + sizeProblem(pngWidth, pngHeight, maxDimension));
-        if (unreadableOk) return {0, 0};
+        if (unreadableOk) return {0, 0, 1};
         ctx.fail(what + ": cannot decode image (" + reason + ")");
     }
     if (width <= 0 || height <= 0 || uint32_t(width) > maxDimension || uint32_t(height) > maxDimension)
         ctx.fail(what + ": " + sizeProblem(uint32_t(std::max(width, 0)), uint32_t(std::max(height, 0)), maxDimension));
-    return {uint32_t(width), uint32_t(height)};
+    return {uint32_t(width), uint32_t(height), 1};
 }
 
 DecodedImage decodeImage(const LoadContext& ctx, std::span<const uint8_t> bytes, const std::string& what,
                          uint32_t maxDimension) {
-    const auto [width, height] = checkImageHeader(ctx, bytes, what, maxDimension);
-    const int length = int(bytes.size());
+    const ImageHeader header = checkImageHeader(ctx, bytes, what, maxDimension);
     DecodedImage image;
+    if (textures::isKtx2(bytes) || textures::isWebp(bytes)) {
+        textures::DecodedTexture texture;
+        try {
+            texture = textures::isKtx2(bytes) ? textures::decodeKtx2(bytes, maxDimension)
+                                              : textures::decodeWebp(bytes, maxDimension);
+        } catch (const UserError& e) {
+            ctx.fail(what + ": " + e.what());
+        }
+        report(ctx, texture, what);
+        if (textures::isKtx2(bytes)) {
+            const textures::Ktx2Info info = textures::readKtx2Info(bytes, maxDimension);
+            image.fileSrgb = info.srgb;
+            image.format = info.payload == textures::BasisPayload::Etc1s ? "KTX2 ETC1S"
+                           : info.supercompression == textures::Supercompression::Zstandard ? "KTX2 UASTC+zstd"
+                                                                                            : "KTX2 UASTC";
+        } else {
+            image.format = "WebP";
+        }
+        image.width = texture.levels[0].width;
+        image.height = texture.levels[0].height;
+        image.rgba8 = std::move(texture.levels[0].rgba8);
+        for (size_t level = 1; level < texture.levels.size(); ++level) image.mips.push_back(std::move(texture.levels[level].rgba8));
+        return image;
+    }
+    const uint32_t width = header.width, height = header.height;
+    const int length = int(bytes.size());
+    image.format = pngDeclaredSize(bytes, image.width, image.height) ? "PNG"
+                   : bytes.size() >= 2 && bytes[0] == 0xFF && bytes[1] == 0xD8 ? "JPEG"
+                                                                               : "other";
     int w = 0, h = 0, channels = 0;
     const size_t texels = size_t(width) * size_t(height);
     if (stbi_is_16_bit_from_memory(bytes.data(), length)) {
@@ -90,6 +156,16 @@ DecodedImage decodeImage(const LoadContext& ctx, std::span<const uint8_t> bytes,
     return image;
 }
 
+int textureImage(const tinygltf::Texture& texture) {
+    for (const char* name : {"KHR_texture_basisu", "EXT_texture_webp"}) {
+        const auto it = texture.extensions.find(name);
+        if (it == texture.extensions.end() || !it->second.IsObject() || !it->second.Has("source")) continue;
+        const tinygltf::Value& source = it->second.Get("source");
+        if (source.IsInt() && source.GetNumberAsInt() >= 0) return source.GetNumberAsInt();
+    }
+    return texture.source;
+}
+
 ImageTable::ImageTable(const LoadContext& ctx, const tinygltf::Model& model,
                        std::map<int, std::vector<uint8_t>> uriImages, const LoadOptions& options, Scene& scene)
     : mCtx(ctx), mModel(model), mEncoded(std::move(uriImages)), mOptions(options), mScene(scene) {}
@@ -104,11 +180,12 @@ std::span<const uint8_t> ImageTable::encoded(int index, const std::string& what)
 
 uint64_t ImageTable::declaredBytes(int index) {
     const std::string what = label("image", index, mModel.images[size_t(index)].name);
-    const auto [width, height] = checkImageHeader(mCtx, encoded(index, what), what, mOptions.maxImageDimension);
-    const uint64_t bytes = uint64_t(width) * height * 4;
+    const ImageHeader header = checkImageHeader(mCtx, encoded(index, what), what, mOptions.maxImageDimension);
+    const uint64_t bytes = header.decodedBytes();
     if (bytes > mOptions.maxImageBytes)
-        mCtx.fail(what + ": " + std::to_string(width) + "x" + std::to_string(height) + " decodes to " + formatBytes(bytes) +
-                  " of RGBA8, above the limit of " + formatBytes(mOptions.maxImageBytes) + " per image");
+        mCtx.fail(what + ": " + std::to_string(header.width) + "x" + std::to_string(header.height) +
+                  (header.levels > 1 ? " with " + std::to_string(header.levels) + " levels" : std::string()) + " decodes to " +
+                  formatBytes(bytes) + " of RGBA8, above the limit of " + formatBytes(mOptions.maxImageBytes) + " per image");
     return bytes;
 }
 
@@ -127,8 +204,15 @@ DecodedImage& ImageTable::decoded(int index) {
     auto it = mDecoded.find(index);
     if (it != mDecoded.end()) return it->second;
     const std::string what = label("image", index, mModel.images[size_t(index)].name);
-    declaredBytes(index);  // the per-image limit, before any pixel is decoded
-    DecodedImage& out = mDecoded[index] = decodeImage(mCtx, encoded(index, what), what, mOptions.maxImageDimension);
+    const uint64_t decodedBytes = declaredBytes(index);  // the per-image limit, before any pixel is decoded
+    const auto start = std::chrono::steady_clock::now();
+    const std::span<const uint8_t> bytes = encoded(index, what);
+    DecodedImage& out = mDecoded[index] = decodeImage(mCtx, bytes, what, mOptions.maxImageDimension);
+    Scene::TextureDecoding& stats = mScene.textureDecoding;
+    stats.milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    ++stats.formats[out.format];
+    stats.encodedBytes += bytes.size();
+    stats.decodedBytes += decodedBytes;
     mEncoded.erase(index);
     return out;
 }
@@ -147,12 +231,18 @@ int ImageTable::resolve(int index, bool srgb) {
         image.width = first.width;
         image.height = first.height;
         image.rgba8 = first.rgba8;
+        image.mips = first.mips;
     } else {
         DecodedImage& pixels = decoded(index);
         image.width = pixels.width;
         image.height = pixels.height;
         image.rgba8 = std::move(pixels.rgba8);
+        image.mips = std::move(pixels.mips);
     }
+    if (const auto it = mDecoded.find(index); it != mDecoded.end() && it->second.fileSrgb && *it->second.fileSrgb != srgb)
+        mCtx.warn(label("image", index, source.name) + ": the KTX2 file's transfer function is " +
+                  (*it->second.fileSrgb ? "sRGB" : "linear") + " but a material reads it as " + (srgb ? "colour (sRGB)" : "linear data") +
+                  " (KHR_texture_basisu requires them to match; read as the material asks)");
     const int entry = int(mScene.images.size());
     mScene.images.push_back(std::move(image));
     mEntries[{index, srgb}] = entry;

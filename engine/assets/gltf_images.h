@@ -1,6 +1,7 @@
 #pragma once
-// Internal to the glTF loader: image decoding (any format stb_image reads, to RGBA8) and the table
-// that maps (glTF image, sRGB or linear use) to Scene::images entries.
+// Internal to the glTF loader: image decoding (PNG and JPEG through stb_image, WebP through libwebp,
+// KTX2/Basis Universal through candela_textures, all to RGBA8) and the table that maps (glTF image,
+// sRGB or linear use) to Scene::images entries.
 
 #include "assets/gltf_context.h"
 #include "assets/gltf_loader.h"
@@ -8,6 +9,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <set>
 #include <span>
 #include <string>
@@ -16,6 +18,7 @@
 
 namespace tinygltf {
 class Model;
+struct Texture;
 }
 
 namespace candela::scene::gltf {
@@ -23,20 +26,36 @@ namespace candela::scene::gltf {
 struct DecodedImage {
     uint32_t width = 0;
     uint32_t height = 0;
-    std::vector<uint8_t> rgba8;  // width × height × 4, top row first
+    std::vector<uint8_t> rgba8;              // width × height × 4, top row first
+    std::vector<std::vector<uint8_t>> mips;  // the file's own levels 1… (KTX2), as Scene::Image::mips
+    std::optional<bool> fileSrgb;            // the transfer function a KTX2 file declares
+    std::string format;                      // as Scene::TextureDecoding::formats names it
 };
 
-// Reads the declared size with stbi_info_from_memory (no pixel is decoded) and rejects a width or
-// height above `maxDimension`; returns (width, height). A header stb_image cannot read fails too,
-// unless `unreadableOk` (then (0, 0) is returned). Throws via ctx.fail("WHAT: problem").
-std::pair<uint32_t, uint32_t> checkImageHeader(const LoadContext& ctx, std::span<const uint8_t> bytes,
-                                               const std::string& what, uint32_t maxDimension,
-                                               bool unreadableOk = false);
+// What an image's header declares, read without decoding a pixel.
+struct ImageHeader {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    uint32_t levels = 1;  // levels the file stores (KTX2), else 1
+    uint64_t decodedBytes() const;  // RGBA8 bytes of every stored level
+};
+
+// Reads the declared size of a PNG, JPEG (or any format stb_image reads), WebP or KTX2 image and
+// rejects a width or height above `maxDimension`. A header that cannot be read fails too, unless
+// `unreadableOk` (then a zero-sized header is returned). Throws via ctx.fail("WHAT: problem").
+ImageHeader checkImageHeader(const LoadContext& ctx, std::span<const uint8_t> bytes, const std::string& what,
+                             uint32_t maxDimension, bool unreadableOk = false);
 
 // Decodes `bytes` to RGBA8 after checkImageHeader, so an absurd declared size allocates nothing.
-// 16-bit sources are rounded to 8 bits. Throws via ctx.fail("WHAT: problem").
+// 16-bit sources are rounded to 8 bits; a KTX2 file's own mip levels are kept. The decoders' notes
+// and warnings go to ctx, prefixed with `what`. Throws via ctx.fail("WHAT: problem").
 DecodedImage decodeImage(const LoadContext& ctx, std::span<const uint8_t> bytes, const std::string& what,
                          uint32_t maxDimension);
+
+// The glTF image a texture samples: KHR_texture_basisu's source, else EXT_texture_webp's, else the
+// core `source` (-1 when none is given). The extensions are alternatives to the core source
+// (docs/scenes.md says why KTX2 comes first); an index that is not a non-negative integer reads as absent.
+int textureImage(const tinygltf::Texture& texture);
 
 // Creates Scene::images entries on demand, decoding only the images materials use. An image used
 // both as sRGB (base colour, emissive) and as linear data becomes two entries. `uriImages` holds

@@ -55,12 +55,13 @@ TextureRef textureRef(const LoadContext& ctx, const tinygltf::Model& model, Imag
     if (index < 0) return ref;
     if (size_t(index) >= model.textures.size()) ctx.fail(what + ": texture " + std::to_string(index) + " does not exist");
     const tinygltf::Texture& texture = model.textures[size_t(index)];
-    if (texture.source < 0) {
-        ctx.warn(what + ": texture " + std::to_string(index) + " has no PNG/JPEG source (ignored)");
+    const int source = textureImage(texture);
+    if (source < 0) {
+        ctx.warn(what + ": texture " + std::to_string(index) + " has no image source (ignored)");
         return ref;
     }
-    if (size_t(texture.source) >= model.images.size())
-        ctx.fail(what + ": texture " + std::to_string(index) + " names image " + std::to_string(texture.source) +
+    if (size_t(source) >= model.images.size())
+        ctx.fail(what + ": texture " + std::to_string(index) + " names image " + std::to_string(source) +
                  ", which does not exist");
     if (texture.sampler >= 0 && size_t(texture.sampler) >= model.samplers.size())
         ctx.fail(what + ": texture " + std::to_string(index) + " names sampler " + std::to_string(texture.sampler) +
@@ -82,7 +83,7 @@ TextureRef textureRef(const LoadContext& ctx, const tinygltf::Model& model, Imag
     }
     ref.texCoord = uint32_t(set);
     ref.sampler = texture.sampler;
-    ref.image = images.resolve(texture.source, srgb);
+    ref.image = images.resolve(source, srgb);
     return ref;
 }
 
@@ -96,7 +97,7 @@ const tinygltf::Value* findExtension(const tinygltf::ExtensionMap& extensions, c
 std::set<std::pair<int, bool>> imageUses(const tinygltf::Model& model) {
     std::set<std::pair<int, bool>> uses;
     auto add = [&](int texture, bool srgb) {
-        if (texture >= 0 && size_t(texture) < model.textures.size()) uses.insert({model.textures[size_t(texture)].source, srgb});
+        if (texture >= 0 && size_t(texture) < model.textures.size()) uses.insert({textureImage(model.textures[size_t(texture)]), srgb});
     };
     for (const tinygltf::Material& m : model.materials) {
         add(m.pbrMetallicRoughness.baseColorTexture.index, true);

@@ -265,6 +265,9 @@ void checkDocument(const Checker& c, const Json& root) {
     c.array(root, "scenes", [&](const Json& s, const std::string& p) { c.properties(s, p, {{"nodes", Kind::IndexArray}}); });
     c.array(root, "textures", [&](const Json& t, const std::string& p) {
         c.properties(t, p, {{"sampler", Kind::Index}, {"source", Kind::Index}});
+        if (const Json* ext = c.child(t, p, "extensions", {}))
+            for (const char* name : {"KHR_texture_basisu", "EXT_texture_webp"})
+                c.child(*ext, p + ".extensions", name, {{"source", Kind::Index}});
     });
     c.array(root, "skins", [&](const Json& s, const std::string& p) {
         c.properties(s, p, {{"inverseBindMatrices", Kind::Index}, {"skeleton", Kind::Index}, {"joints", Kind::IndexArray},

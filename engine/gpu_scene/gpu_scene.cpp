@@ -227,8 +227,11 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
         for (const TextureSlot& slot : kCoreTextureSlots) mark(m.*slot.field, slot.normalMap);
         for (const TextureSlot& slot : kLayerTextureSlots) mark(m.*slot.field, slot.normalMap);
     }
+    // A file's own levels (KTX2) are uploaded as they are, except for normal maps, whose chain must
+    // carry the lost length in A (computed from level 0); other images get their mips generated.
     const auto upload = [&](const Image& source, bool normalMap) {
-        const uint32_t mips = std::bit_width(std::max(source.width, source.height));
+        const bool fileMips = !normalMap && !source.mips.empty();
+        const uint32_t mips = fileMips ? uint32_t(source.mips.size() + 1) : std::bit_width(std::max(source.width, source.height));
         vk::Image image(context, {.width = source.width,
                                   .height = source.height,
                                   .mipLevels = mips,
@@ -240,6 +243,10 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
             const std::vector<std::vector<uint8_t>> chain = normalMapMipChain(source);
             for (uint32_t mip = 0; mip < chain.size(); ++mip)
                 uploader.image(image, std::as_bytes(std::span(chain[mip])), mip, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        } else if (fileMips) {
+            uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+            for (uint32_t mip = 1; mip < mips; ++mip)
+                uploader.image(image, std::as_bytes(std::span(source.mips[mip - 1])), mip, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
         } else {
             uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                            /*generateMips=*/true);
@@ -312,5 +319,12 @@ void GpuScene::rewrite(const std::vector<LightData>& lights, const std::vector<M
 GpuScene::Binding GpuScene::texture(uint32_t material, int slot) const { return mBindings.at(material)[slot]; }
 
 GpuScene::Binding GpuScene::layerTexture(uint32_t material, int slot) const { return mLayerBindings.at(material)[slot]; }
+
+VkDeviceSize GpuScene::textureBytes() const {
+    VkDeviceSize bytes = 0;
+    for (const vk::Image& image : mImages) bytes += image.memoryBytes();
+    for (const vk::Image& image : mExtraImages) bytes += image.memoryBytes();
+    return bytes;
+}
 
 }  // namespace candela::scene

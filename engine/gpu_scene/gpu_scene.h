@@ -97,6 +97,8 @@ public:
     // The sizes of the vertex and index buffers in bytes (storage-buffer range checks).
     VkDeviceSize vertexBytes() const { return mVertices.size(); }
     VkDeviceSize indexBytes() const { return mIndices.size(); }
+    // Device memory of the scene's textures: every image with its mips, normal-map copies included.
+    VkDeviceSize textureBytes() const;
 
 private:
     const Scene* mScene;

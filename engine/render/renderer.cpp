@@ -34,6 +34,8 @@ void Renderer::validateSettings(const RenderSettings& settings) const {
 
 vk::MsaaChoice Renderer::msaa(std::optional<uint32_t> requested) const { return mBuilder.msaa(requested); }
 
+VkDeviceSize Renderer::sceneTextureBytes() const { return mScene.hasGpuScene() ? mScene.gpuScene().textureBytes() : 0; }
+
 void Renderer::sceneReplaced() { mScene.sceneReplaced(); }
 void Renderer::shadersReplaced(const std::vector<std::string>& names) { mScene.shadersReplaced(names); }
 void Renderer::recomputeIbl() { mScene.recomputeIbl(); }

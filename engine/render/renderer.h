@@ -81,6 +81,8 @@ public:
     const passes::DrawStats& drawStats() const { return mBuilder.drawStats(); }
     // The sample count `requested` (RenderSettings::msaa) gives on this device, and why.
     vk::MsaaChoice msaa(std::optional<uint32_t> requested) const;
+    // Device memory of the textures of the scene last drawn (GpuScene::textureBytes); 0 before a frame.
+    VkDeviceSize sceneTextureBytes() const;
     // The last IBL precompute that completed.
     const PrecomputeTime& lastPrecompute() const { return mLastPrecompute; }
     // Waits for the pipelines queued ahead of use (RenderSettings::precompile) to be built

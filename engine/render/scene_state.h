@@ -63,6 +63,7 @@ public:
     void recomputeIbl();
 
     const scene::GpuScene& gpuScene() const { return *mGpuScene; }
+    bool hasGpuScene() const { return mGpuScene != nullptr; }
     const passes::MaterialKeys& materialKeys() const { return mKeys; }
     // The rest pose of an uploaded scene with skins or morph targets (drawn when a frame brings no
     // pose of its own: skinned meshes are placed by their joints even at rest); null otherwise.

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -48,6 +49,9 @@ struct Image {
     uint32_t width = 0;
     uint32_t height = 0;
     std::vector<uint8_t> rgba8;  // width × height × 4, top row first
+    // The file's own smaller levels (KTX2), level 1 first, each halved as Vulkan's (⌊size / 2⌋, at
+    // least 1); empty when the file has none and the mips are generated on upload.
+    std::vector<std::vector<uint8_t>> mips;
     bool srgb = false;           // true when used as base colour or emissive (sRGB-encoded)
 };
 
@@ -382,6 +386,15 @@ struct Scene {
         size_t dracoPrimitives = 0;
         size_t meshoptViews = 0;
     } decompression;
+    // What decoding the images the materials use cost (PNG, JPEG, WebP, KTX2): wall time, the
+    // files decoded by format name ("PNG", "WebP", "KTX2 ETC1S", "KTX2 UASTC+zstd", …), their
+    // encoded bytes and the RGBA8 bytes they became (every level a KTX2 file stores included).
+    struct TextureDecoding {
+        double milliseconds = 0.0;
+        std::map<std::string, size_t> formats;
+        uint64_t encodedBytes = 0;
+        uint64_t decodedBytes = 0;
+    } textureDecoding;
     // What preparing the geometry for drawing did (geometry/mesh_optimize.h): the distinct meshes
     // (index ranges the draws use), how many got a chain of levels of detail, the index memory of
     // their full detail and of the chains' further levels, and the wall time it took.

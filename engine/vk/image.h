@@ -57,6 +57,8 @@ public:
     const ImageDesc& desc() const { return mDesc; }
     VkImageAspectFlags aspect() const { return aspectOf(mDesc.format); }
     explicit operator bool() const { return mImage != VK_NULL_HANDLE; }
+    // The device memory bound to the image (its allocation's size; 0 for external memory).
+    VkDeviceSize memoryBytes() const { return mAllocation.size; }
 
     // A view of mips [baseMip, baseMip + mipCount) and layers [baseLayer, baseLayer + layerCount).
     ImageView createView(VkImageViewType type, uint32_t baseMip, uint32_t mipCount, uint32_t baseLayer,

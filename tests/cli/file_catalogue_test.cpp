@@ -15,6 +15,7 @@
 #include "draco_test_util.h"
 #include "gltf_test_util.h"
 #include "meshopt_test_util.h"
+#include "webp_test_writer.h"
 
 #include <stb_image.h>
 #include <zlib.h>
@@ -877,6 +878,51 @@ std::vector<Row> catalogue() {
     warning("material layers", "ClearcoatRoughnessNegative",
             layered({{"KHR_materials_clearcoat", {{"clearcoatFactor", 1}, {"clearcoatRoughnessFactor", -0.5}}}}),
             "clearcoatRoughnessFactor -0.5 is outside [0, 1] (using 0)", true);
+
+    // -- Texture formats: KTX2 with Basis Universal (KHR_texture_basisu) and WebP (EXT_texture_webp).
+    // A 64×64 ETC1S file with 7 levels, stored smallest first, so level 0 ends the file.
+    const auto ktx2 = [](std::function<void(Bytes&)> edit) -> Make {
+        return [edit](const fs::path& dir) {
+            Bytes k = testKtx2("etc1s_mips.ktx2");
+            edit(k);
+            return ktx2Triangle(k).writeGlb(dir);
+        };
+    };
+    const auto setU64 = [](Bytes& b, size_t at, uint64_t v) {
+        for (int i = 0; i < 8; ++i) b[at + size_t(i)] = uint8_t(v >> (8 * i));
+    };
+    loads("texture format", "Ktx2Etc1sWithMips", ktx2([](Bytes&) {}));
+    error("truncated", "Ktx2Header", ktx2([](Bytes& k) { k.resize(40); }), "image 0: KTX2: truncated: 40 bytes, the header needs 80");
+    error("truncated", "Ktx2Level0", ktx2([](Bytes& k) { k.resize(k.size() - 9); }), "image 0: KTX2: level 0 (");
+    error("chunk length", "Ktx2LevelLengthLies", ktx2([setU64](Bytes& k) { setU64(k, 88, uint64_t(1) << 40); }),
+          "image 0: KTX2: level 0 (1099511627776 bytes at");
+    error("chunk length", "Ktx2GlobalDataLies", ktx2([setU64](Bytes& k) { setU64(k, 72, 0xFFFFFFFFull); }),
+          "image 0: KTX2: supercompression global data (4294967295 bytes at");
+    error("absurd size", "Ktx2Huge", ktx2([](Bytes& k) { setU32(k, 20, 1u << 20); setU32(k, 24, 1u << 20); }),
+          "image 0: KTX2: image size 1048576x1048576 exceeds the limit of 16384 pixels per side");
+    error("absurd size", "Ktx2TooManyLevels", ktx2([](Bytes& k) { setU32(k, 40, 20); }),
+          "image 0: KTX2: 20 mip levels, a 64x64 image has at most 7");
+    error("unknown value", "Ktx2UnknownSupercompression", ktx2([](Bytes& k) { setU32(k, 44, 9); }),
+          "image 0: KTX2: unknown supercompression scheme 9");
+    error("unknown value", "Ktx2Etc1sWithZstandard", ktx2([](Bytes& k) { setU32(k, 44, 2); }),
+          "image 0: KTX2: ETC1S payload with supercompression scheme 2 (BasisLZ, 1, is required)");
+    error("unknown value", "Ktx2NotBasis", ktx2([](Bytes& k) { setU32(k, 12, 37); }),
+          "image 0: KTX2: vkFormat 37 is not a Basis Universal payload");
+    warning("texture format", "Ktx2LinearFileAsColour", [](const fs::path& dir) {
+        return ktx2Triangle(testKtx2("etc1s_noise_linear.ktx2")).writeGlb(dir);
+    }, "the KTX2 file's transfer function is linear but a material reads it as colour (sRGB)", true);
+    const auto webp = [](bool lossless) {
+        Bytes pixels(16 * 16 * 4);
+        for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = uint8_t(i % 4 == 3 ? 255 : i * 7);
+        return candela::test::encodeWebp(16, 16, pixels, lossless);
+    };
+    loads("texture format", "WebpLossless", [webp](const fs::path& dir) { return webpTriangle(webp(true)).writeGlb(dir); });
+    loads("texture format", "WebpLossy", [webp](const fs::path& dir) { return webpTriangle(webp(false)).writeGlb(dir); });
+    error("truncated", "Webp", [webp](const fs::path& dir) {
+        Bytes w = webp(true);
+        w.resize(w.size() / 2);
+        return webpTriangle(w).writeGlb(dir);
+    }, "image 0: WebP: cannot decode the image");
     return rows;
 }
 

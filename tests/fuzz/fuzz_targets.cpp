@@ -7,6 +7,8 @@
 #include "core/errors.h"
 #include "pose/scene_pose.h"
 #include "pose/skinning.h"
+#include "textures/ktx2_file.h"
+#include "textures/webp_image.h"
 
 #include <algorithm>
 #include <cmath>
@@ -174,5 +176,38 @@ void fuzzGltf(const uint8_t* data, size_t size, const std::filesystem::path& uri
 void fuzzHdr(const uint8_t* data, size_t size) { decodeEnvironment(&scene::decodeHdr, data, size); }
 
 void fuzzExr(const uint8_t* data, size_t size) { decodeEnvironment(&scene::decodeExr, data, size); }
+
+namespace {
+
+// A decoded texture's levels: level 0 at most kMaxImageDimension per side, each further level the
+// previous one halved (at least 1), each holding width × height × 4 bytes.
+void checkLevels(const textures::DecodedTexture& texture, const char* what) {
+    if (texture.levels.empty()) violated(std::string(what) + ": no level");
+    for (size_t i = 0; i < texture.levels.size(); ++i) {
+        const textures::TextureLevel& level = texture.levels[i];
+        const std::string name = std::string(what) + " level " + std::to_string(i);
+        if (level.width == 0 || level.height == 0) violated(name + ": empty");
+        if (i == 0 && (level.width > kMaxImageDimension || level.height > kMaxImageDimension)) violated(name + ": above the limit");
+        if (i > 0 && (level.width != std::max(1u, texture.levels[i - 1].width / 2) ||
+                      level.height != std::max(1u, texture.levels[i - 1].height / 2)))
+            violated(name + ": not half the previous level");
+        if (level.rgba8.size() != size_t(level.width) * level.height * 4) violated(name + ": wrong byte count");
+    }
+}
+
+template <typename Decode>
+void decodeTexture(Decode decode, const uint8_t* data, size_t size, const char* what) {
+    try {
+        checkLevels(decode(std::span<const uint8_t>(data, size), kMaxImageDimension), what);
+    } catch (const UserError&) {
+        // Refused cleanly.
+    }
+}
+
+}  // namespace
+
+void fuzzKtx2(const uint8_t* data, size_t size) { decodeTexture(&textures::decodeKtx2, data, size, "KTX2"); }
+
+void fuzzWebp(const uint8_t* data, size_t size) { decodeTexture(&textures::decodeWebp, data, size, "WebP"); }
 
 }  // namespace candela::fuzz

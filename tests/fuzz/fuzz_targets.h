@@ -1,5 +1,5 @@
 #pragma once
-// The three fuzz targets as plain functions, shared by the libFuzzer entry points (fuzz_*.cpp,
+// The fuzz targets as plain functions, shared by the libFuzzer entry points (fuzz_*.cpp,
 // built by the fuzz preset) and by the regression test that replays every input the fuzzers ever
 // crashed on (tests/unit/fuzz_regression_test.cpp, in the ordinary and the sanitizer builds).
 //
@@ -26,5 +26,12 @@ void fuzzHdr(const uint8_t* data, size_t size);
 
 // decodeExr then sanitizeEnvironment; the same checks.
 void fuzzExr(const uint8_t* data, size_t size);
+
+// textures::decodeKtx2 (the container, BasisLZ/ETC1S and UASTC with Zstandard); checks that level 0
+// has the header's size, each further level half the previous one, and every level's byte count.
+void fuzzKtx2(const uint8_t* data, size_t size);
+
+// textures::decodeWebp (libwebp behind Candela's checks); the same checks for its single level.
+void fuzzWebp(const uint8_t* data, size_t size);
 
 }  // namespace candela::fuzz

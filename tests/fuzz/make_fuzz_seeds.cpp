@@ -1,4 +1,4 @@
-// make_fuzz_seeds OUT: writes the fuzzers' seed corpora to OUT/gltf, OUT/hdr and OUT/exr.
+// make_fuzz_seeds OUT: writes the fuzzers' seed corpora to OUT/gltf, OUT/hdr, OUT/exr, OUT/ktx2 and OUT/webp.
 //  - glTF: the project's own small models built with the unit tests' GltfBuilder (every accessor
 //    type, sparse, strips and fans, quantized attributes, node transforms, cameras, lights,
 //    textures by bufferView, data URI and file URI, KHR_texture_transform) as .gltf and .glb, and
@@ -14,6 +14,7 @@
 #include "draco_test_util.h"
 #include "gltf_test_util.h"
 #include "meshopt_test_util.h"
+#include "webp_test_writer.h"
 
 #include "assets/environment.h"
 
@@ -286,15 +287,45 @@ void makeExrSeeds(const fs::path& dir) {
 
 }  // namespace
 
+// The committed KTX2 test files (tests/data/ktx2: ETC1S and UASTC, with and without Zstandard,
+// with mips and alpha, made by the reference encoder).
+void makeKtx2Seeds(const fs::path& dir) {
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(fs::path(CANDELA_TEST_DATA) / "ktx2"))
+        if (entry.path().extension() == ".ktx2") {
+            fs::copy_file(entry.path(), dir / entry.path().filename(), fs::copy_options::overwrite_existing);
+            ++count;
+        }
+    std::printf("ktx2 seeds: %d\n", count);
+}
+
+// Lossless, lossy, with alpha and animated WebP files written with libwebp's encoder.
+void makeWebpSeeds(const fs::path& dir) {
+    std::vector<uint8_t> pixels(24 * 10 * 4);
+    for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = uint8_t(i * 37 + (i >> 5));
+    std::vector<uint8_t> opaque = pixels;
+    for (size_t i = 3; i < opaque.size(); i += 4) opaque[i] = 255;
+    const auto write = [&](const char* name, const std::vector<uint8_t>& bytes) {
+        std::ofstream(dir / name, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    };
+    write("lossless_alpha.webp", candela::test::encodeWebp(24, 10, pixels, true));
+    write("lossy_alpha.webp", candela::test::encodeWebp(24, 10, pixels, false));
+    write("lossy.webp", candela::test::encodeWebp(24, 10, opaque, false));
+    write("animated.webp", candela::test::encodeAnimatedWebp(24, 10, {pixels, opaque}));
+    std::printf("webp seeds: 4\n");
+}
+
 int main(int argc, char** argv) {
     if (argc != 2) {
         std::fprintf(stderr, "usage: make_fuzz_seeds OUT_DIR\n");
         return 2;
     }
     const fs::path out = argv[1];
-    for (const char* sub : {"gltf", "hdr", "exr"}) fs::create_directories(out / sub);
+    for (const char* sub : {"gltf", "hdr", "exr", "ktx2", "webp"}) fs::create_directories(out / sub);
     makeGltfSeeds(out / "gltf", smallPng());
     makeHdrSeeds(out / "hdr");
     makeExrSeeds(out / "exr");
+    makeKtx2Seeds(out / "ktx2");
+    makeWebpSeeds(out / "webp");
     return 0;
 }

@@ -40,6 +40,22 @@ TEST(FuzzRegressions, GltfInputsLoadOrFailCleanly) {
     }
 }
 
+TEST(FuzzRegressions, Ktx2InputsLoadOrFailCleanly) {
+    for (const fs::path& file : inputs("ktx2")) {
+        SCOPED_TRACE(file.string());
+        const std::vector<uint8_t> bytes = bytesOf(file);
+        fuzzKtx2(bytes.data(), bytes.size());
+    }
+}
+
+TEST(FuzzRegressions, WebpInputsLoadOrFailCleanly) {
+    for (const fs::path& file : inputs("webp")) {
+        SCOPED_TRACE(file.string());
+        const std::vector<uint8_t> bytes = bytesOf(file);
+        fuzzWebp(bytes.data(), bytes.size());
+    }
+}
+
 TEST(FuzzRegressions, HdrInputsLoadOrFailCleanly) {
     for (const fs::path& file : inputs("hdr")) {
         SCOPED_TRACE(file.string());

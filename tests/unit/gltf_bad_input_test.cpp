@@ -300,9 +300,9 @@ std::vector<BadCase> badCases() {
     add("MatrixWrongLength", edited([](GltfBuilder& b) { b.doc["nodes"][0]["matrix"] = std::vector<double>(15, 1.0); }), "nodes[0].matrix: expected an array of 16 numbers");
     add("InvalidMode", edited([](GltfBuilder& b) { b.doc["meshes"][0]["primitives"][0]["mode"] = 9; }), "invalid mode 9");
     add("RequiredExtensionUnsupported", edited([](GltfBuilder& b) {
-            b.doc["extensionsUsed"] = {"KHR_texture_basisu"};
-            b.doc["extensionsRequired"] = {"KHR_texture_basisu"};
-        }), "requires unsupported extension KHR_texture_basisu");
+            b.doc["extensionsUsed"] = {"EXT_texture_avif"};
+            b.doc["extensionsRequired"] = {"EXT_texture_avif"};
+        }), "requires unsupported extension EXT_texture_avif");
     return cases;
 }
 

@@ -727,27 +727,27 @@ TEST(GltfFeatures, ExternalImageFilesAndDotSegmentsInsideTheFolder) {
     EXPECT_EQ(scene.images[0].name, "textures/../textures/my%20tex.png");
 }
 
-TEST(GltfFeatures, ImagesBehindOptionalExtensionsAreNotDecoded) {
-    // EXT_texture_webp-style file: texture.source is the PNG fallback, the WebP image (which
-    // stb_image cannot read) is only named by the extension; a second texture has no source at all.
+TEST(GltfFeatures, ImagesBehindUnsupportedExtensionsAreNotDecoded) {
+    // A texture whose only image is named by an extension Candela does not read (here a made-up
+    // EXT_texture_avif-style one, whose image stb_image cannot read either) is dropped with a
+    // warning, its image never decoded; a texture with a core source beside it uses that source.
     TempDir dir;
     GltfBuilder b = fiveTextureModel(smallPng());
-    writeFile(dir / "pic.webp", std::string("RIFF....WEBPVP8 not really"));
+    writeFile(dir / "pic.avif", std::string("....ftypavif not really"));
     writeFile(dir / "ok.png", smallPng({7, 7, 7, 255}));
-    b.doc["images"] = Json::array({{{"uri", "pic.webp"}}, {{"uri", "ok.png"}}});
-    b.doc["textures"] = Json::array({{{"source", 1}, {"extensions", {{"EXT_texture_webp", {{"source", 0}}}}}},
-                                     {{"extensions", {{"KHR_texture_basisu", {{"source", 0}}}}}},
+    b.doc["images"] = Json::array({{{"uri", "pic.avif"}}, {{"uri", "ok.png"}}});
+    b.doc["textures"] = Json::array({{{"source", 1}, {"extensions", {{"EXT_texture_avif", {{"source", 0}}}}}},
+                                     {{"extensions", {{"EXT_texture_avif", {{"source", 0}}}}}},
                                      {{"source", 1}}});
-    b.doc["extensionsUsed"] = {"EXT_texture_webp", "KHR_texture_basisu", "KHR_texture_transform"};
+    b.doc["extensionsUsed"] = {"EXT_texture_avif", "KHR_texture_transform"};
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
     const Material& m = scene.materials.at(0);
     ASSERT_TRUE(m.baseColor.present());
     EXPECT_EQ(scene.images.at(size_t(m.baseColor.image)).rgba8[0], 7);
-    EXPECT_FALSE(m.metallicRoughness.present());  // texture 1: no PNG/JPEG source
-    EXPECT_TRUE(hasWarning(scene, "material 0 metallicRoughnessTexture: texture 1 has no PNG/JPEG source (ignored)"));
-    EXPECT_TRUE(hasWarning(scene, "extension EXT_texture_webp is not supported (ignored)"));
-    EXPECT_TRUE(hasWarning(scene, "extension KHR_texture_basisu is not supported (ignored)"));
-    EXPECT_EQ(scene.images.size(), 2u);  // image 1 as sRGB and as linear; the WebP never decoded
+    EXPECT_FALSE(m.metallicRoughness.present());  // texture 1: no source Candela reads
+    EXPECT_TRUE(hasWarning(scene, "material 0 metallicRoughnessTexture: texture 1 has no image source (ignored)"));
+    EXPECT_TRUE(hasWarning(scene, "extension EXT_texture_avif is not supported (ignored)"));
+    EXPECT_EQ(scene.images.size(), 2u);  // image 1 as sRGB and as linear; the AVIF never decoded
 }
 
 TEST(GltfFeatures, LightsInWorldSpace) {

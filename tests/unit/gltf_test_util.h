@@ -266,6 +266,25 @@ inline GltfBuilder texturedTriangle(const std::string& uri, const Bytes& png = {
     return b;
 }
 
+// texturedTriangle whose base colour texture takes its image only from texture extension
+// `extension` (EXT_texture_webp, KHR_texture_basisu: required, no core source), the image being
+// `bytes` in a bufferView with `mimeType`.
+inline GltfBuilder extensionImageTriangle(const std::string& extension, const Bytes& bytes, const std::string& mimeType) {
+    GltfBuilder b = texturedTriangle("", bytes);
+    b.doc["images"][0]["mimeType"] = mimeType;
+    b.doc["textures"] = Json::array({{{"extensions", {{extension, {{"source", 0}}}}}}});
+    b.doc["extensionsUsed"] = {extension};
+    b.doc["extensionsRequired"] = {extension};
+    return b;
+}
+inline GltfBuilder webpTriangle(const Bytes& webp) { return extensionImageTriangle("EXT_texture_webp", webp, "image/webp"); }
+inline GltfBuilder ktx2Triangle(const Bytes& ktx2) { return extensionImageTriangle("KHR_texture_basisu", ktx2, "image/ktx2"); }
+
+#ifdef CANDELA_TEST_DATA
+// A committed KTX2 test file (tests/data/ktx2, made by tools/ktx2-test-data).
+inline Bytes testKtx2(const std::string& name) { return readBytes(fs::path(CANDELA_TEST_DATA) / "ktx2" / name); }
+#endif
+
 // Loads and returns the UserError's message, or "" if the load succeeded. Any other exception
 // comes back as "UNEXPECTED ...", which no expectation matches.
 inline std::string loadError(const fs::path& path, const LoadOptions& options = {}) {
