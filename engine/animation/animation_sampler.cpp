@@ -98,10 +98,26 @@ void writeKey(const AnimationSampler& s, AnimatedProperty property, size_t key, 
 
 std::string samplerProblem(const AnimationSampler& s, AnimatedProperty property) {
     if (s.times.empty()) return "no keyframes";
-    const uint32_t expected = property == AnimatedProperty::Rotation ? 4 : property == AnimatedProperty::Weights ? 0 : 3;
+    uint32_t expected = 3;  // 0: at least 1
+    switch (property) {
+        case AnimatedProperty::Translation:
+        case AnimatedProperty::Scale: break;
+        case AnimatedProperty::Rotation: expected = 4; break;
+        case AnimatedProperty::Weights: expected = 0; break;
+        case AnimatedProperty::Weight:
+        case AnimatedProperty::Visibility: expected = 1; break;
+        case AnimatedProperty::Values:
+            if (s.width < 1 || s.width > 4)
+                return "values of " + std::to_string(s.width) + " components (expected 1 to 4)";
+            expected = s.width;
+            break;
+    }
     if (s.width == 0 || (expected != 0 && s.width != expected))
         return "values of " + std::to_string(s.width) + " components (expected " +
                (expected ? std::to_string(expected) : std::string("at least 1")) + ")";
+    if (property == AnimatedProperty::Visibility && s.interpolation != Interpolation::Step)
+        return std::string("a visibility (a bool) takes STEP interpolation, not ") +
+               (s.interpolation == Interpolation::Linear ? "LINEAR" : "CUBICSPLINE");
     for (size_t k = 0; k < s.times.size(); ++k) {
         if (!std::isfinite(s.times[k])) return "key time " + std::to_string(k) + " is not finite";
         if (k > 0 && s.times[k] < s.times[k - 1])

@@ -18,12 +18,17 @@ namespace candela::scene {
 enum class Interpolation : uint8_t { Step, Linear, CubicSpline };
 
 // What a channel animates. Rotations are unit quaternions stored (x, y, z, w), as in glTF;
-// weights are the morph-target weights of a mesh, `width` of them per key.
-enum class AnimatedProperty : uint8_t { Translation, Rotation, Scale, Weights };
+// weights are the morph-target weights of a mesh, `width` of them per key; Weight is one of them
+// (KHR_animation_pointer's /nodes/{}/weights/{}). Visibility is KHR_node_visibility's bool, one
+// value per key (0: hidden, anything else: visible), STEP only. Values are `width` (1 to 4) plain
+// floats of any other property KHR_animation_pointer names (material factors, texture transforms,
+// light and camera parameters): interpolated per component, never normalized.
+enum class AnimatedProperty : uint8_t { Translation, Rotation, Scale, Weights, Weight, Visibility, Values };
 
 // One sampler: key times in seconds and their values, `width` floats per value (3 for translation
-// and scale, 4 for rotation, the morph-target count for weights). For CubicSpline every key holds
-// three values in a row — in-tangent, value, out-tangent — so values has 3 × width floats per key.
+// and scale, 4 for rotation, the morph-target count for weights, 1 for a weight or a visibility,
+// the property's for Values). For CubicSpline every key holds three values in a row — in-tangent,
+// value, out-tangent — so values has 3 × width floats per key.
 struct AnimationSampler {
     std::vector<float> times;
     std::vector<float> values;
@@ -32,7 +37,8 @@ struct AnimationSampler {
 };
 
 // Why `sampler` cannot animate `property`, as a phrase for an error message ("" when it can): no
-// keys, a width that is not the property's (3 translation/scale, 4 rotation, ≥ 1 weights), a time
+// keys, a width that is not the property's (3 translation/scale, 4 rotation, ≥ 1 weights, 1 weight
+// and visibility, 1 to 4 values), an interpolation other than STEP for a visibility, a time
 // that is not finite or smaller than the one before, a value count that does not match the keys and
 // the interpolation, a value that is not finite. Two keys at the same time are accepted (a jump at
 // that time; exporters write them for cuts).

@@ -37,6 +37,7 @@ void updateWorldTransforms(std::vector<SceneNode>& nodes, std::span<const uint32
         SceneNode& node = nodes[i];
         const glm::dmat4 local = node.transform.local();
         node.world = node.parent >= 0 ? nodes[size_t(node.parent)].world * local : local;
+        node.shown = node.visible && (node.parent < 0 || nodes[size_t(node.parent)].shown);
     }
 }
 
@@ -45,7 +46,8 @@ void applyAnimation(const Animation& animation, double time, std::vector<SceneNo
     for (const AnimationChannel& channel : animation.channels) {
         const AnimationSampler& sampler = animation.samplers[channel.sampler];
         SceneNode& node = nodes[channel.node];
-        const bool fits = channel.property == AnimatedProperty::Weights ? sampler.width == node.weights.size()
+        const bool fits = channel.property == AnimatedProperty::Weights  ? sampler.width == node.weights.size()
+                          : channel.property == AnimatedProperty::Weight ? sampler.width == 1 && channel.element < node.weights.size()
                                                                          : sampler.width <= 4;
         if (!fits)
             throw InternalError("animation '" + animation.name + "': a channel's " + std::to_string(sampler.width) +
@@ -60,7 +62,10 @@ void applyAnimation(const Animation& animation, double time, std::vector<SceneNo
             case AnimatedProperty::Translation: t.translation = glm::dvec3(value[0], value[1], value[2]); break;
             case AnimatedProperty::Rotation: t.rotation = glm::dquat(value[3], value[0], value[1], value[2]); break;
             case AnimatedProperty::Scale: t.scale = glm::dvec3(value[0], value[1], value[2]); break;
-            case AnimatedProperty::Weights: break;
+            case AnimatedProperty::Weight: node.weights[channel.element] = value[0]; break;
+            case AnimatedProperty::Visibility: node.visible = value[0] != 0.0f; break;
+            case AnimatedProperty::Weights:
+            case AnimatedProperty::Values: break;  // Values: property channels, not a node's
         }
     }
 }

@@ -1,11 +1,13 @@
 #include "assets/gltf_animations.h"
 
 #include "assets/gltf_accessors.h"
+#include "scene/animated_properties.h"
 
 #include <tiny_gltf.h>
 
 #include <algorithm>
 #include <optional>
+#include <tuple>
 
 namespace candela::scene::gltf {
 namespace {
@@ -25,13 +27,34 @@ Interpolation interpolationOf(const LoadContext& ctx, const std::string& name, c
     ctx.fail(what + ": unknown interpolation '" + name.substr(0, 32) + "'");
 }
 
-// The glTF accessor type of a sampler output for `property`.
-int outputType(AnimatedProperty property) {
+// The glTF accessor type of a sampler output for `property`, `width` floats per value.
+int outputType(AnimatedProperty property, uint32_t width) {
     switch (property) {
+        case AnimatedProperty::Translation:
+        case AnimatedProperty::Scale: return TINYGLTF_TYPE_VEC3;
         case AnimatedProperty::Rotation: return TINYGLTF_TYPE_VEC4;
-        case AnimatedProperty::Weights: return TINYGLTF_TYPE_SCALAR;
-        default: return TINYGLTF_TYPE_VEC3;
+        case AnimatedProperty::Values:
+            return width == 4 ? TINYGLTF_TYPE_VEC4 : width == 3 ? TINYGLTF_TYPE_VEC3 : width == 2 ? TINYGLTF_TYPE_VEC2
+                                                                                                 : TINYGLTF_TYPE_SCALAR;
+        default: return TINYGLTF_TYPE_SCALAR;  // weights, a weight, a visibility
     }
+}
+
+const char* typeName(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+        case TINYGLTF_TYPE_VEC2: return "VEC2";
+        case TINYGLTF_TYPE_VEC3: return "VEC3";
+        case TINYGLTF_TYPE_VEC4: return "VEC4";
+        default: return "a matrix type";
+    }
+}
+
+// Pointer channels (Values, Visibility) take any component type, as KHR_animation_pointer allows
+// (integers converted, normalized ones as the core specification maps them); core ones FLOAT, or
+// for rotations and weights normalized integers.
+bool anyComponentType(AnimatedProperty property) {
+    return property == AnimatedProperty::Values || property == AnimatedProperty::Visibility;
 }
 
 // `source` read for `property` with `width` floats per value.
@@ -41,14 +64,222 @@ AnimationSampler readSampler(const LoadContext& ctx, const tinygltf::Model& mode
     sampler.interpolation = interpolationOf(ctx, source.interpolation, what);
     sampler.width = width;
     sampler.times = readFloats(ctx, model, source.input, TINYGLTF_TYPE_SCALAR, false, what + " input");
-    // Rotations and weights may be normalized integers; translations and scales are floats.
-    const bool integers = property == AnimatedProperty::Rotation || property == AnimatedProperty::Weights;
-    sampler.values = readFloats(ctx, model, source.output, outputType(property), integers, what + " output");
+    const int type = outputType(property, width);
+    if (anyComponentType(property)) {
+        for (const glm::vec4& v : readVectors(ctx, model, source.output, {type}, what + " output"))
+            sampler.values.insert(sampler.values.end(), &v[0], &v[0] + std::min<uint32_t>(width, 4));
+    } else {
+        // Rotations and weights may be normalized integers; translations and scales are floats.
+        const bool integers = property != AnimatedProperty::Translation && property != AnimatedProperty::Scale;
+        sampler.values = readFloats(ctx, model, source.output, type, integers, what + " output");
+    }
     if (const std::string problem = samplerProblem(sampler, property); !problem.empty()) ctx.fail(what + ": " + problem);
     return sampler;
 }
 
+// The pointer of a KHR_animation_pointer channel; null when the channel has none.
+const std::string* pointerOf(const tinygltf::AnimationChannel& channel) {
+    if (channel.target_path != "pointer") return nullptr;
+    const auto it = channel.target_extensions.find("KHR_animation_pointer");
+    if (it == channel.target_extensions.end() || !it->second.Get("pointer").IsString()) return nullptr;
+    return &it->second.Get("pointer").Get<std::string>();
+}
+
+// The pointer of `channel` parsed, when it has one Candela animates.
+std::optional<PointerTarget> parsedPointer(const tinygltf::AnimationChannel& channel) {
+    const std::string* pointer = pointerOf(channel);
+    return pointer ? parsePointer(*pointer) : std::nullopt;
+}
+
+// The morph-target count of glTF mesh `mesh` (its first primitive's; loadNodes checks they agree).
+size_t targetCount(const tinygltf::Model& model, int mesh) {
+    if (mesh < 0 || size_t(mesh) >= model.meshes.size() || model.meshes[size_t(mesh)].primitives.empty()) return 0;
+    return model.meshes[size_t(mesh)].primitives[0].targets.size();
+}
+
+// One animation being read: the checks and remapping of each channel.
+class AnimationReader {
+public:
+    AnimationReader(const LoadContext& ctx, const tinygltf::Model& model, const std::vector<int32_t>& sceneNode,
+                    const tinygltf::Animation& source, std::string what, Animation& out)
+        : mCtx(ctx), mModel(model), mSceneNode(sceneNode), mSource(source), mWhat(std::move(what)), mOut(out),
+          mReadAs(source.samplers.size()) {
+        out.samplers.resize(source.samplers.size());
+    }
+
+    void channel(size_t c) {
+        const tinygltf::AnimationChannel& channel = mSource.channels[c];
+        mChannelWhat = mWhat + " channel " + std::to_string(c);
+        if (channel.sampler < 0 || size_t(channel.sampler) >= mSource.samplers.size())
+            mCtx.fail(mChannelWhat + ": sampler " + std::to_string(channel.sampler) + " does not exist");
+        mPointer = pointerOf(channel);
+        if (mPointer) return pointerChannel(size_t(channel.sampler));
+        if (channel.target_path == "pointer")
+            return mCtx.warn(mChannelWhat + ": target path 'pointer' is not supported (ignored): the channel names no "
+                                            "KHR_animation_pointer pointer");
+        const std::optional<AnimatedProperty> property = propertyOf(channel.target_path);
+        if (!property) {
+            mCtx.warn(mChannelWhat + ": target path '" + channel.target_path.substr(0, 32) + "' is not supported (ignored)");
+            return;
+        }
+        if (channel.target_node < 0) return;  // no node: the target is an extension's
+        nodeChannel(size_t(channel.sampler), uint32_t(channel.target_node), *property, 0);
+    }
+
+private:
+    // "PREFIX: " for messages about the channel: its label, and its pointer when it has one.
+    std::string prefix() const { return mChannelWhat + ": " + (mPointer ? "pointer '" + *mPointer + "': " : ""); }
+    [[noreturn]] void missing(const char* kind, uint32_t index) const {
+        mCtx.fail(prefix() + kind + " " + std::to_string(index) + " does not exist");
+    }
+
+    void pointerChannel(size_t sampler) {
+        const std::optional<PointerTarget> target = parsePointer(*mPointer);
+        if (!target) return mCtx.warn(mWhat + ": pointer '" + *mPointer + "' is not supported (ignored)");
+        switch (target->kind) {
+            case PointerKind::Node: return nodeChannel(sampler, target->index, target->property, target->element);
+            case PointerKind::Mesh: return meshChannel(sampler, *target);
+            case PointerKind::Material:
+                if (target->index >= mModel.materials.size()) missing("material", target->index);
+                return propertyChannel(sampler, AnimatedObject::Material, *target);
+            case PointerKind::Light:
+                if (target->index >= mModel.lights.size()) missing("KHR_lights_punctual light", target->index);
+                return propertyChannel(sampler, AnimatedObject::Light, *target);
+            case PointerKind::Camera: {
+                if (target->index >= mModel.cameras.size()) missing("camera", target->index);
+                // A perspective camera has no orthographic properties, and the other way round.
+                const std::string& type = mModel.cameras[target->index].type;
+                if (cameraFields()[target->field].suffix.rfind("/" + type + "/", 0) != 0)
+                    return mCtx.warn(prefix() + "camera " + std::to_string(target->index) + " is " +
+                                     (type.empty() ? "of no type" : type) + " (ignored)");
+                return propertyChannel(sampler, AnimatedObject::Camera, *target);
+            }
+        }
+    }
+
+    // A channel on glTF node `node`: a core channel, or a pointer to the node.
+    void nodeChannel(size_t sampler, uint32_t node, AnimatedProperty property, uint32_t element) {
+        if (node >= mModel.nodes.size()) missing("node", node);
+        const tinygltf::Node& target = mModel.nodes[node];
+        const std::string nodeWhat = label("node", int(node), target.name);
+        // The specification forbids a matrix on a node a core channel targets; a pointer to its
+        // visibility or weights does not move it.
+        const bool moves = property == AnimatedProperty::Translation || property == AnimatedProperty::Rotation ||
+                           property == AnimatedProperty::Scale;
+        if (!target.matrix.empty() && (moves || !mPointer))
+            mCtx.fail(prefix() + nodeWhat + " has a matrix, and only TRS nodes may be animated");
+        uint32_t width = pointerWidth({.kind = PointerKind::Node, .property = property});
+        if (property == AnimatedProperty::Weights || property == AnimatedProperty::Weight) {
+            const size_t targets = targetCount(mModel, target.mesh);
+            if (targets == 0) mCtx.fail(prefix() + "animates the weights of " + nodeWhat + ", whose mesh has no morph targets");
+            if (property == AnimatedProperty::Weights) width = uint32_t(targets);
+            else if (element >= targets)
+                mCtx.fail(prefix() + "animates weight " + std::to_string(element) + " of " + nodeWhat + ", whose mesh has " +
+                          std::to_string(targets) + " morph targets");
+        }
+        read(sampler, property, width);
+        const int32_t sceneNode = mSceneNode[node];
+        if (sceneNode < 0) return;  // a node outside the loaded scene: nothing drawn moves
+        mOut.channels.push_back({.sampler = uint32_t(sampler), .node = uint32_t(sceneNode), .property = property, .element = element});
+    }
+
+    // A pointer to a mesh's weights: the default weights of every node using the mesh without
+    // weights of its own.
+    void meshChannel(size_t sampler, const PointerTarget& target) {
+        if (target.index >= mModel.meshes.size()) missing("mesh", target.index);
+        const size_t targets = targetCount(mModel, int(target.index));
+        const std::string meshWhat = label("mesh", int(target.index), mModel.meshes[target.index].name);
+        if (targets == 0) mCtx.fail(prefix() + meshWhat + " has no morph targets");
+        if (target.property == AnimatedProperty::Weight && target.element >= targets)
+            mCtx.fail(prefix() + meshWhat + " has " + std::to_string(targets) + " morph targets");
+        read(sampler, target.property, target.property == AnimatedProperty::Weights ? uint32_t(targets) : 1);
+        for (size_t n = 0; n < mModel.nodes.size(); ++n) {
+            const tinygltf::Node& node = mModel.nodes[n];
+            if (node.mesh != int(target.index) || !node.weights.empty() || mSceneNode[n] < 0) continue;
+            mOut.channels.push_back({.sampler = uint32_t(sampler), .node = uint32_t(mSceneNode[n]), .property = target.property,
+                                     .element = target.element});
+        }
+    }
+
+    void propertyChannel(size_t sampler, AnimatedObject object, const PointerTarget& target) {
+        read(sampler, AnimatedProperty::Values, pointerWidth(target));
+        mOut.properties.push_back({.sampler = uint32_t(sampler), .object = uint8_t(object), .index = target.index, .field = target.field});
+    }
+
+    // Reads sampler `s` for `property` with `width` values, once: a sampler shared by channels
+    // must suit each.
+    void read(size_t s, AnimatedProperty property, uint32_t width) {
+        const tinygltf::AnimationSampler& source = mSource.samplers[s];
+        const std::string samplerWhat = mWhat + " sampler " + std::to_string(s);
+        // KHR_animation_pointer: a bool property takes STEP interpolation.
+        if (property == AnimatedProperty::Visibility && source.interpolation != "STEP")
+            mCtx.fail(prefix() + "a visibility is a bool: sampler " + std::to_string(s) + " must use STEP interpolation, not " +
+                      source.interpolation.substr(0, 32));
+        const int type = outputType(property, width);
+        if (mPointer && anyComponentType(property)) {
+            const tinygltf::Accessor& output = checkedAccessor(mCtx, mModel, source.output, samplerWhat + " output");
+            if (output.type != type)
+                mCtx.fail(prefix() + "takes " + typeName(type) + " values, but sampler " + std::to_string(s) + "'s output accessor " +
+                          std::to_string(source.output) + " is " + typeName(output.type));
+        }
+        const auto as = std::tuple(type, width, anyComponentType(property));
+        if (!mReadAs[s]) {
+            mOut.samplers[s] = readSampler(mCtx, mModel, source, property, width, samplerWhat);
+            mReadAs[s] = as;
+        } else if (*mReadAs[s] != as) {
+            mCtx.fail(mChannelWhat + ": sampler " + std::to_string(s) + " is shared with a channel of another value type");
+        } else if (const std::string problem = samplerProblem(mOut.samplers[s], property); !problem.empty()) {
+            mCtx.fail(samplerWhat + ": " + problem);
+        }
+    }
+
+    const LoadContext& mCtx;
+    const tinygltf::Model& mModel;
+    const std::vector<int32_t>& mSceneNode;  // glTF node → Scene::nodes index (-1: not in the loaded scene)
+    const tinygltf::Animation& mSource;
+    const std::string mWhat;
+    Animation& mOut;
+    // The output type, width and reader each sampler was read with.
+    std::vector<std::optional<std::tuple<int, uint32_t, bool>>> mReadAs;
+    std::string mChannelWhat;               // the channel being read
+    const std::string* mPointer = nullptr;  // its pointer, if it has one
+};
+
 }  // namespace
+
+std::vector<uint8_t> animatedNodes(const tinygltf::Model& model) {
+    std::vector<uint8_t> out(model.nodes.size(), 0);
+    const auto mark = [&](int node) {
+        if (node >= 0 && size_t(node) < out.size()) out[size_t(node)] = 1;
+    };
+    for (const tinygltf::Animation& animation : model.animations)
+        for (const tinygltf::AnimationChannel& channel : animation.channels) {
+            if (!pointerOf(channel)) {
+                mark(channel.target_node);
+                continue;
+            }
+            const std::optional<PointerTarget> target = parsedPointer(channel);
+            if (target && target->kind == PointerKind::Node) mark(int(target->index));
+            if (target && target->kind == PointerKind::Mesh)
+                for (size_t n = 0; n < model.nodes.size(); ++n)
+                    if (model.nodes[n].mesh == int(target->index)) out[n] = 1;
+        }
+    return out;
+}
+
+void noteAnimatedMaterials(const tinygltf::Model& model, Scene& scene) {
+    std::vector<std::vector<uint16_t>> fields(std::min(model.materials.size(), scene.materials.size()));
+    for (const tinygltf::Animation& animation : model.animations)
+        for (const tinygltf::AnimationChannel& channel : animation.channels)
+            if (const std::optional<PointerTarget> target = parsedPointer(channel);
+                target && target->kind == PointerKind::Material && target->index < fields.size())
+                fields[target->index].push_back(target->field);
+    for (size_t m = 0; m < fields.size(); ++m) {
+        if (fields[m].empty()) continue;
+        Material& material = scene.materials[m];
+        material.animatedLayers = layersAnimationMayNeed(material, fields[m]) & ~material.layers();
+    }
+}
 
 void loadAnimations(const LoadContext& ctx, const tinygltf::Model& model, Scene& scene) {
     // glTF node → Scene::nodes index (-1: not in the loaded scene).
@@ -57,50 +288,12 @@ void loadAnimations(const LoadContext& ctx, const tinygltf::Model& model, Scene&
 
     for (size_t a = 0; a < model.animations.size(); ++a) {
         const tinygltf::Animation& source = model.animations[a];
-        const std::string what = label("animation", int(a), source.name);
         Animation animation{.name = source.name.empty() ? "animation " + std::to_string(a) : source.name};
-        animation.samplers.resize(source.samplers.size());
-        // The output type and width each sampler was read for (a sampler shared by channels must fit each).
-        std::vector<std::optional<std::pair<int, uint32_t>>> readAs(source.samplers.size());
-        for (size_t c = 0; c < source.channels.size(); ++c) {
-            const tinygltf::AnimationChannel& channel = source.channels[c];
-            const std::string channelWhat = what + " channel " + std::to_string(c);
-            if (channel.sampler < 0 || size_t(channel.sampler) >= source.samplers.size())
-                ctx.fail(channelWhat + ": sampler " + std::to_string(channel.sampler) + " does not exist");
-            const std::optional<AnimatedProperty> property = propertyOf(channel.target_path);
-            if (!property) {
-                ctx.warn(channelWhat + ": target path '" + channel.target_path.substr(0, 32) + "' is not supported (ignored)");
-                continue;
-            }
-            if (channel.target_node < 0) continue;  // no node: the target is an extension's
-            if (size_t(channel.target_node) >= model.nodes.size())
-                ctx.fail(channelWhat + ": node " + std::to_string(channel.target_node) + " does not exist");
-            const int32_t node = sceneNode[size_t(channel.target_node)];
-            const std::string nodeWhat = label("node", channel.target_node, model.nodes[size_t(channel.target_node)].name);
-            if (!model.nodes[size_t(channel.target_node)].matrix.empty())
-                ctx.fail(channelWhat + ": " + nodeWhat + " has a matrix, and only TRS nodes may be animated");
-            uint32_t width = *property == AnimatedProperty::Rotation ? 4 : 3;
-            if (*property == AnimatedProperty::Weights) {
-                const tinygltf::Node& target = model.nodes[size_t(channel.target_node)];
-                const bool hasTargets = target.mesh >= 0 && size_t(target.mesh) < model.meshes.size() &&
-                                        !model.meshes[size_t(target.mesh)].primitives.empty() &&
-                                        !model.meshes[size_t(target.mesh)].primitives[0].targets.empty();
-                if (!hasTargets) ctx.fail(channelWhat + ": animates the weights of " + nodeWhat + ", whose mesh has no morph targets");
-                width = uint32_t(model.meshes[size_t(target.mesh)].primitives[0].targets.size());
-            }
-            const size_t s = size_t(channel.sampler);
-            const std::pair<int, uint32_t> as{outputType(*property), width};
-            if (!readAs[s]) {
-                animation.samplers[s] = readSampler(ctx, model, source.samplers[s], *property, width,
-                                                    what + " sampler " + std::to_string(s));
-                readAs[s] = as;
-            } else if (*readAs[s] != as) {
-                ctx.fail(channelWhat + ": sampler " + std::to_string(s) + " is shared with a channel of another value type");
-            }
-            if (node < 0) continue;  // a node outside the loaded scene: nothing drawn moves
-            animation.channels.push_back({.sampler = uint32_t(s), .node = uint32_t(node), .property = *property});
-        }
+        AnimationReader reader(ctx, model, sceneNode, source, label("animation", int(a), source.name), animation);
+        for (size_t c = 0; c < source.channels.size(); ++c) reader.channel(c);
         for (const AnimationChannel& channel : animation.channels)
+            animation.duration = std::max(animation.duration, double(animation.samplers[channel.sampler].times.back()));
+        for (const PropertyChannel& channel : animation.properties)
             animation.duration = std::max(animation.duration, double(animation.samplers[channel.sampler].times.back()));
         scene.animations.push_back(std::move(animation));
     }

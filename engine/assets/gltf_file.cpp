@@ -249,6 +249,26 @@ bool fsWriteWholeFile(std::string* err, const std::string&, const std::vector<un
     return false;
 }
 
+// KHR_animation_pointer channels have no target node, and tinygltf 2.7 drops every channel without
+// one: each such channel gets "node": -1 (which tinygltf keeps as target_node -1 and the schema check
+// has already seen absent), so that the loader sees every channel, at its index. True if any did.
+bool keepChannelsWithoutNode(nlohmann::json& doc) {
+    bool changed = false;
+    const auto animations = doc.find("animations");
+    if (animations == doc.end() || !animations->is_array()) return false;
+    for (nlohmann::json& animation : *animations) {
+        const auto channels = animation.find("channels");
+        if (channels == animation.end() || !channels->is_array()) continue;
+        for (nlohmann::json& channel : *channels) {
+            const auto target = channel.find("target");
+            if (target == channel.end() || !target->is_object() || target->contains("node")) continue;
+            (*target)["node"] = -1;
+            changed = true;
+        }
+    }
+    return changed;
+}
+
 struct ImageLoaderState {
     const LoadContext* ctx;
     uint32_t maxDimension;
@@ -294,11 +314,13 @@ ParsedFile parseGltf(const LoadContext& ctx, std::span<const uint8_t> file, cons
     // What tinygltf would refuse in a valid file is taken out of the JSON first.
     std::string rewritten;
     if (json.find("KHR_draco_mesh_compression") != std::string_view::npos ||
-        json.find("EXT_meshopt_compression") != std::string_view::npos) {
+        json.find("EXT_meshopt_compression") != std::string_view::npos ||
+        json.find("KHR_animation_pointer") != std::string_view::npos) {
         nlohmann::json doc = nlohmann::json::parse(json.begin(), json.end());
         const bool draco = detachDracoIndices(doc, parsed.dracoIndices);
         const bool meshopt = emptyMeshoptFallbackBuffers(doc, binary);
-        if (draco || meshopt) {
+        const bool channels = keepChannelsWithoutNode(doc);
+        if (draco || meshopt || channels) {
             rewritten = doc.dump();
             json = rewritten;
         }

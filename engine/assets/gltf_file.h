@@ -10,7 +10,8 @@
 //    range-check those bufferViews); ImageTable checks the view first;
 //  - takes out of the JSON what tinygltf would refuse in a valid file: a Draco primitive's indices
 //    accessor has no bufferView (kept in ParsedFile), an EXT_meshopt_compression placeholder
-//    buffer has no URI (replaced by an empty one).
+//    buffer has no URI (replaced by an empty one), a KHR_animation_pointer channel has no target
+//    node (given node -1, so that tinygltf keeps it: target_node -1, target_path "pointer").
 
 #include "assets/gltf_context.h"
 #include "assets/gltf_draco.h"

@@ -95,12 +95,12 @@ std::string label(const char* kind, int index, const std::string& name) {
 
 namespace {
 
-constexpr std::array<std::string_view, 20> kSupportedExtensions = {
+constexpr std::array<std::string_view, 22> kSupportedExtensions = {
     "KHR_materials_emissive_strength", "KHR_texture_transform", "KHR_materials_unlit", "KHR_materials_ior",
     "KHR_materials_specular", "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_anisotropy",
     "KHR_materials_transmission", "KHR_materials_volume", "KHR_materials_iridescence", "KHR_materials_pbrSpecularGlossiness", "KHR_materials_variants",
     "KHR_lights_punctual", "KHR_mesh_quantization", "EXT_mesh_gpu_instancing", "KHR_draco_mesh_compression",
-    "EXT_meshopt_compression", "EXT_texture_webp", "KHR_texture_basisu"};
+    "EXT_meshopt_compression", "EXT_texture_webp", "KHR_texture_basisu", "KHR_node_visibility", "KHR_animation_pointer"};
 
 // Extensions that carry metadata only: leaving them out changes nothing drawn.
 constexpr std::array<std::string_view, 2> kMetadataExtensions = {"KHR_xmp", "KHR_xmp_json_ld"};
@@ -137,6 +137,7 @@ void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, cons
     gltf::loadSamplers(ctx, model, scene);
     gltf::ImageTable images(ctx, model, std::move(parsed.uriImages), options, scene);
     gltf::loadMaterials(ctx, model, images, scene);
+    gltf::noteAnimatedMaterials(model, scene);  // before loadNodes: tangent frames follow animated layers
     gltf::loadVariantNames(ctx, model, scene);
     gltf::loadNodes(ctx, model, options.sceneIndex, scene);
     gltf::loadAnimations(ctx, model, scene);

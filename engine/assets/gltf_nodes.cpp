@@ -1,6 +1,7 @@
 #include "assets/gltf_nodes.h"
 
 #include "assets/gltf_accessors.h"
+#include "assets/gltf_animations.h"
 #include "assets/gltf_materials.h"
 #include "assets/gltf_mesh.h"
 #include "pose/node_placement.h"
@@ -88,16 +89,19 @@ std::vector<float> morphWeights(const LoadContext& ctx, const tinygltf::Model& m
     return std::vector<float>(targets, 0.0f);
 }
 
+// KHR_node_visibility's flag of `node` (true without the extension; the schema check vetted its type).
+bool visibleFlag(const tinygltf::Node& node) {
+    const auto it = node.extensions.find("KHR_node_visibility");
+    if (it == node.extensions.end() || !it->second.Get("visible").IsBool()) return true;
+    return it->second.Get("visible").Get<bool>();
+}
+
 class NodeWalker {
 public:
+    // Nodes some animation channel moves, by a core channel or a pointer (bad indices are reported
+    // by loadAnimations).
     NodeWalker(const LoadContext& ctx, const tinygltf::Model& model, Scene& scene)
-        : mCtx(ctx), mModel(model), mScene(scene), mGltfMaterials(scene.materials.size()), mTargeted(model.nodes.size(), 0) {
-        // Nodes some animation channel moves (bad indices are reported by loadAnimations).
-        for (const tinygltf::Animation& animation : model.animations)
-            for (const tinygltf::AnimationChannel& channel : animation.channels)
-                if (channel.target_node >= 0 && size_t(channel.target_node) < model.nodes.size())
-                    mTargeted[size_t(channel.target_node)] = 1;
-    }
+        : mCtx(ctx), mModel(model), mScene(scene), mGltfMaterials(scene.materials.size()), mTargeted(animatedNodes(model)) {}
 
     void walk(const std::vector<int>& roots) {
         const size_t count = mModel.nodes.size();
@@ -126,9 +130,11 @@ public:
             // Depth-first: the parent is already in Scene::nodes, before this node.
             SceneNode sceneNode{.name = node.name, .source = item.node, .parent = item.parent,
                                 .transform = localTransform(mCtx, node, what),
-                                .weights = morphWeights(mCtx, mModel, node, what)};
+                                .weights = morphWeights(mCtx, mModel, node, what),
+                                .visible = visibleFlag(node)};
             const glm::dmat4 local = sceneNode.transform.local();
             sceneNode.world = item.parent >= 0 ? mScene.nodes[size_t(item.parent)].world * local : local;
+            sceneNode.shown = sceneNode.visible && (item.parent < 0 || mScene.nodes[size_t(item.parent)].shown);
             for (int c = 0; c < 4; ++c)
                 for (int r = 0; r < 4; ++r) toFloat(mCtx, sceneNode.world[c][r], what + ": world transform");
             const int32_t index = int32_t(mScene.nodes.size());
@@ -141,7 +147,8 @@ public:
     }
 
     // After the walk: the skins the draws use (joints must be in the scene), skinned draws placed
-    // by their joints' rest pose, one warning for renormalized skin weights, the scene bounds.
+    // by their joints' rest pose, one warning for renormalized skin weights, the scene bounds (of
+    // the draws not hidden; of all, with a warning, when every one is).
     void finish() {
         std::vector<int32_t> sceneNode(mModel.nodes.size(), -1);
         for (size_t i = 0; i < mScene.nodes.size(); ++i) sceneNode[size_t(mScene.nodes[i].source)] = int32_t(i);
@@ -164,8 +171,14 @@ public:
                                                          morphReach(deformation, mScene.nodes[size_t(draw.node)].weights))) !=
                     Placement::Placed)
                     mCtx.fail(label("skin", int(it->first), skin.name) + ": the skinned mesh's rest pose is beyond single precision");
+                draw.hidden = !mScene.nodes[size_t(draw.node)].shown;
             }
-            mScene.bounds.extend(draw.bounds);
+            if (!draw.hidden) mScene.bounds.extend(draw.bounds);
+        }
+        if (!mScene.bounds.valid() && !mScene.draws.empty()) {
+            for (const Draw& draw : mScene.draws) mScene.bounds.extend(draw.bounds);
+            if (std::any_of(mScene.draws.begin(), mScene.draws.end(), [&](const Draw& d) { return !mScene.nodes[size_t(d.node)].shown; }))
+                mCtx.warn("every node is hidden (KHR_node_visibility): framing uses the hidden geometry");
         }
         if (mRenormalizedWeights)
             mCtx.warn(std::to_string(mRenormalizedWeights) + " vertices have skin weights that do not sum to 1 (renormalized)");
@@ -338,6 +351,8 @@ private:
                                             : glm::vec3(0.0f);
                 if (!skinned && placeDraw(draw, world, reach, std::span(mScene.instances).subspan(first, count)) == Placement::BeyondFloat)
                     mCtx.fail(what + ": a corner of its mesh in world space is beyond single precision");
+                // KHR_node_visibility: hidden with its node (an animation may show it).
+                if (!mScene.nodes[size_t(sceneNode)].shown) draw.hidden = true;
                 if (!variants.empty())
                     mScene.drawVariants.push_back({uint32_t(mScene.draws.size()), material, variants});
                 mScene.draws.push_back(draw);
@@ -351,6 +366,7 @@ private:
         const std::string cameraWhat = label("camera", node.camera, source.name);
         Camera camera;
         camera.node = sceneNode;
+        camera.source = node.camera;
         camera.name = !source.name.empty() ? source.name : !node.name.empty() ? node.name : "camera " + std::to_string(node.camera);
         if (!placeCamera(camera, world)) return mCtx.warn(cameraWhat + ": degenerate node transform, camera skipped");
         bool valid = false;
@@ -391,6 +407,8 @@ private:
         const std::string lightWhat = label("light", int(i), source.name);
         Light light;
         light.node = sceneNode;
+        light.source = int32_t(i);
+        light.hidden = !mScene.nodes[size_t(sceneNode)].shown;  // KHR_node_visibility
         if (source.type == "directional") light.type = LightType::Directional;
         else if (source.type == "point") light.type = LightType::Point;
         else if (source.type == "spot") light.type = LightType::Spot;

@@ -15,7 +15,8 @@ namespace candela::scene::gltf {
 // Walks scene `sceneIndex` (unset: the file's default scene, else scene 0; every parentless node
 // if the file has no scenes) and records the file's scene names and the one chosen, composing TRS or matrix transforms. Appends one Draw per (node, mesh primitive) —
 // geometry is converted once per primitive and shared by every node using the mesh — plus the
-// nodes' cameras and KHR_lights_punctual lights, and sets scene.bounds. Precondition: the glTF
+// nodes' cameras and KHR_lights_punctual lights; draws and lights under a node KHR_node_visibility
+// hides are kept, hidden; sets scene.bounds (of the draws not hidden). Precondition: the glTF
 // materials are already in scene.materials (same order); a default material is appended if a
 // primitive has none. Throws UserError on cycles, nodes reachable twice, and bad indices.
 void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, std::optional<uint32_t> sceneIndex, Scene& scene);

@@ -256,8 +256,10 @@ void checkDocument(const Checker& c, const Json& root) {
         c.properties(n, p, {{"camera", Kind::Index}, {"children", Kind::IndexArray}, {"skin", Kind::Index},
                             {"matrix", Kind::NumberArray, 16}, {"mesh", Kind::Index}, {"rotation", Kind::NumberArray, 4},
                             {"scale", Kind::NumberArray, 3}, {"translation", Kind::NumberArray, 3}, {"weights", Kind::NumberArray}});
-        if (const Json* ext = c.child(n, p, "extensions", {}))
+        if (const Json* ext = c.child(n, p, "extensions", {})) {
             c.child(*ext, p + ".extensions", "KHR_lights_punctual", {{"light", Kind::Index}});
+            c.child(*ext, p + ".extensions", "KHR_node_visibility", {{"visible", Kind::Bool}});
+        }
     });
     c.array(root, "samplers", [&](const Json& s, const std::string& p) {
         c.properties(s, p, {{"magFilter", Kind::Integer}, {"minFilter", Kind::Integer}, {"wrapS", Kind::Integer}, {"wrapT", Kind::Integer}});
@@ -285,6 +287,8 @@ void checkDocument(const Checker& c, const Json& root) {
             auto target = channel.find("target");
             if (target == channel.end()) c.fail(cp + ".target", "an object", Json());
             c.properties(*target, cp + ".target", {{"node", Kind::Index}, {"path", Kind::String}});
+            if (const Json* ext = c.child(*target, cp + ".target", "extensions", {}))
+                c.child(*ext, cp + ".target.extensions", "KHR_animation_pointer", {{"pointer", Kind::String}});
         });
         each("samplers", [&](const Json& sampler, const std::string& sp) {
             c.properties(sampler, sp, {{"input", Kind::Index}, {"output", Kind::Index}, {"interpolation", Kind::String}});

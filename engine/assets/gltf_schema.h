@@ -14,8 +14,9 @@ namespace candela::scene::gltf {
 // string; every top-level array is an array of objects; indices are non-negative integers;
 // counts, offsets and lengths are non-negative integers; numbers, booleans, strings and fixed-size
 // number arrays (translation 3, rotation 4, scale 3, matrix 16, baseColorFactor 4,
-// emissiveFactor 3, ...) have their types; KHR_lights_punctual, KHR_texture_transform and
-// KHR_materials_emissive_strength likewise. Unknown properties, extras and other extensions are
+// emissiveFactor 3, ...) have their types; KHR_lights_punctual, KHR_texture_transform,
+// KHR_materials_emissive_strength, KHR_node_visibility (visible: a bool) and
+// KHR_animation_pointer (pointer: a string) likewise. Unknown properties, extras and other extensions are
 // not checked. Fails via ctx with "invalid glTF: PATH: expected ..." or the JSON parser's message.
 void checkGltfJson(const LoadContext& ctx, std::string_view json);
 

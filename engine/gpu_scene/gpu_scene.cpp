@@ -41,6 +41,15 @@ vk::Buffer uploadedBuffer(vk::Context& context, vk::Uploader& uploader, const st
     return buffer;
 }
 
+vk::Image solidTexture(vk::Context& context, vk::Uploader& uploader, std::array<uint8_t, 4> rgba, VkFormat format,
+                       const char* name) {
+    vk::Image image(context, {.format = format,
+                              .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                              .name = name});
+    uploader.image(image, std::as_bytes(std::span(rgba)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    return image;
+}
+
 UvTransform uvTransform(const TextureRef& ref) {
     // Rows of the affine KHR_texture_transform matrix (the loader's convention, shared with tangent
     // generation), plus the texture coordinate set in r0.w.
@@ -50,6 +59,8 @@ UvTransform uvTransform(const TextureRef& ref) {
     out.r1 = glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f);
     return out;
 }
+
+}  // namespace
 
 MaterialData materialData(const Material& m) {
     MaterialData out{};
@@ -93,17 +104,6 @@ MaterialLayerData materialLayerData(const Material& m) {
     return out;
 }
 
-vk::Image solidTexture(vk::Context& context, vk::Uploader& uploader, std::array<uint8_t, 4> rgba, VkFormat format,
-                       const char* name) {
-    vk::Image image(context, {.format = format,
-                              .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                              .name = name});
-    uploader.image(image, std::as_bytes(std::span(rgba)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    return image;
-}
-
-}  // namespace
-
 shading::LightData lightData(const Light& l) {
     using namespace shading;
     LightData out{};
@@ -113,7 +113,7 @@ shading::LightData lightData(const Light& l) {
     out.positionRange = glm::vec4(l.position, l.range);
     out.directionType = glm::vec4(glm::normalize(l.direction), type);
     out.color = l.color;
-    out.intensity = l.intensity;
+    out.intensity = l.hidden ? 0.0f : l.intensity;  // KHR_node_visibility: a hidden light keeps its slot, dark
     const float cosOuter = std::cos(l.outerConeAngle), cosInner = std::cos(l.innerConeAngle);
     const float scale = 1.0f / std::max(cosInner - cosOuter, 1e-4f);
     out.cone = glm::vec4(scale, -cosOuter * scale, 0.0f, 0.0f);

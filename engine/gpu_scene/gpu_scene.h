@@ -26,8 +26,12 @@ shading::DrawData drawData(const Draw& draw);
 // the index of draw d's first entry (what the forward pass pushes; the shader adds the instance).
 std::vector<shading::DrawData> drawDataOf(const Scene& scene, std::span<const Draw> draws, std::vector<uint32_t>* first = nullptr);
 // A light as the forward shaders read it (position and range, direction and type, colour,
-// intensity, cone terms).
+// intensity — 0 for a hidden light —, cone terms).
 shading::LightData lightData(const Light& light);
+// A material's core data (factors, alpha, every core slot's texture transform) and its layer data
+// (the layers' factors and their slots' texture transforms), as the forward shaders read them.
+shading::MaterialData materialData(const Material& material);
+shading::MaterialLayerData materialLayerData(const Material& material);
 
 // The words of one vertex's record of `deformation` in GpuScene::deformationBuffer: its
 // influencesPerVertex influences (CANDELA_INFLUENCE_WORDS each: joint, weight bits), then its

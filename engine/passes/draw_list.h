@@ -74,7 +74,7 @@ struct DrawList {
     std::array<uint32_t, kDrawRangeCount + 1> rangeStart{};  // items of range r: [rangeStart[r], rangeStart[r + 1])
     DrawStats stats;                  // the selection's counts (the state changes are the recorder's)
     uint32_t draws = 0;               // visible draws of the scene (not scaled to nothing)
-    uint32_t hiddenDraws = 0;         // draws scaled to nothing this frame, not drawn
+    uint32_t hiddenDraws = 0;         // draws hidden (KHR_node_visibility) or scaled to nothing this frame, not drawn
     uint32_t instances = 0;           // instances in the scene's instanced draws
 
     std::span<const DrawListItem> range(DrawRange range) const;

@@ -57,6 +57,28 @@ vk::Pipeline buildPipeline(vk::Context& context, const ForwardVariant& v) {
                                              pipelineDesc(v, false));
 }
 
+// Set 1 of `program` for material `material` of `scene`: its core textures and, with `layers` (the
+// layer parameters' buffer; null for a core program), the layer textures the program declares.
+VkDescriptorSet writeMaterialSet(vk::Context& context, vk::DescriptorAllocator& allocator, const vk::Program& program,
+                                 const scene::GpuScene& scene, uint32_t material, VkBuffer layers) {
+    vk::DescriptorWriter writer(program, 1);
+    for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
+        const scene::GpuScene::Binding b = scene.texture(material, slot);
+        writer.image(scene::kCoreTextureSlots[slot].sampler, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
+    }
+    if (layers != VK_NULL_HANDLE) {
+        writer.buffer(ForwardBlock<shading::MaterialLayerData>::name, layers);
+        // The program may be specialized to the material's layers: only their textures are declared.
+        for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) {
+            const char* name = scene::kLayerTextureSlots[slot].sampler;
+            if (!program.declares(1, name)) continue;
+            const scene::GpuScene::Binding b = scene.layerTexture(material, slot);
+            writer.image(name, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
+        }
+    }
+    return writer.commit(context, allocator);
+}
+
 }  // namespace
 
 ForwardPass::ForwardPass(vk::Context& context)
@@ -134,28 +156,11 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene, const MaterialKeys& 
                     .buffer(ForwardBlock<shading::DrawData>::name, gpuScene.drawBuffer())
                     .buffer(ForwardBlock<shading::MaterialData>::name, gpuScene.materialBuffer())
                     .commit(mContext, *mSets);
-    for (uint32_t material = 0; material < materials; ++material) {
-        // A layered material's set follows the layered program's layout: its core textures, then
-        // every material's layer parameters and its own layer textures.
-        const uint32_t layers = keys[material].layers;
-        const vk::Program& program = *programs[material];
-        vk::DescriptorWriter writer(program, 1);
-        for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
-            const scene::GpuScene::Binding b = gpuScene.texture(material, slot);
-            writer.image(scene::kCoreTextureSlots[slot].sampler, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
-        }
-        if (layers) {
-            writer.buffer(ForwardBlock<shading::MaterialLayerData>::name, gpuScene.materialLayerBuffer());
-            // The program is specialized to the material's layers: only their textures are declared.
-            for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) {
-                const char* name = scene::kLayerTextureSlots[slot].sampler;
-                if (!program.declares(1, name)) continue;
-                const scene::GpuScene::Binding b = gpuScene.layerTexture(material, slot);
-                writer.image(name, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
-            }
-        }
-        mMaterialSets.push_back(writer.commit(mContext, *mSets));
-    }
+    // A layered material's set follows the layered program's layout: its core textures, then
+    // every material's layer parameters and its own layer textures.
+    for (uint32_t material = 0; material < materials; ++material)
+        mMaterialSets.push_back(writeMaterialSet(mContext, *mSets, *programs[material], gpuScene, material,
+                                                 keys[material].layers ? gpuScene.materialLayerBuffer() : VK_NULL_HANDLE));
 }
 
 ForwardPass::FrameInputs ForwardPass::frameInputs(const FrameDesc& desc) {
@@ -185,6 +190,8 @@ ForwardPass::FrameInputs ForwardPass::frameInputs(const FrameDesc& desc) {
     if (desc.posed) {
         out.posedDraws = desc.posed->data;
         out.posedLights = desc.posed->lights;
+        out.posedMaterials = desc.posed->materials;
+        out.posedMaterialLayers = desc.posed->materialLayers;
     }
     if (desc.deformed) {
         out.deformed = desc.deformed->vertices;
@@ -241,8 +248,10 @@ std::vector<std::string> ForwardPass::describe(const DrawList& list, const Frame
     out.push_back(describeSelection(list, selection));
     if (frame.posedDraws.valid())
         out.push_back("animated: draw matrices of this frame's pose, written by the CPU into a per-frame buffer" +
-                      (list.hiddenDraws ? " (" + std::to_string(list.hiddenDraws) + " draws scaled to nothing, not drawn)"
+                      (list.hiddenDraws ? " (" + std::to_string(list.hiddenDraws) + " draws hidden or scaled to nothing, not drawn)"
                                         : std::string()));
+    else if (list.hiddenDraws)
+        out.push_back("left out: " + std::to_string(list.hiddenDraws) + " draws of hidden nodes (KHR_node_visibility)");
     if (mScene->lightCount() == 0) out.emplace_back("left out: light loop (no punctual lights)");
     if (std::none_of(scene.materials.begin(), scene.materials.end(), [](const scene::Material& m) { return m.normal.present(); }))
         out.emplace_back("left out: normal mapping / TBN work (no material has a normal texture)");
@@ -270,6 +279,7 @@ DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::s
         LayerMaps layers;   // as declared
         BufferId draws;     // the posed draw data, when animated
         BufferId lights;    // the posed light data, when a light is animated
+        BufferId materials, materialLayers;  // the posed material (layer) data, when a material is animated
         BufferId deformed;  // the deformed vertices, when some draw is deformed
     };
     // Each material key's pipeline in this frame, resolved once per key.
@@ -306,6 +316,13 @@ DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::s
                                        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
             if (frame.posedLights.valid())
                 d.lights = builder.read(frame.posedLights, Usage::StorageRead, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            // Material data: texture transforms in the vertex stage, the rest in the fragment stage.
+            if (frame.posedMaterials.valid())
+                d.materials = builder.read(frame.posedMaterials, Usage::StorageRead,
+                                           VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            if (frame.posedMaterialLayers.valid() && anyLayered)
+                d.materialLayers = builder.read(frame.posedMaterialLayers, Usage::StorageRead,
+                                                VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
             if (frame.deformed.valid()) d.deformed = builder.read(frame.deformed, Usage::Vertex);
         },
         [items = std::move(recordedItems), frameConstants = frame.push, gpuScene, staticSceneSet = mSceneSet, materialSets, iblSets,
@@ -321,13 +338,27 @@ DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::s
                     if (p == &pipeline) return set;
                 return layerSetsWritten.emplace_back(&pipeline, layerSets->write(ctx, pipeline.program(), d.layers)).second;
             };
-            // Posed draws: set 0 names this frame's draw buffer.
-            const VkDescriptorSet sceneSet = !d.draws.valid() ? staticSceneSet
-                                             : vk::DescriptorWriter(*program, 0)
-                                                   .buffer(ForwardBlock<shading::LightData>::name, d.lights.valid() ? ctx.buffer(d.lights) : gpuScene->lightBuffer())
-                                                   .buffer(ForwardBlock<shading::DrawData>::name, ctx.buffer(d.draws))
-                                                   .buffer(ForwardBlock<shading::MaterialData>::name, gpuScene->materialBuffer())
-                                                   .commit(ctx.context(), ctx.descriptors());
+            // A pose: set 0 names this frame's draw, light and material buffers where it has them.
+            const VkDescriptorSet sceneSet =
+                !d.draws.valid() && !d.lights.valid() && !d.materials.valid()
+                    ? staticSceneSet
+                    : vk::DescriptorWriter(*program, 0)
+                          .buffer(ForwardBlock<shading::LightData>::name, d.lights.valid() ? ctx.buffer(d.lights) : gpuScene->lightBuffer())
+                          .buffer(ForwardBlock<shading::DrawData>::name, d.draws.valid() ? ctx.buffer(d.draws) : gpuScene->drawBuffer())
+                          .buffer(ForwardBlock<shading::MaterialData>::name,
+                                  d.materials.valid() ? ctx.buffer(d.materials) : gpuScene->materialBuffer())
+                          .commit(ctx.context(), ctx.descriptors());
+            // Posed layer data: the layered materials' sets 1 name this frame's buffer (written at
+            // their first draw in the pass).
+            std::vector<VkDescriptorSet> posedMaterialSets(d.materialLayers.valid() ? materialSets->size() : 0, VK_NULL_HANDLE);
+            const auto materialSet = [&](const Recorded& r) {
+                if (!r.layered || posedMaterialSets.empty()) return (*materialSets)[r.item.material];
+                VkDescriptorSet& set = posedMaterialSets[r.item.material];
+                if (set == VK_NULL_HANDLE)
+                    set = writeMaterialSet(ctx.context(), ctx.descriptors(), r.pipeline->program(), *gpuScene, r.item.material,
+                                           ctx.buffer(d.materialLayers));
+                return set;
+            };
             VkCommandBuffer cmd = ctx.cmd();
             ctx.beginRendering();
             if (items.empty()) {  // e.g. only transmissive draws: the pass just clears
@@ -364,7 +395,7 @@ DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::s
                 }
                 if (item.material != boundMaterial) {
                     boundMaterial = item.material;
-                    bindSet(1, (*materialSets)[item.material]);
+                    bindSet(1, materialSet(r));
                 }
                 if (const VkCullModeFlags wanted = item.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT; cullMode != wanted) {
                     cullMode = wanted;

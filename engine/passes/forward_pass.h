@@ -59,12 +59,16 @@ public:
         // integrated per pixel with this many samples per lobe from the specular cube's mip 0.
         uint32_t referenceSamples = 0;
     };
-    // An animated scene's draws in this frame's pose: the buffer of their shading::DrawData, read
-    // instead of the scene's static draw buffer (set 0 is then written per frame), and this frame's
-    // light data when a light moves with the pose (else invalid).
+    // An animated scene in this frame's pose, each buffer read instead of the scene's own (sets 0
+    // and, for the layer data, the layered materials' sets 1 are then written per frame); each is
+    // invalid when nothing it holds animates: the buffer of the draws' shading::DrawData (a node
+    // moves), of the light data (a light moves, shows, hides or has an animated property), of the
+    // material data and of the material layer data (KHR_animation_pointer animates a material).
     struct PosedDraws {
         graph::BufferId data;
         graph::BufferId lights;
+        graph::BufferId materials;
+        graph::BufferId materialLayers;
     };
     // This frame's deformed vertices (the skin_morph pass's output) and, per scene draw, the
     // vertex offset that maps its indices into them (kRestVertices: drawn from the scene's own).
@@ -93,7 +97,8 @@ public:
         FrameVariant variant;
         std::optional<IblHandles> ibl;
         LayerMaps layerMaps;
-        graph::BufferId posedDraws, posedLights, deformed;  // invalid where the frame has none
+        // Invalid where the frame has none.
+        graph::BufferId posedDraws, posedLights, posedMaterials, posedMaterialLayers, deformed;
         std::vector<int32_t> vertexOffset;  // per scene draw (DeformedVertices); empty: rest vertices
     };
     // The frame's inputs, with the user's values for the push constants applied (once per frame).

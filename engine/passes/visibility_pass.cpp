@@ -3,6 +3,7 @@
 #include "executor/graph_executor.h"
 #include "passes/forward_blocks.h"
 
+#include <algorithm>
 #include <optional>
 
 namespace candela::passes {
@@ -83,8 +84,9 @@ VisibilityTargets VisibilityPass::add(RenderGraph& graph, const DrawTargetSize& 
     }
     struct Data {
         VisibilityTargets targets;
-        BufferId draws, deformed;
+        BufferId draws, materials, deformed;
     };
+    const bool anyMasked = std::any_of(recorded.begin(), recorded.end(), [](const Recorded& r) { return r.masked; });
     const Data& data = graph.addPass<Data>(
         "visibility", PassType::Graphics,
         [&](PassBuilder& builder, Data& d) {
@@ -96,6 +98,10 @@ VisibilityTargets VisibilityPass::add(RenderGraph& graph, const DrawTargetSize& 
             if (frame.posedDraws.valid())
                 d.draws = builder.read(frame.posedDraws, Usage::StorageRead,
                                        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            // Masked draws read the alpha factor, cutoff and base colour texture transform.
+            if (frame.posedMaterials.valid() && anyMasked)
+                d.materials = builder.read(frame.posedMaterials, Usage::StorageRead,
+                                           VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
             if (frame.deformed.valid()) d.deformed = builder.read(frame.deformed, Usage::Vertex);
         },
         [items = std::move(recorded), push = frame.push, scene = mScene, opaqueSet = mOpaqueSceneSet, maskedSet = mMaskedSceneSet,
@@ -103,12 +109,14 @@ VisibilityTargets VisibilityPass::add(RenderGraph& graph, const DrawTargetSize& 
             DrawStats unused;
             DrawStats* counts = stats ? stats : &unused;
             VkCommandBuffer cmd = ctx.cmd();
-            // Posed draws: set 0 names this frame's draw buffer.
+            // A pose: set 0 names this frame's draw (and, for masked draws, material) buffer.
             const auto sceneSet = [&](const vk::Pipeline& pipeline, bool masked) {
-                if (!d.draws.valid()) return masked ? maskedSet : opaqueSet;
+                if (!d.draws.valid() && !(masked && d.materials.valid())) return masked ? maskedSet : opaqueSet;
                 vk::DescriptorWriter writer(pipeline.program(), 0);
-                writer.buffer(ForwardBlock<shading::DrawData>::name, ctx.buffer(d.draws));
-                if (masked) writer.buffer(ForwardBlock<shading::MaterialData>::name, scene->materialBuffer());
+                writer.buffer(ForwardBlock<shading::DrawData>::name, d.draws.valid() ? ctx.buffer(d.draws) : scene->drawBuffer());
+                if (masked)
+                    writer.buffer(ForwardBlock<shading::MaterialData>::name,
+                                  d.materials.valid() ? ctx.buffer(d.materials) : scene->materialBuffer());
                 return writer.commit(ctx.context(), ctx.descriptors());
             };
             ctx.beginRendering();

@@ -21,6 +21,26 @@ const char* shaderOf(bool layered, bool msaa) {
     return layered ? "visibility_shade_layers.comp" : "visibility_shade.comp";
 }
 
+// Set 1 of `program` (core or layered) for the texture set whose first material is `material`: its
+// core textures and, with `layers` (the layer parameters' buffer; null for the core program), its
+// layer textures.
+VkDescriptorSet writeTextureSet(vk::Context& context, vk::DescriptorAllocator& allocator, const vk::Program& program,
+                                const scene::GpuScene& scene, uint32_t material, VkBuffer layers) {
+    vk::DescriptorWriter writer(program, 1);
+    for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
+        const scene::GpuScene::Binding b = scene.texture(material, slot);
+        writer.image(scene::kCoreTextureSlots[slot].sampler, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
+    }
+    if (layers != VK_NULL_HANDLE) {
+        writer.buffer(ForwardBlock<shading::MaterialLayerData>::name, layers);
+        for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) {
+            const scene::GpuScene::Binding b = scene.layerTexture(material, slot);
+            writer.image(scene::kLayerTextureSlots[slot].sampler, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
+        }
+    }
+    return writer.commit(context, allocator);
+}
+
 // `constants` with the tile size (the workgroup size) appended at its constant ids.
 std::vector<uint32_t> withTileSize(std::vector<uint32_t> constants, glm::uvec2 tile) {
     constants.resize(std::max<size_t>(constants.size(), CANDELA_VISIBILITY_TILE_Y_ID + 1), 0);
@@ -74,22 +94,11 @@ void VisibilityShadePass::setScene(const scene::GpuScene& scene, const MaterialK
     for (uint32_t set = 0; set < count; ++set) {
         // Any material of the texture set has its textures.
         const uint32_t material = sets.firstMaterial[set];
-        for (const bool layered : {false, true}) {
-            if (!(layered ? layeredUse : coreUse)[set]) continue;
-            vk::DescriptorWriter writer(program(layered), 1);
-            for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
-                const scene::GpuScene::Binding b = scene.texture(material, slot);
-                writer.image(scene::kCoreTextureSlots[slot].sampler, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
-            }
-            if (layered) {
-                writer.buffer(ForwardBlock<shading::MaterialLayerData>::name, scene.materialLayerBuffer());
-                for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) {
-                    const scene::GpuScene::Binding b = scene.layerTexture(material, slot);
-                    writer.image(scene::kLayerTextureSlots[slot].sampler, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
-                }
-            }
-            (layered ? mLayeredMaterialSets : mCoreMaterialSets)[set] = writer.commit(mContext, *mSets);
-        }
+        for (const bool layered : {false, true})
+            if ((layered ? layeredUse : coreUse)[set])
+                (layered ? mLayeredMaterialSets : mCoreMaterialSets)[set] =
+                    writeTextureSet(mContext, *mSets, program(layered), scene, material,
+                                    layered ? scene.materialLayerBuffer() : VK_NULL_HANDLE);
     }
 }
 
@@ -99,6 +108,7 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
         const vk::Pipeline* pipeline;
         bool layered;
         VkDescriptorSet materialSet;  // set 1: the list's textures
+        uint32_t textureSet;
     };
     std::vector<Dispatch> dispatches;
     bool anyLayered = false;
@@ -114,14 +124,14 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
                            .deformed = frame.deformed.valid(),
                            .distinct = static_cast<uint32_t>(i / lists)};
         dispatches.push_back({&pipeline(key), layered,
-                              (layered ? mLayeredMaterialSets : mCoreMaterialSets).at(list.textureSet)});
+                              (layered ? mLayeredMaterialSets : mCoreMaterialSets).at(list.textureSet), list.textureSet});
         anyLayered = anyLayered || layered;
     }
     const TextureId cleared = addClearPass(graph, "visibility_clear", "hdr",
                                            {.width = in.extent.extent.x, .height = in.extent.extent.y, .format = kHdrFormat});
     struct Data {
         TextureId visibility, hdr;
-        BufferId lists, arguments, draws, frame, posedDraws, posedLights, deformed;
+        BufferId lists, arguments, draws, frame, posedDraws, posedLights, posedMaterials, posedMaterialLayers, deformed;
         IblHandles ibl;
         LayerMaps layers;
     };
@@ -137,26 +147,43 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
             if (anyLayered) d.layers = ForwardLayerSet::declare(builder, &frame.layerMaps);
             if (frame.posedDraws.valid()) d.posedDraws = builder.read(frame.posedDraws, Usage::StorageRead);
             if (frame.posedLights.valid()) d.posedLights = builder.read(frame.posedLights, Usage::StorageRead);
+            if (frame.posedMaterials.valid()) d.posedMaterials = builder.read(frame.posedMaterials, Usage::StorageRead);
+            if (frame.posedMaterialLayers.valid() && anyLayered)
+                d.posedMaterialLayers = builder.read(frame.posedMaterialLayers, Usage::StorageRead);
             if (frame.deformed.valid()) d.deformed = builder.read(frame.deformed, Usage::StorageRead);
             d.hdr = builder.write(cleared, Usage::StorageWrite);
         },
-        [dispatches = std::move(dispatches), push = frame.push,
-         core = &program(false), scene = mScene, staticSceneSet = mSceneSet, iblSets = &mIblSet, layerSets = &mLayerSet,
+        [dispatches = std::move(dispatches), push = frame.push, core = &program(false),
+         layeredProgram = anyLayered ? &program(true) : nullptr, textureSets = mTextureSets, scene = mScene,
+         staticSceneSet = mSceneSet, iblSets = &mIblSet, layerSets = &mLayerSet,
          nearest = mNearest.get()](const Data& d, PassContext& ctx) {
             VkCommandBuffer cmd = ctx.cmd();
             const VkImageView visibilityView = ctx.view(d.visibility);
             const VkImageView hdrView = ctx.view(d.hdr);
-            // Sets 0 (posed draws and lights: this frame's buffers), 2 and 4 are the same for every variant.
+            // Sets 0 (posed draws, lights and materials: this frame's buffers), 2 and 4 are the same
+            // for every variant.
             const VkDescriptorSet sceneSet =
-                !d.posedDraws.valid() && !d.posedLights.valid()
+                !d.posedDraws.valid() && !d.posedLights.valid() && !d.posedMaterials.valid()
                     ? staticSceneSet
                     : vk::DescriptorWriter(*core, 0)
                           .buffer(ForwardBlock<shading::LightData>::name,
                                   d.posedLights.valid() ? ctx.buffer(d.posedLights) : scene->lightBuffer())
                           .buffer(ForwardBlock<shading::DrawData>::name,
                                   d.posedDraws.valid() ? ctx.buffer(d.posedDraws) : scene->drawBuffer())
-                          .buffer(ForwardBlock<shading::MaterialData>::name, scene->materialBuffer())
+                          .buffer(ForwardBlock<shading::MaterialData>::name,
+                                  d.posedMaterials.valid() ? ctx.buffer(d.posedMaterials) : scene->materialBuffer())
                           .commit(ctx.context(), ctx.descriptors());
+            // Posed layer data: the layered texture sets' sets 1 name this frame's buffer.
+            std::vector<VkDescriptorSet> posedLayeredSets(d.posedMaterialLayers.valid() ? textureSets->firstMaterial.size() : 0,
+                                                          VK_NULL_HANDLE);
+            const auto materialSet = [&](const Dispatch& dispatch) {
+                if (!dispatch.layered || posedLayeredSets.empty()) return dispatch.materialSet;
+                VkDescriptorSet& set = posedLayeredSets[dispatch.textureSet];
+                if (set == VK_NULL_HANDLE)
+                    set = writeTextureSet(ctx.context(), ctx.descriptors(), *layeredProgram, *scene,
+                                          textureSets->firstMaterial[dispatch.textureSet], ctx.buffer(d.posedMaterialLayers));
+                return set;
+            };
             const VkDescriptorSet iblSet = iblSets->write(ctx, *core, d.ibl);
             const VkBuffer vertices = scene->vertexBuffer();
             const VkDescriptorSet visibilitySet =
@@ -181,7 +208,7 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
             for (uint32_t v = 0; v < dispatches.size(); ++v) {
                 const vk::Pipeline& p = *dispatches[v].pipeline;
                 p.bind(cmd);
-                const VkDescriptorSet sets[] = {sceneSet, dispatches[v].materialSet, iblSet};
+                const VkDescriptorSet sets[] = {sceneSet, materialSet(dispatches[v]), iblSet};
                 vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout(), 0, 3, sets, 0, nullptr);
                 if (dispatches[v].layered) {
                     const VkDescriptorSet layerSet = layerSets->write(ctx, p.program(), d.layers);

@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "pose/node_placement.h"
 #include "pose/skinning.h"
+#include "scene/animated_properties.h"
 
 #include <algorithm>
 #include <charconv>
@@ -18,6 +19,25 @@ std::vector<uint32_t> onMovedNodes(const std::vector<T>& items, const std::vecto
     for (uint32_t i = 0; i < items.size(); ++i)
         if (items[i].node >= 0 && size_t(items[i].node) < moved.size() && moved[size_t(items[i].node)]) out.push_back(i);
     return out;
+}
+
+// Per source index (Light::source, Camera::source) the items loaded from it.
+template <typename T>
+std::vector<std::vector<uint32_t>> bySource(const std::vector<T>& items) {
+    std::vector<std::vector<uint32_t>> out;
+    for (uint32_t i = 0; i < items.size(); ++i) {
+        if (items[i].source < 0) continue;
+        if (size_t(items[i].source) >= out.size()) out.resize(size_t(items[i].source) + 1);
+        out[size_t(items[i].source)].push_back(i);
+    }
+    return out;
+}
+
+// `list` sorted, without repeats.
+std::vector<uint32_t> sortedSet(std::vector<uint32_t> list) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    return list;
 }
 
 std::string animationList(const Scene& scene) {
@@ -60,10 +80,33 @@ std::vector<uint32_t> selectAnimations(const Scene& scene, std::span<const std::
 
 ScenePose::ScenePose(const Scene& scene, std::vector<uint32_t> playing)
     : mScene(&scene), mPlaying(std::move(playing)), mNodes(scene.nodes), mDraws(scene.draws), mLights(scene.lights),
-      mCameras(scene.cameras) {
+      mCameras(scene.cameras), mMaterials(scene.materials), mLightsOf(bySource(scene.lights)), mCamerasOf(bySource(scene.cameras)) {
     std::vector<uint32_t> targets;
-    for (uint32_t a : mPlaying)
+    for (uint32_t a : mPlaying) {
         for (const AnimationChannel& channel : scene.animations[a].channels) targets.push_back(channel.node);
+        for (const PropertyChannel& p : scene.animations[a].properties) {
+            mAnimatesProperties = true;
+            const auto of = [&](const std::vector<std::vector<uint32_t>>& bySource) {
+                return p.index < bySource.size() ? bySource[p.index] : std::vector<uint32_t>{};
+            };
+            switch (AnimatedObject(p.object)) {
+                case AnimatedObject::Material:
+                    if (p.index >= mMaterials.size() || p.field >= materialFields().size()) break;  // (the loader's are valid)
+                    mAnimatedMaterials.push_back(p.index);
+                    mAnimatesLayers = mAnimatesLayers || materialFields()[p.field].layerData;
+                    break;
+                case AnimatedObject::Light:
+                    for (uint32_t l : of(mLightsOf)) mPropertyLights.push_back(l);
+                    break;
+                case AnimatedObject::Camera:
+                    for (uint32_t c : of(mCamerasOf)) mPropertyCameras.push_back(c);
+                    break;
+            }
+        }
+    }
+    mAnimatedMaterials = sortedSet(std::move(mAnimatedMaterials));
+    mPropertyLights = sortedSet(std::move(mPropertyLights));
+    mPropertyCameras = sortedSet(std::move(mPropertyCameras));
     mDependent = dependentNodes(mNodes, targets);
     std::vector<uint8_t> moved(mNodes.size(), 0);
     for (uint32_t node : mDependent) moved[node] = 1;
@@ -86,7 +129,9 @@ ScenePose::ScenePose(const Scene& scene, std::vector<uint32_t> playing)
     }
     mAnimatedLights = onMovedNodes(mLights, moved);
     mAnimatedCameras = onMovedNodes(mCameras, moved);
-    mAnimationBounds = animated() ? boundsOverAnimation(1024) : scene.bounds;
+    mAnimationBounds = movesNodes() ? boundsOverAnimation(1024) : scene.bounds;
+    // Nothing visible at any sampled time: frame what the loader framed.
+    if (!mAnimationBounds.valid()) mAnimationBounds = scene.bounds;
     evaluate(0.0);
 }
 
@@ -102,14 +147,44 @@ void ScenePose::evaluate(double time, bool loop) {
     if (!animated()) return;
     for (uint32_t a : mPlaying) {
         const Animation& animation = mScene->animations[a];
-        applyAnimation(animation, loop ? loopTime(time, animation.duration) : time, mNodes);
+        const double at = loop ? loopTime(time, animation.duration) : time;
+        applyAnimation(animation, at, mNodes);
+        applyProperties(animation, at);
     }
+    if (!movesNodes()) return;
     updateWorldTransforms(mNodes, mDependent);
     for (uint32_t s : mMovedSkins) scene::jointMatrices(mScene->skins[s], mNodes, mJoints[s]);
     for (uint32_t d : mAnimatedDraws) place(d);
-    for (uint32_t l : mAnimatedLights) placeLight(mLights[l], mNodes[size_t(mLights[l].node)].world);
-    // A camera whose node is scaled to nothing keeps its last placement.
+    for (uint32_t l : mAnimatedLights) {
+        const SceneNode& node = mNodes[size_t(mLights[l].node)];
+        placeLight(mLights[l], node.world);
+        mLights[l].hidden = !node.shown;
+    }
+    // A camera whose node is scaled to nothing keeps its last placement (visibility does not
+    // affect cameras).
     for (uint32_t c : mAnimatedCameras) placeCamera(mCameras[c], mNodes[size_t(mCameras[c].node)].world);
+}
+
+void ScenePose::applyProperties(const Animation& animation, double time) {
+    float value[4];
+    for (const PropertyChannel& p : animation.properties) {
+        const AnimationSampler& sampler = animation.samplers[p.sampler];
+        const std::span<const float> values(value, sampler.width);
+        evaluateSampler(sampler, AnimatedProperty::Values, time, std::span<float>(value, sampler.width));
+        switch (AnimatedObject(p.object)) {
+            case AnimatedObject::Material:
+                if (p.index < mMaterials.size()) writeMaterial(mMaterials[p.index], p.field, values);
+                break;
+            case AnimatedObject::Light:
+                if (p.index < mLightsOf.size())
+                    for (uint32_t l : mLightsOf[p.index]) writeLight(mLights[l], p.field, values);
+                break;
+            case AnimatedObject::Camera:
+                if (p.index < mCamerasOf.size())
+                    for (uint32_t c : mCamerasOf[p.index]) writeCamera(mCameras[c], p.field, values);
+                break;
+        }
+    }
 }
 
 void ScenePose::place(uint32_t d) {
@@ -119,6 +194,8 @@ void ScenePose::place(uint32_t d) {
     if (draw.skin >= 0) placeSkinnedDraw(draw, skinnedBounds(mJointBounds[d], mJoints[size_t(draw.skin)], reach));
     else placeDraw(draw, mNodes[size_t(draw.node)].world, reach,
                    std::span(mScene->instances).subspan(draw.firstInstance, draw.instanceCount));
+    // KHR_node_visibility: the mesh's own node decides, skinned or not.
+    if (draw.node >= 0 && !mNodes[size_t(draw.node)].shown) draw.hidden = true;
 }
 
 std::span<const float> ScenePose::weights(const Draw& draw) const {
@@ -151,6 +228,7 @@ Aabb ScenePose::boundsOverAnimation(size_t maxSamples) {
     for (uint32_t a : mPlaying)
         for (const AnimationChannel& channel : mScene->animations[a].channels)
             for (float t : mScene->animations[a].samplers[channel.sampler].times) times.push_back(double(t));
+    // (Property channels move nothing: their keys do not change the bounds.)
     std::sort(times.begin(), times.end());
     times.erase(std::unique(times.begin(), times.end()), times.end());
     if (times.size() > maxSamples && maxSamples >= 2) {

@@ -1,9 +1,10 @@
 #pragma once
 // ScenePose: a scene as its playing animations pose it at one time — the node tree with the
 // animations applied and the draws, lights and cameras that hang from the moved nodes placed
-// anew. Only animated nodes and their descendants are re-evaluated; everything else keeps the
-// loaded rest pose. Pure CPU, no Vulkan: the renderer turns the posed draws into this frame's
-// draw data.
+// anew (hidden where KHR_node_visibility hides their node), and the materials, lights and cameras
+// whose properties KHR_animation_pointer animates, with those properties written. Only animated
+// nodes and their descendants are re-evaluated; everything else keeps the loaded rest pose. Pure
+// CPU, no Vulkan: the renderer turns the posed draws, materials and lights into this frame's data.
 //
 //   ScenePose pose(scene, selectAnimations(scene, {"all"}));
 //   pose.evaluate(12.5);                 // each animation loops over its own duration
@@ -31,11 +32,15 @@ public:
 
     // Applies every playing animation at `time` seconds — wrapped into each animation's own
     // duration when `loop` (as the Khronos sample viewer and three.js play them), else clamped at
-    // its ends — and re-places what hangs from the animated nodes.
+    // its ends — re-places what hangs from the animated nodes and writes the animated properties.
     void evaluate(double time, bool loop = true);
 
-    // True when some playing animation moves a node of the scene (else the pose is the rest pose).
-    bool animated() const { return !mDependent.empty(); }
+    // True when some playing animation moves a node of the scene (its transform, weights or
+    // visibility) or animates a property of a material, light or camera (else the pose is the rest
+    // pose).
+    bool animated() const { return movesNodes() || mAnimatesProperties; }
+    // True when some playing animation moves a node (the draws then need this pose's matrices).
+    bool movesNodes() const { return !mDependent.empty(); }
     const std::vector<uint32_t>& playing() const { return mPlaying; }
     double time() const { return mTime; }
     // The longest duration among the playing animations, seconds (0 without any).
@@ -45,9 +50,18 @@ public:
     const std::vector<Draw>& draws() const { return mDraws; }
     const std::vector<Light>& lights() const { return mLights; }
     const std::vector<Camera>& cameras() const { return mCameras; }
-    // Which draws / lights follow an animated node (indices, ascending).
+    const std::vector<Material>& materials() const { return mMaterials; }
+    // Which draws / lights follow an animated node (indices, ascending): their placement and
+    // their `hidden` (KHR_node_visibility) change with the pose.
     const std::vector<uint32_t>& animatedDraws() const { return mAnimatedDraws; }
     const std::vector<uint32_t>& animatedLights() const { return mAnimatedLights; }
+    // Which materials, lights and cameras have a property some playing animation drives
+    // (KHR_animation_pointer; indices into materials(), lights(), cameras(), ascending).
+    const std::vector<uint32_t>& animatedMaterials() const { return mAnimatedMaterials; }
+    const std::vector<uint32_t>& animatedLightProperties() const { return mPropertyLights; }
+    const std::vector<uint32_t>& animatedCameraProperties() const { return mPropertyCameras; }
+    // True when an animated material field lives in the layer data (shading::MaterialLayerData).
+    bool animatesMaterialLayers() const { return mAnimatesLayers; }
     // The joint matrices (world · inverse bind) of Scene::skins[skin] in this pose.
     const std::vector<glm::dmat4>& jointMatrices(uint32_t skin) const { return mJoints[skin]; }
     // The morph weights of a draw's node in this pose (empty without morph targets).
@@ -62,13 +76,16 @@ public:
     // and at every key time of the playing animations — at most 1024, evenly spread over the
     // duration beyond that. Computed once, with the pose. Node animation reaches its extremes at
     // keys for STEP and LINEAR; cubic overshoot between keys is not covered. The scene's bounds
-    // when nothing is animated.
+    // when no node moves, or when no draw is visible at any of those times.
     const Aabb& animationBounds() const { return mAnimationBounds; }
 
 private:
     Aabb boundsOverAnimation(size_t maxSamples);
-    // Places draw `d` from the current nodes (and joints, when skinned).
+    // Places draw `d` from the current nodes (and joints, when skinned); hidden when its node is
+    // not shown.
     void place(uint32_t d);
+    // Writes the property channels of `animation` at `time` (already looped or clamped).
+    void applyProperties(const Animation& animation, double time);
 
     const Scene* mScene;
     std::vector<uint32_t> mPlaying;
@@ -77,7 +94,14 @@ private:
     std::vector<Draw> mDraws;
     std::vector<Light> mLights;
     std::vector<Camera> mCameras;
+    std::vector<Material> mMaterials;
     std::vector<uint32_t> mAnimatedDraws, mAnimatedLights, mAnimatedCameras;
+    // Property channels: whether the playing animations have any; per glTF light / camera
+    // (PropertyChannel::index) the lights / cameras loaded from it; what they animate.
+    bool mAnimatesProperties = false;
+    std::vector<std::vector<uint32_t>> mLightsOf, mCamerasOf;
+    std::vector<uint32_t> mAnimatedMaterials, mPropertyLights, mPropertyCameras;
+    bool mAnimatesLayers = false;
     std::vector<std::vector<glm::dmat4>> mJoints;     // per skin
     std::vector<uint32_t> mMovedSkins;                // skins with a joint some playing animation moves
     std::vector<std::vector<Aabb>> mJointBounds;  // per draw (empty unless skinned)

@@ -88,16 +88,54 @@ std::optional<passes::ForwardPass::DeformedVertices> FrameBuilder::addSkinMorph(
 
 passes::ForwardPass::PosedDraws FrameBuilder::addPosedDraws(Frame& frame, const scene::Scene& scene,
                                                             const scene::ScenePose& pose) {
-    passes::ForwardPass::PosedDraws posed{.data = frame.addHostUpload("posed_draws", bytesOf(scene::drawDataOf(scene, pose.draws())))};
-    if (!pose.animatedLights().empty() && mScene.sceneLightsUsed()) {
-        // The lights as the buffer holds them (the user's edits included), moved where the pose puts them.
-        std::vector<shading::LightData> lights = mScene.gpuScene().lights();
+    passes::ForwardPass::PosedDraws posed;
+    if (pose.movesNodes()) posed.data = frame.addHostUpload("posed_draws", bytesOf(scene::drawDataOf(scene, pose.draws())));
+    const scene::GpuScene& gpuScene = mScene.gpuScene();
+    if ((!pose.animatedLights().empty() || !pose.animatedLightProperties().empty()) && mScene.sceneLightsUsed()) {
+        // The lights as the buffer holds them (the user's edits included), moved where the pose puts
+        // them, dark while their node is hidden, with their animated properties.
+        std::vector<shading::LightData> lights = gpuScene.lights();
         for (uint32_t l : pose.animatedLights()) {
-            const shading::LightData placed = scene::lightData(pose.lights()[l]);
+            const scene::Light& light = pose.lights()[l];
+            const shading::LightData placed = scene::lightData(light);
             lights[l].positionRange = glm::vec4(glm::vec3(placed.positionRange), lights[l].positionRange.w);
             lights[l].directionType = glm::vec4(glm::vec3(placed.directionType), lights[l].directionType.w);
+            // The buffer holds 0 for a light hidden at rest: shown, it takes the scene's intensity.
+            if (light.hidden || scene.lights[l].hidden) lights[l].intensity = placed.intensity;
+        }
+        for (uint32_t l : pose.animatedLightProperties()) {
+            const shading::LightData animated = scene::lightData(pose.lights()[l]);
+            lights[l].positionRange.w = animated.positionRange.w;
+            lights[l].color = animated.color;
+            lights[l].intensity = animated.intensity;
+            lights[l].cone = animated.cone;
         }
         posed.lights = frame.addHostUpload("posed_lights", bytesOf(lights));
+    }
+    if (!pose.animatedMaterials().empty()) {
+        // The materials as the buffers hold them (the inspector's edits of the others stay), the
+        // animated ones as the pose makes them.
+        std::vector<shading::MaterialData> materials = gpuScene.materials();
+        for (uint32_t m : pose.animatedMaterials()) materials[m] = scene::materialData(pose.materials()[m]);
+        posed.materials = frame.addHostUpload("posed_materials", bytesOf(materials));
+        if (pose.animatesMaterialLayers() && !gpuScene.materialLayers().empty()) {
+            std::vector<shading::MaterialLayerData> layers = gpuScene.materialLayers();
+            for (uint32_t m : pose.animatedMaterials()) layers[m] = scene::materialLayerData(pose.materials()[m]);
+            posed.materialLayers = frame.addHostUpload("posed_material_layers", bytesOf(layers));
+        }
+    }
+    // One line for --explain when the pose animates more than nodes (KHR_animation_pointer).
+    std::vector<std::string> parts;
+    const auto count = [](size_t n, const char* one) { return std::to_string(n) + " " + one + (n == 1 ? "" : "s"); };
+    if (const size_t n = pose.animatedMaterials().size())
+        parts.push_back(count(n, "material") + (posed.materialLayers.valid() ? " (posed_materials, posed_material_layers)" : " (posed_materials)"));
+    if (const size_t n = pose.animatedLightProperties().size())
+        parts.push_back(count(n, "light") + (posed.lights.valid() ? " (posed_lights)" : " (not drawn: --scene-lights off)"));
+    if (const size_t n = pose.animatedCameraProperties().size()) parts.push_back(count(n, "camera") + " (the view of a glTF camera follows)");
+    if (!parts.empty()) {
+        std::string line = "animated properties (KHR_animation_pointer), written by the CPU per frame:";
+        for (size_t i = 0; i < parts.size(); ++i) line += (i ? ", " : " ") + parts[i];
+        frame.notes.push_back(line);
     }
     return posed;
 }

@@ -70,7 +70,10 @@ private:
                                                             const passes::FrameVariant& variant) const;
     // Adds the skin_morph pass for the pose's deformed draws; nullopt (and a note) when none is.
     std::optional<passes::ForwardPass::DeformedVertices> addSkinMorph(Frame& frame, const scene::ScenePose& pose);
-    // The posed draws' (and moved lights') per-frame buffers of an animated pose.
+    // The per-frame buffers of an animated pose — the posed draws (a node moves), lights (a light
+    // moves, shows, hides or has an animated property) and materials (and their layer data) with
+    // animated properties — each only when something it holds animates; and a note for --explain
+    // when the pose animates properties (KHR_animation_pointer).
     passes::ForwardPass::PosedDraws addPosedDraws(Frame& frame, const scene::Scene& scene, const scene::ScenePose& pose);
     // The IBL inputs of the forward pass, when the maps have an environment.
     std::optional<passes::ForwardPass::Ibl> addIbl(Frame& frame, const RenderSettings& settings);

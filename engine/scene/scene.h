@@ -154,8 +154,13 @@ struct Material {
     float iridescenceThicknessMinimum = 100.0f;
     float iridescenceThicknessMaximum = 400.0f;
 
-    // The layers beyond the core model this material uses (MaterialLayer bits): only those are
-    // evaluated for it (see docs/materials.md).
+    // Layers (MaterialLayer bits) a KHR_animation_pointer animation of the file may switch on (a
+    // factor animated from 0): the loader sets them (scene/animated_properties.h
+    // layersAnimationMayNeed) so that the material's variant and layer data exist from the start.
+    uint32_t animatedLayers = 0;
+
+    // The layers beyond the core model this material uses (MaterialLayer bits), animatedLayers
+    // included: only those are evaluated for it (see docs/materials.md).
     uint32_t layers() const;
     // The texture of core texture slot `slot` (CANDELA_TEX_*) and of layer texture slot `slot`
     // (CANDELA_LAYER_TEX_*). Precondition: `slot` is below CANDELA_TEX_COUNT / CANDELA_LAYER_TEX_COUNT.
@@ -163,11 +168,12 @@ struct Material {
     const TextureRef& layerTexture(int slot) const;
     // The texture whose coordinates the material's tangent frame follows — its normal map, else the
     // coat's (KHR_materials_clearcoat asks for the same coordinates), else the anisotropy texture or,
-    // for an untextured anisotropy, set 0 — or nullopt when the material needs no tangent frame.
+    // for an untextured anisotropy (at rest or animated), set 0 — or nullopt when the material needs
+    // no tangent frame.
     std::optional<TextureRef> tangentSpaceMap() const {
         if (normal.present()) return normal;
         if (clearcoatNormal.present()) return clearcoatNormal;
-        if (anisotropyStrength > 0.0f) return anisotropy.present() ? anisotropy : TextureRef{};
+        if (layers() & CANDELA_LAYER_ANISOTROPY) return anisotropy.present() ? anisotropy : TextureRef{};
         return std::nullopt;
     }
 };
@@ -228,7 +234,7 @@ inline uint32_t Material::layers() const {
     const bool filmAnywhere =
         iridescenceThicknessMaximum > 0.0f || (iridescenceThickness.present() && iridescenceThicknessMinimum > 0.0f);
     if (iridescenceFactor > 0.0f && filmAnywhere) out |= kLayerIridescence;
-    return out;
+    return out | animatedLayers;
 }
 
 // The change one morph target makes to one vertex. 80 bytes (the GPU reads the same layout).
@@ -296,8 +302,9 @@ struct Draw {
     // Index into Scene::skins when the node is skinned and the primitive has joints: its vertices
     // are then placed by the joints in world space and `world` is the identity.
     int32_t skin = -1;
-    // Not drawn in this pose: an animated node whose transform is singular (scaled to 0) or beyond
-    // a float. Only animated draws are ever hidden; the loader drops static singular ones.
+    // Not drawn in this pose: its node is not shown (KHR_node_visibility: it or an ancestor is
+    // hidden), or an animated node's transform is singular (scaled to 0) or beyond a float (the
+    // loader drops static singular draws).
     bool hidden = false;
     // EXT_mesh_gpu_instancing: the draw is `instanceCount` instances, instance i placed by
     // world · Scene::instances[firstInstance + i] (drawn as one instanced draw). The loader splits a
@@ -330,6 +337,9 @@ struct Light {
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, 0.0f, -1.0f};  // unit, the way the light shines
     int32_t node = -1;  // index into Scene::nodes (-1: not from a node)
+    int32_t source = -1;  // the glTF light (KHR_lights_punctual index) it was loaded from; -1: none
+    // Its node is not shown (KHR_node_visibility): it lights nothing (uploaded with intensity 0).
+    bool hidden = false;
 };
 
 struct Camera {
@@ -342,6 +352,7 @@ struct Camera {
     float xmag = 1.0f, ymag = 1.0f;  // orthographic half extents
     glm::mat4 world{1.0f};     // camera-to-world (looks down its local −Z)
     int32_t node = -1;         // index into Scene::nodes (-1: not from a node)
+    int32_t source = -1;       // the glTF camera it was loaded from; -1: none
 };
 
 struct Scene {
@@ -373,7 +384,8 @@ struct Scene {
     // (scene/material_variants.h selects one; after loading, every draw has its default).
     std::vector<std::string> variants;
     std::vector<DrawVariants> drawVariants;
-    Aabb bounds;  // world space, over all draws
+    // World space, over the drawn draws (not hidden); over every draw when all are hidden.
+    Aabb bounds;
     // Met while loading, one line each: problems that make the render differ from what the file
     // intends (printed), and facts the glTF-Validator reports as information, such as degenerate
     // triangles (printed with --verbose).

@@ -202,6 +202,32 @@ TEST(AnimationSampler, ProblemsNameWhatIsWrong) {
     EXPECT_EQ(problem({.times = {0}, .values = {}, .width = 0}, AnimatedProperty::Weights),
               "values of 0 components (expected at least 1)");
     EXPECT_EQ(problem({.times = {0, 1, 1}, .values = std::vector<float>(3), .width = 1}, AnimatedProperty::Weights), "");
+    // KHR_animation_pointer: plain values of 1 to 4 floats; a visibility is one value, STEP only.
+    EXPECT_EQ(problem({.times = {0}, .values = std::vector<float>(5), .width = 5}, AnimatedProperty::Values),
+              "values of 5 components (expected 1 to 4)");
+    EXPECT_EQ(problem({.times = {0, 1}, .values = {0, 1}, .width = 1}, AnimatedProperty::Visibility),
+              "a visibility (a bool) takes STEP interpolation, not LINEAR");
+    EXPECT_EQ(problem({.times = {0, 1}, .values = {0, 1, 0, 1}, .interpolation = Interpolation::Step, .width = 2},
+                      AnimatedProperty::Visibility),
+              "values of 2 components (expected 1)");
+    EXPECT_EQ(problem({.times = {0, 1}, .values = {0, 1}, .interpolation = Interpolation::Step, .width = 1}, AnimatedProperty::Visibility),
+              "");
+}
+
+// Values are interpolated per component and never normalized (a 4-wide value is not a rotation).
+TEST(AnimationSampler, PlainValuesInterpolatePerComponent) {
+    const AnimationSampler linear{.times = {0, 2}, .values = {0, 0, 0, 2, 4, 8, 2, 0}, .width = 4};
+    const std::array<float, 4> v = eval<4>(linear, AnimatedProperty::Values, 0.5);
+    EXPECT_FLOAT_EQ(v[0], 1.0f);  // a quarter of the way from (0, 0, 0, 2) to (4, 8, 2, 0)
+    EXPECT_FLOAT_EQ(v[1], 2.0f);
+    EXPECT_FLOAT_EQ(v[2], 0.5f);
+    EXPECT_FLOAT_EQ(v[3], 1.5f);
+    // Flat tangents: the smoothstep, 0.15625 at a quarter of the interval.
+    const AnimationSampler cubic{.times = {0, 1}, .values = {0, 0, 0, 0, 10, 0}, .interpolation = Interpolation::CubicSpline, .width = 1};
+    EXPECT_NEAR(eval<1>(cubic, AnimatedProperty::Values, 0.25)[0], 1.5625f, 1e-5f);
+    const AnimationSampler step{.times = {0, 1, 2}, .values = {1, 0, 1}, .interpolation = Interpolation::Step, .width = 1};
+    EXPECT_EQ(eval<1>(step, AnimatedProperty::Visibility, 0.999)[0], 1.0f);
+    EXPECT_EQ(eval<1>(step, AnimatedProperty::Visibility, 1.0)[0], 0.0f);
 }
 
 }  // namespace

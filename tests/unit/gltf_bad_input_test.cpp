@@ -1,6 +1,7 @@
 // Malformed glTF input: every row builds its file(s) in a temporary folder and expects loadGltf to
 // throw one UserError line "PATH: problem" containing the row's fragment. Under the asan preset
 // these also prove there is no out-of-bounds read, crash or hang on any of them.
+#include "animation_pointer_util.h"
 #include "bad_input_expect.h"
 #include "gltf_test_util.h"
 
@@ -303,6 +304,26 @@ std::vector<BadCase> badCases() {
             b.doc["extensionsUsed"] = {"EXT_texture_avif"};
             b.doc["extensionsRequired"] = {"EXT_texture_avif"};
         }), "requires unsupported extension EXT_texture_avif");
+    // KHR_animation_pointer and KHR_node_visibility.
+    add("PointerToMissingMaterial", edited([](GltfBuilder& b) {
+            addPointerAnimation(b, {{.pointer = "/materials/3/pbrMetallicRoughness/baseColorFactor", .times = {0, 1},
+                                     .values = {0, 0, 0, 1, 1, 1, 1, 1}, .type = "VEC4"}});
+        }), "channel 0: pointer '/materials/3/pbrMetallicRoughness/baseColorFactor': material 3 does not exist");
+    add("PointerVisibilityLinear", edited([](GltfBuilder& b) {
+            addPointerAnimation(b, {{.pointer = "/nodes/0/extensions/KHR_node_visibility/visible", .times = {0, 1}, .values = {0, 1},
+                                     .interpolation = "LINEAR", .componentType = kUnsignedByte}});
+        }), "a visibility is a bool: sampler 0 must use STEP interpolation, not LINEAR");
+    add("PointerWrongAccessorType", edited([](GltfBuilder& b) {
+            b.doc["materials"] = Json::array({Json::object()});
+            addPointerAnimation(b, {{.pointer = "/materials/0/pbrMetallicRoughness/roughnessFactor", .times = {0, 1},
+                                     .values = {0, 0, 0, 1, 1, 1}, .type = "VEC3"}});
+        }), "pointer '/materials/0/pbrMetallicRoughness/roughnessFactor': takes SCALAR values, but sampler 0's output accessor 4 is VEC3");
+    add("PointerNotAString", edited([](GltfBuilder& b) {
+            addPointerAnimation(b, {{.pointer = "/nodes/0/scale", .times = {0, 1}, .values = {1, 1, 1, 2, 2, 2}, .type = "VEC3"}});
+            b.doc["animations"][0]["channels"][0]["target"]["extensions"]["KHR_animation_pointer"]["pointer"] = 5;
+        }), "animations[0].channels[0].target.extensions.KHR_animation_pointer.pointer: expected a string, got the integer 5");
+    add("VisibleNotABool", edited([](GltfBuilder& b) { setVisible(b, 0, true); b.doc["nodes"][0]["extensions"]["KHR_node_visibility"]["visible"] = "false"; }),
+        "nodes[0].extensions.KHR_node_visibility.visible: expected true or false, got the string \"false\"");
     return cases;
 }
 

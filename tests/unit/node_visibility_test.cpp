@@ -1,0 +1,130 @@
+// KHR_node_visibility read by the loader and animated through KHR_animation_pointer: a hidden node
+// and everything under it are neither drawn nor lit by its lights, the bounds follow what is
+// visible, and a visibility channel switches them at its keys.
+#include "animation_pointer_util.h"
+
+#include "pose/scene_pose.h"
+
+namespace candela::scene::test {
+namespace {
+
+// Two triangles side by side: node 0 at the origin (drawn), node 1 hidden at x = 5 with a child,
+// node 2 (visible itself, at x = 10 under node 1), which has a triangle and a point light.
+GltfBuilder hiddenBranch() {
+    GltfBuilder b;
+    b.addTriangle();
+    b.doc["extensions"]["KHR_lights_punctual"]["lights"] = Json::array({{{"type", "point"}, {"intensity", 5}}});
+    useExtension(b, "KHR_lights_punctual");
+    const int child = b.addNode({{"mesh", 0}, {"translation", {5, 0, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    const int parent = b.addNode({{"mesh", 0}, {"translation", {5, 0, 0}}, {"children", {child}}});
+    setVisible(b, parent, false);
+    setVisible(b, child, true);
+    b.setScene({0, parent});
+    return b;
+}
+
+TEST(NodeVisibility, AHiddenParentHidesItsVisibleChildsDrawsAndLights) {
+    TempDir dir;
+    const Scene scene = loadGltf(hiddenBranch().writeGltf(dir.path()));
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    ASSERT_EQ(scene.nodes.size(), 3u);
+    EXPECT_TRUE(scene.nodes[0].shown);
+    EXPECT_FALSE(scene.nodes[1].visible);
+    EXPECT_FALSE(scene.nodes[1].shown);
+    EXPECT_TRUE(scene.nodes[2].visible);
+    EXPECT_FALSE(scene.nodes[2].shown);
+    ASSERT_EQ(scene.draws.size(), 3u);
+    EXPECT_FALSE(scene.draws[0].hidden);
+    EXPECT_TRUE(scene.draws[1].hidden);
+    EXPECT_TRUE(scene.draws[2].hidden);
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_TRUE(scene.lights[0].hidden);
+    // The bounds are the drawn triangle's alone.
+    EXPECT_EQ(scene.bounds.min, glm::vec3(0, 0, 0));
+    EXPECT_EQ(scene.bounds.max, glm::vec3(1, 1, 0));
+    // The pose and its bounds agree, with no animation.
+    const ScenePose pose(scene, {});
+    EXPECT_EQ(pose.bounds().max, glm::vec3(1, 1, 0));
+    EXPECT_EQ(pose.animationBounds().max, glm::vec3(1, 1, 0));
+}
+
+TEST(NodeVisibility, EveryNodeHiddenFramesTheHiddenGeometryWithAWarning) {
+    TempDir dir;
+    GltfBuilder b;
+    b.addTriangle();
+    setVisible(b, 0, false);
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_EQ(scene.warnings[0], "every node is hidden (KHR_node_visibility): framing uses the hidden geometry");
+    EXPECT_TRUE(scene.draws[0].hidden);
+    EXPECT_EQ(scene.bounds.max, glm::vec3(1, 1, 0));
+    // Visible by default, and when said so: no warning.
+    setVisible(b, 0, true);
+    EXPECT_TRUE(loadGltf(b.writeGltf(dir.path())).warnings.empty());
+}
+
+TEST(NodeVisibility, AnAnimatedVisibilityTogglesAtItsKey) {
+    TempDir dir;
+    GltfBuilder b = hiddenBranch();
+    // Node 2 (the hidden parent) shown from 1 s (unsigned bytes, as the specification asks), hidden again from 2 s.
+    addPointerAnimation(b, {{.pointer = "/nodes/2/extensions/KHR_node_visibility/visible", .times = {0, 1, 2}, .values = {0, 1, 0},
+                             .interpolation = "STEP", .componentType = kUnsignedByte}});
+    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    ASSERT_EQ(scene.animations[0].channels.size(), 1u);
+    EXPECT_EQ(scene.animations[0].channels[0].property, AnimatedProperty::Visibility);
+    ScenePose pose(scene, {0});
+    EXPECT_TRUE(pose.movesNodes());
+    EXPECT_EQ(pose.animatedDraws(), (std::vector<uint32_t>{1, 2}));
+    EXPECT_EQ(pose.animatedLights(), std::vector<uint32_t>{0});
+    pose.evaluate(0.999, false);
+    EXPECT_TRUE(pose.draws()[1].hidden);
+    EXPECT_TRUE(pose.draws()[2].hidden);
+    EXPECT_TRUE(pose.lights()[0].hidden);
+    EXPECT_EQ(pose.bounds().max, glm::vec3(1, 1, 0));
+    pose.evaluate(1.0, false);
+    EXPECT_FALSE(pose.draws()[1].hidden);
+    EXPECT_FALSE(pose.draws()[2].hidden);
+    EXPECT_FALSE(pose.lights()[0].hidden);
+    EXPECT_EQ(pose.bounds().max, glm::vec3(11, 1, 0));
+    EXPECT_EQ(pose.draws()[2].world[3], glm::vec4(10, 0, 0, 1));
+    pose.evaluate(2.5, false);
+    EXPECT_TRUE(pose.draws()[2].hidden);
+    // Framing covers what the animation ever shows.
+    EXPECT_EQ(pose.animationBounds().max, glm::vec3(11, 1, 0));
+}
+
+TEST(NodeVisibility, AVisibilityChannelTakesStepInterpolationOnly) {
+    TempDir dir;
+    GltfBuilder b = hiddenBranch();
+    addPointerAnimation(b, {{.pointer = "/nodes/2/extensions/KHR_node_visibility/visible", .times = {0, 1}, .values = {0, 1},
+                             .interpolation = "LINEAR", .componentType = kUnsignedByte}});
+    const std::string message = loadError(b.writeGltf(dir.path()));
+    EXPECT_NE(message.find("animation 0 channel 0: pointer '/nodes/2/extensions/KHR_node_visibility/visible': a visibility is a "
+                           "bool: sampler 0 must use STEP interpolation, not LINEAR"),
+              std::string::npos)
+        << message;
+}
+
+// The world transforms and shown flags of a partial update equal a full one's.
+TEST(NodeVisibility, ShownFollowsEveryAncestor) {
+    std::vector<SceneNode> nodes(4);
+    nodes[1].parent = 0;
+    nodes[2].parent = 1;
+    nodes[3].parent = 0;
+    nodes[1].visible = false;
+    const std::vector<uint32_t> all = {0, 1, 2, 3};
+    updateWorldTransforms(nodes, all);
+    EXPECT_TRUE(nodes[0].shown);
+    EXPECT_FALSE(nodes[1].shown);
+    EXPECT_FALSE(nodes[2].shown);
+    EXPECT_TRUE(nodes[3].shown);
+    nodes[1].visible = true;
+    nodes[0].visible = false;
+    const std::vector<uint32_t> dirty = dependentNodes(nodes, std::vector<uint32_t>{0});
+    updateWorldTransforms(nodes, dirty);
+    for (const SceneNode& n : nodes) EXPECT_FALSE(n.shown);
+}
+
+}  // namespace
+}  // namespace candela::scene::test
