@@ -121,14 +121,19 @@ SurfaceLight imageBasedLight(Surface s) {
     float ao = s.occlusion;
     float NoV = clamp(dot(s.normal, s.v), CANDELA_MIN_NOV, 1.0f);
     vec3 prefiltered;
+    // The roughness the split sum is read at: an anisotropic lobe's mean roughness (shared/brdf_anisotropy.h).
+    float roughness = s.roughness;
 #ifdef CANDELA_MATERIAL_LAYERS
-    if (hasLayer(CANDELA_LAYER_ANISOTROPY))
+    if (hasLayer(CANDELA_LAYER_ANISOTROPY)) {
+        // The streak where the bent normal puts it, as sharp as the narrow axis; the energy of the
+        // stretched lobe (the split sum's albedo at its mean roughness).
+        roughness = anisotropicIblRoughness(s.roughness, s.layers.anisotropy.strength);
         prefiltered = prefilteredAt(anisotropicBentNormal(s.normal, s.v, s.roughness, s.layers.anisotropy), s.v, s.roughness);
-    else
+    } else
 #endif
     prefiltered = prefilteredAt(s.normal, s.v, s.roughness);
     vec3 irradiance = irradianceAt(s.normal);
-    vec2 lut = splitSumAt(NoV, s.roughness);
+    vec2 lut = splitSumAt(NoV, roughness);
     vec3 diffuseColor = s.baseColor * (1.0f - s.metallic);
     BrdfLobes lobes;
 #ifdef CANDELA_MATERIAL_LAYERS
@@ -136,19 +141,19 @@ SurfaceLight imageBasedLight(Surface s) {
     // transmittedThroughput, with or without an environment).
     if (hasLayer(CANDELA_LAYER_SPECULAR) || hasLayer(CANDELA_LAYER_TRANSMISSION) || hasLayer(CANDELA_LAYER_IRIDESCENCE))
         lobes = iblShadeLobesDielectric(prefiltered, irradiance, lut, s.baseColor, s.metallic, s.layers.dielectric,
-                                        kMultiscatter, ao, specularOcclusion(NoV, ao, s.roughness),
+                                        kMultiscatter, ao, specularOcclusion(NoV, ao, roughness),
                                         1.0f - s.layers.transmission.weight);
     else
 #endif
     lobes = iblShadeLobes(prefiltered, irradiance, lut, s.f0, diffuseColor, kMultiscatter, ao,
-                          specularOcclusion(NoV, ao, s.roughness));
+                          specularOcclusion(NoV, ao, roughness));
     SurfaceLight light = noLight();
     light.diffuse = lobes.diffuse * push.ibl.intensity;
     light.specular = lobes.specular * push.ibl.intensity;
 #ifdef CANDELA_MATERIAL_LAYERS
     if (hasLayer(CANDELA_LAYER_SHEEN)) {
-        vec3 r = iblLookupDirection(reflect(-s.v, s.normal), push.ibl.rotation);
-        vec3 prefilteredSheen = textureLod(sheenCube, r, s.layers.sheen.roughness * push.ibl.maxLod).rgb;
+        vec3 d = iblLookupDirection(sheenLookupDirection(s.normal, s.v), push.ibl.rotation);
+        vec3 prefilteredSheen = textureLod(sheenCube, d, s.layers.sheen.roughness * push.ibl.maxLod).rgb;
         light.sheen = push.ibl.intensity * iblSheen(s.layers.sheen, prefilteredSheen, ao);
     }
     if (hasLayer(CANDELA_LAYER_CLEARCOAT)) {
@@ -182,14 +187,17 @@ SurfaceLight underLayers(SurfaceLight light, Surface s) {
 }
 
 // The fraction of the light behind `s` that its material lets through toward the viewer (not yet
-// beneath the sheen and the coat), through the part of the surface the reflections leave: with an
-// environment the split sum's (A, B) weigh it as they weigh the Lambert part, without one Karis's
-// analytic fit of them; and the volume's transmittance.
+// beneath the sheen and the coat): the transmission lobe's albedo, the split sum's (A, B) at the
+// transmission roughness, at most what the reflections leave (the split sum at the material's
+// roughness; iblTransmission) — with an environment from the BRDF LUT, without one from Karis's
+// analytic fit of it; and the volume's transmittance.
 vec3 transmittedThroughput(Surface s) {
     float NoV = clamp(dot(s.normal, s.v), CANDELA_MIN_NOV, 1.0f);
+    float roughness = s.layers.transmission.roughness;
     vec2 lut = kIbl ? splitSumAt(NoV, s.roughness) : envBrdfApproximation(NoV, s.roughness);
-    return iblTransmission(s.layers.transmission, vec3(1.0f), lut, s.baseColor, s.metallic, s.layers.dielectric,
-                           kMultiscatter) * s.layers.volume.transmittance;
+    vec2 transmissionLut = kIbl ? splitSumAt(NoV, roughness) : envBrdfApproximation(NoV, roughness);
+    return iblTransmission(s.layers.transmission, vec3(1.0f), lut, transmissionLut, s.baseColor, s.metallic,
+                           s.layers.dielectric, kMultiscatter) * s.layers.volume.transmittance;
 }
 
 // The light from behind a transmitting surface: the background (the opaque image) where the ray

@@ -74,9 +74,24 @@ CANDELA_FN BrdfLobes brdfLobesTimesCosineAnisotropic(vec3 N, vec3 V, vec3 L, vec
     return lobes;
 }
 
+// The perceptual roughness the image-based approximation reads the split sum's albedo at (the BRDF
+// LUT and the specular occlusion): √((α_t + α_b)/2), the mean of the stretched lobe's two
+// roughnesses (α_b = roughness², α_t = mix(α_b, 1, strength²), unclamped, so strength 0 is the
+// material's roughness exactly). The isotropic E overstates the stretched lobe's energy (its
+// directional albedo is 0.50-0.62 against E's 0.78-0.99 at strength 1). The prefiltered mip and
+// the bend stay at the material's roughness, which keeps the streak as sharp as the narrow axis
+// (docs/materials.md: reading those at this roughness too measures closer but blurs the streaks
+// away; tests/unit/anisotropy_ibl_error_test.cpp measures both).
+CANDELA_FN float anisotropicIblRoughness(float perceptualRoughness, float strength) {
+    float ab = perceptualRoughness * perceptualRoughness;
+    float at = mix(ab, 1.0f, strength * strength);
+    return sqrt(0.5f * (at + ab));
+}
+
 // The image-based approximation (the extension's implementation notes, as the Khronos sample
 // viewer does): the prefiltered environment is read about a normal bent toward the plane across
-// the brushing, the more so the stronger and smoother the anisotropy.
+// the brushing, the more so the stronger and smoother the anisotropy, at the material's
+// `perceptualRoughness`.
 CANDELA_FN vec3 anisotropicBentNormal(vec3 N, vec3 V, float perceptualRoughness, Anisotropy an) {
     vec3 tangentAcross = cross(an.b, V);
     vec3 anisotropicNormal = cross(tangentAcross, an.b);

@@ -77,9 +77,24 @@ CANDELA_FN Sheen sheenLayer(vec3 color, float perceptualRoughness, float albedo)
     return s;
 }
 
-// The sheen under image-based light: sheenColor · min(E(N·V), 1) · the Charlie-prefiltered
-// environment, darkened by the occlusion. With a white sheen in a uniform environment it reflects
-// exactly what the material beneath loses (white furnace).
+// Where the image-based sheen reads the Charlie-prefiltered cube: normalize(mix(N, R, weight)),
+// R = reflect(−V, N), weight CANDELA_SHEEN_MIRROR_WEIGHT = 0: about the normal N. The cube holds the lobe for n = v (a ring
+// about its direction, exact at normal incidence); away from it the sheen lobe is a back-scattering
+// lobe that stays about N and leans toward V, never toward the mirror direction — at grazing views
+// R lies on the far side, and a ring about it takes in light from below the surface. Against the
+// lobe integrated over the environment in double precision (tests/unit/layer_ibl_error_test.cpp,
+// docs/materials.md) the mean relative error is 0.47 about N, 0.82 about R (weight 1: what the
+// forward pass did, and what the Khronos sample viewer does).
+#define CANDELA_SHEEN_MIRROR_WEIGHT 0.0f
+CANDELA_FN vec3 sheenLookupDirection(vec3 N, vec3 V) {
+    vec3 d = mix(N, reflect(-V, N), CANDELA_SHEEN_MIRROR_WEIGHT);
+    float lengthD = length(d);
+    return lengthD > 1e-6f ? d / lengthD : N;
+}
+
+// The sheen under image-based light: sheenColor · min(E(N·V), 1) · `prefiltered` (the sheen cube
+// about sheenLookupDirection), darkened by the occlusion. With a white sheen in a uniform
+// environment it reflects exactly what the material beneath loses (white furnace).
 CANDELA_FN vec3 iblSheen(Sheen s, vec3 prefiltered, float occlusion) {
     return s.color * (s.albedo * occlusion) * prefiltered;
 }

@@ -64,13 +64,31 @@ CANDELA_FN vec3 transmissionTimesCosine(vec3 N, vec3 V, vec3 L, vec3 baseColor, 
     return baseColor * (t.weight * (1.0f - metallic) * unreflected * D * visTimesCosine);
 }
 
+// The directional albedo of the transmission lobe — the specification's BTDF, single scattering:
+// ∫ (1 − max(F_d)) D_T V_T |N·L| dL = (1 − f0)·A_t + (1 − f90)·B_t (the minimum over channels; with
+// a thin film mixed with (1 − F_film)(A_t + B_t)), (A_t, B_t) the split sum at (N·V, the
+// transmission roughness): the BTDF mirrored through the thin surface is the reflection lobe, whose
+// albedo the LUT holds (with the height-correlated visibility where V_T is separable, so this is
+// above the BTDF's own albedo: by up to 14% at transmission roughness 0.5, 47% at 0.75, 123% at 1,
+// the most toward grazing views). A rough BTDF loses much: at transmission roughness 1 its albedo
+// is 0.2-0.3.
+CANDELA_FN float iblTransmissionAlbedo(vec2 transmissionLut, DielectricFresnel d) {
+    vec3 albedo = d.oneMinusF0 * transmissionLut.x + vec3((1.0f - d.f90) * transmissionLut.y);
+    if (d.film > 0.0f) albedo = mix(albedo, d.filmOneMinusDielectric * (transmissionLut.x + transmissionLut.y), d.film);
+    return max(minComponent(albedo), 0.0f);
+}
+
 // The transmission under image-based light: `behind` (the light from behind the surface, already
-// blurred by the roughness and attenuated by the volume) through the dielectric part's
-// transmitted fraction — the same weight the Lambert part has in iblShadeLobesDielectric, so a
-// transmitting material in a uniform environment keeps the white furnace.
-CANDELA_FN vec3 iblTransmission(Transmission t, vec3 behind, vec2 lut, vec3 baseColor, float metallic, DielectricFresnel d,
-                                bool multiscatter) {
-    return behind * baseColor * (t.weight * (1.0f - metallic) * iblDielectricUnreflected(lut, d, multiscatter));
+// blurred by the roughness and attenuated by the volume) through the transmission lobe's albedo
+// (iblTransmissionAlbedo at `transmissionLut`, the split sum at the transmission roughness), at most
+// the weight the Lambert part has in iblShadeLobesDielectric (`lut`, at the material's roughness):
+// so a transmitting material never reflects and transmits more than 1 of a uniform environment,
+// and keeps the white furnace where the BTDF is smooth; a rough one loses what its single-scattering
+// BTDF loses (docs/materials.md).
+CANDELA_FN vec3 iblTransmission(Transmission t, vec3 behind, vec2 lut, vec2 transmissionLut, vec3 baseColor,
+                                float metallic, DielectricFresnel d, bool multiscatter) {
+    float weight = min(iblTransmissionAlbedo(transmissionLut, d), iblDielectricUnreflected(lut, d, multiscatter));
+    return behind * baseColor * (t.weight * (1.0f - metallic) * weight);
 }
 
 // The split sum's (A, B) at (N·V, perceptual roughness) without a LUT: Karis's analytic fit

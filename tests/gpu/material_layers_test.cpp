@@ -106,10 +106,15 @@ TEST_F(GpuTest, ClearcoatKeepsTheWhiteFurnace) {
 // and with a volume of thickness 0.5 and a white attenuation colour), roughness 0 … 1 across,
 // dielectric (bottom) and metal (top), seen over the skybox of a uniform environment of radiance 1
 // — so what lies behind each sphere (the transmission background: the sky) is 1 too, at every mip.
-// What the Lambert part of the dielectric loses is transmitted with the same weight
-// (shared/brdf_transmission.h), so every interior pixel is 1 as without transmission. Interior pixels
-// from a frame of the same spheres without skybox. Metric and tolerances as the clearcoat's.
-TEST_F(GpuTest, TransmissionKeepsTheWhiteFurnace) {
+// The transmitted light is the transmission lobe's albedo, at most what the Lambert part of the
+// dielectric loses (shared/brdf_transmission.h): the metals (which transmit nothing) and the smooth
+// dielectric (whose BTDF loses nothing) keep the furnace; the rough dielectrics lose what their
+// single-scattering BTDF loses — never above 1, darker the rougher (measured means 0.9995, 0.994,
+// 0.89, 0.64, 0.37 across; asserted: lower than the column before, by 0.05 from roughness 0.5 on),
+// and at roughness 1 between 0.25 and 0.5 (the lobe's albedo from the LUT there is 0.3 at N·V 1,
+// up to 0.6 toward grazing views, plus the reflection). Interior pixels from a frame of the same
+// spheres without skybox. Metric and tolerances of the furnace as the clearcoat's.
+TEST_F(GpuTest, TransmissionKeepsTheWhiteFurnaceWhereTheBtdfIsSmooth) {
     const scene::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
     const std::vector<Sphere> spheres = furnaceSpheres();
     const scene::Scene opaque = sphereScene(spheres, 64, 32);
@@ -131,8 +136,35 @@ TEST_F(GpuTest, TransmissionKeepsTheWhiteFurnace) {
         EXPECT_TRUE(contains(renderer.explain(), thickness > 0.0f ? "pays for layers: transmission+volume"
                                                                   : "pays for layers: transmission "));
         EXPECT_TRUE(contains(renderer.explain(), "transmission: 'transmission_background'"));
-        expectWhiteFurnace(furnacePixels(frame, scene, settings, spheres, &coverage), spheres.size(),
-                           thickness > 0.0f ? "transmissionVolumeFurnace" : "transmissionFurnace");
+        const std::string key = thickness > 0.0f ? "transmissionVolume" : "transmission";
+        const std::vector<FurnacePixel> pixels = furnacePixels(frame, scene, settings, spheres, &coverage);
+        // The smooth dielectric (sphere 0) and the metals (spheres 5 … 9).
+        std::vector<FurnacePixel> kept;
+        std::vector<double> sum(spheres.size(), 0.0);
+        std::vector<size_t> count(spheres.size(), 0);
+        double highest = -1.0;
+        for (const FurnacePixel& fp : pixels) {
+            if (fp.sphere == 0 || fp.sphere >= 5) kept.push_back({fp.x, fp.y, fp.sphere == 0 ? 0 : fp.sphere - 4, fp.value});
+            if (fp.sphere < 0) continue;
+            sum[size_t(fp.sphere)] += (fp.value.r + fp.value.g + fp.value.b) / 3.0;
+            ++count[size_t(fp.sphere)];
+            for (int c = 0; c < 3; ++c) highest = std::max(highest, double(fp.value[c]) - 1.0);
+        }
+        expectWhiteFurnace(kept, 6, key + "Furnace");
+        measured(key + "RoughMaxAboveOne", highest);
+        EXPECT_LE(highest, 1.0 / 1024.0);
+        for (size_t i = 0; i < 5; ++i) {
+            ASSERT_GT(count[i], 1000u) << "sphere " << i;
+            const double mean = sum[i] / double(count[i]);
+            measured(key + "MeanRoughness" + std::to_string(kRoughness[i]).substr(0, 4), mean);
+            if (i > 0) {
+                const double previous = sum[i - 1] / double(count[i - 1]);
+                EXPECT_LE(mean, previous - (kRoughness[i] >= 0.5f ? 0.05 : 0.002)) << "roughness " << kRoughness[i];
+            }
+        }
+        const double roughest = sum[4] / double(count[4]);
+        EXPECT_GE(roughest, 0.25);
+        EXPECT_LE(roughest, 0.5);
     }
 }
 
@@ -173,7 +205,8 @@ TEST_F(GpuTest, TransmissionExtremesStayFinite) {
     // a frame of the same spheres made opaque: over a transparent background a transmissive
     // sphere's coverage is below 1). Sphere 4 — 1e6 thick, attenuation distance 1e-6, colour
     // (0.5, 0.8, 1) — lets no red or green through and keeps blue (a colour of 1 absorbs nothing);
-    // sphere 1, a thin wall, lets some of every channel through.
+    // sphere 1, a thin wall, lets some of every channel through (rough, of IOR 10: the BTDF's albedo,
+    // (1 − f0 = 0.33) · A_t at roughness 1, is 0.01-0.1 over its pixels).
     settings.debugView = passes::DebugView::Transmission;
     const CapturedFrame throughput = renderer.capture(settings);
     EXPECT_EQ(frameProblem(throughput), "");
@@ -185,7 +218,7 @@ TEST_F(GpuTest, TransmissionExtremesStayFinite) {
     EXPECT_EQ(range[4].highest.r, 0.0f);
     EXPECT_EQ(range[4].highest.g, 0.0f);
     EXPECT_GT(range[4].lowest.b, 0.0f);
-    EXPECT_GT(minComponent(range[1].lowest), 0.05f);
+    EXPECT_GT(minComponent(range[1].lowest), 0.005f);
 }
 
 // The thin film's stiff cases in one frame (KHR_materials_iridescence): thickness 0 (no film),
