@@ -1,9 +1,12 @@
 // Textures in other formats render as their originals do: a copy of a shared model whose PNG images
 // are re-encoded as lossless WebP (EXT_texture_webp, required, no fallback) draws exactly the same
-// frame, byte for byte, as the model itself — the same texels reach the same mips and samplers.
+// frame, byte for byte, as the model itself — the same texels reach the same mips and samplers; and
+// a KTX2 texture (KHR_texture_basisu, ETC1S and UASTC) draws the frame its reference decoder's PNG
+// draws.
 #include "gpu_test.h"
 
 #include "assets/gltf_loader.h"
+#include "gltf_test_util.h"
 #include "render/renderer.h"
 #include "temp_dir.h"
 #include "webp_test_writer.h"
@@ -95,6 +98,39 @@ TEST_P(LosslessWebpCopy, RendersExactlyLikeThePngOriginal) {
     size_t differing = 0;
     for (size_t i = 0; i < actual.size(); ++i) differing += actual[i] != expected[i];
     EXPECT_EQ(differing, 0u) << "bytes differing between the WebP copy's frame and the original's";
+}
+
+// A triangle textured with `image` (a KHR_texture_basisu KTX2 file, or a PNG) sampled from level 0
+// only (LINEAR filters, no mips), so that the frame shows the decoded texels and nothing generated.
+std::vector<uint8_t> renderTexturedTriangle(vk::Context& context, const std::vector<uint8_t>& image, bool ktx2) {
+    scene::test::GltfBuilder b = ktx2 ? scene::test::ktx2Triangle(image) : scene::test::texturedTriangle("", image);
+    b.doc["samplers"] = Json::array({{{"magFilter", 9729}, {"minFilter", 9729}}});
+    b.doc["textures"][0]["sampler"] = 0;
+    TempDir dir;
+    const scene::Scene scene = scene::loadGltf(b.writeGlb(dir.path()));
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    Renderer renderer(context);
+    RenderSettings settings{.width = 160, .height = 120, .scene = &scene};
+    return renderer.capture(settings).rgba8;
+}
+
+TEST_F(GpuTest, Ktx2TexturesDrawTheReferenceDecodersTexels) {
+    const fs::path data = fs::path(CANDELA_TEST_DATA) / "ktx2";
+    // ETC1S (BasisLZ) and UASTC, both sRGB as base colours are; their level 0 as the reference decoded it.
+    for (const auto& [ktx2, png] : {std::pair{"etc1s_mips.ktx2", "etc1s_mips_level0_ref.png"},
+                                    std::pair{"uastc_mips_l0.ktx2", "uastc_mips_l0_level0_srgb.png"}}) {
+        SCOPED_TRACE(ktx2);
+        const std::vector<uint8_t> fromKtx2 = renderTexturedTriangle(context(), scene::test::readBytes(data / ktx2), true);
+        const std::vector<uint8_t> fromPng = renderTexturedTriangle(context(), scene::test::readBytes(data / png), false);
+        ASSERT_EQ(fromKtx2.size(), fromPng.size());
+        size_t differing = 0, covered = 0;
+        for (size_t i = 0; i < fromKtx2.size(); i += 4) {
+            differing += !std::equal(fromKtx2.begin() + ptrdiff_t(i), fromKtx2.begin() + ptrdiff_t(i + 4), fromPng.begin() + ptrdiff_t(i));
+            covered += fromPng[i + 3] == 255;
+        }
+        EXPECT_EQ(differing, 0u) << "pixels differing between the KTX2 texture's frame and its reference decode's";
+        EXPECT_GT(covered, fromPng.size() / 4 / 10) << "the triangle covers the frame";
+    }
 }
 
 // A base colour texture; sampler settings and textures of odd sizes; normal maps (their own mip chain).
