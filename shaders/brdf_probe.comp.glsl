@@ -5,7 +5,8 @@
 // a = the combination's linear index (y · width + x), so a test can check every value against its
 // double-precision reference and that both sides enumerated the same combination. With kLayers,
 // the Cook-Torrance models evaluate the layers of the push constants (shared/brdf_layers.h: the
-// specular layer, the thin film, the anisotropy, the transmission, the sheen, the clearcoat) with the function the forward pass's layered program uses;
+// specular layer, the thin film, the anisotropy, the transmission, the diffuse transmission, the sheen, the clearcoat) with the
+// function the forward pass's layered program uses;
 // Blinn-Phong stays the core's there too.
 #include "shared/brdf_layers.h"
 #include "shared/brdf_probe.h"
@@ -39,9 +40,12 @@ void main() {
         Sheen sheen = sheenLayer(params.sheenColor.rgb, params.sheenRoughness, params.sheenAlbedo);
         Anisotropy an = anisotropyLayer(params.anisotropy.w, params.anisotropy.xyz, cross(s.N, params.anisotropy.xyz));
         Transmission tr = transmissionLayer(params.transmission.x, s.perceptualRoughness, params.ior);
+        DiffuseTransmission dt = diffuseTransmissionLayer(
+            params.transmission.z, brdfProbeDiffuseTransmissionColor(uint(params.transmission.w)));
         LayeredLobes lobes = layeredLobesTimesCosine(s.N, s.V, s.L, s.L, s.baseColor, s.metallic, s.perceptualRoughness, s.model,
-                                                     params.layers, d, an, tr, sheen, coat);
-        radiance = lobes.diffuse + lobes.specular + lobes.transmission + lobes.sheen + vec3(lobes.clearcoat);
+                                                     params.layers, d, an, tr, dt, sheen, coat);
+        radiance = lobes.diffuse + lobes.specular + lobes.transmission + lobes.diffuseTransmission + lobes.sheen +
+                   vec3(lobes.clearcoat);
     } else {
         radiance = brdfTimesCosine(s.N, s.V, s.L, s.baseColor, s.metallic, s.perceptualRoughness, s.model);
     }

@@ -95,10 +95,11 @@ std::string label(const char* kind, int index, const std::string& name) {
 
 namespace {
 
-constexpr std::array<std::string_view, 22> kSupportedExtensions = {
+constexpr std::array<std::string_view, 24> kSupportedExtensions = {
     "KHR_materials_emissive_strength", "KHR_texture_transform", "KHR_materials_unlit", "KHR_materials_ior",
     "KHR_materials_specular", "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_anisotropy",
-    "KHR_materials_transmission", "KHR_materials_volume", "KHR_materials_iridescence", "KHR_materials_pbrSpecularGlossiness", "KHR_materials_variants",
+    "KHR_materials_transmission", "KHR_materials_volume", "KHR_materials_iridescence", "KHR_materials_diffuse_transmission",
+    "KHR_materials_dispersion", "KHR_materials_pbrSpecularGlossiness", "KHR_materials_variants",
     "KHR_lights_punctual", "KHR_mesh_quantization", "EXT_mesh_gpu_instancing", "KHR_draco_mesh_compression",
     "EXT_meshopt_compression", "EXT_texture_webp", "KHR_texture_basisu", "KHR_node_visibility", "KHR_animation_pointer"};
 

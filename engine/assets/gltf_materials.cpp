@@ -121,6 +121,8 @@ std::set<std::pair<int, bool>> imageUses(const tinygltf::Model& model) {
         add(index("KHR_materials_volume", "thicknessTexture"), false);
         add(index("KHR_materials_iridescence", "iridescenceTexture"), false);
         add(index("KHR_materials_iridescence", "iridescenceThicknessTexture"), false);
+        add(index("KHR_materials_diffuse_transmission", "diffuseTransmissionTexture"), false);
+        add(index("KHR_materials_diffuse_transmission", "diffuseTransmissionColorTexture"), true);
         add(index("KHR_materials_pbrSpecularGlossiness", "diffuseTexture"), true);
         add(index("KHR_materials_pbrSpecularGlossiness", "specularGlossinessTexture"), true);
     }
@@ -254,6 +256,31 @@ void loadTransmission(const LoadContext& ctx, const tinygltf::Model& model, Imag
         if (*distance <= 0.0) ctx.warn(what + " attenuationDistance " + shortNumber(*distance) + " is not > 0: no absorption");
         else out.attenuationDistance = float(*distance);
     }
+}
+
+// KHR_materials_diffuse_transmission into `out`.
+void loadDiffuseTransmission(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
+                             const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+    const tinygltf::Value* found = findExtension(extensions, "KHR_materials_diffuse_transmission");
+    if (!found) return;
+    const tinygltf::Value& e = *found;
+    if (auto factor = number(e, "diffuseTransmissionFactor"))
+        out.diffuseTransmissionFactor = clampedFactor(ctx, *factor, 0.0, 1.0, what + " diffuseTransmissionFactor");
+    clampedFactors(ctx, e, "diffuseTransmissionColorFactor", 0.0, 1.0, what, out.diffuseTransmissionColorFactor);
+    out.diffuseTransmission = extensionTexture(ctx, model, images, e, "diffuseTransmissionTexture", false, what);
+    out.diffuseTransmissionColor = extensionTexture(ctx, model, images, e, "diffuseTransmissionColorTexture", true, what);
+}
+
+// KHR_materials_dispersion into `out` (after the transmission and the volume: without a volume
+// beneath a transmitting surface it has nothing to spread, which a note says).
+void loadDispersion(const LoadContext& ctx, const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+    const tinygltf::Value* found = findExtension(extensions, "KHR_materials_dispersion");
+    if (!found) return;
+    if (auto dispersion = number(*found, "dispersion"))
+        out.dispersion = clampedFactor(ctx, *dispersion, 0.0, INFINITY, what + " dispersion");
+    if (out.dispersion > 0.0f && !(out.transmissionFactor > 0.0f && out.thicknessFactor > 0.0f))
+        ctx.note(what + " dispersion " + shortNumber(out.dispersion) +
+                 " has no effect without KHR_materials_transmission and a KHR_materials_volume thickness (thin-walled)");
 }
 
 // KHR_materials_iridescence into `out`.
@@ -396,6 +423,8 @@ void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTa
         loadAnisotropy(ctx, model, images, m.extensions, out, what);
         loadTransmission(ctx, model, images, m.extensions, out, what);
         loadIridescence(ctx, model, images, m.extensions, out, what);
+        loadDiffuseTransmission(ctx, model, images, m.extensions, out, what);
+        loadDispersion(ctx, m.extensions, out, what);
 
         out.baseColor = textureRef(ctx, model, images, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
                                    pbr.baseColorTexture.extensions, true, what + " baseColorTexture");

@@ -214,6 +214,13 @@ void checkDocument(const Checker& c, const Json& root) {
                 c.textureInfo(*film, pe + ".KHR_materials_iridescence", "iridescenceTexture");
                 c.textureInfo(*film, pe + ".KHR_materials_iridescence", "iridescenceThicknessTexture");
             }
+            if (const Json* dt = c.child(*ext, pe, "KHR_materials_diffuse_transmission",
+                                         {{"diffuseTransmissionFactor", Kind::Number},
+                                          {"diffuseTransmissionColorFactor", Kind::NumberArray, 3}})) {
+                c.textureInfo(*dt, pe + ".KHR_materials_diffuse_transmission", "diffuseTransmissionTexture");
+                c.textureInfo(*dt, pe + ".KHR_materials_diffuse_transmission", "diffuseTransmissionColorTexture");
+            }
+            c.child(*ext, pe, "KHR_materials_dispersion", {{"dispersion", Kind::Number}});
             if (const Json* sg = c.child(*ext, pe, "KHR_materials_pbrSpecularGlossiness",
                                          {{"diffuseFactor", Kind::NumberArray, 4}, {"specularFactor", Kind::NumberArray, 3},
                                           {"glossinessFactor", Kind::Number}})) {

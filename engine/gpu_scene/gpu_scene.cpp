@@ -100,6 +100,9 @@ MaterialLayerData materialLayerData(const Material& m) {
     out.iridescenceIor = m.iridescenceIor;
     out.iridescenceThicknessMinimum = m.iridescenceThicknessMinimum;
     out.iridescenceThicknessMaximum = m.iridescenceThicknessMaximum;
+    out.dispersion = m.dispersion;
+    out.diffuseTransmission = m.diffuseTransmissionFactor;
+    out.diffuseTransmissionColor = m.diffuseTransmissionColorFactor;
     for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) out.uv[slot] = uvTransform(m.layerTexture(slot));
     return out;
 }

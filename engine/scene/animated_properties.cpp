@@ -27,12 +27,16 @@ constexpr std::string_view kAnisotropy = "/extensions/KHR_materials_anisotropy";
 constexpr std::string_view kTransmission = "/extensions/KHR_materials_transmission";
 constexpr std::string_view kVolume = "/extensions/KHR_materials_volume";
 constexpr std::string_view kIridescence = "/extensions/KHR_materials_iridescence";
+constexpr std::string_view kDiffuseTransmission = "/extensions/KHR_materials_diffuse_transmission";
+constexpr std::string_view kDispersion = "/extensions/KHR_materials_dispersion";
 
 // Where each texture slot's textureInfo sits in a glTF material, in slot order (its key is the
 // slot's sampler name, kCoreTextureSlots / kLayerTextureSlots: "baseColorTexture", …).
 constexpr std::string_view kCoreTextureParents[] = {"/pbrMetallicRoughness", "/pbrMetallicRoughness", "", "", ""};
-constexpr std::string_view kLayerTextureParents[] = {kSpecular, kSpecular, kClearcoat, kClearcoat, kClearcoat, kSheen,
-                                                     kSheen, kAnisotropy, kTransmission, kVolume, kIridescence, kIridescence};
+constexpr std::string_view kLayerTextureParents[] = {kSpecular,    kSpecular,    kClearcoat,   kClearcoat,
+                                                     kClearcoat,   kSheen,       kSheen,       kAnisotropy,
+                                                     kTransmission, kVolume,     kIridescence, kIridescence,
+                                                     kDiffuseTransmission, kDiffuseTransmission};
 static_assert(std::size(kCoreTextureParents) == CANDELA_TEX_COUNT);
 static_assert(std::size(kLayerTextureParents) == CANDELA_LAYER_TEX_COUNT);
 
@@ -83,6 +87,11 @@ std::vector<MaterialField> makeMaterialFields() {
          100.0f},
         {cat(kIridescence, "/iridescenceThicknessMaximum"), 1, 0.0f, kMax, CANDELA_SCALAR(iridescenceThicknessMaximum), 0, true,
          400.0f},
+        {cat(kDiffuseTransmission, "/diffuseTransmissionFactor"), 1, 0.0f, 1.0f, CANDELA_SCALAR(diffuseTransmissionFactor), 0,
+         true, 1.0f},
+        {cat(kDiffuseTransmission, "/diffuseTransmissionColorFactor"), 3, 0.0f, 1.0f,
+         CANDELA_FACTOR(diffuseTransmissionColorFactor), 0, true},
+        {cat(kDispersion, "/dispersion"), 1, 0.0f, kMax, CANDELA_SCALAR(dispersion), 0, true, 1.0f},
     };
     // KHR_texture_transform of every texture slot.
     for (int slot = 0; slot < kTextureSlots; ++slot) {

@@ -61,7 +61,8 @@ struct AnimatedField {
 
 // The tables, in a fixed order (PointerTarget::field and PropertyChannel::field index them):
 // every material factor of Material (core, emissive strength, IOR, specular, clearcoat, sheen,
-// anisotropy, transmission, volume, iridescence) and the KHR_texture_transform offset, rotation
+// anisotropy, transmission, volume, iridescence, diffuse transmission, dispersion) and the
+// KHR_texture_transform offset, rotation
 // and scale of every texture slot; a light's colour, intensity, range and spot cone angles; a
 // camera's perspective yfov, aspectRatio, znear, zfar and orthographic xmag, ymag, znear, zfar.
 std::span<const AnimatedField<Material>> materialFields();

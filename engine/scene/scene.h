@@ -138,10 +138,11 @@ struct Material {
     // enters the dielectric part and is transmitted through it (tinted by the base colour, blurred by
     // the roughness) instead of diffusely re-emitted. Factor 0 (the default): no transmission.
     float transmissionFactor = 0.0f;
-    // KHR_materials_volume (meaningful only with transmission): the volume's thickness beneath the
-    // surface, thicknessFactor · texture (G), in the mesh's units (0, the default: thin-walled), and
-    // its absorption: light keeps attenuationColor after attenuationDistance (world units; 0 stands
-    // for the specification's default, infinity: no absorption).
+    // KHR_materials_volume (meaningful only with transmission, specular or diffuse): the volume's
+    // thickness beneath the surface, thicknessFactor · texture (G), in the mesh's units (0, the
+    // default: thin-walled), and its absorption: light keeps attenuationColor after
+    // attenuationDistance (world units; 0 stands for the specification's default, infinity: no
+    // absorption).
     float thicknessFactor = 0.0f;
     glm::vec3 attenuationColor{1.0f};
     float attenuationDistance = 0.0f;
@@ -153,6 +154,18 @@ struct Material {
     float iridescenceIor = 1.3f;
     float iridescenceThicknessMinimum = 100.0f;
     float iridescenceThicknessMaximum = 400.0f;
+
+    // KHR_materials_diffuse_transmission: the fraction diffuseTransmissionFactor · texture (A) of the
+    // light entering the dielectric part that a Lambertian BTDF lets through from behind (instead of
+    // diffusely reflecting it), coloured diffuseTransmissionColorFactor · texture (RGB, sRGB);
+    // KHR_materials_transmission overrides it by its own factor. Factor 0 (the default): none.
+    float diffuseTransmissionFactor = 0.0f;
+    glm::vec3 diffuseTransmissionColorFactor{1.0f};
+
+    // KHR_materials_dispersion: 20 / the Abbe number of the volume's medium, spreading the IORs of the
+    // red and blue rays refracted through it (meaningful only with transmission and a volume). 0 (the
+    // default): none.
+    float dispersion = 0.0f;
 
     // Layers (MaterialLayer bits) a KHR_animation_pointer animation of the file may switch on (a
     // factor animated from 0): the loader sets them (scene/animated_properties.h
@@ -204,7 +217,8 @@ enum MaterialLayer : uint32_t { CANDELA_LAYER_BITS(CANDELA_MATERIAL_LAYER) };
 #undef CANDELA_MATERIAL_LAYER
 
 // The names of the layers in `layers` (MaterialLayer bits), in bit order: "specular", "clearcoat",
-// "clearcoat-normal-map", "sheen", "anisotropy", "transmission", "volume", "iridescence".
+// "clearcoat-normal-map", "sheen", "anisotropy", "transmission", "volume", "iridescence",
+// "diffuse-transmission", "dispersion".
 inline std::vector<std::string_view> layerNames(uint32_t layers) {
 #define CANDELA_LAYER_NAME(NAME, Name, bit, name) std::pair<uint32_t, std::string_view>{bit, name},
     constexpr std::pair<uint32_t, std::string_view> kNames[] = {CANDELA_LAYER_BITS(CANDELA_LAYER_NAME)};
@@ -226,10 +240,13 @@ inline uint32_t Material::layers() const {
     // The specification: a zero sheen colour factor disables the layer.
     if (sheenColorFactor != glm::vec3(0.0f)) out |= kLayerSheen;
     if (anisotropyStrength > 0.0f) out |= kLayerAnisotropy;
-    // The specifications: no transmission without its factor; a volume only beneath a transmitting
-    // surface, and thickness 0 is thin-walled (no refraction, no absorption).
-    if (transmissionFactor > 0.0f)
-        out |= kLayerTransmission | (thicknessFactor > 0.0f ? kLayerVolume : 0u);
+    // The specifications: no transmission, specular or diffuse, without its factor; a volume only
+    // beneath a transmitting surface, and thickness 0 is thin-walled (no refraction, no absorption);
+    // dispersion only where a volume refracts (specular transmission).
+    if (transmissionFactor > 0.0f) out |= kLayerTransmission;
+    if (diffuseTransmissionFactor > 0.0f) out |= kLayerDiffuseTransmission;
+    if ((out & (kLayerTransmission | kLayerDiffuseTransmission)) && thicknessFactor > 0.0f) out |= kLayerVolume;
+    if ((out & kLayerTransmission) && (out & kLayerVolume) && dispersion > 0.0f) out |= kLayerDispersion;
     // The specification: factor 0 disables the film. A film of thickness 0 everywhere is none either.
     const bool filmAnywhere =
         iridescenceThicknessMaximum > 0.0f || (iridescenceThickness.present() && iridescenceThicknessMinimum > 0.0f);

@@ -22,7 +22,7 @@ struct DeviceChoices {
     // The BRDF LUT (written by compute, sampled with linear filtering): RG16F, or RGBA16F where
     // RG16F cannot be a storage image (an extended storage format).
     VkFormat brdfLut = VK_FORMAT_R16G16_SFLOAT;
-    // Whether the layered forward program (forward_layers.*: every layer's textures and maps, 23
+    // Whether the layered forward program (forward_layers.*: every layer's textures and maps, 25
     // samplers and 4 storage buffers in the fragment stage) exceeds the per-stage limits, so each
     // layered variant is specialized at load to declare only its layers' descriptors
     // (vk::ProgramSpecialization). A material whose layers still exceed them is refused by name.
@@ -30,7 +30,7 @@ struct DeviceChoices {
     // Why the visibility shading path (docs/shading-paths.md) cannot run here ("" if it can): it
     // stores gl_PrimitiveID from the fragment stage (geometryShader), renders and samples
     // R32G32_UINT, and its compute shading binds 5 sets, ~10 storage buffers and the layered
-    // program's 17 material textures besides the maps. Frames then take the forward path.
+    // program's 19 material textures besides the maps. Frames then take the forward path.
     std::string visibilityUnsupported;
     // One line per fallback taken ("BRDF LUT: R16G16B16A16_SFLOAT instead of R16G16_SFLOAT (no
     // STORAGE_IMAGE)"); empty when the device has everything.

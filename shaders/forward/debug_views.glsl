@@ -58,6 +58,19 @@ vec3 debugViewValue(Surface s, SurfaceLight lit, vec3 emissive, vec3 throughput)
         value = asData(throughput);
 #endif
     }
+    else if (kDebugView == CANDELA_DEBUG_DIFFUSE_TRANSMISSION) {
+#ifdef CANDELA_MATERIAL_LAYERS
+        value = lit.diffuseTransmission;  // black without the layer
+#endif
+    }
+    else if (kDebugView == CANDELA_DEBUG_DISPERSION) {
+#ifdef CANDELA_MATERIAL_LAYERS
+        // The angle between the red and the blue refracted rays, 1° white; black without dispersion.
+        if (hasLayer(CANDELA_LAYER_DISPERSION) && dot(s.layers.volume.ray, s.layers.volume.ray) > 0.0f)
+            value = asData(vec3(angleBetween(normalize(s.layers.volume.redRay), normalize(s.layers.volume.blueRay)) *
+                                (180.0f / CANDELA_PI)));
+#endif
+    }
     else if (kDebugView == CANDELA_DEBUG_IRIDESCENCE_THICKNESS || kDebugView == CANDELA_DEBUG_IRIDESCENCE_FRESNEL) {
 #ifdef CANDELA_MATERIAL_LAYERS
         // The film's thickness in µm as grey (1 µm white), and the Fresnel it gives at N·V (the

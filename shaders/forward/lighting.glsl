@@ -10,13 +10,15 @@
 #include "forward/surface.glsl"
 #include "shared/ibl.h"
 
-// Radiance toward the viewer, per lobe: the material's diffuse and specular reflection and its
-// transmitted light (from punctual lights behind it), and the sheen's and the coat's own
-// reflections. Only the layered program has the last three.
+// Radiance toward the viewer, per lobe: the material's diffuse and specular reflection, its
+// transmitted light (from punctual lights behind it) and diffusely transmitted light (from the
+// lights and the environment behind it), and the sheen's and the coat's own reflections. Only the
+// layered program has the last four.
 struct SurfaceLight {
     vec3 diffuse;
     vec3 specular;
     vec3 transmission;
+    vec3 diffuseTransmission;
     vec3 sheen;
     vec3 coat;
 };
@@ -26,6 +28,7 @@ SurfaceLight noLight() {
     light.diffuse = vec3(0.0f);
     light.specular = vec3(0.0f);
     light.transmission = vec3(0.0f);
+    light.diffuseTransmission = vec3(0.0f);
     light.sheen = vec3(0.0f);
     light.coat = vec3(0.0f);
     return light;
@@ -35,6 +38,7 @@ SurfaceLight plus(SurfaceLight a, SurfaceLight b) {
     a.diffuse += b.diffuse;
     a.specular += b.specular;
     a.transmission += b.transmission;
+    a.diffuseTransmission += b.diffuseTransmission;
     a.sheen += b.sheen;
     a.coat += b.coat;
     return a;
@@ -63,7 +67,8 @@ vec3 lightDirection(LightData light, vec3 p, out float attenuation) {
 // What punctual light `light` sends from `s` toward the viewer. In the layered program the
 // material lies beneath the sheen and the coat (layeredLobesTimesCosine combines them), and its
 // transmitted light comes through the volume: a point or spot light is seen from where the
-// refracted ray leaves it, and attenuated along that ray.
+// refracted ray leaves it (the green ray's, with dispersion), and attenuated along that ray; the
+// diffusely transmitted light is attenuated along the thickness likewise.
 SurfaceLight lightRadiance(Surface s, LightData light) {
     float attenuation;
     vec3 l = lightDirection(light, s.position, attenuation);
@@ -77,12 +82,15 @@ SurfaceLight lightRadiance(Surface s, LightData light) {
     }
     LayeredLobes lobes = layeredLobesTimesCosine(s.normal, s.v, l, lt, s.baseColor, s.metallic, s.roughness, kShadingModel,
                                                  layerBits(), s.layers.dielectric, s.layers.anisotropy,
-                                                 s.layers.transmission, s.layers.sheen, s.layers.coat);
+                                                 s.layers.transmission, s.layers.diffuseTransmission, s.layers.sheen,
+                                                 s.layers.coat);
     lit.diffuse = lobes.diffuse * radiance;
     lit.specular = lobes.specular * radiance;
     lit.sheen = lobes.sheen * radiance;
     lit.coat = lobes.clearcoat * radiance;
     lit.transmission = lobes.transmission * radiance * s.layers.volume.transmittance;
+    if (hasLayer(CANDELA_LAYER_DIFFUSE_TRANSMISSION))
+        lit.diffuseTransmission = lobes.diffuseTransmission * radiance * s.layers.volume.transmittance;
 #else
     BrdfLobes lobes = brdfLobesTimesCosine(s.normal, s.v, l, s.baseColor, s.metallic, s.roughness, kShadingModel);
     lit.diffuse = lobes.diffuse * radiance;
@@ -138,11 +146,14 @@ SurfaceLight imageBasedLight(Surface s) {
     BrdfLobes lobes;
 #ifdef CANDELA_MATERIAL_LAYERS
     // Transmission takes its share of the Lambert part (the rest of it is the light from behind,
-    // transmittedThroughput, with or without an environment).
-    if (hasLayer(CANDELA_LAYER_SPECULAR) || hasLayer(CANDELA_LAYER_TRANSMISSION) || hasLayer(CANDELA_LAYER_IRIDESCENCE))
+    // transmittedThroughput, with or without an environment), and of what remains the diffuse
+    // transmission takes its own (the irradiance from behind, below).
+    float lambertFraction = 1.0f - s.layers.transmission.weight;
+    if (hasLayer(CANDELA_LAYER_DIFFUSE_TRANSMISSION)) lambertFraction *= 1.0f - s.layers.diffuseTransmission.weight;
+    if (hasLayer(CANDELA_LAYER_SPECULAR) || hasLayer(CANDELA_LAYER_TRANSMISSION) || hasLayer(CANDELA_LAYER_IRIDESCENCE) ||
+        hasLayer(CANDELA_LAYER_DIFFUSE_TRANSMISSION))
         lobes = iblShadeLobesDielectric(prefiltered, irradiance, lut, s.baseColor, s.metallic, s.layers.dielectric,
-                                        kMultiscatter, ao, specularOcclusion(NoV, ao, roughness),
-                                        1.0f - s.layers.transmission.weight);
+                                        kMultiscatter, ao, specularOcclusion(NoV, ao, roughness), lambertFraction);
     else
 #endif
     lobes = iblShadeLobes(prefiltered, irradiance, lut, s.f0, diffuseColor, kMultiscatter, ao,
@@ -151,6 +162,13 @@ SurfaceLight imageBasedLight(Surface s) {
     light.diffuse = lobes.diffuse * push.ibl.intensity;
     light.specular = lobes.specular * push.ibl.intensity;
 #ifdef CANDELA_MATERIAL_LAYERS
+    if (hasLayer(CANDELA_LAYER_DIFFUSE_TRANSMISSION)) {
+        // The irradiance from behind the surface, through the volume's thickness.
+        vec3 behind = irradianceAt(-s.normal) * s.layers.volume.transmittance;
+        light.diffuseTransmission = push.ibl.intensity * (1.0f - s.layers.transmission.weight) *
+                                    iblDiffuseTransmission(s.layers.diffuseTransmission, behind, lut, s.metallic,
+                                                           s.layers.dielectric, kMultiscatter, ao);
+    }
     if (hasLayer(CANDELA_LAYER_SHEEN)) {
         vec3 d = iblLookupDirection(sheenLookupDirection(s.normal, s.v), push.ibl.rotation);
         vec3 prefilteredSheen = textureLod(sheenCube, d, s.layers.sheen.roughness * push.ibl.maxLod).rgb;
@@ -176,11 +194,13 @@ SurfaceLight underLayers(SurfaceLight light, Surface s) {
         light.diffuse *= s.layers.sheen.baseWeight;
         light.specular *= s.layers.sheen.baseWeight;
         light.transmission *= s.layers.sheen.baseWeight;
+        light.diffuseTransmission *= s.layers.sheen.baseWeight;
     }
     if (hasLayer(CANDELA_LAYER_CLEARCOAT)) {
         light.diffuse *= s.layers.coat.baseWeight;
         light.specular *= s.layers.coat.baseWeight;
         light.transmission *= s.layers.coat.baseWeight;
+        light.diffuseTransmission *= s.layers.coat.baseWeight;
         light.sheen *= s.layers.coat.baseWeight;
     }
     return light;
@@ -200,18 +220,29 @@ vec3 transmittedThroughput(Surface s) {
                            s.layers.dielectric, kMultiscatter) * s.layers.volume.transmittance;
 }
 
-// The light from behind a transmitting surface: the background (the opaque image) where the ray
-// leaves the volume (at the surface itself when thin-walled), at the mip of the BTDF's roughness
-// (log2(width) · roughness, as the Khronos sample viewer), attenuated by the volume. Where that exit
-// point is behind the camera, the background straight behind `pixel` (window coordinates). alpha:
-// the background's coverage there.
+// The background (the opaque image) where the ray leaving a volume at world position `exit` meets
+// the screen, at mip `lod`; where that point is behind the camera, straight behind `pixel` (window
+// coordinates) instead.
+vec4 backgroundAt(vec3 exit, vec2 pixel, vec2 size, float lod) {
+    vec2 uv = pixel / size;
+    vec4 clip = push.viewProjection * vec4(exit, 1.0f);
+    if (clip.w > 1e-6f) uv = clamp(clip.xy / clip.w * 0.5f + 0.5f, vec2(0.0f), vec2(1.0f));
+    return textureLod(transmissionBackground, uv, lod);
+}
+
+// The light from behind a transmitting surface: the background where the ray leaves the volume (at
+// the surface itself when thin-walled), at the mip of the BTDF's roughness (log2(width) ·
+// roughness, as the Khronos sample viewer), attenuated by the volume. With dispersion each channel
+// where its own ray leaves (three reads, one channel of each; the mip is the material's). alpha:
+// the background's coverage there (the green ray's).
 vec4 transmittedBackground(Surface s, vec2 pixel) {
     vec2 size = vec2(textureSize(transmissionBackground, 0));
-    vec2 uv = pixel / size;
-    vec4 clip = push.viewProjection * vec4(s.position + s.layers.volume.ray, 1.0f);
-    if (clip.w > 1e-6f) uv = clamp(clip.xy / clip.w * 0.5f + 0.5f, vec2(0.0f), vec2(1.0f));
     float lod = log2(max(size.x, size.y)) * s.layers.transmission.roughness;
-    vec4 behind = textureLod(transmissionBackground, uv, lod);
+    vec4 behind = backgroundAt(s.position + s.layers.volume.ray, pixel, size, lod);
+    if (hasLayer(CANDELA_LAYER_DISPERSION)) {
+        behind.r = backgroundAt(s.position + s.layers.volume.redRay, pixel, size, lod).r;
+        behind.b = backgroundAt(s.position + s.layers.volume.blueRay, pixel, size, lod).b;
+    }
     return vec4(behind.rgb * s.layers.volume.transmittance, behind.a);
 }
 #endif

@@ -123,20 +123,43 @@ Transmission evaluateTransmission(MaterialLayerData layer, SurfaceInputs inputs,
     return transmissionLayer(clamp(weight, 0.0f, 1.0f), roughness, layer.ior);
 }
 
+// KHR_materials_diffuse_transmission: its weight (factor × texture A) and colour (factor × texture
+// RGB, sRGB).
+DiffuseTransmission evaluateDiffuseTransmission(MaterialLayerData layer, SurfaceInputs inputs) {
+    if (!hasLayer(CANDELA_LAYER_DIFFUSE_TRANSMISSION)) return diffuseTransmissionLayer(0.0f, vec3(0.0f));
+    float weight = layer.diffuseTransmission * CANDELA_LAYER_TEXTURE(inputs, diffuseTransmission, CANDELA_LAYER_TEX_DIFFUSE_TRANSMISSION).a;
+    vec3 color = layer.diffuseTransmissionColor *
+                 CANDELA_LAYER_TEXTURE(inputs, diffuseTransmissionColor, CANDELA_LAYER_TEX_DIFFUSE_TRANSMISSION_COLOR).rgb;
+    return diffuseTransmissionLayer(clamp(weight, 0.0f, 1.0f), max(color, vec3(0.0f)));
+}
+
 // KHR_materials_volume on shading normal `n`: V refracted into it (an IOR below 1 taken as 1)
 // across its thickness — thicknessFactor × texture (G) in the mesh's units, scaled by the draw's
-// world transform (the mean of its axes' scales) — and the transmittance along that ray.
+// world transform (the mean of its axes' scales) — and the transmittance along that ray; with
+// KHR_materials_dispersion the red and blue rays too, at their IORs (dispersionIors). Beneath a
+// diffuse transmission alone nothing refracts: the transmittance along the thickness, no ray.
 Volume evaluateVolume(MaterialLayerData layer, SurfaceInputs inputs, vec3 n, vec3 v) {
     Volume volume;
     volume.ray = vec3(0.0f);
     volume.transmittance = vec3(1.0f);
+    volume.redRay = vec3(0.0f);
+    volume.blueRay = vec3(0.0f);
     if (!hasLayer(CANDELA_LAYER_VOLUME)) return volume;
     float thickness = layer.thickness * CANDELA_LAYER_TEXTURE(inputs, thickness, CANDELA_LAYER_TEX_THICKNESS).g;
     mat4 world = draws[inputs.draw].world;
     float scale = (length(world[0].xyz) + length(world[1].xyz) + length(world[2].xyz)) * (1.0f / 3.0f);
-    vec3 refracted = refract(-v, n, 1.0f / max(layer.ior, 1.0f));
-    volume.ray = normalize(refracted) * (max(thickness, 0.0f) * scale);
+    float rayLength = max(thickness, 0.0f) * scale;
+    if (!hasLayer(CANDELA_LAYER_TRANSMISSION)) {
+        volume.transmittance = volumeTransmittance(layer.attenuationColor, layer.attenuationDistance, rayLength);
+        return volume;
+    }
+    volume.ray = refractedDirection(v, n, layer.ior) * rayLength;
     volume.transmittance = volumeTransmittance(layer.attenuationColor, layer.attenuationDistance, length(volume.ray));
+    if (hasLayer(CANDELA_LAYER_DISPERSION)) {
+        vec3 iors = dispersionIors(layer.ior, layer.dispersion);
+        volume.redRay = refractedDirection(v, n, iors.r) * rayLength;
+        volume.blueRay = refractedDirection(v, n, iors.b) * rayLength;
+    }
     return volume;
 }
 
@@ -168,6 +191,7 @@ SurfaceLayers evaluateLayers(SurfaceInputs inputs, Surface s) {
     // The material's roughness: what lies behind a thin surface does not change with its curvature
     // across the pixel (specular AA widens the reflection only).
     l.transmission = evaluateTransmission(layer, inputs, s.materialRoughness);
+    l.diffuseTransmission = evaluateDiffuseTransmission(layer, inputs);
     l.volume = evaluateVolume(layer, inputs, s.normal, s.v);
     return l;
 }

@@ -68,6 +68,7 @@ vec4 shadeSurface(SurfaceInputs inputs, vec4 baseColor, vec2 pixel) {
     color += emissive;
 #ifdef CANDELA_MATERIAL_LAYERS
     color += lit.transmission;
+    if (hasLayer(CANDELA_LAYER_DIFFUSE_TRANSMISSION)) color += lit.diffuseTransmission;
     // Where the background behind a transmitting surface is uncovered (a transparent background),
     // the part of it that comes through stays uncovered: coverage 1 − mean(throughput) · (1 − its alpha).
     float coverage = alpha * (1.0f - (throughput.r + throughput.g + throughput.b) * (1.0f / 3.0f) * (1.0f - backgroundAlpha));

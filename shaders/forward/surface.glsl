@@ -46,10 +46,14 @@ struct Iridescence {
 };
 
 // KHR_materials_volume beneath a transmitting surface: the ray refracted through its thickness
-// (world units; zero when thin-walled) and the transmittance along it.
+// (world units; zero when thin-walled) and the transmittance along it (every ray is as long as the
+// thickness, so one transmittance serves all). With KHR_materials_dispersion the red and blue
+// channels' rays besides (refracted at their own IORs; `ray` is the green's, at the material's).
 struct Volume {
     vec3 ray;
     vec3 transmittance;
+    vec3 redRay;
+    vec3 blueRay;
 };
 
 // The layers of one surface point (each as shared/brdf_*.h defines it; a layer the variant does
@@ -63,6 +67,7 @@ struct SurfaceLayers {
     Sheen sheen;
     Anisotropy anisotropy;
     Transmission transmission;
+    DiffuseTransmission diffuseTransmission;
     Volume volume;
 };
 #endif

@@ -46,7 +46,9 @@ struct BrdfProbeParams {
     vec4 sheenColor;       // rgb
     vec4 anisotropy;       // xyz: the unit direction T in the tangent plane (z = 0), w: strength
     // x: the transmission weight (KHR_materials_transmission), y: 1 to mirror L through the surface
-    // (L.z → −L.z), so that the grid's light directions probe the back side the BTDF lights from.
+    // (L.z → −L.z), so that the grid's light directions probe the back side the BTDFs light from,
+    // z: the diffuse transmission weight (KHR_materials_diffuse_transmission), w: its colour,
+    // brdfProbeDiffuseTransmissionColor(uint(w)).
     vec4 transmission;
     // x: the thin film's weight (KHR_materials_iridescence), y: its IOR, z: its thickness (nm), w: the
     // IOR above it.
@@ -112,6 +114,16 @@ CANDELA_FN vec3 brdfProbeBaseColor(uint i) {
         case 0u: return vec3(1.0f);
         case 1u: return vec3(0.0f);
         default: return vec3(0.955f, 0.638f, 0.538f);
+    }
+}
+
+// The diffuse transmission colours the probe chooses from (BrdfProbeParams::transmission.w): white,
+// a red-orange one unlike any base colour of the grid, and black.
+CANDELA_FN vec3 brdfProbeDiffuseTransmissionColor(uint i) {
+    switch (i) {
+        case 0u: return vec3(1.0f);
+        case 1u: return vec3(1.0f, 0.35f, 0.05f);
+        default: return vec3(0.0f);
     }
 }
 

@@ -1,5 +1,6 @@
-// KHR_materials_transmission and KHR_materials_volume: the BTDF of a thin surface, its image-based
-// counterpart and Beer-Lambert absorption along a volume's ray. One of the material layers
+// KHR_materials_transmission, KHR_materials_volume and KHR_materials_dispersion: the BTDF of a thin
+// surface, its image-based counterpart, Beer-Lambert absorption along a volume's ray and the
+// per-channel IORs of a dispersive volume. One of the material layers
 // (shared/brdf_layers.h), shared by GLSL and C++ (float); a double-precision reference of the same
 // formulas lives in tests/unit/brdf_reference.h.
 //
@@ -12,7 +13,8 @@
 // (roughness · clamp(2·ior − 2, 0, 1): an index-matched surface does not blur). The base layer's
 // weight 1 − max(F_d) is taken at V·H_T. Light reaches it from behind the surface only (N·L < 0).
 // KHR_materials_volume adds refraction through a thickness and Beer-Lambert absorption along it
-// (the forward pass's geometry: volumeTransmittance).
+// (the forward pass's geometry: volumeTransmittance), and KHR_materials_dispersion a refracted ray
+// per colour channel (dispersionIors).
 #ifndef CANDELA_SHARED_BRDF_TRANSMISSION_H
 #define CANDELA_SHARED_BRDF_TRANSMISSION_H
 
@@ -109,6 +111,27 @@ CANDELA_FN vec3 volumeTransmittance(vec3 attenuationColor, float attenuationDist
     vec3 sigma = -log(max(attenuationColor, vec3(1e-30f))) / attenuationDistance;
     return exp(-sigma * distance);
 }
+
+// The direction of the volume's ray: V refracted into the surface of normal `n` (unit, on V's side)
+// with IOR `ior` (below 1 taken as 1: Snell's eta = 1/ior ≤ 1 never reflects totally), normalized.
+CANDELA_FN vec3 refractedDirection(vec3 v, vec3 n, float ior) { return normalize(refract(-v, n, 1.0f / max(ior, 1.0f))); }
+
+// ---- Dispersion ----
+
+// KHR_materials_dispersion: the IORs of the red, green and blue rays through a volume,
+// (ior − s, ior, ior + s) with the specification's half spread s = (ior − 1) · 0.025 · dispersion
+// (dispersion = 20 / the Abbe number V_d, and n_F − n_C = (n_d − 1)/V_d: half of it on either side
+// of the green's n_d); an IOR below 1 is taken as 1, as the volume's refraction takes it, and the red
+// is clamped to at least 1 (large dispersions). Dispersion 0 gives the IOR three times, exactly.
+CANDELA_FN vec3 dispersionIors(float ior, float dispersion) {
+    float green = max(ior, 1.0f);
+    float halfSpread = (green - 1.0f) * 0.025f * max(dispersion, 0.0f);
+    return vec3(max(green - halfSpread, 1.0f), green, green + halfSpread);
+}
+
+// The angle in radians between unit directions `a` and `b`, as 2 asin(|a − b| / 2): exact for the
+// small angles between the refracted rays of neighbouring wavelengths, where acos(a·b) loses them.
+CANDELA_FN float angleBetween(vec3 a, vec3 b) { return 2.0f * asin(min(0.5f * length(a - b), 1.0f)); }
 
 CANDELA_NAMESPACE_END
 

@@ -41,7 +41,9 @@
     X(TRANSMISSION, transmission, 8, 14, false)                  /* KHR_materials_transmission: linear, R */      \
     X(THICKNESS, thickness, 9, 15, false)                        /* KHR_materials_volume: linear, G */            \
     X(IRIDESCENCE, iridescence, 10, 16, false)                   /* KHR_materials_iridescence: linear, R */       \
-    X(IRIDESCENCE_THICKNESS, iridescenceThickness, 11, 17, false) /* linear, G */
+    X(IRIDESCENCE_THICKNESS, iridescenceThickness, 11, 17, false) /* linear, G */                             \
+    X(DIFFUSE_TRANSMISSION, diffuseTransmission, 12, 18, false)  /* KHR_materials_diffuse_transmission: linear, A */ \
+    X(DIFFUSE_TRANSMISSION_COLOR, diffuseTransmissionColor, 13, 19, false) /* sRGB, RGB */
 
 // X(NAME, Name, bit, name): the layers beyond glTF's core metallic-roughness model a material can
 // pay for (scene::Material::layers, docs/materials.md); `name` is what --explain and the variant
@@ -54,7 +56,9 @@
     X(ANISOTROPY, Anisotropy, 16u, "anisotropy") /* an anisotropic GGX lobe (KHR_materials_anisotropy, non-zero strength) */ \
     X(TRANSMISSION, Transmission, 32u, "transmission") /* KHR_materials_transmission with a non-zero factor: drawn after the opaque draws, reading what lies behind them */ \
     X(VOLUME, Volume, 64u, "volume")         /* a volume beneath it (KHR_materials_volume with a thickness): refraction and absorption */ \
-    X(IRIDESCENCE, Iridescence, 128u, "iridescence") /* a thin film (KHR_materials_iridescence, non-zero factor) changing the Fresnel */
+    X(IRIDESCENCE, Iridescence, 128u, "iridescence") /* a thin film (KHR_materials_iridescence, non-zero factor) changing the Fresnel */ \
+    X(DIFFUSE_TRANSMISSION, DiffuseTransmission, 256u, "diffuse-transmission") /* a Lambertian BTDF (KHR_materials_diffuse_transmission, non-zero factor): light from behind */ \
+    X(DISPERSION, Dispersion, 512u, "dispersion") /* per-channel refraction through the volume (KHR_materials_dispersion > 0 under transmission and a volume) */
 
 // X(NAME, Name, value, name, light): what the forward pass writes instead of the shaded colour
 // (passes/debug_view.h); `name` is the command line's and the viewer's, `light`: the view shows
@@ -79,7 +83,9 @@
     X(ANISOTROPY, Anisotropy, 16u, "anisotropy-direction", false) /* the anisotropy direction T, scaled by its strength */ \
     X(TRANSMISSION, Transmission, 17u, "transmission", false) /* the fraction of the light behind that comes through */ \
     X(IRIDESCENCE_THICKNESS, IridescenceThickness, 18u, "iridescence-thickness", false) /* the thin film's thickness (µm) */ \
-    X(IRIDESCENCE_FRESNEL, IridescenceFresnel, 19u, "iridescence-fresnel", false) /* the Fresnel the film gives at N·V */
+    X(IRIDESCENCE_FRESNEL, IridescenceFresnel, 19u, "iridescence-fresnel", false) /* the Fresnel the film gives at N·V */ \
+    X(DIFFUSE_TRANSMISSION, DiffuseTransmission, 20u, "diffuse-transmission", true) /* the light the diffuse transmission lets through */ \
+    X(DISPERSION, Dispersion, 21u, "dispersion", false) /* the angle between the red and blue refracted rays (1° white) */
 
 // The number of rows of the texture tables: the sizes of the per-slot arrays (MaterialData::uv, ...).
 #define CANDELA_TEXTURE_ROW_COUNT(NAME, field, slot, binding, normalMap) +1

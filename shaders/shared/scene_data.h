@@ -79,9 +79,11 @@ struct MaterialLayerData {
     /*Range(1, 3)*/ float iridescenceIor;        // the film's IOR
     /*Range(0, 1200)*/ float iridescenceThicknessMinimum;  // nm (iridescenceThicknessTexture.g = 0)
     /*Range(0, 1200)*/ float iridescenceThicknessMaximum;  // nm (texture 1, or no texture)
+    /*Range(0, 3)*/ float dispersion;            // KHR_materials_dispersion: 20 / Abbe number (0: none)
     /*Ignore*/ float pad0;
     /*Ignore*/ float pad1;
-    /*Ignore*/ float pad2;
+    /*Color*/ vec3 diffuseTransmissionColor;     // KHR_materials_diffuse_transmission diffuseTransmissionColorFactor
+    /*Range(0, 1)*/ float diffuseTransmission;   // diffuseTransmissionFactor
     /*Ignore*/ UvTransform uv[CANDELA_LAYER_TEX_COUNT];
 };
 
@@ -122,7 +124,7 @@ CANDELA_NAMESPACE_END
 static_assert(sizeof(candela::shading::LightData) == 64);
 static_assert(sizeof(candela::shading::DrawData) == 144);
 static_assert(sizeof(candela::shading::MaterialData) == 64 + 32 * CANDELA_TEX_COUNT);
-static_assert(sizeof(candela::shading::MaterialLayerData) == 112 + 32 * CANDELA_LAYER_TEX_COUNT);
+static_assert(sizeof(candela::shading::MaterialLayerData) == 128 + 32 * CANDELA_LAYER_TEX_COUNT);
 static_assert(sizeof(candela::shading::ForwardPush) == 128);
 #endif
 

@@ -180,7 +180,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"DebugViewUnknown", "render --debug-view normals --out {dir}/x.png",
                                "--debug-view: expected none, base-color, geometric-normal, mapped-normal, roughness, "
                                "metallic, occlusion, emissive, d, g, f, diffuse, specular, clearcoat, clearcoat-normal, sheen, "
-                               "anisotropy-direction, transmission, iridescence-thickness or iridescence-fresnel, got 'normals'"},
+                               "anisotropy-direction, transmission, iridescence-thickness, iridescence-fresnel, "
+                               "diffuse-transmission or dispersion, got 'normals'"},
                       BadInput{"ViewScreenshotWithoutFrames", "view --screenshot {dir}/x.png",
                                "--screenshot: also give --frames N (the frame to save; the viewer then exits)"},
                       BadInput{"ViewTwoScenes", "view a.glb b.glb", "unexpected argument 'b.glb': the scene is already a.glb"},

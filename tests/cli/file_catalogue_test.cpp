@@ -865,6 +865,30 @@ std::vector<Row> catalogue() {
     warning("material layers", "IridescenceThicknessNegative",
             layered({{"KHR_materials_iridescence", {{"iridescenceFactor", 1}, {"iridescenceThicknessMaximum", -100}}}}),
             "iridescenceThicknessMaximum -100 is outside [0, inf] (using 0)", true);
+    // KHR_materials_diffuse_transmission and KHR_materials_dispersion.
+    loads("material layers", "DiffuseTransmissionFactorsOnly",
+          layered({{"KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 0.5}, {"diffuseTransmissionColorFactor", {1, 0.8, 0.5}}}},
+                   {"KHR_materials_volume", {{"thicknessFactor", 0.2}}}}));
+    error("material layers", "DiffuseTransmissionColorTwoComponents",
+          layered({{"KHR_materials_diffuse_transmission", {{"diffuseTransmissionColorFactor", {1, 1}}}}}),
+          "KHR_materials_diffuse_transmission.diffuseTransmissionColorFactor: expected an array of 3 numbers");
+    error("material layers", "DiffuseTransmissionTextureMissing",
+          layered({{"KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 1}, {"diffuseTransmissionTexture", {{"index", 5}}}}}}),
+          "diffuseTransmissionTexture: texture 5 does not exist");
+    warning("material layers", "DiffuseTransmissionAboveOne", layered({{"KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 1.5}}}}),
+            "diffuseTransmissionFactor 1.5 is outside [0, 1] (using 1)", true);
+    loads("material layers", "DispersionWithVolume",
+          layered({{"KHR_materials_transmission", {{"transmissionFactor", 1}}}, {"KHR_materials_volume", {{"thicknessFactor", 1}}},
+                   {"KHR_materials_dispersion", {{"dispersion", 0.33}}}}));
+    error("material layers", "DispersionString", layered({{"KHR_materials_dispersion", {{"dispersion", "0.3"}}}}),
+          "KHR_materials_dispersion.dispersion: expected a number, got the string \"0.3\"");
+    note("material layers", "DispersionWithoutVolume",
+         layered({{"KHR_materials_transmission", {{"transmissionFactor", 1}}}, {"KHR_materials_dispersion", {{"dispersion", 1}}}}),
+         "dispersion 1 has no effect without KHR_materials_transmission and a KHR_materials_volume thickness (thin-walled)", true);
+    warning("material layers", "DispersionNegative",
+            layered({{"KHR_materials_transmission", {{"transmissionFactor", 1}}}, {"KHR_materials_volume", {{"thicknessFactor", 1}}},
+                     {"KHR_materials_dispersion", {{"dispersion", -1}}}}),
+            "dispersion -1 is outside [0, inf] (using 0)", true);
     // KHR_materials_pbrSpecularGlossiness and KHR_materials_variants.
     loads("material layers", "SpecularGlossinessFactorsOnly",
           layered({{"KHR_materials_pbrSpecularGlossiness", {{"diffuseFactor", {0.8, 0.2, 0.2, 1}}, {"glossinessFactor", 0.6}}}}));

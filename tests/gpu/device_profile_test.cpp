@@ -32,13 +32,13 @@ TEST_F(MinimumProfileTest, TheContextSeesTheProfile) {
 }
 
 TEST_F(MinimumProfileTest, AProgramOverAPerStageLimitIsRefusedByName) {
-    // The layered program with every layer: 23 samplers in the fragment stage.
+    // The layered program with every layer: 25 samplers in the fragment stage.
     try {
         const vk::Program program(context(), {"forward_layers.vert", "forward_layers.frag"});
         FAIL() << "expected a throw";
     } catch (const UserError& e) {
         const std::string text = e.what();
-        EXPECT_NE(text.find("(device profile minimum) cannot run forward_layers.vert+forward_layers.frag: 23 samplers in "
+        EXPECT_NE(text.find("(device profile minimum) cannot run forward_layers.vert+forward_layers.frag: 25 samplers in "
                             "the fragment stage, the device allows 16 (maxPerStageDescriptorSamplers)"),
                   std::string::npos)
             << text;

@@ -35,8 +35,8 @@ TEST(AnimatedProperties, EverySupportedPointerRoundTrips) {
         ASSERT_TRUE(parsed.has_value()) << pointer;
         EXPECT_EQ(*parsed, target) << pointer;
     }
-    // 8 core factors and 18 of the layers, and offset, rotation and scale of 17 texture slots.
-    EXPECT_EQ(materialFields().size(), 8u + 18u + 3u * (CANDELA_TEX_COUNT + CANDELA_LAYER_TEX_COUNT));
+    // 8 core factors and 21 of the layers, and offset, rotation and scale of 19 texture slots.
+    EXPECT_EQ(materialFields().size(), 8u + 21u + 3u * (CANDELA_TEX_COUNT + CANDELA_LAYER_TEX_COUNT));
     EXPECT_EQ(lightFields().size(), 5u);
     EXPECT_EQ(cameraFields().size(), 8u);
 }
@@ -100,6 +100,11 @@ TEST(AnimatedProperties, TheObjectModelsTemplatesParse) {
         {"/materials/0/extensions/KHR_materials_volume/attenuationDistance", 1},
         {"/materials/0/extensions/KHR_materials_volume/attenuationColor", 3},
         {"/materials/0/extensions/KHR_materials_volume/thicknessTexture/extensions/KHR_texture_transform/scale", 2},
+        {"/materials/0/extensions/KHR_materials_diffuse_transmission/diffuseTransmissionFactor", 1},
+        {"/materials/0/extensions/KHR_materials_diffuse_transmission/diffuseTransmissionColorFactor", 3},
+        {"/materials/0/extensions/KHR_materials_diffuse_transmission/diffuseTransmissionTexture/extensions/KHR_texture_transform/offset", 2},
+        {"/materials/0/extensions/KHR_materials_diffuse_transmission/diffuseTransmissionColorTexture/extensions/KHR_texture_transform/rotation", 1},
+        {"/materials/0/extensions/KHR_materials_dispersion/dispersion", 1},
     };
     for (const auto& [pointer, width] : pointers) {
         const std::optional<PointerTarget> target = parsePointer(pointer);
@@ -113,7 +118,7 @@ TEST(AnimatedProperties, TheObjectModelsTemplatesParse) {
 // decodes to another key.
 TEST(AnimatedProperties, OtherPointersDoNotParse) {
     for (const char* pointer : {
-             "/materials/0/extensions/KHR_materials_dispersion/dispersion",     // no dispersion in Candela
+             "/materials/0/extensions/KHR_materials_volume_scatter/multiscatterColor",  // no volume scattering in Candela
              "/nodes/0/extensions/EXT_lights_ies/multiplier",
              "/extensions/EXT_lights_image_based/lights/0/intensity",
              "/nodes/0/matrix", "/nodes/0/globalMatrix", "/nodes.length", "/animations.length",
@@ -184,6 +189,14 @@ TEST(AnimatedProperties, AFactorAnimatedFromZeroAsksForItsLayer) {
     m.thicknessFactor = 1.0f;  // a volume beneath a transmission animated from 0
     EXPECT_EQ(layersAnimationMayNeed(m, fields({"/materials/0/extensions/KHR_materials_transmission/transmissionFactor"})),
               uint32_t(kLayerTransmission | kLayerVolume));
+    // A diffuse transmission animated from 0 brings the volume beneath it; a dispersion only where the
+    // volume refracts (a transmission).
+    EXPECT_EQ(layersAnimationMayNeed(m, fields({"/materials/0/extensions/KHR_materials_diffuse_transmission/diffuseTransmissionFactor"})),
+              uint32_t(kLayerDiffuseTransmission | kLayerVolume));
+    EXPECT_EQ(layersAnimationMayNeed(m, fields({"/materials/0/extensions/KHR_materials_dispersion/dispersion"})), 0u);
+    m.transmissionFactor = 1.0f;
+    EXPECT_EQ(layersAnimationMayNeed(m, fields({"/materials/0/extensions/KHR_materials_dispersion/dispersion"})),
+              uint32_t(kLayerTransmission | kLayerVolume | kLayerDispersion));
     EXPECT_EQ(layersAnimationMayNeed(Material{}, fields({"/materials/0/extensions/KHR_materials_sheen/sheenColorFactor",
                                                          "/materials/0/extensions/KHR_materials_ior/ior"})),
               uint32_t(kLayerSheen | kLayerSpecular));

@@ -207,11 +207,11 @@ TEST(AnimationPointer, AnUnsupportedPointerWarnsOncePerPointer) {
     GltfBuilder b = redTriangle();
     addPointerAnimation(b, {{.pointer = "/materials/0/foo", .times = {0, 1}, .values = {0, 1}},
                             {.pointer = "/materials/0/foo", .times = {0, 1}, .values = {0, 1}},
-                            {.pointer = "/materials/0/extensions/KHR_materials_dispersion/dispersion", .times = {0, 1}, .values = {0, 1}},
+                            {.pointer = "/materials/0/extensions/KHR_materials_volume_scatter/scatterAnisotropy", .times = {0, 1}, .values = {0, 1}},
                             {.pointer = "/materials/0/pbrMetallicRoughness/metallicFactor", .times = {0, 1}, .values = {0, 1}}});
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
     EXPECT_EQ(linesWith(scene.warnings, "animation 0: pointer '/materials/0/foo' is not supported (ignored)"), 1u);
-    EXPECT_EQ(linesWith(scene.warnings, "pointer '/materials/0/extensions/KHR_materials_dispersion/dispersion' is not supported"), 1u);
+    EXPECT_EQ(linesWith(scene.warnings, "pointer '/materials/0/extensions/KHR_materials_volume_scatter/scatterAnisotropy' is not supported"), 1u);
     EXPECT_EQ(scene.warnings.size(), 2u);  // and none about the extension itself
     ASSERT_EQ(scene.animations[0].properties.size(), 1u);  // the metallic factor's
 }

@@ -5,7 +5,7 @@
 // Metric (reference::ErrorStats): max relative error per channel where the reference is ≥ 1e-6,
 // max absolute error below. Tolerance: relative 1e-5 (as for the core Cook-Torrance BRDF,
 // brdf_test.cpp), absolute 1e-9.
-#include "brdf_reference.h"
+#include "brdf_layers_test_util.h"
 #include "reports/ibl_reference.h"
 #include "shared/brdf_layers.h"
 
@@ -21,31 +21,20 @@
 namespace candela::test {
 namespace {
 
-namespace ref = reference;
-
-constexpr double kTolerance = 1e-5;
-constexpr double kAbsoluteTolerance = 1e-9;
-constexpr double kFloor = 1e-6;
+using namespace layers;
 
 struct Layer {
     float ior, specular;
     glm::vec3 color;
 };
 
+const std::vector<float> kRoughnesses = {0.0f, 0.045f, 0.1f, 0.3f, 0.7f, 1.0f};
+
 // The core values, the extremes and values in between (IOR 0 is the specular-glossiness conversion).
 const std::vector<Layer> kLayers = {{1.5f, 1.0f, glm::vec3(1.0f)},  {1.0f, 1.0f, glm::vec3(1.0f)},
                                     {10.0f, 1.0f, glm::vec3(1.0f)}, {0.0f, 1.0f, glm::vec3(2.0f, 1.0f, 0.25f)},
                                     {1.33f, 0.5f, glm::vec3(1.0f, 0.5f, 0.0f)}, {1.5f, 0.0f, glm::vec3(1.0f)},
                                     {1e6f, 1.0f, glm::vec3(1.0f)},  {1.5f, 1.0f, glm::vec3(1e30f)}};
-const std::vector<double> kCosines = {-0.5, 0.0, 1e-6, 1e-3, 0.05, 0.2, 0.5, 0.8, 0.99, 1.0};
-const std::vector<float> kRoughnesses = {0.0f, 0.045f, 0.1f, 0.3f, 0.7f, 1.0f};
-const std::vector<float> kMetallics = {0.0f, 0.5f, 1.0f};
-const std::vector<glm::vec3> kBaseColors = {glm::vec3(1.0f), glm::vec3(0.0f), glm::vec3(0.955f, 0.638f, 0.538f)};
-
-glm::vec3 direction(double cosTheta, double phi) {
-    const double sinTheta = std::sqrt(std::max(1.0 - cosTheta * cosTheta, 0.0));
-    return glm::vec3(glm::dvec3(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta));
-}
 
 glm::vec3 layeredFloat(glm::vec3 N, glm::vec3 V, glm::vec3 L, glm::vec3 base, float metallic, float roughness, uint32_t model,
                        const Layer& layer) {
@@ -75,66 +64,6 @@ void forEachCombination(F&& f) {
                             for (float metallic : kMetallics)
                                 for (const glm::vec3& base : kBaseColors)
                                     f(N, direction(cv, 0.0), direction(cl, phi), base, metallic, roughness, model, layer);
-}
-
-// Prints what `stats` measured for `lobe` and checks it: relative error within `tolerance`,
-// absolute error below the floor within kAbsoluteTolerance, and no NaN, Inf or negative value
-// (`bad` counts them).
-void expectWithinTolerance(const char* lobe, const ref::ErrorStats& stats, uint64_t bad, double tolerance) {
-    std::cout << lobe << ": " << stats.compared << " values, max relative error " << stats.maxRelative
-              << ", max absolute error below the floor " << stats.maxAbsolute << "\n  worst: " << stats.worstRelative << "\n";
-    EXPECT_EQ(bad, 0u) << "NaN, Inf or negative values";
-    EXPECT_LE(stats.maxRelative, tolerance) << stats.worstRelative;
-    EXPECT_LE(stats.maxAbsolute, kAbsoluteTolerance) << stats.worstAbsolute;
-}
-
-// One input of the layers' float tests: what the float and the double evaluation both take.
-struct LobeInput {
-    glm::vec3 N, V, L, base;
-    float metallic, roughness;
-    uint32_t model;
-};
-
-// Calls `f(input)` over the grid the layers' float tests share: both Cook-Torrance models, N·V and
-// N·L from kCosines — with `behindToo`, each L also mirrored below the surface — azimuths 0, π/2
-// and π, roughness 0 (clamped), 0.3 and 1, kMetallics, kBaseColors.
-template <class F>
-void forEachLobeInput(bool behindToo, F&& f) {
-    const glm::vec3 N(0.0f, 0.0f, 1.0f);
-    for (uint32_t model : {uint32_t(ref::kPbr), uint32_t(ref::kPbrSchlickGgx)})
-        for (double cv : kCosines)
-            for (double cl : kCosines)
-                for (double side : {1.0, -1.0})
-                    for (double phi : {0.0, std::numbers::pi / 2, std::numbers::pi})
-                        for (float roughness : {0.0f, 0.3f, 1.0f})
-                            for (float metallic : kMetallics)
-                                for (const glm::vec3& base : kBaseColors) {
-                                    if (side < 0.0 && !behindToo) continue;
-                                    f(LobeInput{N, direction(cv, 0.0), direction(side * cl, phi), base, metallic, roughness, model});
-                                }
-}
-
-// The reference of `in` with `layers` (ref::brdfTimesCosineLayered).
-glm::dvec3 referenceOf(const LobeInput& in, const ref::Layers& layers) {
-    return ref::brdfTimesCosineLayered(glm::dvec3(in.N), glm::dvec3(in.V), glm::dvec3(in.L), glm::dvec3(in.base), in.metallic,
-                                       in.roughness, in.model, layers);
-}
-
-// Adds the three channels of `got` against `expected` to `stats` and counts the non-finite or
-// negative ones in `bad`; `layer` names the layer settings in the worst cases' descriptions.
-void compareChannels(ref::ErrorStats& stats, uint64_t& bad, const LobeInput& in, glm::vec3 got, glm::dvec3 expected,
-                     const std::string& layer) {
-    for (int c = 0; c < 3; ++c) {
-        bad += std::isfinite(got[c]) && got[c] >= 0.0f ? 0 : 1;
-        stats.add(got[c], expected[c], [&] {
-            std::ostringstream s;
-            s.precision(9);
-            s << layer << " model " << in.model << " V=(" << in.V.x << "," << in.V.y << "," << in.V.z << ") L=(" << in.L.x << ","
-              << in.L.y << "," << in.L.z << ") metallic " << in.metallic << " roughness " << in.roughness << " channel " << c
-              << ": float " << got[c] << ", double " << expected[c];
-            return s.str();
-        });
-    }
 }
 
 TEST(BrdfLayers, FloatMatchesDoubleReference) {
@@ -198,10 +127,6 @@ TEST(BrdfLayers, SpecularZeroIsLambertAndIorOneReflectsNothingHeadOn) {
 
 // ---- Clearcoat ---------------------------------------------------------------------------------
 
-shading::Sheen noSheen() { return shading::sheenLayer(glm::vec3(0.0f), 0.0f, 0.0f); }
-shading::Anisotropy noAnisotropy() { return shading::anisotropyLayer(0.0f, glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)); }
-shading::Transmission noTransmission() { return shading::transmissionLayer(0.0f, 0.0f, 1.5f); }
-
 struct Coat {
     uint32_t bits;
     float ior;  // of the material beneath (with CANDELA_LAYER_SPECULAR)
@@ -236,7 +161,7 @@ TEST(BrdfLayers, ClearcoatFloatMatchesDoubleReference) {
         forEachLobeInput(false, [&](const LobeInput& in) {
             const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
                 in.N, in.V, in.L, in.L, in.base, in.metallic, in.roughness, in.model, coat.bits,
-                shading::dielectricFresnel(coat.ior, glm::vec3(1.0f), 1.0f), noAnisotropy(), noTransmission(), noSheen(),
+                shading::dielectricFresnel(coat.ior, glm::vec3(1.0f), 1.0f), noAnisotropy(), noTransmission(), noDiffuseTransmission(), noSheen(),
                 shading::clearcoatLayer(coat.weight, coat.roughness, coat.normal, in.V));
             compareChannels(stats, bad, in, lobes.diffuse + lobes.specular + lobes.sheen + glm::vec3(lobes.clearcoat),
                             referenceOf(in, layers), name.str());
@@ -249,7 +174,7 @@ TEST(BrdfLayers, ClearcoatOfWeightZeroIsTheMaterialAndGrazingLetsNothingThrough)
     const glm::vec3 N(0.0f, 0.0f, 1.0f), V = direction(0.6, 0.0), L = direction(0.7, 2.0), base(0.8f, 0.5f, 0.2f);
     const shading::Clearcoat none = shading::clearcoatLayer(0.0f, 0.3f, N, V);
     const shading::LayeredLobes coated = shading::layeredLobesTimesCosine(
-        N, V, L, L, base, 0.3f, 0.5f, ref::kPbr, CANDELA_LAYER_CLEARCOAT, shading::coreDielectricFresnel(), noAnisotropy(), noTransmission(), noSheen(), none);
+        N, V, L, L, base, 0.3f, 0.5f, ref::kPbr, CANDELA_LAYER_CLEARCOAT, shading::coreDielectricFresnel(), noAnisotropy(), noTransmission(), noDiffuseTransmission(), noSheen(), none);
     const shading::BrdfLobes plain = shading::brdfLobesTimesCosine(N, V, L, base, 0.3f, 0.5f, ref::kPbr);
     EXPECT_EQ(coated.diffuse, plain.diffuse);
     EXPECT_EQ(coated.specular, plain.specular);
@@ -344,7 +269,8 @@ TEST(BrdfLayers, SheenFloatMatchesDoubleReference) {
                             const glm::vec3 V = direction(cv, 0.0), L = direction(cl, phi), base(0.5f, 0.4f, 0.3f);
                             const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
                                 N, V, L, L, base, metallic, 0.5f, model, sc.bits, shading::coreDielectricFresnel(),
-                                noAnisotropy(), noTransmission(), shading::sheenLayer(sc.color, sc.roughness, sc.albedo),
+                                noAnisotropy(), noTransmission(), noDiffuseTransmission(),
+                                shading::sheenLayer(sc.color, sc.roughness, sc.albedo),
                                 shading::clearcoatLayer(1.0f, 0.2f, N, V));
                             const glm::vec3 got = lobes.diffuse + lobes.specular + lobes.sheen + glm::vec3(lobes.clearcoat);
                             const ref::Layers layers{.bits = sc.bits, .clearcoat = 1.0, .clearcoatRoughness = 0.2,
@@ -408,7 +334,7 @@ TEST(BrdfLayers, AnisotropyFloatMatchesDoubleReference) {
                     const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
                         in.N, in.V, in.L, in.L, in.base, in.metallic, in.roughness, in.model, bits,
                         shading::dielectricFresnel(ior, glm::vec3(1.0f), 1.0f),
-                        shading::anisotropyLayer(strength, T, glm::cross(in.N, T)), noTransmission(), noSheen(),
+                        shading::anisotropyLayer(strength, T, glm::cross(in.N, T)), noTransmission(), noDiffuseTransmission(), noSheen(),
                         shading::clearcoatLayer(0.0f, 0.0f, in.N, in.V));
                     compareChannels(stats, bad, in, lobes.diffuse + lobes.specular, referenceOf(in, layers), name.str());
                 });
@@ -447,7 +373,8 @@ TEST(BrdfLayers, TransmissionFloatMatchesDoubleReference) {
                 forEachLobeInput(true, [&](const LobeInput& in) {
                     const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
                         in.N, in.V, in.L, in.L, in.base, in.metallic, in.roughness, in.model, bits, d, noAnisotropy(),
-                        shading::transmissionLayer(weight, in.roughness, ior), noSheen(), shading::clearcoatLayer(0.0f, 0.0f, in.N, in.V));
+                        shading::transmissionLayer(weight, in.roughness, ior), noDiffuseTransmission(), noSheen(),
+                        shading::clearcoatLayer(0.0f, 0.0f, in.N, in.V));
                     compareChannels(stats, bad, in, lobes.diffuse + lobes.specular + lobes.transmission, referenceOf(in, layers),
                                     name.str());
                 });
@@ -566,7 +493,7 @@ TEST(BrdfLayers, IridescenceFloatMatchesDoubleReference) {
                     weight, 1.3f, 400.0f, 1.0f, std::clamp(glm::dot(in.N, in.V), 1e-4f, 1.0f), in.base);
                 const shading::LayeredLobes lobes = shading::layeredLobesTimesCosine(
                     in.N, in.V, in.L, in.L, in.base, in.metallic, in.roughness, in.model, bits, d, noAnisotropy(), noTransmission(),
-                    noSheen(), shading::clearcoatLayer(0.0f, 0.0f, in.N, in.V));
+                    noDiffuseTransmission(), noSheen(), shading::clearcoatLayer(0.0f, 0.0f, in.N, in.V));
                 compareChannels(stats, bad, in, lobes.diffuse + lobes.specular, referenceOf(in, layers), name.str());
             });
         }

@@ -103,7 +103,8 @@ inline glm::dvec3 brdfTimesCosine(const glm::dvec3& N, const glm::dvec3& V, cons
 
 // Layer bits, numbered like CANDELA_LAYER_* in shaders/shared/scene_data.h.
 enum LayerBit : uint32_t {
-    kLayerSpecular = 1, kLayerClearcoat = 2, kLayerSheen = 8, kLayerAnisotropy = 16, kLayerTransmission = 32, kLayerIridescence = 128
+    kLayerSpecular = 1, kLayerClearcoat = 2, kLayerSheen = 8, kLayerAnisotropy = 16, kLayerTransmission = 32, kLayerIridescence = 128,
+    kLayerDiffuseTransmission = 256
 };
 
 // KHR_materials_sheen's lobe f · N·L in the specification's form: the Charlie distribution
@@ -141,6 +142,8 @@ struct Layers {
     double anisotropy = 0.0;                    // strength
     glm::dvec3 anisotropyDirection{1.0, 0.0, 0.0};  // T, unit, ⟂ N
     double transmission = 0.0;  // weight
+    double diffuseTransmission = 0.0;          // KHR_materials_diffuse_transmission's weight
+    glm::dvec3 diffuseTransmissionColor{1.0};  // and colour
     double iridescence = 0.0;                 // the thin film's weight
     double iridescenceIor = 1.3, iridescenceThickness = 400.0;  // its IOR and thickness (nm)
     double outsideIor = 1.0;                  // the medium above the film (1, or a coat's 1.5)
@@ -285,6 +288,45 @@ inline glm::dvec3 transmissionTimesCosine(const glm::dvec3& N, const glm::dvec3&
     return layers.transmission * (1.0 - metallic) * (1.0 - maxF) * D * Vt * absNoL * baseColor;
 }
 
+// KHR_materials_diffuse_transmission's BTDF times |N·L| in the specification's form: for L on the
+// other side of the surface than V (N·L < 0; V is on the front, as the clamp of N·V above takes
+// it), the Lambertian diffuse_btdf = diffuseTransmissionColor / π in the dielectric part's
+// fresnel_mix, (1 − metallic) · diffuseTransmission · (1 − max(F_d)) · diffuse_btdf · |N·L|, with
+// the Fresnel at the light mirrored to V's side, L_m = L − 2(N·L)N (Candela's choice for its BTDFs:
+// the specification leaves the half vector of a transmitted direction open), V·H and its fallback
+// H = N as `angles` takes them.
+inline glm::dvec3 diffuseTransmissionTimesCosine(const glm::dvec3& N, const glm::dvec3& V, const glm::dvec3& L,
+                                                 const glm::dvec3& baseColor, double metallic, const Layers& layers) {
+    const double NoL = glm::dot(N, L);
+    if (NoL >= 0.0) return glm::dvec3(0.0);
+    const Angles mirrored = angles(N, V, L - 2.0 * NoL * N);
+    const glm::dvec3 F = appendixBFresnels(mirrored.VoH, mirrored.NoV, baseColor, layers).dielectric;
+    const double maxF = std::max({F.x, F.y, F.z});
+    return (1.0 - metallic) * layers.diffuseTransmission * (1.0 - maxF) * layers.diffuseTransmissionColor / kPi * -NoL;
+}
+
+// KHR_materials_dispersion's IORs of the red (n_C), green (n_d) and blue (n_F) rays from the Abbe
+// number V_d = 20 / dispersion: n_F − n_C = (n_d − 1) / V_d, split evenly about n_d (the
+// specification's implementation notes), n_d = max(ior, 1), the red at least 1; no dispersion: n_d
+// three times.
+inline glm::dvec3 dispersionIors(double ior, double dispersion) {
+    const double nd = std::max(ior, 1.0);
+    if (dispersion <= 0.0) return glm::dvec3(nd);
+    const double abbe = 20.0 / dispersion;
+    const double spread = (nd - 1.0) / abbe;
+    return {std::max(nd - 0.5 * spread, 1.0), nd, nd + 0.5 * spread};
+}
+
+// The direction of the ray refracted into a surface of unit normal N (on V's side) from the unit
+// direction toward the viewer V, by Snell's law with the outside IOR 1 and the inside `ior` ≥ 1:
+// the tangential part of −V scaled by 1/ior and the normal part from cos θ_t = √(1 − sin²θ_i / ior²).
+inline glm::dvec3 refractedDirection(const glm::dvec3& V, const glm::dvec3& N, double ior) {
+    const double cosI = glm::dot(N, V);
+    const glm::dvec3 tangential = (-V + cosI * N) / ior;
+    const double sin2T = (1.0 - cosI * cosI) / (ior * ior);
+    return glm::normalize(tangential - std::sqrt(std::max(1.0 - sin2T, 0.0)) * N);
+}
+
 // KHR_materials_anisotropy's material in the specification's form: the GGX lobe with
 // α_t = α + (1 − α) · strength² along T and α_b = α across (B = N × T),
 // D = 1 / (π α_t α_b ((T·H/α_t)² + (B·H/α_b)² + (N·H)²)²) and the height-correlated anisotropic
@@ -332,10 +374,16 @@ inline glm::dvec3 brdfTimesCosineLayered(const glm::dvec3& N, const glm::dvec3& 
         : (layers.bits & (kLayerSpecular | kLayerIridescence))
             ? brdfTimesCosineDielectric(N, V, L, baseColor, metallic, perceptualRoughness, model, layers)
             : brdfTimesCosine(N, V, L, baseColor, metallic, perceptualRoughness, model);
-    if (layers.bits & kLayerTransmission) {
-        // The transmitted fraction of the diffuse lobe becomes the BTDF.
-        material += transmissionTimesCosine(N, V, L, baseColor, metallic, perceptualRoughness, layers) -
-                    layers.transmission * diffuseTimesCosine(N, V, L, baseColor, metallic, layers);
+    if (layers.bits & (kLayerTransmission | kLayerDiffuseTransmission)) {
+        // The dielectric base mix(mix(diffuse_brdf, diffuse_btdf, dt), specular_btdf, tr): the
+        // diffuse lobe gives up its transmitted fractions to the BTDFs.
+        const double dt = (layers.bits & kLayerDiffuseTransmission) ? layers.diffuseTransmission : 0.0;
+        const double tr = (layers.bits & kLayerTransmission) ? layers.transmission : 0.0;
+        const glm::dvec3 diffuse = diffuseTimesCosine(N, V, L, baseColor, metallic, layers);
+        const glm::dvec3 diffuseBtdf = dt > 0.0 ? diffuseTransmissionTimesCosine(N, V, L, baseColor, metallic, layers) : glm::dvec3(0.0);
+        const glm::dvec3 specularBtdf =
+            tr > 0.0 ? transmissionTimesCosine(N, V, L, baseColor, metallic, perceptualRoughness, layers) : glm::dvec3(0.0);
+        material += (1.0 - tr) * diffuseBtdf + specularBtdf - (1.0 - (1.0 - tr) * (1.0 - dt)) * diffuse;
     }
     if (layers.bits & kLayerSheen) {
         const double maxColor = std::max({layers.sheenColor.x, layers.sheenColor.y, layers.sheenColor.z});

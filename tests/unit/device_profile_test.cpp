@@ -129,7 +129,7 @@ TEST(DeviceChoices, FallbacksFollowTheMissingFormatFeatures) {
     EXPECT_NE(minimum.fallbacks[2].find("BRDF LUT: R16G16B16A16_SFLOAT instead of R16G16_SFLOAT (no STORAGE_IMAGE)"),
               std::string::npos)
         << minimum.fallbacks[2];
-    // The layered program's 23 samplers exceed 16: its variants are specialized to their layers.
+    // The layered program's 25 samplers exceed 16: its variants are specialized to their layers.
     EXPECT_TRUE(minimum.specializeLayeredProgram);
     EXPECT_NE(minimum.fallbacks[3].find("samplers in the fragment stage, the device allows 16"), std::string::npos)
         << minimum.fallbacks[3];

@@ -43,7 +43,7 @@ TEST(ForwardTables, TextureSlotsAreRowsInSlotOrder) {
 #undef CANDELA_CORE_ROW
 #undef CANDELA_LAYER_ROW
     EXPECT_EQ(CANDELA_TEX_COUNT, 5);
-    EXPECT_EQ(CANDELA_LAYER_TEX_COUNT, 12);
+    EXPECT_EQ(CANDELA_LAYER_TEX_COUNT, 14);
 }
 
 TEST(ForwardTables, MaterialReadsEachSlotFromItsOwnField) {
@@ -99,7 +99,7 @@ TEST(ForwardTables, LayerBitsAreDistinctAndNamedInBitOrder) {
     CANDELA_LAYER_BITS(CANDELA_LAYER_ROW)
 #undef CANDELA_LAYER_ROW
     EXPECT_EQ(scene::layerNames(all), names);
-    EXPECT_EQ(scene::layerNames(all).size(), 8u);
+    EXPECT_EQ(scene::layerNames(all).size(), 10u);
 }
 
 TEST(ForwardTables, DebugViewsRoundTripTheirNamesInValueOrder) {

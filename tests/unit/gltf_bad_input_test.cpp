@@ -255,6 +255,33 @@ std::vector<BadCase> badCases() {
     add("VariantWithoutName", edited([](GltfBuilder& b) {
             b.doc["extensions"] = {{"KHR_materials_variants", {{"variants", Json::array({Json::object()})}}}};
         }), "extensions.KHR_materials_variants.variants[0].name: expected a string (a variant's name is required)");
+    // KHR_materials_diffuse_transmission and KHR_materials_dispersion.
+    add("DiffuseTransmissionColorTwoComponents", edited([](GltfBuilder& b) {
+            b.doc["materials"] = Json::array({{{"extensions", {{"KHR_materials_diffuse_transmission", {{"diffuseTransmissionColorFactor", {1, 1}}}}}}}});
+        }), "KHR_materials_diffuse_transmission.diffuseTransmissionColorFactor: expected an array of 3 numbers");
+    add("DiffuseTransmissionColorNotAnArray", edited([](GltfBuilder& b) {
+            b.doc["materials"] = Json::array({{{"extensions", {{"KHR_materials_diffuse_transmission", {{"diffuseTransmissionColorFactor", 1}}}}}}});
+        }), "diffuseTransmissionColorFactor: expected an array of 3 numbers");
+    add("DiffuseTransmissionFactorNotANumber", edited([](GltfBuilder& b) {
+            b.doc["materials"] = Json::array({{{"extensions", {{"KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", "0.5"}}}}}}});
+        }), "KHR_materials_diffuse_transmission.diffuseTransmissionFactor: expected a number, got the string \"0.5\"");
+    add("DiffuseTransmissionTextureMissing", [](const fs::path& dir) {
+            GltfBuilder b = texturedTriangle("", smallPng());
+            b.doc["materials"][0]["extensions"] = {{"KHR_materials_diffuse_transmission",
+                                                    {{"diffuseTransmissionFactor", 1}, {"diffuseTransmissionTexture", {{"index", 6}}}}}};
+            return b.writeGlb(dir);
+        }, "diffuseTransmissionTexture: texture 6 does not exist");
+    add("DiffuseTransmissionColorTextureWithoutIndex", [](const fs::path& dir) {
+            GltfBuilder b = texturedTriangle("", smallPng());
+            b.doc["materials"][0]["extensions"] = {{"KHR_materials_diffuse_transmission", {{"diffuseTransmissionColorTexture", {{"texCoord", 0}}}}}};
+            return b.writeGlb(dir);
+        }, "diffuseTransmissionColorTexture: no texture index");
+    add("DispersionNotANumber", edited([](GltfBuilder& b) {
+            b.doc["materials"] = Json::array({{{"extensions", {{"KHR_materials_dispersion", {{"dispersion", Json::array({0.5})}}}}}}});
+        }), "KHR_materials_dispersion.dispersion: expected a number, got an array");
+    add("DispersionNotAnObject", edited([](GltfBuilder& b) {
+            b.doc["materials"] = Json::array({{{"extensions", {{"KHR_materials_dispersion", 0.5}}}}});
+        }), "KHR_materials_dispersion: expected an object");
     add("SpecularGlossinessDiffuseFactorShort", edited([](GltfBuilder& b) {
             b.doc["materials"] = Json::array({{{"extensions", {{"KHR_materials_pbrSpecularGlossiness", {{"diffuseFactor", {1, 1, 1}}}}}}}});
         }), "diffuseFactor: expected an array of 4 numbers");
