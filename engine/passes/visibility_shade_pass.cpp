@@ -4,6 +4,7 @@
 #include "passes/clear_pass.h"
 #include "passes/compute.h"
 #include "passes/forward_blocks.h"
+#include "passes/material_set.h"
 #include "vk/context.h"
 
 #include <algorithm>
@@ -19,26 +20,6 @@ constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BI
 const char* shaderOf(bool layered, bool msaa) {
     if (msaa) return layered ? "visibility_shade_layers_msaa.comp" : "visibility_shade_msaa.comp";
     return layered ? "visibility_shade_layers.comp" : "visibility_shade.comp";
-}
-
-// Set 1 of `program` (core or layered) for the texture set whose first material is `material`: its
-// core textures and, with `layers` (the layer parameters' buffer; null for the core program), its
-// layer textures.
-VkDescriptorSet writeTextureSet(vk::Context& context, vk::DescriptorAllocator& allocator, const vk::Program& program,
-                                const scene::GpuScene& scene, uint32_t material, VkBuffer layers) {
-    vk::DescriptorWriter writer(program, 1);
-    for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
-        const scene::GpuScene::Binding b = scene.texture(material, slot);
-        writer.image(scene::kCoreTextureSlots[slot].sampler, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
-    }
-    if (layers != VK_NULL_HANDLE) {
-        writer.buffer(ForwardBlock<shading::MaterialLayerData>::name, layers);
-        for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) {
-            const scene::GpuScene::Binding b = scene.layerTexture(material, slot);
-            writer.image(scene::kLayerTextureSlots[slot].sampler, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
-        }
-    }
-    return writer.commit(context, allocator);
 }
 
 // `constants` with the tile size (the workgroup size) appended at its constant ids.
@@ -97,7 +78,7 @@ void VisibilityShadePass::setScene(const scene::GpuScene& scene, const MaterialK
         for (const bool layered : {false, true})
             if ((layered ? layeredUse : coreUse)[set])
                 (layered ? mLayeredMaterialSets : mCoreMaterialSets)[set] =
-                    writeTextureSet(mContext, *mSets, program(layered), scene, material,
+                    writeMaterialSet(mContext, *mSets, program(layered), scene, material,
                                     layered ? scene.materialLayerBuffer() : VK_NULL_HANDLE);
     }
 }
@@ -180,7 +161,7 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
                 if (!dispatch.layered || posedLayeredSets.empty()) return dispatch.materialSet;
                 VkDescriptorSet& set = posedLayeredSets[dispatch.textureSet];
                 if (set == VK_NULL_HANDLE)
-                    set = writeTextureSet(ctx.context(), ctx.descriptors(), *layeredProgram, *scene,
+                    set = writeMaterialSet(ctx.context(), ctx.descriptors(), *layeredProgram, *scene,
                                           textureSets->firstMaterial[dispatch.textureSet], ctx.buffer(d.posedMaterialLayers));
                 return set;
             };
