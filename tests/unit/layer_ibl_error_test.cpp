@@ -13,6 +13,7 @@
 // (KHR_materials_anisotropy's image-based term: anisotropy_ibl_error_test.cpp.)
 #include "assets/environment.h"
 #include "brdf_reference.h"
+#include "sphere_quadrature.h"
 #include "reports/ibl_reference.h"
 #include "shared/brdf_sheen.h"
 #include "shared/brdf_transmission.h"
@@ -33,25 +34,6 @@ namespace ref = reference;
 using dvec3 = glm::dvec3;
 constexpr double kPi = ref::kPi;
 
-// ∫ over the sphere of g(L) dL on a grid about `axis`: `cells` rows, denser near the axis (cos θ =
-// 1 − 2u², weight 4u), twice as many columns in φ.
-double integrateSphere(const dvec3& axis, int cells, const std::function<double(const dvec3&)>& g) {
-    const dvec3 z = glm::normalize(axis);
-    const dvec3 helper = std::abs(z.x) < 0.9 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
-    const dvec3 x = glm::normalize(glm::cross(helper, z)), y = glm::cross(z, x);
-    double sum = 0.0;
-    for (int i = 0; i < cells; ++i) {
-        const double u = (i + 0.5) / cells;
-        const double cosTheta = 1.0 - 2.0 * u * u;
-        const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-        const double rowWeight = 4.0 * u / cells * (2.0 * kPi / (2 * cells));
-        for (int j = 0; j < 2 * cells; ++j) {
-            const double phi = (j + 0.5) / (2 * cells) * 2.0 * kPi;
-            sum += g(x * (sinTheta * std::cos(phi)) + y * (sinTheta * std::sin(phi)) + z * cosTheta) * rowWeight;
-        }
-    }
-    return sum;
-}
 
 // The environments: an outdoor-like sky (bright above, a dark ground), a studio (dim grey, three
 // soft boxes of 20, 10 and 5 over it), and the shared studio_small_03_1k map (luminance) when the
@@ -101,8 +83,8 @@ struct Errors {
 // The sheen cube's texel in direction d: the environment prefiltered with the sheen lobe for n = v = d
 // (the map ibl_sheen_prefilter computes, here integrated in double).
 double sheenPrefiltered(const Environment& env, const dvec3& d, double roughness) {
-    const double weighted = integrateSphere(d, 150, [&](const dvec3& l) { return ref::sheenTimesCosine(d, d, l, roughness) * env.radiance(l); });
-    const double weight = integrateSphere(d, 150, [&](const dvec3& l) { return ref::sheenTimesCosine(d, d, l, roughness); });
+    const double weighted = integrateSphere<double>(d, 150, [&](const dvec3& l) { return ref::sheenTimesCosine(d, d, l, roughness) * env.radiance(l); });
+    const double weight = integrateSphere<double>(d, 150, [&](const dvec3& l) { return ref::sheenTimesCosine(d, d, l, roughness); });
     return weighted / weight;
 }
 
@@ -116,7 +98,7 @@ TEST(LayerIbl, SheenErrorIsMeasured) {
             for (double NoV : {1.0, 0.7, 0.4, 0.2, 0.1}) {
                 // E(N·V): the sheen LUT's texel (the lobe's directional albedo), clamped as sheenLayer clamps it.
                 const dvec3 Nz(0, 0, 1), Vz(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
-                const double E = integrateSphere(Nz, 200, [&](const dvec3& l) { return ref::sheenTimesCosine(Nz, Vz, l, roughness); });
+                const double E = integrateSphere<double>(Nz, 200, [&](const dvec3& l) { return ref::sheenTimesCosine(Nz, Vz, l, roughness); });
                 const shading::Sheen sheen = shading::sheenLayer(glm::vec3(1.0f), float(roughness), float(E));
                 Errors normal, mirror;
                 for (size_t n = 0; n < normals.size(); ++n) {
@@ -126,7 +108,7 @@ TEST(LayerIbl, SheenErrorIsMeasured) {
                         const dvec3 lookup = glm::normalize(dvec3(shading::sheenLookupDirection(glm::vec3(N), glm::vec3(V))));
                         const bool aboutN = glm::dot(lookup, N) > 1.0 - 1e-6;
                         if (aboutN && !aboutNormal.count(int(n))) aboutNormal[int(n)] = sheenPrefiltered(env, N, roughness);
-                        const double truth = integrateSphere(
+                        const double truth = integrateSphere<double>(
                             N, 200, [&](const dvec3& l) { return ref::sheenTimesCosine(N, V, l, roughness) * env.radiance(l); });
                         const auto approximation = [&](double prefiltered) {
                             return double(shading::iblSheen(sheen, glm::vec3(float(prefiltered)), 1.0f).x);
@@ -169,7 +151,7 @@ TEST(LayerIbl, TransmissionErrorIsMeasured) {
                 const dvec3 V(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
                 const ref::Layers layers{.bits = ref::kLayerTransmission | ref::kLayerSpecular, .ior = ior, .transmission = 1.0};
                 // The BTDF's albedo: L behind is l mirrored through the surface, the lobe about the mirror direction.
-                const double truth = integrateSphere(glm::reflect(-V, N), 400, [&](const dvec3& l) {
+                const double truth = integrateSphere<double>(glm::reflect(-V, N), 400, [&](const dvec3& l) {
                     if (l.z <= 0.0) return 0.0;
                     return ref::transmissionTimesCosine(N, V, dvec3(l.x, l.y, -l.z), dvec3(1.0), 0.0, roughness, layers).x;
                 });
