@@ -90,8 +90,11 @@ bool isHelp(const std::string& arg) { return arg == "--help" || arg == "-h"; }
 void checkCombinations(const Command& command) {
     if (command.kind != Kind::Render && command.kind != Kind::View && command.kind != Kind::Bench) return;
     const RenderOptions& o = command.render;
-    if (o.sceneIndex && o.scene.empty()) throw UserError("--scene-index: give a glTF file with --scene");
-    if (o.grid && !o.scene.empty()) throw UserError("--grid: sizes the built-in sphere grid; not with --scene");
+    const bool scenes = !o.scene.empty() || !o.inputs.empty();
+    if (o.sceneIndex && !scenes) throw UserError("--scene-index: give a glTF file with --scene");
+    if (o.grid && scenes) throw UserError("--grid: sizes the built-in sphere grid; not with --scene or scene arguments");
+    if (command.kind != Kind::Render && o.variant == "all")
+        throw UserError("--variant all: only render draws every variant (one image each)");
     if (command.kind == Kind::View && !o.screenshot.empty() && o.frames == 0)
         throw UserError("--screenshot: also give --frames N (the frame to save; the viewer then exits)");
     o.iblQuality.validate();
@@ -136,6 +139,10 @@ Command parseCommandLine(const std::vector<std::string>& args) {
     for (size_t i = 1; i < args.size(); ++i) {
         std::string name = args[i];
         if (name.size() < 2 || name[0] != '-') {
+            if (command.kind == Kind::Render) {
+                command.render.inputs.push_back(name);
+                continue;
+            }
             if (command.kind != Kind::View)
                 throw UserError("unexpected argument '" + name + "' for " + info->name + " (see candela " + info->name + " --help)");
             if (!command.render.scene.empty())

@@ -5,6 +5,7 @@
 // are declared once, in the flag table (cli_flags.h); the options below hold the parsed values.
 
 #include "cli_values.h"
+#include "scene_batch.h"
 #include "ibl/ibl_settings.h"
 #include "passes/debug_view.h"
 #include "passes/draw_selection.h"
@@ -61,6 +62,10 @@ inline constexpr std::pair<Background::Kind, const char*> kBackgroundNames[] = {
 struct RenderOptions {
     CommonOptions common;
     std::string scene;                   // --scene FILE (.gltf/.glb), or view's SCENE; empty: the built-in sphere grid
+    // render: SCENE... — glTF files, folders and @lists (scene_batch.h), after --scene's file.
+    std::vector<std::string> inputs;
+    std::string report;                  // render: --report FILE (JSON: per scene times, sizes, warnings, outputs)
+    Shard shard;                         // render: --shard I/N
     std::optional<uint32_t> sceneIndex;  // --scene-index N: which of the file's scenes [its `scene`, else 0]
     std::optional<uint32_t> camera;      // --camera INDEX (glTF camera)
     std::optional<std::array<float, 3>> cameraOrbit;  // --camera-orbit THETA,PHI,RADIUS
@@ -78,7 +83,7 @@ struct RenderOptions {
     bool dither = false;         // --dither (render, bench; the viewer always dithers)
     bool defaultLights = true;   // --no-default-lights turns off the key/fill lights of light-less scenes
     bool sceneLights = true;     // --scene-lights off leaves out the file's own punctual lights
-    std::string variant;         // --variant NAME: a KHR_materials_variants variant ("" = defaults)
+    std::string variant;         // --variant NAME: a KHR_materials_variants variant ("" = defaults; render: "all")
     float lodErrorPixels = 0.0f;  // --lod-error PIXELS (0, or --lod off: full detail)
     bool frustumCulling = true;   // --cull on|off
     bool specularAa = false;      // --specular-aa on|off
@@ -99,7 +104,7 @@ struct RenderOptions {
     bool inFlight = false;        // bench: --in-flight (also frames as the viewer runs them, offscreen)
     std::optional<uint32_t> grid;  // --grid N: N × N spheres of the built-in grid (unset: its own 7 × 7)
     bool distinctMaterials = false;  // --distinct-materials: a material per sphere of the grid
-    std::string out;              // render: --out FILE (.png, .exr, .pfm)
+    std::string out;              // render: --out FILE (.png, .exr, .pfm), a pattern with {name}, {path}, {variant}, {frame}
     uint32_t width = 0;           // --width W
     uint32_t height = 0;          // --height H
     std::string graphDot;         // render: --graph-dot FILE

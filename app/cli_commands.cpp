@@ -7,7 +7,13 @@ using Kind = Command::Kind;
 
 const std::vector<CommandInfo>& commandTable() {
     static const std::vector<CommandInfo> commands = {
-        {Kind::Render, "render", "[flags]", "render a frame (or an image sequence) headless and write it to a file", ""},
+        {Kind::Render, "render", "[SCENE...] [flags]",
+         "render a frame (or an image sequence) headless and write it to a file; with several scenes (glTF files, "
+         "folders walked for .gltf/.glb, @LIST files) one run renders them all on one device with one environment "
+         "precompute",
+         "A scene that fails is reported and the run goes on; the exit code is then non-zero and the failures are "
+         "listed at the end. --out names each output from a pattern: {name} (the file's name without extension), "
+         "{path} (its path without extension, under the folder it was found in), {variant} and {frame}."},
         {Kind::View, "view", "[SCENE] [flags]",
          "open the interactive viewer (window, orbit camera, ImGui panels); SCENE: a .gltf/.glb file, as --scene",
          "mouse and keys: right-drag rotate, middle-drag pan, wheel zoom, F frame the scene, R reset the camera, space "

@@ -91,8 +91,9 @@ std::vector<Flag> makeFlagTable() {
         // ---- output and size ----
         {.name = "--out",
          .uses = {{{Kind::Render}, "FILE",
-                   "the output image: .png (8-bit sRGB), .exr (linear half float) or .pfm (linear float); with --frames "
-                   "N a pattern with one %d or %04d for the frame number",
+                   "the output image: .png (8-bit sRGB), .exr (linear half float) or .pfm (linear float); a pattern "
+                   "with {name}, {path}, {variant} and {frame} names each scene's images (folders are created); with "
+                   "--frames N and no {frame}, one %d or %04d holds the frame number",
                    "candela.png"},
                   {{Kind::IblReport}, "DIR", "where report.csv, report.md and the plots go (created)", "ibl-report"},
                   {{Kind::ScaleReport}, "DIR", "where report.csv, report.md and frame_vs_triangles.png go (created)",
@@ -127,6 +128,20 @@ std::vector<Flag> makeFlagTable() {
          .uses = {{{Kind::Render}, "DEGREES", "turn the orbit camera by DEGREES over an image sequence (360: once round)", "0"}},
          .set = [](Command& c, Str flag, Str v) { c.render.turntableDegrees = parseNumber(flag, v); },
          .example = "90"},
+        {.name = "--report",
+         .uses = {{{Kind::Render}, "FILE",
+                   "write a JSON report of the run: per scene the load, upload and frame times, triangles, draws, "
+                   "textures and their bytes, extensions, warnings and the files written",
+                   ""}},
+         .set = [](Command& c, Str flag, Str v) { c.render.report = parsePath(flag, v); },
+         .example = "report.json"},
+        {.name = "--shard",
+         .uses = {{{Kind::Render}, "I/N",
+                   "render only share I of N of the scenes (every N-th, from the I-th): one machine's part of a "
+                   "library spread over N machines",
+                   ""}},
+         .set = [](Command& c, Str flag, Str v) { c.render.shard = parseShard(flag, v); },
+         .example = "2/4"},
         {.name = "--graph-dot",
          .uses = {{{Kind::Render}, "FILE", "write the compiled render graph as Graphviz dot", ""}},
          .set = [](Command& c, Str flag, Str v) { c.render.graphDot = parsePath(flag, v); },
@@ -200,7 +215,7 @@ std::vector<Flag> makeFlagTable() {
         {.name = "--variant",
          .uses = {{kRenderViewBench, "NAME",
                    "draw the file's KHR_materials_variants variant NAME (an unknown name is an error that lists the "
-                   "file's variants) [the default materials]",
+                   "file's variants; render: all draws each variant, --out then needs {variant}) [the default materials]",
                    ""}},
          .set = [](Command& c, Str flag, Str v) {
              if (v.empty()) throw UserError(flag + ": expected a variant name");

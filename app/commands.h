@@ -27,6 +27,10 @@ int runQualityReport(const QualityReportOptions& options);
 // Shared by render and bench: the context description (with the pipeline cache's folder:
 // --pipeline-cache, else the user's cache folder) and the render settings the flags choose.
 vk::ContextDesc contextDesc(const CommonOptions& common);
+// The scene of `file` (a glTF file; "": the built-in sphere grid --grid and --distinct-materials
+// ask for), as read: nothing logged, the default variant. Safe to call on another thread.
+scene::Scene readScene(const RenderOptions& options, const std::string& file);
+// readScene of --scene with its warnings logged (notes with --verbose) and --variant selected.
 scene::Scene loadScene(const RenderOptions& options);
 // The environment --env asks for: a file, the procedural sky, or none (nullopt). Its warnings are
 // logged, and its notes with --verbose.

@@ -8,8 +8,6 @@
 #include "assets/procedural_sky.h"
 #include "core/cache_files.h"
 #include "core/log.h"
-#include "core/progress.h"
-#include "graph/graph_export.h"
 #include "render/renderer.h"
 #include "render/visibility_path.h"
 #include "scene/material_variants.h"
@@ -19,8 +17,6 @@
 #include "vk/device_select.h"
 
 #include <cstdio>
-#include <fstream>
-#include <iostream>
 
 namespace candela::app {
 
@@ -35,9 +31,13 @@ vk::ContextDesc contextDesc(const CommonOptions& common) {
                                                                   : std::filesystem::path(common.pipelineCache)};
 }
 
+scene::Scene readScene(const RenderOptions& options, const std::string& file) {
+    return !file.empty() ? scene::loadGltf(file, {.sceneIndex = options.sceneIndex})
+                         : scene::makeSphereGrid(options.grid.value_or(7), options.distinctMaterials);
+}
+
 scene::Scene loadScene(const RenderOptions& options) {
-    scene::Scene scene = !options.scene.empty() ? scene::loadGltf(options.scene, {.sceneIndex = options.sceneIndex})
-                                            : scene::makeSphereGrid(options.grid.value_or(7), options.distinctMaterials);
+    scene::Scene scene = readScene(options, options.scene);
     for (const std::string& warning : scene.warnings) log::warn(options.scene + ": " + warning);
     for (const std::string& note : scene.notes) log::info(options.scene + ": " + note);
     if (!options.variant.empty()) scene::selectVariant(scene, scene::variantIndex(scene, options.variant));
@@ -66,15 +66,6 @@ std::optional<scene::Environment> loadEnvironment(const EnvironmentChoice& choic
     return env;
 }
 
-namespace {
-
-void writeText(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) throw UserError(path + ": cannot write");
-}
-
-}  // namespace
 
 RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& scene,
                               const scene::Environment* environment) {
@@ -112,68 +103,6 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
     // are lit by it alone.
     if (environment) settings.defaultLights = false;
     return settings;
-}
-
-int runRender(const RenderOptions& options) {
-    // One image, or frames 0 … N−1 of a sequence named by the --out pattern.
-    const bool sequence = options.frames > 1;
-    const auto outName = [&](uint32_t frame) { return sequence ? sequenceFileName(options.out, frame) : options.out; };
-    const io::ImageFileFormat format = io::imageFileFormat(outName(0));
-    io::checkWritable(outName(0));
-    for (const std::string& path : {options.graphDot, options.graphJson})
-        if (!path.empty()) io::checkWritable(path);
-
-    const scene::Scene scene = loadScene(options);
-    const std::optional<scene::Environment> environment = loadEnvironment(options.env);
-    RenderSettings settings = renderSettings(options, scene, environment ? &*environment : nullptr);
-    settings.floatOutput = io::isFloatFormat(format);
-    scene::ScenePose pose = loadPose(options, scene);
-    settings.pose = &pose;
-    const glm::vec3 orbit = settings.camera.orbit.value_or(glm::vec3(0.0f, 90.0f, 0.0f));
-
-    vk::Context context(contextDesc(options.common));
-    Renderer renderer(context);
-    CapturedFrame frame;
-    Progress progress("render", options.frames, options.common.quiet || !sequence);
-    for (uint32_t i = 0; i < options.frames; ++i) {
-        if (sequence) {
-            pose.evaluate(options.time + double(i) / options.fps);
-            if (options.turntableDegrees != 0.0f)
-                settings.camera.orbit = orbit + glm::vec3(options.turntableDegrees * float(i) / float(options.frames), 0.0f, 0.0f);
-        }
-        frame = renderer.capture(settings);
-        const std::string out = outName(i);
-        switch (format) {
-            case io::ImageFileFormat::Png: io::writePng(out, frame.width, frame.height, frame.rgba8); break;
-            case io::ImageFileFormat::Exr: io::writeExr(out, frame.width, frame.height, frame.rgba32f); break;
-            case io::ImageFileFormat::Pfm: io::writePfm(out, frame.width, frame.height, frame.rgba32f); break;
-        }
-        progress.clear();
-        std::printf("wrote %s (%ux%u", out.c_str(), frame.width, frame.height);
-        if (sequence) std::printf(", t = %.4f s", pose.time());
-        std::printf("): submit+wait %.2f ms, readback %.2f ms", frame.submitWaitMs, frame.readbackMs);
-        const graph::GraphDecl& decl = renderer.lastGraph().declaration();
-        for (uint32_t pass : renderer.lastGraph().compiled().order)
-            if (frame.timings.gpuMs.size() > pass && frame.timings.gpuMs[pass] >= 0.0)
-                std::printf("; %s %.2f ms GPU", decl.passes[pass].name.c_str(), frame.timings.gpuMs[pass]);
-        std::printf("\n");
-        std::fflush(stdout);
-        progress.step(i + 1, "frames written");
-    }
-    progress.finish();
-    if (options.explain)
-        for (const std::string& line : renderer.explain()) std::printf("%s\n", line.c_str());
-    // The graph exports describe the last frame.
-    const graph::RenderGraph& graph = renderer.lastGraph();
-    if (!options.graphDot.empty())
-        writeText(options.graphDot, graph::exportDot(graph.declaration(), graph.compiled(), &frame.timings));
-    if (!options.graphJson.empty())
-        writeText(options.graphJson, graph::exportJson(graph.declaration(), graph.compiled(), &frame.timings));
-    if (context.validationMessageCount() > 0) {
-        log::error(std::to_string(context.validationMessageCount()) + " validation messages");
-        return 3;
-    }
-    return 0;
 }
 
 namespace {

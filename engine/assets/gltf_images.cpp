@@ -208,6 +208,7 @@ DecodedImage& ImageTable::decoded(int index) {
     const auto start = std::chrono::steady_clock::now();
     const std::span<const uint8_t> bytes = encoded(index, what);
     DecodedImage& out = mDecoded[index] = decodeImage(mCtx, bytes, what, mOptions.maxImageDimension);
+    out.encodedBytes = bytes.size();
     Scene::TextureDecoding& stats = mScene.textureDecoding;
     stats.milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++stats.formats[out.format];
@@ -232,10 +233,14 @@ int ImageTable::resolve(int index, bool srgb) {
         image.height = first.height;
         image.rgba8 = first.rgba8;
         image.mips = first.mips;
+        image.format = first.format;
+        image.encodedBytes = first.encodedBytes;
     } else {
         DecodedImage& pixels = decoded(index);
         image.width = pixels.width;
         image.height = pixels.height;
+        image.format = pixels.format;
+        image.encodedBytes = pixels.encodedBytes;
         image.rgba8 = std::move(pixels.rgba8);
         image.mips = std::move(pixels.mips);
     }

@@ -30,6 +30,7 @@ struct DecodedImage {
     std::vector<std::vector<uint8_t>> mips;  // the file's own levels 1… (KTX2), as Scene::Image::mips
     std::optional<bool> fileSrgb;            // the transfer function a KTX2 file declares
     std::string format;                      // as Scene::TextureDecoding::formats names it
+    uint64_t encodedBytes = 0;               // of the file (or buffer view) it was decoded from
 };
 
 // What an image's header declares, read without decoding a pixel.

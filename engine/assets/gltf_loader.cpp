@@ -130,6 +130,7 @@ void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, cons
     gltf::ParsedFile parsed = gltf::parseGltf(ctx, bytes, path, options.maxImageDimension);
     tinygltf::Model& model = parsed.model;
     checkAsset(ctx, model);
+    scene.extensionsUsed = model.extensionsUsed;
     const auto start = std::chrono::steady_clock::now();
     scene.decompression.meshoptViews = gltf::decodeMeshoptBufferViews(ctx, model);  // before anything reads a view
     scene.decompression.dracoPrimitives = gltf::decodeDracoPrimitives(ctx, model, parsed.dracoIndices);  // or a mesh

@@ -260,9 +260,11 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     std::vector<int32_t> normalCopy(scene.images.size(), -1);
     for (size_t i = 0; i < scene.images.size(); ++i) {
         mImages.push_back(upload(scene.images[i], normalUse[i] && !otherUse[i]));
+        mImageBytes.push_back(mImages.back().memoryBytes());
         if (!normalUse[i] || !otherUse[i]) continue;
         normalCopy[i] = int32_t(mExtraImages.size());
         mExtraImages.push_back(upload(scene.images[i], true));
+        mImageBytes.back() += mExtraImages.back().memoryBytes();
     }
     mWhite = solidTexture(context, uploader, {255, 255, 255, 255}, VK_FORMAT_R8G8B8A8_UNORM, "default white");
     mFlatNormal = solidTexture(context, uploader, {128, 128, 255, 255}, VK_FORMAT_R8G8B8A8_UNORM, "default normal");

@@ -103,6 +103,9 @@ public:
     VkDeviceSize indexBytes() const { return mIndices.size(); }
     // Device memory of the scene's textures: every image with its mips, normal-map copies included.
     VkDeviceSize textureBytes() const;
+    // Device memory of Scene::images[image] with its mips and its normal-map copy, if any.
+    // Precondition: image < scene().images.size().
+    VkDeviceSize imageBytes(size_t image) const { return mImageBytes[image]; }
 
 private:
     const Scene* mScene;
@@ -115,6 +118,7 @@ private:
     std::vector<shading::MaterialLayerData> mSceneLayers, mLayerData;
     std::vector<vk::Image> mImages;       // per Scene::images entry
     std::vector<vk::Image> mExtraImages;  // normal-map copies of images also read otherwise
+    std::vector<VkDeviceSize> mImageBytes;  // per Scene::images entry: imageBytes()
     std::vector<vk::Sampler> mSamplers;
     vk::Sampler mDefaultSampler;
     vk::Image mWhite, mFlatNormal;

@@ -37,6 +37,12 @@ vk::MsaaChoice Renderer::msaa(std::optional<uint32_t> requested) const { return 
 VkDeviceSize Renderer::sceneTextureBytes() const { return mScene.hasGpuScene() ? mScene.gpuScene().textureBytes() : 0; }
 
 void Renderer::sceneReplaced() { mScene.sceneReplaced(); }
+void Renderer::releaseScene() { mScene.releaseScene(); }
+
+void Renderer::upload(const RenderSettings& settings) {
+    if (mScene.prepareScene({settings.scene, settings.defaultLights, settings.sceneLights})) mBuilder.sceneUploaded();
+    mScene.prepareEnvironment(settings.environment, settings.iblQuality, settings.iblCacheDir);
+}
 void Renderer::shadersReplaced(const std::vector<std::string>& names) { mScene.shadersReplaced(names); }
 void Renderer::recomputeIbl() { mScene.recomputeIbl(); }
 
@@ -49,10 +55,7 @@ Frame Renderer::beginFrame(const RenderSettings& settings, const PresentTarget* 
     Frame frame;  // started now: a precompute's frame time includes the environment's upload
     validateSettings(settings);
     if (present && !settings.scene) throw UserError("rendering to a window needs a scene");
-    if (settings.scene) {
-        if (mScene.prepareScene({settings.scene, settings.defaultLights, settings.sceneLights})) mBuilder.sceneUploaded();
-        mScene.prepareEnvironment(settings.environment, settings.iblQuality, settings.iblCacheDir);
-    }
+    if (settings.scene) upload(settings);
     std::optional<TextureId> target;
     if (present) {
         // The image's old contents are discarded; the semaphore wait (at colour-attachment output)
@@ -84,6 +87,7 @@ void Renderer::finishFrame() {
     mScene.frameCompleted(*last.graph);
     if (!last.precomputes()) return;
     mLastPrecompute = {.frameMs = msSince(last.started), .gpuMs = mRunner.lastPrecomputeGpuMs()};
+    ++mPrecomputes;
 }
 
 FrameTiming Renderer::execute(Frame frame, const RenderSettings& settings) {

@@ -85,6 +85,8 @@ public:
     VkDeviceSize sceneTextureBytes() const;
     // The last IBL precompute that completed.
     const PrecomputeTime& lastPrecompute() const { return mLastPrecompute; }
+    // How many IBL precomputes have completed.
+    uint32_t precomputeCount() const { return mPrecomputes; }
     // Waits for the pipelines queued ahead of use (RenderSettings::precompile) to be built
     // (benchmarks: so that a measurement leaves them out).
     void finishPipelineBuilds() { mBuilder.finishPipelineBuilds(); }
@@ -99,6 +101,17 @@ public:
     // The Scene object last drawn was replaced in place (same address, new contents): the next
     // frame uploads it anew. Waits for the frames in flight.
     void sceneReplaced();
+    // Does now what the next frame with `settings` would do first: uploads its scene unless it is
+    // uploaded (waiting for the copies) and gives the maps its environment (their precompute runs
+    // in that frame). Lets a caller time the upload apart from the frame. Throws UserError as
+    // capture() does. Precondition: settings.scene is set.
+    void upload(const RenderSettings& settings);
+    // Frees the device memory of the scene last drawn (after waiting for the frames in flight),
+    // so that a run over many scenes holds one at a time; the next frame uploads its scene,
+    // whatever its address. The environment's maps, the pipelines and the caches stay.
+    void releaseScene();
+    // What the device holds of the scene last uploaded; null before one or after releaseScene().
+    const scene::GpuScene* uploadedScene() const { return mScene.hasGpuScene() ? &mScene.gpuScene() : nullptr; }
     // After shaders were replaced (hot reload): the frame passes rebuild their pipelines at their
     // next use by themselves; a replaced IBL shader also discards the maps, so that the next frame
     // runs the precompute with it.
@@ -163,6 +176,7 @@ private:
     FrameBuilder mBuilder;
     Readback mReadback;
     PrecomputeTime mLastPrecompute;
+    uint32_t mPrecomputes = 0;
 };
 
 }  // namespace candela

@@ -29,6 +29,11 @@ void applyElements(shader::ParameterRegistry& parameters, const shader::ShaderRe
         if (edited(i)) parameters.apply("forward", prefix + std::to_string(i) + "]", members, items[i]);
 }
 
+ibl::IblQuality withSheen(ibl::IblQuality quality) {
+    quality.sheen = true;
+    return quality;
+}
+
 // Whether two vectors of plain data hold the same bytes.
 template <class T>
 bool same(const std::vector<T>& a, const std::vector<T>& b) {
@@ -57,8 +62,9 @@ bool SceneState::prepareScene(const SceneChoice& choice) {
     const bool addLights = choice.defaultLights && !sceneLights;
     if (choice.scene == mUploaded.scene && addLights == mUploaded.defaultLights && sceneLights == mUploaded.sceneLights)
         return false;
-    // The previous scene's buffers may still be used by a frame in flight: wait first.
-    mRunner.waitIdle();
+    // The previous scene's buffers may still be used by a frame in flight: wait first, and free
+    // them before the new scene takes its memory.
+    releaseScene();
     // Software rasterizers pay ~1000× for anisotropic filtering (minutes per frame on lavapipe):
     // keep it for GPUs.
     const bool cpuDevice = mContext.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
@@ -76,9 +82,12 @@ bool SceneState::prepareScene(const SceneChoice& choice) {
 
 void SceneState::prepareEnvironment(const scene::Environment* environment, ibl::IblQuality quality,
                                     const std::filesystem::path& cacheDir) {
-    // The sheen cube is computed only for scenes that have a sheen.
-    quality.sheen = mHasSheen;
-    if (environment == mEnvironment && quality == mIblQuality && cacheDir == mIblCacheDir) return;
+    // The sheen cube is computed for scenes that have a sheen (or when asked for); maps that have
+    // it serve scenes without a sheen as well.
+    quality.sheen = quality.sheen || mHasSheen;
+    if (environment == mEnvironment && cacheDir == mIblCacheDir &&
+        (quality == mIblQuality || (mIblQuality.sheen && !quality.sheen && withSheen(quality) == mIblQuality)))
+        return;
     useEnvironment(environment, quality, cacheDir, false);
 }
 
@@ -137,6 +146,15 @@ void SceneState::applyParameters(shader::ParameterRegistry& parameters, const sh
 void SceneState::frameCompleted(const graph::RenderGraph& graph) {
     mSheenLut.frameCompleted(graph);
     mIbl->frameCompleted(graph);
+}
+
+void SceneState::releaseScene() {
+    mRunner.waitIdle();
+    mGpuScene.reset();
+    mRestPose.reset();
+    mKeys = {};
+    mHasSheen = false;
+    mUploaded = {nullptr, false, true};
 }
 
 void SceneState::sceneReplaced() {

@@ -38,8 +38,9 @@ public:
     // Uploads `choice` unless it is what is uploaded; returns whether it uploaded (the passes then
     // bind the new scene).
     bool prepareScene(const SceneChoice& choice);
-    // Gives the maps `environment` at `quality` (the sheen cube only when a material has a sheen)
-    // unless they have it already. Precondition: a scene is uploaded.
+    // Gives the maps `environment` at `quality` (the sheen cube when `quality` asks for it or a
+    // material has a sheen; maps with it also serve scenes without) unless they have it already.
+    // Precondition: a scene is uploaded.
     void prepareEnvironment(const scene::Environment* environment, ibl::IblQuality quality,
                             const std::filesystem::path& cacheDir);
     // Waits for the GPU and gives the maps this environment and quality (see IblMaps::setEnvironment);
@@ -57,6 +58,9 @@ public:
     void frameCompleted(const graph::RenderGraph& graph);
     // The Scene object last drawn was replaced in place: the next frame uploads it anew.
     void sceneReplaced();
+    // Frees what the device holds of the uploaded scene (after waiting for the frames in flight);
+    // the next frame uploads its scene, whatever its address. The maps stay.
+    void releaseScene();
     // After shaders were replaced: a replaced IBL shader discards the maps (computed again).
     void shadersReplaced(const std::vector<std::string>& names);
     // The next frame runs the IBL precompute again (not from the cache).

@@ -53,6 +53,8 @@ struct Image {
     // least 1); empty when the file has none and the mips are generated on upload.
     std::vector<std::vector<uint8_t>> mips;
     bool srgb = false;           // true when used as base colour or emissive (sRGB-encoded)
+    std::string format;          // what it was decoded from (Scene::TextureDecoding::formats); "" when made in memory
+    uint64_t encodedBytes = 0;   // bytes of that encoded file (a second use of one file counts them again)
 };
 
 enum class Filter : uint8_t { Nearest, Linear };
@@ -408,6 +410,8 @@ struct Scene {
     // triangles (printed with --verbose).
     std::vector<std::string> warnings;
     std::vector<std::string> notes;
+    // The file's extensionsUsed, in its order (empty for built-in scenes).
+    std::vector<std::string> extensionsUsed;
     // What the file's compressed geometry cost to load (KHR_draco_mesh_compression,
     // EXT_meshopt_compression): wall time of the decoding, and what was decoded. Zero otherwise.
     struct Decompression {

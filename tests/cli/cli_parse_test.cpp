@@ -67,7 +67,9 @@ TEST(CliParse, SceneLights) {
 
 TEST(CliParse, Errors) {
     EXPECT_THROW(parseCommandLine({"render", "--bogus"}), UserError);
-    EXPECT_THROW(parseCommandLine({"render", "stray"}), UserError);
+    EXPECT_THROW(parseCommandLine({"bench", "stray"}), UserError);
+    EXPECT_THROW(parseCommandLine({"render", "a.glb", "--grid", "3"}), UserError);
+    EXPECT_THROW(parseCommandLine({"view", "--variant", "all"}), UserError);  // render only
     EXPECT_THROW(parseCommandLine({"info", "--out", "x.png"}), UserError);
     EXPECT_THROW(parseCommandLine({"render", "--out"}), UserError);
     // Checked while parsing, before anything loads: --grid sizes the built-in grid only.

@@ -134,7 +134,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"TrailingGarbageHeight", "render --height 12abc", "--height: expected a whole number"},
                       BadInput{"WidthBeyondUint32", "render --width 99999999999", "--width: expected a whole number"},
                       BadInput{"WidthBeyondDeviceLimit", "render --width 1000000 --out /tmp/candela_big.png", "exceeds the device limit"},
-                      BadInput{"UnwritableOutput", "render --out /nonexistent-dir/x.png", "/nonexistent-dir/x.png: cannot write"},
+                      BadInput{"UnwritableOutput", "render --out /dev/null/x.png", "/dev/null/x.png: cannot write"},
                       BadInput{"UnknownExtension", "render --out /tmp/candela.bmp", "unknown output format '.bmp'"},
                       BadInput{"NoExtension", "render --out /tmp/candela_noext", "unknown output format '(none)'"},
                       BadInput{"OutputIsDirectory", "render --out /tmp", "/tmp: "},

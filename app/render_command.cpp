@@ -1,0 +1,326 @@
+// `candela render`: one scene, or many in one run (scene_batch.h) on one device with one
+// environment precompute. The next scene is read on a second thread while the current one
+// renders; each scene's device memory is freed before the next is uploaded.
+
+#include "commands.h"
+#include "render_report.h"
+#include "scene_batch.h"
+#include "assets/image_file.h"
+#include "core/log.h"
+#include "core/process_memory.h"
+#include "core/progress.h"
+#include "graph/graph_export.h"
+#include "scene/material_variants.h"
+#include "vk/check.h"
+#include "vk/context.h"
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <future>
+#include <map>
+
+namespace candela::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
+
+void writeText(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out) throw UserError(path + ": cannot write");
+}
+
+// Creates the folder `file` goes in.
+void createFolderOf(const std::filesystem::path& file) {
+    std::error_code ec;
+    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
+    if (ec) throw UserError(file.string() + ": cannot write: cannot create the folder " + file.parent_path().string() + ": " + ec.message());
+}
+
+// A scene read on the loading thread, or why it could not be.
+struct LoadedScene {
+    std::optional<scene::Scene> scene;
+    std::exception_ptr error;
+    double ms = 0.0;
+};
+
+LoadedScene load(const SceneInput& input, const RenderOptions& options) {
+    LoadedScene out;
+    const auto start = Clock::now();
+    try {
+        out.scene = readScene(options, input.file.string());
+    } catch (...) {
+        out.error = std::current_exception();
+    }
+    out.ms = msSince(start);
+    return out;
+}
+
+// The one-line message and exit code `error` gives a run of its scene alone (as main() reports it).
+std::pair<std::string, int> describe(const std::exception_ptr& error) {
+    try {
+        std::rethrow_exception(error);
+    } catch (const UserError& e) {
+        return {e.what(), 2};
+    } catch (const OutOfDeviceMemory& e) {
+        return {std::string("out of device memory: ") + e.what(), 4};
+    } catch (const InternalError& e) {
+        return {std::string("internal error (a bug in Candela, please report it): ") + e.what(), 1};
+    } catch (const std::exception& e) {
+        return {e.what(), 1};
+    }
+}
+
+// What stays the same over a run: the options, the device, the environment, the output format.
+struct Run {
+    const RenderOptions& options;
+    vk::Context& context;
+    Renderer& renderer;
+    const scene::Environment* environment;
+    io::ImageFileFormat format;
+    bool batch;     // several scenes: shorter lines, one precompute for all (sheen included)
+    bool sequence;  // --frames N > 1
+    bool anyFrame = false;
+    CapturedFrame lastFrame;  // for --graph-dot/--graph-json of a single scene
+};
+
+void writeImage(const Run& run, const std::string& out, const CapturedFrame& frame) {
+    createFolderOf(out);
+    switch (run.format) {
+        case io::ImageFileFormat::Png: io::writePng(out, frame.width, frame.height, frame.rgba8); break;
+        case io::ImageFileFormat::Exr: io::writeExr(out, frame.width, frame.height, frame.rgba32f); break;
+        case io::ImageFileFormat::Pfm: io::writePfm(out, frame.width, frame.height, frame.rgba32f); break;
+    }
+}
+
+// The line printed for each image written.
+void printWritten(const Run& run, const std::string& out, const CapturedFrame& frame, const scene::ScenePose& pose,
+                  const SceneReport& r) {
+    std::printf("wrote %s (%ux%u", out.c_str(), frame.width, frame.height);
+    if (run.sequence) std::printf(", t = %.4f s", pose.time());
+    if (run.batch) {
+        std::printf("): load %.1f ms, upload %.1f ms, frame %.1f ms\n", r.loadMs, r.uploadMs, r.frameMs.back());
+    } else {
+        std::printf("): submit+wait %.2f ms, readback %.2f ms", frame.submitWaitMs, frame.readbackMs);
+        const graph::GraphDecl& decl = run.renderer.lastGraph().declaration();
+        for (uint32_t pass : run.renderer.lastGraph().compiled().order)
+            if (frame.timings.gpuMs.size() > pass && frame.timings.gpuMs[pass] >= 0.0)
+                std::printf("; %s %.2f ms GPU", decl.passes[pass].name.c_str(), frame.timings.gpuMs[pass]);
+        std::printf("\n");
+    }
+    std::fflush(stdout);
+}
+
+// Renders every image of one scene (each variant asked for, each frame of a sequence) and fills
+// `r` with what it took. Throws what the renderer or the writers throw.
+void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progress) {
+    const RenderOptions& options = run.options;
+    r.extensions = scene.extensionsUsed;
+    for (const std::string& warning : scene.warnings) log::warn(scene.source + ": " + warning);
+    for (const std::string& note : scene.notes) log::info(scene.source + ": " + note);
+    r.warnings = scene.warnings;
+    r.notes = scene.notes;
+    log::Capture capture;  // what the renderer logs from here on belongs to this scene
+
+    std::vector<std::optional<uint32_t>> variants;
+    if (options.variant == "all") {
+        for (uint32_t v = 0; v < scene.variants.size(); ++v) variants.push_back(v);
+        if (variants.empty()) variants.push_back(std::nullopt);
+    } else {
+        variants.push_back(options.variant.empty() ? std::nullopt : std::optional(scene::variantIndex(scene, options.variant)));
+    }
+    RenderSettings settings = renderSettings(options, scene, run.environment);
+    settings.floatOutput = io::isFloatFormat(run.format);
+    // One precompute serves the whole run: with the sheen cube, for scenes with or without a sheen.
+    if (run.batch) settings.iblQuality.sheen = true;
+    const glm::vec3 orbit = settings.camera.orbit.value_or(glm::vec3(0.0f, 90.0f, 0.0f));
+
+    for (const std::optional<uint32_t> variant : variants) {
+        if (variant) {
+            run.renderer.sceneReplaced();  // the draws' materials change: uploaded again
+            scene::selectVariant(scene, variant);
+        }
+        const std::string variantName = variant ? scene.variants[*variant] : "default";
+        r.variants.push_back(variant ? variantName : "");
+        scene::ScenePose pose = loadPose(options, scene);
+        settings.pose = &pose;
+        const auto uploadStart = Clock::now();
+        run.renderer.upload(settings);
+        r.uploadMs += msSince(uploadStart);
+        for (uint32_t i = 0; i < options.frames; ++i) {
+            if (run.sequence) {
+                pose.evaluate(options.time + double(i) / options.fps);
+                if (options.turntableDegrees != 0.0f)
+                    settings.camera.orbit = orbit + glm::vec3(options.turntableDegrees * float(i) / float(options.frames), 0.0f, 0.0f);
+            }
+            const auto frameStart = Clock::now();
+            run.lastFrame = run.renderer.capture(settings);
+            run.anyFrame = true;
+            r.frameMs.push_back(msSince(frameStart));
+            double gpu = 0.0;
+            for (double ms : run.lastFrame.timings.gpuMs) gpu += std::max(ms, 0.0);
+            r.gpuMs.push_back(gpu);
+            const std::string out = expandOutPattern(
+                options.out, {r.input.name, r.input.path, variantName, run.sequence ? std::optional(i) : std::nullopt});
+            writeImage(run, out, run.lastFrame);
+            r.outputs.push_back(out);
+            progress.clear();
+            printWritten(run, out, run.lastFrame, pose, r);
+            if (!run.batch) progress.step(i + 1, "frames written");
+        }
+    }
+    const passes::DrawStats& stats = run.renderer.drawStats();
+    r.triangles = stats.sceneTriangles;
+    r.draws = stats.sceneDraws;
+    if (const scene::GpuScene* uploaded = run.renderer.uploadedScene())
+        for (size_t i = 0; i < scene.images.size(); ++i) {
+            const scene::Image& image = scene.images[i];
+            r.textures.push_back({image.name, image.format, image.width, image.height, image.encodedBytes, uploaded->imageBytes(i)});
+        }
+    r.warnings.insert(r.warnings.end(), capture.warnings.begin(), capture.warnings.end());
+    r.notes.insert(r.notes.end(), capture.infos.begin(), capture.infos.end());
+}
+
+// Checks the --out pattern against the scenes before anything renders: known fields, a valid
+// image format, and a different file for every scene. Returns the format.
+io::ImageFileFormat checkOutputs(const RenderOptions& options, const std::vector<SceneInput>& scenes, bool sequence) {
+    checkOutPattern(options.out);
+    if (options.variant == "all" && !usesField(options.out, "variant"))
+        throw UserError("--variant all: --out needs {variant} in its pattern (one image per variant), e.g. --out '{name}-{variant}.png'");
+    std::map<std::string, std::string> writer;  // output → the scene that writes it
+    std::optional<io::ImageFileFormat> format;
+    for (const SceneInput& s : scenes) {
+        const std::string out = expandOutPattern(options.out, {s.name, s.path, "default", sequence ? std::optional(0u) : std::nullopt});
+        if (!format) format = io::imageFileFormat(out);
+        if (const auto [it, inserted] = writer.emplace(out, s.file.string()); !inserted)
+            throw UserError("--out " + options.out + ": " + it->second + " and " + s.file.string() + " would both write " + out +
+                            (usesField(options.out, "name") || usesField(options.out, "path")
+                                 ? " (use {path}: it keeps their folders apart)"
+                                 : " (give a pattern with {name} or {path}, e.g. --out 'renders/{name}.png')"));
+    }
+    return format.value_or(io::ImageFileFormat::Png);
+}
+
+}  // namespace
+
+int runRender(const RenderOptions& options) {
+    const auto runStart = Clock::now();
+    // --scene's file, then the SCENE arguments; neither: the built-in scene.
+    std::vector<SceneInput> listed;
+    if (!options.scene.empty()) listed.push_back(fileInput(options.scene));
+    if (!options.inputs.empty())
+        for (SceneInput& scene : expandSceneInputs(options.inputs)) listed.push_back(std::move(scene));
+    if (listed.empty()) listed.push_back({"", "default", "default"});
+    const std::vector<SceneInput> scenes = shardOf(listed, options.shard);
+    const bool single = listed.size() == 1;
+    const bool sequence = options.frames > 1;
+    const io::ImageFileFormat format = checkOutputs(options, scenes, sequence);
+    if (single) {
+        const std::string first = expandOutPattern(options.out, {listed[0].name, listed[0].path, "default", sequence ? std::optional(0u) : std::nullopt});
+        createFolderOf(first);
+        io::checkWritable(first);
+    }
+    for (const std::string& path : {options.graphDot, options.graphJson, options.report})
+        if (!path.empty()) io::checkWritable(path);
+
+    // The first scene is read while the environment loads and the device starts.
+    std::future<LoadedScene> next;
+    const auto startLoad = [&](size_t i) { next = std::async(std::launch::async, load, std::cref(scenes[i]), std::cref(options)); };
+    if (!scenes.empty()) startLoad(0);
+    const std::optional<scene::Environment> environment = loadEnvironment(options.env);
+    std::optional<LoadedScene> first;
+    if (single) {
+        // Bad input fails before the device starts, as it always has for one scene.
+        first = next.get();
+        if (first->error) std::rethrow_exception(first->error);
+    }
+    vk::Context context(contextDesc(options.common));
+    Renderer renderer(context);
+    Run run{options, context, renderer, environment ? &*environment : nullptr, format, !single, sequence};
+
+    RunReport report{.version = versionText(),
+                     .device = context.report().name,
+                     .environment = environment ? environment->source : "none",
+                     .width = options.width,
+                     .height = options.height,
+                     .shard = options.shard,
+                     .scenesListed = listed.size()};
+    report.startupMs = msSince(runStart);
+    Progress progress("render", run.batch ? scenes.size() : options.frames, options.common.quiet || (run.batch ? false : !sequence));
+    std::exception_ptr singleFailure;
+    for (size_t i = 0; i < scenes.size(); ++i) {
+        LoadedScene loaded = first ? std::move(*first) : next.get();
+        first.reset();
+        if (i + 1 < scenes.size()) startLoad(i + 1);  // the next file is read while this one renders
+        SceneReport& r = report.scenes.emplace_back();
+        r.input = scenes[i];
+        r.loadMs = loaded.ms;
+        const uint32_t validationBefore = context.validationMessageCount();
+        try {
+            if (loaded.error) std::rethrow_exception(loaded.error);
+            renderScene(run, *loaded.scene, r, progress);
+            r.ok = true;
+        } catch (...) {
+            if (single) singleFailure = std::current_exception();
+            std::tie(r.error, r.exitCode) = describe(std::current_exception());
+            // Loader messages name their file already; the renderer's do not.
+            if (!r.input.file.empty() && r.error.rfind(r.input.file.string(), 0) != 0) r.error = r.input.file.string() + ": " + r.error;
+            progress.clear();
+            if (!single) log::error(r.error);
+        }
+        r.validationMessages = context.validationMessageCount() - validationBefore;
+        r.hostBytes = residentBytes();
+        r.deviceBytes = context.allocator().stats().deviceMemoryBytes;
+        report.peakHostBytes = std::max(report.peakHostBytes, r.hostBytes);
+        report.peakDeviceBytes = std::max(report.peakDeviceBytes, r.deviceBytes);
+        if (report.precomputeMs < 0.0) report.precomputeMs = renderer.lastPrecompute().frameMs;
+        if (run.batch) {
+            renderer.releaseScene();  // nothing of this scene stays on the device
+            progress.step(i + 1, r.input.name);
+        }
+    }
+    progress.finish();
+    report.precomputes = renderer.precomputeCount();
+    report.totalMs = msSince(runStart);
+    if (!options.report.empty()) writeText(options.report, reportJson(report));
+    if (singleFailure) std::rethrow_exception(singleFailure);
+
+    if (options.explain && run.anyFrame)
+        for (const std::string& line : renderer.explain()) std::printf("%s\n", line.c_str());
+    if (run.anyFrame) {
+        // The graph exports describe the last frame.
+        const graph::RenderGraph& graph = renderer.lastGraph();
+        if (!options.graphDot.empty())
+            writeText(options.graphDot, graph::exportDot(graph.declaration(), graph.compiled(), &run.lastFrame.timings));
+        if (!options.graphJson.empty())
+            writeText(options.graphJson, graph::exportJson(graph.declaration(), graph.compiled(), &run.lastFrame.timings));
+    }
+    if (run.batch) {
+        std::printf("rendered %zu of %zu scenes in %.2f s (%.3f s a scene after start-up; environment precomputed %u time%s)\n",
+                    scenes.size() - report.failed(), scenes.size(), report.totalMs / 1000.0,
+                    scenes.empty() ? 0.0 : (report.totalMs - report.startupMs) / 1000.0 / double(scenes.size()),
+                    report.precomputes, report.precomputes == 1 ? "" : "s");
+        if (options.shard.count > 1)
+            std::printf("shard %u/%u: %zu of the %zu scenes listed\n", options.shard.index, options.shard.count, scenes.size(), listed.size());
+    }
+    if (report.failed() > 0) {
+        log::error(std::to_string(report.failed()) + " of " + std::to_string(scenes.size()) + " scenes failed:");
+        int code = 0;
+        for (const SceneReport& r : report.scenes)
+            if (!r.ok) {
+                std::fprintf(stderr, "  %s\n", r.error.c_str());
+                if (code == 0) code = r.exitCode;
+            }
+        return code;
+    }
+    if (context.validationMessageCount() > 0) {
+        log::error(std::to_string(context.validationMessageCount()) + " validation messages");
+        return 3;
+    }
+    return 0;
+}
+
+}  // namespace candela::app

@@ -1,0 +1,64 @@
+#pragma once
+// What one `candela render` run did, scene by scene: the data behind its summary lines, its JSON
+// report (--report) and its HTML page (--html). Filled by the render command.
+
+#include "scene_batch.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace candela::app {
+
+struct TextureReport {
+    std::string name;           // the glTF image's name or URI
+    std::string format;         // "PNG", "JPEG", "WebP", "KTX2 UASTC", …; "" when made in memory
+    uint32_t width = 0, height = 0;
+    uint64_t encodedBytes = 0;  // of the file it was decoded from
+    uint64_t deviceBytes = 0;   // on the device, mips (and a normal-map copy) included
+};
+
+struct SceneReport {
+    SceneInput input;
+    bool ok = false;
+    std::string error;  // the one-line message of a failed scene
+    int exitCode = 0;   // what a run of this scene alone would have exited with
+    double loadMs = 0.0;    // reading and decoding the file (on the loading thread)
+    double uploadMs = 0.0;  // to device memory, waited for
+    std::vector<double> frameMs;  // per image written: render, wait and read back (CPU wall time)
+    std::vector<double> gpuMs;    // per image written: the GPU time of its passes
+    uint64_t triangles = 0;       // of the scene's draws (full detail)
+    uint32_t draws = 0;
+    std::vector<TextureReport> textures;
+    std::vector<std::string> extensions;  // the file's extensionsUsed
+    std::vector<std::string> variants;    // the KHR_materials_variants drawn ("" for the default materials)
+    std::vector<std::string> warnings;    // the loader's and the renderer's
+    std::vector<std::string> notes;
+    std::vector<std::string> outputs;     // the files written
+    uint32_t validationMessages = 0;      // --validate
+    uint64_t hostBytes = 0;    // resident host memory after the scene was done
+    uint64_t deviceBytes = 0;  // device memory held after the scene was done (before it was released)
+};
+
+struct RunReport {
+    std::string version;       // "candela 0.1.0"
+    std::string device;        // the chosen device's name
+    std::string environment;   // what lit the scenes
+    uint32_t width = 0, height = 0;
+    Shard shard;
+    size_t scenesListed = 0;   // before --shard took this machine's share
+    double totalMs = 0.0;      // the whole run, device creation included
+    double startupMs = 0.0;    // device creation and environment loading
+    double precomputeMs = -1.0;  // the environment's precompute (negative: none)
+    uint32_t precomputes = 0;    // how often the environment was precomputed (1 with an environment)
+    uint64_t peakHostBytes = 0;    // the largest resident host memory seen after a scene
+    uint64_t peakDeviceBytes = 0;  // the largest device memory held after a scene
+    std::vector<SceneReport> scenes;
+
+    size_t failed() const;
+};
+
+// The report as JSON (fields described in docs/pipelines.md).
+std::string reportJson(const RunReport& report);
+
+}  // namespace candela::app

@@ -1,0 +1,146 @@
+#include "scene_batch.h"
+
+#include "cli_values.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <set>
+
+namespace candela::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool isGltf(const fs::path& file) {
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    return extension == ".gltf" || extension == ".glb";
+}
+
+// `path` without its extension, as a relative path with only named components ("a/b/Box").
+std::string relativeStem(const fs::path& path) {
+    fs::path out;
+    for (const fs::path& part : path.parent_path())
+        if (part != "/" && part != "." && part != ".." && !part.has_root_name() && !part.empty()) out /= part;
+    out /= path.stem();
+    return out.generic_string();
+}
+
+class Collector {
+public:
+    void add(const fs::path& file, std::string path) {
+        std::error_code ec;
+        const fs::path key = fs::weakly_canonical(file, ec);
+        if (!mSeen.insert(ec ? file.lexically_normal().string() : key.string()).second) return;
+        SceneInput scene = fileInput(file);
+        scene.path = std::move(path);
+        mScenes.push_back(std::move(scene));
+    }
+
+    // A file, or a folder walked for glTF files; `listed`: named by a list file (no lists inside).
+    void input(const std::string& input, bool listed) {
+        if (!listed && input.size() > 1 && input[0] == '@') return list(input.substr(1));
+        std::error_code ec;
+        if (!fs::is_directory(input, ec)) return add(input, relativeStem(input));
+        std::vector<fs::path> files;
+        const auto options = fs::directory_options::skip_permission_denied;
+        for (fs::recursive_directory_iterator it(input, options, ec), end; !ec && it != end; it.increment(ec))
+            if (it->is_regular_file(ec) && isGltf(it->path())) files.push_back(it->path());
+        if (ec) throw UserError(input + ": cannot list the folder: " + ec.message());
+        std::sort(files.begin(), files.end());
+        for (const fs::path& file : files) add(file, relativeStem(file.lexically_relative(input)));
+    }
+
+    void list(const std::string& file) {
+        std::ifstream in(file);
+        if (!in) throw UserError("@" + file + ": cannot open the list of scenes");
+        std::string line;
+        while (std::getline(in, line)) {
+            const auto space = [](unsigned char c) { return std::isspace(c) != 0; };
+            line.erase(line.begin(), std::find_if_not(line.begin(), line.end(), space));
+            line.erase(std::find_if_not(line.rbegin(), line.rend(), space).base(), line.end());
+            if (line.empty() || line[0] == '#') continue;
+            if (line[0] == '@') throw UserError("@" + file + ": a list of scenes cannot name another list (" + line + ")");
+            input(line, true);
+        }
+        if (in.bad()) throw UserError("@" + file + ": cannot read the list of scenes");
+    }
+
+    std::vector<SceneInput> mScenes;
+
+private:
+    std::set<std::string> mSeen;
+};
+
+constexpr const char* kFields[] = {"name", "path", "variant", "frame"};
+
+}  // namespace
+
+SceneInput fileInput(const std::filesystem::path& file) { return {file, file.stem().string(), relativeStem(file)}; }
+
+std::vector<SceneInput> expandSceneInputs(const std::vector<std::string>& inputs) {
+    Collector collector;
+    for (const std::string& input : inputs) collector.input(input, false);
+    if (collector.mScenes.empty())
+        throw UserError("no glTF scene (.gltf or .glb) in " + joinWords(inputs, "or"));
+    return std::move(collector.mScenes);
+}
+
+Shard parseShard(const std::string& flag, const std::string& value) {
+    const size_t slash = value.find('/');
+    const auto number = [&](const std::string& text) -> uint32_t {
+        if (text.empty() || text.size() > 6 || !std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); }))
+            return 0;
+        return uint32_t(std::stoul(text));
+    };
+    const Shard shard{slash == std::string::npos ? 0 : number(value.substr(0, slash)),
+                      slash == std::string::npos ? 0 : number(value.substr(slash + 1))};
+    if (shard.index < 1 || shard.count < 1 || shard.index > shard.count)
+        throw UserError(flag + ": expected I/N with 1 <= I <= N (this machine's share of N), got '" + value + "'");
+    return shard;
+}
+
+std::vector<SceneInput> shardOf(const std::vector<SceneInput>& scenes, Shard shard) {
+    std::vector<SceneInput> out;
+    for (size_t k = shard.index - 1; k < scenes.size(); k += shard.count) out.push_back(scenes[k]);
+    return out;
+}
+
+void checkOutPattern(const std::string& pattern) {
+    for (size_t open = pattern.find('{'); open != std::string::npos; open = pattern.find('{', open + 1)) {
+        const size_t close = pattern.find('}', open);
+        const std::string field = pattern.substr(open + 1, close == std::string::npos ? std::string::npos : close - open - 1);
+        if (close == std::string::npos || std::find(std::begin(kFields), std::end(kFields), field) == std::end(kFields))
+            throw UserError("--out " + pattern + ": unknown field {" + field +
+                            (close == std::string::npos ? "" : "}") + " (the fields are {name}, {path}, {variant} and {frame})");
+    }
+}
+
+bool usesField(const std::string& pattern, const std::string& field) {
+    return pattern.find("{" + field + "}") != std::string::npos;
+}
+
+std::string expandOutPattern(const std::string& pattern, const OutputFields& fields) {
+    std::string frame;
+    if (fields.frame) {
+        frame = std::to_string(*fields.frame);
+        if (frame.size() < 4) frame.insert(0, 4 - frame.size(), '0');
+    }
+    // The %d field first: the names put in below may hold a '%' of their own.
+    const std::string text = fields.frame && !usesField(pattern, "frame") ? sequenceFileName(pattern, *fields.frame) : pattern;
+    std::string out;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const size_t close = text[i] == '{' ? text.find('}', i) : std::string::npos;
+        if (close == std::string::npos) {
+            out += text[i];
+            continue;
+        }
+        const std::string field = text.substr(i + 1, close - i - 1);
+        out += field == "name" ? fields.name : field == "path" ? fields.path : field == "variant" ? fields.variant : frame;
+        i = close;
+    }
+    return out;
+}
+
+}  // namespace candela::app

@@ -1,0 +1,64 @@
+#pragma once
+// The scenes of one `candela render` run and the names of what it writes. Pure (files are listed,
+// not read as glTF), unit-tested.
+//
+// A run's inputs are glTF files, folders (walked for .gltf and .glb files, in sorted order) and
+// list files (`@list.txt`: one file or folder per line, relative to the working folder; blank lines
+// and lines starting with # are skipped). The scenes keep the order of the inputs; a file reached
+// twice is rendered once.
+
+#include "core/errors.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace candela::app {
+
+struct SceneInput {
+    std::filesystem::path file;  // as given, or found under a given folder
+    std::string name;            // {name}: the file's name without extension ("Box")
+    // {path}: the file's path without extension, relative to the folder it was found under
+    // ("Box/glTF-Binary/Box"), or as given for a file named directly (leading "/", "./" and ".."
+    // components dropped, so that it stays inside the output folder).
+    std::string path;
+    bool operator==(const SceneInput&) const = default;
+};
+
+// The scene of the file `file` (--scene: never walked as a folder).
+SceneInput fileInput(const std::filesystem::path& file);
+
+// The scenes `inputs` name, in order. A path that does not exist is kept as a scene (its load
+// fails and is reported with the others); a folder holding no glTF file adds nothing. Throws
+// UserError for an unreadable list file, a list inside a list, or when no scene is found at all.
+std::vector<SceneInput> expandSceneInputs(const std::vector<std::string>& inputs);
+
+// --shard I/N: the scenes at positions k (from 0) with k mod N = I − 1. Shards 1 … N of the same
+// list are disjoint and together hold every scene.
+struct Shard {
+    uint32_t index = 1;  // 1 … count
+    uint32_t count = 1;
+    bool operator==(const Shard&) const = default;
+};
+// Parses "I/N" (1 ≤ I ≤ N); UserError naming `flag` otherwise.
+Shard parseShard(const std::string& flag, const std::string& value);
+std::vector<SceneInput> shardOf(const std::vector<SceneInput>& scenes, Shard shard);
+
+// What the fields of an --out pattern stand for in one output file.
+struct OutputFields {
+    std::string name;               // {name}
+    std::string path;               // {path}
+    std::string variant;            // {variant}: the KHR_materials_variants variant, or "default"
+    std::optional<uint32_t> frame;  // {frame}: frame of an image sequence (4 digits at least)
+};
+// Throws UserError when `pattern` has a {field} other than name, path, variant and frame.
+void checkOutPattern(const std::string& pattern);
+// Whether `pattern` uses {field} ("name", "path", "variant" or "frame").
+bool usesField(const std::string& pattern, const std::string& field);
+// `pattern` with its fields replaced. A frame of a pattern without {frame} goes into its one %d
+// or %0Nd (sequenceFileName). Precondition: checkOutPattern(pattern) passed.
+std::string expandOutPattern(const std::string& pattern, const OutputFields& fields);
+
+}  // namespace candela::app
