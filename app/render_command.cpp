@@ -119,6 +119,9 @@ void printWritten(const Run& run, const std::string& out, const CapturedFrame& f
 void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progress) {
     const RenderOptions& options = run.options;
     r.extensions = scene.extensionsUsed;
+    r.imageDecodeMs = scene.textureDecoding.milliseconds;
+    r.decompressionMs = scene.decompression.milliseconds;
+    r.geometryMs = scene.geometry.milliseconds;
     for (const std::string& warning : scene.warnings) log::warn(scene.source + ": " + warning);
     for (const std::string& note : scene.notes) log::info(scene.source + ": " + note);
     r.warnings = scene.warnings;
@@ -273,12 +276,19 @@ int runRender(const RenderOptions& options) {
         }
         r.validationMessages = context.validationMessageCount() - validationBefore;
         r.hostBytes = residentBytes();
-        r.deviceBytes = context.allocator().stats().deviceMemoryBytes;
+        const vk::MemoryStats device = context.allocator().stats();
+        r.deviceBytes = device.allocatedBytes;
         report.peakHostBytes = std::max(report.peakHostBytes, r.hostBytes);
         report.peakDeviceBytes = std::max(report.peakDeviceBytes, r.deviceBytes);
+        report.peakDeviceMemoryBytes = std::max(report.peakDeviceMemoryBytes, device.deviceMemoryBytes);
         if (report.precomputeMs < 0.0) report.precomputeMs = renderer.lastPrecompute().frameMs;
         if (run.batch) {
-            renderer.releaseScene();  // nothing of this scene stays on the device
+            // Nothing of this scene stays, on the device or on the host.
+            renderer.releaseScene();
+            loaded.scene.reset();
+            returnFreedHeapMemory();
+            r.retainedHostBytes = residentBytes();
+            r.retainedDeviceBytes = context.allocator().stats().allocatedBytes;
             progress.step(i + 1, r.input.name);
         }
     }

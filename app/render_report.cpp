@@ -30,6 +30,9 @@ Json sceneJson(const SceneReport& s) {
         out["exit_code"] = s.exitCode;
     }
     out["load_ms"] = ms(s.loadMs);
+    out["image_decode_ms"] = ms(s.imageDecodeMs);
+    out["decompression_ms"] = ms(s.decompressionMs);
+    out["geometry_ms"] = ms(s.geometryMs);
     out["upload_ms"] = ms(s.uploadMs);
     out["frame_ms"] = msList(s.frameMs);
     out["gpu_ms"] = msList(s.gpuMs);
@@ -58,6 +61,8 @@ Json sceneJson(const SceneReport& s) {
     out["outputs"] = s.outputs;
     out["host_bytes"] = s.hostBytes;
     out["device_bytes"] = s.deviceBytes;
+    out["retained_host_bytes"] = s.retainedHostBytes;
+    out["retained_device_bytes"] = s.retainedDeviceBytes;
     return out;
 }
 
@@ -84,6 +89,7 @@ std::string reportJson(const RunReport& r) {
     out["precomputes"] = r.precomputes;
     out["peak_host_bytes"] = r.peakHostBytes;
     out["peak_device_bytes"] = r.peakDeviceBytes;
+    out["peak_device_memory_bytes"] = r.peakDeviceMemoryBytes;
     Json scenes = Json::array();
     for (const SceneReport& s : r.scenes) scenes.push_back(sceneJson(s));
     out["scenes"] = scenes;

@@ -23,7 +23,10 @@ struct SceneReport {
     bool ok = false;
     std::string error;  // the one-line message of a failed scene
     int exitCode = 0;   // what a run of this scene alone would have exited with
-    double loadMs = 0.0;    // reading and decoding the file (on the loading thread)
+    double loadMs = 0.0;    // reading and decoding the file (on the loading thread), of which:
+    double imageDecodeMs = 0.0;     // decoding the images (PNG, JPEG, WebP, KTX2)
+    double decompressionMs = 0.0;   // Draco and meshopt geometry
+    double geometryMs = 0.0;        // preparing the geometry (optimized orders, levels of detail)
     double uploadMs = 0.0;  // to device memory, waited for
     std::vector<double> frameMs;  // per image written: render, wait and read back (CPU wall time)
     std::vector<double> gpuMs;    // per image written: the GPU time of its passes
@@ -36,8 +39,13 @@ struct SceneReport {
     std::vector<std::string> notes;
     std::vector<std::string> outputs;     // the files written
     uint32_t validationMessages = 0;      // --validate
-    uint64_t hostBytes = 0;    // resident host memory after the scene was done
-    uint64_t deviceBytes = 0;  // device memory held after the scene was done (before it was released)
+    uint64_t hostBytes = 0;    // resident host memory when its images were written
+    uint64_t deviceBytes = 0;  // device memory in use by resources then
+    // What stayed once the scene was released (its host and device memory freed): flat over a
+    // run when nothing is kept from one scene to the next. Host: the resident size after the
+    // freed heap was returned to the system (the next scene's load runs meanwhile: noise).
+    uint64_t retainedHostBytes = 0;
+    uint64_t retainedDeviceBytes = 0;
 };
 
 struct RunReport {
@@ -51,8 +59,9 @@ struct RunReport {
     double startupMs = 0.0;    // device creation and environment loading
     double precomputeMs = -1.0;  // the environment's precompute (negative: none)
     uint32_t precomputes = 0;    // how often the environment was precomputed (1 with an environment)
-    uint64_t peakHostBytes = 0;    // the largest resident host memory seen after a scene
-    uint64_t peakDeviceBytes = 0;  // the largest device memory held after a scene
+    uint64_t peakHostBytes = 0;    // the largest SceneReport::hostBytes
+    uint64_t peakDeviceBytes = 0;  // the largest SceneReport::deviceBytes
+    uint64_t peakDeviceMemoryBytes = 0;  // the most device memory held then (the allocator's blocks)
     std::vector<SceneReport> scenes;
 
     size_t failed() const;

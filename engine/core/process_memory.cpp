@@ -30,4 +30,10 @@ uint64_t heapMappedBytes() {
 #endif
 }
 
+void returnFreedHeapMemory() {
+#if defined(__GLIBC__)
+    malloc_trim(0);
+#endif
+}
+
 }  // namespace candela

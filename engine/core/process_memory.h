@@ -14,5 +14,8 @@ uint64_t heapInUseBytes();
 // above its mmap threshold, 128 KiB growing to 32 MiB): a single large allocation alive when the
 // sample is taken shows here whole. 0 where not available.
 uint64_t heapMappedBytes();
+// Gives the memory the C heap holds free back to the system (glibc: malloc_trim), so that the
+// resident size shows what is in use (a run over many scenes, between scenes). No-op elsewhere.
+void returnFreedHeapMemory();
 
 }  // namespace candela

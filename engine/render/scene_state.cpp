@@ -155,6 +155,7 @@ void SceneState::releaseScene() {
     mKeys = {};
     mHasSheen = false;
     mUploaded = {nullptr, false, true};
+    mContext.waitIdleAndCollect();  // its memory is free now, not at a later frame's collection
 }
 
 void SceneState::sceneReplaced() {

@@ -164,6 +164,32 @@ TEST(RenderBatch, VariantsAndSequencesArePerScene) {
     EXPECT_NE(readFile(dir / "out/plain-default-0000.png"), readFile(dir / "out/plain-default-0001.png"));  // turned
 }
 
+TEST(RenderBatch, NothingOfASceneStaysOnTheDeviceAfterIt) {
+    TempDir dir("candela_batch");
+    // Six scenes alike, each with a 128 x 128 texture (64 KiB + mips on the device).
+    scene::test::Bytes pixels;
+    for (int i = 0; i < 128 * 128; ++i) pixels.insert(pixels.end(), {uint8_t(i), uint8_t(i >> 7), 200, 255});
+    const scene::test::Bytes png = scene::test::makePng(128, 128, 8, 6, pixels);
+    for (int i = 0; i < 6; ++i) scene::test::texturedTriangle("", png).writeGlb(dir / "lib", "t" + std::to_string(i));
+    const Result r = run("render " + (dir / "lib").string() + " --out " + (dir / "out/{name}.png").string() + " --report " +
+                         (dir / "report.json").string() + kSmall);
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    const Json report = readJson(dir / "report.json");
+    ASSERT_EQ(report["scenes"].size(), 6u);
+    // The first scene's frame also ran the environment's precompute (its inputs are freed after
+    // it); from the second on, what a scene uses while it renders and what stays after it are the
+    // same for each, the texture's bytes apart.
+    const Json& second = report["scenes"][1];
+    EXPECT_GE(second["texture_device_bytes"].get<uint64_t>(), 128u * 128u * 4u);
+    for (size_t i = 1; i < 6; ++i) {
+        const Json& s = report["scenes"][i];
+        EXPECT_EQ(s["device_bytes"], second["device_bytes"]) << s["name"];
+        EXPECT_EQ(s["retained_device_bytes"], second["retained_device_bytes"]) << s["name"];
+    }
+    EXPECT_LE(second["retained_device_bytes"].get<uint64_t>() + second["texture_device_bytes"].get<uint64_t>(),
+              second["device_bytes"].get<uint64_t>());
+}
+
 TEST(RenderBatch, OutputsThatWouldCollideAreRefusedBeforeRendering) {
     TempDir dir("candela_batch");
     triangle(dir / "lib/a", "Box");
