@@ -11,8 +11,9 @@
 //                          "over-threshold", "warning", "ok"), data-index (the default position)
 //   td.num[data-column]    a number cell, data-column = the column's name, data-value = the value
 //                          in shortest round-trip form ("" when absent)
-//   th[data-key]           a sortable header ("name", "status", or "c<column index>"); data-column
-//                          = the column's name; aria-sort "ascending" / "descending" once sorted
+//   th[data-key]           a sortable header: data-key "status", "name" or "c<column index>";
+//                          data-column "name" or the column's name; aria-sort "ascending" or
+//                          "descending" once sorted by it
 //   .warnings li, .notes li, .error, .links a   a row's warnings, notes, error message, links
 //   figure.thumb img       a thumbnail; figure.thumb .placeholder a missing image
 //   input#filter, input#failures-only, #shown (the "N of M rows" line), #lightbox
