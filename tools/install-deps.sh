@@ -13,6 +13,7 @@ packages=(
   clang libclang-rt-14-dev
   libdraco-dev libmeshoptimizer-dev gltfpack
   libwebp-dev libzstd-dev
+  chromium chromium-driver  # the HTML page in a browser (tests/html, label browser)
 )
 
 missing=()
