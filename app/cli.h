@@ -66,6 +66,8 @@ struct RenderOptions {
     std::vector<std::string> inputs;
     std::string report;                  // render: --report FILE (JSON: per scene times, sizes, warnings, outputs)
     Shard shard;                         // render: --shard I/N
+    std::string html;                    // render: --html FILE (a page of the run)
+    bool inlineImages = false;           // render: --inline-images (the page holds its images)
     std::optional<uint32_t> sceneIndex;  // --scene-index N: which of the file's scenes [its `scene`, else 0]
     std::optional<uint32_t> camera;      // --camera INDEX (glTF camera)
     std::optional<std::array<float, 3>> cameraOrbit;  // --camera-orbit THETA,PHI,RADIUS

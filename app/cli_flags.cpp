@@ -135,6 +135,17 @@ std::vector<Flag> makeFlagTable() {
                    ""}},
          .set = [](Command& c, Str flag, Str v) { c.render.report = parsePath(flag, v); },
          .example = "report.json"},
+        {.name = "--html",
+         .uses = {{{Kind::Render}, "FILE",
+                   "write an HTML page of the run: a row per scene with its images, times, sizes, warnings and "
+                   "failure, sortable (self-contained: no network; images beside it)",
+                   ""}},
+         .set = [](Command& c, Str flag, Str v) { c.render.html = parsePath(flag, v); },
+         .example = "index.html"},
+        {.name = "--inline-images",
+         .uses = {{{Kind::Render}, "", "put the images into the --html page (one file to pass on) instead of linking them", ""}},
+         .set = [](Command& c, Str, Str) { c.render.inlineImages = true; },
+         },
         {.name = "--shard",
          .uses = {{{Kind::Render}, "I/N",
                    "render only share I of N of the scenes (every N-th, from the I-th): one machine's part of a "

@@ -3,6 +3,7 @@
 // renders; each scene's device memory is freed before the next is uploaded.
 
 #include "commands.h"
+#include "render_page.h"
 #include "render_report.h"
 #include "scene_batch.h"
 #include "assets/image_file.h"
@@ -169,7 +170,9 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
             const std::string out = expandOutPattern(
                 options.out, {r.input.name, r.input.path, variantName, run.sequence ? std::optional(i) : std::nullopt});
             writeImage(run, out, run.lastFrame);
-            r.outputs.push_back(out);
+            std::string label = variant ? variantName : "";
+            if (run.sequence) label += (label.empty() ? "" : ", ") + ("frame " + std::to_string(i));
+            r.outputs.push_back({out, label.empty() ? "render" : label});
             progress.clear();
             printWritten(run, out, run.lastFrame, pose, r);
             if (!run.batch) progress.step(i + 1, "frames written");
@@ -226,8 +229,11 @@ int runRender(const RenderOptions& options) {
         createFolderOf(first);
         io::checkWritable(first);
     }
-    for (const std::string& path : {options.graphDot, options.graphJson, options.report})
-        if (!path.empty()) io::checkWritable(path);
+    for (const std::string& path : {options.graphDot, options.graphJson, options.report, options.html})
+        if (!path.empty()) {
+            createFolderOf(path);
+            io::checkWritable(path);
+        }
 
     // The first scene is read while the environment loads and the device starts.
     std::future<LoadedScene> next;
@@ -296,6 +302,7 @@ int runRender(const RenderOptions& options) {
     report.precomputes = renderer.precomputeCount();
     report.totalMs = msSince(runStart);
     if (!options.report.empty()) writeText(options.report, reportJson(report));
+    if (!options.html.empty()) io::writeHtmlPage(options.html, renderPage(report, options.html), options.inlineImages);
     if (singleFailure) std::rethrow_exception(singleFailure);
 
     if (options.explain && run.anyFrame)

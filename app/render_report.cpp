@@ -58,7 +58,9 @@ Json sceneJson(const SceneReport& s) {
     out["warnings"] = s.warnings;
     out["notes"] = s.notes;
     out["validation_messages"] = s.validationMessages;
-    out["outputs"] = s.outputs;
+    Json outputs = Json::array();
+    for (const SceneReport::Output& o : s.outputs) outputs.push_back(o.file);
+    out["outputs"] = outputs;
     out["host_bytes"] = s.hostBytes;
     out["device_bytes"] = s.deviceBytes;
     out["retained_host_bytes"] = s.retainedHostBytes;

@@ -37,7 +37,11 @@ struct SceneReport {
     std::vector<std::string> variants;    // the KHR_materials_variants drawn ("" for the default materials)
     std::vector<std::string> warnings;    // the loader's and the renderer's
     std::vector<std::string> notes;
-    std::vector<std::string> outputs;     // the files written
+    struct Output {
+        std::string file;
+        std::string label;  // what it shows: "render", the variant, "frame 3", "blue, frame 3"
+    };
+    std::vector<Output> outputs;  // the files written
     uint32_t validationMessages = 0;      // --validate
     uint64_t hostBytes = 0;    // resident host memory when its images were written
     uint64_t deviceBytes = 0;  // device memory in use by resources then
