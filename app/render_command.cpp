@@ -261,12 +261,16 @@ int runRender(const RenderOptions& options) {
     Progress progress("render", run.batch ? scenes.size() : options.frames, options.common.quiet || (run.batch ? false : !sequence));
     std::exception_ptr singleFailure;
     for (size_t i = 0; i < scenes.size(); ++i) {
+        const auto waitStart = Clock::now();
         LoadedScene loaded = first ? std::move(*first) : next.get();
+        const double waitMs = msSince(waitStart);
         first.reset();
         if (i + 1 < scenes.size()) startLoad(i + 1);  // the next file is read while this one renders
         SceneReport& r = report.scenes.emplace_back();
         r.input = scenes[i];
         r.loadMs = loaded.ms;
+        // The first load overlaps the device's start-up only: counted whole.
+        r.loadWaitMs = i == 0 ? loaded.ms : waitMs;
         const uint32_t validationBefore = context.validationMessageCount();
         try {
             if (loaded.error) std::rethrow_exception(loaded.error);

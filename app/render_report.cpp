@@ -30,6 +30,7 @@ Json sceneJson(const SceneReport& s) {
         out["exit_code"] = s.exitCode;
     }
     out["load_ms"] = ms(s.loadMs);
+    out["load_wait_ms"] = ms(s.loadWaitMs);
     out["image_decode_ms"] = ms(s.imageDecodeMs);
     out["decompression_ms"] = ms(s.decompressionMs);
     out["geometry_ms"] = ms(s.geometryMs);

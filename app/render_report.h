@@ -27,6 +27,7 @@ struct SceneReport {
     double imageDecodeMs = 0.0;     // decoding the images (PNG, JPEG, WebP, KTX2)
     double decompressionMs = 0.0;   // Draco and meshopt geometry
     double geometryMs = 0.0;        // preparing the geometry (optimized orders, levels of detail)
+    double loadWaitMs = 0.0;  // how long rendering waited for the load; the rest overlapped the previous scene
     double uploadMs = 0.0;  // to device memory, waited for
     std::vector<double> frameMs;  // per image written: render, wait and read back (CPU wall time)
     std::vector<double> gpuMs;    // per image written: the GPU time of its passes

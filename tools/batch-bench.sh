@@ -58,11 +58,11 @@ import json, sys
 r = json.load(open(sys.argv[1]))
 s = r["scenes"]
 mib = lambda b: b / 2**20
-load = sum(x["load_ms"] for x in s); upload = sum(x["upload_ms"] for x in s); frame = sum(sum(x["frame_ms"]) for x in s)
+load = sum(x["load_ms"] for x in s); wait = sum(x["load_wait_ms"] for x in s); upload = sum(x["upload_ms"] for x in s); frame = sum(sum(x["frame_ms"]) for x in s)
 print(f"last batch: {r['scenes_rendered']} rendered, {r['scenes_failed']} failed; total {r['total_ms'] / 1000:.2f} s, "
       f"start-up {r['startup_ms'] / 1000:.2f} s, precompute {r['precompute_ms'] / 1000:.2f} s ({r['precomputes']}x)")
-print(f"  summed over scenes: load {load / 1000:.2f} s (on the loading thread, overlapped), upload {upload / 1000:.2f} s, "
-      f"frames {frame / 1000:.2f} s")
+print(f"  summed over scenes: load {load / 1000:.2f} s on the loading thread, of which rendering waited for "
+      f"{wait / 1000:.2f} s (the rest overlapped the previous scene); upload {upload / 1000:.2f} s, frames {frame / 1000:.2f} s")
 print(f"  peak: host {mib(r['peak_host_bytes']):.0f} MiB resident, device {mib(r['peak_device_bytes']):.0f} MiB in use "
       f"({mib(r['peak_device_memory_bytes']):.0f} MiB held)")
 ok = [x for x in s if x["status"] == "ok"]
