@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <iterator>
 #include <set>
 
 namespace candela::app {
@@ -53,18 +54,11 @@ public:
     }
 
     void list(const std::string& file) {
-        std::ifstream in(file);
+        std::ifstream in(file, std::ios::binary);
         if (!in) throw UserError("@" + file + ": cannot open the list of scenes");
-        std::string line;
-        while (std::getline(in, line)) {
-            const auto space = [](unsigned char c) { return std::isspace(c) != 0; };
-            line.erase(line.begin(), std::find_if_not(line.begin(), line.end(), space));
-            line.erase(std::find_if_not(line.rbegin(), line.rend(), space).base(), line.end());
-            if (line.empty() || line[0] == '#') continue;
-            if (line[0] == '@') throw UserError("@" + file + ": a list of scenes cannot name another list (" + line + ")");
-            input(line, true);
-        }
+        const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
         if (in.bad()) throw UserError("@" + file + ": cannot read the list of scenes");
+        for (const std::string& entry : parseSceneList(text, file)) input(entry, true);
     }
 
     std::vector<SceneInput> mScenes;
@@ -76,6 +70,24 @@ private:
 constexpr const char* kFields[] = {"name", "path", "variant", "frame"};
 
 }  // namespace
+
+std::vector<std::string> parseSceneList(std::string_view text, const std::string& list) {
+    std::vector<std::string> entries;
+    const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; };
+    for (size_t start = 0, number = 1; start < text.size(); ++number) {
+        const size_t end = std::min(text.find('\n', start), text.size());
+        std::string_view line = text.substr(start, end - start);
+        start = end + 1;
+        while (!line.empty() && space(line.front())) line.remove_prefix(1);
+        while (!line.empty() && space(line.back())) line.remove_suffix(1);
+        if (line.empty() || line[0] == '#') continue;
+        const std::string where = "@" + list + " line " + std::to_string(number);
+        if (line[0] == '@') throw UserError(where + ": a list of scenes cannot name another list (" + std::string(line) + ")");
+        if (line.find('\0') != std::string_view::npos) throw UserError(where + ": a NUL byte (not a list of file names?)");
+        entries.emplace_back(line);
+    }
+    return entries;
+}
 
 SceneInput fileInput(const std::filesystem::path& file) { return {file, file.stem().string(), relativeStem(file)}; }
 

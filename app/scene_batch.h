@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace candela::app {
@@ -26,6 +27,11 @@ struct SceneInput {
     std::string path;
     bool operator==(const SceneInput&) const = default;
 };
+
+// The entries of a list of scenes (`@list.txt`) with contents `text`: one per line, spaces around
+// it trimmed, blank lines and lines starting with # skipped (a \r before the newline is a space).
+// Throws UserError naming `list` for an entry that names another list (@…) or a NUL byte.
+std::vector<std::string> parseSceneList(std::string_view text, const std::string& list);
 
 // The scene of the file `file` (--scene: never walked as a folder).
 SceneInput fileInput(const std::filesystem::path& file);

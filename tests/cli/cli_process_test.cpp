@@ -90,6 +90,10 @@ std::filesystem::path writeSceneFiles() {
     writeFile(dir / "truncated.glb", glb.substr(0, glb.size() / 2));
     writeFile(dir / "syntax.gltf", R"({"asset": {"version": "2.0"},})");
     writeFile(dir / "scene.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    writeFile(dir / "nested.txt", "triangle.gltf\n@other.txt\n");
+    writeFile(dir / "comments.txt", "# nothing but comments\n\n   \n");
+    writeFile(dir / "binary.txt", std::string("\x7f" "ELF\0\x02\x01", 8));
+    writeFile(dir / "missing.txt", (dir / "nope.glb").string() + "\n");
     return dir;
 }
 
@@ -128,6 +132,15 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"ViewTakesNoGraphExport", "view --graph-dot {dir}/g.dot --explain",
                                "view does not take --graph-dot (it is a flag of render)"},
                       BadInput{"UnknownCommand", "explode", "unknown command 'explode'"},
+                      BadInput{"SceneListMissing", "render @{dir}/nolist.txt --out {dir}/x.png", "@{dir}/nolist.txt: cannot open the list of scenes"},
+                      BadInput{"SceneListNested", "render @{dir}/nested.txt --out {dir}/x.png",
+                               "@{dir}/nested.txt line 2: a list of scenes cannot name another list (@other.txt)"},
+                      BadInput{"SceneListOnlyComments", "render @{dir}/comments.txt --out {dir}/x.png", "no glTF scene (.gltf or .glb) in @{dir}/comments.txt"},
+                      BadInput{"SceneListBinary", "render @{dir}/binary.txt --out {dir}/x.png", "@{dir}/binary.txt line 1: a NUL byte"},
+                      BadInput{"SceneListNamesAMissingFile", "render @{dir}/missing.txt --out {dir}/x.png", "{dir}/nope.glb: cannot open"},
+                      BadInput{"FolderWithoutScenes", "render {dir}/folder.gltf --out {dir}/x.png", "no glTF scene (.gltf or .glb) in {dir}/folder.gltf"},
+                      BadInput{"ShardBeyondCount", "render --shard 5/4", "--shard: expected I/N with 1 <= I <= N (this machine's share of N), got '5/4'"},
+                      BadInput{"OutPatternUnknownField", "render --out {dir}/{scene}.png", "unknown field {scene}"},
                       BadInput{"ZeroWidth", "render --width 0 --out /tmp/candela_zero.png", "--width: must be at least 1"},
                       BadInput{"ZeroHeight", "render --height 0 --out /tmp/candela_zero.png", "--height: must be at least 1"},
                       BadInput{"NegativeWidth", "render --width -5", "--width: expected a whole number"},

@@ -14,6 +14,7 @@ namespace candela::app {
 namespace {
 
 using test::TempDir;
+namespace fs = std::filesystem;
 
 void touch(const std::filesystem::path& file) {
     std::filesystem::create_directories(file.parent_path());
@@ -68,6 +69,32 @@ TEST(SceneBatch, BadListsAndEmptyFoldersAreErrors) {
     EXPECT_THROW(expandSceneInputs({"@" + (dir / "no-list.txt").string()}), UserError);
     std::ofstream(dir / "nested.txt") << "@other.txt\n";
     EXPECT_THROW(expandSceneInputs({"@" + (dir / "nested.txt").string()}), UserError);
+}
+
+TEST(SceneBatch, ListsSkipCommentsBlankLinesAndSpaces) {
+    EXPECT_EQ(parseSceneList("# thumbnails\n\n  models/a b.glb \t\r\n#x.glb\nlib/\nlast.gltf", "l.txt"),
+              (std::vector<std::string>{"models/a b.glb", "lib/", "last.gltf"}));
+    EXPECT_TRUE(parseSceneList("", "l.txt").empty());
+    try {
+        parseSceneList("a.glb\n @b.txt\n", "l.txt");
+        FAIL() << "a list inside a list";
+    } catch (const UserError& e) {
+        EXPECT_EQ(std::string(e.what()), "@l.txt line 2: a list of scenes cannot name another list (@b.txt)");
+    }
+    EXPECT_THROW(parseSceneList(std::string("a\0b.glb\n", 8), "l.txt"), UserError);
+}
+
+// Every input the list fuzzer (tests/fuzz/fuzz_scene_list.cpp) ever failed on reads or fails
+// cleanly (none so far: the folder holds only .keep).
+TEST(SceneBatch, FuzzRegressionsReadOrFailCleanly) {
+    for (const auto& entry : fs::directory_iterator(fs::path(CANDELA_FUZZ_REGRESSIONS) / "scene_list")) {
+        std::ifstream in(entry.path(), std::ios::binary);
+        const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        try {
+            for (const std::string& line : parseSceneList(text, "fuzz.txt")) EXPECT_FALSE(line.empty());
+        } catch (const UserError&) {
+        }
+    }
 }
 
 TEST(SceneBatch, ShardsPartitionTheList) {

@@ -299,6 +299,15 @@ void makeKtx2Seeds(const fs::path& dir) {
     std::printf("ktx2 seeds: %d\n", count);
 }
 
+// Lists of scenes (`candela render @list.txt`): comments, blank lines, CRLF, spaces, folders.
+void makeSceneListSeeds(const fs::path& dir) {
+    const auto write = [&](const char* name, const std::string& text) { std::ofstream(dir / name, std::ios::binary) << text; };
+    write("plain.txt", "models/Box.glb\nmodels/Duck.gltf\n");
+    write("comments.txt", "# thumbnails\n\n  models/a b.glb  \n#models/skip.glb\nlibrary/\n");
+    write("crlf.txt", "a.glb\r\nb.gltf\r\n\r\n");
+    write("nested.txt", "a.glb\n@other.txt\n");
+}
+
 // Lossless, lossy, with alpha and animated WebP files written with libwebp's encoder.
 void makeWebpSeeds(const fs::path& dir) {
     std::vector<uint8_t> pixels(24 * 10 * 4);
@@ -321,11 +330,12 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path out = argv[1];
-    for (const char* sub : {"gltf", "hdr", "exr", "ktx2", "webp"}) fs::create_directories(out / sub);
+    for (const char* sub : {"gltf", "hdr", "exr", "ktx2", "webp", "scene_list"}) fs::create_directories(out / sub);
     makeGltfSeeds(out / "gltf", smallPng());
     makeHdrSeeds(out / "hdr");
     makeExrSeeds(out / "exr");
     makeKtx2Seeds(out / "ktx2");
     makeWebpSeeds(out / "webp");
+    makeSceneListSeeds(out / "scene_list");
     return 0;
 }
