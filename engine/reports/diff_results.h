@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace candela::io {
@@ -22,17 +21,22 @@ enum class DiffStatus {
     Unreadable,     // a file could not be read (message: the reader's one-line error)
 };
 
-inline constexpr std::pair<DiffStatus, const char*> kDiffStatusNames[] = {
-    {DiffStatus::Ok, "ok"},
-    {DiffStatus::OverThreshold, "over threshold"},
-    {DiffStatus::Missing, "missing"},
-    {DiffStatus::SizeMismatch, "size mismatch"},
-    {DiffStatus::Unreadable, "unreadable"}};
+// Each status as printed ("size mismatch") and as a JSON key or value ("sizeMismatch").
+struct DiffStatusName {
+    DiffStatus status;
+    const char* text;
+    const char* key;
+};
+inline constexpr DiffStatusName kDiffStatusNames[] = {{DiffStatus::Ok, "ok", "ok"},
+                                                     {DiffStatus::OverThreshold, "over threshold", "overThreshold"},
+                                                     {DiffStatus::Missing, "missing", "missing"},
+                                                     {DiffStatus::SizeMismatch, "size mismatch", "sizeMismatch"},
+                                                     {DiffStatus::Unreadable, "unreadable", "unreadable"}};
 
-inline const char* diffStatusName(DiffStatus status) {
-    for (const auto& [s, name] : kDiffStatusNames)
-        if (s == status) return name;
-    return "?";
+inline const DiffStatusName& diffStatusName(DiffStatus status) {
+    for (const DiffStatusName& name : kDiffStatusNames)
+        if (name.status == status) return name;
+    return kDiffStatusNames[0];
 }
 
 struct DiffSettings {

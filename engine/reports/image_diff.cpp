@@ -25,7 +25,8 @@ std::string overThresholds(const DiffPair& pair, const DiffSettings& settings) {
         add("mean FLIP " + number("%.6f", pair.flip.mean) + " > --max-flip " + number("%g", *settings.maxFlip));
     if (settings.maxFraction && pair.pixels.fractionOverThreshold > *settings.maxFraction)
         add(number("%.4g", pair.pixels.fractionOverThreshold * 100.0) + "% of pixels differ by more than " +
-            number("%g", settings.thresholdLevels) + " levels > --max-fraction " + number("%g", *settings.maxFraction));
+            number("%g", settings.thresholdLevels) + (pair.hdr ? "/255" : " levels") + " > --max-fraction " +
+            number("%g", *settings.maxFraction));
     return why;
 }
 
