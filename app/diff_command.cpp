@@ -156,6 +156,11 @@ int runDiff(const DiffOptions& options) {
     if (options.reference.empty() || options.test.empty())
         throw UserError("diff: expected two images or two folders (candela diff A B)");
     io::DiffReport report{diffSettings(options), {}};
+    // The filters grow with the pixels per degree: 273 taps at 1000 against 21 at 67. More than
+    // that (a 3840-pixel monitor 0.7 m wide seen from 10 m is 957) is refused.
+    if (!(report.settings.pixelsPerDegree <= 1000.0f))
+        throw UserError(format("diff: %g pixels per degree is more than 1000 (", report.settings.pixelsPerDegree) +
+                        (options.ppd ? "--ppd)" : "from the --monitor flags)"));
     const std::vector<io::MatchedFile> files = pairsToCompare(options);
     if (!options.errorMaps.empty()) {
         std::error_code ec;

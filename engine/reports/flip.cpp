@@ -138,10 +138,16 @@ FeatureKernels featureKernels(float ppd) {
         k.dg.taps[i] = dg;
         k.ddg.taps[i] = ddg;
     }
+    // Below about 1.7 pixels per degree the Gaussian's outer taps underflow to 0 and a derivative
+    // has no taps of one sign: it stays 0 rather than dividing by 0.
+    const auto normalize = [](float tap, float positive, float negative) {
+        const float side = tap > 0.0f ? positive : negative;
+        return side > 0.0f ? tap / side : 0.0f;
+    };
     for (int i = 0; i <= 2 * radius; ++i) {
         k.g.taps[i] /= sum;
-        k.dg.taps[i] /= k.dg.taps[i] > 0.0f ? dgPositive : dgNegative;
-        k.ddg.taps[i] /= k.ddg.taps[i] > 0.0f ? ddgPositive : ddgNegative;
+        k.dg.taps[i] = normalize(k.dg.taps[i], dgPositive, dgNegative);
+        k.ddg.taps[i] = normalize(k.ddg.taps[i], ddgPositive, ddgNegative);
     }
     return k;
 }
@@ -274,7 +280,7 @@ void combineWithFeatures(const Plane& referenceY, const Plane& testY, float ppd,
         for (uint32_t x = 0; x < w; ++x) {
             const float edge = std::fabs(std::sqrt(r[0][x] * r[0][x] + r[1][x] * r[1][x]) - std::sqrt(t[0][x] * t[0][x] + t[1][x] * t[1][x]));
             const float point = std::fabs(std::sqrt(r[2][x] * r[2][x] + r[3][x] * r[3][x]) - std::sqrt(t[2][x] * t[2][x] + t[3][x] * t[3][x]));
-            const float feature = std::pow(normalization * std::max(edge, point), kQf);  // kQf = 0.5
+            const float feature = std::pow(normalization * std::max(edge, point), kQf);
             dst[x] = std::pow(c[x], 1.0f - feature);
         }
     }

@@ -196,6 +196,8 @@ TEST_F(DiffCli, BadUsageAndUnreadableImagesExitTwo) {
     expectOneErrorLine(run("diff " + ref), "diff: expected two images or two folders (candela diff A B)");
     expectOneErrorLine(run("diff " + ref + " " + ref + " " + ref), "unexpected argument");
     expectOneErrorLine(run("diff " + ref + " " + ref + " --ppd 0"), "--ppd: expected pixels per degree > 0, got '0'");
+    expectOneErrorLine(run("diff " + ref + " " + ref + " --ppd 2000"), "diff: 2000 pixels per degree is more than 1000 (--ppd)");
+    expectOneErrorLine(run("diff " + ref + " " + ref + " --monitor-distance 20"), "is more than 1000 (from the --monitor flags)");
     expectOneErrorLine(run("diff " + ref + " " + ref + " --max-flip 2"), "--max-flip: expected a number from 0 to 1, got '2'");
     expectOneErrorLine(run("diff " + ref + " " + ref + " --device 0"), "diff does not take --device");
     expectOneErrorLine(run("diff " + ref + " " + path("nothing.png")), path("nothing.png") + ": no such file or folder");

@@ -101,6 +101,8 @@ TEST(Flip, FartherAwayFineDetailMattersLess) {
     const double near = flipStatistics(ldrFlip(checker, grey, 10.0f)).mean;
     const double far = flipStatistics(ldrFlip(checker, grey, 120.0f)).mean;
     EXPECT_LT(far, near);
+    // So close that the feature filter is one tap: still finite.
+    for (float e : ldrFlip(checker, grey, 0.5f)) ASSERT_TRUE(std::isfinite(e) && e >= 0.0f && e <= 1.0f) << e;
 }
 
 TEST(Flip, OutOfRangeValuesAreClampedForLdr) {
