@@ -21,6 +21,7 @@ auto& commonOf(Self& command) {
         case Kind::Soak: return command.soak.common;
         case Kind::ScaleReport: return command.scaleReport.common;
         case Kind::QualityReport: return command.qualityReport.common;
+        case Kind::Diff: return command.diff.common;
         case Kind::Help:
         case Kind::Version: break;
     }
@@ -141,6 +142,13 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         if (name.size() < 2 || name[0] != '-') {
             if (command.kind == Kind::Render) {
                 command.render.inputs.push_back(name);
+                continue;
+            }
+            if (command.kind == Kind::Diff) {  // A, then B
+                std::string& side = command.diff.reference.empty() ? command.diff.reference : command.diff.test;
+                if (!command.diff.test.empty())
+                    throw UserError("unexpected argument '" + name + "': diff compares two images or folders, A and B");
+                side = name;
                 continue;
             }
             if (command.kind != Kind::View)

@@ -176,8 +176,27 @@ struct QualityReportOptions {
     bool operator==(const QualityReportOptions&) const = default;
 };
 
+// `candela diff A B`: two PNG or EXR files, or two folders of them.
+struct DiffOptions {
+    CommonOptions common;              // (diff takes none of the common flags)
+    std::string reference;             // A
+    std::string test;                  // B
+    std::optional<float> ppd;          // --ppd PPD (unset: from the monitor flags)
+    float monitorDistance = 0.0f;      // --monitor-distance M
+    float monitorWidth = 0.0f;         // --monitor-width M
+    float monitorResolution = 0.0f;    // --monitor-resolution PX
+    double threshold = 0.0;            // --threshold LEVELS
+    std::optional<double> maxFlip;     // --max-flip X
+    std::optional<double> maxFraction; // --max-fraction F
+    std::string errorMaps;             // --error-maps DIR
+    std::string report;                // --report FILE (JSON)
+    std::string html;                  // --html FILE (a page of the comparison)
+    bool inlineImages = false;         // --inline-images
+    bool operator==(const DiffOptions&) const = default;
+};
+
 struct Command {
-    enum class Kind { Help, Render, View, Info, Bench, IblReport, Soak, ScaleReport, QualityReport, Version } kind = Kind::Help;
+    enum class Kind { Help, Render, View, Info, Bench, IblReport, Soak, ScaleReport, QualityReport, Diff, Version } kind = Kind::Help;
     std::string helpCommand;  // Help: the command whose flags to list ("" for `candela --help`)
     RenderOptions render;     // render, view and bench
     InfoOptions info;
@@ -185,6 +204,7 @@ struct Command {
     SoakOptions soak;
     ScaleReportOptions scaleReport;
     QualityReportOptions qualityReport;
+    DiffOptions diff;
     // The common options of the command (defaults for help and version).
     const CommonOptions& common() const;
     CommonOptions& common();

@@ -38,6 +38,11 @@ const std::vector<CommandInfo>& commandTable() {
          "render many frames headless, switching the environment, and report host and device memory over time (leaks "
          "show as growth after warm-up)",
          ""},
+        {Kind::Diff, "diff", "A B [flags]",
+         "compare two images, or two folders of images matched by relative path: FLIP (PNG: LDR-FLIP, EXR: "
+         "HDR-FLIP), PSNR, the largest channel difference and the pixels over a threshold",
+         "exit code 0 when every pair passes, 1 when one is over a threshold, missing on one side or of another "
+         "size, 2 for bad usage or an unreadable image; see docs/pipelines.md#candela-diff"},
         {Kind::Info, "info", "[flags]", "list the Vulkan devices, the one chosen and why, and the features enabled", ""},
     };
     return commands;

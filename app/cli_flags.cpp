@@ -45,6 +45,7 @@ void onOptions(Command& c, F&& f) {
         case Kind::Soak: return f(c.soak);
         case Kind::ScaleReport: return f(c.scaleReport);
         case Kind::QualityReport: return f(c.qualityReport);
+        case Kind::Diff: return f(c.diff);
         case Kind::Help:
         case Kind::Version: break;
     }
@@ -73,6 +74,20 @@ Flag sizeFlag(bool width) {
                 onOptions(c, [&](auto& o) { if constexpr (requires { o.width; }) (width ? o.width : o.height) = size; });
             },
             .example = width ? "64" : "48"};
+}
+
+// diff's numbers: a finite number > 0, and one from 0 to 1.
+float positiveNumber(Str flag, Str v, const char* unit) {
+    const float value = parseNumber(flag, v);
+    if (!(value > 0.0f)) throw UserError(flag + ": expected " + unit + " > 0, got '" + v + "'");
+    return value;
+}
+double unitFraction(Str flag, Str v) {
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(v.data(), v.data() + v.size(), value);
+    if (error != std::errc() || end != v.data() + v.size() || !(value >= 0.0 && value <= 1.0))
+        throw UserError(flag + ": expected a number from 0 to 1, got '" + v + "'");
+    return value;
 }
 
 // The table's rows that set a whole-number member of the IBL quality (checked by IblQuality::validate).
@@ -132,19 +147,26 @@ std::vector<Flag> makeFlagTable() {
          .uses = {{{Kind::Render}, "FILE",
                    "write a JSON report of the run: per scene the load, upload and frame times, triangles, draws, "
                    "textures and their bytes, extensions, warnings and the files written",
+                   ""},
+                  {{Kind::Diff}, "FILE",
+                   "write the viewing parameters, every pair's numbers, status and error map, and the totals as JSON",
                    ""}},
-         .set = [](Command& c, Str flag, Str v) { c.render.report = parsePath(flag, v); },
+         .set = [](Command& c, Str flag, Str v) { (c.kind == Kind::Diff ? c.diff.report : c.render.report) = parsePath(flag, v); },
          .example = "report.json"},
         {.name = "--html",
          .uses = {{{Kind::Render}, "FILE",
                    "write an HTML page of the run: a row per scene with its images, times, sizes, warnings and "
                    "failure, sortable (self-contained: no network; images beside it)",
+                   ""},
+                  {{Kind::Diff}, "FILE",
+                   "write an HTML page of the comparison: a row per pair with reference, test and FLIP map, the "
+                   "numbers, failures first, sortable (self-contained: no network; images beside it)",
                    ""}},
-         .set = [](Command& c, Str flag, Str v) { c.render.html = parsePath(flag, v); },
+         .set = [](Command& c, Str flag, Str v) { (c.kind == Kind::Diff ? c.diff.html : c.render.html) = parsePath(flag, v); },
          .example = "index.html"},
         {.name = "--inline-images",
-         .uses = {{{Kind::Render}, "", "put the images into the --html page (one file to pass on) instead of linking them", ""}},
-         .set = [](Command& c, Str, Str) { c.render.inlineImages = true; },
+         .uses = {{{Kind::Render, Kind::Diff}, "", "put the images into the --html page (one file to pass on) instead of linking them", ""}},
+         .set = [](Command& c, Str, Str) { (c.kind == Kind::Diff ? c.diff.inlineImages : c.render.inlineImages) = true; },
          },
         {.name = "--shard",
          .uses = {{{Kind::Render}, "I/N",
@@ -520,6 +542,54 @@ std::vector<Flag> makeFlagTable() {
          .uses = {{{Kind::Soak}, "K", "frames between memory samples", "100"}},
          .set = [](Command& c, Str flag, Str v) { c.soak.sampleEvery = parseCount(flag, v); },
          .example = "10"},
+        // ---- diff ----
+        {.name = "--ppd",
+         .uses = {{{Kind::Diff}, "PPD",
+                   "pixels per degree of visual angle the images are seen at; overrides the monitor flags [from "
+                   "them: about 67]",
+                   ""}},
+         .set = [](Command& c, Str flag, Str v) { c.diff.ppd = positiveNumber(flag, v, "pixels per degree"); },
+         .example = "40"},
+        {.name = "--monitor-distance",
+         .uses = {{{Kind::Diff}, "M", "distance from the viewer to the monitor in metres", "0.7"}},
+         .set = [](Command& c, Str flag, Str v) { c.diff.monitorDistance = positiveNumber(flag, v, "metres"); },
+         .example = "1"},
+        {.name = "--monitor-width",
+         .uses = {{{Kind::Diff}, "M", "width of the monitor's picture in metres", "0.7"}},
+         .set = [](Command& c, Str flag, Str v) { c.diff.monitorWidth = positiveNumber(flag, v, "metres"); },
+         .example = "0.5"},
+        {.name = "--monitor-resolution",
+         .uses = {{{Kind::Diff}, "PX", "the monitor's horizontal resolution in pixels", "3840"}},
+         .set = [](Command& c, Str flag, Str v) { c.diff.monitorResolution = positiveNumber(flag, v, "pixels"); },
+         .example = "1920"},
+        {.name = "--threshold",
+         .uses = {{{Kind::Diff}, "LEVELS",
+                   "a pixel is over the threshold when one of its channels differs by more than LEVELS levels of "
+                   "255 (EXR: LEVELS/255 in linear units)",
+                   "5"}},
+         .set = [](Command& c, Str flag, Str v) {
+             c.diff.threshold = parseNumber(flag, v);
+             if (c.diff.threshold < 0.0) throw UserError(flag + ": expected levels >= 0, got '" + v + "'");
+         },
+         .example = "2"},
+        {.name = "--max-flip",
+         .uses = {{{Kind::Diff}, "X", "fail a pair whose mean FLIP is above X (0 to 1) [not checked]", ""}},
+         .set = [](Command& c, Str flag, Str v) { c.diff.maxFlip = unitFraction(flag, v); },
+         .example = "0.05"},
+        {.name = "--max-fraction",
+         .uses = {{{Kind::Diff}, "F",
+                   "fail a pair whose fraction of pixels over --threshold is above F (0 to 1; Filament's renderdiff "
+                   "gate is --threshold 5 --max-fraction 0.001) [not checked]",
+                   ""}},
+         .set = [](Command& c, Str flag, Str v) { c.diff.maxFraction = unitFraction(flag, v); },
+         .example = "0.001"},
+        {.name = "--error-maps",
+         .uses = {{{Kind::Diff}, "DIR",
+                   "write each compared pair's FLIP error map as a magma-coloured PNG under DIR, at the pair's relative "
+                   "path (an EXR pair's with .png added)",
+                   ""}},
+         .set = [](Command& c, Str flag, Str v) { c.diff.errorMaps = parsePath(flag, v); },
+         .example = "maps"},
         // ---- device and output of every command ----
         {.name = "--device",
          .uses = {{kAll, "SEL", "device index or case-insensitive name substring (see candela info)", ""}},

@@ -23,6 +23,7 @@ int runIblReport(const IblReportOptions& options);
 int runSoak(const SoakOptions& options);
 int runScaleReport(const ScaleReportOptions& options);
 int runQualityReport(const QualityReportOptions& options);
+int runDiff(const DiffOptions& options);
 
 // Shared by render and bench: the context description (with the pipeline cache's folder:
 // --pipeline-cache, else the user's cache folder) and the render settings the flags choose.

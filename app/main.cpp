@@ -198,6 +198,7 @@ int main(int argc, char** argv) {
             case app::Command::Kind::Soak: return app::runSoak(command.soak);
             case app::Command::Kind::ScaleReport: return app::runScaleReport(command.scaleReport);
             case app::Command::Kind::QualityReport: return app::runQualityReport(command.qualityReport);
+            case app::Command::Kind::Diff: return app::runDiff(command.diff);
         }
     } catch (const UserError& e) {
         log::error(e.what());

@@ -9,14 +9,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// `file` as the page at `page` links it: relative to the page's folder.
-fs::path fromPage(const fs::path& file, const fs::path& page) {
-    std::error_code ec;
-    const fs::path folder = fs::absolute(page, ec).parent_path();
-    const fs::path relative = fs::absolute(file, ec).lexically_relative(folder);
-    return relative.empty() ? file : relative;
-}
-
 std::string format(const char* pattern, double value) {
     char text[64];
     std::snprintf(text, sizeof text, pattern, value);
@@ -44,10 +36,10 @@ io::PageRow sceneRow(const SceneReport& s, const fs::path& page) {
     }
     for (size_t i = 0; i < s.outputs.size(); ++i) {
         const fs::path file = s.outputs[i].file;
-        row.links.push_back({file.filename().string(), fromPage(file, page)});
+        row.links.push_back({file.filename().string(), io::pathFromPage(file, page)});
         if (i >= kThumbnails) continue;
         const bool shown = file.extension() == ".png";  // browsers show no EXR or PFM
-        row.images.push_back({s.outputs[i].label, shown ? fromPage(file, page) : fs::path(),
+        row.images.push_back({s.outputs[i].label, shown ? io::pathFromPage(file, page) : fs::path(),
                               shown ? "" : file.extension().string() + ": no preview"});
     }
     if (!s.ok && s.outputs.empty()) row.images.push_back({"render", {}, "not rendered"});

@@ -27,16 +27,16 @@ Json sceneJson(const SceneReport& s) {
     out["status"] = s.ok ? "ok" : "failed";
     if (!s.ok) {
         out["error"] = s.error;
-        out["exit_code"] = s.exitCode;
+        out["exitCode"] = s.exitCode;
     }
-    out["load_ms"] = ms(s.loadMs);
-    out["load_wait_ms"] = ms(s.loadWaitMs);
-    out["image_decode_ms"] = ms(s.imageDecodeMs);
-    out["decompression_ms"] = ms(s.decompressionMs);
-    out["geometry_ms"] = ms(s.geometryMs);
-    out["upload_ms"] = ms(s.uploadMs);
-    out["frame_ms"] = msList(s.frameMs);
-    out["gpu_ms"] = msList(s.gpuMs);
+    out["loadMs"] = ms(s.loadMs);
+    out["loadWaitMs"] = ms(s.loadWaitMs);
+    out["imageDecodeMs"] = ms(s.imageDecodeMs);
+    out["decompressionMs"] = ms(s.decompressionMs);
+    out["geometryMs"] = ms(s.geometryMs);
+    out["uploadMs"] = ms(s.uploadMs);
+    out["frameMs"] = msList(s.frameMs);
+    out["gpuMs"] = msList(s.gpuMs);
     out["triangles"] = s.triangles;
     out["draws"] = s.draws;
     Json textures = Json::array();
@@ -46,26 +46,26 @@ Json sceneJson(const SceneReport& s) {
                             {"format", t.format},
                             {"width", t.width},
                             {"height", t.height},
-                            {"encoded_bytes", t.encodedBytes},
-                            {"device_bytes", t.deviceBytes}});
+                            {"encodedBytes", t.encodedBytes},
+                            {"deviceBytes", t.deviceBytes}});
         encoded += t.encodedBytes;
         device += t.deviceBytes;
     }
-    out["texture_encoded_bytes"] = encoded;
-    out["texture_device_bytes"] = device;
+    out["textureEncodedBytes"] = encoded;
+    out["textureDeviceBytes"] = device;
     out["textures"] = textures;
     out["extensions"] = s.extensions;
     out["variants"] = s.variants;
     out["warnings"] = s.warnings;
     out["notes"] = s.notes;
-    out["validation_messages"] = s.validationMessages;
+    out["validationMessages"] = s.validationMessages;
     Json outputs = Json::array();
     for (const SceneReport::Output& o : s.outputs) outputs.push_back(o.file);
     out["outputs"] = outputs;
-    out["host_bytes"] = s.hostBytes;
-    out["device_bytes"] = s.deviceBytes;
-    out["retained_host_bytes"] = s.retainedHostBytes;
-    out["retained_device_bytes"] = s.retainedDeviceBytes;
+    out["hostBytes"] = s.hostBytes;
+    out["deviceBytes"] = s.deviceBytes;
+    out["retainedHostBytes"] = s.retainedHostBytes;
+    out["retainedDeviceBytes"] = s.retainedDeviceBytes;
     return out;
 }
 
@@ -83,16 +83,16 @@ std::string reportJson(const RunReport& r) {
     out["width"] = r.width;
     out["height"] = r.height;
     out["shard"] = {{"index", r.shard.index}, {"count", r.shard.count}};
-    out["scenes_listed"] = r.scenesListed;
-    out["scenes_rendered"] = r.scenes.size() - r.failed();
-    out["scenes_failed"] = r.failed();
-    out["total_ms"] = ms(r.totalMs);
-    out["startup_ms"] = ms(r.startupMs);
-    out["precompute_ms"] = ms(r.precomputeMs);
+    out["scenesListed"] = r.scenesListed;
+    out["scenesRendered"] = r.scenes.size() - r.failed();
+    out["scenesFailed"] = r.failed();
+    out["totalMs"] = ms(r.totalMs);
+    out["startupMs"] = ms(r.startupMs);
+    out["precomputeMs"] = ms(r.precomputeMs);
     out["precomputes"] = r.precomputes;
-    out["peak_host_bytes"] = r.peakHostBytes;
-    out["peak_device_bytes"] = r.peakDeviceBytes;
-    out["peak_device_memory_bytes"] = r.peakDeviceMemoryBytes;
+    out["peakHostBytes"] = r.peakHostBytes;
+    out["peakDeviceBytes"] = r.peakDeviceBytes;
+    out["peakDeviceMemoryBytes"] = r.peakDeviceMemoryBytes;
     Json scenes = Json::array();
     for (const SceneReport& s : r.scenes) scenes.push_back(sceneJson(s));
     out["scenes"] = scenes;

@@ -58,20 +58,20 @@ import json, sys
 r = json.load(open(sys.argv[1]))
 s = r["scenes"]
 mib = lambda b: b / 2**20
-load = sum(x["load_ms"] for x in s); wait = sum(x["load_wait_ms"] for x in s); upload = sum(x["upload_ms"] for x in s); frame = sum(sum(x["frame_ms"]) for x in s)
-print(f"last batch: {r['scenes_rendered']} rendered, {r['scenes_failed']} failed; total {r['total_ms'] / 1000:.2f} s, "
-      f"start-up {r['startup_ms'] / 1000:.2f} s, precompute {r['precompute_ms'] / 1000:.2f} s ({r['precomputes']}x)")
+load = sum(x["loadMs"] for x in s); wait = sum(x["loadWaitMs"] for x in s); upload = sum(x["uploadMs"] for x in s); frame = sum(sum(x["frameMs"]) for x in s)
+print(f"last batch: {r['scenesRendered']} rendered, {r['scenesFailed']} failed; total {r['totalMs'] / 1000:.2f} s, "
+      f"start-up {r['startupMs'] / 1000:.2f} s, precompute {r['precomputeMs'] / 1000:.2f} s ({r['precomputes']}x)")
 print(f"  summed over scenes: load {load / 1000:.2f} s on the loading thread, of which rendering waited for "
       f"{wait / 1000:.2f} s (the rest overlapped the previous scene); upload {upload / 1000:.2f} s, frames {frame / 1000:.2f} s")
-print(f"  peak: host {mib(r['peak_host_bytes']):.0f} MiB resident, device {mib(r['peak_device_bytes']):.0f} MiB in use "
-      f"({mib(r['peak_device_memory_bytes']):.0f} MiB held)")
+print(f"  peak: host {mib(r['peakHostBytes']):.0f} MiB resident, device {mib(r['peakDeviceBytes']):.0f} MiB in use "
+      f"({mib(r['peakDeviceMemoryBytes']):.0f} MiB held)")
 ok = [x for x in s if x["status"] == "ok"]
-for label, key in (("host resident", "retained_host_bytes"), ("device in use", "retained_device_bytes")):
+for label, key in (("host resident", "retainedHostBytes"), ("device in use", "retainedDeviceBytes")):
     v = [mib(x[key]) for x in ok]
     q = [v[0], v[len(v) // 4], v[len(v) // 2], v[3 * len(v) // 4], v[-1]]
     print(f"  after each scene, released ({label}, MiB) at scenes 1, n/4, n/2, 3n/4, n: " +
           ", ".join(f"{x:.1f}" for x in q) + f"; min {min(v):.1f}, max {max(v):.1f}")
-slow = sorted(ok, key=lambda x: -(x["load_ms"] + x["upload_ms"] + sum(x["frame_ms"])))[:5]
-print("  slowest: " + "; ".join(f"{x['path']} load {x['load_ms']:.0f} upload {x['upload_ms']:.0f} "
-                                 f"frame {sum(x['frame_ms']):.0f} ms" for x in slow))
+slow = sorted(ok, key=lambda x: -(x["loadMs"] + x["uploadMs"] + sum(x["frameMs"])))[:5]
+print("  slowest: " + "; ".join(f"{x['path']} load {x['loadMs']:.0f} upload {x['uploadMs']:.0f} "
+                                 f"frame {sum(x['frameMs']):.0f} ms" for x in slow))
 EOF

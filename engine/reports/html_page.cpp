@@ -333,4 +333,11 @@ void writeHtmlPage(const fs::path& path, const HtmlPage& page, bool inlineImages
     writeFileAtomically(path, [&](std::ostream& out) { out.write(html.data(), std::streamsize(html.size())); });
 }
 
+std::filesystem::path pathFromPage(const std::filesystem::path& file, const std::filesystem::path& page) {
+    std::error_code ec;
+    const std::filesystem::path folder = std::filesystem::absolute(page, ec).parent_path();
+    const std::filesystem::path relative = std::filesystem::absolute(file, ec).lexically_relative(folder);
+    return relative.empty() ? file : relative;
+}
+
 }  // namespace candela::io

@@ -97,6 +97,10 @@ std::string base64(std::string_view bytes);
 // errorColumn names no column, or when a column's decimals are outside 0…17.
 std::string renderHtmlPage(const HtmlPage& page, const HtmlPageOptions& options = {});
 
+// `file` as a page written at `page` refers to it: relative to the page's folder (both made
+// absolute first); `file` itself when no relative path exists.
+std::filesystem::path pathFromPage(const std::filesystem::path& file, const std::filesystem::path& page);
+
 // Renders the page and writes it to `path` atomically; relative image paths resolve against
 // `path`'s folder. Throws UserError naming the file when it cannot be written.
 void writeHtmlPage(const std::filesystem::path& path, const HtmlPage& page, bool inlineImages = false);

@@ -3,7 +3,7 @@
 namespace candela::io {
 
 std::string_view htmlPageStyle() {
-    return R"css(:root { --thumb-w: 200px; --thumb-h: 150px; }
+    return R"css(:root { --thumb-w: 160px; --thumb-h: 120px; }
 * { box-sizing: border-box; }
 body { margin: 0; font: 14px/1.4 "DejaVu Sans", system-ui, sans-serif; color: #1d232a; background: #f4f5f7; }
 header { padding: 14px 20px 10px; background: #fff; border-bottom: 1px solid #d6dae0; }

@@ -71,6 +71,7 @@ bool sameOptions(const Command& a, const Command& b) {
         case Command::Kind::Soak: return a.soak == b.soak;
         case Command::Kind::ScaleReport: return a.scaleReport == b.scaleReport;
         case Command::Kind::QualityReport: return a.qualityReport == b.qualityReport;
+        case Command::Kind::Diff: return a.diff == b.diff;
         case Command::Kind::Help:
         case Command::Kind::Version: break;
     }

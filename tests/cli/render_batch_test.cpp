@@ -80,9 +80,9 @@ TEST(RenderBatch, OneRunRendersWhatOneRunPerSceneRendersWithOnePrecompute) {
     }
     const Json report = readJson(dir / "report.json");
     EXPECT_EQ(report["precomputes"], 1);
-    EXPECT_EQ(report["scenes_listed"], 3);
-    EXPECT_EQ(report["scenes_failed"], 0);
-    EXPECT_GT(report["precompute_ms"].get<double>(), 0.0);
+    EXPECT_EQ(report["scenesListed"], 3);
+    EXPECT_EQ(report["scenesFailed"], 0);
+    EXPECT_GT(report["precomputeMs"].get<double>(), 0.0);
     ASSERT_EQ(report["scenes"].size(), 3u);
     const Json& box = report["scenes"][0];
     EXPECT_EQ(box["status"], "ok");
@@ -92,18 +92,18 @@ TEST(RenderBatch, OneRunRendersWhatOneRunPerSceneRendersWithOnePrecompute) {
     ASSERT_EQ(box["textures"].size(), 1u);
     EXPECT_EQ(box["textures"][0]["format"], "PNG");
     EXPECT_EQ(box["textures"][0]["width"], 256);
-    EXPECT_GT(box["textures"][0]["encoded_bytes"].get<uint64_t>(), 0u);
-    EXPECT_GE(box["textures"][0]["device_bytes"].get<uint64_t>(), 256u * 256u * 4u);  // RGBA8 with mips
+    EXPECT_GT(box["textures"][0]["encodedBytes"].get<uint64_t>(), 0u);
+    EXPECT_GE(box["textures"][0]["deviceBytes"].get<uint64_t>(), 256u * 256u * 4u);  // RGBA8 with mips
     EXPECT_EQ(box["outputs"], Json::array({(dir / "batch/BoxTextured.png").string()}));
-    EXPECT_GT(box["load_ms"].get<double>(), 0.0);
-    EXPECT_GT(box["upload_ms"].get<double>(), 0.0);
-    ASSERT_EQ(box["frame_ms"].size(), 1u);
+    EXPECT_GT(box["loadMs"].get<double>(), 0.0);
+    EXPECT_GT(box["uploadMs"].get<double>(), 0.0);
+    ASSERT_EQ(box["frameMs"].size(), 1u);
     const Json& cloth = report["scenes"][1];
     const std::vector<std::string> extensions = cloth["extensions"];
     EXPECT_NE(std::find(extensions.begin(), extensions.end(), "KHR_materials_sheen"), extensions.end());
     for (const Json& s : report["scenes"]) {
-        EXPECT_EQ(s["validation_messages"], 0);
-        EXPECT_GT(s["host_bytes"].get<uint64_t>(), 0u);
+        EXPECT_EQ(s["validationMessages"], 0);
+        EXPECT_GT(s["hostBytes"].get<uint64_t>(), 0u);
     }
 }
 
@@ -121,9 +121,9 @@ TEST(RenderBatch, AFailingSceneIsReportedAndTheRunGoesOn) {
     const std::string b = (dir / "lib/b.glb").string();
     EXPECT_NE(r.stderrText.find("1 of 3 scenes failed:\n  " + b + ": "), std::string::npos) << r.stderrText;
     const Json report = readJson(dir / "report.json");
-    EXPECT_EQ(report["scenes_failed"], 1);
+    EXPECT_EQ(report["scenesFailed"], 1);
     EXPECT_EQ(report["scenes"][1]["status"], "failed");
-    EXPECT_EQ(report["scenes"][1]["exit_code"], 2);
+    EXPECT_EQ(report["scenes"][1]["exitCode"], 2);
     EXPECT_EQ(report["scenes"][1]["error"].get<std::string>().rfind(b + ": ", 0), 0u);
     EXPECT_EQ(report["scenes"][2]["status"], "ok");
 }
@@ -138,7 +138,7 @@ TEST(RenderBatch, ShardsCoverEverySceneExactlyOnce) {
                              (dir / "out/{path}.png").string() + " --report " + report.string() + kSmall);
         ASSERT_EQ(r.exitCode, 0) << r.stderrText;
         const Json json = readJson(report);
-        EXPECT_EQ(json["scenes_listed"], 7);
+        EXPECT_EQ(json["scenesListed"], 7);
         EXPECT_EQ(json["shard"]["index"], shard);
         for (const Json& s : json["scenes"]) rendered.insert(s["path"].get<std::string>());
     }
@@ -180,14 +180,14 @@ TEST(RenderBatch, NothingOfASceneStaysOnTheDeviceAfterIt) {
     // it); from the second on, what a scene uses while it renders and what stays after it are the
     // same for each, the texture's bytes apart.
     const Json& second = report["scenes"][1];
-    EXPECT_GE(second["texture_device_bytes"].get<uint64_t>(), 128u * 128u * 4u);
+    EXPECT_GE(second["textureDeviceBytes"].get<uint64_t>(), 128u * 128u * 4u);
     for (size_t i = 1; i < 6; ++i) {
         const Json& s = report["scenes"][i];
-        EXPECT_EQ(s["device_bytes"], second["device_bytes"]) << s["name"];
-        EXPECT_EQ(s["retained_device_bytes"], second["retained_device_bytes"]) << s["name"];
+        EXPECT_EQ(s["deviceBytes"], second["deviceBytes"]) << s["name"];
+        EXPECT_EQ(s["retainedDeviceBytes"], second["retainedDeviceBytes"]) << s["name"];
     }
-    EXPECT_LE(second["retained_device_bytes"].get<uint64_t>() + second["texture_device_bytes"].get<uint64_t>(),
-              second["device_bytes"].get<uint64_t>());
+    EXPECT_LE(second["retainedDeviceBytes"].get<uint64_t>() + second["textureDeviceBytes"].get<uint64_t>(),
+              second["deviceBytes"].get<uint64_t>());
 }
 
 TEST(RenderBatch, OutputsThatWouldCollideAreRefusedBeforeRendering) {
