@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <thread>
 
 namespace candela::io {
 namespace {
@@ -347,17 +348,29 @@ FlipExposures flipExposures(const RgbImage& reference) {
 std::vector<float> hdrFlip(const RgbImage& reference, const RgbImage& test, float ppd, const FlipExposures& exposures) {
     checkPair(reference, test, ppd);
     if (exposures.count < 2) throw std::invalid_argument("flip: at least two exposures");
-    std::vector<float> error(size_t(reference.width) * reference.height, 0.0f);
-    if (error.empty()) return error;
-    RgbImage exposedReference = reference, exposedTest = test;
-    for (uint32_t i = 0; i < exposures.count; ++i) {
-        const float scale = std::pow(2.0f, exposures.exposure(i));
-        for (auto [in, out] : {std::pair{&reference, &exposedReference}, std::pair{&test, &exposedTest}})
-            for (size_t v = 0; v < in->rgb.size(); ++v) out->rgb[v] = std::clamp(flipToneMap(in->rgb[v] * scale), 0.0f, 1.0f);
-        const std::vector<float> exposed = ldrFlip(exposedReference, exposedTest, ppd);
-        for (size_t p = 0; p < error.size(); ++p) error[p] = std::max(error[p], exposed[p]);
+    const size_t pixels = size_t(reference.width) * reference.height;
+    if (pixels == 0) return {};
+    // The exposures are independent: each thread takes every T-th and keeps its own maximum.
+    const uint32_t threads = std::clamp(std::thread::hardware_concurrency(), 1u, exposures.count);
+    std::vector<std::vector<float>> errors(threads, std::vector<float>(pixels, 0.0f));
+    const auto work = [&](uint32_t thread) {
+        RgbImage exposedReference = reference, exposedTest = test;
+        for (uint32_t i = thread; i < exposures.count; i += threads) {
+            const float scale = std::pow(2.0f, exposures.exposure(i));
+            for (auto [in, out] : {std::pair{&reference, &exposedReference}, std::pair{&test, &exposedTest}})
+                for (size_t v = 0; v < in->rgb.size(); ++v) out->rgb[v] = std::clamp(flipToneMap(in->rgb[v] * scale), 0.0f, 1.0f);
+            const std::vector<float> exposed = ldrFlip(exposedReference, exposedTest, ppd);
+            for (size_t p = 0; p < pixels; ++p) errors[thread][p] = std::max(errors[thread][p], exposed[p]);
+        }
+    };
+    {
+        std::vector<std::jthread> workers;
+        for (uint32_t t = 1; t < threads; ++t) workers.emplace_back(work, t);
+        work(0);
     }
-    return error;
+    for (uint32_t t = 1; t < threads; ++t)
+        for (size_t p = 0; p < pixels; ++p) errors[0][p] = std::max(errors[0][p], errors[t][p]);
+    return std::move(errors[0]);
 }
 
 FlipStatistics flipStatistics(std::span<const float> error) {

@@ -70,7 +70,8 @@ float flipToneMap(float x);
 
 // HDR-ꟻLIP: for each exposure e of `exposures`, both images scaled by 2^e, tone mapped
 // (flipToneMap), clamped to [0, 1] and compared with LDR-ꟻLIP; each pixel's error is the largest
-// over the exposures. Preconditions as ldrFlip.
+// over the exposures (computed on as many threads as the machine has cores, at most one per
+// exposure). Preconditions as ldrFlip.
 std::vector<float> hdrFlip(const RgbImage& reference, const RgbImage& test, float ppd, const FlipExposures& exposures);
 
 // Summaries of an error map. The weighted percentiles are the reference tool's: the values sorted
