@@ -86,8 +86,8 @@ CONSUMERS = [
     *[(f"tests/unit/{name}", ["vk", "executor", "gpu_scene", "passes", "ui"], []) for name in ENGINE_UNIT_TESTS],
     # candela_unit_tests and the helpers every test binary shares: the CPU libraries only.
     ("tests/unit/", CPU, []),
-    # The fuzz build configures nothing above the readers.
-    ("tests/fuzz/", ["assets", "pose"], []),
+    # The fuzz build configures nothing above the readers (and the images `candela diff` reads).
+    ("tests/fuzz/", ["assets", "pose", "reports"], []),
     ("tests/", ALL, []),
     # candela_shaders defines shader/builtin_shaders.h.
     ("shaders/", ["shader", "shared"], []),

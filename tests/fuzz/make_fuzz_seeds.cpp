@@ -308,6 +308,22 @@ void makeSceneListSeeds(const fs::path& dir) {
     write("nested.txt", "a.glb\n@other.txt\n");
 }
 
+// The images `candela diff` compares: a byte choosing the format (0 PNG, 1 EXR), then the file —
+// the small PNG of the glTF seeds and every EXR seed.
+void makeComparedImageSeeds(const fs::path& out, const fs::path& dir) {
+    const auto prefixed = [](uint8_t format, const Bytes& file) {
+        Bytes bytes{format};
+        bytes.insert(bytes.end(), file.begin(), file.end());
+        return bytes;
+    };
+    write(dir / "small.png.seed", prefixed(0, smallPng()));
+    for (const auto& entry : fs::directory_iterator(out / "exr")) {
+        std::ifstream in(entry.path(), std::ios::binary);
+        const Bytes file{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        write(dir / (entry.path().filename().string() + ".seed"), prefixed(1, file));
+    }
+}
+
 // Lossless, lossy, with alpha and animated WebP files written with libwebp's encoder.
 void makeWebpSeeds(const fs::path& dir) {
     std::vector<uint8_t> pixels(24 * 10 * 4);
@@ -330,12 +346,13 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path out = argv[1];
-    for (const char* sub : {"gltf", "hdr", "exr", "ktx2", "webp", "scene_list"}) fs::create_directories(out / sub);
+    for (const char* sub : {"gltf", "hdr", "exr", "ktx2", "webp", "scene_list", "compared_image"}) fs::create_directories(out / sub);
     makeGltfSeeds(out / "gltf", smallPng());
     makeHdrSeeds(out / "hdr");
     makeExrSeeds(out / "exr");
     makeKtx2Seeds(out / "ktx2");
     makeWebpSeeds(out / "webp");
     makeSceneListSeeds(out / "scene_list");
+    makeComparedImageSeeds(out, out / "compared_image");
     return 0;
 }
