@@ -1,6 +1,7 @@
 #include "assets/gltf_images.h"
 
 #include "assets/gltf_accessors.h"
+#include "assets/image_file.h"
 
 #include "core/errors.h"
 #include "textures/ktx2_file.h"
@@ -136,6 +137,8 @@ DecodedImage decodeImage(const LoadContext& ctx, std::span<const uint8_t> bytes,
     image.format = pngDeclaredSize(bytes, image.width, image.height) ? "PNG"
                    : bytes.size() >= 2 && bytes[0] == 0xFF && bytes[1] == 0xD8 ? "JPEG"
                                                                                : "other";
+    if (image.format == "PNG")
+        if (const std::string problem = io::pngChunkProblem(bytes); !problem.empty()) ctx.fail(what + ": " + problem);
     int w = 0, h = 0, channels = 0;
     const size_t texels = size_t(width) * size_t(height);
     if (stbi_is_16_bit_from_memory(bytes.data(), length)) {

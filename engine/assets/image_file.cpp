@@ -101,4 +101,20 @@ void writePfm(const std::filesystem::path& path, uint32_t width, uint32_t height
     if (!out) throw UserError(path.string() + ": write failed");
 }
 
+std::string pngChunkProblem(std::span<const uint8_t> bytes) {
+    const auto be32 = [&](size_t at) {
+        return uint32_t(bytes[at]) << 24 | uint32_t(bytes[at + 1]) << 16 | uint32_t(bytes[at + 2]) << 8 | bytes[at + 3];
+    };
+    for (size_t offset = 8; offset + 8 <= bytes.size();) {
+        const uint64_t length = be32(offset);
+        const std::string type(reinterpret_cast<const char*>(&bytes[offset + 4]), 4);
+        if (length > bytes.size() - offset - 8)  // data (the CRC may be cut: stb_image ignores it)
+            return "chunk " + type + " at byte " + std::to_string(offset) + " declares " + std::to_string(length) +
+                   " bytes, past the end of the file (" + std::to_string(bytes.size()) + " bytes)";
+        if (type == "IEND") break;
+        offset += 12 + length;
+    }
+    return "";
+}
+
 }  // namespace candela::io

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <span>
+#include <string>
 
 namespace candela::io {
 
@@ -27,5 +28,12 @@ void writePng(const std::filesystem::path& path, uint32_t width, uint32_t height
 // `rgba`: width × height × 4 floats, top row first. Alpha is written to EXR, dropped for PFM.
 void writeExr(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const float> rgba);
 void writePfm(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const float> rgba);
+
+// Reading PNG with stb_image: the first chunk whose declared length passes the end of `bytes`,
+// as "chunk IDAT at byte 33 declares 1073741853 bytes, past the end of the file (120 bytes)"; ""
+// when every chunk up to IEND (or to where the data ends) fits. stb_image grows its buffer to a
+// chunk's declared length before reading it, so a file of a hundred bytes could make it allocate
+// gigabytes: callers check this first. Precondition: `bytes` starts with the PNG signature.
+std::string pngChunkProblem(std::span<const uint8_t> bytes);
 
 }  // namespace candela::io

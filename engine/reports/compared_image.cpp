@@ -1,6 +1,7 @@
 #include "reports/compared_image.h"
 
 #include "assets/environment.h"
+#include "assets/image_file.h"
 #include "core/errors.h"
 
 #include <stb_image.h>
@@ -58,6 +59,7 @@ ComparedImage readPng(const std::filesystem::path& path) {
     if (!std::equal(bytes.begin() + 12, bytes.begin() + 16, "IHDR")) fail(path, "not a PNG file (no IHDR chunk first)");
     const auto be32 = [&](size_t at) { return uint32_t(bytes[at]) << 24 | uint32_t(bytes[at + 1]) << 16 | uint32_t(bytes[at + 2]) << 8 | bytes[at + 3]; };
     checkSize(path, be32(16), be32(20));
+    if (const std::string problem = pngChunkProblem(bytes); !problem.empty()) fail(path, problem);
     int w = 0, h = 0, channels = 0;
     std::unique_ptr<uint8_t, StbiFree> pixels(stbi_load_from_memory(bytes.data(), length, &w, &h, &channels, 3));
     if (!pixels) {

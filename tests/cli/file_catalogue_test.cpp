@@ -271,7 +271,8 @@ std::vector<Row> catalogue() {
             Bytes png = smallPng();
             png.resize(keep);
             return texturedTriangle("", png).writeGlb(dir);
-        }, "image 0: cannot decode image");
+        }, keep < 45 ? std::string("image 0: cannot decode image")  // cut before the IDAT chunk's header ends
+                     : "image 0: chunk IDAT at byte 33 declares 29 bytes, past the end of the file (" + std::to_string(keep) + " bytes)");
     const size_t hdrHeader = afterLine(goodHdr(), "-Y");
     auto hdrCut = [](size_t keep) -> std::string {
         if (keep < 2) return "not a Radiance HDR file";

@@ -195,9 +195,9 @@ std::vector<BadCase> badCases() {
         }, "cannot decode image");
     add("TruncatedPngData", [](const fs::path& dir) {
             Bytes png = smallPng();
-            png.resize(png.size() - 20);  // IDAT cut short
+            png.resize(png.size() - 20);  // IDAT cut short: found before stb_image reads it
             return texturedTriangle("", png).writeGlb(dir);
-        }, "cannot decode image");
+        }, "image 0: chunk IDAT at byte 33 declares 29 bytes, past the end of the file (66 bytes)");
     add("ImageBufferViewPastBuffer", [](const fs::path& dir) {
             GltfBuilder b = texturedTriangle("", smallPng());
             b.doc["bufferViews"][b.doc["images"][0]["bufferView"].get<int>()]["byteLength"] = 1 << 20;

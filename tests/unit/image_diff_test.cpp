@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 
 namespace candela::io {
 namespace {
@@ -128,6 +129,11 @@ TEST_F(DiffFiles, BadFilesAreOneLineErrorsNamingTheFile) {
         {file("huge.png", header + be32(100000) + be32(100000) + std::string(64, '\0')), "exceeds the limit"},
         {file("zero.png", header + be32(0) + be32(16) + std::string(64, '\0')), "zero image size"},
         {file("cut.png", header + be32(16) + be32(16) + std::string("\x08\x02\0\0\0", 5)), "cannot decode PNG"},
+        // A chunk that declares a gigabyte in a file of 57 bytes: refused before stb_image grows its
+        // buffer to it (the compared-image fuzzer's finding).
+        {file("idat.png", header + be32(2) + be32(2) + std::string("\x08\x06\0\0\0", 5) + be32(0) + be32(0x40000000) + "IDAT" +
+                              std::string(16, '\0')),
+         "chunk IDAT at byte 33 declares 1073741824 bytes, past the end of the file (57 bytes)"},
         {file("text.exr", "not an exr at all"), "not an OpenEXR file"},
         {file("cut.exr", std::string("\x76\x2f\x31\x01\x02\0\0\0", 8)), ""},
         {file("image.jpg", "jpeg"), "not a .png or .exr file"},
@@ -142,6 +148,24 @@ TEST_F(DiffFiles, BadFilesAreOneLineErrorsNamingTheFile) {
         }
         test::expectOneLineErrorNamingFile(row.path, message, row.fragment);
     }
+}
+
+// Every input the compared-image fuzzer (tests/fuzz/fuzz_compared_image.cpp) failed on — a format
+// byte, then the file — reads or fails with a UserError.
+TEST_F(DiffFiles, FuzzRegressionsReadOrFailCleanly) {
+    size_t inputs = 0;
+    for (const auto& entry : fs::directory_iterator(fs::path(CANDELA_FUZZ_REGRESSIONS) / "compared_image")) {
+        std::ifstream in(entry.path(), std::ios::binary);
+        const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        if (bytes.empty()) continue;
+        const fs::path path = file(std::string("input") + ((bytes[0] & 1) ? ".exr" : ".png"), bytes.substr(1));
+        try {
+            readComparedImage(path);
+        } catch (const UserError&) {
+        }
+        ++inputs;
+    }
+    EXPECT_GE(inputs, 1u);
 }
 
 TEST_F(DiffFiles, PairStatuses) {
