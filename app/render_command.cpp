@@ -241,7 +241,7 @@ int runRender(const RenderOptions& options) {
     if (!scenes.empty()) startLoad(0);
     const std::optional<scene::Environment> environment = loadEnvironment(options.env);
     std::optional<LoadedScene> first;
-    if (single) {
+    if (single && !scenes.empty()) {
         // Bad input fails before the device starts, as it always has for one scene.
         first = next.get();
         if (first->error) std::rethrow_exception(first->error);

@@ -150,6 +150,18 @@ TEST(RenderBatch, ShardsCoverEverySceneExactlyOnce) {
     }
 }
 
+TEST(RenderBatch, AShardWithoutScenesRendersNothingAndSucceeds) {
+    TempDir dir("candela_batch");
+    const fs::path scene = triangle(dir.path(), "only");
+    const Result r = run("render " + scene.string() + " --shard 2/2 --out " + (dir / "{name}.png").string() + " --report " +
+                         (dir / "report.json").string() + kSmall);
+    EXPECT_EQ(r.exitCode, 0) << r.stderrText;
+    EXPECT_FALSE(fs::exists(dir / "only.png"));
+    const Json report = readJson(dir / "report.json");
+    EXPECT_EQ(report["scenesListed"], 1);
+    EXPECT_EQ(report["scenes"].size(), 0u);
+}
+
 TEST(RenderBatch, VariantsAndSequencesArePerScene) {
     TempDir dir("candela_batch");
     const fs::path shoe = variantsTriangle(dir / "lib");
