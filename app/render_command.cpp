@@ -194,6 +194,19 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
 // image format, and a different file for every scene. Returns the format.
 io::ImageFileFormat checkOutputs(const RenderOptions& options, const std::vector<SceneInput>& scenes, bool sequence) {
     checkOutPattern(options.out);
+    if (!options.out.empty() && options.out.back() == '/')
+        throw UserError("--out " + options.out + ": names a folder; give a file in it, e.g. --out " + options.out + "candela.png");
+    if (!sequence) {
+        bool frameField = usesField(options.out, "frame");
+        try {
+            sequenceFileName(options.out, 0);
+            frameField = true;
+        } catch (const UserError&) {
+        }
+        if (frameField)
+            throw UserError("--out " + options.out + ": a frame number field without --frames N (an image sequence); "
+                            "give --frames, or write %% for a literal %");
+    }
     if (options.variant == "all" && !usesField(options.out, "variant"))
         throw UserError("--variant all: --out needs {variant} in its pattern (one image per variant), e.g. --out '{name}-{variant}.png'");
     std::map<std::string, std::string> writer;  // output → the scene that writes it

@@ -296,12 +296,28 @@ bool loadImageCallback(tinygltf::Image* image, const int index, std::string*, st
     return true;
 }
 
+// The kind of file `file` looks like when it is one of the images or environments people pass
+// for a scene by mistake ("" otherwise).
+std::string notGltfKind(std::span<const uint8_t> file) {
+    const auto starts = [&](std::string_view magic) {
+        return file.size() >= magic.size() && std::memcmp(file.data(), magic.data(), magic.size()) == 0;
+    };
+    if (starts("\x89PNG\r\n\x1a\n")) return "a PNG image";
+    if (starts("\xff\xd8\xff")) return "a JPEG image";
+    if (starts("RIFF") && file.size() >= 12 && std::memcmp(file.data() + 8, "WEBP", 4) == 0) return "a WebP image";
+    if (starts("\xabKTX 20\xbb")) return "a KTX2 texture";
+    if (starts("#?RADIANCE") || starts("#?RGBE")) return "a Radiance HDR environment (use it with --env)";
+    if (starts("\x76\x2f\x31\x01")) return "an OpenEXR image (an environment goes to --env)";
+    return "";
+}
+
 }  // namespace
 
 ParsedFile parseGltf(const LoadContext& ctx, std::span<const uint8_t> file, const std::filesystem::path& path,
                      uint32_t maxImageDimension) {
     if (file.empty()) ctx.fail("empty file");
     if (file.size() >= std::numeric_limits<uint32_t>::max()) ctx.fail("file larger than 4 GiB");
+    if (const std::string kind = notGltfKind(file); !kind.empty()) ctx.fail("not a glTF file: looks like " + kind);
     const bool binary = file.size() >= 4 && readU32(file.data()) == kGlbMagic;
     GlbChunks chunks;
     if (binary) chunks = readGlb(ctx, file);

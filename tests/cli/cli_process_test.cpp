@@ -90,6 +90,7 @@ std::filesystem::path writeSceneFiles() {
     writeFile(dir / "truncated.glb", glb.substr(0, glb.size() / 2));
     writeFile(dir / "syntax.gltf", R"({"asset": {"version": "2.0"},})");
     writeFile(dir / "scene.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    writeFile(dir / "image.png", std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16));
     writeFile(dir / "nested.txt", "triangle.gltf\n@other.txt\n");
     writeFile(dir / "comments.txt", "# nothing but comments\n\n   \n");
     writeFile(dir / "binary.txt", std::string("\x7f" "ELF\0\x02\x01", 8));
@@ -141,6 +142,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"FolderWithoutScenes", "render {dir}/folder.gltf --out {dir}/x.png", "no glTF scene (.gltf or .glb) in {dir}/folder.gltf"},
                       BadInput{"ShardBeyondCount", "render --shard 5/4", "--shard: expected I/N with 1 <= I <= N (this machine's share of N), got '5/4'"},
                       BadInput{"OutPatternUnknownField", "render --out {dir}/{scene}.png", "unknown field {scene}"},
+                      BadInput{"PngAsScene", "render --scene {dir}/image.png --out {dir}/x.png", "{dir}/image.png: not a glTF file: looks like a PNG image"},
+                      BadInput{"OutIsAFolder", "render --out {dir}/renders/", "--out {dir}/renders/: names a folder; give a file in it, e.g. --out {dir}/renders/candela.png"},
+                      BadInput{"FrameFieldWithoutFrames", "render --out {dir}/x_%04d.png", "--out {dir}/x_%04d.png: a frame number field without --frames N"},
+                      BadInput{"FrameBracesWithoutFrames", "render --out '{dir}/x_{frame}.png'", "a frame number field without --frames N"},
                       BadInput{"ZeroWidth", "render --width 0 --out /tmp/candela_zero.png", "--width: must be at least 1"},
                       BadInput{"ZeroHeight", "render --height 0 --out /tmp/candela_zero.png", "--height: must be at least 1"},
                       BadInput{"NegativeWidth", "render --width -5", "--width: expected a whole number"},
