@@ -210,11 +210,7 @@ int runDiff(const DiffOptions& options) {
         std::printf(" (%g m from a %g m wide, %g-pixel monitor)", s.viewing.monitorDistance, s.viewing.monitorWidth,
                     s.viewing.monitorResolution);
     std::printf("\n");
-    if (!options.report.empty()) {
-        std::ofstream out(options.report, std::ios::binary);
-        out << reportJson(report).dump(2) << "\n";
-        if (!out) throw UserError(options.report + ": cannot write");
-    }
+    if (!options.report.empty()) writeText(options.report, reportJson(report).dump(2) + "\n");
     if (!options.html.empty()) io::writeHtmlPage(options.html, diffPage(report, options.html), options.inlineImages);
     if (report.count(io::DiffStatus::Unreadable)) return 2;
     return report.passed() ? 0 : 1;

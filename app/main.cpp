@@ -17,6 +17,7 @@
 #include "vk/device_select.h"
 
 #include <cstdio>
+#include <fstream>
 
 namespace candela::app {
 
@@ -42,6 +43,12 @@ scene::Scene loadScene(const RenderOptions& options) {
     for (const std::string& note : scene.notes) log::info(options.scene + ": " + note);
     if (!options.variant.empty()) scene::selectVariant(scene, scene::variantIndex(scene, options.variant));
     return scene;
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out) throw UserError(path + ": cannot write");
 }
 
 void prepareReportFolder(const std::filesystem::path& out, std::initializer_list<const char*> files) {

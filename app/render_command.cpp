@@ -28,12 +28,6 @@ using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
-void writeText(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) throw UserError(path + ": cannot write");
-}
-
 // Creates the folder `file` goes in.
 void createFolderOf(const std::filesystem::path& file) {
     std::error_code ec;
