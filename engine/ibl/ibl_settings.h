@@ -38,6 +38,10 @@ struct IblQuality {
     // Added to the filtered-importance-sampling lod (Křivánek & Colbert: +1). Larger: less noise
     // from small bright sources, more blur (a smooth gradient regresses toward its mean).
     float lodBias = 0.5f;
+    // At most this many of the environment's brightest texels (those over kBrightTexelFactor × its
+    // mean luminance: a sun) are summed explicitly by every filter pass instead of being sampled
+    // (engine/ibl_maps/bright_texels.h); 0: everything is sampled. "bright=N" in the canonical text.
+    uint32_t brightTexels = 256;
     IrradianceMode irradiance = IrradianceMode::Sh9;
     uint32_t shSourceSize = 32;       // face size of the cube mip projected onto SH9 (2^k ≤ cubeSize)
     uint32_t irradianceSize = 32;     // face size of the irradiance cube (cube mode)
@@ -57,7 +61,7 @@ struct IblQuality {
     // Specular mips actually used: min(specularLevels, log2(cubeSize) + 1).
     uint32_t levels() const;
     // The canonical text of every member (the cache key's settings part), e.g.
-    // "v1 cube=256 levels=6 prefilter=32:bias0.500 irradiance=sh9:32 lut=128x256". Members that the mode does
+    // "v4 cube=256 levels=6 prefilter=32:bias0.500 bright=256 irradiance=sh9:32 lut=128x256". Members that the mode does
     // not use are left out, so they do not split the cache.
     std::string canonical() const;
     // The part that only the BRDF LUT depends on.
