@@ -42,7 +42,9 @@ struct IblQuality {
     // mean luminance: a sun) are summed explicitly by every filter pass instead of being sampled
     // (engine/ibl_maps/bright_texels.h); 0: everything is sampled. "bright=N" in the canonical text.
     uint32_t brightTexels = 256;
-    IrradianceMode irradiance = IrradianceMode::Sh9;
+    // The cube: with the bright texels summed it converges at a few dozen samples, while SH9's order-2
+    // truncation of a sun stays the largest visible error of the maps (docs/ibl.md, "Defaults and why").
+    IrradianceMode irradiance = IrradianceMode::Cube;
     uint32_t shSourceSize = 32;       // face size of the cube mip projected onto SH9 (2^k ≤ cubeSize)
     uint32_t irradianceSize = 32;     // face size of the irradiance cube (cube mode)
     uint32_t irradianceSamples = 256; // cosine samples per irradiance texel (cube mode)
