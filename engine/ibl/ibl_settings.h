@@ -28,10 +28,10 @@ constexpr const char* irradianceModeName(IrradianceMode mode) { return nameOf(kI
 
 struct IblQuality {
     uint32_t cubeSize = 256;          // face size of the float environment cube and of specular mip 0 (2^k, 16..2048)
-    uint32_t specularLevels = 6;      // roughness levels 0, 1/(L−1) … 1 (at most log2(cubeSize) + 1)
+    uint32_t specularLevels = 8;      // roughness levels 0, 1/(L−1) … 1 (at most log2(cubeSize) + 1)
     // GGX samples per texel of specular mip 1 (roughness 1/(levels−1)); each coarser mip, with 4×
     // fewer texels, takes 4× more (at most 4096), so every level costs the same.
-    uint32_t prefilterSamples = 32;
+    uint32_t prefilterSamples = 64;
     // Filtered importance sampling (each sample reads the source mip matching its solid angle);
     // false: plain importance sampling from mip 0, the brute-force comparison of `ibl-report`.
     bool filteredSampling = true;
@@ -63,7 +63,7 @@ struct IblQuality {
     // Specular mips actually used: min(specularLevels, log2(cubeSize) + 1).
     uint32_t levels() const;
     // The canonical text of every member (the cache key's settings part), e.g.
-    // "v4 cube=256 levels=6 prefilter=32:bias0.500 bright=256 irradiance=sh9:32 lut=128x256". Members that the mode does
+    // "v4 cube=256 levels=8 prefilter=64:bias0.500 bright=256 irradiance=cube:32x256 lut=128x256". Members that the mode does
     // not use are left out, so they do not split the cache.
     std::string canonical() const;
     // The part that only the BRDF LUT depends on.
