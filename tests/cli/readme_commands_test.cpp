@@ -8,7 +8,7 @@
 // Xvfb for kViewSeconds and must print no error and no validation message in that time (or exit
 // 0), then is ended. See docs/testing.md#the-readmes-commands.
 #include "run_candela.h"
-#include "xvfb.h"
+#include "../viewer/xvfb.h"
 
 #include <gtest/gtest.h>
 
