@@ -40,6 +40,13 @@ std::vector<Setting> sweep(bool quick) {
     };
     const std::vector<uint32_t> fis = quick ? std::vector<uint32_t>{16, 64} : std::vector<uint32_t>{8, 16, 32, 64, 128, 256, 512, 1024, 2048};
     for (uint32_t n : fis) add("prefilter, filtered IS", std::to_string(n), [&](ibl::IblQuality& q) { q.prefilterSamples = n; });
+    // The defaults before the bright-texel split (kept as a row to compare with).
+    add("previous default", "32 samples, 6 levels, sun sampled, sh9", [&](ibl::IblQuality& q) {
+        q.prefilterSamples = 32;
+        q.specularLevels = 6;
+        q.brightTexels = 0;
+        q.irradiance = ibl::IrradianceMode::Sh9;
+    });
     // The same without the bright-texel split: the sun sampled like the rest (the defaults before it).
     const std::vector<uint32_t> sampledSun = quick ? std::vector<uint32_t>{32} : std::vector<uint32_t>{8, 32, 128, 512, 2048};
     for (uint32_t n : sampledSun)
