@@ -468,7 +468,7 @@ std::vector<Flag> makeFlagTable() {
          .set = [](Command& c, Str flag, Str v) {
              c.render.iblQuality.irradiance = parseChoice(flag, ibl::kIrradianceModeNames, v);
          },
-         .example = "cube"},
+         .example = "sh9"},
         iblQualityFlag("--ibl-cube-size", "environment cube face size, 2^k from 16 to 2048", &ibl::IblQuality::cubeSize, "128"),
         iblQualityFlag("--ibl-levels", "specular roughness levels (mips)", &ibl::IblQuality::specularLevels, "5"),
         iblQualityFlag("--ibl-prefilter-samples",
