@@ -195,9 +195,13 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     // Without skin_morph the skinned and morphed draws have no vertices to draw: they are left out.
     std::span<const scene::Draw> draws = animated ? std::span(pose->draws()) : std::span(scene.draws);
     std::vector<scene::Draw> undeformed;
+    uint32_t leftOut = 0;  // visible draws hidden here (not counted as hidden by KHR_node_visibility)
     if (deformOff) {
         undeformed.assign(draws.begin(), draws.end());
-        for (uint32_t d : pose->deformedDraws()) undeformed[d].hidden = true;
+        for (uint32_t d : pose->deformedDraws()) {
+            leftOut += undeformed[d].hidden ? 0 : 1;
+            undeformed[d].hidden = true;
+        }
         draws = undeformed;
     }
     const auto posed = animated ? std::optional(addPosedDraws(frame, scene, *pose)) : std::nullopt;
@@ -214,13 +218,14 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     mScene.applyParameters(mParameters, mForward.reflection(), mForward.layeredReflection());
 
     // Debug views show data, not what lies behind: transmissive draws are then drawn with the rest.
-    const passes::DrawList list = passes::buildDrawList({.scene = scene,
-                                                         .keys = mScene.materialKeys(),
-                                                         .draws = draws,
-                                                         .view = view,
-                                                         .targetHeight = settings.height,
-                                                         .selection = settings.drawSelection,
-                                                         .transmission = settings.debugView == passes::DebugView::None});
+    passes::DrawList list = passes::buildDrawList({.scene = scene,
+                                                   .keys = mScene.materialKeys(),
+                                                   .draws = draws,
+                                                   .view = view,
+                                                   .targetHeight = settings.height,
+                                                   .selection = settings.drawSelection,
+                                                   .transmission = settings.debugView == passes::DebugView::None});
+    list.hiddenDraws -= leftOut;  // their own note says why (addSkinMorph)
     const passes::ForwardPass::FrameInputs inputs = mForward.frameInputs({.view = view,
                                                                           .model = settings.shading,
                                                                           .ibl = ibl ? &*ibl : nullptr,

@@ -127,6 +127,7 @@ TEST_F(PoseAndPasses, SkinnedMeshesWithoutSkinMorphAreLeftOut) {
     ASSERT_EQ(off.exitCode, 0) << off.stderrText;
     EXPECT_EQ(off.stderrText, "");
     EXPECT_NE(off.stdoutText.find("left out: the 1 deformed draws (skin_morph disabled"), std::string::npos) << off.stdoutText;
+    EXPECT_EQ(off.stdoutText.find("hidden"), std::string::npos) << "not counted as hidden nodes:\n" << off.stdoutText;
     EXPECT_EQ(image("off.png").unlikeCorner(), 0) << "the Fox (its one skinned draw) is not drawn";
 }
 
