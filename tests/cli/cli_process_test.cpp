@@ -190,6 +190,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"IblCubeSizeNotPowerOfTwo", "render --ibl-cube-size 100 --out {dir}/x.png", "--ibl-cube-size 100: must be a power of two from 16 to 2048"},
                       BadInput{"IblShSizeAboveCube", "render --ibl-cube-size 64 --ibl-sh-size 128 --out {dir}/x.png", "--ibl-sh-size 128: must be a power of two from 1 to 64"},
                       BadInput{"IblPrefilterSamplesZero", "render --ibl-prefilter-samples 0 --out {dir}/x.png", "--ibl-prefilter-samples 0: must be from 1 to 65536"},
+                      BadInput{"IblBrightTexelsTooMany", "render --ibl-bright-texels 70000 --out {dir}/x.png", "--ibl-bright-texels 70000: must be from 0 to 65536"},
                       BadInput{"IblReportWithoutEnvironment", "ibl-report --env none --out {dir}/r", "--env: ibl-report needs an environment"},
                       BadInput{"IblReportZeroRepeats", "ibl-report --repeats 0 --out {dir}/r", "--repeats: must be at least 1"},
                       BadInput{"IblReportUnwritableOut", "ibl-report --out /proc/candela-report", "/proc/candela-report: cannot create the report folder"},
