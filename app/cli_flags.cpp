@@ -402,7 +402,9 @@ std::vector<Flag> makeFlagTable() {
          .set = [](Command& c, Str flag, Str v) { c.render.frustumCulling = parseChoice(flag, kOnOff, v); },
          .example = "off"},
         {.name = "--disable-pass",
-         .uses = {{kRenderViewBench, "NAME", "switch a pass off (repeatable); passes that lose their input are culled too", ""}},
+         .uses = {{kRenderViewBench, "NAME", "switch a pass off (repeatable): the frame is drawn without what it adds (skybox: no sky; "
+                   "transmission_background: transmissive surfaces see only the background; skin_morph: skinned and "
+                   "morphed meshes left out); a pass the image cannot be made without is an error naming it", ""}},
          .set = [](Command& c, Str, Str v) { c.render.disabledPasses.push_back(v); },
          .example = "skybox"},
         // ---- lights and image-based lighting ----

@@ -122,6 +122,7 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
     r.warnings = scene.warnings;
     r.notes = scene.notes;
     log::Capture capture;  // what the renderer logs from here on belongs to this scene
+    warnAnimationConflicts(options, scene);  // once per scene, whatever the variants
 
     std::vector<std::optional<uint32_t>> variants;
     if (options.variant == "all") {

@@ -68,8 +68,10 @@ private:
     // why (for --explain; "" when the request was followed without a reason to give).
     std::pair<passes::ShadingPath, std::string> shadingPath(passes::ShadingPath requested,
                                                             const passes::FrameVariant& variant) const;
-    // Adds the skin_morph pass for the pose's deformed draws; nullopt (and a note) when none is.
-    std::optional<passes::ForwardPass::DeformedVertices> addSkinMorph(Frame& frame, const scene::ScenePose& pose);
+    // Adds the skin_morph pass for the pose's deformed draws; nullopt (and a note) when none is, or
+    // when the pass is `disabled` (--disable-pass skin_morph: it is declared, to be switched off, and
+    // the caller leaves the deformed draws out of the frame).
+    std::optional<passes::ForwardPass::DeformedVertices> addSkinMorph(Frame& frame, const scene::ScenePose& pose, bool disabled);
     // The per-frame buffers of an animated pose — the posed draws (a node moves), lights (a light
     // moves, shows, hides or has an animated property) and materials (and their layer data) with
     // animated properties — each only when something it holds animates; and a note for --explain
@@ -81,7 +83,9 @@ private:
     passes::TonemapSettings tonemapOf(const RenderSettings& settings, bool ibl) const;
     // What the scene frame added besides the forward draws.
     struct Scheduled {
-        bool sheenLut = false, transmission = false, ibl = false, skybox = false, skyInTonemap = false;
+        bool sheenLut = false, transmission = false;
+        bool seesOpaqueImage = false;  // the transmissive draws read transmission_background (it is not disabled)
+        bool ibl = false, skybox = false, skyInTonemap = false;
     };
     // Adds the frame's notes: lights, MSAA, the forward passes' `forward` lines, the maps, sheen LUT,
     // transmission, debug view and skybox.

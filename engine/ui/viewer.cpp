@@ -6,6 +6,7 @@
 #include "core/errors.h"
 #include "core/log.h"
 #include "graph/graph_export.h"
+#include "pose/animation_conflicts.h"
 #include "pose/picking.h"
 #include "scene/material_variants.h"
 #include "shader/shader_library.h"
@@ -70,6 +71,10 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
       mSettings(std::move(content.settings)) {
     mVariant = content.variant;
     mPose = std::make_unique<scene::ScenePose>(mScene, scene::selectAnimations(mScene, content.animations));
+    // Said once here; the animation panel shows it while the ticked animations overlap.
+    if (const std::string overlap = scene::describeAnimationConflicts(mScene, scene::animationConflicts(mScene, mPose->playing()));
+        !overlap.empty())
+        log::warn(mScene.source + ": " + overlap);
     mAnimationTime = content.time;
     mPose->evaluate(mAnimationTime);
     mWindow = std::make_unique<Window>(desc.window);
