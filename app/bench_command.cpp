@@ -114,6 +114,7 @@ int runBench(const RenderOptions& options) {
     scene::ScenePose pose = loadPose(options, scene);
     warnAnimationConflicts(options, scene);
     settings.pose = &pose;
+    log::info("camera: " + Renderer::cameraFlags(scene, settings.camera, float(settings.width) / float(settings.height), &pose));
     std::vector<double> animationMs;
     const auto advance = [&](uint32_t frame) {
         const auto start = std::chrono::steady_clock::now();

@@ -140,7 +140,10 @@ std::vector<Flag> makeFlagTable() {
          },
          .example = "24"},
         {.name = "--turntable",
-         .uses = {{{Kind::Render}, "DEGREES", "turn the orbit camera by DEGREES over an image sequence (360: once round)", "0"}},
+         .uses = {{{Kind::Render}, "DEGREES",
+                   "turn the orbit camera by DEGREES over an image sequence (360: once round), framed at one "
+                   "distance",
+                   "0"}},
          .set = [](Command& c, Str flag, Str v) { c.render.turntableDegrees = parseNumber(flag, v); },
          .example = "90"},
         {.name = "--report",
@@ -184,8 +187,14 @@ std::vector<Flag> makeFlagTable() {
          .set = [](Command& c, Str flag, Str v) { c.render.graphJson = parsePath(flag, v); },
          .example = "graph.json"},
         {.name = "--explain",
-         .uses = {{{Kind::Render}, "", "print which passes and shader variants were left out, and why", ""},
-                  {{Kind::Bench}, "", "print which passes and shader variants the measured frames left out, and why (with --json: as \"explain\")", ""}},
+         .uses = {{{Kind::Render}, "",
+                   "print the camera used (as the flags that reproduce it) and which passes and shader variants were "
+                   "left out, and why",
+                   ""},
+                  {{Kind::Bench}, "",
+                   "print the camera used (as the flags that reproduce it) and which passes and shader variants the "
+                   "measured frames left out, and why (with --json: as \"explain\")",
+                   ""}},
          .set = [](Command& c, Str, Str) { c.render.explain = true; }},
         {.name = "--dither",
          .uses = {{{Kind::Render, Kind::Bench}, "", "dither the 8-bit output (the viewer always does)", ""}},
@@ -278,7 +287,9 @@ std::vector<Flag> makeFlagTable() {
         {.name = "--camera-orbit",
          .uses = {{kRenderViewBench, "T,P,R",
                    "orbit camera: azimuth T and polar angle P in degrees, distance R in metres (eye = target + R(sin P "
-                   "sin T, cos P, sin P cos T); R <= 0 frames the scene) [0,90,0: from +Z, framing the scene bounds]",
+                   "sin T, cos P, sin P cos T); R <= 0 frames the scene: the nearest distance where its bounding box fits "
+                   "the image at a 45-degree field of view) [0,75,0: from the front, 15 degrees above the horizon, framing "
+                   "the scene; the built-in grid head-on, 0,90,0; --explain prints the camera used as flags]",
                    ""}},
          .set = [](Command& c, Str flag, Str v) { c.render.cameraOrbit = parseTriple(flag, v); },
          .example = "30,70,5"},
@@ -287,7 +298,9 @@ std::vector<Flag> makeFlagTable() {
          .set = [](Command& c, Str flag, Str v) { c.render.target = parseTriple(flag, v); },
          .example = "0,1,0"},
         {.name = "--fov",
-         .uses = {{kRenderViewBench, "DEGREES", "vertical field of view of the orbit camera", "45"}},
+         .uses = {{kRenderViewBench, "DEGREES",
+                   "vertical field of view of the orbit camera; framing keeps its distance, so a narrower field "
+                   "shows the model bigger", "45"}},
          .set = [](Command& c, Str flag, Str v) {
              c.render.fovDegrees = parseNumber(flag, v);
              if (c.render.fovDegrees <= 0.0f || c.render.fovDegrees >= 180.0f)
@@ -635,7 +648,11 @@ std::vector<Flag> makeFlagTable() {
          .set = [](Command& c, Str flag, Str v) { c.common().pipelineCache = parsePath(flag, v); },
          .example = "cache"},
         {.name = "--verbose",
-         .uses = {{{Kind::Render, Kind::View, Kind::Bench, Kind::IblReport, Kind::QualityReport}, "",
+         .uses = {{{Kind::Render, Kind::View, Kind::Bench}, "",
+                   "also print notes on the files read (such as the degenerate triangles a glTF file's primitives had, "
+                   "dropped quietly) and the camera used, as the flags that reproduce it",
+                   ""},
+                  {{Kind::IblReport, Kind::QualityReport}, "",
                    "also print notes on the files read (such as the degenerate triangles a glTF file's primitives had, "
                    "dropped quietly)",
                    ""}},

@@ -186,6 +186,7 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
     const scene::ScenePose* pose = settings.pose ? settings.pose : mScene.restPose();
     const scene::ViewSetup view = resolveView(scene, settings.camera, aspect, pose);
+    frame.notes.push_back("camera: " + cameraFlags(scene, settings.camera, aspect, pose));
     const auto disabled = [&](std::string_view pass) {
         return std::find(settings.disabledPasses.begin(), settings.disabledPasses.end(), pass) != settings.disabledPasses.end();
     };
@@ -353,6 +354,27 @@ void FrameBuilder::addNotes(Frame& frame, const RenderSettings& settings, const 
                                                                 : "left out: skybox (the background is not the environment)");
 }
 
+scene::OrbitCamera FrameBuilder::orbitCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                             const scene::ScenePose* pose) {
+    if (camera.orbitCamera) return *camera.orbitCamera;
+    if (pose && !pose->animated()) pose = nullptr;
+    const glm::vec3 orbit = camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f));
+    scene::OrbitCamera out = scene::OrbitCamera::framing(pose ? pose->animationBounds() : scene.bounds, aspect, orbit.x,
+                                                         orbit.y, camera.fovYDegrees);
+    if (orbit.z > 0.0f) {
+        out.radius = orbit.z;
+        out.znear = orbit.z * 1e-3f;
+    }
+    if (camera.target) out.target = *camera.target;
+    return out;
+}
+
+std::string FrameBuilder::cameraFlags(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                      const scene::ScenePose* pose) {
+    if (camera.gltfCamera && !camera.orbitCamera) return "--camera " + std::to_string(*camera.gltfCamera);
+    return scene::orbitCameraFlags(orbitCamera(scene, camera, aspect, pose));
+}
+
 scene::ViewSetup FrameBuilder::resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect,
                                            const scene::ScenePose* pose) {
     if (pose && !pose->animated()) pose = nullptr;
@@ -370,15 +392,7 @@ scene::ViewSetup FrameBuilder::resolveView(const scene::Scene& scene, const Came
                             std::to_string(scene.cameras.size()) + " cameras");
         return scene::cameraView((pose ? pose->cameras() : scene.cameras)[*camera.gltfCamera], aspect);
     }
-    const glm::vec3 angles = camera.orbit.value_or(glm::vec3(0.0f, 90.0f, 0.0f));
-    scene::OrbitCamera orbit = scene::OrbitCamera::framing(pose ? pose->animationBounds() : scene.bounds, aspect, angles.x,
-                                                           angles.y, camera.fovYDegrees);
-    if (angles.z > 0.0f) {
-        orbit.radius = angles.z;
-        orbit.znear = angles.z * 1e-3f;
-    }
-    if (camera.target) orbit.target = *camera.target;
-    return orbit.view(aspect);
+    return orbitCamera(scene, camera, aspect, pose).view(aspect);
 }
 
 }  // namespace candela

@@ -62,6 +62,17 @@ public:
     // glTF cameras are where the pose puts them and framing contains the whole animation.
     static scene::ViewSetup resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect,
                                         const scene::ScenePose* pose = nullptr);
+    // The orbit camera `camera` gives when it names no glTF camera: the interactive one as it is,
+    // else scene::OrbitCamera::framing of the scene's bounds (with an animated `pose`, the bounds
+    // of the whole animation) from --camera-orbit's direction or scene::defaultOrbitAngles, then
+    // the distance (r > 0) and --target when given, with the --fov.
+    static scene::OrbitCamera orbitCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                          const scene::ScenePose* pose = nullptr);
+    // The command-line flags that reproduce resolveView's view: "--camera N" for a glTF camera,
+    // else scene::orbitCameraFlags (--camera-orbit, --target, --fov); printed by --explain and
+    // --verbose. The viewer's lens shift has no flag.
+    static std::string cameraFlags(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                   const scene::ScenePose* pose = nullptr);
 
 private:
     // The shading path of a frame of `variant` asked for `requested`: Visibility or Forward, and

@@ -92,17 +92,8 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
     mSettings.floatOutput = false;
     const float aspect = visibleAspect();
     if (!mSettings.camera.orbitCamera) {
-        // Start from the view the command line chose (framing the scene by default).
-        mCamera = scene::OrbitCamera::framing(mPose->animationBounds(), aspect, 0.0f, 90.0f, mSettings.camera.fovYDegrees);
-        if (mSettings.camera.orbit) {
-            mCamera = scene::OrbitCamera::framing(mPose->animationBounds(), aspect, mSettings.camera.orbit->x,
-                                                  mSettings.camera.orbit->y, mSettings.camera.fovYDegrees);
-            if (mSettings.camera.orbit->z > 0.0f) {
-                mCamera.radius = mSettings.camera.orbit->z;
-                mCamera.znear = mCamera.radius * 1e-3f;
-            }
-        }
-        if (mSettings.camera.target) mCamera.target = *mSettings.camera.target;
+        // Start from the view the command line chose (framing the scene by default), as render does.
+        mCamera = Renderer::orbitCamera(mScene, mSettings.camera, aspect, mPose.get());
         if (mSettings.camera.gltfCamera && *mSettings.camera.gltfCamera < mScene.cameras.size()) {
             // Orbit about the point the glTF camera looks at, at the depth of the scene's centre.
             const glm::mat4& world = mPose->cameras()[*mSettings.camera.gltfCamera].world;
@@ -116,6 +107,7 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
         mCamera = *mSettings.camera.orbitCamera;
     }
     mInitialCamera = mCamera;
+    log::info("camera: " + scene::orbitCameraFlags(mCamera));
     mOpenPanels = desc.openPanels;
     if (!desc.iblReport.empty()) mIblReports.push_back(loadIblReport(desc.iblReport));
     for (IblReportTable& table : builtinIblReports()) mIblReports.push_back(std::move(table));
@@ -167,7 +159,7 @@ bool Viewer::openFile(const std::filesystem::path& path, std::optional<uint32_t>
             mPose = std::make_unique<scene::ScenePose>(mScene, scene::selectAnimations(mScene, {}));
             mAnimationTime = 0.0;
             mCamera = mInitialCamera =
-                scene::OrbitCamera::framing(mPose->animationBounds(), visibleAspect(), 0.0f, 90.0f, mCamera.fovYDegrees);
+                Renderer::orbitCamera(mScene, {.fovYDegrees = mCamera.fovYDegrees}, visibleAspect(), mPose.get());
             mSettings.camera.gltfCamera.reset();
             setStatus("opened " + path.string());
             return true;
