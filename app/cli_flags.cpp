@@ -488,7 +488,7 @@ std::vector<Flag> makeFlagTable() {
         iblQualityFlag("--ibl-levels", "specular roughness levels (mips)", &ibl::IblQuality::specularLevels, "5"),
         iblQualityFlag("--ibl-prefilter-samples",
                        "GGX samples per texel of the first rough specular mip; 4x more per coarser mip, at most 4096",
-                       &ibl::IblQuality::prefilterSamples, "64"),
+                       &ibl::IblQuality::prefilterSamples, "32"),
         {.name = "--ibl-lod-bias",
          .uses = {{kRenderViewBench, "B", "filtered-importance-sampling lod bias (more: less noise, more blur)", valueText(quality.lodBias)}},
          .set = [](Command& c, Str flag, Str v) { c.render.iblQuality.lodBias = parseNumber(flag, v); },

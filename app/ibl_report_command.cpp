@@ -40,8 +40,9 @@ std::vector<Setting> sweep(bool quick) {
     };
     const std::vector<uint32_t> fis = quick ? std::vector<uint32_t>{16, 64} : std::vector<uint32_t>{8, 16, 32, 64, 128, 256, 512, 1024, 2048};
     for (uint32_t n : fis) add("prefilter, filtered IS", std::to_string(n), [&](ibl::IblQuality& q) { q.prefilterSamples = n; });
-    // The defaults before the bright-texel split (kept as a row to compare with).
-    add("previous default", "32 samples, 6 levels, sun sampled, sh9", [&](ibl::IblQuality& q) {
+    // The defaults before the bright-texel split (kept as a row to compare with): 32 samples, 6 levels,
+    // the sun sampled, SH9.
+    add("previous default", "32/6/sh9", [&](ibl::IblQuality& q) {
         q.prefilterSamples = 32;
         q.specularLevels = 6;
         q.brightTexels = 0;

@@ -131,7 +131,7 @@ void writeCsv(const std::filesystem::path& out, const std::vector<Result>& resul
     csv << "\n";
     for (const Result& r : results) {
         const ibl::IblQuality& q = r.setting.quality;
-        csv << '"' << r.setting.group << "\"," << r.setting.label << ',' << q.cubeSize << ',' << q.levels() << ','
+        csv << '"' << r.setting.group << "\",\"" << r.setting.label << "\"," << q.cubeSize << ',' << q.levels() << ','
             << q.prefilterSamples << ',' << (q.filteredSampling ? 1 : 0) << ',' << ibl::irradianceModeName(q.irradiance)
             << ',' << q.shSourceSize << ',' << q.irradianceSamples << ',' << q.lutSize << ',' << q.lutSamples << ','
             << fixed(r.wallMs, 2) << ',' << fixed(r.gpuMs, 2) << ',' << fixed(r.setupMs, 2) << ','

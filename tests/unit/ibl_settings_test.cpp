@@ -13,7 +13,7 @@ namespace {
 TEST(IblSettings, DefaultsAreValidAndLevelsAreCappedByTheCubeSize) {
     IblQuality q;
     EXPECT_NO_THROW(q.validate());
-    EXPECT_EQ(q.levels(), 6u);
+    EXPECT_EQ(q.levels(), 8u);
     q.cubeSize = 16;
     q.shSourceSize = 16;
     q.specularLevels = 10;
@@ -47,14 +47,24 @@ TEST(IblSettings, CanonicalTextSeparatesEverySettingThatChangesTheMaps) {
         return q.canonical() != text;
     };
     EXPECT_TRUE(differs([](IblQuality& q) { q.cubeSize = 512; }));
-    EXPECT_TRUE(differs([](IblQuality& q) { q.prefilterSamples = 64; }));
+    EXPECT_TRUE(differs([](IblQuality& q) { q.prefilterSamples = 32; }));
     EXPECT_TRUE(differs([](IblQuality& q) { q.filteredSampling = false; }));
     EXPECT_TRUE(differs([](IblQuality& q) { q.lodBias = 1.0f; }));
-    EXPECT_TRUE(differs([](IblQuality& q) { q.irradiance = IrradianceMode::Cube; }));
-    EXPECT_TRUE(differs([](IblQuality& q) { q.shSourceSize = 64; }));
+    EXPECT_TRUE(differs([](IblQuality& q) { q.brightTexels = 0; }));
+    EXPECT_TRUE(differs([](IblQuality& q) { q.irradiance = IrradianceMode::Sh9; }));
+    EXPECT_TRUE(differs([](IblQuality& q) { q.irradianceSamples = 1024; }));
     EXPECT_TRUE(differs([](IblQuality& q) { q.lutSamples = 64; }));
-    // The irradiance cube's settings do not matter in SH9 mode: they must not split the cache.
-    EXPECT_FALSE(differs([](IblQuality& q) { q.irradianceSamples = 1024; }));
+    // The SH9 source size does not matter in cube mode (the default), nor the cube's settings in
+    // SH9 mode: they must not split the cache.
+    EXPECT_FALSE(differs([](IblQuality& q) { q.shSourceSize = 64; }));
+    IblQuality sh9 = base;
+    sh9.irradiance = IrradianceMode::Sh9;
+    IblQuality sh9MoreSamples = sh9;
+    sh9MoreSamples.irradianceSamples = 1024;
+    EXPECT_EQ(sh9.canonical(), sh9MoreSamples.canonical());
+    IblQuality sh9OtherSize = sh9;
+    sh9OtherSize.shSourceSize = 64;
+    EXPECT_NE(sh9.canonical(), sh9OtherSize.canonical());
     EXPECT_EQ(base.lutCanonical(), "lut=128x256");
 }
 
