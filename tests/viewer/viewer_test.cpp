@@ -18,6 +18,8 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <set>
+#include <tuple>
 
 namespace candela {
 namespace {
@@ -65,9 +67,10 @@ protected:
         content.settings.precompile = passes::Precompile::DebugViews;
         mViewer = std::make_unique<ui::Viewer>(
             ui::ViewerDesc{.context = {.validation = true},
-                           .window = {.width = 480, .height = 300},
+                           .window = {.width = mWidth, .height = mHeight},
                            .ui = ui,
-                           .shaderDir = shaderDir},
+                           .shaderDir = shaderDir,
+                           .openPanels = mPanels},
             std::move(content));
     }
     void TearDown() override {
@@ -101,8 +104,42 @@ protected:
                                           "sky: composited under the image by the tonemap (no skybox pass)") != lines.end();
     }
 
+    // Every panel's window lies inside the window and overlaps no other; each is as wide as its
+    // content (a path, a reason or a table column cut off at its edge makes the content wider),
+    // and the frame stats are as tall as theirs; a column taller than the window scrolls.
+    void expectPanelsReadable() {
+        const std::vector<ui::UiWindow>& windows = mViewer->uiWindows();
+        ASSERT_EQ(windows.size(), 3u);
+        const float width = float(mViewer->swapchainExtent().width), height = float(mViewer->swapchainExtent().height);
+        for (const ui::UiWindow& w : windows) {
+            EXPECT_GE(w.rect.x, 0.0f) << w.name;
+            EXPECT_GE(w.rect.y, 0.0f) << w.name;
+            EXPECT_LE(w.rect.right(), width) << w.name;
+            EXPECT_LE(w.rect.bottom(), height) << w.name;
+            EXPECT_LE(w.contentWidth, w.roomWidth) << w.name << ": content wider than the window";
+            if (w.contentHeight > w.roomHeight) {
+                EXPECT_TRUE(w.scrollsY) << w.name << ": content below the window's edge";
+            }
+            if (w.name == "Frame stats") {
+                EXPECT_LE(w.contentHeight, w.roomHeight) << "the frame stats are cut";
+                EXPECT_FALSE(w.scrollsY);
+            }
+        }
+        for (size_t a = 0; a < windows.size(); ++a)
+            for (size_t b = a + 1; b < windows.size(); ++b) {
+                const ui::PanelRect &p = windows[a].rect, &q = windows[b].rect;
+                const bool apart = p.right() <= q.x || q.right() <= p.x || p.bottom() <= q.y || q.bottom() <= p.y;
+                EXPECT_TRUE(apart) << windows[a].name << " overlaps " << windows[b].name;
+            }
+        // The scene keeps the part between the columns.
+        const ui::PanelLayout& layout = mViewer->panelLayout();
+        EXPECT_GE(layout.sceneRight - layout.sceneLeft, width / 3.0f);
+    }
+
     test::TempDir mDir{"candela_viewer"};
     std::unique_ptr<ui::Viewer> mViewer;
+    uint32_t mWidth = 480, mHeight = 300;
+    std::set<ui::Panel> mPanels = ui::kPanelsOpenByDefault;
 };
 
 TEST_F(ViewerTest, RendersFramesWithTheUiAsAGraphPass) {
@@ -217,6 +254,51 @@ TEST_F(ViewerTest, ScreenshotHasTheSceneAndThePanel) {
     EXPECT_LT(shot.mean(0, shot.width / 5), 90.0);
     EXPECT_GT(shot.mean(shot.width * 3 / 4, shot.width), 100.0);
 }
+
+// The panels at the window sizes people use, every panel open, with venice_sunset: readable (see
+// expectPanelsReadable); the IBL table shown is the one measured on venice_sunset, and the
+// tonemap's parameters say the sky is behind the scene.
+class ViewerPanelsTest : public ViewerTest, public ::testing::WithParamInterface<std::pair<uint32_t, uint32_t>> {};
+
+TEST_P(ViewerPanelsTest, EveryPanelIsReadable) {
+    std::tie(mWidth, mHeight) = GetParam();
+    for (const auto& [panel, name] : ui::kPanelNames) mPanels.insert(panel);
+    open();
+    const std::filesystem::path hdr = std::filesystem::path(CANDELA_SHARED_ASSETS) / "environments" / "venice_sunset_1k.hdr";
+    const bool venice = std::filesystem::exists(hdr);
+    if (venice) {
+        ASSERT_TRUE(mViewer->openFile(hdr)) << mViewer->status();
+    }
+    frames(4);  // ImGui sizes the frame stats from the previous frame's content
+    ASSERT_EQ(mViewer->swapchainExtent().width, mWidth);
+    ASSERT_EQ(mViewer->swapchainExtent().height, mHeight);
+    expectPanelsReadable();
+    EXPECT_EQ(mViewer->behindScene().rfind("the sky (", 0), 0u) << mViewer->behindScene();
+    const std::vector<ui::IblReportTable>& reports = mViewer->iblReports();
+    const size_t shown = size_t(mViewer->selectedIblReport());
+    ASSERT_LT(shown, reports.size());
+    const std::string environment = mViewer->environment()->source;
+    EXPECT_EQ(ui::iblReportNote(reports, shown, environment), "");
+    EXPECT_EQ(reports[shown].environment, venice ? "venice_sunset_1k" : "procedural sky");
+    // A material with layers (long parameter names: iridescenceThicknessMaximum) and a scene
+    // with three animations.
+    for (const char* model : {"IridescenceSuzanne/glTF-Binary/IridescenceSuzanne.glb", "Fox/glTF-Binary/Fox.glb"}) {
+        const std::filesystem::path file = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models" / model;
+        if (!std::filesystem::exists(file)) continue;
+        ASSERT_TRUE(mViewer->openFile(file)) << mViewer->status();
+        frames(3);
+        SCOPED_TRACE(model);
+        expectPanelsReadable();
+    }
+    mViewer->useNoEnvironment();
+    frames(2);
+    EXPECT_EQ(mViewer->behindScene(), "the background colour");
+    expectPanelsReadable();
+}
+
+INSTANTIATE_TEST_SUITE_P(WindowSizes, ViewerPanelsTest,
+                         ::testing::Values(std::pair(1280u, 720u), std::pair(1920u, 1080u)),
+                         [](const auto& size) { return std::to_string(size.param.first) + "x" + std::to_string(size.param.second); });
 
 TEST_F(ViewerTest, DroppedFilesReplaceTheSceneOrTheEnvironment) {
     open(/*ui=*/true, /*environment=*/false);
