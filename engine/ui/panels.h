@@ -1,5 +1,5 @@
 #pragma once
-// The viewer's ImGui panels, one file each. Each draws its section of the side panel for the
+// The viewer's ImGui panels, one file each. Each draws its section of a panel column for the
 // current frame and acts through the Viewer's actions. Precondition: inside ImGui::NewFrame() /
 // ImGui::Render().
 

@@ -169,7 +169,7 @@ private:
     void environmentChanged();
     bool ensureSwapchain(VkExtent2D extent);
     void setStatus(std::string line, bool error = false);
-    // Width / height of the part of the window the side panel leaves free.
+    // Width / height of the part of the window between the panel columns (the whole window without UI).
     float visibleAspect() const;
     // The settings of the next frame: the scene, environment and camera of the viewer.
     RenderSettings frameSettings(VkExtent2D extent) const;
