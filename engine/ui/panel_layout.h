@@ -45,7 +45,8 @@ inline constexpr float kRightColumnEms = 31.0f;
 
 // The layout of a `width` × `height` window whose UI font is `fontSize` pixels high. Each column
 // gets its width in ems while the scene keeps at least a third of the window; narrower windows
-// shrink both columns in proportion (their text then wraps or scrolls). Precondition: sizes ≥ 0.
+// shrink both columns in proportion (their text then wraps, or is cut at their edge). Precondition:
+// sizes ≥ 0.
 PanelLayout layoutPanels(float width, float height, float fontSize);
 
 }  // namespace candela::ui
