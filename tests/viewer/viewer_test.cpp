@@ -308,9 +308,10 @@ TEST_P(ViewerPanelsTest, EveryPanelIsReadable) {
     const std::string environment = mViewer->environment()->source;
     EXPECT_EQ(ui::iblReportNote(reports, shown, environment), "");
     EXPECT_EQ(reports[shown].environment, venice ? "venice_sunset_1k" : "procedural sky");
-    // A material with layers (long parameter names: iridescenceThicknessMaximum) and a scene
-    // with three animations.
-    for (const char* model : {"IridescenceSuzanne/glTF-Binary/IridescenceSuzanne.glb", "Fox/glTF-Binary/Fox.glb"}) {
+    // A material with layers (long parameter names: iridescenceThicknessMaximum), a scene with
+    // three animations, and one with transmission (the longest pass names in the render graph).
+    for (const char* model : {"IridescenceSuzanne/glTF-Binary/IridescenceSuzanne.glb", "Fox/glTF-Binary/Fox.glb",
+                              "TransmissionTest/glTF-Binary/TransmissionTest.glb"}) {
         const std::filesystem::path file = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models" / model;
         if (!std::filesystem::exists(file)) continue;
         ASSERT_TRUE(mViewer->openFile(file)) << mViewer->status();
