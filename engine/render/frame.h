@@ -27,6 +27,10 @@ struct Frame {
     uint32_t precomputeBegin = 0, precomputeEnd = 0;
     // The declared index of the pass computing the sheen LUT (ibl::SheenLut), if the frame added it.
     uint32_t sheenLutPass = graph::kInvalidIndex;
+    // What the tonemap put behind the scene: the sky composited under the image (no skybox pass),
+    // a solid background colour (under a skybox pass's sky, if one ran, it is not seen).
+    bool skyInTonemap = false;
+    bool solidBackground = false;
     // What --explain says of the frame (variants, lights, IBL, what was left out), besides culled passes.
     std::vector<std::string> notes;
     // Data the CPU makes for this frame alone (the posed draws of an animated scene): each is

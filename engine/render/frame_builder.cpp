@@ -300,7 +300,10 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
             .params = {.inverseViewProjection = glm::inverse(view.viewProjection),
                        .eyeIntensity = glm::vec4(view.eye, ibl->params.intensity),
                        .rotationLod = glm::vec4(ibl->params.rotation.x, ibl->params.rotation.y, ibl->params.skyboxLod, 0.0f)}};
-    frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemapOf(settings, ibl.has_value()), &mParameters, sky ? &*sky : nullptr);
+    const passes::TonemapSettings tonemap = tonemapOf(settings, ibl.has_value());
+    frame.skyInTonemap = skyInTonemap;
+    frame.solidBackground = tonemap.background.has_value();
+    frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemap, &mParameters, sky ? &*sky : nullptr);
 
     addNotes(frame, settings, msaa, mForward.describe(list, inputs, settings.drawSelection),
              {.sheenLut = layerMaps.has_value(), .transmission = transmission, .seesOpaqueImage = seesOpaqueImage,

@@ -32,8 +32,8 @@ struct CameraSettings {
     float fovYDegrees = 45.0f;              // --fov
     // An interactive camera (the viewer's), used as is; overrides the three above.
     std::optional<scene::OrbitCamera> orbitCamera;
-    // Moves the image centre right by this many NDC units (off-axis projection): the viewer
-    // centres the scene in the part of the window its side panel leaves free.
+    // Moves the image centre right by this many NDC units (off-axis projection; negative: left):
+    // the viewer centres the scene between its panel columns.
     float lensShiftX = 0.0f;
 };
 

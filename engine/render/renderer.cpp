@@ -206,4 +206,13 @@ std::vector<std::string> Renderer::explain() const {
     return lines;
 }
 
+Renderer::Background Renderer::lastBackground() const {
+    const Frame& frame = mRunner.last();
+    const std::optional<uint32_t> skybox = frame.graph->findPass("skybox");
+    const bool skyboxRan = skybox && frame.graph->isCompiled() &&
+                           frame.graph->compiled().passes[*skybox].cullReason == CullReason::None;
+    if (frame.skyInTonemap || skyboxRan) return Background::Sky;
+    return frame.solidBackground ? Background::Colour : Background::Transparent;
+}
+
 }  // namespace candela

@@ -152,6 +152,10 @@ public:
     static std::vector<scene::Light> defaultLights() { return SceneState::defaultLights(); }
     // Which passes and variants the last frame left out and why (`--explain`).
     std::vector<std::string> explain() const;
+    // What the last frame drew behind the scene: the sky (a skybox pass that ran, or composited by
+    // the tonemap), the tonemap's solid background colour, or nothing (alpha = coverage).
+    enum class Background { Sky, Colour, Transparent };
+    Background lastBackground() const;
     // Transient-pool rebuilds so far (tests: stays constant while the graph is unchanged).
     uint32_t transientRebuilds() const { return mRunner.transientRebuilds(); }
     // The Vulkan images behind the last frame's transients (tests read their usage).

@@ -33,7 +33,7 @@ void drawCameraPanel(Viewer& viewer) {
     if (ImGui::Button("Frame scene (F)")) viewer.frameScene();
     ImGui::SameLine();
     if (ImGui::Button("Reset (R)")) viewer.resetCamera();
-    ImGui::TextDisabled("right-drag: rotate, middle-drag: pan, wheel: zoom");
+    textDisabledWrapped("right-drag: rotate, middle-drag: pan, wheel: zoom");
 }
 
 }  // namespace candela::ui

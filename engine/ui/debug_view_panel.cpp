@@ -16,7 +16,7 @@ void drawDebugViewPanel(Viewer& viewer) {
         if (column++ % 2 == 1) ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
         if (ImGui::RadioButton(passes::debugViewName(candidate), view == candidate)) view = candidate;
     }
-    ImGui::TextDisabled("d, g, f: toward the first light; data shown as value x 255");
+    textDisabledWrapped("d, g, f: toward the first light; data shown as value x 255");
 }
 
 }  // namespace candela::ui

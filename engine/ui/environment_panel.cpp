@@ -23,7 +23,7 @@ bool gPendingSet = false;
 void drawEnvironmentPanel(Viewer& viewer) {
     RenderSettings& settings = viewer.settings();
     const scene::Environment* environment = viewer.environment();
-    ImGui::TextWrapped("environment: %s", environment ? environment->source.c_str() : "none (no image-based lighting)");
+    textPathWrapped("environment: " + (environment ? environment->source : std::string("none (no image-based lighting)")));
     if (ImGui::Button("Procedural sky")) viewer.useProceduralSky();
     ImGui::SameLine();
     if (ImGui::Button("None")) viewer.useNoEnvironment();
@@ -55,19 +55,26 @@ void drawEnvironmentPanel(Viewer& viewer) {
     int& selected = viewer.selectedIblReport();
     if (reports.empty()) return;
     selected = std::clamp(selected, 0, int(reports.size()) - 1);
-    if (ImGui::BeginCombo("measured on", reports[size_t(selected)].name.c_str())) {
+    // A table is named by what it was measured on (a CSV of the user's, which does not say, by its path).
+    const auto tableName = [](const IblReportTable& table) {
+        return table.environment.empty() ? table.name.c_str() : table.environment.c_str();
+    };
+    if (ImGui::BeginCombo("measured on", tableName(reports[size_t(selected)]))) {
         for (int i = 0; i < int(reports.size()); ++i)
-            if (ImGui::Selectable(reports[size_t(i)].name.c_str(), i == selected)) selected = i;
+            if (ImGui::Selectable(tableName(reports[size_t(i)]), i == selected)) selected = i;
         ImGui::EndCombo();
     }
     const IblReportTable& report = reports[size_t(selected)];
-    ImGui::TextDisabled("x cal.: precompute time / calibration pass; errors: mean relative");
-    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp;
-    if (ImGui::BeginTable("quality", 5, flags, ImVec2(0.0f, 220.0f))) {
+    if (const std::string note = iblReportNote(reports, size_t(selected), environment->source); !note.empty())
+        textDisabledWrapped(note);
+    textDisabledWrapped("x cal.: precompute time / calibration pass; errors: mean relative");
+    // Every column as wide as its header and cells; the setting's takes what is left.
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
+    if (ImGui::BeginTable("quality", 5, flags, ImVec2(0.0f, ImGui::GetTextLineHeightWithSpacing() * 13.0f))) {
         ImGui::TableSetupScrollFreeze(0, 1);
         ImGui::TableSetupColumn("setting", ImGuiTableColumnFlags_WidthStretch);
         for (const char* name : {"x cal.", "specular", "irrad.", "image"})
-            ImGui::TableSetupColumn(name, ImGuiTableColumnFlags_WidthFixed, 52.0f);
+            ImGui::TableSetupColumn(name, ImGuiTableColumnFlags_WidthFixed);
         ImGui::TableHeadersRow();
         std::string group;
         for (const IblReportRow& row : report.rows) {
@@ -96,9 +103,11 @@ void drawEnvironmentPanel(Viewer& viewer) {
     }
     const IblReportRow* chosen = report.find(gPending);
     ImGui::TextWrapped("selected: %s", gPending.canonical().c_str());
-    if (chosen)
-        ImGui::TextWrapped("measured: %.0f ms = %.1fx calibration; specular error %.3f, image error %.3f", chosen->precomputeMs,
-                           chosen->ratioToCalibration, chosen->specularMeanRelative, chosen->imageMeanRelative);
+    if (chosen) {
+        // Two short lines: wrapped text may break after a number's decimal point.
+        ImGui::Text("measured: %.0f ms = %.1fx calibration", chosen->precomputeMs, chosen->ratioToCalibration);
+        ImGui::Text("specular error %.3f, image error %.3f", chosen->specularMeanRelative, chosen->imageMeanRelative);
+    }
     if (ImGui::Button("Recompute with the selected settings")) {
         gPending.lodBias = settings.iblQuality.lodBias;
         if (gPending == settings.iblQuality)

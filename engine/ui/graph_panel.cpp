@@ -43,19 +43,19 @@ void drawGraphPanel(Viewer& viewer) {
     RenderSettings& settings = viewer.settings();
     static constexpr const char* kCounts[] = {"device default", "1", "2", "4", "8"};
     int current = settings.msaa ? 1 + std::countr_zero(*settings.msaa) : 0;
-    ImGui::SetNextItemWidth(140.0f);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 10.0f);
     if (ImGui::Combo("MSAA", &current, kCounts, IM_ARRAYSIZE(kCounts)))
         settings.msaa = current == 0 ? std::nullopt : std::optional<uint32_t>(1u << (current - 1));
-    ImGui::SameLine();
-    ImGui::TextDisabled("%s", viewer.renderer().msaa(settings.msaa).reason.c_str());
+    textDisabledWrapped(viewer.renderer().msaa(settings.msaa).reason);
 
     std::vector<uint32_t> rows = compiled.order;
     for (uint32_t p = 0; p < decl.passes.size(); ++p)
         if (compiled.passes[p].cullReason != graph::CullReason::None) rows.push_back(p);
 
-    if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+    // The times' column as wide as its widest cell or header (a culled pass shows the reason).
+    if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
         ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthFixed, 70.0f);
+        ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthFixed);
         ImGui::TableHeadersRow();
         for (uint32_t p : rows) {
             const graph::PassDecl& pass = decl.passes[p];
@@ -78,11 +78,13 @@ void drawGraphPanel(Viewer& viewer) {
                 if (ImGui::IsItemHovered()) ImGui::SetTooltip("culled: %s", info.cullDetail.c_str());
             }
             if (open) {
-                if (culled) ImGui::TextDisabled("culled: %s", info.cullDetail.c_str());
-                for (const graph::AccessDecl& a : pass.reads)
-                    ImGui::BulletText("reads %s", accessText(decl, a, nullptr).c_str());
-                for (const graph::AccessDecl& a : pass.writes)
-                    ImGui::BulletText("writes %s", accessText(decl, a, &info).c_str());
+                if (culled) textDisabledWrapped("culled: " + info.cullDetail);
+                const auto bullet = [](const std::string& text) {
+                    ImGui::Bullet();
+                    ImGui::TextWrapped("%s", text.c_str());
+                };
+                for (const graph::AccessDecl& a : pass.reads) bullet("reads " + accessText(decl, a, nullptr));
+                for (const graph::AccessDecl& a : pass.writes) bullet("writes " + accessText(decl, a, &info));
                 ImGui::TreePop();
             }
             ImGui::PopID();

@@ -107,8 +107,38 @@ IblReportTable loadIblReport(const std::filesystem::path& path) {
 
 std::vector<IblReportTable> builtinIblReports() {
     std::vector<IblReportTable> tables;
-    for (const auto& [name, csv] : builtinIblReportCsv()) tables.push_back(parseIblReport(csv, std::string(name)));
+    for (const auto& [name, csv] : builtinIblReportCsv()) {
+        tables.push_back(parseIblReport(csv, std::string(name)));
+        // sky.csv is the built-in procedural sky's (assets/ibl-report/README.md); the others are named after their file.
+        tables.back().environment = name == "sky" ? "procedural sky" : std::string(name);
+    }
     return tables;
+}
+
+bool measuredOn(const IblReportTable& table, std::string_view environmentSource) {
+    if (table.environment.empty() || environmentSource.empty()) return false;
+    return environmentSource == table.environment ||
+           std::filesystem::path(environmentSource).stem().string() == table.environment;
+}
+
+std::optional<size_t> findIblReportFor(const std::vector<IblReportTable>& reports, std::string_view environmentSource) {
+    for (size_t i = 0; i < reports.size(); ++i)
+        if (measuredOn(reports[i], environmentSource)) return i;
+    return std::nullopt;
+}
+
+std::string iblReportNote(const std::vector<IblReportTable>& reports, size_t shown, std::string_view environmentSource) {
+    const IblReportTable& table = reports[shown];
+    if (measuredOn(table, environmentSource)) return "";
+    const std::string loaded = std::filesystem::path(environmentSource).filename().string();
+    const std::optional<size_t> other = findIblReportFor(reports, environmentSource);
+    if (table.environment.empty())
+        return table.name + " does not say which environment it was measured on" +
+               (other ? "; the table measured on " + loaded + ": " + reports[*other].environment : std::string());
+    const std::string on = "measured on " + table.environment;
+    if (environmentSource.empty()) return on + "; no environment is loaded";
+    if (other) return on + ", not on " + loaded + " (its table: " + reports[*other].environment + ")";
+    return on + "; no table was measured on " + loaded;
 }
 
 }  // namespace candela::ui

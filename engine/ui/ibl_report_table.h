@@ -7,6 +7,7 @@
 #include "ibl/ibl_settings.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -27,7 +28,10 @@ struct IblReportRow {
 };
 
 struct IblReportTable {
-    std::string name;  // the environment it was measured with
+    std::string name;         // the compiled-in report's name ("sky", "venice_sunset_1k"), or the CSV's path
+    // What it was measured on, as scene::Environment::source names it ("procedural sky") or by a
+    // file's stem ("venice_sunset_1k"); empty when not known (a CSV of the user's).
+    std::string environment;
     std::vector<IblReportRow> rows;
     // The row measured with exactly `quality` (its lod bias aside), or null.
     const IblReportRow* find(const ibl::IblQuality& quality) const;
@@ -37,8 +41,17 @@ struct IblReportTable {
 IblReportTable parseIblReport(std::string_view csv, std::string name);
 // Reads and parses a file; UserError "PATH: ..." when it cannot be read or parsed.
 IblReportTable loadIblReport(const std::filesystem::path& path);
-// The compiled-in reports.
+// The compiled-in reports, their `environment` set.
 std::vector<IblReportTable> builtinIblReports();
+// Whether `table` was measured on the environment `source` (scene::Environment::source: a file's
+// path, or "procedural sky").
+bool measuredOn(const IblReportTable& table, std::string_view environmentSource);
+// The report measured on `environmentSource`, or nullopt when none of `reports` was.
+std::optional<size_t> findIblReportFor(const std::vector<IblReportTable>& reports, std::string_view environmentSource);
+// What the environment panel says of `reports[shown]` while `environmentSource` is loaded (empty:
+// no environment): "" when the table was measured on it, else one line saying what it was
+// measured on instead and whether a table for the loaded one exists. Precondition: shown < size.
+std::string iblReportNote(const std::vector<IblReportTable>& reports, size_t shown, std::string_view environmentSource);
 // Their CSV text by environment name (generated from assets/ibl-report).
 std::vector<std::pair<std::string_view, std::string_view>> builtinIblReportCsv();
 

@@ -70,7 +70,7 @@ void drawMaterialPanel(Viewer& viewer) {
     if (m.layers() != 0) {
         std::string layers;
         for (std::string_view name : scene::layerNames(m.layers())) (layers += layers.empty() ? "" : ", ") += name;
-        ImGui::TextDisabled("layers: %s", layers.c_str());
+        textDisabledWrapped("layers: " + layers);
     }
     if (const auto* block = registry.find("forward", "MaterialLayers[" + std::to_string(selected) + "]"))
         drawParameterBlock(registry, *block);

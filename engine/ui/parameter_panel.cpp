@@ -28,8 +28,14 @@ void drawParameterPanel(Viewer& viewer) {
         const auto& blocks = registry.blocks();
         const bool any = std::any_of(blocks.begin(), blocks.end(), [&](const auto& b) { return inPass(b, false) || inPass(b, true); });
         if (!any || !ImGui::TreeNodeEx(pass.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) continue;
+        // The tonemap's background colour shows only where nothing else is behind the scene.
+        std::vector<std::string_view> unseen;
+        if (pass == "tonemap") {
+            textDisabledWrapped("behind the scene: " + viewer.behindScene());
+            if (viewer.renderer().lastBackground() != Renderer::Background::Colour) unseen.push_back("params.background");
+        }
         for (const auto& block : blocks)
-            if (inPass(block, false)) drawParameterBlock(registry, block);
+            if (inPass(block, false)) drawParameterBlock(registry, block, unseen);
         for (const auto& block : blocks)
             if (inPass(block, true) && ImGui::TreeNode(block.name.c_str())) {
                 drawParameterBlock(registry, block);

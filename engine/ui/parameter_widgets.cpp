@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -10,16 +11,15 @@ namespace candela::ui {
 namespace {
 
 // The label of a member: its name without the block's instance name ("push.ibl.intensity" →
-// "ibl.intensity"), with the full name in the ImGui ID.
+// "ibl.intensity").
 std::string labelOf(const shader::BlockMember& m) {
     const size_t dot = m.name.find('.');
-    return (dot == std::string::npos ? m.name : m.name.substr(dot + 1)) + "##" + m.name;
+    return dot == std::string::npos ? m.name : m.name.substr(dot + 1);
 }
 
-// Edits one member's bytes in place; returns true when the user changed them.
-bool memberWidget(const shader::BlockMember& m, std::byte* bytes) {
-    const std::string text = labelOf(m);
-    const char* label = text.c_str();
+// Edits one member's bytes in place with the widget labelled `label` (ImGui label and ID);
+// returns true when the user changed them.
+bool memberWidget(const shader::BlockMember& m, std::byte* bytes, const char* label) {
     const int n = int(m.vectorSize);
     switch (m.type) {
         case shader::BaseType::Float: {
@@ -49,7 +49,8 @@ bool memberWidget(const shader::BlockMember& m, std::byte* bytes) {
 
 }  // namespace
 
-bool drawParameterBlock(shader::ParameterRegistry& registry, const shader::ParameterRegistry::Block& block) {
+bool drawParameterBlock(shader::ParameterRegistry& registry, const shader::ParameterRegistry::Block& block,
+                        std::span<const std::string_view> unseen) {
     bool edited = false;
     ImGui::PushID(block.pass.c_str());
     ImGui::PushID(block.name.c_str());
@@ -57,15 +58,27 @@ bool drawParameterBlock(shader::ParameterRegistry& registry, const shader::Param
         std::byte value[16];
         std::memcpy(value, block.values.data() + m.offset, m.size);
         ImGui::PushID(m.name.c_str());
+        const bool disabled = std::find(unseen.begin(), unseen.end(), m.name) != unseen.end();
+        if (disabled) ImGui::BeginDisabled();
         if (registry.isSet(block.pass, block.name, m.name)) {
             if (ImGui::SmallButton("x")) registry.reset(block.pass, block.name, m.name);
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the value the renderer sets");
             ImGui::SameLine();
         }
-        if (memberWidget(m, value)) {
+        // The full name in the ImGui ID; a label wider than the room right of the widget goes on
+        // its own line above it (a checkbox's follows the box).
+        const std::string shown = labelOf(m);
+        std::string label = shown + "##" + m.name;
+        const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x;
+        if (m.type != shader::BaseType::Bool && ImGui::CalcTextSize(shown.c_str()).x > room) {
+            ImGui::TextUnformatted(shown.c_str());
+            label = "##" + m.name;
+        }
+        if (memberWidget(m, value, label.c_str())) {
             registry.set(block.pass, block.name, m, std::span(value, m.size));
             edited = true;
         }
+        if (disabled) ImGui::EndDisabled();
         ImGui::PopID();
     }
     ImGui::PopID();

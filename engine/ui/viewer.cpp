@@ -55,9 +55,6 @@ double msBetween(TimePoint a, TimePoint b) {
     return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
-// The side panel's width for a window `width` pixels wide.
-float sidePanelWidth(float width) { return std::min(420.0f, width * 0.45f); }
-
 std::string lowerExtension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
@@ -110,7 +107,9 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
     log::info("camera: " + scene::orbitCameraFlags(mCamera));
     mOpenPanels = desc.openPanels;
     if (!desc.iblReport.empty()) mIblReports.push_back(loadIblReport(desc.iblReport));
+    mUserIblReport = !desc.iblReport.empty();
     for (IblReportTable& table : builtinIblReports()) mIblReports.push_back(std::move(table));
+    environmentChanged();
     mLastFrame = std::chrono::steady_clock::now();
 }
 
@@ -175,6 +174,7 @@ bool Viewer::openFile(const std::filesystem::path& path, std::optional<uint32_t>
             // Show it: the skybox becomes the background, as `--env` does with the default background.
             mSettings.ibl.skybox = true;
             mSettings.tonemap.background.reset();
+            environmentChanged();
             setStatus("environment " + path.string());
             return true;
         }
@@ -190,8 +190,8 @@ void Viewer::requestScreenshot(const std::filesystem::path& path) { mScreenshot 
 float Viewer::visibleAspect() const {
     const VkExtent2D extent = mSwapchain->valid() ? mSwapchain->extent() : mWindow->framebufferSize();
     if (extent.height == 0 || extent.width == 0) return 16.0f / 9.0f;
-    const float panel = mUi ? sidePanelWidth(float(extent.width)) : 0.0f;
-    return (float(extent.width) - panel) / float(extent.height);
+    if (!mUi) return float(extent.width) / float(extent.height);
+    return layoutPanels(float(extent.width), float(extent.height), mFontSize).sceneAspect(float(extent.height));
 }
 
 void Viewer::frameScene() {
@@ -213,6 +213,7 @@ void Viewer::useProceduralSky() {
     mEnvironment = std::make_unique<scene::Environment>(scene::makeProceduralSky());
     mSettings.ibl.skybox = true;
     mSettings.tonemap.background.reset();
+    environmentChanged();
     setStatus("environment: procedural sky");
 }
 
@@ -220,7 +221,25 @@ void Viewer::useNoEnvironment() {
     mRenderer->waitIdle();
     mEnvironment.reset();
     if (!mSettings.tonemap.background) mSettings.tonemap.background = glm::vec3(0.0194f);  // #262626
+    environmentChanged();
     setStatus("environment: none");
+}
+
+void Viewer::environmentChanged() {
+    if (mUserIblReport) return;  // the user's table (--ibl-report) stays shown
+    if (const std::optional<size_t> table = findIblReportFor(mIblReports, mEnvironment ? mEnvironment->source : ""))
+        mSelectedIblReport = int(*table);
+}
+
+std::string Viewer::behindScene() const {
+    switch (mRenderer->lastBackground()) {
+        case Renderer::Background::Sky: {
+            const std::string name = mEnvironment ? std::filesystem::path(mEnvironment->source).filename().string() : "";
+            return "the sky (" + name + ")";
+        }
+        case Renderer::Background::Colour: return "the background colour";
+        default: return "nothing (transparent, shown black)";
+    }
 }
 
 void Viewer::recomputeIbl() { mRenderer->recomputeIbl(); }
@@ -294,57 +313,6 @@ void Viewer::handleInput() {
     mLastCursor = cursor;
 }
 
-void Viewer::drawUi() {
-    ImGui_ImplVulkan_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    mPanelWidth = sidePanelWidth(viewport->WorkSize.x);
-    ImGui::SetNextWindowPos(viewport->WorkPos, ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(mPanelWidth, viewport->WorkSize.y), ImGuiCond_Always);
-    ImGui::SetNextWindowBgAlpha(0.85f);
-    ImGui::Begin("Candela", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    ImGui::PushItemWidth(mPanelWidth * 0.55f);
-    ImGui::TextUnformatted(mScene.source.c_str());
-    if (mScene.sceneNames.size() > 1) {
-        // The file's scenes: choosing one reloads the file with it.
-        int chosen = int(mScene.sceneIndex);
-        const auto name = [](void* data, int i, const char** out) {
-            *out = static_cast<const scene::Scene*>(data)->sceneNames[size_t(i)].c_str();
-            return true;
-        };
-        if (ImGui::Combo("scene", &chosen, name, &mScene, int(mScene.sceneNames.size())) && chosen != int(mScene.sceneIndex))
-            openFile(mScene.source, uint32_t(chosen));
-    }
-    if (!mStatus.empty())
-        ImGui::TextColored(mStatusIsError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.6f, 0.9f, 0.6f, 1.0f), "%s",
-                           mStatus.c_str());
-    for (const std::string& error : mHotReload->errors()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-        ImGui::TextWrapped("%s", error.c_str());
-        ImGui::PopStyleColor();
-    }
-    const struct {
-        Panel key;
-        const char* title;
-        void (*draw)(Viewer&);
-    } panels[] = {{Panel::Graph, "Render graph", drawGraphPanel},
-                  {Panel::Parameters, "Shader parameters", drawParameterPanel},
-                  {Panel::Materials, "Materials", drawMaterialPanel},
-                  {Panel::Environment, "Environment / IBL", drawEnvironmentPanel},
-                  {Panel::Camera, "Camera", drawCameraPanel},
-                  {Panel::Animation, "Animation", drawAnimationPanel},
-                  {Panel::Debug, "Debug view", drawDebugViewPanel},
-                  {Panel::Stats, "Frame stats", drawStatsPanel}};
-    for (const auto& panel : panels) {
-        ImGui::SetNextItemOpen(mOpenPanels.count(panel.key) > 0, ImGuiCond_Once);
-        if (ImGui::CollapsingHeader(panel.title)) panel.draw(*this);
-    }
-    ImGui::PopItemWidth();
-    ImGui::End();
-    ImGui::Render();
-}
-
 bool Viewer::ensureSwapchain(VkExtent2D extent) {
     if (!vk::swapchainNeedsRecreate({.valid = mSwapchain->valid(),
                                      .outOfDate = mRecreate,
@@ -374,7 +342,7 @@ RenderSettings Viewer::frameSettings(VkExtent2D extent) const {
     settings.environment = mEnvironment.get();
     if (!mEnvironment) settings.ibl.skybox = false;
     settings.camera.orbitCamera = mCamera;
-    settings.camera.lensShiftX = mUi ? mPanelWidth / float(std::max(1u, extent.width)) : 0.0f;
+    settings.camera.lensShiftX = mUi ? mLayout.lensShiftX(float(extent.width)) : 0.0f;
     return settings;
 }
 

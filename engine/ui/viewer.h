@@ -13,6 +13,7 @@
 #include "ui/hot_reload.h"
 #include "ui/ibl_report_table.h"
 #include "ui/orbit_controls.h"
+#include "ui/panel_layout.h"
 #include "ui/viewer_panels.h"
 #include "ui/window.h"
 #include "vk/context.h"
@@ -147,15 +148,28 @@ public:
     // file's save to the first frame drawn with it having completed on the GPU (negative: none yet).
     const ShaderHotReload& hotReload() const { return *mHotReload; }
     double lastReloadLatencyMs() const { return mReloadLatencyMs; }
+    // The ibl-report tables the environment panel offers, and the one it shows: the user's
+    // (--ibl-report) if given, else the one measured on the environment loaded (chosen again when
+    // the environment changes; kept when none was measured on it).
     const std::vector<IblReportTable>& iblReports() const { return mIblReports; }
     int& selectedIblReport() { return mSelectedIblReport; }
+    // What the last frame drew behind the scene: "the sky (FILE NAME)", "the background colour", or
+    // "nothing (transparent, shown black)".
+    std::string behindScene() const;
+    // The panels' windows as the last frame laid them out, and their layout (empty without UI).
+    const std::vector<UiWindow>& uiWindows() const { return mUiWindows; }
+    const PanelLayout& panelLayout() const { return mLayout; }
 
 private:
     void handleInput();
-    void drawUi();
+    void drawUi();  // viewer_ui.cpp
+    // The ImGui window for one column of panels or the frame stats, its record in mUiWindows.
+    void recordUiWindow(const char* name);
+    // Chooses the ibl-report table for the environment now loaded (selectedIblReport()).
+    void environmentChanged();
     bool ensureSwapchain(VkExtent2D extent);
     void setStatus(std::string line, bool error = false);
-    // Width / height of the part of the window the side panel leaves free.
+    // Width / height of the part of the window between the panel columns (the whole window without UI).
     float visibleAspect() const;
     // The settings of the next frame: the scene, environment and camera of the viewer.
     RenderSettings frameSettings(VkExtent2D extent) const;
@@ -172,7 +186,10 @@ private:
     double mReloadLatencyMs = -1.0;
 
     bool mUi = true;
-    float mPanelWidth = 0.0f;  // pixels covered by the side panel (0 without UI)
+    PanelLayout mLayout;        // where the panels are (the last UI frame's)
+    float mFontSize = 13.0f;    // the UI font's size in pixels (Dear ImGui's default font until the first UI frame)
+    std::vector<UiWindow> mUiWindows;
+    bool mUserIblReport = false;  // --ibl-report gave the first table
     std::set<Panel> mOpenPanels;
     bool mRecreate = false;
     bool mSimulatedMinimized = false;

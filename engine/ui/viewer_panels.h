@@ -1,5 +1,5 @@
 #pragma once
-// The viewer's side-panel sections and their names: the one table that the viewer, the command
+// The viewer's panel sections and their names: the one table that the viewer, the command
 // line (--panels) and the tests read. Names only: no Vulkan, no ImGui.
 
 #include "core/name_table.h"

@@ -65,5 +65,33 @@ TEST(IblReportTable, MalformedReportsAreOneLineErrors) {
     EXPECT_THROW(loadIblReport("/nonexistent/report.csv"), UserError);
 }
 
+// The environment panel shows the table measured on the environment loaded, and says so when it
+// shows another.
+TEST(IblReportTable, TheTableForAnEnvironmentIsFoundByItsSource) {
+    std::vector<IblReportTable> reports = builtinIblReports();
+    EXPECT_EQ(reports[0].environment, "procedural sky");
+    const std::string venice = "../shared/assets/environments/venice_sunset_1k.hdr";
+    ASSERT_EQ(findIblReportFor(reports, venice), std::optional<size_t>(1));
+    EXPECT_EQ(reports[1].environment, "venice_sunset_1k");
+    EXPECT_EQ(findIblReportFor(reports, "procedural sky"), std::optional<size_t>(0));
+    EXPECT_EQ(findIblReportFor(reports, "/x/forest_slope_1k.hdr"), std::nullopt);
+    EXPECT_EQ(findIblReportFor(reports, ""), std::nullopt);
+
+    EXPECT_EQ(iblReportNote(reports, 1, venice), "");
+    EXPECT_EQ(iblReportNote(reports, 0, "procedural sky"), "");
+    EXPECT_EQ(iblReportNote(reports, 0, venice),
+              "measured on procedural sky, not on venice_sunset_1k.hdr (its table: venice_sunset_1k)");
+    EXPECT_EQ(iblReportNote(reports, 0, "/x/forest_slope_1k.hdr"),
+              "measured on procedural sky; no table was measured on forest_slope_1k.hdr");
+    EXPECT_EQ(iblReportNote(reports, 2, ""), "measured on studio_small_03_1k; no environment is loaded");
+    // A CSV of the user's does not say what it was measured on: never taken for the loaded one.
+    reports.insert(reports.begin(), parseIblReport(builtinIblReportCsv()[1].second, "mine/report.csv"));
+    EXPECT_EQ(findIblReportFor(reports, venice), std::optional<size_t>(2));
+    EXPECT_EQ(iblReportNote(reports, 0, venice),
+              "mine/report.csv does not say which environment it was measured on; the table measured on "
+              "venice_sunset_1k.hdr: venice_sunset_1k");
+    EXPECT_EQ(iblReportNote(reports, 0, ""), "mine/report.csv does not say which environment it was measured on");
+}
+
 }  // namespace
 }  // namespace candela::ui

@@ -12,30 +12,40 @@
 #include <stb_image.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <chrono>
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <set>
+#include <tuple>
 
 namespace candela {
 namespace {
 
 const ::testing::Environment* const gXvfb = ::testing::AddGlobalTestEnvironment(new test::XvfbEnvironment);
 
+// Pixels [x0, x1) × [y0, y1).
+struct Box {
+    int x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+};
+
 struct Image {
     int width = 0, height = 0;
     std::vector<uint8_t> rgba;
-    // Mean of R+G+B (or of channel `channel`) over the columns [x0, x1).
-    double mean(int x0, int x1, int channel = -1) const {
+    // Mean of R+G+B (or of channel `channel`) over `box`.
+    double mean(const Box& box, int channel = -1) const {
         double sum = 0.0;
-        for (int y = 0; y < height; ++y)
-            for (int x = x0; x < x1; ++x)
+        for (int y = box.y0; y < box.y1; ++y)
+            for (int x = box.x0; x < box.x1; ++x)
                 for (int c = 0; c < 3; ++c)
                     if (channel < 0 || c == channel) sum += rgba[(size_t(y) * width + x) * 4 + c];
-        return sum / (double(height) * (x1 - x0) * (channel < 0 ? 3.0 : 1.0));
+        return sum / (double(box.y1 - box.y0) * (box.x1 - box.x0) * (channel < 0 ? 3.0 : 1.0));
     }
+    // The same over the columns [x0, x1).
+    double mean(int x0, int x1, int channel = -1) const { return mean(Box{x0, x1, 0, height}, channel); }
 };
 
 Image readPng(const std::filesystem::path& path) {
@@ -65,9 +75,10 @@ protected:
         content.settings.precompile = passes::Precompile::DebugViews;
         mViewer = std::make_unique<ui::Viewer>(
             ui::ViewerDesc{.context = {.validation = true},
-                           .window = {.width = 480, .height = 300},
+                           .window = {.width = mWidth, .height = mHeight},
                            .ui = ui,
-                           .shaderDir = shaderDir},
+                           .shaderDir = shaderDir,
+                           .openPanels = mPanels},
             std::move(content));
     }
     void TearDown() override {
@@ -94,6 +105,20 @@ protected:
         const graph::PassInfo* info = passInfo(name);
         return info && info->cullReason == graph::CullReason::None;
     }
+    // The columns [first, second) the scene is drawn in, between the panel columns (the last UI
+    // frame's layout; the whole window without UI).
+    std::pair<int, int> sceneColumns() const {
+        if (mViewer->uiWindows().empty()) return {0, int(mViewer->swapchainExtent().width)};
+        const ui::PanelLayout& layout = mViewer->panelLayout();
+        return {int(std::ceil(layout.sceneLeft)), int(layout.sceneRight)};
+    }
+    // The middle of the scene between the panels (half its width, half the window's height): where
+    // the sphere grid is.
+    Box sceneMiddle() const {
+        const auto [x0, x1] = sceneColumns();
+        const int height = int(mViewer->swapchainExtent().height);
+        return {x0 + (x1 - x0) / 4, x1 - (x1 - x0) / 4, height / 4, height - height / 4};
+    }
     // The last frame drew the sky: composited by the tonemap, or by the skybox pass.
     bool skyDrawn() {
         const std::vector<std::string> lines = mViewer->renderer().explain();
@@ -101,8 +126,42 @@ protected:
                                           "sky: composited under the image by the tonemap (no skybox pass)") != lines.end();
     }
 
+    // Every panel's window lies inside the window and overlaps no other; each is as wide as its
+    // content (a path, a reason or a table column cut off at its edge makes the content wider),
+    // and the frame stats are as tall as theirs; a column taller than the window scrolls.
+    void expectPanelsReadable() {
+        const std::vector<ui::UiWindow>& windows = mViewer->uiWindows();
+        ASSERT_EQ(windows.size(), 3u);
+        const float width = float(mViewer->swapchainExtent().width), height = float(mViewer->swapchainExtent().height);
+        for (const ui::UiWindow& w : windows) {
+            EXPECT_GE(w.rect.x, 0.0f) << w.name;
+            EXPECT_GE(w.rect.y, 0.0f) << w.name;
+            EXPECT_LE(w.rect.right(), width) << w.name;
+            EXPECT_LE(w.rect.bottom(), height) << w.name;
+            EXPECT_LE(w.contentWidth, w.roomWidth) << w.name << ": content wider than the window";
+            if (w.contentHeight > w.roomHeight) {
+                EXPECT_TRUE(w.scrollsY) << w.name << ": content below the window's edge";
+            }
+            if (w.name == "Frame stats") {
+                EXPECT_LE(w.contentHeight, w.roomHeight) << "the frame stats are cut";
+                EXPECT_FALSE(w.scrollsY);
+            }
+        }
+        for (size_t a = 0; a < windows.size(); ++a)
+            for (size_t b = a + 1; b < windows.size(); ++b) {
+                const ui::PanelRect &p = windows[a].rect, &q = windows[b].rect;
+                const bool apart = p.right() <= q.x || q.right() <= p.x || p.bottom() <= q.y || q.bottom() <= p.y;
+                EXPECT_TRUE(apart) << windows[a].name << " overlaps " << windows[b].name;
+            }
+        // The scene keeps the part between the columns.
+        const ui::PanelLayout& layout = mViewer->panelLayout();
+        EXPECT_GE(layout.sceneRight - layout.sceneLeft, width / 3.0f);
+    }
+
     test::TempDir mDir{"candela_viewer"};
     std::unique_ptr<ui::Viewer> mViewer;
+    uint32_t mWidth = 480, mHeight = 300;
+    std::set<ui::Panel> mPanels = ui::kPanelsOpenByDefault;
 };
 
 TEST_F(ViewerTest, RendersFramesWithTheUiAsAGraphPass) {
@@ -136,9 +195,10 @@ TEST_F(ViewerTest, TogglingAPassCullsItInTheCompiledGraph) {
     EXPECT_EQ(passInfo("skybox")->cullReason, graph::CullReason::Disabled);
     EXPECT_TRUE(ran("forward"));
     const Image after = screenshot("after.png");
-    // Without the skybox the background is black: the scene half of the window gets darker.
+    // Without the skybox the background is black: the scene part of the window gets darker.
     ASSERT_EQ(before.width, after.width);
-    EXPECT_LT(after.mean(before.width / 2, before.width), before.mean(before.width / 2, before.width) - 20.0);
+    const auto [x0, x1] = sceneColumns();
+    EXPECT_LT(after.mean(x0, x1), before.mean(x0, x1) - 20.0);
     mViewer->setPassEnabled("skybox", true);
     frames(1);
     EXPECT_TRUE(skyDrawn());
@@ -159,7 +219,8 @@ TEST_F(ViewerTest, EditingAReflectedParameterChangesThePixels) {
     registry.set("tonemap", "Push", *exposure, std::as_bytes(std::span(&ev, 1)));  // what the slider calls
     frames(1);
     const Image brighter = screenshot("brighter.png");
-    EXPECT_GT(brighter.mean(before.width / 2, before.width), before.mean(before.width / 2, before.width) + 5.0);
+    const Box spheres = sceneMiddle();
+    EXPECT_GT(brighter.mean(spheres), before.mean(spheres) + 5.0);
 
     // A light's intensity (a storage-buffer element) and a material's base colour go the same way.
     registry.reset("tonemap", "Push", "params.exposureEv");
@@ -175,7 +236,7 @@ TEST_F(ViewerTest, EditingAReflectedParameterChangesThePixels) {
     }
     frames(1);
     const Image unlit = screenshot("unlit.png");
-    EXPECT_LT(unlit.mean(before.width / 2, before.width), before.mean(before.width / 2, before.width) - 5.0);
+    EXPECT_LT(unlit.mean(spheres), before.mean(spheres) - 5.0);
 }
 
 TEST_F(ViewerTest, SurvivesResizesAndAMinimize) {
@@ -213,10 +274,60 @@ TEST_F(ViewerTest, ScreenshotHasTheSceneAndThePanel) {
     const Image shot = screenshot("shot.png");
     ASSERT_EQ(shot.width, int(mViewer->swapchainExtent().width));
     ASSERT_EQ(shot.height, int(mViewer->swapchainExtent().height));
-    // The panel (left) is the dark ImGui theme; the scene (right) has the bright sky.
-    EXPECT_LT(shot.mean(0, shot.width / 5), 90.0);
-    EXPECT_GT(shot.mean(shot.width * 3 / 4, shot.width), 100.0);
+    // The panel columns (left and right) are the dark ImGui theme; the scene between them has the
+    // bright sky.
+    const auto [x0, x1] = sceneColumns();
+    ASSERT_LT(x0, x1);
+    EXPECT_LT(shot.mean(0, x0), 90.0);
+    EXPECT_LT(shot.mean(x1, shot.width), 90.0);
+    EXPECT_GT(shot.mean(x0, x1), 100.0);
 }
+
+// The panels at the window sizes people use, every panel open, with venice_sunset: readable (see
+// expectPanelsReadable); the IBL table shown is the one measured on venice_sunset, and the
+// tonemap's parameters say the sky is behind the scene.
+class ViewerPanelsTest : public ViewerTest, public ::testing::WithParamInterface<std::pair<uint32_t, uint32_t>> {};
+
+TEST_P(ViewerPanelsTest, EveryPanelIsReadable) {
+    std::tie(mWidth, mHeight) = GetParam();
+    for (const auto& [panel, name] : ui::kPanelNames) mPanels.insert(panel);
+    open();
+    const std::filesystem::path hdr = std::filesystem::path(CANDELA_SHARED_ASSETS) / "environments" / "venice_sunset_1k.hdr";
+    const bool venice = std::filesystem::exists(hdr);
+    if (venice) {
+        ASSERT_TRUE(mViewer->openFile(hdr)) << mViewer->status();
+    }
+    frames(4);  // ImGui sizes the frame stats from the previous frame's content
+    ASSERT_EQ(mViewer->swapchainExtent().width, mWidth);
+    ASSERT_EQ(mViewer->swapchainExtent().height, mHeight);
+    expectPanelsReadable();
+    EXPECT_EQ(mViewer->behindScene().rfind("the sky (", 0), 0u) << mViewer->behindScene();
+    const std::vector<ui::IblReportTable>& reports = mViewer->iblReports();
+    const size_t shown = size_t(mViewer->selectedIblReport());
+    ASSERT_LT(shown, reports.size());
+    const std::string environment = mViewer->environment()->source;
+    EXPECT_EQ(ui::iblReportNote(reports, shown, environment), "");
+    EXPECT_EQ(reports[shown].environment, venice ? "venice_sunset_1k" : "procedural sky");
+    // A material with layers (long parameter names: iridescenceThicknessMaximum), a scene with
+    // three animations, and one with transmission (the longest pass names in the render graph).
+    for (const char* model : {"IridescenceSuzanne/glTF-Binary/IridescenceSuzanne.glb", "Fox/glTF-Binary/Fox.glb",
+                              "TransmissionTest/glTF-Binary/TransmissionTest.glb"}) {
+        const std::filesystem::path file = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models" / model;
+        if (!std::filesystem::exists(file)) continue;
+        ASSERT_TRUE(mViewer->openFile(file)) << mViewer->status();
+        frames(3);
+        SCOPED_TRACE(model);
+        expectPanelsReadable();
+    }
+    mViewer->useNoEnvironment();
+    frames(2);
+    EXPECT_EQ(mViewer->behindScene(), "the background colour");
+    expectPanelsReadable();
+}
+
+INSTANTIATE_TEST_SUITE_P(WindowSizes, ViewerPanelsTest,
+                         ::testing::Values(std::pair(1280u, 720u), std::pair(1920u, 1080u)),
+                         [](const auto& size) { return std::to_string(size.param.first) + "x" + std::to_string(size.param.second); });
 
 TEST_F(ViewerTest, DroppedFilesReplaceTheSceneOrTheEnvironment) {
     open(/*ui=*/true, /*environment=*/false);
@@ -284,7 +395,8 @@ TEST_F(ViewerTest, ChoosingAMaterialVariantChangesTheDrawnMaterial) {
     frames(1);
     ASSERT_EQ(mViewer->scene().variants.size(), 3u);
     const VkExtent2D extent = mViewer->swapchainExtent();
-    const glm::vec2 centre(extent.width * 0.6f, extent.height / 2.0f);  // right of the panel, on the shoe
+    const auto [x0, x1] = sceneColumns();
+    const glm::vec2 centre((x0 + x1) / 2.0f, extent.height / 2.0f);  // between the panels, on the shoe
     ASSERT_TRUE(mViewer->pickMaterial(centre));
     EXPECT_EQ(mViewer->selectedMaterial(), 0u);  // the file's default
     const Image before = screenshot("default.png");
@@ -333,15 +445,16 @@ TEST_F(ViewerTest, HotReloadRebuildsPipelinesAndKeepsTheOldOnesOnErrors) {
     ASSERT_TRUE(mViewer->hotReload().enabled());
     frames(1);
     const Image before = screenshot("before.png");
-    const int right = before.width * 3 / 4;
+    const Box spheres = sceneMiddle();
+    const int middle = (spheres.x0 + spheres.x1) / 2;
 
-    // The tonemap writes pure red: the scene half turns red.
+    // The tonemap writes pure red: the scene between the panels turns red.
     editFile(shaders / "tonemap" / "composite.glsl", "outColor = vec4(display, alpha);", "outColor = vec4(1.0, 0.0, 0.0, 1.0);");
     frames(1);
     EXPECT_TRUE(mViewer->hotReload().errors().empty());
     EXPECT_GT(mViewer->lastReloadLatencyMs(), -1.0);  // from the save to the GPU finishing the frame
     const Image red = screenshot("red.png");
-    const size_t centre = (size_t(red.height / 2) * red.width + right) * 4;
+    const size_t centre = (size_t(red.height / 2) * red.width + middle) * 4;
     EXPECT_EQ(red.rgba[centre + 0], 255);
     EXPECT_EQ(red.rgba[centre + 1], 0);
 
@@ -371,14 +484,14 @@ TEST_F(ViewerTest, HotReloadRebuildsPipelinesAndKeepsTheOldOnesOnErrors) {
     frames(1);
     EXPECT_TRUE(mViewer->hotReload().errors().empty());
     const Image restored = screenshot("restored.png");
-    EXPECT_NEAR(restored.mean(right, before.width), before.mean(right, before.width), 1.0);
+    EXPECT_NEAR(restored.mean(spheres), before.mean(spheres), 1.0);
     editFile(shaders / "shared" / "tonemap.h", "CANDELA_FN vec3 applyTonemap(vec3 color, uint op) {",
              "CANDELA_FN vec3 applyTonemap(vec3 color, uint op) {\n    return vec3(0.0f, 1.0f, 0.0f);");
     frames(1);
     EXPECT_TRUE(mViewer->hotReload().errors().empty());
     const Image green = screenshot("green.png");  // spheres green on the grey background
-    EXPECT_GT(green.mean(right, green.width, 1), before.mean(right, before.width, 1) + 30.0);
-    EXPECT_LT(green.mean(right, green.width, 0), before.mean(right, before.width, 0) - 10.0);
+    EXPECT_GT(green.mean(spheres, 1), before.mean(spheres, 1) + 30.0);
+    EXPECT_LT(green.mean(spheres, 0), before.mean(spheres, 0) - 10.0);
 }
 
 // The visibility path's compute shading reloads as the fragment programs do: an edit of
