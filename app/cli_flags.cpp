@@ -486,8 +486,17 @@ std::vector<Flag> makeFlagTable() {
         iblQualityFlag("--ibl-lut-samples", "BRDF LUT samples per texel", &ibl::IblQuality::lutSamples, "128"),
         // ---- the report commands and soak ----
         {.name = "--repeats",
-         .uses = {{{Kind::IblReport}, "N", "precompute runs per setting; the median is reported", "3"}},
-         .set = [](Command& c, Str flag, Str v) { c.iblReport.repeats = parseCount(flag, v); },
+         .uses = {{{Kind::IblReport}, "N",
+                   "rounds of precompute runs over every setting, each next to a calibration run; the median ratio and "
+                   "its lowest and highest are reported",
+                   "3"},
+                  {{Kind::QualityReport}, "N",
+                   "rounds of --frames timed frames over every setting; the median ratio and its lowest and highest "
+                   "are reported",
+                   "3"}},
+         .set = [](Command& c, Str flag, Str v) {
+             onOptions(c, [&](auto& o) { if constexpr (requires { o.repeats; }) o.repeats = parseCount(flag, v); });
+         },
          .example = "1"},
         {.name = "--quick",
          .uses = {{{Kind::IblReport}, "", "a reduced sweep (smoke tests)", ""}},
