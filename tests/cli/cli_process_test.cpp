@@ -446,6 +446,15 @@ TEST(Cli, BenchReportsFrameAndPassesAsRatiosToCalibration) {
     EXPECT_FALSE(report["explain"].empty());
 }
 
+// The sky's cost measured by leaving it out: the debug-view switch bench runs afterwards draws no
+// skybox pass, which is no reason to fail.
+TEST(Cli, BenchWithoutTheSkybox) {
+    const Result r = run("bench --validate --frames 1 --width 48 --height 32 --shading-path forward --disable-pass skybox");
+    EXPECT_EQ(r.exitCode, 0) << r.stderrText;
+    EXPECT_NE(r.stdoutText.find("pass tonemap"), std::string::npos) << r.stdoutText;
+    EXPECT_EQ(run("bench --frames 1 --width 48 --height 32 --disable-pass skybx").exitCode, 2);
+}
+
 TEST(Cli, DefaultRenderIsLitByTheProceduralSkyWithPrecomputeFirst) {
     const auto dir = tempDir();
     const auto png = dir / "frame.png", json = dir / "graph.json";
