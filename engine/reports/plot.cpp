@@ -103,12 +103,19 @@ std::string decadeLabel(int exponent) {
     return "1e" + std::to_string(exponent);
 }
 
+// Room right of the plot for the legend: its longest name after the swatch, at least 200 pixels.
+int legendWidth(const PlotSpec& spec) {
+    int widest = Canvas::textWidth("default setting");
+    for (const std::string& name : spec.series) widest = std::max(widest, Canvas::textWidth(name));
+    return std::clamp(widest + 44, 200, int(spec.width) / 2);
+}
+
 // The plot area and the log-log mapping of a spec's points to pixels.
 struct Layout {
     int left = 90, right = 0, top = 50, bottom = 0;
     double lx0 = 0, lx1 = 1, ly0 = 0, ly1 = 1;  // decades at the axes' ends
 
-    explicit Layout(const PlotSpec& spec) : right(int(spec.width) - 200), bottom(int(spec.height) - 60) {
+    explicit Layout(const PlotSpec& spec) : right(int(spec.width) - legendWidth(spec)), bottom(int(spec.height) - 60) {
         double minX = INFINITY, maxX = -INFINITY, minY = INFINITY, maxY = -INFINITY;
         for (const PlotPoint& p : spec.points) {
             if (!usable(p)) continue;
@@ -134,6 +141,18 @@ PixelBox markerBox(const Layout& layout, const PlotSpec& spec, size_t i) {
     return {x - half, y - half, x + half + 1, y + half + 1};
 }
 
+// The pixels of a point's spread bars, ticks included (none without a spread).
+std::vector<PixelBox> barBoxes(const Layout& layout, const PlotPoint& p) {
+    std::vector<PixelBox> out;
+    if (!usable(p)) return out;
+    const int x = int(layout.sx(p.x)), y = int(layout.sy(p.y));
+    if (!std::isnan(p.xLow) && !std::isnan(p.xHigh) && p.xLow > 0)
+        out.push_back({int(layout.sx(p.xLow)) - 1, y - 3, int(layout.sx(p.xHigh)) + 2, y + 4});
+    if (!std::isnan(p.yLow) && !std::isnan(p.yHigh) && p.yLow > 0)
+        out.push_back({x - 3, int(layout.sy(p.yHigh)) - 1, x + 4, int(layout.sy(p.yLow)) + 2});
+    return out;
+}
+
 std::vector<LabelPlacement> placeLabels(const Layout& layout, const PlotSpec& spec) {
     // The ringed point first: it is the one a reader looks for.
     std::vector<size_t> order;
@@ -145,6 +164,7 @@ std::vector<LabelPlacement> placeLabels(const Layout& layout, const PlotSpec& sp
     for (size_t i : order) {
         const PixelBox marker = markerBox(layout, spec, i);
         if (!marker.empty()) markers.push_back(marker);
+        for (const PixelBox& bar : barBoxes(layout, spec.points[i])) markers.push_back(bar);
         LabelRequest r{.x = (marker.x0 + marker.x1) / 2, .y = (marker.y0 + marker.y1) / 2, .clearance = (marker.x1 - marker.x0) / 2};
         const PixelBox ink = Canvas::inkBox(spec.points[i].label);
         if (!marker.empty() && !ink.empty())
