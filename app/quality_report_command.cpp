@@ -86,6 +86,15 @@ std::vector<std::vector<uint8_t>> orbitFrames(Renderer& renderer, RenderSettings
     return out;
 }
 
+// A row as a point of error against frame time for the Pareto front and the plots: the frame
+// ratio's spread over the rounds, and the error compared at the table's precision (3 decimals:
+// values within half its last digit count as equal).
+io::PlotPoint paretoPoint(const Row& r, double error) {
+    constexpr double kHalfDigit = 0.0005;
+    return {.x = r.frameRatio.median, .y = error, .xLow = r.frameRatio.low, .xHigh = r.frameRatio.high,
+            .yLow = std::max(error - kHalfDigit, 0.0), .yHigh = error + kHalfDigit};
+}
+
 // The row's LOD errors, "0/0.5/2" for merged settings.
 std::string lodList(const Row& r) {
     std::string out;
@@ -178,12 +187,10 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
             for (const Row& r : s.rows) {
                 const auto it = std::find(series.begin(), series.end(), std::tuple{r.msaa, r.specularAa, r.path});
                 if (r.isDefault) plot.highlight = plot.points.size();
-                plot.points.push_back({.x = r.frameRatio.median,
-                                       .y = temporal ? r.temporalError : r.error.mean,
-                                       .label = lodList(r) + " px",
-                                       .series = uint32_t(it - series.begin()),
-                                       .xLow = r.frameRatio.low,
-                                       .xHigh = r.frameRatio.high});
+                io::PlotPoint point = paretoPoint(r, temporal ? r.temporalError : r.error.mean);
+                point.label = lodList(r) + " px";
+                point.series = uint32_t(it - series.begin());
+                plot.points.push_back(point);
             }
             io::writeLogLogPlot(out / (s.name + (temporal ? "_temporal.png" : "_error.png")), plot);
         }
@@ -320,7 +327,7 @@ int runQualityReport(const QualityReportOptions& options) {
         for (Row& r : result.rows) {
             r.frameRatio = spreadOfRepeats(r.roundRatios);
             r.frameMs = median(r.roundMs);
-            points.push_back({.x = r.frameRatio.median, .y = r.error.mean, .xLow = r.frameRatio.low, .xHigh = r.frameRatio.high});
+            points.push_back(paretoPoint(r, r.error.mean));
         }
         for (size_t i : io::paretoFront(points)) result.rows[i].pareto = true;
         std::sort(result.rows.begin(), result.rows.end(),

@@ -119,10 +119,10 @@ struct Layout {
         double minX = INFINITY, maxX = -INFINITY, minY = INFINITY, maxY = -INFINITY;
         for (const PlotPoint& p : spec.points) {
             if (!usable(p)) continue;
-            minX = std::min(minX, lowOf(p.x, p.xLow)), maxX = std::max(maxX, highOf(p.x, p.xHigh));
-            minY = std::min(minY, lowOf(p.y, p.yLow)), maxY = std::max(maxY, highOf(p.y, p.yHigh));
+            // A spread reaching 0 has no place on a log axis: its bar stops at the value.
+            minX = std::min(minX, p.xLow > 0 ? p.xLow : p.x), maxX = std::max(maxX, highOf(p.x, p.xHigh));
+            minY = std::min(minY, p.yLow > 0 ? p.yLow : p.y), maxY = std::max(maxY, highOf(p.y, p.yHigh));
         }
-        minX = std::max(minX, 1e-30), minY = std::max(minY, 1e-30);
         if (!std::isfinite(minX) || !std::isfinite(maxX)) minX = 1, maxX = 10, minY = 1, maxY = 10;
         lx0 = std::floor(std::log10(minX)), lx1 = std::max(std::ceil(std::log10(maxX)), lx0 + 1);
         ly0 = std::floor(std::log10(minY)), ly1 = std::max(std::ceil(std::log10(maxY)), ly0 + 1);
@@ -180,8 +180,9 @@ std::vector<LabelPlacement> placeLabels(const Layout& layout, const PlotSpec& sp
 }  // namespace
 
 bool dominates(const PlotPoint& a, const PlotPoint& b) {
-    if (a.x > b.x || a.y > b.y) return false;
-    return highOf(a.x, a.xHigh) < lowOf(b.x, b.xLow) || highOf(a.y, a.yHigh) < lowOf(b.y, b.yLow);
+    const bool clearlyWorseX = lowOf(a.x, a.xLow) > highOf(b.x, b.xHigh), clearlyWorseY = lowOf(a.y, a.yLow) > highOf(b.y, b.yHigh);
+    const bool clearlyBetterX = highOf(a.x, a.xHigh) < lowOf(b.x, b.xLow), clearlyBetterY = highOf(a.y, a.yHigh) < lowOf(b.y, b.yLow);
+    return !clearlyWorseX && !clearlyWorseY && (clearlyBetterX || clearlyBetterY);
 }
 
 std::vector<LabelPlacement> placePlotLabels(const PlotSpec& spec) { return placeLabels(Layout(spec), spec); }

@@ -1,7 +1,7 @@
 #pragma once
 // Log-log scatter plots for reports (`candela ibl-report`, `quality-report`): points in series with
-// the spread of their measurements as bars, the Pareto front (the points no other point beats on
-// both axes by more than the spread) drawn as a line, one point ringed (the default setting),
+// the spread of their measurements as bars, the Pareto front (the points no other point dominates
+// beyond the spread: dominates()) drawn as a line, one point ringed (the default setting),
 // decade grid lines, and labels placed where they overlap nothing (plot_labels.h). Written as PNG.
 // Text is stb_easy_font's bitmap font.
 
@@ -39,10 +39,12 @@ struct PlotSpec {
     uint32_t height = 640;
 };
 
-// Whether `a` dominates `b` when minimising both x and y: `a` is no worse on either axis (x ≤, y ≤)
-// and better on at least one by more than the spreads, i.e. its high end lies below `b`'s low end
-// (a value without a spread is its own low and high end). Differences within the spread of the
-// measurements dominate nothing, so noise cannot push a point off the front.
+// Whether `a` dominates `b` when minimising both x and y, with the spread of the measurements:
+// `a` is better by more than the spreads on at least one axis (its high end below `b`'s low end)
+// and not worse by more than them on the other (a value without a spread is its own low and high
+// end). Two points whose spreads overlap on both axes dominate neither, and a point survives
+// against one with a lower y only by being cheaper beyond the spread: noise neither removes a
+// point from the front nor puts one on it.
 bool dominates(const PlotPoint& a, const PlotPoint& b);
 
 // Indices of the points no other point dominates, in increasing x (equal points all stay). Points

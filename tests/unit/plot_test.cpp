@@ -23,32 +23,37 @@ TEST(Plot, ParetoFrontKeepsThePointsNoOtherBeatsOnBothAxes) {
     EXPECT_TRUE(paretoFront({}).empty());
 }
 
-TEST(Plot, ADifferenceWithinTheSpreadDominatesNothing) {
-    // The ibl-report's case: two settings whose times overlap within their repeats. The slower
-    // one by the median is the more accurate, so neither beats the other.
-    const PlotPoint sh8{.x = 4.27, .y = 0.09, .xLow = 3.9, .xHigh = 5.6};
-    const PlotPoint sh16{.x = 5.42, .y = 0.05, .xLow = 4.1, .xHigh = 6.0};
-    EXPECT_FALSE(dominates(sh8, sh16));
-    EXPECT_FALSE(dominates(sh16, sh8));
-    // Same error, times overlapping: the faster median is not enough.
+TEST(Plot, OnlyADifferenceBeyondTheSpreadDominates) {
+    // Same error, times overlapping: neither dominates, both stay on the front.
     const PlotPoint fast{.x = 1.0, .y = 0.5, .xLow = 0.9, .xHigh = 1.2};
     const PlotPoint slow{.x = 1.1, .y = 0.5, .xLow = 1.0, .xHigh = 1.3};
     EXPECT_FALSE(dominates(fast, slow));
+    EXPECT_FALSE(dominates(slow, fast));
     EXPECT_EQ(paretoFront({fast, slow}), (std::vector<size_t>{0, 1}));
     // Same error, the spreads apart: the faster one dominates.
     const PlotPoint clearlySlower{.x = 1.4, .y = 0.5, .xLow = 1.3, .xHigh = 1.5};
     EXPECT_TRUE(dominates(fast, clearlySlower));
     EXPECT_EQ(paretoFront({fast, clearlySlower}), (std::vector<size_t>{0}));
-    // Times within the spread, an error lower beyond its (zero) spread: the lower error dominates,
-    // unless its median time is the higher one.
+    // A lower error (beyond its zero spread) at a time within the spread dominates, even where
+    // noise put the other's median lower: a faster median alone does not keep a point optimal.
     const PlotPoint better{.x = 1.05, .y = 0.4, .xLow = 0.95, .xHigh = 1.25};
     EXPECT_TRUE(dominates(better, slow));
-    EXPECT_FALSE(dominates(better, fast));
-    EXPECT_EQ(paretoFront({fast, slow, better}), (std::vector<size_t>{0, 2}));
-    // An error spread too: overlapping on both axes, nothing dominates.
+    EXPECT_TRUE(dominates(better, fast));
+    EXPECT_EQ(paretoFront({fast, slow, better}), (std::vector<size_t>{2}));
+    // The ibl-report's case: sh9:8 no faster than sh9:16 beyond the spread, and less accurate.
+    const PlotPoint sh8{.x = 4.27, .y = 0.09, .xLow = 3.9, .xHigh = 5.6};
+    const PlotPoint sh16{.x = 5.42, .y = 0.05, .xLow = 4.1, .xHigh = 6.0};
+    EXPECT_TRUE(dominates(sh16, sh8));
+    EXPECT_FALSE(dominates(sh8, sh16));
+    // Faster beyond the spread keeps a less accurate point on the front.
+    const PlotPoint cheap{.x = 0.5, .y = 0.6, .xLow = 0.45, .xHigh = 0.55};
+    EXPECT_FALSE(dominates(better, cheap));
+    EXPECT_FALSE(dominates(cheap, better));
+    EXPECT_EQ(paretoFront({better, cheap}), (std::vector<size_t>{1, 0}));
+    // Overlapping on both axes: nothing dominates.
     const PlotPoint noisy{.x = 1.0, .y = 0.45, .xLow = 0.9, .xHigh = 1.2, .yLow = 0.38, .yHigh = 0.52};
     EXPECT_FALSE(dominates(noisy, slow));
-    EXPECT_FALSE(dominates(better, noisy));
+    EXPECT_FALSE(dominates(slow, noisy));
     // Equal points both stay.
     EXPECT_EQ(paretoFront({fast, fast}), (std::vector<size_t>{0, 1}));
 }
