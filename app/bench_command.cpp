@@ -84,7 +84,7 @@ struct PathMeasurement {
 constexpr uint32_t kSerialFrames = 5;
 
 // Per pass: the median GPU time (timestamps) and the median wall time of the pass run alone
-// (serialized) with its lowest and highest, each also as a ratio to the calibration's.
+// (serialized) with its quartiles, each also as a ratio to the calibration's.
 nlohmann::ordered_json passesJson(const FrameMeasurement& m) {
     const double calibration = median(m.calibrationMs), calibrationGpu = median(m.calibrationGpuMs);
     nlohmann::ordered_json passes = nlohmann::ordered_json::array();
@@ -92,13 +92,13 @@ nlohmann::ordered_json passesJson(const FrameMeasurement& m) {
         const auto times = m.passGpuMs.find(name);
         const double gpu = times == m.passGpuMs.end() ? -1.0 : median(times->second);
         const auto serialTimes = m.passSerialMs.find(name);
-        const Spread serial = serialTimes == m.passSerialMs.end() ? Spread{} : spreadOfRepeats(serialTimes->second);
+        const Spread serial = serialTimes == m.passSerialMs.end() ? Spread{} : spreadOf(serialTimes->second);
         passes.push_back({{"name", name},
                           {"gpuMedianMs", gpu},
                           {"ratioToCalibrationGpu", gpu >= 0.0 && calibrationGpu > 0.0 ? gpu / calibrationGpu : -1.0},
                           {"serialMedianMs", serial.median},
-                          {"serialMinMs", serial.low},
-                          {"serialMaxMs", serial.high},
+                          {"serialP25Ms", serial.low},
+                          {"serialP75Ms", serial.high},
                           {"serialRatio", serial.median >= 0.0 ? serial.median / calibration : -1.0}});
     }
     return passes;
@@ -107,10 +107,10 @@ nlohmann::ordered_json passesJson(const FrameMeasurement& m) {
 // `mark`: "*" after GPU times that are unreliable (the note is printed once, by the caller).
 void printPasses(const nlohmann::ordered_json& passes, const char* indent, const char* mark) {
     for (const auto& p : passes)
-        std::printf("%spass %-20s GPU median %6.2f ms%s (%.2fx calibration GPU); alone %6.2f ms (%.2f–%.2f; %.2fx calibration)\n",
+        std::printf("%spass %-20s GPU median %6.2f ms%s (%.2fx calibration GPU); alone %6.2f ms (interquartile %.2f–%.2f; %.2fx calibration)\n",
                     indent, p["name"].get<std::string>().c_str(), p["gpuMedianMs"].get<double>(), mark,
                     p["ratioToCalibrationGpu"].get<double>(), p["serialMedianMs"].get<double>(),
-                    p["serialMinMs"].get<double>(), p["serialMaxMs"].get<double>(), p["serialRatio"].get<double>());
+                    p["serialP25Ms"].get<double>(), p["serialP75Ms"].get<double>(), p["serialRatio"].get<double>());
 }
 
 }  // namespace
@@ -161,7 +161,7 @@ int runBench(const RenderOptions& options) {
                        {"encodedBytes", textures.encodedBytes},
                        {"decodedBytes", textures.decodedBytes},
                        {"deviceBytes", renderer.sceneTextureBytes()}};
-    const Spread calibrationSpread = spreadOfFrames(calibrationMs), frameSpread = spreadOfFrames(frameMs);
+    const Spread calibrationSpread = spreadOf(calibrationMs), frameSpread = spreadOf(frameMs);
     out["calibration"] = {{"medianMs", calibration},
                           {"minMs", minimum(calibrationMs)},
                           {"p25Ms", calibrationSpread.low},

@@ -487,13 +487,13 @@ std::vector<Flag> makeFlagTable() {
         // ---- the report commands and soak ----
         {.name = "--repeats",
          .uses = {{{Kind::IblReport}, "N",
-                   "rounds of precompute runs over every setting, each next to a calibration run; the median ratio and "
-                   "its lowest and highest are reported",
+                   "rounds of precompute runs over every setting, a calibration run before each; the median time and "
+                   "its quartiles are reported, over the median calibration",
                    "3"},
                   {{Kind::QualityReport}, "N",
-                   "rounds of --frames timed frames over every setting; the median ratio and its lowest and highest "
-                   "are reported",
-                   "3"}},
+                   "rounds of --frames timed frames over every setting; the median ratio and its quartiles are "
+                   "reported",
+                   "5"}},
          .set = [](Command& c, Str flag, Str v) {
              onOptions(c, [&](auto& o) { if constexpr (requires { o.repeats; }) o.repeats = parseCount(flag, v); });
          },

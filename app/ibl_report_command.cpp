@@ -1,8 +1,8 @@
 // `candela ibl-report`: what each image-based-lighting quality setting costs and what error it
 // leaves. For every setting of a sweep (prefilter samples with and without filtered importance
 // sampling, cube size, irradiance as SH9 or cube, BRDF LUT size and samples) it measures the
-// precompute time (CPU wall around submit+wait, in --repeats rounds over every setting, each run
-// next to a calibration pass: the median ratio with its lowest and highest) and compares the maps
+// precompute time (CPU wall around submit+wait, in --repeats rounds over every setting: the median
+// and its quartiles, over the median calibration pass of the run) and compares the maps
 // with the double-precision reference (reports/ibl_errors.h), then renders the default scene and compares it with a ground-truth render that integrates the
 // reflectance equation per pixel. Writes report.csv, report.md and log-log plots to --out.
 
@@ -140,10 +140,12 @@ int runIblReport(const IblReportOptions& options) {
         results.push_back(std::move(r));
     }
     // Times: rounds over every setting, alternately forwards and backwards, so that a drift of
-    // the machine's speed reaches every setting alike; each precompute right after a calibration
-    // run, so that each time is also a ratio to work done under the same load.
+    // the machine's speed reaches every setting alike, with a calibration run before each
+    // precompute. A single calibration run right after a precompute varies far more than the
+    // precompute does (18.6–41.8 ms against ±2% in one run), so a run's ratio to its neighbour is
+    // noise: the ratio is the setting's median over the median of every calibration run.
     struct Times {
-        std::vector<double> wall, gpu, setup, ratio;
+        std::vector<double> wall, gpu, setup;
     };
     std::vector<Times> times(settings.size());
     std::vector<double> calibrations;
@@ -159,19 +161,20 @@ int runIblReport(const IblReportOptions& options) {
             const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             Times& m = times[i];
             m.wall.push_back(t.submitWaitMs);
-            m.ratio.push_back(t.submitWaitMs / calibrationMs);
             m.setup.push_back(total - t.submitWaitMs);
             double sum = 0;
             for (double ms : t.timings.gpuMs) sum += std::max(ms, 0.0);
             m.gpu.push_back(sum);
         }
     progress.clear();
+    const Spread calibration = spreadOf(calibrations);
     for (size_t i = 0; i < results.size(); ++i) {
         Result& r = results[i];
-        const Spread ratio = spreadOfRepeats(times[i].ratio), wall = spreadOfRepeats(times[i].wall);
+        const Spread wall = spreadOf(times[i].wall);
         r.wallMs = wall.median, r.wallLowMs = wall.low, r.wallHighMs = wall.high;
         r.gpuMs = median(times[i].gpu), r.setupMs = median(times[i].setup);
-        r.ratio = ratio.median, r.ratioLow = ratio.low, r.ratioHigh = ratio.high;
+        r.ratio = wall.median / calibration.median;
+        r.ratioLow = wall.low / calibration.median, r.ratioHigh = wall.high / calibration.median;
         std::printf("%-24s %-10s precompute %8.1f ms (%.1f–%.1f) = %5.2fx calibration (%.2f–%.2f; setup %6.1f ms); specular "
                     "RMSE %.2e mean %.2e; irradiance RMSE %.2e; LUT max %.1e; image RMSE %.2e mean %.2e\n",
                     r.setting.group.c_str(), r.setting.label.c_str(), r.wallMs, r.wallLowMs, r.wallHighMs, r.ratio,
@@ -179,7 +182,6 @@ int runIblReport(const IblReportOptions& options) {
                     std::max(r.lut.maxA, r.lut.maxB), r.image.rmse, r.image.meanRelative);
     }
     std::fflush(stdout);
-    const Spread calibration = spreadOfRepeats(calibrations);
     progress.step(1 + settings.size() * (1 + options.repeats), "writing the report");
     progress.finish();
 

@@ -109,11 +109,13 @@ void writeCsv(const std::filesystem::path& out, const std::vector<Result>& resul
 void writeMarkdown(const std::filesystem::path& out, const Context& c, const std::vector<Result>& results) {
     std::ostringstream md;
     md << "# IBL quality report\n\nEnvironment: " << c.environment << ". Device: " << c.device << ". Calibration pass (1280x720): "
-       << fixed(c.calibrationMs, 1) << " ms median (" << fixed(c.calibrationLowMs, 1) << "–" << fixed(c.calibrationHighMs, 1)
-       << " ms over the run). Precompute times: submit+wait in " << c.repeats
-       << " rounds over every setting (alternately forwards and backwards), each run right after a calibration run; "
-          "× calibration is the median of the per-run ratios, the lowest and highest in brackets. A setting is off "
-          "the Pareto front only when another is no worse on both axes and better by more than that spread. Errors "
+       << fixed(c.calibrationMs, 1) << " ms median (interquartile " << fixed(c.calibrationLowMs, 1) << "–" << fixed(c.calibrationHighMs, 1)
+       << " ms over the run, one run before each timed precompute). Precompute times: submit+wait in " << c.repeats
+       << " rounds over every setting (alternately forwards and backwards); ms and × calibration are the median "
+          "over the median calibration run, the quartiles of the rounds in brackets (nearest rank: for 3 rounds the "
+          "lowest and highest). A setting is off the plots' "
+          "Pareto front only when another is better by more than these spreads on one axis and not worse by more on "
+          "the other. Errors "
           "are relative luminance errors against the double-precision reference (reports/ibl_errors.h): RMSE "
           "(dominated by the brightest values), mean relative and max relative error (each value against its "
           "reference plus 1% of the mean). Specular: averaged over the roughness > 0 levels, 128 texels each "
@@ -148,7 +150,7 @@ void writePlots(const std::filesystem::path& out, const std::vector<Result>& res
     auto plot = [&](const char* file, const char* title, const char* yLabel, auto&& error,
                     const std::vector<std::string>& groups) {
         io::PlotSpec spec{.title = title,
-                          .xLabel = "precompute time / calibration pass (median of interleaved runs, bars: lowest to highest)",
+                          .xLabel = "precompute time / median calibration pass (median of the rounds, bars: quartiles)",
                           .yLabel = yLabel};
         spec.series = groups;
         spec.series.push_back("other groups");

@@ -2,7 +2,7 @@
 // settings — MSAA × specular anti-aliasing × level-of-detail error, on each shading path the device
 // has (docs/shading-paths.md) — on a set of scenes. Per
 // setting: the frame time as a ratio to the calibration pass of the same run (the median of
-// --repeats rounds over every setting, with the lowest and highest round), the error against a
+// --repeats rounds over every setting, with the quartiles of the rounds), the error against a
 // reference (full detail, no specular AA, 4× the width and height, i.e. 16 samples per pixel,
 // box-downsampled in linear radiance; both display-encoded as the tonemap pass does: mean and 99th
 // percentile in levels of 255) over a slow orbit of the camera (1° per frame), and the orbit's
@@ -46,7 +46,7 @@ struct Row {
     bool specularAa = false;
     std::vector<float> lodErrors;  // one, or those that drew the same work and images (sameWork)
     passes::ShadingPath path = passes::ShadingPath::Forward;
-    Spread frameRatio;             // over the rounds: median, lowest and highest
+    Spread frameRatio;             // over the rounds: median and quartiles
     double frameMs = 0.0;          // median over the rounds of each round's median frame
     std::vector<double> roundRatios, roundMs;
     io::DisplayError error;
@@ -137,8 +137,8 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
     md << "# Quality report: anti-aliasing and levels of detail\n\n"
        << o.width << "×" << o.height << " on " << device << ". Frame time: in each of " << o.repeats
        << " rounds over every setting (alternately forwards and backwards), the median of " << o.frames
-       << " frames over the median of the calibration passes run between them; the median of the rounds, the lowest "
-          "and highest round in brackets. Settings that differ only in their LOD error and submitted the same draws and "
+       << " frames over the median of the calibration passes run between them; the median of the rounds, their "
+          "quartiles in brackets (nearest rank: for 3 rounds the lowest and highest, for 5 the second and fourth). Settings that differ only in their LOD error and submitted the same draws and "
           "triangles and drew byte-identical frames over the orbit are one row (LOD errors joined by /). Error: against a reference with full detail and "
           "no specular AA at "
        << kReferenceScale << "× the width and height (" << kReferenceScale * kReferenceScale
@@ -149,8 +149,9 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
           "over that orbit (motion plus shimmer; the reference's own is the motion), and its error: the mean absolute "
           "difference between the setting's frame-to-frame changes and the reference's (the flicker the reference does "
           "not have). ★: on the Pareto front of frame "
-          "time against mean error, where a row is dominated only by one no worse on both that is better by more "
-          "than the rounds' spread (the frame time's brackets do not overlap) or has a lower error. Default on this device: MSAA "
+          "time against mean error, where a row is dominated only by one that is better beyond the spread on one axis "
+          "(frame time: the brackets do not overlap; error: lower at the table's 3 decimals) and not worse beyond it "
+          "on the other. Default on this device: MSAA "
        << defaultMsaa.samples << ", specular AA " << (passes::ShadingOptions{}.specularAntiAliasing ? "on" : "off") << ", LOD "
        << passes::DrawSelection::kDefaultLodErrorPixels << " px.\n\n";
     for (const std::string& note : notes) md << "- " << note << "\n";
@@ -325,7 +326,7 @@ int runQualityReport(const QualityReportOptions& options) {
             }
         std::vector<io::PlotPoint> points;
         for (Row& r : result.rows) {
-            r.frameRatio = spreadOfRepeats(r.roundRatios);
+            r.frameRatio = spreadOf(r.roundRatios);
             r.frameMs = median(r.roundMs);
             points.push_back(paretoPoint(r, r.error.mean));
         }

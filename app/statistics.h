@@ -24,21 +24,16 @@ inline double quantile(std::vector<double> values, double q) {
     return values[size_t(std::max(rank, 1.0)) - 1];
 }
 
-// A measured figure: the median of repeated measurements and their spread. Reports repeat a
-// few times (3–5), so their spread is the lowest and highest value (spreadOfRepeats); bench times
-// many frames, so its spread is the interquartile range (spreadOfFrames). All -1 when empty.
+// A measured figure: the median of repeated measurements (frames, rounds of a report) and their
+// spread, the lower and upper quartile by nearest rank (for 3 values the lowest and highest, for 5
+// the second and fourth: one outlier on either side moves it little). All -1 when empty.
 struct Spread {
     double median = -1.0;
     double low = -1.0;
     double high = -1.0;
 };
 
-inline Spread spreadOfRepeats(const std::vector<double>& values) {
-    if (values.empty()) return {};
-    return {median(values), *std::min_element(values.begin(), values.end()), *std::max_element(values.begin(), values.end())};
-}
-
-inline Spread spreadOfFrames(const std::vector<double>& values) {
+inline Spread spreadOf(const std::vector<double>& values) {
     return {median(values), quantile(values, 0.25), quantile(values, 0.75)};
 }
 

@@ -24,16 +24,16 @@ TEST(Statistics, QuantilesAreNearestRanksThatBracketTheMedian) {
     EXPECT_DOUBLE_EQ(quantile({}, 0.5), -1.0);
 }
 
-TEST(Statistics, SpreadsAreTheRangeOfRepeatsAndTheQuartilesOfFrames) {
-    const Spread repeats = spreadOfRepeats({4.27, 5.6, 3.9});
-    EXPECT_DOUBLE_EQ(repeats.median, 4.27);
-    EXPECT_DOUBLE_EQ(repeats.low, 3.9);
-    EXPECT_DOUBLE_EQ(repeats.high, 5.6);
-    const Spread frames = spreadOfFrames({10, 11, 12, 13, 100});  // one slow frame moves the quartiles little
-    EXPECT_DOUBLE_EQ(frames.median, 12.0);
-    EXPECT_DOUBLE_EQ(frames.low, 11.0);
-    EXPECT_DOUBLE_EQ(frames.high, 13.0);
-    EXPECT_DOUBLE_EQ(spreadOfRepeats({}).median, -1.0);
+TEST(Statistics, SpreadsAreQuartilesThatAnOutlierMovesLittle) {
+    const Spread three = spreadOf({4.27, 5.6, 3.9});  // three rounds: the lowest and highest
+    EXPECT_DOUBLE_EQ(three.median, 4.27);
+    EXPECT_DOUBLE_EQ(three.low, 3.9);
+    EXPECT_DOUBLE_EQ(three.high, 5.6);
+    const Spread five = spreadOf({2.51, 2.52, 4.00, 2.50, 2.53});  // one slow round
+    EXPECT_DOUBLE_EQ(five.median, 2.52);
+    EXPECT_DOUBLE_EQ(five.low, 2.51);
+    EXPECT_DOUBLE_EQ(five.high, 2.53);
+    EXPECT_DOUBLE_EQ(spreadOf({}).median, -1.0);
 }
 
 }  // namespace
