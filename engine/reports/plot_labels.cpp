@@ -11,6 +11,7 @@ namespace {
 constexpr int kGap = 3;      // between a marker and a label next to it
 constexpr int kReach = 120;  // how far from its point a label may go, in pixels
 constexpr int kStep = 2;     // of the search grid
+constexpr int kLabelGap = 3; // between two labels, so that neighbours do not read as one
 
 // Distance from the pixel (x, y) to the nearest pixel of `b`.
 double distance(int x, int y, const PixelBox& b) {
@@ -46,7 +47,7 @@ std::vector<LabelPlacement> placeLabels(const std::vector<LabelRequest>& labels,
         for (const PixelBox& o : obstacles)
             if (box.intersects(o)) return false;
         for (const PixelBox& t : taken)
-            if (box.intersects(t)) return false;
+            if (box.intersects({t.x0 - kLabelGap, t.y0 - kLabelGap, t.x1 + kLabelGap, t.y1 + kLabelGap})) return false;
         return true;
     };
     for (size_t i = 0; i < labels.size(); ++i) {

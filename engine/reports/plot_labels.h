@@ -35,8 +35,8 @@ struct LabelPlacement {
 };
 
 // Places the labels in the order given (earlier ones get the better positions). Each box lies
-// inside `area` when it fits there, meets no `obstacles` box (the markers) and no box placed
-// before it; when nothing within reach is free, the label takes its first position with
+// inside `area` when it fits there, meets no `obstacles` box (the markers) and keeps a few pixels
+// from every box placed before it; when nothing within reach is free, the label takes its first position with
 // LabelPlacement::free false. Returns one placement per request, in the same order.
 std::vector<LabelPlacement> placeLabels(const std::vector<LabelRequest>& labels, const std::vector<PixelBox>& obstacles,
                                         const PixelBox& area);

@@ -97,7 +97,8 @@ void expectReadable(const PlotSpec& spec) {
             EXPECT_FALSE(labels[i].box.intersects(plotMarkerBox(spec, j)))
                 << "label '" << spec.points[i].label << "' covers the marker of point " << j;
             if (j > i) {
-                EXPECT_FALSE(labels[i].box.intersects(labels[j].box))
+                const PixelBox& b = labels[j].box;  // with a pixel between them: neighbours do not read as one
+                EXPECT_FALSE(labels[i].box.intersects({b.x0 - 1, b.y0 - 1, b.x1 + 1, b.y1 + 1}))
                     << "labels '" << spec.points[i].label << "' and '" << spec.points[j].label << "' overlap";
             }
         }
