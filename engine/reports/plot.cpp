@@ -171,6 +171,17 @@ std::vector<LabelPlacement> placeLabels(const Layout& layout, const PlotSpec& sp
             r.width = ink.x1 - ink.x0 + 2 * kLabelPad, r.height = ink.y1 - ink.y0 + 2 * kLabelPad;
         requests.push_back(r);
     }
+    // The Pareto front's line, as small boxes along it: a label over it would be crossed out.
+    const std::vector<size_t> front = spec.paretoLine ? paretoFront(spec.points) : std::vector<size_t>{};
+    for (size_t k = 1; k < front.size(); ++k) {
+        const double x0 = layout.sx(spec.points[front[k - 1]].x), y0 = layout.sy(spec.points[front[k - 1]].y);
+        const double x1 = layout.sx(spec.points[front[k]].x), y1 = layout.sy(spec.points[front[k]].y);
+        const int steps = int(std::max(std::abs(x1 - x0), std::abs(y1 - y0)) / 2) + 1;
+        for (int i = 0; i <= steps; ++i) {
+            const int x = int(std::lround(x0 + (x1 - x0) * i / steps)), y = int(std::lround(y0 + (y1 - y0) * i / steps));
+            markers.push_back({x - 1, y - 1, x + 2, y + 2});
+        }
+    }
     const std::vector<LabelPlacement> placed = io::placeLabels(requests, markers, layout.labelArea());
     std::vector<LabelPlacement> out(spec.points.size());
     for (size_t k = 0; k < order.size(); ++k) out[order[k]] = placed[k];
