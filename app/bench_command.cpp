@@ -123,7 +123,9 @@ int runBench(const RenderOptions& options) {
     RenderSettings settings = renderSettings(options, scene, environment ? &*environment : nullptr);
     // Frame i shows the animations at --time + i/60 s: each frame pays for evaluating its pose.
     scene::ScenePose pose = loadPose(options, scene);
+    warnAnimationConflicts(options, scene);
     settings.pose = &pose;
+    log::info("camera: " + Renderer::cameraFlags(scene, settings.camera, float(settings.width) / float(settings.height), &pose));
     std::vector<double> animationMs;
     const auto advance = [&](uint32_t frame) {
         const auto start = std::chrono::steady_clock::now();

@@ -140,7 +140,10 @@ std::vector<Flag> makeFlagTable() {
          },
          .example = "24"},
         {.name = "--turntable",
-         .uses = {{{Kind::Render}, "DEGREES", "turn the orbit camera by DEGREES over an image sequence (360: once round)", "0"}},
+         .uses = {{{Kind::Render}, "DEGREES",
+                   "turn the orbit camera by DEGREES over an image sequence (360: once round), framed at one "
+                   "distance",
+                   "0"}},
          .set = [](Command& c, Str flag, Str v) { c.render.turntableDegrees = parseNumber(flag, v); },
          .example = "90"},
         {.name = "--report",
@@ -184,8 +187,14 @@ std::vector<Flag> makeFlagTable() {
          .set = [](Command& c, Str flag, Str v) { c.render.graphJson = parsePath(flag, v); },
          .example = "graph.json"},
         {.name = "--explain",
-         .uses = {{{Kind::Render}, "", "print which passes and shader variants were left out, and why", ""},
-                  {{Kind::Bench}, "", "print which passes and shader variants the measured frames left out, and why (with --json: as \"explain\")", ""}},
+         .uses = {{{Kind::Render}, "",
+                   "print the camera used (as the flags that reproduce it) and which passes and shader variants were "
+                   "left out, and why",
+                   ""},
+                  {{Kind::Bench}, "",
+                   "print the camera used (as the flags that reproduce it) and which passes and shader variants the "
+                   "measured frames left out, and why (with --json: as \"explain\")",
+                   ""}},
          .set = [](Command& c, Str, Str) { c.render.explain = true; }},
         {.name = "--dither",
          .uses = {{{Kind::Render, Kind::Bench}, "", "dither the 8-bit output (the viewer always does)", ""}},
@@ -278,7 +287,9 @@ std::vector<Flag> makeFlagTable() {
         {.name = "--camera-orbit",
          .uses = {{kRenderViewBench, "T,P,R",
                    "orbit camera: azimuth T and polar angle P in degrees, distance R in metres (eye = target + R(sin P "
-                   "sin T, cos P, sin P cos T); R <= 0 frames the scene) [0,90,0: from +Z, framing the scene bounds]",
+                   "sin T, cos P, sin P cos T); R <= 0 frames the scene: the nearest distance where its bounding box fits "
+                   "the image at a 45-degree field of view) [0,75,0: from the front, 15 degrees above the horizon, framing "
+                   "the scene; the built-in grid head-on, 0,90,0; --explain prints the camera used as flags]",
                    ""}},
          .set = [](Command& c, Str flag, Str v) { c.render.cameraOrbit = parseTriple(flag, v); },
          .example = "30,70,5"},
@@ -287,7 +298,9 @@ std::vector<Flag> makeFlagTable() {
          .set = [](Command& c, Str flag, Str v) { c.render.target = parseTriple(flag, v); },
          .example = "0,1,0"},
         {.name = "--fov",
-         .uses = {{kRenderViewBench, "DEGREES", "vertical field of view of the orbit camera", "45"}},
+         .uses = {{kRenderViewBench, "DEGREES",
+                   "vertical field of view of the orbit camera; framing keeps its distance, so a narrower field "
+                   "shows the model bigger", "45"}},
          .set = [](Command& c, Str flag, Str v) {
              c.render.fovDegrees = parseNumber(flag, v);
              if (c.render.fovDegrees <= 0.0f || c.render.fovDegrees >= 180.0f)
@@ -402,7 +415,9 @@ std::vector<Flag> makeFlagTable() {
          .set = [](Command& c, Str flag, Str v) { c.render.frustumCulling = parseChoice(flag, kOnOff, v); },
          .example = "off"},
         {.name = "--disable-pass",
-         .uses = {{kRenderViewBench, "NAME", "switch a pass off (repeatable); passes that lose their input are culled too", ""}},
+         .uses = {{kRenderViewBench, "NAME", "switch a pass off (repeatable): the frame is drawn without what it adds (skybox: no sky; "
+                   "transmission_background: transmissive surfaces see only the background; skin_morph: skinned and "
+                   "morphed meshes left out); a pass the image cannot be made without is an error naming it", ""}},
          .set = [](Command& c, Str, Str v) { c.render.disabledPasses.push_back(v); },
          .example = "skybox"},
         // ---- lights and image-based lighting ----
@@ -468,7 +483,7 @@ std::vector<Flag> makeFlagTable() {
          .set = [](Command& c, Str flag, Str v) {
              c.render.iblQuality.irradiance = parseChoice(flag, ibl::kIrradianceModeNames, v);
          },
-         .example = "cube"},
+         .example = "sh9"},
         iblQualityFlag("--ibl-cube-size", "environment cube face size, 2^k from 16 to 2048", &ibl::IblQuality::cubeSize, "128"),
         iblQualityFlag("--ibl-levels", "specular roughness levels (mips)", &ibl::IblQuality::specularLevels, "5"),
         iblQualityFlag("--ibl-prefilter-samples",
@@ -478,6 +493,9 @@ std::vector<Flag> makeFlagTable() {
          .uses = {{kRenderViewBench, "B", "filtered-importance-sampling lod bias (more: less noise, more blur)", valueText(quality.lodBias)}},
          .set = [](Command& c, Str flag, Str v) { c.render.iblQuality.lodBias = parseNumber(flag, v); },
          .example = "1"},
+        iblQualityFlag("--ibl-bright-texels",
+                       "the environment's brightest texels (a sun) summed exactly by the filters, not sampled; 0: none",
+                       &ibl::IblQuality::brightTexels, "0"),
         iblQualityFlag("--ibl-sh-size", "face size of the cube mip projected onto SH9", &ibl::IblQuality::shSourceSize, "16"),
         iblQualityFlag("--ibl-irradiance-size", "irradiance cube face size (--irradiance cube)", &ibl::IblQuality::irradianceSize, "16"),
         iblQualityFlag("--ibl-irradiance-samples", "cosine samples per irradiance cube texel (--irradiance cube)",
@@ -639,7 +657,11 @@ std::vector<Flag> makeFlagTable() {
          .set = [](Command& c, Str flag, Str v) { c.common().pipelineCache = parsePath(flag, v); },
          .example = "cache"},
         {.name = "--verbose",
-         .uses = {{{Kind::Render, Kind::View, Kind::Bench, Kind::IblReport, Kind::QualityReport}, "",
+         .uses = {{{Kind::Render, Kind::View, Kind::Bench}, "",
+                   "also print notes on the files read (such as the degenerate triangles a glTF file's primitives had, "
+                   "dropped quietly) and the camera used, as the flags that reproduce it",
+                   ""},
+                  {{Kind::IblReport, Kind::QualityReport}, "",
                    "also print notes on the files read (such as the degenerate triangles a glTF file's primitives had, "
                    "dropped quietly)",
                    ""}},

@@ -39,6 +39,9 @@ std::optional<scene::Environment> loadEnvironment(const EnvironmentChoice& choic
 // The pose --animation and --time ask for (a UserError names the scene's animations when one
 // does not exist). Precondition: `scene` outlives it.
 scene::ScenePose loadPose(const RenderOptions& options, const scene::Scene& scene);
+// Logs one warning naming the scene when the animations --animation asks for drive the same
+// channels (which, and which wins: scene::describeAnimationConflicts); nothing otherwise.
+void warnAnimationConflicts(const RenderOptions& options, const scene::Scene& scene);
 // Writes `text` to the file `path` (replacing it); a UserError "PATH: cannot write" otherwise.
 void writeText(const std::string& path, const std::string& text);
 // Creates the report folder `out` and checks that each of `files` can be written in it; a

@@ -18,6 +18,16 @@ struct Setting {
     ibl::IblQuality quality;
 };
 
+// What a viewer sees of an image's error against the ground truth: both display-encoded as the tonemap
+// pass encodes them (PBR Neutral at exposure 0, sRGB, 8 bits; reports/image_error.h) and compared with
+// LDR-ꟻLIP (reports/flip.h, the papers' viewing conditions) over the pixels both cover; and the 99th
+// percentile of the relative luminance error. A small bright highlight (a sun's reflection) is a
+// few hundred pixels: it moves the maximum and the 99.9th percentile, hardly the mean.
+struct VisibleError {
+    double flipMean = 0, flipP99 = 0, flipP999 = 0, flipMax = 0;
+    double relativeP99 = 0;
+};
+
 struct Result {
     Setting setting;
     double wallMs = 0;        // median precompute submit+wait
@@ -30,6 +40,10 @@ struct Result {
     ibl::ErrorStats irradiance;
     ibl::LutErrors lut;
     ibl::ErrorStats image;  // relative luminance errors of the default scene against the ground truth
+    VisibleError visible;   // the same image's visible error against the ground truth
+    // ... and against the same scene through the split sum with converged maps (Context::converged):
+    // what the maps alone leave visible (a blocky, speckled sun), without the split sum's own error.
+    VisibleError visibleMaps;
     double specularRmse() const {  // mean relative RMSE over the roughness > 0 levels
         double sum = 0;
         int n = 0;
@@ -62,11 +76,17 @@ struct Context {
     uint32_t width = 0, height = 0;  // end-to-end images
     uint32_t referenceSamples = 0;
     ibl::ErrorStats convergence;  // the ground truth against itself at a quarter of the samples
+    VisibleError visibleConvergence;
+    std::string converged;  // the settings of the converged-maps render (IblQuality::canonical)
+    double convergedSpecularMax = 0;  // its maps' worst relative error (Result::specularMax)
 };
 
 // Relative luminance errors (ibl::errorStats) of `image` against `reference` (RGBA floats) over the
 // pixels both cover fully.
 ibl::ErrorStats imageError(const std::vector<float>& image, const std::vector<float>& reference);
+// VisibleError of `image` against `reference` (RGBA floats, premultiplied, width × height).
+VisibleError visibleError(const std::vector<float>& image, const std::vector<float>& reference, uint32_t width,
+                          uint32_t height);
 // A quick look at a linear frame: exposure 1, Reinhard, sRGB-encoded 8-bit PNG.
 void writePreview(const std::filesystem::path& path, const CapturedFrame& frame);
 // Per-pixel relative error against `reference` as a PNG: |x − ref| / (ref + 1% of the mean) as grey

@@ -40,6 +40,28 @@ std::vector<Setting> sweep(bool quick) {
     };
     const std::vector<uint32_t> fis = quick ? std::vector<uint32_t>{16, 64} : std::vector<uint32_t>{8, 16, 32, 64, 128, 256, 512, 1024, 2048};
     for (uint32_t n : fis) add("prefilter, filtered IS", std::to_string(n), [&](ibl::IblQuality& q) { q.prefilterSamples = n; });
+    // The defaults before the bright-texel split (kept as a row to compare with).
+    add("previous default", "32 samples, 6 levels, sun sampled, sh9", [&](ibl::IblQuality& q) {
+        q.prefilterSamples = 32;
+        q.specularLevels = 6;
+        q.brightTexels = 0;
+        q.irradiance = ibl::IrradianceMode::Sh9;
+    });
+    // The same without the bright-texel split: the sun sampled like the rest (the defaults before it).
+    const std::vector<uint32_t> sampledSun = quick ? std::vector<uint32_t>{32} : std::vector<uint32_t>{8, 32, 128, 512, 2048};
+    for (uint32_t n : sampledSun)
+        add("prefilter, FIS, sun sampled", std::to_string(n), [&](ibl::IblQuality& q) {
+            q.prefilterSamples = n;
+            q.brightTexels = 0;
+        });
+    const std::vector<uint32_t> bright = quick ? std::vector<uint32_t>{16} : std::vector<uint32_t>{16, 64, 1024, 4096};
+    for (uint32_t n : bright)
+        add("bright texels", "bright " + std::to_string(n), [&](ibl::IblQuality& q) { q.brightTexels = n; });
+    // Roughness levels: how finely the split sum's lookup interpolates between lobes (judged against the
+    // ground truth; the converged-maps comparison holds the default's levels).
+    const std::vector<uint32_t> levels = quick ? std::vector<uint32_t>{} : std::vector<uint32_t>{4, 6, 9};
+    for (uint32_t n : levels)
+        add("roughness levels", "levels " + std::to_string(n), [&](ibl::IblQuality& q) { q.specularLevels = n; });
     const std::vector<uint32_t> plain = quick ? std::vector<uint32_t>{64} : std::vector<uint32_t>{64, 256, 1024, 2048};
     for (uint32_t n : plain)
         add("prefilter, plain IS", std::to_string(n), [&](ibl::IblQuality& q) {
@@ -48,9 +70,14 @@ std::vector<Setting> sweep(bool quick) {
         });
     const std::vector<uint32_t> cubes = quick ? std::vector<uint32_t>{64} : std::vector<uint32_t>{64, 128, 512, 1024};
     for (uint32_t size : cubes) add("cube size", std::to_string(size), [&](ibl::IblQuality& q) { q.cubeSize = size; });
-    const std::vector<uint32_t> sh = quick ? std::vector<uint32_t>{8} : std::vector<uint32_t>{8, 16, 64, 128};
-    for (uint32_t size : sh) add("irradiance SH9", "sh9:" + std::to_string(size), [&](ibl::IblQuality& q) { q.shSourceSize = size; });
-    const std::vector<uint32_t> cube = quick ? std::vector<uint32_t>{64} : std::vector<uint32_t>{16, 64, 256, 1024};
+    const std::vector<uint32_t> sh = quick ? std::vector<uint32_t>{8} : std::vector<uint32_t>{8, 16, 32, 64, 128};
+    for (uint32_t size : sh)
+        add("irradiance SH9", "sh9:" + std::to_string(size), [&](ibl::IblQuality& q) {
+            q.irradiance = ibl::IrradianceMode::Sh9;
+            q.shSourceSize = size;
+        });
+    // The default is cube:256 (measured in the prefilter series).
+    const std::vector<uint32_t> cube = quick ? std::vector<uint32_t>{64} : std::vector<uint32_t>{16, 64, 1024};
     for (uint32_t n : cube)
         add("irradiance cube", "cube:" + std::to_string(n), [&](ibl::IblQuality& q) {
             q.irradiance = ibl::IrradianceMode::Cube;
@@ -80,7 +107,8 @@ const ibl::CachedImage* findImage(const std::vector<ibl::CachedImage>& images, c
 
 int runIblReport(const IblReportOptions& options) {
     const std::filesystem::path out = options.out;
-    prepareReportFolder(out, {"report.csv", "report.md", "specular.png", "irradiance.png", "lut.png", "image.png"});
+    prepareReportFolder(out, {"report.csv", "report.md", "specular.png", "irradiance.png", "lut.png", "image.png",
+                              "image_worst.png"});
 
     const scene::Environment environment = *loadEnvironment(options.env);  // the parser refuses --env none
     const scene::Environment reference = ibl::referenceEnvironment(environment);
@@ -110,14 +138,32 @@ int runIblReport(const IblReportOptions& options) {
     const CapturedFrame truth = renderer.capture(frame);
     const double truthMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - truthStart).count();
     frame.ibl.referenceSamples = options.referenceSamples / 4;
-    const ibl::ErrorStats convergence = report::imageError(renderer.capture(frame).rgba32f, truth.rgba32f);
+    const CapturedFrame quarter = renderer.capture(frame);
+    const ibl::ErrorStats convergence = report::imageError(quarter.rgba32f, truth.rgba32f);
+    const report::VisibleError visibleConvergence =
+        report::visibleError(quarter.rgba32f, truth.rgba32f, truth.width, truth.height);
     frame.ibl.referenceSamples = 0;
     io::writeExr(out / "ground_truth.exr", truth.width, truth.height, truth.rgba32f);
     report::writePreview(out / "ground_truth.png", truth);
     progress.clear();
     std::printf("ground truth: %u samples per lobe per pixel and %u texels summed, %.0f ms; a quarter of the samples "
-                "differs by %.2e relative RMSE, %.2e mean relative error\n", options.referenceSamples,
-                renderer.iblMaps().referenceTexelCount(), truthMs, convergence.rmse, convergence.meanRelative);
+                "differs by %.2e relative RMSE, %.2e mean relative error, FLIP max %.3f\n", options.referenceSamples,
+                renderer.iblMaps().referenceTexelCount(), truthMs, convergence.rmse, convergence.meanRelative,
+                visibleConvergence.flipMax);
+
+    // The split sum with converged maps: what each setting's maps are compared with on screen.
+    ibl::IblQuality convergedQuality;
+    convergedQuality.prefilterSamples = 2048;
+    convergedQuality.brightTexels = 4096;
+    convergedQuality.irradiance = ibl::IrradianceMode::Cube;  // SH9 truncates a sun; the cube converges
+    convergedQuality.irradianceSamples = 1024;
+    renderer.precomputeIbl(environment, convergedQuality);
+    const double convergedSpecularMax =
+        Result{.specular = ibl::specularErrors(*findImage(renderer.iblMaps().readBack(), "specular"), environment,
+                                               reference, 128, cache)}
+            .specularMax();
+    frame.iblQuality = convergedQuality;
+    const CapturedFrame converged = renderer.capture(frame);
 
     // Errors first, one precompute per setting (which also builds its pipelines before any is timed).
     std::vector<Result> results;
@@ -132,6 +178,8 @@ int runIblReport(const IblReportOptions& options) {
         frame.iblQuality = setting.quality;
         const CapturedFrame image = renderer.capture(frame);
         r.image = report::imageError(image.rgba32f, truth.rgba32f);
+        r.visible = report::visibleError(image.rgba32f, truth.rgba32f, image.width, image.height);
+        r.visibleMaps = report::visibleError(image.rgba32f, converged.rgba32f, image.width, image.height);
         if (setting.quality == ibl::IblQuality{}) {
             io::writeExr(out / "default.exr", image.width, image.height, image.rgba32f);
             report::writePreview(out / "default.png", image);
@@ -176,10 +224,12 @@ int runIblReport(const IblReportOptions& options) {
         r.ratio = wall.median / calibration.median;
         r.ratioLow = wall.low / calibration.median, r.ratioHigh = wall.high / calibration.median;
         std::printf("%-24s %-10s precompute %8.1f ms (%.1f–%.1f) = %5.2fx calibration (%.2f–%.2f; setup %6.1f ms); specular "
-                    "RMSE %.2e mean %.2e; irradiance RMSE %.2e; LUT max %.1e; image RMSE %.2e mean %.2e\n",
+                    "RMSE %.2e mean %.2e; irradiance RMSE %.2e; LUT max %.1e; image RMSE %.2e mean %.2e; FLIP p99.9 %.3f max "
+                    "%.3f, against converged maps %.3f %.3f\n",
                     r.setting.group.c_str(), r.setting.label.c_str(), r.wallMs, r.wallLowMs, r.wallHighMs, r.ratio,
                     r.ratioLow, r.ratioHigh, r.setupMs, r.specularRmse(), r.specularMeanRelative(), r.irradiance.rmse,
-                    std::max(r.lut.maxA, r.lut.maxB), r.image.rmse, r.image.meanRelative);
+                    std::max(r.lut.maxA, r.lut.maxB), r.image.rmse, r.image.meanRelative, r.visible.flipP999,
+                    r.visible.flipMax, r.visibleMaps.flipP999, r.visibleMaps.flipMax);
     }
     std::fflush(stdout);
     progress.step(1 + settings.size() * (1 + options.repeats), "writing the report");
@@ -197,10 +247,14 @@ int runIblReport(const IblReportOptions& options) {
                            .width = options.width,
                            .height = options.height,
                            .referenceSamples = options.referenceSamples,
-                           .convergence = convergence},
+                           .convergence = convergence,
+                           .visibleConvergence = visibleConvergence,
+                           .converged = convergedQuality.canonical(),
+                           .convergedSpecularMax = convergedSpecularMax},
                           results);
     report::writePlots(out, results);
-    std::printf("wrote %s/report.csv, report.md, specular.png, irradiance.png, lut.png, image.png\n", out.c_str());
+    std::printf("wrote %s/report.csv, report.md, specular.png, irradiance.png, lut.png, image.png, image_worst.png\n",
+                out.c_str());
     if (context.validationMessageCount() > 0) {
         log::error(std::to_string(context.validationMessageCount()) + " validation messages");
         return 3;

@@ -4,6 +4,8 @@
 
 #include "assets/image_file.h"
 #include "core/errors.h"
+#include "reports/flip.h"
+#include "reports/image_error.h"
 #include "reports/plot.h"
 
 #include <algorithm>
@@ -50,6 +52,44 @@ ibl::ErrorStats imageError(const std::vector<float>& image, const std::vector<fl
     return ibl::errorStats(pixels.image, pixels.reference);
 }
 
+namespace {
+// The p-th percentile (0..1) of `values` (nearest rank); 0 when empty.
+double percentile(std::vector<double> values, double p) {
+    if (values.empty()) return 0.0;
+    const size_t k = std::min(values.size() - 1, size_t(p * double(values.size())));
+    std::nth_element(values.begin(), values.begin() + ptrdiff_t(k), values.end());
+    return values[k];
+}
+}  // namespace
+
+VisibleError visibleError(const std::vector<float>& image, const std::vector<float>& reference, uint32_t width,
+                          uint32_t height) {
+    const auto display = [&](const std::vector<float>& rgba) {
+        const std::vector<uint8_t> encoded = io::displayEncode({.width = width, .height = height, .rgba = rgba});
+        io::RgbImage linear{.width = width, .height = height, .rgb = std::vector<float>(encoded.size())};
+        for (size_t i = 0; i < encoded.size(); ++i) linear.rgb[i] = io::srgbToLinear(encoded[i]);
+        return linear;
+    };
+    const std::vector<float> flip = io::ldrFlip(display(reference), display(image), io::pixelsPerDegree({}));
+    const CoveredPixels pixels = coveredPixels(image, reference);
+    std::vector<double> covered, relative;
+    double sum = 0.0;
+    for (double r : pixels.reference) sum += r;
+    const double floor = pixels.reference.empty() ? 1e-6 : 0.01 * sum / double(pixels.reference.size());
+    for (size_t k = 0; k < pixels.pixel.size(); ++k) {
+        covered.push_back(flip[pixels.pixel[k]]);
+        relative.push_back(std::abs(pixels.image[k] - pixels.reference[k]) / (pixels.reference[k] + floor));
+    }
+    VisibleError e;
+    if (covered.empty()) return e;
+    for (double v : covered) e.flipMean += v / double(covered.size());
+    e.flipMax = *std::max_element(covered.begin(), covered.end());
+    e.flipP99 = percentile(covered, 0.99);
+    e.flipP999 = percentile(covered, 0.999);
+    e.relativeP99 = percentile(relative, 0.99);
+    return e;
+}
+
 void writePreview(const std::filesystem::path& path, const CapturedFrame& frame) {
     std::vector<uint8_t> rgba(frame.rgba32f.size());
     for (size_t i = 0; i < rgba.size(); ++i) {
@@ -82,7 +122,9 @@ void writeCsv(const std::filesystem::path& out, const std::vector<Result>& resul
     std::ofstream csv(out / "report.csv");
     csv << "group,setting,cube,levels,prefilter_samples,filtered,irradiance,sh_size,irradiance_samples,lut_size,"
            "lut_samples,precompute_ms,precompute_gpu_ms,setup_ms,ratio_to_calibration,ratio_min,ratio_max,specular_rmse,specular_mean_relative,"
-           "specular_max,irradiance_rmse,irradiance_mean_relative,irradiance_max,lut_max_a,lut_max_b,lut_rms_a,lut_rms_b,image_rmse,image_mean_relative,image_max";
+           "specular_max,irradiance_rmse,irradiance_mean_relative,irradiance_max,lut_max_a,lut_max_b,lut_rms_a,lut_rms_b,image_rmse,image_mean_relative,image_max,"
+           "image_relative_p99,image_flip_mean,image_flip_p99,image_flip_p999,image_flip_max,maps_flip_mean,maps_flip_p99,"
+           "maps_flip_p999,maps_flip_max,bright_texels";
     for (const ibl::LevelErrors& level : results.front().specular)
         csv << ",rmse_r" << fixed(level.roughness, 2) << ",mean_r" << fixed(level.roughness, 2) << ",max_r"
             << fixed(level.roughness, 2);
@@ -97,7 +139,10 @@ void writeCsv(const std::filesystem::path& out, const std::vector<Result>& resul
             << sci(r.specularMax()) << ',' << sci(r.irradiance.rmse) << ',' << sci(r.irradiance.meanRelative) << ','
             << sci(r.irradiance.maxRelative) << ',' << sci(r.lut.maxA) << ','
             << sci(r.lut.maxB) << ',' << sci(r.lut.rmsA) << ',' << sci(r.lut.rmsB) << ',' << sci(r.image.rmse) << ','
-            << sci(r.image.meanRelative) << ',' << sci(r.image.maxRelative);
+            << sci(r.image.meanRelative) << ',' << sci(r.image.maxRelative) << ',' << sci(r.visible.relativeP99) << ','
+            << sci(r.visible.flipMean) << ',' << sci(r.visible.flipP99) << ',' << sci(r.visible.flipP999) << ','
+            << sci(r.visible.flipMax) << ',' << sci(r.visibleMaps.flipMean) << ',' << sci(r.visibleMaps.flipP99) << ','
+            << sci(r.visibleMaps.flipP999) << ',' << sci(r.visibleMaps.flipMax) << ',' << q.brightTexels;
         for (const ibl::LevelErrors& level : r.specular)
             csv << ',' << sci(level.stats.rmse) << ',' << sci(level.stats.meanRelative) << ',' << sci(level.stats.maxRelative);
         csv << "\n";
@@ -124,10 +169,18 @@ void writeMarkdown(const std::filesystem::path& out, const Context& c, const std
        << c.width << "x" << c.height << " against the ground truth (" << c.referenceSamples
        << " samples per lobe per pixel, the brightest texels summed; a quarter of the samples differs by "
        << sci(c.convergence.rmse) << " relative RMSE, " << sci(c.convergence.meanRelative)
-       << " mean relative error).\n\n";
+       << " mean relative error, ꟻLIP max " << fixed(c.visibleConvergence.flipMax, 3)
+       << "). Visible error: both images display-encoded as the tonemap pass encodes them (PBR Neutral, "
+          "exposure 0, sRGB 8-bit) and compared with LDR-ꟻLIP over the covered pixels: mean, 99th and 99.9th "
+          "percentile and maximum (a sun's highlight is a few hundred pixels: it shows in the last two); rel. p99: "
+          "the 99th percentile of the relative luminance error. Maps ꟻLIP: the same against the scene rendered through "
+          "the split sum with converged maps ("
+       << c.converged << "; their worst specular level is off the reference by " << sci(c.convergedSpecularMax)
+       << "): what the maps alone leave visible, without the split sum's own error.\n\n";
     md << "| group | setting | precompute ms | × calibration | specular RMSE | specular mean rel. | specular max | "
-          "irradiance RMSE | irradiance mean rel. | LUT max | image RMSE | image mean rel. |\n"
-          "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "irradiance RMSE | irradiance mean rel. | LUT max | image RMSE | image mean rel. | image rel. p99 | "
+          "ꟻLIP mean | ꟻLIP p99 | ꟻLIP p99.9 | ꟻLIP max | maps ꟻLIP p99.9 | maps ꟻLIP max |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     const ibl::IblQuality defaults;
     for (const Result& r : results)
         md << "| " << r.setting.group << " | " << r.setting.label << (r.setting.quality == defaults ? " (default)" : "")
@@ -135,7 +188,10 @@ void writeMarkdown(const std::filesystem::path& out, const Context& c, const std
            << fixed(r.ratioHigh, 2) << ") | " << sci(r.specularRmse()) << " | "
            << sci(r.specularMeanRelative()) << " | " << sci(r.specularMax()) << " | " << sci(r.irradiance.rmse) << " | "
            << sci(r.irradiance.meanRelative) << " | "
-           << sci(std::max(r.lut.maxA, r.lut.maxB)) << " | " << sci(r.image.rmse) << " | " << sci(r.image.meanRelative) << " |\n";
+           << sci(std::max(r.lut.maxA, r.lut.maxB)) << " | " << sci(r.image.rmse) << " | " << sci(r.image.meanRelative) << " | " << sci(r.visible.relativeP99)
+           << " | " << fixed(r.visible.flipMean, 4) << " | " << fixed(r.visible.flipP99, 3) << " | "
+           << fixed(r.visible.flipP999, 3) << " | " << fixed(r.visible.flipMax, 3) << " | "
+           << fixed(r.visibleMaps.flipP999, 3) << " | " << fixed(r.visibleMaps.flipMax, 3) << " |\n";
     md << "\nPlots: specular.png, irradiance.png, lut.png, image.png (error against precompute time, log-log, "
           "Pareto front marked, the default ringed).\n";
     std::ofstream file(out / "report.md");
@@ -168,7 +224,8 @@ void writePlots(const std::filesystem::path& out, const std::vector<Result>& res
         }
         io::writeLogLogPlot(out / file, spec);
     };
-    const std::vector<std::string> specularGroups{"prefilter, filtered IS", "prefilter, plain IS", "cube size"};
+    const std::vector<std::string> specularGroups{"prefilter, filtered IS", "prefilter, FIS, sun sampled", "previous default",
+                                                  "bright texels", "prefilter, plain IS", "cube size"};
     plot("specular.png", "Specular prefilter: error vs time", "mean relative error (roughness > 0 levels)",
          [](const Result& r) { return r.specularMeanRelative(); }, specularGroups);
     plot("irradiance.png", "Irradiance: error vs time", "mean relative error",
@@ -182,6 +239,9 @@ void writePlots(const std::filesystem::path& out, const std::vector<Result>& res
             allGroups.push_back(r.setting.group);
     plot("image.png", "Default scene: image error vs precompute time", "mean relative error vs ground truth",
          [](const Result& r) { return r.image.meanRelative; }, allGroups);
+    plot("image_worst.png", "Default scene: worst visible error of the maps vs precompute time",
+         "FLIP against converged maps, 99.9th percentile of the covered pixels",
+         [](const Result& r) { return r.visibleMaps.flipP999; }, allGroups);
 }
 
 }  // namespace candela::app::report

@@ -8,6 +8,7 @@
 #include "assets/procedural_sky.h"
 #include "core/cache_files.h"
 #include "core/log.h"
+#include "pose/animation_conflicts.h"
 #include "render/renderer.h"
 #include "render/visibility_path.h"
 #include "scene/material_variants.h"
@@ -62,6 +63,12 @@ scene::ScenePose loadPose(const RenderOptions& options, const scene::Scene& scen
     scene::ScenePose pose(scene, scene::selectAnimations(scene, options.animations));
     pose.evaluate(options.time);
     return pose;
+}
+
+void warnAnimationConflicts(const RenderOptions& options, const scene::Scene& scene) {
+    const std::vector<uint32_t> playing = scene::selectAnimations(scene, options.animations);
+    const std::string line = scene::describeAnimationConflicts(scene, scene::animationConflicts(scene, playing));
+    if (!line.empty()) log::warn(scene.source + ": " + line);
 }
 
 std::optional<scene::Environment> loadEnvironment(const EnvironmentChoice& choice) {

@@ -77,8 +77,13 @@ std::vector<std::vector<uint8_t>> orbitFrames(Renderer& renderer, RenderSettings
     settings.width *= scale;
     settings.height *= scale;
     std::vector<std::vector<uint8_t>> out;
+    // 1° per frame around the scene, at the distance framing chooses for the first frame (framing
+    // each direction would move the camera in and out).
+    settings.camera.orbit = glm::vec3(0.0f, 90.0f, 0.0f);
+    const float distance =
+        Renderer::orbitCamera(*settings.scene, settings.camera, float(settings.width) / float(settings.height), settings.pose).radius;
     for (uint32_t k = 0; k < frames; ++k) {
-        settings.camera.orbit = glm::vec3(float(k), 90.0f, 0.0f);  // 1° per frame around the framed scene
+        settings.camera.orbit = glm::vec3(float(k), 90.0f, distance);
         const CapturedFrame frame = renderer.capture(settings);
         io::FloatImage image{frame.width, frame.height, frame.rgba32f};
         out.push_back(io::displayEncode(scale > 1 ? io::boxDownsample(image, scale) : image));

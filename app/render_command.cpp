@@ -132,6 +132,7 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
     r.warnings = scene.warnings;
     r.notes = scene.notes;
     log::Capture capture;  // what the renderer logs from here on belongs to this scene
+    warnAnimationConflicts(options, scene);  // once per scene, whatever the variants
 
     std::vector<std::optional<uint32_t>> variants;
     if (options.variant == "all") {
@@ -144,7 +145,10 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
     settings.floatOutput = io::isFloatFormat(run.format);
     // One precompute serves the whole run: with the sheen cube, for scenes with or without a sheen.
     if (run.batch) settings.iblQuality.sheen = true;
-    const glm::vec3 orbit = settings.camera.orbit.value_or(glm::vec3(0.0f, 90.0f, 0.0f));
+    glm::vec3 orbit = settings.camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f));
+    const bool turntable = run.sequence && options.turntableDegrees != 0.0f;
+    const float aspect = float(options.width) / float(options.height);
+    std::string cameraLine;  // the last camera printed (--verbose)
 
     for (const std::optional<uint32_t> variant : variants) {
         if (variant) {
@@ -155,14 +159,29 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
         r.variants.push_back(variant ? variantName : "");
         scene::ScenePose pose = loadPose(options, scene);
         settings.pose = &pose;
+        if (turntable && !settings.camera.gltfCamera && orbit.z <= 0.0f) {
+            // One distance for the whole turn (framing from each azimuth would move the camera in
+            // and out): the largest any of its frames needs.
+            CameraSettings camera = settings.camera;
+            float radius = 0.0f;
+            for (uint32_t i = 0; i < options.frames; ++i) {
+                camera.orbit = orbit + glm::vec3(options.turntableDegrees * float(i) / float(options.frames), 0.0f, 0.0f);
+                radius = std::max(radius, Renderer::orbitCamera(scene, camera, aspect, &pose).radius);
+            }
+            orbit.z = radius;
+        }
         const auto uploadStart = Clock::now();
         run.renderer.upload(settings);
         r.uploadMs += msSince(uploadStart);
         for (uint32_t i = 0; i < options.frames; ++i) {
             if (run.sequence) {
                 pose.evaluate(options.time + double(i) / options.fps);
-                if (options.turntableDegrees != 0.0f)
+                if (turntable)
                     settings.camera.orbit = orbit + glm::vec3(options.turntableDegrees * float(i) / float(options.frames), 0.0f, 0.0f);
+            }
+            if (log::verbose()) {
+                const std::string line = "camera: " + Renderer::cameraFlags(scene, settings.camera, aspect, &pose);
+                if (line != cameraLine) log::info(cameraLine = line);
             }
             const auto frameStart = Clock::now();
             run.lastFrame = run.renderer.capture(settings);

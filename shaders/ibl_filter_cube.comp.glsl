@@ -8,6 +8,9 @@
 //   specular prefilter (kWeightByCosine): GGX half vectors reflected about n (n = v = r), weighted
 //     by n·l — the split sum's first term, one roughness per mip (mip 0 is ibl_cubemap.comp's);
 //   irradiance cube: cosine-distributed samples, equal weights — E(n)/π.
+// The source is the float cube with its bright texels clamped; their excess (BrightTexels) is added
+// explicitly, each weighted by this mip's normalised lobe (LobeTable), so a sun is summed, not
+// sampled (engine/ibl_maps/bright_texels.h).
 #include "shared/ibl.h"
 
 layout(constant_id = 0) const bool kWeightByCosine = true;
@@ -20,9 +23,25 @@ layout(std430, set = 0, binding = 2) readonly buffer SampleTable {
     vec4 samples[];  // xyz: tangent-space direction (z = n·l), w: source lod
 };
 
+layout(std430, set = 0, binding = 3) readonly buffer BrightTexels {
+    vec4 bright[];  // [0].x: count; then per texel (direction, 0), (flux rgb, 0)
+};
+layout(std430, set = 0, binding = 4) readonly buffer LobeTable {
+    float lobe[];  // per mip CANDELA_IBL_LOBE_TABLE_SIZE entries (shared/ibl.h)
+};
+
 layout(push_constant) uniform Push {
     IblFilterPush push;
 };
+
+// This mip's lobe weight per steradian for cos θ between the texel's direction and a light's.
+float lobeWeight(float cosTheta) {
+    float theta = acos(clamp(cosTheta, -1.0f, 1.0f));
+    if (theta >= 0.5f * CANDELA_PI) return 0.0f;
+    float f = sqrt(theta * (2.0f / CANDELA_PI)) * float(CANDELA_IBL_LOBE_TABLE_SIZE - 1u);
+    uint j = min(uint(f), CANDELA_IBL_LOBE_TABLE_SIZE - 2u);
+    return mix(lobe[push.firstLobe + j], lobe[push.firstLobe + j + 1u], f - float(j));
+}
 
 void main() {
     uvec3 id = gl_GlobalInvocationID;
@@ -35,5 +54,9 @@ void main() {
         vec3 radiance = textureLod(source, frame * s.xyz, s.w).rgb;
         sum += kWeightByCosine ? radiance * s.z : radiance;
     }
-    imageStore(dstMip, ivec3(id), vec4(min(sum * push.inverseWeight, vec3(CANDELA_HALF_MAX)), 1.0f));
+    vec3 filtered = sum * push.inverseWeight;
+    uint brightCount = uint(bright[0].x);
+    for (uint i = 0u; i < brightCount; ++i)
+        filtered += bright[2u + 2u * i].rgb * lobeWeight(dot(n, bright[1u + 2u * i].xyz));
+    imageStore(dstMip, ivec3(id), vec4(min(filtered, vec3(CANDELA_HALF_MAX)), 1.0f));
 }

@@ -111,6 +111,8 @@ Scene makeSphereGrid(uint32_t side, bool materialPerSphere) {
         light.position = glm::vec3(corner, 10.0f) * reach;
         scene.lights.push_back(light);
     }
+    // A chart: framed head-on, rows and columns along the image's, every sphere the same size.
+    scene.framingAngles = glm::vec2(0.0f, 90.0f);
     prepareGeometry(scene);
     return scene;
 }

@@ -184,6 +184,10 @@ public:
             mCtx.warn(std::to_string(mRenormalizedWeights) + " vertices have skin weights that do not sum to 1 (renormalized)");
     }
 
+    // How many of the nodes walked hold a mesh (drawn or not: a zero scale or a hidden node still
+    // holds one).
+    size_t meshNodes() const { return mMeshNodes; }
+
 private:
     Skin loadSkin(int index, const std::vector<int32_t>& sceneNode) {
         const tinygltf::Skin& source = mModel.skins[size_t(index)];
@@ -219,6 +223,7 @@ private:
 
     void visit(const tinygltf::Node& node, const std::string& what, int32_t sceneNode) {
         const glm::dmat4 world = mScene.nodes[size_t(sceneNode)].world;  // a copy: the vector grows later
+        if (node.mesh >= 0) ++mMeshNodes;
         if (node.mesh >= 0) addMesh(node, what, world, sceneNode);
         if (node.camera >= 0) addCamera(node, what, world, sceneNode);
         if (auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end())
@@ -441,6 +446,7 @@ private:
     std::vector<uint8_t> mTargeted;  // per glTF node: an animation channel targets it
     std::vector<uint8_t> mMovable;   // per Scene::nodes entry: it or an ancestor is targeted
     size_t mRenormalizedWeights = 0;  // over every primitive read
+    size_t mMeshNodes = 0;
 };
 
 }  // namespace
@@ -455,7 +461,6 @@ void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, std::option
                 if (child >= 0 && size_t(child) < model.nodes.size()) isChild[size_t(child)] = 1;
         for (size_t i = 0; i < model.nodes.size(); ++i)
             if (!isChild[i]) roots.push_back(int(i));
-        if (!model.nodes.empty()) ctx.warn("no scene defined: drawing every root node");
         if (sceneIndex) ctx.fail("scene " + std::to_string(*sceneIndex) + " does not exist (the file has no scenes)");
     } else {
         const size_t index = sceneIndex ? *sceneIndex : size_t(model.defaultScene >= 0 ? model.defaultScene : 0);
@@ -470,6 +475,19 @@ void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, std::option
     NodeWalker walker(ctx, model, scene);
     walker.walk(roots);
     walker.finish();
+    // A file without scenes, or with an empty one, is valid (glTF 2.0 §3.5.1: a library of
+    // meshes, materials, …): it loads, with one warning when nothing is drawn.
+    if (model.scenes.empty()) {
+        if (model.nodes.empty()) ctx.warn("nothing to draw: the file has no scene and no nodes");
+        else if (walker.meshNodes() == 0) ctx.warn("nothing to draw: the file has no scene, and none of its root nodes holds a mesh");
+        else ctx.warn("no scene defined: drawing every root node");
+    } else if (walker.meshNodes() == 0) {
+        const std::string which = "scene " + std::to_string(scene.sceneIndex);
+        const std::string others = model.scenes.size() > 1 ? " (the file has " + std::to_string(model.scenes.size()) +
+                                                                 " scenes: --scene-index)"
+                                                           : "";
+        ctx.warn("nothing to draw: " + (roots.empty() ? which + " has no nodes" : "no node of " + which + " holds a mesh") + others);
+    }
 }
 
 }  // namespace candela::scene::gltf

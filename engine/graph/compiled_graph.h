@@ -46,6 +46,7 @@ struct PassInfo {
     uint32_t pass = kInvalidIndex;  // index into GraphDecl::passes
     CullReason cullReason = CullReason::None;
     std::string cullDetail;         // human-readable, names the resource and pass that caused it
+    uint32_t lostProducer = kInvalidIndex;  // LostInput: the unavailable pass whose result it needed
     // A disabled pass whose writes all preserve their contents (it only adds to them): later
     // passes read what it would have drawn over, instead of being culled.
     bool bypassed = false;

@@ -82,6 +82,7 @@ void cullPasses(const GraphDecl& decl, const GraphAnalysis& analysis, CompiledGr
                     continue;
                 }
                 info.cullReason = CullReason::LostInput;
+                info.lostProducer = producer;
                 info.cullDetail = "input " + quoted(decl.resources[dependency.resource].name) +
                                   " lost: its producer " + quoted(decl.passes[producer].name) +
                                   (producerReason == CullReason::Disabled ? " is disabled"

@@ -26,6 +26,7 @@ void IblQuality::validate() const {
     requireRange("--ibl-prefilter-samples", prefilterSamples, 1, 65536);
     requirePowerOfTwo("--ibl-sh-size", shSourceSize, 1, cubeSize);
     requirePowerOfTwo("--ibl-irradiance-size", irradianceSize, 1, 512);
+    requireRange("--ibl-bright-texels", brightTexels, 0, 65536);
     requireRange("--ibl-irradiance-samples", irradianceSamples, 1, 65536);
     requireRange("--ibl-lut-size", lutSize, 2, 1024);
     requireRange("--ibl-lut-samples", lutSamples, 1, 65536);
@@ -46,8 +47,12 @@ std::string IblQuality::canonical() const {
                                      ? "sh9:" + std::to_string(shSourceSize)
                                      : "cube:" + std::to_string(irradianceSize) + "x" + std::to_string(irradianceSamples);
     // v3: the precompute reads the environment in half floats (scaled by a power of two).
-    return "v3 cube=" + std::to_string(cubeSize) + " levels=" + std::to_string(levels()) +
-           " prefilter=" + std::to_string(prefilterSamples) + (filteredSampling ? ":bias" + std::to_string(lodBias).substr(0, 5) : ":unfiltered") + " irradiance=" + irradianceText + " " + lutCanonical() + (sheen ? " sheen" : "") +
+    // v4: bright texels summed explicitly.
+    return "v4 cube=" + std::to_string(cubeSize) + " levels=" + std::to_string(levels()) +
+           " prefilter=" + std::to_string(prefilterSamples) +
+           (filteredSampling ? ":bias" + std::to_string(lodBias).substr(0, 5) : ":unfiltered") +
+           " bright=" + std::to_string(brightTexels) + " irradiance=" + irradianceText + " " + lutCanonical() +
+           (sheen ? " sheen" : "") +
            (equirectMaxSize ? " equirect<=" + std::to_string(equirectMaxSize) : "");
 }
 

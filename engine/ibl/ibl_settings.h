@@ -28,17 +28,23 @@ constexpr const char* irradianceModeName(IrradianceMode mode) { return nameOf(kI
 
 struct IblQuality {
     uint32_t cubeSize = 256;          // face size of the float environment cube and of specular mip 0 (2^k, 16..2048)
-    uint32_t specularLevels = 6;      // roughness levels 0, 1/(L−1) … 1 (at most log2(cubeSize) + 1)
+    uint32_t specularLevels = 8;      // roughness levels 0, 1/(L−1) … 1 (at most log2(cubeSize) + 1)
     // GGX samples per texel of specular mip 1 (roughness 1/(levels−1)); each coarser mip, with 4×
     // fewer texels, takes 4× more (at most 4096), so every level costs the same.
-    uint32_t prefilterSamples = 32;
+    uint32_t prefilterSamples = 64;
     // Filtered importance sampling (each sample reads the source mip matching its solid angle);
     // false: plain importance sampling from mip 0, the brute-force comparison of `ibl-report`.
     bool filteredSampling = true;
     // Added to the filtered-importance-sampling lod (Křivánek & Colbert: +1). Larger: less noise
     // from small bright sources, more blur (a smooth gradient regresses toward its mean).
     float lodBias = 0.5f;
-    IrradianceMode irradiance = IrradianceMode::Sh9;
+    // At most this many of the environment's brightest texels (those over kBrightTexelFactor × its
+    // mean luminance: a sun) are summed explicitly by every filter pass instead of being sampled
+    // (engine/ibl_maps/bright_texels.h); 0: everything is sampled. "bright=N" in the canonical text.
+    uint32_t brightTexels = 256;
+    // The cube: with the bright texels summed it converges at a few dozen samples, while SH9's order-2
+    // truncation of a sun stays the largest visible error of the maps (docs/ibl.md, "Defaults and why").
+    IrradianceMode irradiance = IrradianceMode::Cube;
     uint32_t shSourceSize = 32;       // face size of the cube mip projected onto SH9 (2^k ≤ cubeSize)
     uint32_t irradianceSize = 32;     // face size of the irradiance cube (cube mode)
     uint32_t irradianceSamples = 256; // cosine samples per irradiance texel (cube mode)
@@ -57,7 +63,7 @@ struct IblQuality {
     // Specular mips actually used: min(specularLevels, log2(cubeSize) + 1).
     uint32_t levels() const;
     // The canonical text of every member (the cache key's settings part), e.g.
-    // "v1 cube=256 levels=6 prefilter=32:bias0.500 irradiance=sh9:32 lut=128x256". Members that the mode does
+    // "v4 cube=256 levels=8 prefilter=64:bias0.500 bright=256 irradiance=cube:32x256 lut=128x256". Members that the mode does
     // not use are left out, so they do not split the cache.
     std::string canonical() const;
     // The part that only the BRDF LUT depends on.

@@ -1,5 +1,7 @@
 #include "ibl_maps/ibl_maps.h"
 
+#include "ibl_maps/bright_texels.h"
+
 #include "core/errors.h"
 #include "core/log.h"
 #include "executor/graph_executor.h"
@@ -89,7 +91,7 @@ void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
         for (uint32_t x = 0; x < env.width; ++x) totalPower += luminance(size_t(y) * env.width + x) * solidAngle;
         totalSolidAngle += solidAngle * env.width;
     }
-    const double threshold = 20.0 * totalPower / totalSolidAngle;
+    const double threshold = kBrightTexelFactor * totalPower / totalSolidAngle;
     std::vector<uint32_t> bright;
     for (uint32_t i = 0; i < env.texelCount(); ++i)
         if (luminance(i) > threshold) bright.push_back(i);
@@ -167,8 +169,15 @@ void IblMaps::createPrecomputeInputs(const scene::Environment& env) {
     mEquirect = vk::Image(mContext, {.width = width, .height = height, .format = kEquirectFormat,
                                      .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                      .name = "ibl_equirect"});
+    const BrightTexels bright = findBrightTexels(std::span(texels), width, height, mEquirectScale, mQuality.brightTexels);
+    mBrightThreshold = bright.threshold;
+    mBrightCount = bright.count();
+    mBright = vk::Buffer(mContext, {.size = bright.buffer.size() * sizeof(glm::vec4),
+                                    .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                    .name = "ibl_bright_texels"});
     vk::Uploader upload(mContext);
     upload.image(mEquirect, std::as_bytes(std::span(texels)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    upload.buffer(mBright, std::as_bytes(std::span(bright.buffer)));
     upload.submitAndWait();
 
     const uint32_t size = mQuality.cubeSize;
@@ -201,6 +210,7 @@ bool IblMaps::setEnvironment(const scene::Environment* env, const IblQuality& qu
         mSh = {};
         mEquirect = {};
         mFloatCube = {};
+        mBright = {};
         mCacheFile.clear();
         mCacheNote.clear();
         return true;  // the LUT stays: it does not depend on the environment
@@ -295,21 +305,30 @@ passes::IblHandles IblMaps::addToGraph(RenderGraph& graph, ImportBindings& impor
     // The equirect was uploaded for sampling; the float cube is written whole.
     const TextureId equirect = import(graph, imports, "ibl_equirect", mEquirect, {}, kUploadedState, {});
     const TextureId cube = import(graph, imports, "ibl_float_cube", mFloatCube.image, mFloatCube.mipViews, {}, {});
+    // Uploaded and waited for, like the equirect.
+    const BufferId bright = graph.importBuffer("ibl_bright_texels", {.size = mBright.size()}, ResourceState{});
+    imports.bind(bright, mBright.handle());
     const passes::IblCubemapPass::Outputs resampled =
         mCubemapPass->add(graph, {.equirect = equirect, .cube = cube, .specular = maps.specular,
-                                  .cubeScale = mFloatCubeScale, .equirectScale = mEquirectScale});
+                                  .cubeScale = mFloatCubeScale, .equirectScale = mEquirectScale,
+                                  .clampLuminance = mBrightThreshold});
     const float scale = mFloatCubeScale;
-    maps.specular = mPrefilterPass->add(graph, {.source = resampled.cube, .specular = resampled.specular, .sourceScale = scale});
+    maps.specular = mPrefilterPass->add(
+        graph, {.source = resampled.cube, .specular = resampled.specular, .sourceScale = scale, .bright = bright});
     if (maps.sheen.valid())
-        maps.sheen = mSheenPass->add(graph, {.source = resampled.cube, .specular = maps.sheen, .sourceScale = scale});
+        maps.sheen = mSheenPass->add(graph, {.source = resampled.cube, .specular = maps.sheen, .sourceScale = scale,
+                                             .bright = bright});
     if (mQuality.irradiance == IrradianceMode::Sh9)
         maps.sh = mShPass->add(graph, {.source = resampled.cube,
                                        .projectedFaceSize = mQuality.shSourceSize,
                                        .coefficients = maps.sh,
-                                       .sourceScale = scale});
+                                       .sourceScale = scale,
+                                       .bright = bright});
     else
-        maps.irradianceCube = mIrradianceCubePass->add(
-            graph, {.source = resampled.cube, .irradiance = maps.irradianceCube, .sourceScale = scale});
+        maps.irradianceCube = mIrradianceCubePass->add(graph, {.source = resampled.cube,
+                                                               .irradiance = maps.irradianceCube,
+                                                               .sourceScale = scale,
+                                                               .bright = bright});
     return maps;
 }
 
@@ -333,6 +352,7 @@ void IblMaps::frameCompleted(const RenderGraph& graph) {
     mSource = MapsSource::Computed;
     mEquirect = {};
     mFloatCube = {};
+    mBright = {};
     if (!mCacheDir.empty() && !mLutPending) writeCache();
 }
 
@@ -344,8 +364,13 @@ std::vector<std::string> IblMaps::explanation() const {
     }
     lines.push_back("ibl: environment '" + mEnvironmentName + "' (" + std::to_string(mEquirectWidth) + "x" +
                     std::to_string(mEquirectHeight) + "), " + mQuality.canonical());
-    if (mLastFrame.precompute)
+    if (mLastFrame.precompute) {
         lines.emplace_back("ibl: maps computed by this frame's precompute passes");
+        lines.push_back(mBrightCount ? "ibl: " + std::to_string(mBrightCount) +
+                                           " bright texels summed by the filters, not sampled (--ibl-bright-texels)"
+                                     : "left out: bright-texel sums (no texel over " +
+                                           std::to_string(int(kBrightTexelFactor)) + "x the mean luminance, or --ibl-bright-texels 0)");
+    }
     else if (mLastFrame.source == MapsSource::Cache)
         lines.push_back("left out: IBL precompute (maps loaded from the cache " + mCacheFile.string() + ")");
     else

@@ -73,7 +73,7 @@ public:
 
     // The ground truth of `ibl-report` (RenderSettings::ibl.referenceSamples > 0) reads the
     // environment itself: an RGBA32F equirectangular copy whose alpha is 0 for the brightest texels
-    // (at most kMaxReferenceTexels, each more than 20× the mean luminance), and the list of those
+    // (at most kMaxReferenceTexels, each more than kBrightTexelFactor × the mean luminance), and the list of those
     // texels, which the shader sums explicitly. Uploads and waits; precondition: the GPU no longer
     // uses the previous ones. addToGraph imports them when asked to.
     void setReferenceEnvironment(const scene::Environment& environment);
@@ -156,6 +156,9 @@ private:
     Target mFloatCube;
     float mFloatCubeScale = 1.0f;  // the float cube holds radiance × this (IblCubemapPass::floatCubeScale)
     float mEquirectScale = 1.0f;   // the equirect holds radiance × this (IblCubemapPass::halfFloatScale)
+    vk::Buffer mBright;            // ibl::BrightTexels::buffer of the equirect
+    float mBrightThreshold = 0.0f; // its threshold, in the equirect's units
+    uint32_t mBrightCount = 0;
     // Passes (created with the first environment).
     std::unique_ptr<passes::IblCubemapPass> mCubemapPass;
     std::unique_ptr<passes::IblPrefilterPass> mPrefilterPass;

@@ -48,14 +48,16 @@ IblCubemapPass::Outputs IblCubemapPass::add(RenderGraph& graph, const Inputs& in
             d.cube = builder.write(in.cube, Usage::StorageReadWrite, WriteMode::Discard);
             d.specular = builder.write(in.specular, Usage::StorageWrite, WriteMode::Discard);
         },
-        [this, cubeScale = in.cubeScale, equirectInverseScale = 1.0f / in.equirectScale](const Data& d, PassContext& ctx) {
+        [this, cubeScale = in.cubeScale, equirectInverseScale = 1.0f / in.equirectScale,
+         clampLuminance = in.clampLuminance](const Data& d, PassContext& ctx) {
             const TextureDesc& equirect = ctx.desc(d.equirect);
             const TextureDesc& cube = ctx.desc(d.cube);
             const shading::IblCubemapPush push{
                 .faceSize = cube.width,
                 .supersample = supersampleFactor(cube.width, equirect.width, equirect.height),
                 .cubeScale = cubeScale,
-                .equirectInverseScale = equirectInverseScale};
+                .equirectInverseScale = equirectInverseScale,
+                .clampLuminance = clampLuminance};
             const VkDescriptorSet set =
                 vk::DescriptorWriter(mResample.program(), 0)
                     .image("equirect", ctx.view(d.equirect), ctx.layout(d.equirect), mSampler.get())

@@ -1,6 +1,7 @@
 #pragma once
 // IBL precompute pass "ibl_cubemap" (compute): resamples the equirectangular environment into mip 0
-// of the float environment cube (and of the specular cube: roughness 0 is the environment itself),
+// of the float environment cube, its bright texels clamped (ibl_maps/bright_texels.h), and of the
+// specular cube as it is (roughness 0 is the environment itself),
 // then box-filters every further float-cube mip from the one above
 // (shaders/ibl_cubemap.comp, ibl_cube_downsample.comp). The cube's mips are what the prefilter and
 // irradiance passes read with filtered importance sampling.
@@ -8,6 +9,8 @@
 #include "graph/render_graph.h"
 #include "vk/pipeline.h"
 #include "vk/sampler.h"
+
+#include <limits>
 
 namespace candela::passes {
 
@@ -25,6 +28,9 @@ public:
         // half-float cube (floatCubeScale) would overflow. The specular cube holds radiance.
         float cubeScale = 1.0f;
         float equirectScale = 1.0f;  // halfFloatScale of the environment
+        // The float cube's source texels are clamped to this luminance, in the equirect's units
+        // (radiance × equirectScale): ibl::BrightTexels::threshold. Infinity: none.
+        float clampLuminance = std::numeric_limits<float>::infinity();
     };
     struct Outputs {
         graph::TextureId cube;

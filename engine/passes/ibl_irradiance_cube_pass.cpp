@@ -24,8 +24,13 @@ void IblIrradianceCubePass::prepare(uint32_t samples, uint32_t sourceFaceSize, u
     mTable = vk::Buffer(mContext, {.size = table.samples.size() * sizeof(glm::vec4),
                                    .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                    .name = "ibl_irradiance_samples"});
+    const std::vector<float> lobe = lobeTable(FilterLobe::Cosine, 1.0f);
+    mLobe = vk::Buffer(mContext, {.size = lobe.size() * sizeof(float),
+                                  .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                  .name = "ibl_irradiance_lobe"});
     vk::Uploader upload(mContext);
     upload.buffer(mTable, std::as_bytes(std::span(table.samples)));
+    upload.buffer(mLobe, std::as_bytes(std::span(lobe)));
     upload.submitAndWait();
 }
 
@@ -33,11 +38,13 @@ TextureId IblIrradianceCubePass::add(RenderGraph& graph, const Inputs& in) const
     struct Data {
         TextureId source;
         TextureId irradiance;
+        BufferId bright;
     };
     const Data& data = graph.addPass<Data>(
         "ibl_irradiance_cube", PassType::Compute,
         [&](PassBuilder& builder, Data& d) {
             d.source = builder.sample(in.source);
+            d.bright = builder.read(in.bright, Usage::StorageRead);
             d.irradiance = builder.write(in.irradiance, Usage::StorageWrite, WriteMode::Discard);
         },
         [this, inverseScale = 1.0f / in.sourceScale](const Data& d, PassContext& ctx) {
@@ -45,12 +52,15 @@ TextureId IblIrradianceCubePass::add(RenderGraph& graph, const Inputs& in) const
             const shading::IblFilterPush push{.faceSize = faceSize,
                                               .firstSample = 0,
                                               .sampleCount = mSampleCount,
-                                              .inverseWeight = mInverseWeight * inverseScale};
+                                              .inverseWeight = mInverseWeight * inverseScale,
+                                              .firstLobe = 0};
             const VkDescriptorSet set =
                 vk::DescriptorWriter(mPipeline.program(), 0)
                     .image("source", ctx.view(d.source), ctx.layout(d.source), mSampler.get())
                     .image("dstMip", ctx.mipView(d.irradiance, 0), ctx.layout(d.irradiance))
                     .buffer("SampleTable", mTable.handle())
+                    .buffer("BrightTexels", ctx.buffer(d.bright))
+                    .buffer("LobeTable", mLobe.handle())
                     .commit(ctx.context(), ctx.descriptors());
             const uint32_t groups = groupCount(faceSize, CANDELA_IBL_GROUP);
             dispatchCompute(ctx, mPipeline, set, &push, sizeof(push), groups, groups, 6);

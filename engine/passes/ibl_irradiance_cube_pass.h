@@ -24,6 +24,7 @@ public:
         // RGBA16F cube, one mip, contents discarded; an imported one needs its mip view bound.
         graph::TextureId irradiance;
         float sourceScale = 1.0f;  // the source holds radiance × sourceScale (IblCubemapPass::Inputs::cubeScale)
+        graph::BufferId bright;    // the texels the source was clamped at (ibl::BrightTexels::buffer)
     };
     // Adds the pass; returns the irradiance cube's new version. The pass object must outlive execution.
     graph::TextureId add(graph::RenderGraph& graph, const Inputs& inputs) const;
@@ -33,6 +34,7 @@ private:
     vk::Pipeline mPipeline;
     vk::Sampler mSampler;  // trilinear
     vk::Buffer mTable;
+    vk::Buffer mLobe;  // lobeTable(FilterLobe::Cosine)
     uint32_t mSampleCount = 0;
     float mInverseWeight = 0.0f;
 };

@@ -21,6 +21,7 @@ IblPrefilterPass::IblPrefilterPass(vk::Context& context, Lobe lobe)
 void IblPrefilterPass::prepare(uint32_t levels, uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips,
                                bool filtered, float lodBias) {
     std::vector<glm::vec4> all;
+    std::vector<float> lobes(size_t(levels) * CANDELA_IBL_LOBE_TABLE_SIZE, 0.0f);
     mRanges.assign(levels, {});
     // Each coarser level has 4× fewer texels and a wider lobe: 4× the samples keeps every level's
     // cost equal and its noise down where small bright sources are spread widest.
@@ -33,13 +34,19 @@ void IblPrefilterPass::prepare(uint32_t levels, uint32_t samples, uint32_t sourc
         mRanges[mip] = {static_cast<uint32_t>(all.size()), static_cast<uint32_t>(table.samples.size()),
                         table.totalWeight > 0.0f ? 1.0f / table.totalWeight : 0.0f};
         all.insert(all.end(), table.samples.begin(), table.samples.end());
+        const std::vector<float> lobe = lobeTable(mLobe == Lobe::Ggx ? FilterLobe::Ggx : FilterLobe::Charlie, roughness);
+        std::copy(lobe.begin(), lobe.end(), lobes.begin() + ptrdiff_t(mip) * CANDELA_IBL_LOBE_TABLE_SIZE);
     }
     if (all.empty()) all.emplace_back(0.0f);
     mTable = vk::Buffer(mContext, {.size = all.size() * sizeof(glm::vec4),
                                    .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                    .name = "ibl_prefilter_samples"});
+    mLobes = vk::Buffer(mContext, {.size = lobes.size() * sizeof(float),
+                                   .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                   .name = "ibl_prefilter_lobes"});
     vk::Uploader upload(mContext);
     upload.buffer(mTable, std::as_bytes(std::span(all)));
+    upload.buffer(mLobes, std::as_bytes(std::span(lobes)));
     upload.submitAndWait();
 }
 
@@ -47,11 +54,13 @@ TextureId IblPrefilterPass::add(RenderGraph& graph, const Inputs& in) const {
     struct Data {
         TextureId source;
         TextureId specular;
+        BufferId bright;
     };
     const Data& data = graph.addPass<Data>(
         mLobe == Lobe::Ggx ? "ibl_prefilter" : "ibl_sheen_prefilter", PassType::Compute,
         [&](PassBuilder& builder, Data& d) {
             d.source = builder.sample(in.source);
+            d.bright = builder.read(in.bright, Usage::StorageRead);
             // GGX keeps mip 0 (the cubemap pass's); Charlie writes every mip.
             d.specular = builder.write(in.specular, Usage::StorageWrite,
                                        mLobe == Lobe::Ggx ? WriteMode::Preserve : WriteMode::Discard);
@@ -62,12 +71,15 @@ TextureId IblPrefilterPass::add(RenderGraph& graph, const Inputs& in) const {
                 const shading::IblFilterPush push{.faceSize = std::max(faceSize >> mip, 1u),
                                                   .firstSample = mRanges[mip].first,
                                                   .sampleCount = mRanges[mip].count,
-                                                  .inverseWeight = mRanges[mip].inverseWeight * inverseScale};
+                                                  .inverseWeight = mRanges[mip].inverseWeight * inverseScale,
+                                                  .firstLobe = mip * CANDELA_IBL_LOBE_TABLE_SIZE};
                 const VkDescriptorSet set =
                     vk::DescriptorWriter(mPipeline.program(), 0)
                         .image("source", ctx.view(d.source), ctx.layout(d.source), mSampler.get())
                         .image("dstMip", ctx.mipView(d.specular, mip), ctx.layout(d.specular))
                         .buffer("SampleTable", mTable.handle())
+                        .buffer("BrightTexels", ctx.buffer(d.bright))
+                        .buffer("LobeTable", mLobes.handle())
                         .commit(ctx.context(), ctx.descriptors());
                 const uint32_t groups = groupCount(push.faceSize, CANDELA_IBL_GROUP);
                 dispatchCompute(ctx, mPipeline, set, &push, sizeof(push), groups, groups, 6);

@@ -34,6 +34,9 @@ public:
         // mip views bound.
         graph::TextureId specular;
         float sourceScale = 1.0f;  // the source holds radiance × sourceScale (IblCubemapPass::Inputs::cubeScale)
+        // The texels the source was clamped at (ibl::BrightTexels::buffer, storage): added per texel
+        // with the lobe of each mip.
+        graph::BufferId bright;
     };
     static constexpr uint32_t kMaxSamples = 4096;
 
@@ -51,6 +54,7 @@ private:
     vk::Pipeline mPipeline;
     vk::Sampler mSampler;  // bilinear within the nearest mip: filtered importance sampling picks the mip
     vk::Buffer mTable;
+    vk::Buffer mLobes;              // lobeTable of every mip, CANDELA_IBL_LOBE_TABLE_SIZE each, index = mip
     std::vector<MipRange> mRanges;  // index = mip; mip 0 unused
 };
 

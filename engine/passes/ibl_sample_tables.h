@@ -31,6 +31,20 @@ SampleTable prefilterSamples(float roughness, uint32_t count, uint32_t sourceFac
 SampleTable charlieSamples(float roughness, uint32_t count, uint32_t sourceFaceSize, uint32_t sourceMips,
                            bool filtered, float lodBias);
 
+// The lobe a filter pass convolves with, as a function of the angle θ between the texel's direction
+// n and a light direction l (n = v, as the split sum assumes), normalised to a weight per steradian
+// that integrates to 1: the value a pass's sampled estimate converges to for a point source of flux
+// Φ (radiance × solid angle) in direction l is Φ · lobe(θ). The bright texels
+// (engine/ibl_maps/bright_texels.h) are added with it.
+//   Ggx: D(h) (n·l) / 4 for perceptual roughness r (α = r²), h halfway between n and l — the
+//     prefilter's n·l-weighted GGX samples;
+//   Charlie: the sheen lobe f_sheen(n, n, l) n·l for sheen roughness r — charlieSamples' density;
+//   Cosine: n·l / π, the irradiance cube's (r ignored).
+// CANDELA_IBL_LOBE_TABLE_SIZE entries at θ_j = (π/2)(j / (size − 1))² (shaders/shared/ibl.h); the lobe
+// is 0 beyond π/2. Computed in double. Pure.
+enum class FilterLobe { Ggx, Charlie, Cosine };
+std::vector<float> lobeTable(FilterLobe lobe, float roughness);
+
 // Cosine-weighted hemisphere samples for irradiance (each weight 1).
 SampleTable irradianceSamples(uint32_t count, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered,
                               float lodBias);

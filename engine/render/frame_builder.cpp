@@ -66,7 +66,8 @@ passes::IblHandles FrameBuilder::addIblMaps(Frame& frame, bool reference) {
     return maps;
 }
 
-std::optional<passes::ForwardPass::DeformedVertices> FrameBuilder::addSkinMorph(Frame& frame, const scene::ScenePose& pose) {
+std::optional<passes::ForwardPass::DeformedVertices> FrameBuilder::addSkinMorph(Frame& frame, const scene::ScenePose& pose,
+                                                                                bool disabled) {
     const scene::GpuScene& gpuScene = mScene.gpuScene();
     if (gpuScene.scene().deformations.empty()) return std::nullopt;  // a static scene: its graph stays as it was
     passes::SkinMorphFrame work = passes::skinMorphFrame(gpuScene, pose);
@@ -82,8 +83,13 @@ std::optional<passes::ForwardPass::DeformedVertices> FrameBuilder::addSkinMorph(
                           std::to_string(work.skinnedDraws) + " skinned), " + std::to_string(work.activeTargets) +
                           " morph targets with a non-zero weight, " + std::to_string(work.vertexCount) + " vertices (" +
                           formatBytes(uint64_t(work.vertexCount) * sizeof(scene::Vertex)) + " per frame in flight)");
-    return passes::ForwardPass::DeformedVertices{.vertices = mSkinMorph.add(*frame.graph, inputs),
-                                                 .vertexOffset = std::move(work.vertexOffset)};
+    const BufferId vertices = mSkinMorph.add(*frame.graph, inputs);
+    if (disabled) {
+        frame.notes.push_back("left out: the " + std::to_string(work.jobs.size()) +
+                              " deformed draws (skin_morph disabled: nothing places their vertices)");
+        return std::nullopt;
+    }
+    return passes::ForwardPass::DeformedVertices{.vertices = vertices, .vertexOffset = std::move(work.vertexOffset)};
 }
 
 passes::ForwardPass::PosedDraws FrameBuilder::addPosedDraws(Frame& frame, const scene::Scene& scene,
@@ -180,8 +186,25 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
     const scene::ScenePose* pose = settings.pose ? settings.pose : mScene.restPose();
     const scene::ViewSetup view = resolveView(scene, settings.camera, aspect, pose);
-    const auto deformed = pose ? addSkinMorph(frame, *pose) : std::nullopt;
+    frame.notes.push_back("camera: " + cameraFlags(scene, settings.camera, aspect, pose));
+    const auto disabled = [&](std::string_view pass) {
+        return std::find(settings.disabledPasses.begin(), settings.disabledPasses.end(), pass) != settings.disabledPasses.end();
+    };
+    const bool deformOff = pose && disabled("skin_morph");
+    const auto deformed = pose ? addSkinMorph(frame, *pose, deformOff) : std::nullopt;
     const bool animated = pose && pose->animated();
+    // Without skin_morph the skinned and morphed draws have no vertices to draw: they are left out.
+    std::span<const scene::Draw> draws = animated ? std::span(pose->draws()) : std::span(scene.draws);
+    std::vector<scene::Draw> undeformed;
+    uint32_t leftOut = 0;  // visible draws hidden here (not counted as hidden by KHR_node_visibility)
+    if (deformOff) {
+        undeformed.assign(draws.begin(), draws.end());
+        for (uint32_t d : pose->deformedDraws()) {
+            leftOut += undeformed[d].hidden ? 0 : 1;
+            undeformed[d].hidden = true;
+        }
+        draws = undeformed;
+    }
     const auto posed = animated ? std::optional(addPosedDraws(frame, scene, *pose)) : std::nullopt;
     const std::optional<passes::ForwardPass::Ibl> ibl = addIbl(frame, settings);
     // The material layers' maps: the sheen LUT (computed once) and, with an environment, the sheen cube.
@@ -196,13 +219,14 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     mScene.applyParameters(mParameters, mForward.reflection(), mForward.layeredReflection());
 
     // Debug views show data, not what lies behind: transmissive draws are then drawn with the rest.
-    const passes::DrawList list = passes::buildDrawList({.scene = scene,
-                                                         .keys = mScene.materialKeys(),
-                                                         .draws = animated ? std::span(pose->draws()) : std::span(scene.draws),
-                                                         .view = view,
-                                                         .targetHeight = settings.height,
-                                                         .selection = settings.drawSelection,
-                                                         .transmission = settings.debugView == passes::DebugView::None});
+    passes::DrawList list = passes::buildDrawList({.scene = scene,
+                                                   .keys = mScene.materialKeys(),
+                                                   .draws = draws,
+                                                   .view = view,
+                                                   .targetHeight = settings.height,
+                                                   .selection = settings.drawSelection,
+                                                   .transmission = settings.debugView == passes::DebugView::None});
+    list.hiddenDraws -= leftOut;  // their own note says why (addSkinMorph)
     const passes::ForwardPass::FrameInputs inputs = mForward.frameInputs({.view = view,
                                                                           .model = settings.shading,
                                                                           .ibl = ibl ? &*ibl : nullptr,
@@ -233,9 +257,13 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     // transmissive draws must see it or the HDR image is the output (then the skybox pass draws it
     // into the HDR image). Switching the skybox pass off (--disable-pass skybox, the viewer's
     // toggle) still switches the sky off: the pass is then declared, to be disabled.
-    const bool skyboxDisabled = std::find(settings.disabledPasses.begin(), settings.disabledPasses.end(), "skybox") !=
-                                settings.disabledPasses.end();
-    const bool skyInTonemap = skybox && !transmission && !settings.floatOutput && !skyboxDisabled;
+    // Switching transmission_background off leaves the transmissive draws without the opaque image
+    // to see through: they are drawn over it, reading a placeholder (black, coverage 0), so what they
+    // let through is what the tonemap composites where coverage is below 1 — the sky or the
+    // background colour, not the scene behind them (the pass is declared, to be disabled).
+    const bool skyboxDisabled = disabled("skybox");
+    const bool seesOpaqueImage = transmission && !disabled("transmission_background");
+    const bool skyInTonemap = skybox && !seesOpaqueImage && !settings.floatOutput && !skyboxDisabled;
     passes::DrawTarget drawn;
     const auto addSkybox = [&](const passes::DrawTarget& over) {
         return mSkybox.add(graph, view, {.target = over, .specular = ibl->maps.specular, .params = ibl->params}, &mParameters);
@@ -255,8 +283,10 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
         if (skybox && !skyInTonemap) drawn = addSkybox(drawn);
     }
     // Transmissive draws over the opaque image (sky included), which they see through.
-    if (transmission)
-        drawn = mForward.addTransmissive(graph, drawn, mTransmissionBackground.add(graph, drawn.hdr), list, inputs, &mStats);
+    if (transmission) {
+        const TextureId background = mTransmissionBackground.add(graph, drawn.hdr);
+        drawn = mForward.addTransmissive(graph, drawn, seesOpaqueImage ? background : TextureId{}, list, inputs, &mStats);
+    }
     frame.hdr = drawn.hdr;
     // UNORM target: the tonemap shader encodes sRGB itself, which also lets it dither.
     const TextureId ldr = target ? *target
@@ -273,8 +303,8 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemapOf(settings, ibl.has_value()), &mParameters, sky ? &*sky : nullptr);
 
     addNotes(frame, settings, msaa, mForward.describe(list, inputs, settings.drawSelection),
-             {.sheenLut = layerMaps.has_value(), .transmission = transmission, .ibl = ibl.has_value(), .skybox = skybox,
-              .skyInTonemap = skyInTonemap});
+             {.sheenLut = layerMaps.has_value(), .transmission = transmission, .seesOpaqueImage = seesOpaqueImage,
+              .ibl = ibl.has_value(), .skybox = skybox, .skyInTonemap = skyInTonemap});
 }
 
 void FrameBuilder::addNotes(Frame& frame, const RenderSettings& settings, const vk::MsaaChoice& msaa,
@@ -303,7 +333,11 @@ void FrameBuilder::addNotes(Frame& frame, const RenderSettings& settings, const 
     else
         notes.emplace_back("left out: sheen LUT (no material has a sheen)");
     const passes::DebugView debugView = settings.debugView;
-    if (scheduled.transmission)
+    if (scheduled.transmission && !scheduled.seesOpaqueImage)
+        notes.emplace_back("transmission: 'transmission_background' disabled: 'forward_transmission' draws the transmissive "
+                           "and blended draws over the opaque image without seeing it (they let through only the background "
+                           "the tonemap composites: the sky or the background colour)");
+    else if (scheduled.transmission)
         notes.emplace_back("transmission: 'transmission_background' copies the opaque image into a mip chain; "
                            "'forward_transmission' draws the transmissive and blended draws over it");
     else
@@ -318,6 +352,27 @@ void FrameBuilder::addNotes(Frame& frame, const RenderSettings& settings, const 
     if (scheduled.ibl && !scheduled.skybox)
         notes.emplace_back(debugView != passes::DebugView::None ? "left out: skybox (debug view)"
                                                                 : "left out: skybox (the background is not the environment)");
+}
+
+scene::OrbitCamera FrameBuilder::orbitCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                             const scene::ScenePose* pose) {
+    if (camera.orbitCamera) return *camera.orbitCamera;
+    if (pose && !pose->animated()) pose = nullptr;
+    const glm::vec3 orbit = camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f));
+    scene::OrbitCamera out = scene::OrbitCamera::framing(pose ? pose->animationBounds() : scene.bounds, aspect, orbit.x,
+                                                         orbit.y, camera.fovYDegrees);
+    if (orbit.z > 0.0f) {
+        out.radius = orbit.z;
+        out.znear = orbit.z * 1e-3f;
+    }
+    if (camera.target) out.target = *camera.target;
+    return out;
+}
+
+std::string FrameBuilder::cameraFlags(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                      const scene::ScenePose* pose) {
+    if (camera.gltfCamera && !camera.orbitCamera) return "--camera " + std::to_string(*camera.gltfCamera);
+    return scene::orbitCameraFlags(orbitCamera(scene, camera, aspect, pose));
 }
 
 scene::ViewSetup FrameBuilder::resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect,
@@ -337,15 +392,7 @@ scene::ViewSetup FrameBuilder::resolveView(const scene::Scene& scene, const Came
                             std::to_string(scene.cameras.size()) + " cameras");
         return scene::cameraView((pose ? pose->cameras() : scene.cameras)[*camera.gltfCamera], aspect);
     }
-    const glm::vec3 angles = camera.orbit.value_or(glm::vec3(0.0f, 90.0f, 0.0f));
-    scene::OrbitCamera orbit = scene::OrbitCamera::framing(pose ? pose->animationBounds() : scene.bounds, aspect, angles.x,
-                                                           angles.y, camera.fovYDegrees);
-    if (angles.z > 0.0f) {
-        orbit.radius = angles.z;
-        orbit.znear = angles.z * 1e-3f;
-    }
-    if (camera.target) orbit.target = *camera.target;
-    return orbit.view(aspect);
+    return orbitCamera(scene, camera, aspect, pose).view(aspect);
 }
 
 }  // namespace candela

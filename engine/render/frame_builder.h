@@ -62,14 +62,27 @@ public:
     // glTF cameras are where the pose puts them and framing contains the whole animation.
     static scene::ViewSetup resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect,
                                         const scene::ScenePose* pose = nullptr);
+    // The orbit camera `camera` gives when it names no glTF camera: the interactive one as it is,
+    // else scene::OrbitCamera::framing of the scene's bounds (with an animated `pose`, the bounds
+    // of the whole animation) from --camera-orbit's direction or scene::defaultOrbitAngles, then
+    // the distance (r > 0) and --target when given, with the --fov.
+    static scene::OrbitCamera orbitCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                          const scene::ScenePose* pose = nullptr);
+    // The command-line flags that reproduce resolveView's view: "--camera N" for a glTF camera,
+    // else scene::orbitCameraFlags (--camera-orbit, --target, --fov); printed by --explain and
+    // --verbose. The viewer's lens shift has no flag.
+    static std::string cameraFlags(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                   const scene::ScenePose* pose = nullptr);
 
 private:
     // The shading path of a frame of `variant` asked for `requested`: Visibility or Forward, and
     // why (for --explain; "" when the request was followed without a reason to give).
     std::pair<passes::ShadingPath, std::string> shadingPath(passes::ShadingPath requested,
                                                             const passes::FrameVariant& variant) const;
-    // Adds the skin_morph pass for the pose's deformed draws; nullopt (and a note) when none is.
-    std::optional<passes::ForwardPass::DeformedVertices> addSkinMorph(Frame& frame, const scene::ScenePose& pose);
+    // Adds the skin_morph pass for the pose's deformed draws; nullopt (and a note) when none is, or
+    // when the pass is `disabled` (--disable-pass skin_morph: it is declared, to be switched off, and
+    // the caller leaves the deformed draws out of the frame).
+    std::optional<passes::ForwardPass::DeformedVertices> addSkinMorph(Frame& frame, const scene::ScenePose& pose, bool disabled);
     // The per-frame buffers of an animated pose — the posed draws (a node moves), lights (a light
     // moves, shows, hides or has an animated property) and materials (and their layer data) with
     // animated properties — each only when something it holds animates; and a note for --explain
@@ -81,7 +94,9 @@ private:
     passes::TonemapSettings tonemapOf(const RenderSettings& settings, bool ibl) const;
     // What the scene frame added besides the forward draws.
     struct Scheduled {
-        bool sheenLut = false, transmission = false, ibl = false, skybox = false, skyInTonemap = false;
+        bool sheenLut = false, transmission = false;
+        bool seesOpaqueImage = false;  // the transmissive draws read transmission_background (it is not disabled)
+        bool ibl = false, skybox = false, skyInTonemap = false;
     };
     // Adds the frame's notes: lights, MSAA, the forward passes' `forward` lines, the maps, sheen LUT,
     // transmission, debug view and skybox.

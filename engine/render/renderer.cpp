@@ -124,6 +124,29 @@ FrameTiming Renderer::precomputeIbl(const scene::Environment& environment, const
     return execute(std::move(frame), {});
 }
 
+namespace {
+
+// Why a frame whose readback was culled has nothing to capture: the disabled pass at the root of
+// the lost inputs and the passes lost with it, or the readback's own cull detail.
+std::string nothingToCapture(const RenderGraph& graph) {
+    const CompiledGraph& compiled = graph.compiled();
+    uint32_t pass = *graph.findPass("readback");
+    std::vector<std::string> lost;
+    while (compiled.passes[pass].cullReason == CullReason::LostInput && compiled.passes[pass].lostProducer != graph::kInvalidIndex &&
+           lost.size() < compiled.passes.size()) {
+        lost.insert(lost.begin(), graph.declaration().passes[pass].name);
+        pass = compiled.passes[pass].lostProducer;
+    }
+    if (compiled.passes[pass].cullReason != CullReason::Disabled)
+        return "nothing to capture: the readback pass was culled (" + compiled.passes[*graph.findPass("readback")].cullDetail + ")";
+    std::string chain;
+    for (const std::string& name : lost) chain += (chain.empty() ? "" : ", ") + name;
+    return "nothing to capture: pass '" + graph.declaration().passes[pass].name +
+           "' is disabled and the image cannot be made without it (lost with it: " + chain + ")";
+}
+
+}  // namespace
+
 CapturedFrame Renderer::capture(const RenderSettings& settings) {
     Frame frame = beginFrame(settings);
     const VkDeviceSize texel = settings.floatOutput ? 8 : 4;  // RGBA16F or RGBA8
@@ -138,8 +161,7 @@ CapturedFrame Renderer::capture(const RenderSettings& settings) {
     captured.timings = timing.timings;
     const RenderGraph& graph = *mRunner.last().graph;
     const PassInfo& readbackInfo = graph.compiled().passes[*graph.findPass("readback")];
-    if (readbackInfo.cullReason != CullReason::None)
-        throw UserError("nothing to capture: the readback pass was culled (" + readbackInfo.cullDetail + ")");
+    if (readbackInfo.cullReason != CullReason::None) throw UserError(nothingToCapture(graph));
     const auto readStart = std::chrono::steady_clock::now();
     if (settings.floatOutput) captured.rgba32f = mReadback.rgba32f(texels);
     else captured.rgba8 = mReadback.rgba8(texels, VK_FORMAT_R8G8B8A8_UNORM);

@@ -139,6 +139,15 @@ public:
                                         const scene::ScenePose* pose = nullptr) {
         return FrameBuilder::resolveView(scene, camera, aspect, pose);
     }
+    // The orbit camera and the flags that reproduce the view (FrameBuilder::orbitCamera, cameraFlags).
+    static scene::OrbitCamera orbitCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                          const scene::ScenePose* pose = nullptr) {
+        return FrameBuilder::orbitCamera(scene, camera, aspect, pose);
+    }
+    static std::string cameraFlags(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                   const scene::ScenePose* pose = nullptr) {
+        return FrameBuilder::cameraFlags(scene, camera, aspect, pose);
+    }
 
     // The graph of the last frame (declaration and compiled result), for export and inspection.
     const graph::RenderGraph& lastGraph() const { return *mRunner.last().graph; }

@@ -7,7 +7,17 @@
 
 #include <glm/glm.hpp>
 
+#include <string>
+
 namespace candela::scene {
+
+// The orbit camera's default direction: the front (+Z, θ = 0) from 15° above the horizon (φ = 75°),
+// as model-viewer's default camera-orbit "0deg 75deg"; a flat model lying in the ground plane is
+// then seen, not edge-on (docs/scenes.md, "Framing").
+constexpr float kDefaultOrbitPolarDegrees = 75.0f;
+// The vertical field of view framing fits the bounds in. --fov changes the field of view at the
+// distance framing chose (a narrower one shows the model bigger); it does not change the distance.
+constexpr float kFramingFovYDegrees = 45.0f;
 
 struct ViewSetup {
     glm::mat4 view{1.0f};
@@ -27,7 +37,7 @@ glm::mat4 orthographicReverseZ(float xmag, float ymag, float znear, float zfar);
 struct OrbitCamera {
     glm::vec3 target{0.0f};
     float thetaDegrees = 0.0f;   // azimuth about +Y; 0 = on +Z
-    float phiDegrees = 90.0f;    // polar angle from +Y; 90 = horizontal
+    float phiDegrees = kDefaultOrbitPolarDegrees;  // polar angle from +Y; 90 = horizontal
     float radius = 5.0f;         // metres
     float fovYDegrees = 45.0f;   // vertical field of view
     float znear = 0.0f;          // 0: radius / 1000
@@ -36,11 +46,24 @@ struct OrbitCamera {
     glm::vec3 eye() const;
     ViewSetup view(float aspect) const;
 
-    // Looks at the centre of `bounds` from direction (θ, φ), far enough that the bounding sphere
-    // fits the narrower of the two fields of view.
-    static OrbitCamera framing(const Aabb& bounds, float aspect, float thetaDegrees = 0.0f, float phiDegrees = 90.0f,
-                               float fovYDegrees = 45.0f);
+    // Looks at the centre of `bounds` from direction (θ, φ), at the nearest distance where the
+    // eight corners of the box fall inside both fields of view of a kFramingFovYDegrees camera at
+    // `aspect` (width / height), with a margin: a wide model fills the width of a wide image, a tall
+    // one the height. The camera returned has the field of view `fovYDegrees`, which does not
+    // change the distance. Invalid bounds: the default camera, looking at the origin.
+    static OrbitCamera framing(const Aabb& bounds, float aspect, float thetaDegrees = 0.0f,
+                               float phiDegrees = kDefaultOrbitPolarDegrees, float fovYDegrees = kFramingFovYDegrees);
 };
+
+// The direction (θ°, φ°) the orbit camera frames `scene` from when the command line gives none:
+// Scene::framingAngles when the scene has its own (the built-in sphere grid: head-on), else the
+// front from 15° above the horizon — from +X (θ = 90°) when the bounds are flat in X and not in Z,
+// so that a plane facing ±X is not seen edge-on.
+glm::vec2 defaultOrbitAngles(const Scene& scene);
+
+// The command-line flags that reproduce `camera`: "--camera-orbit θ,φ,r --target x,y,z --fov f",
+// each number in the shortest form that reads back as the same float (the same image).
+std::string orbitCameraFlags(const OrbitCamera& camera);
 
 // The view of a glTF camera; the viewport's aspect is used when the camera has none.
 ViewSetup cameraView(const Camera& camera, float viewportAspect);

@@ -405,6 +405,9 @@ struct Scene {
     std::vector<DrawVariants> drawVariants;
     // World space, over the drawn draws (not hidden); over every draw when all are hidden.
     Aabb bounds;
+    // The direction (θ°, φ°) the orbit camera frames this scene from by default, when it has one of
+    // its own (the built-in sphere grid, a chart: head-on); none: scene::defaultOrbitAngles.
+    std::optional<glm::vec2> framingAngles;
     // Met while loading, one line each: problems that make the render differ from what the file
     // intends (printed), and facts the glTF-Validator reports as information, such as degenerate
     // triangles (printed with --verbose).

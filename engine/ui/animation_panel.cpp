@@ -1,6 +1,8 @@
 // The animation panel: the scene's animations with a checkbox each (the ones ticked play
-// together), play/pause (also the space key), speed, looping, and a time slider that scrubs.
+// together; when they drive the same channels, a line says which and which wins), play/pause
+// (also the space key), speed, looping, and a time slider that scrubs.
 
+#include "pose/animation_conflicts.h"
 #include "ui/panels.h"
 #include "ui/viewer.h"
 
@@ -33,6 +35,10 @@ void drawAnimationPanel(Viewer& viewer) {
         std::sort(playing.begin(), playing.end());
         viewer.setPlayingAnimations(playing);
     }
+    // Ticked animations that drive the same channels: which, and which wins.
+    if (const std::string overlap = scene::describeAnimationConflicts(scene, scene::animationConflicts(scene, viewer.pose().playing()));
+        !overlap.empty())
+        ImGui::TextWrapped("%s", overlap.c_str());
     bool& paused = viewer.animationPaused();
     if (ImGui::Button(paused ? "Play (space)" : "Pause (space)")) paused = !paused;
     ImGui::SameLine();

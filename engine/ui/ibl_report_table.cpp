@@ -83,6 +83,8 @@ IblReportTable parseIblReport(std::string_view csv, std::string name) {
         q.irradianceSamples = uint32_t(number("irradiance_samples"));
         q.lutSize = uint32_t(number("lut_size"));
         q.lutSamples = uint32_t(number("lut_samples"));
+        // Reports from before the bright-texel split sampled every texel.
+        q.brightTexels = column.count("bright_texels") ? uint32_t(number("bright_texels")) : 0;
         row.precomputeMs = number("precompute_ms");
         row.ratioToCalibration = number("ratio_to_calibration");
         row.specularMeanRelative = number("specular_mean_relative");

@@ -6,6 +6,7 @@
 #include "core/errors.h"
 #include "core/log.h"
 #include "graph/graph_export.h"
+#include "pose/animation_conflicts.h"
 #include "pose/picking.h"
 #include "scene/material_variants.h"
 #include "shader/shader_library.h"
@@ -71,6 +72,10 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
       mSettings(std::move(content.settings)) {
     mVariant = content.variant;
     mPose = std::make_unique<scene::ScenePose>(mScene, scene::selectAnimations(mScene, content.animations));
+    // Said once here; the animation panel shows it while the ticked animations overlap.
+    if (const std::string overlap = scene::describeAnimationConflicts(mScene, scene::animationConflicts(mScene, mPose->playing()));
+        !overlap.empty())
+        log::warn(mScene.source + ": " + overlap);
     mAnimationTime = content.time;
     mPose->evaluate(mAnimationTime);
     mWindow = std::make_unique<Window>(desc.window);
@@ -88,17 +93,8 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
     mSettings.floatOutput = false;
     const float aspect = visibleAspect();
     if (!mSettings.camera.orbitCamera) {
-        // Start from the view the command line chose (framing the scene by default).
-        mCamera = scene::OrbitCamera::framing(mPose->animationBounds(), aspect, 0.0f, 90.0f, mSettings.camera.fovYDegrees);
-        if (mSettings.camera.orbit) {
-            mCamera = scene::OrbitCamera::framing(mPose->animationBounds(), aspect, mSettings.camera.orbit->x,
-                                                  mSettings.camera.orbit->y, mSettings.camera.fovYDegrees);
-            if (mSettings.camera.orbit->z > 0.0f) {
-                mCamera.radius = mSettings.camera.orbit->z;
-                mCamera.znear = mCamera.radius * 1e-3f;
-            }
-        }
-        if (mSettings.camera.target) mCamera.target = *mSettings.camera.target;
+        // Start from the view the command line chose (framing the scene by default), as render does.
+        mCamera = Renderer::orbitCamera(mScene, mSettings.camera, aspect, mPose.get());
         if (mSettings.camera.gltfCamera && *mSettings.camera.gltfCamera < mScene.cameras.size()) {
             // Orbit about the point the glTF camera looks at, at the depth of the scene's centre.
             const glm::mat4& world = mPose->cameras()[*mSettings.camera.gltfCamera].world;
@@ -112,6 +108,7 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
         mCamera = *mSettings.camera.orbitCamera;
     }
     mInitialCamera = mCamera;
+    log::info("camera: " + scene::orbitCameraFlags(mCamera));
     mOpenPanels = desc.openPanels;
     if (!desc.iblReport.empty()) mIblReports.push_back(loadIblReport(desc.iblReport));
     for (IblReportTable& table : builtinIblReports()) mIblReports.push_back(std::move(table));
@@ -163,7 +160,7 @@ bool Viewer::openFile(const std::filesystem::path& path, std::optional<uint32_t>
             mPose = std::make_unique<scene::ScenePose>(mScene, scene::selectAnimations(mScene, {}));
             mAnimationTime = 0.0;
             mCamera = mInitialCamera =
-                scene::OrbitCamera::framing(mPose->animationBounds(), visibleAspect(), 0.0f, 90.0f, mCamera.fovYDegrees);
+                Renderer::orbitCamera(mScene, {.fovYDegrees = mCamera.fovYDegrees}, visibleAspect(), mPose.get());
             mSettings.camera.gltfCamera.reset();
             setStatus("opened " + path.string());
             return true;

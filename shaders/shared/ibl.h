@@ -27,6 +27,23 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_IBL_GROUP 8u       // 8×8 invocations per workgroup in the per-texel passes
 #define CANDELA_IBL_SH_GROUP 64u   // invocations of the single SH-projection workgroup
 
+// ---- Bright texels (engine/ibl_maps/bright_texels.h) ----
+
+// Rec. 709 luminance, the measure of a texel's brightness for the bright-texel split.
+CANDELA_FN float iblLuminance(vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+// `radiance` scaled down so that its luminance is at most `threshold` (hue kept); the excess,
+// radiance − iblClampLuminance(radiance, threshold), is what the bright-texel list carries.
+CANDELA_FN vec3 iblClampLuminance(vec3 radiance, float threshold) {
+    float y = iblLuminance(radiance);
+    return y > threshold ? radiance * (threshold / y) : radiance;
+}
+
+// Entries of a filter lobe table (engine/passes/ibl_sample_tables.h lobeTable): entry j holds the
+// lobe's normalised weight per steradian at θ = (π/2)·(j / (size − 1))², θ the angle between the
+// texel's direction and the light's; squared spacing resolves the narrow lobes of low roughness.
+#define CANDELA_IBL_LOBE_TABLE_SIZE 1024u
+
 // ---- Push constants of the precompute passes ----
 
 // ibl_cubemap.comp: equirectangular → cube mip 0.
@@ -35,6 +52,11 @@ struct IblCubemapPush {
     uint supersample;  // k: k×k bilinear taps per cube texel (k ≥ 1), for sources finer than the cube
     float cubeScale;   // the float cube holds radiance × cubeScale (a power of two; < 1 keeps a half-float cube in range)
     float equirectInverseScale;  // the equirect holds radiance / equirectInverseScale (half floats kept in range)
+    // The float cube's source texels are clamped to this luminance, in the equirect's stored units
+    // (iblClampLuminance; their excess is the bright-texel list, engine/ibl_maps/bright_texels.h).
+    // The specular cube's mip 0 is not clamped. Infinity: nothing clamped.
+    float clampLuminance;
+    uint pad0, pad1, pad2;
 };
 
 // ibl_cube_downsample.comp: 2×2 box filter from one mip to the next.
@@ -50,6 +72,8 @@ struct IblFilterPush {
     uint firstSample;
     uint sampleCount;
     float inverseWeight;  // 1 / the table's total weight
+    uint firstLobe;       // this mip's lobe table in LobeTable (CANDELA_IBL_LOBE_TABLE_SIZE entries)
+    uint pad0, pad1, pad2;
 };
 
 // ibl_irradiance_sh.comp: projection of one source mip onto SH9.
@@ -264,7 +288,8 @@ CANDELA_FN vec3 iblShade(vec3 prefiltered, vec3 irradiance, vec2 lut, vec3 f0, v
 CANDELA_NAMESPACE_END
 
 #ifdef __cplusplus
-static_assert(sizeof(candela::shading::IblFilterPush) == 16);
+static_assert(sizeof(candela::shading::IblFilterPush) == 32);
+static_assert(sizeof(candela::shading::IblCubemapPush) == 32);
 static_assert(sizeof(candela::shading::IblParams) == 32);
 static_assert(sizeof(candela::shading::SkyboxPush) == 112);
 #endif

@@ -606,6 +606,25 @@ std::vector<Row> catalogue() {
         j["scenes"][0]["nodes"] = {1};
     }), "zero scale, not drawn", false, true);
 
+    // -- Nothing to draw. Valid files (glTF 2.0 §3.5.1: an asset may have no scene, "a library of
+    // individual entities") that rendered an empty image without a word (#31): one warning.
+    const auto withoutScenes = [](Json& j) {
+        j.erase("scenes");
+        j.erase("scene");
+    };
+    warning("nothing to draw", "NoSceneNoNodes", gltfEdited([=](Json& j) {
+        withoutScenes(j);
+        j.erase("nodes");
+    }), "nothing to draw: the file has no scene and no nodes", false, true);
+    warning("nothing to draw", "NoSceneNoMeshNode", gltfEdited([=](Json& j) {
+        withoutScenes(j);
+        j["nodes"][0].erase("mesh");
+    }), "nothing to draw: the file has no scene, and none of its root nodes holds a mesh", false, true);
+    warning("nothing to draw", "EmptyScene", gltfEdited([](Json& j) { j["scenes"][0]["nodes"] = Json::array(); }),
+            "nothing to draw: scene 0 has no nodes", false, true);
+    warning("nothing to draw", "SceneWithoutMeshNode", gltfEdited([](Json& j) { j["nodes"][0].erase("mesh"); }),
+            "nothing to draw: no node of scene 0 holds a mesh", false, true);
+
     // -- Animations (the loader validates them so that playback needs no checks).
     const std::vector<float> move = {0, 0, 0, 1, 0, 0};
     error("animation", "InputDecreasing", animatedTriangle({1, 0}, move, "VEC3", 3),

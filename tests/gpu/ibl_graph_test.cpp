@@ -76,12 +76,12 @@ TEST_F(IblGraphTest, PrecomputeRunsOnceThenOnlyWhenEnvironmentOrQualityChanges) 
     RenderSettings s = settings(&mSky);
     renderer.capture(s);
     std::vector<std::string> passes = ranPasses(renderer);
-    for (const char* name : {"ibl_brdf_lut", "ibl_cubemap", "ibl_prefilter", "ibl_irradiance_sh", "forward", "tonemap"})
+    for (const char* name : {"ibl_brdf_lut", "ibl_cubemap", "ibl_prefilter", "ibl_irradiance_cube", "forward", "tonemap"})
         EXPECT_TRUE(has(passes, name)) << name;
-    EXPECT_FALSE(has(passes, "ibl_irradiance_cube"));
+    EXPECT_FALSE(has(passes, "ibl_irradiance_sh"));
     EXPECT_TRUE(explains(renderer, "sky: composited under the image by the tonemap (no skybox pass)"));
     EXPECT_TRUE(explains(renderer, "ibl: maps computed by this frame's precompute passes"));
-    EXPECT_TRUE(explains(renderer, "variants: pbr+ibl-sh9 ×49"));
+    EXPECT_TRUE(explains(renderer, "variants: pbr+ibl-cube ×49"));
 
     // Same environment: the maps are imported, no precompute pass is even declared.
     renderer.capture(s);
@@ -114,13 +114,14 @@ TEST_F(IblGraphTest, PrecomputeRunsOnceThenOnlyWhenEnvironmentOrQualityChanges) 
     EXPECT_TRUE(has(passes, "ibl_cubemap"));
     EXPECT_FALSE(has(passes, "ibl_brdf_lut"));
 
-    // Irradiance as a cube: its pass replaces the SH projection.
-    s.iblQuality.irradiance = ibl::IrradianceMode::Cube;
+    // Irradiance as SH9: its projection replaces the irradiance cube's pass.
+    s.iblQuality.irradiance = ibl::IrradianceMode::Sh9;
     renderer.capture(s);
     passes = ranPasses(renderer);
-    EXPECT_TRUE(has(passes, "ibl_irradiance_cube"));
-    EXPECT_FALSE(has(passes, "ibl_irradiance_sh"));
-    EXPECT_TRUE(explains(renderer, "left out: SH9 projection"));
+    EXPECT_TRUE(has(passes, "ibl_irradiance_sh"));
+    EXPECT_FALSE(has(passes, "ibl_irradiance_cube"));
+    EXPECT_TRUE(explains(renderer, "left out: irradiance cube"));
+    EXPECT_TRUE(explains(renderer, "variants: pbr+ibl-sh9 ×49"));
 
     // Environment off again: nothing of IBL remains.
     s.environment = nullptr;

@@ -294,7 +294,7 @@ TEST_F(IblMapsTest, ConstantEnvironmentGivesConstantMaps) {
     const scene::Scene scene = sphereScene(kProbeSphere, 32, 16);
     Renderer renderer(context());
     RenderSettings settings{.width = 32, .height = 32, .floatOutput = true, .scene = &scene, .defaultLights = false,
-                            .environment = &env, .iblQuality = smallQuality()};
+                            .environment = &env, .iblQuality = smallSh9Quality()};
     const double tolerance = kHalfRounding + 1e-3;
     auto checkCube = [&](const CachedImage& image, const char* what) {
         double worst = 0.0;
@@ -320,7 +320,7 @@ TEST_F(IblMapsTest, ConstantEnvironmentGivesConstantMaps) {
         const CachedImage* sh = findImage(maps, "irradiance_sh");
         ASSERT_NE(specular, nullptr);
         ASSERT_NE(sh, nullptr);
-        EXPECT_EQ(specular->mips, 6u);
+        EXPECT_EQ(specular->mips, smallSh9Quality().levels());
         EXPECT_EQ(specular->layers, 6u);
         checkCube(*specular, "specular");
         const std::array<glm::dvec3, 9> coefficients = readSh(*sh);
@@ -491,7 +491,7 @@ TEST_F(IblShTest, CosineLobesProjectToTheirAnalyticCoefficients) {
             512, 256, [&](const glm::dvec3& d) { return glm::dvec3(std::max(glm::dot(d, c.axis), 0.0)); }));
         ASSERT_EQ(frameProblem(renderer.capture({.width = 16, .height = 16, .floatOutput = true, .scene = &scene,
                                                   .defaultLights = false, .environment = &env,
-                                                  .iblQuality = smallQuality()})),
+                                                  .iblQuality = smallSh9Quality()})),
                   "");
         const std::vector<CachedImage> maps = renderer.iblMaps().readBack();
         const CachedImage* shImage = findImage(maps, "irradiance_sh");
@@ -605,9 +605,11 @@ TEST_F(IblExtremeTest, ExtremeEnvironmentsGiveFiniteBoundedMapsAndFrames) {
         measured(name + ".captureSeconds", seconds);
         return maps;
     };
-    ibl::IblQuality sh = smallQuality();
+    ibl::IblQuality sh = smallSh9Quality();
     ibl::IblQuality cube = smallQuality();
     cube.irradiance = ibl::IrradianceMode::Cube;
+    ibl::IblQuality defaultSh9;  // the default cube size, SH9
+    defaultSh9.irradiance = ibl::IrradianceMode::Sh9;
 
     // (a) One texel of 1e5 in a black 256×128 map.
     {
@@ -622,7 +624,7 @@ TEST_F(IblExtremeTest, ExtremeEnvironmentsGiveFiniteBoundedMapsAndFrames) {
         measured("singleTexel1e5.referenceIrradiance", truth);
         measured("singleTexel1e5.referenceSh9OverTruth", truncated / truth);
 
-        const std::vector<CachedImage> shMaps = run(env, ibl::IblQuality{}, "singleTexel1e5.sh9.cube256");
+        const std::vector<CachedImage> shMaps = run(env, defaultSh9, "singleTexel1e5.sh9.cube256");
         const CachedImage* shImage = findImage(shMaps, "irradiance_sh");
         ASSERT_NE(shImage, nullptr);
         const double gpu = evaluateSh(readSh(*shImage), sun).x;

@@ -28,9 +28,10 @@ TEST_F(GpuTest, SphereGridRendersFiniteHdrAndCullsTonemapForFloatOutput) {
         ASSERT_TRUE(std::isfinite(hdr.rgba32f[i])) << "texel " << i / 4;
         if (i % 4 == 3 && hdr.rgba32f[i] > 0.5f) ++covered;
     }
-    // 49 unit spheres framed by the grid's bounding sphere cover about 12% of a 16:9 image.
-    EXPECT_GT(covered, hdr.rgba32f.size() / 4 * 8 / 100);
-    EXPECT_LT(covered, hdr.rgba32f.size() / 4 * 16 / 100);
+    // 49 unit spheres framed head-on, the grid's box across 1/1.1 of the height of a 16:9 image,
+    // cover about 22% of it (measured 22.4%).
+    EXPECT_GT(covered, hdr.rgba32f.size() / 4 * 18 / 100);
+    EXPECT_LT(covered, hdr.rgba32f.size() / 4 * 27 / 100);
     const graph::RenderGraph& g = renderer.lastGraph();
     EXPECT_EQ(g.compiled().passes[*g.findPass("tonemap")].cullReason, graph::CullReason::NoOutput);
 }

@@ -169,10 +169,17 @@ inline std::string frameProblem(const CapturedFrame& frame) {
     return {};
 }
 
-// A small quality: cube 64 (SH projected from its 32² mip), 6 levels, default LUT.
+// A small quality: cube 64, 6 levels, default irradiance (the cube) and LUT.
 inline ibl::IblQuality smallQuality() {
     ibl::IblQuality q;
     q.cubeSize = 64;
+    return q;
+}
+
+// The same with irradiance as SH9, projected from the cube's 32² mip.
+inline ibl::IblQuality smallSh9Quality() {
+    ibl::IblQuality q = smallQuality();
+    q.irradiance = ibl::IrradianceMode::Sh9;
     return q;
 }
 

@@ -861,6 +861,11 @@ TEST(GltfFeatures, DefaultSceneAndSceneless) {
     expectVec(scene.bounds.min, {0, 0, 0});
     expectVec(scene.bounds.max, {6, 1, 0});
     EXPECT_TRUE(hasWarning(scene, "no scene defined"));
+    // A scene without nodes is valid and draws nothing: it loads, with one warning saying so.
+    b.doc["scenes"] = Json::array({{{"nodes", Json::array()}}});
+    scene = loadGltf(b.writeGltf(dir / "c"));
+    EXPECT_TRUE(scene.draws.empty());
+    EXPECT_EQ(scene.warnings, std::vector<std::string>{"nothing to draw: scene 0 has no nodes"});
 }
 
 TEST(GltfFeatures, UnindexedPrimitiveAndNonFiniteNormalRepaired) {

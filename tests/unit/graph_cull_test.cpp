@@ -58,6 +58,10 @@ TEST(GraphCull, DisabledPassCascadesAsLostInput) {
     EXPECT_EQ(info(graph, "tonemap").cullReason, CullReason::LostInput);
     EXPECT_EQ(info(graph, "tonemap").cullDetail,
               "input 'bloomed' lost: its producer 'bloom' was culled (lost input)");
+    // Each lost pass names the producer it lacked, so the cascade can be followed back to its root.
+    EXPECT_EQ(info(graph, "tonemap").lostProducer, *graph.findPass("bloom"));
+    EXPECT_EQ(info(graph, "bloom").lostProducer, *graph.findPass("lighting"));
+    EXPECT_EQ(info(graph, "lighting").lostProducer, kInvalidIndex);
 
     graph.setPassEnabled("lighting", true);
     graph.compile();

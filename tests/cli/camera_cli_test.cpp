@@ -1,0 +1,92 @@
+// The camera a render used, printed by --explain and --verbose as flags: rendering with those flags
+// gives the same image, pixel for pixel. Runs the real executable on lavapipe under the validation
+// layer.
+
+#include "gltf_test_util.h"
+#include "run_candela.h"
+
+#include <gtest/gtest.h>
+
+namespace candela::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kSmall = " --width 96 --height 64 --validate --quiet";
+
+std::string readFile(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The flags of the "camera: ..." line in `text` ("" when there is none).
+std::string cameraFlags(const std::string& text) {
+    const size_t at = text.find("camera: --");
+    if (at == std::string::npos) return "";
+    const size_t start = at + std::string("camera: ").size();
+    return text.substr(start, text.find('\n', start) - start);
+}
+
+// Renders `scene` with `args`, then with the camera --explain printed; both images must be the same.
+void expectPrintedCameraReproduces(const fs::path& scene, const std::string& args) {
+    TempDir dir("candela_camera_cli");
+    const fs::path first = dir / "auto.png", second = dir / "printed.png";
+    const Result framed = run("render --scene " + scene.string() + args + " --explain --out " + first.string() + kSmall);
+    ASSERT_EQ(framed.exitCode, 0) << framed.stderrText;
+    const std::string flags = cameraFlags(framed.stdoutText);
+    ASSERT_FALSE(flags.empty()) << framed.stdoutText;
+    EXPECT_NE(flags.find("--camera-orbit"), std::string::npos) << flags;
+    // --verbose prints the same line (on stderr, with the other information).
+    const Result verbose = run("render --scene " + scene.string() + args + " --verbose --out " + (dir / "v.png").string() +
+                               " --width 96 --height 64 --validate");
+    ASSERT_EQ(verbose.exitCode, 0) << verbose.stderrText;
+    EXPECT_EQ(cameraFlags(verbose.stderrText), flags) << verbose.stderrText;
+    const Result again = run("render --scene " + scene.string() + " " + flags + " --out " + second.string() + kSmall);
+    ASSERT_EQ(again.exitCode, 0) << again.stderrText;
+    const std::string a = readFile(first), b = readFile(second);
+    ASSERT_FALSE(a.empty());
+    EXPECT_TRUE(a == b) << "rendering with '" << flags << "' drew another image than the framing it printed";
+}
+
+TEST(CameraCli, ThePrintedCameraReproducesTheDefaultFraming) {
+    const fs::path models = scene::test::sharedModels();
+    if (models.empty()) GTEST_SKIP() << "../shared/assets not present";
+    expectPrintedCameraReproduces(models / "TwoSidedPlane/glTF/TwoSidedPlane.gltf", "");
+}
+
+TEST(CameraCli, ThePrintedCameraReproducesAChosenDirectionAndFieldOfView) {
+    const fs::path models = scene::test::sharedModels();
+    if (models.empty()) GTEST_SKIP() << "../shared/assets not present";
+    expectPrintedCameraReproduces(models / "Duck/glTF-Binary/Duck.glb", " --camera-orbit -35,62,0 --fov 30");
+}
+
+TEST(CameraCli, ATurntableKeepsOneDistance) {
+    const fs::path models = scene::test::sharedModels();
+    if (models.empty()) GTEST_SKIP() << "../shared/assets not present";
+    TempDir dir("candela_camera_cli_turntable");
+    const Result r = run("render --scene " + (models / "Duck/glTF-Binary/Duck.glb").string() +
+                         " --frames 4 --turntable 360 --verbose --out " + (dir / "t_%02d.png").string() +
+                         " --width 96 --height 64 --validate --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    // "--camera-orbit θ,75,r": θ 0, 90, 180, 270 and one r, the largest the four directions need.
+    std::vector<std::string> orbits;
+    for (size_t at = 0; (at = r.stderrText.find("--camera-orbit ", at)) != std::string::npos; ++at)
+        orbits.push_back(r.stderrText.substr(at + 15, r.stderrText.find(' ', at + 15) - at - 15));
+    ASSERT_EQ(orbits.size(), 4u) << r.stderrText;
+    const std::string radius = orbits[0].substr(orbits[0].rfind(',') + 1);
+    for (size_t i = 0; i < orbits.size(); ++i)
+        EXPECT_EQ(orbits[i], std::to_string(90 * i) + ",75," + radius) << r.stderrText;
+}
+
+TEST(CameraCli, AGltfCameraIsPrintedByItsIndex) {
+    const fs::path models = scene::test::sharedModels();
+    if (models.empty()) GTEST_SKIP() << "../shared/assets not present";
+    TempDir dir("candela_camera_cli_gltf");
+    const Result r = run("render --scene " + (models / "Cameras/glTF/Cameras.gltf").string() + " --camera 1 --explain --out " +
+                         (dir / "c.png").string() + kSmall);
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    EXPECT_EQ(cameraFlags(r.stdoutText), "--camera 1") << r.stdoutText;
+}
+
+}  // namespace
+}  // namespace candela::test

@@ -1,0 +1,108 @@
+#!/usr/bin/env python3
+"""Checks README.md, CONTRIBUTING.md and docs/*.md against the program and the tree:
+
+- every `candela COMMAND ...` written in them (inline code or a code block, continuation lines
+  joined) passes only flags that COMMAND takes, as `candela COMMAND --help` lists them;
+- every flag named anywhere in them (`--name`) is a flag of some command, unless it is one of
+  another tool's (cmake, ctest, GoogleTest, ...: OTHER_TOOLS_FLAGS);
+- every path of the tree named in backticks (starting with app/, engine/, shaders/, tests/,
+  tools/, docs/, assets/, .ci/ or a folder of engine/, which the docs name without engine/) exists
+  — placeholders (NAME, TARGET: a component in capitals) and patterns (*, {a,b}, …) left aside —
+  and every relative Markdown link resolves.
+
+Usage: check_docs.py PROJECT_DIR CANDELA_EXECUTABLE. Prints one line per problem (FILE:LINE: what)
+and exits 1 when there is one. Registered with ctest as `docs` (tests/cli/CMakeLists.txt).
+"""
+import glob
+import os
+import re
+import subprocess
+import sys
+
+COMMANDS = ["render", "view", "bench", "ibl-report", "scale-report", "quality-report", "diff", "soak", "info"]
+# Flags of other tools that the docs quote in their own command lines.
+OTHER_TOOLS_FLAGS = {"--preset", "--build", "--test-dir", "--target", "--target-env", "--gtest_filter", "--array",
+                     "--basisu", "--gtest_brief",
+                     "--scen"}  # the README's example of a mistyped flag and its error
+TREE_ROOTS = ("app/", "engine/", "shaders/", "tests/", "tools/", "docs/", "assets/", ".ci/")
+FLAG = re.compile(r"(?<![\w-])(--[a-z][a-z0-9_-]*)")
+
+
+def command_flags(executable):
+    flags = {}
+    for command in COMMANDS:
+        text = subprocess.run([executable, command, "--help"], capture_output=True, text=True, check=True).stdout
+        flags[command] = set(FLAG.findall(text)) | {"--help"}
+    return flags
+
+
+def line_of(text, offset):
+    return text.count("\n", 0, offset) + text.count("\r", 0, offset) + 1
+
+
+def check_commands(rel, text, flags, problems):
+    # A backslash at a line's end continues the command; inline code may wrap across lines. Such
+    # line breaks become \r, which a command runs over and line_of still counts.
+    joined = text.replace("\\\n", " \r")
+    joined = re.sub(r"`[^`]*`", lambda m: m.group(0).replace("\n", "\r"), joined)
+    for match in re.finditer(r"candela ([a-z-]+)\b([^`\n#|]*)", joined):
+        command, rest = match.group(1), match.group(2)
+        if command not in COMMANDS:
+            continue
+        # Another command line on the same line (a table cell, a sentence) ends this one.
+        rest = re.split(r"candela |\s--?\s|;", rest)[0]
+        for flag in FLAG.findall(rest):
+            if flag not in flags[command] and flag not in OTHER_TOOLS_FLAGS:
+                problems.append(f"{rel}:{line_of(joined, match.start())}: candela {command} does not take {flag}")
+
+
+def check_flags(rel, text, all_flags, problems):
+    for number, line in enumerate(text.split("\n"), 1):
+        for flag in FLAG.findall(line):
+            if flag not in all_flags and flag not in OTHER_TOOLS_FLAGS:
+                problems.append(f"{rel}:{number}: {flag} is not a flag of any command")
+
+
+def check_paths(root, rel, text, problems):
+    here = os.path.dirname(rel)
+    roots = TREE_ROOTS + tuple(name + "/" for name in os.listdir(os.path.join(root, "engine"))
+                               if os.path.isdir(os.path.join(root, "engine", name)))
+    exists = lambda pattern: any(glob.glob(os.path.join(root, base, pattern)) for base in ("", "engine"))
+    for number, line in enumerate(text.split("\n"), 1):
+        for span in re.findall(r"`([^`\s]+)`", line):
+            path = span.split("#")[0].rstrip(":,")
+            if not path.startswith(roots) or any(c in path for c in "{}…$<>|"):
+                continue
+            if any(re.match(r"[A-Z]{3,}[A-Z_]*([._]|$)", part) for part in path.split("/")):
+                continue  # a placeholder: shaders/NAME.STAGE.glsl, tests/fuzz/regressions/TARGET
+            path = re.sub(r":\d+$", "", path)  # file:line
+            if not exists(path):  # `x.*` is a file's header and source
+                problems.append(f"{rel}:{number}: `{span}` does not exist")
+        for link in re.findall(r"\]\(([^)\s]+)\)", line):
+            target = link.split("#")[0]
+            if not target or re.match(r"[a-z]+:", target):
+                continue
+            if not os.path.exists(os.path.normpath(os.path.join(root, here, target))):
+                problems.append(f"{rel}:{number}: link {link} does not resolve")
+
+
+def main():
+    root, executable = sys.argv[1], sys.argv[2]
+    flags = command_flags(executable)
+    all_flags = set().union(*flags.values()) | {"--version"}
+    files = ["README.md", "CONTRIBUTING.md"] + sorted(os.path.relpath(p, root) for p in glob.glob(os.path.join(root, "docs/*.md")))
+    problems = []
+    for rel in files:
+        with open(os.path.join(root, rel), encoding="utf-8") as f:
+            text = f.read()
+        check_commands(rel, text, flags, problems)
+        check_flags(rel, text, all_flags, problems)
+        check_paths(root, rel, text, problems)
+    for problem in problems:
+        print(problem)
+    print(f"{len(files)} files checked, {len(problems)} problems")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
