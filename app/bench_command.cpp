@@ -1,12 +1,16 @@
 // `candela bench`: frame time and per-pass GPU time of a scene, each also as a ratio to the
 // calibration pass (passes/calibration_pass.h) run in the same process, because absolute times
 // on a shared CPU vary by up to 2× between runs. Frames and calibration runs are interleaved so
-// that drift affects both alike.
+// that drift affects both alike. Then each pass's wall time submitted alone (serialized), which
+// on CPU devices is the only per-pass cost to trust: their timestamps miss deferred work, and the
+// output says so (graph::kUnreliableGpuTimes).
 
 #include "commands.h"
 #include "frame_measurement.h"
 
+#include "graph/graph_export.h"
 #include "vk/pipeline_cache_file.h"
+#include "vk/timestamps.h"
 
 #include "core/errors.h"
 #include "core/log.h"
@@ -50,11 +54,15 @@ DebugViewSwitch switchDebugView(Renderer& renderer, const RenderSettings& settin
         }
     RenderSettings switched = settings;
     switched.debugView = out.to;
+    // The measured frames have checked the --disable-pass names; a debug view need not declare
+    // them all (it draws no skybox).
+    renderer.setUnknownPassIsError(false);
     for (double* ms : {&out.firstMs, &out.nextMs}) {
         const auto start = std::chrono::steady_clock::now();
         renderer.renderFrame(switched);
         *ms = msSince(start);
     }
+    renderer.setUnknownPassIsError(true);
     return out;
 }
 
@@ -73,10 +81,10 @@ struct PathMeasurement {
 };
 
 // Frames run with serialized passes after the measured ones, for the per-pass wall times.
-constexpr uint32_t kSerialFrames = 3;
+constexpr uint32_t kSerialFrames = 5;
 
 // Per pass: the median GPU time (timestamps) and the median wall time of the pass run alone
-// (serialized), each also as a ratio to the calibration's.
+// (serialized) with its quartiles, each also as a ratio to the calibration's.
 nlohmann::ordered_json passesJson(const FrameMeasurement& m) {
     const double calibration = median(m.calibrationMs), calibrationGpu = median(m.calibrationGpuMs);
     nlohmann::ordered_json passes = nlohmann::ordered_json::array();
@@ -84,22 +92,25 @@ nlohmann::ordered_json passesJson(const FrameMeasurement& m) {
         const auto times = m.passGpuMs.find(name);
         const double gpu = times == m.passGpuMs.end() ? -1.0 : median(times->second);
         const auto serialTimes = m.passSerialMs.find(name);
-        const double serial = serialTimes == m.passSerialMs.end() ? -1.0 : median(serialTimes->second);
+        const Spread serial = serialTimes == m.passSerialMs.end() ? Spread{} : spreadOf(serialTimes->second);
         passes.push_back({{"name", name},
                           {"gpuMedianMs", gpu},
                           {"ratioToCalibrationGpu", gpu >= 0.0 && calibrationGpu > 0.0 ? gpu / calibrationGpu : -1.0},
-                          {"serialMedianMs", serial},
-                          {"serialRatio", serial >= 0.0 ? serial / calibration : -1.0}});
+                          {"serialMedianMs", serial.median},
+                          {"serialP25Ms", serial.low},
+                          {"serialP75Ms", serial.high},
+                          {"serialRatio", serial.median >= 0.0 ? serial.median / calibration : -1.0}});
     }
     return passes;
 }
 
-void printPasses(const nlohmann::ordered_json& passes, const char* indent) {
+// `mark`: "*" after GPU times that are unreliable (the note is printed once, by the caller).
+void printPasses(const nlohmann::ordered_json& passes, const char* indent, const char* mark) {
     for (const auto& p : passes)
-        std::printf("%spass %-20s GPU median %6.2f ms (%.2fx calibration GPU); alone %6.2f ms (%.2fx calibration)\n", indent,
-                    p["name"].get<std::string>().c_str(), p["gpuMedianMs"].get<double>(),
+        std::printf("%spass %-20s GPU median %6.2f ms%s (%.2fx calibration GPU); alone %6.2f ms (interquartile %.2f–%.2f; %.2fx calibration)\n",
+                    indent, p["name"].get<std::string>().c_str(), p["gpuMedianMs"].get<double>(), mark,
                     p["ratioToCalibrationGpu"].get<double>(), p["serialMedianMs"].get<double>(),
-                    p["serialRatio"].get<double>());
+                    p["serialP25Ms"].get<double>(), p["serialP75Ms"].get<double>(), p["serialRatio"].get<double>());
 }
 
 }  // namespace
@@ -152,14 +163,24 @@ int runBench(const RenderOptions& options) {
                        {"encodedBytes", textures.encodedBytes},
                        {"decodedBytes", textures.decodedBytes},
                        {"deviceBytes", renderer.sceneTextureBytes()}};
-    out["calibration"] = {{"medianMs", calibration}, {"minMs", minimum(calibrationMs)}, {"gpuMedianMs", calibrationGpu}};
+    const Spread calibrationSpread = spreadOf(calibrationMs), frameSpread = spreadOf(frameMs);
+    out["calibration"] = {{"medianMs", calibration},
+                          {"minMs", minimum(calibrationMs)},
+                          {"p25Ms", calibrationSpread.low},
+                          {"p75Ms", calibrationSpread.high},
+                          {"gpuMedianMs", calibrationGpu}};
     out["frame"] = {{"medianMs", median(frameMs)},
                     {"cpuMedianMs", median(m.cpuMs)},
                     {"minMs", minimum(frameMs)},
+                    {"p25Ms", frameSpread.low},
+                    {"p75Ms", frameSpread.high},
                     {"medianRatio", median(frameMs) / calibration},
                     {"minRatio", minimum(frameMs) / minimum(calibrationMs)}};
     const nlohmann::ordered_json passes = passesJson(m);
     out["passes"] = passes;
+    const bool gpuUnreliable = !vk::timestampsMeasurePasses(context.properties().deviceType);
+    if (gpuUnreliable) out["gpuMsUnreliable"] = graph::kUnreliableGpuTimes;
+    const char* mark = gpuUnreliable ? "*" : "";
     out["shadingPath"] = shadingPathLine(m.explain);
     nlohmann::ordered_json pathsOut = nlohmann::ordered_json::array();
     for (const PathMeasurement& p : paths) {
@@ -243,11 +264,12 @@ int runBench(const RenderOptions& options) {
                     drawStats.submittedDraws, drawStats.sceneDraws, drawStats.culledDraws, drawStats.coarserDraws,
                     (unsigned long long)drawStats.submittedTriangles, (unsigned long long)drawStats.sceneTriangles,
                     drawStats.stateChanges(), drawStats.pipelineBinds, drawStats.descriptorBinds);
-        std::printf("  calibration: median %.2f ms, min %.2f ms (GPU %.2f ms)\n", calibration, minimum(calibrationMs),
-                    calibrationGpu);
-        std::printf("  frame:       median %.2f ms (%.2fx calibration), min %.2f ms (%.2fx); CPU building and recording %.2f ms\n",
-                    median(frameMs), median(frameMs) / calibration, minimum(frameMs), minimum(frameMs) / minimum(calibrationMs),
-                    median(m.cpuMs));
+        std::printf("  calibration: median %.2f ms (interquartile %.2f–%.2f), min %.2f ms (GPU %.2f ms)\n", calibration,
+                    calibrationSpread.low, calibrationSpread.high, minimum(calibrationMs), calibrationGpu);
+        std::printf("  frame:       median %.2f ms (interquartile %.2f–%.2f; %.2fx calibration), min %.2f ms (%.2fx); CPU "
+                    "building and recording %.2f ms\n",
+                    median(frameMs), frameSpread.low, frameSpread.high, median(frameMs) / calibration, minimum(frameMs),
+                    minimum(frameMs) / minimum(calibrationMs), median(m.cpuMs));
         std::printf("  first frame: %.1f ms (%.1fx calibration) after a start-up of %.1f ms; pipelines: --precompile %s, "
                     "cache %s\n",
                     m.firstFrameMs, m.firstFrameMs / calibration, startupMs, passes::precompileName(settings.precompile),
@@ -260,12 +282,13 @@ int runBench(const RenderOptions& options) {
                         pose.playing().size(), out["animation"]["evaluateMedianMs"].get<double>(),
                         out["animation"]["evaluateMaxMs"].get<double>());
         std::printf("  shading:     %s\n", out["shadingPath"].get<std::string>().c_str());
-        printPasses(passes, "  ");
+        if (gpuUnreliable) std::printf("  * %s\n", graph::kUnreliableGpuTimes);
+        printPasses(passes, "  ", mark);
         for (const auto& p : pathsOut) {
             std::printf("  path %-10s frame median %.2f ms (%.2fx calibration of its own run), min %.2fx: %s\n",
                         p["path"].get<std::string>().c_str(), p["medianMs"].get<double>(), p["medianRatio"].get<double>(),
                         p["minRatio"].get<double>(), p["took"].get<std::string>().substr(0, 60).c_str());
-            printPasses(p["passes"], "    ");
+            printPasses(p["passes"], "    ", mark);
         }
         if (inFlight) {
             const vk::FrameRingStats& ring = inFlight->ring;

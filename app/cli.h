@@ -132,7 +132,7 @@ struct IblReportOptions {
     CommonOptions common;
     EnvironmentChoice env;          // --env FILE|sky (never None)
     std::string out;                // --out DIR (created)
-    uint32_t repeats = 0;           // --repeats N: precompute runs per setting (median)
+    uint32_t repeats = 0;           // --repeats N: rounds of precompute runs over every setting (median, spread)
     bool quick = false;             // --quick: a reduced sweep (tests, smoke runs)
     uint32_t width = 0;             // --width, --height: end-to-end image size
     uint32_t height = 0;
@@ -171,6 +171,7 @@ struct QualityReportOptions {
     std::vector<float> lodErrors;     // --lod-errors PX,PX,...
     uint32_t frames = 0;              // --frames N: timed frames per setting
     uint32_t orbitFrames = 0;         // --orbit-frames N: frames of the 1°-per-frame orbit
+    uint32_t repeats = 0;             // --repeats N: rounds of timing over every setting
     uint32_t width = 0;               // --width, --height
     uint32_t height = 0;
     bool operator==(const QualityReportOptions&) const = default;

@@ -504,8 +504,17 @@ std::vector<Flag> makeFlagTable() {
         iblQualityFlag("--ibl-lut-samples", "BRDF LUT samples per texel", &ibl::IblQuality::lutSamples, "128"),
         // ---- the report commands and soak ----
         {.name = "--repeats",
-         .uses = {{{Kind::IblReport}, "N", "precompute runs per setting; the median is reported", "3"}},
-         .set = [](Command& c, Str flag, Str v) { c.iblReport.repeats = parseCount(flag, v); },
+         .uses = {{{Kind::IblReport}, "N",
+                   "rounds of precompute runs over every setting, a calibration run before each; the median time and "
+                   "its quartiles are reported, over the median calibration",
+                   "3"},
+                  {{Kind::QualityReport}, "N",
+                   "rounds of --frames timed frames over every setting; the median ratio and its quartiles are "
+                   "reported",
+                   "5"}},
+         .set = [](Command& c, Str flag, Str v) {
+             onOptions(c, [&](auto& o) { if constexpr (requires { o.repeats; }) o.repeats = parseCount(flag, v); });
+         },
          .example = "1"},
         {.name = "--quick",
          .uses = {{{Kind::IblReport}, "", "a reduced sweep (smoke tests)", ""}},

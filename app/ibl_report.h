@@ -31,9 +31,11 @@ struct VisibleError {
 struct Result {
     Setting setting;
     double wallMs = 0;        // median precompute submit+wait
+    double wallLowMs = 0, wallHighMs = 0;  // its quartiles over the rounds (statistics.h spreadOf)
     double gpuMs = 0;         // median sum of the precompute passes' GPU timestamps
     double setupMs = 0;       // median CPU time before submit (upload, hashing, sample tables)
-    double ratio = 0;         // median of precompute / an interleaved calibration run
+    double ratio = 0;         // wallMs / Context::calibrationMs
+    double ratioLow = 0, ratioHigh = 0;    // wallLowMs and wallHighMs over it (the spread)
     std::vector<ibl::LevelErrors> specular;
     ibl::ErrorStats irradiance;
     ibl::LutErrors lut;
@@ -68,7 +70,8 @@ struct Result {
 struct Context {
     std::string environment;  // source and size
     std::string device;
-    double calibrationMs = 0;  // 1280×720 calibration pass, median
+    double calibrationMs = 0;  // 1280×720 calibration pass, median of every run (one per precompute timed)
+    double calibrationLowMs = 0, calibrationHighMs = 0;  // their quartiles
     uint32_t repeats = 0;
     uint32_t width = 0, height = 0;  // end-to-end images
     uint32_t referenceSamples = 0;

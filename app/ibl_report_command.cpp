@@ -1,9 +1,9 @@
 // `candela ibl-report`: what each image-based-lighting quality setting costs and what error it
 // leaves. For every setting of a sweep (prefilter samples with and without filtered importance
 // sampling, cube size, irradiance as SH9 or cube, BRDF LUT size and samples) it measures the
-// precompute time (CPU wall around submit+wait, median of --repeats runs, also as a ratio to the
-// calibration pass) and compares the maps with the double-precision reference (reports/ibl_errors.h),
-// then renders the default scene and compares it with a ground-truth render that integrates the
+// precompute time (CPU wall around submit+wait, in --repeats rounds over every setting: the median
+// and its quartiles, over the median calibration pass of the run) and compares the maps
+// with the double-precision reference (reports/ibl_errors.h), then renders the default scene and compares it with a ground-truth render that integrates the
 // reflectance equation per pixel. Writes report.csv, report.md and log-log plots to --out.
 
 #include "commands.h"
@@ -124,18 +124,12 @@ int runIblReport(const IblReportOptions& options) {
     frame.ibl.multiscatter = false;  // the ground truth integrates the single-scattering BRDF
     frame.defaultLights = false;
 
-    auto calibrate = [&] {
-        std::vector<double> ms;
-        for (int i = 0; i < 3; ++i) ms.push_back(renderer.renderCalibration(1280, 720).submitWaitMs);
-        return median(ms);
-    };
-    const double calibration = calibrate();
-
     // Ground truth: the reflectance equation integrated per pixel against the environment itself
     // (its brightest texels summed, the rest sampled); its convergence is shown by the same render
     // at a quarter of the samples.
     const std::vector<Setting> settings = sweep(options.quick);
-    Progress progress("ibl-report", settings.size() + 1, options.common.quiet);
+    // Steps: the ground truth, each setting's errors, each setting in each timing round, the files.
+    Progress progress("ibl-report", 2 + settings.size() * (1 + options.repeats), options.common.quiet);
     progress.step(0, "ground truth (" + std::to_string(options.referenceSamples) + " samples per pixel)");
     renderer.setReferenceEnvironment(environment);
     renderer.precomputeIbl(environment, ibl::IblQuality{});
@@ -172,26 +166,12 @@ int runIblReport(const IblReportOptions& options) {
     frame.iblQuality = convergedQuality;
     const CapturedFrame converged = renderer.capture(frame);
 
+    // Errors first, one precompute per setting (which also builds its pipelines before any is timed).
     std::vector<Result> results;
     for (const Setting& setting : settings) {
-        progress.step(results.size() + 1, setting.group + " " + setting.label);
+        progress.step(results.size() + 1, setting.group + " " + setting.label + ": errors");
         Result r{.setting = setting};
-        std::vector<double> wall, gpu, setup, ratio;
-        for (uint32_t i = 0; i < options.repeats; ++i) {
-            // Interleaved with a calibration run, so each repeat's time is also a ratio to work
-            // done under the same load.
-            const double calibrationMs = renderer.renderCalibration(1280, 720).submitWaitMs;
-            const auto start = std::chrono::steady_clock::now();
-            const FrameTiming t = renderer.precomputeIbl(environment, setting.quality);
-            const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-            wall.push_back(t.submitWaitMs);
-            ratio.push_back(t.submitWaitMs / calibrationMs);
-            setup.push_back(total - t.submitWaitMs);
-            double sum = 0;
-            for (double ms : t.timings.gpuMs) sum += std::max(ms, 0.0);
-            gpu.push_back(sum);
-        }
-        r.wallMs = median(wall), r.gpuMs = median(gpu), r.setupMs = median(setup), r.ratio = median(ratio);
+        renderer.precomputeIbl(environment, setting.quality);
         const std::vector<ibl::CachedImage> maps = renderer.iblMaps().readBack();
         r.specular = ibl::specularErrors(*findImage(maps, "specular"), environment, reference, 128, cache);
         r.irradiance = ibl::irradianceErrors(*findImage(maps, "irradiance"), reference, 256, cache);
@@ -206,16 +186,54 @@ int runIblReport(const IblReportOptions& options) {
             report::writePreview(out / "default.png", image);
             report::writeErrorMap(out / "default_error.png", image, truth.rgba32f);
         }
-        progress.clear();
-        std::printf("%-24s %-10s precompute %8.1f ms = %5.2fx calibration (setup %6.1f ms); specular RMSE %.2e mean %.2e; "
-                    "irradiance RMSE %.2e; LUT max %.1e; image RMSE %.2e mean %.2e; FLIP p99.9 %.3f max %.3f, against converged maps %.3f %.3f\n",
-                    setting.group.c_str(), setting.label.c_str(), r.wallMs, r.ratio, r.setupMs, r.specularRmse(),
-                    r.specularMeanRelative(), r.irradiance.rmse, std::max(r.lut.maxA, r.lut.maxB), r.image.rmse, r.image.meanRelative,
-                    r.visible.flipP999, r.visible.flipMax, r.visibleMaps.flipP999, r.visibleMaps.flipMax);
-        std::fflush(stdout);
         results.push_back(std::move(r));
     }
-    progress.step(settings.size() + 1, "writing the report");
+    // Times: rounds over every setting, alternately forwards and backwards, so that a drift of
+    // the machine's speed reaches every setting alike, with a calibration run before each
+    // precompute. A single calibration run right after a precompute varies far more than the
+    // precompute does (18.6–41.8 ms against ±2% in one run), so a run's ratio to its neighbour is
+    // noise: the ratio is the setting's median over the median of every calibration run.
+    struct Times {
+        std::vector<double> wall, gpu, setup;
+    };
+    std::vector<Times> times(settings.size());
+    std::vector<double> calibrations;
+    for (uint32_t round = 0; round < options.repeats; ++round)
+        for (size_t k = 0; k < settings.size(); ++k) {
+            const size_t i = round % 2 == 0 ? k : settings.size() - 1 - k;
+            progress.step(1 + settings.size() * (1 + round) + k, settings[i].group + " " + settings[i].label + ": round " +
+                                                   std::to_string(round + 1) + " of " + std::to_string(options.repeats));
+            const double calibrationMs = renderer.renderCalibration(1280, 720).submitWaitMs;
+            calibrations.push_back(calibrationMs);
+            const auto start = std::chrono::steady_clock::now();
+            const FrameTiming t = renderer.precomputeIbl(environment, settings[i].quality);
+            const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            Times& m = times[i];
+            m.wall.push_back(t.submitWaitMs);
+            m.setup.push_back(total - t.submitWaitMs);
+            double sum = 0;
+            for (double ms : t.timings.gpuMs) sum += std::max(ms, 0.0);
+            m.gpu.push_back(sum);
+        }
+    progress.clear();
+    const Spread calibration = spreadOf(calibrations);
+    for (size_t i = 0; i < results.size(); ++i) {
+        Result& r = results[i];
+        const Spread wall = spreadOf(times[i].wall);
+        r.wallMs = wall.median, r.wallLowMs = wall.low, r.wallHighMs = wall.high;
+        r.gpuMs = median(times[i].gpu), r.setupMs = median(times[i].setup);
+        r.ratio = wall.median / calibration.median;
+        r.ratioLow = wall.low / calibration.median, r.ratioHigh = wall.high / calibration.median;
+        std::printf("%-24s %-10s precompute %8.1f ms (%.1f–%.1f) = %5.2fx calibration (%.2f–%.2f; setup %6.1f ms); specular "
+                    "RMSE %.2e mean %.2e; irradiance RMSE %.2e; LUT max %.1e; image RMSE %.2e mean %.2e; FLIP p99.9 %.3f max "
+                    "%.3f, against converged maps %.3f %.3f\n",
+                    r.setting.group.c_str(), r.setting.label.c_str(), r.wallMs, r.wallLowMs, r.wallHighMs, r.ratio,
+                    r.ratioLow, r.ratioHigh, r.setupMs, r.specularRmse(), r.specularMeanRelative(), r.irradiance.rmse,
+                    std::max(r.lut.maxA, r.lut.maxB), r.image.rmse, r.image.meanRelative, r.visible.flipP999,
+                    r.visible.flipMax, r.visibleMaps.flipP999, r.visibleMaps.flipMax);
+    }
+    std::fflush(stdout);
+    progress.step(1 + settings.size() * (1 + options.repeats), "writing the report");
     progress.finish();
 
     report::writeCsv(out, results);
@@ -223,7 +241,9 @@ int runIblReport(const IblReportOptions& options) {
                           {.environment = environment.source + " (" + std::to_string(environment.width) + "x" +
                                           std::to_string(environment.height) + ")",
                            .device = context.report().name,
-                           .calibrationMs = calibration,
+                           .calibrationMs = calibration.median,
+                           .calibrationLowMs = calibration.low,
+                           .calibrationHighMs = calibration.high,
                            .repeats = options.repeats,
                            .width = options.width,
                            .height = options.height,

@@ -121,7 +121,7 @@ void writeCsv(const std::filesystem::path& out, const std::vector<Result>& resul
     // One row per setting, errors per roughness level at the end.
     std::ofstream csv(out / "report.csv");
     csv << "group,setting,cube,levels,prefilter_samples,filtered,irradiance,sh_size,irradiance_samples,lut_size,"
-           "lut_samples,precompute_ms,precompute_gpu_ms,setup_ms,ratio_to_calibration,specular_rmse,specular_mean_relative,"
+           "lut_samples,precompute_ms,precompute_gpu_ms,setup_ms,ratio_to_calibration,ratio_min,ratio_max,specular_rmse,specular_mean_relative,"
            "specular_max,irradiance_rmse,irradiance_mean_relative,irradiance_max,lut_max_a,lut_max_b,lut_rms_a,lut_rms_b,image_rmse,image_mean_relative,image_max,"
            "image_relative_p99,image_flip_mean,image_flip_p99,image_flip_p999,image_flip_max,maps_flip_mean,maps_flip_p99,"
            "maps_flip_p999,maps_flip_max,bright_texels";
@@ -135,7 +135,7 @@ void writeCsv(const std::filesystem::path& out, const std::vector<Result>& resul
             << q.prefilterSamples << ',' << (q.filteredSampling ? 1 : 0) << ',' << ibl::irradianceModeName(q.irradiance)
             << ',' << q.shSourceSize << ',' << q.irradianceSamples << ',' << q.lutSize << ',' << q.lutSamples << ','
             << fixed(r.wallMs, 2) << ',' << fixed(r.gpuMs, 2) << ',' << fixed(r.setupMs, 2) << ','
-            << fixed(r.ratio, 3) << ',' << sci(r.specularRmse()) << ',' << sci(r.specularMeanRelative()) << ','
+            << fixed(r.ratio, 3) << ',' << fixed(r.ratioLow, 3) << ',' << fixed(r.ratioHigh, 3) << ',' << sci(r.specularRmse()) << ',' << sci(r.specularMeanRelative()) << ','
             << sci(r.specularMax()) << ',' << sci(r.irradiance.rmse) << ',' << sci(r.irradiance.meanRelative) << ','
             << sci(r.irradiance.maxRelative) << ',' << sci(r.lut.maxA) << ','
             << sci(r.lut.maxB) << ',' << sci(r.lut.rmsA) << ',' << sci(r.lut.rmsB) << ',' << sci(r.image.rmse) << ','
@@ -154,8 +154,13 @@ void writeCsv(const std::filesystem::path& out, const std::vector<Result>& resul
 void writeMarkdown(const std::filesystem::path& out, const Context& c, const std::vector<Result>& results) {
     std::ostringstream md;
     md << "# IBL quality report\n\nEnvironment: " << c.environment << ". Device: " << c.device << ". Calibration pass (1280x720): "
-       << fixed(c.calibrationMs, 1) << " ms. Precompute times are the median of " << c.repeats
-       << " runs of submit+wait, each next to a calibration run (× calibration: median of the ratios). Errors "
+       << fixed(c.calibrationMs, 1) << " ms median (interquartile " << fixed(c.calibrationLowMs, 1) << "–" << fixed(c.calibrationHighMs, 1)
+       << " ms over the run, one run before each timed precompute). Precompute times: submit+wait in " << c.repeats
+       << " rounds over every setting (alternately forwards and backwards); ms and × calibration are the median "
+          "over the median calibration run, the quartiles of the rounds in brackets (nearest rank: for 3 rounds the "
+          "lowest and highest). A setting is off the plots' "
+          "Pareto front only when another is better by more than these spreads on one axis and not worse by more on "
+          "the other. Errors "
           "are relative luminance errors against the double-precision reference (reports/ibl_errors.h): RMSE "
           "(dominated by the brightest values), mean relative and max relative error (each value against its "
           "reference plus 1% of the mean). Specular: averaged over the roughness > 0 levels, 128 texels each "
@@ -179,7 +184,8 @@ void writeMarkdown(const std::filesystem::path& out, const Context& c, const std
     const ibl::IblQuality defaults;
     for (const Result& r : results)
         md << "| " << r.setting.group << " | " << r.setting.label << (r.setting.quality == defaults ? " (default)" : "")
-           << " | " << fixed(r.wallMs, 1) << " | " << fixed(r.ratio, 2) << " | " << sci(r.specularRmse()) << " | "
+           << " | " << fixed(r.wallMs, 1) << " | " << fixed(r.ratio, 2) << " (" << fixed(r.ratioLow, 2) << "–"
+           << fixed(r.ratioHigh, 2) << ") | " << sci(r.specularRmse()) << " | "
            << sci(r.specularMeanRelative()) << " | " << sci(r.specularMax()) << " | " << sci(r.irradiance.rmse) << " | "
            << sci(r.irradiance.meanRelative) << " | "
            << sci(std::max(r.lut.maxA, r.lut.maxB)) << " | " << sci(r.image.rmse) << " | " << sci(r.image.meanRelative) << " | " << sci(r.visible.relativeP99)
@@ -200,7 +206,7 @@ void writePlots(const std::filesystem::path& out, const std::vector<Result>& res
     auto plot = [&](const char* file, const char* title, const char* yLabel, auto&& error,
                     const std::vector<std::string>& groups) {
         io::PlotSpec spec{.title = title,
-                          .xLabel = "precompute time / calibration pass (median of interleaved runs)",
+                          .xLabel = "precompute time / median calibration pass (median of the rounds, bars: quartiles)",
                           .yLabel = yLabel};
         spec.series = groups;
         spec.series.push_back("other groups");
@@ -209,8 +215,12 @@ void writePlots(const std::filesystem::path& out, const std::vector<Result>& res
             const bool isDefault = r.setting.quality == defaults;
             if (g == groups.end() && !isDefault) continue;
             if (isDefault) spec.highlight = spec.points.size();
-            spec.points.push_back({r.ratio, error(r), isDefault ? "default" : r.setting.label,
-                                   uint32_t(g - groups.begin())});
+            spec.points.push_back({.x = r.ratio,
+                                   .y = error(r),
+                                   .label = isDefault ? "default" : r.setting.label,
+                                   .series = uint32_t(g - groups.begin()),
+                                   .xLow = r.ratioLow,
+                                   .xHigh = r.ratioHigh});
         }
         io::writeLogLogPlot(out / file, spec);
     };

@@ -1,12 +1,14 @@
 // `candela quality-report`: image error against run time for the anti-aliasing and geometry
 // settings — MSAA × specular anti-aliasing × level-of-detail error, on each shading path the device
 // has (docs/shading-paths.md) — on a set of scenes. Per
-// setting: the frame time as a ratio to the calibration pass of the same run, the error against a
+// setting: the frame time as a ratio to the calibration pass of the same run (the median of
+// --repeats rounds over every setting, with the quartiles of the rounds), the error against a
 // reference (full detail, no specular AA, 4× the width and height, i.e. 16 samples per pixel,
 // box-downsampled in linear radiance; both display-encoded as the tonemap pass does: mean and 99th
 // percentile in levels of 255) over a slow orbit of the camera (1° per frame), and the orbit's
 // mean frame-to-frame difference (motion plus shimmer; the reference's own is the motion alone)
-// and its temporal error (the flicker the reference does not have).
+// and its temporal error (the flicker the reference does not have). Settings that differ only in
+// their LOD error and draw the same work and the same images are one point (sameWork).
 // Writes report.csv, report.md and, per scene, SCENE_error.png and SCENE_temporal.png (log-log,
 // Pareto front, the device's defaults ringed). See docs/anti-aliasing.md.
 
@@ -42,15 +44,19 @@ struct Row {
     std::string scene;
     uint32_t msaa = 1;
     bool specularAa = false;
-    float lodError = 0.0f;
+    std::vector<float> lodErrors;  // one, or those that drew the same work and images (sameWork)
     passes::ShadingPath path = passes::ShadingPath::Forward;
-    double frameRatio = 0.0, frameMs = 0.0;
+    Spread frameRatio;             // over the rounds: median and quartiles
+    double frameMs = 0.0;          // median over the rounds of each round's median frame
+    std::vector<double> roundRatios, roundMs;
     io::DisplayError error;
     double temporal = 0.0;       // mean frame-to-frame difference over the orbit
     double temporalError = 0.0;  // its difference from the reference's frame-to-frame changes (flicker)
     uint64_t triangles = 0;
-    bool pareto = false;  // on the (frame ratio, mean error) front of its scene
+    uint32_t draws = 0;
+    bool pareto = false;  // on the (frame ratio, mean error) front of its scene, spreads considered
     bool isDefault = false;
+    RenderSettings settings;  // of the first setting, timed for all (valid while its scene is measured)
 };
 
 struct SceneResult {
@@ -85,29 +91,60 @@ std::vector<std::vector<uint8_t>> orbitFrames(Renderer& renderer, RenderSettings
     return out;
 }
 
+// A row as a point of error against frame time for the Pareto front and the plots: the frame
+// ratio's spread over the rounds, and the error compared at the table's precision (3 decimals:
+// values within half its last digit count as equal).
+io::PlotPoint paretoPoint(const Row& r, double error) {
+    constexpr double kHalfDigit = 0.0005;
+    return {.x = r.frameRatio.median, .y = error, .xLow = r.frameRatio.low, .xHigh = r.frameRatio.high,
+            .yLow = std::max(error - kHalfDigit, 0.0), .yHigh = error + kHalfDigit};
+}
+
+// The row's LOD errors, "0/0.5/2" for merged settings.
+std::string lodList(const Row& r) {
+    std::string out;
+    for (float lod : r.lodErrors) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", double(lod));
+        out += (out.empty() ? "" : "/") + std::string(text);
+    }
+    return out;
+}
+
 std::string settingName(const Row& r) {
-    char text[128];
-    std::snprintf(text, sizeof text, "MSAA %u, specular AA %s, LOD %g px, %s path", r.msaa, r.specularAa ? "on" : "off",
-                  double(r.lodError), passes::shadingPathName(r.path));
+    char text[160];
+    std::snprintf(text, sizeof text, "MSAA %u, specular AA %s, LOD %s px, %s path", r.msaa, r.specularAa ? "on" : "off",
+                  lodList(r).c_str(), passes::shadingPathName(r.path));
     return text;
+}
+
+// Whether a setting that differs from `row` only in its LOD error did the same work and drew the
+// same: the same submitted draws and triangles in the timed view, and byte-identical display
+// frames over the whole orbit. Such settings are one point of the report.
+bool sameWork(const Row& row, const std::vector<std::vector<uint8_t>>& rowFrames, const passes::DrawStats& stats,
+              const std::vector<std::vector<uint8_t>>& frames) {
+    return row.draws == stats.submittedDraws && row.triangles == stats.submittedTriangles && rowFrames == frames;
 }
 
 void writeReport(const std::filesystem::path& out, const std::vector<SceneResult>& results, const QualityReportOptions& o,
                  const std::string& device, const vk::MsaaChoice& defaultMsaa, const std::vector<std::string>& notes) {
     std::ofstream csv(out / "report.csv");
-    csv << "scene,msaa,specular_aa,lod_error_px,shading_path,frame_ratio,frame_ms,mean_error,p99_error,temporal,temporal_error,"
-           "reference_temporal,submitted_triangles,pareto,default\n";
+    csv << "scene,msaa,specular_aa,lod_error_px,shading_path,frame_ratio,frame_ratio_min,frame_ratio_max,frame_ms,mean_error,"
+           "p99_error,temporal,temporal_error,reference_temporal,submitted_triangles,pareto,default\n";
     for (const SceneResult& s : results)
         for (const Row& r : s.rows)
-            csv << r.scene << "," << r.msaa << "," << (r.specularAa ? "on" : "off") << "," << r.lodError << ","
-                << passes::shadingPathName(r.path) << "," << r.frameRatio
-                << "," << r.frameMs << "," << r.error.mean << "," << r.error.p99 << "," << r.temporal << "," << r.temporalError << ","
+            csv << r.scene << "," << r.msaa << "," << (r.specularAa ? "on" : "off") << "," << lodList(r) << ","
+                << passes::shadingPathName(r.path) << "," << r.frameRatio.median << "," << r.frameRatio.low << ","
+                << r.frameRatio.high << "," << r.frameMs << "," << r.error.mean << "," << r.error.p99 << "," << r.temporal << "," << r.temporalError << ","
                 << s.referenceTemporal << "," << r.triangles << "," << r.pareto << "," << r.isDefault << "\n";
 
     std::ofstream md(out / "report.md");
     md << "# Quality report: anti-aliasing and levels of detail\n\n"
-       << o.width << "×" << o.height << " on " << device << ". Frame time: median of " << o.frames
-       << " frames as a ratio to the calibration pass of the same run. Error: against a reference with full detail and "
+       << o.width << "×" << o.height << " on " << device << ". Frame time: in each of " << o.repeats
+       << " rounds over every setting (alternately forwards and backwards), the median of " << o.frames
+       << " frames over the median of the calibration passes run between them; the median of the rounds, their "
+          "quartiles in brackets (nearest rank: for 3 rounds the lowest and highest, for 5 the second and fourth). Settings that differ only in their LOD error and submitted the same draws and "
+          "triangles and drew byte-identical frames over the orbit are one row (LOD errors joined by /). Error: against a reference with full detail and "
           "no specular AA at "
        << kReferenceScale << "× the width and height (" << kReferenceScale * kReferenceScale
        << " samples per pixel), box-downsampled in linear radiance; both tonemapped (PBR Neutral) and sRGB-encoded to 8 "
@@ -117,7 +154,9 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
           "over that orbit (motion plus shimmer; the reference's own is the motion), and its error: the mean absolute "
           "difference between the setting's frame-to-frame changes and the reference's (the flicker the reference does "
           "not have). ★: on the Pareto front of frame "
-          "time against mean error. Default on this device: MSAA "
+          "time against mean error, where a row is dominated only by one that is better beyond the spread on one axis "
+          "(frame time: the brackets do not overlap; error: lower at the table's 3 decimals) and not worse beyond it "
+          "on the other. Default on this device: MSAA "
        << defaultMsaa.samples << ", specular AA " << (passes::ShadingOptions{}.specularAntiAliasing ? "on" : "off") << ", LOD "
        << passes::DrawSelection::kDefaultLodErrorPixels << " px.\n\n";
     for (const std::string& note : notes) md << "- " << note << "\n";
@@ -130,9 +169,10 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
            << "| MSAA | specular AA | LOD error (px) | shading path | frame / calibration | mean error | p99 error | temporal | temporal error | triangles | |\n"
            << "|---|---|---|---|---|---|---|---|---|---|---|\n";
         for (const Row& r : s.rows) {
-            std::snprintf(line, sizeof line, "| %u | %s | %g | %s | %.2f× | %.3f | %.0f | %.3f | %.3f | %llu | %s%s |\n", r.msaa,
-                          r.specularAa ? "on" : "off", double(r.lodError), passes::shadingPathName(r.path), r.frameRatio, r.error.mean, r.error.p99,
-                          r.temporal, r.temporalError, (unsigned long long)r.triangles, r.pareto ? "★" : "", r.isDefault ? " default" : "");
+            std::snprintf(line, sizeof line, "| %u | %s | %s | %s | %.2f× (%.2f–%.2f) | %.3f | %.0f | %.3f | %.3f | %llu | %s%s |\n",
+                          r.msaa, r.specularAa ? "on" : "off", lodList(r).c_str(), passes::shadingPathName(r.path),
+                          r.frameRatio.median, r.frameRatio.low, r.frameRatio.high, r.error.mean, r.error.p99, r.temporal,
+                          r.temporalError, (unsigned long long)r.triangles, r.pareto ? "★" : "", r.isDefault ? " default" : "");
             md << line;
         }
         md << "\n![" << s.name << ": error against frame time](" << s.name << "_error.png)\n![" << s.name
@@ -152,10 +192,11 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
                                       passes::shadingPathName(path));
             for (const Row& r : s.rows) {
                 const auto it = std::find(series.begin(), series.end(), std::tuple{r.msaa, r.specularAa, r.path});
-                char label[32];
-                std::snprintf(label, sizeof label, "%g px", double(r.lodError));
                 if (r.isDefault) plot.highlight = plot.points.size();
-                plot.points.push_back({r.frameRatio, temporal ? r.temporalError : r.error.mean, label, uint32_t(it - series.begin())});
+                io::PlotPoint point = paretoPoint(r, temporal ? r.temporalError : r.error.mean);
+                point.label = lodList(r) + " px";
+                point.series = uint32_t(it - series.begin());
+                plot.points.push_back(point);
             }
             io::writeLogLogPlot(out / (s.name + (temporal ? "_temporal.png" : "_error.png")), plot);
         }
@@ -204,8 +245,9 @@ int runQualityReport(const QualityReportOptions& options) {
     std::vector<passes::ShadingPath> paths = {passes::ShadingPath::Forward};
     if (context.choices().visibilityUnsupported.empty()) paths.push_back(passes::ShadingPath::Visibility);
     const size_t perScene = sampleCounts.size() * 2 * options.lodErrors.size() * paths.size();
-    // Steps: per scene its reference, then its settings.
-    Progress progress("quality-report", options.scenes.size() * (perScene + 1), options.common.quiet);
+    // Steps: per scene its reference, then each setting's orbit, then each setting in each timing
+    // round (a merged setting's steps are taken together).
+    Progress progress("quality-report", options.scenes.size() * (1 + perScene * (1 + options.repeats)), options.common.quiet);
     size_t done = 0;
 
     std::vector<SceneResult> results;
@@ -227,37 +269,75 @@ int runQualityReport(const QualityReportOptions& options) {
         result.referenceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - referenceStart).count();
         ++done;
         result.referenceTemporal = io::meanFrameToFrameDifference(reference);
+        // Errors first, the LOD errors of one (MSAA, specular AA, path) in a row so that a setting
+        // that repeats the previous ones' work joins their row (sameWork).
         for (uint32_t samples : sampleCounts)
             for (bool specularAa : {false, true})
-                for (float lodError : options.lodErrors)
                 for (passes::ShadingPath path : paths) {
-                    RenderSettings settings = base;
-                    settings.shadingPath = path;
-                    settings.msaa = samples;
-                    settings.shadingOptions.specularAntiAliasing = specularAa;
-                    settings.drawSelection.lodErrorPixels = lodError;
-                    settings.camera.orbit = glm::vec3(0.0f, 90.0f, 0.0f);
-                    const FrameMeasurement m = measureFrames(renderer, settings, options.frames);
-                    const std::vector<std::vector<uint8_t>> frames = orbitFrames(renderer, settings, options.orbitFrames, 1);
-                    Row row{.scene = result.name, .msaa = samples, .specularAa = specularAa, .lodError = lodError, .path = path,
-                            .frameRatio = median(m.frameMs) / median(m.calibrationMs), .frameMs = median(m.frameMs),
-                            .error = io::displayError(frames, reference), .temporal = io::meanFrameToFrameDifference(frames),
-                            .temporalError = io::meanTemporalError(frames, reference),
-                            .triangles = m.drawStats.submittedTriangles};
-                    row.isDefault = samples == defaultMsaa.samples && specularAa == passes::ShadingOptions{}.specularAntiAliasing &&
-                                    lodError == passes::DrawSelection::kDefaultLodErrorPixels &&
-                                    path == defaultShadingPath(context).first;
-                    result.rows.push_back(row);
-                    char detail[200];
-                    std::snprintf(detail, sizeof detail, "%s %s: %.2fx calibration, error %.3f (p99 %.0f), temporal error %.3f",
-                                  result.name.c_str(), settingName(row).c_str(), row.frameRatio, row.error.mean, row.error.p99,
-                                  row.temporalError);
-                    progress.step(++done, detail);
+                    std::vector<std::vector<std::vector<uint8_t>>> seriesFrames;  // per row of this series
+                    const size_t seriesStart = result.rows.size();
+                    for (float lodError : options.lodErrors) {
+                        RenderSettings settings = base;
+                        settings.shadingPath = path;
+                        settings.msaa = samples;
+                        settings.shadingOptions.specularAntiAliasing = specularAa;
+                        settings.drawSelection.lodErrorPixels = lodError;
+                        settings.camera.orbit = glm::vec3(0.0f, 90.0f, 0.0f);
+                        renderer.renderFrame(settings);  // the timed view: what it submits
+                        const passes::DrawStats stats = renderer.drawStats();
+                        std::vector<std::vector<uint8_t>> frames = orbitFrames(renderer, settings, options.orbitFrames, 1);
+                        const bool isDefault = samples == defaultMsaa.samples &&
+                                               specularAa == passes::ShadingOptions{}.specularAntiAliasing &&
+                                               lodError == passes::DrawSelection::kDefaultLodErrorPixels &&
+                                               path == defaultShadingPath(context).first;
+                        Row* same = nullptr;
+                        for (size_t k = 0; k < seriesFrames.size() && !same; ++k)
+                            if (sameWork(result.rows[seriesStart + k], seriesFrames[k], stats, frames)) same = &result.rows[seriesStart + k];
+                        if (same) {
+                            same->lodErrors.push_back(lodError);
+                            same->isDefault = same->isDefault || isDefault;
+                        } else {
+                            result.rows.push_back({.scene = result.name, .msaa = samples, .specularAa = specularAa,
+                                                   .lodErrors = {lodError}, .path = path,
+                                                   .error = io::displayError(frames, reference),
+                                                   .temporal = io::meanFrameToFrameDifference(frames),
+                                                   .temporalError = io::meanTemporalError(frames, reference),
+                                                   .triangles = stats.submittedTriangles, .draws = stats.submittedDraws,
+                                                   .isDefault = isDefault, .settings = settings});
+                            seriesFrames.push_back(std::move(frames));
+                        }
+                        const Row& row = same ? *same : result.rows.back();
+                        char detail[240];
+                        std::snprintf(detail, sizeof detail, "%s %s: error %.3f (p99 %.0f), temporal error %.3f%s", result.name.c_str(),
+                                      settingName(row).c_str(), row.error.mean, row.error.p99, row.temporalError,
+                                      same ? " (the same work and images: one point)" : "");
+                        progress.step(++done, detail);
+                    }
                 }
+        // Timing: rounds over every point, alternately forwards and backwards, so that a drift of
+        // the machine's speed reaches every setting alike; each round's ratio is the median frame
+        // over the median of the calibration passes interleaved with the frames.
+        for (uint32_t round = 0; round < options.repeats; ++round)
+            for (size_t k = 0; k < result.rows.size(); ++k) {
+                Row& row = result.rows[round % 2 == 0 ? k : result.rows.size() - 1 - k];
+                const FrameMeasurement m = measureFrames(renderer, row.settings, options.frames);
+                row.roundMs.push_back(median(m.frameMs));
+                row.roundRatios.push_back(median(m.frameMs) / median(m.calibrationMs));
+                done += row.lodErrors.size();
+                char detail[240];
+                std::snprintf(detail, sizeof detail, "%s %s: round %u of %u, %.2fx calibration", result.name.c_str(),
+                              settingName(row).c_str(), round + 1, options.repeats, row.roundRatios.back());
+                progress.step(done, detail);
+            }
         std::vector<io::PlotPoint> points;
-        for (const Row& r : result.rows) points.push_back({r.frameRatio, r.error.mean});
+        for (Row& r : result.rows) {
+            r.frameRatio = spreadOf(r.roundRatios);
+            r.frameMs = median(r.roundMs);
+            points.push_back(paretoPoint(r, r.error.mean));
+        }
         for (size_t i : io::paretoFront(points)) result.rows[i].pareto = true;
-        std::sort(result.rows.begin(), result.rows.end(), [](const Row& a, const Row& b) { return a.frameRatio < b.frameRatio; });
+        std::sort(result.rows.begin(), result.rows.end(),
+                  [](const Row& a, const Row& b) { return a.frameRatio.median < b.frameRatio.median; });
         results.push_back(std::move(result));
     }
     progress.finish();

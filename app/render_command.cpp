@@ -14,6 +14,7 @@
 #include "scene/material_variants.h"
 #include "vk/check.h"
 #include "vk/context.h"
+#include "vk/timestamps.h"
 
 #include <chrono>
 #include <cstdio>
@@ -79,6 +80,7 @@ struct Run {
     bool batch;     // several scenes: shorter lines, one precompute for all (sheen included)
     bool sequence;  // --frames N > 1
     bool anyFrame = false;
+    bool gpuNoteShown = false;  // graph::kUnreliableGpuTimes, said once after the first marked line
     CapturedFrame lastFrame;  // for --graph-dot/--graph-json of a single scene
 };
 
@@ -92,7 +94,7 @@ void writeImage(const Run& run, const std::string& out, const CapturedFrame& fra
 }
 
 // The line printed for each image written.
-void printWritten(const Run& run, const std::string& out, const CapturedFrame& frame, const scene::ScenePose& pose,
+void printWritten(Run& run, const std::string& out, const CapturedFrame& frame, const scene::ScenePose& pose,
                   const SceneReport& r) {
     std::printf("wrote %s (%ux%u", out.c_str(), frame.width, frame.height);
     if (run.sequence) std::printf(", t = %.4f s", pose.time());
@@ -101,10 +103,18 @@ void printWritten(const Run& run, const std::string& out, const CapturedFrame& f
     } else {
         std::printf("): submit+wait %.2f ms, readback %.2f ms", frame.submitWaitMs, frame.readbackMs);
         const graph::GraphDecl& decl = run.renderer.lastGraph().declaration();
+        const char* mark = frame.timings.gpuMsUnreliable ? "*" : "";
+        bool marked = false;
         for (uint32_t pass : run.renderer.lastGraph().compiled().order)
-            if (frame.timings.gpuMs.size() > pass && frame.timings.gpuMs[pass] >= 0.0)
-                std::printf("; %s %.2f ms GPU", decl.passes[pass].name.c_str(), frame.timings.gpuMs[pass]);
+            if (frame.timings.gpuMs.size() > pass && frame.timings.gpuMs[pass] >= 0.0) {
+                std::printf("; %s %.2f ms GPU%s", decl.passes[pass].name.c_str(), frame.timings.gpuMs[pass], mark);
+                marked = *mark != '\0';
+            }
         std::printf("\n");
+        if (marked && !run.gpuNoteShown) {
+            std::printf("* %s\n", graph::kUnreliableGpuTimes);
+            run.gpuNoteShown = true;
+        }
     }
     std::fflush(stdout);
 }
@@ -282,7 +292,8 @@ int runRender(const RenderOptions& options) {
                      .width = options.width,
                      .height = options.height,
                      .shard = options.shard,
-                     .scenesListed = listed.size()};
+                     .scenesListed = listed.size(),
+                     .gpuMsUnreliable = !vk::timestampsMeasurePasses(context.properties().deviceType)};
     report.startupMs = msSince(runStart);
     Progress progress("render", run.batch ? scenes.size() : options.frames, options.common.quiet || (run.batch ? false : !sequence));
     std::exception_ptr singleFailure;

@@ -1,5 +1,7 @@
 #include "render_report.h"
 
+#include "graph/graph_export.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -93,6 +95,7 @@ std::string reportJson(const RunReport& r) {
     out["peakHostBytes"] = r.peakHostBytes;
     out["peakDeviceBytes"] = r.peakDeviceBytes;
     out["peakDeviceMemoryBytes"] = r.peakDeviceMemoryBytes;
+    if (r.gpuMsUnreliable) out["gpuMsUnreliable"] = graph::kUnreliableGpuTimes;
     Json scenes = Json::array();
     for (const SceneReport& s : r.scenes) scenes.push_back(sceneJson(s));
     out["scenes"] = scenes;

@@ -67,6 +67,7 @@ struct RunReport {
     uint64_t peakHostBytes = 0;    // the largest SceneReport::hostBytes
     uint64_t peakDeviceBytes = 0;  // the largest SceneReport::deviceBytes
     uint64_t peakDeviceMemoryBytes = 0;  // the most device memory held then (the allocator's blocks)
+    bool gpuMsUnreliable = false;  // SceneReport::gpuMs miss deferred work (a CPU device: graph::GraphTimings)
     std::vector<SceneReport> scenes;
 
     size_t failed() const;

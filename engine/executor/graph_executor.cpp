@@ -259,6 +259,7 @@ ExecutionRecord executeGraph(const ExecuteInputs& in) {
 GraphTimings ExecutionRecord::timings(vk::TimestampPool& timestamps) const {
     GraphTimings out;
     out.gpuMs.assign(passCount, -1.0);
+    out.gpuMsUnreliable = !timestamps.measuresPasses();
     for (const auto& [pass, range] : queries) out.gpuMs[pass] = timestamps.elapsedMs(range.first, range.second);
     return out;
 }

@@ -133,6 +133,8 @@ std::string exportDot(const GraphDecl& decl, const CompiledGraph& compiled, cons
     checkMatches(decl, compiled);
     const std::vector<uint32_t> positions = orderPositions(decl, compiled);
     std::string dot = "digraph render_graph {\n  rankdir=LR;\n  node [fontname=\"Helvetica\"];\n";
+    if (timings && timings->gpuMsUnreliable)
+        dot += "  labelloc=b;\n  label=\"" + dotEscape(std::string("* ") + kUnreliableGpuTimes) + "\";\n";
 
     // Running passes first, in execution order; then the culled ones with their reasons.
     std::vector<uint32_t> passes = compiled.order;
@@ -145,7 +147,7 @@ std::string exportDot(const GraphDecl& decl, const CompiledGraph& compiled, cons
             label += "\\n#" + std::to_string(positions[p]);
             if (timed(timings, p)) {
                 char ms[32];
-                std::snprintf(ms, sizeof(ms), " %.3f ms", timings->gpuMs[p]);
+                std::snprintf(ms, sizeof(ms), " %.3f ms%s", timings->gpuMs[p], timings->gpuMsUnreliable ? "*" : "");
                 label += ms;
             }
         } else {
@@ -203,6 +205,7 @@ std::string exportJson(const GraphDecl& decl, const CompiledGraph& compiled, con
         passes.push_back(std::move(entry));
     }
     root["passes"] = std::move(passes);
+    if (timings && timings->gpuMsUnreliable) root["gpuMsUnreliable"] = kUnreliableGpuTimes;
 
     Json order = Json::array();
     for (uint32_t p : compiled.order) order.push_back(decl.passes[p].name);

@@ -1,7 +1,8 @@
 #pragma once
 // Export of a compiled graph for people and tools: Graphviz dot and JSON. Both list the passes in
 // execution order, the resources with their lifetimes and aliasing (heap, offset, size), the
-// barriers, the culled passes with their reasons, and per-pass GPU times when measured.
+// barriers, the culled passes with their reasons, and per-pass GPU times when measured (with
+// kUnreliableGpuTimes when the device's timestamps miss deferred work).
 
 #include "graph/compiled_graph.h"
 
@@ -20,7 +21,17 @@ struct GraphTimings {
     // when deferred work runs (llvmpipe rasterizes at the end of a render pass), only these show
     // where the time goes.
     std::vector<double> serialMs;
+    // Whether gpuMs miss work the device runs after a pass's closing timestamp (CPU devices:
+    // vk::timestampsMeasurePasses is false). Every output that prints gpuMs then says so, with
+    // kUnreliableGpuTimes.
+    bool gpuMsUnreliable = false;
 };
+
+// Said wherever per-pass GPU times are shown while GraphTimings::gpuMsUnreliable.
+inline constexpr const char* kUnreliableGpuTimes =
+    "per-pass GPU times are unreliable on this CPU device: its timestamps mark when a pass's commands are "
+    "issued, while the work runs later (llvmpipe rasterizes a render pass's draws when it ends), so a pass's "
+    "cost shows in another pass or in none; `candela bench` measures each pass submitted alone";
 
 std::string exportDot(const GraphDecl& decl, const CompiledGraph& compiled,
                       const GraphTimings* timings = nullptr);

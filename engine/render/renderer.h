@@ -90,6 +90,9 @@ public:
     // Waits for the pipelines queued ahead of use (RenderSettings::precompile) to be built
     // (benchmarks: so that a measurement leaves them out).
     void finishPipelineBuilds() { mBuilder.finishPipelineBuilds(); }
+    // RendererOptions::unknownPassIsError from the next frame on (bench's debug-view switch: its
+    // frame need not declare every pass the measured frames had switched off).
+    void setUnknownPassIsError(bool error) { mOptions.unknownPassIsError = error; }
     // The GPU time of the pass named `pass` in that frame; negative if it did not run there.
     double completedPassMs(std::string_view pass) const { return mRunner.completedPassMs(pass); }
     // Waits for every frame in flight.

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 namespace candela::io {
@@ -20,6 +21,13 @@ constexpr Rgb kSeriesColors[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, 
                                  {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {127, 127, 127}};
 
 bool usable(const PlotPoint& p) { return std::isfinite(p.x) && std::isfinite(p.y) && p.x > 0 && p.y > 0; }
+
+double lowOf(double value, double low) { return std::isnan(low) ? value : low; }
+double highOf(double value, double high) { return std::isnan(high) ? value : high; }
+
+constexpr int kMarkerHalf = 4;  // markers are 9×9 pixels
+constexpr int kRingRadius = 11;
+constexpr int kLabelPad = 1;    // around a label's ink, in its box
 
 class Canvas {
 public:
@@ -64,6 +72,20 @@ public:
         std::string copy = s;
         return stb_easy_font_width(copy.data()) * scale;
     }
+    // The pixels text(0, 0, s) covers (empty for text that draws nothing).
+    static PixelBox inkBox(const std::string& s) {
+        static std::array<char, 60000> buffer;
+        std::string copy = s;
+        const int quads = stb_easy_font_print(0, 0, copy.data(), nullptr, buffer.data(), int(buffer.size()));
+        const auto* v = reinterpret_cast<const float*>(buffer.data());
+        PixelBox box{INT32_MAX, INT32_MAX, INT32_MIN, INT32_MIN};
+        for (int q = 0; q < quads; ++q) {
+            const float* quad = v + q * 16;
+            box.x0 = std::min(box.x0, int(quad[0])), box.y0 = std::min(box.y0, int(quad[1]));
+            box.x1 = std::max(box.x1, int(quad[8])), box.y1 = std::max(box.y1, int(quad[9]));
+        }
+        return quads > 0 ? box : PixelBox{};
+    }
     const std::vector<uint8_t>& pixels() const { return mPixels; }
 
 private:
@@ -81,7 +103,104 @@ std::string decadeLabel(int exponent) {
     return "1e" + std::to_string(exponent);
 }
 
+// Room right of the plot for the legend: its longest name after the swatch, at least 200 pixels.
+int legendWidth(const PlotSpec& spec) {
+    int widest = Canvas::textWidth("default setting");
+    for (const std::string& name : spec.series) widest = std::max(widest, Canvas::textWidth(name));
+    return std::clamp(widest + 44, 200, int(spec.width) / 2);
+}
+
+// The plot area and the log-log mapping of a spec's points to pixels.
+struct Layout {
+    int left = 90, right = 0, top = 50, bottom = 0;
+    double lx0 = 0, lx1 = 1, ly0 = 0, ly1 = 1;  // decades at the axes' ends
+
+    explicit Layout(const PlotSpec& spec) : right(int(spec.width) - legendWidth(spec)), bottom(int(spec.height) - 60) {
+        double minX = INFINITY, maxX = -INFINITY, minY = INFINITY, maxY = -INFINITY;
+        for (const PlotPoint& p : spec.points) {
+            if (!usable(p)) continue;
+            // A spread reaching 0 has no place on a log axis: its bar stops at the value.
+            minX = std::min(minX, p.xLow > 0 ? p.xLow : p.x), maxX = std::max(maxX, highOf(p.x, p.xHigh));
+            minY = std::min(minY, p.yLow > 0 ? p.yLow : p.y), maxY = std::max(maxY, highOf(p.y, p.yHigh));
+        }
+        if (!std::isfinite(minX) || !std::isfinite(maxX)) minX = 1, maxX = 10, minY = 1, maxY = 10;
+        lx0 = std::floor(std::log10(minX)), lx1 = std::max(std::ceil(std::log10(maxX)), lx0 + 1);
+        ly0 = std::floor(std::log10(minY)), ly1 = std::max(std::ceil(std::log10(maxY)), ly0 + 1);
+    }
+    double sx(double x) const { return left + (std::log10(x) - lx0) / (lx1 - lx0) * (right - left); }
+    double sy(double y) const { return bottom - (std::log10(y) - ly0) / (ly1 - ly0) * (bottom - top); }
+    // Where labels may go: inside the axes.
+    PixelBox labelArea() const { return {left + 3, top, right, bottom - 2}; }
+};
+
+PixelBox markerBox(const Layout& layout, const PlotSpec& spec, size_t i) {
+    const PlotPoint& p = spec.points[i];
+    if (!usable(p)) return {};
+    const int x = int(layout.sx(p.x)), y = int(layout.sy(p.y));
+    const int half = spec.highlight == i ? kRingRadius + 1 : kMarkerHalf;
+    return {x - half, y - half, x + half + 1, y + half + 1};
+}
+
+// The pixels of a point's spread bars, ticks included (none without a spread).
+std::vector<PixelBox> barBoxes(const Layout& layout, const PlotPoint& p) {
+    std::vector<PixelBox> out;
+    if (!usable(p)) return out;
+    const int x = int(layout.sx(p.x)), y = int(layout.sy(p.y));
+    if (!std::isnan(p.xLow) && !std::isnan(p.xHigh) && p.xLow > 0)
+        out.push_back({int(layout.sx(p.xLow)) - 1, y - 3, int(layout.sx(p.xHigh)) + 2, y + 4});
+    if (!std::isnan(p.yLow) && !std::isnan(p.yHigh) && p.yLow > 0)
+        out.push_back({x - 3, int(layout.sy(p.yHigh)) - 1, x + 4, int(layout.sy(p.yLow)) + 2});
+    return out;
+}
+
+std::vector<LabelPlacement> placeLabels(const Layout& layout, const PlotSpec& spec) {
+    // The ringed point first: it is the one a reader looks for.
+    std::vector<size_t> order;
+    if (spec.highlight && *spec.highlight < spec.points.size()) order.push_back(*spec.highlight);
+    for (size_t i = 0; i < spec.points.size(); ++i)
+        if (!spec.highlight || i != *spec.highlight) order.push_back(i);
+    std::vector<PixelBox> markers;
+    std::vector<LabelRequest> requests;
+    for (size_t i : order) {
+        const PixelBox marker = markerBox(layout, spec, i);
+        if (!marker.empty()) markers.push_back(marker);
+        for (const PixelBox& bar : barBoxes(layout, spec.points[i])) markers.push_back(bar);
+        LabelRequest r{.x = (marker.x0 + marker.x1) / 2, .y = (marker.y0 + marker.y1) / 2, .clearance = (marker.x1 - marker.x0) / 2};
+        const PixelBox ink = Canvas::inkBox(spec.points[i].label);
+        if (!marker.empty() && !ink.empty())
+            r.width = ink.x1 - ink.x0 + 2 * kLabelPad, r.height = ink.y1 - ink.y0 + 2 * kLabelPad;
+        requests.push_back(r);
+    }
+    // The Pareto front's line, as small boxes along it: a label over it would be crossed out.
+    const std::vector<size_t> front = spec.paretoLine ? paretoFront(spec.points) : std::vector<size_t>{};
+    for (size_t k = 1; k < front.size(); ++k) {
+        const double x0 = layout.sx(spec.points[front[k - 1]].x), y0 = layout.sy(spec.points[front[k - 1]].y);
+        const double x1 = layout.sx(spec.points[front[k]].x), y1 = layout.sy(spec.points[front[k]].y);
+        const int steps = int(std::max(std::abs(x1 - x0), std::abs(y1 - y0)) / 2) + 1;
+        for (int i = 0; i <= steps; ++i) {
+            const int x = int(std::lround(x0 + (x1 - x0) * i / steps)), y = int(std::lround(y0 + (y1 - y0) * i / steps));
+            markers.push_back({x - 1, y - 1, x + 2, y + 2});
+        }
+    }
+    const std::vector<LabelPlacement> placed = io::placeLabels(requests, markers, layout.labelArea());
+    std::vector<LabelPlacement> out(spec.points.size());
+    for (size_t k = 0; k < order.size(); ++k) out[order[k]] = placed[k];
+    return out;
+}
+
 }  // namespace
+
+bool dominates(const PlotPoint& a, const PlotPoint& b) {
+    const bool clearlyWorseX = lowOf(a.x, a.xLow) > highOf(b.x, b.xHigh), clearlyWorseY = lowOf(a.y, a.yLow) > highOf(b.y, b.yHigh);
+    const bool clearlyBetterX = highOf(a.x, a.xHigh) < lowOf(b.x, b.xLow), clearlyBetterY = highOf(a.y, a.yHigh) < lowOf(b.y, b.yLow);
+    return !clearlyWorseX && !clearlyWorseY && (clearlyBetterX || clearlyBetterY);
+}
+
+std::vector<LabelPlacement> placePlotLabels(const PlotSpec& spec) { return placeLabels(Layout(spec), spec); }
+
+PixelBox plotMarkerBox(const PlotSpec& spec, size_t i) {
+    return i < spec.points.size() ? markerBox(Layout(spec), spec, i) : PixelBox{};
+}
 
 std::vector<size_t> paretoFront(const std::vector<PlotPoint>& points) {
     std::vector<size_t> order;
@@ -91,30 +210,19 @@ std::vector<size_t> paretoFront(const std::vector<PlotPoint>& points) {
         return points[a].x < points[b].x || (points[a].x == points[b].x && points[a].y < points[b].y);
     });
     std::vector<size_t> front;
-    double bestY = INFINITY;
-    for (size_t i : order) {
-        if (points[i].y < bestY) {
+    for (size_t i : order)
+        if (std::none_of(order.begin(), order.end(), [&](size_t j) { return j != i && dominates(points[j], points[i]); }))
             front.push_back(i);
-            bestY = points[i].y;
-        }
-    }
     return front;
 }
 
 void writeLogLogPlot(const std::filesystem::path& path, const PlotSpec& spec) {
     Canvas canvas(spec.width, spec.height);
-    const int left = 90, right = int(spec.width) - 200, top = 50, bottom = int(spec.height) - 60;
-    double minX = INFINITY, maxX = -INFINITY, minY = INFINITY, maxY = -INFINITY;
-    for (const PlotPoint& p : spec.points) {
-        if (!usable(p)) continue;
-        minX = std::min(minX, p.x), maxX = std::max(maxX, p.x);
-        minY = std::min(minY, p.y), maxY = std::max(maxY, p.y);
-    }
-    if (!std::isfinite(minX)) minX = 1, maxX = 10, minY = 1, maxY = 10;
-    const double lx0 = std::floor(std::log10(minX)), lx1 = std::max(std::ceil(std::log10(maxX)), lx0 + 1);
-    const double ly0 = std::floor(std::log10(minY)), ly1 = std::max(std::ceil(std::log10(maxY)), ly0 + 1);
-    auto sx = [&](double x) { return left + (std::log10(x) - lx0) / (lx1 - lx0) * (right - left); };
-    auto sy = [&](double y) { return bottom - (std::log10(y) - ly0) / (ly1 - ly0) * (bottom - top); };
+    const Layout layout(spec);
+    const int left = layout.left, right = layout.right, top = layout.top, bottom = layout.bottom;
+    const double lx0 = layout.lx0, lx1 = layout.lx1, ly0 = layout.ly0, ly1 = layout.ly1;
+    auto sx = [&](double x) { return layout.sx(x); };
+    auto sy = [&](double y) { return layout.sy(y); };
 
     const Rgb grid{225, 225, 225}, axis{60, 60, 60}, ink{20, 20, 20};
     for (int e = int(lx0); e <= int(lx1); ++e) {
@@ -139,15 +247,41 @@ void writeLogLogPlot(const std::filesystem::path& path, const PlotSpec& spec) {
     for (size_t i = 1; i < front.size(); ++i)
         canvas.line(sx(spec.points[front[i - 1]].x), sy(spec.points[front[i - 1]].y), sx(spec.points[front[i]].x),
                     sy(spec.points[front[i]].y), Rgb{0, 0, 0}, 2);
+    // Spreads as bars with end ticks, under the markers.
     for (const PlotPoint& p : spec.points) {
         if (!usable(p)) continue;
         const Rgb c = kSeriesColors[p.series % std::size(kSeriesColors)];
-        const int x = int(sx(p.x)), y = int(sy(p.y));
-        canvas.rect(x - 4, y - 4, x + 5, y + 5, c);
-        if (!p.label.empty()) canvas.text(x + 7, y - 10, p.label, c);
+        const double x = sx(p.x), y = sy(p.y);
+        if (!std::isnan(p.xLow) && !std::isnan(p.xHigh) && p.xLow > 0) {
+            canvas.line(sx(p.xLow), y, sx(p.xHigh), y, c);
+            for (const double end : {sx(p.xLow), sx(p.xHigh)}) canvas.line(end, y - 3, end, y + 3, c);
+        }
+        if (!std::isnan(p.yLow) && !std::isnan(p.yHigh) && p.yLow > 0) {
+            canvas.line(x, sy(p.yLow), x, sy(p.yHigh), c);
+            for (const double end : {sy(p.yLow), sy(p.yHigh)}) canvas.line(x - 3, end, x + 3, end, c);
+        }
     }
+    // Leader lines, then markers, then the labels over everything.
+    const std::vector<LabelPlacement> labels = placeLabels(layout, spec);
+    for (int layer = 0; layer < 3; ++layer)
+        for (size_t i = 0; i < spec.points.size(); ++i) {
+            const PlotPoint& p = spec.points[i];
+            if (!usable(p)) continue;
+            const Rgb c = kSeriesColors[p.series % std::size(kSeriesColors)];
+            const int x = int(sx(p.x)), y = int(sy(p.y));
+            const PixelBox& box = labels[i].box;
+            if (layer == 0 && labels[i].leader) {
+                const Rgb faint{uint8_t((c[0] + 255) / 2), uint8_t((c[1] + 255) / 2), uint8_t((c[2] + 255) / 2)};
+                canvas.line(x, y, std::clamp(x, box.x0, box.x1 - 1), std::clamp(y, box.y0, box.y1 - 1), faint);
+            } else if (layer == 1) {
+                canvas.rect(x - kMarkerHalf, y - kMarkerHalf, x + kMarkerHalf + 1, y + kMarkerHalf + 1, c);
+            } else if (layer == 2 && !box.empty()) {
+                const PixelBox glyphs = Canvas::inkBox(p.label);
+                canvas.text(box.x0 + kLabelPad - glyphs.x0, box.y0 + kLabelPad - glyphs.y0, p.label, c);
+            }
+        }
     if (spec.highlight && *spec.highlight < spec.points.size() && usable(spec.points[*spec.highlight]))
-        canvas.ring(sx(spec.points[*spec.highlight].x), sy(spec.points[*spec.highlight].y), 11, Rgb{220, 0, 0});
+        canvas.ring(sx(spec.points[*spec.highlight].x), sy(spec.points[*spec.highlight].y), kRingRadius, Rgb{220, 0, 0});
 
     int ly = top;
     for (size_t s = 0; s < spec.series.size(); ++s, ly += 18) {

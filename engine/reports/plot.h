@@ -1,8 +1,13 @@
 #pragma once
-// Log-log scatter plots for reports (`candela ibl-report`): points in series, the Pareto front
-// (the points no other point beats on both axes) drawn as a line, one point ringed (the default
-// setting), decade grid lines and labels. Written as PNG. Text is stb_easy_font's bitmap font.
+// Log-log scatter plots for reports (`candela ibl-report`, `quality-report`): points in series with
+// the spread of their measurements as bars, the Pareto front (the points no other point dominates
+// beyond the spread: dominates()) drawn as a line, one point ringed (the default setting),
+// decade grid lines, and labels placed where they overlap nothing (plot_labels.h). Written as PNG.
+// Text is stb_easy_font's bitmap font.
 
+#include "reports/plot_labels.h"
+
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -16,6 +21,10 @@ struct PlotPoint {
     double y = 0;
     std::string label;    // drawn next to the point (may be empty)
     uint32_t series = 0;  // index into PlotSpec::series (colour and legend)
+    // The spread of repeated measurements of x and y (e.g. the lowest and highest of the repeats),
+    // drawn as bars; NaN: none (the value is exact). Precondition: low ≤ value ≤ high.
+    double xLow = NAN, xHigh = NAN;
+    double yLow = NAN, yHigh = NAN;
 };
 
 struct PlotSpec {
@@ -30,9 +39,24 @@ struct PlotSpec {
     uint32_t height = 640;
 };
 
-// Indices of the Pareto-optimal points for minimising both x and y (ties: the first kept), in
-// increasing x. Points with non-finite or non-positive coordinates are ignored.
+// Whether `a` dominates `b` when minimising both x and y, with the spread of the measurements:
+// `a` is better by more than the spreads on at least one axis (its high end below `b`'s low end)
+// and not worse by more than them on the other (a value without a spread is its own low and high
+// end). Two points whose spreads overlap on both axes dominate neither, and a point survives
+// against one with a lower y only by being cheaper beyond the spread: noise neither removes a
+// point from the front nor puts one on it.
+bool dominates(const PlotPoint& a, const PlotPoint& b);
+
+// Indices of the points no other point dominates, in increasing x (equal points all stay). Points
+// with non-finite or non-positive coordinates are ignored.
 std::vector<size_t> paretoFront(const std::vector<PlotPoint>& points);
+
+// Where writeLogLogPlot draws each point's label (plot_labels.h), in the order of spec.points: the
+// ringed point's label first, then the others in order. Empty boxes for points without a label
+// or not drawn.
+std::vector<LabelPlacement> placePlotLabels(const PlotSpec& spec);
+// The pixel box of the marker writeLogLogPlot draws for spec.points[i] (empty when not drawn).
+PixelBox plotMarkerBox(const PlotSpec& spec, size_t i);
 
 // Draws the plot and writes it as PNG. Throws UserError naming the file if it cannot be written.
 void writeLogLogPlot(const std::filesystem::path& path, const PlotSpec& spec);

@@ -1,12 +1,13 @@
 // The render-graph panel: every declared pass of the last frame in execution order (culled ones
 // after, greyed, with the reason), an enabled checkbox per pass (effective next frame), its GPU
-// time, the resources it reads and writes (sample counts, resolves, results nothing reads), the
+// time (marked, with the reason as a tooltip, on devices whose timestamps miss deferred work), the resources it reads and writes (sample counts, resolves, results nothing reads), the
 // MSAA sample count (a choice), the transient memory before and after aliasing, and export of the
 // graph as dot and JSON.
 
 #include "graph/graph_export.h"
 #include "ui/panels.h"
 #include "ui/viewer.h"
+#include "vk/timestamps.h"
 
 #include <imgui.h>
 
@@ -52,11 +53,18 @@ void drawGraphPanel(Viewer& viewer) {
     for (uint32_t p = 0; p < decl.passes.size(); ++p)
         if (compiled.passes[p].cullReason != graph::CullReason::None) rows.push_back(p);
 
-    // The times' column as wide as its widest cell or header (a culled pass shows the reason).
+    // The times' column as wide as its widest cell or header (a culled pass shows the reason). On CPU
+    // devices the times are marked "GPU ms*" and say why on hover (graph::kUnreliableGpuTimes).
+    const bool unreliable = !vk::timestampsMeasurePasses(viewer.context().properties().deviceType);
     if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
         ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthFixed);
-        ImGui::TableHeadersRow();
+        ImGui::TableSetupColumn(unreliable ? "GPU ms*" : "GPU ms", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+        for (int column = 0; column < 2; ++column) {
+            ImGui::TableSetColumnIndex(column);
+            ImGui::TableHeader(ImGui::TableGetColumnName(column));
+            if (column == 1 && unreliable && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", graph::kUnreliableGpuTimes);
+        }
         for (uint32_t p : rows) {
             const graph::PassDecl& pass = decl.passes[p];
             const graph::PassInfo& info = compiled.passes[p];
@@ -92,8 +100,10 @@ void drawGraphPanel(Viewer& viewer) {
             const double ms = viewer.renderer().completedPassMs(pass.name);
             if (culled)
                 ImGui::TextDisabled("%s", graph::cullReasonName(info.cullReason));
-            else if (ms >= 0.0)
-                ImGui::Text("%.2f", ms);
+            else if (ms >= 0.0) {
+                ImGui::Text("%.2f%s", ms, unreliable ? "*" : "");
+                if (unreliable && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", graph::kUnreliableGpuTimes);
+            }
             else
                 ImGui::TextDisabled("-");
         }

@@ -4,7 +4,10 @@
 
 namespace candela::vk {
 
-TimestampPool::TimestampPool(Context& context, uint32_t capacity) : mContext(&context), mCapacity(capacity) {
+bool timestampsMeasurePasses(VkPhysicalDeviceType type) { return type != VK_PHYSICAL_DEVICE_TYPE_CPU; }
+
+TimestampPool::TimestampPool(Context& context, uint32_t capacity)
+    : mContext(&context), mCapacity(capacity), mMeasuresPasses(timestampsMeasurePasses(context.properties().deviceType)) {
     const DeviceReport& report = context.report();
     if (report.timestampValidBits == 0 || capacity == 0) return;
     mPeriodNs = report.timestampPeriodNs;

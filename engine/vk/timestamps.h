@@ -10,10 +10,18 @@
 
 namespace candela::vk {
 
+// Whether timestamps written around a pass's commands measure what the pass costs on a device of
+// `type`. Not on CPU devices: llvmpipe (lavapipe) rasterizes a render pass's draws when the render
+// pass ends and runs other work after the timestamp that follows it, so a pass's time is mostly
+// the recording of its commands (graph::GraphTimings::gpuMsUnreliable).
+bool timestampsMeasurePasses(VkPhysicalDeviceType type);
+
 class TimestampPool {
 public:
     TimestampPool(Context& context, uint32_t capacity);
     bool enabled() const { return static_cast<bool>(mPool); }
+    // timestampsMeasurePasses for the pool's device.
+    bool measuresPasses() const { return mMeasuresPasses; }
 
     // Records the reset of all queries; must precede any write in the frame.
     void reset(VkCommandBuffer cmd);
@@ -31,6 +39,7 @@ private:
     uint32_t mCapacity;
     uint32_t mUsed = 0;
     double mPeriodNs = 0.0;
+    bool mMeasuresPasses = true;
     uint64_t mMask = ~0ull;
     std::vector<uint64_t> mResults;  // value, availability pairs
 };

@@ -121,6 +121,22 @@ TEST(GraphExport, DotListsPassesResourcesAndCulling) {
     EXPECT_EQ(dot.back(), '\n');
 }
 
+TEST(GraphExport, SaysWhenTheGpuTimesMissDeferredWork) {
+    RenderGraph graph;
+    buildGraph(graph);
+    const CompiledGraph& compiled = graph.compile();
+    GraphTimings timings{{1.5, -1.0, 0.25}};
+    EXPECT_FALSE(nlohmann::json::parse(exportJson(graph.declaration(), compiled, &timings)).contains("gpuMsUnreliable"));
+    EXPECT_EQ(exportDot(graph.declaration(), compiled, &timings).find("unreliable"), std::string::npos);
+    timings.gpuMsUnreliable = true;  // as on a CPU device
+    const nlohmann::json json = nlohmann::json::parse(exportJson(graph.declaration(), compiled, &timings));
+    EXPECT_EQ(json["gpuMsUnreliable"], kUnreliableGpuTimes);
+    EXPECT_EQ(json["passes"][0]["gpuMs"], 1.5);  // still listed
+    const std::string dot = exportDot(graph.declaration(), compiled, &timings);
+    EXPECT_NE(dot.find("lighting\\n#0 1.500 ms*"), std::string::npos) << dot;
+    EXPECT_NE(dot.find("label=\"* per-pass GPU times are unreliable"), std::string::npos) << dot;
+}
+
 TEST(GraphExport, RejectsAGraphThatWasNotCompiled) {
     RenderGraph graph;
     buildGraph(graph);
