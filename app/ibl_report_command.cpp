@@ -51,7 +51,7 @@ std::vector<Setting> sweep(bool quick) {
     // The same without the bright-texel split: the sun sampled like the rest (the defaults before it).
     const std::vector<uint32_t> sampledSun = quick ? std::vector<uint32_t>{32} : std::vector<uint32_t>{8, 32, 128, 512, 2048};
     for (uint32_t n : sampledSun)
-        add("prefilter, FIS, sun sampled", std::to_string(n), [&](ibl::IblQuality& q) {
+        add("prefilter, sun sampled", std::to_string(n), [&](ibl::IblQuality& q) {
             q.prefilterSamples = n;
             q.brightTexels = 0;
         });

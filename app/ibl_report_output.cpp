@@ -224,7 +224,7 @@ void writePlots(const std::filesystem::path& out, const std::vector<Result>& res
         }
         io::writeLogLogPlot(out / file, spec);
     };
-    const std::vector<std::string> specularGroups{"prefilter, filtered IS", "prefilter, FIS, sun sampled", "previous default",
+    const std::vector<std::string> specularGroups{"prefilter, filtered IS", "prefilter, sun sampled", "previous default",
                                                   "bright texels", "prefilter, plain IS", "cube size"};
     plot("specular.png", "Specular prefilter: error vs time", "mean relative error (roughness > 0 levels)",
          [](const Result& r) { return r.specularMeanRelative(); }, specularGroups);

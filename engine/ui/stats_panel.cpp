@@ -2,8 +2,10 @@
 // latest completed frame (each pass's in a tree node), the draws and triangles submitted against the scene's
 // (frustum culling, levels of detail) and the state changes recorded.
 
+#include "graph/graph_export.h"
 #include "ui/panels.h"
 #include "ui/viewer.h"
+#include "vk/timestamps.h"
 
 #include <imgui.h>
 
@@ -18,11 +20,16 @@ void drawStatsPanel(Viewer& viewer) {
     for (const PassTime& t : viewer.renderer().completedPassTimes())
         if (t.gpuMs >= 0.0) gpuTotal += t.gpuMs;
     // Each pass's time (the render-graph panel has them too) one click away: the stats stay short.
+    // On CPU devices the timestamps miss deferred work: marked "*", the reason on hover.
+    const bool unreliable = !vk::timestampsMeasurePasses(viewer.context().properties().deviceType);
+    const char* mark = unreliable ? "*" : "";
     char total[64];
-    std::snprintf(total, sizeof total, "GPU, all passes: %.2f ms###gpu", gpuTotal);
-    if (ImGui::TreeNode(total)) {
+    std::snprintf(total, sizeof total, "GPU, all passes: %.2f ms%s###gpu", gpuTotal, mark);
+    const bool open = ImGui::TreeNode(total);
+    if (unreliable && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", graph::kUnreliableGpuTimes);
+    if (open) {
         for (const PassTime& t : viewer.renderer().completedPassTimes())
-            if (t.gpuMs >= 0.0) ImGui::BulletText("%s: %.2f ms", t.name.c_str(), t.gpuMs);
+            if (t.gpuMs >= 0.0) ImGui::BulletText("%s: %.2f ms%s", t.name.c_str(), t.gpuMs, mark);
         ImGui::TreePop();
     }
     const passes::DrawStats& draws = viewer.renderer().drawStats();
