@@ -12,17 +12,15 @@ namespace {
 
 constexpr uint32_t kAllWeights = std::numeric_limits<uint32_t>::max();
 
-// What one channel drives. Node channels: kind Node, index = Scene::nodes index, element = the
-// weight (kAllWeights for a whole weights channel, 0 otherwise). Property channels: the object's
-// kind and glTF index, `field` its row.
-struct Target {
-    PointerKind kind = PointerKind::Node;
-    uint32_t index = 0;
-    AnimatedProperty property = AnimatedProperty::Translation;
-    uint32_t element = 0;
-    uint16_t field = 0;
-    auto tie() const { return std::tie(kind, index, property, element, field); }
-    bool operator<(const Target& o) const { return tie() < o.tie(); }
+// What one channel drives, as the pointer parser describes it (scene/animated_properties.h). Node
+// channels: kind Node, index = Scene::nodes index, element = the weight (kAllWeights for a whole
+// weights channel, 0 otherwise). Property channels: the object's kind and glTF index, `field` its row.
+using Target = PointerTarget;
+
+// The drivers map's order.
+struct TargetOrder {
+    static auto tie(const Target& t) { return std::tie(t.kind, t.index, t.property, t.element, t.field); }
+    bool operator()(const Target& a, const Target& b) const { return tie(a) < tie(b); }
 };
 
 Target targetOf(const AnimationChannel& channel) {
@@ -81,7 +79,7 @@ std::string listOf(const Scene& scene, const std::vector<uint32_t>& animations) 
 }  // namespace
 
 std::vector<AnimationConflict> animationConflicts(const Scene& scene, std::span<const uint32_t> playing) {
-    std::map<Target, std::vector<uint32_t>> drivers;
+    std::map<Target, std::vector<uint32_t>, TargetOrder> drivers;
     std::vector<Target> order;  // first appearance
     const auto add = [&](const Target& t, uint32_t a) {
         auto [it, added] = drivers.try_emplace(t);
