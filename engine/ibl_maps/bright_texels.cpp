@@ -9,6 +9,18 @@
 
 namespace candela::ibl {
 
+double brightCandidateLuminance(uint32_t width, uint32_t height, const std::function<double(size_t)>& luminance) {
+    double power = 0.0, solidAngle = 0.0;
+    for (uint32_t y = 0; y < height; ++y) {
+        const double rowAngle = reference::texelSolidAngle(y, width, height);
+        double row = 0.0;
+        for (uint32_t x = 0; x < width; ++x) row += luminance(size_t(y) * width + x);
+        power += row * rowAngle;
+        solidAngle += rowAngle * width;
+    }
+    return kBrightTexelFactor * power / solidAngle;
+}
+
 BrightTexels findBrightTexels(std::span<const uint16_t> rgba, uint32_t width, uint32_t height, float scale,
                               uint32_t maxCount) {
     BrightTexels result;
@@ -18,15 +30,7 @@ BrightTexels findBrightTexels(std::span<const uint16_t> rgba, uint32_t width, ui
                          glm::unpackHalf1x16(rgba[i * 4 + 2]));
     };
     const auto luminance = [&](size_t i) { return shading::iblLuminance(radiance(i)); };
-    double power = 0.0, solidAngle = 0.0;
-    for (uint32_t y = 0; y < height; ++y) {
-        const double rowAngle = reference::texelSolidAngle(y, width, height);
-        double row = 0.0;
-        for (uint32_t x = 0; x < width; ++x) row += luminance(size_t(y) * width + x);
-        power += row * rowAngle;
-        solidAngle += rowAngle * width;
-    }
-    const double candidate = kBrightTexelFactor * power / solidAngle;
+    const double candidate = brightCandidateLuminance(width, height, luminance);
     std::vector<uint32_t> bright;
     for (uint32_t i = 0; i < uint32_t(size_t(width) * height); ++i)
         if (luminance(i) > candidate) bright.push_back(i);

@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 #include <vector>
@@ -33,6 +34,12 @@ struct BrightTexels {
     std::vector<glm::vec4> buffer{glm::vec4(0.0f)};
     uint32_t count() const { return static_cast<uint32_t>((buffer.size() - 1) / 2); }
 };
+
+// kBrightTexelFactor × the solid-angle-weighted mean of `luminance(i)` over a `width` × `height`
+// equirectangular map (texel i = y · width + x): the luminance above which a texel is a bright-texel
+// candidate, for the filters' split (findBrightTexels) and for the ground truth's explicit sums
+// (IblMaps::setReferenceEnvironment). Preconditions: width, height ≥ 1.
+double brightCandidateLuminance(uint32_t width, uint32_t height, const std::function<double(size_t)>& luminance);
 
 // The bright texels of an equirectangular map (rotation 0) given as `width` × `height` RGBA half-float
 // texels (`rgba`, 4 each, alpha ignored: the texels the cubemap pass reads) that hold radiance × `scale`: those whose luminance is over

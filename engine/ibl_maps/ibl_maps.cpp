@@ -85,13 +85,7 @@ void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
     const auto luminance = [&](size_t i) {
         return ibl::luminance({env.rgb[i * 3], env.rgb[i * 3 + 1], env.rgb[i * 3 + 2]});
     };
-    double totalSolidAngle = 0, totalPower = 0;
-    for (uint32_t y = 0; y < env.height; ++y) {
-        const double solidAngle = reference::texelSolidAngle(y, env.width, env.height);
-        for (uint32_t x = 0; x < env.width; ++x) totalPower += luminance(size_t(y) * env.width + x) * solidAngle;
-        totalSolidAngle += solidAngle * env.width;
-    }
-    const double threshold = kBrightTexelFactor * totalPower / totalSolidAngle;
+    const double threshold = brightCandidateLuminance(env.width, env.height, luminance);
     std::vector<uint32_t> bright;
     for (uint32_t i = 0; i < env.texelCount(); ++i)
         if (luminance(i) > threshold) bright.push_back(i);
