@@ -48,7 +48,7 @@ std::vector<Setting> sweep(bool quick) {
         q.brightTexels = 0;
         q.irradiance = ibl::IrradianceMode::Sh9;
     });
-    // The same without the bright-texel split: the sun sampled like the rest (the defaults before it).
+    // The prefilter without the bright-texel split: the sun sampled like the rest.
     const std::vector<uint32_t> sampledSun = quick ? std::vector<uint32_t>{32} : std::vector<uint32_t>{8, 32, 128, 512, 2048};
     for (uint32_t n : sampledSun)
         add("prefilter, sun sampled", std::to_string(n), [&](ibl::IblQuality& q) {

@@ -1,6 +1,7 @@
 // `candela ibl-report`'s files: CSV, markdown, log-log plots with the Pareto front, previews.
 
 #include "ibl_report.h"
+#include "statistics.h"
 
 #include "assets/image_file.h"
 #include "core/errors.h"
@@ -52,16 +53,6 @@ ibl::ErrorStats imageError(const std::vector<float>& image, const std::vector<fl
     return ibl::errorStats(pixels.image, pixels.reference);
 }
 
-namespace {
-// The p-th percentile (0..1) of `values` (nearest rank); 0 when empty.
-double percentile(std::vector<double> values, double p) {
-    if (values.empty()) return 0.0;
-    const size_t k = std::min(values.size() - 1, size_t(p * double(values.size())));
-    std::nth_element(values.begin(), values.begin() + ptrdiff_t(k), values.end());
-    return values[k];
-}
-}  // namespace
-
 VisibleError visibleError(const std::vector<float>& image, const std::vector<float>& reference, uint32_t width,
                           uint32_t height) {
     const auto display = [&](const std::vector<float>& rgba) {
@@ -84,9 +75,9 @@ VisibleError visibleError(const std::vector<float>& image, const std::vector<flo
     if (covered.empty()) return e;
     for (double v : covered) e.flipMean += v / double(covered.size());
     e.flipMax = *std::max_element(covered.begin(), covered.end());
-    e.flipP99 = percentile(covered, 0.99);
-    e.flipP999 = percentile(covered, 0.999);
-    e.relativeP99 = percentile(relative, 0.99);
+    e.flipP99 = quantile(covered, 0.99);
+    e.flipP999 = quantile(covered, 0.999);
+    e.relativeP99 = quantile(relative, 0.99);
     return e;
 }
 
