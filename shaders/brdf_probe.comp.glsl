@@ -10,8 +10,9 @@
 // Blinn-Phong stays the core's there too.
 #include "shared/brdf_layers.h"
 #include "shared/brdf_probe.h"
+#include "shared/specialization_ids.h"
 
-layout(constant_id = 0) const bool kLayers = false;
+layout(constant_id = CANDELA_SPEC_PROBE_LAYERS) const bool kLayers = false;
 
 layout(local_size_x = CANDELA_BRDF_PROBE_GROUP_SIZE, local_size_y = CANDELA_BRDF_PROBE_GROUP_SIZE) in;
 

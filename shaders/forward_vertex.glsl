@@ -22,7 +22,7 @@ layout(std430, set = 1, binding = 5) readonly buffer MaterialLayers {
 };
 #endif
 layout(push_constant) uniform Push {
-    ForwardPush push;
+    FramePush push;
 };
 
 layout(location = 0) out vec3 outWorldPosition;

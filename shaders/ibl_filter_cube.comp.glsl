@@ -12,8 +12,9 @@
 // explicitly, each weighted by this mip's normalised lobe (LobeTable), so a sun is summed, not
 // sampled (engine/ibl_maps/bright_texels.h).
 #include "shared/ibl.h"
+#include "shared/specialization_ids.h"
 
-layout(constant_id = 0) const bool kWeightByCosine = true;
+layout(constant_id = CANDELA_SPEC_FILTER_WEIGHT_BY_COSINE) const bool kWeightByCosine = true;
 
 layout(local_size_x = CANDELA_IBL_GROUP, local_size_y = CANDELA_IBL_GROUP) in;
 

@@ -5,14 +5,15 @@
 // texture, as forward/material_eval.glsl's materialBaseColor), then the draw entry and primitive.
 #define CANDELA_VISIBILITY_MASKED
 #include "visibility/raster.glsl"
+#include "shared/specialization_ids.h"
 
 // The material's base colour texture (its binding in the forward programs' set 1,
 // shared/forward_tables.h), bound per draw.
 layout(set = 1, binding = 0) uniform sampler2D baseColorTexture;
 
 // Alpha to coverage (MSAA, the device has alphaToOne: as the forward pass decides) over kSamples.
-layout(constant_id = 0) const bool kAlphaToCoverage = false;
-layout(constant_id = 1) const uint kSamples = 1u;
+layout(constant_id = CANDELA_SPEC_ALPHA_TO_COVERAGE) const bool kAlphaToCoverage = false;
+layout(constant_id = CANDELA_SPEC_SAMPLES) const uint kSamples = 1u;
 
 layout(location = 0) flat in uint inEntry;
 layout(location = 1) in vec2 inUv;

@@ -63,7 +63,8 @@ ENGINE_UNIT_TESTS = ["device_select_test.cpp", "device_profile_test.cpp", "memor
                      "graph_msaa_test.cpp", "draw_list_test.cpp", "visibility_frame_test.cpp", "ibl_sample_tables_test.cpp",
                      "orbit_controls_test.cpp", "ibl_report_table_test.cpp", "forward_shader_test.cpp",
                      "forward_tables_test.cpp", "skin_morph_dispatch_test.cpp", "index_values_test.cpp",
-                     "swapchain_choices_test.cpp", "pipeline_cache_file_test.cpp", "bright_texels_test.cpp", "panel_layout_test.cpp"]
+                     "swapchain_choices_test.cpp", "pipeline_cache_file_test.cpp", "bright_texels_test.cpp", "panel_layout_test.cpp",
+                     "frame_plan_test.cpp"]
 
 CLI_ENUM_HEADERS = ["passes/debug_view.h", "passes/draw_selection.h", "passes/tonemap_operator.h", "passes/shading_model.h",
                     "passes/precompile.h", "passes/shading_path.h", "ui/viewer_panels.h", "vk/device_profile.h"]
@@ -83,7 +84,7 @@ CONSUMERS = [
     ("tools/bench/exr_read_bench.cpp", ["assets"], []),
     ("tools/", ALL, []),
     # candela_engine_unit_tests: no device, no window, but the device-side and viewer libraries.
-    *[(f"tests/unit/{name}", ["vk", "executor", "gpu_scene", "passes", "ibl_maps", "ui"], []) for name in ENGINE_UNIT_TESTS],
+    *[(f"tests/unit/{name}", ["vk", "executor", "gpu_scene", "passes", "ibl_maps", "render", "ui"], []) for name in ENGINE_UNIT_TESTS],
     # candela_unit_tests and the helpers every test binary shares: the CPU libraries only.
     ("tests/unit/", CPU, []),
     # The fuzz build configures nothing above the readers (and the images `candela diff` reads).

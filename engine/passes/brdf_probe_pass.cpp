@@ -1,13 +1,14 @@
 #include "passes/brdf_probe_pass.h"
 
 #include "executor/graph_executor.h"
+#include "shared/specialization_ids.h"
 
 namespace candela::passes {
 
 using namespace graph;
 
 BrdfProbePass::BrdfProbePass(vk::Context& context, Brdf brdf)
-    : mPipeline(vk::Pipeline::compute(context, "brdf_probe.comp", {brdf == Brdf::Layers ? 1u : 0u})) {}
+    : mPipeline(vk::Pipeline::compute(context, "brdf_probe.comp", shader::specializationValues({{CANDELA_SPEC_PROBE_LAYERS, brdf == Brdf::Layers}}))) {}
 
 TextureId BrdfProbePass::add(RenderGraph& graph, const shading::BrdfProbeParams& params) const {
     struct Data {

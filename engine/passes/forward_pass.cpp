@@ -1,9 +1,10 @@
 #include "passes/forward_pass.h"
 
 #include "executor/graph_executor.h"
-#include "passes/forward_blocks.h"
-#include "passes/material_set.h"
+#include "passes/draw_recorder.h"
+#include "passes/scene_bindings.h"
 #include "shared/brdf.h"
+#include "shared/specialization_ids.h"
 #include "shared/scene_data.h"
 
 #include <algorithm>
@@ -18,7 +19,7 @@ namespace {
 
 // `specializeLayers`: the layered program is specialized to the variant's layers at load
 // (DeviceChoices::specializeLayeredProgram).
-vk::GraphicsPipelineDesc pipelineDesc(const ForwardVariant& v, bool specializeLayers) {
+vk::GraphicsPipelineDesc pipelineDesc(const ShadingVariant& v, bool specializeLayers) {
     vk::GraphicsPipelineDesc out{
         .colorFormats = {passes::kHdrFormat},
         .depthFormat = passes::kDepthFormat,
@@ -38,18 +39,18 @@ vk::GraphicsPipelineDesc pipelineDesc(const ForwardVariant& v, bool specializeLa
                              {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv1)},
                              {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, color)}}};
     // Where the generic layered program exceeds the device's per-stage limits, it is specialized to
-    // the variant's layers (kLayers, constant 10) at load: its material set (1) and layer maps (3)
+    // the variant's layers (CANDELA_SPEC_LAYERS) at load: its material set (1) and layer maps (3)
     // declare only what those layers read (docs/device-layer.md); sets 0 and 2 keep every binding,
     // shared by all variants.
     if (v.layers && specializeLayers) {
-        out.frozenConstants = {10};
+        out.frozenConstants = {CANDELA_SPEC_LAYERS};
         out.specializedSets = {1, 3};
     }
     return out;
 }
 
 // Builds variant `v`'s pipeline: what a worker runs, so it holds only the context and the variant.
-vk::Pipeline buildPipeline(vk::Context& context, const ForwardVariant& v) {
+vk::Pipeline buildPipeline(vk::Context& context, const ShadingVariant& v) {
     // The ground truth of `ibl-report` (referenceSamples) is a program of its own, for core materials.
     if (v.referenceSamples && v.layers) throw std::logic_error("ForwardPass: the ground truth integrates core materials only");
     return v.layers ? vk::Pipeline::graphics(context, "forward_layers.vert", "forward_layers.frag",
@@ -63,13 +64,13 @@ vk::Pipeline buildPipeline(vk::Context& context, const ForwardVariant& v) {
 ForwardPass::ForwardPass(vk::Context& context)
     : mContext(context), mWorkers(WorkerPool::defaultThreads()), mIblSet(context), mLayerSet(context) {}
 
-const vk::Pipeline& ForwardPass::pipeline(const ForwardVariant& v) {
+const vk::Pipeline& ForwardPass::pipeline(const ShadingVariant& v) {
     return mPipelines.get(mContext, v, [&] { return buildPipeline(mContext, v); });
 }
 
 void ForwardPass::queue(const FrameVariant& frame, WorkerPool::Priority priority) {
     for (const MaterialKey& key : mKeys->keys) {
-        const ForwardVariant v = forwardVariant(key, frame);
+        const ShadingVariant v = shadingVariant(key, frame);
         mPipelines.prepare(mWorkers, v, [context = &mContext, v] { return buildPipeline(*context, v); }, priority);
     }
 }
@@ -106,7 +107,7 @@ const vk::Program& ForwardPass::coreProgram() {
 const shader::ShaderReflection* ForwardPass::layeredReflection() {
     if (!mKeys) return nullptr;
     for (const MaterialKey& key : mKeys->keys)
-        if (key.layers) return &pipeline(ForwardVariant{.layers = key.layers}).program().reflection();
+        if (key.layers) return &pipeline(ShadingVariant{.layers = key.layers}).program().reflection();
     return nullptr;
 }
 
@@ -125,58 +126,17 @@ void ForwardPass::setScene(const scene::GpuScene& gpuScene, const MaterialKeys& 
     const size_t materials = gpuScene.scene().materials.size();
     std::vector<const vk::Program*> programs(materials, &core);  // each material set's layout
     for (uint32_t material = 0; material < materials; ++material)
-        if (const uint32_t layers = keys[material].layers) programs[material] = &pipeline(ForwardVariant{.layers = layers}).program();
+        if (const uint32_t layers = keys[material].layers) programs[material] = &pipeline(ShadingVariant{.layers = layers}).program();
     // One pool for the scene's sets: the scene set and a material set per material.
     vk::DescriptorCounts total = vk::DescriptorCounts::ofSet(core, 0);
     for (const vk::Program* program : programs) total += vk::DescriptorCounts::ofSet(*program, 1);
     mSets->reserve(total);
-    mSceneSet = vk::DescriptorWriter(core, 0)
-                    .buffer(ForwardBlock<shading::LightData>::name, gpuScene.lightBuffer())
-                    .buffer(ForwardBlock<shading::DrawData>::name, gpuScene.drawBuffer())
-                    .buffer(ForwardBlock<shading::MaterialData>::name, gpuScene.materialBuffer())
-                    .commit(mContext, *mSets);
+    mSceneSet = writeSceneSet(mContext, *mSets, core, sceneBuffersOf(gpuScene));
     // A layered material's set follows the layered program's layout: its core textures, then
     // every material's layer parameters and its own layer textures.
     for (uint32_t material = 0; material < materials; ++material)
         mMaterialSets.push_back(writeMaterialSet(mContext, *mSets, *programs[material], gpuScene, material,
                                                  keys[material].layers ? gpuScene.materialLayerBuffer() : VK_NULL_HANDLE));
-}
-
-ForwardPass::FrameInputs ForwardPass::frameInputs(const FrameDesc& desc) {
-    FrameInputs out;
-    uint32_t lightTypes = 0;
-    for (const shading::LightData& light : mScene->lights()) lightTypes |= 1u << static_cast<uint32_t>(light.directionType.w);
-    out.variant = {.model = desc.model,
-                   .lights = mScene->lightCount() > 0,
-                   .lightTypes = lightTypes,
-                   .ibl = desc.ibl != nullptr,
-                   .irradianceSh = !desc.ibl || desc.ibl->irradianceSh,
-                   .multiscatter = !desc.ibl || desc.ibl->multiscatter,
-                   .referenceSamples = desc.ibl ? desc.ibl->referenceSamples : 0,
-                   .debugView = desc.debugView,
-                   .specularAa = desc.shading.specularAntiAliasing,
-                   .samples = desc.samples,
-                   .alphaToCoverage = desc.samples > 1 && mContext.alphaToOne()};
-    out.push.viewProjection = desc.view.viewProjection;
-    out.push.eye = glm::vec4(desc.view.eye, 1.0f);
-    out.push.counts = glm::uvec4(mScene->lightCount(), 0, 0, 0);
-    if (desc.ibl) {
-        out.push.ibl = desc.ibl->params;
-        out.ibl = desc.ibl->maps;
-    }
-    if (desc.parameters) desc.parameters->apply("forward", "Push", reflection().pushConstants.members, out.push);
-    if (desc.layerMaps) out.layerMaps = *desc.layerMaps;
-    if (desc.posed) {
-        out.posedDraws = desc.posed->data;
-        out.posedLights = desc.posed->lights;
-        out.posedMaterials = desc.posed->materials;
-        out.posedMaterialLayers = desc.posed->materialLayers;
-    }
-    if (desc.deformed) {
-        out.deformed = desc.deformed->vertices;
-        out.vertexOffset = desc.deformed->vertexOffset;
-    }
-    return out;
 }
 
 DrawTarget ForwardPass::addOpaque(RenderGraph& graph, const DrawTargetSize& size, const DrawList& list,
@@ -218,14 +178,14 @@ std::vector<std::string> ForwardPass::describe(const DrawList& list, const Frame
     for (const DrawListItem& item : list.items) ++perKey[item.key];
     std::map<std::string, uint32_t> variantCounts;
     for (uint32_t key = 0; key < perKey.size(); ++key)
-        if (perKey[key]) variantCounts[forwardVariant(mKeys->keys[key], frame.variant).name()] += perKey[key];
+        if (perKey[key]) variantCounts[shadingVariant(mKeys->keys[key], frame.variant).name()] += perKey[key];
     std::string used = "forward: " + std::to_string(list.draws) + " draws" +
                        (list.instances ? " (" + std::to_string(list.instances) + " instances in instanced draws)" : std::string()) +
                        "; variants:";
     for (const auto& [name, count] : variantCounts) used += " " + name + " ×" + std::to_string(count);
     out.push_back(used);
     out.push_back(describeSelection(list, selection));
-    if (frame.posedDraws.valid())
+    if (frame.posed.draws.valid())
         out.push_back("animated: draw matrices of this frame's pose, written by the CPU into a per-frame buffer" +
                       (list.hiddenDraws ? " (" + std::to_string(list.hiddenDraws) + " draws hidden or scaled to nothing, not drawn)"
                                         : std::string()));
@@ -254,61 +214,44 @@ DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::s
                                     const std::function<DrawTarget(PassBuilder&)>& targets) {
     struct Data {
         DrawTarget targets;
-        IblHandles ibl;     // as declared: resolved in execute
-        LayerMaps layers;   // as declared
-        BufferId draws;     // the posed draw data, when animated
-        BufferId lights;    // the posed light data, when a light is animated
-        BufferId materials, materialLayers;  // the posed material (layer) data, when a material is animated
-        BufferId deformed;  // the deformed vertices, when some draw is deformed
+        IblHandles ibl;    // as declared: resolved in execute
+        LayerMaps layers;  // as declared
+        DeclaredFrameBuffers buffers;
     };
     // Each material key's pipeline in this frame, resolved once per key.
     std::vector<const vk::Pipeline*> pipelines(mKeys->keys.size(), nullptr);
-    std::vector<Recorded> recordedItems;
-    recordedItems.reserve(items.size());
+    std::vector<DrawCall> draws;
+    draws.reserve(items.size());
     bool anyLayered = false;  // set 3 (the layer maps) is written when a layered draw is in the pass
     for (const DrawListItem& item : items) {
         const MaterialKey& key = mKeys->keys[item.key];
-        if (!pipelines[item.key]) pipelines[item.key] = &pipeline(forwardVariant(key, frame.variant));
+        if (!pipelines[item.key]) pipelines[item.key] = &pipeline(shadingVariant(key, frame.variant));
         anyLayered = anyLayered || key.layers != 0;
-        recordedItems.push_back({.pipeline = pipelines[item.key],
-                                 .item = item,
-                                 .vertexOffset = frame.vertexOffset.empty() ? kRestVertices : frame.vertexOffset[item.draw],
-                                 .layered = key.layers != 0});
+        draws.push_back({.pipeline = pipelines[item.key], .item = item, .vertexOffset = frame.vertexOffsetOf(item.draw)});
     }
-    const scene::GpuScene* gpuScene = mScene;
-    const std::vector<VkDescriptorSet>* materialSets = &mMaterialSets;
-    const ForwardIblSet* iblSets = &mIblSet;
     // Every variant of the frame shares the layouts of sets 0 and 2: the core program's, or in a
     // ground-truth frame its own program's (which adds its inputs to set 2).
     const vk::Program* program = frame.variant.referenceSamples
-                                     ? &pipeline(ForwardVariant{.referenceSamples = frame.variant.referenceSamples}).program()
+                                     ? &pipeline(ShadingVariant{.referenceSamples = frame.variant.referenceSamples}).program()
                                      : &coreProgram();
-    const ForwardLayerSet* layerSets = &mLayerSet;
+    constexpr VkPipelineStageFlags2 kVertexAndFragment = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
     const Data& data = graph.addPass<Data>(
         std::move(name), PassType::Graphics,
         [&](PassBuilder& builder, Data& d) {
             d.targets = targets(builder);
-            d.ibl = ForwardIblSet::declare(builder, frame.ibl ? &*frame.ibl : nullptr);
-            if (anyLayered) d.layers = ForwardLayerSet::declare(builder, &frame.layerMaps);
-            if (frame.posedDraws.valid())
-                d.draws = builder.read(frame.posedDraws, Usage::StorageRead,
-                                       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-            if (frame.posedLights.valid())
-                d.lights = builder.read(frame.posedLights, Usage::StorageRead, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-            // Material data: texture transforms in the vertex stage, the rest in the fragment stage.
-            if (frame.posedMaterials.valid())
-                d.materials = builder.read(frame.posedMaterials, Usage::StorageRead,
-                                           VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-            if (frame.posedMaterialLayers.valid() && anyLayered)
-                d.materialLayers = builder.read(frame.posedMaterialLayers, Usage::StorageRead,
-                                                VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-            if (frame.deformed.valid()) d.deformed = builder.read(frame.deformed, Usage::Vertex);
+            d.ibl = IblSet::declare(builder, frame.ibl ? &*frame.ibl : nullptr);
+            if (anyLayered) d.layers = LayerMapSet::declare(builder, &frame.layerMaps);
+            // Draw and material data: transforms in the vertex stage, the rest in the fragment stage.
+            d.buffers = declareFrameReads(builder, frame,
+                                          {.materialLayers = anyLayered,
+                                           .sceneStages = kVertexAndFragment,
+                                           .lightStages = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT});
         },
-        [items = std::move(recordedItems), frameConstants = frame.push, gpuScene, staticSceneSet = mSceneSet, materialSets, iblSets,
-         layerSets, program, stats](const Data& d, PassContext& ctx) {
+        [draws = std::move(draws), push = frame.push, gpuScene = mScene, keys = mKeys, sceneSet = mSceneSet,
+         materialSets = &mMaterialSets, iblSets = &mIblSet, layerSets = &mLayerSet, program, stats](const Data& d, PassContext& ctx) {
             DrawStats unused;
-            DrawStats* counts = stats ? stats : &unused;
-            shading::ForwardPush constants = frameConstants;
+            DrawStats& counts = stats ? *stats : unused;
+            const VkDescriptorSet set0 = frameSceneSet(ctx, *program, *gpuScene, d.buffers.posed, sceneSet);
             const VkDescriptorSet iblSet = iblSets->write(ctx, *program, d.ibl);
             // Set 3 of each layered variant in the pass (each specialized to its layers' maps).
             std::vector<std::pair<const vk::Pipeline*, VkDescriptorSet>> layerSetsWritten;
@@ -317,88 +260,19 @@ DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::s
                     if (p == &pipeline) return set;
                 return layerSetsWritten.emplace_back(&pipeline, layerSets->write(ctx, pipeline.program(), d.layers)).second;
             };
-            // A pose: set 0 names this frame's draw, light and material buffers where it has them.
-            const VkDescriptorSet sceneSet =
-                !d.draws.valid() && !d.lights.valid() && !d.materials.valid()
-                    ? staticSceneSet
-                    : vk::DescriptorWriter(*program, 0)
-                          .buffer(ForwardBlock<shading::LightData>::name, d.lights.valid() ? ctx.buffer(d.lights) : gpuScene->lightBuffer())
-                          .buffer(ForwardBlock<shading::DrawData>::name, d.draws.valid() ? ctx.buffer(d.draws) : gpuScene->drawBuffer())
-                          .buffer(ForwardBlock<shading::MaterialData>::name,
-                                  d.materials.valid() ? ctx.buffer(d.materials) : gpuScene->materialBuffer())
-                          .commit(ctx.context(), ctx.descriptors());
-            // Posed layer data: the layered materials' sets 1 name this frame's buffer (written at
-            // their first draw in the pass).
-            std::vector<VkDescriptorSet> posedMaterialSets(d.materialLayers.valid() ? materialSets->size() : 0, VK_NULL_HANDLE);
-            const auto materialSet = [&](const Recorded& r) {
-                if (!r.layered || posedMaterialSets.empty()) return (*materialSets)[r.item.material];
-                VkDescriptorSet& set = posedMaterialSets[r.item.material];
-                if (set == VK_NULL_HANDLE)
-                    set = writeMaterialSet(ctx.context(), ctx.descriptors(), r.pipeline->program(), *gpuScene, r.item.material,
-                                           ctx.buffer(d.materialLayers));
-                return set;
-            };
-            VkCommandBuffer cmd = ctx.cmd();
-            ctx.beginRendering();
-            if (items.empty()) {  // e.g. only transmissive draws: the pass just clears
-                ctx.endRendering();
-                return;
-            }
-            const VkDeviceSize offset = 0;
-            const VkBuffer rest = gpuScene->vertexBuffer();
-            const VkBuffer deformedVertices = d.deformed.valid() ? ctx.buffer(d.deformed) : VK_NULL_HANDLE;
-            VkBuffer boundVertices = rest;
-            vkCmdBindVertexBuffers(cmd, 0, 1, &rest, &offset);
-            vkCmdBindIndexBuffer(cmd, gpuScene->indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
-            counts->bufferBinds += 2;
-            // State is set only where it changes: the draws come sorted by pipeline and material.
-            const vk::Pipeline* bound = nullptr;
-            uint32_t boundMaterial = UINT32_MAX;
-            std::optional<VkCullModeFlags> cullMode;
-            std::optional<VkFrontFace> frontFace;
-            const auto bindSet = [&](uint32_t set, const VkDescriptorSet& descriptors) {
-                vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), set, 1, &descriptors, 0, nullptr);
-                ++counts->descriptorBinds;
-            };
-            for (const Recorded& r : items) {
-                const DrawListItem& item = r.item;
-                if (r.pipeline != bound) {
-                    bound = r.pipeline;
-                    bound->bind(cmd);
-                    ++counts->pipelineBinds;
-                    // Core and layered programs differ from set 1 on: rebind every set after a switch.
-                    bindSet(0, sceneSet);
-                    bindSet(2, iblSet);
-                    if (r.layered && bound->program().setCount() > 3) bindSet(3, layerSetOf(*bound));
-                    boundMaterial = UINT32_MAX;
-                }
-                if (item.material != boundMaterial) {
-                    boundMaterial = item.material;
-                    bindSet(1, materialSet(r));
-                }
-                if (const VkCullModeFlags wanted = item.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT; cullMode != wanted) {
-                    cullMode = wanted;
-                    vkCmdSetCullMode(cmd, wanted);
-                    ++counts->dynamicStates;
-                }
-                // glTF fronts are counter-clockwise; a mirroring transform turns them clockwise.
-                if (const VkFrontFace wanted = item.flipWinding ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE;
-                    frontFace != wanted) {
-                    frontFace = wanted;
-                    vkCmdSetFrontFace(cmd, wanted);
-                    ++counts->dynamicStates;
-                }
-                constants.counts.y = item.drawData;
-                bound->pushConstants(cmd, &constants, sizeof(constants));
-                const bool restVertices = r.vertexOffset == kRestVertices;
-                if (const VkBuffer wanted = restVertices ? rest : deformedVertices; wanted != boundVertices) {
-                    boundVertices = wanted;
-                    vkCmdBindVertexBuffers(cmd, 0, 1, &boundVertices, &offset);
-                    ++counts->bufferBinds;
-                }
-                vkCmdDrawIndexed(cmd, item.indexCount, item.instances, item.firstIndex, restVertices ? 0 : r.vertexOffset, 0);
-            }
-            ctx.endRendering();
+            PosedMaterialSets posedSets(ctx, *gpuScene, d.buffers.posed.materialLayers, materialSets->size());
+            const auto layered = [&](const DrawCall& draw) { return keys->keys[draw.item.key].layers != 0; };
+            recordDraws(
+                ctx, draws, *gpuScene, d.buffers.deformed.valid() ? ctx.buffer(d.buffers.deformed) : VK_NULL_HANDLE, push, counts,
+                [&](const vk::Pipeline& bound, const DrawCall& draw) {
+                    bindGraphicsSet(ctx.cmd(), bound, 0, set0, counts);
+                    bindGraphicsSet(ctx.cmd(), bound, 2, iblSet, counts);
+                    if (layered(draw) && bound.program().setCount() > 3) bindGraphicsSet(ctx.cmd(), bound, 3, layerSetOf(bound), counts);
+                },
+                [&](const DrawCall& draw) {
+                    const uint32_t material = draw.item.material;
+                    return posedSets.get(material, layered(draw), draw.pipeline->program(), material, (*materialSets)[material]);
+                });
         });
     return data.targets;
 }

@@ -1,34 +1,31 @@
 #pragma once
 // Forward pass (graphics): draws ranges of a frame's draw list (passes/draw_list.h) into an HDR
 // target (RGBA16F, alpha = coverage, premultiplied) with a reverse-Z depth buffer. Each draw uses
-// the pipeline variant of its material key and the frame's bits (passes/forward_variant.h).
+// the pipeline variant of its material key and the frame's bits (passes/shading_variant.h).
 //
 // A frame adds "forward" (addOpaque: the opaque and masked ranges, then the blended one sorted
 // back to front) and, when the list has transmissive draws, "forward_transmission"
 // (addTransmissive: the transmissive and blended draws back to front over the opaque image, reading
 // its copy with mips, TransmissionBackgroundPass). Both take what they draw from their arguments:
 // the pass keeps no state between calls. What every draw of the frame shares (push constants, the
-// maps and per-frame buffers it reads) is made once per frame by frameInputs().
+// maps and per-frame buffers it reads) is made once per frame (passes/frame_inputs.h); the draws
+// are recorded by the draw recorder (passes/draw_recorder.h) with the scene's sets
+// (passes/scene_bindings.h), as the visibility raster's are.
 
 #include "graph/render_graph.h"
 #include "passes/debug_view.h"
 #include "passes/draw_list.h"
 #include "passes/draw_selection.h"
 #include "passes/draw_target.h"
-#include "passes/forward_ibl_set.h"
-#include "passes/forward_layer_set.h"
-#include "passes/forward_variant.h"
-#include "passes/ibl_handles.h"
-#include "shader/parameter_registry.h"
-#include "shared/ibl.h"
-#include "shared/scene_data.h"
-#include "scene/camera.h"
+#include "passes/frame_inputs.h"
+#include "passes/ibl_set.h"
+#include "passes/layer_map_set.h"
+#include "passes/shading_variant.h"
 #include "gpu_scene/gpu_scene.h"
 #include "core/worker_pool.h"
 #include "vk/descriptors.h"
 #include "vk/pipeline_cache.h"
 
-#include <climits>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -42,67 +39,12 @@ class ForwardPass {
 public:
     explicit ForwardPass(vk::Context& context);
 
-    // Binds the scene's buffers and textures into persistent descriptor sets (sets 0 and 1). The
-    // scene is uploaded once and changes only while the GPU is idle, so it is no graph resource.
+    // Binds the scene's buffers and textures into persistent descriptor sets (sets 0 and 1,
+    // scene_bindings.h). The scene is uploaded once and changes only while the GPU is idle, so it is
+    // no graph resource.
     // Call once per GpuScene; `keys` are its materials' (MaterialKeys::of). Preconditions: the GPU no
     // longer uses the previous scene's sets; `scene` and `keys` outlive their use by this pass.
     void setScene(const scene::GpuScene& scene, const MaterialKeys& keys);
-
-    // Image-based lighting of one frame: the maps to read (set 2, written every frame from what the
-    // pass context resolves them to) and how to read them.
-    struct Ibl {
-        IblHandles maps;
-        shading::IblParams params;
-        bool irradianceSh = true;
-        bool multiscatter = true;
-        // > 0: ground truth instead of the split sum (`ibl-report`): the reflectance equation
-        // integrated per pixel with this many samples per lobe from the specular cube's mip 0.
-        uint32_t referenceSamples = 0;
-    };
-    // An animated scene in this frame's pose, each buffer read instead of the scene's own (sets 0
-    // and, for the layer data, the layered materials' sets 1 are then written per frame); each is
-    // invalid when nothing it holds animates: the buffer of the draws' shading::DrawData (a node
-    // moves), of the light data (a light moves, shows, hides or has an animated property), of the
-    // material data and of the material layer data (KHR_animation_pointer animates a material).
-    struct PosedDraws {
-        graph::BufferId data;
-        graph::BufferId lights;
-        graph::BufferId materials;
-        graph::BufferId materialLayers;
-    };
-    // This frame's deformed vertices (the skin_morph pass's output) and, per scene draw, the
-    // vertex offset that maps its indices into them (kRestVertices: drawn from the scene's own).
-    struct DeformedVertices {
-        graph::BufferId vertices;
-        std::vector<int32_t> vertexOffset;
-    };
-    static constexpr int32_t kRestVertices = INT32_MIN;
-
-    // What a frame's forward draws are lit by and read; the optional parts are absent when null.
-    struct FrameDesc {
-        const scene::ViewSetup& view;
-        ShadingModel model = ShadingModel::Pbr;
-        const Ibl* ibl = nullptr;
-        DebugView debugView = DebugView::None;
-        ShadingOptions shading;
-        uint32_t samples = 1;                       // of the draw targets
-        const PosedDraws* posed = nullptr;
-        const DeformedVertices* deformed = nullptr;
-        const LayerMaps* layerMaps = nullptr;        // the sheen LUT and cube, for the layered program
-        shader::ParameterRegistry* parameters = nullptr;  // the user's values for "forward", "Push"
-    };
-    // What every forward draw pass of one frame shares, made once per frame.
-    struct FrameInputs {
-        shading::ForwardPush push{};
-        FrameVariant variant;
-        std::optional<IblHandles> ibl;
-        LayerMaps layerMaps;
-        // Invalid where the frame has none.
-        graph::BufferId posedDraws, posedLights, posedMaterials, posedMaterialLayers, deformed;
-        std::vector<int32_t> vertexOffset;  // per scene draw (DeformedVertices); empty: rest vertices
-    };
-    // The frame's inputs, with the user's values for the push constants applied (once per frame).
-    FrameInputs frameInputs(const FrameDesc& desc);
 
     // Adds "forward": clears new targets of `size` and draws the list's opaque and masked ranges,
     // then its blended one unless the list has transmissive draws (addTransmissive draws those).
@@ -153,19 +95,12 @@ public:
     static constexpr VkFormat kDepthFormat = passes::kDepthFormat;
 
 private:
-    // A list item with its pipeline, as recorded.
-    struct Recorded {
-        const vk::Pipeline* pipeline;
-        DrawListItem item;
-        int32_t vertexOffset;  // kRestVertices: the scene's vertex buffer; else into the deformed one
-        bool layered;          // drawn by the layered program (binds set 3)
-    };
     // Adds a graphics pass `name` recording `items` in order into the targets `targets` declares,
     // reading `frame`'s inputs. Returns the targets as written.
     DrawTarget addDrawPass(graph::RenderGraph& graph, std::string name, std::span<const DrawListItem> items,
                            const FrameInputs& frame, DrawStats* recorded,
                            const std::function<DrawTarget(graph::PassBuilder&)>& targets);
-    const vk::Pipeline& pipeline(const ForwardVariant& variant);
+    const vk::Pipeline& pipeline(const ShadingVariant& variant);
     // The core program (shader modules, layouts, reflection: no pipeline), whose set layouts every
     // core variant shares and whose sets 0 and 2 every layered variant shares.
     const vk::Program& coreProgram();
@@ -174,11 +109,11 @@ private:
 
     vk::Context& mContext;
     WorkerPool mWorkers;  // before mPipelines: outlives the builds it runs
-    vk::PipelineCache<ForwardVariant> mPipelines;
+    vk::PipelineCache<ShadingVariant> mPipelines;
     std::optional<FrameVariant> mPrepared, mPreparedViews;  // what prepare/prepareDebugViews last queued for
     std::optional<vk::Program> mCoreProgram;
-    ForwardIblSet mIblSet;
-    ForwardLayerSet mLayerSet;
+    IblSet mIblSet;
+    LayerMapSet mLayerSet;
     const scene::GpuScene* mScene = nullptr;
     const MaterialKeys* mKeys = nullptr;
     std::unique_ptr<vk::DescriptorAllocator> mSets;

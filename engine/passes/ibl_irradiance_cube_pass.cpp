@@ -3,6 +3,7 @@
 #include "passes/ibl_sample_tables.h"
 #include "passes/compute.h"
 #include "shared/ibl.h"
+#include "shared/specialization_ids.h"
 #include "vk/upload.h"
 
 #include <span>
@@ -13,7 +14,7 @@ using namespace graph;
 
 IblIrradianceCubePass::IblIrradianceCubePass(vk::Context& context)
     : mContext(context),
-      mPipeline(vk::Pipeline::compute(context, "ibl_filter_cube.comp", {/*kWeightByCosine=*/0})),
+      mPipeline(vk::Pipeline::compute(context, "ibl_filter_cube.comp", shader::specializationValues({{CANDELA_SPEC_FILTER_WEIGHT_BY_COSINE, 0}}))),
       mSampler(vk::createSampler(context, {})) {}
 
 void IblIrradianceCubePass::prepare(uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips, bool filtered,

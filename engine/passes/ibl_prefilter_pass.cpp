@@ -3,6 +3,7 @@
 #include "passes/ibl_sample_tables.h"
 #include "passes/compute.h"
 #include "shared/ibl.h"
+#include "shared/specialization_ids.h"
 #include "vk/upload.h"
 
 #include <algorithm>
@@ -15,7 +16,7 @@ using namespace graph;
 IblPrefilterPass::IblPrefilterPass(vk::Context& context, Lobe lobe)
     : mContext(context),
       mLobe(lobe),
-      mPipeline(vk::Pipeline::compute(context, "ibl_filter_cube.comp", {/*kWeightByCosine=*/lobe == Lobe::Ggx ? 1u : 0u})),
+      mPipeline(vk::Pipeline::compute(context, "ibl_filter_cube.comp", shader::specializationValues({{CANDELA_SPEC_FILTER_WEIGHT_BY_COSINE, lobe == Lobe::Ggx}}))),
       mSampler(vk::createSampler(context, {.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST})) {}
 
 void IblPrefilterPass::prepare(uint32_t levels, uint32_t samples, uint32_t sourceFaceSize, uint32_t sourceMips,

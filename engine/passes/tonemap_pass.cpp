@@ -1,6 +1,7 @@
 #include "passes/tonemap_pass.h"
 
 #include "passes/fullscreen.h"
+#include "shared/specialization_ids.h"
 #include "shared/tonemap.h"
 
 #include <cmath>
@@ -40,8 +41,11 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
             d.hdr = builder.sample(hdr);
             d.target = builder.write(target, Usage::ColorAttachment, WriteMode::Discard);
             const VkFormat format = builder.desc(target).format;
-            const std::vector<uint32_t> specialization{static_cast<uint32_t>(settings.op), isSrgbFormat(format) ? 0u : 1u,
-                                                       settings.dither ? 1u : 0u, settings.background ? 1u : 0u};
+            const std::vector<uint32_t> specialization =
+                shader::specializationValues({{CANDELA_SPEC_TONEMAP_OPERATOR, static_cast<uint32_t>(settings.op)},
+                                              {CANDELA_SPEC_TONEMAP_ENCODE_SRGB, !isSrgbFormat(format)},
+                                              {CANDELA_SPEC_TONEMAP_DITHER, settings.dither},
+                                              {CANDELA_SPEC_TONEMAP_BACKGROUND, settings.background.has_value()}});
             // The key's last entry selects the program (it is no constant of the shaders).
             std::vector<uint32_t> key = specialization;
             key.push_back(sky ? 1u : 0u);

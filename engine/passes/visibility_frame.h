@@ -6,7 +6,7 @@
 // dispatch. Plain data and pure functions, no Vulkan calls.
 
 #include "passes/draw_list.h"
-#include "passes/forward_variant.h"
+#include "passes/shading_variant.h"
 #include "shared/visibility.h"
 
 #include <vulkan/vulkan_core.h>
@@ -21,11 +21,11 @@ namespace candela::passes {
 // The compute shading's variant of a forward variant: the same specialization constants, less what
 // only rasterization uses (the alpha test and alpha to coverage happen in the visibility pass;
 // blending never reaches it). Draws whose forward variants differ only there share one dispatch.
-ForwardVariant shadingVariant(const ForwardVariant& forward);
+ShadingVariant shadingVariant(const ShadingVariant& forward);
 
 // What one compute dispatch shades: pixels of one shading variant and one texture set.
 struct ShadingList {
-    ForwardVariant variant;
+    ShadingVariant variant;
     uint32_t textureSet = 0;
     uint32_t items = 0;  // draw-list items in it
 };
@@ -39,7 +39,7 @@ struct VisibilityFrameTables {
 
 // The tables of `items` (the opaque and masked ranges of the frame's draw list) drawn with `frame`'s
 // bits; `textureSetOf`, per scene material, its texture set; `vertexOffset`, per scene draw, maps a
-// deformed draw's indices into the deformed vertices (ForwardPass::kRestVertices or empty: the
+// deformed draw's indices into the deformed vertices (kRestVertices or empty: the
 // scene's own). nullopt when the frame needs more than CANDELA_VISIBILITY_MAX_LISTS lists (a
 // quarter of that at 4 samples: each list has a tile list per distinct triangle in a pixel).
 std::optional<VisibilityFrameTables> visibilityFrameTables(std::span<const DrawListItem> items, const MaterialKeys& keys,

@@ -9,7 +9,8 @@
 #include "gpu_scene/gpu_scene.h"
 #include "graph/render_graph.h"
 #include "passes/draw_list.h"
-#include "passes/forward_pass.h"
+#include "passes/draw_target.h"
+#include "passes/frame_inputs.h"
 #include "passes/visibility_texture_sets.h"
 #include "vk/descriptors.h"
 #include "vk/pipeline_cache.h"
@@ -31,14 +32,14 @@ public:
     explicit VisibilityPass(vk::Context& context);
 
     // Writes the scene's descriptor sets (draws, materials; the base colour texture of each of its
-    // texture sets, for masked draws). Preconditions as ForwardPass::setScene; `sets` are the
-    // scene's (textureSetsOf) and outlive their use.
+    // texture sets, for masked draws). Preconditions: the GPU no longer uses the previous scene's
+    // sets; `scene` and `sets` (the scene's, textureSetsOf) outlive their use.
     void setScene(const scene::GpuScene& scene, const TextureSets& sets);
 
     // Adds "visibility": clears new targets of `size` and draws `items` (opaque, then masked) with
-    // `frame`'s view, pose and deformed vertices.
+    // `frame`'s view, pose and deformed vertices, through the draw recorder (draw_recorder.h).
     VisibilityTargets add(graph::RenderGraph& graph, const DrawTargetSize& size, std::span<const DrawListItem> items,
-                          const MaterialKeys& keys, const ForwardPass::FrameInputs& frame, DrawStats* recorded = nullptr);
+                          const MaterialKeys& keys, const FrameInputs& frame, DrawStats* recorded = nullptr);
 
 private:
     struct Variant {

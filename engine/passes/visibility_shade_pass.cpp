@@ -3,8 +3,8 @@
 #include "executor/graph_executor.h"
 #include "passes/clear_pass.h"
 #include "passes/compute.h"
-#include "passes/forward_blocks.h"
-#include "passes/material_set.h"
+#include "passes/scene_bindings.h"
+#include "shared/specialization_ids.h"
 #include "vk/context.h"
 
 #include <algorithm>
@@ -22,13 +22,6 @@ const char* shaderOf(bool layered, bool msaa) {
     return layered ? "visibility_shade_layers.comp" : "visibility_shade.comp";
 }
 
-// `constants` with the tile size (the workgroup size) appended at its constant ids.
-std::vector<uint32_t> withTileSize(std::vector<uint32_t> constants, glm::uvec2 tile) {
-    constants.resize(std::max<size_t>(constants.size(), CANDELA_VISIBILITY_TILE_Y_ID + 1), 0);
-    constants[CANDELA_VISIBILITY_TILE_X_ID] = tile.x;
-    constants[CANDELA_VISIBILITY_TILE_Y_ID] = tile.y;
-    return constants;
-}
 }  // namespace
 
 VisibilityShadePass::VisibilityShadePass(vk::Context& context)
@@ -45,14 +38,15 @@ const vk::Pipeline& VisibilityShadePass::pipeline(const ShadeKey& key) {
     if (key.variant.referenceSamples) throw std::logic_error("VisibilityShadePass: the ground truth is drawn by the forward path");
     return mPipelines.get(mContext, key, [&] {
         std::vector<uint32_t> constants = specializationConstants(key.variant);
-        constants.resize(std::max<size_t>(constants.size(), 19), 0);
-        constants[13] = key.deformed;  // kDeformed, kCoreTextures, kLayerTextures, kDistinct, kSamples (visibility/shade.glsl)
-        constants[14] = key.coreSlots;
-        constants[15] = key.layerSlots;
-        constants[17] = key.distinct;
-        constants[18] = key.variant.samples;
-        return vk::Pipeline::compute(mContext, shaderOf(key.variant.layers != 0, key.variant.samples > 1),
-                                     withTileSize(std::move(constants), mTile));
+        const auto set = [&constants](uint32_t id, uint32_t value) { shader::setSpecialization(constants, id, value); };
+        set(CANDELA_SPEC_DEFORMED, key.deformed);
+        set(CANDELA_SPEC_CORE_TEXTURES, key.coreSlots);
+        set(CANDELA_SPEC_LAYER_TEXTURES, key.layerSlots);
+        set(CANDELA_SPEC_DISTINCT, key.distinct);
+        set(CANDELA_SPEC_SAMPLES, key.variant.samples);
+        set(CANDELA_SPEC_TILE_X, mTile.x);
+        set(CANDELA_SPEC_TILE_Y, mTile.y);
+        return vk::Pipeline::compute(mContext, shaderOf(key.variant.layers != 0, key.variant.samples > 1), constants);
     });
 }
 
@@ -65,11 +59,7 @@ void VisibilityShadePass::setScene(const scene::GpuScene& scene, const MaterialK
     std::vector<bool> coreUse(count, false), layeredUse(count, false);
     for (uint32_t material = 0; material < sets.ofMaterial.size(); ++material)
         (keys[material].layers ? layeredUse : coreUse)[sets.ofMaterial[material]] = true;
-    mSceneSet = vk::DescriptorWriter(core, 0)
-                    .buffer(ForwardBlock<shading::LightData>::name, scene.lightBuffer())
-                    .buffer(ForwardBlock<shading::DrawData>::name, scene.drawBuffer())
-                    .buffer(ForwardBlock<shading::MaterialData>::name, scene.materialBuffer())
-                    .commit(mContext, *mSets);
+    mSceneSet = writeSceneSet(mContext, *mSets, core, sceneBuffersOf(scene));
     mCoreMaterialSets.assign(count, VK_NULL_HANDLE);
     mLayeredMaterialSets.assign(count, VK_NULL_HANDLE);
     for (uint32_t set = 0; set < count; ++set) {
@@ -84,7 +74,7 @@ void VisibilityShadePass::setScene(const scene::GpuScene& scene, const MaterialK
 }
 
 TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
-    const ForwardPass::FrameInputs& frame = *in.frame;
+    const FrameInputs& frame = *in.frame;
     struct Dispatch {
         const vk::Pipeline* pipeline;
         bool layered;
@@ -112,7 +102,8 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
                                            {.width = in.extent.extent.x, .height = in.extent.extent.y, .format = kHdrFormat});
     struct Data {
         TextureId visibility, hdr;
-        BufferId lists, arguments, draws, frame, posedDraws, posedLights, posedMaterials, posedMaterialLayers, deformed;
+        BufferId lists, arguments, draws, frame;
+        DeclaredFrameBuffers buffers;
         IblHandles ibl;
         LayerMaps layers;
     };
@@ -124,14 +115,9 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
             d.arguments = builder.read(in.tiles.arguments, Usage::Indirect);
             d.draws = builder.read(in.draws, Usage::StorageRead);
             d.frame = builder.read(in.frameData, Usage::StorageRead);
-            d.ibl = ForwardIblSet::declare(builder, frame.ibl ? &*frame.ibl : nullptr, kCompute);
-            if (anyLayered) d.layers = ForwardLayerSet::declare(builder, &frame.layerMaps);
-            if (frame.posedDraws.valid()) d.posedDraws = builder.read(frame.posedDraws, Usage::StorageRead);
-            if (frame.posedLights.valid()) d.posedLights = builder.read(frame.posedLights, Usage::StorageRead);
-            if (frame.posedMaterials.valid()) d.posedMaterials = builder.read(frame.posedMaterials, Usage::StorageRead);
-            if (frame.posedMaterialLayers.valid() && anyLayered)
-                d.posedMaterialLayers = builder.read(frame.posedMaterialLayers, Usage::StorageRead);
-            if (frame.deformed.valid()) d.deformed = builder.read(frame.deformed, Usage::StorageRead);
+            d.ibl = IblSet::declare(builder, frame.ibl ? &*frame.ibl : nullptr, kCompute);
+            if (anyLayered) d.layers = LayerMapSet::declare(builder, &frame.layerMaps);
+            d.buffers = declareFrameReads(builder, frame, {.materialLayers = anyLayered, .deformedUsage = Usage::StorageRead});
             d.hdr = builder.write(cleared, Usage::StorageWrite);
         },
         [dispatches = std::move(dispatches), push = frame.push, core = &program(false),
@@ -143,27 +129,13 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
             const VkImageView hdrView = ctx.view(d.hdr);
             // Sets 0 (posed draws, lights and materials: this frame's buffers), 2 and 4 are the same
             // for every variant.
-            const VkDescriptorSet sceneSet =
-                !d.posedDraws.valid() && !d.posedLights.valid() && !d.posedMaterials.valid()
-                    ? staticSceneSet
-                    : vk::DescriptorWriter(*core, 0)
-                          .buffer(ForwardBlock<shading::LightData>::name,
-                                  d.posedLights.valid() ? ctx.buffer(d.posedLights) : scene->lightBuffer())
-                          .buffer(ForwardBlock<shading::DrawData>::name,
-                                  d.posedDraws.valid() ? ctx.buffer(d.posedDraws) : scene->drawBuffer())
-                          .buffer(ForwardBlock<shading::MaterialData>::name,
-                                  d.posedMaterials.valid() ? ctx.buffer(d.posedMaterials) : scene->materialBuffer())
-                          .commit(ctx.context(), ctx.descriptors());
+            const VkDescriptorSet sceneSet = frameSceneSet(ctx, *core, *scene, d.buffers.posed, staticSceneSet);
             // Posed layer data: the layered texture sets' sets 1 name this frame's buffer.
-            std::vector<VkDescriptorSet> posedLayeredSets(d.posedMaterialLayers.valid() ? textureSets->firstMaterial.size() : 0,
-                                                          VK_NULL_HANDLE);
+            PosedMaterialSets posedSets(ctx, *scene, d.buffers.posed.materialLayers, textureSets->firstMaterial.size());
             const auto materialSet = [&](const Dispatch& dispatch) {
-                if (!dispatch.layered || posedLayeredSets.empty()) return dispatch.materialSet;
-                VkDescriptorSet& set = posedLayeredSets[dispatch.textureSet];
-                if (set == VK_NULL_HANDLE)
-                    set = writeMaterialSet(ctx.context(), ctx.descriptors(), *layeredProgram, *scene,
-                                          textureSets->firstMaterial[dispatch.textureSet], ctx.buffer(d.posedMaterialLayers));
-                return set;
+                if (!dispatch.layered) return dispatch.materialSet;
+                return posedSets.get(dispatch.textureSet, true, *layeredProgram,
+                                     textureSets->firstMaterial[dispatch.textureSet], dispatch.materialSet);
             };
             const VkDescriptorSet iblSet = iblSets->write(ctx, *core, d.ibl);
             const VkBuffer vertices = scene->vertexBuffer();
@@ -172,7 +144,7 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
                     .image("visibility", visibilityView, ctx.layout(d.visibility), nearest)
                     .image("shaded", hdrView, ctx.layout(d.hdr))
                     .buffer("Vertices", vertices)
-                    .buffer("DeformedVertices", d.deformed.valid() ? ctx.buffer(d.deformed) : vertices)
+                    .buffer("DeformedVertices", d.buffers.deformed.valid() ? ctx.buffer(d.buffers.deformed) : vertices)
                     .buffer("Indices", scene->indexBuffer())
                     .buffer("VisibilityDraws", ctx.buffer(d.draws))
                     .buffer("TileLists", ctx.buffer(d.lists))
@@ -185,7 +157,7 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
                 vk::memoryBarrier(cmd, kCompute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, kCompute,
                                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
             };
-            shading::ForwardPush constants = push;
+            shading::FramePush constants = push;
             for (uint32_t v = 0; v < dispatches.size(); ++v) {
                 const vk::Pipeline& p = *dispatches[v].pipeline;
                 p.bind(cmd);

@@ -11,9 +11,10 @@
 
 #include "gpu_scene/gpu_scene.h"
 #include "graph/render_graph.h"
-#include "passes/forward_ibl_set.h"
-#include "passes/forward_layer_set.h"
-#include "passes/forward_pass.h"
+#include "passes/ibl_set.h"
+#include "passes/layer_map_set.h"
+#include "passes/draw_target.h"
+#include "passes/frame_inputs.h"
 #include "passes/visibility_classify_pass.h"
 #include "passes/visibility_frame.h"
 #include "passes/visibility_texture_sets.h"
@@ -31,8 +32,9 @@ public:
     explicit VisibilityShadePass(vk::Context& context);
 
     // Writes the scene's descriptor sets (lights, draws, materials; per texture set its textures
-    // and, where a material of it has layers, the layer parameters and textures). Preconditions as
-    // ForwardPass::setScene; `keys` and `sets` are the scene's and outlive their use.
+    // and, where a material of it has layers, the layer parameters and textures: scene_bindings.h).
+    // Preconditions: the GPU no longer uses the previous scene's sets; `scene`, `keys` and `sets`
+    // (the scene's) outlive their use.
     void setScene(const scene::GpuScene& scene, const MaterialKeys& keys, const TextureSets& sets);
 
     struct Inputs {
@@ -42,7 +44,7 @@ public:
         graph::BufferId frameData;    // its shading::VisibilityFrame
         shading::VisibilityFrame extent;
         const VisibilityFrameTables* tables = nullptr;
-        const ForwardPass::FrameInputs* frame = nullptr;
+        const FrameInputs* frame = nullptr;
     };
     // Adds "visibility_clear" and "visibility_shade"; returns the HDR image they write.
     graph::TextureId add(graph::RenderGraph& graph, const Inputs& in);
@@ -52,7 +54,7 @@ public:
     // With MSAA (variant.samples > 1), `distinct`: which distinct triangle of a pixel's samples the
     // pipeline shades (visibility/shade.glsl).
     struct ShadeKey {
-        ForwardVariant variant;
+        ShadingVariant variant;
         uint32_t coreSlots = ~0u, layerSlots = ~0u;
         bool deformed = true;
         uint32_t distinct = 0;
@@ -70,8 +72,8 @@ private:
     glm::uvec2 mTile;  // visibilityTileSize: the dispatches' workgroup size
     vk::PipelineCache<ShadeKey> mPipelines;
     const TextureSets* mTextureSets = nullptr;
-    ForwardIblSet mIblSet;
-    ForwardLayerSet mLayerSet;
+    IblSet mIblSet;
+    LayerMapSet mLayerSet;
     vk::Sampler mNearest;
     std::optional<vk::Program> mCoreProgram, mLayeredProgram;
     const scene::GpuScene* mScene = nullptr;

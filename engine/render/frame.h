@@ -5,11 +5,13 @@
 
 #include "executor/graph_executor.h"
 #include "graph/render_graph.h"
+#include "render/frame_plan.h"
 
 #include <chrono>
 #include <cstring>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,9 +29,11 @@ struct Frame {
     uint32_t precomputeBegin = 0, precomputeEnd = 0;
     // The declared index of the pass computing the sheen LUT (ibl::SheenLut), if the frame added it.
     uint32_t sheenLutPass = graph::kInvalidIndex;
-    // What the tonemap put behind the scene: the sky composited under the image (no skybox pass),
-    // a solid background colour (under a skybox pass's sky, if one ran, it is not seen).
-    bool skyInTonemap = false;
+    // A scene frame's plan (what it draws and where, what it leaves out and why); none for a test
+    // pattern or a calibration frame.
+    std::optional<FramePlan> plan;
+    // Whether the tonemap put a solid background colour behind the scene (under a skybox pass's
+    // sky, if one ran, it is not seen).
     bool solidBackground = false;
     // What --explain says of the frame (variants, lights, IBL, what was left out), besides culled passes.
     std::vector<std::string> notes;

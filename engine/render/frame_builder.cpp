@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 #include "core/log.h"
+#include "render/explain_plan.h"
 #include "shared/tonemap.h"
 #include "vk/context.h"
 #include "vk/pipeline_cache_file.h"
@@ -30,19 +31,6 @@ void FrameBuilder::sceneUploaded() {
     mVisibility.setScene(mScene.gpuScene(), mScene.materialKeys());
 }
 
-std::pair<passes::ShadingPath, std::string> FrameBuilder::shadingPath(passes::ShadingPath requested,
-                                                                      const passes::FrameVariant& variant) const {
-    using passes::ShadingPath;
-    if (requested == ShadingPath::Forward) return {ShadingPath::Forward, ""};
-    if (requested == ShadingPath::Auto) {
-        const auto [path, why] = defaultShadingPath(mContext);
-        if (path == ShadingPath::Forward) return {ShadingPath::Forward, why};
-    }
-    if (!mVisibility.unsupported().empty()) return {ShadingPath::Forward, mVisibility.unsupported()};
-    if (const std::string why = mVisibility.frameUnsupported(variant); !why.empty()) return {ShadingPath::Forward, why};
-    return {ShadingPath::Visibility, ""};
-}
-
 vk::MsaaChoice FrameBuilder::msaa(std::optional<uint32_t> requested) const {
     return vk::chooseMsaa(mContext.properties().deviceType, mContext.attachmentSampleCounts(), requested);
 }
@@ -66,15 +54,11 @@ passes::IblHandles FrameBuilder::addIblMaps(Frame& frame, bool reference) {
     return maps;
 }
 
-std::optional<passes::ForwardPass::DeformedVertices> FrameBuilder::addSkinMorph(Frame& frame, const scene::ScenePose& pose,
-                                                                                bool disabled) {
+std::optional<passes::DeformedVertices> FrameBuilder::addSkinMorph(Frame& frame, const FramePlan& plan, const FrameFacts& facts,
+                                                                   passes::SkinMorphFrame& work) {
+    for (const std::string& line : explainLeftOut(plan, facts, {PlannedPart::SkinMorph})) frame.notes.push_back(line);
+    if (plan.deform != DeformPlan::Deformed && plan.deform != DeformPlan::Disabled) return std::nullopt;
     const scene::GpuScene& gpuScene = mScene.gpuScene();
-    if (gpuScene.scene().deformations.empty()) return std::nullopt;  // a static scene: its graph stays as it was
-    passes::SkinMorphFrame work = passes::skinMorphFrame(gpuScene, pose);
-    if (work.jobs.empty()) {
-        frame.notes.emplace_back("left out: skin_morph (no draw is skinned or has a non-zero morph weight in this pose)");
-        return std::nullopt;
-    }
     const passes::SkinMorphPass::Inputs inputs{.scene = &gpuScene,
                                                .jobs = work.jobs,
                                                .vertexCount = work.vertexCount,
@@ -84,18 +68,15 @@ std::optional<passes::ForwardPass::DeformedVertices> FrameBuilder::addSkinMorph(
                           " morph targets with a non-zero weight, " + std::to_string(work.vertexCount) + " vertices (" +
                           formatBytes(uint64_t(work.vertexCount) * sizeof(scene::Vertex)) + " per frame in flight)");
     const BufferId vertices = mSkinMorph.add(*frame.graph, inputs);
-    if (disabled) {
-        frame.notes.push_back("left out: the " + std::to_string(work.jobs.size()) +
-                              " deformed draws (skin_morph disabled: nothing places their vertices)");
-        return std::nullopt;
-    }
-    return passes::ForwardPass::DeformedVertices{.vertices = vertices, .vertexOffset = std::move(work.vertexOffset)};
+    for (const std::string& line : explainLeftOut(plan, facts, {PlannedPart::DeformedDraws})) frame.notes.push_back(line);
+    if (plan.deform == DeformPlan::Disabled) return std::nullopt;
+    return passes::DeformedVertices{.vertices = vertices, .vertexOffset = std::move(work.vertexOffset)};
 }
 
-passes::ForwardPass::PosedDraws FrameBuilder::addPosedDraws(Frame& frame, const scene::Scene& scene,
+passes::PosedBuffers FrameBuilder::addPosedDraws(Frame& frame, const scene::Scene& scene,
                                                             const scene::ScenePose& pose) {
-    passes::ForwardPass::PosedDraws posed;
-    if (pose.movesNodes()) posed.data = frame.addHostUpload("posed_draws", bytesOf(scene::drawDataOf(scene, pose.draws())));
+    passes::PosedBuffers posed;
+    if (pose.movesNodes()) posed.draws = frame.addHostUpload("posed_draws", bytesOf(scene::drawDataOf(scene, pose.draws())));
     const scene::GpuScene& gpuScene = mScene.gpuScene();
     if ((!pose.animatedLights().empty() || !pose.animatedLightProperties().empty()) && mScene.sceneLightsUsed()) {
         // The lights as the buffer holds them (the user's edits included), moved where the pose puts
@@ -146,12 +127,12 @@ passes::ForwardPass::PosedDraws FrameBuilder::addPosedDraws(Frame& frame, const 
     return posed;
 }
 
-std::optional<passes::ForwardPass::Ibl> FrameBuilder::addIbl(Frame& frame, const RenderSettings& settings) {
+std::optional<passes::IblInputs> FrameBuilder::addIbl(Frame& frame, const RenderSettings& settings) {
     const ibl::IblMaps& maps = mScene.iblMaps();
     if (!maps.hasEnvironment()) return std::nullopt;
     const float theta = glm::radians(settings.ibl.rotationDegrees);
     const float maxLod = float(maps.specularLevels() - 1);
-    return passes::ForwardPass::Ibl{.maps = addIblMaps(frame, settings.ibl.referenceSamples > 0),
+    return passes::IblInputs{.maps = addIblMaps(frame, settings.ibl.referenceSamples > 0),
                                     .params = {.rotation = glm::vec4(std::cos(theta), std::sin(theta), 0.0f, 0.0f),
                                                .intensity = settings.ibl.intensity,
                                                .maxLod = maxLod,
@@ -175,6 +156,29 @@ passes::TonemapSettings FrameBuilder::tonemapOf(const RenderSettings& settings, 
     return tonemap;
 }
 
+FrameFacts FrameBuilder::facts(const RenderSettings& settings, uint32_t samples) const {
+    const auto disabled = [&](std::string_view pass) {
+        return std::find(settings.disabledPasses.begin(), settings.disabledPasses.end(), pass) != settings.disabledPasses.end();
+    };
+    const bool environment = mScene.iblMaps().hasEnvironment();
+    const auto [devicePath, devicePathReason] = defaultShadingPath(mContext);
+    return {.requestedPath = settings.shadingPath,
+            .debugView = settings.debugView,
+            .skyboxWanted = settings.ibl.skybox,
+            .floatOutput = settings.floatOutput,
+            .groundTruth = environment && settings.ibl.referenceSamples > 0,
+            .samples = samples,
+            .skyboxDisabled = disabled("skybox"),
+            .transmissionBackgroundDisabled = disabled("transmission_background"),
+            .skinMorphDisabled = disabled("skin_morph"),
+            .environment = environment,
+            .sheen = mScene.hasSheen(),
+            .devicePath = devicePath,
+            .devicePathReason = devicePathReason,
+            .visibilityUnsupported = mVisibility.unsupported(),
+            .integerMsaaSampling = mVisibility.samplesIntegerImages(samples)};
+}
+
 void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std::optional<TextureId> target) {
     RenderGraph& graph = *frame.graph;
     const vk::MsaaChoice msaa = this->msaa(settings.msaa);
@@ -187,11 +191,17 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     const scene::ScenePose* pose = settings.pose ? settings.pose : mScene.restPose();
     const scene::ViewSetup view = resolveView(scene, settings.camera, aspect, pose);
     frame.notes.push_back("camera: " + cameraFlags(scene, settings.camera, aspect, pose));
-    const auto disabled = [&](std::string_view pass) {
-        return std::find(settings.disabledPasses.begin(), settings.disabledPasses.end(), pass) != settings.disabledPasses.end();
-    };
-    const bool deformOff = pose && disabled("skin_morph");
-    const auto deformed = pose ? addSkinMorph(frame, *pose, deformOff) : std::nullopt;
+
+    // The facts the plan decides from: the settings, the device, the pose's deformed draws and
+    // the draw list's ranges.
+    FrameFacts facts = this->facts(settings, msaa.samples);
+    passes::SkinMorphFrame work;
+    if (pose && !scene.deformations.empty()) {
+        work = passes::skinMorphFrame(mScene.gpuScene(), *pose);
+        facts.deformable = true;
+        facts.deformedDraws = static_cast<uint32_t>(work.jobs.size());
+    }
+    const bool deformOff = pose && facts.skinMorphDisabled;
     const bool animated = pose && pose->animated();
     // Without skin_morph the skinned and morphed draws have no vertices to draw: they are left out.
     std::span<const scene::Draw> draws = animated ? std::span(pose->draws()) : std::span(scene.draws);
@@ -205,19 +215,6 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
         }
         draws = undeformed;
     }
-    const auto posed = animated ? std::optional(addPosedDraws(frame, scene, *pose)) : std::nullopt;
-    const std::optional<passes::ForwardPass::Ibl> ibl = addIbl(frame, settings);
-    // The material layers' maps: the sheen LUT (computed once) and, with an environment, the sheen cube.
-    std::optional<passes::LayerMaps> layerMaps;
-    if (mScene.hasSheen()) {
-        const auto declared = static_cast<uint32_t>(graph.declaration().passes.size());
-        layerMaps = passes::LayerMaps{.sheenLut = mScene.sheenLut().addToGraph(graph, frame.imports),
-                                      .sheenCube = ibl ? ibl->maps.sheen : TextureId{}};
-        if (graph.declaration().passes.size() > declared) frame.sheenLutPass = declared;  // not computed yet
-    }
-    mParameters.beginFrame();
-    mScene.applyParameters(mParameters, mForward.reflection(), mForward.layeredReflection());
-
     // Debug views show data, not what lies behind: transmissive draws are then drawn with the rest.
     passes::DrawList list = passes::buildDrawList({.scene = scene,
                                                    .keys = mScene.materialKeys(),
@@ -227,91 +224,116 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
                                                    .selection = settings.drawSelection,
                                                    .transmission = settings.debugView == passes::DebugView::None});
     list.hiddenDraws -= leftOut;  // their own note says why (addSkinMorph)
-    const passes::ForwardPass::FrameInputs inputs = mForward.frameInputs({.view = view,
-                                                                          .model = settings.shading,
-                                                                          .ibl = ibl ? &*ibl : nullptr,
-                                                                          .debugView = settings.debugView,
-                                                                          .shading = settings.shadingOptions,
-                                                                          .samples = msaa.samples,
-                                                                          .posed = posed ? &*posed : nullptr,
-                                                                          .deformed = deformed ? &*deformed : nullptr,
-                                                                          .layerMaps = layerMaps ? &*layerMaps : nullptr,
-                                                                          .parameters = &mParameters});
+    facts.transmissiveDraws = !list.empty(passes::DrawRange::Transmissive);
+    facts.blendedDraws = !list.empty(passes::DrawRange::Blended);
+    FramePlan plan = planFrame(facts);
+
+    const auto deformed = addSkinMorph(frame, plan, facts, work);
+    const auto posed = animated ? std::optional(addPosedDraws(frame, scene, *pose)) : std::nullopt;
+    const std::optional<passes::IblInputs> ibl = addIbl(frame, settings);
+    // The material layers' maps: the sheen LUT (computed once) and, with an environment, the sheen cube.
+    std::optional<passes::LayerMaps> layerMaps;
+    if (plan.sheenLut) {
+        const auto declared = static_cast<uint32_t>(graph.declaration().passes.size());
+        layerMaps = passes::LayerMaps{.sheenLut = mScene.sheenLut().addToGraph(graph, frame.imports),
+                                      .sheenCube = ibl ? ibl->maps.sheen : TextureId{}};
+        if (graph.declaration().passes.size() > declared) frame.sheenLutPass = declared;  // not computed yet
+    }
+    mParameters.beginFrame();
+    mScene.applyParameters(mParameters, mForward.reflection(), mForward.layeredReflection());
+    passes::FrameInputs inputs = passes::makeFrameInputs({.view = view,
+                                                          .model = settings.shading,
+                                                          .ibl = ibl ? &*ibl : nullptr,
+                                                          .debugView = settings.debugView,
+                                                          .shading = settings.shadingOptions,
+                                                          .samples = msaa.samples,
+                                                          .posed = posed ? &*posed : nullptr,
+                                                          .deformed = deformed ? &*deformed : nullptr,
+                                                          .layerMaps = layerMaps ? &*layerMaps : nullptr},
+                                                         mScene.gpuScene(), mContext.alphaToOne());
+    // The user's values for the forward programs' push constants, which both paths push.
+    mParameters.apply("forward", "Push", mForward.reflection().pushConstants.members, inputs.push);
     // The variants the scene needs now, compiled on the workers and here while the draws ask for
     // them (not one after the other at each first draw); in the viewer, the debug views' after —
     // from the next frame with the same bits on, so that they do not slow the frame that compiles.
     const bool changed = settings.precompile != passes::Precompile::Off && mForward.prepare(inputs.variant);
     if (settings.precompile == passes::Precompile::DebugViews && !changed) mForward.prepareDebugViews(inputs.variant);
     mStats = list.stats;
-    const bool skybox = ibl && settings.ibl.skybox && settings.debugView == passes::DebugView::None;
-    const bool transmission = !list.empty(passes::DrawRange::Transmissive);
-    const passes::DrawTargetSize size{settings.width, settings.height, msaa.samples};
-    auto [path, pathReason] = shadingPath(settings.shadingPath, inputs.variant);
-    std::optional<passes::DrawTarget> visible;
-    if (path == passes::ShadingPath::Visibility)
-        visible = mVisibility.add(frame, {.size = size, .list = list, .keys = mScene.materialKeys(), .inputs = inputs, .recorded = &mStats},
-                                  frame.notes);
-    else
-        frame.notes.push_back(std::string("shading path: forward") + (pathReason.empty() ? "" : " (" + pathReason + ")"));
-    // The sky: composited under the image by the tonemap (one full-screen pass fewer), unless the
-    // transmissive draws must see it or the HDR image is the output (then the skybox pass draws it
-    // into the HDR image). Switching the skybox pass off (--disable-pass skybox, the viewer's
-    // toggle) still switches the sky off: the pass is then declared, to be disabled.
-    // Switching transmission_background off leaves the transmissive draws without the opaque image
-    // to see through: they are drawn over it, reading a placeholder (black, coverage 0), so what they
-    // let through is what the tonemap composites where coverage is below 1 — the sky or the
-    // background colour, not the scene behind them (the pass is declared, to be disabled).
-    const bool skyboxDisabled = disabled("skybox");
-    const bool seesOpaqueImage = transmission && !disabled("transmission_background");
-    const bool skyInTonemap = skybox && !seesOpaqueImage && !settings.floatOutput && !skyboxDisabled;
-    passes::DrawTarget drawn;
+
+    // The visibility path's shading lists are known once the frame's variant is: a frame that
+    // needs more than a tile's mask holds is planned again, on the forward path.
+    const VisibilityPath::FrameDesc visibility{.size = {settings.width, settings.height, msaa.samples},
+                                               .list = list,
+                                               .keys = mScene.materialKeys(),
+                                               .inputs = inputs,
+                                               .recorded = &mStats};
+    std::optional<passes::VisibilityFrameTables> tables;
+    if (plan.path == passes::ShadingPath::Visibility && !(tables = mVisibility.tables(visibility))) {
+        facts.shadingListsFit = false;
+        plan = planFrame(facts);
+    }
+    const passes::DrawTarget drawn = addDraws(frame, plan, facts, visibility, tables ? &*tables : nullptr, view, ibl ? &*ibl : nullptr);
+    frame.hdr = drawn.hdr;
+    addTonemap(frame, settings, plan, target, view, ibl ? &*ibl : nullptr);
+    addNotes(frame, settings, msaa, mForward.describe(list, inputs, settings.drawSelection), plan, facts);
+    frame.plan = std::move(plan);
+}
+
+passes::DrawTarget FrameBuilder::addDraws(Frame& frame, const FramePlan& plan, const FrameFacts& facts,
+                                          const VisibilityPath::FrameDesc& desc, const passes::VisibilityFrameTables* tables,
+                                          const scene::ViewSetup& view, const passes::IblInputs* ibl) {
+    RenderGraph& graph = *frame.graph;
     const auto addSkybox = [&](const passes::DrawTarget& over) {
         return mSkybox.add(graph, view, {.target = over, .specular = ibl->maps.specular, .params = ibl->params}, &mParameters);
     };
-    if (visible) {
-        drawn = *visible;
+    const bool skyboxPass = plan.sky == SkyPlacement::SkyboxPass;
+    passes::DrawTarget drawn;
+    if (plan.path == passes::ShadingPath::Visibility) {
+        drawn = mVisibility.add(frame, desc, *tables, frame.notes);
         // The image is resolved already: the sky goes under it without a depth test.
-        if (skybox && !skyInTonemap) {
+        if (skyboxPass) {
+            const TextureId depth = drawn.depth;
             drawn = addSkybox({.color = drawn.color, .hdr = drawn.hdr});
-            drawn.depth = visible->depth;
+            drawn.depth = depth;
         }
-        // At MSAA, blended and transmissive draws need an image at the frame's sample count.
-        if (size.samples > 1 && (transmission || !list.empty(passes::DrawRange::Blended))) drawn = mExpand.add(graph, drawn);
-        if (!transmission && !list.empty(passes::DrawRange::Blended)) drawn = mForward.addBlended(graph, drawn, list, inputs, &mStats);
+        if (plan.msaaExpand) drawn = mExpand.add(graph, drawn);
+        if (plan.blendedPass) drawn = mForward.addBlended(graph, drawn, desc.list, desc.inputs, desc.recorded);
     } else {
-        drawn = mForward.addOpaque(graph, size, list, inputs, &mStats);
-        if (skybox && !skyInTonemap) drawn = addSkybox(drawn);
+        frame.notes.push_back(explainForwardPath(plan, facts));
+        drawn = mForward.addOpaque(graph, desc.size, desc.list, desc.inputs, desc.recorded);
+        if (skyboxPass) drawn = addSkybox(drawn);
     }
     // Transmissive draws over the opaque image (sky included), which they see through.
-    if (transmission) {
+    if (plan.transmission != TransmissionPlan::None) {
         const TextureId background = mTransmissionBackground.add(graph, drawn.hdr);
-        drawn = mForward.addTransmissive(graph, drawn, seesOpaqueImage ? background : TextureId{}, list, inputs, &mStats);
+        drawn = mForward.addTransmissive(graph, drawn, plan.transmission == TransmissionPlan::SeesOpaqueImage ? background : TextureId{},
+                                         desc.list, desc.inputs, desc.recorded);
     }
-    frame.hdr = drawn.hdr;
+    return drawn;
+}
+
+void FrameBuilder::addTonemap(Frame& frame, const RenderSettings& settings, const FramePlan& plan, std::optional<TextureId> target,
+                              const scene::ViewSetup& view, const passes::IblInputs* ibl) {
+    RenderGraph& graph = *frame.graph;
     // UNORM target: the tonemap shader encodes sRGB itself, which also lets it dither.
     const TextureId ldr = target ? *target
                                  : graph.createTexture("ldr", {.width = settings.width,
                                                                .height = settings.height,
                                                                .format = VK_FORMAT_R8G8B8A8_UNORM});
     std::optional<passes::TonemapPass::Sky> sky;
-    if (skyInTonemap)
+    if (plan.sky == SkyPlacement::Tonemap)
         sky = passes::TonemapPass::Sky{
             .specular = ibl->maps.specular,
             .params = {.inverseViewProjection = glm::inverse(view.viewProjection),
                        .eyeIntensity = glm::vec4(view.eye, ibl->params.intensity),
                        .rotationLod = glm::vec4(ibl->params.rotation.x, ibl->params.rotation.y, ibl->params.skyboxLod, 0.0f)}};
-    const passes::TonemapSettings tonemap = tonemapOf(settings, ibl.has_value());
-    frame.skyInTonemap = skyInTonemap;
+    const passes::TonemapSettings tonemap = tonemapOf(settings, ibl != nullptr);
     frame.solidBackground = tonemap.background.has_value();
     frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemap, &mParameters, sky ? &*sky : nullptr);
-
-    addNotes(frame, settings, msaa, mForward.describe(list, inputs, settings.drawSelection),
-             {.sheenLut = layerMaps.has_value(), .transmission = transmission, .seesOpaqueImage = seesOpaqueImage,
-              .ibl = ibl.has_value(), .skybox = skybox, .skyInTonemap = skyInTonemap});
 }
 
 void FrameBuilder::addNotes(Frame& frame, const RenderSettings& settings, const vk::MsaaChoice& msaa,
-                            std::vector<std::string> forward, const Scheduled& scheduled) {
+                            std::vector<std::string> forward, const FramePlan& plan, const FrameFacts& facts) {
     std::vector<std::string>& notes = frame.notes;
     if (!mScene.sceneLightsUsed() && !settings.scene->lights.empty())
         notes.emplace_back("left out: the scene's " + std::to_string(settings.scene->lights.size()) +
@@ -330,31 +352,7 @@ void FrameBuilder::addNotes(Frame& frame, const RenderSettings& settings, const 
                     passes::precompileName(settings.precompile) + ")");
     notes.push_back("pipeline cache: " + mContext.pipelineCacheFile().status());
     for (const std::string& line : mScene.iblMaps().explanation()) notes.push_back(line);
-    if (scheduled.sheenLut)
-        notes.emplace_back(mScene.sheenLut().computed() ? "sheen LUT: imported (computed by an earlier frame)"
-                                                        : "sheen LUT: computed by this frame's ibl_sheen_lut pass (once per run)");
-    else
-        notes.emplace_back("left out: sheen LUT (no material has a sheen)");
-    const passes::DebugView debugView = settings.debugView;
-    if (scheduled.transmission && !scheduled.seesOpaqueImage)
-        notes.emplace_back("transmission: 'transmission_background' disabled: 'forward_transmission' draws the transmissive "
-                           "and blended draws over the opaque image without seeing it (they let through only the background "
-                           "the tonemap composites: the sky or the background colour)");
-    else if (scheduled.transmission)
-        notes.emplace_back("transmission: 'transmission_background' copies the opaque image into a mip chain; "
-                           "'forward_transmission' draws the transmissive and blended draws over it");
-    else
-        notes.emplace_back(debugView != passes::DebugView::None
-                               ? "left out: transmission background (debug view: transmissive draws show data)"
-                               : "left out: transmission background (no transmissive material in the frame)");
-    if (debugView != passes::DebugView::None)
-        notes.push_back(std::string("debug view: ") + passes::debugViewName(debugView) +
-                        (passes::debugViewIsLight(debugView) ? " (tonemapped as the image is)"
-                                                             : " (shown as data: linear tonemap at exposure 0)"));
-    if (scheduled.skyInTonemap) notes.emplace_back("sky: composited under the image by the tonemap (no skybox pass)");
-    if (scheduled.ibl && !scheduled.skybox)
-        notes.emplace_back(debugView != passes::DebugView::None ? "left out: skybox (debug view)"
-                                                                : "left out: skybox (the background is not the environment)");
+    for (std::string& line : explainPasses(plan, facts, mScene.sheenLut().computed())) notes.push_back(std::move(line));
 }
 
 scene::OrbitCamera FrameBuilder::orbitCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,

@@ -1,6 +1,9 @@
 #pragma once
 // FrameBuilder: declares a frame's passes into its graph from the frame's settings and the scene
 // state, and says what it left out and why (Frame::notes, for --explain). Owns the frame passes.
+// A scene frame is built in three steps: the facts (settings, device, pose, draw list) → the plan
+// (frame_plan.h: a pure function, unit-tested) → the plan's passes declared, and its --explain
+// lines (explain_plan.h) placed beside the passes' own.
 //
 // Scene frame:   [skin_morph] → [IBL precompute, when the maps are pending] → forward (HDR + depth)
 //                → [skybox] → [transmission_background → forward_transmission] → tonemap (8-bit);
@@ -21,6 +24,7 @@
 #include "passes/tonemap_pass.h"
 #include "passes/transmission_background_pass.h"
 #include "render/frame.h"
+#include "render/frame_plan.h"
 #include "render/render_settings.h"
 #include "render/scene_state.h"
 #include "render/visibility_path.h"
@@ -75,33 +79,36 @@ public:
                                    const scene::ScenePose* pose = nullptr);
 
 private:
-    // The shading path of a frame of `variant` asked for `requested`: Visibility or Forward, and
-    // why (for --explain; "" when the request was followed without a reason to give).
-    std::pair<passes::ShadingPath, std::string> shadingPath(passes::ShadingPath requested,
-                                                            const passes::FrameVariant& variant) const;
-    // Adds the skin_morph pass for the pose's deformed draws; nullopt (and a note) when none is, or
-    // when the pass is `disabled` (--disable-pass skin_morph: it is declared, to be switched off, and
-    // the caller leaves the deformed draws out of the frame).
-    std::optional<passes::ForwardPass::DeformedVertices> addSkinMorph(Frame& frame, const scene::ScenePose& pose, bool disabled);
+    // The facts of a frame of `settings` at `samples` samples that the settings, the device and the
+    // scene state give (FrameFacts; buildScene adds the pose's and the draw list's).
+    FrameFacts facts(const RenderSettings& settings, uint32_t samples) const;
+    // Adds the skin_morph pass for the pose's deformed draws (`work`) as `plan` says, with its notes;
+    // the deformed vertices, or nullopt when nothing is deformed or the pass is disabled (it is then
+    // declared, to be switched off, and the deformed draws are left out of the frame).
+    std::optional<passes::DeformedVertices> addSkinMorph(Frame& frame, const FramePlan& plan, const FrameFacts& facts,
+                                                         passes::SkinMorphFrame& work);
     // The per-frame buffers of an animated pose — the posed draws (a node moves), lights (a light
     // moves, shows, hides or has an animated property) and materials (and their layer data) with
     // animated properties — each only when something it holds animates; and a note for --explain
     // when the pose animates properties (KHR_animation_pointer).
-    passes::ForwardPass::PosedDraws addPosedDraws(Frame& frame, const scene::Scene& scene, const scene::ScenePose& pose);
-    // The IBL inputs of the forward pass, when the maps have an environment.
-    std::optional<passes::ForwardPass::Ibl> addIbl(Frame& frame, const RenderSettings& settings);
+    passes::PosedBuffers addPosedDraws(Frame& frame, const scene::Scene& scene, const scene::ScenePose& pose);
+    // The IBL inputs of the draws, when the maps have an environment.
+    std::optional<passes::IblInputs> addIbl(Frame& frame, const RenderSettings& settings);
+    // Declares the plan's draw passes of `desc`'s list: the shading path's (with the visibility
+    // path's `tables`), the skybox, the MSAA expansion, the blended and the transmissive draws.
+    // Returns the targets drawn last.
+    passes::DrawTarget addDraws(Frame& frame, const FramePlan& plan, const FrameFacts& facts, const VisibilityPath::FrameDesc& desc,
+                                const passes::VisibilityFrameTables* tables, const scene::ViewSetup& view,
+                                const passes::IblInputs* ibl);
+    // Adds the tonemap of frame.hdr into `target` (or a new "ldr"), with the sky where the plan puts it there.
+    void addTonemap(Frame& frame, const RenderSettings& settings, const FramePlan& plan, std::optional<graph::TextureId> target,
+                    const scene::ViewSetup& view, const passes::IblInputs* ibl);
     // The tonemap's settings for the frame (debug views: data shown linearly, grey background).
     passes::TonemapSettings tonemapOf(const RenderSettings& settings, bool ibl) const;
-    // What the scene frame added besides the forward draws.
-    struct Scheduled {
-        bool sheenLut = false, transmission = false;
-        bool seesOpaqueImage = false;  // the transmissive draws read transmission_background (it is not disabled)
-        bool ibl = false, skybox = false, skyInTonemap = false;
-    };
-    // Adds the frame's notes: lights, MSAA, the forward passes' `forward` lines, the maps, sheen LUT,
-    // transmission, debug view and skybox.
+    // Adds the frame's notes: lights, MSAA, the forward passes' `forward` lines, the pipelines, the
+    // maps, and the plan's (explain_plan.h).
     void addNotes(Frame& frame, const RenderSettings& settings, const vk::MsaaChoice& msaa, std::vector<std::string> forward,
-                  const Scheduled& scheduled);
+                  const FramePlan& plan, const FrameFacts& facts);
 
     vk::Context& mContext;
     SceneState& mScene;

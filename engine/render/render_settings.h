@@ -8,7 +8,7 @@
 #include "ibl/ibl_settings.h"
 #include "passes/debug_view.h"
 #include "passes/draw_selection.h"
-#include "passes/forward_variant.h"
+#include "passes/shading_variant.h"
 #include "passes/precompile.h"
 #include "passes/shading_path.h"
 #include "passes/tonemap_pass.h"

@@ -211,7 +211,7 @@ Renderer::Background Renderer::lastBackground() const {
     const std::optional<uint32_t> skybox = frame.graph->findPass("skybox");
     const bool skyboxRan = skybox && frame.graph->isCompiled() &&
                            frame.graph->compiled().passes[*skybox].cullReason == CullReason::None;
-    if (frame.skyInTonemap || skyboxRan) return Background::Sky;
+    if ((frame.plan && frame.plan->sky == SkyPlacement::Tonemap) || skyboxRan) return Background::Sky;
     return frame.solidBackground ? Background::Colour : Background::Transparent;
 }
 

@@ -155,6 +155,9 @@ public:
     static std::vector<scene::Light> defaultLights() { return SceneState::defaultLights(); }
     // Which passes and variants the last frame left out and why (`--explain`).
     std::vector<std::string> explain() const;
+    // The plan of the last frame (what it draws where, what it leaves out and why); null when the
+    // last frame was no scene frame.
+    const FramePlan* lastPlan() const { return mRunner.last().plan ? &*mRunner.last().plan : nullptr; }
     // What the last frame drew behind the scene: the sky (a skybox pass that ran, or composited by
     // the tonemap), the tonemap's solid background colour, or nothing (alpha = coverage).
     enum class Background { Sky, Colour, Transparent };

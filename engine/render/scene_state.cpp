@@ -1,7 +1,7 @@
 #include "render/scene_state.h"
 
 #include "core/log.h"
-#include "passes/forward_blocks.h"
+#include "passes/scene_blocks.h"
 #include "vk/check.h"
 #include "vk/context.h"
 
@@ -23,8 +23,8 @@ bool anySheen(const scene::Scene& scene) {
 template <class T, class Edited>
 void applyElements(shader::ParameterRegistry& parameters, const shader::ShaderReflection& reflection, std::vector<T>& items,
                    Edited&& edited) {
-    const std::span<const shader::BlockMember> members = passes::forwardBlockElement<T>(reflection);
-    const std::string prefix = std::string(passes::ForwardBlock<T>::name) + "[";
+    const std::span<const shader::BlockMember> members = passes::sceneBlockElement<T>(reflection);
+    const std::string prefix = std::string(passes::SceneBlock<T>::name) + "[";
     for (size_t i = 0; i < items.size(); ++i)
         if (edited(i)) parameters.apply("forward", prefix + std::to_string(i) + "]", members, items[i]);
 }

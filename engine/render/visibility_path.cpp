@@ -34,28 +34,23 @@ std::pair<passes::ShadingPath, std::string> defaultShadingPath(const vk::Context
     return {passes::ShadingPath::Forward, "the device's default: the visibility path is not yet measured on GPUs"};
 }
 
-std::string VisibilityPath::frameUnsupported(const passes::FrameVariant& frame) const {
-    if (frame.referenceSamples) return "the ground truth of ibl-report is a forward program";
-    if (frame.samples == 1) return {};
-    if (!(mContext.caps().limits.sampledImageIntegerSampleCounts & frame.samples))
-        return "the device cannot sample a " + std::to_string(frame.samples) + "-sample integer image (the visibility image)";
-    return {};
+bool VisibilityPath::samplesIntegerImages(uint32_t samples) const {
+    return samples == 1 || (mContext.caps().limits.sampledImageIntegerSampleCounts & samples) != 0;
 }
 
-std::optional<passes::DrawTarget> VisibilityPath::add(Frame& frame, const FrameDesc& desc, std::vector<std::string>& notes) {
+std::optional<passes::VisibilityFrameTables> VisibilityPath::tables(const FrameDesc& desc) const {
     const std::span<const passes::DrawListItem> items = desc.list.ranges(passes::DrawRange::Opaque, passes::DrawRange::Masked);
-    const std::optional<passes::VisibilityFrameTables> tables =
-        passes::visibilityFrameTables(items, desc.keys, mTextureSets.ofMaterial, desc.inputs.variant, desc.inputs.vertexOffset);
-    if (!tables) {
-        notes.push_back("shading path: forward (the frame needs more than " + std::to_string(CANDELA_VISIBILITY_MAX_LISTS) +
-                        " shading lists, the visibility path's limit)");
-        return std::nullopt;
-    }
+    return passes::visibilityFrameTables(items, desc.keys, mTextureSets.ofMaterial, desc.inputs.variant, desc.inputs.vertexOffset);
+}
+
+passes::DrawTarget VisibilityPath::add(Frame& frame, const FrameDesc& desc, const passes::VisibilityFrameTables& tables,
+                                       std::vector<std::string>& notes) {
+    const std::span<const passes::DrawListItem> items = desc.list.ranges(passes::DrawRange::Opaque, passes::DrawRange::Masked);
     graph::RenderGraph& graph = *frame.graph;
     const shading::VisibilityFrame extent =
         passes::visibilityExtent(desc.size.width, desc.size.height, passes::visibilityTileSize(mContext.properties().deviceType),
-                                 static_cast<uint32_t>(tables->lists.size()), desc.size.samples);
-    std::vector<shading::VisibilityDraw> draws = tables->draws;
+                                 static_cast<uint32_t>(tables.lists.size()), desc.size.samples);
+    std::vector<shading::VisibilityDraw> draws = tables.draws;
     if (draws.empty()) draws.emplace_back();  // a buffer is never empty
     const graph::BufferId drawBuffer = frame.addHostUpload("visibility_draws", bytesOf(draws));
     const graph::BufferId frameData = frame.addHostUpload("visibility_frame", bytesOf(std::vector{extent}));
@@ -66,7 +61,7 @@ std::optional<passes::DrawTarget> VisibilityPath::add(Frame& frame, const FrameD
                                                     .draws = drawBuffer,
                                                     .frameData = frameData,
                                                     .extent = extent,
-                                                    .tables = &*tables,
+                                                    .tables = &tables,
                                                     .frame = &desc.inputs});
     std::string line = "shading path: visibility — " + std::to_string(items.size()) + " opaque and masked draws into a " +
                        std::to_string(desc.size.width) + "×" + std::to_string(desc.size.height) +
@@ -74,7 +69,7 @@ std::optional<passes::DrawTarget> VisibilityPath::add(Frame& frame, const FrameD
                        " visibility image, classified in " + std::to_string(extent.extent.w) + " tiles of " +
                        std::to_string(extent.lists.z) + "×" + std::to_string(extent.lists.w) +
                        "; one compute dispatch per shading list (variant × texture set):";
-    for (const passes::ShadingList& list : tables->lists)
+    for (const passes::ShadingList& list : tables.lists)
         line += " " + list.variant.name() + "/textures" + std::to_string(list.textureSet) + " ×" + std::to_string(list.items);
     if (desc.size.samples > 1)
         line += "; then, on triangle edges, each further distinct triangle of a pixel's samples (the resolve in the shading)";

@@ -25,28 +25,30 @@ class VisibilityPath {
 public:
     explicit VisibilityPath(vk::Context& context);
 
-    // Binds the scene, or records why it cannot take the path (sceneUnsupported()). Preconditions
-    // as ForwardPass::setScene.
+    // Binds the scene, or records why it cannot take the path (sceneUnsupported()). Preconditions:
+    // the GPU no longer uses the previous scene's sets; `scene` and `keys` outlive their use.
     void setScene(const scene::GpuScene& scene, const passes::MaterialKeys& keys);
     // Why frames of the current scene cannot take the path ("" if they can): the device's reason,
     // or the scene's (its vertices or indices past maxStorageBufferRange).
     const std::string& unsupported() const { return mUnsupported; }
-    // Why a frame of these bits cannot ("" if it can): the ground truth (ibl-report) is a
-    // forward program; an MSAA frame needs the device to sample integer images at its sample count.
-    std::string frameUnsupported(const passes::FrameVariant& frame) const;
+    // Whether the device samples integer images (the visibility image) at `samples` samples.
+    bool samplesIntegerImages(uint32_t samples) const;
 
     struct FrameDesc {
         passes::DrawTargetSize size;
         const passes::DrawList& list;
         const passes::MaterialKeys& keys;
-        const passes::ForwardPass::FrameInputs& inputs;
+        const passes::FrameInputs& inputs;
         passes::DrawStats* recorded = nullptr;
     };
-    // Adds the path's passes for the list's opaque and masked draws: the shaded image (transparent
-    // behind) and the depth, as targets the forward and skybox passes can draw over. nullopt (and
-    // nothing added) when the frame needs more shading lists than a tile's mask holds; `notes` gets
-    // what the path did, or why not.
-    std::optional<passes::DrawTarget> add(Frame& frame, const FrameDesc& desc, std::vector<std::string>& notes);
+    // The frame's visibility tables (its shading lists and draw entries) for the list's opaque and
+    // masked draws; nullopt when the frame needs more shading lists than a tile's mask holds.
+    std::optional<passes::VisibilityFrameTables> tables(const FrameDesc& desc) const;
+    // Adds the path's passes for the list's opaque and masked draws with their `tables`: the shaded
+    // image (transparent behind) and the depth, as targets the forward and skybox passes can draw
+    // over. `notes` gets what the path did.
+    passes::DrawTarget add(Frame& frame, const FrameDesc& desc, const passes::VisibilityFrameTables& tables,
+                           std::vector<std::string>& notes);
 
 private:
     vk::Context& mContext;

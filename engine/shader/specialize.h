@@ -5,12 +5,26 @@
 // would exceed (the layered forward program on devices with 16 samplers per stage).
 
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace candela::shader {
+
+// Sets specialization constant `id` (shared/specialization_ids.h) to `value` in `values` (indexed
+// by constant_id), growing it with zeros to hold the id.
+inline void setSpecialization(std::vector<uint32_t>& values, uint32_t id, uint32_t value) {
+    if (values.size() <= id) values.resize(id + 1, 0);
+    values[id] = value;
+}
+// Specialization values from (constant_id, value) pairs (unset ids 0).
+inline std::vector<uint32_t> specializationValues(std::initializer_list<std::pair<uint32_t, uint32_t>> constants) {
+    std::vector<uint32_t> out;
+    for (const auto& [id, value] : constants) setSpecialization(out, id, value);
+    return out;
+}
 
 // A specialization constant (constant_id) and its value as the 32 bits Vulkan's
 // VkSpecializationInfo would pass (bool: 0 or 1).

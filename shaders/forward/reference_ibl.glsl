@@ -11,7 +11,7 @@
 #include "shared/ibl.h"
 
 // The number of GGX and of cosine samples per pixel (ForwardPass::Variant::referenceSamples).
-layout(constant_id = 8) const uint kReferenceSamples = 0u;
+layout(constant_id = CANDELA_SPEC_REFERENCE_SAMPLES) const uint kReferenceSamples = 0u;
 
 // Radiance of the environment in world direction `d` for the ground truth: its equirectangular
 // texel (piecewise constant); with `skipSummed`, 0 for the texels summed explicitly.

@@ -7,32 +7,32 @@
 
 #include "shared/brdf.h"
 #include "shared/scene_data.h"
+#include "shared/specialization_ids.h"
 
-layout(constant_id = 0) const bool kNormalMap = false;
-layout(constant_id = 1) const bool kLights = true;
-layout(constant_id = 2) const bool kUnlit = false;
-layout(constant_id = 3) const bool kAlphaMask = false;
-layout(constant_id = 4) const uint kShadingModel = CANDELA_SHADING_PBR;
-layout(constant_id = 5) const bool kIbl = false;
-layout(constant_id = 6) const bool kIrradianceSh = true;  // else the irradiance cube
-layout(constant_id = 7) const bool kMultiscatter = true;
-// constant_id 8 is the ground truth's sample count (forward/reference_ibl.glsl: its program only).
+layout(constant_id = CANDELA_SPEC_NORMAL_MAP) const bool kNormalMap = false;
+layout(constant_id = CANDELA_SPEC_LIGHTS) const bool kLights = true;
+layout(constant_id = CANDELA_SPEC_UNLIT) const bool kUnlit = false;
+layout(constant_id = CANDELA_SPEC_ALPHA_MASK) const bool kAlphaMask = false;
+layout(constant_id = CANDELA_SPEC_SHADING_MODEL) const uint kShadingModel = CANDELA_SHADING_PBR;
+layout(constant_id = CANDELA_SPEC_IBL) const bool kIbl = false;
+layout(constant_id = CANDELA_SPEC_IRRADIANCE_SH) const bool kIrradianceSh = true;  // else the irradiance cube
+layout(constant_id = CANDELA_SPEC_MULTISCATTER) const bool kMultiscatter = true;
+// CANDELA_SPEC_REFERENCE_SAMPLES is the ground truth's (forward/reference_ibl.glsl: its program only).
 // A debug view (CANDELA_DEBUG_*) instead of the shaded colour.
-layout(constant_id = 9) const uint kDebugView = CANDELA_DEBUG_NONE;
+layout(constant_id = CANDELA_SPEC_DEBUG_VIEW) const uint kDebugView = CANDELA_DEBUG_NONE;
 #ifdef CANDELA_MATERIAL_LAYERS
 // The layers this variant evaluates (CANDELA_LAYER_* bits): a material pays only for its own.
-layout(constant_id = 10) const uint kLayers = 0u;
+layout(constant_id = CANDELA_SPEC_LAYERS) const uint kLayers = 0u;
 #endif
 // Specular anti-aliasing: roughness widened by the normal's change across the pixel and by what the
 // normal map's mip averaged away (specularAntiAliasedRoughness, shared/brdf.h).
-layout(constant_id = 11) const bool kSpecularAa = false;
+layout(constant_id = CANDELA_SPEC_SPECULAR_AA) const bool kSpecularAa = false;
 // Alpha to coverage (MSAA, alpha-masked materials): the pipeline turns the output alpha into the
 // sample coverage (and stores alpha 1: alphaToOne) instead of the alpha test's all-or-nothing.
-layout(constant_id = 12) const bool kAlphaToCoverage = false;
-// (13–15: the visibility path's compute shading, visibility/shade.glsl.)
+layout(constant_id = CANDELA_SPEC_ALPHA_TO_COVERAGE) const bool kAlphaToCoverage = false;
 // The punctual light types the frame has (bit 1 << CANDELA_LIGHT_*): the code of the others is
 // compiled out of the light loop (llvmpipe pays for untaken branches).
-layout(constant_id = 16) const uint kLightTypes = 7u;
+layout(constant_id = CANDELA_SPEC_LIGHT_TYPES) const uint kLightTypes = 7u;
 
 layout(std430, set = 0, binding = 0) readonly buffer Lights {
     LightData lights[];
@@ -81,7 +81,7 @@ layout(std430, set = 2, binding = 5) readonly buffer ReferenceTexels {
 };
 #endif
 layout(push_constant) uniform Push {
-    ForwardPush push;
+    FramePush push;
 };
 
 #ifdef CANDELA_MATERIAL_LAYERS

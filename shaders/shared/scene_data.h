@@ -89,7 +89,7 @@ struct MaterialLayerData {
 
 // Push constants of forward.vert/frag: the view, which draw this is and the environment lookup
 // (128 bytes: exactly what every device guarantees).
-struct ForwardPush {
+struct FramePush {
     /*Ignore*/ mat4 viewProjection;
     /*Ignore*/ vec4 eye;     // xyz: camera position (world)
     /*Ignore*/ uvec4 counts; // x: light count, y: draw index, zw: unused
@@ -125,7 +125,7 @@ static_assert(sizeof(candela::shading::LightData) == 64);
 static_assert(sizeof(candela::shading::DrawData) == 144);
 static_assert(sizeof(candela::shading::MaterialData) == 64 + 32 * CANDELA_TEX_COUNT);
 static_assert(sizeof(candela::shading::MaterialLayerData) == 128 + 32 * CANDELA_LAYER_TEX_COUNT);
-static_assert(sizeof(candela::shading::ForwardPush) == 128);
+static_assert(sizeof(candela::shading::FramePush) == 128);
 #endif
 
 #endif

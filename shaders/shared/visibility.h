@@ -8,12 +8,10 @@
 CANDELA_NAMESPACE_BEGIN
 
 // Screen tiles (VisibilityFrame::lists.zw pixels, the workgroup size of the shading dispatches:
-// specialization constants CANDELA_VISIBILITY_TILE_X_ID and _Y_ID) are the unit of classification
+// specialization constants CANDELA_SPEC_TILE_X and _Y) are the unit of classification
 // and of shading (one workgroup per listed tile). A CPU device runs a workgroup's invocations as
 // SIMD rows in which masked-off lanes still cost, so it takes tiles of one row: a tile's lanes are
 // its pixels and a tile list wastes few (passes/visibility_frame.h).
-#define CANDELA_VISIBILITY_TILE_X_ID 20
-#define CANDELA_VISIBILITY_TILE_Y_ID 21
 // A shading list is what one compute dispatch shades: the pixels of one shading variant whose
 // materials share one set of textures (bound per dispatch). A tile records the lists its pixels
 // need as bits of CANDELA_VISIBILITY_MAX_WORDS words at most.

@@ -3,16 +3,17 @@
 // The HDR image's alpha is coverage (geometry writes 1, blended surfaces their alpha, the clear 0);
 // its RGB is premultiplied by coverage.
 #include "shared/tonemap.h"
+#include "shared/specialization_ids.h"
 #ifdef CANDELA_TONEMAP_SKY
 #include "shared/ibl.h"
 #endif
 
 // Specialization constants: llvmpipe executes both sides of uniform branches, so the operator and
 // the output options are compiled in rather than selected at run time.
-layout(constant_id = 0) const uint kOperator = CANDELA_TONEMAP_PBR_NEUTRAL;
-layout(constant_id = 1) const bool kEncodeSrgb = true;
-layout(constant_id = 2) const bool kDither = false;
-layout(constant_id = 3) const bool kBackground = true;
+layout(constant_id = CANDELA_SPEC_TONEMAP_OPERATOR) const uint kOperator = CANDELA_TONEMAP_PBR_NEUTRAL;
+layout(constant_id = CANDELA_SPEC_TONEMAP_ENCODE_SRGB) const bool kEncodeSrgb = true;
+layout(constant_id = CANDELA_SPEC_TONEMAP_DITHER) const bool kDither = false;
+layout(constant_id = CANDELA_SPEC_TONEMAP_BACKGROUND) const bool kBackground = true;
 
 layout(set = 0, binding = 0) uniform sampler2D hdrImage;
 #ifdef CANDELA_TONEMAP_SKY

@@ -15,5 +15,5 @@ layout(std430, set = 0, binding = 2) readonly buffer Materials {
 };
 #endif
 layout(push_constant) uniform Push {
-    ForwardPush push;  // viewProjection, counts.y: the draw's (first instance's) entry
+    FramePush push;  // viewProjection, counts.y: the draw's (first instance's) entry
 };

@@ -12,15 +12,15 @@
 #include "shared/skin_morph.h"
 #include "shared/visibility.h"
 
-layout(local_size_x_id = CANDELA_VISIBILITY_TILE_X_ID, local_size_y_id = CANDELA_VISIBILITY_TILE_Y_ID) in;
+layout(local_size_x_id = CANDELA_SPEC_TILE_X, local_size_y_id = CANDELA_SPEC_TILE_Y) in;
 
-// The dispatch's own constants (after the forward programs' 0–12): whether the frame has deformed
+// The dispatch's own constants (shared/specialization_ids.h): whether the frame has deformed
 // vertices (else every draw reads the scene's), and which texture slots its texture set fills
 // (bit per CANDELA_TEX_* / CANDELA_LAYER_TEX_* slot; the others hold the 1×1 white default, read as
 // the constant it is, with no coordinates or gradients computed for it).
-layout(constant_id = 13) const bool kDeformed = true;
-layout(constant_id = 14) const uint kCoreTextures = 0xffffffffu;
-layout(constant_id = 15) const uint kLayerTextures = 0xffffffffu;
+layout(constant_id = CANDELA_SPEC_DEFORMED) const bool kDeformed = true;
+layout(constant_id = CANDELA_SPEC_CORE_TEXTURES) const uint kCoreTextures = 0xffffffffu;
+layout(constant_id = CANDELA_SPEC_LAYER_TEXTURES) const uint kLayerTextures = 0xffffffffu;
 
 // Set 4: what the visibility pass and the classification produced, and the geometry.
 #ifdef CANDELA_VISIBILITY_MSAA
@@ -29,8 +29,8 @@ layout(constant_id = 15) const uint kLayerTextures = 0xffffffffu;
 // show (in sample order, background skipped), weighted by the share of samples showing it: k = 0
 // stores (every covered pixel has a first), k > 0 adds to it (only pixels on triangle edges have a
 // second) — the resolve is part of shading, and MSAA costs only the edges' extra triangles.
-layout(constant_id = 17) const uint kDistinct = 0u;
-layout(constant_id = 18) const int kSamples = 4;
+layout(constant_id = CANDELA_SPEC_DISTINCT) const uint kDistinct = 0u;
+layout(constant_id = CANDELA_SPEC_SAMPLES) const int kSamples = 4;
 layout(set = 4, binding = 0) uniform usampler2DMS visibility;  // per sample (draw entry + 1, primitive); 0: none
 layout(set = 4, binding = 1, rgba16f) uniform image2D shaded;
 #else

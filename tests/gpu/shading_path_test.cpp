@@ -42,6 +42,8 @@ protected:
         return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(fragment) != std::string::npos; });
     }
     bool declares(const std::string& pass) const { return mRenderer->lastGraph().findPass(pass).has_value(); }
+    // The last frame's plan (render/frame_plan.h): the path it took, where the sky went.
+    const FramePlan& plan() const { return *mRenderer->lastPlan(); }
 
     scene::Scene mGrid = scene::makeSphereGrid();
     CameraSettings mCamera;  // the default: framing
@@ -89,14 +91,14 @@ TEST_F(ShadingPathTest, VisibilityFramesScheduleItsPassesInsteadOfTheForwardOnes
     // The sky is composited by the tonemap (on either path): no skybox pass, no forward draws.
     EXPECT_FALSE(declares("forward"));
     EXPECT_FALSE(declares("skybox"));
-    EXPECT_TRUE(explains("shading path: visibility"));
-    EXPECT_TRUE(explains("sky: composited under the image by the tonemap"));
+    EXPECT_EQ(plan().path, passes::ShadingPath::Visibility);
+    EXPECT_EQ(plan().sky, SkyPlacement::Tonemap);
 
     render(passes::ShadingPath::Forward, passes::DebugView::None, &sky);
     EXPECT_TRUE(declares("forward"));
     EXPECT_FALSE(declares("visibility"));
-    EXPECT_TRUE(explains("shading path: forward"));
-    EXPECT_TRUE(explains("sky: composited under the image by the tonemap"));
+    EXPECT_EQ(plan().path, passes::ShadingPath::Forward);
+    EXPECT_EQ(plan().sky, SkyPlacement::Tonemap);
 }
 
 // A float (HDR) capture reads the image before the tonemap: the visibility path then draws the sky
@@ -137,7 +139,7 @@ TEST_F(ShadingPathTest, DebugViewsAgreeOnBothPaths) {
     for (passes::DebugView view : passes::allDebugViews()) {
         const CapturedFrame forward = render(passes::ShadingPath::Forward, view);
         const CapturedFrame visibility = render(passes::ShadingPath::Visibility, view);
-        ASSERT_TRUE(explains("shading path: visibility")) << passes::debugViewName(view);
+        ASSERT_EQ(plan().path, passes::ShadingPath::Visibility) << passes::debugViewName(view);
         const auto [mean, largest] = difference(forward, visibility);
         EXPECT_LE(mean, 0.05) << passes::debugViewName(view);
         EXPECT_LE(largest, 2) << passes::debugViewName(view);
@@ -237,7 +239,7 @@ TEST_F(ShadingPathTest, EditedLightsReachTheComputeShading) {
             }
     }
     const CapturedFrame unlit = render(passes::ShadingPath::Visibility);
-    ASSERT_TRUE(explains("shading path: visibility"));
+    ASSERT_EQ(plan().path, passes::ShadingPath::Visibility);
     const auto [mean, largest] = difference(before, unlit);
     EXPECT_GT(mean, 2.0) << "largest " << largest;  // the spheres cover ~22% of the image
     EXPECT_GT(largest, 100);
@@ -263,7 +265,7 @@ TEST_F(ShadingPathTest, EditedMaterialsReachTheComputeShading) {
         }
     ASSERT_TRUE(edited);
     const CapturedFrame redSphere = render(passes::ShadingPath::Visibility);
-    ASSERT_TRUE(explains("shading path: visibility"));
+    ASSERT_EQ(plan().path, passes::ShadingPath::Visibility);
     // The middle sphere (material 24) is under the image's centre.
     const size_t centre = (size_t(kHeight / 2) * kWidth + kWidth / 2) * 4;
     EXPECT_GT(int(redSphere.rgba8[centre]) - int(redSphere.rgba8[centre + 1]), 60)
@@ -302,7 +304,8 @@ TEST_F(ShadingPathTest, SerializedPassesRenderTheSameFrameAndTimeEveryPass) {
 
 TEST_F(ShadingPathTest, AutoIsTheDevicesDefault) {
     render(passes::ShadingPath::Auto);
-    EXPECT_TRUE(explains("shading path: forward (the device's default: "));
+    EXPECT_EQ(plan().path, passes::ShadingPath::Forward);
+    EXPECT_EQ(plan().pathReason, PathReason::DeviceDefault);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // The frame's draw list (passes/draw_list.h): selection, ranges, sort keys and material keys, on
 // small hand-made scenes (no GPU).
 #include "passes/draw_list.h"
-#include "passes/forward_variant.h"
+#include "passes/shading_variant.h"
 
 #include <gtest/gtest.h>
 
@@ -166,13 +166,13 @@ TEST(DrawList, DrawDataIndicesCountInstances) {
     EXPECT_EQ(list.instances, 3u);
 }
 
-TEST(ForwardVariant, TheFramesBitsApplyOnlyToLitMaterials) {
+TEST(ShadingVariant, TheFramesBitsApplyOnlyToLitMaterials) {
     const FrameVariant frame{.model = ShadingModel::BlinnPhong, .lights = true, .ibl = true, .specularAa = true,
                              .samples = 4, .alphaToCoverage = true};
-    const ForwardVariant lit = forwardVariant({.alphaMask = true}, frame);
+    const ShadingVariant lit = shadingVariant({.alphaMask = true}, frame);
     EXPECT_TRUE(lit.lights && lit.ibl && lit.specularAa && lit.alphaToCoverage);
     EXPECT_EQ(lit.model, ShadingModel::BlinnPhong);
-    const ForwardVariant unlit = forwardVariant({.unlit = true}, frame);
+    const ShadingVariant unlit = shadingVariant({.unlit = true}, frame);
     EXPECT_FALSE(unlit.lights || unlit.ibl || unlit.specularAa || unlit.alphaToCoverage);
     EXPECT_EQ(unlit.model, ShadingModel::Pbr);
     EXPECT_EQ(unlit.samples, 4u);

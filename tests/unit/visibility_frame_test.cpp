@@ -20,12 +20,12 @@ DrawListItem item(uint32_t draw, uint32_t material, uint32_t key, uint32_t drawD
 }
 
 TEST(VisibilityFrame, ShadingVariantDropsWhatOnlyRasterizationUses) {
-    const ForwardVariant masked{.alphaMask = true, .samples = 4, .alphaToCoverage = true};
-    const ForwardVariant v = shadingVariant(masked);
+    const ShadingVariant masked{.alphaMask = true, .samples = 4, .alphaToCoverage = true};
+    const ShadingVariant v = shadingVariant(masked);
     EXPECT_FALSE(v.alphaMask);
     EXPECT_FALSE(v.alphaToCoverage);
     EXPECT_EQ(v.samples, 4u);
-    EXPECT_EQ(shadingVariant(ForwardVariant{.blend = true}), ForwardVariant{});
+    EXPECT_EQ(shadingVariant(ShadingVariant{.blend = true}), ShadingVariant{});
 }
 
 TEST(VisibilityFrame, ListsAreVariantsTimesTextureSets) {

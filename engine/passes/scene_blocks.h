@@ -12,30 +12,30 @@
 namespace candela::passes {
 
 template <class T>
-struct ForwardBlock;
+struct SceneBlock;
 template <>
-struct ForwardBlock<shading::LightData> {
+struct SceneBlock<shading::LightData> {
     static constexpr std::string_view name = "Lights";  // set 0, binding 0
 };
 template <>
-struct ForwardBlock<shading::DrawData> {
+struct SceneBlock<shading::DrawData> {
     static constexpr std::string_view name = "Draws";  // set 0, binding 1
 };
 template <>
-struct ForwardBlock<shading::MaterialData> {
+struct SceneBlock<shading::MaterialData> {
     static constexpr std::string_view name = "Materials";  // set 0, binding 2
 };
 template <>
-struct ForwardBlock<shading::MaterialLayerData> {
+struct SceneBlock<shading::MaterialLayerData> {
     static constexpr std::string_view name = "MaterialLayers";  // set 1, binding 5 (layered program)
 };
 
 // The reflected members of one element of T's block in `reflection`; empty when the program has
 // no such block.
 template <class T>
-std::span<const shader::BlockMember> forwardBlockElement(const shader::ShaderReflection& reflection) {
+std::span<const shader::BlockMember> sceneBlockElement(const shader::ShaderReflection& reflection) {
     for (const shader::DescriptorBinding& b : reflection.bindings)
-        if (b.name == ForwardBlock<T>::name && b.members.size() == 1) return b.members[0].elementMembers;
+        if (b.name == SceneBlock<T>::name && b.members.size() == 1) return b.members[0].elementMembers;
     return {};
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// ForwardLayerSet: descriptor set 3 of the forward pass's layered program — the maps the material
+// LayerMapSet: descriptor set 3 of the forward pass's layered program — the maps the material
 // layers read (the sheen albedo LUT, the Charlie-prefiltered environment, the background behind
 // transmissive draws), declared in the pass's
 // setup from the frame's handles and written in its execute callback from what the pass context
@@ -24,10 +24,10 @@ struct LayerMaps {
     graph::TextureId transmission;  // RGBA16F, the opaque image with its box-filtered mips (TransmissionBackgroundPass)
 };
 
-class ForwardLayerSet {
+class LayerMapSet {
 public:
     // Creates and uploads the placeholders (waits for the upload).
-    explicit ForwardLayerSet(vk::Context& context);
+    explicit LayerMapSet(vk::Context& context);
 
     // Declares the fragment shader's reads of every valid handle of `maps` (null: none). Returns
     // the handles as declared, for write().

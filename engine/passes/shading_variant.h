@@ -1,8 +1,9 @@
 #pragma once
-// The forward program's pipeline variants. A variant is the material's key (passes::MaterialKey,
+// The shading programs' variants, shared by both shading paths (the forward programs' pipelines and
+// the visibility path's compute shading). A variant is the material's key (passes::MaterialKey,
 // fixed at load) combined with the frame's bits (FrameVariant: lights, image-based lighting, debug
 // view, specular anti-aliasing, sample count), so what a draw does not use costs nothing: each
-// bit is a specialization constant of forward.frag / forward_layers.frag. Names only, no Vulkan calls.
+// bit is a specialization constant (shared/specialization_ids.h). Names only, no Vulkan calls.
 
 #include "passes/debug_view.h"
 #include "passes/draw_list.h"
@@ -31,8 +32,8 @@ struct FrameVariant {
     bool operator==(const FrameVariant&) const = default;
 };
 
-// One pipeline of the forward program: the specialization constants and the pipeline state.
-struct ForwardVariant {
+// One variant of the shading programs: the specialization constants and the pipeline state.
+struct ShadingVariant {
     bool normalMap = false;
     bool lights = false;
     uint32_t lightTypes = 0;  // bit 1 << CANDELA_LIGHT_* (with lights)
@@ -51,20 +52,19 @@ struct ForwardVariant {
     bool specularAa = false;
     uint32_t samples = 1;
     bool alphaToCoverage = false;
-    auto operator<=>(const ForwardVariant&) const = default;
+    auto operator<=>(const ShadingVariant&) const = default;
     // E.g. "pbr+normal-map+ibl-sh9+msaa4" (for --explain).
     std::string name() const;
 };
 
 // The variant drawing a material of `key` in a frame of `frame`: unlit materials ignore the frame's
 // lighting and shading bits.
-ForwardVariant forwardVariant(const MaterialKey& key, const FrameVariant& frame);
+ShadingVariant shadingVariant(const MaterialKey& key, const FrameVariant& frame);
 
-// The values of the forward programs' specialization constants for `v` (constant_id = index,
-// forward/resources.glsl: 0–12 and 16; 13–15 are zero, the visibility path's shading sets them),
-// shared by the forward pass's pipelines and the visibility path's compute shading. kLayers (10)
-// is there for the core programs too, which ignore it.
-std::vector<uint32_t> specializationConstants(const ForwardVariant& v);
+// The values of the shading programs' specialization constants for `v`, indexed by constant_id
+// (shared/specialization_ids.h); the visibility shading adds its own. CANDELA_SPEC_LAYERS is there
+// for the core programs too, which ignore it.
+std::vector<uint32_t> specializationConstants(const ShadingVariant& v);
 
 // The layer names of `layers` (scene::MaterialLayer bits), each preceded by "+".
 std::string plusLayerNames(uint32_t layers);

@@ -1,6 +1,8 @@
-#include "passes/forward_variant.h"
+#include "passes/shading_variant.h"
 
 #include "scene/scene.h"
+#include "shared/specialization_ids.h"
+#include "shader/specialize.h"
 
 namespace candela::passes {
 
@@ -10,8 +12,8 @@ std::string plusLayerNames(uint32_t layers) {
     return out;
 }
 
-ForwardVariant forwardVariant(const MaterialKey& key, const FrameVariant& frame) {
-    ForwardVariant v;
+ShadingVariant shadingVariant(const MaterialKey& key, const FrameVariant& frame) {
+    ShadingVariant v;
     v.unlit = key.unlit;
     v.normalMap = key.normalMap;
     v.lights = !key.unlit && frame.lights;
@@ -31,13 +33,27 @@ ForwardVariant forwardVariant(const MaterialKey& key, const FrameVariant& frame)
     return v;
 }
 
-std::vector<uint32_t> specializationConstants(const ForwardVariant& v) {
-    return {v.normalMap,    v.lights,       v.unlit,    v.alphaMask, static_cast<uint32_t>(v.model),
-            v.ibl,          v.irradianceSh, v.multiscatter, v.referenceSamples, static_cast<uint32_t>(v.debugView),
-            v.layers,       v.specularAa,   v.alphaToCoverage, 0, 0, 0, v.lightTypes};
+std::vector<uint32_t> specializationConstants(const ShadingVariant& v) {
+    std::vector<uint32_t> out;
+    const auto set = [&out](uint32_t id, uint32_t value) { shader::setSpecialization(out, id, value); };
+    set(CANDELA_SPEC_NORMAL_MAP, v.normalMap);
+    set(CANDELA_SPEC_LIGHTS, v.lights);
+    set(CANDELA_SPEC_UNLIT, v.unlit);
+    set(CANDELA_SPEC_ALPHA_MASK, v.alphaMask);
+    set(CANDELA_SPEC_SHADING_MODEL, static_cast<uint32_t>(v.model));
+    set(CANDELA_SPEC_IBL, v.ibl);
+    set(CANDELA_SPEC_IRRADIANCE_SH, v.irradianceSh);
+    set(CANDELA_SPEC_MULTISCATTER, v.multiscatter);
+    set(CANDELA_SPEC_REFERENCE_SAMPLES, v.referenceSamples);
+    set(CANDELA_SPEC_DEBUG_VIEW, static_cast<uint32_t>(v.debugView));
+    set(CANDELA_SPEC_LAYERS, v.layers);
+    set(CANDELA_SPEC_SPECULAR_AA, v.specularAa);
+    set(CANDELA_SPEC_ALPHA_TO_COVERAGE, v.alphaToCoverage);
+    set(CANDELA_SPEC_LIGHT_TYPES, v.lightTypes);
+    return out;
 }
 
-std::string ForwardVariant::name() const {
+std::string ShadingVariant::name() const {
     std::string out = unlit ? "unlit" : shadingModelName(model);
     if (normalMap) out += "+normal-map";
     if (!unlit && !lights) out += "+no-lights";

@@ -1,4 +1,4 @@
-#include "passes/forward_layer_set.h"
+#include "passes/layer_map_set.h"
 
 #include "executor/graph_executor.h"
 #include "passes/ibl_sheen_lut_pass.h"
@@ -13,7 +13,7 @@ namespace candela::passes {
 
 using namespace graph;
 
-ForwardLayerSet::ForwardLayerSet(vk::Context& context) : mLinear(vk::createSampler(context, {})) {
+LayerMapSet::LayerMapSet(vk::Context& context) : mLinear(vk::createSampler(context, {})) {
     constexpr VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     mPlaceholderCube = vk::Image(context, {.width = 1, .height = 1, .arrayLayers = 6, .format = VK_FORMAT_R16G16B16A16_SFLOAT,
                                           .usage = usage, .cube = true, .name = "layer_placeholder_cube"});
@@ -29,7 +29,7 @@ ForwardLayerSet::ForwardLayerSet(vk::Context& context) : mLinear(vk::createSampl
     upload.submitAndWait();
 }
 
-LayerMaps ForwardLayerSet::declare(PassBuilder& builder, const LayerMaps* maps) {
+LayerMaps LayerMapSet::declare(PassBuilder& builder, const LayerMaps* maps) {
     if (!maps) return {};
     LayerMaps out;
     if (maps->sheenLut.valid()) out.sheenLut = builder.sample(maps->sheenLut);
@@ -38,7 +38,7 @@ LayerMaps ForwardLayerSet::declare(PassBuilder& builder, const LayerMaps* maps) 
     return out;
 }
 
-VkDescriptorSet ForwardLayerSet::write(const PassContext& ctx, const vk::Program& program, const LayerMaps& d) const {
+VkDescriptorSet LayerMapSet::write(const PassContext& ctx, const vk::Program& program, const LayerMaps& d) const {
     const auto image = [&](vk::DescriptorWriter& writer, const char* name, TextureId handle, const vk::Image& fallback) {
         if (!program.declares(3, name)) return;  // a variant without the layer that reads it
         if (handle.valid()) writer.image(name, ctx.view(handle), ctx.layout(handle), mLinear.get());

@@ -1,4 +1,4 @@
-#include "passes/forward_ibl_set.h"
+#include "passes/ibl_set.h"
 
 #include "executor/graph_executor.h"
 #include "passes/ibl_brdf_lut_pass.h"
@@ -25,7 +25,7 @@ std::span<const std::byte> zeros(size_t bytes) {
 }
 }  // namespace
 
-ForwardIblSet::ForwardIblSet(vk::Context& context)
+IblSet::IblSet(vk::Context& context)
     : mTrilinear(vk::createSampler(context, {})),
       mNearest(vk::createSampler(context, vk::kNearestSampler)) {
     mPlaceholderCube = vk::Image(context, {.width = 1, .height = 1, .arrayLayers = 6, .format = kCubeFormat,
@@ -48,7 +48,7 @@ ForwardIblSet::ForwardIblSet(vk::Context& context)
     upload.submitAndWait();
 }
 
-IblHandles ForwardIblSet::declare(PassBuilder& builder, const IblHandles* ibl, VkPipelineStageFlags2 stages) {
+IblHandles IblSet::declare(PassBuilder& builder, const IblHandles* ibl, VkPipelineStageFlags2 stages) {
     if (!ibl) return {};
     const IblHandles& in = *ibl;
     IblHandles out;
@@ -61,7 +61,7 @@ IblHandles ForwardIblSet::declare(PassBuilder& builder, const IblHandles* ibl, V
     return out;
 }
 
-VkDescriptorSet ForwardIblSet::write(const PassContext& ctx, const vk::Program& program, const IblHandles& d) const {
+VkDescriptorSet IblSet::write(const PassContext& ctx, const vk::Program& program, const IblHandles& d) const {
     const VkImageLayout placeholder = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     const auto image = [&](vk::DescriptorWriter& writer, const char* name, TextureId handle, const vk::Image& fallback,
                            VkSampler sampler) {

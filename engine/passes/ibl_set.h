@@ -1,5 +1,5 @@
 #pragma once
-// ForwardIblSet: descriptor set 2 of the forward pass (image-based lighting), declared in the pass's
+// IblSet: descriptor set 2 of the forward pass (image-based lighting), declared in the pass's
 // setup from the frame's IBL handles and written in its execute callback from what the pass context
 // resolves them to. Every forward variant's layout has every IBL binding (the ground truth's
 // program also its inputs); what a frame lacks (no environment, the irradiance form not in use, no
@@ -18,10 +18,10 @@ class PassContext;
 
 namespace candela::passes {
 
-class ForwardIblSet {
+class IblSet {
 public:
     // Creates and uploads the placeholders (waits for the upload).
-    explicit ForwardIblSet(vk::Context& context);
+    explicit IblSet(vk::Context& context);
 
     // Declares the reads (by the fragment shader) of every valid handle of `ibl` (null: none) in the
     // pass `builder` belongs to. Returns the handles as declared, for write().

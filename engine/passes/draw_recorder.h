@@ -1,0 +1,97 @@
+#pragma once
+// The draw recorder: records a range of a frame's draw list into a graphics pass, with the state
+// set only where it changes — the pipeline, set 1 (the material's), the cull mode and front face,
+// the vertex buffer (the scene's or the frame's deformed vertices) — and the draw's index pushed
+// in the frame's push constants. Every pass that rasterizes the scene's draws records through it
+// (the forward draws, the visibility raster); what differs between them is which pipeline a draw
+// uses and which sets they bind, which the pass gives as two hooks.
+
+#include "executor/graph_executor.h"
+#include "gpu_scene/gpu_scene.h"
+#include "passes/draw_list.h"
+#include "passes/frame_inputs.h"
+#include "vk/pipeline.h"
+
+#include <optional>
+#include <span>
+
+namespace candela::passes {
+
+// One draw as a pass records it.
+struct DrawCall {
+    const vk::Pipeline* pipeline = nullptr;
+    DrawListItem item;
+    int32_t vertexOffset = kRestVertices;  // into the deformed vertices; kRestVertices: the scene's own
+};
+
+// Records `draws` in order between ctx.beginRendering() and ctx.endRendering(). `pipelineBound(p,
+// draw)` binds the sets of pipeline `p` other than set 1 after it is bound (every set is rebound
+// after a switch: programs may differ from set 1 on); `materialSet(draw)` is the set 1 of a draw
+// (VK_NULL_HANDLE: the pipeline has none), bound when it differs from the one bound. `deformed`:
+// the frame's deformed vertices (VK_NULL_HANDLE: none). State changes are counted in `stats`.
+template <class PipelineBound, class MaterialSet>
+void recordDraws(const graph::PassContext& ctx, std::span<const DrawCall> draws, const scene::GpuScene& scene, VkBuffer deformed,
+                 shading::FramePush push, DrawStats& stats, PipelineBound&& pipelineBound, MaterialSet&& materialSet) {
+    VkCommandBuffer cmd = ctx.cmd();
+    ctx.beginRendering();
+    if (draws.empty()) {  // e.g. only transmissive draws: the pass just clears
+        ctx.endRendering();
+        return;
+    }
+    const VkDeviceSize offset = 0;
+    const VkBuffer rest = scene.vertexBuffer();
+    VkBuffer boundVertices = rest;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &rest, &offset);
+    vkCmdBindIndexBuffer(cmd, scene.indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
+    stats.bufferBinds += 2;
+    // The draws come sorted by pipeline and material: few of these change.
+    const vk::Pipeline* bound = nullptr;
+    VkDescriptorSet boundMaterial = VK_NULL_HANDLE;
+    std::optional<VkCullModeFlags> cullMode;
+    std::optional<VkFrontFace> frontFace;
+    for (const DrawCall& draw : draws) {
+        const DrawListItem& item = draw.item;
+        if (draw.pipeline != bound) {
+            bound = draw.pipeline;
+            bound->bind(cmd);
+            ++stats.pipelineBinds;
+            pipelineBound(*bound, draw);
+            boundMaterial = VK_NULL_HANDLE;
+        }
+        if (const VkDescriptorSet set = materialSet(draw); set != VK_NULL_HANDLE && set != boundMaterial) {
+            boundMaterial = set;
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 1, 1, &set, 0, nullptr);
+            ++stats.descriptorBinds;
+        }
+        if (const VkCullModeFlags wanted = item.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT; cullMode != wanted) {
+            cullMode = wanted;
+            vkCmdSetCullMode(cmd, wanted);
+            ++stats.dynamicStates;
+        }
+        // glTF fronts are counter-clockwise; a mirroring transform turns them clockwise.
+        if (const VkFrontFace wanted = item.flipWinding ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE;
+            frontFace != wanted) {
+            frontFace = wanted;
+            vkCmdSetFrontFace(cmd, wanted);
+            ++stats.dynamicStates;
+        }
+        push.counts.y = item.drawData;
+        bound->pushConstants(cmd, &push, sizeof(push));
+        const bool restVertices = draw.vertexOffset == kRestVertices;
+        if (const VkBuffer wanted = restVertices ? rest : deformed; wanted != boundVertices) {
+            boundVertices = wanted;
+            vkCmdBindVertexBuffers(cmd, 0, 1, &boundVertices, &offset);
+            ++stats.bufferBinds;
+        }
+        vkCmdDrawIndexed(cmd, item.indexCount, item.instances, item.firstIndex, restVertices ? 0 : draw.vertexOffset, 0);
+    }
+    ctx.endRendering();
+}
+
+// Binds `set` at index `index` of `pipeline`'s layout (graphics), counting it in `stats`.
+inline void bindGraphicsSet(VkCommandBuffer cmd, const vk::Pipeline& pipeline, uint32_t index, VkDescriptorSet set, DrawStats& stats) {
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), index, 1, &set, 0, nullptr);
+    ++stats.descriptorBinds;
+}
+
+}  // namespace candela::passes

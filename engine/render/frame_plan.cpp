@@ -1,0 +1,80 @@
+#include "render/frame_plan.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace candela {
+
+using passes::ShadingPath;
+
+namespace {
+
+std::pair<ShadingPath, PathReason> choosePath(const FrameFacts& facts) {
+    if (facts.requestedPath == ShadingPath::Forward) return {ShadingPath::Forward, PathReason::Requested};
+    if (facts.requestedPath == ShadingPath::Auto && facts.devicePath == ShadingPath::Forward)
+        return {ShadingPath::Forward, PathReason::DeviceDefault};
+    if (!facts.visibilityUnsupported.empty()) return {ShadingPath::Forward, PathReason::Unsupported};
+    if (facts.groundTruth) return {ShadingPath::Forward, PathReason::GroundTruth};
+    if (facts.samples > 1 && !facts.integerMsaaSampling) return {ShadingPath::Forward, PathReason::IntegerMsaaSampling};
+    if (!facts.shadingListsFit) return {ShadingPath::Forward, PathReason::TooManyShadingLists};
+    return {ShadingPath::Visibility, PathReason::Requested};
+}
+
+}  // namespace
+
+bool FramePlan::leavesOut(PlannedPart part) const {
+    return std::any_of(leftOut.begin(), leftOut.end(), [&](const LeftOut& l) { return l.part == part; });
+}
+
+FramePlan planFrame(const FrameFacts& facts) {
+    FramePlan plan;
+    std::tie(plan.path, plan.pathReason) = choosePath(facts);
+    const bool debugView = facts.debugView != passes::DebugView::None;
+
+    if (facts.deformable) {
+        if (facts.deformedDraws == 0) {
+            plan.deform = DeformPlan::NoneInPose;
+            plan.leftOut.push_back({PlannedPart::SkinMorph, LeftOutReason::NothingDeformed});
+        } else if (facts.skinMorphDisabled) {
+            plan.deform = DeformPlan::Disabled;
+            plan.leftOut.push_back({PlannedPart::DeformedDraws, LeftOutReason::SkinMorphDisabled});
+        } else {
+            plan.deform = DeformPlan::Deformed;
+        }
+    }
+
+    plan.sheenLut = facts.sheen;
+    if (!facts.sheen) plan.leftOut.push_back({PlannedPart::SheenLut, LeftOutReason::NoSheen});
+
+    // Switching transmission_background off leaves the transmissive draws without the opaque image
+    // to see through: they are drawn over it reading a placeholder (black, coverage 0), so what they
+    // let through is what the tonemap composites where coverage is below 1 — the sky or the
+    // background colour, not the scene behind them (the pass is declared, to be disabled).
+    if (facts.transmissiveDraws)
+        plan.transmission = facts.transmissionBackgroundDisabled ? TransmissionPlan::Blind : TransmissionPlan::SeesOpaqueImage;
+    else
+        plan.leftOut.push_back({PlannedPart::TransmissionBackground, debugView ? LeftOutReason::DebugView : LeftOutReason::NoTransmissive});
+
+    // The sky: composited under the image by the tonemap, unless the transmissive draws must see
+    // it or the HDR image is the output (then the skybox pass draws it into the HDR image).
+    // Switching the skybox pass off still switches the sky off: the pass is then declared, to be
+    // disabled.
+    const bool sky = facts.environment && facts.skyboxWanted && !debugView;
+    if (sky) {
+        const bool inTonemap = plan.transmission != TransmissionPlan::SeesOpaqueImage && !facts.floatOutput && !facts.skyboxDisabled;
+        plan.sky = inTonemap ? SkyPlacement::Tonemap : SkyPlacement::SkyboxPass;
+    } else if (facts.environment) {
+        plan.leftOut.push_back({PlannedPart::Skybox, debugView ? LeftOutReason::DebugView : LeftOutReason::NotTheBackground});
+    }
+
+    if (plan.path == ShadingPath::Visibility) {
+        // The visibility path's image is resolved: blended and transmissive draws at MSAA need one at
+        // the frame's sample count; the blended draws follow in their own pass unless the
+        // transmissive pass draws them.
+        plan.msaaExpand = facts.samples > 1 && (facts.transmissiveDraws || facts.blendedDraws);
+        plan.blendedPass = !facts.transmissiveDraws && facts.blendedDraws;
+    }
+    return plan;
+}
+
+}  // namespace candela

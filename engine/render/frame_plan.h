@@ -1,0 +1,109 @@
+#pragma once
+// The frame plan: what a scene frame draws and where, decided by one pure function (planFrame) from
+// the frame's settings, the scene's facts and the device's capabilities — the shading path, where
+// the sky goes, how transmissive draws see what is behind them, whether the visibility path needs
+// the MSAA expansion and the blended pass, what the skin_morph pass does — with every pass or draw
+// it leaves out and why, as enums. No graph and no Vulkan: each decision is unit-tested by its
+// fields (tests/unit/frame_plan_test.cpp). FrameBuilder gathers the facts, declares the plan's
+// passes and turns the plan into --explain lines (explain_plan.h).
+
+#include "passes/debug_view.h"
+#include "passes/shading_path.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace candela {
+
+// What planFrame decides from.
+struct FrameFacts {
+    // ---- The frame's settings.
+    passes::ShadingPath requestedPath = passes::ShadingPath::Auto;
+    passes::DebugView debugView = passes::DebugView::None;
+    bool skyboxWanted = true;       // the environment is the background (IblLook::skybox)
+    bool floatOutput = false;       // the HDR image is the output (EXR/PFM)
+    bool groundTruth = false;       // ibl-report's ground truth (IBL reference samples > 0)
+    uint32_t samples = 1;           // the sample count chosen for the draw targets
+    bool skyboxDisabled = false;    // --disable-pass skybox (the viewer's toggle)
+    bool transmissionBackgroundDisabled = false;
+    bool skinMorphDisabled = false;
+    // ---- The scene's.
+    bool environment = false;       // the IBL maps have an environment
+    bool sheen = false;             // a material has a sheen (the layered program reads the sheen LUT)
+    bool deformable = false;        // the scene has skins or morph targets
+    uint32_t deformedDraws = 0;     // draws the pose deforms (skinned, or a non-zero morph weight)
+    bool transmissiveDraws = false; // the draw list has transmissive draws (debug views have none)
+    bool blendedDraws = false;
+    bool shadingListsFit = true;    // the visibility path's shading lists fit a tile's mask
+    // ---- The device's.
+    passes::ShadingPath devicePath = passes::ShadingPath::Forward;  // what `auto` takes
+    std::string devicePathReason;   // why (the device's words)
+    std::string visibilityUnsupported;  // why the device or the scene cannot take the visibility path ("": it can)
+    bool integerMsaaSampling = true;    // the device samples integer images at `samples` samples
+};
+
+// Why a frame takes the forward path when the visibility path was not asked for or cannot be taken.
+enum class PathReason : uint8_t {
+    Requested,            // --shading-path forward, or visibility taken as asked
+    DeviceDefault,        // auto: the device's default (FrameFacts::devicePathReason)
+    Unsupported,          // the device or the scene cannot (FrameFacts::visibilityUnsupported)
+    GroundTruth,          // ibl-report's ground truth is a forward program
+    IntegerMsaaSampling,  // the device cannot sample the multisampled visibility image
+    TooManyShadingLists,  // more shading lists than a tile's mask holds
+};
+
+enum class SkyPlacement : uint8_t {
+    None,        // no environment, a debug view, or the environment is not the background
+    Tonemap,     // composited under the image by the tonemap (one full-screen pass fewer)
+    SkyboxPass,  // drawn into the HDR image by the skybox pass (transmissive draws see it, or it is the output)
+};
+
+enum class TransmissionPlan : uint8_t {
+    None,             // no transmissive draw
+    SeesOpaqueImage,  // transmission_background copies the opaque image; forward_transmission reads it
+    Blind,            // transmission_background disabled: transmissive draws see only what the tonemap composites
+};
+
+enum class DeformPlan : uint8_t {
+    Static,      // the scene has no skins or morph targets
+    NoneInPose,  // nothing is deformed in this pose: no skin_morph pass
+    Deformed,    // skin_morph deforms the pose's draws
+    Disabled,    // skin_morph is declared (switched off): the deformed draws are left out
+};
+
+// What a plan leaves out, and why.
+enum class PlannedPart : uint8_t { SkinMorph, DeformedDraws, SheenLut, TransmissionBackground, Skybox };
+enum class LeftOutReason : uint8_t {
+    NothingDeformed,    // skin_morph: no draw is skinned or has a non-zero morph weight in this pose
+    SkinMorphDisabled,  // the deformed draws: nothing places their vertices
+    NoSheen,            // sheen LUT: no material has a sheen
+    NoTransmissive,     // transmission background: no transmissive material in the frame
+    DebugView,          // a debug view shows data (transmissive draws with the rest; no sky)
+    NotTheBackground,   // skybox: the environment is not the background
+};
+struct LeftOut {
+    PlannedPart part;
+    LeftOutReason reason;
+    bool operator==(const LeftOut&) const = default;
+};
+
+struct FramePlan {
+    passes::ShadingPath path = passes::ShadingPath::Forward;  // Forward or Visibility
+    PathReason pathReason = PathReason::Requested;
+    DeformPlan deform = DeformPlan::Static;
+    SkyPlacement sky = SkyPlacement::None;
+    TransmissionPlan transmission = TransmissionPlan::None;
+    bool sheenLut = false;       // the layered program reads the sheen LUT (computed once, then imported)
+    bool msaaExpand = false;     // visibility path at MSAA: blended or transmissive draws need a multisampled image
+    bool blendedPass = false;    // visibility path: forward_blended draws the blended draws (no transmissive ones)
+    std::vector<LeftOut> leftOut;
+
+    // Whether the plan leaves out `part` (for any reason).
+    bool leavesOut(PlannedPart part) const;
+};
+
+// The plan of a frame with `facts`.
+FramePlan planFrame(const FrameFacts& facts);
+
+}  // namespace candela
