@@ -1,4 +1,4 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Forward pass fragment stage for core glTF materials (the shading is in forward_fragment.glsl).
+// The forward pass's fragment stage (forward_fragment.glsl), and its variants (builtin_shaders.txt).
 #include "forward_fragment.glsl"

@@ -1,4 +1,4 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Forward pass vertex stage for core glTF materials (see forward_vertex.glsl).
+// The forward pass's vertex stage (forward_vertex.glsl), and its variants (builtin_shaders.txt).
 #include "forward_vertex.glsl"

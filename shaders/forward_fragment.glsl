@@ -1,7 +1,8 @@
-// The forward pass's fragment stage, included by forward.frag.glsl (core glTF materials), by
-// forward_layers.frag.glsl (materials with KHR_materials_* layers: CANDELA_MATERIAL_LAYERS defined,
-// the layer code and its descriptors compiled in) and by forward_reference.frag.glsl (the ground
-// truth of `candela ibl-report`: CANDELA_IBL_REFERENCE defined). Its main gathers the fragment's
+// The forward pass's fragment stage, included by forward.frag.glsl, which builtin_shaders.txt
+// compiles as forward.frag (core glTF materials), forward_layers.frag (materials with
+// KHR_materials_* layers: CANDELA_MATERIAL_LAYERS defined, the layer code and its descriptors
+// compiled in) and forward_reference.frag (the ground truth of `candela ibl-report`:
+// CANDELA_IBL_REFERENCE defined). Its main gathers the fragment's
 // inputs, applies the alpha test or alpha to coverage, and shades (forward/shade.glsl, which the
 // visibility path's compute shading calls too: the material evaluated, lit, its lobes combined). Variants
 // are specialization constants (forward/resources.glsl), so what a draw does not use costs

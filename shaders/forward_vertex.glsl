@@ -1,5 +1,5 @@
-// The forward pass's vertex stage, included by forward.vert.glsl and (CANDELA_MATERIAL_LAYERS
-// defined) forward_layers.vert.glsl: world-space position, normal and tangent of one drawn
+// The forward pass's vertex stage, included by forward.vert.glsl (forward.vert, and with
+// CANDELA_MATERIAL_LAYERS defined forward_layers.vert: builtin_shaders.txt): world-space position, normal and tangent of one drawn
 // primitive, and the transformed texture coordinates of each texture slot.
 #include "shared/scene_data.h"
 

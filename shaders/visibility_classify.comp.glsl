@@ -1,4 +1,4 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// The visibility path's classification of a single-sample visibility image (visibility/classify.glsl).
+// The visibility path's classification (visibility/classify.glsl), and its variants (builtin_shaders.txt).
 #include "visibility/classify.glsl"

@@ -1,98 +1,100 @@
 #!/usr/bin/env python3
-"""Candela's layer check: every #include "..." points down the layer table below.
+"""Candela's layer check: every #include "..." points down the layer table (engine/layers.txt).
 
-    tools/check_layers.py [ROOT] [--direct] [--no-cmake]
+    tools/check_layers.py [ROOT] [--direct] [--no-cmake] [--write-docs]
 
 Reads every quoted #include in engine/, app/, tools/, tests/ and shaders/ (*.h, *.cpp, *.in),
 resolves it as the build does (the including file's folder, engine/, shaders/; for app/, tools/ and
-tests/ also app/, tests/unit, tests/fuzz), and maps both ends to a layer: a folder of engine/ (its
-CMake target in LAYERS), or "shared" for shaders/shared/*.h. Includes that resolve outside engine/
+tests/ also app/, tests/unit, tests/fuzz), and maps both ends to a layer: a folder of engine/ (a row
+of engine/layers.txt), or "shared" for shaders/shared/*.h. Includes that resolve outside engine/
 and shaders/shared (test helpers, app-local headers) are not layered.
 
 A file in engine/FOLDER may include its own folder and every folder reachable from it along the
-arrows of LAYERS (what its target links, directly or further down). Anything else fails, one line per
-include: "points up" when the included folder depends on the including one, "sideways" when neither
-reaches the other. A file outside engine/ is held to the CONSUMERS row its path matches first (the
-binary it is compiled into). Exit status 1 on any violation, 0 otherwise.
+links of the table (what its target links, directly or further down). Anything else fails, one line
+per include: "points up" when the included folder depends on the including one, "sideways" when
+neither reaches the other. A file outside engine/ is held to the CONSUMERS row its path matches
+first (the binary it is compiled into); tests/unit/FOLDER/ (FOLDER a layer) is compiled into
+candela_unit_tests when FOLDER's kind is cpu, else into candela_engine_unit_tests, and may include
+what that binary links: the layers of its test folders and everything below them. Exit status 1 on
+any violation, 0 otherwise.
 
---direct   also reports includes of a folder that is reachable but not a direct arrow (informational:
-           keeps the table's direct lists honest; never fails the run).
---no-cmake skips the second check: every candela_* library named in engine/*/CMakeLists.txt
-           target_link_libraries of a layer's target must be a layer the table allows it, and every
-           direct arrow of the table must be linked.
+The layer table's section of docs/architecture.md (between the "layers" markers: the table's
+folder, target and links columns, and the levels) must be what --write-docs writes; the job column
+is the doc's own.
 
-Register with ctest (tests/CMakeLists.txt):
-    find_package(Python3 REQUIRED COMPONENTS Interpreter)
-    add_test(NAME layers COMMAND Python3::Interpreter ${PROJECT_SOURCE_DIR}/tools/check_layers.py ${PROJECT_SOURCE_DIR})
-    set_tests_properties(layers PROPERTIES LABELS unit)
+--direct     also reports includes of a folder that is reachable but not a direct link (informational:
+             keeps the table's direct lists honest; never fails the run).
+--no-cmake   skips the check that every candela_* library an engine/*/CMakeLists.txt links to a
+             layer's target (besides what engine/layers.cmake links from the table) is a direct link
+             of the layer's row.
+--write-docs rewrites docs/architecture.md's table and levels from engine/layers.txt and exits.
+
+Registered with ctest as `layers` (tests/CMakeLists.txt).
 """
 import os
 import re
 import sys
 
-# ---- The layer table (the same as engine/CMakeLists.txt's header and docs) ---------------------
-# folder: (CMake target, direct dependencies: folders it may include and its target links)
-LAYERS = {
-    "core":      ("candela_core",      []),
-    "shared":    ("candela_shared",    []),   # shaders/shared/*.h: GLSL and C++, header-only
-    "animation": ("candela_animation", ["core"]),
-    "scene":     ("candela_scene",     ["animation", "shared", "core"]),
-    "geometry":  ("candela_geometry",  ["scene"]),
-    "pose":      ("candela_pose",      ["scene", "core"]),
-    "textures":  ("candela_textures",  ["core"]),
-    "assets":    ("candela_assets",    ["scene", "geometry", "pose", "textures", "shared", "core"]),
-    "ibl":       ("candela_ibl",       ["core"]),
-    "reports":   ("candela_reports",   ["assets", "ibl", "shared", "core"]),
-    "shader":    ("candela_shader",    []),
-    "graph":     ("candela_graph",     []),
-    "vk":        ("candela_vk",        ["shader", "core"]),
-    "executor":  ("candela_executor",  ["graph", "vk"]),
-    "gpu_scene": ("candela_gpu_scene", ["scene", "geometry", "shared", "vk"]),
-    "passes":    ("candela_passes",    ["executor", "gpu_scene", "graph", "pose", "scene", "geometry",
-                                        "shader", "shared", "vk"]),
-    "ibl_maps":  ("candela_ibl_maps",  ["passes", "executor", "graph", "vk", "assets", "ibl", "reports", "core"]),
-    "render":    ("candela_render",    ["ibl_maps", "passes", "gpu_scene", "executor", "graph", "vk", "shader",
-                                        "assets", "pose", "scene", "ibl", "shared", "core"]),
-    "soak":      ("candela_soak",      ["render", "assets", "vk", "core"]),
-    "ui":        ("candela_ui",        ["render", "executor", "graph", "vk", "shader", "assets", "pose", "scene",
-                                        "ibl", "core"]),
-}
-ALL = sorted(LAYERS)
-CPU = ["core", "shared", "animation", "scene", "geometry", "pose", "textures", "assets", "ibl", "reports", "shader", "graph"]
-ENGINE_UNIT_TESTS = ["device_select_test.cpp", "device_profile_test.cpp", "memory_type_test.cpp", "msaa_choice_test.cpp", "graph_pass_context_test.cpp",
-                     "graph_msaa_test.cpp", "draw_list_test.cpp", "visibility_frame_test.cpp", "ibl_sample_tables_test.cpp",
-                     "orbit_controls_test.cpp", "ibl_report_table_test.cpp", "forward_shader_test.cpp",
-                     "forward_tables_test.cpp", "skin_morph_dispatch_test.cpp", "index_values_test.cpp",
-                     "swapchain_choices_test.cpp", "pipeline_cache_file_test.cpp", "bright_texels_test.cpp", "panel_layout_test.cpp",
-                     "frame_plan_test.cpp"]
+
+def read_layers(root):
+    """engine/layers.txt as {folder: (target, kind, direct links)}, in the table's order."""
+    layers = {}
+    with open(os.path.join(root, "engine", "layers.txt"), encoding="utf-8") as f:
+        for line in f:
+            if not re.match(r"[a-z]", line):
+                continue
+            fields = line.split()
+            folder, target, kind = fields[:3]
+            links = [x for x in fields[3:] if x not in ("|", "-")]
+            layers[folder] = (target, kind, links)
+    return layers
+
 
 CLI_ENUM_HEADERS = ["passes/debug_view.h", "passes/draw_selection.h", "passes/tonemap_operator.h", "passes/shading_model.h",
                     "passes/precompile.h", "passes/shading_path.h", "ui/viewer_panels.h", "vk/device_profile.h"]
 
-# ---- Files outside engine/: the first row whose path matches (a file, or a folder ending in /) --
-# (path, folders it may include (and everything below them), single headers it may include besides)
-CONSUMERS = [
-    # candela_cli: the argument parser, tested without the engine (tests/cli). The names of the debug
-    # views, draw selections, tonemap operators, shading models, precompile choices and viewer panels are header-only enums with their
-    # names tables; candela_passes and candela_ui are not linked.
-    *[(f"app/{name}", ["ibl", "core", "shared"], CLI_ENUM_HEADERS)
-      for name in ["cli.h", "cli.cpp", "cli_commands.cpp", "cli_flags.h", "cli_flags.cpp", "cli_help.cpp", "cli_values.h", "cli_values.cpp",
-                   ]],
-    ("app/", ALL, []),
-    ("tools/bench/graph_compile_bench.cpp", ["graph"], []),
-    ("tools/bench/pose_bench.cpp", ["assets", "pose"], []),
-    ("tools/bench/exr_read_bench.cpp", ["assets"], []),
-    ("tools/", ALL, []),
-    # candela_engine_unit_tests: no device, no window, but the device-side and viewer libraries.
-    *[(f"tests/unit/{name}", ["vk", "executor", "gpu_scene", "passes", "ibl_maps", "render", "ui"], []) for name in ENGINE_UNIT_TESTS],
-    # candela_unit_tests and the helpers every test binary shares: the CPU libraries only.
-    ("tests/unit/", CPU, []),
-    # The fuzz build configures nothing above the readers (and the images `candela diff` reads).
-    ("tests/fuzz/", ["assets", "pose", "reports"], []),
-    ("tests/", ALL, []),
-    # candela_shaders defines shader/builtin_shaders.h.
-    ("shaders/", ["shader", "shared"], []),
-]
+LAYERS, ALL, CPU, CONSUMERS = {}, [], [], []
+
+
+def load(root):
+    """Reads the layer table and derives from it the rules of the files outside engine/."""
+    global LAYERS, ALL, CPU, CONSUMERS
+    LAYERS = read_layers(root)
+    ALL = list(LAYERS)
+    CPU = [f for f, (_, kind, _) in LAYERS.items() if kind == "cpu"]
+    tests = os.path.join(root, "tests", "unit")
+    cpu_tests = [f for f in CPU if os.path.isdir(os.path.join(tests, f))]
+    engine_tests = [f for f in ALL if f not in CPU and os.path.isdir(os.path.join(tests, f))]
+    # Files outside engine/: the first row whose path matches (a file, or a folder ending in /):
+    # (path, folders it may include (and everything below them), single headers it may include besides)
+    CONSUMERS = [
+        # candela_cli: the argument parser, tested without the engine (tests/cli). The names of the
+        # debug views, draw selections, tonemap operators, shading models, precompile choices and
+        # viewer panels are header-only enums with their names tables; candela_passes and candela_ui
+        # are not linked.
+        *[(f"app/{name}", ["ibl", "core", "shared"], CLI_ENUM_HEADERS)
+          for name in ["cli.h", "cli.cpp", "cli_commands.cpp", "cli_flags.h", "cli_flags.cpp", "cli_help.cpp",
+                       "cli_values.h", "cli_values.cpp"]],
+        ("app/", ALL, []),
+        ("tools/bench/graph_compile_bench.cpp", ["graph"], []),
+        ("tools/bench/pose_bench.cpp", ["assets", "pose"], []),
+        ("tools/bench/exr_read_bench.cpp", ["assets"], []),
+        ("tools/", ALL, []),
+        # tests/unit/FOLDER/ tests engine/FOLDER (tests/unit/CMakeLists.txt): candela_engine_unit_tests
+        # holds the device-side and viewer folders (no device created, no window opened) and links
+        # their libraries ...
+        *[(f"tests/unit/{f}/", engine_tests, []) for f in engine_tests],
+        # ... candela_unit_tests the CPU ones; the helpers at tests/unit's top, shared by every test
+        # binary, use the CPU libraries only.
+        *[(f"tests/unit/{f}/", CPU, []) for f in cpu_tests],
+        ("tests/unit/", CPU, []),
+        # The fuzz build configures nothing above the readers (and the images `candela diff` reads).
+        ("tests/fuzz/", ["assets", "pose", "reports"], []),
+        ("tests/", ALL, []),
+        # candela_shaders defines shader/builtin_shaders.h.
+        ("shaders/", ["shader", "shared"], []),
+    ]
+
 
 SCAN = ("engine", "app", "tools", "tests", "shaders")
 SKIP_DIRS = {"build", "regressions", "uri-folder", "golden", ".git"}
@@ -101,23 +103,25 @@ INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
 
 
 def reach(folder):
-    """Folders reachable from `folder` along the table's arrows (without itself)."""
-    seen, todo = set(), list(LAYERS[folder][1])
+    """Folders reachable from `folder` along the table's links (without itself)."""
+    seen, todo = set(), list(LAYERS[folder][2])
     while todo:
         f = todo.pop()
         if f not in seen:
             seen.add(f)
-            todo += LAYERS[f][1]
+            todo += LAYERS[f][2]
     return seen
 
 
 def check_table():
-    problems = []
-    for f, (_, deps) in LAYERS.items():
-        problems += [f"layer table: {f} depends on unknown layer {d}" for d in deps if d not in LAYERS]
-    if problems:
-        return problems
-    return [f"layer table: {f} reaches itself (a cycle)" for f in LAYERS if f in reach(f)]
+    """Each row links only rows above it (so the table has no cycle), with a known kind."""
+    problems, above = [], set()
+    for f, (_, kind, deps) in LAYERS.items():
+        if kind not in ("cpu", "device", "viewer"):
+            problems.append(f"engine/layers.txt: {f}: kind {kind} is none of cpu, device, viewer")
+        problems += [f"engine/layers.txt: {f} links {d}, which is not a row above it" for d in deps if d not in above]
+        above.add(f)
+    return problems
 
 
 def layer_of(path):
@@ -172,10 +176,15 @@ def check_includes(root, direct):
                     errors.append(f"{src}: a file at engine/'s root belongs to no layer; put it in its job's folder")
                 continue
             if own not in LAYERS:
-                errors.append(f"{src}: folder engine/{own} is not in the layer table (tools/check_layers.py LAYERS)")
+                errors.append(f"{src}: folder engine/{own} is not in the layer table (engine/layers.txt)")
                 continue
             rule, allowed, headers = f"engine/{own}", reach(own) | {own}, set()
         else:
+            parts = src.split("/")
+            if parts[:2] == ["tests", "unit"] and len(parts) > 3 and parts[2] not in LAYERS:
+                errors.append(f"{src}: tests/unit/{parts[2]} is no folder of the layer table (engine/layers.txt); "
+                              f"a unit test goes in the folder of what it tests")
+                continue
             rule, allowed, headers = consumer_rule(src)
         with open(os.path.join(root, src), encoding="utf-8", errors="replace") as f:
             lines = f.readlines()
@@ -195,7 +204,7 @@ def check_includes(root, direct):
                 errors.append(f"{src}:{number}: includes {target}, in engine/{layer}, which is not in the layer table")
                 continue
             if layer in allowed or os.path.relpath(target, "engine") in headers:
-                if direct and own in LAYERS and layer != own and layer not in LAYERS[own][1]:
+                if direct and own in LAYERS and layer != own and layer not in LAYERS[own][2]:
                     notes.append(f"{src}:{number}: includes {m.group(1)} ({layer}): allowed through the table, "
                                  f"not a direct arrow of {own}")
                 continue
@@ -213,12 +222,14 @@ def check_includes(root, direct):
 
 
 def check_cmake(root):
-    """engine/FOLDER/CMakeLists.txt: the candela_* libraries each layer's target links."""
+    """engine/FOLDER/CMakeLists.txt links each layer's target to what its row of the table names
+    (candela_engine_library, engine/CMakeLists.txt); any candela_* library a folder links besides
+    must be a direct link of its row (or no layer's, as candela_shaders)."""
     errors = []
-    by_target = {t: f for f, (t, _) in LAYERS.items()}
+    by_target = {t: f for f, (t, _, _) in LAYERS.items()}
     external = {"candela_warnings", "candela_shaders", "candela_fuzz_third_party", "candela_draco_decoder",
                 "candela_draco_archive"}
-    for folder, (target, deps) in LAYERS.items():
+    for folder, (target, _, deps) in LAYERS.items():
         if folder == "shared":
             continue
         path = os.path.join(root, "engine", folder, "CMakeLists.txt")
@@ -226,33 +237,107 @@ def check_cmake(root):
             errors.append(f"engine/{folder}/CMakeLists.txt: missing (the layer {folder} builds {target})")
             continue
         text = re.sub(r"#[^\n]*", "", open(path, encoding="utf-8").read())
+        if not re.search(r"candela_engine_library\(\s*" + target + r"\b", text):
+            errors.append(f"engine/{folder}/CMakeLists.txt: does not build {target} with candela_engine_library")
         linked = set()
         for m in re.finditer(r"target_link_libraries\(\s*(\w+)(.*?)\)", text, re.S):
-            if m.group(1) != target:
-                continue
-            linked |= set(re.findall(r"\bcandela_\w+", m.group(2)))
-        allowed = reach(folder)
+            if m.group(1) == target:
+                linked |= set(re.findall(r"\bcandela_\w+", m.group(2)))
         for lib in sorted(linked - external):
             if lib not in by_target:
                 errors.append(f"engine/{folder}/CMakeLists.txt: {target} links {lib}, which is no layer's target")
-            elif by_target[lib] not in allowed:
+            elif by_target[lib] not in deps:
                 errors.append(f"engine/{folder}/CMakeLists.txt: {target} links {lib} ({by_target[lib]}), "
-                              f"which is not below {folder} in the layer table")
-        for dep in deps:
-            if LAYERS[dep][0] not in linked:
-                errors.append(f"engine/{folder}/CMakeLists.txt: {target} does not link {LAYERS[dep][0]}, "
-                              f"a direct dependency of {folder} in the layer table")
+                              f"which its row of engine/layers.txt does not link")
     return errors
+
+
+DOC = "docs/architecture.md"
+DOC_WRITER = "written from engine/layers.txt by tools/check_layers.py --write-docs"
+TABLE_MARKS = (f"<!-- layer table: {DOC_WRITER}; the job column is the doc's -->", "<!-- end of layer table -->")
+LEVELS_MARKS = (f"<!-- layer levels: {DOC_WRITER} -->", "<!-- end of layer levels -->")
+TABLE_HEADER = ["| folder | CMake target | kind | links (direct) | job |", "|---|---|---|---|---|"]
+
+
+def doc_levels():
+    """The levels diagram: level 0 links nothing, level n links something of level n-1."""
+    level = {}
+    for f, (_, _, deps) in LAYERS.items():
+        level[f] = 1 + max((level[d] for d in deps), default=-1)
+    return ["```", *[f"{n}  " + "   ".join(f for f in LAYERS if level[f] == n) for n in range(max(level.values()) + 1)],
+            "```"]
+
+
+def doc_table(old):
+    """The table's lines from the layer table, each row's job cell taken from `old` (the doc's lines
+    between the marks); rows of folders that are no layer (app) are kept after the layers'."""
+    columns = old[0].count("|") - 1 if old else 0
+    jobs, others = {}, []
+    for line in old[2:]:
+        cells = line.strip()[1:-1].split(" | ", columns - 1)
+        folder = cells[0].strip()
+        if folder in LAYERS or folder == "shaders/shared":
+            jobs[folder] = cells[-1].strip()
+        else:
+            others.append(line)
+    rows = []
+    for f, (target, kind, deps) in LAYERS.items():
+        folder = "shaders/shared" if f == "shared" else f
+        rows.append(f"| {folder} | {target} | {kind} | {', '.join(deps) or '—'} | {jobs.get(folder, '')} |")
+    return TABLE_HEADER + rows + others
+
+
+def doc_sections(lines):
+    """[(first line index, end mark index, the lines it should have)] of the two marked sections."""
+    sections = []
+    for (begin, end), write in ((TABLE_MARKS, doc_table), (LEVELS_MARKS, lambda old: doc_levels())):
+        if begin not in lines or end not in lines:
+            raise ValueError(f"{DOC}: the marks of a generated section are missing: {begin} … {end}")
+        first, last = lines.index(begin) + 1, lines.index(end)
+        sections.append((first, last, write(lines[first:last])))
+    return sections
+
+
+def check_doc(root):
+    lines = open(os.path.join(root, DOC), encoding="utf-8").read().split("\n")
+    try:
+        sections = doc_sections(lines)
+    except ValueError as e:
+        return [str(e)]
+    errors = []
+    for first, last, want in sections:
+        have = lines[first:last]
+        for i in range(max(len(have), len(want))):
+            h, w = (have[i] if i < len(have) else "(none)"), (want[i] if i < len(want) else "(none)")
+            if h != w:
+                errors.append(f"{DOC}:{first + i + 1}: differs from engine/layers.txt: has '{h}', should have '{w}' "
+                              f"(tools/check_layers.py --write-docs rewrites it)")
+                break
+    return errors
+
+
+def write_doc(root):
+    path = os.path.join(root, DOC)
+    lines = open(path, encoding="utf-8").read().split("\n")
+    for first, last, want in reversed(doc_sections(lines)):
+        lines[first:last] = want
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("\n".join(lines))
 
 
 def main(argv):
     args = [a for a in argv if not a.startswith("--")]
     root = args[0] if args else os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+    load(root)
     problems = check_table()
     if problems:
         print("\n".join(problems))
         return 1
+    if "--write-docs" in argv:
+        write_doc(root)
+        return 0
     errors, notes, count = check_includes(root, "--direct" in argv)
+    errors += check_doc(root)
     if "--no-cmake" not in argv:
         errors += check_cmake(root)
     for line in notes:

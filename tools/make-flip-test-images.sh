@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders the image pairs of the ꟻLIP tests (tests/data/flip, tests/unit/flip_reference_test.cpp):
+# Renders the image pairs of the ꟻLIP tests (tests/data/flip, tests/unit/reports/flip_reference_test.cpp):
 # DamagedHelmet in venice_sunset at 128 x 128, as PNG and as EXR. The reference is drawn with
 # MSAA 4; the test with MSAA 1, 4 prefilter samples and a 64-texel environment cube (aliased edges,
 # a noisier reflection, a blurrier background): the kind of difference a regression makes.

@@ -5,7 +5,7 @@
 // shaders/shared/environment.h. Deterministic: the same parameters give the same texels.
 //
 // Units are relative radiance (the renderer's scene-referred units; `--env-intensity` scales them).
-// At the defaults (measured by tests/unit/sky_test.cpp, luminance): the sun disc's irradiance at
+// At the defaults (measured by tests/unit/assets/sky_test.cpp, luminance): the sun disc's irradiance at
 // normal incidence is 6.8, 3.9 on a horizontal surface (sun at 35°); the sky's (with the halo) on a
 // horizontal surface is 2.24; so a white Lambertian floor reflects a radiance of 6.14/π ≈ 1.96 — a
 // slightly hazy clear afternoon (sun ≈ 63% of the light on the floor, sky ≈ 37%), with sky radiance

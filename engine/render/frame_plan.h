@@ -4,7 +4,7 @@
 // the sky goes, how transmissive draws see what is behind them, whether the visibility path needs
 // the MSAA expansion and the blended pass, what the skin_morph pass does — with every pass or draw
 // it leaves out and why, as enums. No graph and no Vulkan: each decision is unit-tested by its
-// fields (tests/unit/frame_plan_test.cpp). FrameBuilder gathers the facts, declares the plan's
+// fields (tests/unit/render/frame_plan_test.cpp). FrameBuilder gathers the facts, declares the plan's
 // passes and turns the plan into --explain lines (explain_plan.h).
 
 #include "passes/debug_view.h"

@@ -45,7 +45,7 @@ struct SplitSum {
 };
 
 // The split-sum terms for NoV ∈ (0, 1] (clamped to [1e-4, 1]) and perceptual roughness ∈ [0, 1]
-// (clamped). Converged to ≤ 2e-5 absolute for all inputs (tests/unit/ibl_reference_test.cpp).
+// (clamped). Converged to ≤ 2e-5 absolute for all inputs (tests/unit/reports/ibl_reference_test.cpp).
 // Roughness < 1e-4 (α < 1e-8) is the mirror: a = 1 − Fc(NoV), b = Fc(NoV).
 //
 // Method: the integral over the half vector h with the GGX change of variables, h drawn by the

@@ -84,15 +84,21 @@ VkShaderStageFlagBits stageOfFile(const std::filesystem::path& file) {
 }
 
 CompileResult compileGlsl(const std::filesystem::path& file, const std::filesystem::path& includeDir) {
+    const VkShaderStageFlagBits stage = stageOfFile(file);
+    if (stage == 0) {
+        CompileResult result;
+        result.errors.push_back(file.string() + ": not NAME.vert.glsl, NAME.frag.glsl or NAME.comp.glsl");
+        return result;
+    }
+    return compileGlsl(file, includeDir, stage, {});
+}
+
+CompileResult compileGlsl(const std::filesystem::path& file, const std::filesystem::path& includeDir,
+                          VkShaderStageFlagBits stage, const std::vector<std::string_view>& defines) {
     static std::once_flag initialized;
     std::call_once(initialized, [] { glslang::InitializeProcess(); });
 
     CompileResult result;
-    const VkShaderStageFlagBits stage = stageOfFile(file);
-    if (stage == 0) {
-        result.errors.push_back(file.string() + ": not NAME.vert.glsl, NAME.frag.glsl or NAME.comp.glsl");
-        return result;
-    }
     std::string source;
     if (!readText(file, source)) {
         result.errors.push_back(file.string() + ": cannot read");
@@ -104,6 +110,15 @@ CompileResult compileGlsl(const std::filesystem::path& file, const std::filesyst
     const std::string name = file.string();
     const char* names[] = {name.c_str()};
     shader.setStringsWithLengthsAndNames(&text, nullptr, names, 1);
+    // As glslangValidator -D: "#define X VALUE" lines read right after #version.
+    std::string preamble;
+    for (std::string_view define : defines) {
+        const size_t equals = define.find('=');
+        preamble += "#define " + std::string(define.substr(0, equals));
+        if (equals != std::string_view::npos) preamble += " " + std::string(define.substr(equals + 1));
+        preamble += "\n";
+    }
+    shader.setPreamble(preamble.c_str());
     shader.setEnvInput(glslang::EShSourceGlsl, language, glslang::EShClientVulkan, 100);
     shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
     shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_6);

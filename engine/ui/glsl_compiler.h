@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace candela::shader {
@@ -22,7 +23,11 @@ struct CompileResult {
 // Stage from a file name "NAME.STAGE.glsl" (vert, frag, comp); 0 if it has none of those.
 VkShaderStageFlagBits stageOfFile(const std::filesystem::path& file);
 
-// Compiles one shader file. Never throws for bad GLSL or unreadable files: they are errors.
+// Compiles one shader file as `stage` with `defines` ("X" or "X=VALUE", as glslangValidator's -D,
+// defined after the file's #version). Never throws for bad GLSL or unreadable files: they are errors.
+CompileResult compileGlsl(const std::filesystem::path& file, const std::filesystem::path& includeDir,
+                          VkShaderStageFlagBits stage, const std::vector<std::string_view>& defines);
+// The same, as the stage the file's name gives (NAME.STAGE.glsl), without defines.
 CompileResult compileGlsl(const std::filesystem::path& file, const std::filesystem::path& includeDir);
 
 }  // namespace candela::shader

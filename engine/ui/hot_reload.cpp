@@ -13,11 +13,9 @@ namespace candela::ui {
 
 namespace {
 
-// "forward.frag.glsl" → "forward.frag" when that is a built-in shader, else "".
-std::string shaderNameOf(const std::filesystem::path& file) {
-    if (file.extension() != ".glsl") return {};
-    const std::string name = file.stem().string();
-    return shader::builtinShader(name).empty() ? std::string() : name;
+// The stage of built-in shader "NAME.STAGE".
+VkShaderStageFlagBits stageOfName(std::string_view name) {
+    return shader::stageOfFile(std::filesystem::path(std::string(name) + ".glsl"));
 }
 
 // Why `replacement` cannot stand in for `original` without rebuilding descriptor sets, or "".
@@ -55,7 +53,8 @@ void ShaderHotReload::scan(std::map<std::filesystem::path, std::filesystem::file
 
 bool ShaderHotReload::reload(const std::string& name, const std::filesystem::path& file) {
     const auto start = std::chrono::steady_clock::now();
-    shader::CompileResult result = shader::compileGlsl(file, mDir);
+    shader::CompileResult result =
+        shader::compileGlsl(file, mDir, stageOfName(name), shader::builtinShaderSource(name).defines);
     const double compileMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     mIncludes[name] = std::set<std::filesystem::path>(result.includes.begin(), result.includes.end());
     if (!result.ok()) {
@@ -97,21 +96,19 @@ std::vector<std::string> ShaderHotReload::poll() {
     mTimes = std::move(now);
     if (saved.empty()) return replaced;
 
-    // The shaders to recompile: saved shaders, and those including a saved header (every shader
-    // when a header's readers are not known yet).
+    // The shaders to recompile: those compiled from a saved file (shaders/builtin_shaders.txt: a
+    // program's variants share it), and those including a saved header (every shader when a
+    // header's readers are not known yet). A shader whose source this folder lacks is left alone.
     std::map<std::string, std::filesystem::path> todo;
-    for (const std::filesystem::path& path : saved) {
-        if (const std::string name = shaderNameOf(path); !name.empty()) {
-            todo[name] = path;
-            continue;
-        }
-        for (const auto& [file, time] : mTimes) {
-            const std::string name = shaderNameOf(file);
-            if (name.empty()) continue;
-            const auto includes = mIncludes.find(name);
-            const bool reads = includes == mIncludes.end() ||
+    for (const std::string_view builtin : shader::builtinShaderNames()) {
+        const std::string name(builtin);
+        const std::filesystem::path file = mDir / shader::builtinShaderSource(name).file;
+        if (!mTimes.contains(file)) continue;
+        const auto includes = mIncludes.find(name);
+        for (const std::filesystem::path& path : saved) {
+            std::error_code ec;
+            const bool reads = std::filesystem::equivalent(file, path, ec) || includes == mIncludes.end() ||
                                std::any_of(includes->second.begin(), includes->second.end(), [&](const auto& header) {
-                                   std::error_code ec;
                                    return std::filesystem::equivalent(header, path, ec);
                                });
             if (reads) todo[name] = file;

@@ -1,7 +1,8 @@
 #pragma once
-// Shader hot reload for the viewer: watches a shaders/ folder (NAME.STAGE.glsl and the headers
-// they include). A saved shader — or a saved header, for every shader that includes it — is
-// recompiled with glslang; if it compiles and keeps its descriptor and push-constant layout it
+// Shader hot reload for the viewer: watches a shaders/ folder (the sources of the built-in shaders,
+// shaders/builtin_shaders.txt, and the headers they include). A saved source — for every built-in
+// shader compiled from it, each with its defines — or a saved header, for every shader that
+// includes it, is recompiled with glslang; if it compiles and keeps its descriptor and push-constant layout it
 // replaces the built-in SPIR-V (shader/shader_library.h) and the pipelines using it are rebuilt at
 // their next use. Otherwise its errors (FILE:LINE: message) are kept for the UI and the old
 // pipelines keep running.

@@ -1,7 +1,7 @@
-// The body of shaders/ibl_brdf_lut.comp.glsl and its variants: they define CANDELA_LUT_FORMAT (the storage
-// format qualifier) and include this file.
-#ifndef CANDELA_IBL_BRDF_LUT_GLSL
-#define CANDELA_IBL_BRDF_LUT_GLSL
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// ibl_brdf_lut.comp and its variants (builtin_shaders.txt: they define CANDELA_LUT_FORMAT, the
+// storage format qualifier).
 // IBL precompute: the split-sum BRDF LUT. Texel (x, y) holds, for N·V = x/(size−1) and perceptual
 // roughness y/(size−1), A = ∫(1 − Fc)·f·cos and B = ∫Fc·f·cos of the forward pass's specular BRDF
 // (GGX, height-correlated Smith visibility; Fc = (1 − v·h)^5), by sampling GGX visible normals
@@ -42,5 +42,3 @@ void main() {
     }
     imageStore(lut, ivec2(id), vec4(ab / float(push.samples), 0.0f, 0.0f));
 }
-
-#endif

@@ -1,7 +1,7 @@
-// The body of shaders/ibl_cube_downsample.comp.glsl and its variants: they define CANDELA_FLOAT_CUBE_FORMAT (the storage
-// format qualifier) and include this file.
-#ifndef CANDELA_IBL_CUBE_DOWNSAMPLE_GLSL
-#define CANDELA_IBL_CUBE_DOWNSAMPLE_GLSL
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// ibl_cube_downsample.comp and its variants (builtin_shaders.txt: they define
+// CANDELA_FLOAT_CUBE_FORMAT, the storage format qualifier).
 // IBL precompute, step 2: one mip of the float cube map from the one above (2×2 box filter, faces
 // independent). Dispatched once per mip; the pass orders the dispatches with barriers.
 #include "shared/ibl.h"
@@ -23,5 +23,3 @@ void main() {
                imageLoad(srcMip, s + ivec3(1, 1, 0));
     imageStore(dstMip, ivec3(id), sum * 0.25f);
 }
-
-#endif

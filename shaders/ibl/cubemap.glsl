@@ -1,7 +1,7 @@
-// The body of shaders/ibl_cubemap.comp.glsl and its variants: they define CANDELA_FLOAT_CUBE_FORMAT (the storage
-// format qualifier) and include this file.
-#ifndef CANDELA_IBL_CUBEMAP_GLSL
-#define CANDELA_IBL_CUBEMAP_GLSL
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// ibl_cubemap.comp and its variants (builtin_shaders.txt: they define CANDELA_FLOAT_CUBE_FORMAT,
+// the storage format qualifier, and for the half-float cube CANDELA_FLOAT_CUBE_HALF).
 // IBL precompute, step 1: the equirectangular environment (half floats, scaled into range; rotation
 // 0) resampled into mip 0 of the float cube map — its bright texels clamped to push.clampLuminance
 // (engine/ibl_maps/bright_texels.h) — and, as it is, into mip 0 of the specular cube (roughness 0 reflects the environment
@@ -72,5 +72,3 @@ void main() {
 #endif
     imageStore(specularMip0, ivec3(id), vec4(min(radiance, vec3(CANDELA_HALF_MAX)), 1.0f));
 }
-
-#endif

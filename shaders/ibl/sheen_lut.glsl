@@ -1,7 +1,7 @@
-// The body of shaders/ibl_sheen_lut.comp.glsl and its variants: they define CANDELA_LUT_FORMAT (the storage
-// format qualifier) and include this file.
-#ifndef CANDELA_IBL_SHEEN_LUT_GLSL
-#define CANDELA_IBL_SHEEN_LUT_GLSL
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// ibl_sheen_lut.comp and its variants (builtin_shaders.txt: they define CANDELA_LUT_FORMAT, the
+// storage format qualifier).
 // The sheen LUT (KHR_materials_sheen): texel (x, y) holds the sheen lobe's directional albedo
 // E(N·V, r) = ∫ f_sheen · N·L dω_L for N·V = x/(size−1) and perceptual sheen roughness
 // r = y/(size−1) (clamped as shared/brdf_sheen.h clamps it), which scales the material beneath
@@ -49,5 +49,3 @@ void main() {
     // Both halves of the azimuth range.
     imageStore(lut, ivec2(id), vec4(2.0f * sum * du * dphi, 0.0f, 0.0f, 0.0f));
 }
-
-#endif

@@ -81,7 +81,7 @@ CANDELA_FN BrdfLobes brdfLobesTimesCosineAnisotropic(vec3 N, vec3 V, vec3 L, vec
 // directional albedo is 0.50-0.62 against E's 0.78-0.99 at strength 1). The prefiltered mip and
 // the bend stay at the material's roughness, which keeps the streak as sharp as the narrow axis
 // (docs/materials.md: reading those at this roughness too measures closer but blurs the streaks
-// away; tests/unit/anisotropy_ibl_error_test.cpp measures both).
+// away; tests/unit/shared/anisotropy_ibl_error_test.cpp measures both).
 CANDELA_FN float anisotropicIblRoughness(float perceptualRoughness, float strength) {
     float ab = perceptualRoughness * perceptualRoughness;
     float at = mix(ab, 1.0f, strength * strength);

@@ -82,7 +82,7 @@ CANDELA_FN Sheen sheenLayer(vec3 color, float perceptualRoughness, float albedo)
 // about its direction, exact at normal incidence); away from it the sheen lobe is a back-scattering
 // lobe that stays about N and leans toward V, never toward the mirror direction — at grazing views
 // R lies on the far side, and a ring about it takes in light from below the surface. Against the
-// lobe integrated over the environment in double precision (tests/unit/layer_ibl_error_test.cpp,
+// lobe integrated over the environment in double precision (tests/unit/shared/layer_ibl_error_test.cpp,
 // docs/materials.md) the mean relative error is 0.47 about N, 0.82 about R (weight 1: what the
 // forward pass did, and what the Khronos sample viewer does).
 #define CANDELA_SHEEN_MIRROR_WEIGHT 0.0f

@@ -1,7 +1,7 @@
 #pragma once
 // The fuzz targets as plain functions, shared by the libFuzzer entry points (fuzz_*.cpp,
 // built by the fuzz preset) and by the regression test that replays every input the fuzzers ever
-// crashed on (tests/unit/fuzz_regression_test.cpp, in the ordinary and the sanitizer builds).
+// crashed on (tests/unit/assets/fuzz_regression_test.cpp, in the ordinary and the sanitizer builds).
 //
 // Each feeds one input to a reader and returns normally when the reader either accepted it or
 // threw candela::UserError. Anything else is a defect the fuzzer must report: another exception

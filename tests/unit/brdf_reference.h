@@ -8,7 +8,7 @@
 //   - half vector H = normalize(V + L); when |V + L| ≤ 1e-6 (V = −L) H = N and no specular term;
 //   - N·H and V·H clamped to [0, 1];
 //   - Blinn-Phong shininess 2 / max(r⁴, 1e-4) − 2 with r the clamped roughness.
-// Header-only, used by tests/unit/brdf_test.cpp and tests/gpu/brdf_probe_test.cpp.
+// Header-only, used by tests/unit/shared/brdf_test.cpp and tests/gpu/brdf_probe_test.cpp.
 
 #include <glm/glm.hpp>
 

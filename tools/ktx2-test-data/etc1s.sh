@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the BasisLZ/ETC1S fixtures of tests/unit/basis_etc1s_test.cpp in tests/data/ktx2/etc1s_*:
+# Regenerates the BasisLZ/ETC1S fixtures of tests/unit/textures/basis_etc1s_test.cpp in tests/data/ktx2/etc1s_*:
 # deterministic source PNGs (written here with Python and PIL), their KTX2 encodings by the Basis
 # Universal encoder, and reference decodes of every level by that encoder's own transcoder.
 #

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the UASTC fixtures of tests/unit/basis_uastc_test.cpp in tests/data/ktx2/uastc_*:
+# Regenerates the UASTC fixtures of tests/unit/textures/basis_uastc_test.cpp in tests/data/ktx2/uastc_*:
 # deterministic source PNGs (written here with Python and PIL), their UASTC KTX2 encodings by the
 # Basis Universal encoder (no Zstandard, so the tests need no zstd), and two reference decodes of
 # every level: linear (ASTC's decode_unorm8 result) and sRGB (the top byte of ASTC's sRGB-mode
