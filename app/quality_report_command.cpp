@@ -13,6 +13,8 @@
 // Pareto front, the device's defaults ringed). See docs/anti-aliasing.md.
 
 #include "commands.h"
+#include "session.h"
+#include "stopwatch.h"
 #include "frame_measurement.h"
 #include "statistics.h"
 
@@ -27,7 +29,6 @@
 #include "assets/gltf_loader.h"
 #include "assets/procedural_sky.h"
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -220,8 +221,9 @@ int runQualityReport(const QualityReportOptions& options) {
 
     // Everything the sweep needs is loaded first, so that a bad file fails before minutes of work.
     const scene::Environment sky = scene::makeProceduralSky();
-    std::optional<scene::Environment> fileEnvironment;
-    if (options.env.kind == EnvironmentChoice::Kind::File) fileEnvironment = loadEnvironment(options.env);
+    // The session's environment: the --env file of the glTF scenes; none with --env sky.
+    const bool fileEnvironment = options.env.kind == EnvironmentChoice::Kind::File;
+    Session session(options.common, fileEnvironment ? options.env : EnvironmentChoice{EnvironmentChoice::Kind::None});
     std::list<scene::Scene> loaded;  // the renderer keeps pointing at the last scene it drew
     for (const std::string& entry : options.scenes) {
         scene::Scene& scene = loaded.emplace_back(entry == "default" ? scene::makeSphereGrid() : scene::loadGltf(entry));
@@ -229,8 +231,9 @@ int runQualityReport(const QualityReportOptions& options) {
         for (const std::string& note : scene.notes) log::info(entry + ": " + note);
     }
 
-    vk::Context context(contextDesc(options.common));
-    Renderer renderer(context);
+    session.start();
+    vk::Context& context = session.context();
+    Renderer& renderer = session.renderer();
     const vk::MsaaChoice defaultMsaa = renderer.msaa(std::nullopt);
     std::vector<uint32_t> sampleCounts;
     std::vector<std::string> notes;
@@ -254,7 +257,7 @@ int runQualityReport(const QualityReportOptions& options) {
     auto scene = loaded.begin();
     for (size_t s = 0; s < options.scenes.size(); ++s, ++scene) {
         const bool builtin = options.scenes[s] == "default";
-        const scene::Environment* environment = builtin || !fileEnvironment ? &sky : &*fileEnvironment;
+        const scene::Environment* environment = builtin || !fileEnvironment ? &sky : session.environment();
         SceneResult result{.name = scenes[s]};
         RenderSettings base{.width = options.width, .height = options.height, .scene = &*scene, .environment = environment};
         base.ibl.skybox = true;
@@ -264,9 +267,9 @@ int runQualityReport(const QualityReportOptions& options) {
         progress.step(done, result.name + ": reference (" + std::to_string(options.width * kReferenceScale) + "x" +
                                 std::to_string(options.height * kReferenceScale) + ", " + std::to_string(options.orbitFrames) +
                                 " frames)");
-        const auto referenceStart = std::chrono::steady_clock::now();
+        const auto referenceStart = Clock::now();
         const std::vector<std::vector<uint8_t>> reference = orbitFrames(renderer, base, options.orbitFrames, kReferenceScale);
-        result.referenceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - referenceStart).count();
+        result.referenceSeconds = msSince(referenceStart) / 1000.0;
         ++done;
         result.referenceTemporal = io::meanFrameToFrameDifference(reference);
         // Errors first, the LOD errors of one (MSAA, specular AA, path) in a row so that a setting
@@ -343,11 +346,7 @@ int runQualityReport(const QualityReportOptions& options) {
     progress.finish();
     writeReport(options.out, results, options, context.report().name, defaultMsaa, notes);
     std::printf("wrote %s/report.csv, report.md and 2 plots per scene\n", options.out.c_str());
-    if (context.validationMessageCount() > 0) {
-        log::error(std::to_string(context.validationMessageCount()) + " validation messages");
-        return 3;
-    }
-    return 0;
+    return session.exitCode(0);
 }
 
 }  // namespace candela::app
