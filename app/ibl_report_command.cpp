@@ -106,6 +106,46 @@ const ibl::CachedImage* findImage(const std::vector<ibl::CachedImage>& images, c
     return nullptr;
 }
 
+// The ground truth and how far it converged: the same render at a quarter of the samples.
+struct GroundTruth {
+    CapturedFrame truth;
+    ibl::ErrorStats convergence;
+    report::VisibleError visibleConvergence;
+};
+
+// Renders the ground truth of `frame` (written to the report folder as ground_truth.exr and .png)
+// and the convergence check, and prints the line about them; `frame` is left at the default
+// quality without reference samples.
+GroundTruth groundTruth(Renderer& renderer, RenderSettings& frame, const scene::Environment& environment,
+                        const IblReportOptions& options, Progress& progress) {
+    const std::filesystem::path folder = options.out;
+    GroundTruth out;
+    progress.step(0, "ground truth (" + std::to_string(options.referenceSamples) + " samples per pixel)");
+    renderer.setReferenceEnvironment(environment);
+    renderer.precomputeIbl(environment, ibl::IblQuality{});
+    frame.iblQuality = ibl::IblQuality{};
+    frame.ibl.referenceSamples = options.referenceSamples;
+    const auto truthStart = Clock::now();
+    out.truth = renderer.capture(frame);
+    const CapturedFrame& truth = out.truth;
+    const double truthMs = msSince(truthStart);
+    frame.ibl.referenceSamples = options.referenceSamples / 4;
+    const CapturedFrame quarter = renderer.capture(frame);
+    out.convergence = report::imageError(quarter.rgba32f, truth.rgba32f);
+    out.visibleConvergence =
+        report::visibleError(quarter.rgba32f, truth.rgba32f, truth.width, truth.height);
+    frame.ibl.referenceSamples = 0;
+    io::writeExr(folder / "ground_truth.exr", truth.width, truth.height, truth.rgba32f);
+    report::writePreview(folder / "ground_truth.png", truth);
+    progress.clear();
+    std::printf("ground truth: %u samples per lobe per pixel and %u texels summed, %.0f ms; a quarter of the samples "
+                "differs by %.2e relative RMSE, %.2e mean relative error, FLIP max %.3f\n", options.referenceSamples,
+                renderer.iblMaps().referenceTexelCount(), truthMs, out.convergence.rmse, out.convergence.meanRelative,
+                out.visibleConvergence.flipMax);
+
+    return out;
+}
+
 // What each setting's errors are measured against: the environment, its reference and the
 // reference integrals' cache.
 struct ErrorReference {
@@ -173,27 +213,8 @@ int runIblReport(const IblReportOptions& options) {
     const std::vector<Setting> settings = sweep(options.quick);
     // Steps: the ground truth, each setting's errors, each setting in each timing round, the files.
     Progress progress("ibl-report", 2 + settings.size() * (1 + options.repeats), options.common.quiet);
-    progress.step(0, "ground truth (" + std::to_string(options.referenceSamples) + " samples per pixel)");
-    renderer.setReferenceEnvironment(environment);
-    renderer.precomputeIbl(environment, ibl::IblQuality{});
-    frame.iblQuality = ibl::IblQuality{};
-    frame.ibl.referenceSamples = options.referenceSamples;
-    const auto truthStart = Clock::now();
-    const CapturedFrame truth = renderer.capture(frame);
-    const double truthMs = msSince(truthStart);
-    frame.ibl.referenceSamples = options.referenceSamples / 4;
-    const CapturedFrame quarter = renderer.capture(frame);
-    const ibl::ErrorStats convergence = report::imageError(quarter.rgba32f, truth.rgba32f);
-    const report::VisibleError visibleConvergence =
-        report::visibleError(quarter.rgba32f, truth.rgba32f, truth.width, truth.height);
-    frame.ibl.referenceSamples = 0;
-    io::writeExr(out / "ground_truth.exr", truth.width, truth.height, truth.rgba32f);
-    report::writePreview(out / "ground_truth.png", truth);
-    progress.clear();
-    std::printf("ground truth: %u samples per lobe per pixel and %u texels summed, %.0f ms; a quarter of the samples "
-                "differs by %.2e relative RMSE, %.2e mean relative error, FLIP max %.3f\n", options.referenceSamples,
-                renderer.iblMaps().referenceTexelCount(), truthMs, convergence.rmse, convergence.meanRelative,
-                visibleConvergence.flipMax);
+    const GroundTruth ground = groundTruth(renderer, frame, environment, options, progress);
+    const CapturedFrame& truth = ground.truth;
 
     // The split sum with converged maps: what each setting's maps are compared with on screen.
     ibl::IblQuality convergedQuality;
@@ -271,8 +292,8 @@ int runIblReport(const IblReportOptions& options) {
                            .width = options.width,
                            .height = options.height,
                            .referenceSamples = options.referenceSamples,
-                           .convergence = convergence,
-                           .visibleConvergence = visibleConvergence,
+                           .convergence = ground.convergence,
+                           .visibleConvergence = ground.visibleConvergence,
                            .converged = convergedQuality.canonical(),
                            .convergedSpecularMax = convergedSpecularMax},
                           results);

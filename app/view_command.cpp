@@ -70,7 +70,8 @@ int runView(const ViewOptions& options) {
     ui::ViewerContent content;
     content.scene = loadScene(options);
     if (!options.variant.empty()) content.variant = scene::variantIndex(content.scene, options.variant);
-    // The viewer starts the device itself, and owns the scene and environment.
+    // The session loads the environment; the viewer starts the device itself (from the session's
+    // context description).
     Session session(options.common, options.env);
     content.environment = session.takeEnvironment();
     // The viewer owns the scene and environment from now on and points each frame's settings at
