@@ -7,6 +7,8 @@
 
 #include "commands.h"
 #include "frame_measurement.h"
+#include "session.h"
+#include "stopwatch.h"
 
 #include "graph/graph_export.h"
 #include "vk/pipeline_cache_file.h"
@@ -20,7 +22,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <chrono>
 #include <map>
 #include <optional>
 
@@ -29,10 +30,6 @@ namespace {
 
 double minimum(const std::vector<double>& values) {
     return values.empty() ? -1.0 : *std::min_element(values.begin(), values.end());
-}
-
-double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 // A switch of the debug view after the measured frames: the first frame in the new view (its
@@ -58,7 +55,7 @@ DebugViewSwitch switchDebugView(Renderer& renderer, const RenderSettings& settin
     // them all (it draws no skybox).
     renderer.setUnknownPassIsError(false);
     for (double* ms : {&out.firstMs, &out.nextMs}) {
-        const auto start = std::chrono::steady_clock::now();
+        const auto start = Clock::now();
         renderer.renderFrame(switched);
         *ms = msSince(start);
     }
@@ -113,41 +110,44 @@ void printPasses(const nlohmann::ordered_json& passes, const char* indent, const
                     p["serialP25Ms"].get<double>(), p["serialP75Ms"].get<double>(), p["serialRatio"].get<double>());
 }
 
-}  // namespace
+// What bench measured of the scene, besides the scene itself and its settings.
+struct BenchResult {
+    double loadMs = 0.0;     // reading and decoding the file
+    double startupMs = 0.0;  // the device, the pipeline cache file, the renderer
+    FrameMeasurement m;
+    DebugViewSwitch viewSwitch;
+    std::vector<PathMeasurement> paths;  // each shading path, when --shading-path is auto
+    std::vector<double> animationMs;     // evaluating the pose, per frame
+    std::optional<InFlightMeasurement> inFlight;
+};
 
-int runBench(const RenderOptions& options) {
-    const auto loadStart = std::chrono::steady_clock::now();
-    const scene::Scene scene = loadScene(options);
-    const double loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart).count();
-    const std::optional<scene::Environment> environment = loadEnvironment(options.env);
-    RenderSettings settings = renderSettings(options, scene, environment ? &*environment : nullptr);
-    // Frame i shows the animations at --time + i/60 s: each frame pays for evaluating its pose.
-    scene::ScenePose pose = loadPose(options, scene);
-    warnAnimationConflicts(options, scene);
-    settings.pose = &pose;
-    log::info("camera: " + Renderer::cameraFlags(scene, settings.camera, float(settings.width) / float(settings.height), &pose));
-    std::vector<double> animationMs;
-    const auto advance = [&](uint32_t frame) {
-        const auto start = std::chrono::steady_clock::now();
-        pose.evaluate(options.time + frame / 60.0);
-        animationMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    };
-    const auto startup = std::chrono::steady_clock::now();
-    vk::Context context(contextDesc(options.common));
-    Renderer renderer(context);
-    const double startupMs = msSince(startup);  // the device, the pipeline cache file, the renderer
-    const FrameMeasurement m = measureFrames(renderer, settings, options.frames, advance, std::min(options.frames, kSerialFrames));
-    const DebugViewSwitch viewSwitch = switchDebugView(renderer, settings);
-    std::vector<PathMeasurement> paths;
-    if (settings.shadingPath == passes::ShadingPath::Auto)
-        for (const passes::ShadingPath path : {passes::ShadingPath::Forward, passes::ShadingPath::Visibility}) {
-            RenderSettings s = settings;
-            s.shadingPath = path;
-            paths.push_back({path, measureFrames(renderer, s, options.frames, advance, std::min(options.frames, kSerialFrames))});
-        }
+// The frame time from each frame's start to the next (Renderer::renderToTarget), as the viewer
+// runs frames, as "inFlight" of the JSON.
+nlohmann::ordered_json inFlightJson(const InFlightMeasurement& inFlight, double calibration, uint32_t frames) {
+    const vk::FrameRingStats& ring = inFlight.ring;
+    return {{"medianMs", median(inFlight.frameMs)},
+            {"medianRatio", median(inFlight.frameMs) / calibration},
+            {"wallMsPerFrame", inFlight.wallMsPerFrame},
+            {"wallRatio", inFlight.wallMsPerFrame / calibration},
+            {"submits", ring.submits},
+            {"overlappedSubmits", ring.overlappedSubmits},
+            {"blockingWaits", ring.blockingWaits},
+            {"blockedMsPerFrame", ring.blockedMs / frames},
+            {"completionWaits", inFlight.completionWaits}};
+}
+
+// The measurement as JSON (--json; the text reads some of its figures from it), but "inFlight".
+nlohmann::ordered_json benchJson(const BenchOptions& options, const scene::Scene& scene, const scene::ScenePose& pose,
+                                 const RenderSettings& settings, Session& session, const BenchResult& b) {
+    const FrameMeasurement& m = b.m;
+    const vk::Context& context = session.context();
+    Renderer& renderer = session.renderer();
+    const double loadMs = b.loadMs, startupMs = b.startupMs;
+    const DebugViewSwitch& viewSwitch = b.viewSwitch;
+    const std::vector<PathMeasurement>& paths = b.paths;
+    const std::vector<double>& animationMs = b.animationMs;
     const std::vector<double>&frameMs = m.frameMs, &calibrationMs = m.calibrationMs, &calibrationGpuMs = m.calibrationGpuMs;
     const passes::DrawStats& drawStats = m.drawStats;
-
     const double calibration = median(calibrationMs), calibrationGpu = median(calibrationGpuMs);
     nlohmann::ordered_json out;
     out["scene"] = scene.source;
@@ -180,8 +180,7 @@ int runBench(const RenderOptions& options) {
     out["passes"] = passes;
     const bool gpuUnreliable = !vk::timestampsMeasurePasses(context.properties().deviceType);
     if (gpuUnreliable) out["gpuMsUnreliable"] = graph::kUnreliableGpuTimes;
-    const char* mark = gpuUnreliable ? "*" : "";
-    out["shadingPath"] = shadingPathLine(m.explain);
+        out["shadingPath"] = shadingPathLine(m.explain);
     nlohmann::ordered_json pathsOut = nlohmann::ordered_json::array();
     for (const PathMeasurement& p : paths) {
         const double pathCalibration = median(p.m.calibrationMs);
@@ -222,92 +221,135 @@ int runBench(const RenderOptions& options) {
         out["animation"] = {{"playing", pose.playing().size()}, {"evaluateMedianMs", median(animationMs)},
                             {"evaluateMaxMs", *std::max_element(animationMs.begin(), animationMs.end())}};
     if (options.explain) out["explain"] = m.explain;
-    std::optional<InFlightMeasurement> inFlight;
-    if (options.inFlight) {
-        inFlight = measureFramesInFlight(renderer, context, settings, options.frames);
-        const vk::FrameRingStats& ring = inFlight->ring;
-        out["inFlight"] = {{"medianMs", median(inFlight->frameMs)},
-                           {"medianRatio", median(inFlight->frameMs) / calibration},
-                           {"wallMsPerFrame", inFlight->wallMsPerFrame},
-                           {"wallRatio", inFlight->wallMsPerFrame / calibration},
-                           {"submits", ring.submits},
-                           {"overlappedSubmits", ring.overlappedSubmits},
-                           {"blockingWaits", ring.blockingWaits},
-                           {"blockedMsPerFrame", ring.blockedMs / options.frames},
-                           {"completionWaits", inFlight->completionWaits}};
-    }
+    return out;
+}
 
-    if (options.json) {
+// The measurement as text.
+void printBench(const BenchOptions& options, const scene::Scene& scene, const scene::ScenePose& pose,
+                const RenderSettings& settings, Session& session, const BenchResult& b, const nlohmann::ordered_json& out) {
+    const FrameMeasurement& m = b.m;
+    const vk::Context& context = session.context();
+    Renderer& renderer = session.renderer();
+    const double loadMs = b.loadMs, startupMs = b.startupMs;
+    const DebugViewSwitch& viewSwitch = b.viewSwitch;
+    const std::vector<double>&frameMs = m.frameMs, &calibrationMs = m.calibrationMs;
+    const passes::DrawStats& drawStats = m.drawStats;
+    const double calibration = median(calibrationMs), calibrationGpu = median(m.calibrationGpuMs);
+    const Spread calibrationSpread = spreadOf(calibrationMs), frameSpread = spreadOf(frameMs);
+    const scene::Scene::TextureDecoding& textures = scene.textureDecoding;
+    const vk::MsaaChoice msaa = renderer.msaa(settings.msaa);
+    const bool gpuUnreliable = out.contains("gpuMsUnreliable");
+    const char* mark = gpuUnreliable ? "*" : "";
+    const nlohmann::ordered_json& passes = out["passes"];
+    const nlohmann::ordered_json pathsOut = out.contains("shadingPaths") ? out["shadingPaths"] : nlohmann::ordered_json::array();
+    const std::optional<InFlightMeasurement>& inFlight = b.inFlight;
+    std::printf("%s at %ux%u on %s, %u frames (CPU wall time around submit+wait)\n", scene.source.c_str(),
+                settings.width, settings.height, context.report().name.c_str(), options.frames);
+    std::printf("  scene load:  %.2f ms (reading and decoding the file)\n", loadMs);
+    std::printf("  msaa:        %s\n", msaa.reason.c_str());
+    if (!textures.formats.empty()) {
+        std::string formats;
+        for (const auto& [format, count] : textures.formats) formats += (formats.empty() ? "" : ", ") + std::to_string(count) + " " + format;
+        std::printf("  textures:    %s decoded in %.1f ms (%s in files, %s of RGBA8); %s on the device\n", formats.c_str(),
+                    textures.milliseconds, formatBytes(textures.encodedBytes).c_str(), formatBytes(textures.decodedBytes).c_str(),
+                    formatBytes(renderer.sceneTextureBytes()).c_str());
+    }
+    if (const auto& d = scene.decompression; d.dracoPrimitives + d.meshoptViews > 0)
+        std::printf("  geometry decompression: %.2f ms (%zu Draco primitives, %zu meshopt bufferViews)\n",
+                    d.milliseconds, d.dracoPrimitives, d.meshoptViews);
+    const auto& g = scene.geometry;
+    std::printf("  geometry:    %zu meshes, %zu with levels of detail: +%.1f%% index memory (%s full, %s levels), "
+                "prepared in %.1f ms\n",
+                g.meshes, g.simplifiedMeshes, g.indexBytes ? 100.0 * double(g.lodIndexBytes) / double(g.indexBytes) : 0.0,
+                formatBytes(g.indexBytes).c_str(), formatBytes(g.lodIndexBytes).c_str(), g.milliseconds);
+    std::printf("  draws:       %u of %u submitted (%u culled, %u at a coarser level), %llu of %llu triangles, "
+                "%u state changes (%u pipeline, %u descriptor-set binds)\n",
+                drawStats.submittedDraws, drawStats.sceneDraws, drawStats.culledDraws, drawStats.coarserDraws,
+                (unsigned long long)drawStats.submittedTriangles, (unsigned long long)drawStats.sceneTriangles,
+                drawStats.stateChanges(), drawStats.pipelineBinds, drawStats.descriptorBinds);
+    std::printf("  calibration: median %.2f ms (interquartile %.2f–%.2f), min %.2f ms (GPU %.2f ms)\n", calibration,
+                calibrationSpread.low, calibrationSpread.high, minimum(calibrationMs), calibrationGpu);
+    std::printf("  frame:       median %.2f ms (interquartile %.2f–%.2f; %.2fx calibration), min %.2f ms (%.2fx); CPU "
+                "building and recording %.2f ms\n",
+                median(frameMs), frameSpread.low, frameSpread.high, median(frameMs) / calibration, minimum(frameMs),
+                minimum(frameMs) / minimum(calibrationMs), median(m.cpuMs));
+    std::printf("  first frame: %.1f ms (%.1fx calibration) after a start-up of %.1f ms; pipelines: --precompile %s, "
+                "cache %s\n",
+                m.firstFrameMs, m.firstFrameMs / calibration, startupMs, passes::precompileName(settings.precompile),
+                context.pipelineCacheFile().status().c_str());
+    std::printf("  debug-view switch to %s: first frame %.1f ms (%.1fx calibration), next %.1f ms (%.1fx)\n",
+                passes::debugViewName(viewSwitch.to), viewSwitch.firstMs, viewSwitch.firstMs / calibration,
+                viewSwitch.nextMs, viewSwitch.nextMs / calibration);
+    if (pose.animated())
+        std::printf("  animation:   %zu playing, CPU evaluation median %.4f ms, max %.4f ms per frame\n",
+                    pose.playing().size(), out["animation"]["evaluateMedianMs"].get<double>(),
+                    out["animation"]["evaluateMaxMs"].get<double>());
+    std::printf("  shading:     %s\n", out["shadingPath"].get<std::string>().c_str());
+    if (gpuUnreliable) std::printf("  * %s\n", graph::kUnreliableGpuTimes);
+    printPasses(passes, "  ", mark);
+    for (const auto& p : pathsOut) {
+        std::printf("  path %-10s frame median %.2f ms (%.2fx calibration of its own run), min %.2fx: %s\n",
+                    p["path"].get<std::string>().c_str(), p["medianMs"].get<double>(), p["medianRatio"].get<double>(),
+                    p["minRatio"].get<double>(), p["took"].get<std::string>().substr(0, 60).c_str());
+        printPasses(p["passes"], "    ", mark);
+    }
+    if (inFlight) {
+        const vk::FrameRingStats& ring = inFlight->ring;
+        std::printf("  in flight:   median frame %.2f ms (%.2fx calibration), %.2f ms per frame to the last one's end "
+                    "(%.2fx), rendered offscreen as the viewer does; %llu of %llu submitted while an earlier frame still "
+                    "ran, CPU blocked on fences %.2f ms per frame, %llu waits for the frame just submitted\n",
+                    median(inFlight->frameMs), median(inFlight->frameMs) / calibration, inFlight->wallMsPerFrame,
+                    inFlight->wallMsPerFrame / calibration, (unsigned long long)ring.overlappedSubmits,
+                    (unsigned long long)ring.submits, ring.blockedMs / options.frames,
+                    (unsigned long long)inFlight->completionWaits);
+    }
+    if (options.explain)
+        for (const std::string& line : m.explain) std::printf("%s\n", line.c_str());
+}
+
+}  // namespace
+
+int runBench(const BenchOptions& options) {
+    const auto loadStart = Clock::now();
+    const scene::Scene scene = loadScene(options);
+    BenchResult b;
+    b.loadMs = msSince(loadStart);
+    Session session(options.common, options.env);
+    RenderSettings settings = renderSettings(options, scene, session.environment());
+    settings.tonemap.dither = options.dither;
+    // Frame i shows the animations at --time + i/60 s: each frame pays for evaluating its pose.
+    scene::ScenePose pose = loadPose(options, scene);
+    warnAnimationConflicts(options, scene);
+    settings.pose = &pose;
+    log::info("camera: " + Renderer::cameraFlags(scene, settings.camera, float(settings.width) / float(settings.height), &pose));
+    const auto advance = [&](uint32_t frame) {
+        const auto start = Clock::now();
+        pose.evaluate(options.time + frame / 60.0);
+        b.animationMs.push_back(msSince(start));
+    };
+    const auto startup = Clock::now();
+    session.start();
+    b.startupMs = msSince(startup);
+    Renderer& renderer = session.renderer();
+    const uint32_t serialFrames = std::min(options.frames, kSerialFrames);
+    b.m = measureFrames(renderer, settings, options.frames, advance, serialFrames);
+    b.viewSwitch = switchDebugView(renderer, settings);
+    if (settings.shadingPath == passes::ShadingPath::Auto)
+        for (const passes::ShadingPath path : {passes::ShadingPath::Forward, passes::ShadingPath::Visibility}) {
+            RenderSettings s = settings;
+            s.shadingPath = path;
+            b.paths.push_back({path, measureFrames(renderer, s, options.frames, advance, serialFrames)});
+        }
+    nlohmann::ordered_json out = benchJson(options, scene, pose, settings, session, b);
+    if (options.inFlight) {
+        b.inFlight = measureFramesInFlight(renderer, session.context(), settings, options.frames);
+        out["inFlight"] = inFlightJson(*b.inFlight, median(b.m.calibrationMs), options.frames);
+    }
+    if (options.json)
         std::printf("%s\n", out.dump(2).c_str());
-    } else {
-        std::printf("%s at %ux%u on %s, %u frames (CPU wall time around submit+wait)\n", scene.source.c_str(),
-                    settings.width, settings.height, context.report().name.c_str(), options.frames);
-        std::printf("  scene load:  %.2f ms (reading and decoding the file)\n", loadMs);
-        std::printf("  msaa:        %s\n", msaa.reason.c_str());
-        if (!textures.formats.empty()) {
-            std::string formats;
-            for (const auto& [format, count] : textures.formats) formats += (formats.empty() ? "" : ", ") + std::to_string(count) + " " + format;
-            std::printf("  textures:    %s decoded in %.1f ms (%s in files, %s of RGBA8); %s on the device\n", formats.c_str(),
-                        textures.milliseconds, formatBytes(textures.encodedBytes).c_str(), formatBytes(textures.decodedBytes).c_str(),
-                        formatBytes(renderer.sceneTextureBytes()).c_str());
-        }
-        if (const auto& d = scene.decompression; d.dracoPrimitives + d.meshoptViews > 0)
-            std::printf("  geometry decompression: %.2f ms (%zu Draco primitives, %zu meshopt bufferViews)\n",
-                        d.milliseconds, d.dracoPrimitives, d.meshoptViews);
-        const auto& g = scene.geometry;
-        std::printf("  geometry:    %zu meshes, %zu with levels of detail: +%.1f%% index memory (%s full, %s levels), "
-                    "prepared in %.1f ms\n",
-                    g.meshes, g.simplifiedMeshes, g.indexBytes ? 100.0 * double(g.lodIndexBytes) / double(g.indexBytes) : 0.0,
-                    formatBytes(g.indexBytes).c_str(), formatBytes(g.lodIndexBytes).c_str(), g.milliseconds);
-        std::printf("  draws:       %u of %u submitted (%u culled, %u at a coarser level), %llu of %llu triangles, "
-                    "%u state changes (%u pipeline, %u descriptor-set binds)\n",
-                    drawStats.submittedDraws, drawStats.sceneDraws, drawStats.culledDraws, drawStats.coarserDraws,
-                    (unsigned long long)drawStats.submittedTriangles, (unsigned long long)drawStats.sceneTriangles,
-                    drawStats.stateChanges(), drawStats.pipelineBinds, drawStats.descriptorBinds);
-        std::printf("  calibration: median %.2f ms (interquartile %.2f–%.2f), min %.2f ms (GPU %.2f ms)\n", calibration,
-                    calibrationSpread.low, calibrationSpread.high, minimum(calibrationMs), calibrationGpu);
-        std::printf("  frame:       median %.2f ms (interquartile %.2f–%.2f; %.2fx calibration), min %.2f ms (%.2fx); CPU "
-                    "building and recording %.2f ms\n",
-                    median(frameMs), frameSpread.low, frameSpread.high, median(frameMs) / calibration, minimum(frameMs),
-                    minimum(frameMs) / minimum(calibrationMs), median(m.cpuMs));
-        std::printf("  first frame: %.1f ms (%.1fx calibration) after a start-up of %.1f ms; pipelines: --precompile %s, "
-                    "cache %s\n",
-                    m.firstFrameMs, m.firstFrameMs / calibration, startupMs, passes::precompileName(settings.precompile),
-                    context.pipelineCacheFile().status().c_str());
-        std::printf("  debug-view switch to %s: first frame %.1f ms (%.1fx calibration), next %.1f ms (%.1fx)\n",
-                    passes::debugViewName(viewSwitch.to), viewSwitch.firstMs, viewSwitch.firstMs / calibration,
-                    viewSwitch.nextMs, viewSwitch.nextMs / calibration);
-        if (pose.animated())
-            std::printf("  animation:   %zu playing, CPU evaluation median %.4f ms, max %.4f ms per frame\n",
-                        pose.playing().size(), out["animation"]["evaluateMedianMs"].get<double>(),
-                        out["animation"]["evaluateMaxMs"].get<double>());
-        std::printf("  shading:     %s\n", out["shadingPath"].get<std::string>().c_str());
-        if (gpuUnreliable) std::printf("  * %s\n", graph::kUnreliableGpuTimes);
-        printPasses(passes, "  ", mark);
-        for (const auto& p : pathsOut) {
-            std::printf("  path %-10s frame median %.2f ms (%.2fx calibration of its own run), min %.2fx: %s\n",
-                        p["path"].get<std::string>().c_str(), p["medianMs"].get<double>(), p["medianRatio"].get<double>(),
-                        p["minRatio"].get<double>(), p["took"].get<std::string>().substr(0, 60).c_str());
-            printPasses(p["passes"], "    ", mark);
-        }
-        if (inFlight) {
-            const vk::FrameRingStats& ring = inFlight->ring;
-            std::printf("  in flight:   median frame %.2f ms (%.2fx calibration), %.2f ms per frame to the last one's end "
-                        "(%.2fx), rendered offscreen as the viewer does; %llu of %llu submitted while an earlier frame still "
-                        "ran, CPU blocked on fences %.2f ms per frame, %llu waits for the frame just submitted\n",
-                        median(inFlight->frameMs), median(inFlight->frameMs) / calibration, inFlight->wallMsPerFrame,
-                        inFlight->wallMsPerFrame / calibration, (unsigned long long)ring.overlappedSubmits,
-                        (unsigned long long)ring.submits, ring.blockedMs / options.frames,
-                        (unsigned long long)inFlight->completionWaits);
-        }
-        if (options.explain)
-            for (const std::string& line : m.explain) std::printf("%s\n", line.c_str());
-    }
-    if (context.validationMessageCount() > 0) {
-        log::error(std::to_string(context.validationMessageCount()) + " validation messages");
-        return 3;
-    }
-    return 0;
+    else
+        printBench(options, scene, pose, settings, session, b, out);
+    return session.exitCode(0);
 }
 
 }  // namespace candela::app

@@ -13,9 +13,9 @@ using Kind = Command::Kind;
 template <class Self>
 auto& commonOf(Self& command) {
     switch (command.kind) {
-        case Kind::Render:
-        case Kind::View:
-        case Kind::Bench: return command.render.common;
+        case Kind::Render: return command.render.common;
+        case Kind::View: return command.view.common;
+        case Kind::Bench: return command.bench.common;
         case Kind::Info: return command.info.common;
         case Kind::IblReport: return command.iblReport.common;
         case Kind::Soak: return command.soak.common;
@@ -87,22 +87,6 @@ std::string unknownCommandMessage(const std::string& name) {
 
 bool isHelp(const std::string& arg) { return arg == "--help" || arg == "-h"; }
 
-// The checks that involve more than one flag (or a flag and view's SCENE).
-void checkCombinations(const Command& command) {
-    if (command.kind != Kind::Render && command.kind != Kind::View && command.kind != Kind::Bench) return;
-    const RenderOptions& o = command.render;
-    const bool scenes = !o.scene.empty() || !o.inputs.empty();
-    if (o.sceneIndex && !scenes) throw UserError("--scene-index: give a glTF file with --scene");
-    if (o.grid && scenes) throw UserError("--grid: sizes the built-in sphere grid; not with --scene or scene arguments");
-    if (command.kind != Kind::Render && o.variant == "all")
-        throw UserError("--variant all: only render draws every variant (one image each)");
-    if (command.kind == Kind::View && !o.screenshot.empty() && o.frames == 0)
-        throw UserError("--screenshot: also give --frames N (the frame to save; the viewer then exits)");
-    o.iblQuality.validate();
-    if (o.env.kind == EnvironmentChoice::Kind::None && o.background.kind == Background::Kind::Skybox)
-        throw UserError("--background skybox: there is no environment to show (--env none)");
-}
-
 }  // namespace
 
 const CommonOptions& Command::common() const {
@@ -140,22 +124,9 @@ Command parseCommandLine(const std::vector<std::string>& args) {
     for (size_t i = 1; i < args.size(); ++i) {
         std::string name = args[i];
         if (name.size() < 2 || name[0] != '-') {
-            if (command.kind == Kind::Render) {
-                command.render.inputs.push_back(name);
-                continue;
-            }
-            if (command.kind == Kind::Diff) {  // A, then B
-                std::string& side = command.diff.reference.empty() ? command.diff.reference : command.diff.test;
-                if (!command.diff.test.empty())
-                    throw UserError("unexpected argument '" + name + "': diff compares two images or folders, A and B");
-                side = name;
-                continue;
-            }
-            if (command.kind != Kind::View)
+            if (!info->argument)
                 throw UserError("unexpected argument '" + name + "' for " + info->name + " (see candela " + info->name + " --help)");
-            if (!command.render.scene.empty())
-                throw UserError("unexpected argument '" + name + "': the scene is already " + command.render.scene);
-            command.render.scene = name;
+            info->argument(command, name);
             continue;
         }
         std::optional<std::string> value;
@@ -178,7 +149,7 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         }
         flag->set(command, name, *value);
     }
-    checkCombinations(command);
+    if (info->check) info->check(command);
     return command;
 }
 

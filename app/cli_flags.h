@@ -1,10 +1,12 @@
 #pragma once
-// The command line's two tables: the commands, and the flags — each flag declared once with its
-// value, help, default, the commands that take it and how it is parsed into the typed options of
-// cli.h. The parser, `candela --help`, `candela COMMAND --help` and the tests all read them.
-// (The commands are defined in cli_commands.cpp, the flags in cli_flags.cpp.)
+// The command line's two tables: the commands, and the flags. Each command declares its flags in
+// its own file (render_cli.h, ...: FlagSpec lists assembled from the groups of flag_groups.h);
+// flagTable() merges them into one row per flag, in the order help lists them. The parser,
+// `candela --help`, `candela COMMAND --help` and the tests all read these two tables.
+// (The commands are assembled in cli_commands.cpp, the flags merged in cli_flags.cpp.)
 
 #include "cli.h"
+#include "flag_spec.h"
 
 #include <cstdint>
 #include <functional>
@@ -33,6 +35,13 @@ struct CommandInfo {
     std::string arguments;  // what follows the name in the usage line: "[SCENE] [flags]"
     std::string summary;    // what the command does
     std::string notes;      // printed after the flags in the command's help ("" none)
+    // The command's flags, their setters bound to its options in Command.
+    std::function<std::vector<FlagSpec<Command>>()> flags;
+    // Takes an argument that is not a flag (render's SCENE..., view's SCENE, diff's A B); null:
+    // the command takes none.
+    std::function<void(Command&, const std::string&)> argument;
+    // The checks that involve more than one flag, after the last argument; null: none.
+    std::function<void(const Command&)> check;
 };
 
 // Every command, in the order help lists them.
@@ -55,6 +64,8 @@ struct FlagUse {
     std::string defaultValue;
 };
 
+// One row per flag: the uses of every command that takes it, merged (commands whose use reads the
+// same share one FlagUse; uses in the order of their first command in commandTable()).
 struct Flag {
     std::string name;           // "--frames"
     std::vector<FlagUse> uses;  // disjoint command sets
@@ -62,8 +73,9 @@ struct Flag {
     // besides them ("#rrggbb"); help and errors list exactly these.
     std::vector<std::string> choices;
     std::string otherForm;
-    // Parses `value` ("" for a switch) into the options of `command` (whose kind takes the flag);
-    // a UserError naming the flag (`name`, passed as `flag`) when it is malformed.
+    // Parses `value` ("" for a switch) into the options of `command` (whose kind takes the flag),
+    // with that command's setter; a UserError naming the flag (`name`, passed as `flag`) when it
+    // is malformed.
     std::function<void(Command& command, const std::string& flag, const std::string& value)> set;
     // A value that parses for every command taking the flag and differs from its default (tests).
     std::string example;

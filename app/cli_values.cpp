@@ -29,6 +29,13 @@ float parseNumber(const std::string& flag, const std::string& value) {
     return number;
 }
 
+std::string valueText(float value) {
+    char buffer[32];
+    return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+std::string valueText(uint32_t value) { return std::to_string(value); }
+
 std::vector<std::string> commaSeparated(const std::string& value) {
     std::vector<std::string> items;
     for (size_t start = 0;;) {

@@ -37,6 +37,10 @@ std::vector<std::string> commaSeparated(const std::string& value);
 // Throws UserError when the pattern does not hold exactly one such field (% written as %%).
 std::string sequenceFileName(const std::string& pattern, uint32_t index);
 
+// A default the engine owns, written as a flag would take it ("0.5", "256").
+std::string valueText(float value);
+std::string valueText(uint32_t value);
+
 // "a, b and c" with conjunction "and".
 std::string joinWords(const std::vector<std::string>& words, const std::string& conjunction);
 // "a, b or c" ("a, b, c or FORM" with another form): the list that help and errors show.

@@ -3,7 +3,7 @@
 #include "vk/image.h"
 
 #include <algorithm>
-#include <chrono>
+#include "stopwatch.h"
 
 namespace candela::app {
 
@@ -11,9 +11,9 @@ FrameMeasurement measureFrames(Renderer& renderer, const RenderSettings& setting
                                const std::function<void(uint32_t)>& beforeFrame, uint32_t serialFrames) {
     FrameMeasurement out;
     for (int i = 0; i < 2; ++i) {
-        const auto start = std::chrono::steady_clock::now();
+        const auto start = Clock::now();
         renderer.renderFrame(settings);
-        if (i == 0) out.firstFrameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        if (i == 0) out.firstFrameMs = msSince(start);
         renderer.renderCalibration(settings.width, settings.height);
     }
     for (uint32_t i = 0; i < frames; ++i) {
@@ -64,17 +64,17 @@ InFlightMeasurement measureFramesInFlight(Renderer& renderer, vk::Context& conte
     const vk::FrameRingStats ring = renderer.frameRingStats();
     const uint64_t completionWaits = renderer.completionWaits();
     InFlightMeasurement out;
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     auto previous = start;
     for (uint32_t i = 0; i < frames; ++i) {
         renderer.renderToTarget(settings, target, {});
-        const auto now = std::chrono::steady_clock::now();
+        const auto now = Clock::now();
         out.frameMs.push_back(std::chrono::duration<double, std::milli>(now - previous).count());
         previous = now;
     }
     out.ring = renderer.frameRingStats();
     renderer.waitIdle();
-    out.wallMsPerFrame = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / frames;
+    out.wallMsPerFrame = msSince(start) / frames;
     out.ring.submits -= ring.submits;
     out.ring.overlappedSubmits -= ring.overlappedSubmits;
     out.ring.blockingWaits -= ring.blockingWaits;

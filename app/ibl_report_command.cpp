@@ -7,6 +7,8 @@
 // reflectance equation per pixel. Writes report.csv, report.md and log-log plots to --out.
 
 #include "commands.h"
+#include "session.h"
+#include "stopwatch.h"
 
 #include "core/errors.h"
 #include "core/log.h"
@@ -17,7 +19,7 @@
 #include "assets/builtin_scenes.h"
 
 #include <algorithm>
-#include <chrono>
+#include "stopwatch.h"
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -104,6 +106,85 @@ const ibl::CachedImage* findImage(const std::vector<ibl::CachedImage>& images, c
     return nullptr;
 }
 
+// The ground truth and how far it converged: the same render at a quarter of the samples.
+struct GroundTruth {
+    CapturedFrame truth;
+    ibl::ErrorStats convergence;
+    report::VisibleError visibleConvergence;
+};
+
+// Renders the ground truth of `frame` (written to the report folder as ground_truth.exr and .png)
+// and the convergence check, and prints the line about them; `frame` is left at the default
+// quality without reference samples.
+GroundTruth groundTruth(Renderer& renderer, RenderSettings& frame, const scene::Environment& environment,
+                        const IblReportOptions& options, Progress& progress) {
+    const std::filesystem::path folder = options.out;
+    GroundTruth out;
+    progress.step(0, "ground truth (" + std::to_string(options.referenceSamples) + " samples per pixel)");
+    renderer.setReferenceEnvironment(environment);
+    renderer.precomputeIbl(environment, ibl::IblQuality{});
+    frame.iblQuality = ibl::IblQuality{};
+    frame.ibl.referenceSamples = options.referenceSamples;
+    const auto truthStart = Clock::now();
+    out.truth = renderer.capture(frame);
+    const CapturedFrame& truth = out.truth;
+    const double truthMs = msSince(truthStart);
+    frame.ibl.referenceSamples = options.referenceSamples / 4;
+    const CapturedFrame quarter = renderer.capture(frame);
+    out.convergence = report::imageError(quarter.rgba32f, truth.rgba32f);
+    out.visibleConvergence =
+        report::visibleError(quarter.rgba32f, truth.rgba32f, truth.width, truth.height);
+    frame.ibl.referenceSamples = 0;
+    io::writeExr(folder / "ground_truth.exr", truth.width, truth.height, truth.rgba32f);
+    report::writePreview(folder / "ground_truth.png", truth);
+    progress.clear();
+    std::printf("ground truth: %u samples per lobe per pixel and %u texels summed, %.0f ms; a quarter of the samples "
+                "differs by %.2e relative RMSE, %.2e mean relative error, FLIP max %.3f\n", options.referenceSamples,
+                renderer.iblMaps().referenceTexelCount(), truthMs, out.convergence.rmse, out.convergence.meanRelative,
+                out.visibleConvergence.flipMax);
+
+    return out;
+}
+
+// What each setting's errors are measured against: the environment, its reference and the
+// reference integrals' cache.
+struct ErrorReference {
+    const scene::Environment& environment;
+    const scene::Environment& reference;
+    ibl::ReferenceCache& cache;
+};
+
+// Each setting's errors, one precompute per setting: its maps against the reference integrals, its
+// image (`frame` at the setting's quality) against the ground truth `truth` and against the image
+// with converged maps; the default setting's image and error map are written to `out`.
+std::vector<Result> measureErrors(Renderer& renderer, RenderSettings frame, const std::vector<Setting>& settings,
+                                  const ErrorReference& to, const CapturedFrame& truth, const CapturedFrame& converged,
+                                  const std::filesystem::path& out, Progress& progress) {
+    const scene::Environment& environment = to.environment;
+    std::vector<Result> results;
+    for (const Setting& setting : settings) {
+        progress.step(results.size() + 1, setting.group + " " + setting.label + ": errors");
+        Result r{.setting = setting};
+        renderer.precomputeIbl(environment, setting.quality);
+        const std::vector<ibl::CachedImage> maps = renderer.iblMaps().readBack();
+        r.specular = ibl::specularErrors(*findImage(maps, "specular"), environment, to.reference, 128, to.cache);
+        r.irradiance = ibl::irradianceErrors(*findImage(maps, "irradiance"), to.reference, 256, to.cache);
+        r.lut = ibl::lutErrors(*findImage(maps, "brdf_lut"), std::max(setting.quality.lutSize / 16, 1u));
+        frame.iblQuality = setting.quality;
+        const CapturedFrame image = renderer.capture(frame);
+        r.image = report::imageError(image.rgba32f, truth.rgba32f);
+        r.visible = report::visibleError(image.rgba32f, truth.rgba32f, image.width, image.height);
+        r.visibleMaps = report::visibleError(image.rgba32f, converged.rgba32f, image.width, image.height);
+        if (setting.quality == ibl::IblQuality{}) {
+            io::writeExr(out / "default.exr", image.width, image.height, image.rgba32f);
+            report::writePreview(out / "default.png", image);
+            report::writeErrorMap(out / "default_error.png", image, truth.rgba32f);
+        }
+        results.push_back(std::move(r));
+    }
+    return results;
+}
+
 }  // namespace
 
 int runIblReport(const IblReportOptions& options) {
@@ -111,12 +192,14 @@ int runIblReport(const IblReportOptions& options) {
     prepareReportFolder(out, {"report.csv", "report.md", "specular.png", "irradiance.png", "lut.png", "image.png",
                               "image_worst.png"});
 
-    const scene::Environment environment = *loadEnvironment(options.env);  // the parser refuses --env none
+    Session session(options.common, options.env);
+    const scene::Environment& environment = *session.environment();  // the parser refuses --env none
     const scene::Environment reference = ibl::referenceEnvironment(environment);
     ibl::ReferenceCache cache;
 
-    vk::Context context(contextDesc(options.common));
-    Renderer renderer(context);
+    session.start();
+    vk::Context& context = session.context();
+    Renderer& renderer = session.renderer();
     const scene::Scene scene = scene::makeSphereGrid();
     RenderSettings frame{.width = options.width, .height = options.height, .floatOutput = true, .scene = &scene};
     frame.environment = &environment;
@@ -130,27 +213,8 @@ int runIblReport(const IblReportOptions& options) {
     const std::vector<Setting> settings = sweep(options.quick);
     // Steps: the ground truth, each setting's errors, each setting in each timing round, the files.
     Progress progress("ibl-report", 2 + settings.size() * (1 + options.repeats), options.common.quiet);
-    progress.step(0, "ground truth (" + std::to_string(options.referenceSamples) + " samples per pixel)");
-    renderer.setReferenceEnvironment(environment);
-    renderer.precomputeIbl(environment, ibl::IblQuality{});
-    frame.iblQuality = ibl::IblQuality{};
-    frame.ibl.referenceSamples = options.referenceSamples;
-    const auto truthStart = std::chrono::steady_clock::now();
-    const CapturedFrame truth = renderer.capture(frame);
-    const double truthMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - truthStart).count();
-    frame.ibl.referenceSamples = options.referenceSamples / 4;
-    const CapturedFrame quarter = renderer.capture(frame);
-    const ibl::ErrorStats convergence = report::imageError(quarter.rgba32f, truth.rgba32f);
-    const report::VisibleError visibleConvergence =
-        report::visibleError(quarter.rgba32f, truth.rgba32f, truth.width, truth.height);
-    frame.ibl.referenceSamples = 0;
-    io::writeExr(out / "ground_truth.exr", truth.width, truth.height, truth.rgba32f);
-    report::writePreview(out / "ground_truth.png", truth);
-    progress.clear();
-    std::printf("ground truth: %u samples per lobe per pixel and %u texels summed, %.0f ms; a quarter of the samples "
-                "differs by %.2e relative RMSE, %.2e mean relative error, FLIP max %.3f\n", options.referenceSamples,
-                renderer.iblMaps().referenceTexelCount(), truthMs, convergence.rmse, convergence.meanRelative,
-                visibleConvergence.flipMax);
+    const GroundTruth ground = groundTruth(renderer, frame, environment, options, progress);
+    const CapturedFrame& truth = ground.truth;
 
     // The split sum with converged maps: what each setting's maps are compared with on screen.
     ibl::IblQuality convergedQuality;
@@ -167,27 +231,7 @@ int runIblReport(const IblReportOptions& options) {
     const CapturedFrame converged = renderer.capture(frame);
 
     // Errors first, one precompute per setting (which also builds its pipelines before any is timed).
-    std::vector<Result> results;
-    for (const Setting& setting : settings) {
-        progress.step(results.size() + 1, setting.group + " " + setting.label + ": errors");
-        Result r{.setting = setting};
-        renderer.precomputeIbl(environment, setting.quality);
-        const std::vector<ibl::CachedImage> maps = renderer.iblMaps().readBack();
-        r.specular = ibl::specularErrors(*findImage(maps, "specular"), environment, reference, 128, cache);
-        r.irradiance = ibl::irradianceErrors(*findImage(maps, "irradiance"), reference, 256, cache);
-        r.lut = ibl::lutErrors(*findImage(maps, "brdf_lut"), std::max(setting.quality.lutSize / 16, 1u));
-        frame.iblQuality = setting.quality;
-        const CapturedFrame image = renderer.capture(frame);
-        r.image = report::imageError(image.rgba32f, truth.rgba32f);
-        r.visible = report::visibleError(image.rgba32f, truth.rgba32f, image.width, image.height);
-        r.visibleMaps = report::visibleError(image.rgba32f, converged.rgba32f, image.width, image.height);
-        if (setting.quality == ibl::IblQuality{}) {
-            io::writeExr(out / "default.exr", image.width, image.height, image.rgba32f);
-            report::writePreview(out / "default.png", image);
-            report::writeErrorMap(out / "default_error.png", image, truth.rgba32f);
-        }
-        results.push_back(std::move(r));
-    }
+    std::vector<Result> results = measureErrors(renderer, frame, settings, {environment, reference, cache}, truth, converged, out, progress);
     // Times: rounds over every setting, alternately forwards and backwards, so that a drift of
     // the machine's speed reaches every setting alike, with a calibration run before each
     // precompute. A single calibration run right after a precompute varies far more than the
@@ -205,9 +249,9 @@ int runIblReport(const IblReportOptions& options) {
                                                    std::to_string(round + 1) + " of " + std::to_string(options.repeats));
             const double calibrationMs = renderer.renderCalibration(1280, 720).submitWaitMs;
             calibrations.push_back(calibrationMs);
-            const auto start = std::chrono::steady_clock::now();
+            const auto start = Clock::now();
             const FrameTiming t = renderer.precomputeIbl(environment, settings[i].quality);
-            const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            const double total = msSince(start);
             Times& m = times[i];
             m.wall.push_back(t.submitWaitMs);
             m.setup.push_back(total - t.submitWaitMs);
@@ -248,19 +292,15 @@ int runIblReport(const IblReportOptions& options) {
                            .width = options.width,
                            .height = options.height,
                            .referenceSamples = options.referenceSamples,
-                           .convergence = convergence,
-                           .visibleConvergence = visibleConvergence,
+                           .convergence = ground.convergence,
+                           .visibleConvergence = ground.visibleConvergence,
                            .converged = convergedQuality.canonical(),
                            .convergedSpecularMax = convergedSpecularMax},
                           results);
     report::writePlots(out, results);
     std::printf("wrote %s/report.csv, report.md, specular.png, irradiance.png, lut.png, image.png, image_worst.png\n",
                 out.c_str());
-    if (context.validationMessageCount() > 0) {
-        log::error(std::to_string(context.validationMessageCount()) + " validation messages");
-        return 3;
-    }
-    return 0;
+    return session.exitCode(0);
 }
 
 }  // namespace candela::app

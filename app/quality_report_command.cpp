@@ -13,6 +13,8 @@
 // Pareto front, the device's defaults ringed). See docs/anti-aliasing.md.
 
 #include "commands.h"
+#include "session.h"
+#include "stopwatch.h"
 #include "frame_measurement.h"
 #include "statistics.h"
 
@@ -27,7 +29,6 @@
 #include "assets/gltf_loader.h"
 #include "assets/procedural_sky.h"
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -203,6 +204,71 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
     }
 }
 
+// What the settings of one scene are measured with, and the progress over all of them.
+struct Sweep {
+    const QualityReportOptions& options;
+    Renderer& renderer;
+    vk::MsaaChoice defaultMsaa;
+    passes::ShadingPath defaultPath;
+    Progress& progress;
+    size_t& done;  // progress steps taken
+};
+
+// One series of settings: an MSAA sample count, specular AA on or off and a shading path.
+struct Series {
+    uint32_t samples = 1;
+    bool specularAa = false;
+    passes::ShadingPath path = passes::ShadingPath::Forward;
+};
+
+// The errors of `series` at each LOD error of --lod-errors (in a row, so that a setting that
+// repeats the previous ones' work joins their row: sameWork), added to `result`'s rows.
+void measureSeries(Sweep& sweep, const RenderSettings& base, const Series& series,
+                   const std::vector<std::vector<uint8_t>>& reference, SceneResult& result) {
+    const auto [samples, specularAa, path] = series;
+    Renderer& renderer = sweep.renderer;
+    const QualityReportOptions& options = sweep.options;
+    std::vector<std::vector<std::vector<uint8_t>>> seriesFrames;  // per row of this series
+    const size_t seriesStart = result.rows.size();
+    for (float lodError : options.lodErrors) {
+        RenderSettings settings = base;
+        settings.shadingPath = path;
+        settings.msaa = samples;
+        settings.shadingOptions.specularAntiAliasing = specularAa;
+        settings.drawSelection.lodErrorPixels = lodError;
+        settings.camera.orbit = glm::vec3(0.0f, 90.0f, 0.0f);
+        renderer.renderFrame(settings);  // the timed view: what it submits
+        const passes::DrawStats stats = renderer.drawStats();
+        std::vector<std::vector<uint8_t>> frames = orbitFrames(renderer, settings, options.orbitFrames, 1);
+        const bool isDefault = samples == sweep.defaultMsaa.samples &&
+                               specularAa == passes::ShadingOptions{}.specularAntiAliasing &&
+                               lodError == passes::DrawSelection::kDefaultLodErrorPixels &&
+                               path == sweep.defaultPath;
+        Row* same = nullptr;
+        for (size_t k = 0; k < seriesFrames.size() && !same; ++k)
+            if (sameWork(result.rows[seriesStart + k], seriesFrames[k], stats, frames)) same = &result.rows[seriesStart + k];
+        if (same) {
+            same->lodErrors.push_back(lodError);
+            same->isDefault = same->isDefault || isDefault;
+        } else {
+            result.rows.push_back({.scene = result.name, .msaa = samples, .specularAa = specularAa,
+                                   .lodErrors = {lodError}, .path = path,
+                                   .error = io::displayError(frames, reference),
+                                   .temporal = io::meanFrameToFrameDifference(frames),
+                                   .temporalError = io::meanTemporalError(frames, reference),
+                                   .triangles = stats.submittedTriangles, .draws = stats.submittedDraws,
+                                   .isDefault = isDefault, .settings = settings});
+            seriesFrames.push_back(std::move(frames));
+        }
+        const Row& row = same ? *same : result.rows.back();
+        char detail[240];
+        std::snprintf(detail, sizeof detail, "%s %s: error %.3f (p99 %.0f), temporal error %.3f%s", result.name.c_str(),
+                      settingName(row).c_str(), row.error.mean, row.error.p99, row.temporalError,
+                      same ? " (the same work and images: one point)" : "");
+        sweep.progress.step(++sweep.done, detail);
+    }
+}
+
 }  // namespace
 
 int runQualityReport(const QualityReportOptions& options) {
@@ -220,8 +286,9 @@ int runQualityReport(const QualityReportOptions& options) {
 
     // Everything the sweep needs is loaded first, so that a bad file fails before minutes of work.
     const scene::Environment sky = scene::makeProceduralSky();
-    std::optional<scene::Environment> fileEnvironment;
-    if (options.env.kind == EnvironmentChoice::Kind::File) fileEnvironment = loadEnvironment(options.env);
+    // The session's environment: the --env file of the glTF scenes; none with --env sky.
+    const bool fileEnvironment = options.env.kind == EnvironmentChoice::Kind::File;
+    Session session(options.common, fileEnvironment ? options.env : EnvironmentChoice{EnvironmentChoice::Kind::None});
     std::list<scene::Scene> loaded;  // the renderer keeps pointing at the last scene it drew
     for (const std::string& entry : options.scenes) {
         scene::Scene& scene = loaded.emplace_back(entry == "default" ? scene::makeSphereGrid() : scene::loadGltf(entry));
@@ -229,8 +296,9 @@ int runQualityReport(const QualityReportOptions& options) {
         for (const std::string& note : scene.notes) log::info(entry + ": " + note);
     }
 
-    vk::Context context(contextDesc(options.common));
-    Renderer renderer(context);
+    session.start();
+    vk::Context& context = session.context();
+    Renderer& renderer = session.renderer();
     const vk::MsaaChoice defaultMsaa = renderer.msaa(std::nullopt);
     std::vector<uint32_t> sampleCounts;
     std::vector<std::string> notes;
@@ -250,11 +318,12 @@ int runQualityReport(const QualityReportOptions& options) {
     Progress progress("quality-report", options.scenes.size() * (1 + perScene * (1 + options.repeats)), options.common.quiet);
     size_t done = 0;
 
+    Sweep sweep{options, renderer, defaultMsaa, defaultShadingPath(context).first, progress, done};
     std::vector<SceneResult> results;
     auto scene = loaded.begin();
     for (size_t s = 0; s < options.scenes.size(); ++s, ++scene) {
         const bool builtin = options.scenes[s] == "default";
-        const scene::Environment* environment = builtin || !fileEnvironment ? &sky : &*fileEnvironment;
+        const scene::Environment* environment = builtin || !fileEnvironment ? &sky : session.environment();
         SceneResult result{.name = scenes[s]};
         RenderSettings base{.width = options.width, .height = options.height, .scene = &*scene, .environment = environment};
         base.ibl.skybox = true;
@@ -264,56 +333,16 @@ int runQualityReport(const QualityReportOptions& options) {
         progress.step(done, result.name + ": reference (" + std::to_string(options.width * kReferenceScale) + "x" +
                                 std::to_string(options.height * kReferenceScale) + ", " + std::to_string(options.orbitFrames) +
                                 " frames)");
-        const auto referenceStart = std::chrono::steady_clock::now();
+        const auto referenceStart = Clock::now();
         const std::vector<std::vector<uint8_t>> reference = orbitFrames(renderer, base, options.orbitFrames, kReferenceScale);
-        result.referenceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - referenceStart).count();
+        result.referenceSeconds = msSince(referenceStart) / 1000.0;
         ++done;
         result.referenceTemporal = io::meanFrameToFrameDifference(reference);
         // Errors first, the LOD errors of one (MSAA, specular AA, path) in a row so that a setting
         // that repeats the previous ones' work joins their row (sameWork).
         for (uint32_t samples : sampleCounts)
             for (bool specularAa : {false, true})
-                for (passes::ShadingPath path : paths) {
-                    std::vector<std::vector<std::vector<uint8_t>>> seriesFrames;  // per row of this series
-                    const size_t seriesStart = result.rows.size();
-                    for (float lodError : options.lodErrors) {
-                        RenderSettings settings = base;
-                        settings.shadingPath = path;
-                        settings.msaa = samples;
-                        settings.shadingOptions.specularAntiAliasing = specularAa;
-                        settings.drawSelection.lodErrorPixels = lodError;
-                        settings.camera.orbit = glm::vec3(0.0f, 90.0f, 0.0f);
-                        renderer.renderFrame(settings);  // the timed view: what it submits
-                        const passes::DrawStats stats = renderer.drawStats();
-                        std::vector<std::vector<uint8_t>> frames = orbitFrames(renderer, settings, options.orbitFrames, 1);
-                        const bool isDefault = samples == defaultMsaa.samples &&
-                                               specularAa == passes::ShadingOptions{}.specularAntiAliasing &&
-                                               lodError == passes::DrawSelection::kDefaultLodErrorPixels &&
-                                               path == defaultShadingPath(context).first;
-                        Row* same = nullptr;
-                        for (size_t k = 0; k < seriesFrames.size() && !same; ++k)
-                            if (sameWork(result.rows[seriesStart + k], seriesFrames[k], stats, frames)) same = &result.rows[seriesStart + k];
-                        if (same) {
-                            same->lodErrors.push_back(lodError);
-                            same->isDefault = same->isDefault || isDefault;
-                        } else {
-                            result.rows.push_back({.scene = result.name, .msaa = samples, .specularAa = specularAa,
-                                                   .lodErrors = {lodError}, .path = path,
-                                                   .error = io::displayError(frames, reference),
-                                                   .temporal = io::meanFrameToFrameDifference(frames),
-                                                   .temporalError = io::meanTemporalError(frames, reference),
-                                                   .triangles = stats.submittedTriangles, .draws = stats.submittedDraws,
-                                                   .isDefault = isDefault, .settings = settings});
-                            seriesFrames.push_back(std::move(frames));
-                        }
-                        const Row& row = same ? *same : result.rows.back();
-                        char detail[240];
-                        std::snprintf(detail, sizeof detail, "%s %s: error %.3f (p99 %.0f), temporal error %.3f%s", result.name.c_str(),
-                                      settingName(row).c_str(), row.error.mean, row.error.p99, row.temporalError,
-                                      same ? " (the same work and images: one point)" : "");
-                        progress.step(++done, detail);
-                    }
-                }
+                for (passes::ShadingPath path : paths) measureSeries(sweep, base, {samples, specularAa, path}, reference, result);
         // Timing: rounds over every point, alternately forwards and backwards, so that a drift of
         // the machine's speed reaches every setting alike; each round's ratio is the median frame
         // over the median of the calibration passes interleaved with the frames.
@@ -343,11 +372,7 @@ int runQualityReport(const QualityReportOptions& options) {
     progress.finish();
     writeReport(options.out, results, options, context.report().name, defaultMsaa, notes);
     std::printf("wrote %s/report.csv, report.md and 2 plots per scene\n", options.out.c_str());
-    if (context.validationMessageCount() > 0) {
-        log::error(std::to_string(context.validationMessageCount()) + " validation messages");
-        return 3;
-    }
-    return 0;
+    return session.exitCode(0);
 }
 
 }  // namespace candela::app

@@ -3,9 +3,12 @@
 // renders; each scene's device memory is freed before the next is uploaded.
 
 #include "commands.h"
+#include "failures.h"
 #include "render_page.h"
 #include "render_report.h"
 #include "scene_batch.h"
+#include "session.h"
+#include "stopwatch.h"
 #include "assets/image_file.h"
 #include "core/log.h"
 #include "core/process_memory.h"
@@ -16,7 +19,6 @@
 #include "vk/context.h"
 #include "vk/timestamps.h"
 
-#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <future>
@@ -24,10 +26,6 @@
 
 namespace candela::app {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
 // Creates the folder `file` goes in.
 void createFolderOf(const std::filesystem::path& file) {
@@ -55,27 +53,10 @@ LoadedScene load(const SceneInput& input, const RenderOptions& options) {
     return out;
 }
 
-// The one-line message and exit code `error` gives a run of its scene alone (as main() reports it).
-std::pair<std::string, int> describe(const std::exception_ptr& error) {
-    try {
-        std::rethrow_exception(error);
-    } catch (const UserError& e) {
-        return {e.what(), 2};
-    } catch (const OutOfDeviceMemory& e) {
-        return {std::string("out of device memory: ") + e.what(), 4};
-    } catch (const InternalError& e) {
-        return {std::string("internal error (a bug in Candela, please report it): ") + e.what(), 1};
-    } catch (const std::exception& e) {
-        return {e.what(), 1};
-    }
-}
-
 // What stays the same over a run: the options, the device, the environment, the output format.
 struct Run {
     const RenderOptions& options;
-    vk::Context& context;
-    Renderer& renderer;
-    const scene::Environment* environment;
+    Session& session;
     io::ImageFileFormat format;
     bool batch;     // several scenes: shorter lines, one precompute for all (sheen included)
     bool sequence;  // --frames N > 1
@@ -102,10 +83,10 @@ void printWritten(Run& run, const std::string& out, const CapturedFrame& frame, 
         std::printf("): load %.1f ms, upload %.1f ms, frame %.1f ms\n", r.loadMs, r.uploadMs, r.frameMs.back());
     } else {
         std::printf("): submit+wait %.2f ms, readback %.2f ms", frame.submitWaitMs, frame.readbackMs);
-        const graph::GraphDecl& decl = run.renderer.lastGraph().declaration();
+        const graph::GraphDecl& decl = run.session.renderer().lastGraph().declaration();
         const char* mark = frame.timings.gpuMsUnreliable ? "*" : "";
         bool marked = false;
-        for (uint32_t pass : run.renderer.lastGraph().compiled().order)
+        for (uint32_t pass : run.session.renderer().lastGraph().compiled().order)
             if (frame.timings.gpuMs.size() > pass && frame.timings.gpuMs[pass] >= 0.0) {
                 std::printf("; %s %.2f ms GPU%s", decl.passes[pass].name.c_str(), frame.timings.gpuMs[pass], mark);
                 marked = *mark != '\0';
@@ -141,7 +122,8 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
     } else {
         variants.push_back(options.variant.empty() ? std::nullopt : std::optional(scene::variantIndex(scene, options.variant)));
     }
-    RenderSettings settings = renderSettings(options, scene, run.environment);
+    RenderSettings settings = renderSettings(options, scene, run.session.environment());
+    settings.tonemap.dither = options.dither;
     settings.floatOutput = io::isFloatFormat(run.format);
     // One precompute serves the whole run: with the sheen cube, for scenes with or without a sheen.
     if (run.batch) settings.iblQuality.sheen = true;
@@ -152,7 +134,7 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
 
     for (const std::optional<uint32_t> variant : variants) {
         if (variant) {
-            run.renderer.sceneReplaced();  // the draws' materials change: uploaded again
+            run.session.renderer().sceneReplaced();  // the draws' materials change: uploaded again
             scene::selectVariant(scene, variant);
         }
         const std::string variantName = variant ? scene.variants[*variant] : "default";
@@ -171,7 +153,7 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
             orbit.z = radius;
         }
         const auto uploadStart = Clock::now();
-        run.renderer.upload(settings);
+        run.session.renderer().upload(settings);
         r.uploadMs += msSince(uploadStart);
         for (uint32_t i = 0; i < options.frames; ++i) {
             if (run.sequence) {
@@ -184,7 +166,7 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
                 if (line != cameraLine) log::info(cameraLine = line);
             }
             const auto frameStart = Clock::now();
-            run.lastFrame = run.renderer.capture(settings);
+            run.lastFrame = run.session.renderer().capture(settings);
             run.anyFrame = true;
             r.frameMs.push_back(msSince(frameStart));
             double gpu = 0.0;
@@ -201,10 +183,10 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
             if (!run.batch) progress.step(i + 1, "frames written");
         }
     }
-    const passes::DrawStats& stats = run.renderer.drawStats();
+    const passes::DrawStats& stats = run.session.renderer().drawStats();
     r.triangles = stats.sceneTriangles;
     r.draws = stats.sceneDraws;
-    if (const scene::GpuScene* uploaded = run.renderer.uploadedScene())
+    if (const scene::GpuScene* uploaded = run.session.renderer().uploadedScene())
         for (size_t i = 0; i < scene.images.size(); ++i) {
             const scene::Image& image = scene.images[i];
             r.textures.push_back({image.name, image.format, image.width, image.height, image.encodedBytes, uploaded->imageBytes(i)});
@@ -246,21 +228,22 @@ io::ImageFileFormat checkOutputs(const RenderOptions& options, const std::vector
     return format.value_or(io::ImageFileFormat::Png);
 }
 
-}  // namespace
-
-int runRender(const RenderOptions& options) {
-    const auto runStart = Clock::now();
-    // --scene's file, then the SCENE arguments; neither: the built-in scene.
+// The scenes listed: --scene's file, then the SCENE arguments; neither: the built-in scene.
+std::vector<SceneInput> listScenes(const RenderOptions& options) {
     std::vector<SceneInput> listed;
     if (!options.scene.empty()) listed.push_back(fileInput(options.scene));
     if (!options.inputs.empty())
         for (SceneInput& scene : expandSceneInputs(options.inputs)) listed.push_back(std::move(scene));
     if (listed.empty()) listed.push_back({"", "default", "default"});
-    const std::vector<SceneInput> scenes = shardOf(listed, options.shard);
-    const bool single = listed.size() == 1;
-    const bool sequence = options.frames > 1;
+    return listed;
+}
+
+// Checks, before anything loads, that every file the run writes can be written (a single scene's
+// image included); returns the image format.
+io::ImageFileFormat prepareOutputs(const RenderOptions& options, const std::vector<SceneInput>& listed,
+                                   const std::vector<SceneInput>& scenes, bool sequence) {
     const io::ImageFileFormat format = checkOutputs(options, scenes, sequence);
-    if (single) {
+    if (listed.size() == 1) {
         const std::string first = expandOutPattern(options.out, {listed[0].name, listed[0].path, "default", sequence ? std::optional(0u) : std::nullopt});
         createFolderOf(first);
         io::checkWritable(first);
@@ -270,22 +253,113 @@ int runRender(const RenderOptions& options) {
             createFolderOf(path);
             io::checkWritable(path);
         }
+    return format;
+}
+
+// Renders one scene of the run into `r`; a failure is recorded in `r` (and logged in a batch),
+// and for a single scene also kept in `singleFailure` to be rethrown after the report is written.
+void runScene(Run& run, LoadedScene loaded, SceneReport& r, RunReport& report, Progress& progress,
+              std::exception_ptr& singleFailure) {
+    vk::Context& context = run.session.context();
+    const uint32_t validationBefore = context.validationMessageCount();
+    try {
+        if (loaded.error) std::rethrow_exception(loaded.error);
+        renderScene(run, *loaded.scene, r, progress);
+        r.ok = true;
+    } catch (...) {
+        if (!run.batch) singleFailure = std::current_exception();
+        const Failure failure = describeFailure(std::current_exception());
+        r.error = failure.message;
+        r.exitCode = failure.exitCode;
+        // Loader messages name their file already; the renderer's do not.
+        if (!r.input.file.empty() && r.error.rfind(r.input.file.string(), 0) != 0) r.error = r.input.file.string() + ": " + r.error;
+        progress.clear();
+        if (run.batch) log::error(r.error);
+    }
+    r.validationMessages = context.validationMessageCount() - validationBefore;
+    r.hostBytes = residentBytes();
+    const vk::MemoryStats device = context.allocator().stats();
+    r.deviceBytes = device.allocatedBytes;
+    report.peakHostBytes = std::max(report.peakHostBytes, r.hostBytes);
+    report.peakDeviceBytes = std::max(report.peakDeviceBytes, r.deviceBytes);
+    report.peakDeviceMemoryBytes = std::max(report.peakDeviceMemoryBytes, device.deviceMemoryBytes);
+    if (report.precomputeMs < 0.0) report.precomputeMs = run.session.renderer().lastPrecompute().frameMs;
+    if (run.batch) {
+        // Nothing of this scene stays, on the device or on the host.
+        run.session.renderer().releaseScene();
+        loaded.scene.reset();
+        returnFreedHeapMemory();
+        r.retainedHostBytes = residentBytes();
+        r.retainedDeviceBytes = context.allocator().stats().allocatedBytes;
+    }
+}
+
+// After the last scene: the report and page, --explain, the graph exports of the last frame and
+// the summary lines; returns the exit code (rethrows a single scene's failure).
+int finishRun(Run& run, const RunReport& report, std::exception_ptr singleFailure) {
+    const RenderOptions& options = run.options;
+    if (!options.report.empty()) writeText(options.report, reportJson(report));
+    if (!options.html.empty()) io::writeHtmlPage(options.html, renderPage(report, options.html), options.inlineImages);
+    if (singleFailure) std::rethrow_exception(singleFailure);
+
+    Renderer& renderer = run.session.renderer();
+    if (options.explain && run.anyFrame)
+        for (const std::string& line : renderer.explain()) std::printf("%s\n", line.c_str());
+    if (run.anyFrame) {
+        // The graph exports describe the last frame.
+        const graph::RenderGraph& graph = renderer.lastGraph();
+        if (!options.graphDot.empty())
+            writeText(options.graphDot, graph::exportDot(graph.declaration(), graph.compiled(), &run.lastFrame.timings));
+        if (!options.graphJson.empty())
+            writeText(options.graphJson, graph::exportJson(graph.declaration(), graph.compiled(), &run.lastFrame.timings));
+    }
+    const size_t scenes = report.scenes.size();
+    if (run.batch) {
+        std::printf("rendered %zu of %zu scenes in %.2f s (%.3f s a scene after start-up; environment precomputed %u time%s)\n",
+                    scenes - report.failed(), scenes, report.totalMs / 1000.0,
+                    scenes == 0 ? 0.0 : (report.totalMs - report.startupMs) / 1000.0 / double(scenes),
+                    report.precomputes, report.precomputes == 1 ? "" : "s");
+        if (options.shard.count > 1)
+            std::printf("shard %u/%u: %zu of the %zu scenes listed\n", options.shard.index, options.shard.count, scenes, report.scenesListed);
+    }
+    if (report.failed() > 0) {
+        log::error(std::to_string(report.failed()) + " of " + std::to_string(scenes) + " scenes failed:");
+        int code = 0;
+        for (const SceneReport& r : report.scenes)
+            if (!r.ok) {
+                std::fprintf(stderr, "  %s\n", r.error.c_str());
+                if (code == 0) code = r.exitCode;
+            }
+        return code;
+    }
+    return run.session.exitCode(0);
+}
+
+}  // namespace
+
+int runRender(const RenderOptions& options) {
+    const auto runStart = Clock::now();
+    const std::vector<SceneInput> listed = listScenes(options);
+    const std::vector<SceneInput> scenes = shardOf(listed, options.shard);
+    const bool single = listed.size() == 1;
+    const bool sequence = options.frames > 1;
+    const io::ImageFileFormat format = prepareOutputs(options, listed, scenes, sequence);
 
     // The first scene is read while the environment loads and the device starts.
     std::future<LoadedScene> next;
     const auto startLoad = [&](size_t i) { next = std::async(std::launch::async, load, std::cref(scenes[i]), std::cref(options)); };
     if (!scenes.empty()) startLoad(0);
-    const std::optional<scene::Environment> environment = loadEnvironment(options.env);
+    Session session(options.common, options.env);
     std::optional<LoadedScene> first;
     if (single && !scenes.empty()) {
         // Bad input fails before the device starts, as it always has for one scene.
         first = next.get();
         if (first->error) std::rethrow_exception(first->error);
     }
-    vk::Context context(contextDesc(options.common));
-    Renderer renderer(context);
-    Run run{options, context, renderer, environment ? &*environment : nullptr, format, !single, sequence};
-
+    session.start();
+    Run run{options, session, format, !single, sequence};
+    const vk::Context& context = session.context();
+    const scene::Environment* environment = session.environment();
     RunReport report{.version = versionText(),
                      .device = context.report().name,
                      .environment = environment ? environment->source : "none",
@@ -308,77 +382,13 @@ int runRender(const RenderOptions& options) {
         r.loadMs = loaded.ms;
         // The first load overlaps the device's start-up only: counted whole.
         r.loadWaitMs = i == 0 ? loaded.ms : waitMs;
-        const uint32_t validationBefore = context.validationMessageCount();
-        try {
-            if (loaded.error) std::rethrow_exception(loaded.error);
-            renderScene(run, *loaded.scene, r, progress);
-            r.ok = true;
-        } catch (...) {
-            if (single) singleFailure = std::current_exception();
-            std::tie(r.error, r.exitCode) = describe(std::current_exception());
-            // Loader messages name their file already; the renderer's do not.
-            if (!r.input.file.empty() && r.error.rfind(r.input.file.string(), 0) != 0) r.error = r.input.file.string() + ": " + r.error;
-            progress.clear();
-            if (!single) log::error(r.error);
-        }
-        r.validationMessages = context.validationMessageCount() - validationBefore;
-        r.hostBytes = residentBytes();
-        const vk::MemoryStats device = context.allocator().stats();
-        r.deviceBytes = device.allocatedBytes;
-        report.peakHostBytes = std::max(report.peakHostBytes, r.hostBytes);
-        report.peakDeviceBytes = std::max(report.peakDeviceBytes, r.deviceBytes);
-        report.peakDeviceMemoryBytes = std::max(report.peakDeviceMemoryBytes, device.deviceMemoryBytes);
-        if (report.precomputeMs < 0.0) report.precomputeMs = renderer.lastPrecompute().frameMs;
-        if (run.batch) {
-            // Nothing of this scene stays, on the device or on the host.
-            renderer.releaseScene();
-            loaded.scene.reset();
-            returnFreedHeapMemory();
-            r.retainedHostBytes = residentBytes();
-            r.retainedDeviceBytes = context.allocator().stats().allocatedBytes;
-            progress.step(i + 1, r.input.name);
-        }
+        runScene(run, std::move(loaded), r, report, progress, singleFailure);
+        if (run.batch) progress.step(i + 1, r.input.name);
     }
     progress.finish();
-    report.precomputes = renderer.precomputeCount();
+    report.precomputes = session.renderer().precomputeCount();
     report.totalMs = msSince(runStart);
-    if (!options.report.empty()) writeText(options.report, reportJson(report));
-    if (!options.html.empty()) io::writeHtmlPage(options.html, renderPage(report, options.html), options.inlineImages);
-    if (singleFailure) std::rethrow_exception(singleFailure);
-
-    if (options.explain && run.anyFrame)
-        for (const std::string& line : renderer.explain()) std::printf("%s\n", line.c_str());
-    if (run.anyFrame) {
-        // The graph exports describe the last frame.
-        const graph::RenderGraph& graph = renderer.lastGraph();
-        if (!options.graphDot.empty())
-            writeText(options.graphDot, graph::exportDot(graph.declaration(), graph.compiled(), &run.lastFrame.timings));
-        if (!options.graphJson.empty())
-            writeText(options.graphJson, graph::exportJson(graph.declaration(), graph.compiled(), &run.lastFrame.timings));
-    }
-    if (run.batch) {
-        std::printf("rendered %zu of %zu scenes in %.2f s (%.3f s a scene after start-up; environment precomputed %u time%s)\n",
-                    scenes.size() - report.failed(), scenes.size(), report.totalMs / 1000.0,
-                    scenes.empty() ? 0.0 : (report.totalMs - report.startupMs) / 1000.0 / double(scenes.size()),
-                    report.precomputes, report.precomputes == 1 ? "" : "s");
-        if (options.shard.count > 1)
-            std::printf("shard %u/%u: %zu of the %zu scenes listed\n", options.shard.index, options.shard.count, scenes.size(), listed.size());
-    }
-    if (report.failed() > 0) {
-        log::error(std::to_string(report.failed()) + " of " + std::to_string(scenes.size()) + " scenes failed:");
-        int code = 0;
-        for (const SceneReport& r : report.scenes)
-            if (!r.ok) {
-                std::fprintf(stderr, "  %s\n", r.error.c_str());
-                if (code == 0) code = r.exitCode;
-            }
-        return code;
-    }
-    if (context.validationMessageCount() > 0) {
-        log::error(std::to_string(context.validationMessageCount()) + " validation messages");
-        return 3;
-    }
-    return 0;
+    return finishRun(run, report, singleFailure);
 }
 
 }  // namespace candela::app

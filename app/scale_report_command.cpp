@@ -7,6 +7,7 @@
 // Writes report.csv, report.md and frame_vs_triangles.png (log-log). See docs/geometry.md.
 
 #include "commands.h"
+#include "session.h"
 #include "frame_measurement.h"
 #include "statistics.h"
 
@@ -77,9 +78,11 @@ void writeReport(const std::filesystem::path& out, const std::vector<Row>& rows,
 
 int runScaleReport(const ScaleReportOptions& options) {
     prepareReportFolder(options.out, {"report.csv", "report.md", "frame_vs_triangles.png"});
-    const scene::Environment sky = scene::makeProceduralSky();
-    vk::Context context(contextDesc(options.common));
-    Renderer renderer(context);
+    Session session(options.common, EnvironmentChoice{});  // the procedural sky
+    const scene::Environment& sky = *session.environment();
+    session.start();
+    vk::Context& context = session.context();
+    Renderer& renderer = session.renderer();
     // The renderer keeps pointing at the last scene it drew: every scene lives until the end.
     std::list<scene::Scene> scenes;
     std::vector<Row> rows;

@@ -2,6 +2,7 @@
 // every K frames, with host RSS, live Vulkan objects and device memory sampled as it runs.
 
 #include "commands.h"
+#include "session.h"
 #include "assets/builtin_scenes.h"
 #include "assets/image_file.h"
 #include "core/errors.h"
@@ -28,8 +29,10 @@ int runSoak(const SoakOptions& options) {
     }
     const scene::Scene grid = scene::makeSphereGrid();
     const std::vector<scene::Environment> environments = soakEnvironments();
-    vk::Context context(contextDesc(options.common));
-    Renderer renderer(context);
+    Session session(options.common, EnvironmentChoice{EnvironmentChoice::Kind::None});  // soak brings its own skies
+    session.start();
+    vk::Context& context = session.context();
+    Renderer& renderer = session.renderer();
     RenderSettings settings{.width = options.width, .height = options.height, .scene = &grid};
     settings.defaultLights = false;
     std::printf("soak: %u frames at %ux%u, environment switched every %u frames (%zu procedural skies)\n",

@@ -2,6 +2,7 @@
 // scripted run that renders N frames, saves the last and exits.
 
 #include "commands.h"
+#include "session.h"
 #include "assets/image_file.h"
 #include "core/errors.h"
 #include "core/log.h"
@@ -29,7 +30,7 @@ struct OverlapCounts {
 // After a scripted run: the median frame time after warm-up as a ratio to calibration passes run
 // around the measurement, and how much the CPU's recording overlapped the GPU's work over those
 // frames (`from` and `to`: the counts at the end of warm-up and of the last frame).
-void printFrameSummary(ui::Viewer& viewer, const RenderOptions& options, const OverlapCounts& from,
+void printFrameSummary(ui::Viewer& viewer, const ViewOptions& options, const OverlapCounts& from,
                        const OverlapCounts& to) {
     const std::vector<double>& times = viewer.frameTimesMs();
     const size_t warmUp = warmUpFrames(times.size());
@@ -60,7 +61,7 @@ void printFrameSummary(ui::Viewer& viewer, const RenderOptions& options, const O
 
 }  // namespace
 
-int runView(const RenderOptions& options) {
+int runView(const ViewOptions& options) {
     if (!options.screenshot.empty()) {
         if (io::imageFileFormat(options.screenshot) != io::ImageFileFormat::Png)
             throw UserError("--screenshot " + options.screenshot + ": screenshots are PNG files");
@@ -69,8 +70,10 @@ int runView(const RenderOptions& options) {
     ui::ViewerContent content;
     content.scene = loadScene(options);
     if (!options.variant.empty()) content.variant = scene::variantIndex(content.scene, options.variant);
-    if (std::optional<scene::Environment> env = loadEnvironment(options.env))
-        content.environment = std::make_unique<scene::Environment>(std::move(*env));
+    // The session loads the environment; the viewer starts the device itself (from the session's
+    // context description).
+    Session session(options.common, options.env);
+    content.environment = session.takeEnvironment();
     // The viewer owns the scene and environment from now on and points each frame's settings at
     // them itself.
     content.settings = renderSettings(options, content.scene, content.environment.get());
@@ -79,7 +82,7 @@ int runView(const RenderOptions& options) {
     content.time = options.time;
 
     ui::ViewerDesc desc;
-    desc.context = contextDesc(options.common);
+    desc.context = session.contextDesc();
     desc.window = {.title = "Candela — " + (options.scene.empty() ? std::string("sphere grid") : options.scene),
                    .width = options.width,
                    .height = options.height};

@@ -74,7 +74,11 @@ def load(root):
         # are not linked.
         *[(f"app/{name}", ["ibl", "core", "shared"], CLI_ENUM_HEADERS)
           for name in ["cli.h", "cli.cpp", "cli_commands.cpp", "cli_flags.h", "cli_flags.cpp", "cli_help.cpp",
-                       "cli_values.h", "cli_values.cpp"]],
+                       "cli_values.h", "cli_values.cpp", "flag_spec.h", "flag_groups.h", "flag_groups.cpp",
+                       "common_options.h", "scene_render_options.h",
+                       *[f"{command}_cli.{ext}" for command in ["render", "view", "bench", "ibl_report", "scale_report",
+                                                                "quality_report", "soak", "diff", "info"]
+                         for ext in ["h", "cpp"]]]],
         ("app/", ALL, []),
         ("tools/bench/graph_compile_bench.cpp", ["graph"], []),
         ("tools/bench/pose_bench.cpp", ["assets", "pose"], []),

@@ -63,9 +63,9 @@ std::string rowOf(const std::string& help, const std::string& flag) {
 // Whether the options the command of `a` reads are the same in `b`.
 bool sameOptions(const Command& a, const Command& b) {
     switch (a.kind) {
-        case Command::Kind::Render:
-        case Command::Kind::View:
-        case Command::Kind::Bench: return a.render == b.render;
+        case Command::Kind::Render: return a.render == b.render;
+        case Command::Kind::View: return a.view == b.view;
+        case Command::Kind::Bench: return a.bench == b.bench;
         case Command::Kind::Info: return a.info == b.info;
         case Command::Kind::IblReport: return a.iblReport == b.iblReport;
         case Command::Kind::Soak: return a.soak == b.soak;
@@ -222,8 +222,8 @@ TEST(CliFlags, EnumNamesRoundTrip) {
         EXPECT_STREQ(passes::shadingModelName(model), name);
     }
     for (const auto& [panel, name] : ui::kPanelNames)
-        EXPECT_EQ(parseCommandLine({"view", "--panels", name}).render.panels, std::set<ui::Panel>{panel});
-    EXPECT_EQ(parseCommandLine({"view"}).render.panels, ui::kPanelsOpenByDefault);
+        EXPECT_EQ(parseCommandLine({"view", "--panels", name}).view.panels, std::set<ui::Panel>{panel});
+    EXPECT_EQ(parseCommandLine({"view"}).view.panels, ui::kPanelsOpenByDefault);
 }
 
 TEST(CliFlags, UnknownFlagsNameTheNearestOne) {
@@ -257,8 +257,8 @@ TEST(CliFlags, HelpAndVersion) {
 
 TEST(CliFlags, FramesHasEachCommandsDefault) {
     EXPECT_EQ(parseCommandLine({"render"}).render.frames, 1u);
-    EXPECT_EQ(parseCommandLine({"view"}).render.frames, 0u);  // until the window is closed
-    EXPECT_EQ(parseCommandLine({"bench"}).render.frames, 20u);
+    EXPECT_EQ(parseCommandLine({"view"}).view.frames, 0u);  // until the window is closed
+    EXPECT_EQ(parseCommandLine({"bench"}).bench.frames, 20u);
     EXPECT_EQ(parseCommandLine({"soak"}).soak.frames, 10000u);
     EXPECT_EQ(parseCommandLine({"scale-report"}).scaleReport.frames, 5u);
     EXPECT_EQ(parseCommandLine({"quality-report"}).qualityReport.frames, 5u);

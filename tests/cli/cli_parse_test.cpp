@@ -60,8 +60,8 @@ TEST(CliParse, AnimationFlags) {
 TEST(CliParse, SceneLights) {
     EXPECT_TRUE(parseCommandLine({"render"}).render.sceneLights);
     EXPECT_FALSE(parseCommandLine({"render", "--scene-lights", "off"}).render.sceneLights);
-    EXPECT_TRUE(parseCommandLine({"bench", "--scene-lights=on"}).render.sceneLights);
-    EXPECT_FALSE(parseCommandLine({"view", "--scene-lights", "off"}).render.sceneLights);
+    EXPECT_TRUE(parseCommandLine({"bench", "--scene-lights=on"}).bench.sceneLights);
+    EXPECT_FALSE(parseCommandLine({"view", "--scene-lights", "off"}).view.sceneLights);
     EXPECT_THROW(parseCommandLine({"render", "--scene-lights", "no"}), UserError);
 }
 

@@ -1,0 +1,25 @@
+#pragma once
+// `candela bench`'s options and flags.
+
+#include "flag_spec.h"
+#include "scene_render_options.h"
+
+#include <vector>
+
+namespace candela::app {
+
+struct BenchOptions : SceneRenderOptions {
+    uint32_t frames = 0;    // --frames N: frames measured
+    bool explain = false;   // --explain
+    bool dither = false;    // --dither
+    bool json = false;      // --json
+    bool inFlight = false;  // --in-flight (also frames as the viewer runs them, offscreen)
+    bool operator==(const BenchOptions&) const = default;
+};
+
+// Every flag bench takes.
+std::vector<FlagSpec<BenchOptions>> benchFlags();
+// The checks that involve more than one flag; a UserError naming them.
+void checkBenchOptions(const BenchOptions& options);
+
+}  // namespace candela::app

@@ -1,0 +1,64 @@
+// `candela render`'s flags: its outputs and image sequences, then what it shares with view and bench.
+
+#include "render_cli.h"
+
+#include "flag_groups.h"
+
+namespace candela::app {
+
+std::vector<FlagSpec<RenderOptions>> renderFlags() {
+    using O = RenderOptions;
+    using Str = const std::string&;
+    std::vector<FlagSpec<O>> flags = {
+        {"--out", "FILE",
+         "the output image: .png (8-bit sRGB), .exr (linear half float) or .pfm (linear float); a pattern "
+         "with {name}, {path}, {variant} and {frame} names each scene's images (folders are created); with "
+         "--frames N and no {frame}, one %d or %04d holds the frame number",
+         "candela.png", parsed(&O::out, parsePath)},
+        {"--frames", "N", "an image sequence of N frames (--out then holds a %04d-style frame number)", "1",
+         parsed(&O::frames, parseCount)},
+        {"--fps", "F", "frames per second of an image sequence; frame i shows --time + i/F", "30",
+         [](O& o, Str flag, Str v) {
+             o.fps = parseSeconds(flag, v);
+             if (!(o.fps > 0.0)) throw UserError(flag + ": expected frames per second > 0, got '" + v + "'");
+         }},
+        {"--turntable", "DEGREES",
+         "turn the orbit camera by DEGREES over an image sequence (360: once round), framed at one "
+         "distance",
+         "0", parsed(&O::turntableDegrees, parseNumber)},
+        {"--report", "FILE",
+         "write a JSON report of the run: per scene the load, upload and frame times, triangles, draws, "
+         "textures and their bytes, extensions, warnings and the files written",
+         "", parsed(&O::report, parsePath)},
+        {"--html", "FILE",
+         "write an HTML page of the run: a row per scene with its images, times, sizes, warnings and "
+         "failure, sortable (self-contained: no network; images beside it)",
+         "", parsed(&O::html, parsePath)},
+        inlineImagesFlag(&O::inlineImages),
+        {"--shard", "I/N",
+         "render only share I of N of the scenes (every N-th, from the I-th): one machine's part of a "
+         "library spread over N machines",
+         "", parsed(&O::shard, parseShard)},
+        {"--graph-dot", "FILE", "write the compiled render graph as Graphviz dot", "", parsed(&O::graphDot, parsePath)},
+        {"--graph-json", "FILE", "write the compiled render graph as JSON (passes, resources, barriers, timings)", "",
+         parsed(&O::graphJson, parsePath)},
+        {"--explain", "",
+         "print the camera used (as the flags that reproduce it) and which passes and shader variants were "
+         "left out, and why",
+         "", setsTo(&O::explain, true)},
+        ditherFlag(&O::dither),
+    };
+    append(flags, bindTo<O>(frameSizeFlags(&O::width, &O::height)));
+    append(flags, bindTo<O>(sceneRenderFlags(false)));
+    append(flags, bindTo<O>(&O::common, std::vector{quietFlag()}));
+    return flags;
+}
+
+void takeRenderArgument(RenderOptions& options, const std::string& argument) { options.inputs.push_back(argument); }
+
+void checkRenderOptions(const RenderOptions& options) {
+    checkSceneFlags(options, !options.inputs.empty(), true);
+    checkLightingFlags(options);
+}
+
+}  // namespace candela::app

@@ -1,0 +1,41 @@
+#pragma once
+// `candela render`'s options and flags.
+
+#include "flag_spec.h"
+#include "scene_batch.h"
+#include "scene_render_options.h"
+
+#include <string>
+#include <vector>
+
+namespace candela::app {
+
+struct RenderOptions : SceneRenderOptions {
+    // SCENE... — glTF files, folders and @lists (scene_batch.h), after --scene's file.
+    std::vector<std::string> inputs;
+    std::string out;          // --out FILE (.png, .exr, .pfm), a pattern with {name}, {path}, {variant}, {frame}
+    std::string report;       // --report FILE (JSON: per scene times, sizes, warnings, outputs)
+    std::string html;         // --html FILE (a page of the run)
+    bool inlineImages = false;  // --inline-images (the page holds its images)
+    Shard shard;              // --shard I/N
+    std::string graphDot;     // --graph-dot FILE
+    std::string graphJson;    // --graph-json FILE
+    bool explain = false;     // --explain
+    bool dither = false;      // --dither
+    // An image sequence of --frames N frames at --fps F, written to the --out pattern (one %d, e.g.
+    // frame_%04d.png); frame i shows --time + i / F, and with --turntable DEGREES the orbit camera
+    // turns that far over the sequence.
+    uint32_t frames = 0;
+    double fps = 0.0;
+    float turntableDegrees = 0.0f;
+    bool operator==(const RenderOptions&) const = default;
+};
+
+// Every flag render takes.
+std::vector<FlagSpec<RenderOptions>> renderFlags();
+// A SCENE argument: appended to the inputs.
+void takeRenderArgument(RenderOptions& options, const std::string& argument);
+// The checks that involve more than one flag; a UserError naming them.
+void checkRenderOptions(const RenderOptions& options);
+
+}  // namespace candela::app

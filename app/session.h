@@ -1,0 +1,72 @@
+#pragma once
+// What the drawing commands set up before their first frame: the environment that lights their
+// scenes, then the device (with its pipeline cache) and a renderer on it; and the scene, pose and
+// render settings that render, view and bench's flags ask for.
+
+#include "cli.h"
+#include "assets/environment.h"
+#include "pose/scene_pose.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
+#include "vk/context.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace candela::app {
+
+// The context description the common flags ask for (with the pipeline cache's folder:
+// --pipeline-cache, else the user's cache folder). Sets the log's verbosity (--verbose).
+vk::ContextDesc contextDesc(const CommonOptions& common);
+
+class Session {
+public:
+    // Loads the environment `env` asks for: a file, the procedural sky, or none; its warnings are
+    // logged, and its notes with --verbose. The device does not start yet (start()).
+    Session(const CommonOptions& common, const EnvironmentChoice& env);
+    Session(const Session&) = delete;  // the renderer points at the context
+    Session& operator=(const Session&) = delete;
+
+    // Starts the device and the renderer. Precondition: not started.
+    void start();
+    // Precondition: started.
+    vk::Context& context() { return *context_; }
+    Renderer& renderer() { return *renderer_; }
+
+    // The environment; null for --env none.
+    const scene::Environment* environment() const { return environment_ ? &*environment_ : nullptr; }
+    // Hands the environment over (to the viewer, which owns what it draws); null for --env none.
+    std::unique_ptr<scene::Environment> takeEnvironment();
+    const vk::ContextDesc& contextDesc() const { return desc_; }
+
+    // `code`, or 3 when the device reported validation messages (their number logged as an error).
+    // Precondition: started.
+    int exitCode(int code) const;
+
+private:
+    vk::ContextDesc desc_;
+    std::optional<scene::Environment> environment_;
+    std::optional<vk::Context> context_;
+    std::optional<Renderer> renderer_;
+};
+
+// The environment `choice` asks for (nullopt: none), its warnings logged, and its notes with --verbose.
+std::optional<scene::Environment> loadEnvironment(const EnvironmentChoice& choice);
+// The scene of `file` (a glTF file; "": the built-in sphere grid --grid and --distinct-materials
+// ask for), as read: nothing logged, the default variant. Safe to call on another thread.
+scene::Scene readScene(const SceneOptions& options, const std::string& file);
+// readScene of --scene with its warnings logged (notes with --verbose) and --variant selected.
+scene::Scene loadScene(const SceneOptions& options);
+// The pose --animation and --time ask for (a UserError names the scene's animations when one
+// does not exist). Precondition: `scene` outlives it.
+scene::ScenePose loadPose(const SceneOptions& options, const scene::Scene& scene);
+// Logs one warning naming the scene when the animations --animation asks for drive the same
+// channels (which, and which wins: scene::describeAnimationConflicts); nothing otherwise.
+void warnAnimationConflicts(const SceneOptions& options, const scene::Scene& scene);
+// The render settings the flags of render, view and bench choose (undithered: render and bench
+// set --dither, the viewer always dithers). Precondition: `scene` and `environment` outlive them.
+RenderSettings renderSettings(const SceneRenderOptions& options, const scene::Scene& scene,
+                              const scene::Environment* environment);
+
+}  // namespace candela::app
