@@ -17,21 +17,28 @@
 
 namespace candela::passes {
 
-// One draw as a pass records it.
+// One draw as a pass records it, with what its hooks need, fixed when the pass is declared.
 struct DrawCall {
     const vk::Pipeline* pipeline = nullptr;
     DrawListItem item;
     int32_t vertexOffset = kRestVertices;  // into the deformed vertices; kRestVertices: the scene's own
+    VkDescriptorSet materialSet = VK_NULL_HANDLE;  // the scene's set 1 of the draw (VK_NULL_HANDLE: none)
+    bool layered = false;  // drawn by a layered program (set 3; set 1 names the posed layer data)
 };
 
 // Records `draws` in order between ctx.beginRendering() and ctx.endRendering(). `pipelineBound(p,
-// draw)` binds the sets of pipeline `p` other than set 1 after it is bound (every set is rebound
+// draw, stats)` binds the sets of pipeline `p` other than set 1 after it is bound (every set is rebound
 // after a switch: programs may differ from set 1 on); `materialSet(draw)` is the set 1 of a draw
 // (VK_NULL_HANDLE: the pipeline has none), bound when it differs from the one bound. `deformed`:
-// the frame's deformed vertices (VK_NULL_HANDLE: none). State changes are counted in `stats`.
+// the frame's deformed vertices. State changes are counted in `recorded` (if given).
+// Preconditions: in a graphics pass's execute callback; each pipeline is non-null, has dynamic
+// cull mode and front face and a push-constant block of sizeof(FramePush); `deformed` is valid if
+// any draw's vertexOffset is not kRestVertices; the hooks record no rendering begin or end.
 template <class PipelineBound, class MaterialSet>
 void recordDraws(const graph::PassContext& ctx, std::span<const DrawCall> draws, const scene::GpuScene& scene, VkBuffer deformed,
-                 shading::FramePush push, DrawStats& stats, PipelineBound&& pipelineBound, MaterialSet&& materialSet) {
+                 shading::FramePush push, DrawStats* recorded, PipelineBound&& pipelineBound, MaterialSet&& materialSet) {
+    DrawStats unused;
+    DrawStats& stats = recorded ? *recorded : unused;
     VkCommandBuffer cmd = ctx.cmd();
     ctx.beginRendering();
     if (draws.empty()) {  // e.g. only transmissive draws: the pass just clears
@@ -55,7 +62,7 @@ void recordDraws(const graph::PassContext& ctx, std::span<const DrawCall> draws,
             bound = draw.pipeline;
             bound->bind(cmd);
             ++stats.pipelineBinds;
-            pipelineBound(*bound, draw);
+            pipelineBound(*bound, draw, stats);
             boundMaterial = VK_NULL_HANDLE;
         }
         if (const VkDescriptorSet set = materialSet(draw); set != VK_NULL_HANDLE && set != boundMaterial) {
@@ -88,7 +95,7 @@ void recordDraws(const graph::PassContext& ctx, std::span<const DrawCall> draws,
     ctx.endRendering();
 }
 
-// Binds `set` at index `index` of `pipeline`'s layout (graphics), counting it in `stats`.
+// Binds `set` at index `index` of `pipeline`'s layout (graphics), counting it in `stats` (a hook's).
 inline void bindGraphicsSet(VkCommandBuffer cmd, const vk::Pipeline& pipeline, uint32_t index, VkDescriptorSet set, DrawStats& stats) {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), index, 1, &set, 0, nullptr);
     ++stats.descriptorBinds;

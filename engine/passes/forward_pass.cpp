@@ -227,7 +227,11 @@ DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::s
         const MaterialKey& key = mKeys->keys[item.key];
         if (!pipelines[item.key]) pipelines[item.key] = &pipeline(shadingVariant(key, frame.variant));
         anyLayered = anyLayered || key.layers != 0;
-        draws.push_back({.pipeline = pipelines[item.key], .item = item, .vertexOffset = frame.vertexOffsetOf(item.draw)});
+        draws.push_back({.pipeline = pipelines[item.key],
+                         .item = item,
+                         .vertexOffset = frame.vertexOffsetOf(item.draw),
+                         .materialSet = mMaterialSets[item.material],
+                         .layered = key.layers != 0});
     }
     // Every variant of the frame shares the layouts of sets 0 and 2: the core program's, or in a
     // ground-truth frame its own program's (which adds its inputs to set 2).
@@ -247,10 +251,8 @@ DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::s
                                            .sceneStages = kVertexAndFragment,
                                            .lightStages = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT});
         },
-        [draws = std::move(draws), push = frame.push, gpuScene = mScene, keys = mKeys, sceneSet = mSceneSet,
-         materialSets = &mMaterialSets, iblSets = &mIblSet, layerSets = &mLayerSet, program, stats](const Data& d, PassContext& ctx) {
-            DrawStats unused;
-            DrawStats& counts = stats ? *stats : unused;
+        [draws = std::move(draws), push = frame.push, gpuScene = mScene, sceneSet = mSceneSet, materialSets = mMaterialSets.size(),
+         iblSets = &mIblSet, layerSets = &mLayerSet, program, stats](const Data& d, PassContext& ctx) {
             const VkDescriptorSet set0 = frameSceneSet(ctx, *program, *gpuScene, d.buffers.posed, sceneSet);
             const VkDescriptorSet iblSet = iblSets->write(ctx, *program, d.ibl);
             // Set 3 of each layered variant in the pass (each specialized to its layers' maps).
@@ -260,18 +262,17 @@ DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::s
                     if (p == &pipeline) return set;
                 return layerSetsWritten.emplace_back(&pipeline, layerSets->write(ctx, pipeline.program(), d.layers)).second;
             };
-            PosedMaterialSets posedSets(ctx, *gpuScene, d.buffers.posed.materialLayers, materialSets->size());
-            const auto layered = [&](const DrawCall& draw) { return keys->keys[draw.item.key].layers != 0; };
+            PosedMaterialSets posedSets(ctx, *gpuScene, d.buffers.posed.materialLayers, materialSets);
             recordDraws(
-                ctx, draws, *gpuScene, d.buffers.deformed.valid() ? ctx.buffer(d.buffers.deformed) : VK_NULL_HANDLE, push, counts,
-                [&](const vk::Pipeline& bound, const DrawCall& draw) {
+                ctx, draws, *gpuScene, deformedBuffer(ctx, d.buffers), push, stats,
+                [&](const vk::Pipeline& bound, const DrawCall& draw, DrawStats& counts) {
                     bindGraphicsSet(ctx.cmd(), bound, 0, set0, counts);
                     bindGraphicsSet(ctx.cmd(), bound, 2, iblSet, counts);
-                    if (layered(draw) && bound.program().setCount() > 3) bindGraphicsSet(ctx.cmd(), bound, 3, layerSetOf(bound), counts);
+                    if (draw.layered && bound.program().setCount() > 3) bindGraphicsSet(ctx.cmd(), bound, 3, layerSetOf(bound), counts);
                 },
                 [&](const DrawCall& draw) {
-                    const uint32_t material = draw.item.material;
-                    return posedSets.get(material, layered(draw), draw.pipeline->program(), material, (*materialSets)[material]);
+                    return posedSets.get(draw.item.material, draw.layered, draw.pipeline->program(), draw.item.material,
+                                         draw.materialSet);
                 });
         });
     return data.targets;

@@ -38,6 +38,12 @@ VkDescriptorSet writeSceneSet(vk::Context& context, vk::DescriptorAllocator& all
 VkDescriptorSet frameSceneSet(const graph::PassContext& ctx, const vk::Program& program, const scene::GpuScene& scene,
                               const PosedBuffers& declared, VkDescriptorSet sceneSet);
 
+// The frame's deformed vertices as `declared` (declareFrameReads) resolve them in a pass's execute
+// callback; VK_NULL_HANDLE when the frame has none.
+inline VkBuffer deformedBuffer(const graph::PassContext& ctx, const DeclaredFrameBuffers& declared) {
+    return declared.deformed.valid() ? ctx.buffer(declared.deformed) : VK_NULL_HANDLE;
+}
+
 // Writes set 1 of `program` for material `material` of `scene`: its core textures and, with
 // `layers` (the layer parameters' buffer; VK_NULL_HANDLE for a core program), the layer textures
 // the program declares (a program specialized to the material's layers declares only theirs).

@@ -1,5 +1,5 @@
 #pragma once
-// The forward program's storage blocks that hold the scene's data, each a runtime array of one
+// The shading programs' storage blocks that hold the scene's data, each a runtime array of one
 // shading:: type (shared/scene_data.h), named once for C++: the descriptor writers bind them by this
 // name and the parameter registry edits their elements (e.g. "Lights[2]") through it.
 

@@ -5,8 +5,8 @@
 
 namespace candela::passes {
 
-ShadingVariant shadingVariant(const ShadingVariant& forward) {
-    ShadingVariant v = forward;
+ShadingVariant computeShadingVariant(const ShadingVariant& drawn) {
+    ShadingVariant v = drawn;
     v.alphaMask = false;
     v.blend = false;
     v.alphaToCoverage = false;
@@ -25,7 +25,7 @@ std::optional<VisibilityFrameTables> visibilityFrameTables(std::span<const DrawL
         const uint32_t textureSet = textureSetOf[item.material];
         auto [found, added] = listOf.try_emplace({item.key, textureSet}, 0);
         if (added) {
-            const ShadingVariant v = shadingVariant(shadingVariant(keys.keys[item.key], frame));
+            const ShadingVariant v = computeShadingVariant(shadingVariant(keys.keys[item.key], frame));
             const auto same = std::find_if(out.lists.begin(), out.lists.end(),
                                            [&](const ShadingList& l) { return l.variant == v && l.textureSet == textureSet; });
             found->second = static_cast<uint32_t>(same - out.lists.begin());

@@ -18,10 +18,10 @@
 
 namespace candela::passes {
 
-// The compute shading's variant of a forward variant: the same specialization constants, less what
-// only rasterization uses (the alpha test and alpha to coverage happen in the visibility pass;
-// blending never reaches it). Draws whose forward variants differ only there share one dispatch.
-ShadingVariant shadingVariant(const ShadingVariant& forward);
+// The compute shading's variant of a draw's shading variant: the same specialization constants,
+// less what only rasterization uses (the alpha test and alpha to coverage happen in the visibility
+// pass; blending never reaches it). Draws whose variants differ only there share one dispatch.
+ShadingVariant computeShadingVariant(const ShadingVariant& drawn);
 
 // What one compute dispatch shades: pixels of one shading variant and one texture set.
 struct ShadingList {

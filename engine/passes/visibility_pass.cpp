@@ -66,9 +66,11 @@ VisibilityTargets VisibilityPass::add(RenderGraph& graph, const DrawTargetSize& 
     for (const DrawListItem& item : items) {
         const bool masked = keys.keys[item.key].alphaMask;
         anyMasked = anyMasked || masked;
+        // Masked draws bind set 1: the base colour texture of their texture set.
         draws.push_back({.pipeline = &pipeline({.masked = masked, .samples = size.samples, .alphaToCoverage = masked && frame.variant.alphaToCoverage}),
                          .item = item,
-                         .vertexOffset = frame.vertexOffsetOf(item.draw)});
+                         .vertexOffset = frame.vertexOffsetOf(item.draw),
+                         .materialSet = masked ? mBaseColorSets[mTextureSets->ofMaterial[item.material]] : VK_NULL_HANDLE});
     }
     struct Data {
         VisibilityTargets targets;
@@ -88,21 +90,16 @@ VisibilityTargets VisibilityPass::add(RenderGraph& graph, const DrawTargetSize& 
                                            .materials = anyMasked,
                                            .sceneStages = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT});
         },
-        [draws = std::move(draws), push = frame.push, scene = mScene, keys = &keys, textureSets = mTextureSets,
-         baseColorSets = &mBaseColorSets, opaqueSet = mOpaqueSceneSet, maskedSet = mMaskedSceneSet, stats](const Data& d, PassContext& ctx) {
-            DrawStats unused;
-            DrawStats& counts = stats ? *stats : unused;
-            const auto masked = [&](const DrawCall& draw) { return keys->keys[draw.item.key].alphaMask; };
+        [draws = std::move(draws), push = frame.push, scene = mScene, opaqueSet = mOpaqueSceneSet, maskedSet = mMaskedSceneSet,
+         stats](const Data& d, PassContext& ctx) {
             recordDraws(
-                ctx, draws, *scene, d.buffers.deformed.valid() ? ctx.buffer(d.buffers.deformed) : VK_NULL_HANDLE, push, counts,
-                [&](const vk::Pipeline& bound, const DrawCall& draw) {
-                    const VkDescriptorSet sceneSet = masked(draw) ? maskedSet : opaqueSet;
+                ctx, draws, *scene, deformedBuffer(ctx, d.buffers), push, stats,
+                [&](const vk::Pipeline& bound, const DrawCall& draw, DrawStats& counts) {
+                    const bool masked = draw.materialSet != VK_NULL_HANDLE;  // only masked draws have a set 1
+                    const VkDescriptorSet sceneSet = masked ? maskedSet : opaqueSet;
                     bindGraphicsSet(ctx.cmd(), bound, 0, frameSceneSet(ctx, bound.program(), *scene, d.buffers.posed, sceneSet), counts);
                 },
-                // Masked draws: the base colour texture of the draw's texture set.
-                [&](const DrawCall& draw) {
-                    return masked(draw) ? (*baseColorSets)[textureSets->ofMaterial[draw.item.material]] : VK_NULL_HANDLE;
-                });
+                [](const DrawCall& draw) { return draw.materialSet; });
         });
     return data.targets;
 }

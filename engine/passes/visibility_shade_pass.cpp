@@ -144,7 +144,7 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
                     .image("visibility", visibilityView, ctx.layout(d.visibility), nearest)
                     .image("shaded", hdrView, ctx.layout(d.hdr))
                     .buffer("Vertices", vertices)
-                    .buffer("DeformedVertices", d.buffers.deformed.valid() ? ctx.buffer(d.buffers.deformed) : vertices)
+                    .buffer("DeformedVertices", d.buffers.deformed.valid() ? deformedBuffer(ctx, d.buffers) : vertices)
                     .buffer("Indices", scene->indexBuffer())
                     .buffer("VisibilityDraws", ctx.buffer(d.draws))
                     .buffer("TileLists", ctx.buffer(d.lists))

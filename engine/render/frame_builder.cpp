@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <stdexcept>
 #include <cmath>
 
 namespace candela {
@@ -283,6 +284,9 @@ passes::DrawTarget FrameBuilder::addDraws(Frame& frame, const FramePlan& plan, c
                                           const VisibilityPath::FrameDesc& desc, const passes::VisibilityFrameTables* tables,
                                           const scene::ViewSetup& view, const passes::IblInputs* ibl) {
     RenderGraph& graph = *frame.graph;
+    if (plan.path == passes::ShadingPath::Visibility && !tables)
+        throw std::logic_error("FrameBuilder: a visibility frame without its visibility tables");
+    if (plan.sky != SkyPlacement::None && !ibl) throw std::logic_error("FrameBuilder: a sky without an environment");
     const auto addSkybox = [&](const passes::DrawTarget& over) {
         return mSkybox.add(graph, view, {.target = over, .specular = ibl->maps.specular, .params = ibl->params}, &mParameters);
     };

@@ -23,7 +23,7 @@ struct FrameFacts {
     passes::DebugView debugView = passes::DebugView::None;
     bool skyboxWanted = true;       // the environment is the background (IblLook::skybox)
     bool floatOutput = false;       // the HDR image is the output (EXR/PFM)
-    bool groundTruth = false;       // ibl-report's ground truth (IBL reference samples > 0)
+    bool groundTruth = false;       // ibl-report's ground truth (reference samples > 0, with an environment)
     uint32_t samples = 1;           // the sample count chosen for the draw targets
     bool skyboxDisabled = false;    // --disable-pass skybox (the viewer's toggle)
     bool transmissionBackgroundDisabled = false;
@@ -45,7 +45,7 @@ struct FrameFacts {
 
 // Why a frame takes the forward path when the visibility path was not asked for or cannot be taken.
 enum class PathReason : uint8_t {
-    Requested,            // --shading-path forward, or visibility taken as asked
+    Requested,            // the path asked for (or, for auto, the device's default visibility path)
     DeviceDefault,        // auto: the device's default (FrameFacts::devicePathReason)
     Unsupported,          // the device or the scene cannot (FrameFacts::visibilityUnsupported)
     GroundTruth,          // ibl-report's ground truth is a forward program
@@ -101,6 +101,7 @@ struct FramePlan {
 
     // Whether the plan leaves out `part` (for any reason).
     bool leavesOut(PlannedPart part) const;
+    bool operator==(const FramePlan&) const = default;
 };
 
 // The plan of a frame with `facts`.

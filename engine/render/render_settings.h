@@ -2,7 +2,7 @@
 // RenderSettings: what one frame is — what to draw (the scene, its pose, the environment), how
 // (camera, shading, debug view, tonemap, draw selection, MSAA, image-based lighting) and into what
 // (size, 8-bit or float). How the renderer runs frames (frames in flight, the viewer's tolerance of
-// unknown pass toggles, test hooks) is Renderer::Options.
+// unknown pass toggles, test hooks) is RendererOptions (renderer.h).
 
 #include "assets/environment.h"
 #include "ibl/ibl_settings.h"

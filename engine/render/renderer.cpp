@@ -206,13 +206,13 @@ std::vector<std::string> Renderer::explain() const {
     return lines;
 }
 
-Renderer::Background Renderer::lastBackground() const {
+Renderer::Backdrop Renderer::lastBackdrop() const {
     const Frame& frame = mRunner.last();
     const std::optional<uint32_t> skybox = frame.graph->findPass("skybox");
     const bool skyboxRan = skybox && frame.graph->isCompiled() &&
                            frame.graph->compiled().passes[*skybox].cullReason == CullReason::None;
-    if ((frame.plan && frame.plan->sky == SkyPlacement::Tonemap) || skyboxRan) return Background::Sky;
-    return frame.solidBackground ? Background::Colour : Background::Transparent;
+    if ((frame.plan && frame.plan->sky == SkyPlacement::Tonemap) || skyboxRan) return Backdrop::Sky;
+    return frame.solidBackground ? Backdrop::Color : Backdrop::Transparent;
 }
 
 }  // namespace candela

@@ -4,10 +4,9 @@
 // frame's passes, adds the ending the call needs (readback, overlay, export), and has the
 // FrameRunner compile, record and submit it; a capture reads the result back (Readback).
 //
-// Scene frame graph:  [ibl precompute, only when the environment or its quality changed] →
-//                     forward (HDR + depth) → [skybox] → tonemap (8-bit) → readback.
-// Test-pattern graph: pattern (compute, HDR) → encode (graphics, 8-bit sRGB) → readback.
-// For a float capture the readback reads the HDR image directly, so tonemap/encode are culled.
+// What a scene frame declares is FrameBuilder's (frame_builder.h: facts → plan → passes); the test
+// pattern is pattern → encode. A capture ends in a readback, which for a float capture reads the
+// HDR image directly, so tonemap/encode are culled.
 
 #include "render/frame.h"
 #include "render/frame_builder.h"
@@ -160,8 +159,8 @@ public:
     const FramePlan* lastPlan() const { return mRunner.last().plan ? &*mRunner.last().plan : nullptr; }
     // What the last frame drew behind the scene: the sky (a skybox pass that ran, or composited by
     // the tonemap), the tonemap's solid background colour, or nothing (alpha = coverage).
-    enum class Background { Sky, Colour, Transparent };
-    Background lastBackground() const;
+    enum class Backdrop { Sky, Color, Transparent };
+    Backdrop lastBackdrop() const;
     // Transient-pool rebuilds so far (tests: stays constant while the graph is unchanged).
     uint32_t transientRebuilds() const { return mRunner.transientRebuilds(); }
     // The Vulkan images behind the last frame's transients (tests read their usage).

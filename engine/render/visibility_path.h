@@ -25,7 +25,7 @@ class VisibilityPath {
 public:
     explicit VisibilityPath(vk::Context& context);
 
-    // Binds the scene, or records why it cannot take the path (sceneUnsupported()). Preconditions:
+    // Binds the scene, or records why it cannot take the path (unsupported()). Preconditions:
     // the GPU no longer uses the previous scene's sets; `scene` and `keys` outlive their use.
     void setScene(const scene::GpuScene& scene, const passes::MaterialKeys& keys);
     // Why frames of the current scene cannot take the path ("" if they can): the device's reason,

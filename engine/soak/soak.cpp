@@ -7,7 +7,7 @@
 namespace candela {
 
 std::vector<SoakSample> runSoak(Renderer& renderer, vk::Context& context, RenderSettings settings,
-                                const std::vector<scene::Environment>& environments, const SoakOptions& options,
+                                const std::vector<scene::Environment>& environments, const SoakSchedule& options,
                                 const std::function<void(const SoakSample&)>& onSample) {
     std::vector<SoakSample> samples;
     for (uint32_t frame = 0; frame < options.frames; ++frame) {

@@ -11,7 +11,8 @@
 
 namespace candela {
 
-struct SoakOptions {
+// How long a soak runs, how often it switches the environment and samples.
+struct SoakSchedule {
     uint32_t frames = 10000;
     uint32_t switchEvery = 100;  // frames per environment
     uint32_t sampleEvery = 100;  // frames between samples (and at frame 1)
@@ -33,7 +34,7 @@ struct SoakSample {
 // once the GPU is idle; `onSample` sees each sample as it is taken. Preconditions: `environments` is not empty; the renderer's
 // context is otherwise idle.
 std::vector<SoakSample> runSoak(Renderer& renderer, vk::Context& context, RenderSettings settings,
-                                const std::vector<scene::Environment>& environments, const SoakOptions& options,
+                                const std::vector<scene::Environment>& environments, const SoakSchedule& options,
                                 const std::function<void(const SoakSample&)>& onSample = {});
 
 // Environments for a soak without files: the procedural sky with the sun at `count` azimuths.

@@ -32,7 +32,7 @@ void drawParameterPanel(Viewer& viewer) {
         std::vector<std::string_view> unseen;
         if (pass == "tonemap") {
             textDisabledWrapped("behind the scene: " + viewer.behindScene());
-            if (viewer.renderer().lastBackground() != Renderer::Background::Colour) unseen.push_back("params.background");
+            if (viewer.renderer().lastBackdrop() != Renderer::Backdrop::Color) unseen.push_back("params.background");
         }
         for (const auto& block : blocks)
             if (inPass(block, false)) drawParameterBlock(registry, block, unseen);

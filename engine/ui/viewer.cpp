@@ -233,12 +233,12 @@ void Viewer::environmentChanged() {
 }
 
 std::string Viewer::behindScene() const {
-    switch (mRenderer->lastBackground()) {
-        case Renderer::Background::Sky: {
+    switch (mRenderer->lastBackdrop()) {
+        case Renderer::Backdrop::Sky: {
             const std::string name = mEnvironment ? std::filesystem::path(mEnvironment->source).filename().string() : "";
             return "the sky (" + name + ")";
         }
-        case Renderer::Background::Colour: return "the background colour";
+        case Renderer::Backdrop::Color: return "the background colour";
         default: return "nothing (transparent, shown black)";
     }
 }

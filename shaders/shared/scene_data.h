@@ -87,12 +87,13 @@ struct MaterialLayerData {
     /*Ignore*/ UvTransform uv[CANDELA_LAYER_TEX_COUNT];
 };
 
-// Push constants of forward.vert/frag: the view, which draw this is and the environment lookup
-// (128 bytes: exactly what every device guarantees).
+// Push constants of every program that draws or shades the scene (the forward programs, the
+// visibility raster and shading): the view, which draw or dispatch this is and the environment
+// lookup (128 bytes: exactly what every device guarantees).
 struct FramePush {
     /*Ignore*/ mat4 viewProjection;
     /*Ignore*/ vec4 eye;     // xyz: camera position (world)
-    /*Ignore*/ uvec4 counts; // x: light count, y: draw index, zw: unused
+    /*Ignore*/ uvec4 counts; // x: light count, y: draw index, z: the visibility shading's dispatch, w: unused
     IblParams ibl;
 };
 

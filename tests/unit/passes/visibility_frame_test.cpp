@@ -21,11 +21,11 @@ DrawListItem item(uint32_t draw, uint32_t material, uint32_t key, uint32_t drawD
 
 TEST(VisibilityFrame, ShadingVariantDropsWhatOnlyRasterizationUses) {
     const ShadingVariant masked{.alphaMask = true, .samples = 4, .alphaToCoverage = true};
-    const ShadingVariant v = shadingVariant(masked);
+    const ShadingVariant v = computeShadingVariant(masked);
     EXPECT_FALSE(v.alphaMask);
     EXPECT_FALSE(v.alphaToCoverage);
     EXPECT_EQ(v.samples, 4u);
-    EXPECT_EQ(shadingVariant(ShadingVariant{.blend = true}), ShadingVariant{});
+    EXPECT_EQ(computeShadingVariant(ShadingVariant{.blend = true}), ShadingVariant{});
 }
 
 TEST(VisibilityFrame, ListsAreVariantsTimesTextureSets) {

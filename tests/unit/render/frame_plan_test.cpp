@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace candela {
 namespace {
 
@@ -24,6 +26,11 @@ TEST(FramePlan, TakesThePathAskedForWhenItCan) {
     forward.requestedPath = ShadingPath::Forward;
     EXPECT_EQ(planFrame(forward).path, ShadingPath::Forward);
     EXPECT_EQ(planFrame(forward).pathReason, PathReason::Requested);
+    // Asked for forward, a frame says no other reason.
+    forward.visibilityUnsupported = "no 64-bit atomics";
+    forward.groundTruth = true;
+    EXPECT_EQ(planFrame(forward).pathReason, PathReason::Requested);
+    EXPECT_EQ(explainForwardPath(planFrame(forward), forward), "shading path: forward");
 }
 
 TEST(FramePlan, AutoTakesTheDevicesDefault) {
@@ -54,12 +61,20 @@ TEST(FramePlan, FallsBackToForwardWithTheFirstReason) {
         EXPECT_EQ(plan.path, ShadingPath::Forward);
         EXPECT_EQ(plan.pathReason, c.reason);
     }
-    // The device's reason comes before the frame's.
+    // With several, the first of the table above: each case with every later one.
+    for (size_t first = 0; first < std::size(cases); ++first) {
+        FrameFacts facts = visibilityFrame();
+        for (size_t c = first; c < std::size(cases); ++c) cases[c].change(facts);
+        EXPECT_EQ(planFrame(facts).pathReason, cases[first].reason) << first;
+    }
     FrameFacts both = visibilityFrame();
     both.visibilityUnsupported = "no 64-bit atomics";
     both.groundTruth = true;
-    EXPECT_EQ(planFrame(both).pathReason, PathReason::Unsupported);
     EXPECT_EQ(explainForwardPath(planFrame(both), both), "shading path: forward (no 64-bit atomics)");
+    FrameFacts lists = visibilityFrame();
+    lists.shadingListsFit = false;
+    EXPECT_EQ(explainForwardPath(planFrame(lists), lists),
+              "shading path: forward (the frame needs more than 1024 shading lists, the visibility path's limit)");
     // One sample needs no multisampled integer image.
     FrameFacts single = visibilityFrame();
     single.integerMsaaSampling = false;
@@ -86,22 +101,26 @@ TEST(FramePlan, SkyboxLeftOutWithItsReason) {
     facts.skyboxWanted = false;
     FramePlan plan = planFrame(facts);
     EXPECT_EQ(plan.sky, SkyPlacement::None);
-    EXPECT_TRUE(std::count(plan.leftOut.begin(), plan.leftOut.end(), LeftOut{PlannedPart::Skybox, LeftOutReason::NotTheBackground}));
+    EXPECT_EQ(1, std::count(plan.leftOut.begin(), plan.leftOut.end(), LeftOut{PlannedPart::Skybox, LeftOutReason::NotTheBackground}));
     facts.skyboxWanted = true;
     facts.debugView = DebugView::BaseColor;
     plan = planFrame(facts);
     EXPECT_EQ(plan.sky, SkyPlacement::None);
-    EXPECT_TRUE(std::count(plan.leftOut.begin(), plan.leftOut.end(), LeftOut{PlannedPart::Skybox, LeftOutReason::DebugView}));
-    // Without an environment there is no sky to leave out.
+    EXPECT_EQ(1, std::count(plan.leftOut.begin(), plan.leftOut.end(), LeftOut{PlannedPart::Skybox, LeftOutReason::DebugView}));
+    // Without an environment there is no sky, and none to leave out.
     facts.environment = false;
+    EXPECT_FALSE(planFrame(facts).leavesOut(PlannedPart::Skybox));
+    facts.debugView = DebugView::None;
+    EXPECT_EQ(planFrame(facts).sky, SkyPlacement::None);
     EXPECT_FALSE(planFrame(facts).leavesOut(PlannedPart::Skybox));
 }
 
 TEST(FramePlan, TransmissionSeesTheOpaqueImageUnlessItsBackgroundIsDisabled) {
     FrameFacts facts = visibilityFrame();
     EXPECT_EQ(planFrame(facts).transmission, TransmissionPlan::None);
-    EXPECT_TRUE(std::count(planFrame(facts).leftOut.begin(), planFrame(facts).leftOut.end(),
-                           LeftOut{PlannedPart::TransmissionBackground, LeftOutReason::NoTransmissive}));
+    const FramePlan none = planFrame(facts);
+    EXPECT_EQ(1, std::count(none.leftOut.begin(), none.leftOut.end(),
+                            LeftOut{PlannedPart::TransmissionBackground, LeftOutReason::NoTransmissive}));
     facts.transmissiveDraws = true;
     EXPECT_EQ(planFrame(facts).transmission, TransmissionPlan::SeesOpaqueImage);
     EXPECT_FALSE(planFrame(facts).leavesOut(PlannedPart::TransmissionBackground));
@@ -110,7 +129,7 @@ TEST(FramePlan, TransmissionSeesTheOpaqueImageUnlessItsBackgroundIsDisabled) {
     FrameFacts debug = visibilityFrame();
     debug.debugView = DebugView::BaseColor;  // the draw list then has no transmissive range
     const FramePlan plan = planFrame(debug);
-    EXPECT_TRUE(std::count(plan.leftOut.begin(), plan.leftOut.end(),
+    EXPECT_EQ(1, std::count(plan.leftOut.begin(), plan.leftOut.end(),
                            LeftOut{PlannedPart::TransmissionBackground, LeftOutReason::DebugView}));
 }
 
@@ -147,9 +166,42 @@ TEST(FramePlan, SkinMorphAsThePoseNeedsIt) {
     EXPECT_FALSE(planFrame(facts).leavesOut(PlannedPart::DeformedDraws));
     facts.skinMorphDisabled = true;
     const FramePlan plan = planFrame(facts);
+    EXPECT_FALSE(plan.leavesOut(PlannedPart::SkinMorph));
     EXPECT_EQ(plan.deform, DeformPlan::Disabled);
     EXPECT_EQ(explainLeftOut(plan, facts, {PlannedPart::DeformedDraws}),
               std::vector<std::string>{"left out: the 3 deformed draws (skin_morph disabled: nothing places their vertices)"});
+}
+
+TEST(FramePlan, SkinMorphDisabledWithNothingDeformedSaysNothingIsDeformed) {
+    FrameFacts facts = visibilityFrame();
+    facts.deformable = true;
+    facts.skinMorphDisabled = true;
+    const FramePlan plan = planFrame(facts);
+    EXPECT_EQ(plan.deform, DeformPlan::NoneInPose);
+    EXPECT_TRUE(plan.leavesOut(PlannedPart::SkinMorph));
+    EXPECT_FALSE(plan.leavesOut(PlannedPart::DeformedDraws));
+}
+
+TEST(FramePlan, TooManyShadingListsChangesOnlyThePath) {
+    // FrameBuilder plans again when the visibility tables do not fit: only the path's fields may move.
+    FrameFacts facts = visibilityFrame();
+    facts.samples = 4;
+    facts.blendedDraws = true;
+    facts.deformable = true;
+    facts.deformedDraws = 2;
+    facts.sheen = true;
+    FramePlan fits = planFrame(facts);
+    facts.shadingListsFit = false;
+    const FramePlan fallback = planFrame(facts);
+    EXPECT_EQ(fallback.path, ShadingPath::Forward);
+    EXPECT_EQ(fallback.pathReason, PathReason::TooManyShadingLists);
+    EXPECT_TRUE(fits.msaaExpand && fits.blendedPass);
+    EXPECT_FALSE(fallback.msaaExpand || fallback.blendedPass);
+    fits.path = fallback.path;
+    fits.pathReason = fallback.pathReason;
+    fits.msaaExpand = fallback.msaaExpand;
+    fits.blendedPass = fallback.blendedPass;
+    EXPECT_EQ(fits, fallback);
 }
 
 TEST(FramePlan, SheenLutOnlyForSheen) {
@@ -175,7 +227,10 @@ TEST(FramePlan, ExplainsThePassesInOrder) {
     const std::vector<std::string> lines = explainPasses(planFrame(facts), facts, true);
     ASSERT_EQ(lines.size(), 3u);
     EXPECT_EQ(lines[0], "sheen LUT: imported (computed by an earlier frame)");
-    EXPECT_EQ(lines[1].rfind("transmission: 'transmission_background' disabled", 0), 0u) << lines[1];
+    EXPECT_EQ(lines[1],
+              "transmission: 'transmission_background' disabled: 'forward_transmission' draws the transmissive and blended "
+              "draws over the opaque image without seeing it (they let through only the background the tonemap composites: "
+              "the sky or the background colour)");
     EXPECT_EQ(lines[2], "sky: composited under the image by the tonemap (no skybox pass)");
 }
 

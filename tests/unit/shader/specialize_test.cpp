@@ -5,6 +5,7 @@
 #include "shader/reflection.h"
 #include "shader/specialize.h"
 #include "shared/forward_tables.h"
+#include "shared/specialization_ids.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +15,7 @@
 namespace candela::shader {
 namespace {
 
-constexpr uint32_t kLayersId = 10, kDebugViewId = 9;
+constexpr uint32_t kLayersId = CANDELA_SPEC_LAYERS, kDebugViewId = CANDELA_SPEC_DEBUG_VIEW;
 
 bool declares(const ShaderReflection& r, const std::string& name) {
     return std::any_of(r.bindings.begin(), r.bindings.end(), [&](const DescriptorBinding& b) { return b.name == name; });
