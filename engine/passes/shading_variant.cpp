@@ -34,23 +34,20 @@ ShadingVariant shadingVariant(const MaterialKey& key, const FrameVariant& frame)
 }
 
 std::vector<uint32_t> specializationConstants(const ShadingVariant& v) {
-    std::vector<uint32_t> out;
-    const auto set = [&out](uint32_t id, uint32_t value) { shader::setSpecialization(out, id, value); };
-    set(CANDELA_SPEC_NORMAL_MAP, v.normalMap);
-    set(CANDELA_SPEC_LIGHTS, v.lights);
-    set(CANDELA_SPEC_UNLIT, v.unlit);
-    set(CANDELA_SPEC_ALPHA_MASK, v.alphaMask);
-    set(CANDELA_SPEC_SHADING_MODEL, static_cast<uint32_t>(v.model));
-    set(CANDELA_SPEC_IBL, v.ibl);
-    set(CANDELA_SPEC_IRRADIANCE_SH, v.irradianceSh);
-    set(CANDELA_SPEC_MULTISCATTER, v.multiscatter);
-    set(CANDELA_SPEC_REFERENCE_SAMPLES, v.referenceSamples);
-    set(CANDELA_SPEC_DEBUG_VIEW, static_cast<uint32_t>(v.debugView));
-    set(CANDELA_SPEC_LAYERS, v.layers);
-    set(CANDELA_SPEC_SPECULAR_AA, v.specularAa);
-    set(CANDELA_SPEC_ALPHA_TO_COVERAGE, v.alphaToCoverage);
-    set(CANDELA_SPEC_LIGHT_TYPES, v.lightTypes);
-    return out;
+    return shader::specializationValues({{CANDELA_SPEC_NORMAL_MAP, v.normalMap},
+                                         {CANDELA_SPEC_LIGHTS, v.lights},
+                                         {CANDELA_SPEC_UNLIT, v.unlit},
+                                         {CANDELA_SPEC_ALPHA_MASK, v.alphaMask},
+                                         {CANDELA_SPEC_SHADING_MODEL, static_cast<uint32_t>(v.model)},
+                                         {CANDELA_SPEC_IBL, v.ibl},
+                                         {CANDELA_SPEC_IRRADIANCE_SH, v.irradianceSh},
+                                         {CANDELA_SPEC_MULTISCATTER, v.multiscatter},
+                                         {CANDELA_SPEC_REFERENCE_SAMPLES, v.referenceSamples},
+                                         {CANDELA_SPEC_DEBUG_VIEW, static_cast<uint32_t>(v.debugView)},
+                                         {CANDELA_SPEC_LAYERS, v.layers},
+                                         {CANDELA_SPEC_SPECULAR_AA, v.specularAa},
+                                         {CANDELA_SPEC_ALPHA_TO_COVERAGE, v.alphaToCoverage},
+                                         {CANDELA_SPEC_LIGHT_TYPES, v.lightTypes}});
 }
 
 std::string ShadingVariant::name() const {

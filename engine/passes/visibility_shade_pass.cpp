@@ -38,14 +38,14 @@ const vk::Pipeline& VisibilityShadePass::pipeline(const ShadeKey& key) {
     if (key.variant.referenceSamples) throw std::logic_error("VisibilityShadePass: the ground truth is drawn by the forward path");
     return mPipelines.get(mContext, key, [&] {
         std::vector<uint32_t> constants = specializationConstants(key.variant);
-        const auto set = [&constants](uint32_t id, uint32_t value) { shader::setSpecialization(constants, id, value); };
-        set(CANDELA_SPEC_DEFORMED, key.deformed);
-        set(CANDELA_SPEC_CORE_TEXTURES, key.coreSlots);
-        set(CANDELA_SPEC_LAYER_TEXTURES, key.layerSlots);
-        set(CANDELA_SPEC_DISTINCT, key.distinct);
-        set(CANDELA_SPEC_SAMPLES, key.variant.samples);
-        set(CANDELA_SPEC_TILE_X, mTile.x);
-        set(CANDELA_SPEC_TILE_Y, mTile.y);
+        for (const auto& [id, value] : {std::pair{CANDELA_SPEC_DEFORMED, uint32_t(key.deformed)},
+                                        std::pair{CANDELA_SPEC_CORE_TEXTURES, key.coreSlots},
+                                        std::pair{CANDELA_SPEC_LAYER_TEXTURES, key.layerSlots},
+                                        std::pair{CANDELA_SPEC_DISTINCT, key.distinct},
+                                        std::pair{CANDELA_SPEC_SAMPLES, key.variant.samples},
+                                        std::pair{CANDELA_SPEC_TILE_X, mTile.x},
+                                        std::pair{CANDELA_SPEC_TILE_Y, mTile.y}})
+            shader::setSpecialization(constants, id, value);
         return vk::Pipeline::compute(mContext, shaderOf(key.variant.layers != 0, key.variant.samples > 1), constants);
     });
 }
@@ -144,7 +144,7 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
                     .image("visibility", visibilityView, ctx.layout(d.visibility), nearest)
                     .image("shaded", hdrView, ctx.layout(d.hdr))
                     .buffer("Vertices", vertices)
-                    .buffer("DeformedVertices", d.buffers.deformed.valid() ? deformedBuffer(ctx, d.buffers) : vertices)
+                    .buffer("DeformedVertices", d.buffers.deformed.valid() ? ctx.buffer(d.buffers.deformed) : vertices)
                     .buffer("Indices", scene->indexBuffer())
                     .buffer("VisibilityDraws", ctx.buffer(d.draws))
                     .buffer("TileLists", ctx.buffer(d.lists))
