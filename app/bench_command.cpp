@@ -1,5 +1,5 @@
 // `candela bench`: frame time and per-pass GPU time of a scene, each also as a ratio to the
-// calibration pass (passes/calibration_pass.h) run in the same process, because absolute times
+// calibration pass (passes/diagnostics/calibration_pass.h) run in the same process, because absolute times
 // on a shared CPU vary by up to 2× between runs. Frames and calibration runs are interleaved so
 // that drift affects both alike. Then each pass's wall time submitted alone (serialized), which
 // on CPU devices is the only per-pass cost to trust: their timestamps miss deferred work, and the
@@ -35,7 +35,7 @@ double minimum(const std::vector<double>& values) {
 // A switch of the debug view after the measured frames: the first frame in the new view (its
 // pipelines compiled then, or ahead of it by --precompile debug-views) and the one after it.
 struct DebugViewSwitch {
-    passes::DebugView to = passes::DebugView::None;
+    options::DebugView to = options::DebugView::None;
     double firstMs = 0.0, nextMs = 0.0;  // wall time of each call
 };
 
@@ -44,7 +44,7 @@ DebugViewSwitch switchDebugView(Renderer& renderer, const RenderSettings& settin
     // finished here, so that the two modes compare what the switch itself costs.
     renderer.finishPipelineBuilds();
     DebugViewSwitch out;
-    for (passes::DebugView view : passes::allDebugViews())
+    for (options::DebugView view : options::allDebugViews())
         if (view != settings.debugView) {
             out.to = view;
             break;
@@ -73,7 +73,7 @@ std::string shadingPathLine(const std::vector<std::string>& explain) {
 // Each shading path measured on its own (as the main measurement: frames interleaved with
 // calibration runs, as ratios to them), when the path was not chosen on the command line.
 struct PathMeasurement {
-    passes::ShadingPath path;
+    options::ShadingPath path;
     FrameMeasurement m;
 };
 
@@ -184,7 +184,7 @@ nlohmann::ordered_json benchJson(const BenchOptions& options, const scene::Scene
     nlohmann::ordered_json pathsOut = nlohmann::ordered_json::array();
     for (const PathMeasurement& p : paths) {
         const double pathCalibration = median(p.m.calibrationMs);
-        pathsOut.push_back({{"path", passes::shadingPathName(p.path)},
+        pathsOut.push_back({{"path", options::shadingPathName(p.path)},
                             {"took", shadingPathLine(p.m.explain)},
                             {"medianMs", median(p.m.frameMs)},
                             {"medianRatio", median(p.m.frameMs) / pathCalibration},
@@ -194,12 +194,12 @@ nlohmann::ordered_json benchJson(const BenchOptions& options, const scene::Scene
     if (!paths.empty()) out["shadingPaths"] = pathsOut;
     out["startupMs"] = startupMs;
     out["firstFrame"] = {{"ms", m.firstFrameMs}, {"ratio", m.firstFrameMs / calibration}};
-    out["debugViewSwitch"] = {{"to", passes::debugViewName(viewSwitch.to)},
+    out["debugViewSwitch"] = {{"to", options::debugViewName(viewSwitch.to)},
                               {"firstMs", viewSwitch.firstMs},
                               {"firstRatio", viewSwitch.firstMs / calibration},
                               {"nextMs", viewSwitch.nextMs},
                               {"nextRatio", viewSwitch.nextMs / calibration}};
-    out["pipelines"] = {{"precompile", passes::precompileName(settings.precompile)},
+    out["pipelines"] = {{"precompile", options::precompileName(settings.precompile)},
                         {"cache", context.pipelineCacheFile().status()}};
     const vk::MsaaChoice msaa = renderer.msaa(settings.msaa);
     out["msaa"] = {{"samples", msaa.samples}, {"reason", msaa.reason}};
@@ -275,10 +275,10 @@ void printBench(const BenchOptions& options, const scene::Scene& scene, const sc
                 minimum(frameMs) / minimum(calibrationMs), median(m.cpuMs));
     std::printf("  first frame: %.1f ms (%.1fx calibration) after a start-up of %.1f ms; pipelines: --precompile %s, "
                 "cache %s\n",
-                m.firstFrameMs, m.firstFrameMs / calibration, startupMs, passes::precompileName(settings.precompile),
+                m.firstFrameMs, m.firstFrameMs / calibration, startupMs, options::precompileName(settings.precompile),
                 context.pipelineCacheFile().status().c_str());
     std::printf("  debug-view switch to %s: first frame %.1f ms (%.1fx calibration), next %.1f ms (%.1fx)\n",
-                passes::debugViewName(viewSwitch.to), viewSwitch.firstMs, viewSwitch.firstMs / calibration,
+                options::debugViewName(viewSwitch.to), viewSwitch.firstMs, viewSwitch.firstMs / calibration,
                 viewSwitch.nextMs, viewSwitch.nextMs / calibration);
     if (pose.animated())
         std::printf("  animation:   %zu playing, CPU evaluation median %.4f ms, max %.4f ms per frame\n",
@@ -334,8 +334,8 @@ int runBench(const BenchOptions& options) {
     const uint32_t serialFrames = std::min(options.frames, kSerialFrames);
     b.m = measureFrames(renderer, settings, options.frames, advance, serialFrames);
     b.viewSwitch = switchDebugView(renderer, settings);
-    if (settings.shadingPath == passes::ShadingPath::Auto)
-        for (const passes::ShadingPath path : {passes::ShadingPath::Forward, passes::ShadingPath::Visibility}) {
+    if (settings.shadingPath == options::ShadingPath::Auto)
+        for (const options::ShadingPath path : {options::ShadingPath::Forward, options::ShadingPath::Visibility}) {
             RenderSettings s = settings;
             s.shadingPath = path;
             b.paths.push_back({path, measureFrames(renderer, s, options.frames, advance, serialFrames)});

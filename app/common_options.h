@@ -2,7 +2,7 @@
 // Option types more than one command shares: the device flags every command takes, and the
 // values of --env and --background.
 
-#include "vk/device_profile.h"
+#include "options/device_profile.h"
 
 #include <array>
 #include <cstdint>
@@ -23,7 +23,7 @@ struct CommonOptions {
     bool verbose = false;          // --verbose
     bool quiet = false;            // --quiet: no progress lines
     uint32_t memoryBudgetMib = 0;  // --memory-budget MIB (0: the device's memory)
-    std::optional<vk::DeviceProfile> deviceProfile;  // --device-profile NAME (unset: CANDELA_DEVICE_PROFILE)
+    std::optional<options::DeviceProfile> deviceProfile;  // --device-profile NAME (unset: CANDELA_DEVICE_PROFILE)
     bool operator==(const CommonOptions&) const = default;
 };
 

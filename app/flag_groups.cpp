@@ -2,7 +2,7 @@
 
 #include "flag_groups.h"
 
-#include "passes/draw_selection.h"
+#include "options/draw_selection.h"
 
 namespace candela::app {
 
@@ -65,25 +65,25 @@ std::vector<FlagSpec<SceneOptions>> sceneFlags() {
 
 std::vector<FlagSpec<ImageOptions>> imageFlags(bool viewer) {
     using O = ImageOptions;
-    const passes::DrawSelection selection;
+    const options::DrawSelection selection;
     FlagSpec<O> precompile =
         viewer ? choiceFlag("--precompile", "{choices}", "as for render; debug-views: a switch of the debug view does not stall",
-                            passes::precompileName(passes::Precompile::DebugViews), &O::precompile, passes::kPrecompileNames)
+                            options::precompileName(options::Precompile::DebugViews), &O::precompile, options::kPrecompileNames)
                : choiceFlag("--precompile", "{choices}",
                             "when the scene's pipeline variants compile: at each first draw (off), on worker threads before the "
                             "frame's draws (frame), and also every debug view's in the background (debug-views)",
-                            passes::precompileName(passes::Precompile::Frame), &O::precompile, passes::kPrecompileNames);
+                            options::precompileName(options::Precompile::Frame), &O::precompile, options::kPrecompileNames);
     return {
         choiceFlag("--shading", "MODEL",
                    "the shading model: {choices} (pbr: height-correlated Smith GGX; pbr-schlick-ggx: the original "
                    "project's geometry term; blinn-phong: its first shader)",
-                   "pbr", &O::shading, passes::kShadingModelNames),
+                   "pbr", &O::shading, options::kShadingModelNames),
         choiceFlag("--debug-view", "NAME",
                    "show a material input or a shading term instead of the image (d, g, f: the GGX terms toward the "
                    "first light; docs/shading.md): {choices}",
-                   "none", &O::debugView, passes::kDebugViewNames),
+                   "none", &O::debugView, options::kDebugViewNames),
         choiceFlag("--tonemap", "OP", "the tone mapping operator: {choices} (aces: Hill's RRT+ODT fit)", "pbr-neutral", &O::tonemap,
-                   passes::kTonemapNames),
+                   options::kTonemapNames),
         {"--exposure", "EV", "exposure in stops", "0", parsed(&O::exposureEv, parseNumber)},
         {"--background", "BG",
          "what shows where the scene draws nothing: {choices} (auto: the skybox with an environment, #262626 "
@@ -104,18 +104,18 @@ std::vector<FlagSpec<ImageOptions>> imageFlags(bool viewer) {
                    "how opaque and masked surfaces are shaded: as their triangles are rasterized (forward), or once per "
                    "covered pixel from a visibility buffer, in compute (visibility); auto: the device's default "
                    "(candela info says which and why)",
-                   passes::shadingPathName(passes::ShadingPath::Auto), &O::shadingPath, passes::kShadingPathNames),
+                   options::shadingPathName(options::ShadingPath::Auto), &O::shadingPath, options::kShadingPathNames),
         choiceFlag("--specular-aa", "{choices}",
                    "widen the roughness by the normal's change across a pixel and by what a normal map's mips average "
                    "away (less shimmering highlights)",
-                   passes::ShadingOptions{}.specularAntiAliasing ? "on" : "off", &O::specularAa, kOnOff),
+                   options::ShadingOptions{}.specularAntiAliasing ? "on" : "off", &O::specularAa, kOnOff),
         {"--lod-error", "PIXELS",
          "draw each mesh at the coarsest level of detail whose geometric error covers at most PIXELS on "
          "screen; 0: full detail",
          valueText(selection.lodErrorPixels), [](O& o, Str flag, Str v) { o.lodErrorPixels = parsePixels(flag, v, true); }},
         {"--lod", "{choices}", "levels of detail (on: --lod-error " + valueText(selection.lodErrorPixels) + ", off: 0)", "",
          [](O& o, Str flag, Str v) {
-             o.lodErrorPixels = parseChoice(flag, kOnOff, v) ? passes::DrawSelection::kDefaultLodErrorPixels : 0.0f;
+             o.lodErrorPixels = parseChoice(flag, kOnOff, v) ? options::DrawSelection::kDefaultLodErrorPixels : 0.0f;
          },
          namesOf(kOnOff)},
         choiceFlag("--cull", "{choices}", "leave out draws outside the view frustum", selection.frustumCulling ? "on" : "off",
@@ -221,8 +221,8 @@ std::vector<FlagSpec<CommonOptions>> deviceFlags(bool rendering) {
          "device reports) or native, the device itself [CANDELA_DEVICE_PROFILE, else native]",
          "",
          [](O& o, Str flag, Str v) {
-             const std::optional<vk::DeviceProfile> profile = vk::parseDeviceProfile(v);
-             if (!profile) throw UserError(flag + ": no device profile '" + v + "' (profiles: " + vk::deviceProfileList() + ")");
+             const std::optional<options::DeviceProfile> profile = options::parseDeviceProfile(v);
+             if (!profile) throw UserError(flag + ": no device profile '" + v + "' (profiles: " + options::deviceProfileList() + ")");
              o.deviceProfile = *profile;
          }},
         {"--validate", "", "Khronos validation with synchronization validation (also CANDELA_VALIDATE=1)", "",

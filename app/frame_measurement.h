@@ -1,5 +1,5 @@
 #pragma once
-// Measuring frames against the calibration pass (passes/calibration_pass.h), shared by `bench` and
+// Measuring frames against the calibration pass (passes/diagnostics/calibration_pass.h), shared by `bench` and
 // `scale-report`: frames and calibration runs interleaved, so that the machine's drift affects both
 // alike; figures as medians and ratios to the calibration of the same run.
 

@@ -49,7 +49,7 @@ int runInfo(const InfoOptions& options) {
     const vk::MsaaChoice msaa = vk::chooseMsaa(context.properties().deviceType, context.attachmentSampleCounts(), std::nullopt);
     std::printf("  MSAA: %s; supported: %s\n", msaa.reason.c_str(), vk::sampleCountList(context.attachmentSampleCounts()).c_str());
     const auto [shadingPath, shadingWhy] = defaultShadingPath(context);
-    std::printf("  shading path: %s (%s; --shading-path)\n", passes::shadingPathName(shadingPath), shadingWhy.c_str());
+    std::printf("  shading path: %s (%s; --shading-path)\n", options::shadingPathName(shadingPath), shadingWhy.c_str());
     const vk::DeviceCaps& caps = context.caps();
     std::printf("  device profile: %s (%s)\n", r.profile.c_str(), vk::deviceProfileSource(context.profile()));
     std::printf("  per-stage limits: %u samplers, %u sampled images, %u storage buffers, %u storage images\n",

@@ -46,7 +46,7 @@ struct Row {
     uint32_t msaa = 1;
     bool specularAa = false;
     std::vector<float> lodErrors;  // one, or those that drew the same work and images (sameWork)
-    passes::ShadingPath path = passes::ShadingPath::Forward;
+    options::ShadingPath path = options::ShadingPath::Forward;
     Spread frameRatio;             // over the rounds: median and quartiles
     double frameMs = 0.0;          // median over the rounds of each round's median frame
     std::vector<double> roundRatios, roundMs;
@@ -115,7 +115,7 @@ std::string lodList(const Row& r) {
 std::string settingName(const Row& r) {
     char text[160];
     std::snprintf(text, sizeof text, "MSAA %u, specular AA %s, LOD %s px, %s path", r.msaa, r.specularAa ? "on" : "off",
-                  lodList(r).c_str(), passes::shadingPathName(r.path));
+                  lodList(r).c_str(), options::shadingPathName(r.path));
     return text;
 }
 
@@ -135,7 +135,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
     for (const SceneResult& s : results)
         for (const Row& r : s.rows)
             csv << r.scene << "," << r.msaa << "," << (r.specularAa ? "on" : "off") << "," << lodList(r) << ","
-                << passes::shadingPathName(r.path) << "," << r.frameRatio.median << "," << r.frameRatio.low << ","
+                << options::shadingPathName(r.path) << "," << r.frameRatio.median << "," << r.frameRatio.low << ","
                 << r.frameRatio.high << "," << r.frameMs << "," << r.error.mean << "," << r.error.p99 << "," << r.temporal << "," << r.temporalError << ","
                 << s.referenceTemporal << "," << r.triangles << "," << r.pareto << "," << r.isDefault << "\n";
 
@@ -158,8 +158,8 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
           "time against mean error, where a row is dominated only by one that is better beyond the spread on one axis "
           "(frame time: the brackets do not overlap; error: lower at the table's 3 decimals) and not worse beyond it "
           "on the other. Default on this device: MSAA "
-       << defaultMsaa.samples << ", specular AA " << (passes::ShadingOptions{}.specularAntiAliasing ? "on" : "off") << ", LOD "
-       << passes::DrawSelection::kDefaultLodErrorPixels << " px.\n\n";
+       << defaultMsaa.samples << ", specular AA " << (options::ShadingOptions{}.specularAntiAliasing ? "on" : "off") << ", LOD "
+       << options::DrawSelection::kDefaultLodErrorPixels << " px.\n\n";
     for (const std::string& note : notes) md << "- " << note << "\n";
     if (!notes.empty()) md << "\n";
     for (const SceneResult& s : results) {
@@ -171,7 +171,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
            << "|---|---|---|---|---|---|---|---|---|---|---|\n";
         for (const Row& r : s.rows) {
             std::snprintf(line, sizeof line, "| %u | %s | %s | %s | %.2f× (%.2f–%.2f) | %.3f | %.0f | %.3f | %.3f | %llu | %s%s |\n",
-                          r.msaa, r.specularAa ? "on" : "off", lodList(r).c_str(), passes::shadingPathName(r.path),
+                          r.msaa, r.specularAa ? "on" : "off", lodList(r).c_str(), options::shadingPathName(r.path),
                           r.frameRatio.median, r.frameRatio.low, r.frameRatio.high, r.error.mean, r.error.p99, r.temporal,
                           r.temporalError, (unsigned long long)r.triangles, r.pareto ? "★" : "", r.isDefault ? " default" : "");
             md << line;
@@ -185,12 +185,12 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
                               .xLabel = "frame time / calibration",
                               .yLabel = temporal ? "temporal error: flicker vs the reference (of 255)" : "mean error (of 255)"};
             // One series per (MSAA, specular AA, shading path), in that order in every scene's plots.
-            std::set<std::tuple<uint32_t, bool, passes::ShadingPath>> keys;
+            std::set<std::tuple<uint32_t, bool, options::ShadingPath>> keys;
             for (const Row& r : s.rows) keys.insert({r.msaa, r.specularAa, r.path});
-            const std::vector<std::tuple<uint32_t, bool, passes::ShadingPath>> series(keys.begin(), keys.end());
+            const std::vector<std::tuple<uint32_t, bool, options::ShadingPath>> series(keys.begin(), keys.end());
             for (const auto& [msaa, specularAa, path] : series)
                 plot.series.push_back("MSAA " + std::to_string(msaa) + ", specular AA " + (specularAa ? "on" : "off") + ", " +
-                                      passes::shadingPathName(path));
+                                      options::shadingPathName(path));
             for (const Row& r : s.rows) {
                 const auto it = std::find(series.begin(), series.end(), std::tuple{r.msaa, r.specularAa, r.path});
                 if (r.isDefault) plot.highlight = plot.points.size();
@@ -209,7 +209,7 @@ struct Sweep {
     const QualityReportOptions& options;
     Renderer& renderer;
     vk::MsaaChoice defaultMsaa;
-    passes::ShadingPath defaultPath;
+    options::ShadingPath defaultPath;
     Progress& progress;
     size_t& done;  // progress steps taken
 };
@@ -218,7 +218,7 @@ struct Sweep {
 struct Series {
     uint32_t samples = 1;
     bool specularAa = false;
-    passes::ShadingPath path = passes::ShadingPath::Forward;
+    options::ShadingPath path = options::ShadingPath::Forward;
 };
 
 // The errors of `series` at each LOD error of --lod-errors (in a row, so that a setting that
@@ -241,8 +241,8 @@ void measureSeries(Sweep& sweep, const RenderSettings& base, const Series& serie
         const passes::DrawStats stats = renderer.drawStats();
         std::vector<std::vector<uint8_t>> frames = orbitFrames(renderer, settings, options.orbitFrames, 1);
         const bool isDefault = samples == sweep.defaultMsaa.samples &&
-                               specularAa == passes::ShadingOptions{}.specularAntiAliasing &&
-                               lodError == passes::DrawSelection::kDefaultLodErrorPixels &&
+                               specularAa == options::ShadingOptions{}.specularAntiAliasing &&
+                               lodError == options::DrawSelection::kDefaultLodErrorPixels &&
                                path == sweep.defaultPath;
         Row* same = nullptr;
         for (size_t k = 0; k < seriesFrames.size() && !same; ++k)
@@ -310,8 +310,8 @@ int runQualityReport(const QualityReportOptions& options) {
             sampleCounts.push_back(choice.samples);
     }
     // Both shading paths where the device has the visibility path (docs/shading-paths.md).
-    std::vector<passes::ShadingPath> paths = {passes::ShadingPath::Forward};
-    if (context.choices().visibilityUnsupported.empty()) paths.push_back(passes::ShadingPath::Visibility);
+    std::vector<options::ShadingPath> paths = {options::ShadingPath::Forward};
+    if (context.choices().visibilityUnsupported.empty()) paths.push_back(options::ShadingPath::Visibility);
     const size_t perScene = sampleCounts.size() * 2 * options.lodErrors.size() * paths.size();
     // Steps: per scene its reference, then each setting's orbit, then each setting in each timing
     // round (a merged setting's steps are taken together).
@@ -342,7 +342,7 @@ int runQualityReport(const QualityReportOptions& options) {
         // that repeats the previous ones' work joins their row (sameWork).
         for (uint32_t samples : sampleCounts)
             for (bool specularAa : {false, true})
-                for (passes::ShadingPath path : paths) measureSeries(sweep, base, {samples, specularAa, path}, reference, result);
+                for (options::ShadingPath path : paths) measureSeries(sweep, base, {samples, specularAa, path}, reference, result);
         // Timing: rounds over every point, alternately forwards and backwards, so that a drift of
         // the machine's speed reaches every setting alike; each round's ratio is the median frame
         // over the median of the calibration passes interleaved with the frames.

@@ -3,7 +3,7 @@
 #include "scale_report_cli.h"
 
 #include "flag_groups.h"
-#include "passes/draw_selection.h"
+#include "options/draw_selection.h"
 
 namespace candela::app {
 
@@ -14,7 +14,7 @@ std::vector<FlagSpec<ScaleReportOptions>> scaleReportFlags() {
         {"--out", "DIR", "where report.csv, report.md and frame_vs_triangles.png go (created)", "scale-report",
          parsed(&O::out, parsePath)},
         {"--frames", "N", "frames measured per setting", "5", parsed(&O::frames, parseCount)},
-        {"--lod-error", "PIXELS", "the level-of-detail error of the \"on\" runs", valueText(passes::DrawSelection{}.lodErrorPixels),
+        {"--lod-error", "PIXELS", "the level-of-detail error of the \"on\" runs", valueText(options::DrawSelection{}.lodErrorPixels),
          [](O& o, Str flag, Str v) { o.lodErrorPixels = parsePixels(flag, v, false); }},
         {"--sizes", "N,N,...", "grid sides", "1,2,5,10,20,50,100",
          [](O& o, Str flag, Str v) {

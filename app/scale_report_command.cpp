@@ -30,7 +30,7 @@ namespace {
 struct Row {
     uint32_t side = 0;
     float lodErrorPixels = 0.0f;
-    passes::ShadingPath path = passes::ShadingPath::Forward;
+    options::ShadingPath path = options::ShadingPath::Forward;
     passes::DrawStats draws;
     double frameMs = 0.0, calibrationMs = 0.0, cpuMs = 0.0, forwardGpuMs = -1.0;
     double ratio() const { return frameMs / calibrationMs; }
@@ -46,7 +46,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<Row>& rows,
         csv << r.side << "," << r.lodErrorPixels << "," << r.draws.sceneDraws << "," << r.draws.submittedDraws << ","
             << r.draws.culledDraws << "," << r.draws.sceneTriangles << "," << r.draws.submittedTriangles << "," << r.frameMs
             << "," << r.calibrationMs << "," << r.ratio() << "," << r.cpuMs << "," << r.forwardGpuMs << ","
-            << passes::shadingPathName(r.path) << "\n";
+            << options::shadingPathName(r.path) << "\n";
     std::ofstream md(out / "report.md");
     md << "# Scale report\n\nThe built-in sphere grid at N × N spheres, framed alike, under the procedural sky, "
        << options.width << "×" << options.height << " on " << device << ", median of " << options.frames
@@ -58,7 +58,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<Row>& rows,
     for (const Row& r : rows) {
         char line[256];
         std::snprintf(line, sizeof line, "| %u | %u | %s | %s | %llu | %llu | %.2f× | %.2f |\n", r.side, r.draws.sceneDraws,
-                      r.lodErrorPixels > 0.0f ? "on" : "off", passes::shadingPathName(r.path), (unsigned long long)r.draws.sceneTriangles,
+                      r.lodErrorPixels > 0.0f ? "on" : "off", options::shadingPathName(r.path), (unsigned long long)r.draws.sceneTriangles,
                       (unsigned long long)r.draws.submittedTriangles, r.ratio(), r.cpuMs);
         md << line;
     }
@@ -70,7 +70,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<Row>& rows,
                       .paretoLine = false};
     for (const Row& r : rows)
         plot.points.push_back({double(r.draws.sceneTriangles), r.ratio(), "N=" + std::to_string(r.side),
-                               (r.lodErrorPixels > 0.0f ? 0u : 1u) + (r.path == passes::ShadingPath::Visibility ? 2u : 0u)});
+                               (r.lodErrorPixels > 0.0f ? 0u : 1u) + (r.path == options::ShadingPath::Visibility ? 2u : 0u)});
     io::writeLogLogPlot(out / "frame_vs_triangles.png", plot);
 }
 
@@ -86,13 +86,13 @@ int runScaleReport(const ScaleReportOptions& options) {
     // The renderer keeps pointing at the last scene it drew: every scene lives until the end.
     std::list<scene::Scene> scenes;
     std::vector<Row> rows;
-    std::vector<passes::ShadingPath> paths = {passes::ShadingPath::Forward};
-    if (context.choices().visibilityUnsupported.empty()) paths.push_back(passes::ShadingPath::Visibility);
+    std::vector<options::ShadingPath> paths = {options::ShadingPath::Forward};
+    if (context.choices().visibilityUnsupported.empty()) paths.push_back(options::ShadingPath::Visibility);
     Progress progress("scale-report", options.sizes.size() * 2 * paths.size(), options.common.quiet);
     for (uint32_t side : options.sizes) {
         const scene::Scene& grid = scenes.emplace_back(scene::makeSphereGrid(side));
         for (const float lodError : {options.lodErrorPixels, 0.0f})
-        for (const passes::ShadingPath path : paths) {
+        for (const options::ShadingPath path : paths) {
             RenderSettings settings{.width = options.width, .height = options.height, .scene = &grid, .environment = &sky};
             settings.drawSelection.lodErrorPixels = lodError;
             settings.shadingPath = path;
@@ -104,7 +104,7 @@ int runScaleReport(const ScaleReportOptions& options) {
             rows.push_back(row);
             char detail[200];
             std::snprintf(detail, sizeof detail, "N=%u, levels of detail %s, %s: %.2fx calibration, %llu of %llu triangles", side,
-                          lodError > 0.0f ? "on" : "off", passes::shadingPathName(path), row.ratio(), (unsigned long long)row.draws.submittedTriangles,
+                          lodError > 0.0f ? "on" : "off", options::shadingPathName(path), row.ratio(), (unsigned long long)row.draws.submittedTriangles,
                           (unsigned long long)row.draws.sceneTriangles);
             progress.step(rows.size(), detail);
         }

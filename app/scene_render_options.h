@@ -4,12 +4,12 @@
 
 #include "common_options.h"
 #include "ibl/ibl_settings.h"
-#include "passes/debug_view.h"
-#include "passes/draw_selection.h"
-#include "passes/precompile.h"
-#include "passes/shading_model.h"
-#include "passes/shading_path.h"
-#include "passes/tonemap_operator.h"
+#include "options/debug_view.h"
+#include "options/draw_selection.h"
+#include "options/precompile.h"
+#include "options/shading_model.h"
+#include "options/shading_path.h"
+#include "options/tonemap_operator.h"
 
 #include <array>
 #include <optional>
@@ -37,14 +37,14 @@ struct SceneOptions {
 
 // How the frame is shaded and drawn.
 struct ImageOptions {
-    passes::ShadingModel shading{};      // --shading
-    passes::DebugView debugView{};       // --debug-view
-    passes::Tonemap tonemap{};           // --tonemap
+    options::ShadingModel shading{};      // --shading
+    options::DebugView debugView{};       // --debug-view
+    options::Tonemap tonemap{};           // --tonemap
     float exposureEv = 0.0f;             // --exposure EV
     Background background;               // --background
     std::optional<uint32_t> msaa;        // --msaa 1|2|4|8 (unset: the device default)
-    passes::Precompile precompile{};     // --precompile off|frame|debug-views
-    passes::ShadingPath shadingPath{};   // --shading-path auto|forward|visibility
+    options::Precompile precompile{};     // --precompile off|frame|debug-views
+    options::ShadingPath shadingPath{};   // --shading-path auto|forward|visibility
     bool specularAa = false;             // --specular-aa on|off
     float lodErrorPixels = 0.0f;         // --lod-error PIXELS (0, or --lod off: full detail)
     bool frustumCulling = true;          // --cull on|off

@@ -7,9 +7,9 @@
 namespace candela::app {
 namespace {
 
-std::string panelList(const std::set<ui::Panel>& panels) {
+std::string panelList(const std::set<options::Panel>& panels) {
     std::string out;
-    for (const auto& [panel, name] : ui::kPanelNames)
+    for (const auto& [panel, name] : options::kPanelNames)
         if (panels.count(panel)) out += (out.empty() ? "" : ",") + std::string(name);
     return out;
 }
@@ -24,12 +24,12 @@ std::vector<FlagSpec<ViewOptions>> viewFlags() {
         {"--screenshot", "FILE", "save the last of the --frames N frames, UI included, as PNG", "", parsed(&O::screenshot, parsePath)},
         {"--no-vsync", "", "present without waiting for the display (mailbox or immediate)", "", setsTo(&O::vsync, false)},
         {"--no-ui", "", "hide the ImGui panels (the ImGui pass is left out)", "", setsTo(&O::ui, false)},
-        {"--panels", "LIST", "the panels open at start, comma-separated: {choices}", panelList(ui::kPanelsOpenByDefault),
+        {"--panels", "LIST", "the panels open at start, comma-separated: {choices}", panelList(options::kPanelsOpenByDefault),
          [](O& o, Str flag, Str v) {
              o.panels.clear();
-             for (const std::string& item : commaSeparated(v)) o.panels.insert(parseChoice(flag, ui::kPanelNames, item));
+             for (const std::string& item : commaSeparated(v)) o.panels.insert(parseChoice(flag, options::kPanelNames, item));
          },
-         namesOf(ui::kPanelNames)},
+         namesOf(options::kPanelNames)},
         {"--shaders", "DIR", "hot-reload the shaders from DIR [the source tree's shaders/ folder]", "", parsed(&O::shaderDir, parsePath)},
         {"--ibl-report", "FILE", "show this ibl-report CSV's figures in the environment panel too", "",
          parsed(&O::iblReport, parsePath)},

@@ -3,7 +3,7 @@
 
 #include "flag_spec.h"
 #include "scene_render_options.h"
-#include "ui/viewer_panels.h"
+#include "options/viewer_panels.h"
 
 #include <set>
 #include <string>
@@ -18,7 +18,7 @@ struct ViewOptions : SceneRenderOptions {
     bool ui = true;               // --no-ui
     std::string shaderDir;        // --shaders DIR (hot reload; default: the source tree's shaders/)
     std::string iblReport;        // --ibl-report FILE (an ibl-report CSV for the environment panel)
-    std::set<ui::Panel> panels;   // --panels A,B,... (open at start)
+    std::set<options::Panel> panels;   // --panels A,B,... (open at start)
     bool operator==(const ViewOptions&) const = default;
 };
 

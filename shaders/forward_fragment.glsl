@@ -3,13 +3,13 @@
 // KHR_materials_* layers: CANDELA_MATERIAL_LAYERS defined, the layer code and its descriptors
 // compiled in) and forward_reference.frag (the ground truth of `candela ibl-report`:
 // CANDELA_IBL_REFERENCE defined). Its main gathers the fragment's
-// inputs, applies the alpha test or alpha to coverage, and shades (forward/shade.glsl, which the
+// inputs, applies the alpha test or alpha to coverage, and shades (shading/shade.glsl, which the
 // visibility path's compute shading calls too: the material evaluated, lit, its lobes combined). Variants
-// are specialization constants (forward/resources.glsl), so what a draw does not use costs
+// are specialization constants (shading/resources.glsl), so what a draw does not use costs
 // nothing: no normal map → no TBN work; no lights → no light loop; unlit → no BRDF; no environment
 // → no image-based lighting; in the layered program, only the layers the material uses.
 #extension GL_EXT_demote_to_helper_invocation : require
-#include "forward/resources.glsl"
+#include "shading/resources.glsl"
 
 layout(location = 0) in vec3 inWorldPosition;
 layout(location = 1) in vec3 inNormal;
@@ -22,11 +22,11 @@ layout(location = 4 + CANDELA_TEX_COUNT) in vec4 inLayerUv[(CANDELA_LAYER_TEX_CO
 
 layout(location = 0) out vec4 outColor;
 
-// Material textures are read with the fragment's own derivatives (see forward/material_eval.glsl).
+// Material textures are read with the fragment's own derivatives (see shading/material_eval.glsl).
 #define CANDELA_CORE_TEXTURE(inputs, field, slot) texture(field##Texture, (inputs).uv[slot])
 #define CANDELA_LAYER_TEXTURE(inputs, field, slot) texture(field##Texture, (inputs).layerUv[slot])
 
-#include "forward/shade.glsl"
+#include "shading/shade.glsl"
 
 // What material evaluation reads of this fragment: its interpolants, the face normal from the
 // position's derivatives and, with specular AA, the normal's change across the pixel.

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // IBL precompute: one mip of a filtered cube from the float environment cube, by summing a table
-// of samples built once on the CPU (engine/passes/ibl_sample_tables.h): each entry is a direction in
+// of samples built once on the CPU (engine/passes/ibl/ibl_sample_tables.h): each entry is a direction in
 // the texel's tangent frame (z = the texel's direction) and the source mip that filtered
 // importance sampling assigns to it; the shader rotates, fetches and sums. Output is clamped to
 // the half-float maximum.

@@ -9,7 +9,7 @@
 // Four storage buffers (what every Vulkan device allows per stage): the scene's vertices, the
 // scene's deformation records (influences and deltas per vertex, shared/skin_morph.h), this frame's
 // joint matrices and non-zero weights in one buffer, and the output. Each dispatch binds only the
-// ranges its vertices need (passes/skin_morph_dispatch.h), so no binding passes
+// ranges its vertices need (passes/deform/skin_morph_dispatch.h), so no binding passes
 // maxStorageBufferRange, and may be a 2-D grid of groups (maxComputeWorkGroupCount).
 #include "shared/skin_morph.h"
 

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_demote_to_helper_invocation : require
 // The visibility pass's fragment stage for alpha-masked draws: the alpha test (factor × COLOR_0 ×
-// texture, as forward/material_eval.glsl's materialBaseColor), then the draw entry and primitive.
+// texture, as shading/material_eval.glsl's materialBaseColor), then the draw entry and primitive.
 #define CANDELA_VISIBILITY_MASKED
 #include "visibility/raster.glsl"
 #include "shared/specialization_ids.h"

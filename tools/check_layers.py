@@ -50,9 +50,6 @@ def read_layers(root):
     return layers
 
 
-CLI_ENUM_HEADERS = ["passes/debug_view.h", "passes/draw_selection.h", "passes/tonemap_operator.h", "passes/shading_model.h",
-                    "passes/precompile.h", "passes/shading_path.h", "ui/viewer_panels.h", "vk/device_profile.h"]
-
 LAYERS, ALL, CPU, CONSUMERS = {}, [], [], []
 
 
@@ -68,11 +65,9 @@ def load(root):
     # Files outside engine/: the first row whose path matches (a file, or a folder ending in /):
     # (path, folders it may include (and everything below them), single headers it may include besides)
     CONSUMERS = [
-        # candela_cli: the argument parser, tested without the engine (tests/cli). The names of the
-        # debug views, draw selections, tonemap operators, shading models, precompile choices and
-        # viewer panels are header-only enums with their names tables; candela_passes and candela_ui
-        # are not linked.
-        *[(f"app/{name}", ["ibl", "core", "shared"], CLI_ENUM_HEADERS)
+        # candela_cli: the argument parser, tested without the engine (tests/cli): the settings chosen
+        # by name (options), the IBL settings and the names-table lookups; no device-side layer.
+        *[(f"app/{name}", ["ibl", "core", "options", "shared"], [])
           for name in ["cli.h", "cli.cpp", "cli_commands.cpp", "cli_flags.h", "cli_flags.cpp", "cli_help.cpp",
                        "cli_values.h", "cli_values.cpp", "flag_spec.h", "flag_groups.h", "flag_groups.cpp",
                        "common_options.h", "scene_render_options.h",

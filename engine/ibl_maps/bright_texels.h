@@ -6,7 +6,7 @@
 // (ibl_cubemap.comp, iblClampLuminance in shaders/shared/ibl.h), and each filter pass adds their
 // excess explicitly, as a point source at the texel's centre whose flux is the excess radiance ×
 // the texel's solid angle: ibl_filter_cube.comp weighs it by the pass's normalised lobe
-// (engine/passes/ibl_sample_tables.h lobeTable), ibl_irradiance_sh.comp projects it onto SH9. The
+// (engine/passes/ibl/ibl_sample_tables.h lobeTable), ibl_irradiance_sh.comp projects it onto SH9. The
 // sampled remainder is smooth and converges with few samples; the sun is summed, not sampled.
 // The specular cube's mip 0 (the mirror and the skybox) keeps the texels as they are. Pure CPU.
 

@@ -22,7 +22,7 @@
 #include "graph/render_graph.h"
 #include "ibl/ibl_cache_file.h"
 #include "ibl/ibl_settings.h"
-#include "passes/ibl_handles.h"
+#include "passes/ibl/ibl_handles.h"
 #include "vk/buffer.h"
 #include "vk/image.h"
 

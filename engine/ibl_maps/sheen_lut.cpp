@@ -1,7 +1,7 @@
 #include "ibl_maps/sheen_lut.h"
 
 #include "ibl_maps/ibl_maps.h"
-#include "passes/ibl_sheen_lut_pass.h"
+#include "passes/ibl/ibl_sheen_lut_pass.h"
 
 namespace candela::ibl {
 

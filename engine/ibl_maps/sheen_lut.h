@@ -1,5 +1,5 @@
 #pragma once
-// SheenLut: the persistent sheen albedo LUT (passes/ibl_sheen_lut_pass.h) of KHR_materials_sheen.
+// SheenLut: the persistent sheen albedo LUT (passes/ibl/ibl_sheen_lut_pass.h) of KHR_materials_sheen.
 // It depends on no environment or setting, so it is computed once — by the first frame whose scene
 // has a sheen material — and imported into every later frame that needs it; frames without sheen
 // never see it.

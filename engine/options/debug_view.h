@@ -1,5 +1,5 @@
 #pragma once
-// The forward pass's debug views: what it writes instead of the shaded colour — material inputs,
+// The debug views: what the shading (both paths) writes instead of the shaded colour — material inputs,
 // the GGX terms toward the first punctual light, the light of each lobe, the layers' parameters —
 // one per row of shared/forward_tables.h's CANDELA_DEBUG_VIEWS, which says what each shows (the
 // shaders' CANDELA_DEBUG_* come from the same rows). Names only: no Vulkan (the command-line
@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-namespace candela::passes {
+namespace candela::options {
 
 #define CANDELA_DEBUG_VIEW_ENUMERATOR(NAME, Name, value, name, light) Name = value,
 enum class DebugView : uint32_t { CANDELA_DEBUG_VIEWS(CANDELA_DEBUG_VIEW_ENUMERATOR) };
@@ -56,4 +56,4 @@ inline bool debugViewIsLight(DebugView view) {
     return false;
 }
 
-}  // namespace candela::passes
+}  // namespace candela::options

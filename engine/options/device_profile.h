@@ -11,7 +11,7 @@
 #include <string_view>
 #include <utility>
 
-namespace candela::vk {
+namespace candela::options {
 
 enum class DeviceProfile : uint8_t {
     Native,   // the device as it is
@@ -38,4 +38,4 @@ inline std::string deviceProfileList() {
     return out;
 }
 
-}  // namespace candela::vk
+}  // namespace candela::options

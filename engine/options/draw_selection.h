@@ -1,10 +1,10 @@
 #pragma once
-// What the forward pass draws and how, chosen per frame (RenderSettings): which draws and levels
-// of detail it submits, how it shades, and what it recorded. Plain data, no Vulkan.
+// What a frame draws and how, chosen per frame (RenderSettings): which draws and levels of detail
+// it submits and how it shades. Plain data, no Vulkan.
 
 #include <cstdint>
 
-namespace candela::passes {
+namespace candela::options {
 
 // How the forward pass shades (docs/shading.md).
 struct ShadingOptions {
@@ -25,14 +25,4 @@ struct DrawSelection {
     float lodErrorPixels = kDefaultLodErrorPixels;
 };
 
-// What the last frame drew: draws and triangles of the scene (visible ones, each instance
-// counted) against those submitted, and the state changes recorded to draw them.
-struct DrawStats {
-    uint32_t sceneDraws = 0, submittedDraws = 0, culledDraws = 0;
-    uint32_t coarserDraws = 0;  // submitted at a level of detail beyond the full one
-    uint64_t sceneTriangles = 0, submittedTriangles = 0;
-    uint32_t pipelineBinds = 0, descriptorBinds = 0, dynamicStates = 0, bufferBinds = 0;
-    uint32_t stateChanges() const { return pipelineBinds + descriptorBinds + dynamicStates + bufferBinds; }
-};
-
-}  // namespace candela::passes
+}  // namespace candela::options

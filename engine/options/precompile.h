@@ -1,5 +1,5 @@
 #pragma once
-// When the forward pass compiles its pipeline variants (--precompile), and the names of the
+// When the forward pass's pipeline variants are compiled (--precompile), and the names of the
 // choices, the one table the command line and the docs read. Names only: no Vulkan.
 
 #include "core/name_table.h"
@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <utility>
 
-namespace candela::passes {
+namespace candela::options {
 
 enum class Precompile : uint8_t {
     Off,         // each variant at its first draw, on the thread recording the frame
@@ -23,4 +23,4 @@ inline constexpr std::pair<Precompile, const char*> kPrecompileNames[] = {
 
 constexpr const char* precompileName(Precompile value) { return nameOf(kPrecompileNames, value); }
 
-}  // namespace candela::passes
+}  // namespace candela::options

@@ -1,5 +1,5 @@
 #pragma once
-// The forward pass's shading models and their names, the one table that the forward variants'
+// The shading models (both paths) and their names, the one table that the shading variants'
 // names, the command line (--shading) and the tests read. Names only: no Vulkan.
 
 #include "core/name_table.h"
@@ -9,7 +9,7 @@
 #include <string_view>
 #include <utility>
 
-namespace candela::passes {
+namespace candela::options {
 
 enum class ShadingModel : uint32_t { Pbr = 0, PbrSchlickGgx = 1, BlinnPhong = 2 };
 
@@ -23,4 +23,4 @@ constexpr std::optional<ShadingModel> parseShadingModel(std::string_view name) {
 
 constexpr const char* shadingModelName(ShadingModel model) { return nameOf(kShadingModelNames, model); }
 
-}  // namespace candela::passes
+}  // namespace candela::options

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <utility>
 
-namespace candela::passes {
+namespace candela::options {
 
 enum class ShadingPath : uint8_t {
     Auto,        // the device's default (vk::DeviceChoices::shadingPath, chosen by measurement)
@@ -20,4 +20,4 @@ inline constexpr std::pair<ShadingPath, const char*> kShadingPathNames[] = {
 
 constexpr const char* shadingPathName(ShadingPath value) { return nameOf(kShadingPathNames, value); }
 
-}  // namespace candela::passes
+}  // namespace candela::options

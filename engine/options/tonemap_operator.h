@@ -1,5 +1,5 @@
 #pragma once
-// The tone mapping operators of the tonemap pass (passes/tonemap_pass.h) and their names, the one
+// The tone mapping operators of the tonemap pass (passes/post/tonemap_pass.h) and their names, the one
 // table that the pass, the command line (--tonemap) and the tests read. Names only: no Vulkan.
 
 #include "core/name_table.h"
@@ -9,7 +9,7 @@
 #include <string_view>
 #include <utility>
 
-namespace candela::passes {
+namespace candela::options {
 
 enum class Tonemap : uint32_t { PbrNeutral = 0, Aces = 1, Agx = 2, Reinhard = 3, Linear = 4 };
 
@@ -24,4 +24,4 @@ constexpr std::optional<Tonemap> parseTonemap(std::string_view name) { return va
 
 constexpr const char* tonemapName(Tonemap op) { return nameOf(kTonemapNames, op); }
 
-}  // namespace candela::passes
+}  // namespace candela::options

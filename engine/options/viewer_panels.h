@@ -10,7 +10,7 @@
 #include <string_view>
 #include <utility>
 
-namespace candela::ui {
+namespace candela::options {
 
 enum class Panel : uint8_t { Graph, Parameters, Materials, Environment, Camera, Animation, Debug, Stats };
 
@@ -26,4 +26,4 @@ inline const std::set<Panel> kPanelsOpenByDefault = {Panel::Graph, Panel::Parame
 // The panel named `name` in kPanelNames; nullopt for anything else.
 constexpr std::optional<Panel> parsePanel(std::string_view name) { return valueNamed(kPanelNames, name); }
 
-}  // namespace candela::ui
+}  // namespace candela::options

@@ -70,9 +70,9 @@ std::vector<std::string> explainPasses(const FramePlan& plan, const FrameFacts& 
             for (const std::string& line : explainLeftOut(plan, facts, {PlannedPart::TransmissionBackground})) out.push_back(line);
             break;
     }
-    if (facts.debugView != passes::DebugView::None)
-        out.push_back(std::string("debug view: ") + passes::debugViewName(facts.debugView) +
-                      (passes::debugViewIsLight(facts.debugView) ? " (tonemapped as the image is)"
+    if (facts.debugView != options::DebugView::None)
+        out.push_back(std::string("debug view: ") + options::debugViewName(facts.debugView) +
+                      (options::debugViewIsLight(facts.debugView) ? " (tonemapped as the image is)"
                                                                  : " (shown as data: linear tonemap at exposure 0)"));
     if (plan.sky == SkyPlacement::Tonemap) out.emplace_back("sky: composited under the image by the tonemap (no skybox pass)");
     for (const std::string& line : explainLeftOut(plan, facts, {PlannedPart::Skybox})) out.push_back(line);

@@ -146,11 +146,11 @@ std::optional<passes::IblInputs> FrameBuilder::addIbl(Frame& frame, const Render
 
 passes::TonemapSettings FrameBuilder::tonemapOf(const RenderSettings& settings, bool ibl) const {
     passes::TonemapSettings tonemap = settings.tonemap;
-    if (settings.debugView == passes::DebugView::None) return tonemap;
+    if (settings.debugView == options::DebugView::None) return tonemap;
     // Debug views have no skybox: where it was the background, a neutral grey (#262626) is.
     if (ibl && settings.ibl.skybox && !tonemap.background) tonemap.background = shading::srgbDecode(glm::vec3(38.0f / 255.0f));
-    if (!passes::debugViewIsLight(settings.debugView)) {
-        tonemap.op = passes::Tonemap::Linear;  // data as it is
+    if (!options::debugViewIsLight(settings.debugView)) {
+        tonemap.op = options::Tonemap::Linear;  // data as it is
         tonemap.exposureEv = 0.0f;
         tonemap.dither = false;
     }
@@ -223,7 +223,7 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
                                                    .view = view,
                                                    .targetHeight = settings.height,
                                                    .selection = settings.drawSelection,
-                                                   .transmission = settings.debugView == passes::DebugView::None});
+                                                   .transmission = settings.debugView == options::DebugView::None});
     list.hiddenDraws -= leftOut;  // their own note says why (addSkinMorph)
     facts.transmissiveDraws = !list.empty(passes::DrawRange::Transmissive);
     facts.blendedDraws = !list.empty(passes::DrawRange::Blended);
@@ -257,8 +257,8 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     // The variants the scene needs now, compiled on the workers and here while the draws ask for
     // them (not one after the other at each first draw); in the viewer, the debug views' after —
     // from the next frame with the same bits on, so that they do not slow the frame that compiles.
-    const bool changed = settings.precompile != passes::Precompile::Off && mForward.prepare(inputs.variant);
-    if (settings.precompile == passes::Precompile::DebugViews && !changed) mForward.prepareDebugViews(inputs.variant);
+    const bool changed = settings.precompile != options::Precompile::Off && mForward.prepare(inputs.variant);
+    if (settings.precompile == options::Precompile::DebugViews && !changed) mForward.prepareDebugViews(inputs.variant);
     mStats = list.stats;
 
     // The visibility path's shading lists are known once the frame's variant is: a frame that
@@ -269,7 +269,7 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
                                                .inputs = inputs,
                                                .recorded = &mStats};
     std::optional<passes::VisibilityFrameTables> tables;
-    if (plan.path == passes::ShadingPath::Visibility && !(tables = mVisibility.tables(visibility))) {
+    if (plan.path == options::ShadingPath::Visibility && !(tables = mVisibility.tables(visibility))) {
         facts.shadingListsFit = false;
         plan = planFrame(facts);
     }
@@ -284,7 +284,7 @@ passes::DrawTarget FrameBuilder::addDraws(Frame& frame, const FramePlan& plan, c
                                           const VisibilityPath::FrameDesc& desc, const passes::VisibilityFrameTables* tables,
                                           const scene::ViewSetup& view, const passes::IblInputs* ibl) {
     RenderGraph& graph = *frame.graph;
-    if (plan.path == passes::ShadingPath::Visibility && !tables)
+    if (plan.path == options::ShadingPath::Visibility && !tables)
         throw std::logic_error("FrameBuilder: a visibility frame without its visibility tables");
     if (plan.sky != SkyPlacement::None && !ibl) throw std::logic_error("FrameBuilder: a sky without an environment");
     const auto addSkybox = [&](const passes::DrawTarget& over) {
@@ -292,7 +292,7 @@ passes::DrawTarget FrameBuilder::addDraws(Frame& frame, const FramePlan& plan, c
     };
     const bool skyboxPass = plan.sky == SkyPlacement::SkyboxPass;
     passes::DrawTarget drawn;
-    if (plan.path == passes::ShadingPath::Visibility) {
+    if (plan.path == options::ShadingPath::Visibility) {
         drawn = mVisibility.add(frame, desc, *tables, frame.notes);
         // The image is resolved already: the sky goes under it without a depth test.
         if (skyboxPass) {
@@ -353,7 +353,7 @@ void FrameBuilder::addNotes(Frame& frame, const RenderSettings& settings, const 
     const passes::ForwardPass::BuildCounts builds = mForward.buildCounts();
     notes.push_back("forward pipelines: " + std::to_string(builds.built) + " built, " + std::to_string(builds.queued) +
                     " queued ahead of use (" + std::to_string(builds.queuedFinished) + " of them done) (--precompile " +
-                    passes::precompileName(settings.precompile) + ")");
+                    options::precompileName(settings.precompile) + ")");
     notes.push_back("pipeline cache: " + mContext.pipelineCacheFile().status());
     for (const std::string& line : mScene.iblMaps().explanation()) notes.push_back(line);
     for (std::string& line : explainPasses(plan, facts, mScene.sheenLut().computed())) notes.push_back(std::move(line));

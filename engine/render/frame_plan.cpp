@@ -5,7 +5,7 @@
 
 namespace candela {
 
-using passes::ShadingPath;
+using options::ShadingPath;
 
 namespace {
 
@@ -29,7 +29,7 @@ bool FramePlan::leavesOut(PlannedPart part) const {
 FramePlan planFrame(const FrameFacts& facts) {
     FramePlan plan;
     std::tie(plan.path, plan.pathReason) = choosePath(facts);
-    const bool debugView = facts.debugView != passes::DebugView::None;
+    const bool debugView = facts.debugView != options::DebugView::None;
 
     if (facts.deformable) {
         if (facts.deformedDraws == 0) {

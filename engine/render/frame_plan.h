@@ -7,8 +7,8 @@
 // fields (tests/unit/render/frame_plan_test.cpp). FrameBuilder gathers the facts, declares the plan's
 // passes and turns the plan into --explain lines (explain_plan.h).
 
-#include "passes/debug_view.h"
-#include "passes/shading_path.h"
+#include "options/debug_view.h"
+#include "options/shading_path.h"
 
 #include <cstdint>
 #include <string>
@@ -19,8 +19,8 @@ namespace candela {
 // What planFrame decides from.
 struct FrameFacts {
     // ---- The frame's settings.
-    passes::ShadingPath requestedPath = passes::ShadingPath::Auto;
-    passes::DebugView debugView = passes::DebugView::None;
+    options::ShadingPath requestedPath = options::ShadingPath::Auto;
+    options::DebugView debugView = options::DebugView::None;
     bool skyboxWanted = true;       // the environment is the background (IblLook::skybox)
     bool floatOutput = false;       // the HDR image is the output (EXR/PFM)
     bool groundTruth = false;       // ibl-report's ground truth (reference samples > 0, with an environment)
@@ -37,7 +37,7 @@ struct FrameFacts {
     bool blendedDraws = false;
     bool shadingListsFit = true;    // the visibility path's shading lists fit a tile's mask
     // ---- The device's.
-    passes::ShadingPath devicePath = passes::ShadingPath::Forward;  // what `auto` takes
+    options::ShadingPath devicePath = options::ShadingPath::Forward;  // what `auto` takes
     std::string devicePathReason;   // why (the device's words)
     std::string visibilityUnsupported;  // why the device or the scene cannot take the visibility path ("": it can)
     bool integerMsaaSampling = true;    // the device samples integer images at `samples` samples
@@ -89,7 +89,7 @@ struct LeftOut {
 };
 
 struct FramePlan {
-    passes::ShadingPath path = passes::ShadingPath::Forward;  // Forward or Visibility
+    options::ShadingPath path = options::ShadingPath::Forward;  // Forward or Visibility
     PathReason pathReason = PathReason::Requested;
     DeformPlan deform = DeformPlan::Static;
     SkyPlacement sky = SkyPlacement::None;

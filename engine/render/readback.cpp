@@ -1,6 +1,6 @@
 #include "render/readback.h"
 
-#include "passes/readback_pass.h"
+#include "passes/post/readback_pass.h"
 #include "vk/swapchain_choices.h"
 
 #include <glm/gtc/packing.hpp>

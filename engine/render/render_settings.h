@@ -6,12 +6,12 @@
 
 #include "assets/environment.h"
 #include "ibl/ibl_settings.h"
-#include "passes/debug_view.h"
-#include "passes/draw_selection.h"
-#include "passes/shading_variant.h"
-#include "passes/precompile.h"
-#include "passes/shading_path.h"
-#include "passes/tonemap_pass.h"
+#include "options/debug_view.h"
+#include "options/draw_selection.h"
+#include "passes/drawing/shading_variant.h"
+#include "options/precompile.h"
+#include "options/shading_path.h"
+#include "passes/post/tonemap_pass.h"
 #include "pose/scene_pose.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
@@ -47,10 +47,10 @@ struct RenderSettings {
     // null, or a pose that animates nothing, draws the loaded rest pose with the static draw data.
     const scene::ScenePose* pose = nullptr;
     CameraSettings camera;
-    passes::ShadingModel shading = passes::ShadingModel::Pbr;
+    options::ShadingModel shading = options::ShadingModel::Pbr;
     // A debug view of the forward pass instead of the shaded image (a variant of the frame graph:
-    // no skybox; data views are tonemapped linearly at exposure 0, see passes::DebugView).
-    passes::DebugView debugView = passes::DebugView::None;
+    // no skybox; data views are tonemapped linearly at exposure 0, see options::DebugView).
+    options::DebugView debugView = options::DebugView::None;
     // A scene without punctual lights gets a default key and fill light (directional), so that
     // it is visible before image-based lighting exists; false leaves it unlit.
     bool defaultLights = true;
@@ -59,16 +59,16 @@ struct RenderSettings {
     bool sceneLights = true;
     passes::TonemapSettings tonemap;
     // Frustum culling and the level-of-detail error (--lod-error, --cull).
-    passes::DrawSelection drawSelection;
+    options::DrawSelection drawSelection;
     // Specular anti-aliasing (--specular-aa).
-    passes::ShadingOptions shadingOptions;
+    options::ShadingOptions shadingOptions;
     // MSAA sample count of the draw targets (--msaa: 1, 2, 4 or 8); nullopt: the device default
     // (vk::chooseMsaa). Clamped to what the device supports, with a warning.
     std::optional<uint32_t> msaa;
     // When the forward pass compiles the variants the frame needs (--precompile; docs/device-layer.md).
-    passes::Precompile precompile = passes::Precompile::Frame;
+    options::Precompile precompile = options::Precompile::Frame;
     // How opaque and masked surfaces are shaded (--shading-path; docs/shading-paths.md).
-    passes::ShadingPath shadingPath = passes::ShadingPath::Auto;
+    options::ShadingPath shadingPath = options::ShadingPath::Auto;
     // Image-based lighting: the environment (null: none; read during the call only, hashed when the
     // pointer or the quality changes), what to precompute and how to look it up.
     const scene::Environment* environment = nullptr;

@@ -1,7 +1,7 @@
 #include "render/renderer.h"
 
 #include "core/errors.h"
-#include "passes/readback_pass.h"
+#include "passes/post/readback_pass.h"
 #include "vk/context.h"
 
 #include <chrono>

@@ -129,7 +129,7 @@ public:
     // Gives the ground truth (RenderSettings::ibl.referenceSamples > 0) its environment; see
     // ibl::IblMaps::setReferenceEnvironment. Waits for the GPU.
     void setReferenceEnvironment(const scene::Environment& environment);
-    // Runs the calibration pass alone at width × height (see passes/calibration_pass.h).
+    // Runs the calibration pass alone at width × height (see passes/diagnostics/calibration_pass.h).
     FrameTiming renderCalibration(uint32_t width, uint32_t height);
 
     // The view the settings select for `scene` at `aspect` (width / height). With an animated

@@ -1,7 +1,7 @@
 #include "render/scene_state.h"
 
 #include "core/log.h"
-#include "passes/scene_blocks.h"
+#include "passes/drawing/scene_blocks.h"
 #include "vk/check.h"
 #include "vk/context.h"
 

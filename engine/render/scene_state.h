@@ -11,7 +11,7 @@
 #include "ibl/ibl_settings.h"
 #include "ibl_maps/ibl_maps.h"
 #include "ibl_maps/sheen_lut.h"
-#include "passes/draw_list.h"
+#include "passes/drawing/draw_list.h"
 #include "pose/scene_pose.h"
 #include "render/frame_runner.h"
 #include "shader/parameter_registry.h"

@@ -24,14 +24,14 @@ void VisibilityPath::setScene(const scene::GpuScene& scene, const passes::Materi
     mShade.setScene(scene, keys, mTextureSets);
 }
 
-std::pair<passes::ShadingPath, std::string> defaultShadingPath(const vk::Context& context) {
+std::pair<options::ShadingPath, std::string> defaultShadingPath(const vk::Context& context) {
     if (!context.choices().visibilityUnsupported.empty())
-        return {passes::ShadingPath::Forward, "the device's default: the visibility path needs " + context.choices().visibilityUnsupported};
+        return {options::ShadingPath::Forward, "the device's default: the visibility path needs " + context.choices().visibilityUnsupported};
     if (context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU)
-        return {passes::ShadingPath::Forward,
+        return {options::ShadingPath::Forward,
                 "the device's default: on lavapipe the visibility path measured faster on the sphere grids, slower on "
                 "DamagedHelmet and at 4 samples (docs/shading-paths.md)"};
-    return {passes::ShadingPath::Forward, "the device's default: the visibility path is not yet measured on GPUs"};
+    return {options::ShadingPath::Forward, "the device's default: the visibility path is not yet measured on GPUs"};
 }
 
 bool VisibilityPath::samplesIntegerImages(uint32_t samples) const {

@@ -5,11 +5,11 @@
 // and whether a frame can take it. FrameBuilder adds it instead of the forward pass's opaque draws;
 // the blended and transmissive draws follow on the forward pass either way.
 
-#include "passes/shading_path.h"
-#include "passes/visibility_classify_pass.h"
-#include "passes/visibility_texture_sets.h"
-#include "passes/visibility_pass.h"
-#include "passes/visibility_shade_pass.h"
+#include "options/shading_path.h"
+#include "passes/visibility/visibility_classify_pass.h"
+#include "passes/visibility/visibility_texture_sets.h"
+#include "passes/visibility/visibility_pass.h"
+#include "passes/visibility/visibility_shade_pass.h"
 #include "render/frame.h"
 
 #include <optional>
@@ -19,7 +19,7 @@ namespace candela {
 
 // The path `--shading-path auto` takes on `context`'s device, and why (for `candela info` and
 // --explain; docs/shading-paths.md, "Choosing the default").
-std::pair<passes::ShadingPath, std::string> defaultShadingPath(const vk::Context& context);
+std::pair<options::ShadingPath, std::string> defaultShadingPath(const vk::Context& context);
 
 class VisibilityPath {
 public:

@@ -9,12 +9,12 @@
 namespace candela::ui {
 
 void drawDebugViewPanel(Viewer& viewer) {
-    passes::DebugView& view = viewer.settings().debugView;
-    if (ImGui::RadioButton("none (the image)", view == passes::DebugView::None)) view = passes::DebugView::None;
+    options::DebugView& view = viewer.settings().debugView;
+    if (ImGui::RadioButton("none (the image)", view == options::DebugView::None)) view = options::DebugView::None;
     int column = 0;
-    for (passes::DebugView candidate : passes::allDebugViews()) {
+    for (options::DebugView candidate : options::allDebugViews()) {
         if (column++ % 2 == 1) ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
-        if (ImGui::RadioButton(passes::debugViewName(candidate), view == candidate)) view = candidate;
+        if (ImGui::RadioButton(options::debugViewName(candidate), view == candidate)) view = candidate;
     }
     textDisabledWrapped("d, g, f: toward the first light; data shown as value x 255");
 }

@@ -14,7 +14,7 @@
 #include "ui/ibl_report_table.h"
 #include "ui/orbit_controls.h"
 #include "ui/panel_layout.h"
-#include "ui/viewer_panels.h"
+#include "options/viewer_panels.h"
 #include "ui/window.h"
 #include "vk/context.h"
 
@@ -49,7 +49,7 @@ struct ViewerDesc {
     // An ibl-report CSV shown in the environment panel before the compiled-in ones (empty: none).
     std::filesystem::path iblReport;
     // The panels open at start.
-    std::set<Panel> openPanels = kPanelsOpenByDefault;
+    std::set<options::Panel> openPanels = options::kPanelsOpenByDefault;
 };
 
 // What the viewer shows at start: the scene and environment (owned by the viewer from now on) and
@@ -141,7 +141,7 @@ public:
     // Wall time between consecutive rendered frames, every frame so far (frames in flight: the
     // throughput, not one frame's latency).
     const std::vector<double>& frameTimesMs() const { return mFrameTimes; }
-    // Runs the calibration pass (passes/calibration_pass.h) at the window's size and returns its
+    // Runs the calibration pass (passes/diagnostics/calibration_pass.h) at the window's size and returns its
     // submit+wait time: the yardstick for the frame times on this machine. Waits for the GPU.
     double calibrationMs();
     // Hot reload: the watcher (its errors are shown in the UI) and the time from the last reloaded
@@ -190,7 +190,7 @@ private:
     float mFontSize = 13.0f;    // the UI font's size in pixels (Dear ImGui's default font until the first UI frame)
     std::vector<UiWindow> mUiWindows;
     bool mUserIblReport = false;  // --ibl-report gave the first table
-    std::set<Panel> mOpenPanels;
+    std::set<options::Panel> mOpenPanels;
     bool mRecreate = false;
     bool mSimulatedMinimized = false;
     scene::Scene mScene;

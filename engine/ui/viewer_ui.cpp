@@ -19,18 +19,18 @@ namespace candela::ui {
 namespace {
 
 struct PanelEntry {
-    Panel key;
+    options::Panel key;
     const char* title;
     void (*draw)(Viewer&);
 };
 
-constexpr PanelEntry kLeftPanels[] = {{Panel::Graph, "Render graph", drawGraphPanel},
-                                      {Panel::Parameters, "Shader parameters", drawParameterPanel},
-                                      {Panel::Materials, "Materials", drawMaterialPanel}};
-constexpr PanelEntry kRightPanels[] = {{Panel::Environment, "Environment / IBL", drawEnvironmentPanel},
-                                       {Panel::Camera, "Camera", drawCameraPanel},
-                                       {Panel::Animation, "Animation", drawAnimationPanel},
-                                       {Panel::Debug, "Debug view", drawDebugViewPanel}};
+constexpr PanelEntry kLeftPanels[] = {{options::Panel::Graph, "Render graph", drawGraphPanel},
+                                      {options::Panel::Parameters, "Shader parameters", drawParameterPanel},
+                                      {options::Panel::Materials, "Materials", drawMaterialPanel}};
+constexpr PanelEntry kRightPanels[] = {{options::Panel::Environment, "Environment / IBL", drawEnvironmentPanel},
+                                       {options::Panel::Camera, "Camera", drawCameraPanel},
+                                       {options::Panel::Animation, "Animation", drawAnimationPanel},
+                                       {options::Panel::Debug, "Debug view", drawDebugViewPanel}};
 
 constexpr ImGuiWindowFlags kDocked = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                      ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoSavedSettings;
@@ -142,7 +142,7 @@ void Viewer::drawUi() {
     ImGui::SetNextWindowBgAlpha(kBackgroundAlpha);
     ImGui::Begin("Frame stats", nullptr, kDocked | ImGuiWindowFlags_AlwaysAutoResize);
     ImGui::PushItemWidth(-kLabelEms * mFontSize);
-    ImGui::SetNextItemOpen(mOpenPanels.count(Panel::Stats) > 0, ImGuiCond_Once);
+    ImGui::SetNextItemOpen(mOpenPanels.count(options::Panel::Stats) > 0, ImGuiCond_Once);
     if (ImGui::CollapsingHeader("Frame stats")) drawStatsPanel(*this);
     ImGui::PopItemWidth();
     const float statsHeight = ImGui::GetWindowHeight();

@@ -216,7 +216,7 @@ void Context::pickPhysicalDevice(const ContextDesc& desc) {
     vkGetPhysicalDeviceProperties(mPhysicalDevice, &mProperties);
     mCaps = std::move(caps[choice.index]);
     mChoices = chooseForDevice(mCaps);
-    mReport.profile = deviceProfileName(mProfile);
+    mReport.profile = options::deviceProfileName(mProfile);
     mReport.name = mProperties.deviceName;
     mReport.type = deviceTypeName(mProperties.deviceType);
     mReport.reason = choice.reason;

@@ -51,7 +51,7 @@ struct ContextDesc {
     uint64_t deviceMemoryBudget = 0;
     // Narrows Candela's view of the device to a profile (--device-profile); unset: the profile
     // CANDELA_DEVICE_PROFILE names, else Native.
-    std::optional<DeviceProfile> profile;
+    std::optional<options::DeviceProfile> profile;
     // Set when frames will be presented to a window: the graphics queue must be able to present,
     // devices without VK_KHR_swapchain are unsuitable, and the extension is enabled.
     PresentSupportFn presentSupport;
@@ -103,7 +103,7 @@ public:
     // What Candela may use of the device, narrowed by the device profile. Every device-dependent
     // choice reads this rather than the driver.
     const DeviceCaps& caps() const { return mCaps; }
-    DeviceProfile profile() const { return mProfile; }
+    options::DeviceProfile profile() const { return mProfile; }
     // The formats and fallbacks chosen from caps().
     const DeviceChoices& choices() const { return mChoices; }
     MemoryAllocator& allocator() { return *mAllocator; }
@@ -175,7 +175,7 @@ private:
     bool mPrintValidation = true;
     bool mDebugUtils = false;
     std::function<void(const ValidationMessage&)> mOnValidation;
-    DeviceProfile mProfile = DeviceProfile::Native;
+    options::DeviceProfile mProfile = options::DeviceProfile::Native;
     std::atomic<uint32_t> mValidationCount{0};
     mutable std::mutex mValidationMutex;
     std::vector<ValidationMessage> mValidationMessages;

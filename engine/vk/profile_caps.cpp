@@ -185,11 +185,11 @@ constexpr ProfileData kApple{
     .formats = kAppleFormats,
     .source = "gpuinfo report of an Apple M1 (MoltenVK 1.2.7, macOS 14.3) in KhronosGroup/Vulkan-Profiles"};
 
-const ProfileData* dataOf(DeviceProfile profile) {
+const ProfileData* dataOf(options::DeviceProfile profile) {
     switch (profile) {
-        case DeviceProfile::Minimum: return &kMinimum;
-        case DeviceProfile::Desktop: return &kDesktop;
-        case DeviceProfile::Apple: return &kApple;
+        case options::DeviceProfile::Minimum: return &kMinimum;
+        case options::DeviceProfile::Desktop: return &kDesktop;
+        case options::DeviceProfile::Apple: return &kApple;
         default: return nullptr;
     }
 }
@@ -201,20 +201,20 @@ void lower(T& value, T ceiling) {
 
 }  // namespace
 
-const char* deviceProfileSource(DeviceProfile profile) {
+const char* deviceProfileSource(options::DeviceProfile profile) {
     const ProfileData* data = dataOf(profile);
     return data ? data->source : "the device as it reports itself";
 }
 
-DeviceProfile deviceProfileFromEnvironment() {
+options::DeviceProfile deviceProfileFromEnvironment() {
     const char* value = std::getenv("CANDELA_DEVICE_PROFILE");
-    if (!value || !*value) return DeviceProfile::Native;
-    if (const std::optional<DeviceProfile> p = parseDeviceProfile(value)) return *p;
+    if (!value || !*value) return options::DeviceProfile::Native;
+    if (const std::optional<options::DeviceProfile> p = options::parseDeviceProfile(value)) return *p;
     throw UserError(std::string("CANDELA_DEVICE_PROFILE=") + value + ": no such device profile (profiles: " +
-                    deviceProfileList() + ")");
+                    options::deviceProfileList() + ")");
 }
 
-DeviceCaps narrowCaps(const DeviceCaps& device, DeviceProfile profile) {
+DeviceCaps narrowCaps(const DeviceCaps& device, options::DeviceProfile profile) {
     const ProfileData* data = dataOf(profile);
     if (!data) return device;
     DeviceCaps caps = device;

@@ -1,5 +1,5 @@
 #pragma once
-// What a device profile (vk/device_profile.h) does to a device's capabilities: a ceiling on what
+// What a device profile (options/device_profile.h) does to a device's capabilities: a ceiling on what
 // Candela sees, so lavapipe (generous limits, every format filtered, descriptor pools never full)
 // can play a smaller GPU. narrowCaps() takes the minimum of each limit and keeps a feature, an
 // extension, a memory type or a format feature only when both the device and the profile have it.
@@ -9,18 +9,18 @@
 // docs/device-layer.md.
 
 #include "vk/device_caps.h"
-#include "vk/device_profile.h"
+#include "options/device_profile.h"
 
 namespace candela::vk {
 
 // Where the profile's figures come from (one line).
-const char* deviceProfileSource(DeviceProfile profile);
+const char* deviceProfileSource(options::DeviceProfile profile);
 
 // The profile named by CANDELA_DEVICE_PROFILE (Native when unset or empty). Throws UserError
 // naming the variable when it names no profile.
-DeviceProfile deviceProfileFromEnvironment();
+options::DeviceProfile deviceProfileFromEnvironment();
 
 // `device` seen through `profile`.
-DeviceCaps narrowCaps(const DeviceCaps& device, DeviceProfile profile);
+DeviceCaps narrowCaps(const DeviceCaps& device, options::DeviceProfile profile);
 
 }  // namespace candela::vk

@@ -3,9 +3,9 @@
 #ifndef CANDELA_FORWARD_DEBUG_VIEWS_GLSL
 #define CANDELA_FORWARD_DEBUG_VIEWS_GLSL
 
-#include "forward/lighting.glsl"
-#include "forward/resources.glsl"
-#include "forward/surface.glsl"
+#include "shading/lighting.glsl"
+#include "shading/resources.glsl"
+#include "shading/surface.glsl"
 #include "shared/tonemap.h"
 
 // Data shown as its value: the debug variants are paired with the linear tonemap at exposure 0,

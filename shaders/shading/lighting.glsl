@@ -1,4 +1,4 @@
-// Lighting of the forward programs: a Surface (forward/surface.glsl) lit by punctual lights and by
+// Lighting of the forward programs: a Surface (shading/surface.glsl) lit by punctual lights and by
 // the environment, Surface → radiance toward the viewer, per lobe (SurfaceLight). The BRDFs are
 // shared/brdf.h's and, in the layered program, shared/brdf_layers.h's; the split sum is
 // shared/ibl.h's. Nothing here reads a stage input: what the fragment stage alone knows (its pixel)
@@ -6,8 +6,8 @@
 #ifndef CANDELA_FORWARD_LIGHTING_GLSL
 #define CANDELA_FORWARD_LIGHTING_GLSL
 
-#include "forward/resources.glsl"
-#include "forward/surface.glsl"
+#include "shading/resources.glsl"
+#include "shading/surface.glsl"
 #include "shared/ibl.h"
 
 // Radiance toward the viewer, per lobe: the material's diffuse and specular reflection, its

@@ -1,5 +1,5 @@
 // Material evaluation of the forward programs: the glTF material (and, in the layered program,
-// each KHR_materials_* layer) at one surface point, SurfaceInputs → Surface (forward/surface.glsl).
+// each KHR_materials_* layer) at one surface point, SurfaceInputs → Surface (shading/surface.glsl).
 // Nothing here reads a stage input or a derivative: the caller passes them in SurfaceInputs, and
 // defines, before including this file, how a material texture is read —
 //     CANDELA_CORE_TEXTURE(inputs, field, slot)   core texture slot `slot` (CANDELA_TEX_*), whose
@@ -11,8 +11,8 @@
 #ifndef CANDELA_FORWARD_MATERIAL_EVAL_GLSL
 #define CANDELA_FORWARD_MATERIAL_EVAL_GLSL
 
-#include "forward/resources.glsl"
-#include "forward/surface.glsl"
+#include "shading/resources.glsl"
+#include "shading/surface.glsl"
 
 // The interpolated normal flipped for back faces of double-sided materials (or, where it
 // degenerates, the face normal on the viewer's side).

@@ -1,12 +1,12 @@
 // The ground truth of `candela ibl-report`: the reflectance equation integrated per pixel against
 // the environment itself, in place of the split sum. Included only by the report's own program
 // (forward_reference.frag, core materials: it integrates the core BRDF and knows no layers);
-// its inputs, set 2 bindings 4 and 5, are declared in forward/resources.glsl.
+// its inputs, set 2 bindings 4 and 5, are declared in shading/resources.glsl.
 #ifndef CANDELA_FORWARD_REFERENCE_IBL_GLSL
 #define CANDELA_FORWARD_REFERENCE_IBL_GLSL
 
-#include "forward/resources.glsl"
-#include "forward/surface.glsl"
+#include "shading/resources.glsl"
+#include "shading/surface.glsl"
 #include "shared/environment.h"
 #include "shared/ibl.h"
 

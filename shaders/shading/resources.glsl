@@ -1,7 +1,7 @@
 // What the forward programs read besides their stage inputs: specialization constants, descriptor
 // sets 0–3 and push constants. Included by the fragment stage (forward_fragment.glsl) and, through
-// it, by the material evaluation and lighting it calls (forward/material_eval.glsl,
-// forward/lighting.glsl) — a compute shader that calls those includes this file too.
+// it, by the material evaluation and lighting it calls (shading/material_eval.glsl,
+// shading/lighting.glsl) — a compute shader that calls those includes this file too.
 #ifndef CANDELA_FORWARD_RESOURCES_GLSL
 #define CANDELA_FORWARD_RESOURCES_GLSL
 
@@ -17,7 +17,7 @@ layout(constant_id = CANDELA_SPEC_SHADING_MODEL) const uint kShadingModel = CAND
 layout(constant_id = CANDELA_SPEC_IBL) const bool kIbl = false;
 layout(constant_id = CANDELA_SPEC_IRRADIANCE_SH) const bool kIrradianceSh = true;  // else the irradiance cube
 layout(constant_id = CANDELA_SPEC_MULTISCATTER) const bool kMultiscatter = true;
-// CANDELA_SPEC_REFERENCE_SAMPLES is the ground truth's (forward/reference_ibl.glsl: its program only).
+// CANDELA_SPEC_REFERENCE_SAMPLES is the ground truth's (shading/reference_ibl.glsl: its program only).
 // A debug view (CANDELA_DEBUG_*) instead of the shaded colour.
 layout(constant_id = CANDELA_SPEC_DEBUG_VIEW) const uint kDebugView = CANDELA_DEBUG_NONE;
 #ifdef CANDELA_MATERIAL_LAYERS
@@ -69,7 +69,7 @@ layout(std140, set = 2, binding = 3) uniform IrradianceSh {
     vec4 sh[9];  // convolved, /π: irradiance(n)/π = Σ sh[i] · Y_i(n)
 };
 #ifdef CANDELA_IBL_REFERENCE
-// The ground truth's inputs (read by forward/reference_ibl.glsl), declared in its program only (a
+// The ground truth's inputs (read by shading/reference_ibl.glsl), declared in its program only (a
 // frame draws with it or not at all): other programs keep the storage buffer and sampler for what
 // they read, within the per-stage limits of small devices (4 storage buffers, 16 samplers).
 // The environment as an equirectangular map (nearest texels; alpha 0 marks the brightest texels,

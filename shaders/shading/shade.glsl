@@ -1,15 +1,15 @@
-// The shading both paths share: a surface point's material evaluated (forward/material_eval.glsl),
-// lit (forward/lighting.glsl) and its lobes and layers combined into premultiplied radiance and
+// The shading both paths share: a surface point's material evaluated (shading/material_eval.glsl),
+// lit (shading/lighting.glsl) and its lobes and layers combined into premultiplied radiance and
 // coverage. Called by the forward fragment stage (forward_fragment.glsl) and by the visibility
 // path's compute shading (visibility/shade.glsl), so both paths run the same code.
 #ifndef CANDELA_FORWARD_SHADE_GLSL
 #define CANDELA_FORWARD_SHADE_GLSL
 
-#include "forward/debug_views.glsl"
-#include "forward/lighting.glsl"
-#include "forward/material_eval.glsl"
+#include "shading/debug_views.glsl"
+#include "shading/lighting.glsl"
+#include "shading/material_eval.glsl"
 #ifdef CANDELA_IBL_REFERENCE
-#include "forward/reference_ibl.glsl"
+#include "shading/reference_ibl.glsl"
 #endif
 
 // The premultiplied radiance (rgb) and coverage (a) of the surface at `inputs` with base colour

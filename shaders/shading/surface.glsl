@@ -1,6 +1,6 @@
-// The two ends of material evaluation (forward/material_eval.glsl): SurfaceInputs, what a material
+// The two ends of material evaluation (shading/material_eval.glsl): SurfaceInputs, what a material
 // is evaluated from at one surface point, and Surface, everything the evaluation produces and the
-// lighting (forward/lighting.glsl) reads. The fragment stage fills SurfaceInputs from its
+// lighting (shading/lighting.glsl) reads. The fragment stage fills SurfaceInputs from its
 // interpolants and derivatives (forward_fragment.glsl), the visibility path's compute shading from
 // the triangle it fetches (visibility/shade.glsl).
 #ifndef CANDELA_FORWARD_SURFACE_GLSL

@@ -9,11 +9,11 @@
 //   CANDELA_DEBUG_VIEWS(X)     the debug views, the values of kDebugView, X(NAME, Name, value, name, light)
 //
 // A texture slot's `field` names scene::Material's TextureRef and, with "Texture" appended, the
-// GLSL sampler at `binding` (forward/resources.glsl); `normalMap`: it holds a tangent-space normal
+// GLSL sampler at `binding` (shading/resources.glsl); `normalMap`: it holds a tangent-space normal
 // map (a flat normal when absent, its mips filtered as normals). From the tables come, besides:
 // scene::Material's texture fields and kCoreTextureSlots / kLayerTextureSlots (scene/scene.h, which
 // scene::GpuScene's uploads and ForwardPass's descriptor writes walk), scene::MaterialLayer and
-// scene::layerNames, passes::DebugView and its names (passes/debug_view.h), and the constants below.
+// scene::layerNames, passes::DebugView and its names (options/debug_view.h), and the constants below.
 #ifndef CANDELA_SHARED_FORWARD_TABLES_H
 #define CANDELA_SHARED_FORWARD_TABLES_H
 
@@ -61,7 +61,7 @@
     X(DISPERSION, Dispersion, 512u, "dispersion") /* per-channel refraction through the volume (KHR_materials_dispersion > 0 under transmission and a volume) */
 
 // X(NAME, Name, value, name, light): what the forward pass writes instead of the shaded colour
-// (passes/debug_view.h); `name` is the command line's and the viewer's, `light`: the view shows
+// (options/debug_view.h); `name` is the command line's and the viewer's, `light`: the view shows
 // light (tonemapped like the image) rather than data (shown as its value).
 #define CANDELA_DEBUG_VIEWS(X)                                                                                   \
     X(NONE, None, 0u, "none", false)                                                                             \

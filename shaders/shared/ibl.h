@@ -39,7 +39,7 @@ CANDELA_FN vec3 iblClampLuminance(vec3 radiance, float threshold) {
     return y > threshold ? radiance * (threshold / y) : radiance;
 }
 
-// Entries of a filter lobe table (engine/passes/ibl_sample_tables.h lobeTable): entry j holds the
+// Entries of a filter lobe table (engine/passes/ibl/ibl_sample_tables.h lobeTable): entry j holds the
 // lobe's normalised weight per steradian at θ = (π/2)·(j / (size − 1))², θ the angle between the
 // texel's direction and the light's; squared spacing resolves the narrow lobes of low roughness.
 #define CANDELA_IBL_LOBE_TABLE_SIZE 1024u
@@ -66,7 +66,7 @@ struct IblDownsamplePush {
 };
 
 // ibl_filter_cube.comp (the prefilter: one dispatch per mip; the irradiance cube): sample table entries
-// [firstSample, firstSample + sampleCount) of engine/passes/ibl_sample_tables.h.
+// [firstSample, firstSample + sampleCount) of engine/passes/ibl/ibl_sample_tables.h.
 struct IblFilterPush {
     uint faceSize;        // of the mip written
     uint firstSample;

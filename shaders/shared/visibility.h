@@ -11,7 +11,7 @@ CANDELA_NAMESPACE_BEGIN
 // specialization constants CANDELA_SPEC_TILE_X and _Y) are the unit of classification
 // and of shading (one workgroup per listed tile). A CPU device runs a workgroup's invocations as
 // SIMD rows in which masked-off lanes still cost, so it takes tiles of one row: a tile's lanes are
-// its pixels and a tile list wastes few (passes/visibility_frame.h).
+// its pixels and a tile list wastes few (passes/visibility/visibility_frame.h).
 // A shading list is what one compute dispatch shades: the pixels of one shading variant whose
 // materials share one set of textures (bound per dispatch). A tile records the lists its pixels
 // need as bits of CANDELA_VISIBILITY_MAX_WORDS words at most.

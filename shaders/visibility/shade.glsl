@@ -6,9 +6,9 @@
 // It fetches the triangle (the level of detail's indices, the deformed vertices of skinned and
 // morphed draws, the instance's transform), computes perspective-correct barycentrics and their
 // change over one pixel, interpolates the attributes, and calls the shading the forward fragment
-// stage calls (forward/shade.glsl) with textures sampled at explicit gradients.
+// stage calls (shading/shade.glsl) with textures sampled at explicit gradients.
 #define CANDELA_VISIBILITY_SHADING
-#include "forward/resources.glsl"
+#include "shading/resources.glsl"
 #include "shared/skin_morph.h"
 #include "shared/visibility.h"
 
@@ -56,7 +56,7 @@ layout(std430, set = 4, binding = 7) readonly buffer Frame {
     VisibilityFrame frame;
 };
 
-// Material textures at the gradients compute shading derived (forward/material_eval.glsl reads
+// Material textures at the gradients compute shading derived (shading/material_eval.glsl reads
 // them through these). The dispatch's material set (1) is bound uniformly: every pixel it shades
 // has the same textures.
 #define CANDELA_CORE_TEXTURE(inputs, field, slot)                                                                  \
@@ -68,7 +68,7 @@ layout(std430, set = 4, binding = 7) readonly buffer Frame {
          ? textureGrad(field##Texture, (inputs).layerUv[slot], (inputs).layerUvDx[slot], (inputs).layerUvDy[slot]) \
          : vec4(1.0f))
 
-#include "forward/shade.glsl"
+#include "shading/shade.glsl"
 
 // One vertex of the scene's layout.
 struct Vertex {

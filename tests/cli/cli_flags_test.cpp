@@ -203,27 +203,27 @@ TEST(CliFlags, ChoiceFlagsListExactlyWhatTheyAccept) {
 }
 
 TEST(CliFlags, EnumNamesRoundTrip) {
-    for (const auto& [op, name] : passes::kTonemapNames) {
+    for (const auto& [op, name] : options::kTonemapNames) {
         EXPECT_EQ(parseCommandLine({"render", "--tonemap", name}).render.tonemap, op);
-        EXPECT_STREQ(passes::tonemapName(op), name);
+        EXPECT_STREQ(options::tonemapName(op), name);
     }
-    for (const auto& [view, name] : passes::kDebugViewNames) {
+    for (const auto& [view, name] : options::kDebugViewNames) {
         EXPECT_EQ(parseCommandLine({"render", "--debug-view", name}).render.debugView, view);
-        EXPECT_STREQ(passes::debugViewName(view), name);
+        EXPECT_STREQ(options::debugViewName(view), name);
     }
     for (const auto& [mode, name] : ibl::kIrradianceModeNames) {
         EXPECT_EQ(parseCommandLine({"render", "--irradiance", name}).render.iblQuality.irradiance, mode);
         EXPECT_STREQ(ibl::irradianceModeName(mode), name);
     }
-    std::set<passes::ShadingModel> models;
-    for (const auto& [model, name] : passes::kShadingModelNames) {
+    std::set<options::ShadingModel> models;
+    for (const auto& [model, name] : options::kShadingModelNames) {
         EXPECT_EQ(parseCommandLine({"render", "--shading", name}).render.shading, model);
         EXPECT_TRUE(models.insert(model).second) << name;
-        EXPECT_STREQ(passes::shadingModelName(model), name);
+        EXPECT_STREQ(options::shadingModelName(model), name);
     }
-    for (const auto& [panel, name] : ui::kPanelNames)
-        EXPECT_EQ(parseCommandLine({"view", "--panels", name}).view.panels, std::set<ui::Panel>{panel});
-    EXPECT_EQ(parseCommandLine({"view"}).view.panels, ui::kPanelsOpenByDefault);
+    for (const auto& [panel, name] : options::kPanelNames)
+        EXPECT_EQ(parseCommandLine({"view", "--panels", name}).view.panels, std::set<options::Panel>{panel});
+    EXPECT_EQ(parseCommandLine({"view"}).view.panels, options::kPanelsOpenByDefault);
 }
 
 TEST(CliFlags, UnknownFlagsNameTheNearestOne) {
@@ -277,7 +277,7 @@ TEST(CliFlags, ResultsAreTyped) {
     EXPECT_EQ(parseCommandLine({"render", "--msaa", "8"}).render.msaa, 8u);
     EXPECT_EQ(parseCommandLine({"quality-report", "--msaa", "1,4"}).qualityReport.msaa, (std::vector<uint32_t>{1, 4}));
     EXPECT_EQ(parseCommandLine({"render", "--lod", "off"}).render.lodErrorPixels, 0.0f);
-    EXPECT_EQ(parseCommandLine({"render"}).render.lodErrorPixels, passes::DrawSelection::kDefaultLodErrorPixels);
+    EXPECT_EQ(parseCommandLine({"render"}).render.lodErrorPixels, options::DrawSelection::kDefaultLodErrorPixels);
     EXPECT_EQ(parseCommandLine({"ibl-report", "--env", "sky"}).iblReport.env.kind, EnvironmentChoice::Kind::Sky);
 }
 

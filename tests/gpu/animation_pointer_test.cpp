@@ -29,12 +29,12 @@ size_t differingPixels(const CapturedFrame& a, const CapturedFrame& b) {
 
 class AnimationPointerTest : public GpuTest {
 protected:
-    std::vector<passes::ShadingPath> paths() {
-        std::vector<passes::ShadingPath> out{passes::ShadingPath::Forward};
-        if (context().choices().visibilityUnsupported.empty()) out.push_back(passes::ShadingPath::Visibility);
+    std::vector<options::ShadingPath> paths() {
+        std::vector<options::ShadingPath> out{options::ShadingPath::Forward};
+        if (context().choices().visibilityUnsupported.empty()) out.push_back(options::ShadingPath::Visibility);
         return out;
     }
-    static RenderSettings settings(const scene::Scene& scene, const scene::ScenePose* pose, passes::ShadingPath path) {
+    static RenderSettings settings(const scene::Scene& scene, const scene::ScenePose* pose, options::ShadingPath path) {
         RenderSettings s{.width = kWidth, .height = kHeight, .scene = &scene, .pose = pose};
         s.shadingPath = path;
         return s;
@@ -66,7 +66,7 @@ protected:
         scene::ScenePose pose(grid, {0});
         scene::Scene frozen = grid;
         frozen.animations.clear();
-        for (passes::ShadingPath path : paths()) {
+        for (options::ShadingPath path : paths()) {
             Renderer animated(context()), still(context());
             std::vector<CapturedFrame> frames;
             for (double t : {0.0, 0.5, 1.0}) {
@@ -142,7 +142,7 @@ TEST_F(AnimationPointerTest, AHiddenNodeDrawsNothingAndItsLightLightsNothingOnBo
     for (scene::Light& l : shown.lights) l.hidden = false;
     scene::Scene animatedScene = visibilityScene(dir.path(), true, true);
     scene::ScenePose pose(animatedScene, {0});
-    for (passes::ShadingPath path : paths()) {
+    for (options::ShadingPath path : paths()) {
         const auto fixedView = [&](RenderSettings s) {
             // Framing would follow the bounds, which differ between the scenes.
             s.camera.orbit = glm::vec3(20.0f, 55.0f, 5.0f);

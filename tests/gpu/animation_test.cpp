@@ -6,7 +6,7 @@
 
 #include "graph/graph_export.h"
 #include "graph_runner.h"
-#include "passes/skin_morph_pass.h"
+#include "passes/deform/skin_morph_pass.h"
 #include "pose/skinning.h"
 #include "render/renderer.h"
 #include "assets/gltf_loader.h"

@@ -17,8 +17,8 @@
 #include "graph_runner.h"
 
 #include "../unit/brdf_reference.h"
-#include "passes/brdf_probe_pass.h"
-#include "passes/readback_pass.h"
+#include "passes/diagnostics/brdf_probe_pass.h"
+#include "passes/post/readback_pass.h"
 #include "shared/scene_data.h"
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Debug views of the forward pass (passes/debug_view.h) on the built-in sphere grid: data is shown
+// Debug views of the forward pass (options/debug_view.h) on the built-in sphere grid: data is shown
 // as its value, the lobes add up to the image, and the graph variant leaves out the skybox.
 #include "gpu_test.h"
 
@@ -19,7 +19,7 @@ constexpr uint32_t kWidth = 480, kHeight = 270;
 class DebugViewTest : public GpuTest {
 protected:
     // `scene`: the grid by default; another scene must keep the grid's draws (sphereCentre reads them).
-    CapturedFrame render(passes::DebugView view, bool floatOutput = false, const scene::Scene* scene = nullptr) {
+    CapturedFrame render(options::DebugView view, bool floatOutput = false, const scene::Scene* scene = nullptr) {
         RenderSettings settings{.width = kWidth, .height = kHeight, .floatOutput = floatOutput, .scene = scene ? scene : &mGrid};
         settings.debugView = view;
         return renderer().capture(settings);
@@ -46,8 +46,8 @@ protected:
 };
 
 TEST_F(DebugViewTest, MetallicAndRoughnessAreShownAsTheirValues) {
-    const CapturedFrame metallic = render(passes::DebugView::Metallic);
-    const CapturedFrame roughness = render(passes::DebugView::Roughness);
+    const CapturedFrame metallic = render(options::DebugView::Metallic);
+    const CapturedFrame roughness = render(options::DebugView::Roughness);
     for (int row = 0; row < 7; ++row)
         for (int column = 0; column < 7; ++column) {
             const scene::Material& m = mGrid.materials[mGrid.draws[size_t(row) * 7 + size_t(column)].material];
@@ -58,9 +58,9 @@ TEST_F(DebugViewTest, MetallicAndRoughnessAreShownAsTheirValues) {
 }
 
 TEST_F(DebugViewTest, NormalsFaceTheCameraAtSphereCentresAndBaseColourIsTheFactor) {
-    const CapturedFrame normals = render(passes::DebugView::GeometricNormal);
-    const CapturedFrame mapped = render(passes::DebugView::MappedNormal);  // no normal maps: the same
-    const CapturedFrame base = render(passes::DebugView::BaseColor);
+    const CapturedFrame normals = render(options::DebugView::GeometricNormal);
+    const CapturedFrame mapped = render(options::DebugView::MappedNormal);  // no normal maps: the same
+    const CapturedFrame base = render(options::DebugView::BaseColor);
     const scene::ViewSetup view = Renderer::resolveView(mGrid, {}, float(kWidth) / float(kHeight));
     const glm::ivec2 p = sphereCentre(3, 3);
     const glm::vec3 n = glm::normalize(view.eye - glm::vec3(0.0f));  // the middle sphere sits at the origin
@@ -75,9 +75,9 @@ TEST_F(DebugViewTest, NormalsFaceTheCameraAtSphereCentresAndBaseColourIsTheFacto
 }
 
 TEST_F(DebugViewTest, DiffuseAndSpecularAddUpToTheImage) {
-    const CapturedFrame image = render(passes::DebugView::None, true);
-    const CapturedFrame diffuse = render(passes::DebugView::Diffuse, true);
-    const CapturedFrame specular = render(passes::DebugView::Specular, true);
+    const CapturedFrame image = render(options::DebugView::None, true);
+    const CapturedFrame diffuse = render(options::DebugView::Diffuse, true);
+    const CapturedFrame specular = render(options::DebugView::Specular, true);
     size_t compared = 0;
     double worst = 0.0;
     for (size_t i = 0; i < image.rgba32f.size(); ++i) {
@@ -95,9 +95,9 @@ TEST_F(DebugViewTest, LayerLightsAddUpWithTheLobesAndTheCoatNormalIsShown) {
     // normal map of its own): the material's lobes beneath them plus the sheen's and the coat's
     // light make the image; the coat's normal is the unmapped one. Without layers, the layer views
     // are black.
-    const CapturedFrame bare = render(passes::DebugView::Clearcoat);
-    const CapturedFrame bareNormal = render(passes::DebugView::ClearcoatNormal);
-    const CapturedFrame bareSheen = render(passes::DebugView::Sheen);
+    const CapturedFrame bare = render(options::DebugView::Clearcoat);
+    const CapturedFrame bareNormal = render(options::DebugView::ClearcoatNormal);
+    const CapturedFrame bareSheen = render(options::DebugView::Sheen);
     for (int row = 0; row < 7; ++row)
         for (int column = 0; column < 7; ++column)
             for (int c = 0; c < 3; ++c) {
@@ -110,11 +110,11 @@ TEST_F(DebugViewTest, LayerLightsAddUpWithTheLobesAndTheCoatNormalIsShown) {
         m.clearcoatFactor = 1.0f, m.clearcoatRoughnessFactor = 0.2f;
         m.sheenColorFactor = glm::vec3(0.9f, 0.6f, 0.3f), m.sheenRoughnessFactor = 0.4f;
     }
-    const CapturedFrame image = render(passes::DebugView::None, true, &coated);
-    const CapturedFrame diffuse = render(passes::DebugView::Diffuse, true, &coated);
-    const CapturedFrame specular = render(passes::DebugView::Specular, true, &coated);
-    const CapturedFrame coat = render(passes::DebugView::Clearcoat, true, &coated);
-    const CapturedFrame sheen = render(passes::DebugView::Sheen, true, &coated);
+    const CapturedFrame image = render(options::DebugView::None, true, &coated);
+    const CapturedFrame diffuse = render(options::DebugView::Diffuse, true, &coated);
+    const CapturedFrame specular = render(options::DebugView::Specular, true, &coated);
+    const CapturedFrame coat = render(options::DebugView::Clearcoat, true, &coated);
+    const CapturedFrame sheen = render(options::DebugView::Sheen, true, &coated);
     double worst = 0.0, coatTotal = 0.0, sheenTotal = 0.0;
     for (size_t i = 0; i < image.rgba32f.size(); ++i) {
         if (i % 4 == 3) continue;
@@ -126,16 +126,16 @@ TEST_F(DebugViewTest, LayerLightsAddUpWithTheLobesAndTheCoatNormalIsShown) {
     EXPECT_GT(coatTotal, 0.0);
     EXPECT_GT(sheenTotal, 0.0);
     EXPECT_LT(worst, 6e-3);  // five half-float roundings
-    const CapturedFrame normals = render(passes::DebugView::GeometricNormal, false, &coated);
-    const CapturedFrame coatNormals = render(passes::DebugView::ClearcoatNormal, false, &coated);
+    const CapturedFrame normals = render(options::DebugView::GeometricNormal, false, &coated);
+    const CapturedFrame coatNormals = render(options::DebugView::ClearcoatNormal, false, &coated);
     const glm::ivec2 p = sphereCentre(3, 3);
     for (int c = 0; c < 3; ++c) EXPECT_EQ(pixel(coatNormals, p)[c], pixel(normals, p)[c]) << c;
 }
 
 TEST_F(DebugViewTest, GgxTermsStayInTheirRanges) {
-    const CapturedFrame d = render(passes::DebugView::D);
-    const CapturedFrame g = render(passes::DebugView::G);
-    const CapturedFrame f = render(passes::DebugView::F);
+    const CapturedFrame d = render(options::DebugView::D);
+    const CapturedFrame g = render(options::DebugView::G);
+    const CapturedFrame f = render(options::DebugView::F);
     // Dielectric, smooth: F at least F0 = 0.04 where the first light reaches; G close to 1 facing it.
     const glm::ivec2 p = sphereCentre(0, 0);
     EXPECT_GE(pixel(f, p)[0], uint8_t(0.04f * 255.0f) - 1);
@@ -151,7 +151,7 @@ TEST_F(DebugViewTest, IsAGraphVariantWithoutTheSkybox) {
     RenderSettings settings{.width = 64, .height = 36, .scene = &mGrid};
     settings.environment = &sky;
     settings.iblQuality.cubeSize = 64;
-    settings.debugView = passes::DebugView::Roughness;
+    settings.debugView = options::DebugView::Roughness;
     renderer().capture(settings);
     EXPECT_FALSE(renderer().lastGraph().findPass("skybox").has_value());
     const std::vector<std::string> lines = renderer().explain();
@@ -160,7 +160,7 @@ TEST_F(DebugViewTest, IsAGraphVariantWithoutTheSkybox) {
     EXPECT_NE(std::find(lines.begin(), lines.end(), "left out: skybox (debug view)"), lines.end());
     // Without the debug view the sky is back: composited by the tonemap, or by the skybox pass into
     // a float capture.
-    settings.debugView = passes::DebugView::None;
+    settings.debugView = options::DebugView::None;
     renderer().capture(settings);
     const std::vector<std::string> shaded = renderer().explain();
     EXPECT_NE(std::find(shaded.begin(), shaded.end(), "sky: composited under the image by the tonemap (no skybox pass)"),

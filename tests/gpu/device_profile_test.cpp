@@ -18,12 +18,12 @@ namespace {
 class MinimumProfileTest : public GpuTest {
 protected:
     void SetUp() override {
-        mContext = std::make_unique<vk::Context>(vk::ContextDesc{.validation = true, .profile = vk::DeviceProfile::Minimum});
+        mContext = std::make_unique<vk::Context>(vk::ContextDesc{.validation = true, .profile = options::DeviceProfile::Minimum});
     }
 };
 
 TEST_F(MinimumProfileTest, TheContextSeesTheProfile) {
-    EXPECT_EQ(context().profile(), vk::DeviceProfile::Minimum);
+    EXPECT_EQ(context().profile(), options::DeviceProfile::Minimum);
     EXPECT_EQ(context().report().profile, "minimum");
     EXPECT_EQ(context().caps().limits.maxPerStageDescriptorSamplers, 16u);
     EXPECT_EQ(context().caps().limits.maxImageDimension2D, 4096u);

@@ -59,11 +59,11 @@ constexpr double kMaxDifferingShare = 0.001;
 
 const GoldenCase kCases[] = {
     {"default_scene", ""},
-    // The default level-of-detail error (passes::DrawSelection::kDefaultLodErrorPixels): at this
+    // The default level-of-detail error (options::DrawSelection::kDefaultLodErrorPixels): at this
     // size the spheres are drawn at coarser tessellations and the helmet at a simplified level.
-    {"default_scene_lod", "", {0.0f, 90.0f, 0.0f}, "", 0.0f, "", 0.0, "", passes::DrawSelection::kDefaultLodErrorPixels},
+    {"default_scene_lod", "", {0.0f, 90.0f, 0.0f}, "", 0.0f, "", 0.0, "", options::DrawSelection::kDefaultLodErrorPixels},
     {"ibl_damaged_helmet_lod", "DamagedHelmet/glTF-Binary/DamagedHelmet.glb", {-30.0f, 80.0f, 0.0f}, "studio_small_03_1k.hdr",
-     0.0f, "", 0.0, "", passes::DrawSelection::kDefaultLodErrorPixels},
+     0.0f, "", 0.0, "", options::DrawSelection::kDefaultLodErrorPixels},
     {"damaged_helmet", "DamagedHelmet/glTF-Binary/DamagedHelmet.glb", {-30.0f, 80.0f, 0.0f}},
     {"metal_rough_spheres", "MetalRoughSpheresNoTextures/glTF/MetalRoughSpheresNoTextures.gltf"},
     {"normal_tangent", "NormalTangentTest/glTF/NormalTangentTest.gltf"},
@@ -164,7 +164,7 @@ std::pair<size_t, int> compare(const uint8_t* a, const uint8_t* b) {
 // The case rendered at kWidth × kHeight (RGBA8) on `shadingPath`, or nullopt when a shared
 // asset it needs is absent; `explain` (if given) receives the frame's --explain lines.
 std::optional<std::vector<uint8_t>> render(vk::Context& context, const GoldenCase& c,
-                                           passes::ShadingPath shadingPath = passes::ShadingPath::Auto,
+                                           options::ShadingPath shadingPath = options::ShadingPath::Auto,
                                            std::vector<std::string>* explain = nullptr) {
     scene::Scene scene;
     if (*c.model) {
@@ -249,8 +249,8 @@ TEST_P(GoldenTest, ShadingPathsAgree) {
     const GoldenCase& c = GetParam();
     if (!context().choices().visibilityUnsupported.empty()) GTEST_SKIP() << context().choices().visibilityUnsupported;
     std::vector<std::string> explain;
-    const auto forward = render(context(), c, passes::ShadingPath::Forward);
-    const auto visibility = render(context(), c, passes::ShadingPath::Visibility, &explain);
+    const auto forward = render(context(), c, options::ShadingPath::Forward);
+    const auto visibility = render(context(), c, options::ShadingPath::Visibility, &explain);
     if (!forward || !visibility) GTEST_SKIP() << "shared asset missing for " << c.name;
     EXPECT_TRUE(std::any_of(explain.begin(), explain.end(),
                             [](const std::string& l) { return l.starts_with("shading path: visibility"); }))

@@ -4,7 +4,7 @@
 // graph, realizes its transients, executes it in a frame slot and waits; read() returns the bytes.
 
 #include "executor/graph_executor.h"
-#include "passes/readback_pass.h"
+#include "passes/post/readback_pass.h"
 #include "vk/buffer.h"
 #include "vk/frame.h"
 

@@ -7,8 +7,8 @@
 
 #include "../unit/brdf_reference.h"
 #include "ibl_maps/sheen_lut.h"
-#include "passes/ibl_sheen_lut_pass.h"
-#include "passes/readback_pass.h"
+#include "passes/ibl/ibl_sheen_lut_pass.h"
+#include "passes/post/readback_pass.h"
 
 #include "assets/builtin_scenes.h"
 #include "assets/gltf_loader.h"
@@ -207,7 +207,7 @@ TEST_F(GpuTest, TransmissionExtremesStayFinite) {
     // (0.5, 0.8, 1) — lets no red or green through and keeps blue (a colour of 1 absorbs nothing);
     // sphere 1, a thin wall, lets some of every channel through (rough, of IOR 10: the BTDF's albedo,
     // (1 − f0 = 0.33) · A_t at roughness 1, is 0.01-0.1 over its pixels).
-    settings.debugView = passes::DebugView::Transmission;
+    settings.debugView = options::DebugView::Transmission;
     const CapturedFrame throughput = renderer.capture(settings);
     EXPECT_EQ(frameProblem(throughput), "");
     scene::Scene opaque = scene;
@@ -248,9 +248,9 @@ TEST_F(GpuTest, IridescenceExtremesStayFinite) {
     RenderSettings settings = furnaceSettings(scene, env);
     EXPECT_EQ(frameProblem(renderer.capture(settings)), "");
     EXPECT_TRUE(contains(renderer.explain(), "pays for layers: iridescence"));
-    settings.debugView = passes::DebugView::IridescenceThickness;
+    settings.debugView = options::DebugView::IridescenceThickness;
     EXPECT_EQ(frameProblem(renderer.capture(settings)), "");
-    settings.debugView = passes::DebugView::IridescenceFresnel;
+    settings.debugView = options::DebugView::IridescenceFresnel;
     const CapturedFrame fresnel = renderer.capture(settings);
     EXPECT_EQ(frameProblem(fresnel), "");
     const std::vector<ChannelRange> range = channelRange(furnacePixels(fresnel, scene, settings, spheres), spheres.size());

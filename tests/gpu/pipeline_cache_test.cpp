@@ -192,15 +192,15 @@ TEST_F(GpuTest, DebugViewsPreparedInTheBackgroundDrawLikeOnesBuiltAtFirstDraw) {
     CapturedFrame atFirstDraw, prepared;
     {
         Renderer renderer(context());
-        settings.precompile = passes::Precompile::Off;
+        settings.precompile = options::Precompile::Off;
         renderer.capture(settings);
-        settings.debugView = passes::DebugView::Roughness;
+        settings.debugView = options::DebugView::Roughness;
         atFirstDraw = renderer.capture(settings);
     }
     {
         Renderer renderer(context());
-        settings.precompile = passes::Precompile::DebugViews;
-        settings.debugView = passes::DebugView::None;
+        settings.precompile = options::Precompile::DebugViews;
+        settings.debugView = options::DebugView::None;
         renderer.capture(settings);
         renderer.capture(settings);  // the background builds start with the second frame of the same bits
         const std::vector<std::string> explained = renderer.explain();
@@ -209,7 +209,7 @@ TEST_F(GpuTest, DebugViewsPreparedInTheBackgroundDrawLikeOnesBuiltAtFirstDraw) {
         ASSERT_NE(queued, explained.end());
         EXPECT_EQ(queued->find(" 0 queued"), std::string::npos) << *queued;
         renderer.finishPipelineBuilds();
-        settings.debugView = passes::DebugView::Roughness;
+        settings.debugView = options::DebugView::Roughness;
         prepared = renderer.capture(settings);
     }
     EXPECT_EQ(prepared.rgba8, atFirstDraw.rgba8);
@@ -221,7 +221,7 @@ TEST_F(GpuTest, RendererDestroyedWhileBackgroundBuildsRunLeaksNothing) {
     const scene::Scene grid = scene::makeSphereGrid();
     {
         Renderer renderer(context());
-        const RenderSettings settings{.width = 32, .height = 18, .scene = &grid, .precompile = passes::Precompile::DebugViews};
+        const RenderSettings settings{.width = 32, .height = 18, .scene = &grid, .precompile = options::Precompile::DebugViews};
         renderer.capture(settings);
         renderer.capture(settings);
     }  // most of the ~25 background builds are queued or running here

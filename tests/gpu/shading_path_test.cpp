@@ -23,7 +23,7 @@ protected:
         GpuTest::SetUp();
         if (!context().choices().visibilityUnsupported.empty()) GTEST_SKIP() << context().choices().visibilityUnsupported;
     }
-    CapturedFrame render(passes::ShadingPath path, passes::DebugView view = passes::DebugView::None,
+    CapturedFrame render(options::ShadingPath path, options::DebugView view = options::DebugView::None,
                          const scene::Environment* environment = nullptr, std::optional<uint32_t> msaa = std::nullopt) {
         RenderSettings settings{.width = kWidth, .height = kHeight, .scene = &mGrid};
         settings.camera = mCamera;
@@ -85,19 +85,19 @@ size_t pixelsDifferingBy(const CapturedFrame& a, const CapturedFrame& b, int lev
 
 TEST_F(ShadingPathTest, VisibilityFramesScheduleItsPassesInsteadOfTheForwardOnes) {
     const scene::Environment sky = scene::makeProceduralSky();
-    render(passes::ShadingPath::Visibility, passes::DebugView::None, &sky);
+    render(options::ShadingPath::Visibility, options::DebugView::None, &sky);
     for (const char* pass : {"visibility", "visibility_classify", "visibility_clear", "visibility_shade", "tonemap"})
         EXPECT_TRUE(declares(pass)) << pass;
     // The sky is composited by the tonemap (on either path): no skybox pass, no forward draws.
     EXPECT_FALSE(declares("forward"));
     EXPECT_FALSE(declares("skybox"));
-    EXPECT_EQ(plan().path, passes::ShadingPath::Visibility);
+    EXPECT_EQ(plan().path, options::ShadingPath::Visibility);
     EXPECT_EQ(plan().sky, SkyPlacement::Tonemap);
 
-    render(passes::ShadingPath::Forward, passes::DebugView::None, &sky);
+    render(options::ShadingPath::Forward, options::DebugView::None, &sky);
     EXPECT_TRUE(declares("forward"));
     EXPECT_FALSE(declares("visibility"));
-    EXPECT_EQ(plan().path, passes::ShadingPath::Forward);
+    EXPECT_EQ(plan().path, options::ShadingPath::Forward);
     EXPECT_EQ(plan().sky, SkyPlacement::Tonemap);
 }
 
@@ -106,9 +106,9 @@ TEST_F(ShadingPathTest, VisibilityFramesScheduleItsPassesInsteadOfTheForwardOnes
 TEST_F(ShadingPathTest, FloatCapturesHaveTheSkyOnBothPaths) {
     const scene::Environment sky = scene::makeProceduralSky();
     RenderSettings settings{.width = kWidth, .height = kHeight, .floatOutput = true, .scene = &mGrid, .environment = &sky};
-    settings.shadingPath = passes::ShadingPath::Forward;
+    settings.shadingPath = options::ShadingPath::Forward;
     const CapturedFrame forward = renderer().capture(settings);
-    settings.shadingPath = passes::ShadingPath::Visibility;
+    settings.shadingPath = options::ShadingPath::Visibility;
     const CapturedFrame visibility = renderer().capture(settings);
     EXPECT_TRUE(declares("visibility_shade"));
     EXPECT_TRUE(declares("skybox"));
@@ -121,9 +121,9 @@ TEST_F(ShadingPathTest, FloatCapturesHaveTheSkyOnBothPaths) {
     EXPECT_LT(largest, 0.015);
     // At 4 samples too (the skybox pass draws under the resolved image, without a depth test).
     settings.msaa = 4;
-    settings.shadingPath = passes::ShadingPath::Forward;
+    settings.shadingPath = options::ShadingPath::Forward;
     const CapturedFrame forward4 = renderer().capture(settings);
-    settings.shadingPath = passes::ShadingPath::Visibility;
+    settings.shadingPath = options::ShadingPath::Visibility;
     const CapturedFrame visibility4 = renderer().capture(settings);
     EXPECT_TRUE(explains("4-sample visibility image"));
     largest = 0.0;
@@ -136,13 +136,13 @@ TEST_F(ShadingPathTest, FloatCapturesHaveTheSkyOnBothPaths) {
 // comparison of the paths: mean ≤ 0.05 levels; the grid has no textures, so no level-of-detail
 // difference: every channel within 2 levels).
 TEST_F(ShadingPathTest, DebugViewsAgreeOnBothPaths) {
-    for (passes::DebugView view : passes::allDebugViews()) {
-        const CapturedFrame forward = render(passes::ShadingPath::Forward, view);
-        const CapturedFrame visibility = render(passes::ShadingPath::Visibility, view);
-        ASSERT_EQ(plan().path, passes::ShadingPath::Visibility) << passes::debugViewName(view);
+    for (options::DebugView view : options::allDebugViews()) {
+        const CapturedFrame forward = render(options::ShadingPath::Forward, view);
+        const CapturedFrame visibility = render(options::ShadingPath::Visibility, view);
+        ASSERT_EQ(plan().path, options::ShadingPath::Visibility) << options::debugViewName(view);
         const auto [mean, largest] = difference(forward, visibility);
-        EXPECT_LE(mean, 0.05) << passes::debugViewName(view);
-        EXPECT_LE(largest, 2) << passes::debugViewName(view);
+        EXPECT_LE(mean, 0.05) << options::debugViewName(view);
+        EXPECT_LE(largest, 2) << options::debugViewName(view);
     }
 }
 
@@ -152,15 +152,15 @@ TEST_F(ShadingPathTest, DebugViewsAgreeOnBothPaths) {
 TEST_F(ShadingPathTest, MsaaResolvesInTheShadingAsTheForwardPathResolves) {
     if (!(context().caps().limits.sampledImageIntegerSampleCounts & VK_SAMPLE_COUNT_4_BIT)) GTEST_SKIP() << "no 4-sample integer images";
     const scene::Environment sky = scene::makeProceduralSky();
-    const CapturedFrame forward = render(passes::ShadingPath::Forward, passes::DebugView::None, &sky, 4);
-    const CapturedFrame visibility = render(passes::ShadingPath::Visibility, passes::DebugView::None, &sky, 4);
+    const CapturedFrame forward = render(options::ShadingPath::Forward, options::DebugView::None, &sky, 4);
+    const CapturedFrame visibility = render(options::ShadingPath::Visibility, options::DebugView::None, &sky, 4);
     EXPECT_TRUE(explains("4-sample visibility image"));
     EXPECT_TRUE(declares("visibility"));
     const auto [mean, largest] = difference(forward, visibility);
     EXPECT_LE(mean, 0.05);
     EXPECT_LE(largest, 1);
     // The edges are smoothed: the single-sample image differs from both along every silhouette.
-    const auto [aliasedMean, aliasedLargest] = difference(render(passes::ShadingPath::Visibility, passes::DebugView::None, &sky, 1), visibility);
+    const auto [aliasedMean, aliasedLargest] = difference(render(options::ShadingPath::Visibility, options::DebugView::None, &sky, 1), visibility);
     EXPECT_GT(aliasedMean, 0.2);
     EXPECT_GT(aliasedLargest, 30);
 }
@@ -181,8 +181,8 @@ TEST_F(ShadingPathTest, MsaaAlphaMaskedCoverageMatchesTheForwardPathButOnTheMask
     for (scene::Material& m : mGrid.materials)
         if (m.alphaMode == scene::AlphaMode::Blend) m.alphaMode = scene::AlphaMode::Opaque;
     mCamera = measuredView(mGrid);
-    const CapturedFrame forward = render(passes::ShadingPath::Forward, passes::DebugView::None, nullptr, 4);
-    const CapturedFrame visibility = render(passes::ShadingPath::Visibility, passes::DebugView::None, nullptr, 4);
+    const CapturedFrame forward = render(options::ShadingPath::Forward, options::DebugView::None, nullptr, 4);
+    const CapturedFrame visibility = render(options::ShadingPath::Visibility, options::DebugView::None, nullptr, 4);
     ASSERT_TRUE(explains("4-sample visibility image"));
     const size_t differing = pixelsDifferingBy(forward, visibility, 3);
     const auto [mean, largest] = difference(forward, visibility);
@@ -206,8 +206,8 @@ TEST_F(ShadingPathTest, MsaaBlendedAndTransmissiveDrawsFollowTheVisibilityPathsS
         mGrid = scene::loadGltf(file);
         mCamera = measuredView(mGrid);
         renderer().sceneReplaced();
-        const CapturedFrame forward = render(passes::ShadingPath::Forward, passes::DebugView::None, &sky, 4);
-        const CapturedFrame visibility = render(passes::ShadingPath::Visibility, passes::DebugView::None, &sky, 4);
+        const CapturedFrame forward = render(options::ShadingPath::Forward, options::DebugView::None, &sky, 4);
+        const CapturedFrame visibility = render(options::ShadingPath::Visibility, options::DebugView::None, &sky, 4);
         ASSERT_TRUE(explains("4-sample visibility image")) << model;
         EXPECT_TRUE(declares("msaa_expand")) << model;
         EXPECT_TRUE(declares(std::string(model) == "TransmissionTest" ? "forward_transmission" : "forward_blended")) << model;
@@ -219,14 +219,14 @@ TEST_F(ShadingPathTest, MsaaBlendedAndTransmissiveDrawsFollowTheVisibilityPathsS
                     model, mean, differing, largest);
     }
     // At one sample the blended draws follow the shading without the expansion.
-    render(passes::ShadingPath::Visibility);
+    render(options::ShadingPath::Visibility);
     EXPECT_FALSE(declares("msaa_expand"));
 }
 
 // The viewer's edits of the lights (reflected parameter blocks, rewritten into the scene's buffers,
 // as material edits are) reach the visibility path's shading as they reach the forward pass.
 TEST_F(ShadingPathTest, EditedLightsReachTheComputeShading) {
-    const CapturedFrame before = render(passes::ShadingPath::Visibility);
+    const CapturedFrame before = render(options::ShadingPath::Visibility);
     shader::ParameterRegistry& registry = renderer().parameters();
     for (int i = 0; i < 4; ++i) {
         const std::string light = "Lights[" + std::to_string(i) + "]";
@@ -238,13 +238,13 @@ TEST_F(ShadingPathTest, EditedLightsReachTheComputeShading) {
                 registry.set("forward", light, m, std::as_bytes(std::span(&zero, 1)));
             }
     }
-    const CapturedFrame unlit = render(passes::ShadingPath::Visibility);
-    ASSERT_EQ(plan().path, passes::ShadingPath::Visibility);
+    const CapturedFrame unlit = render(options::ShadingPath::Visibility);
+    ASSERT_EQ(plan().path, options::ShadingPath::Visibility);
     const auto [mean, largest] = difference(before, unlit);
     EXPECT_GT(mean, 2.0) << "largest " << largest;  // the spheres cover ~22% of the image
     EXPECT_GT(largest, 100);
     // And the forward path draws the same edited scene.
-    const auto [pathMean, pathLargest] = difference(render(passes::ShadingPath::Forward), unlit);
+    const auto [pathMean, pathLargest] = difference(render(options::ShadingPath::Forward), unlit);
     EXPECT_LE(pathMean, 0.05);
     EXPECT_LE(pathLargest, 2);
 }
@@ -252,7 +252,7 @@ TEST_F(ShadingPathTest, EditedLightsReachTheComputeShading) {
 // The material inspector's edits (the "Materials[i]" blocks, rewritten into the scene's material
 // buffer) reach the compute shading too: the middle sphere's base colour set to pure red.
 TEST_F(ShadingPathTest, EditedMaterialsReachTheComputeShading) {
-    const CapturedFrame before = render(passes::ShadingPath::Visibility);
+    const CapturedFrame before = render(options::ShadingPath::Visibility);
     shader::ParameterRegistry& registry = renderer().parameters();
     const shader::ParameterRegistry::Block* block = registry.find("forward", "Materials[24]");
     ASSERT_NE(block, nullptr);
@@ -264,14 +264,14 @@ TEST_F(ShadingPathTest, EditedMaterialsReachTheComputeShading) {
             edited = true;
         }
     ASSERT_TRUE(edited);
-    const CapturedFrame redSphere = render(passes::ShadingPath::Visibility);
-    ASSERT_EQ(plan().path, passes::ShadingPath::Visibility);
+    const CapturedFrame redSphere = render(options::ShadingPath::Visibility);
+    ASSERT_EQ(plan().path, options::ShadingPath::Visibility);
     // The middle sphere (material 24) is under the image's centre.
     const size_t centre = (size_t(kHeight / 2) * kWidth + kWidth / 2) * 4;
     EXPECT_GT(int(redSphere.rgba8[centre]) - int(redSphere.rgba8[centre + 1]), 60)
         << "was " << int(before.rgba8[centre]) << "," << int(before.rgba8[centre + 1]);
     // And the forward path draws the same edited scene.
-    const auto [pathMean, pathLargest] = difference(render(passes::ShadingPath::Forward), redSphere);
+    const auto [pathMean, pathLargest] = difference(render(options::ShadingPath::Forward), redSphere);
     EXPECT_LE(pathMean, 0.05);
     EXPECT_LE(pathLargest, 2);
 }
@@ -281,7 +281,7 @@ TEST_F(ShadingPathTest, EditedMaterialsReachTheComputeShading) {
 // every pass that ran has a wall time (the split must also be clean under synchronization
 // validation, which the fixture checks).
 TEST_F(ShadingPathTest, SerializedPassesRenderTheSameFrameAndTimeEveryPass) {
-    for (const passes::ShadingPath path : {passes::ShadingPath::Forward, passes::ShadingPath::Visibility}) {
+    for (const options::ShadingPath path : {options::ShadingPath::Forward, options::ShadingPath::Visibility}) {
         RenderSettings settings{.width = kWidth, .height = kHeight, .scene = &mGrid};
         settings.camera = mCamera;
         settings.shadingPath = path;
@@ -289,7 +289,7 @@ TEST_F(ShadingPathTest, SerializedPassesRenderTheSameFrameAndTimeEveryPass) {
         EXPECT_TRUE(whole.timings.serialMs.empty());
         settings.serialPasses = true;
         const CapturedFrame serial = renderer().capture(settings);
-        EXPECT_EQ(serial.rgba8, whole.rgba8) << passes::shadingPathName(path);
+        EXPECT_EQ(serial.rgba8, whole.rgba8) << options::shadingPathName(path);
         const graph::RenderGraph& g = renderer().lastGraph();
         ASSERT_EQ(serial.timings.serialMs.size(), g.declaration().passes.size());
         uint32_t timed = 0;
@@ -303,8 +303,8 @@ TEST_F(ShadingPathTest, SerializedPassesRenderTheSameFrameAndTimeEveryPass) {
 }
 
 TEST_F(ShadingPathTest, AutoIsTheDevicesDefault) {
-    render(passes::ShadingPath::Auto);
-    EXPECT_EQ(plan().path, passes::ShadingPath::Forward);
+    render(options::ShadingPath::Auto);
+    EXPECT_EQ(plan().path, options::ShadingPath::Forward);
     EXPECT_EQ(plan().pathReason, PathReason::DeviceDefault);
 }
 

@@ -30,8 +30,8 @@
 namespace candela::test {
 namespace {
 
-using passes::ShadingModel;
-using passes::Tonemap;
+using options::ShadingModel;
+using options::Tonemap;
 
 constexpr uint32_t kWidth = 96, kHeight = 64;
 constexpr ShadingModel kShadingModels[] = {ShadingModel::Pbr, ShadingModel::PbrSchlickGgx,
@@ -100,7 +100,7 @@ void maybeWrite(const CapturedFrame& ldr, ShadingModel model, Tonemap op, float 
     static int counter = 0;
     const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
     const std::string name = std::string(test->name()) + "_" + std::to_string(counter++) + "_" + shadingName(model) +
-                             "_" + passes::tonemapName(op) + "_" + std::to_string(int(ev)) + "ev.png";
+                             "_" + options::tonemapName(op) + "_" + std::to_string(int(ev)) + "ev.png";
     io::writePng(std::string(dir) + "/" + name, ldr.width, ldr.height, ldr.rgba8);
 }
 
@@ -128,7 +128,7 @@ CapturedFrame renderAndCheck(Renderer& renderer, RenderSettings settings,
                 maybeWrite(ldr, model, op, ev);
                 const auto [difference, at] = ldrDifference(hdr, ldr, settings.tonemap);
                 EXPECT_LE(difference, kLdrTolerance)
-                    << passes::tonemapName(op) << " at " << ev << " EV, " << where(ldr, at);
+                    << options::tonemapName(op) << " at " << ev << " EV, " << where(ldr, at);
                 worstLdr = std::max(worstLdr, difference);
             }
         if (model == ShadingModel::Pbr) pbr = std::move(hdr);

@@ -4,8 +4,8 @@
 #include "gpu_test.h"
 #include "graph_runner.h"
 
-#include "passes/pattern_pass.h"
-#include "passes/tonemap_pass.h"
+#include "passes/diagnostics/pattern_pass.h"
+#include "passes/post/tonemap_pass.h"
 #include "shared/pattern.h"
 #include "shared/tonemap.h"
 
@@ -50,8 +50,8 @@ glm::vec3 expected(uint32_t x, uint32_t y, const passes::TonemapSettings& settin
 
 // Metric: max abs difference per 8-bit channel over all pixels ≤ 1 level, for both targets.
 TEST_F(GpuTest, TonemapMatchesCpuReferenceForEveryOperatorAndBothTargetKinds) {
-    for (passes::Tonemap op : {passes::Tonemap::PbrNeutral, passes::Tonemap::Aces, passes::Tonemap::Agx,
-                               passes::Tonemap::Reinhard, passes::Tonemap::Linear}) {
+    for (options::Tonemap op : {options::Tonemap::PbrNeutral, options::Tonemap::Aces, options::Tonemap::Agx,
+                               options::Tonemap::Reinhard, options::Tonemap::Linear}) {
         const passes::TonemapSettings settings{.exposureEv = -1.0f, .op = op, .background = glm::vec3(0.0f)};
         const Output out = render(context(), settings);
         ASSERT_EQ(out.unorm.size(), size_t(kWidth) * kHeight * 4);
@@ -66,14 +66,14 @@ TEST_F(GpuTest, TonemapMatchesCpuReferenceForEveryOperatorAndBothTargetKinds) {
                     maxSrgb = std::max(maxSrgb, std::abs(level - out.srgb[i]));
                 }
             }
-        EXPECT_LE(maxUnorm, 1) << passes::tonemapName(op) << " (UNORM target, shader sRGB encode)";
-        EXPECT_LE(maxSrgb, 1) << passes::tonemapName(op) << " (_SRGB target, hardware encode)";
+        EXPECT_LE(maxUnorm, 1) << options::tonemapName(op) << " (UNORM target, shader sRGB encode)";
+        EXPECT_LE(maxSrgb, 1) << options::tonemapName(op) << " (_SRGB target, hardware encode)";
     }
 }
 
 TEST_F(GpuTest, TonemapDitherStaysWithinOneLevel) {
-    const Output plain = render(context(), {.op = passes::Tonemap::PbrNeutral});
-    const Output dithered = render(context(), {.op = passes::Tonemap::PbrNeutral, .dither = true});
+    const Output plain = render(context(), {.op = options::Tonemap::PbrNeutral});
+    const Output dithered = render(context(), {.op = options::Tonemap::PbrNeutral, .dither = true});
     int maxDifference = 0;
     size_t changed = 0;
     for (size_t i = 0; i < plain.unorm.size(); ++i) {

@@ -124,7 +124,7 @@ TEST_F(GpuTest, DiffuseTransmissionExtremesStayFinite) {
     settings.ibl.skybox = true;
     EXPECT_EQ(frameProblem(renderer.capture(settings)), "");
     EXPECT_TRUE(explains(renderer, "diffuse-transmission"));
-    settings.debugView = passes::DebugView::DiffuseTransmission;
+    settings.debugView = options::DebugView::DiffuseTransmission;
     const CapturedFrame light = renderer.capture(settings);
     EXPECT_EQ(frameProblem(light), "");
     scene::Scene opaque = scene;
@@ -248,7 +248,7 @@ TEST_F(GpuTest, DispersionViewShowsTheAngleBetweenTheRedAndBlueRays) {
     }
     Renderer renderer(context());
     RenderSettings settings = furnaceSettings(scene, env);
-    settings.debugView = passes::DebugView::Dispersion;
+    settings.debugView = options::DebugView::Dispersion;
     const CapturedFrame frame = renderer.capture(settings);
     ASSERT_EQ(frameProblem(frame), "");
     const scene::ViewSetup view = Renderer::resolveView(scene, settings.camera, float(frame.width) / float(frame.height));
@@ -273,7 +273,7 @@ TEST_F(GpuTest, DispersionViewShowsTheAngleBetweenTheRedAndBlueRays) {
 }
 
 // Both layers through the visibility path's compute shading (which runs the forward pass's
-// material code, forward/shade.glsl): the top row diffusely transmitting (weight 0.25 … 1, a volume
+// material code, shading/shade.glsl): the top row diffusely transmitting (weight 0.25 … 1, a volume
 // on two), the bottom row dispersive glass (dispersion 0.33 … 10), lit from behind and by the
 // environment. Metric: RGB difference of the 8-bit frames in levels; tolerance as the debug views'
 // comparison of the paths (ShadingPathTest.DebugViewsAgreeOnBothPaths): mean ≤ 0.05, every channel
@@ -310,12 +310,12 @@ TEST_F(GpuTest, DiffuseTransmissionAndDispersionAgreeOnBothShadingPaths) {
     Renderer renderer(context());
     RenderSettings settings{.width = 320, .height = 180, .scene = &scene, .camera = furnaceCamera(), .defaultLights = false,
                             .environment = &env, .iblQuality = smallQuality()};
-    settings.shadingPath = passes::ShadingPath::Forward;
+    settings.shadingPath = options::ShadingPath::Forward;
     const CapturedFrame forward = renderer.capture(settings);
-    settings.shadingPath = passes::ShadingPath::Visibility;
+    settings.shadingPath = options::ShadingPath::Visibility;
     const CapturedFrame visibility = renderer.capture(settings);
     ASSERT_NE(renderer.lastPlan(), nullptr);
-    EXPECT_EQ(renderer.lastPlan()->path, passes::ShadingPath::Visibility);
+    EXPECT_EQ(renderer.lastPlan()->path, options::ShadingPath::Visibility);
     ASSERT_EQ(forward.rgba8.size(), visibility.rgba8.size());
     double sum = 0.0;
     int largest = 0;

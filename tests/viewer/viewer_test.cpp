@@ -61,7 +61,7 @@ Image readPng(const std::filesystem::path& path) {
 class ViewerTest : public ::testing::Test {
 protected:
     void open(bool ui = true, bool environment = true, const std::filesystem::path& shaderDir = {},
-              passes::ShadingPath shadingPath = passes::ShadingPath::Auto) {
+              options::ShadingPath shadingPath = options::ShadingPath::Auto) {
         ui::ViewerContent content;
         content.settings.shadingPath = shadingPath;
         content.scene = scene::makeSphereGrid();
@@ -72,7 +72,7 @@ protected:
         content.settings.iblQuality.prefilterSamples = 8;
         // As `candela view` does: every debug view's variants built in the background, while the
         // tests draw, edit parameters, reload shaders and replace the scene.
-        content.settings.precompile = passes::Precompile::DebugViews;
+        content.settings.precompile = options::Precompile::DebugViews;
         mViewer = std::make_unique<ui::Viewer>(
             ui::ViewerDesc{.context = {.validation = true},
                            .window = {.width = mWidth, .height = mHeight},
@@ -161,7 +161,7 @@ protected:
     test::TempDir mDir{"candela_viewer"};
     std::unique_ptr<ui::Viewer> mViewer;
     uint32_t mWidth = 480, mHeight = 300;
-    std::set<ui::Panel> mPanels = ui::kPanelsOpenByDefault;
+    std::set<options::Panel> mPanels = options::kPanelsOpenByDefault;
 };
 
 TEST_F(ViewerTest, RendersFramesWithTheUiAsAGraphPass) {
@@ -290,7 +290,7 @@ class ViewerPanelsTest : public ViewerTest, public ::testing::WithParamInterface
 
 TEST_P(ViewerPanelsTest, EveryPanelIsReadable) {
     std::tie(mWidth, mHeight) = GetParam();
-    for (const auto& [panel, name] : ui::kPanelNames) mPanels.insert(panel);
+    for (const auto& [panel, name] : options::kPanelNames) mPanels.insert(panel);
     open();
     const std::filesystem::path hdr = std::filesystem::path(CANDELA_SHARED_ASSETS) / "environments" / "venice_sunset_1k.hdr";
     const bool venice = std::filesystem::exists(hdr);
@@ -499,7 +499,7 @@ TEST_F(ViewerTest, HotReloadRebuildsPipelinesAndKeepsTheOldOnesOnErrors) {
 TEST_F(ViewerTest, HotReloadRebuildsTheComputeShadingOfTheVisibilityPath) {
     const std::filesystem::path shaders = mDir / "shaders";
     std::filesystem::copy(CANDELA_SHADER_SOURCE_DIR, shaders, std::filesystem::copy_options::recursive);
-    open(/*ui=*/false, /*environment=*/false, shaders, passes::ShadingPath::Visibility);
+    open(/*ui=*/false, /*environment=*/false, shaders, options::ShadingPath::Visibility);
     if (!mViewer->context().choices().visibilityUnsupported.empty())
         GTEST_SKIP() << mViewer->context().choices().visibilityUnsupported;
     ASSERT_TRUE(mViewer->hotReload().enabled());

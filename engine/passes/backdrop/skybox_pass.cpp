@@ -1,7 +1,7 @@
-#include "passes/skybox_pass.h"
+#include "passes/backdrop/skybox_pass.h"
 
 #include "executor/graph_executor.h"
-#include "passes/fullscreen.h"
+#include "passes/recording/fullscreen.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 

@@ -6,7 +6,7 @@
 // blur level's mip.
 
 #include "graph/render_graph.h"
-#include "passes/draw_target.h"
+#include "passes/drawing/draw_target.h"
 #include "shader/parameter_registry.h"
 #include "scene/camera.h"
 #include "shared/ibl.h"

@@ -1,6 +1,6 @@
-#include "passes/transmission_background_pass.h"
+#include "passes/backdrop/transmission_background_pass.h"
 
-#include "passes/compute.h"
+#include "passes/recording/compute.h"
 #include "vk/descriptors.h"
 
 #include <glm/glm.hpp>

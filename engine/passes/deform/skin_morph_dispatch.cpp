@@ -1,4 +1,4 @@
-#include "passes/skin_morph_dispatch.h"
+#include "passes/deform/skin_morph_dispatch.h"
 
 #include "core/errors.h"
 

@@ -1,8 +1,8 @@
-#include "passes/skin_morph_pass.h"
+#include "passes/deform/skin_morph_pass.h"
 
 #include "core/errors.h"
 #include "executor/graph_executor.h"
-#include "passes/compute.h"
+#include "passes/recording/compute.h"
 #include "vk/context.h"
 #include "vk/descriptors.h"
 

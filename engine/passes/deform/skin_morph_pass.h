@@ -5,7 +5,7 @@
 // only for a pose with deformed draws; a static scene's graph never has it.
 
 #include "gpu_scene/gpu_scene.h"
-#include "passes/skin_morph_dispatch.h"
+#include "passes/deform/skin_morph_dispatch.h"
 #include "graph/render_graph.h"
 #include "pose/scene_pose.h"
 #include "shared/skin_morph.h"

@@ -1,4 +1,4 @@
-#include "passes/brdf_probe_pass.h"
+#include "passes/diagnostics/brdf_probe_pass.h"
 
 #include "executor/graph_executor.h"
 #include "shared/specialization_ids.h"

@@ -1,6 +1,6 @@
-#include "passes/calibration_pass.h"
+#include "passes/diagnostics/calibration_pass.h"
 
-#include "passes/fullscreen.h"
+#include "passes/recording/fullscreen.h"
 #include "vk/upload.h"
 
 #include <glm/gtc/packing.hpp>

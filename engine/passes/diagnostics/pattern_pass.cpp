@@ -1,4 +1,4 @@
-#include "passes/pattern_pass.h"
+#include "passes/diagnostics/pattern_pass.h"
 
 #include "executor/graph_executor.h"
 #include "shared/pattern.h"

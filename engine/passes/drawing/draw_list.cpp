@@ -1,4 +1,4 @@
-#include "passes/draw_list.h"
+#include "passes/drawing/draw_list.h"
 
 #include "geometry/mesh_lod.h"
 #include "scene/frustum.h"
@@ -144,7 +144,7 @@ DrawList buildDrawList(const DrawListInputs& in) {
     return list;
 }
 
-std::string describeSelection(const DrawList& list, const DrawSelection& selection) {
+std::string describeSelection(const DrawList& list, const options::DrawSelection& selection) {
     const DrawStats& s = list.stats;
     return "draws: " + std::to_string(s.submittedDraws) + " of " + std::to_string(s.sceneDraws) + " submitted (" +
            std::to_string(s.culledDraws) + " outside the view frustum" + (selection.frustumCulling ? "" : ", culling off") +

@@ -9,7 +9,8 @@
 // bits (lights, IBL, debug view, MSAA; the forward pass combines the two per frame). Plain data and
 // pure functions, no Vulkan calls.
 
-#include "passes/draw_selection.h"
+#include "options/draw_selection.h"
+#include "passes/drawing/draw_stats.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 
@@ -92,7 +93,7 @@ struct DrawListInputs {
     std::span<const scene::Draw> draws;    // the scene's draws, or its pose's (same order)
     const scene::ViewSetup& view;
     uint32_t targetHeight = 1;             // pixels: the level of detail's error is measured in them
-    DrawSelection selection;
+    options::DrawSelection selection;
     // Transmissive draws get their own range (read what lies behind them); false puts them in
     // their alpha mode's range (debug views show data, not what lies behind).
     bool transmission = true;
@@ -103,6 +104,6 @@ DrawList buildDrawList(const DrawListInputs& in);
 
 // What the list selected, for `--explain`: "draws: 40 of 49 submitted (9 outside the view frustum),
 // ... triangles; N draws at a coarser level of detail (error ≤ 0.5 px)".
-std::string describeSelection(const DrawList& list, const DrawSelection& selection);
+std::string describeSelection(const DrawList& list, const options::DrawSelection& selection);
 
 }  // namespace candela::passes

@@ -8,8 +8,8 @@
 
 #include "executor/graph_executor.h"
 #include "gpu_scene/gpu_scene.h"
-#include "passes/draw_list.h"
-#include "passes/frame_inputs.h"
+#include "passes/drawing/draw_list.h"
+#include "passes/drawing/frame_inputs.h"
 #include "vk/pipeline.h"
 
 #include <optional>

@@ -1,4 +1,4 @@
-#include "passes/draw_target.h"
+#include "passes/drawing/draw_target.h"
 
 namespace candela::passes {
 

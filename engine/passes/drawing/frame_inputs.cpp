@@ -1,4 +1,4 @@
-#include "passes/frame_inputs.h"
+#include "passes/drawing/frame_inputs.h"
 
 namespace candela::passes {
 

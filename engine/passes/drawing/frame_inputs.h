@@ -7,12 +7,12 @@
 
 #include "gpu_scene/gpu_scene.h"
 #include "graph/render_graph.h"
-#include "passes/debug_view.h"
-#include "passes/draw_selection.h"
-#include "passes/ibl_handles.h"
-#include "passes/layer_map_set.h"
-#include "passes/shading_model.h"
-#include "passes/shading_variant.h"
+#include "options/debug_view.h"
+#include "options/draw_selection.h"
+#include "passes/ibl/ibl_handles.h"
+#include "passes/drawing/layer_map_set.h"
+#include "options/shading_model.h"
+#include "passes/drawing/shading_variant.h"
 #include "scene/camera.h"
 #include "shared/ibl.h"
 #include "shared/scene_data.h"
@@ -60,10 +60,10 @@ struct IblInputs {
 // What a frame's draws are lit by and read; the optional parts are absent when null.
 struct FrameInputsDesc {
     const scene::ViewSetup& view;
-    ShadingModel model = ShadingModel::Pbr;
+    options::ShadingModel model = options::ShadingModel::Pbr;
     const IblInputs* ibl = nullptr;
-    DebugView debugView = DebugView::None;
-    ShadingOptions shading;
+    options::DebugView debugView = options::DebugView::None;
+    options::ShadingOptions shading;
     uint32_t samples = 1;  // of the draw targets
     const PosedBuffers* posed = nullptr;
     const DeformedVertices* deformed = nullptr;

@@ -1,8 +1,8 @@
-#include "passes/ibl_set.h"
+#include "passes/drawing/ibl_set.h"
 
 #include "executor/graph_executor.h"
-#include "passes/ibl_brdf_lut_pass.h"
-#include "passes/ibl_irradiance_sh_pass.h"
+#include "passes/ibl/ibl_brdf_lut_pass.h"
+#include "passes/ibl/ibl_irradiance_sh_pass.h"
 #include "vk/descriptors.h"
 #include "vk/upload.h"
 

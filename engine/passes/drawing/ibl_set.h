@@ -6,7 +6,7 @@
 // ground truth) is bound to a 1×1 placeholder this object owns and the variant in use never reads.
 
 #include "graph/render_graph.h"
-#include "passes/ibl_handles.h"
+#include "passes/ibl/ibl_handles.h"
 #include "vk/buffer.h"
 #include "vk/image.h"
 #include "vk/pipeline.h"

@@ -1,7 +1,7 @@
-#include "passes/layer_map_set.h"
+#include "passes/drawing/layer_map_set.h"
 
 #include "executor/graph_executor.h"
-#include "passes/ibl_sheen_lut_pass.h"
+#include "passes/ibl/ibl_sheen_lut_pass.h"
 #include "vk/descriptors.h"
 #include "vk/upload.h"
 

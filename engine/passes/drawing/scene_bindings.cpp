@@ -1,6 +1,6 @@
-#include "passes/scene_bindings.h"
+#include "passes/drawing/scene_bindings.h"
 
-#include "passes/scene_blocks.h"
+#include "passes/drawing/scene_blocks.h"
 #include "shared/scene_data.h"
 
 namespace candela::passes {

@@ -10,7 +10,7 @@
 
 #include "executor/graph_executor.h"
 #include "gpu_scene/gpu_scene.h"
-#include "passes/frame_inputs.h"
+#include "passes/drawing/frame_inputs.h"
 #include "vk/descriptors.h"
 #include "vk/pipeline.h"
 

@@ -1,4 +1,4 @@
-#include "passes/shading_variant.h"
+#include "passes/drawing/shading_variant.h"
 
 #include "scene/scene.h"
 #include "shared/specialization_ids.h"
@@ -20,7 +20,7 @@ ShadingVariant shadingVariant(const MaterialKey& key, const FrameVariant& frame)
     v.lightTypes = v.lights ? frame.lightTypes : 0;
     v.alphaMask = key.alphaMask;
     v.blend = key.blend;
-    v.model = key.unlit ? ShadingModel::Pbr : frame.model;
+    v.model = key.unlit ? options::ShadingModel::Pbr : frame.model;
     v.ibl = !key.unlit && frame.ibl;
     v.irradianceSh = !v.ibl || frame.irradianceSh;
     v.multiscatter = !v.ibl || frame.multiscatter;
@@ -51,7 +51,7 @@ std::vector<uint32_t> specializationConstants(const ShadingVariant& v) {
 }
 
 std::string ShadingVariant::name() const {
-    std::string out = unlit ? "unlit" : shadingModelName(model);
+    std::string out = unlit ? "unlit" : options::shadingModelName(model);
     if (normalMap) out += "+normal-map";
     if (!unlit && !lights) out += "+no-lights";
     if (alphaMask) out += "+alpha-mask";
@@ -62,7 +62,7 @@ std::string ShadingVariant::name() const {
     if (specularAa && !unlit) out += "+specular-aa";
     if (samples > 1) out += "+msaa" + std::to_string(samples);
     if (alphaToCoverage) out += "+alpha-to-coverage";
-    if (debugView != DebugView::None) out += std::string("+debug-") + debugViewName(debugView);
+    if (debugView != options::DebugView::None) out += std::string("+debug-") + options::debugViewName(debugView);
     return out;
 }
 

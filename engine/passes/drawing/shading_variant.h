@@ -5,9 +5,9 @@
 // view, specular anti-aliasing, sample count), so what a draw does not use costs nothing: each
 // bit is a specialization constant (shared/specialization_ids.h). Names only, no Vulkan calls.
 
-#include "passes/debug_view.h"
-#include "passes/draw_list.h"
-#include "passes/shading_model.h"
+#include "options/debug_view.h"
+#include "passes/drawing/draw_list.h"
+#include "options/shading_model.h"
 
 #include <compare>
 #include <cstdint>
@@ -18,14 +18,14 @@ namespace candela::passes {
 
 // The frame's half of a variant: the same for every draw of the frame.
 struct FrameVariant {
-    ShadingModel model = ShadingModel::Pbr;
+    options::ShadingModel model = options::ShadingModel::Pbr;
     bool lights = false;  // the scene has punctual lights
     uint32_t lightTypes = 0;  // of which types (bit 1 << CANDELA_LIGHT_*)
     bool ibl = false;     // image-based lighting
     bool irradianceSh = true;
     bool multiscatter = true;
     uint32_t referenceSamples = 0;  // > 0: the ground-truth integrator (ibl-report)
-    DebugView debugView = DebugView::None;
+    options::DebugView debugView = options::DebugView::None;
     bool specularAa = false;
     uint32_t samples = 1;           // of the draw targets
     bool alphaToCoverage = false;   // masked draws use alpha to coverage (samples > 1 and the device has alphaToOne)
@@ -40,12 +40,12 @@ struct ShadingVariant {
     bool unlit = false;
     bool alphaMask = false;
     bool blend = false;
-    ShadingModel model = ShadingModel::Pbr;
+    options::ShadingModel model = options::ShadingModel::Pbr;
     bool ibl = false;
     bool irradianceSh = true;
     bool multiscatter = true;
     uint32_t referenceSamples = 0;
-    DebugView debugView = DebugView::None;
+    options::DebugView debugView = options::DebugView::None;
     // KHR_materials_* layers the material uses (scene::MaterialLayer bits): non-zero selects the
     // layered program (forward_layers.*), whose kLayers evaluates just these.
     uint32_t layers = 0;

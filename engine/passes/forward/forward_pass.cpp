@@ -1,8 +1,8 @@
-#include "passes/forward_pass.h"
+#include "passes/forward/forward_pass.h"
 
 #include "executor/graph_executor.h"
-#include "passes/draw_recorder.h"
-#include "passes/scene_bindings.h"
+#include "passes/drawing/draw_recorder.h"
+#include "passes/drawing/scene_bindings.h"
 #include "shared/brdf.h"
 #include "shared/specialization_ids.h"
 #include "shared/scene_data.h"
@@ -84,12 +84,12 @@ bool ForwardPass::prepare(const FrameVariant& frame) {
 
 void ForwardPass::prepareDebugViews(const FrameVariant& frame) {
     FrameVariant base = frame;
-    base.debugView = DebugView::None;
+    base.debugView = options::DebugView::None;
     if (mPreparedViews == base) return;
     mPreparedViews = base;
     // The shaded image first: the view a debug view is most often switched back to.
     queue(base, WorkerPool::Priority::Background);
-    for (DebugView view : allDebugViews()) {
+    for (options::DebugView view : options::allDebugViews()) {
         FrameVariant f = base;
         f.debugView = view;
         queue(f, WorkerPool::Priority::Background);
@@ -170,7 +170,7 @@ DrawTarget ForwardPass::addBlended(RenderGraph& graph, const DrawTarget& target,
 }
 
 std::vector<std::string> ForwardPass::describe(const DrawList& list, const FrameInputs& frame,
-                                               const DrawSelection& selection) const {
+                                               const options::DrawSelection& selection) const {
     std::vector<std::string> out;
     const scene::Scene& scene = mScene->scene();
     // Draws per material key, then per variant name (keys of one frame may share a variant).

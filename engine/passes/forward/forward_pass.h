@@ -1,26 +1,26 @@
 #pragma once
-// Forward pass (graphics): draws ranges of a frame's draw list (passes/draw_list.h) into an HDR
+// Forward pass (graphics): draws ranges of a frame's draw list (passes/drawing/draw_list.h) into an HDR
 // target (RGBA16F, alpha = coverage, premultiplied) with a reverse-Z depth buffer. Each draw uses
-// the pipeline variant of its material key and the frame's bits (passes/shading_variant.h).
+// the pipeline variant of its material key and the frame's bits (passes/drawing/shading_variant.h).
 //
 // A frame adds "forward" (addOpaque: the opaque and masked ranges, then the blended one sorted
 // back to front) and, when the list has transmissive draws, "forward_transmission"
 // (addTransmissive: the transmissive and blended draws back to front over the opaque image, reading
 // its copy with mips, TransmissionBackgroundPass). Both take what they draw from their arguments:
 // the pass keeps no state between calls. What every draw of the frame shares (push constants, the
-// maps and per-frame buffers it reads) is made once per frame (passes/frame_inputs.h); the draws
-// are recorded by the draw recorder (passes/draw_recorder.h) with the scene's sets
-// (passes/scene_bindings.h), as the visibility raster's are.
+// maps and per-frame buffers it reads) is made once per frame (passes/drawing/frame_inputs.h); the draws
+// are recorded by the draw recorder (passes/drawing/draw_recorder.h) with the scene's sets
+// (passes/drawing/scene_bindings.h), as the visibility raster's are.
 
 #include "graph/render_graph.h"
-#include "passes/debug_view.h"
-#include "passes/draw_list.h"
-#include "passes/draw_selection.h"
-#include "passes/draw_target.h"
-#include "passes/frame_inputs.h"
-#include "passes/ibl_set.h"
-#include "passes/layer_map_set.h"
-#include "passes/shading_variant.h"
+#include "options/debug_view.h"
+#include "passes/drawing/draw_list.h"
+#include "options/draw_selection.h"
+#include "passes/drawing/draw_target.h"
+#include "passes/drawing/frame_inputs.h"
+#include "passes/drawing/ibl_set.h"
+#include "passes/drawing/layer_map_set.h"
+#include "passes/drawing/shading_variant.h"
 #include "gpu_scene/gpu_scene.h"
 #include "core/worker_pool.h"
 #include "vk/descriptors.h"
@@ -82,7 +82,7 @@ public:
     BuildCounts buildCounts() const { return {mPipelines.size(), mPipelines.pending(), mPipelines.pendingFinished()}; }
 
     // What the frame's forward draws use and leave out, one line each, for `--explain`.
-    std::vector<std::string> describe(const DrawList& list, const FrameInputs& frame, const DrawSelection& selection) const;
+    std::vector<std::string> describe(const DrawList& list, const FrameInputs& frame, const options::DrawSelection& selection) const;
 
     // The reflection of the forward shaders without layers (every variant shares sets 0 and 2 and
     // the push constants; the layered program adds to set 1).

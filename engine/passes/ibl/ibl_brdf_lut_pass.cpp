@@ -1,6 +1,6 @@
-#include "passes/ibl_brdf_lut_pass.h"
+#include "passes/ibl/ibl_brdf_lut_pass.h"
 
-#include "passes/compute.h"
+#include "passes/recording/compute.h"
 #include "shared/ibl.h"
 
 namespace candela::passes {

@@ -1,7 +1,7 @@
-#include "passes/ibl_irradiance_cube_pass.h"
+#include "passes/ibl/ibl_irradiance_cube_pass.h"
 
-#include "passes/ibl_sample_tables.h"
-#include "passes/compute.h"
+#include "passes/ibl/ibl_sample_tables.h"
+#include "passes/recording/compute.h"
 #include "shared/ibl.h"
 #include "shared/specialization_ids.h"
 #include "vk/upload.h"

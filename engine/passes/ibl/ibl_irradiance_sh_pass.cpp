@@ -1,6 +1,6 @@
-#include "passes/ibl_irradiance_sh_pass.h"
+#include "passes/ibl/ibl_irradiance_sh_pass.h"
 
-#include "passes/compute.h"
+#include "passes/recording/compute.h"
 #include "shared/ibl.h"
 
 #include <bit>

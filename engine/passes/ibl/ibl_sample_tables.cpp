@@ -1,4 +1,4 @@
-#include "passes/ibl_sample_tables.h"
+#include "passes/ibl/ibl_sample_tables.h"
 
 #include "shared/brdf_sheen.h"
 #include "shared/ibl.h"

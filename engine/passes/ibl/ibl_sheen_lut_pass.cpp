@@ -1,6 +1,6 @@
-#include "passes/ibl_sheen_lut_pass.h"
+#include "passes/ibl/ibl_sheen_lut_pass.h"
 
-#include "passes/ibl_brdf_lut_pass.h"
+#include "passes/ibl/ibl_brdf_lut_pass.h"
 
 namespace candela::passes {
 

@@ -1,6 +1,6 @@
-#include "passes/encode_pass.h"
+#include "passes/post/encode_pass.h"
 
-#include "passes/fullscreen.h"
+#include "passes/recording/fullscreen.h"
 
 namespace candela::passes {
 

@@ -1,4 +1,4 @@
-#include "passes/readback_pass.h"
+#include "passes/post/readback_pass.h"
 
 #include "executor/graph_executor.h"
 #include "vk/image.h"

@@ -1,6 +1,6 @@
-#include "passes/tonemap_pass.h"
+#include "passes/post/tonemap_pass.h"
 
-#include "passes/fullscreen.h"
+#include "passes/recording/fullscreen.h"
 #include "shared/specialization_ids.h"
 #include "shared/tonemap.h"
 

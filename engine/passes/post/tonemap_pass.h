@@ -5,7 +5,7 @@
 // over the image fewer where nothing reads the HDR image with its sky.
 
 #include "graph/render_graph.h"
-#include "passes/tonemap_operator.h"
+#include "options/tonemap_operator.h"
 #include "shader/parameter_registry.h"
 #include "shared/tonemap.h"
 #include "vk/pipeline_cache.h"
@@ -21,7 +21,7 @@ namespace candela::passes {
 
 struct TonemapSettings {
     float exposureEv = 0.0f;  // exposure in stops: radiance × 2^EV
-    Tonemap op = Tonemap::PbrNeutral;
+    options::Tonemap op = options::Tonemap::PbrNeutral;
     // Solid background in linear display RGB; nullopt keeps transparency (alpha = coverage).
     std::optional<glm::vec3> background;
     bool dither = false;

@@ -1,4 +1,4 @@
-#include "passes/clear_pass.h"
+#include "passes/visibility/clear_pass.h"
 
 #include "executor/graph_executor.h"
 

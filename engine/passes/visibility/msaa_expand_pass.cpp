@@ -1,6 +1,6 @@
-#include "passes/msaa_expand_pass.h"
+#include "passes/visibility/msaa_expand_pass.h"
 
-#include "passes/fullscreen.h"
+#include "passes/recording/fullscreen.h"
 
 #include <stdexcept>
 

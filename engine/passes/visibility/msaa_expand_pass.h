@@ -8,7 +8,7 @@
 // changes no pixel by itself.
 
 #include "graph/render_graph.h"
-#include "passes/draw_target.h"
+#include "passes/drawing/draw_target.h"
 #include "vk/pipeline_cache.h"
 #include "vk/sampler.h"
 

@@ -1,7 +1,7 @@
-#include "passes/visibility_classify_pass.h"
+#include "passes/visibility/visibility_classify_pass.h"
 
 #include "executor/graph_executor.h"
-#include "passes/compute.h"
+#include "passes/recording/compute.h"
 #include "vk/descriptors.h"
 #include "vk/sampler.h"
 

@@ -4,7 +4,7 @@
 // shading lists its pixels need; visibility_tiles.comp gathers, per list, the tiles that need it
 // into a tile list and writes its indirect
 // dispatch arguments. VisibilityShadePass dispatches each list.
-// (The tiles: 8 × 8 pixels, or 8 × 1 on CPU devices: passes/visibility_frame.h.)
+// (The tiles: 8 × 8 pixels, or 8 × 1 on CPU devices: passes/visibility/visibility_frame.h.)
 
 #include "graph/render_graph.h"
 #include "shared/visibility.h"

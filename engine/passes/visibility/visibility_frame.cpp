@@ -1,4 +1,4 @@
-#include "passes/visibility_frame.h"
+#include "passes/visibility/visibility_frame.h"
 
 #include <algorithm>
 #include <map>

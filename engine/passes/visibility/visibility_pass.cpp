@@ -1,8 +1,8 @@
-#include "passes/visibility_pass.h"
+#include "passes/visibility/visibility_pass.h"
 
 #include "executor/graph_executor.h"
-#include "passes/draw_recorder.h"
-#include "passes/scene_bindings.h"
+#include "passes/drawing/draw_recorder.h"
+#include "passes/drawing/scene_bindings.h"
 #include "shared/specialization_ids.h"
 
 #include <algorithm>

@@ -8,10 +8,10 @@
 
 #include "gpu_scene/gpu_scene.h"
 #include "graph/render_graph.h"
-#include "passes/draw_list.h"
-#include "passes/draw_target.h"
-#include "passes/frame_inputs.h"
-#include "passes/visibility_texture_sets.h"
+#include "passes/drawing/draw_list.h"
+#include "passes/drawing/draw_target.h"
+#include "passes/drawing/frame_inputs.h"
+#include "passes/visibility/visibility_texture_sets.h"
 #include "vk/descriptors.h"
 #include "vk/pipeline_cache.h"
 

@@ -1,9 +1,9 @@
-#include "passes/visibility_shade_pass.h"
+#include "passes/visibility/visibility_shade_pass.h"
 
 #include "executor/graph_executor.h"
-#include "passes/clear_pass.h"
-#include "passes/compute.h"
-#include "passes/scene_bindings.h"
+#include "passes/visibility/clear_pass.h"
+#include "passes/recording/compute.h"
+#include "passes/drawing/scene_bindings.h"
 #include "shared/specialization_ids.h"
 #include "vk/context.h"
 

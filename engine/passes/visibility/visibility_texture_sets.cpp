@@ -1,4 +1,4 @@
-#include "passes/visibility_texture_sets.h"
+#include "passes/visibility/visibility_texture_sets.h"
 
 #include <map>
 

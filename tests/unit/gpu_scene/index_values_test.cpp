@@ -26,7 +26,7 @@ Scene sceneWithLargestIndex(uint32_t largest) {
 }
 
 TEST(IndexValues, MinimumProfileRefusesIndicesPast24Bits) {
-    const vk::DeviceCaps minimum = vk::narrowCaps(deviceWithFullIndices(), vk::DeviceProfile::Minimum);
+    const vk::DeviceCaps minimum = vk::narrowCaps(deviceWithFullIndices(), options::DeviceProfile::Minimum);
     EXPECT_FALSE(minimum.features.fullDrawIndexUint32);
     EXPECT_EQ(minimum.limits.maxDrawIndexedIndexValue, (1u << 24) - 1);
     EXPECT_NO_THROW(checkIndexValues(sceneWithLargestIndex((1u << 24) - 1), minimum));
@@ -44,7 +44,7 @@ TEST(IndexValues, MinimumProfileRefusesIndicesPast24Bits) {
 
 TEST(IndexValues, FullDrawIndexUint32DrawsEveryIndex) {
     EXPECT_NO_THROW(checkIndexValues(sceneWithLargestIndex(0xFFFFFFFEu), deviceWithFullIndices()));
-    EXPECT_NO_THROW(checkIndexValues(Scene{}, vk::narrowCaps(deviceWithFullIndices(), vk::DeviceProfile::Minimum)));
+    EXPECT_NO_THROW(checkIndexValues(Scene{}, vk::narrowCaps(deviceWithFullIndices(), options::DeviceProfile::Minimum)));
 }
 
 }  // namespace

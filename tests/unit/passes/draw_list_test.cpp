@@ -1,7 +1,7 @@
-// The frame's draw list (passes/draw_list.h): selection, ranges, sort keys and material keys, on
+// The frame's draw list (passes/drawing/draw_list.h): selection, ranges, sort keys and material keys, on
 // small hand-made scenes (no GPU).
-#include "passes/draw_list.h"
-#include "passes/shading_variant.h"
+#include "passes/drawing/draw_list.h"
+#include "passes/drawing/shading_variant.h"
 
 #include <gtest/gtest.h>
 
@@ -44,7 +44,7 @@ struct Fixture {
     scene::Scene scene;
     MaterialKeys keys;
     scene::ViewSetup view = lookingDownMinusZ();
-    DrawList build(bool transmission = true, DrawSelection selection = {}) {
+    DrawList build(bool transmission = true, options::DrawSelection selection = {}) {
         keys = MaterialKeys::of(scene);
         return buildDrawList({.scene = scene, .keys = keys, .draws = scene.draws, .view = view, .targetHeight = 100,
                               .selection = selection, .transmission = transmission});
@@ -167,14 +167,14 @@ TEST(DrawList, DrawDataIndicesCountInstances) {
 }
 
 TEST(ShadingVariant, TheFramesBitsApplyOnlyToLitMaterials) {
-    const FrameVariant frame{.model = ShadingModel::BlinnPhong, .lights = true, .ibl = true, .specularAa = true,
+    const FrameVariant frame{.model = options::ShadingModel::BlinnPhong, .lights = true, .ibl = true, .specularAa = true,
                              .samples = 4, .alphaToCoverage = true};
     const ShadingVariant lit = shadingVariant({.alphaMask = true}, frame);
     EXPECT_TRUE(lit.lights && lit.ibl && lit.specularAa && lit.alphaToCoverage);
-    EXPECT_EQ(lit.model, ShadingModel::BlinnPhong);
+    EXPECT_EQ(lit.model, options::ShadingModel::BlinnPhong);
     const ShadingVariant unlit = shadingVariant({.unlit = true}, frame);
     EXPECT_FALSE(unlit.lights || unlit.ibl || unlit.specularAa || unlit.alphaToCoverage);
-    EXPECT_EQ(unlit.model, ShadingModel::Pbr);
+    EXPECT_EQ(unlit.model, options::ShadingModel::Pbr);
     EXPECT_EQ(unlit.samples, 4u);
     EXPECT_EQ(unlit.name(), "unlit+msaa4");
 }

@@ -3,7 +3,7 @@
 // index with, the samplers the built-in forward programs declare (their SPIR-V reflection), the
 // layer bits and names, and the debug views. GpuScene's uploads of every slot need a device:
 // tests/gpu/texture_slots_test.cpp.
-#include "passes/debug_view.h"
+#include "options/debug_view.h"
 #include "scene/scene.h"
 #include "shader/builtin_shaders.h"
 #include "shader/reflection.h"
@@ -104,18 +104,18 @@ TEST(ForwardTables, LayerBitsAreDistinctAndNamedInBitOrder) {
 
 TEST(ForwardTables, DebugViewsRoundTripTheirNamesInValueOrder) {
     uint32_t expected = 0;
-    for (const passes::DebugViewRow& row : passes::kDebugViews) {
+    for (const options::DebugViewRow& row : options::kDebugViews) {
         EXPECT_EQ(uint32_t(row.view), expected++) << row.name << ": kDebugView values count up from none";
-        EXPECT_EQ(passes::parseDebugView(row.name), row.view) << row.name;
-        EXPECT_STREQ(passes::debugViewName(row.view), row.name);
-        EXPECT_EQ(passes::debugViewIsLight(row.view), row.light) << row.name;
+        EXPECT_EQ(options::parseDebugView(row.name), row.view) << row.name;
+        EXPECT_STREQ(options::debugViewName(row.view), row.name);
+        EXPECT_EQ(options::debugViewIsLight(row.view), row.light) << row.name;
     }
-    EXPECT_EQ(passes::allDebugViews().size(), std::size(passes::kDebugViews) - 1);
-    EXPECT_EQ(passes::parseDebugView("anisotropy-direction"), passes::DebugView::Anisotropy);
-    EXPECT_FALSE(passes::parseDebugView("anisotropy"));
-    for (passes::DebugView light : {passes::DebugView::Diffuse, passes::DebugView::Specular, passes::DebugView::Clearcoat,
-                                    passes::DebugView::Sheen})
-        EXPECT_TRUE(passes::debugViewIsLight(light));
+    EXPECT_EQ(options::allDebugViews().size(), std::size(options::kDebugViews) - 1);
+    EXPECT_EQ(options::parseDebugView("anisotropy-direction"), options::DebugView::Anisotropy);
+    EXPECT_FALSE(options::parseDebugView("anisotropy"));
+    for (options::DebugView light : {options::DebugView::Diffuse, options::DebugView::Specular, options::DebugView::Clearcoat,
+                                    options::DebugView::Sheen})
+        EXPECT_TRUE(options::debugViewIsLight(light));
 }
 
 }  // namespace

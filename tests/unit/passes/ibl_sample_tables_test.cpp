@@ -1,6 +1,6 @@
 // The CPU-built sample tables of the IBL filtering passes (ibl_prefilter, ibl_irradiance_cube).
 
-#include "passes/ibl_sample_tables.h"
+#include "passes/ibl/ibl_sample_tables.h"
 
 #include "shared/ibl.h"
 

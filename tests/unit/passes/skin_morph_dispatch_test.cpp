@@ -1,7 +1,7 @@
-// How the skin_morph pass splits a deformed draw for a device's limits (passes/skin_morph_dispatch.h):
+// How the skin_morph pass splits a deformed draw for a device's limits (passes/deform/skin_morph_dispatch.h):
 // 2-D group grids past maxComputeWorkGroupCount[0], bound ranges within maxStorageBufferRange with
 // aligned offsets, every vertex covered once, in order.
-#include "passes/skin_morph_dispatch.h"
+#include "passes/deform/skin_morph_dispatch.h"
 #include "vk/profile_caps.h"
 
 #include "core/errors.h"
@@ -18,7 +18,7 @@ SkinMorphLimits minimumLimits() {
     device.limits.maxStorageBufferRange = uint64_t(1) << 32;
     device.limits.minStorageBufferOffsetAlignment = 16;
     device.limits.maxComputeWorkGroupCount[0] = device.limits.maxComputeWorkGroupCount[1] = 1u << 30;
-    return SkinMorphLimits::of(vk::narrowCaps(device, vk::DeviceProfile::Minimum));
+    return SkinMorphLimits::of(vk::narrowCaps(device, options::DeviceProfile::Minimum));
 }
 
 TEST(SkinMorphDispatch, MinimumProfileLimits) {

@@ -1,6 +1,6 @@
-// The visibility path's per-frame tables (passes/visibility_frame.h): shading lists by variant and
+// The visibility path's per-frame tables (passes/visibility/visibility_frame.h): shading lists by variant and
 // texture set, the per-entry table the compute shading reads, the tiling (no GPU).
-#include "passes/visibility_frame.h"
+#include "passes/visibility/visibility_frame.h"
 
 #include <gtest/gtest.h>
 

@@ -10,8 +10,8 @@
 namespace candela {
 namespace {
 
-using passes::DebugView;
-using passes::ShadingPath;
+using options::DebugView;
+using options::ShadingPath;
 
 // A frame the visibility path can take: asked for, a capable device, an environment behind it.
 FrameFacts visibilityFrame() {

@@ -147,7 +147,7 @@ TEST(BrdfLayers, DiffuseTransmissionAtTheExtremes) {
 }
 
 // The white furnace of the diffuse transmission under image-based light, as the forward pass
-// combines it (forward/lighting.glsl): the Lambert part keeps (1 − transmission)(1 − dt) of its
+// combines it (shading/lighting.glsl): the Lambert part keeps (1 − transmission)(1 − dt) of its
 // weight and the diffuse transmission takes (1 − transmission) · dt of it, lit by the irradiance
 // from behind. With a white base colour and colour and a uniform environment (irradiance 1 on both
 // sides) the material returns exactly what it returns without the layer, for any (A, B), Fresnel,

@@ -23,8 +23,8 @@ constexpr const char* kComputeBody = R"(
 layout(local_size_x = 8) in;
 #define CANDELA_CORE_TEXTURE(inputs, field, slot) textureLod(field##Texture, (inputs).uv[slot], 0.0f)
 #define CANDELA_LAYER_TEXTURE(inputs, field, slot) textureLod(field##Texture, (inputs).layerUv[slot], 0.0f)
-#include "forward/material_eval.glsl"
-#include "forward/lighting.glsl"
+#include "shading/material_eval.glsl"
+#include "shading/lighting.glsl"
 layout(set = 4, binding = 0) writeonly buffer Radiance { vec4 radiance[]; };
 void main() {
     SurfaceInputs inputs;

@@ -51,27 +51,27 @@ DeviceCaps generousDevice() {
 }
 
 TEST(DeviceProfile, NamesRoundTripAndUnknownNamesAreRefused) {
-    for (const auto& [profile, name] : kDeviceProfileNames) EXPECT_EQ(parseDeviceProfile(name), profile) << name;
-    EXPECT_FALSE(parseDeviceProfile("Minimum").has_value());
-    EXPECT_FALSE(parseDeviceProfile("").has_value());
+    for (const auto& [profile, name] : options::kDeviceProfileNames) EXPECT_EQ(options::parseDeviceProfile(name), profile) << name;
+    EXPECT_FALSE(options::parseDeviceProfile("Minimum").has_value());
+    EXPECT_FALSE(options::parseDeviceProfile("").has_value());
 }
 
 TEST(DeviceProfile, NativeChangesNothing) {
     const DeviceCaps device = generousDevice();
-    const DeviceCaps caps = narrowCaps(device, DeviceProfile::Native);
+    const DeviceCaps caps = narrowCaps(device, options::DeviceProfile::Native);
     EXPECT_EQ(caps.limits.maxPerStageDescriptorSamplers, device.limits.maxPerStageDescriptorSamplers);
     EXPECT_EQ(caps.memoryTypeMask, device.memoryTypeMask);
     EXPECT_TRUE(chooseForDevice(caps).fallbacks.empty());
 }
 
 TEST(DeviceProfile, MinimumIsWhatVulkan13Guarantees) {
-    const DeviceCaps caps = narrowCaps(generousDevice(), DeviceProfile::Minimum);
+    const DeviceCaps caps = narrowCaps(generousDevice(), options::DeviceProfile::Minimum);
     EXPECT_EQ(caps.limits.maxPerStageDescriptorSamplers, 16u);
     EXPECT_EQ(caps.limits.maxPerStageDescriptorSampledImages, 16u);
     EXPECT_EQ(caps.limits.maxPerStageDescriptorStorageBuffers, 4u);
     EXPECT_EQ(caps.limits.maxStorageBufferRange, uint64_t(128) << 20);
     EXPECT_EQ(caps.limits.minStorageBufferOffsetAlignment, 256u);  // an alignment narrows upwards
-    EXPECT_EQ(narrowCaps(generousDevice(), DeviceProfile::Desktop).limits.minStorageBufferOffsetAlignment, 16u);
+    EXPECT_EQ(narrowCaps(generousDevice(), options::DeviceProfile::Desktop).limits.minStorageBufferOffsetAlignment, 16u);
     EXPECT_EQ(caps.limits.maxMemoryAllocationSize, uint64_t(1) << 30);
     EXPECT_EQ(caps.limits.maxBufferSize, uint64_t(1) << 30);
     EXPECT_EQ(caps.limits.maxImageDimension2D, 4096u);
@@ -99,7 +99,7 @@ TEST(DeviceProfile, AProfileOnlyTakesAway) {
     DeviceCaps small = generousDevice();
     small.limits.maxPerStageDescriptorSamplers = 16;
     small.features.alphaToOne = false;
-    const DeviceCaps caps = narrowCaps(small, DeviceProfile::Desktop);
+    const DeviceCaps caps = narrowCaps(small, options::DeviceProfile::Desktop);
     EXPECT_EQ(caps.limits.maxPerStageDescriptorSamplers, 16u);
     EXPECT_FALSE(caps.features.alphaToOne);
     // And a profile's larger figure is not given to it.
@@ -107,7 +107,7 @@ TEST(DeviceProfile, AProfileOnlyTakesAway) {
 }
 
 TEST(DeviceProfile, AppleHasSixteenSamplersButManyImagesAndKeepsLazyMemory) {
-    const DeviceCaps caps = narrowCaps(generousDevice(), DeviceProfile::Apple);
+    const DeviceCaps caps = narrowCaps(generousDevice(), options::DeviceProfile::Apple);
     EXPECT_EQ(caps.limits.maxPerStageDescriptorSamplers, 16u);
     EXPECT_EQ(caps.limits.maxPerStageDescriptorSampledImages, 128u);
     EXPECT_TRUE(caps.hasMemoryType(VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT));
@@ -121,7 +121,7 @@ TEST(DeviceChoices, FallbacksFollowTheMissingFormatFeatures) {
     EXPECT_EQ(native.sheenLut, VK_FORMAT_R32_SFLOAT);
     EXPECT_EQ(native.brdfLut, VK_FORMAT_R16G16_SFLOAT);
 
-    const DeviceChoices minimum = chooseForDevice(narrowCaps(generousDevice(), DeviceProfile::Minimum));
+    const DeviceChoices minimum = chooseForDevice(narrowCaps(generousDevice(), options::DeviceProfile::Minimum));
     EXPECT_EQ(minimum.floatCube, VK_FORMAT_R16G16B16A16_SFLOAT);
     EXPECT_EQ(minimum.sheenLut, VK_FORMAT_R16G16B16A16_SFLOAT);
     EXPECT_EQ(minimum.brdfLut, VK_FORMAT_R16G16B16A16_SFLOAT);
@@ -140,15 +140,15 @@ TEST(DeviceChoices, FallbacksFollowTheMissingFormatFeatures) {
     EXPECT_TRUE(native.visibilityUnsupported.empty()) << native.visibilityUnsupported;
     // Apple: 16 samplers (but every format): the layered program's fallback, and the forward path
     // only (MoltenVK has no geometry shaders).
-    const DeviceChoices apple = chooseForDevice(narrowCaps(generousDevice(), DeviceProfile::Apple));
+    const DeviceChoices apple = chooseForDevice(narrowCaps(generousDevice(), options::DeviceProfile::Apple));
     EXPECT_TRUE(apple.specializeLayeredProgram);
     ASSERT_EQ(apple.fallbacks.size(), 2u);
     EXPECT_NE(apple.visibilityUnsupported.find("geometryShader"), std::string::npos);
     // The desktop report (RTX 4070) has everything the visibility path needs.
-    EXPECT_TRUE(chooseForDevice(narrowCaps(generousDevice(), DeviceProfile::Desktop)).visibilityUnsupported.empty());
+    EXPECT_TRUE(chooseForDevice(narrowCaps(generousDevice(), options::DeviceProfile::Desktop)).visibilityUnsupported.empty());
 
     // Only the missing feature moves a choice: RG16F with storage keeps the BRDF LUT.
-    DeviceCaps partial = narrowCaps(generousDevice(), DeviceProfile::Minimum);
+    DeviceCaps partial = narrowCaps(generousDevice(), options::DeviceProfile::Minimum);
     for (auto& [format, features] : partial.formats)
         if (format == VK_FORMAT_R16G16_SFLOAT) features |= VK_FORMAT_FEATURE_2_STORAGE_IMAGE_BIT;
     EXPECT_EQ(chooseForDevice(partial).brdfLut, VK_FORMAT_R16G16_SFLOAT);
@@ -174,7 +174,7 @@ shader::DescriptorBinding binding(uint32_t set, uint32_t index, VkDescriptorType
 }
 
 TEST(DeviceChoices, ProgramsOverAPerStageLimitAreNamed) {
-    const DeviceCaps minimum = narrowCaps(generousDevice(), DeviceProfile::Minimum);
+    const DeviceCaps minimum = narrowCaps(generousDevice(), options::DeviceProfile::Minimum);
     std::vector<shader::DescriptorBinding> bindings;
     for (uint32_t i = 0; i < 16; ++i)
         bindings.push_back(binding(1, i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT));
