@@ -72,8 +72,8 @@ std::vector<std::string> explainPasses(const FramePlan& plan, const FrameFacts& 
     }
     if (facts.debugView != options::DebugView::None)
         out.push_back(std::string("debug view: ") + options::debugViewName(facts.debugView) +
-                      (options::debugViewIsLight(facts.debugView) ? " (tonemapped as the image is)"
-                                                                 : " (shown as data: linear tonemap at exposure 0)"));
+                      (plan.tonemapLook == TonemapLook::DataAsIs ? " (shown as data: linear tonemap at exposure 0)"
+                                                                  : " (tonemapped as the image is)"));
     if (plan.sky == SkyPlacement::Tonemap) out.emplace_back("sky: composited under the image by the tonemap (no skybox pass)");
     for (const std::string& line : explainLeftOut(plan, facts, {PlannedPart::Skybox})) out.push_back(line);
     return out;

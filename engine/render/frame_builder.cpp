@@ -144,13 +144,11 @@ std::optional<passes::IblInputs> FrameBuilder::addIbl(Frame& frame, const Render
                                     .referenceSamples = settings.ibl.referenceSamples};
 }
 
-passes::TonemapSettings FrameBuilder::tonemapOf(const RenderSettings& settings, bool ibl) const {
+passes::TonemapSettings FrameBuilder::tonemapOf(const RenderSettings& settings, const FramePlan& plan) {
     passes::TonemapSettings tonemap = settings.tonemap;
-    if (settings.debugView == options::DebugView::None) return tonemap;
-    // Debug views have no skybox: where it was the background, a neutral grey (#262626) is.
-    if (ibl && settings.ibl.skybox && !tonemap.background) tonemap.background = shading::srgbDecode(glm::vec3(38.0f / 255.0f));
-    if (!options::debugViewIsLight(settings.debugView)) {
-        tonemap.op = options::Tonemap::Linear;  // data as it is
+    if (plan.greyBackground) tonemap.background = shading::srgbDecode(glm::vec3(38.0f / 255.0f));
+    if (plan.tonemapLook == TonemapLook::DataAsIs) {
+        tonemap.op = options::Tonemap::Linear;
         tonemap.exposureEv = 0.0f;
         tonemap.dither = false;
     }
@@ -172,6 +170,7 @@ FrameFacts FrameBuilder::facts(const RenderSettings& settings, uint32_t samples)
             .skyboxDisabled = disabled("skybox"),
             .transmissionBackgroundDisabled = disabled("transmission_background"),
             .skinMorphDisabled = disabled("skin_morph"),
+            .backgroundColour = settings.tonemap.background.has_value(),
             .environment = environment,
             .sheen = mScene.hasSheen(),
             .devicePath = devicePath,
@@ -331,7 +330,7 @@ void FrameBuilder::addTonemap(Frame& frame, const RenderSettings& settings, cons
             .params = {.inverseViewProjection = glm::inverse(view.viewProjection),
                        .eyeIntensity = glm::vec4(view.eye, ibl->params.intensity),
                        .rotationLod = glm::vec4(ibl->params.rotation.x, ibl->params.rotation.y, ibl->params.skyboxLod, 0.0f)}};
-    const passes::TonemapSettings tonemap = tonemapOf(settings, ibl != nullptr);
+    const passes::TonemapSettings tonemap = tonemapOf(settings, plan);
     frame.solidBackground = tonemap.background.has_value();
     frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemap, &mParameters, sky ? &*sky : nullptr);
 }

@@ -103,8 +103,9 @@ private:
     // Adds the tonemap of frame.hdr into `target` (or a new "ldr"), with the sky where the plan puts it there.
     void addTonemap(Frame& frame, const RenderSettings& settings, const FramePlan& plan, std::optional<graph::TextureId> target,
                     const scene::ViewSetup& view, const passes::IblInputs* ibl);
-    // The tonemap's settings for the frame (debug views: data shown linearly, grey background).
-    passes::TonemapSettings tonemapOf(const RenderSettings& settings, bool ibl) const;
+    // The tonemap's settings for the frame: the settings' own, with the plan's look and grey
+    // background for a debug view.
+    static passes::TonemapSettings tonemapOf(const RenderSettings& settings, const FramePlan& plan);
     // Adds the frame's notes: lights, MSAA, the forward passes' `forward` lines, the pipelines, the
     // maps, and the plan's (explain_plan.h).
     void addNotes(Frame& frame, const RenderSettings& settings, const vk::MsaaChoice& msaa, std::vector<std::string> forward,

@@ -67,6 +67,11 @@ FramePlan planFrame(const FrameFacts& facts) {
         plan.leftOut.push_back({PlannedPart::Skybox, debugView ? LeftOutReason::DebugView : LeftOutReason::NotTheBackground});
     }
 
+    if (debugView) {
+        if (!options::debugViewIsLight(facts.debugView)) plan.tonemapLook = TonemapLook::DataAsIs;
+        plan.greyBackground = facts.environment && facts.skyboxWanted && !facts.backgroundColour;
+    }
+
     if (plan.path == ShadingPath::Visibility) {
         // The visibility path's image is resolved: blended and transmissive draws at MSAA need one at
         // the frame's sample count; the blended draws follow in their own pass unless the

@@ -2,7 +2,8 @@
 // The frame plan: what a scene frame draws and where, decided by one pure function (planFrame) from
 // the frame's settings, the scene's facts and the device's capabilities — the shading path, where
 // the sky goes, how transmissive draws see what is behind them, whether the visibility path needs
-// the MSAA expansion and the blended pass, what the skin_morph pass does — with every pass or draw
+// the MSAA expansion and the blended pass, what the skin_morph pass does, how the tonemap shows a
+// debug view — with every pass or draw
 // it leaves out and why, as enums. No graph and no Vulkan: each decision is unit-tested by its
 // fields (tests/unit/render/frame_plan_test.cpp). FrameBuilder gathers the facts, declares the plan's
 // passes and turns the plan into --explain lines (explain_plan.h).
@@ -28,6 +29,7 @@ struct FrameFacts {
     bool skyboxDisabled = false;    // --disable-pass skybox (the viewer's toggle)
     bool transmissionBackgroundDisabled = false;
     bool skinMorphDisabled = false;
+    bool backgroundColour = false;  // the settings give the background a colour (TonemapSettings::background)
     // ---- The scene's.
     bool environment = false;       // the IBL maps have an environment
     bool sheen = false;             // a material has a sheen (the layered program reads the sheen LUT)
@@ -72,6 +74,11 @@ enum class DeformPlan : uint8_t {
     Disabled,    // skin_morph is declared (switched off): the deformed draws are left out
 };
 
+// How the tonemap shows a frame: as set, or, in a debug view of data (material inputs, normals, GGX
+// terms), the values as they are — linear, exposure 0, no dither. Debug views of light (the lobes'
+// light) are tone mapped as set.
+enum class TonemapLook : uint8_t { AsSet, DataAsIs };
+
 // What a plan leaves out, and why.
 enum class PlannedPart : uint8_t { SkinMorph, DeformedDraws, SheenLut, TransmissionBackground, Skybox };
 enum class LeftOutReason : uint8_t {
@@ -97,6 +104,10 @@ struct FramePlan {
     bool sheenLut = false;       // the layered program reads the sheen LUT (computed once, then imported)
     bool msaaExpand = false;     // visibility path at MSAA: blended or transmissive draws need a multisampled image
     bool blendedPass = false;    // visibility path: forward_blended draws the blended draws (no transmissive ones)
+    TonemapLook tonemapLook = TonemapLook::AsSet;
+    // A debug view has no sky: where the environment was the background (and no colour is given),
+    // the tonemap puts a neutral grey (#262626) behind the data instead.
+    bool greyBackground = false;
     std::vector<LeftOut> leftOut;
 
     // Whether the plan leaves out `part` (for any reason).

@@ -213,6 +213,33 @@ TEST(FramePlan, SheenLutOnlyForSheen) {
     EXPECT_FALSE(planFrame(facts).leavesOut(PlannedPart::SheenLut));
 }
 
+TEST(FramePlan, ADebugViewOfDataIsShownAsItIsAndOfLightAsSet) {
+    FrameFacts facts = visibilityFrame();
+    EXPECT_EQ(planFrame(facts).tonemapLook, TonemapLook::AsSet);
+    facts.debugView = DebugView::Roughness;
+    EXPECT_EQ(planFrame(facts).tonemapLook, TonemapLook::DataAsIs);
+    facts.debugView = DebugView::Specular;
+    EXPECT_EQ(planFrame(facts).tonemapLook, TonemapLook::AsSet);
+}
+
+TEST(FramePlan, ADebugViewPutsGreyWhereTheSkyWasTheBackground) {
+    FrameFacts facts = visibilityFrame();
+    facts.skyboxWanted = true;
+    EXPECT_FALSE(planFrame(facts).greyBackground);  // no debug view: the sky
+    facts.debugView = DebugView::BaseColor;
+    EXPECT_TRUE(planFrame(facts).greyBackground);
+    EXPECT_EQ(planFrame(facts).sky, SkyPlacement::None);
+    FrameFacts coloured = facts;
+    coloured.backgroundColour = true;  // the colour given stays
+    EXPECT_FALSE(planFrame(coloured).greyBackground);
+    FrameFacts noSkybox = facts;
+    noSkybox.skyboxWanted = false;     // the background was transparent or a colour already
+    EXPECT_FALSE(planFrame(noSkybox).greyBackground);
+    FrameFacts noEnvironment = facts;
+    noEnvironment.environment = false;
+    EXPECT_FALSE(planFrame(noEnvironment).greyBackground);
+}
+
 TEST(FramePlan, ExplainsThePassesInOrder) {
     FrameFacts facts = visibilityFrame();
     facts.skyboxWanted = false;
