@@ -63,35 +63,35 @@ def load(root):
     cpu_tests = [f for f in CPU if os.path.isdir(os.path.join(tests, f))]
     engine_tests = [f for f in ALL if f not in CPU and os.path.isdir(os.path.join(tests, f))]
     # Files outside engine/: the first row whose path matches (a file, or a folder ending in /):
-    # (path, folders it may include (and everything below them), single headers it may include besides)
+    # (path, folders it may include (and everything below them))
     CONSUMERS = [
         # candela_cli: the argument parser, tested without the engine (tests/cli): the settings chosen
         # by name (options), the IBL settings and the names-table lookups; no device-side layer.
-        *[(f"app/{name}", ["ibl", "core", "options", "shared"], [])
+        *[(f"app/{name}", ["ibl", "core", "options", "shared"])
           for name in ["cli.h", "cli.cpp", "cli_commands.cpp", "cli_flags.h", "cli_flags.cpp", "cli_help.cpp",
                        "cli_values.h", "cli_values.cpp", "flag_spec.h", "flag_groups.h", "flag_groups.cpp",
                        "common_options.h", "scene_render_options.h",
                        *[f"{command}_cli.{ext}" for command in ["render", "view", "bench", "ibl_report", "scale_report",
                                                                 "quality_report", "soak", "diff", "info"]
                          for ext in ["h", "cpp"]]]],
-        ("app/", ALL, []),
-        ("tools/bench/graph_compile_bench.cpp", ["graph"], []),
-        ("tools/bench/pose_bench.cpp", ["assets", "pose"], []),
-        ("tools/bench/exr_read_bench.cpp", ["assets"], []),
-        ("tools/", ALL, []),
+        ("app/", ALL),
+        ("tools/bench/graph_compile_bench.cpp", ["graph"]),
+        ("tools/bench/pose_bench.cpp", ["assets", "pose"]),
+        ("tools/bench/exr_read_bench.cpp", ["assets"]),
+        ("tools/", ALL),
         # tests/unit/FOLDER/ tests engine/FOLDER (tests/unit/CMakeLists.txt): candela_engine_unit_tests
         # holds the device-side and viewer folders (no device created, no window opened) and links
         # their libraries ...
-        *[(f"tests/unit/{f}/", engine_tests, []) for f in engine_tests],
+        *[(f"tests/unit/{f}/", engine_tests) for f in engine_tests],
         # ... candela_unit_tests the CPU ones; the helpers at tests/unit's top, shared by every test
         # binary, use the CPU libraries only.
-        *[(f"tests/unit/{f}/", CPU, []) for f in cpu_tests],
-        ("tests/unit/", CPU, []),
+        *[(f"tests/unit/{f}/", CPU) for f in cpu_tests],
+        ("tests/unit/", CPU),
         # The fuzz build configures nothing above the readers (and the images `candela diff` reads).
-        ("tests/fuzz/", ["assets", "pose", "reports"], []),
-        ("tests/", ALL, []),
+        ("tests/fuzz/", ["assets", "pose", "reports"]),
+        ("tests/", ALL),
         # candela_shaders defines shader/builtin_shaders.h.
-        ("shaders/", ["shader", "shared"], []),
+        ("shaders/", ["shader", "shared"]),
     ]
 
 
@@ -145,13 +145,13 @@ def resolve(root, src, inc):
 
 
 def consumer_rule(path):
-    for prefix, folders, headers in CONSUMERS:
+    for prefix, folders in CONSUMERS:
         if path == prefix or (prefix.endswith("/") and path.startswith(prefix)):
             allowed = set(folders)
             for f in folders:
                 allowed |= reach(f)
-            return prefix, allowed, set(headers)
-    return None, set(ALL), set()
+            return prefix, allowed
+    return None, set(ALL)
 
 
 def sources(root):
@@ -177,14 +177,14 @@ def check_includes(root, direct):
             if own not in LAYERS:
                 errors.append(f"{src}: folder engine/{own} is not in the layer table (engine/layers.txt)")
                 continue
-            rule, allowed, headers = f"engine/{own}", reach(own) | {own}, set()
+            rule, allowed = f"engine/{own}", reach(own) | {own}
         else:
             parts = src.split("/")
             if parts[:2] == ["tests", "unit"] and len(parts) > 3 and parts[2] not in LAYERS:
                 errors.append(f"{src}: tests/unit/{parts[2]} is no folder of the layer table (engine/layers.txt); "
                               f"a unit test goes in the folder of what it tests")
                 continue
-            rule, allowed, headers = consumer_rule(src)
+            rule, allowed = consumer_rule(src)
         with open(os.path.join(root, src), encoding="utf-8", errors="replace") as f:
             lines = f.readlines()
         for number, line in enumerate(lines, 1):
@@ -202,7 +202,7 @@ def check_includes(root, direct):
             if layer not in LAYERS:
                 errors.append(f"{src}:{number}: includes {target}, in engine/{layer}, which is not in the layer table")
                 continue
-            if layer in allowed or os.path.relpath(target, "engine") in headers:
+            if layer in allowed:
                 if direct and own in LAYERS and layer != own and layer not in LAYERS[own][2]:
                     notes.append(f"{src}:{number}: includes {m.group(1)} ({layer}): allowed through the table, "
                                  f"not a direct arrow of {own}")
