@@ -1,9 +1,9 @@
 // `candela bench`: frame time and per-pass GPU time of a scene, each also as a ratio to the
-// calibration pass (passes/diagnostics/calibration_pass.h) run in the same process, because absolute times
-// on a shared CPU vary by up to 2× between runs. Frames and calibration runs are interleaved so
-// that drift affects both alike. Then each pass's wall time submitted alone (serialized), which
-// on CPU devices is the only per-pass cost to trust: their timestamps miss deferred work, and the
-// output says so (graph::kUnreliableGpuTimes).
+// calibration pass (passes/diagnostics/calibration_pass.h) run in the same process, because
+// absolute times on a shared CPU vary by up to 2× between runs. Frames and calibration runs are
+// interleaved so that drift affects both alike. Then each pass's wall time submitted alone
+// (serialized), which on CPU devices is the only per-pass cost to trust: their timestamps miss
+// deferred work, and the output says so (graph::kUnreliableGpuTimes).
 
 #include "commands.h"
 #include "frame_measurement.h"

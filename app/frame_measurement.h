@@ -1,7 +1,7 @@
 #pragma once
-// Measuring frames against the calibration pass (passes/diagnostics/calibration_pass.h), shared by `bench` and
-// `scale-report`: frames and calibration runs interleaved, so that the machine's drift affects both
-// alike; figures as medians and ratios to the calibration of the same run.
+// Measuring frames against the calibration pass (passes/diagnostics/calibration_pass.h), shared by
+// `bench` and `scale-report`: frames and calibration runs interleaved, so that the machine's drift
+// affects both alike; figures as medians and ratios to the calibration of the same run.
 
 #include "render/renderer.h"
 

@@ -1,10 +1,10 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // IBL precompute: one mip of a filtered cube from the float environment cube, by summing a table
-// of samples built once on the CPU (engine/passes/ibl/ibl_sample_tables.h): each entry is a direction in
-// the texel's tangent frame (z = the texel's direction) and the source mip that filtered
-// importance sampling assigns to it; the shader rotates, fetches and sums. Output is clamped to
-// the half-float maximum.
+// of samples built once on the CPU (engine/passes/ibl/ibl_sample_tables.h): each entry is a
+// direction in the texel's tangent frame (z = the texel's direction) and the source mip that
+// filtered importance sampling assigns to it; the shader rotates, fetches and sums. Output is
+// clamped to the half-float maximum.
 //   specular prefilter (kWeightByCosine): GGX half vectors reflected about n (n = v = r), weighted
 //     by n·l — the split sum's first term, one roughness per mip (mip 0 is ibl_cubemap.comp's);
 //   irradiance cube: cosine-distributed samples, equal weights — E(n)/π.

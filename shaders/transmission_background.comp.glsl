@@ -1,8 +1,9 @@
 #version 460
-// The transmission background (passes/backdrop/transmission_background_pass.h), one mip per dispatch: mip 0
-// is the forward pass's opaque image, copied; mip m the 2×2 box of mip m − 1 — one bilinear tap at
-// the centre of each destination texel, which for an even source is exactly the mean of its 2×2
-// block (for an odd one, a bilinear resampling). The pass orders the dispatches with barriers.
+// The transmission background (passes/backdrop/transmission_background_pass.h), one mip per
+// dispatch: mip 0 is the forward pass's opaque image, copied; mip m the 2×2 box of mip m − 1 — one
+// bilinear tap at the centre of each destination texel, which for an even source is exactly the
+// mean of its 2×2 block (for an odd one, a bilinear resampling). The pass orders the dispatches
+// with barriers.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 

@@ -3,10 +3,10 @@
 // the frame's settings, the scene's facts and the device's capabilities — the shading path, where
 // the sky goes, how transmissive draws see what is behind them, whether the visibility path needs
 // the MSAA expansion and the blended pass, what the skin_morph pass does, how the tonemap shows a
-// debug view — with every pass or draw
-// it leaves out and why, as enums. No graph and no Vulkan: each decision is unit-tested by its
-// fields (tests/unit/render/frame_plan_test.cpp). FrameBuilder gathers the facts, declares the plan's
-// passes and turns the plan into --explain lines (explain_plan.h).
+// debug view — with every pass or draw it leaves out and why, as enums. No graph and no Vulkan: each
+// decision is unit-tested by its fields (tests/unit/render/frame_plan_test.cpp). FrameBuilder
+// gathers the facts, declares the plan's passes and turns the plan into --explain lines
+// (explain_plan.h).
 
 #include "options/debug_view.h"
 #include "options/shading_path.h"

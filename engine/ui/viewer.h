@@ -141,8 +141,9 @@ public:
     // Wall time between consecutive rendered frames, every frame so far (frames in flight: the
     // throughput, not one frame's latency).
     const std::vector<double>& frameTimesMs() const { return mFrameTimes; }
-    // Runs the calibration pass (passes/diagnostics/calibration_pass.h) at the window's size and returns its
-    // submit+wait time: the yardstick for the frame times on this machine. Waits for the GPU.
+    // Runs the calibration pass (passes/diagnostics/calibration_pass.h) at the window's size and
+    // returns its submit+wait time: the yardstick for the frame times on this machine. Waits for
+    // the GPU.
     double calibrationMs();
     // Hot reload: the watcher (its errors are shown in the UI) and the time from the last reloaded
     // file's save to the first frame drawn with it having completed on the GPU (negative: none yet).

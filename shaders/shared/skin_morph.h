@@ -21,7 +21,8 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_ACTIVE_TARGET_WORDS 2
 
 // Push constants of one dispatch: a run of vertices of one deformed draw (std430). Indices are
-// relative to the buffer ranges the dispatch's descriptor set binds (passes/deform/skin_morph_dispatch.h).
+// relative to the buffer ranges the dispatch's descriptor set binds
+// (passes/deform/skin_morph_dispatch.h).
 struct SkinMorphPush {
     uint vertexCount;          // vertices of this dispatch
     uint groupsX;              // its group count in X: vertex = (group.y * groupsX + group.x) * group size + local

@@ -8,8 +8,8 @@
 // (addTransmissive: the transmissive and blended draws back to front over the opaque image, reading
 // its copy with mips, TransmissionBackgroundPass). Both take what they draw from their arguments:
 // the pass keeps no state between calls. What every draw of the frame shares (push constants, the
-// maps and per-frame buffers it reads) is made once per frame (passes/drawing/frame_inputs.h); the draws
-// are recorded by the draw recorder (passes/drawing/draw_recorder.h) with the scene's sets
+// maps and per-frame buffers it reads) is made once per frame (passes/drawing/frame_inputs.h); the
+// draws are recorded by the draw recorder (passes/drawing/draw_recorder.h) with the scene's sets
 // (passes/drawing/scene_bindings.h), as the visibility raster's are.
 
 #include "graph/render_graph.h"

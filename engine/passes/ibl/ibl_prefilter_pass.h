@@ -2,11 +2,12 @@
 // IBL precompute pass "ibl_prefilter" (compute): mips 1… of the specular cube — mip m is the
 // environment convolved with the GGX lobe of perceptual roughness m / (levels − 1), by GGX
 // importance sampling with filtered importance sampling from the float cube's mips
-// (shaders/ibl_filter_cube.comp weighted by n·l; samples from engine/passes/ibl/ibl_sample_tables.h). Mip 0 (roughness 0,
-// the environment itself) is written by the cubemap pass.
-// With Lobe::Charlie it is "ibl_sheen_prefilter": every mip of the sheen cube (KHR_materials_sheen),
-// mip m the environment convolved with the sheen lobe of roughness m / (levels − 1), sampled
-// exactly as that lobe (equal weights); mip 0 too, since the sheen has no mirror limit.
+// (shaders/ibl_filter_cube.comp weighted by n·l; samples from
+// engine/passes/ibl/ibl_sample_tables.h). Mip 0 (roughness 0, the environment itself) is written by
+// the cubemap pass. With Lobe::Charlie it is "ibl_sheen_prefilter": every mip of the sheen cube
+// (KHR_materials_sheen), mip m the environment convolved with the sheen lobe of roughness m /
+// (levels − 1), sampled exactly as that lobe (equal weights); mip 0 too, since the sheen has no
+// mirror limit.
 
 #include "graph/render_graph.h"
 #include "vk/buffer.h"

@@ -2,8 +2,8 @@
 // The visibility path's per-frame tables (docs/shading-paths.md): what the compute shading needs
 // of each draw-buffer entry drawn this frame (shading::VisibilityDraw: its level of detail's
 // indices, its vertices, its shading list) and the frame's shading lists — a shading variant with
-// one material texture set (passes/visibility/visibility_texture_sets.h) — each of which is one indirect
-// dispatch. Plain data and pure functions, no Vulkan calls.
+// one material texture set (passes/visibility/visibility_texture_sets.h) — each of which is one
+// indirect dispatch. Plain data and pure functions, no Vulkan calls.
 
 #include "passes/drawing/draw_list.h"
 #include "passes/drawing/shading_variant.h"

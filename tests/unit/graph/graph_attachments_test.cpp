@@ -4,9 +4,10 @@
 // (tile memory on tile-based GPUs, Apple's memoryless textures, which drop anything stored). The
 // image usage that follows (TRANSIENT_ATTACHMENT) is checked in graph_msaa_test.cpp, the device's
 // images in tests/gpu/msaa_test.cpp.
-// The frames are shaped like the renderer's (passes/drawing/draw_target.h): "forward" clears a colour and
-// a depth and (with MSAA) resolves, "skybox" draws over the colour, tests the depth and resolves,
-// "forward_transmission" draws over both and resolves, "tonemap" samples the resolved image.
+// The frames are shaped like the renderer's (passes/drawing/draw_target.h): "forward" clears a
+// colour and a depth and (with MSAA) resolves, "skybox" draws over the colour, tests the depth and
+// resolves, "forward_transmission" draws over both and resolves, "tonemap" samples the resolved
+// image.
 
 #include "graph_test_util.h"
 

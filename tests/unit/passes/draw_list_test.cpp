@@ -1,5 +1,5 @@
-// The frame's draw list (passes/drawing/draw_list.h): selection, ranges, sort keys and material keys, on
-// small hand-made scenes (no GPU).
+// The frame's draw list (passes/drawing/draw_list.h): selection, ranges, sort keys and material
+// keys, on small hand-made scenes (no GPU).
 #include "passes/drawing/draw_list.h"
 #include "passes/drawing/shading_variant.h"
 

@@ -1,4 +1,5 @@
-// How the skin_morph pass splits a deformed draw for a device's limits (passes/deform/skin_morph_dispatch.h):
+// How the skin_morph pass splits a deformed draw for a device's limits
+// (passes/deform/skin_morph_dispatch.h):
 // 2-D group grids past maxComputeWorkGroupCount[0], bound ranges within maxStorageBufferRange with
 // aligned offsets, every vertex covered once, in order.
 #include "passes/deform/skin_morph_dispatch.h"

@@ -1,5 +1,5 @@
-// The visibility path's per-frame tables (passes/visibility/visibility_frame.h): shading lists by variant and
-// texture set, the per-entry table the compute shading reads, the tiling (no GPU).
+// The visibility path's per-frame tables (passes/visibility/visibility_frame.h): shading lists by
+// variant and texture set, the per-entry table the compute shading reads, the tiling (no GPU).
 #include "passes/visibility/visibility_frame.h"
 
 #include <gtest/gtest.h>
