@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds the release preset with tests, and runs the whole suite:
-# unit tests (no GPU), GPU tests on lavapipe under the Khronos validation layer with
-# synchronization validation, CLI tests of the real executable, and the viewer under Xvfb. Then
-# builds with AddressSanitizer + UndefinedBehaviorSanitizer and runs the unit tests (loaders on
-# malformed input, graph compilation) and the CLI tests (the bad-input catalogue against the
-# sanitized executable) again; those replay every input fuzzing ever found. The libFuzzer runs
+# Installs what is missing, builds the release preset with tests, and runs its suite: GPU tests on
+# lavapipe under the Khronos validation layer with synchronization validation, CLI tests of the real
+# executable, the README's commands, the browser pages and the viewer under Xvfb. Then builds with
+# AddressSanitizer + UndefinedBehaviorSanitizer and runs the unit tests (loaders on malformed input,
+# graph compilation; built and run only here, once) and the CLI tests (the bad-input catalogue
+# against the sanitized executable) again; those replay every input fuzzing ever found. The libFuzzer runs
 # themselves are in tools/nightly.sh (CI time, docs/testing.md). Each stage's start is printed with
 # the time since the script began.
 set -euo pipefail
@@ -28,7 +28,9 @@ two_shards() {
 stage "install missing packages"
 tools/install-deps.sh
 stage "release build"
-cmake --preset release >/dev/null
+# Without the unit-test binaries: they are built and run sanitized below (CANDELA_UNIT_TESTS=ON, the
+# default, builds them in a release tree too).
+cmake --preset release -DCANDELA_UNIT_TESTS=OFF >/dev/null
 cmake --build --preset release -j"$(nproc)"
 stage "release tests"
 ctest --preset release -j"$(nproc)" --timeout 600
