@@ -8,7 +8,7 @@
 #include "shared/specialization_ids.h"
 
 // The material's base colour texture (its binding in the forward programs' set 1,
-// shared/forward_tables.h), bound per draw.
+// shared/shading_tables.h), bound per draw.
 layout(set = 1, binding = 0) uniform sampler2D baseColorTexture;
 
 // Alpha to coverage (MSAA, the device has alphaToOne: as the forward pass decides) over kSamples.

@@ -1,12 +1,12 @@
 #pragma once
 // The debug views: what the shading (both paths) writes instead of the shaded colour — material
 // inputs, the GGX terms toward the first punctual light, the light of each lobe, the layers'
-// parameters — one per row of shared/forward_tables.h's CANDELA_DEBUG_VIEWS, which says what each
+// parameters — one per row of shared/shading_tables.h's CANDELA_DEBUG_VIEWS, which says what each
 // shows (the shaders' CANDELA_DEBUG_* come from the same rows). Names only: no Vulkan (the
 // command-line parser uses them).
 
 #include "core/name_table.h"
-#include "shared/forward_tables.h"
+#include "shared/shading_tables.h"
 
 #include <cstdint>
 #include <optional>

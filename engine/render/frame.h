@@ -36,7 +36,7 @@ struct Frame {
     // sky, if one ran, it is not seen).
     bool solidBackground = false;
     // What --explain says of the frame (variants, lights, IBL, what was left out), besides culled passes.
-    std::vector<std::string> notes;
+    std::vector<std::string> explanation;
     // Data the CPU makes for this frame alone (the posed draws of an animated scene): each is
     // copied, once the frame slot is free, into that slot's own host-visible buffer
     // (vk::HostUploadRing), which is then bound to the imported handle.

@@ -57,19 +57,19 @@ passes::IblHandles FrameBuilder::addIblMaps(Frame& frame, bool reference) {
 
 std::optional<passes::DeformedVertices> FrameBuilder::addSkinMorph(Frame& frame, const FramePlan& plan, const FrameFacts& facts,
                                                                    passes::SkinMorphFrame& work) {
-    for (const std::string& line : explainLeftOut(plan, facts, {PlannedPart::SkinMorph})) frame.notes.push_back(line);
+    for (const std::string& line : explainLeftOut(plan, facts, {PlannedPart::SkinMorph})) frame.explanation.push_back(line);
     if (plan.deform != DeformPlan::Deformed && plan.deform != DeformPlan::Disabled) return std::nullopt;
     const scene::GpuScene& gpuScene = mScene.gpuScene();
     const passes::SkinMorphPass::Inputs inputs{.scene = &gpuScene,
                                                .jobs = work.jobs,
                                                .vertexCount = work.vertexCount,
                                                .frameData = frame.addHostUpload("skin_morph_frame", bytesOf(work.frameData))};
-    frame.notes.push_back("skin_morph: " + std::to_string(work.jobs.size()) + " draws deformed (" +
+    frame.explanation.push_back("skin_morph: " + std::to_string(work.jobs.size()) + " draws deformed (" +
                           std::to_string(work.skinnedDraws) + " skinned), " + std::to_string(work.activeTargets) +
                           " morph targets with a non-zero weight, " + std::to_string(work.vertexCount) + " vertices (" +
                           formatBytes(uint64_t(work.vertexCount) * sizeof(scene::Vertex)) + " per frame in flight)");
     const BufferId vertices = mSkinMorph.add(*frame.graph, inputs);
-    for (const std::string& line : explainLeftOut(plan, facts, {PlannedPart::DeformedDraws})) frame.notes.push_back(line);
+    for (const std::string& line : explainLeftOut(plan, facts, {PlannedPart::DeformedDraws})) frame.explanation.push_back(line);
     if (plan.deform == DeformPlan::Disabled) return std::nullopt;
     return passes::DeformedVertices{.vertices = vertices, .vertexOffset = std::move(work.vertexOffset)};
 }
@@ -123,7 +123,7 @@ passes::PosedBuffers FrameBuilder::addPosedDraws(Frame& frame, const scene::Scen
     if (!parts.empty()) {
         std::string line = "animated properties (KHR_animation_pointer), written by the CPU per frame:";
         for (size_t i = 0; i < parts.size(); ++i) line += (i ? ", " : " ") + parts[i];
-        frame.notes.push_back(line);
+        frame.explanation.push_back(line);
     }
     return posed;
 }
@@ -190,7 +190,7 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
     const scene::ScenePose* pose = settings.pose ? settings.pose : mScene.restPose();
     const scene::ViewSetup view = resolveView(scene, settings.camera, aspect, pose);
-    frame.notes.push_back("camera: " + cameraFlags(scene, settings.camera, aspect, pose));
+    frame.explanation.push_back("camera: " + cameraFlags(scene, settings.camera, aspect, pose));
 
     // The facts the plan decides from: the settings, the device, the pose's deformed draws and
     // the draw list's ranges.
@@ -275,7 +275,7 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     const passes::DrawTarget drawn = addDraws(frame, plan, facts, visibility, tables ? &*tables : nullptr, view, ibl ? &*ibl : nullptr);
     frame.hdr = drawn.hdr;
     addTonemap(frame, settings, plan, target, view, ibl ? &*ibl : nullptr);
-    addNotes(frame, settings, msaa, mForward.describe(list, inputs, settings.drawSelection), plan, facts);
+    addExplanation(frame, settings, msaa, mForward.describe(list, inputs, settings.drawSelection), plan, facts);
     frame.plan = std::move(plan);
 }
 
@@ -292,7 +292,7 @@ passes::DrawTarget FrameBuilder::addDraws(Frame& frame, const FramePlan& plan, c
     const bool skyboxPass = plan.sky == SkyPlacement::SkyboxPass;
     passes::DrawTarget drawn;
     if (plan.path == options::ShadingPath::Visibility) {
-        drawn = mVisibility.add(frame, desc, *tables, frame.notes);
+        drawn = mVisibility.add(frame, desc, *tables, frame.explanation);
         // The image is resolved already: the sky goes under it without a depth test.
         if (skyboxPass) {
             const TextureId depth = drawn.depth;
@@ -302,7 +302,7 @@ passes::DrawTarget FrameBuilder::addDraws(Frame& frame, const FramePlan& plan, c
         if (plan.msaaExpand) drawn = mExpand.add(graph, drawn);
         if (plan.blendedPass) drawn = mForward.addBlended(graph, drawn, desc.list, desc.inputs, desc.recorded);
     } else {
-        frame.notes.push_back(explainForwardPath(plan, facts));
+        frame.explanation.push_back(explainForwardPath(plan, facts));
         drawn = mForward.addOpaque(graph, desc.size, desc.list, desc.inputs, desc.recorded);
         if (skyboxPass) drawn = addSkybox(drawn);
     }
@@ -335,27 +335,27 @@ void FrameBuilder::addTonemap(Frame& frame, const RenderSettings& settings, cons
     frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemap, &mParameters, sky ? &*sky : nullptr);
 }
 
-void FrameBuilder::addNotes(Frame& frame, const RenderSettings& settings, const vk::MsaaChoice& msaa,
+void FrameBuilder::addExplanation(Frame& frame, const RenderSettings& settings, const vk::MsaaChoice& msaa,
                             std::vector<std::string> forward, const FramePlan& plan, const FrameFacts& facts) {
-    std::vector<std::string>& notes = frame.notes;
+    std::vector<std::string>& lines = frame.explanation;
     if (!mScene.sceneLightsUsed() && !settings.scene->lights.empty())
-        notes.emplace_back("left out: the scene's " + std::to_string(settings.scene->lights.size()) +
+        lines.emplace_back("left out: the scene's " + std::to_string(settings.scene->lights.size()) +
                            " punctual lights (--scene-lights off)");
     if (mScene.defaultLightsAdded())
-        notes.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
-    notes.push_back("msaa: " + msaa.reason +
+        lines.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
+    lines.push_back("msaa: " + msaa.reason +
                     (msaa.samples == 1 ? std::string()
                      : mContext.alphaToOne()
                          ? "; alpha-masked materials use alpha to coverage"
                          : "; alpha-masked materials keep the alpha test (the device has no alphaToOne)"));
-    notes.insert(notes.end(), std::make_move_iterator(forward.begin()), std::make_move_iterator(forward.end()));
+    lines.insert(lines.end(), std::make_move_iterator(forward.begin()), std::make_move_iterator(forward.end()));
     const passes::ForwardPass::BuildCounts builds = mForward.buildCounts();
-    notes.push_back("forward pipelines: " + std::to_string(builds.built) + " built, " + std::to_string(builds.queued) +
+    lines.push_back("forward pipelines: " + std::to_string(builds.built) + " built, " + std::to_string(builds.queued) +
                     " queued ahead of use (" + std::to_string(builds.queuedFinished) + " of them done) (--precompile " +
                     options::precompileName(settings.precompile) + ")");
-    notes.push_back("pipeline cache: " + mContext.pipelineCacheFile().status());
-    for (const std::string& line : mScene.iblMaps().explanation()) notes.push_back(line);
-    for (std::string& line : explainPasses(plan, facts, mScene.sheenLut().computed())) notes.push_back(std::move(line));
+    lines.push_back("pipeline cache: " + mContext.pipelineCacheFile().status());
+    for (const std::string& line : mScene.iblMaps().explanation()) lines.push_back(line);
+    for (std::string& line : explainPasses(plan, facts, mScene.sheenLut().computed())) lines.push_back(std::move(line));
 }
 
 scene::OrbitCamera FrameBuilder::orbitCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,

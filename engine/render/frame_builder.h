@@ -1,6 +1,6 @@
 #pragma once
 // FrameBuilder: declares a frame's passes into its graph from the frame's settings and the scene
-// state, and says what it left out and why (Frame::notes, for --explain). Owns the frame passes.
+// state, and says what it left out and why (Frame::explanation, for --explain). Owns the frame passes.
 // A scene frame is built in three steps: the facts (settings, device, pose, draw list) → the plan
 // (frame_plan.h: a pure function, unit-tested) → the plan's passes declared, and its --explain
 // lines (explain_plan.h) placed beside the passes' own.
@@ -82,9 +82,10 @@ private:
     // The facts of a frame of `settings` at `samples` samples that the settings, the device and the
     // scene state give (FrameFacts; buildScene adds the pose's and the draw list's).
     FrameFacts facts(const RenderSettings& settings, uint32_t samples) const;
-    // Adds the skin_morph pass for the pose's deformed draws (`work`) as `plan` says, with its notes;
-    // the deformed vertices, or nullopt when nothing is deformed or the pass is disabled (it is then
-    // declared, to be switched off, and the deformed draws are left out of the frame).
+    // Adds the skin_morph pass for the pose's deformed draws (`work`) as `plan` says, with its
+    // --explain lines; the deformed vertices, or nullopt when nothing is deformed or the pass is
+    // disabled (it is then declared, to be switched off, and the deformed draws are left out of the
+    // frame).
     std::optional<passes::DeformedVertices> addSkinMorph(Frame& frame, const FramePlan& plan, const FrameFacts& facts,
                                                          passes::SkinMorphFrame& work);
     // The per-frame buffers of an animated pose — the posed draws (a node moves), lights (a light
@@ -106,9 +107,9 @@ private:
     // The tonemap's settings for the frame: the settings' own, with the plan's look and grey
     // background for a debug view.
     static passes::TonemapSettings tonemapOf(const RenderSettings& settings, const FramePlan& plan);
-    // Adds the frame's notes: lights, MSAA, the forward passes' `forward` lines, the pipelines, the
+    // Adds the frame's --explain lines: lights, MSAA, the forward passes' `forward` lines, the pipelines, the
     // maps, and the plan's (explain_plan.h).
-    void addNotes(Frame& frame, const RenderSettings& settings, const vk::MsaaChoice& msaa, std::vector<std::string> forward,
+    void addExplanation(Frame& frame, const RenderSettings& settings, const vk::MsaaChoice& msaa, std::vector<std::string> forward,
                   const FramePlan& plan, const FrameFacts& facts);
 
     vk::Context& mContext;

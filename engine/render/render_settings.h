@@ -41,7 +41,7 @@ struct RenderSettings {
     uint32_t width = 1280;
     uint32_t height = 720;
     bool floatOutput = false;  // capture linear HDR (EXR/PFM) instead of 8-bit sRGB (PNG)
-    // The scene to draw; null renders the foundation's procedural test pattern instead.
+    // The scene to draw; null renders the procedural test pattern instead (passes/diagnostics/pattern_pass.h).
     const scene::Scene* scene = nullptr;
     // The scene as its animations pose it this frame (a pose of `scene`, owned by the caller);
     // null, or a pose that animates nothing, draws the loaded rest pose with the static draw data.

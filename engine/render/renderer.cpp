@@ -202,7 +202,7 @@ std::vector<std::string> Renderer::explain() const {
         if (info.cullReason != CullReason::None)
             lines.push_back("left out: pass '" + decl.passes[p].name + "' (" + info.cullDetail + ")");
     }
-    lines.insert(lines.end(), mRunner.last().notes.begin(), mRunner.last().notes.end());
+    lines.insert(lines.end(), mRunner.last().explanation.begin(), mRunner.last().explanation.end());
     return lines;
 }
 

@@ -44,7 +44,7 @@ std::optional<passes::VisibilityFrameTables> VisibilityPath::tables(const FrameD
 }
 
 passes::DrawTarget VisibilityPath::add(Frame& frame, const FrameDesc& desc, const passes::VisibilityFrameTables& tables,
-                                       std::vector<std::string>& notes) {
+                                       std::vector<std::string>& explanation) {
     const std::span<const passes::DrawListItem> items = desc.list.ranges(passes::DrawRange::Opaque, passes::DrawRange::Masked);
     graph::RenderGraph& graph = *frame.graph;
     const shading::VisibilityFrame extent =
@@ -73,7 +73,7 @@ passes::DrawTarget VisibilityPath::add(Frame& frame, const FrameDesc& desc, cons
         line += " " + list.variant.name() + "/textures" + std::to_string(list.textureSet) + " ×" + std::to_string(list.items);
     if (desc.size.samples > 1)
         line += "; then, on triangle edges, each further distinct triangle of a pixel's samples (the resolve in the shading)";
-    notes.push_back(line);
+    explanation.push_back(line);
     return passes::DrawTarget{.color = hdr, .depth = targets.depth, .hdr = hdr};
 }
 

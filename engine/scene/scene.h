@@ -5,7 +5,7 @@
 // clockwise front faces.
 
 #include "animation/node_tree.h"
-#include "shared/forward_tables.h"
+#include "shared/shading_tables.h"
 
 #include <glm/glm.hpp>
 
@@ -100,7 +100,7 @@ struct Material {
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
     bool unlit = false;  // KHR_materials_unlit
-    // Its textures, one per row of shared/forward_tables.h's CANDELA_CORE_TEXTURES and
+    // Its textures, one per row of shared/shading_tables.h's CANDELA_CORE_TEXTURES and
     // CANDELA_LAYER_TEXTURES (which give each one's channels and colour space): baseColor,
     // metallicRoughness, normal, occlusion, emissive; specular, specularColor, clearcoat, … .
 #define CANDELA_MATERIAL_TEXTURE_FIELD(NAME, field, slot, binding, normalMap) TextureRef field;
@@ -193,7 +193,7 @@ struct Material {
     }
 };
 
-// One texture slot of a material (a row of shared/forward_tables.h's texture tables): the
+// One texture slot of a material (a row of shared/shading_tables.h's texture tables): the
 // Material field, the forward programs' sampler for it and its binding in descriptor set 1, and
 // whether it holds a tangent-space normal map (a flat normal when absent, mips filtered as normals).
 struct TextureSlot {
@@ -213,7 +213,7 @@ inline const TextureRef& Material::texture(int slot) const { return this->*kCore
 inline const TextureRef& Material::layerTexture(int slot) const { return this->*kLayerTextureSlots[slot].field; }
 
 // Layers of a material beyond glTF's core metallic-roughness model, as bits (kLayerSpecular, …: the
-// rows of shared/forward_tables.h's CANDELA_LAYER_BITS, which say what each stands for).
+// rows of shared/shading_tables.h's CANDELA_LAYER_BITS, which say what each stands for).
 #define CANDELA_MATERIAL_LAYER(NAME, Name, bit, name) kLayer##Name = bit,
 enum MaterialLayer : uint32_t { CANDELA_LAYER_BITS(CANDELA_MATERIAL_LAYER) };
 #undef CANDELA_MATERIAL_LAYER

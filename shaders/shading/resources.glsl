@@ -1,5 +1,5 @@
 // What the forward programs read besides their stage inputs: specialization constants, descriptor
-// sets 0–3 and push constants. Included by the fragment stage (forward_fragment.glsl) and, through
+// sets 0–3 and push constants. Included by the fragment stage (forward.frag.glsl) and, through
 // it, by the material evaluation and lighting it calls (shading/material_eval.glsl,
 // shading/lighting.glsl) — a compute shader that calls those includes this file too.
 #ifndef CANDELA_FORWARD_RESOURCES_GLSL
@@ -43,7 +43,7 @@ layout(std430, set = 0, binding = 1) readonly buffer Draws {
 layout(std430, set = 0, binding = 2) readonly buffer Materials {
     MaterialData materials[];
 };
-// The material's textures (set 1): one sampler per row of shared/forward_tables.h's texture tables,
+// The material's textures (set 1): one sampler per row of shared/shading_tables.h's texture tables,
 // named after its field ("baseColorTexture").
 #define CANDELA_MATERIAL_SAMPLER(NAME, field, slot, bindingNumber, normalMap) \
     layout(set = 1, binding = bindingNumber) uniform sampler2D field##Texture;

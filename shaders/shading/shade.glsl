@@ -1,7 +1,7 @@
 // The shading both paths share: a surface point's material evaluated (shading/material_eval.glsl),
 // lit (shading/lighting.glsl) and its lobes and layers combined into premultiplied radiance and
-// coverage. Called by the forward fragment stage (forward_fragment.glsl) and by the visibility
-// path's compute shading (visibility/shade.glsl), so both paths run the same code.
+// coverage. Called by the forward fragment stage (forward.frag.glsl) and by the visibility
+// path's compute shading (visibility_shade.comp.glsl), so both paths run the same code.
 #ifndef CANDELA_FORWARD_SHADE_GLSL
 #define CANDELA_FORWARD_SHADE_GLSL
 

@@ -1,8 +1,8 @@
 // The two ends of material evaluation (shading/material_eval.glsl): SurfaceInputs, what a material
 // is evaluated from at one surface point, and Surface, everything the evaluation produces and the
 // lighting (shading/lighting.glsl) reads. The fragment stage fills SurfaceInputs from its
-// interpolants and derivatives (forward_fragment.glsl), the visibility path's compute shading from
-// the triangle it fetches (visibility/shade.glsl).
+// interpolants and derivatives (forward.frag.glsl), the visibility path's compute shading from
+// the triangle it fetches (visibility_shade.comp.glsl).
 #ifndef CANDELA_FORWARD_SURFACE_GLSL
 #define CANDELA_FORWARD_SURFACE_GLSL
 
@@ -28,7 +28,7 @@ struct SurfaceInputs {
 #endif
 #ifdef CANDELA_VISIBILITY_SHADING
     // Compute shading has no implicit derivatives: each slot's coordinates one pixel to the right
-    // and one below, minus its own (visibility/shade.glsl computes them analytically).
+    // and one below, minus its own (visibility_shade.comp.glsl computes them analytically).
     vec2 uvDx[CANDELA_TEX_COUNT], uvDy[CANDELA_TEX_COUNT];
 #ifdef CANDELA_MATERIAL_LAYERS
     vec2 layerUvDx[CANDELA_LAYER_TEX_COUNT], layerUvDy[CANDELA_LAYER_TEX_COUNT];

@@ -7,7 +7,7 @@
 #define CANDELA_SHARED_SCENE_DATA_H
 
 #include "shared/compat.h"
-#include "shared/forward_tables.h"
+#include "shared/shading_tables.h"
 #include "shared/ibl.h"
 
 CANDELA_NAMESPACE_BEGIN

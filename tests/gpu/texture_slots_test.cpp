@@ -1,8 +1,8 @@
-// GpuScene's uploads walk the texture tables (shaders/shared/forward_tables.h): a material whose
+// GpuScene's uploads walk the texture tables (shaders/shared/shading_tables.h): a material whose
 // every slot names an image and a KHR_texture_transform of its own gets each image bound in its
 // slot and each transform in its slot of MaterialData / MaterialLayerData; a material without
 // textures gets the defaults, a flat normal in the normal-map slots and white in the others. The
-// tables against the shaders' bindings: tests/unit/passes/forward_tables_test.cpp.
+// tables against the shaders' bindings: tests/unit/passes/shading_tables_test.cpp.
 #include "gpu_test.h"
 
 #include "gpu_scene/gpu_scene.h"

@@ -449,7 +449,7 @@ TEST_F(ViewerTest, HotReloadRebuildsPipelinesAndKeepsTheOldOnesOnErrors) {
     const int middle = (spheres.x0 + spheres.x1) / 2;
 
     // The tonemap writes pure red: the scene between the panels turns red.
-    editFile(shaders / "tonemap" / "composite.glsl", "outColor = vec4(display, alpha);", "outColor = vec4(1.0, 0.0, 0.0, 1.0);");
+    editFile(shaders / "tonemap.frag.glsl", "outColor = vec4(display, alpha);", "outColor = vec4(1.0, 0.0, 0.0, 1.0);");
     frames(1);
     EXPECT_TRUE(mViewer->hotReload().errors().empty());
     EXPECT_GT(mViewer->lastReloadLatencyMs(), -1.0);  // from the save to the GPU finishing the frame
@@ -458,29 +458,29 @@ TEST_F(ViewerTest, HotReloadRebuildsPipelinesAndKeepsTheOldOnesOnErrors) {
     EXPECT_EQ(red.rgba[centre + 0], 255);
     EXPECT_EQ(red.rgba[centre + 1], 0);
 
-    // A compile error is reported with file and line, by each shader that includes the file
+    // A compile error is reported with file and line, by each shader made from the file
     // (tonemap.frag and tonemap_sky.frag); the red pipeline keeps running.
-    editFile(shaders / "tonemap" / "composite.glsl", "outColor = vec4(1.0, 0.0, 0.0, 1.0);", "outColor = vec4(1.0, 0.0, 0.0, 1.0) + undefinedThing;");
+    editFile(shaders / "tonemap.frag.glsl", "outColor = vec4(1.0, 0.0, 0.0, 1.0);", "outColor = vec4(1.0, 0.0, 0.0, 1.0) + undefinedThing;");
     frames(1);
     ASSERT_EQ(mViewer->hotReload().errors().size(), 2u);
     const std::string error = mViewer->hotReload().errors()[0];
-    EXPECT_NE(error.find("composite.glsl:"), std::string::npos) << error;
+    EXPECT_NE(error.find("tonemap.frag.glsl:"), std::string::npos) << error;
     EXPECT_NE(error.find("undefinedThing"), std::string::npos) << error;
     const Image stillRed = screenshot("still_red.png");
     EXPECT_EQ(stillRed.rgba[centre + 0], 255);
     EXPECT_EQ(stillRed.rgba[centre + 1], 0);
 
     // A changed descriptor layout is refused too (the sets would not match).
-    editFile(shaders / "tonemap" / "composite.glsl", " + undefinedThing;", ";");
-    editFile(shaders / "tonemap" / "composite.glsl", "layout(set = 0, binding = 0) uniform sampler2D hdrImage;",
+    editFile(shaders / "tonemap.frag.glsl", " + undefinedThing;", ";");
+    editFile(shaders / "tonemap.frag.glsl", "layout(set = 0, binding = 0) uniform sampler2D hdrImage;",
              "layout(set = 0, binding = 0) uniform sampler2D hdrImage;\nlayout(set = 0, binding = 5) uniform sampler2D extra;");
     frames(1);
     ASSERT_EQ(mViewer->hotReload().errors().size(), 2u);  // tonemap.frag and tonemap_sky.frag
     for (const std::string& e : mViewer->hotReload().errors()) EXPECT_NE(e.find("descriptor bindings changed"), std::string::npos) << e;
 
     // A header edit reaches every shader that includes it.
-    editFile(shaders / "tonemap" / "composite.glsl", "\nlayout(set = 0, binding = 5) uniform sampler2D extra;", "");
-    editFile(shaders / "tonemap" / "composite.glsl", "outColor = vec4(1.0, 0.0, 0.0, 1.0);", "outColor = vec4(display, alpha);");
+    editFile(shaders / "tonemap.frag.glsl", "\nlayout(set = 0, binding = 5) uniform sampler2D extra;", "");
+    editFile(shaders / "tonemap.frag.glsl", "outColor = vec4(1.0, 0.0, 0.0, 1.0);", "outColor = vec4(display, alpha);");
     frames(1);
     EXPECT_TRUE(mViewer->hotReload().errors().empty());
     const Image restored = screenshot("restored.png");
@@ -495,7 +495,7 @@ TEST_F(ViewerTest, HotReloadRebuildsPipelinesAndKeepsTheOldOnesOnErrors) {
 }
 
 // The visibility path's compute shading reloads as the fragment programs do: an edit of
-// visibility/shade.glsl rebuilds its pipelines, and a compile error keeps the running ones.
+// visibility_shade.comp.glsl rebuilds its pipelines, and a compile error keeps the running ones.
 TEST_F(ViewerTest, HotReloadRebuildsTheComputeShadingOfTheVisibilityPath) {
     const std::filesystem::path shaders = mDir / "shaders";
     std::filesystem::copy(CANDELA_SHADER_SOURCE_DIR, shaders, std::filesystem::copy_options::recursive);
@@ -515,7 +515,7 @@ TEST_F(ViewerTest, HotReloadRebuildsTheComputeShadingOfTheVisibilityPath) {
     // alpha is kept), so the edit changes the colour and nothing else.
     const std::string blue =
         "imageStore(shaded, pixel, shadeVisible(id.x - 1u, id.y, pixel, size) * vec4(0.0, 0.0, 0.0, 1.0) + vec4(0.0, 0.0, 0.5, 0.0));";
-    editFile(shaders / "visibility" / "shade.glsl", store, blue);
+    editFile(shaders / "visibility_shade.comp.glsl", store, blue);
     frames(1);
     EXPECT_TRUE(mViewer->hotReload().errors().empty());
     const Image shadedBlue = screenshot("blue.png");
@@ -524,16 +524,16 @@ TEST_F(ViewerTest, HotReloadRebuildsTheComputeShadingOfTheVisibilityPath) {
     EXPECT_GT(shadedBlue.rgba[centre + 2], 150);
     EXPECT_EQ(shadedBlue.rgba[2 * 4 + 2], before.rgba[2 * 4 + 2]);  // the background is not shaded
 
-    // A compile error names the file and line in every shader that includes it; blue stays.
-    editFile(shaders / "visibility" / "shade.glsl", blue, "imageStore(shaded, pixel, undefinedThing);");
+    // A compile error names the file and line in every shader made from it; blue stays.
+    editFile(shaders / "visibility_shade.comp.glsl", blue, "imageStore(shaded, pixel, undefinedThing);");
     frames(1);
     ASSERT_FALSE(mViewer->hotReload().errors().empty());
     const std::string error = mViewer->hotReload().errors()[0];
-    EXPECT_NE(error.find("visibility/shade.glsl:"), std::string::npos) << error;
+    EXPECT_NE(error.find("visibility_shade.comp.glsl:"), std::string::npos) << error;
     EXPECT_NE(error.find("undefinedThing"), std::string::npos) << error;
     EXPECT_EQ(screenshot("still_blue.png").rgba, shadedBlue.rgba);
 
-    editFile(shaders / "visibility" / "shade.glsl", "imageStore(shaded, pixel, undefinedThing);", store);
+    editFile(shaders / "visibility_shade.comp.glsl", "imageStore(shaded, pixel, undefinedThing);", store);
     frames(1);
     EXPECT_TRUE(mViewer->hotReload().errors().empty());
     EXPECT_EQ(screenshot("restored.png").rgba, before.rgba);

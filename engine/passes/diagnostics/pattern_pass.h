@@ -1,6 +1,7 @@
 #pragma once
 // Pattern pass (compute): writes the procedural HDR test pattern (shaders/shared/pattern.h) into a
-// new RGBA16F transient. The first pass of the foundation's render graph.
+// new RGBA16F transient: the frame of a render without a scene (pattern → encode), which the GPU
+// tests compare with a CPU evaluation of the same function.
 
 #include "graph/render_graph.h"
 #include "vk/pipeline.h"

@@ -53,7 +53,7 @@ glm::uvec2 visibilityTileSize(VkPhysicalDeviceType deviceType);
 
 // The classification's tiling of a `width` × `height` image in tiles of `tile` pixels with `lists`
 // shading lists at `samples` samples per pixel (with MSAA each list has a tile list for the k-th
-// distinct triangle of its pixels, k < samples: visibility/shade.glsl).
+// distinct triangle of its pixels, k < samples: visibility_shade.comp.glsl).
 shading::VisibilityFrame visibilityExtent(uint32_t width, uint32_t height, glm::uvec2 tile, uint32_t lists, uint32_t samples = 1);
 
 }  // namespace candela::passes

@@ -52,7 +52,7 @@ public:
     // What a shading pipeline is specialized on: the list's variant, the texture slots its texture
     // set fills (TextureSets::coreSlots, layerSlots) and whether the frame has deformed vertices.
     // With MSAA (variant.samples > 1), `distinct`: which distinct triangle of a pixel's samples the
-    // pipeline shades (visibility/shade.glsl).
+    // pipeline shades (visibility_shade.comp.glsl).
     struct ShadeKey {
         ShadingVariant variant;
         uint32_t coreSlots = ~0u, layerSlots = ~0u;

@@ -76,8 +76,7 @@ namespace {
 TEST(ReflectionAnnotations, SourcesAreKeptInTheBuiltSpirv) {
     const std::vector<std::string> sources = embeddedSources(builtinShader("tonemap.frag"));
     ASSERT_GE(sources.size(), 2u);  // the shader and its headers
-    EXPECT_NE(sources[0].find("#include \"tonemap/composite.glsl\""), std::string::npos);
-    EXPECT_TRUE(std::any_of(sources.begin(), sources.end(), [](const std::string& s) { return s.find("void main()") != std::string::npos; }));
+    EXPECT_NE(sources[0].find("void main()"), std::string::npos);  // the program's own file first
     const bool hasHeader = std::any_of(sources.begin(), sources.end(), [](const std::string& s) {
         return s.find("struct TonemapParams") != std::string::npos;
     });

@@ -4,7 +4,7 @@
 #include "shader/builtin_shaders.h"
 #include "shader/reflection.h"
 #include "shader/specialize.h"
-#include "shared/forward_tables.h"
+#include "shared/shading_tables.h"
 #include "shared/specialization_ids.h"
 
 #include <gtest/gtest.h>

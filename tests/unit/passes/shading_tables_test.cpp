@@ -1,4 +1,4 @@
-// The forward pass's tables (shaders/shared/forward_tables.h), walked row by row against what is
+// The shading's tables (shaders/shared/shading_tables.h), walked row by row against what is
 // made of them: scene::Material's texture fields and slot accessors, the constants the shaders
 // index with, the samplers the built-in forward programs declare (their SPIR-V reflection), the
 // layer bits and names, and the debug views. GpuScene's uploads of every slot need a device:
@@ -33,7 +33,7 @@ void expectRow(std::span<const scene::TextureSlot> table, int slot, int constant
     EXPECT_EQ(table[size_t(slot)].normalMap, normalMap) << table[size_t(slot)].sampler;
 }
 
-TEST(ForwardTables, TextureSlotsAreRowsInSlotOrder) {
+TEST(ShadingTables, TextureSlotsAreRowsInSlotOrder) {
 #define CANDELA_CORE_ROW(NAME, field, slot, binding, normalMap) \
     expectRow(scene::kCoreTextureSlots, slot, CANDELA_TEX_##NAME, &scene::Material::field, binding, normalMap);
 #define CANDELA_LAYER_ROW(NAME, field, slot, binding, normalMap) \
@@ -46,7 +46,7 @@ TEST(ForwardTables, TextureSlotsAreRowsInSlotOrder) {
     EXPECT_EQ(CANDELA_LAYER_TEX_COUNT, 14);
 }
 
-TEST(ForwardTables, MaterialReadsEachSlotFromItsOwnField) {
+TEST(ShadingTables, MaterialReadsEachSlotFromItsOwnField) {
     scene::Material m;
     for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) (m.*scene::kCoreTextureSlots[slot].field).image = 100 + slot;
     for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) (m.*scene::kLayerTextureSlots[slot].field).image = 200 + slot;
@@ -72,7 +72,7 @@ std::map<uint32_t, std::pair<std::string, VkDescriptorType>> materialSet(const s
     return out;
 }
 
-TEST(ForwardTables, ForwardProgramsDeclareEverySlotAtItsBinding) {
+TEST(ShadingTables, ForwardProgramsDeclareEverySlotAtItsBinding) {
     std::map<uint32_t, std::pair<std::string, VkDescriptorType>> core, layered;
     for (const scene::TextureSlot& slot : scene::kCoreTextureSlots)
         core[slot.binding] = layered[slot.binding] = {slot.sampler, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
@@ -85,7 +85,7 @@ TEST(ForwardTables, ForwardProgramsDeclareEverySlotAtItsBinding) {
     EXPECT_EQ(materialSet("forward_layers.frag"), layered);
 }
 
-TEST(ForwardTables, LayerBitsAreDistinctAndNamedInBitOrder) {
+TEST(ShadingTables, LayerBitsAreDistinctAndNamedInBitOrder) {
     uint32_t all = 0;
     std::vector<std::string_view> names;
 #define CANDELA_LAYER_ROW(NAME, Name, bit, name)                                  \
@@ -102,7 +102,7 @@ TEST(ForwardTables, LayerBitsAreDistinctAndNamedInBitOrder) {
     EXPECT_EQ(scene::layerNames(all).size(), 10u);
 }
 
-TEST(ForwardTables, DebugViewsRoundTripTheirNamesInValueOrder) {
+TEST(ShadingTables, DebugViewsRoundTripTheirNamesInValueOrder) {
     uint32_t expected = 0;
     for (const options::DebugViewRow& row : options::kDebugViews) {
         EXPECT_EQ(uint32_t(row.view), expected++) << row.name << ": kDebugView values count up from none";

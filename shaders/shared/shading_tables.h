@@ -1,7 +1,8 @@
-// The forward pass's tables, each declared once here and read by GLSL and C++ alike. A table is an
-// X-macro: it applies its argument, a macro X, to each of its rows.
+// The shading's tables (the material programs of both paths: the forward programs and the
+// visibility path's compute shading), each declared once here and read by GLSL and C++ alike. A
+// table is an X-macro: it applies its argument, a macro X, to each of its rows.
 //
-//   CANDELA_CORE_TEXTURES(X)   the core material's texture slots (descriptor set 1, the forward
+//   CANDELA_CORE_TEXTURES(X)   the core material's texture slots (descriptor set 1 of the shading
 //                              programs), X(NAME, field, slot, binding, normalMap)
 //   CANDELA_LAYER_TEXTURES(X)  the layer texture slots (set 1 of the layered program, after its
 //                              MaterialLayers buffer at binding 5), X(NAME, field, slot, binding, normalMap)
@@ -12,10 +13,10 @@
 // GLSL sampler at `binding` (shading/resources.glsl); `normalMap`: it holds a tangent-space normal
 // map (a flat normal when absent, its mips filtered as normals). From the tables come, besides:
 // scene::Material's texture fields and kCoreTextureSlots / kLayerTextureSlots (scene/scene.h, which
-// scene::GpuScene's uploads and ForwardPass's descriptor writes walk), scene::MaterialLayer and
-// scene::layerNames, passes::DebugView and its names (options/debug_view.h), and the constants below.
-#ifndef CANDELA_SHARED_FORWARD_TABLES_H
-#define CANDELA_SHARED_FORWARD_TABLES_H
+// scene::GpuScene's uploads and the scene bindings' descriptor writes walk), scene::MaterialLayer and
+// scene::layerNames, options::DebugView and its names (options/debug_view.h), and the constants below.
+#ifndef CANDELA_SHARED_SHADING_TABLES_H
+#define CANDELA_SHARED_SHADING_TABLES_H
 
 #ifdef __cplusplus
 #include <cstdint>
@@ -94,7 +95,7 @@
 
 // Constants named after the rows, in both languages (global in C++, like the macros they replace):
 // CANDELA_TEX_BASE_COLOR … (slots), CANDELA_LAYER_TEX_SPECULAR … (layer slots), CANDELA_LAYER_SPECULAR …
-// (bits); GLSL alone has CANDELA_DEBUG_NONE … (C++ has passes::DebugView).
+// (bits); GLSL alone has CANDELA_DEBUG_NONE … (C++ has options::DebugView).
 #ifdef __cplusplus
 #define CANDELA_TABLE_CONSTANT(type, name, value) inline constexpr type name = value;
 #define CANDELA_TABLE_INT int
