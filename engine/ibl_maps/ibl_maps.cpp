@@ -350,32 +350,51 @@ void IblMaps::frameCompleted(const RenderGraph& graph) {
     if (!mCacheDir.empty() && !mLutPending) writeCache();
 }
 
+IblFrame IblMaps::lastFrame() const {
+    if (!hasEnvironment()) return {};
+    const IblFrame::Maps maps = mLastFrame.precompute                 ? IblFrame::Maps::Computed
+                                : mLastFrame.source == MapsSource::Cache ? IblFrame::Maps::FromCache
+                                                                         : IblFrame::Maps::Kept;
+    return {.maps = maps,
+            .lutComputed = mLastFrame.lut,
+            .brightTexels = maps == IblFrame::Maps::Computed ? mBrightCount : 0,
+            .irradiance = mQuality.irradiance,
+            .sheen = mQuality.sheen};
+}
+
 std::vector<std::string> IblMaps::explanation() const {
+    const IblFrame frame = lastFrame();
     std::vector<std::string> lines;
-    if (!hasEnvironment()) {
+    if (frame.maps == IblFrame::Maps::None) {
         lines.emplace_back("left out: image-based lighting (no environment): no precompute, no skybox, no IBL shading");
         return lines;
     }
     lines.push_back("ibl: environment '" + mEnvironmentName + "' (" + std::to_string(mEquirectWidth) + "x" +
                     std::to_string(mEquirectHeight) + "), " + mQuality.canonical());
-    if (mLastFrame.precompute) {
-        lines.emplace_back("ibl: maps computed by this frame's precompute passes");
-        lines.push_back(mBrightCount ? "ibl: " + std::to_string(mBrightCount) +
-                                           " bright texels summed by the filters, not sampled (--ibl-bright-texels)"
-                                     : "left out: bright-texel sums (no texel over " +
-                                           std::to_string(int(kBrightTexelFactor)) + "x the mean luminance, or --ibl-bright-texels 0)");
+    switch (frame.maps) {
+        case IblFrame::Maps::Computed:
+            lines.emplace_back("ibl: maps computed by this frame's precompute passes");
+            lines.push_back(frame.brightTexels
+                                ? "ibl: " + std::to_string(frame.brightTexels) +
+                                      " bright texels summed by the filters, not sampled (--ibl-bright-texels)"
+                                : "left out: bright-texel sums (no texel over " + std::to_string(int(kBrightTexelFactor)) +
+                                      "x the mean luminance, or --ibl-bright-texels 0)");
+            break;
+        case IblFrame::Maps::FromCache:
+            lines.push_back("left out: IBL precompute (maps loaded from the cache " + mCacheFile.string() + ")");
+            break;
+        case IblFrame::Maps::Kept:
+        case IblFrame::Maps::None:
+            lines.emplace_back("left out: IBL precompute (environment and quality unchanged; maps imported)");
+            break;
     }
-    else if (mLastFrame.source == MapsSource::Cache)
-        lines.push_back("left out: IBL precompute (maps loaded from the cache " + mCacheFile.string() + ")");
-    else
-        lines.emplace_back("left out: IBL precompute (environment and quality unchanged; maps imported)");
-    if (!mLastFrame.lut) lines.emplace_back("left out: BRDF LUT pass (LUT settings unchanged)");
-    lines.emplace_back(mQuality.irradiance == IrradianceMode::Sh9
+    if (!frame.lutComputed) lines.emplace_back("left out: BRDF LUT pass (LUT settings unchanged)");
+    lines.emplace_back(frame.irradiance == IrradianceMode::Sh9
                            ? "left out: irradiance cube (irradiance from SH9; --irradiance cube)"
                            : "left out: SH9 projection (irradiance from the cube; --irradiance sh9)");
-    lines.emplace_back(mQuality.sheen ? "ibl: sheen cube (Charlie-prefiltered, " + std::to_string(sheenFaceSize(mQuality)) +
-                                            " texels) for the scene's KHR_materials_sheen materials"
-                                      : "left out: sheen cube (no material has a sheen)");
+    lines.emplace_back(frame.sheen ? "ibl: sheen cube (Charlie-prefiltered, " + std::to_string(sheenFaceSize(mQuality)) +
+                                         " texels) for the scene's KHR_materials_sheen materials"
+                                   : "left out: sheen cube (no material has a sheen)");
     if (!mCacheNote.empty()) lines.push_back("ibl cache: " + mCacheNote);
     return lines;
 }

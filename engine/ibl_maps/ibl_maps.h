@@ -45,6 +45,20 @@ namespace candela::ibl {
 // Where the maps of the current environment came from.
 enum class MapsSource : uint8_t { None, Pending, Computed, Cache };
 
+// What a frame did with the maps (IblMaps::lastFrame); the IBL lines of --explain are made from it.
+struct IblFrame {
+    // How the frame had its maps: none (no environment: no precompute, no skybox, no IBL shading),
+    // computed by its own precompute passes, loaded from the cache file, or kept from an earlier
+    // frame (environment and quality unchanged: imported, no precompute pass declared).
+    enum class Maps : uint8_t { None, Computed, FromCache, Kept };
+    Maps maps = Maps::None;
+    bool lutComputed = false;   // false: the BRDF LUT pass left out (its settings unchanged)
+    uint32_t brightTexels = 0;  // Computed: texels the filters summed instead of sampling (0: none)
+    IrradianceMode irradiance = IrradianceMode::Cube;  // the other mode's pass is left out
+    bool sheen = false;  // the sheen cube made (false: left out, no material has a sheen)
+    bool operator==(const IblFrame&) const = default;
+};
+
 class IblMaps {
 public:
     explicit IblMaps(vk::Context& context);
@@ -95,7 +109,9 @@ public:
     // and tests. Waits for the GPU. Precondition: hasEnvironment() and nothing pending.
     std::vector<CachedImage> readBack();
 
-    // What the last addToGraph did and left out, one line each (`--explain`).
+    // What the last addToGraph did and left out (none before the first, or without an environment).
+    IblFrame lastFrame() const;
+    // lastFrame() in words, one line each (`--explain`), with the environment and the cache file.
     std::vector<std::string> explanation() const;
     // The name of the specular cube in a graph the maps were added to (a frame lit by them declares it).
     static constexpr const char* kSpecularName = "ibl_specular";

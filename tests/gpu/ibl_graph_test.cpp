@@ -1,8 +1,9 @@
-// What the frame graph leaves out, asserted from the compiled graph (never from timings): no
-// environment → no precompute, no skybox, no IBL shading; an unchanged environment → no precompute;
-// changing only how maps are read (rotation, intensity) → no precompute; changing the quality →
-// precompute without the LUT when the LUT's settings did not change; the on-disk cache replaces
-// the precompute of a later run and a corrupt cache file is recomputed.
+// What the frame graph leaves out, asserted from the compiled graph and from the maps' record of
+// the frame (ibl::IblFrame), never from timings or the --explain words: no environment → no
+// precompute, no skybox, no IBL shading; an unchanged environment → no precompute; changing only
+// how maps are read (rotation, intensity) → no precompute; changing the quality → precompute
+// without the LUT when the LUT's settings did not change; the on-disk cache replaces the
+// precompute of a later run and a corrupt cache file is recomputed.
 
 #include "gpu_test.h"
 
@@ -67,7 +68,8 @@ TEST_F(IblGraphTest, NoEnvironmentRunsNoPrecomputeNoSkyboxNoIblShading) {
     EXPECT_FALSE(anyIbl(passes));
     EXPECT_FALSE(has(passes, "skybox"));
     EXPECT_FALSE(renderer.lastGraph().findPass("skybox").has_value()) << "not even declared";
-    EXPECT_TRUE(explains(renderer, "left out: image-based lighting"));
+    EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl::IblFrame::Maps::None);
+    EXPECT_TRUE(explains(renderer, "left out: image-based lighting (no environment)"));
     EXPECT_TRUE(explains(renderer, "variants: pbr ×49")) << "the forward variant without IBL work";
 }
 
@@ -80,6 +82,11 @@ TEST_F(IblGraphTest, PrecomputeRunsOnceThenOnlyWhenEnvironmentOrQualityChanges) 
         EXPECT_TRUE(has(passes, name)) << name;
     EXPECT_FALSE(has(passes, "ibl_irradiance_sh"));
     EXPECT_EQ(renderer.lastPlan()->sky, SkyPlacement::Tonemap);
+    const ibl::IblFrame first = renderer.iblMaps().lastFrame();
+    EXPECT_EQ(first.maps, ibl::IblFrame::Maps::Computed);
+    EXPECT_TRUE(first.lutComputed);
+    EXPECT_EQ(first.irradiance, ibl::IrradianceMode::Cube);
+    EXPECT_FALSE(first.sheen) << "no material has a sheen";
     EXPECT_TRUE(explains(renderer, "ibl: maps computed by this frame's precompute passes"));
     EXPECT_TRUE(explains(renderer, "variants: pbr+ibl-cube ×49"));
 
@@ -89,7 +96,8 @@ TEST_F(IblGraphTest, PrecomputeRunsOnceThenOnlyWhenEnvironmentOrQualityChanges) 
     EXPECT_FALSE(anyIbl(passes));
     for (const graph::PassDecl& pass : renderer.lastGraph().declaration().passes)
         EXPECT_NE(pass.name.rfind("ibl_", 0), 0u) << pass.name;
-    EXPECT_TRUE(explains(renderer, "left out: IBL precompute (environment and quality unchanged"));
+    EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl::IblFrame::Maps::Kept);
+    EXPECT_FALSE(renderer.iblMaps().lastFrame().lutComputed);
 
     // Reading the maps differently changes no map.
     s.ibl.rotationDegrees = 40.0f;
@@ -104,7 +112,8 @@ TEST_F(IblGraphTest, PrecomputeRunsOnceThenOnlyWhenEnvironmentOrQualityChanges) 
     passes = ranPasses(renderer);
     EXPECT_TRUE(has(passes, "ibl_prefilter"));
     EXPECT_FALSE(has(passes, "ibl_brdf_lut"));
-    EXPECT_TRUE(explains(renderer, "left out: BRDF LUT pass"));
+    EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl::IblFrame::Maps::Computed);
+    EXPECT_FALSE(renderer.iblMaps().lastFrame().lutComputed);
 
     // Another environment (new content): precompute, still no LUT.
     scene::Environment other = scene::makeProceduralSky({.width = 64, .height = 32, .sunAzimuthDegrees = 120.0f});
@@ -120,7 +129,7 @@ TEST_F(IblGraphTest, PrecomputeRunsOnceThenOnlyWhenEnvironmentOrQualityChanges) 
     passes = ranPasses(renderer);
     EXPECT_TRUE(has(passes, "ibl_irradiance_sh"));
     EXPECT_FALSE(has(passes, "ibl_irradiance_cube"));
-    EXPECT_TRUE(explains(renderer, "left out: irradiance cube"));
+    EXPECT_EQ(renderer.iblMaps().lastFrame().irradiance, ibl::IrradianceMode::Sh9);
     EXPECT_TRUE(explains(renderer, "variants: pbr+ibl-sh9 ×49"));
 
     // Environment off again: nothing of IBL remains.
@@ -160,7 +169,7 @@ TEST_F(IblGraphTest, CacheReplacesThePrecomputeOfALaterRunAndACorruptFileIsRecom
         Renderer renderer(context());
         const std::vector<uint8_t> cached = renderer.capture(s).rgba8;
         EXPECT_FALSE(anyIbl(ranPasses(renderer))) << "maps loaded from the cache";
-        EXPECT_TRUE(explains(renderer, "maps loaded from the cache"));
+        EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl::IblFrame::Maps::FromCache);
         EXPECT_EQ(renderer.iblMaps().source(), ibl::MapsSource::Cache);
         EXPECT_TRUE(cached == computed) << "the cached maps render exactly like the computed ones";
         file = renderer.iblMaps().cacheFile();
@@ -175,7 +184,8 @@ TEST_F(IblGraphTest, CacheReplacesThePrecomputeOfALaterRunAndACorruptFileIsRecom
         Renderer renderer(context());
         const std::vector<uint8_t> recomputed = renderer.capture(s).rgba8;
         EXPECT_TRUE(has(ranPasses(renderer), "ibl_prefilter"));
-        EXPECT_TRUE(explains(renderer, "ibl cache: "));
+        EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl::IblFrame::Maps::Computed);
+        EXPECT_TRUE(explains(renderer, "ibl cache: ")) << "why the file was not used";
         EXPECT_TRUE(recomputed == computed);
         std::string reason;
         EXPECT_TRUE(ibl::readCacheFile(file, {scene::contentHash(mSky), s.iblQuality.canonical()}, &reason).has_value())
