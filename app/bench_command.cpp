@@ -156,8 +156,8 @@ nlohmann::ordered_json benchJson(const BenchOptions& options, const scene::Scene
     out["height"] = settings.height;
     out["frames"] = options.frames;
     out["sceneLoadMs"] = loadMs;  // reading and decoding the file, CPU
-    out["geometryDecompressionMs"] = scene.decompression.milliseconds;  // part of it: Draco and meshopt
-    const scene::Scene::TextureDecoding& textures = scene.textureDecoding;
+    out["geometryDecompressionMs"] = scene.report.decompression.milliseconds;  // part of it: Draco and meshopt
+    const scene::SceneLoadReport::TextureDecoding& textures = scene.report.textureDecoding;
     out["textures"] = {{"decodeMs", textures.milliseconds},  // part of it: PNG, JPEG, WebP, KTX2 to RGBA8
                        {"formats", textures.formats},
                        {"encodedBytes", textures.encodedBytes},
@@ -212,11 +212,11 @@ nlohmann::ordered_json benchJson(const BenchOptions& options, const scene::Scene
                     {"stateChanges", drawStats.stateChanges()},
                     {"pipelineBinds", drawStats.pipelineBinds},
                     {"descriptorBinds", drawStats.descriptorBinds}};
-    out["geometry"] = {{"meshes", scene.geometry.meshes},
-                       {"simplifiedMeshes", scene.geometry.simplifiedMeshes},
-                       {"indexBytes", scene.geometry.indexBytes},
-                       {"lodIndexBytes", scene.geometry.lodIndexBytes},
-                       {"prepareMs", scene.geometry.milliseconds}};
+    out["geometry"] = {{"meshes", scene.report.geometry.meshes},
+                       {"simplifiedMeshes", scene.report.geometry.simplifiedMeshes},
+                       {"indexBytes", scene.report.geometry.indexBytes},
+                       {"lodIndexBytes", scene.report.geometry.lodIndexBytes},
+                       {"prepareMs", scene.report.geometry.milliseconds}};
     if (pose.animated())
         out["animation"] = {{"playing", pose.playing().size()}, {"evaluateMedianMs", median(animationMs)},
                             {"evaluateMaxMs", *std::max_element(animationMs.begin(), animationMs.end())}};
@@ -236,7 +236,7 @@ void printBench(const BenchOptions& options, const scene::Scene& scene, const sc
     const passes::DrawStats& drawStats = m.drawStats;
     const double calibration = median(calibrationMs), calibrationGpu = median(m.calibrationGpuMs);
     const Spread calibrationSpread = spreadOf(calibrationMs), frameSpread = spreadOf(frameMs);
-    const scene::Scene::TextureDecoding& textures = scene.textureDecoding;
+    const scene::SceneLoadReport::TextureDecoding& textures = scene.report.textureDecoding;
     const vk::MsaaChoice msaa = renderer.msaa(settings.msaa);
     const bool gpuUnreliable = out.contains("gpuMsUnreliable");
     const char* mark = gpuUnreliable ? "*" : "";
@@ -254,10 +254,10 @@ void printBench(const BenchOptions& options, const scene::Scene& scene, const sc
                     textures.milliseconds, formatBytes(textures.encodedBytes).c_str(), formatBytes(textures.decodedBytes).c_str(),
                     formatBytes(renderer.sceneTextureBytes()).c_str());
     }
-    if (const auto& d = scene.decompression; d.dracoPrimitives + d.meshoptViews > 0)
+    if (const auto& d = scene.report.decompression; d.dracoPrimitives + d.meshoptViews > 0)
         std::printf("  geometry decompression: %.2f ms (%zu Draco primitives, %zu meshopt bufferViews)\n",
                     d.milliseconds, d.dracoPrimitives, d.meshoptViews);
-    const auto& g = scene.geometry;
+    const auto& g = scene.report.geometry;
     std::printf("  geometry:    %zu meshes, %zu with levels of detail: +%.1f%% index memory (%s full, %s levels), "
                 "prepared in %.1f ms\n",
                 g.meshes, g.simplifiedMeshes, g.indexBytes ? 100.0 * double(g.lodIndexBytes) / double(g.indexBytes) : 0.0,

@@ -292,8 +292,8 @@ int runQualityReport(const QualityReportOptions& options) {
     std::list<scene::Scene> loaded;  // the renderer keeps pointing at the last scene it drew
     for (const std::string& entry : options.scenes) {
         scene::Scene& scene = loaded.emplace_back(entry == "default" ? scene::makeSphereGrid() : scene::loadGltf(entry));
-        for (const std::string& warning : scene.warnings) log::warn(entry + ": " + warning);
-        for (const std::string& note : scene.notes) log::info(entry + ": " + note);
+        for (const std::string& warning : scene.report.warnings) log::warn(entry + ": " + warning);
+        for (const std::string& note : scene.report.notes) log::info(entry + ": " + note);
     }
 
     session.start();

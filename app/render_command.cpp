@@ -104,14 +104,14 @@ void printWritten(Run& run, const std::string& out, const CapturedFrame& frame, 
 // `r` with what it took. Throws what the renderer or the writers throw.
 void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progress) {
     const RenderOptions& options = run.options;
-    r.extensions = scene.extensionsUsed;
-    r.imageDecodeMs = scene.textureDecoding.milliseconds;
-    r.decompressionMs = scene.decompression.milliseconds;
-    r.geometryMs = scene.geometry.milliseconds;
-    for (const std::string& warning : scene.warnings) log::warn(scene.source + ": " + warning);
-    for (const std::string& note : scene.notes) log::info(scene.source + ": " + note);
-    r.warnings = scene.warnings;
-    r.notes = scene.notes;
+    r.extensions = scene.report.extensionsUsed;
+    r.imageDecodeMs = scene.report.textureDecoding.milliseconds;
+    r.decompressionMs = scene.report.decompression.milliseconds;
+    r.geometryMs = scene.report.geometry.milliseconds;
+    for (const std::string& warning : scene.report.warnings) log::warn(scene.source + ": " + warning);
+    for (const std::string& note : scene.report.notes) log::info(scene.source + ": " + note);
+    r.warnings = scene.report.warnings;
+    r.notes = scene.report.notes;
     log::Capture capture;  // what the renderer logs from here on belongs to this scene
     warnAnimationConflicts(options, scene);  // once per scene, whatever the variants
 

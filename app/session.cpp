@@ -49,8 +49,8 @@ std::optional<scene::Environment> loadEnvironment(const EnvironmentChoice& choic
     if (choice.kind == EnvironmentChoice::Kind::None) return std::nullopt;
     scene::Environment env =
         choice.kind == EnvironmentChoice::Kind::Sky ? scene::makeProceduralSky() : scene::loadEnvironment(choice.file);
-    for (const std::string& warning : env.warnings) log::warn(warning);
-    for (const std::string& note : env.notes) log::info(note);
+    for (const std::string& warning : env.report.warnings) log::warn(warning);
+    for (const std::string& note : env.report.notes) log::info(note);
     return env;
 }
 
@@ -62,8 +62,8 @@ scene::Scene readScene(const SceneOptions& options, const std::string& file) {
 
 scene::Scene loadScene(const SceneOptions& options) {
     scene::Scene scene = readScene(options, options.scene);
-    for (const std::string& warning : scene.warnings) log::warn(options.scene + ": " + warning);
-    for (const std::string& note : scene.notes) log::info(options.scene + ": " + note);
+    for (const std::string& warning : scene.report.warnings) log::warn(options.scene + ": " + warning);
+    for (const std::string& note : scene.report.notes) log::info(options.scene + ": " + note);
     if (!options.variant.empty()) scene::selectVariant(scene, scene::variantIndex(scene, options.variant));
     return scene;
 }

@@ -67,7 +67,7 @@ Environment loadEnvironment(const std::filesystem::path& path, const Environment
         throw UserError(source + ": unknown environment format (expected a Radiance .hdr or an OpenEXR .exr file)");
     }
     if (env.width != 2 * env.height)
-        env.warnings.push_back(source + ": " + std::to_string(env.width) + "x" + std::to_string(env.height) +
+        env.report.warnings.push_back(source + ": " + std::to_string(env.width) + "x" + std::to_string(env.height) +
                                " is not 2:1; it is mapped as equirectangular anyway");
     sanitizeEnvironment(env);
     return env;
@@ -100,7 +100,7 @@ uint32_t sanitizeEnvironment(Environment& env) {
     if (texels > 0) {
         char brightestText[32];
         std::snprintf(brightestText, sizeof brightestText, "%g", double(brightest));
-        env.warnings.push_back(env.source + ": replaced " + std::to_string(texels) + " texel" +
+        env.report.warnings.push_back(env.source + ": replaced " + std::to_string(texels) + " texel" +
                                (texels == 1 ? "" : "s") + " holding NaN, Inf or negative values (" +
                                std::to_string(nans) + " NaN and " + std::to_string(negatives) +
                                " negative values set to 0, " + std::to_string(infinities) + " +Inf set to " +

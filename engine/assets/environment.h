@@ -8,8 +8,10 @@
 // sanitizing: docs/environments.md.
 //
 //     scene::Environment env = scene::loadEnvironment("venice_sunset_1k.hdr");
-//     for (const std::string& w : env.warnings) log::warn(w);
+//     for (const std::string& w : env.report.warnings) log::warn(w);
 //     const float* texel = env.texel(x, y);  // linear R, G, B
+
+#include "core/load_report.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -27,8 +29,7 @@ struct Environment {
     uint32_t height = 0;                 // rows (180° of elevation, top row = +Y)
     std::vector<float> rgb;              // linear RGB, width × height × 3 floats, top row first
     uint32_t replacedTexels = 0;         // texels that had a NaN, ±Inf or negative channel
-    std::vector<std::string> warnings;   // one line each, "SOURCE: ...", for the front end to print
-    std::vector<std::string> notes;      // facts that change nothing the file intends, for --verbose
+    LoadReport report;                   // its lines begin "SOURCE: "
 
     size_t texelCount() const { return size_t(width) * height; }
     // The three floats of texel (x, y), y = 0 the top row. Preconditions: x < width, y < height.

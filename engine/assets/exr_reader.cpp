@@ -288,13 +288,13 @@ Environment decodeExr(std::span<const uint8_t> bytes, const std::string& source,
     if (choice.parts > 1) {
         const char* name = nullptr;
         const std::string named = exr_get_name(ctx, part, &name) == EXR_ERR_SUCCESS && name && *name ? " '" + oneLine(name) + "'" : "";
-        env.notes.push_back(source + ": " + std::to_string(choice.parts) + "-part EXR: part " + std::to_string(part) + named +
+        env.report.notes.push_back(source + ": " + std::to_string(choice.parts) + "-part EXR: part " + std::to_string(part) + named +
                             " used (the first with " + (choice.colour.grey ? "Y" : "R, G, B") + ")");
     }
     const bool covered = data.minX <= display.minX && data.minY <= display.minY && data.maxX >= display.maxX &&
                          data.maxY >= display.maxY;
     if (!covered)
-        env.notes.push_back(source + ": the data window " + data.text() + " does not cover the display window " +
+        env.report.notes.push_back(source + ": the data window " + data.text() + " does not cover the display window " +
                             display.text() + "; the rest is black");
 
     try {

@@ -70,8 +70,8 @@ ImageHeader texturesHeader(std::span<const uint8_t> bytes, uint32_t maxDimension
 
 // Forwards a decoder's notes and warnings to the load's log, naming the image.
 void report(const LoadContext& ctx, const textures::DecodedTexture& texture, const std::string& what) {
-    for (const std::string& note : texture.notes) ctx.note(what + ": " + note);
-    for (const std::string& warning : texture.warnings) ctx.warn(what + ": " + warning);
+    for (const std::string& note : texture.report.notes) ctx.note(what + ": " + note);
+    for (const std::string& warning : texture.report.warnings) ctx.warn(what + ": " + warning);
 }
 
 }  // namespace
@@ -212,7 +212,7 @@ DecodedImage& ImageTable::decoded(int index) {
     const std::span<const uint8_t> bytes = encoded(index, what);
     DecodedImage& out = mDecoded[index] = decodeImage(mCtx, bytes, what, mOptions.maxImageDimension);
     out.encodedBytes = bytes.size();
-    Scene::TextureDecoding& stats = mScene.textureDecoding;
+    SceneLoadReport::TextureDecoding& stats = mScene.report.textureDecoding;
     stats.milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++stats.formats[out.format];
     stats.encodedBytes += bytes.size();

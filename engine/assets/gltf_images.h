@@ -29,7 +29,7 @@ struct DecodedImage {
     std::vector<uint8_t> rgba8;              // width × height × 4, top row first
     std::vector<std::vector<uint8_t>> mips;  // the file's own levels 1… (KTX2), as Scene::Image::mips
     std::optional<bool> fileSrgb;            // the transfer function a KTX2 file declares
-    std::string format;                      // as Scene::TextureDecoding::formats names it
+    std::string format;                      // as SceneLoadReport::TextureDecoding::formats names it
     uint64_t encodedBytes = 0;               // of the file (or buffer view) it was decoded from
 };
 

@@ -130,11 +130,11 @@ void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, cons
     gltf::ParsedFile parsed = gltf::parseGltf(ctx, bytes, path, options.maxImageDimension);
     tinygltf::Model& model = parsed.model;
     checkAsset(ctx, model);
-    scene.extensionsUsed = model.extensionsUsed;
+    scene.report.extensionsUsed = model.extensionsUsed;
     const auto start = std::chrono::steady_clock::now();
-    scene.decompression.meshoptViews = gltf::decodeMeshoptBufferViews(ctx, model);  // before anything reads a view
-    scene.decompression.dracoPrimitives = gltf::decodeDracoPrimitives(ctx, model, parsed.dracoIndices);  // or a mesh
-    scene.decompression.milliseconds =
+    scene.report.decompression.meshoptViews = gltf::decodeMeshoptBufferViews(ctx, model);  // before anything reads a view
+    scene.report.decompression.dracoPrimitives = gltf::decodeDracoPrimitives(ctx, model, parsed.dracoIndices);  // or a mesh
+    scene.report.decompression.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     gltf::loadSamplers(ctx, model, scene);
     gltf::ImageTable images(ctx, model, std::move(parsed.uriImages), options, scene);
@@ -152,7 +152,7 @@ Scene loadGltfFromMemory(std::span<const uint8_t> bytes, const std::filesystem::
                          const LoadOptions& options) {
     Scene scene;
     scene.source = path.string();
-    const gltf::LoadContext ctx{path.string(), &scene.warnings, &scene.notes};
+    const gltf::LoadContext ctx{path.string(), &scene.report.warnings, &scene.report.notes};
     try {
         loadInto(ctx, bytes, path, options, scene);
     } catch (const std::bad_alloc&) {

@@ -257,7 +257,7 @@ Environment decodeHdr(std::span<const uint8_t> bytes, const std::string& source,
     if (header.exposure != 1.0) {
         char exposure[32];
         std::snprintf(exposure, sizeof exposure, "%g", header.exposure);
-        env.warnings.push_back(source + ": EXPOSURE=" + exposure +
+        env.report.warnings.push_back(source + ": EXPOSURE=" + exposure +
                                " in the header is ignored (texels are used as stored, as other viewers do)");
     }
     return env;

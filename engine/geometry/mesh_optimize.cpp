@@ -79,7 +79,7 @@ void reorderVertices(Scene& scene, uint32_t base, uint32_t count, std::vector<ui
 
 void prepareGeometry(Scene& scene, const LodChainSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
-    Scene::GeometryPreparation& report = scene.geometry;
+    SceneLoadReport::GeometryPreparation& report = scene.report.geometry;
     const std::vector<Mesh> meshes = distinctMeshes(scene);
     report.meshes = meshes.size();
     for (const Mesh& mesh : meshes) {

@@ -9,7 +9,7 @@
 namespace candela::scene {
 
 // Prepares every distinct mesh of `scene` (an index range the draws use) and records what it did
-// in scene.geometry:
+// in scene.report.geometry:
 //  - its triangles reordered for the vertex cache, then against overdraw — except a mesh drawn
 //    with an alpha-blended material (the order of its triangles is the order they blend in);
 //  - its levels of detail appended to scene.indices and listed in scene.lodChains, each draw of it

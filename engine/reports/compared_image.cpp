@@ -86,7 +86,7 @@ ComparedImage readExr(const std::filesystem::path& path) {
     // The environment reader's warnings are about environments (an aspect other than 2:1); only
     // the values it replaced matter here.
     if (exr.replacedTexels)
-        image.warnings.push_back(path.string() + ": " + std::to_string(exr.replacedTexels) +
+        image.report.warnings.push_back(path.string() + ": " + std::to_string(exr.replacedTexels) +
                                  " pixels held NaN, infinite or negative values, compared as 0 (+infinity as the "
                                  "largest finite value, at least 65504)");
     return image;

@@ -3,6 +3,7 @@
 // OpenEXR (linear radiance: HDR-ꟻLIP). Every failure is a UserError "PATH: problem", one line;
 // nothing is read out of bounds and no absurd declared size is allocated.
 
+#include "core/load_report.h"
 #include "reports/flip.h"
 
 #include <cstdint>
@@ -33,7 +34,7 @@ struct ComparedImage {
     // and other channels ignored) with NaN, ±∞ and negatives replaced as environments are
     // (scene::sanitizeEnvironment).
     RgbImage linear;
-    std::vector<std::string> warnings;  // "PATH: ..." lines, e.g. the values replaced
+    LoadReport report;  // "PATH: ..." lines, e.g. the values replaced (warnings)
 };
 
 // Reads a PNG or EXR file, told apart by the extension (the content must match it).

@@ -56,7 +56,7 @@ DiffPair diffImages(const std::filesystem::path& reference, const std::filesyste
         pair.message = e.what();
         return pair;
     }
-    for (ComparedImage* image : {&ref, &tst}) pair.warnings.insert(pair.warnings.end(), image->warnings.begin(), image->warnings.end());
+    for (ComparedImage* image : {&ref, &tst}) pair.warnings.insert(pair.warnings.end(), image->report.warnings.begin(), image->report.warnings.end());
     if (ref.width != tst.width || ref.height != tst.height) {
         pair.status = DiffStatus::SizeMismatch;
         pair.message = "reference " + std::to_string(ref.width) + "x" + std::to_string(ref.height) + ", test " +

@@ -5,6 +5,7 @@
 // clockwise front faces.
 
 #include "animation/node_tree.h"
+#include "core/load_report.h"
 #include "shared/shading_tables.h"
 
 #include <glm/glm.hpp>
@@ -53,7 +54,7 @@ struct Image {
     // least 1); empty when the file has none and the mips are generated on upload.
     std::vector<std::vector<uint8_t>> mips;
     bool srgb = false;           // true when used as base colour or emissive (sRGB-encoded)
-    std::string format;          // what it was decoded from (Scene::TextureDecoding::formats); "" when made in memory
+    std::string format;          // what it was decoded from (SceneLoadReport::TextureDecoding::formats); "" when made in memory
     uint64_t encodedBytes = 0;   // bytes of that encoded file (a second use of one file counts them again)
 };
 
@@ -374,6 +375,38 @@ struct Camera {
     int32_t source = -1;       // the glTF camera it was loaded from; -1: none
 };
 
+// What loading a scene met (LoadReport: its warnings and notes) and what it cost.
+struct SceneLoadReport : LoadReport {
+    // The file's extensionsUsed, in its order (empty for built-in scenes).
+    std::vector<std::string> extensionsUsed;
+    // What the file's compressed geometry cost to load (KHR_draco_mesh_compression,
+    // EXT_meshopt_compression): wall time of the decoding, and what was decoded. Zero otherwise.
+    struct Decompression {
+        double milliseconds = 0.0;
+        size_t dracoPrimitives = 0;
+        size_t meshoptViews = 0;
+    } decompression;
+    // What decoding the images the materials use cost (PNG, JPEG, WebP, KTX2): wall time, the
+    // files decoded by format name ("PNG", "WebP", "KTX2 ETC1S", "KTX2 UASTC+zstd", …), their
+    // encoded bytes and the RGBA8 bytes they became (every level a KTX2 file stores included).
+    struct TextureDecoding {
+        double milliseconds = 0.0;
+        std::map<std::string, size_t> formats;
+        uint64_t encodedBytes = 0;
+        uint64_t decodedBytes = 0;
+    } textureDecoding;
+    // What preparing the geometry for drawing did (geometry/mesh_optimize.h): the distinct meshes
+    // (index ranges the draws use), how many got a chain of levels of detail, the index memory of
+    // their full detail and of the chains' further levels, and the wall time it took.
+    struct GeometryPreparation {
+        size_t meshes = 0;
+        size_t simplifiedMeshes = 0;
+        uint64_t indexBytes = 0;
+        uint64_t lodIndexBytes = 0;
+        double milliseconds = 0.0;
+    } geometry;
+};
+
 struct Scene {
     std::string source;  // file path, or "built-in: NAME"
     std::vector<Vertex> vertices;
@@ -408,39 +441,8 @@ struct Scene {
     // The direction (θ°, φ°) the orbit camera frames this scene from by default, when it has one of
     // its own (the built-in sphere grid, a chart: head-on); none: scene::defaultOrbitAngles.
     std::optional<glm::vec2> framingAngles;
-    // Met while loading, one line each: problems that make the render differ from what the file
-    // intends (printed), and facts the glTF-Validator reports as information, such as degenerate
-    // triangles (printed with --verbose).
-    std::vector<std::string> warnings;
-    std::vector<std::string> notes;
-    // The file's extensionsUsed, in its order (empty for built-in scenes).
-    std::vector<std::string> extensionsUsed;
-    // What the file's compressed geometry cost to load (KHR_draco_mesh_compression,
-    // EXT_meshopt_compression): wall time of the decoding, and what was decoded. Zero otherwise.
-    struct Decompression {
-        double milliseconds = 0.0;
-        size_t dracoPrimitives = 0;
-        size_t meshoptViews = 0;
-    } decompression;
-    // What decoding the images the materials use cost (PNG, JPEG, WebP, KTX2): wall time, the
-    // files decoded by format name ("PNG", "WebP", "KTX2 ETC1S", "KTX2 UASTC+zstd", …), their
-    // encoded bytes and the RGBA8 bytes they became (every level a KTX2 file stores included).
-    struct TextureDecoding {
-        double milliseconds = 0.0;
-        std::map<std::string, size_t> formats;
-        uint64_t encodedBytes = 0;
-        uint64_t decodedBytes = 0;
-    } textureDecoding;
-    // What preparing the geometry for drawing did (geometry/mesh_optimize.h): the distinct meshes
-    // (index ranges the draws use), how many got a chain of levels of detail, the index memory of
-    // their full detail and of the chains' further levels, and the wall time it took.
-    struct GeometryPreparation {
-        size_t meshes = 0;
-        size_t simplifiedMeshes = 0;
-        uint64_t indexBytes = 0;
-        uint64_t lodIndexBytes = 0;
-        double milliseconds = 0.0;
-    } geometry;
+    // What loading met and cost. Not the model: nothing is drawn from it.
+    SceneLoadReport report;
 };
 
 }  // namespace candela::scene

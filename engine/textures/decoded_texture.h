@@ -2,6 +2,8 @@
 // What the texture decoders of this folder produce: RGBA8 levels, level 0 first, and the notes a
 // decoder has for the user (an animated WebP drawn from its first frame, a KTX2 orientation flipped).
 
+#include "core/load_report.h"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -18,8 +20,7 @@ struct DecodedTexture {
     // Level 0 and, for files that carry them (KTX2), the file's own smaller levels: each level's
     // size is the previous one's halved (⌊size / 2⌋, at least 1).
     std::vector<TextureLevel> levels;
-    std::vector<std::string> notes;     // one line each, without the file's name
-    std::vector<std::string> warnings;  // one line each: the file breaks a rule but is drawn
+    LoadReport report;  // its lines without the file's name (the caller adds it)
 };
 
 }  // namespace candela::textures

@@ -225,14 +225,14 @@ DecodedTexture decodeKtx2(std::span<const uint8_t> bytes, uint32_t maxDimension)
     DecodedTexture out;
     const bool flip = info.orientation.size() >= 2 && info.orientation[1] == 'u';
     if (!info.orientation.empty() && info.orientation != "rd" && info.orientation != "ru")
-        out.warnings.push_back("KTXorientation '" + info.orientation + "' is not 'rd' as KHR_texture_basisu requires (drawn as stored)");
-    if (flip) out.notes.push_back("KTXorientation 'ru' (rows bottom first): flipped to glTF's top-first rows");
+        out.report.warnings.push_back("KTXorientation '" + info.orientation + "' is not 'rd' as KHR_texture_basisu requires (drawn as stored)");
+    if (flip) out.report.notes.push_back("KTXorientation 'ru' (rows bottom first): flipped to glTF's top-first rows");
     if (!layout.swizzle.empty() && layout.swizzle != "rgba")
-        out.warnings.push_back("KTXswizzle '" + layout.swizzle + "' is not 'rgba' as KHR_texture_basisu requires (ignored)");
+        out.report.warnings.push_back("KTXswizzle '" + layout.swizzle + "' is not 'rgba' as KHR_texture_basisu requires (ignored)");
     if (info.width % 4 != 0 || info.height % 4 != 0)
-        out.warnings.push_back("size " + std::to_string(info.width) + "x" + std::to_string(info.height) +
+        out.report.warnings.push_back("size " + std::to_string(info.width) + "x" + std::to_string(info.height) +
                                " is not a multiple of 4 as KHR_texture_basisu requires (decoded anyway)");
-    if (layout.premultiplied) out.warnings.push_back("the DFD marks alpha premultiplied, glTF's is straight (drawn as straight)");
+    if (layout.premultiplied) out.report.warnings.push_back("the DFD marks alpha premultiplied, glTF's is straight (drawn as straight)");
 
     std::optional<BasisLzGlobal> global;
     if (info.payload == BasisPayload::Etc1s) {

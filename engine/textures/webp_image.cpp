@@ -78,7 +78,7 @@ DecodedTexture decodeWebp(std::span<const uint8_t> bytes, uint32_t maxDimension)
         TextureLevel level = firstFrame(bytes);
         if (level.width != uint32_t(f.width) || level.height != uint32_t(f.height)) fail("canvas size changed while decoding");
         out.levels.push_back(std::move(level));
-        out.notes.push_back("animated WebP: drawn from its first frame");
+        out.report.notes.push_back("animated WebP: drawn from its first frame");
         return out;
     }
     TextureLevel level{uint32_t(f.width), uint32_t(f.height), {}};

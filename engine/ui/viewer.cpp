@@ -149,8 +149,8 @@ bool Viewer::openFile(const std::filesystem::path& path, std::optional<uint32_t>
     try {
         if (ext == ".gltf" || ext == ".glb") {
             scene::Scene loaded = scene::loadGltf(path, {.sceneIndex = sceneIndex});
-            for (const std::string& warning : loaded.warnings) log::warn(path.string() + ": " + warning);
-            for (const std::string& note : loaded.notes) log::info(path.string() + ": " + note);
+            for (const std::string& warning : loaded.report.warnings) log::warn(path.string() + ": " + warning);
+            for (const std::string& note : loaded.report.notes) log::info(path.string() + ": " + note);
             // Replaced in place: the renderer is told, waits for the frames in flight and uploads
             // the new one at the next frame.
             mRenderer->sceneReplaced();
@@ -168,8 +168,8 @@ bool Viewer::openFile(const std::filesystem::path& path, std::optional<uint32_t>
             // A new object (new address) while the old one is alive: the renderer hashes it and
             // runs the precompute in the next frame.
             auto loaded = std::make_unique<scene::Environment>(scene::loadEnvironment(path));
-            for (const std::string& warning : loaded->warnings) log::warn(warning);
-            for (const std::string& note : loaded->notes) log::info(note);
+            for (const std::string& warning : loaded->report.warnings) log::warn(warning);
+            for (const std::string& note : loaded->report.notes) log::info(note);
             mRenderer->waitIdle();
             mEnvironment = std::move(loaded);
             // Show it: the skybox becomes the background, as `--env` does with the default background.

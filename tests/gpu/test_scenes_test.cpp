@@ -21,7 +21,7 @@ struct Frames {
 // The scene at `early` and `late` seconds (its first animation playing), 240 × 160 over a black background.
 Frames render(vk::Context& context, const std::string& name, double early, double late) {
     const scene::Scene scene = scene::loadGltf(fs::path(CANDELA_TEST_SCENES) / (name + ".glb"));
-    EXPECT_TRUE(scene.warnings.empty()) << name << ": " << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << name << ": " << scene.report.warnings.front();
     scene::ScenePose pose(scene, scene::selectAnimations(scene, {}));
     Renderer renderer(context);
     RenderSettings settings{.width = 240, .height = 160, .scene = &scene, .pose = &pose};

@@ -89,7 +89,7 @@ TEST_P(LosslessWebpCopy, RendersExactlyLikeThePngOriginal) {
     TempDir dir;
     const scene::Scene original = scene::loadGltf(gltf);
     const scene::Scene copy = scene::loadGltf(webpCopy(gltf, dir.path() / "model"));
-    EXPECT_TRUE(copy.warnings.empty()) << copy.warnings.front();
+    EXPECT_TRUE(copy.report.warnings.empty()) << copy.report.warnings.front();
     ASSERT_EQ(copy.images.size(), original.images.size());
     for (size_t i = 0; i < copy.images.size(); ++i) EXPECT_EQ(copy.images[i].rgba8, original.images[i].rgba8) << "image " << i;
     const std::vector<uint8_t> expected = render(context(), original);
@@ -108,7 +108,7 @@ std::vector<uint8_t> renderTexturedTriangle(vk::Context& context, const std::vec
     b.doc["textures"][0]["sampler"] = 0;
     TempDir dir;
     const scene::Scene scene = scene::loadGltf(b.writeGlb(dir.path()));
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     Renderer renderer(context);
     RenderSettings settings{.width = 160, .height = 120, .scene = &scene};
     return renderer.capture(settings).rgba8;

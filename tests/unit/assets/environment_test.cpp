@@ -33,7 +33,7 @@ TEST(EnvironmentAssets, EverySharedMapLoads) {
         EXPECT_EQ(env.height, 512u);
         EXPECT_EQ(env.source, path.string());
         EXPECT_EQ(env.replacedTexels, 0u);
-        EXPECT_TRUE(env.warnings.empty()) << env.warnings.front();
+        EXPECT_TRUE(env.report.warnings.empty()) << env.report.warnings.front();
         uint32_t brightestX = 0, brightestY = 0;
         float brightest = -1.0f;
         for (uint32_t y = 0; y < env.height; ++y)
@@ -67,13 +67,13 @@ TEST(EnvironmentSanitize, CountsTexelsNotChannels) {
     EXPECT_EQ(env.replacedTexels, 3u);
     EXPECT_EQ(env.rgb, (std::vector<float>{0, 0, 2, 1, 2, 3, 0, 0, 65504, 0.25f, 0, 7}));
     EXPECT_FALSE(std::signbit(env.rgb[6]));
-    ASSERT_EQ(env.warnings.size(), 1u);
-    EXPECT_EQ(env.warnings[0], "test: replaced 3 texels holding NaN, Inf or negative values (1 NaN and 2 negative values "
+    ASSERT_EQ(env.report.warnings.size(), 1u);
+    EXPECT_EQ(env.report.warnings[0], "test: replaced 3 texels holding NaN, Inf or negative values (1 NaN and 2 negative values "
                                "set to 0, 1 +Inf set to 65504)");
     // A clean map is untouched and gets no warning; counts accumulate across calls.
     EXPECT_EQ(sanitizeEnvironment(env), 0u);
     EXPECT_EQ(env.replacedTexels, 3u);
-    EXPECT_EQ(env.warnings.size(), 1u);
+    EXPECT_EQ(env.report.warnings.size(), 1u);
 }
 
 TEST(EnvironmentHash, DependsOnSizeAndEveryTexelBit) {
@@ -83,7 +83,7 @@ TEST(EnvironmentHash, DependsOnSizeAndEveryTexelBit) {
     a.rgb = {1, 2, 3, 4, 5, 6};
     Environment b = a;
     b.source = "elsewhere";
-    b.warnings = {"ignored"};
+    b.report.warnings = {"ignored"};
     EXPECT_EQ(contentHash(a), contentHash(b)) << "source and warnings are not content";
     Environment transposed = a;
     transposed.width = 1;

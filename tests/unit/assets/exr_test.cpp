@@ -50,8 +50,8 @@ TEST(ExrRoundTrip, FloatRgbEveryCompression) {
             EXPECT_EQ(env.rgb, rgb);  // B44 and B44A leave FLOAT channels uncompressed
         }
         EXPECT_EQ(env.replacedTexels, 0u);
-        EXPECT_TRUE(env.notes.empty());
-        EXPECT_EQ(env.warnings, std::vector<std::string>{(dir / "map.exr").string() + ": 34x15 is not 2:1; it is mapped as equirectangular anyway"});
+        EXPECT_TRUE(env.report.notes.empty());
+        EXPECT_EQ(env.report.warnings, std::vector<std::string>{(dir / "map.exr").string() + ": 34x15 is not 2:1; it is mapped as equirectangular anyway"});
     }
 }
 
@@ -80,7 +80,7 @@ TEST(ExrRoundTrip, HalfRgbaIgnoresAlpha) {
     EnvTempDir dir;
     const Environment env = loadBytes(dir, makeExr(width, height, rgbChannels(rgb, ExrType::Half, /*alpha=*/true)));
     EXPECT_EQ(env.rgb, rgb);
-    EXPECT_TRUE(env.warnings.empty());
+    EXPECT_TRUE(env.report.warnings.empty());
 }
 
 TEST(ExrRoundTrip, TiledEveryLevelModeAndPartialTiles) {
@@ -109,7 +109,7 @@ TEST(ExrRoundTrip, WriteExrHalfRgba) {
     io::writeExr(dir / "s.exr", width, height, rgba);
     const Environment env = loadEnvironment(dir / "s.exr");
     EXPECT_EQ(env.rgb, rgb);
-    EXPECT_TRUE(env.warnings.empty());
+    EXPECT_TRUE(env.report.warnings.empty());
 }
 
 TEST(ExrWindows, DisplayWindowIsThePictureDataOutsideIsCroppedMissingIsBlack) {
@@ -139,7 +139,7 @@ TEST(ExrWindows, DisplayWindowIsThePictureDataOutsideIsCroppedMissingIsBlack) {
                 EXPECT_EQ(env.texel(x, y)[1], float(y - 1));
                 EXPECT_EQ(env.texel(x, y)[2], 1.0f);
             }
-        EXPECT_EQ(env.notes, std::vector<std::string>{(dir / "map.exr").string() +
+        EXPECT_EQ(env.report.notes, std::vector<std::string>{(dir / "map.exr").string() +
                                                       ": the data window (-2,3)-(9,6) does not cover the display "
                                                       "window (0,2)-(7,5); the rest is black"});
     }
@@ -173,7 +173,7 @@ TEST(ExrWindows, DataWindowInsideTheDisplayWindowIsDecodedInPlace) {
                 EXPECT_EQ(t[1], grey ? v : 2.0f * v) << px << "," << py;
                 EXPECT_EQ(t[2], grey ? v : 3.0f * v) << px << "," << py;
             }
-        EXPECT_EQ(env.notes.size(), 1u);
+        EXPECT_EQ(env.report.notes.size(), 1u);
     }
 }
 
@@ -188,8 +188,8 @@ TEST(ExrParts, FirstColourPartIsUsedWithANote) {
     EnvTempDir dir;
     const Environment env = loadBytes(dir, makeExrParts({z, deep, colour, other}));
     EXPECT_EQ(env.rgb, rgb);
-    EXPECT_TRUE(env.warnings.empty());
-    EXPECT_EQ(env.notes, std::vector<std::string>{(dir / "map.exr").string() + ": 4-part EXR: part 2 'beauty' used (the first with R, G, B)"});
+    EXPECT_TRUE(env.report.warnings.empty());
+    EXPECT_EQ(env.report.notes, std::vector<std::string>{(dir / "map.exr").string() + ": 4-part EXR: part 2 'beauty' used (the first with R, G, B)"});
 }
 
 TEST(ExrParts, DeepOnlyIsRefusedInOneLine) {
@@ -253,8 +253,8 @@ TEST(ExrSanitize, NanInfAndNegativeTexelsAreReplacedAndCounted) {
     EXPECT_FALSE(std::signbit(texel(5)[0]));
     EXPECT_EQ(texel(6)[0], 100000.0f);
     for (float v : env.rgb) ASSERT_TRUE(std::isfinite(v) && v >= 0.0f);
-    ASSERT_EQ(env.warnings.size(), 1u);
-    const std::string& warning = env.warnings[0];
+    ASSERT_EQ(env.report.warnings.size(), 1u);
+    const std::string& warning = env.report.warnings[0];
     EXPECT_EQ(warning, (dir / "map.exr").string() +
                            ": replaced 5 texels holding NaN, Inf or negative values (2 NaN and 4 negative values set "
                            "to 0, 2 +Inf set to 100000)");
@@ -269,8 +269,8 @@ TEST(ExrSanitize, OverflowedHalfBecomesTheHalfMaximum) {
     const Environment env = loadBytes(dir, makeExr(width, height, rgbChannels(rgb, ExrType::Half)));
     EXPECT_EQ(env.replacedTexels, 1u);
     EXPECT_EQ(env.rgb[3], 65504.0f);
-    ASSERT_FALSE(env.warnings.empty());
-    EXPECT_NE(env.warnings.back().find("replaced 1 texel holding"), std::string::npos) << env.warnings.back();
+    ASSERT_FALSE(env.report.warnings.empty());
+    EXPECT_NE(env.report.warnings.back().find("replaced 1 texel holding"), std::string::npos) << env.report.warnings.back();
 }
 
 }  // namespace

@@ -15,7 +15,7 @@ TEST(GltfDraco, QuadLoadsExactlyLikeItsPlainTwin) {
     const Scene plain = loadGltf(quad.plain().writeGlb(dir.path(), "plain"));
     const Scene glb = loadGltf(quad.compressed().writeGlb(dir.path(), "draco"));
     const Scene gltf = loadGltf(quad.compressed().writeGltf(dir.path(), "draco"));
-    EXPECT_TRUE(glb.warnings.empty()) << glb.warnings.front();
+    EXPECT_TRUE(glb.report.warnings.empty()) << glb.report.warnings.front();
     EXPECT_EQ(plain.indices.size(), 6u);
     expectSameGeometry(plain, glb);
     expectSameGeometry(plain, gltf);
@@ -73,7 +73,7 @@ struct Pair {
 };
 Pair loadPair(const std::string& name, const std::string& dracoFile) {
     Pair pair{loadGltf(model(name, "glTF-Draco", dracoFile)), loadGltf(model(name, "glTF-Binary", name + ".glb"))};
-    EXPECT_TRUE(pair.draco.warnings.empty()) << pair.draco.warnings.front();
+    EXPECT_TRUE(pair.draco.report.warnings.empty()) << pair.draco.report.warnings.front();
     expectSameShape(pair.draco, pair.plain, 1e-3f);
     return pair;
 }

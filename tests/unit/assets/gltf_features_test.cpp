@@ -23,7 +23,7 @@ void expectVec(const glm::vec3& actual, const glm::vec3& expected, float eps = k
 }
 
 bool hasWarning(const Scene& scene, const std::string& fragment) {
-    for (const std::string& w : scene.warnings)
+    for (const std::string& w : scene.report.warnings)
         if (w.find(fragment) != std::string::npos) return true;
     return false;
 }
@@ -52,11 +52,11 @@ TEST(GltfFeatures, DegenerateTrianglesAreANoteFoldedIntoOneLine) {
     // with one note for --verbose however many primitives have them.
     TempDir dir;
     const Scene one = loadGltf(degenerateMeshes(1).writeGltf(dir / "one"));
-    EXPECT_TRUE(one.warnings.empty()) << one.warnings.front();
-    EXPECT_EQ(one.notes, (std::vector<std::string>{"mesh 0 primitive 0: 1 zero-area triangle dropped"}));
+    EXPECT_TRUE(one.report.warnings.empty()) << one.report.warnings.front();
+    EXPECT_EQ(one.report.notes, (std::vector<std::string>{"mesh 0 primitive 0: 1 zero-area triangle dropped"}));
     const Scene many = loadGltf(degenerateMeshes(100).writeGltf(dir / "many"));
-    EXPECT_TRUE(many.warnings.empty()) << many.warnings.front();
-    EXPECT_EQ(many.notes, (std::vector<std::string>{"100 primitives: 100 zero-area triangles dropped"}));
+    EXPECT_TRUE(many.report.warnings.empty()) << many.report.warnings.front();
+    EXPECT_EQ(many.report.notes, (std::vector<std::string>{"100 primitives: 100 zero-area triangles dropped"}));
     EXPECT_EQ(many.draws.size(), 100u);
 }
 
@@ -80,7 +80,7 @@ TEST(GltfFeatures, TriangleInAllThreeContainers) {
         expectVec(scene.vertices[2].normal, {0, 0, 1});
         expectVec(scene.bounds.min, {0, 0, 0});
         expectVec(scene.bounds.max, {1, 1, 0});
-        EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+        EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     }
 }
 
@@ -178,7 +178,7 @@ TEST(GltfFeatures, MeshQuantizationIntegersAndNodeScale) {
     const int mesh = b.addMesh({{"POSITION", pos}, {"NORMAL", normal}, {"TEXCOORD_0", uv}}, b.addIndices({0, 1, 2}));
     b.setScene({b.addNode({{"mesh", mesh}, {"scale", {0.001, 0.001, 0.001}}})});
     const Scene scene = loadGltf(b.writeGlb(dir.path()));
-    EXPECT_TRUE(scene.warnings.empty());
+    EXPECT_TRUE(scene.report.warnings.empty());
     const std::vector<Vertex> v = corners(scene);
     ASSERT_EQ(v.size(), 3u);
     expectVec(v[1].position, {1000, 0, 0});
@@ -224,7 +224,7 @@ TEST(GltfFeatures, LargeAndSmallValidScalesLoadQuietly) {
     const int small = b.addNode({{"mesh", 0}, {"scale", {1e-15, 1e-15, 1e-15}}});
     b.setScene({big, small});
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.draws.size(), 2u);
     EXPECT_TRUE(scene.draws[0].flipWinding);
     EXPECT_FALSE(scene.draws[1].flipWinding);
@@ -241,7 +241,7 @@ TEST(GltfFeatures, GpuInstancesAreOneDrawPerWindingWithEveryInstanceInTheBounds)
     b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {{"TRANSLATION", t}, {"SCALE", s}};
     b.doc["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.draws.size(), 2u);
     EXPECT_EQ(scene.draws[0].instanceCount, 2u);
     EXPECT_FALSE(scene.draws[0].flipWinding);
@@ -372,7 +372,7 @@ TEST(GltfFeatures, IorAndSpecularExtensions) {
     EXPECT_FLOAT_EQ(scene.materials[3].specularFactor, 1.0f);
     EXPECT_TRUE(hasWarning(scene, "ior 0.5 is outside [1, inf] (using 1)"));
     EXPECT_TRUE(hasWarning(scene, "specularFactor 3 is outside [0, 1] (using 1)"));
-    EXPECT_EQ(scene.warnings.size(), 2u);
+    EXPECT_EQ(scene.report.warnings.size(), 2u);
 }
 
 TEST(GltfFeatures, ClearcoatExtension) {
@@ -413,7 +413,7 @@ TEST(GltfFeatures, ClearcoatExtension) {
     EXPECT_FLOAT_EQ(scene.materials[3].clearcoatRoughnessFactor, 0.0f);
     EXPECT_TRUE(hasWarning(scene, "clearcoatFactor 1.5 is outside [0, 1] (using 1)"));
     EXPECT_TRUE(hasWarning(scene, "clearcoatRoughnessFactor -1 is outside [0, 1] (using 0)"));
-    EXPECT_EQ(scene.warnings.size(), 2u);
+    EXPECT_EQ(scene.report.warnings.size(), 2u);
 }
 
 TEST(GltfFeatures, SheenExtension) {
@@ -442,7 +442,7 @@ TEST(GltfFeatures, SheenExtension) {
     EXPECT_FLOAT_EQ(scene.materials[2].sheenRoughnessFactor, 1.0f);
     EXPECT_TRUE(hasWarning(scene, "sheenColorFactor 1.5 is outside [0, 1] (using 1)"));
     EXPECT_TRUE(hasWarning(scene, "sheenRoughnessFactor 2 is outside [0, 1] (using 1)"));
-    EXPECT_EQ(scene.warnings.size(), 2u);
+    EXPECT_EQ(scene.report.warnings.size(), 2u);
 }
 
 TEST(GltfFeatures, AnisotropyExtension) {
@@ -468,7 +468,7 @@ TEST(GltfFeatures, AnisotropyExtension) {
     EXPECT_FLOAT_EQ(scene.materials[2].anisotropyStrength, 1.0f);
     EXPECT_NEAR(scene.materials[2].anisotropyRotation, 7.0 - 2.0 * std::numbers::pi, 1e-6);
     EXPECT_TRUE(hasWarning(scene, "anisotropyStrength 4 is outside [0, 1] (using 1)"));
-    EXPECT_EQ(scene.warnings.size(), 1u);
+    EXPECT_EQ(scene.report.warnings.size(), 1u);
     // The tangent frame the direction lives in: generated (MikkTSpace) though there is no normal map.
     ASSERT_TRUE(m.tangentSpaceMap().has_value());
     EXPECT_TRUE(scene.materials[1].tangentSpaceMap() == std::nullopt);
@@ -518,7 +518,7 @@ TEST(GltfFeatures, TransmissionAndVolumeExtensions) {
     EXPECT_TRUE(hasWarning(scene, "attenuationDistance 0 is not > 0: no absorption"));
     EXPECT_TRUE(hasWarning(scene, "attenuationColor 2 is outside [0, 1] (using 1)"));
     EXPECT_TRUE(hasWarning(scene, "attenuationColor -1 is outside [0, 1] (using 0)"));
-    EXPECT_EQ(scene.warnings.size(), 5u);
+    EXPECT_EQ(scene.report.warnings.size(), 5u);
 }
 
 TEST(GltfFeatures, IridescenceExtension) {
@@ -561,7 +561,7 @@ TEST(GltfFeatures, IridescenceExtension) {
     EXPECT_TRUE(hasWarning(scene, "iridescenceFactor 2 is outside [0, 1] (using 1)"));
     EXPECT_TRUE(hasWarning(scene, "iridescenceIor 0.5 is outside [1, inf] (using 1)"));
     EXPECT_TRUE(hasWarning(scene, "iridescenceThicknessMinimum -5 is outside [0, inf] (using 0)"));
-    EXPECT_EQ(scene.warnings.size(), 3u);
+    EXPECT_EQ(scene.report.warnings.size(), 3u);
 }
 
 TEST(GltfFeatures, SpecularGlossinessIsConvertedToTheSpecularLayer) {
@@ -605,7 +605,7 @@ TEST(GltfFeatures, SpecularGlossinessIsConvertedToTheSpecularLayer) {
     EXPECT_EQ(scene.materials[2].metallicFactor, 0.0f);
     EXPECT_EQ(scene.materials[2].baseColorFactor, glm::vec4(1.0f));
     EXPECT_EQ(scene.materials[2].roughnessFactor, 0.0f);
-    EXPECT_TRUE(scene.warnings.empty());
+    EXPECT_TRUE(scene.report.warnings.empty());
 }
 
 TEST(GltfFeatures, MaterialVariants) {
@@ -635,7 +635,7 @@ TEST(GltfFeatures, MaterialVariants) {
         EXPECT_NE(std::string(e.what()).find("has no variant 'Green' (its variants: Red, Blue, Gold)"), std::string::npos)
             << e.what();
     }
-    EXPECT_TRUE(scene.warnings.empty());
+    EXPECT_TRUE(scene.report.warnings.empty());
 }
 
 // A triangle whose material uses `png` for all five textures, plus samplers.
@@ -827,10 +827,10 @@ TEST(GltfFeatures, PointsAndLinesSkippedWithOneWarningLine) {
     b.doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", pos}}}, {"mode", kLines}});
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
     EXPECT_EQ(scene.draws.size(), 1u);
-    EXPECT_EQ(scene.warnings, (std::vector<std::string>{"2 primitives: points or lines, not drawn (only triangles are)"}));
+    EXPECT_EQ(scene.report.warnings, (std::vector<std::string>{"2 primitives: points or lines, not drawn (only triangles are)"}));
     b.doc["meshes"][0]["primitives"].erase(2);
     const Scene one = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_EQ(one.warnings, (std::vector<std::string>{"mesh 0 primitive 1 (POINTS): points or lines, not drawn (only triangles are)"}));
+    EXPECT_EQ(one.report.warnings, (std::vector<std::string>{"mesh 0 primitive 1 (POINTS): points or lines, not drawn (only triangles are)"}));
 }
 
 TEST(GltfFeatures, OptionalUnsupportedExtensionWarnsAndLoads) {
@@ -840,7 +840,7 @@ TEST(GltfFeatures, OptionalUnsupportedExtensionWarnsAndLoads) {
     b.doc["extensionsUsed"] = {"EXT_made_up", "KHR_texture_transform"};
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
     EXPECT_EQ(scene.draws.size(), 1u);
-    EXPECT_EQ(scene.warnings, (std::vector<std::string>{"extension EXT_made_up is not supported (ignored)"}));
+    EXPECT_EQ(scene.report.warnings, (std::vector<std::string>{"extension EXT_made_up is not supported (ignored)"}));
 }
 
 TEST(GltfFeatures, DefaultSceneAndSceneless) {
@@ -865,7 +865,7 @@ TEST(GltfFeatures, DefaultSceneAndSceneless) {
     b.doc["scenes"] = Json::array({{{"nodes", Json::array()}}});
     scene = loadGltf(b.writeGltf(dir / "c"));
     EXPECT_TRUE(scene.draws.empty());
-    EXPECT_EQ(scene.warnings, std::vector<std::string>{"nothing to draw: scene 0 has no nodes"});
+    EXPECT_EQ(scene.report.warnings, std::vector<std::string>{"nothing to draw: scene 0 has no nodes"});
 }
 
 TEST(GltfFeatures, UnindexedPrimitiveAndNonFiniteNormalRepaired) {

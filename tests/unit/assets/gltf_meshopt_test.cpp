@@ -13,8 +13,8 @@ TEST(GltfMeshopt, QuadLoadsExactlyLikeItsPlainTwin) {
     const Scene plain = loadGltf(meshoptQuad(false).writeGlb(dir.path(), "plain"));
     const Scene glb = loadGltf(meshoptQuad(true).writeGlb(dir.path(), "meshopt"));
     const Scene gltf = loadGltf(meshoptQuad(true).writeGltf(dir.path(), "meshopt"));
-    EXPECT_TRUE(glb.warnings.empty()) << glb.warnings.front();
-    EXPECT_TRUE(gltf.warnings.empty()) << gltf.warnings.front();
+    EXPECT_TRUE(glb.report.warnings.empty()) << glb.report.warnings.front();
+    EXPECT_TRUE(gltf.report.warnings.empty()) << gltf.report.warnings.front();
     ASSERT_EQ(plain.indices.size(), 6u);
     EXPECT_NEAR(plain.vertices[1].normal.x, 0.6f, 0.02f);  // the octahedral filter decoded
     expectSameGeometry(plain, glb);
@@ -89,7 +89,7 @@ TEST(GltfMeshopt, GltfpackedFoxAnimatesLikeTheOriginal) {
     TempDir dir;
     const Scene original = loadGltf(sharedModels() / "Fox/glTF-Binary/Fox.glb");
     const Scene packed = loadGltf(gltfpacked(dir, "Fox/glTF-Binary/Fox.glb"));
-    EXPECT_TRUE(packed.warnings.empty()) << packed.warnings.front();
+    EXPECT_TRUE(packed.report.warnings.empty()) << packed.report.warnings.front();
     ASSERT_EQ(packed.animations.size(), original.animations.size());
     for (size_t i = 0; i < original.animations.size(); ++i) EXPECT_EQ(packed.animations[i].name, original.animations[i].name);
     EXPECT_EQ(packed.skins.size(), original.skins.size());
@@ -106,9 +106,9 @@ TEST(GltfMeshopt, GltfpackedDamagedHelmetMatchesTheOriginal) {
     TempDir dir;
     const Scene original = loadGltf(sharedModels() / "DamagedHelmet/glTF-Binary/DamagedHelmet.glb");
     const Scene packed = loadGltf(gltfpacked(dir, "DamagedHelmet/glTF-Binary/DamagedHelmet.glb"));
-    EXPECT_TRUE(packed.warnings.empty()) << packed.warnings.front();
+    EXPECT_TRUE(packed.report.warnings.empty()) << packed.report.warnings.front();
     // Full detail (the levels of detail of the two differ with the quantized positions).
-    EXPECT_EQ(packed.geometry.indexBytes, original.geometry.indexBytes);
+    EXPECT_EQ(packed.report.geometry.indexBytes, original.report.geometry.indexBytes);
     expectBoundsNear(packed.bounds, original.bounds, 2e-3f);
 }
 

@@ -51,7 +51,7 @@ TEST(GltfModels, BoxInAllThreeVariants) {
         EXPECT_EQ(s->materials[0].name, "Red");
         EXPECT_EQ(s->materials[0].baseColorFactor, glm::vec4(0.8f, 0.0f, 0.0f, 1.0f));
         EXPECT_EQ(s->materials[0].metallicFactor, 0.0f);
-        EXPECT_TRUE(s->warnings.empty());
+        EXPECT_TRUE(s->report.warnings.empty());
         // The root's matrix turns +Y into −Z (Z-up to Y-up); the cube is ±0.5.
         expectVec(glm::vec3(s->draws[0].world * glm::vec4(0, 1, 0, 0)), {0, 0, -1});
         EXPECT_FALSE(s->draws[0].flipWinding);
@@ -89,7 +89,7 @@ TEST(GltfModels, BoxTexturedInAllThreeVariants) {
         EXPECT_EQ(m.baseColor.sampler, 0);
         EXPECT_FALSE(m.normal.present());
         EXPECT_EQ(s.vertices.size(), 24u);
-        EXPECT_TRUE(s.warnings.empty());
+        EXPECT_TRUE(s.report.warnings.empty());
     }
     EXPECT_EQ(scenes[0].images[0].name, "CesiumLogoFlat.png");
 }
@@ -106,8 +106,8 @@ TEST(GltfModels, EverySampleModelLoadsWithAtMostThreeWarningLines) {
         ++files;
         const Scene s = loadGltf(entry.path(), {.prepareGeometry = false});
         std::string lines;
-        for (const std::string& w : s.warnings) lines += "\n  " + w;
-        EXPECT_LE(s.warnings.size(), 3u) << entry.path() << lines;
+        for (const std::string& w : s.report.warnings) lines += "\n  " + w;
+        EXPECT_LE(s.report.warnings.size(), 3u) << entry.path() << lines;
     }
     EXPECT_GT(files, 50u);
 }
@@ -151,7 +151,7 @@ TEST(GltfModels, MeshPrimitiveModes) {
     EXPECT_EQ(s.vertices.size(), 48u);  // no normals: flat, one vertex per corner
     for (const Vertex& v : s.vertices) expectVec(v.normal, {0, 0, 1});
     // The four primitives of points and lines, folded into one line.
-    EXPECT_EQ(s.warnings, (std::vector<std::string>{"4 primitives: points or lines, not drawn (only triangles are)"}));
+    EXPECT_EQ(s.report.warnings, (std::vector<std::string>{"4 primitives: points or lines, not drawn (only triangles are)"}));
     expectVec(glm::vec3(s.draws[1].world[3]), {0, -3, 0});
 }
 
@@ -171,7 +171,7 @@ TEST(GltfModels, NormalTangentTestGeneratesTangents) {
     ASSERT_EQ(s.draws.size(), 1u);
     EXPECT_EQ(s.draws[0].indexCount, 23322u);
     EXPECT_GE(s.vertices.size(), 3983u);  // split only where corners disagree
-    EXPECT_TRUE(s.warnings.empty());
+    EXPECT_TRUE(s.report.warnings.empty());
     expectTangentFrames(s);
     // Every triangle of this model maps the texture without mirroring: w = +1 throughout.
     for (const Vertex& v : s.vertices) ASSERT_EQ(v.tangent.w, 1.0f);
@@ -239,7 +239,7 @@ TEST(GltfModels, NormalTangentMirrorTestWithoutTangentsGetsBothHandedness) {
     // Corner by corner: both in the file's triangle order (no geometry preparation).
     const Scene generated = loadGltf(dir / "NormalTangentMirrorTest.gltf", {.prepareGeometry = false});
     const Scene supplied = loadGltf(source / "NormalTangentMirrorTest.gltf", {.prepareGeometry = false});
-    EXPECT_TRUE(generated.warnings.empty());
+    EXPECT_TRUE(generated.report.warnings.empty());
     expectTangentFrames(generated);
     ASSERT_EQ(generated.indices.size(), supplied.indices.size());
     // 40 of its 5240 triangles map the texture mirrored: their corners get w = −1, as in the
@@ -279,13 +279,13 @@ TEST(GltfModels, AlphaBlendModeTest) {
     ASSERT_EQ(s.images.size(), 4u);
     EXPECT_EQ(std::count_if(s.images.begin(), s.images.end(), [](const Image& i) { return i.srgb; }), 2);
     for (const Image& i : s.images) EXPECT_EQ(i.rgba8.size(), size_t(i.width) * i.height * 4);
-    EXPECT_TRUE(s.warnings.empty());
+    EXPECT_TRUE(s.report.warnings.empty());
 }
 
 TEST(GltfModels, TextureTransformTest) {
     REQUIRE_MODELS();
     const Scene s = loadGltf(model("TextureTransformTest", "glTF", "TextureTransformTest.gltf"));
-    EXPECT_TRUE(s.warnings.empty());
+    EXPECT_TRUE(s.report.warnings.empty());
     EXPECT_EQ(s.draws.size(), 12u);
     ASSERT_EQ(s.materials.size(), 9u);
     EXPECT_EQ(s.materials[0].baseColor.transform.offset, glm::vec2(0.5f, 0.0f));
@@ -335,7 +335,7 @@ TEST(GltfModels, DamagedHelmet) {
     ASSERT_EQ(s.draws.size(), 1u);
     EXPECT_EQ(s.draws[0].indexCount, 46356u);
     EXPECT_GE(s.vertices.size(), 14556u);
-    EXPECT_TRUE(s.warnings.empty());
+    EXPECT_TRUE(s.report.warnings.empty());
     expectTangentFrames(s);  // no TANGENT in the file, a normal texture: generated
     ASSERT_EQ(s.images.size(), 5u);
     const Material& m = s.materials.at(0);
@@ -351,7 +351,7 @@ TEST(GltfModels, DamagedHelmet) {
 TEST(GltfModels, EmissiveStrengthTest) {
     REQUIRE_MODELS();
     const Scene s = loadGltf(model("EmissiveStrengthTest", "glTF-Binary", "EmissiveStrengthTest.glb"));
-    EXPECT_TRUE(s.warnings.empty());
+    EXPECT_TRUE(s.report.warnings.empty());
     ASSERT_EQ(s.materials.size(), 6u);
     const std::vector<float> strengths = {4, 1, 2, 1, 8, 16};
     for (size_t i = 0; i < strengths.size(); ++i) EXPECT_FLOAT_EQ(s.materials[i].emissiveStrength, strengths[i]) << i;
@@ -362,7 +362,7 @@ TEST(GltfModels, EmissiveStrengthTest) {
 TEST(GltfModels, UnlitTestRequiresASupportedExtension) {
     REQUIRE_MODELS();
     const Scene s = loadGltf(model("UnlitTest", "glTF", "UnlitTest.gltf"));
-    EXPECT_TRUE(s.warnings.empty());
+    EXPECT_TRUE(s.report.warnings.empty());
     ASSERT_EQ(s.materials.size(), 2u);
     EXPECT_TRUE(s.materials[0].unlit);
     EXPECT_TRUE(s.materials[1].unlit);
@@ -447,7 +447,7 @@ TEST(GltfModels, SpecGlossVsMetalRoughConvertsItsSpecularGlossinessMaterials) {
                 s.materials[0].metallicRoughness.present());
     EXPECT_EQ(s.materials[1].layers(), 0u);  // the metallic-roughness bottle stays core
     EXPECT_EQ(s.materials[3].roughnessFactor, 1.0f);  // glossiness 0
-    EXPECT_TRUE(s.warnings.empty());
+    EXPECT_TRUE(s.report.warnings.empty());
 }
 
 TEST(GltfModels, NodesAreKeptParentsFirstWithTheTransformsTheDrawsWerePlacedWith) {

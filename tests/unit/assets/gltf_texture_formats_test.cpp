@@ -43,7 +43,7 @@ TEST(GltfTextureFormatsTest, LosslessWebpDecodesToTheSameBytes) {
     EXPECT_EQ(scene.images[0].height, 7u);
     EXPECT_EQ(scene.images[0].rgba8, pixels);
     EXPECT_TRUE(scene.images[0].mips.empty());
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
 }
 
 TEST(GltfTextureFormatsTest, LossyWebpKeepsItsAlphaAndComesCloseInColour) {
@@ -76,7 +76,7 @@ TEST(GltfTextureFormatsTest, WebpIsPreferredOverTheFallbackSource) {
     const Scene scene = loadGltf(b.writeGlb(dir.path()));
     ASSERT_EQ(scene.images.size(), 1u);  // the fallback is never decoded
     EXPECT_EQ(scene.images[0].rgba8, green);
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
 }
 
 TEST(GltfTextureFormatsTest, AnimatedWebpGivesItsFirstFrameWithANote) {
@@ -93,8 +93,8 @@ TEST(GltfTextureFormatsTest, AnimatedWebpGivesItsFirstFrameWithANote) {
         if (first[i + 3] == 0) continue;
         for (size_t c = 0; c < 3; ++c) EXPECT_EQ(got[i + c], first[i + c]) << "texel " << i / 4;
     }
-    EXPECT_TRUE(hasLine(scene.notes, "image 0: animated WebP: drawn from its first frame")) << testing::PrintToString(scene.notes);
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(hasLine(scene.report.notes, "image 0: animated WebP: drawn from its first frame")) << testing::PrintToString(scene.report.notes);
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
 }
 
 TEST(GltfTextureFormatsTest, BadWebpIsOneLineNamingTheImage) {
@@ -126,7 +126,7 @@ TEST(GltfTextureFormatsTest, AnUnusedBrokenWebpIsNeverRead) {
     b.doc["images"].push_back({{"bufferView", b.addView(broken.data(), broken.size())}, {"mimeType", "image/webp"}});
     const Scene scene = loadGltf(b.writeGlb(dir.path()));
     EXPECT_EQ(scene.images.size(), 1u);
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
 }
 
 }  // namespace

@@ -46,10 +46,10 @@ TEST(GltfFeatures, DiffuseTransmissionExtension) {
     EXPECT_EQ(scene.materials[2].layers(), uint32_t(kLayerDiffuseTransmission | kLayerVolume));
     EXPECT_FLOAT_EQ(scene.materials[3].diffuseTransmissionFactor, 1.0f);
     EXPECT_EQ(scene.materials[3].diffuseTransmissionColorFactor, glm::vec3(0.0f, 0.5f, 1.0f));
-    EXPECT_TRUE(hasLine(scene.warnings, "diffuseTransmissionFactor 2 is outside [0, 1] (using 1)"));
-    EXPECT_TRUE(hasLine(scene.warnings, "diffuseTransmissionColorFactor -1 is outside [0, 1] (using 0)"));
-    EXPECT_TRUE(hasLine(scene.warnings, "diffuseTransmissionColorFactor 3 is outside [0, 1] (using 1)"));
-    EXPECT_EQ(scene.warnings.size(), 3u);
+    EXPECT_TRUE(hasLine(scene.report.warnings, "diffuseTransmissionFactor 2 is outside [0, 1] (using 1)"));
+    EXPECT_TRUE(hasLine(scene.report.warnings, "diffuseTransmissionColorFactor -1 is outside [0, 1] (using 0)"));
+    EXPECT_TRUE(hasLine(scene.report.warnings, "diffuseTransmissionColorFactor 3 is outside [0, 1] (using 1)"));
+    EXPECT_EQ(scene.report.warnings.size(), 3u);
 }
 
 TEST(GltfFeatures, DispersionExtension) {
@@ -75,14 +75,14 @@ TEST(GltfFeatures, DispersionExtension) {
     EXPECT_EQ(scene.materials[1].dispersion, 0.0f);
     EXPECT_EQ(scene.materials[1].layers(), uint32_t(kLayerTransmission | kLayerVolume));
     EXPECT_EQ(scene.materials[2].layers(), uint32_t(kLayerTransmission));  // thin-walled: nothing to disperse
-    EXPECT_TRUE(hasLine(scene.notes, "material 2 dispersion 1 has no effect without KHR_materials_transmission and a "
+    EXPECT_TRUE(hasLine(scene.report.notes, "material 2 dispersion 1 has no effect without KHR_materials_transmission and a "
                                      "KHR_materials_volume thickness (thin-walled)"))
-        << testing::PrintToString(scene.notes);
+        << testing::PrintToString(scene.report.notes);
     EXPECT_EQ(scene.materials[3].dispersion, 0.0f);
     EXPECT_EQ(scene.materials[3].layers(), uint32_t(kLayerTransmission | kLayerVolume));
     EXPECT_FLOAT_EQ(scene.materials[4].dispersion, 100.0f);
-    EXPECT_TRUE(hasLine(scene.warnings, "dispersion -0.5 is outside [0, inf] (using 0)"));
-    EXPECT_EQ(scene.warnings.size(), 1u) << testing::PrintToString(scene.warnings);
+    EXPECT_TRUE(hasLine(scene.report.warnings, "dispersion -0.5 is outside [0, inf] (using 0)"));
+    EXPECT_EQ(scene.report.warnings.size(), 1u) << testing::PrintToString(scene.report.warnings);
 }
 
 }  // namespace

@@ -114,8 +114,8 @@ TEST(HdrRoundTrip, ExposureIsIgnoredWithAWarning) {
     writeBytes(dir / "e.hdr", writer.write(texels, kWidth, kHeight));
     const Environment env = loadEnvironment(dir / "e.hdr");
     EXPECT_EQ(env.texel(5, 1)[0], decodeRgbe(texels[kWidth + 5])[0]);
-    ASSERT_EQ(env.warnings.size(), 2u);  // and 40x5 is not 2:1
-    EXPECT_EQ(env.warnings[0], (dir / "e.hdr").string() +
+    ASSERT_EQ(env.report.warnings.size(), 2u);  // and 40x5 is not 2:1
+    EXPECT_EQ(env.report.warnings[0], (dir / "e.hdr").string() +
                                    ": EXPOSURE=3 in the header is ignored (texels are used as stored, as other viewers do)");
 }
 

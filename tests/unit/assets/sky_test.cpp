@@ -127,7 +127,7 @@ TEST(SkyProcedural, FiniteDeterministicDefaultSize) {
     EXPECT_EQ(a.height, 256u);
     EXPECT_EQ(a.source, "procedural sky");
     EXPECT_EQ(a.replacedTexels, 0u);
-    EXPECT_TRUE(a.warnings.empty());
+    EXPECT_TRUE(a.report.warnings.empty());
     for (float v : a.rgb) ASSERT_TRUE(std::isfinite(v) && v >= 0.0f);
     const Environment b = makeProceduralSky();
     EXPECT_EQ(a.rgb, b.rgb);

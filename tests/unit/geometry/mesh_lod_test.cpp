@@ -209,9 +209,9 @@ TEST(MeshLod, PreparationKeepsBlendOrderAndDeformedMeshesAndTheTrianglesDrawn) {
     EXPECT_GE(s.draws[0].lod, 0);
     EXPECT_GE(s.draws[1].lod, 0);
     EXPECT_EQ(s.draws[2].lod, -1);
-    EXPECT_EQ(s.geometry.meshes, 3u);
-    EXPECT_EQ(s.geometry.simplifiedMeshes, 2u);
-    EXPECT_LE(s.geometry.lodIndexBytes, s.geometry.indexBytes / 2);
+    EXPECT_EQ(s.report.geometry.meshes, 3u);
+    EXPECT_EQ(s.report.geometry.simplifiedMeshes, 2u);
+    EXPECT_LE(s.report.geometry.lodIndexBytes, s.report.geometry.indexBytes / 2);
 }
 
 }  // namespace

@@ -46,7 +46,7 @@ TEST(AnimationPointer, NodeTransformsThroughPointersEqualTheCoreChannels) {
                             {.pointer = "/nodes/0/rotation", .times = times, .values = r, .type = "VEC4"},
                             {.pointer = "/nodes/0/scale", .times = times, .values = s, .type = "VEC3"}});
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.animations.size(), 2u);
     EXPECT_EQ(scene.animations[1].channels.size(), 3u);
     EXPECT_TRUE(scene.animations[1].properties.empty());
@@ -73,7 +73,7 @@ TEST(AnimationPointer, MaterialFactorsAndTextureTransformsAnimate) {
                             {.pointer = texture + "offset", .times = {0, 2}, .values = {0, 0, 1, -2}, .type = "VEC2"},
                             {.pointer = texture + "rotation", .times = {0, 2}, .values = {0, 1}}});
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.animations[0].properties.size(), 4u);
     EXPECT_NEAR(scene.animations[0].duration, 2.0, 1e-9);
     ScenePose pose(scene, {0});
@@ -109,7 +109,7 @@ TEST(AnimationPointer, LayerFactorsAndLayerTextureTransformsAnimate) {
                                         "KHR_texture_transform/scale",
                              .times = {0, 1}, .values = {1, 1, 3, 5}, .type = "VEC2"}});
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ScenePose pose(scene, {0});
     EXPECT_TRUE(pose.animatesMaterialLayers());
     pose.evaluate(0.5, false);
@@ -135,7 +135,7 @@ TEST(AnimationPointer, LightPropertiesAnimate) {
                             {.pointer = light + "spot/innerConeAngle", .times = {0, 1}, .values = {0.1f, 0.3f}},
                             {.pointer = light + "range", .times = {0, 1}, .values = {0, 8}}});
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.lights.size(), 2u);
     EXPECT_EQ(scene.lights[0].source, 0);
     EXPECT_EQ(scene.lights[1].source, 0);
@@ -166,9 +166,9 @@ TEST(AnimationPointer, CameraProjectionAnimates) {
                             {.pointer = "/cameras/0/orthographic/xmag", .times = {0, 2}, .values = {1, 3}}});
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
     // The orthographic property of the perspective camera is left out, with a warning.
-    ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_NE(scene.warnings[0].find("pointer '/cameras/0/orthographic/xmag': camera 0 is perspective (ignored)"), std::string::npos)
-        << scene.warnings[0];
+    ASSERT_EQ(scene.report.warnings.size(), 1u);
+    EXPECT_NE(scene.report.warnings[0].find("pointer '/cameras/0/orthographic/xmag': camera 0 is perspective (ignored)"), std::string::npos)
+        << scene.report.warnings[0];
     EXPECT_EQ(scene.animations[0].properties.size(), 2u);
     ASSERT_EQ(scene.cameras.size(), 2u);
     ScenePose pose(scene, {0});
@@ -194,7 +194,7 @@ TEST(AnimationPointer, MorphWeightsOfNodesAndMeshesAnimate) {
     addPointerAnimation(b, {{.pointer = "/meshes/0/weights", .times = {0, 1}, .values = {0, 0, 1, 0.5f}},
                             {.pointer = "/nodes/0/weights/1", .times = {0, 1}, .values = {0.5f, 0}}});
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.animations[0].channels.size(), 2u);
     ScenePose pose(scene, {0});
     pose.evaluate(0.5, false);
@@ -210,9 +210,9 @@ TEST(AnimationPointer, AnUnsupportedPointerWarnsOncePerPointer) {
                             {.pointer = "/materials/0/extensions/KHR_materials_volume_scatter/scatterAnisotropy", .times = {0, 1}, .values = {0, 1}},
                             {.pointer = "/materials/0/pbrMetallicRoughness/metallicFactor", .times = {0, 1}, .values = {0, 1}}});
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_EQ(linesWith(scene.warnings, "animation 0: pointer '/materials/0/foo' is not supported (ignored)"), 1u);
-    EXPECT_EQ(linesWith(scene.warnings, "pointer '/materials/0/extensions/KHR_materials_volume_scatter/scatterAnisotropy' is not supported"), 1u);
-    EXPECT_EQ(scene.warnings.size(), 2u);  // and none about the extension itself
+    EXPECT_EQ(linesWith(scene.report.warnings, "animation 0: pointer '/materials/0/foo' is not supported (ignored)"), 1u);
+    EXPECT_EQ(linesWith(scene.report.warnings, "pointer '/materials/0/extensions/KHR_materials_volume_scatter/scatterAnisotropy' is not supported"), 1u);
+    EXPECT_EQ(scene.report.warnings.size(), 2u);  // and none about the extension itself
     ASSERT_EQ(scene.animations[0].properties.size(), 1u);  // the metallic factor's
 }
 
@@ -225,7 +225,7 @@ TEST(AnimationPointer, AFactorAnimatedFromZeroKeepsItsLayer) {
                             {.pointer = "/materials/2/extensions/KHR_materials_anisotropy/anisotropyStrength", .times = {0, 1},
                              .values = {0, 1}}});
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     EXPECT_EQ(scene.materials[0].layers(), 0u);
     EXPECT_EQ(scene.materials[1].clearcoatFactor, 0.0f);
     EXPECT_EQ(scene.materials[1].animatedLayers, uint32_t(kLayerClearcoat));

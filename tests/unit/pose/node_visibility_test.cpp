@@ -26,7 +26,7 @@ GltfBuilder hiddenBranch() {
 TEST(NodeVisibility, AHiddenParentHidesItsVisibleChildsDrawsAndLights) {
     TempDir dir;
     const Scene scene = loadGltf(hiddenBranch().writeGltf(dir.path()));
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.nodes.size(), 3u);
     EXPECT_TRUE(scene.nodes[0].shown);
     EXPECT_FALSE(scene.nodes[1].visible);
@@ -54,13 +54,13 @@ TEST(NodeVisibility, EveryNodeHiddenFramesTheHiddenGeometryWithAWarning) {
     b.addTriangle();
     setVisible(b, 0, false);
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_EQ(scene.warnings[0], "every node is hidden (KHR_node_visibility): framing uses the hidden geometry");
+    ASSERT_EQ(scene.report.warnings.size(), 1u);
+    EXPECT_EQ(scene.report.warnings[0], "every node is hidden (KHR_node_visibility): framing uses the hidden geometry");
     EXPECT_TRUE(scene.draws[0].hidden);
     EXPECT_EQ(scene.bounds.max, glm::vec3(1, 1, 0));
     // Visible by default, and when said so: no warning.
     setVisible(b, 0, true);
-    EXPECT_TRUE(loadGltf(b.writeGltf(dir.path())).warnings.empty());
+    EXPECT_TRUE(loadGltf(b.writeGltf(dir.path())).report.warnings.empty());
 }
 
 TEST(NodeVisibility, AnAnimatedVisibilityTogglesAtItsKey) {
@@ -70,7 +70,7 @@ TEST(NodeVisibility, AnAnimatedVisibilityTogglesAtItsKey) {
     addPointerAnimation(b, {{.pointer = "/nodes/2/extensions/KHR_node_visibility/visible", .times = {0, 1, 2}, .values = {0, 1, 0},
                              .interpolation = "STEP", .componentType = kUnsignedByte}});
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.animations[0].channels.size(), 1u);
     EXPECT_EQ(scene.animations[0].channels[0].property, AnimatedProperty::Visibility);
     ScenePose pose(scene, {0});

@@ -32,7 +32,7 @@ TEST(ScenePose, BoxAnimatedFollowsItsKeys) {
     // Node 2 (a mesh, under node 1) rotates from the identity at 1.25 s to 180° about +X at 2.5 s.
     // Node 3 (the other mesh) is static.
     const Scene scene = loadGltf(sharedModels() / "BoxAnimated/glTF-Binary/BoxAnimated.glb");
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.animations.size(), 1u);
     EXPECT_EQ(scene.animations[0].channels.size(), 2u);
     EXPECT_NEAR(scene.animations[0].duration, 3.70833, 1e-5);
@@ -74,7 +74,7 @@ TEST(ScenePose, NoAnimationIsTheRestPose) {
 TEST(ScenePose, SelectionByIndexNameAllAndNone) {
     REQUIRE_MODELS();
     const Scene scene = loadGltf(sharedModels() / "InterpolationTest/glTF-Binary/InterpolationTest.glb");
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.animations.size(), 9u);
     EXPECT_EQ(scene.animations[0].name, "Step Scale");
     const auto select = [&](std::vector<std::string> names) { return selectAnimations(scene, names); };
@@ -128,7 +128,7 @@ TEST(ScenePose, ZeroScaleAnimatedNodeIsKeptHiddenUntilScaledUp) {
     b.doc["animations"] = Json::array({{{"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "scale"}}}}}},
                                         {"samplers", {{{"input", times}, {"output", scales}}}}}});
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.draws.size(), 1u);
     EXPECT_TRUE(scene.draws[0].hidden);
     ScenePose pose(scene, selectAnimations(scene, {}));
@@ -151,7 +151,7 @@ TEST(ScenePose, ChannelsOnNodesOutsideTheSceneAndWithoutTargetAreDropped) {
                                                        {{"sampler", 0}, {"target", {{"path", "translation"}}}}}},
                                         {"samplers", {{{"input", times}, {"output", moves}}}}}});
     const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.animations.size(), 1u);
     EXPECT_TRUE(scene.animations[0].channels.empty());
     EXPECT_FALSE(ScenePose(scene, {0}).animated());
@@ -168,7 +168,7 @@ namespace {
 void expectBoundsContainDeformedVertices(const char* path, const std::vector<std::string>& animations) {
     if (sharedModels().empty()) GTEST_SKIP() << "../shared/assets not present";
     const Scene scene = loadGltf(sharedModels() / path);
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ScenePose pose(scene, selectAnimations(scene, animations));
     const Aabb all = pose.animationBounds();
     const auto inside = [](const Aabb& box, const glm::vec3& p) {

@@ -100,7 +100,7 @@ TEST_F(DiffFiles, ReadsExrAsLinear) {
     EXPECT_TRUE(image.rgb8.empty());
     ASSERT_EQ(image.linear.rgb.size(), 48u);
     EXPECT_EQ(image.linear.rgb[5], 2.5f);
-    EXPECT_TRUE(image.warnings.empty());  // not 2:1, but that is an environment's concern
+    EXPECT_TRUE(image.report.warnings.empty());  // not 2:1, but that is an environment's concern
     std::vector<float> rgba(16 * 4, 1.0f);
     rgba[0] = NAN;
     rgba[5] = -2.0f;
@@ -108,8 +108,8 @@ TEST_F(DiffFiles, ReadsExrAsLinear) {
     const ComparedImage repaired = readComparedImage(dir / "nan.exr");
     EXPECT_EQ(repaired.linear.rgb[0], 0.0f);
     EXPECT_EQ(repaired.linear.rgb[4], 0.0f);
-    ASSERT_EQ(repaired.warnings.size(), 1u);
-    EXPECT_NE(repaired.warnings[0].find("2 pixels held NaN"), std::string::npos) << repaired.warnings[0];
+    ASSERT_EQ(repaired.report.warnings.size(), 1u);
+    EXPECT_NE(repaired.report.warnings[0].find("2 pixels held NaN"), std::string::npos) << repaired.report.warnings[0];
 }
 
 TEST_F(DiffFiles, BadFilesAreOneLineErrorsNamingTheFile) {

@@ -78,8 +78,8 @@ TEST(Ktx2FileTest, EveryEtc1sLevelDecodesAsTheReference) {
         EXPECT_EQ(l.rgba8, reference("etc1s_mips_level" + std::to_string(level) + "_ref.png", l.width, l.height))
             << "level " << level;
     }
-    EXPECT_TRUE(texture.warnings.empty());
-    EXPECT_TRUE(texture.notes.empty());
+    EXPECT_TRUE(texture.report.warnings.empty());
+    EXPECT_TRUE(texture.report.notes.empty());
 }
 
 TEST(Ktx2FileTest, EveryUastcLevelDecodesAsTheReferenceInTheFilesTransferFunction) {
@@ -127,8 +127,8 @@ TEST(Ktx2FileTest, RowsStoredBottomFirstAreFlippedWithANote) {
     test::Ktx2Parts parts = splitKtx2(file);
     parts.kvd = ktx2KeyValues({{"KTXorientation", "ru"}, {"KTXwriter", "test"}});
     const DecodedTexture upright = decodeKtx2(file, kMaxDimension), flipped = decodeKtx2(joinKtx2(parts), kMaxDimension);
-    ASSERT_EQ(flipped.notes.size(), 1u);
-    EXPECT_NE(flipped.notes[0].find("KTXorientation 'ru'"), std::string::npos);
+    ASSERT_EQ(flipped.report.notes.size(), 1u);
+    EXPECT_NE(flipped.report.notes[0].find("KTXorientation 'ru'"), std::string::npos);
     const TextureLevel &a = upright.levels[0], &b = flipped.levels[0];
     const size_t row = size_t(a.width) * 4;
     for (uint32_t y = 0; y < a.height; ++y)
@@ -139,8 +139,8 @@ TEST(Ktx2FileTest, RowsStoredBottomFirstAreFlippedWithANote) {
 
     parts.kvd = ktx2KeyValues({{"KTXswizzle", "rrr1"}});
     const DecodedTexture swizzled = decodeKtx2(joinKtx2(parts), kMaxDimension);
-    ASSERT_EQ(swizzled.warnings.size(), 1u);
-    EXPECT_NE(swizzled.warnings[0].find("KTXswizzle 'rrr1'"), std::string::npos);
+    ASSERT_EQ(swizzled.report.warnings.size(), 1u);
+    EXPECT_NE(swizzled.report.warnings[0].find("KTXswizzle 'rrr1'"), std::string::npos);
 }
 
 TEST(Ktx2FileTest, BrokenKeyValueDataAndDfdAreRefused) {
