@@ -12,17 +12,13 @@ cd "$(dirname "$0")/.."
 start=$SECONDS
 stage() { printf '\n=== [%dm%02ds] %s\n' $(((SECONDS - start) / 60)) $(((SECONDS - start) % 60)) "$*"; }
 
-# Runs a GoogleTest binary as two shards in parallel (one per core), printing only failures and the
-# summaries; fails when either shard fails or runs past 20 minutes. The sanitized stage runs its
-# tests this way rather than one process per test through ctest: a sanitized process takes ~0.45 s
-# to start and exit, which over ~700 tests was half of the stage.
-two_shards() {
-  local status=0 pid
-  GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=0 timeout 1200 "$@" --gtest_brief=1 &
-  pid=$!
-  GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=1 timeout 1200 "$@" --gtest_brief=1 || status=1
-  wait "$pid" || status=1
-  return "$status"
+# Runs a GoogleTest binary as 8 shards, one per core at a time (the next shard starts when one
+# ends, so a shard of long tests does not leave a core idle at the end), printing only failures and
+# the summaries; fails when any shard fails or runs past 20 minutes. The sanitized stage runs its
+# tests this way rather than one process per test through ctest: a sanitized process takes a
+# moment to start and exit, which over ~700 tests was half of the stage.
+sharded() {
+  seq 0 7 | xargs -P "$(nproc)" -I{} env GTEST_TOTAL_SHARDS=8 GTEST_SHARD_INDEX={} timeout 1200 "$@" --gtest_brief=1
 }
 
 stage "install missing packages"
@@ -38,9 +34,9 @@ stage "sanitized build"
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j"$(nproc)" --target candela_unit_tests candela_engine_unit_tests candela candela_cli_tests
 stage "sanitized unit tests"
-two_shards build/asan/tests/unit/candela_unit_tests
-two_shards build/asan/tests/unit/candela_engine_unit_tests
+sharded build/asan/tests/unit/candela_unit_tests
+sharded build/asan/tests/unit/candela_engine_unit_tests
 stage "sanitized CLI tests"
 # The CLI tests start the Vulkan driver: LeakSanitizer off for them, as in tests/CMakeLists.txt.
-ASAN_OPTIONS=detect_leaks=0 two_shards build/asan/tests/cli/candela_cli_tests
+ASAN_OPTIONS=detect_leaks=0 sharded build/asan/tests/cli/candela_cli_tests
 stage "done"
