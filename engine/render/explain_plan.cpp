@@ -31,6 +31,16 @@ std::vector<std::string> explainLeftOut(const FramePlan& plan, const FrameFacts&
     return out;
 }
 
+std::string explainAlphaMasking(AlphaMasking masking) {
+    switch (masking) {
+        case AlphaMasking::AlphaTest: return "";
+        case AlphaMasking::AlphaToCoverage: return "; alpha-masked materials use alpha to coverage";
+        case AlphaMasking::AlphaTestNoAlphaToOne:
+            return "; alpha-masked materials keep the alpha test (the device has no alphaToOne)";
+    }
+    return "";
+}
+
 std::string explainForwardPath(const FramePlan& plan, const FrameFacts& facts) {
     std::string reason;
     switch (plan.pathReason) {

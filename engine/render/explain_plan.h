@@ -16,6 +16,9 @@ std::vector<std::string> explainLeftOut(const FramePlan& plan, const FrameFacts&
 // "shading path: forward" with the reason a forward frame gives (a visibility frame's line is the
 // path's own, VisibilityPath::describe). Precondition: plan.path is Forward.
 std::string explainForwardPath(const FramePlan& plan, const FrameFacts& facts);
+// What the msaa line adds for alpha-masked materials ("" at one sample), e.g. "; alpha-masked
+// materials use alpha to coverage".
+std::string explainAlphaMasking(AlphaMasking masking);
 // The lines that follow the forward draws': the sheen LUT (`sheenLutComputed`: by an earlier
 // frame), transmission, the debug view, the sky and the skybox.
 std::vector<std::string> explainPasses(const FramePlan& plan, const FrameFacts& facts, bool sheenLutComputed);

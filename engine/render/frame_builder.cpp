@@ -176,7 +176,8 @@ FrameFacts FrameBuilder::facts(const RenderSettings& settings, uint32_t samples)
             .devicePath = devicePath,
             .devicePathReason = devicePathReason,
             .visibilityUnsupported = mVisibility.unsupported(),
-            .integerMsaaSampling = mVisibility.samplesIntegerImages(samples)};
+            .integerMsaaSampling = mVisibility.samplesIntegerImages(samples),
+            .alphaToOne = mContext.alphaToOne()};
 }
 
 void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std::optional<TextureId> target) {
@@ -247,10 +248,11 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
                                                           .debugView = settings.debugView,
                                                           .shading = settings.shadingOptions,
                                                           .samples = msaa.samples,
+                                                          .alphaToCoverage = plan.alphaMasking == AlphaMasking::AlphaToCoverage,
                                                           .posed = posed ? &*posed : nullptr,
                                                           .deformed = deformed ? &*deformed : nullptr,
                                                           .layerMaps = layerMaps ? &*layerMaps : nullptr},
-                                                         mScene.gpuScene(), mContext.alphaToOne());
+                                                         mScene.gpuScene());
     // The user's values for the forward programs' push constants, which both paths push.
     mParameters.apply("forward", "Push", mForward.reflection().pushConstants.members, inputs.push);
     // The variants the scene needs now, compiled on the workers and here while the draws ask for
@@ -343,11 +345,7 @@ void FrameBuilder::addExplanation(Frame& frame, const RenderSettings& settings, 
                            " punctual lights (--scene-lights off)");
     if (mScene.defaultLightsAdded())
         lines.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
-    lines.push_back("msaa: " + msaa.reason +
-                    (msaa.samples == 1 ? std::string()
-                     : mContext.alphaToOne()
-                         ? "; alpha-masked materials use alpha to coverage"
-                         : "; alpha-masked materials keep the alpha test (the device has no alphaToOne)"));
+    lines.push_back("msaa: " + msaa.reason + explainAlphaMasking(plan.alphaMasking));
     lines.insert(lines.end(), std::make_move_iterator(forward.begin()), std::make_move_iterator(forward.end()));
     const passes::ForwardPass::BuildCounts builds = mForward.buildCounts();
     lines.push_back("forward pipelines: " + std::to_string(builds.built) + " built, " + std::to_string(builds.queued) +

@@ -72,6 +72,9 @@ FramePlan planFrame(const FrameFacts& facts) {
         plan.greyBackground = facts.environment && facts.skyboxWanted && !facts.backgroundColour;
     }
 
+    if (facts.samples > 1)
+        plan.alphaMasking = facts.alphaToOne ? AlphaMasking::AlphaToCoverage : AlphaMasking::AlphaTestNoAlphaToOne;
+
     if (plan.path == ShadingPath::Visibility) {
         // The visibility path's image is resolved: blended and transmissive draws at MSAA need one at
         // the frame's sample count; the blended draws follow in their own pass unless the

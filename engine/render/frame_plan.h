@@ -2,8 +2,8 @@
 // The frame plan: what a scene frame draws and where, decided by one pure function (planFrame) from
 // the frame's settings, the scene's facts and the device's capabilities — the shading path, where
 // the sky goes, how transmissive draws see what is behind them, whether the visibility path needs
-// the MSAA expansion and the blended pass, what the skin_morph pass does, how the tonemap shows a
-// debug view — with every pass or draw it leaves out and why, as enums. No graph and no Vulkan: each
+// the MSAA expansion and the blended pass, what the skin_morph pass does, how alpha-masked draws cut
+// their edges, how the tonemap shows a debug view — with every pass or draw it leaves out and why, as enums. No graph and no Vulkan: each
 // decision is unit-tested by its fields (tests/unit/render/frame_plan_test.cpp). FrameBuilder
 // gathers the facts, declares the plan's passes and turns the plan into --explain lines
 // (explain_plan.h).
@@ -43,6 +43,7 @@ struct FrameFacts {
     std::string devicePathReason;   // why (the device's words)
     std::string visibilityUnsupported;  // why the device or the scene cannot take the visibility path ("": it can)
     bool integerMsaaSampling = true;    // the device samples integer images at `samples` samples
+    bool alphaToOne = false;            // the device has alphaToOne (alpha to coverage storing alpha 1)
 };
 
 // Why a frame takes the forward path when the visibility path was not asked for or cannot be taken.
@@ -72,6 +73,13 @@ enum class DeformPlan : uint8_t {
     NoneInPose,  // nothing is deformed in this pose: no skin_morph pass
     Deformed,    // skin_morph deforms the pose's draws
     Disabled,    // skin_morph is declared (switched off): the deformed draws are left out
+};
+
+// How alpha-masked draws cut their edges, on both paths.
+enum class AlphaMasking : uint8_t {
+    AlphaTest,              // one sample: the alpha test
+    AlphaToCoverage,        // MSAA: coverage from alpha (stored alpha 1: alphaToOne)
+    AlphaTestNoAlphaToOne,  // MSAA, but the device has no alphaToOne: the alpha test
 };
 
 // How the tonemap shows a frame: as set, or, in a debug view of data (material inputs, normals, GGX
@@ -104,6 +112,7 @@ struct FramePlan {
     bool sheenLut = false;       // the layered program reads the sheen LUT (computed once, then imported)
     bool msaaExpand = false;     // visibility path at MSAA: blended or transmissive draws need a multisampled image
     bool blendedPass = false;    // visibility path: forward_blended draws the blended draws (no transmissive ones)
+    AlphaMasking alphaMasking = AlphaMasking::AlphaTest;
     TonemapLook tonemapLook = TonemapLook::AsSet;
     // A debug view has no sky: where the environment was the background (and no colour is given),
     // the tonemap puts a neutral grey (#262626) behind the data instead.

@@ -4,7 +4,7 @@ namespace candela::passes {
 
 using namespace graph;
 
-FrameInputs makeFrameInputs(const FrameInputsDesc& desc, const scene::GpuScene& scene, bool alphaToOne) {
+FrameInputs makeFrameInputs(const FrameInputsDesc& desc, const scene::GpuScene& scene) {
     FrameInputs out;
     uint32_t lightTypes = 0;
     for (const shading::LightData& light : scene.lights()) lightTypes |= 1u << static_cast<uint32_t>(light.directionType.w);
@@ -18,7 +18,7 @@ FrameInputs makeFrameInputs(const FrameInputsDesc& desc, const scene::GpuScene& 
                    .debugView = desc.debugView,
                    .specularAa = desc.shading.specularAntiAliasing,
                    .samples = desc.samples,
-                   .alphaToCoverage = desc.samples > 1 && alphaToOne};
+                   .alphaToCoverage = desc.samples > 1 && desc.alphaToCoverage};
     out.push.viewProjection = desc.view.viewProjection;
     out.push.eye = glm::vec4(desc.view.eye, 1.0f);
     out.push.counts = glm::uvec4(scene.lightCount(), 0, 0, 0);

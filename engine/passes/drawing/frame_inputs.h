@@ -65,6 +65,9 @@ struct FrameInputsDesc {
     options::DebugView debugView = options::DebugView::None;
     options::ShadingOptions shading;
     uint32_t samples = 1;  // of the draw targets
+    // Masked draws use alpha to coverage (samples > 1; the frame plan's AlphaMasking, which asks
+    // the device for alphaToOne: render/frame_plan.h).
+    bool alphaToCoverage = false;
     const PosedBuffers* posed = nullptr;
     const DeformedVertices* deformed = nullptr;
     const LayerMaps* layerMaps = nullptr;  // the sheen LUT and cube, for the layered programs
@@ -84,10 +87,9 @@ struct FrameInputs {
     int32_t vertexOffsetOf(uint32_t draw) const { return vertexOffset.empty() ? kRestVertices : vertexOffset[draw]; }
 };
 
-// The inputs of a frame of `desc` drawing `scene`; `alphaToOne`: the device has it (masked draws
-// at MSAA then use alpha to coverage). The push constants hold the view, the light count and the
-// IBL parameters (the user's edits are applied by the caller).
-FrameInputs makeFrameInputs(const FrameInputsDesc& desc, const scene::GpuScene& scene, bool alphaToOne);
+// The inputs of a frame of `desc` drawing `scene`. The push constants hold the view, the light
+// count and the IBL parameters (the user's edits are applied by the caller).
+FrameInputs makeFrameInputs(const FrameInputsDesc& desc, const scene::GpuScene& scene);
 
 // Which of the frame's per-frame buffers a pass reads and in which shader stages (0: the pass
 // type's default stages).

@@ -240,6 +240,22 @@ TEST(FramePlan, ADebugViewPutsGreyWhereTheSkyWasTheBackground) {
     EXPECT_FALSE(planFrame(noEnvironment).greyBackground);
 }
 
+TEST(FramePlan, AlphaMaskedDrawsUseCoverageAtMsaaWhereTheDeviceStoresAlphaOne) {
+    FrameFacts facts = visibilityFrame();
+    facts.alphaToOne = true;
+    EXPECT_EQ(planFrame(facts).alphaMasking, AlphaMasking::AlphaTest);  // one sample
+    EXPECT_EQ(explainAlphaMasking(planFrame(facts).alphaMasking), "");
+    facts.samples = 4;
+    EXPECT_EQ(planFrame(facts).alphaMasking, AlphaMasking::AlphaToCoverage);
+    EXPECT_EQ(explainAlphaMasking(planFrame(facts).alphaMasking), "; alpha-masked materials use alpha to coverage");
+    facts.alphaToOne = false;
+    EXPECT_EQ(planFrame(facts).alphaMasking, AlphaMasking::AlphaTestNoAlphaToOne);
+    EXPECT_EQ(explainAlphaMasking(planFrame(facts).alphaMasking),
+              "; alpha-masked materials keep the alpha test (the device has no alphaToOne)");
+    facts.requestedPath = ShadingPath::Forward;  // the same on both paths
+    EXPECT_EQ(planFrame(facts).alphaMasking, AlphaMasking::AlphaTestNoAlphaToOne);
+}
+
 TEST(FramePlan, ExplainsThePassesInOrder) {
     FrameFacts facts = visibilityFrame();
     facts.skyboxWanted = false;
