@@ -5,6 +5,7 @@
 
 #include "executor/graph_executor.h"
 #include "graph/render_graph.h"
+#include "passes/drawing/shading_summary.h"
 #include "render/frame_plan.h"
 
 #include <chrono>
@@ -32,6 +33,9 @@ struct Frame {
     // A scene frame's plan (what it draws and where, what it leaves out and why); none for a test
     // pattern or a calibration frame.
     std::optional<FramePlan> plan;
+    // What a scene frame's draws asked of the shading programs (variants, what the scene leaves
+    // out); none for other frames.
+    std::optional<passes::ShadingSummary> shading;
     // Whether the tonemap put a solid background colour behind the scene (under a skybox pass's
     // sky, if one ran, it is not seen).
     bool solidBackground = false;

@@ -277,8 +277,11 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     const passes::DrawTarget drawn = addDraws(frame, plan, facts, visibility, tables ? &*tables : nullptr, view, ibl ? &*ibl : nullptr);
     frame.hdr = drawn.hdr;
     addTonemap(frame, settings, plan, target, view, ibl ? &*ibl : nullptr);
-    addExplanation(frame, settings, msaa, mForward.describe(list, inputs, settings.drawSelection), plan, facts);
+    passes::ShadingSummary shading = passes::summarizeShading(list, mScene.materialKeys(), scene, mScene.gpuScene().lightCount(),
+                                                              inputs.variant, inputs.posed.draws.valid());
+    addExplanation(frame, settings, msaa, passes::explainShading(shading, list, settings.drawSelection), plan, facts);
     frame.plan = std::move(plan);
+    frame.shading = std::move(shading);
 }
 
 passes::DrawTarget FrameBuilder::addDraws(Frame& frame, const FramePlan& plan, const FrameFacts& facts,
@@ -338,7 +341,7 @@ void FrameBuilder::addTonemap(Frame& frame, const RenderSettings& settings, cons
 }
 
 void FrameBuilder::addExplanation(Frame& frame, const RenderSettings& settings, const vk::MsaaChoice& msaa,
-                            std::vector<std::string> forward, const FramePlan& plan, const FrameFacts& facts) {
+                                  std::vector<std::string> shading, const FramePlan& plan, const FrameFacts& facts) {
     std::vector<std::string>& lines = frame.explanation;
     if (!mScene.sceneLightsUsed() && !settings.scene->lights.empty())
         lines.emplace_back("left out: the scene's " + std::to_string(settings.scene->lights.size()) +
@@ -346,7 +349,7 @@ void FrameBuilder::addExplanation(Frame& frame, const RenderSettings& settings, 
     if (mScene.defaultLightsAdded())
         lines.emplace_back("added: default key and fill lights (the scene has no punctual lights; --no-default-lights)");
     lines.push_back("msaa: " + msaa.reason + explainAlphaMasking(plan.alphaMasking));
-    lines.insert(lines.end(), std::make_move_iterator(forward.begin()), std::make_move_iterator(forward.end()));
+    lines.insert(lines.end(), std::make_move_iterator(shading.begin()), std::make_move_iterator(shading.end()));
     const passes::ForwardPass::BuildCounts builds = mForward.buildCounts();
     lines.push_back("forward pipelines: " + std::to_string(builds.built) + " built, " + std::to_string(builds.queued) +
                     " queued ahead of use (" + std::to_string(builds.queuedFinished) + " of them done) (--precompile " +

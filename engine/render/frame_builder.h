@@ -107,10 +107,10 @@ private:
     // The tonemap's settings for the frame: the settings' own, with the plan's look and grey
     // background for a debug view.
     static passes::TonemapSettings tonemapOf(const RenderSettings& settings, const FramePlan& plan);
-    // Adds the frame's --explain lines: lights, MSAA, the forward passes' `forward` lines, the pipelines, the
-    // maps, and the plan's (explain_plan.h).
-    void addExplanation(Frame& frame, const RenderSettings& settings, const vk::MsaaChoice& msaa, std::vector<std::string> forward,
-                  const FramePlan& plan, const FrameFacts& facts);
+    // Adds the frame's --explain lines: lights, MSAA, the `shading` lines (the draws and their
+    // variants: passes::explainShading), the pipelines, the maps, and the plan's (explain_plan.h).
+    void addExplanation(Frame& frame, const RenderSettings& settings, const vk::MsaaChoice& msaa,
+                        std::vector<std::string> shading, const FramePlan& plan, const FrameFacts& facts);
 
     vk::Context& mContext;
     SceneState& mScene;

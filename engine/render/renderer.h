@@ -157,6 +157,10 @@ public:
     // The plan of the last frame (what it draws where, what it leaves out and why); null when the
     // last frame was no scene frame.
     const FramePlan* lastPlan() const { return mRunner.last().plan ? &*mRunner.last().plan : nullptr; }
+    // What the last frame's draws asked of the shading programs; null when it was no scene frame.
+    const passes::ShadingSummary* lastShading() const {
+        return mRunner.last().shading ? &*mRunner.last().shading : nullptr;
+    }
     // What the last frame drew behind the scene: the sky (a skybox pass that ran, or composited by
     // the tonemap), the tonemap's solid background colour, or nothing (alpha = coverage).
     enum class Backdrop { Sky, Color, Transparent };

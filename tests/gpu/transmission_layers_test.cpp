@@ -4,6 +4,7 @@
 // `dispersion` shows the angle Snell's law gives between the red and blue rays, and the visibility
 // path's compute shading draws both as the forward pass does.
 #include "gpu_test.h"
+#include "shading_summary_util.h"
 #include "sphere_furnace.h"
 
 #include "../unit/brdf_reference.h"
@@ -19,12 +20,6 @@
 
 namespace candela::test {
 namespace {
-
-bool explains(Renderer& renderer, const std::string& part) {
-    for (const std::string& line : renderer.explain())
-        if (line.find(part) != std::string::npos) return true;
-    return false;
-}
 
 // White furnace of the diffuse transmission: the furnace spheres (white, roughness 0 … 1 across,
 // dielectric bottom row and metal top row) with diffuse transmission 0, 0.25, 0.5, 0.75, 1 across
@@ -56,7 +51,8 @@ TEST_F(GpuTest, DiffuseTransmissionKeepsTheWhiteFurnace) {
         renderer.sceneReplaced();  // each pass's scene is a new one at the same address
         const CapturedFrame frame = renderer.capture(settings);
         ASSERT_EQ(frameProblem(frame), "");
-        EXPECT_TRUE(explains(renderer, pass == 0 ? "pays for layers: diffuse-transmission " : "pays for layers: volume+diffuse-transmission"));
+        EXPECT_TRUE(pass == 0 ? paysFor(renderer, scene::kLayerDiffuseTransmission, /*exactly=*/true)
+                              : paysFor(renderer, scene::kLayerVolume | scene::kLayerDiffuseTransmission));
         EXPECT_TRUE(renderer.lastPlan()->leavesOut(PlannedPart::TransmissionBackground));  // no background needed
         const std::vector<FurnacePixel> pixels = furnacePixels(frame, scene, settings, spheres);
         if (pass < 2) {
@@ -123,7 +119,7 @@ TEST_F(GpuTest, DiffuseTransmissionExtremesStayFinite) {
     RenderSettings settings = furnaceSettings(scene, env);
     settings.ibl.skybox = true;
     EXPECT_EQ(frameProblem(renderer.capture(settings)), "");
-    EXPECT_TRUE(explains(renderer, "diffuse-transmission"));
+    EXPECT_TRUE(paysFor(renderer, scene::kLayerDiffuseTransmission));
     settings.debugView = options::DebugView::DiffuseTransmission;
     const CapturedFrame light = renderer.capture(settings);
     EXPECT_EQ(frameProblem(light), "");
@@ -151,7 +147,7 @@ TEST_F(GpuTest, DiffuseTransmissionOfWeightZeroDrawsTheCoreImage) {
     Renderer renderer(context());
     const CapturedFrame a = renderer.capture({.width = 240, .height = 135, .scene = &core});
     const CapturedFrame b = renderer.capture({.width = 240, .height = 135, .scene = &layered});
-    EXPECT_TRUE(explains(renderer, "pays for layers: diffuse-transmission"));
+    EXPECT_TRUE(paysFor(renderer, scene::kLayerDiffuseTransmission));
     ASSERT_EQ(a.rgba8.size(), b.rgba8.size());
     int worst = 0;
     for (size_t i = 0; i < a.rgba8.size(); ++i) worst = std::max(worst, std::abs(int(a.rgba8[i]) - int(b.rgba8[i])));
@@ -205,9 +201,9 @@ TEST_F(GpuTest, DispersionZeroDrawsTheImageWithoutItAndLargeStaysFinite) {
     };
     const scene::Scene plainScene = glass(0.0f, false), zeroScene = glass(0.0f, true), tenScene = glass(10.0f, false);
     const CapturedFrame plain = render(plainScene);
-    EXPECT_TRUE(explains(renderer, "pays for layers: transmission+volume "));
+    EXPECT_TRUE(paysFor(renderer, scene::kLayerTransmission | scene::kLayerVolume, /*exactly=*/true));
     const CapturedFrame zero = render(zeroScene);
-    EXPECT_TRUE(explains(renderer, "pays for layers: transmission+volume+dispersion"));
+    EXPECT_TRUE(paysFor(renderer, scene::kLayerTransmission | scene::kLayerVolume | scene::kLayerDispersion));
     const CapturedFrame ten = render(tenScene);
     ASSERT_EQ(frameProblem(plain), "");
     ASSERT_EQ(plain.rgba32f.size(), zero.rgba32f.size());

@@ -169,46 +169,6 @@ DrawTarget ForwardPass::addBlended(RenderGraph& graph, const DrawTarget& target,
                        [&](PassBuilder& builder) { return drawInto(builder, target, false, DepthUse::Test); });
 }
 
-std::vector<std::string> ForwardPass::describe(const DrawList& list, const FrameInputs& frame,
-                                               const options::DrawSelection& selection) const {
-    std::vector<std::string> out;
-    const scene::Scene& scene = mScene->scene();
-    // Draws per material key, then per variant name (keys of one frame may share a variant).
-    std::vector<uint32_t> perKey(mKeys->keys.size(), 0);
-    for (const DrawListItem& item : list.items) ++perKey[item.key];
-    std::map<std::string, uint32_t> variantCounts;
-    for (uint32_t key = 0; key < perKey.size(); ++key)
-        if (perKey[key]) variantCounts[shadingVariant(mKeys->keys[key], frame.variant).name()] += perKey[key];
-    std::string used = "forward: " + std::to_string(list.draws) + " draws" +
-                       (list.instances ? " (" + std::to_string(list.instances) + " instances in instanced draws)" : std::string()) +
-                       "; variants:";
-    for (const auto& [name, count] : variantCounts) used += " " + name + " ×" + std::to_string(count);
-    out.push_back(used);
-    out.push_back(describeSelection(list, selection));
-    if (frame.posed.draws.valid())
-        out.push_back("animated: draw matrices of this frame's pose, written by the CPU into a per-frame buffer" +
-                      (list.hiddenDraws ? " (" + std::to_string(list.hiddenDraws) + " draws hidden or scaled to nothing, not drawn)"
-                                        : std::string()));
-    else if (list.hiddenDraws)
-        out.push_back("left out: " + std::to_string(list.hiddenDraws) + " draws of hidden nodes (KHR_node_visibility)");
-    if (mScene->lightCount() == 0) out.emplace_back("left out: light loop (no punctual lights)");
-    if (std::none_of(scene.materials.begin(), scene.materials.end(), [](const scene::Material& m) { return m.normal.present(); }))
-        out.emplace_back("left out: normal mapping / TBN work (no material has a normal texture)");
-    if (std::none_of(scene.materials.begin(), scene.materials.end(), [](const scene::Material& m) { return m.unlit; }))
-        out.emplace_back("left out: unlit variant (no KHR_materials_unlit material)");
-    bool anyLayered = false;
-    for (uint32_t material = 0; material < scene.materials.size(); ++material) {
-        const uint32_t layers = (*mKeys)[material].layers;
-        if (!layers) continue;
-        anyLayered = true;
-        out.push_back("material '" + scene.materials[material].name + "' pays for layers: " + plusLayerNames(layers).substr(1) +
-                      " (the layered forward program)");
-    }
-    if (!anyLayered)
-        out.emplace_back("left out: material layers (no material uses a KHR_materials_* layer; core forward program only)");
-    return out;
-}
-
 DrawTarget ForwardPass::addDrawPass(RenderGraph& graph, std::string name, std::span<const DrawListItem> items,
                                     const FrameInputs& frame, DrawStats* stats,
                                     const std::function<DrawTarget(PassBuilder&)>& targets) {

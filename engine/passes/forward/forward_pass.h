@@ -81,9 +81,6 @@ public:
     };
     BuildCounts buildCounts() const { return {mPipelines.size(), mPipelines.pending(), mPipelines.pendingFinished()}; }
 
-    // What the frame's forward draws use and leave out, one line each, for `--explain`.
-    std::vector<std::string> describe(const DrawList& list, const FrameInputs& frame, const options::DrawSelection& selection) const;
-
     // The reflection of the forward shaders without layers (every variant shares sets 0 and 2 and
     // the push constants; the layered program adds to set 1).
     const shader::ShaderReflection& reflection() { return coreProgram().reflection(); }
