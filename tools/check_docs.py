@@ -8,7 +8,10 @@
 - every path of the tree named in backticks (starting with app/, engine/, shaders/, tests/,
   tools/, docs/, assets/, .ci/ or a folder of engine/, which the docs name without engine/) exists
   — placeholders (NAME, TARGET: a component in capitals) and patterns (*, {a,b}, …) left aside —
-  and every relative Markdown link resolves.
+  and every relative Markdown link resolves;
+- every size claimed of a file in backticks — "`PATH` (..., under N lines)" or "(`PATH`, ~N
+  lines)" — holds: under N, or within 25% of ~N (a glob such as `vk/memory.*` counts its files
+  together; a sum such as "~120 + ~180 lines" is left aside).
 
 Usage: check_docs.py PROJECT_DIR CANDELA_EXECUTABLE. Prints one line per problem (FILE:LINE: what)
 and exits 1 when there is one. Registered with ctest as `docs` (tests/cli/CMakeLists.txt).
@@ -87,6 +90,28 @@ def check_paths(root, rel, text, problems):
                 problems.append(f"{rel}:{number}: link {link} does not resolve")
 
 
+SIZE_CLAIM = re.compile(r"`([^`\s]+)`[^`\n+]{0,40}?(\bunder |~)([0-9][0-9,]*) lines")
+
+def check_sizes(root, rel, text, problems):
+    for m in SIZE_CLAIM.finditer(text):
+        path, kind, claimed = m.group(1), m.group(2).strip(), int(m.group(3).replace(",", ""))
+        # A path of the tree, a path under engine/ (the docs name its folders without it), or a
+        # bare file name somewhere under engine/.
+        base = path if path.startswith(TREE_ROOTS) else "engine/" + path if "/" in path else "engine/**/" + path
+        files = sorted(glob.glob(os.path.join(root, base), recursive=True))
+        if not files:
+            problems.append(f"{rel}:{line_of(text, m.start())}: size claimed of `{path}`, which names no file")
+            continue
+        lines = 0
+        for name in files:
+            with open(name, encoding="utf-8") as f:
+                lines += sum(1 for _ in f)
+        if kind == "under" and lines >= claimed:
+            problems.append(f"{rel}:{line_of(text, m.start())}: `{path}` is {lines} lines, not under {claimed}")
+        if kind == "~" and not 0.75 * claimed <= lines <= 1.25 * claimed:
+            problems.append(f"{rel}:{line_of(text, m.start())}: `{path}` is {lines} lines, not ~{claimed}")
+
+
 def main():
     root, executable = sys.argv[1], sys.argv[2]
     flags = command_flags(executable)
@@ -99,6 +124,7 @@ def main():
         check_commands(rel, text, flags, problems)
         check_flags(rel, text, all_flags, problems)
         check_paths(root, rel, text, problems)
+        check_sizes(root, rel, text, problems)
     for problem in problems:
         print(problem)
     print(f"{len(files)} files checked, {len(problems)} problems")
