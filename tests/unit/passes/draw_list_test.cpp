@@ -1,6 +1,7 @@
 // The frame's draw list (passes/drawing/draw_list.h): selection, ranges, sort keys and material
 // keys, on small hand-made scenes (no GPU).
 #include "passes/drawing/draw_list.h"
+#include "passes/draw_list_test_util.h"
 #include "passes/drawing/shading_variant.h"
 
 #include <gtest/gtest.h>
@@ -18,26 +19,6 @@ scene::Material material(scene::AlphaMode mode, float transmission = 0.0f, bool 
     m.transmissionFactor = transmission;
     m.unlit = unlit;
     return m;
-}
-
-// A unit box's draw of `material` at `centre` (world bounds only: the list reads no vertices).
-scene::Draw drawAt(uint32_t material, glm::vec3 centre, uint32_t indexCount = 36) {
-    scene::Draw d;
-    d.material = material;
-    d.indexCount = indexCount;
-    d.world = glm::translate(glm::mat4(1.0f), centre);
-    d.bounds = {centre - 0.5f, centre + 0.5f};
-    d.localBounds = {glm::vec3(-0.5f), glm::vec3(0.5f)};
-    return d;
-}
-
-// The eye at the origin looking down −Z (90°, square).
-scene::ViewSetup lookingDownMinusZ() {
-    scene::ViewSetup v;
-    v.view = glm::lookAt(glm::vec3(0), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0));
-    v.projection = scene::perspectiveReverseZ(glm::radians(90.0f), 1.0f, 0.1f);
-    v.viewProjection = v.projection * v.view;
-    return v;
 }
 
 struct Fixture {

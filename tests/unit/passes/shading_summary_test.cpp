@@ -1,31 +1,12 @@
 // What a frame's draws ask of the shading programs (passes/drawing/shading_summary.h): the summary's
 // fields from a hand-made scene's draw list, and the --explain words made of them (no GPU).
 #include "passes/drawing/shading_summary.h"
+#include "passes/draw_list_test_util.h"
 
 #include <gtest/gtest.h>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 namespace candela::passes {
 namespace {
-
-// A unit box's draw of `material` 2 m in front of an eye at the origin looking down −Z.
-scene::Draw drawOf(uint32_t material) {
-    scene::Draw d;
-    d.material = material;
-    d.indexCount = 36;
-    d.bounds = {glm::vec3(-0.5f, -0.5f, -2.5f), glm::vec3(0.5f, 0.5f, -1.5f)};
-    d.localBounds = d.bounds;
-    return d;
-}
-
-scene::ViewSetup lookingDownMinusZ() {
-    scene::ViewSetup v;
-    v.view = glm::lookAt(glm::vec3(0), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0));
-    v.projection = scene::perspectiveReverseZ(glm::radians(90.0f), 1.0f, 0.1f);
-    v.viewProjection = v.projection * v.view;
-    return v;
-}
 
 TEST(ShadingSummary, CountsDrawsPerVariantAndWhatTheSceneUses) {
     scene::Scene scene;
@@ -35,7 +16,8 @@ TEST(ShadingSummary, CountsDrawsPerVariantAndWhatTheSceneUses) {
     scene.materials[1].clearcoatFactor = 1.0f;
     scene.materials[2].name = "flat";
     scene.materials[2].unlit = true;
-    scene.draws = {drawOf(0), drawOf(0), drawOf(1), drawOf(2)};
+    const glm::vec3 ahead(0.0f, 0.0f, -2.0f);
+    scene.draws = {drawAt(0, ahead), drawAt(0, ahead), drawAt(1, ahead), drawAt(2, ahead)};
     const MaterialKeys keys = MaterialKeys::of(scene);
     const DrawList list = buildDrawList({.scene = scene, .keys = keys, .draws = scene.draws, .view = lookingDownMinusZ(),
                                          .targetHeight = 100, .selection = {}, .transmission = true});
