@@ -4,6 +4,7 @@
 #include "vk/check.h"
 #include "vk/device_choices.h"
 #include "vk/device_select.h"
+#include "vk/library_pin.h"
 #include "vk/pipeline_cache_file.h"
 
 #include <algorithm>
@@ -119,6 +120,9 @@ Context::~Context() {
 }
 
 void Context::createInstance(const ContextDesc& desc) {
+    // The driver and layers loaded from here on stay loaded (vk/library_pin.h); noted before the
+    // first loader call, which may load them already.
+    const LibraryPin pin;
     uint32_t layerCount = 0;
     VK_CHECK(vkEnumerateInstanceLayerProperties(&layerCount, nullptr));
     std::vector<VkLayerProperties> layers(layerCount);
@@ -185,6 +189,7 @@ void Context::createInstance(const ContextDesc& desc) {
                                     .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
                                     .ppEnabledExtensionNames = extensions.data()};
     VK_CHECK(vkCreateInstance(&info, nullptr, &mInstance.handle));
+    pin.pinNew();
     for (const char* l : enabledLayers) mReport.enabledLayers.emplace_back(l);
 
     if (mDebugUtils) {
@@ -282,7 +287,9 @@ void Context::createDevice(const ContextDesc& desc) {
                                   .pQueueCreateInfos = queueInfos.data(),
                                   .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
                                   .ppEnabledExtensionNames = extensions.data()};
+    const LibraryPin pin;  // and what the driver loads for a device
     VK_CHECK(vkCreateDevice(mPhysicalDevice, &info, nullptr, &mDevice.handle));
+    pin.pinNew();
 
     mGraphics = {VK_NULL_HANDLE, queues.graphics};
     mCompute = {VK_NULL_HANDLE, queues.compute};

@@ -7,10 +7,13 @@
 #include "vk/commands.h"
 #include "vk/descriptors.h"
 #include "vk/image.h"
+#include "vk/library_pin.h"
 #include "vk/pipeline.h"
 #include "vk/upload.h"
 
+#include <algorithm>
 #include <cstring>
+#include <iterator>
 #include <numeric>
 #include <vector>
 
@@ -153,6 +156,26 @@ TEST_F(GpuTest, GeneratedMipChainAveragesTheLevelAbove) {
     EXPECT_EQ(bytes[0], 0);        // mip 1, (0,0)
     EXPECT_EQ(bytes[4], 200);      // mip 1, (1,0)
     EXPECT_NEAR(bytes[16], 100, 1);  // mip 2
+}
+
+
+// vk/library_pin.h: contexts created and destroyed one after another in one process (a test binary,
+// a program that embeds Candela) load the driver and layers once and keep them. Unpinned, the
+// loader unloads and reloads them for every context, and NVIDIA's driver fails to load again after
+// about 30 cycles (its static TLS is not given back). 40 contexts, each under validation; every
+// library loaded while the first lived is loaded still after the last.
+TEST(ContextLifetime, ContextsComeAndGoWithTheDriverLoadedOnce) {
+    std::vector<std::string> during;
+    for (int i = 0; i < 40; ++i) {
+        vk::Context context(vk::ContextDesc{.validation = true});
+        ASSERT_TRUE(context.validationEnabled());
+        if (i == 0) during = vk::loadedLibraries();
+        for (const vk::ValidationMessage& m : context.validationMessages()) ADD_FAILURE() << "validation: " << m.text;
+    }
+    const std::vector<std::string> after = vk::loadedLibraries();
+    std::vector<std::string> unloaded;
+    std::set_difference(during.begin(), during.end(), after.begin(), after.end(), std::back_inserter(unloaded));
+    EXPECT_TRUE(unloaded.empty()) << unloaded.size() << " libraries unloaded, the first " << unloaded.front();
 }
 
 }  // namespace
