@@ -151,11 +151,15 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
                     .buffer("Frame", ctx.buffer(d.frame))
                     .commit(ctx.context(), ctx.descriptors());
             const VkBuffer arguments = ctx.buffer(d.arguments);
-            // Successive dispatches write the image (disjoint pixels, which synchronization
-            // validation cannot tell apart): a barrier between them.
-            const auto writeToWrite = [&] {
+            // Successive dispatches write the image, and at several samples those of a pixel's
+            // second and later distinct IDs add to what an earlier one wrote (imageLoad): a barrier
+            // between them that makes the writes visible to reads and writes alike. With writes
+            // alone in its destination scope the validation layer (1.3.239) reported nothing, and an
+            // NVIDIA GPU read stale values at a few edge pixels (a still scene's frames differed;
+            // tools/gpu-check.sh's repeated frames).
+            const auto writeToReadWrite = [&] {
                 vk::memoryBarrier(cmd, kCompute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, kCompute,
-                                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+                                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
             };
             shading::FramePush constants = push;
             for (uint32_t v = 0; v < dispatches.size(); ++v) {
@@ -170,7 +174,7 @@ TextureId VisibilityShadePass::add(RenderGraph& graph, const Inputs& in) {
                 vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout(), 4, 1, &visibilitySet, 0, nullptr);
                 constants.counts.z = v;
                 p.pushConstants(cmd, &constants, sizeof(constants));
-                if (v > 0) writeToWrite();
+                if (v > 0) writeToReadWrite();
                 vkCmdDispatchIndirect(cmd, arguments, VkDeviceSize(v) * sizeof(VkDispatchIndirectCommand));
             }
         });
