@@ -1,5 +1,6 @@
 // The `candela` executable end to end: exit codes, one-line errors, and the files it writes.
 #include "run_candela.h"
+#include "test_paths.h"
 #include "temp_dir.h"
 
 #include <gtest/gtest.h>
@@ -267,7 +268,7 @@ TEST(Cli, RejectedFlagsWriteNothing) {
 }
 
 TEST(Cli, ImageSequenceWritesOneFilePerFrame) {
-    const std::filesystem::path model = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models/BoxAnimated/glTF-Binary/BoxAnimated.glb";
+    const std::filesystem::path model = ::candela::test::sharedAssets() / "models/BoxAnimated/glTF-Binary/BoxAnimated.glb";
     if (!std::filesystem::exists(model)) GTEST_SKIP() << "shared asset missing";
     const auto dir = tempDir();
     const Result r = run("render --env none --validate --width 48 --height 36 --frames 3 --fps 2 --turntable 90 --scene " +
@@ -287,7 +288,7 @@ TEST(Cli, ImageSequenceWritesOneFilePerFrame) {
 }
 
 TEST(Cli, TimeAndAnimationChooseThePose) {
-    const std::filesystem::path model = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models/BoxAnimated/glTF-Binary/BoxAnimated.glb";
+    const std::filesystem::path model = ::candela::test::sharedAssets() / "models/BoxAnimated/glTF-Binary/BoxAnimated.glb";
     if (!std::filesystem::exists(model)) GTEST_SKIP() << "shared asset missing";
     const auto dir = tempDir();
     const auto render = [&](const std::string& flags, const std::string& name) {

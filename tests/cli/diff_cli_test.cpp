@@ -3,6 +3,7 @@
 // lines it prints, the JSON it writes and the error maps. Inputs: the committed ꟻLIP test pairs
 // (tests/data/flip) and small images written here.
 #include "run_candela.h"
+#include "test_paths.h"
 #include "temp_dir.h"
 
 #include "assets/image_file.h"
@@ -23,7 +24,7 @@ namespace fs = std::filesystem;
 using candela::test::Result;
 using candela::test::run;
 
-const fs::path kData = fs::path(CANDELA_TEST_DATA) / "flip";
+const fs::path kData = ::candela::test::testData() / "flip";
 
 // A fresh scratch folder for one test, removed after it.
 class DiffCli : public ::testing::Test {

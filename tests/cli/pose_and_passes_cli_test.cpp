@@ -3,6 +3,7 @@
 // animation or disjoint ones); `--disable-pass` of a pass the frame can do without draws the frame
 // without it, and of one it cannot do without is one line naming that pass.
 #include "run_candela.h"
+#include "test_paths.h"
 #include "temp_dir.h"
 
 #include <gtest/gtest.h>
@@ -19,7 +20,7 @@ namespace fs = std::filesystem;
 using candela::test::Result;
 using candela::test::run;
 
-fs::path model(const std::string& relative) { return fs::path(CANDELA_SHARED_ASSETS) / "models" / relative; }
+fs::path model(const std::string& relative) { return ::candela::test::sharedAssets() / "models" / relative; }
 
 #define REQUIRE_MODEL(path)                                                           \
     do {                                                                              \

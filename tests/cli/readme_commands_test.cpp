@@ -8,6 +8,7 @@
 // Xvfb for kViewSeconds and must print no error and no validation message in that time (or exit
 // 0), then is ended. See docs/testing.md#the-readmes-commands.
 #include "run_candela.h"
+#include "test_paths.h"
 #include "../viewer/xvfb.h"
 
 #include <gtest/gtest.h>
@@ -163,7 +164,7 @@ std::string linesWith(const std::string& text, const std::string& needle) {
 class ReadmeBlock : public ::testing::TestWithParam<Block> {};
 
 TEST_P(ReadmeBlock, EveryCommandRuns) {
-    const fs::path samples = fs::weakly_canonical(CANDELA_SHARED_ASSETS);
+    const fs::path samples = fs::weakly_canonical(::candela::test::sharedAssets());
     if (!fs::exists(samples / "models") || !fs::exists(samples / "environments"))
         GTEST_SKIP() << "the shared sample assets are missing (" << samples << ")";
     ASSERT_TRUE(kPrivateCacheHome);  // the executable's pipeline cache goes to a private folder

@@ -3,6 +3,7 @@
 // before animation existed, and the posed path draws what the static path draws for the same
 // matrices.
 #include "gpu_test.h"
+#include "test_paths.h"
 
 #include "graph/graph_export.h"
 #include "graph_runner.h"
@@ -24,7 +25,7 @@ namespace {
 constexpr uint32_t kWidth = 160, kHeight = 120;
 
 std::filesystem::path model(const char* path) {
-    return std::filesystem::path(CANDELA_SHARED_ASSETS) / "models" / path;
+    return ::candela::test::sharedAssets() / "models" / path;
 }
 
 #define LOAD_OR_SKIP(var, path)                                                         \

@@ -8,10 +8,14 @@
 // code generation differences between CPUs.
 //
 // On failure, or when a golden is missing, the render and an amplified difference image are
-// written to ${build}/tests/gpu/golden_out/; tools/approve-goldens.sh copies renders you have
-// looked at into tests/golden/.
+// written to ${build}/tests/gpu/golden_out/ (CANDELA_GOLDEN_OUT in the environment moves it);
+// tools/approve-goldens.sh copies renders you have looked at into tests/golden/. With
+// CANDELA_GOLDEN_KEEP=1 every render is written, passing or not: NAME.actual.png (the default
+// path) and NAME.visibility.png (ShadingPathsAgree) — tools/gpu-check.sh compares them with the
+// approved images by ꟻLIP on a machine whose driver is not lavapipe.
 
 #include "gpu_test.h"
+#include "test_paths.h"
 #include "compressed_test_util.h"
 
 #include "assets/builtin_scenes.h"
@@ -26,6 +30,7 @@
 #include <stb_image.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -161,6 +166,12 @@ std::pair<size_t, int> compare(const uint8_t* a, const uint8_t* b) {
     return {differing, maxDifference};
 }
 
+// CANDELA_GOLDEN_KEEP=1: write every render, not only failing ones.
+bool keepRenders() {
+    const char* keep = std::getenv("CANDELA_GOLDEN_KEEP");
+    return keep && std::string(keep) == "1";
+}
+
 // The case rendered at kWidth × kHeight (RGBA8) on `shadingPath`, or nullopt when a shared
 // asset it needs is absent; `explain` (if given) receives the frame's --explain lines.
 std::optional<std::vector<uint8_t>> render(vk::Context& context, const GoldenCase& c,
@@ -168,7 +179,7 @@ std::optional<std::vector<uint8_t>> render(vk::Context& context, const GoldenCas
                                            std::vector<std::string>* explain = nullptr) {
     scene::Scene scene;
     if (*c.model) {
-        const std::filesystem::path path = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models" / c.model;
+        const std::filesystem::path path = ::candela::test::sharedAssets() / "models" / c.model;
         if (!std::filesystem::exists(path)) return std::nullopt;
         scene = scene::loadGltf(path);
         if (*c.variant) scene::selectVariant(scene, scene::variantIndex(scene, c.variant));
@@ -179,7 +190,7 @@ std::optional<std::vector<uint8_t>> render(vk::Context& context, const GoldenCas
     if (std::string(c.environment) == "sky") {
         environment = scene::makeProceduralSky();
     } else if (*c.environment) {
-        const std::filesystem::path path = std::filesystem::path(CANDELA_SHARED_ASSETS) / "environments" / c.environment;
+        const std::filesystem::path path = ::candela::test::sharedAssets() / "environments" / c.environment;
         if (!std::filesystem::exists(path)) return std::nullopt;
         environment = scene::loadEnvironment(path);
     }
@@ -197,6 +208,9 @@ std::optional<std::vector<uint8_t>> render(vk::Context& context, const GoldenCas
         settings.ibl.rotationDegrees = c.environmentRotation;
     }
     settings.shadingPath = shadingPath;
+    // One sample, as lavapipe's default that the goldens were approved at: a GPU's default (4)
+    // would move every silhouette pixel, and the GPU check compares the same frame on any device.
+    settings.msaa = 1;
     Renderer renderer(context);
     std::vector<uint8_t> rgba = renderer.capture(settings).rgba8;
     if (explain) *explain = renderer.explain();
@@ -208,9 +222,9 @@ TEST_P(GoldenTest, MatchesApprovedImage) {
     const std::optional<std::vector<uint8_t>> rendered = render(context(), c);
     if (!rendered) GTEST_SKIP() << "shared asset missing for " << c.name;
     const std::vector<uint8_t>& image = *rendered;
-    const std::filesystem::path outDir = CANDELA_GOLDEN_OUT;
+    const std::filesystem::path outDir = ::candela::test::goldenOut();
     std::filesystem::create_directories(outDir);
-    const std::filesystem::path golden = std::filesystem::path(CANDELA_GOLDEN_DIR) / (std::string(c.name) + ".png");
+    const std::filesystem::path golden = ::candela::test::goldenDir() / (std::string(c.name) + ".png");
     const std::filesystem::path actual = outDir / (std::string(c.name) + ".actual.png");
     int w = 0, h = 0, channels = 0;
     stbi_uc* expected = stbi_load(golden.c_str(), &w, &h, &channels, 4);
@@ -223,8 +237,8 @@ TEST_P(GoldenTest, MatchesApprovedImage) {
     const auto [differing, maxDifference] = compare(image.data(), expected);
     const double share = double(differing) / (kWidth * kHeight);
     const bool pass = share <= kMaxDifferingShare && maxDifference <= kMaxDifference;
+    if (!pass || keepRenders()) io::writePng(actual, kWidth, kHeight, image);
     if (!pass) {
-        io::writePng(actual, kWidth, kHeight, image);
         writeDiff(outDir / (std::string(c.name) + ".diff.png"), image, expected);
     }
     stbi_image_free(expected);
@@ -270,10 +284,13 @@ TEST_P(GoldenTest, ShadingPathsAgree) {
     RecordProperty("p99.9", percentile);
     EXPECT_LE(mean, kPathMeanDifference) << c.name;
     EXPECT_LE(percentile, kPathPercentileDifference) << c.name << " (mean " << mean << ")";
-    if (HasFailure()) {
-        const std::filesystem::path outDir = CANDELA_GOLDEN_OUT;
+    if (HasFailure() || keepRenders()) {
+        const std::filesystem::path outDir = ::candela::test::goldenOut();
         std::filesystem::create_directories(outDir);
         io::writePng(outDir / (std::string(c.name) + ".visibility.png"), kWidth, kHeight, *visibility);
+    }
+    if (HasFailure()) {
+        const std::filesystem::path outDir = ::candela::test::goldenOut();
         writeDiff(outDir / (std::string(c.name) + ".paths.diff.png"), *visibility, forward->data());
     }
 }
@@ -301,7 +318,7 @@ TEST_F(GpuTest, DracoRendersLikeThePlainFile) {
 // EXT_meshopt_compression: DamagedHelmet through gltfpack -cc (measured: 0.23% of the pixels
 // differ, max 70 levels on a few edge pixels).
 TEST_F(GpuTest, MeshoptRendersLikeThePlainFile) {
-    const std::filesystem::path models = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models";
+    const std::filesystem::path models = ::candela::test::sharedAssets() / "models";
     if (!std::filesystem::exists(models / "DamagedHelmet/glTF-Binary/DamagedHelmet.glb")) GTEST_SKIP() << "../shared/assets not present";
     TempDir dir;
     const std::filesystem::path packed = dir.path() / "helmet.glb";

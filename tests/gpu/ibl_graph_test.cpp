@@ -50,6 +50,7 @@ class IblGraphTest : public GpuTest {
 protected:
     RenderSettings settings(const scene::Environment* environment) {
         RenderSettings s{.width = 48, .height = 32, .scene = &mScene};
+        s.msaa = 1;  // the variant names below are the single-sample ones, on any device
         s.environment = environment;
         s.iblQuality.cubeSize = 32;  // small maps: these tests are about the graph
         s.iblQuality.shSourceSize = 8;

@@ -2,6 +2,7 @@
 // its variants exactly, the layered program at the core's values draws the core image, and the
 // layers keep the white furnace.
 #include "gpu_test.h"
+#include "test_paths.h"
 #include "shading_summary_util.h"
 #include "graph_runner.h"
 #include "sphere_furnace.h"
@@ -28,20 +29,21 @@ namespace candela::test {
 namespace {
 
 TEST_F(GpuTest, ScenesWithoutLayersKeepTheCoreProgramAndVariants) {
-    // The sphere grid and DamagedHelmet: the variant lines as they were before the layers existed,
+    // The sphere grid and DamagedHelmet at one sample (the variant names are the single-sample
+    // ones on any device): the variant lines as they were before the layers existed,
     // and the layered program left out.
     const scene::Scene grid = scene::makeSphereGrid();
     Renderer renderer(context());
-    renderer.capture({.width = 64, .height = 36, .scene = &grid});
+    renderer.capture({.width = 64, .height = 36, .scene = &grid, .msaa = 1});
     EXPECT_EQ(lastShading(renderer).draws, 49u);
     EXPECT_EQ(lastShading(renderer).variants, (std::map<std::string, uint32_t>{{"pbr", 49}}));
     EXPECT_TRUE(lastShading(renderer).layered.empty());
     EXPECT_TRUE(renderer.lastPlan()->leavesOut(PlannedPart::SheenLut));
     const std::filesystem::path helmetPath =
-        std::filesystem::path(CANDELA_SHARED_ASSETS) / "models/DamagedHelmet/glTF-Binary/DamagedHelmet.glb";
+        ::candela::test::sharedAssets() / "models/DamagedHelmet/glTF-Binary/DamagedHelmet.glb";
     if (!std::filesystem::exists(helmetPath)) GTEST_SKIP() << "shared asset missing: the helmet half is not run";
     const scene::Scene helmet = scene::loadGltf(helmetPath);
-    renderer.capture({.width = 64, .height = 36, .scene = &helmet});
+    renderer.capture({.width = 64, .height = 36, .scene = &helmet, .msaa = 1});
     EXPECT_EQ(lastShading(renderer).draws, 1u);
     EXPECT_EQ(lastShading(renderer).variants, (std::map<std::string, uint32_t>{{"pbr+normal-map", 1}}));
     EXPECT_TRUE(lastShading(renderer).layered.empty());
@@ -58,8 +60,8 @@ TEST_F(GpuTest, LayeredProgramAtTheCoreValuesDrawsTheCoreImage) {
     for (scene::Material& m : layered.materials) m.ior = 1.5000001f;
     ASSERT_EQ(layered.materials[0].layers(), uint32_t(scene::kLayerSpecular));
     Renderer renderer(context());
-    const CapturedFrame a = renderer.capture({.width = 240, .height = 135, .scene = &core});
-    const CapturedFrame b = renderer.capture({.width = 240, .height = 135, .scene = &layered});
+    const CapturedFrame a = renderer.capture({.width = 240, .height = 135, .scene = &core, .msaa = 1});
+    const CapturedFrame b = renderer.capture({.width = 240, .height = 135, .scene = &layered, .msaa = 1});
     EXPECT_TRUE(paysFor(renderer, scene::kLayerSpecular, /*exactly=*/true));
     EXPECT_EQ(variantDraws(renderer, "pbr+specular"), 49u);
     ASSERT_EQ(a.rgba8.size(), b.rgba8.size());

@@ -2,6 +2,7 @@
 // pass into the HDR image, alpha to coverage for alpha-masked materials, and every frame variant
 // validation-clean at every sample count --msaa accepts (counts the device lacks are clamped).
 #include "gpu_test.h"
+#include "test_paths.h"
 
 #include "assets/builtin_scenes.h"
 #include "assets/gltf_loader.h"
@@ -173,7 +174,7 @@ TEST_F(GpuTest, EveryFrameVariantIsValidationCleanAtEverySampleCount) {
     scenes.push_back(scene::makeSphereGrid());
     for (const char* model : {"TransmissionTest/glTF-Binary/TransmissionTest.glb",
                               "AlphaBlendModeTest/glTF-Binary/AlphaBlendModeTest.glb"}) {
-        const std::filesystem::path path = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models" / model;
+        const std::filesystem::path path = ::candela::test::sharedAssets() / "models" / model;
         if (std::filesystem::exists(path)) scenes.push_back(scene::loadGltf(path));
     }
     const scene::Environment sky = scene::makeProceduralSky();

@@ -2,6 +2,7 @@
 // every extension they use is read — and draw something; the animated ones change over time: the
 // blinking sphere of NodeVisibility and its light are gone at 1.5 s, the pointer animations move.
 #include "gpu_test.h"
+#include "test_paths.h"
 
 #include "assets/gltf_loader.h"
 #include "pose/scene_pose.h"
@@ -20,7 +21,7 @@ struct Frames {
 
 // The scene at `early` and `late` seconds (its first animation playing), 240 × 160 over a black background.
 Frames render(vk::Context& context, const std::string& name, double early, double late) {
-    const scene::Scene scene = scene::loadGltf(fs::path(CANDELA_TEST_SCENES) / (name + ".glb"));
+    const scene::Scene scene = scene::loadGltf(::candela::test::testScenes() / (name + ".glb"));
     EXPECT_TRUE(scene.report.warnings.empty()) << name << ": " << scene.report.warnings.front();
     scene::ScenePose pose(scene, scene::selectAnimations(scene, {}));
     Renderer renderer(context);

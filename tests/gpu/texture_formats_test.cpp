@@ -4,6 +4,7 @@
 // a KTX2 texture (KHR_texture_basisu, ETC1S and UASTC) draws the frame its reference decoder's PNG
 // draws.
 #include "gpu_test.h"
+#include "test_paths.h"
 
 #include "assets/gltf_loader.h"
 #include "gltf_test_util.h"
@@ -84,7 +85,7 @@ std::vector<uint8_t> render(vk::Context& context, const scene::Scene& scene) {
 class LosslessWebpCopy : public GpuTest, public testing::WithParamInterface<const char*> {};
 
 TEST_P(LosslessWebpCopy, RendersExactlyLikeThePngOriginal) {
-    const fs::path gltf = fs::path(CANDELA_SHARED_ASSETS) / "models" / GetParam() / "glTF" / (std::string(GetParam()) + ".gltf");
+    const fs::path gltf = ::candela::test::sharedAssets() / "models" / GetParam() / "glTF" / (std::string(GetParam()) + ".gltf");
     if (!fs::exists(gltf)) GTEST_SKIP() << gltf << " not present";
     TempDir dir;
     const scene::Scene original = scene::loadGltf(gltf);
@@ -115,7 +116,7 @@ std::vector<uint8_t> renderTexturedTriangle(vk::Context& context, const std::vec
 }
 
 TEST_F(GpuTest, Ktx2TexturesDrawTheReferenceDecodersTexels) {
-    const fs::path data = fs::path(CANDELA_TEST_DATA) / "ktx2";
+    const fs::path data = ::candela::test::testData() / "ktx2";
     // ETC1S (BasisLZ) and UASTC, both sRGB as base colours are; their level 0 as the reference decoded it.
     for (const auto& [ktx2, png] : {std::pair{"etc1s_mips.ktx2", "etc1s_mips_level0_ref.png"},
                                     std::pair{"uastc_mips_l0.ktx2", "uastc_mips_l0_level0_srgb.png"}}) {

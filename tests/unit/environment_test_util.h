@@ -4,6 +4,7 @@
 // library (exr_test_writer.h), so every test builds its input files itself.
 
 #include "assets/environment.h"
+#include "test_paths.h"
 #include "core/errors.h"
 
 #include "exr_test_writer.h"
@@ -30,7 +31,7 @@ using Bytes = std::vector<uint8_t>;
 // ../shared/assets/environments, or "" when that folder is absent.
 inline fs::path sharedEnvironments() {
 #ifdef CANDELA_SHARED_ASSETS
-    const fs::path dir = fs::path(CANDELA_SHARED_ASSETS) / "environments";
+    const fs::path dir = ::candela::test::sharedAssets() / "environments";
     if (fs::is_directory(dir)) return dir;
 #endif
     return {};

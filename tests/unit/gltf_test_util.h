@@ -4,6 +4,7 @@
 // input files itself.
 
 #include "assets/gltf_loader.h"
+#include "test_paths.h"
 #include "core/errors.h"
 
 #include "temp_dir.h"
@@ -36,7 +37,7 @@ enum : int { kPoints = 0, kLines = 1, kTriangles = 4, kStrip = 5, kFan = 6 };
 // The sample models in ../shared/assets, or "" when that folder is absent.
 inline fs::path sharedModels() {
 #ifdef CANDELA_SHARED_ASSETS
-    const fs::path models = fs::path(CANDELA_SHARED_ASSETS) / "models";
+    const fs::path models = ::candela::test::sharedAssets() / "models";
     if (fs::is_directory(models)) return models;
 #endif
     return {};
@@ -282,7 +283,7 @@ inline GltfBuilder ktx2Triangle(const Bytes& ktx2) { return extensionImageTriang
 
 #ifdef CANDELA_TEST_DATA
 // A committed KTX2 test file (tests/data/ktx2, made by tools/ktx2-test-data).
-inline Bytes testKtx2(const std::string& name) { return readBytes(fs::path(CANDELA_TEST_DATA) / "ktx2" / name); }
+inline Bytes testKtx2(const std::string& name) { return readBytes(::candela::test::testData() / "ktx2" / name); }
 #endif
 
 // Loads and returns the UserError's message, or "" if the load succeeded. Any other exception

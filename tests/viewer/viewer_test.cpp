@@ -3,6 +3,7 @@
 // resizes and a minimize, saves screenshots, opens dropped files, picks a material, exits 0.
 
 #include "../unit/temp_dir.h"
+#include "../unit/test_paths.h"
 #include "assets/builtin_scenes.h"
 #include "assets/procedural_sky.h"
 #include "ui/viewer.h"
@@ -292,7 +293,7 @@ TEST_P(ViewerPanelsTest, EveryPanelIsReadable) {
     std::tie(mWidth, mHeight) = GetParam();
     for (const auto& [panel, name] : options::kPanelNames) mPanels.insert(panel);
     open();
-    const std::filesystem::path hdr = std::filesystem::path(CANDELA_SHARED_ASSETS) / "environments" / "venice_sunset_1k.hdr";
+    const std::filesystem::path hdr = ::candela::test::sharedAssets() / "environments" / "venice_sunset_1k.hdr";
     const bool venice = std::filesystem::exists(hdr);
     if (venice) {
         ASSERT_TRUE(mViewer->openFile(hdr)) << mViewer->status();
@@ -312,7 +313,7 @@ TEST_P(ViewerPanelsTest, EveryPanelIsReadable) {
     // three animations, and one with transmission (the longest pass names in the render graph).
     for (const char* model : {"IridescenceSuzanne/glTF-Binary/IridescenceSuzanne.glb", "Fox/glTF-Binary/Fox.glb",
                               "TransmissionTest/glTF-Binary/TransmissionTest.glb"}) {
-        const std::filesystem::path file = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models" / model;
+        const std::filesystem::path file = ::candela::test::sharedAssets() / "models" / model;
         if (!std::filesystem::exists(file)) continue;
         ASSERT_TRUE(mViewer->openFile(file)) << mViewer->status();
         frames(3);
@@ -341,7 +342,7 @@ TEST_F(ViewerTest, DroppedFilesReplaceTheSceneOrTheEnvironment) {
     EXPECT_FALSE(mViewer->openFile(mDir / "notes.txt"));
     frames(1);
 
-    const std::filesystem::path assets = CANDELA_SHARED_ASSETS;
+    const std::filesystem::path assets = ::candela::test::sharedAssets();
     const std::filesystem::path hdr = assets / "environments" / "venice_sunset_1k.hdr";
     const std::filesystem::path glb = assets / "models" / "BoxTextured" / "glTF-Binary" / "BoxTextured.glb";
     if (!std::filesystem::exists(hdr) || !std::filesystem::exists(glb)) GTEST_SKIP() << "shared assets not found";
@@ -389,7 +390,7 @@ TEST_F(ViewerTest, ChoosingAMaterialVariantChangesTheDrawnMaterial) {
     // the frame draws the variant's material (the picked mesh's material says which).
     open(/*ui=*/true, /*environment=*/false);
     const std::filesystem::path shoe =
-        std::filesystem::path(CANDELA_SHARED_ASSETS) / "models/MaterialsVariantsShoe/glTF/MaterialsVariantsShoe.gltf";
+        ::candela::test::sharedAssets() / "models/MaterialsVariantsShoe/glTF/MaterialsVariantsShoe.gltf";
     if (!std::filesystem::exists(shoe)) GTEST_SKIP() << "shared assets not found";
     ASSERT_TRUE(mViewer->openFile(shoe)) << mViewer->status();
     frames(1);

@@ -7,6 +7,7 @@
 // same 6 decimals here (the per-pixel maps were identical, bit for bit).
 
 #include "reports/image_diff.h"
+#include "test_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -15,7 +16,7 @@
 namespace candela::io {
 namespace {
 
-const std::filesystem::path kData = std::filesystem::path(CANDELA_TEST_DATA) / "flip";
+const std::filesystem::path kData = ::candela::test::testData() / "flip";
 
 // Half a unit in the 6th decimal the tool prints, and a little for the float sum it prints.
 constexpr double kPrinted = 1e-6;

@@ -2,6 +2,7 @@
 // their own refinement, a brute-force integral over light directions and the Khronos glTF Sample
 // Viewer's LUT; the environment integrals against closed forms.
 #include "brdf_reference.h"
+#include "test_paths.h"
 #include "reports/ibl_reference.h"
 
 #include <gtest/gtest.h>
@@ -150,7 +151,7 @@ TEST(IblReferenceSplitSum, AlbedoDecreasesWithRoughness) {
 //     v, near the horizon), which the LUT's sample set does not reach.
 //   - mean |a − R| 0.0016.
 TEST(IblReferenceSplitSum, MatchesKhronosLut) {
-    const std::filesystem::path path = std::filesystem::path(CANDELA_SHARED_ASSETS) / "reference" / "lut_ggx.png";
+    const std::filesystem::path path = ::candela::test::sharedAssets() / "reference" / "lut_ggx.png";
     if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is absent";
     int width = 0, height = 0, channels = 0;
     const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(stbi_load(path.string().c_str(), &width, &height, &channels, 3),

@@ -12,6 +12,7 @@
 // of the shared headers give the weights Candela computes from those ideal inputs.
 // (KHR_materials_anisotropy's image-based term: anisotropy_ibl_error_test.cpp.)
 #include "assets/environment.h"
+#include "test_paths.h"
 #include "brdf_reference.h"
 #include "sphere_quadrature.h"
 #include "reports/ibl_reference.h"
@@ -55,7 +56,7 @@ std::vector<Environment> environments() {
                               box(dvec3(0, -0.3, -1), 5, 20);
                    }});
     const std::filesystem::path path =
-        std::filesystem::path(CANDELA_SHARED_ASSETS) / "environments" / "studio_small_03_1k.hdr";
+        ::candela::test::sharedAssets() / "environments" / "studio_small_03_1k.hdr";
     if (std::filesystem::exists(path)) {
         auto env = std::make_shared<scene::Environment>(scene::loadEnvironment(path));
         out.push_back({"studio_small_03", [env](const dvec3& d) {

@@ -4,6 +4,7 @@
 // corrupted or truncated global data and slices throw candela::UserError with one line, never crash.
 
 #include "textures/basis_etc1s.h"
+#include "test_paths.h"
 
 #include "core/errors.h"
 #include "textures/basis_etc1s_huffman.h"
@@ -24,7 +25,7 @@
 namespace candela::textures {
 namespace {
 
-const std::filesystem::path kDataDir = std::filesystem::path(CANDELA_TEST_DATA) / "ktx2";
+const std::filesystem::path kDataDir = ::candela::test::testData() / "ktx2";
 
 std::vector<uint8_t> readFile(const std::filesystem::path& path) {
     std::ifstream file(path, std::ios::binary);

@@ -7,6 +7,7 @@
 // indices, and trit/quint packs past their range; random and bit-flipped blocks never crash.
 
 #include "textures/basis_uastc.h"
+#include "test_paths.h"
 
 #include "core/errors.h"
 
@@ -28,7 +29,7 @@
 namespace candela::textures {
 namespace {
 
-const std::filesystem::path kDataDir = std::filesystem::path(CANDELA_TEST_DATA) / "ktx2";
+const std::filesystem::path kDataDir = ::candela::test::testData() / "ktx2";
 
 std::vector<uint8_t> readFile(const std::filesystem::path& path) {
     std::ifstream file(path, std::ios::binary);

@@ -5,6 +5,7 @@
 // decoded — never a crash (the sanitizer build runs this too). The payload decoders' own tests:
 // basis_etc1s_test.cpp, basis_uastc_test.cpp.
 #include "ktx2_test_writer.h"
+#include "test_paths.h"
 
 #include "core/errors.h"
 #include "textures/ktx2_file.h"
@@ -29,13 +30,13 @@ using test::withZstandard;
 constexpr uint32_t kMaxDimension = 16384;
 
 Bytes fileBytes(const std::string& name) {
-    std::ifstream in(fs::path(CANDELA_TEST_DATA) / "ktx2" / name, std::ios::binary);
+    std::ifstream in(::candela::test::testData() / "ktx2" / name, std::ios::binary);
     return Bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 // A reference decode (RGBA8 PNG) of the reference encoder's tool.
 Bytes reference(const std::string& name, uint32_t width, uint32_t height) {
-    const std::string path = (fs::path(CANDELA_TEST_DATA) / "ktx2" / name).string();
+    const std::string path = (::candela::test::testData() / "ktx2" / name).string();
     int w = 0, h = 0, channels = 0;
     stbi_uc* pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);
     if (!pixels) throw std::runtime_error("cannot read " + path);
