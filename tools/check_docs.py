@@ -27,6 +27,7 @@ COMMANDS = ["render", "view", "bench", "ibl-report", "scale-report", "quality-re
 OTHER_TOOLS_FLAGS = {"--preset", "--build", "--test-dir", "--target", "--target-env", "--gtest_filter", "--array",
                      "--basisu", "--gtest_brief",
                      "--write-docs",  # tools/check_layers.py's
+                     "--assets",  # tools/gpu-check.sh's
                      "--scen"}  # the README's example of a mistyped flag and its error
 TREE_ROOTS = ("app/", "engine/", "shaders/", "tests/", "tools/", "docs/", "assets/", ".ci/")
 FLAG = re.compile(r"(?<![\w-])(--[a-z][a-z0-9_-]*)")
