@@ -7,6 +7,7 @@
 #include "graph/render_graph.h"
 #include "passes/drawing/shading_summary.h"
 #include "render/frame_plan.h"
+#include "render/visibility_summary.h"
 
 #include <chrono>
 #include <cstring>
@@ -36,6 +37,8 @@ struct Frame {
     // What a scene frame's draws asked of the shading programs (variants, what the scene leaves
     // out); none for other frames.
     std::optional<passes::ShadingSummary> shading;
+    // What a visibility-path frame's raster, classification and shading did; none for other frames.
+    std::optional<VisibilitySummary> visibility;
     // Whether the tonemap put a solid background colour behind the scene (under a skybox pass's
     // sky, if one ran, it is not seen).
     bool solidBackground = false;

@@ -297,7 +297,8 @@ passes::DrawTarget FrameBuilder::addDraws(Frame& frame, const FramePlan& plan, c
     const bool skyboxPass = plan.sky == SkyPlacement::SkyboxPass;
     passes::DrawTarget drawn;
     if (plan.path == options::ShadingPath::Visibility) {
-        drawn = mVisibility.add(frame, desc, *tables, frame.explanation);
+        drawn = mVisibility.add(frame, desc, *tables);
+        frame.explanation.push_back(explainVisibility(*frame.visibility));
         // The image is resolved already: the sky goes under it without a depth test.
         if (skyboxPass) {
             const TextureId depth = drawn.depth;

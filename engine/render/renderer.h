@@ -161,6 +161,11 @@ public:
     const passes::ShadingSummary* lastShading() const {
         return mRunner.last().shading ? &*mRunner.last().shading : nullptr;
     }
+    // What the last frame's visibility path did (image, tiles, shading lists); null when the last
+    // frame took the forward path or was no scene frame.
+    const VisibilitySummary* lastVisibility() const {
+        return mRunner.last().visibility ? &*mRunner.last().visibility : nullptr;
+    }
     // What the last frame drew behind the scene: the sky (a skybox pass that ran, or composited by
     // the tonemap), the tonemap's solid background colour, or nothing (alpha = coverage).
     enum class Backdrop { Sky, Color, Transparent };

@@ -45,8 +45,7 @@ std::optional<passes::VisibilityFrameTables> VisibilityPath::tables(const FrameD
     return passes::visibilityFrameTables(items, desc.keys, mTextureSets.ofMaterial, desc.inputs.variant, desc.inputs.vertexOffset);
 }
 
-passes::DrawTarget VisibilityPath::add(Frame& frame, const FrameDesc& desc, const passes::VisibilityFrameTables& tables,
-                                       std::vector<std::string>& explanation) {
+passes::DrawTarget VisibilityPath::add(Frame& frame, const FrameDesc& desc, const passes::VisibilityFrameTables& tables) {
     const std::span<const passes::DrawListItem> items = desc.list.ranges(passes::DrawRange::Opaque, passes::DrawRange::Masked);
     graph::RenderGraph& graph = *frame.graph;
     const shading::VisibilityFrame extent =
@@ -65,17 +64,15 @@ passes::DrawTarget VisibilityPath::add(Frame& frame, const FrameDesc& desc, cons
                                                     .extent = extent,
                                                     .tables = &tables,
                                                     .frame = &desc.inputs});
-    std::string line = "shading path: visibility — " + std::to_string(items.size()) + " opaque and masked draws into a " +
-                       std::to_string(desc.size.width) + "×" + std::to_string(desc.size.height) +
-                       (desc.size.samples > 1 ? " " + std::to_string(desc.size.samples) + "-sample" : std::string()) +
-                       " visibility image, classified in " + std::to_string(extent.extent.w) + " tiles of " +
-                       std::to_string(extent.lists.z) + "×" + std::to_string(extent.lists.w) +
-                       "; one compute dispatch per shading list (variant × texture set):";
-    for (const passes::ShadingList& list : tables.lists)
-        line += " " + list.variant.name() + "/textures" + std::to_string(list.textureSet) + " ×" + std::to_string(list.items);
-    if (desc.size.samples > 1)
-        line += "; then, on triangle edges, each further distinct triangle of a pixel's samples (the resolve in the shading)";
-    explanation.push_back(line);
+    VisibilitySummary summary{.draws = static_cast<uint32_t>(items.size()),
+                              .width = desc.size.width,
+                              .height = desc.size.height,
+                              .samples = desc.size.samples,
+                              .tiles = extent.extent.w,
+                              .tileWidth = extent.lists.z,
+                              .tileHeight = extent.lists.w};
+    for (const passes::ShadingList& list : tables.lists) summary.lists.push_back({list.variant.name(), list.textureSet, list.items});
+    frame.visibility = std::move(summary);
     return passes::DrawTarget{.color = hdr, .depth = targets.depth, .hdr = hdr};
 }
 

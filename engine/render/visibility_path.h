@@ -46,9 +46,8 @@ public:
     std::optional<passes::VisibilityFrameTables> tables(const FrameDesc& desc) const;
     // Adds the path's passes for the list's opaque and masked draws with their `tables`: the shaded
     // image (transparent behind) and the depth, as targets the forward and skybox passes can draw
-    // over. `explanation` gets the --explain lines of what the path did.
-    passes::DrawTarget add(Frame& frame, const FrameDesc& desc, const passes::VisibilityFrameTables& tables,
-                           std::vector<std::string>& explanation);
+    // over. Sets frame.visibility to what the path did (render/visibility_summary.h).
+    passes::DrawTarget add(Frame& frame, const FrameDesc& desc, const passes::VisibilityFrameTables& tables);
 
 private:
     vk::Context& mContext;
