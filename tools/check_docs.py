@@ -11,7 +11,13 @@
   and every relative Markdown link resolves;
 - every size claimed of a file in backticks — "`PATH` (..., under N lines)" or "(`PATH`, ~N
   lines)" — holds: under N, or within 25% of ~N (a glob such as `vk/memory.*` counts its files
-  together; a sum such as "~120 + ~180 lines" is left aside).
+  together; a sum such as "~120 + ~180 lines" is left aside);
+- docs/architecture.md's claims about passes: each pass its engine/passes table names for a folder
+  is declared by a file of that folder, and the pass order its frame diagram draws (the forward
+  chain "skin_morph → … → tonemap" and the visibility chain "visibility → … forward_blended]")
+  is the order of the passes the executable runs (`--graph-json` of frames in the tree's test
+  scenes that run most of them, on both paths); a pass no such frame runs must at least be a pass
+  name the engine declares.
 
 Usage: check_docs.py PROJECT_DIR CANDELA_EXECUTABLE. Prints one line per problem (FILE:LINE: what)
 and exits 1 when there is one. Registered with ctest as `docs` (tests/cli/CMakeLists.txt).
@@ -113,6 +119,74 @@ def check_sizes(root, rel, text, problems):
             problems.append(f"{rel}:{line_of(text, m.start())}: `{path}` is {lines} lines, not ~{claimed}")
 
 
+PASS_LITERAL = re.compile(r'"([a-z][a-z0-9_]*)"')
+
+
+def declared_passes(root, folder="engine/passes/**"):
+    """The string literals of the .cpp files under `folder`: a superset of the pass names declared there."""
+    names = set()
+    for path in glob.glob(os.path.join(root, folder, "*.cpp"), recursive=True):
+        with open(path, encoding="utf-8") as f:
+            names |= set(PASS_LITERAL.findall(f.read()))
+    return names
+
+
+def ran_passes(root, executable, args):
+    """The passes a frame of `candela render ARGS` ran, in the order they ran."""
+    import json
+    import tempfile
+    with tempfile.TemporaryDirectory() as tmp:
+        graph = os.path.join(tmp, "graph.json")
+        subprocess.run([executable, "render", "--width", "64", "--height", "36", "--quiet", "--out",
+                        os.path.join(tmp, "frame.png"), "--graph-json", graph] + args,
+                       capture_output=True, text=True, check=True, cwd=root)
+        with open(graph, encoding="utf-8") as f:
+            passes = json.load(f)["passes"]
+    return [p["name"] for p in sorted((p for p in passes if not p["culled"]), key=lambda p: p["order"])]
+
+
+def check_architecture_passes(root, executable, problems):
+    rel = "docs/architecture.md"
+    with open(os.path.join(root, rel), encoding="utf-8") as f:
+        text = f.read()
+    # The engine/passes table: a folder's row names passes in backticks (identifiers only).
+    for m in re.finditer(r"^\| `([a-z]+)/` \| (.*) \|$", text, re.M):
+        folder, what = m.group(1), m.group(2)
+        literals = declared_passes(root, "engine/passes/" + folder)
+        for name in re.findall(r"`([a-z][a-z0-9_]*)`", what):
+            if name not in literals:
+                problems.append(f"{rel}:{line_of(text, m.start())}: `{name}` is not declared in engine/passes/{folder}/")
+    # The frame diagram's chains against the passes frames run.
+    scenes = os.path.join(root, "assets", "test-scenes")
+    frames = [["--scene", os.path.join(scenes, "DispersionSweep.glb"), "--env", "sky"],
+              ["--scene", os.path.join(scenes, "DispersionSweep.glb"), "--env", "sky", "--shading-path", "visibility",
+               "--msaa", "4"],
+              ["--env", "sky", "--shading-path", "visibility"]]
+    small = ["--ibl-cube-size", "32", "--ibl-levels", "4", "--ibl-lut-size", "16"]  # the passes, not the maps
+    try:
+        runs = [ran_passes(root, executable, args + small) for args in frames]
+    except subprocess.CalledProcessError as e:
+        problems.append(f"{rel}: checking the frame diagram, {' '.join(e.cmd)} failed: {e.stderr.strip()}")
+        return
+    seen = set().union(*runs)
+    engine = declared_passes(root, "engine/**")
+    for pattern in (r"skin_morph →.*?tonemap", r"visibility → visibility_classify.*?forward_blended\]"):
+        m = re.search(pattern, text, re.S)
+        if not m:
+            problems.append(f"{rel}: the frame diagram has no chain matching {pattern}")
+            continue
+        chain = [t for t in re.findall(r"[a-z][a-z0-9_]*", m.group(0)) if t in engine or t in seen]
+        for name in chain:
+            if name not in seen and name not in engine:
+                problems.append(f"{rel}:{line_of(text, m.start())}: `{name}` in the frame diagram is no pass")
+        for args, run in zip(frames, runs):
+            ran = [p for p in run if p in chain]
+            drawn = [p for p in chain if p in run]
+            if ran != drawn:
+                problems.append(f"{rel}:{line_of(text, m.start())}: the diagram orders {' → '.join(drawn)}; "
+                                f"candela render {' '.join(os.path.basename(a) for a in args)} ran {' → '.join(ran)}")
+
+
 def main():
     root, executable = sys.argv[1], sys.argv[2]
     flags = command_flags(executable)
@@ -126,6 +200,7 @@ def main():
         check_flags(rel, text, all_flags, problems)
         check_paths(root, rel, text, problems)
         check_sizes(root, rel, text, problems)
+    check_architecture_passes(root, executable, problems)
     for problem in problems:
         print(problem)
     print(f"{len(files)} files checked, {len(problems)} problems")
