@@ -202,13 +202,14 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
         facts.deformable = true;
         facts.deformedDraws = static_cast<uint32_t>(work.jobs.size());
     }
-    const bool deformOff = pose && facts.skinMorphDisabled;
+    // The plan's first step shapes the draw list: the deformed draws left out, transmissive
+    // draws in their own range or not.
+    const DrawListPlan listPlan = planDrawList(facts);
     const bool animated = pose && pose->animated();
-    // Without skin_morph the skinned and morphed draws have no vertices to draw: they are left out.
     std::span<const scene::Draw> draws = animated ? std::span(pose->draws()) : std::span(scene.draws);
     std::vector<scene::Draw> undeformed;
     uint32_t leftOut = 0;  // visible draws hidden here (not counted as hidden by KHR_node_visibility)
-    if (deformOff) {
+    if (listPlan.hidesDeformedDraws()) {
         undeformed.assign(draws.begin(), draws.end());
         for (uint32_t d : pose->deformedDraws()) {
             leftOut += undeformed[d].hidden ? 0 : 1;
@@ -216,14 +217,13 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
         }
         draws = undeformed;
     }
-    // Debug views show data, not what lies behind: transmissive draws are then drawn with the rest.
     passes::DrawList list = passes::buildDrawList({.scene = scene,
                                                    .keys = mScene.materialKeys(),
                                                    .draws = draws,
                                                    .view = view,
                                                    .targetHeight = settings.height,
                                                    .selection = settings.drawSelection,
-                                                   .transmission = settings.debugView == options::DebugView::None});
+                                                   .transmission = listPlan.transmissionRange});
     list.hiddenDraws -= leftOut;  // their own note says why (addSkinMorph)
     facts.transmissiveDraws = !list.empty(passes::DrawRange::Transmissive);
     facts.blendedDraws = !list.empty(passes::DrawRange::Blended);

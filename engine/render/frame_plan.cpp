@@ -26,22 +26,25 @@ bool FramePlan::leavesOut(PlannedPart part) const {
     return std::any_of(leftOut.begin(), leftOut.end(), [&](const LeftOut& l) { return l.part == part; });
 }
 
+DrawListPlan planDrawList(const FrameFacts& facts) {
+    DrawListPlan plan;
+    if (facts.deformable)
+        plan.deform = facts.deformedDraws == 0 ? DeformPlan::NoneInPose
+                      : facts.skinMorphDisabled ? DeformPlan::Disabled
+                                                : DeformPlan::Deformed;
+    plan.transmissionRange = facts.debugView == options::DebugView::None;
+    return plan;
+}
+
 FramePlan planFrame(const FrameFacts& facts) {
     FramePlan plan;
     std::tie(plan.path, plan.pathReason) = choosePath(facts);
     const bool debugView = facts.debugView != options::DebugView::None;
 
-    if (facts.deformable) {
-        if (facts.deformedDraws == 0) {
-            plan.deform = DeformPlan::NoneInPose;
-            plan.leftOut.push_back({PlannedPart::SkinMorph, LeftOutReason::NothingDeformed});
-        } else if (facts.skinMorphDisabled) {
-            plan.deform = DeformPlan::Disabled;
-            plan.leftOut.push_back({PlannedPart::DeformedDraws, LeftOutReason::SkinMorphDisabled});
-        } else {
-            plan.deform = DeformPlan::Deformed;
-        }
-    }
+    plan.deform = planDrawList(facts).deform;
+    if (plan.deform == DeformPlan::NoneInPose) plan.leftOut.push_back({PlannedPart::SkinMorph, LeftOutReason::NothingDeformed});
+    if (plan.deform == DeformPlan::Disabled)
+        plan.leftOut.push_back({PlannedPart::DeformedDraws, LeftOutReason::SkinMorphDisabled});
 
     plan.sheenLut = facts.sheen;
     if (!facts.sheen) plan.leftOut.push_back({PlannedPart::SheenLut, LeftOutReason::NoSheen});

@@ -103,6 +103,22 @@ struct LeftOut {
     bool operator==(const LeftOut&) const = default;
 };
 
+// The first step of a frame's plan, taken before its draw list is built because it shapes the
+// list: what skin_morph does — when it is switched off, the pose's deformed draws have nothing to
+// place their vertices and the list leaves them out — and whether transmissive draws get their own
+// range (drawn over the opaque image) or are drawn with the rest (a debug view shows data, not what
+// lies behind). planFrame takes the same decisions from the same facts.
+struct DrawListPlan {
+    DeformPlan deform = DeformPlan::Static;
+    bool transmissionRange = true;
+    // Whether the list leaves out the pose's deformed draws.
+    bool hidesDeformedDraws() const { return deform == DeformPlan::Disabled; }
+    bool operator==(const DrawListPlan&) const = default;
+};
+
+// Reads the settings' and the pose's facts only (none of the draw list's).
+DrawListPlan planDrawList(const FrameFacts& facts);
+
 struct FramePlan {
     options::ShadingPath path = options::ShadingPath::Forward;  // Forward or Visibility
     PathReason pathReason = PathReason::Requested;

@@ -182,6 +182,40 @@ TEST(FramePlan, SkinMorphDisabledWithNothingDeformedSaysNothingIsDeformed) {
     EXPECT_FALSE(plan.leavesOut(PlannedPart::DeformedDraws));
 }
 
+// The plan's first step (planDrawList), taken before the draw list exists: it leaves the deformed
+// draws out of the list only when skin_morph is off and the pose deforms some, draws transmissive
+// draws with the rest in a debug view, and decides skin_morph as planFrame does.
+TEST(DrawListPlan, HidesTheDeformedDrawsOnlyWhenSkinMorphIsOffAndThePoseDeformsSome) {
+    FrameFacts facts = visibilityFrame();
+    facts.skinMorphDisabled = true;
+    EXPECT_FALSE(planDrawList(facts).hidesDeformedDraws()) << "a static scene";
+    facts.deformable = true;
+    EXPECT_FALSE(planDrawList(facts).hidesDeformedDraws()) << "nothing deformed in this pose";
+    facts.deformedDraws = 2;
+    EXPECT_TRUE(planDrawList(facts).hidesDeformedDraws());
+    facts.skinMorphDisabled = false;
+    EXPECT_FALSE(planDrawList(facts).hidesDeformedDraws());
+}
+
+TEST(DrawListPlan, ADebugViewDrawsTransmissiveDrawsWithTheRest) {
+    FrameFacts facts = visibilityFrame();
+    EXPECT_TRUE(planDrawList(facts).transmissionRange);
+    facts.debugView = DebugView::BaseColor;
+    EXPECT_FALSE(planDrawList(facts).transmissionRange);
+}
+
+TEST(DrawListPlan, DecidesSkinMorphAsTheFramePlanDoes) {
+    for (const bool deformable : {false, true})
+        for (const uint32_t deformed : {0u, 3u})
+            for (const bool disabled : {false, true}) {
+                FrameFacts facts = visibilityFrame();
+                facts.deformable = deformable;
+                facts.deformedDraws = deformable ? deformed : 0u;
+                facts.skinMorphDisabled = disabled;
+                EXPECT_EQ(planDrawList(facts).deform, planFrame(facts).deform) << deformable << deformed << disabled;
+            }
+}
+
 TEST(FramePlan, TooManyShadingListsChangesOnlyThePath) {
     // FrameBuilder plans again when the visibility tables do not fit: only the path's fields may move.
     FrameFacts facts = visibilityFrame();
