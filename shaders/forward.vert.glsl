@@ -3,7 +3,7 @@
 // The forward pass's vertex stage (forward.vert, and with CANDELA_MATERIAL_LAYERS defined
 // forward_layers.vert: builtin_shaders.txt): world-space position, normal and tangent of one drawn
 // primitive, and the transformed texture coordinates of each texture slot.
-#include "shared/scene_data.h"
+#include "shading/scene_buffers.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
@@ -12,16 +12,10 @@ layout(location = 3) in vec2 inUv0;
 layout(location = 4) in vec2 inUv1;
 layout(location = 5) in vec4 inColor;
 
-layout(std430, set = 0, binding = 1) readonly buffer Draws {
-    DrawData draws[];
-};
-layout(std430, set = 0, binding = 2) readonly buffer Materials {
-    MaterialData materials[];
-};
+CANDELA_DRAWS_BLOCK
+CANDELA_MATERIALS_BLOCK
 #ifdef CANDELA_MATERIAL_LAYERS
-layout(std430, set = 1, binding = 5) readonly buffer MaterialLayers {
-    MaterialLayerData layers[];
-};
+CANDELA_MATERIAL_LAYERS_BLOCK
 #endif
 layout(push_constant) uniform Push {
     FramePush push;

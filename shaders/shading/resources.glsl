@@ -6,7 +6,7 @@
 #define CANDELA_FORWARD_RESOURCES_GLSL
 
 #include "shared/brdf.h"
-#include "shared/scene_data.h"
+#include "shading/scene_buffers.glsl"
 #include "shared/specialization_ids.h"
 
 layout(constant_id = CANDELA_SPEC_NORMAL_MAP) const bool kNormalMap = false;
@@ -34,24 +34,16 @@ layout(constant_id = CANDELA_SPEC_ALPHA_TO_COVERAGE) const bool kAlphaToCoverage
 // compiled out of the light loop (llvmpipe pays for untaken branches).
 layout(constant_id = CANDELA_SPEC_LIGHT_TYPES) const uint kLightTypes = 7u;
 
-layout(std430, set = 0, binding = 0) readonly buffer Lights {
-    LightData lights[];
-};
-layout(std430, set = 0, binding = 1) readonly buffer Draws {
-    DrawData draws[];
-};
-layout(std430, set = 0, binding = 2) readonly buffer Materials {
-    MaterialData materials[];
-};
+CANDELA_LIGHTS_BLOCK
+CANDELA_DRAWS_BLOCK
+CANDELA_MATERIALS_BLOCK
 // The material's textures (set 1): one sampler per row of shared/shading_tables.h's texture tables,
 // named after its field ("baseColorTexture").
 #define CANDELA_MATERIAL_SAMPLER(NAME, field, slot, bindingNumber, normalMap) \
     layout(set = 1, binding = bindingNumber) uniform sampler2D field##Texture;
 CANDELA_CORE_TEXTURES(CANDELA_MATERIAL_SAMPLER)
 #ifdef CANDELA_MATERIAL_LAYERS
-layout(std430, set = 1, binding = 5) readonly buffer MaterialLayers {
-    MaterialLayerData layers[];
-};
+CANDELA_MATERIAL_LAYERS_BLOCK
 CANDELA_LAYER_TEXTURES(CANDELA_MATERIAL_SAMPLER)
 // The layers' maps (set 3, the layered program only; placeholders where the frame has none): the
 // sheen albedo LUT E(N·V, sheen roughness), the Charlie-prefiltered environment, and what lies

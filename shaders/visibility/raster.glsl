@@ -3,16 +3,12 @@
 // visibility.frag (opaque draws: position only, no material) and visibility_masked.vert /
 // visibility_masked.frag (CANDELA_VISIBILITY_MASKED: the base colour's alpha against the cutoff,
 // the only part of the material the pass reads).
-#include "shared/scene_data.h"
+#include "shading/scene_buffers.glsl"
 #include "shared/visibility.h"
 
-layout(std430, set = 0, binding = 1) readonly buffer Draws {
-    DrawData draws[];
-};
+CANDELA_DRAWS_BLOCK
 #ifdef CANDELA_VISIBILITY_MASKED
-layout(std430, set = 0, binding = 2) readonly buffer Materials {
-    MaterialData materials[];
-};
+CANDELA_MATERIALS_BLOCK
 #endif
 layout(push_constant) uniform Push {
     FramePush push;  // viewProjection, counts.y: the draw's (first instance's) entry
