@@ -91,8 +91,9 @@ done
 
 step "repeated frames"
 # A still scene drawn 3 frames in a row (each frame in flight has its own per-frame resources)
-# must give 3 identical images: a resource read before anything wrote it shows here on a GPU, whose
-# memory is not zero as a fresh CPU driver's often is.
+# must give 3 identical images. A write that a barrier does not make visible to a later read, or a
+# resource read before anything wrote it, shows here on a GPU (its caches, memory that is not
+# zero), not on lavapipe, whose memory is coherent.
 for path in forward visibility; do
   for msaa in 1 4; do
     name=frames-$path-msaa$msaa
