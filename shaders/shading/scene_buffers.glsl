@@ -8,21 +8,12 @@
 
 #include "shared/scene_data.h"
 
-#define CANDELA_LIGHTS_BLOCK                                \
-    layout(std430, set = 0, binding = 0) readonly buffer Lights { \
-        LightData lights[];                                 \
-    };
-#define CANDELA_DRAWS_BLOCK                                \
-    layout(std430, set = 0, binding = 1) readonly buffer Draws { \
-        DrawData draws[];                                  \
-    };
-#define CANDELA_MATERIALS_BLOCK                                \
-    layout(std430, set = 0, binding = 2) readonly buffer Materials { \
-        MaterialData materials[];                              \
-    };
-#define CANDELA_MATERIAL_LAYERS_BLOCK                                \
-    layout(std430, set = 1, binding = 5) readonly buffer MaterialLayers { \
-        MaterialLayerData layers[];                                  \
-    };
+// A read-only std430 block `Block` of `Element`s named `member`, at (set, binding).
+#define CANDELA_SCENE_BLOCK(setIndex, bindingIndex, Block, Element, member) \
+    layout(std430, set = setIndex, binding = bindingIndex) readonly buffer Block { Element member[]; };
+#define CANDELA_LIGHTS_BLOCK CANDELA_SCENE_BLOCK(0, 0, Lights, LightData, lights)
+#define CANDELA_DRAWS_BLOCK CANDELA_SCENE_BLOCK(0, 1, Draws, DrawData, draws)
+#define CANDELA_MATERIALS_BLOCK CANDELA_SCENE_BLOCK(0, 2, Materials, MaterialData, materials)
+#define CANDELA_MATERIAL_LAYERS_BLOCK CANDELA_SCENE_BLOCK(1, 5, MaterialLayers, MaterialLayerData, layers)
 
 #endif
