@@ -284,14 +284,12 @@ TEST_P(GoldenTest, ShadingPathsAgree) {
     RecordProperty("p99.9", percentile);
     EXPECT_LE(mean, kPathMeanDifference) << c.name;
     EXPECT_LE(percentile, kPathPercentileDifference) << c.name << " (mean " << mean << ")";
-    if (HasFailure() || keepRenders()) {
+    const bool failed = HasFailure();
+    if (failed || keepRenders()) {
         const std::filesystem::path outDir = ::candela::test::goldenOut();
         std::filesystem::create_directories(outDir);
         io::writePng(outDir / (std::string(c.name) + ".visibility.png"), kWidth, kHeight, *visibility);
-    }
-    if (HasFailure()) {
-        const std::filesystem::path outDir = ::candela::test::goldenOut();
-        writeDiff(outDir / (std::string(c.name) + ".paths.diff.png"), *visibility, forward->data());
+        if (failed) writeDiff(outDir / (std::string(c.name) + ".paths.diff.png"), *visibility, forward->data());
     }
 }
 
