@@ -9,8 +9,6 @@
 namespace candela::app {
 namespace {
 
-using Str = const std::string&;
-
 // A finite number > 0; `unit` names it in the error.
 float positiveNumber(Str flag, Str v, const char* unit) {
     const float value = parseNumber(flag, v);

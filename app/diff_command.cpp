@@ -38,12 +38,6 @@ io::DiffSettings diffSettings(const DiffOptions& o) {
     return s;
 }
 
-std::string format(const char* f, double v) {
-    char text[64];
-    std::snprintf(text, sizeof text, f, v);
-    return text;
-}
-
 // The pairs to compare: two files, or the images of two folders matched by relative path.
 std::vector<io::MatchedFile> pairsToCompare(const DiffOptions& o) {
     for (const std::string& path : {o.reference, o.test}) {
@@ -85,10 +79,10 @@ std::string pairLine(const io::DiffPair& p, double thresholdLevels) {
     line += p.name;
     if (!p.compared()) return line + ": " + p.message;
     line += ": " + std::to_string(p.width) + "x" + std::to_string(p.height) + (p.hdr ? " HDR" : "") + ", FLIP mean " +
-            format("%.6f", p.flip.mean) + " (weighted median " + format("%.4f", p.flip.weightedMedian) + ", max " +
-            format("%.4f", p.flip.max) + "), PSNR " + (std::isinf(p.pixels.psnr) ? "inf" : format("%.2f", p.pixels.psnr)) +
-            " dB, max channel difference " + format(p.hdr ? "%.4g" : "%.0f", p.pixels.maxChannelDifference) + ", " +
-            format("%.4g", p.pixels.fractionOverThreshold * 100.0) + "% of pixels over " + format("%g", thresholdLevels) +
+            formatNumber("%.6f", p.flip.mean) + " (weighted median " + formatNumber("%.4f", p.flip.weightedMedian) + ", max " +
+            formatNumber("%.4f", p.flip.max) + "), PSNR " + (std::isinf(p.pixels.psnr) ? "inf" : formatNumber("%.2f", p.pixels.psnr)) +
+            " dB, max channel difference " + formatNumber(p.hdr ? "%.4g" : "%.0f", p.pixels.maxChannelDifference) + ", " +
+            formatNumber("%.4g", p.pixels.fractionOverThreshold * 100.0) + "% of pixels over " + formatNumber("%g", thresholdLevels) +
             (p.hdr ? "/255" : " levels");
     return p.message.empty() ? line : line + " -- " + p.message;
 }
@@ -160,7 +154,7 @@ int runDiff(const DiffOptions& options) {
     // The filters grow with the pixels per degree: 273 taps at 1000 against 21 at 67. More than
     // that (a 3840-pixel monitor 0.7 m wide seen from 10 m is 957) is refused.
     if (!(report.settings.pixelsPerDegree <= 1000.0f))
-        throw UserError(format("diff: %g pixels per degree is more than 1000 (", report.settings.pixelsPerDegree) +
+        throw UserError(formatNumber("diff: %g pixels per degree is more than 1000 (", report.settings.pixelsPerDegree) +
                         (options.ppd ? "--ppd)" : "from the --monitor flags)"));
     const std::vector<io::MatchedFile> files = pairsToCompare(options);
     // A page shows the error maps: without --error-maps they go into a folder beside it.

@@ -6,8 +6,6 @@
 
 namespace candela::app {
 
-using Str = const std::string&;  // a setter's flag name and value
-
 std::vector<FlagSpec<SceneOptions>> sceneFlags() {
     using O = SceneOptions;
     return {

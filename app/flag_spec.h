@@ -15,6 +15,9 @@
 
 namespace candela::app {
 
+// A setter's flag name and value, as its lambdas take them.
+using Str = const std::string&;
+
 // Parses `value` ("" for a switch) into the options; a UserError naming `flag` when malformed.
 template <class O>
 using Setter = std::function<void(O& options, const std::string& flag, const std::string& value)>;

@@ -10,7 +10,6 @@ namespace candela::app {
 
 std::vector<FlagSpec<QualityReportOptions>> qualityReportFlags() {
     using O = QualityReportOptions;
-    using Str = const std::string&;
     std::vector<FlagSpec<O>> flags = {
         {"--out", "DIR", "where report.csv, report.md and the plots go (created)", "quality-report", parsed(&O::out, parsePath)},
         {"--frames", "N", "timed frames per setting", "5", parsed(&O::frames, parseCount)},

@@ -41,7 +41,7 @@ namespace {
 
 constexpr uint32_t kReferenceScale = 4;  // per axis: 16 samples per pixel
 
-struct Row {
+struct QualityRow {
     std::string scene;
     uint32_t msaa = 1;
     bool specularAa = false;
@@ -64,7 +64,7 @@ struct SceneResult {
     std::string name;
     double referenceTemporal = 0.0;
     double referenceSeconds = 0.0;
-    std::vector<Row> rows;
+    std::vector<QualityRow> rows;
 };
 
 std::string sceneName(const std::string& entry) {
@@ -95,14 +95,14 @@ std::vector<std::vector<uint8_t>> orbitFrames(Renderer& renderer, RenderSettings
 // A row as a point of error against frame time for the Pareto front and the plots: the frame
 // ratio's spread over the rounds, and the error compared at the table's precision (3 decimals:
 // values within half its last digit count as equal).
-io::PlotPoint paretoPoint(const Row& r, double error) {
+io::PlotPoint paretoPoint(const QualityRow& r, double error) {
     constexpr double kHalfDigit = 0.0005;
     return {.x = r.frameRatio.median, .y = error, .xLow = r.frameRatio.low, .xHigh = r.frameRatio.high,
             .yLow = std::max(error - kHalfDigit, 0.0), .yHigh = error + kHalfDigit};
 }
 
 // The row's LOD errors, "0/0.5/2" for merged settings.
-std::string lodList(const Row& r) {
+std::string lodList(const QualityRow& r) {
     std::string out;
     for (float lod : r.lodErrors) {
         char text[32];
@@ -112,7 +112,7 @@ std::string lodList(const Row& r) {
     return out;
 }
 
-std::string settingName(const Row& r) {
+std::string settingName(const QualityRow& r) {
     char text[160];
     std::snprintf(text, sizeof text, "MSAA %u, specular AA %s, LOD %s px, %s path", r.msaa, r.specularAa ? "on" : "off",
                   lodList(r).c_str(), options::shadingPathName(r.path));
@@ -122,7 +122,7 @@ std::string settingName(const Row& r) {
 // Whether a setting that differs from `row` only in its LOD error did the same work and drew the
 // same: the same submitted draws and triangles in the timed view, and byte-identical display
 // frames over the whole orbit. Such settings are one point of the report.
-bool sameWork(const Row& row, const std::vector<std::vector<uint8_t>>& rowFrames, const passes::DrawStats& stats,
+bool sameWork(const QualityRow& row, const std::vector<std::vector<uint8_t>>& rowFrames, const passes::DrawStats& stats,
               const std::vector<std::vector<uint8_t>>& frames) {
     return row.draws == stats.submittedDraws && row.triangles == stats.submittedTriangles && rowFrames == frames;
 }
@@ -133,7 +133,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
     csv << "scene,msaa,specular_aa,lod_error_px,shading_path,frame_ratio,frame_ratio_min,frame_ratio_max,frame_ms,mean_error,"
            "p99_error,temporal,temporal_error,reference_temporal,submitted_triangles,pareto,default\n";
     for (const SceneResult& s : results)
-        for (const Row& r : s.rows)
+        for (const QualityRow& r : s.rows)
             csv << r.scene << "," << r.msaa << "," << (r.specularAa ? "on" : "off") << "," << lodList(r) << ","
                 << options::shadingPathName(r.path) << "," << r.frameRatio.median << "," << r.frameRatio.low << ","
                 << r.frameRatio.high << "," << r.frameMs << "," << r.error.mean << "," << r.error.p99 << "," << r.temporal << "," << r.temporalError << ","
@@ -169,7 +169,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
         md << line
            << "| MSAA | specular AA | LOD error (px) | shading path | frame / calibration | mean error | p99 error | temporal | temporal error | triangles | |\n"
            << "|---|---|---|---|---|---|---|---|---|---|---|\n";
-        for (const Row& r : s.rows) {
+        for (const QualityRow& r : s.rows) {
             std::snprintf(line, sizeof line, "| %u | %s | %s | %s | %.2f× (%.2f–%.2f) | %.3f | %.0f | %.3f | %.3f | %llu | %s%s |\n",
                           r.msaa, r.specularAa ? "on" : "off", lodList(r).c_str(), options::shadingPathName(r.path),
                           r.frameRatio.median, r.frameRatio.low, r.frameRatio.high, r.error.mean, r.error.p99, r.temporal,
@@ -186,12 +186,12 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
                               .yLabel = temporal ? "temporal error: flicker vs the reference (of 255)" : "mean error (of 255)"};
             // One series per (MSAA, specular AA, shading path), in that order in every scene's plots.
             std::set<std::tuple<uint32_t, bool, options::ShadingPath>> keys;
-            for (const Row& r : s.rows) keys.insert({r.msaa, r.specularAa, r.path});
+            for (const QualityRow& r : s.rows) keys.insert({r.msaa, r.specularAa, r.path});
             const std::vector<std::tuple<uint32_t, bool, options::ShadingPath>> series(keys.begin(), keys.end());
             for (const auto& [msaa, specularAa, path] : series)
                 plot.series.push_back("MSAA " + std::to_string(msaa) + ", specular AA " + (specularAa ? "on" : "off") + ", " +
                                       options::shadingPathName(path));
-            for (const Row& r : s.rows) {
+            for (const QualityRow& r : s.rows) {
                 const auto it = std::find(series.begin(), series.end(), std::tuple{r.msaa, r.specularAa, r.path});
                 if (r.isDefault) plot.highlight = plot.points.size();
                 io::PlotPoint point = paretoPoint(r, temporal ? r.temporalError : r.error.mean);
@@ -244,7 +244,7 @@ void measureSeries(Sweep& sweep, const RenderSettings& base, const Series& serie
                                specularAa == options::ShadingOptions{}.specularAntiAliasing &&
                                lodError == options::DrawSelection::kDefaultLodErrorPixels &&
                                path == sweep.defaultPath;
-        Row* same = nullptr;
+        QualityRow* same = nullptr;
         for (size_t k = 0; k < seriesFrames.size() && !same; ++k)
             if (sameWork(result.rows[seriesStart + k], seriesFrames[k], stats, frames)) same = &result.rows[seriesStart + k];
         if (same) {
@@ -260,7 +260,7 @@ void measureSeries(Sweep& sweep, const RenderSettings& base, const Series& serie
                                    .isDefault = isDefault, .settings = settings});
             seriesFrames.push_back(std::move(frames));
         }
-        const Row& row = same ? *same : result.rows.back();
+        const QualityRow& row = same ? *same : result.rows.back();
         char detail[240];
         std::snprintf(detail, sizeof detail, "%s %s: error %.3f (p99 %.0f), temporal error %.3f%s", result.name.c_str(),
                       settingName(row).c_str(), row.error.mean, row.error.p99, row.temporalError,
@@ -348,7 +348,7 @@ int runQualityReport(const QualityReportOptions& options) {
         // over the median of the calibration passes interleaved with the frames.
         for (uint32_t round = 0; round < options.repeats; ++round)
             for (size_t k = 0; k < result.rows.size(); ++k) {
-                Row& row = result.rows[round % 2 == 0 ? k : result.rows.size() - 1 - k];
+                QualityRow& row = result.rows[round % 2 == 0 ? k : result.rows.size() - 1 - k];
                 const FrameMeasurement m = measureFrames(renderer, row.settings, options.frames);
                 row.roundMs.push_back(median(m.frameMs));
                 row.roundRatios.push_back(median(m.frameMs) / median(m.calibrationMs));
@@ -359,14 +359,14 @@ int runQualityReport(const QualityReportOptions& options) {
                 progress.step(done, detail);
             }
         std::vector<io::PlotPoint> points;
-        for (Row& r : result.rows) {
+        for (QualityRow& r : result.rows) {
             r.frameRatio = spreadOf(r.roundRatios);
             r.frameMs = median(r.roundMs);
             points.push_back(paretoPoint(r, r.error.mean));
         }
         for (size_t i : io::paretoFront(points)) result.rows[i].pareto = true;
         std::sort(result.rows.begin(), result.rows.end(),
-                  [](const Row& a, const Row& b) { return a.frameRatio.median < b.frameRatio.median; });
+                  [](const QualityRow& a, const QualityRow& b) { return a.frameRatio.median < b.frameRatio.median; });
         results.push_back(std::move(result));
     }
     progress.finish();

@@ -8,7 +8,6 @@ namespace candela::app {
 
 std::vector<FlagSpec<RenderOptions>> renderFlags() {
     using O = RenderOptions;
-    using Str = const std::string&;
     std::vector<FlagSpec<O>> flags = {
         {"--out", "FILE",
          "the output image: .png (8-bit sRGB), .exr (linear half float) or .pfm (linear float); a pattern "

@@ -9,12 +9,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string format(const char* pattern, double value) {
-    char text[64];
-    std::snprintf(text, sizeof text, pattern, value);
-    return text;
-}
-
 // Thumbnails shown per scene (each variant, or the first frames of a sequence); every output is
 // linked.
 constexpr size_t kThumbnails = 3;
@@ -71,10 +65,10 @@ io::HtmlPage renderPage(const RunReport& report, const fs::path& page) {
     out.summary.push_back(report.version + " on " + report.device + "; environment: " + report.environment + "; " +
                           std::to_string(report.width) + "x" + std::to_string(report.height));
     const double perScene = report.scenes.empty() ? 0.0 : (report.totalMs - report.startupMs) / double(report.scenes.size());
-    out.summary.push_back("total " + format("%.2f s", report.totalMs / 1000.0) + " (" + format("%.0f ms", perScene) +
+    out.summary.push_back("total " + formatNumber("%.2f s", report.totalMs / 1000.0) + " (" + formatNumber("%.0f ms", perScene) +
                           " a scene after start-up); environment precomputed " + std::to_string(report.precomputes) +
                           (report.precomputes == 1 ? " time" : " times") +
-                          (report.precomputeMs >= 0.0 ? " (" + format("%.0f ms", report.precomputeMs) + ")" : ""));
+                          (report.precomputeMs >= 0.0 ? " (" + formatNumber("%.0f ms", report.precomputeMs) + ")" : ""));
     out.summary.push_back("peak memory: host " + formatBytes(report.peakHostBytes) + " resident, device " +
                           formatBytes(report.peakDeviceBytes) + " in use");
     out.columns = {{"frame ms", 1}, {"load ms", 1}, {"upload ms", 1}, {"triangles", 0}, {"texture MiB", 1}};

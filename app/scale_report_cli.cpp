@@ -9,7 +9,6 @@ namespace candela::app {
 
 std::vector<FlagSpec<ScaleReportOptions>> scaleReportFlags() {
     using O = ScaleReportOptions;
-    using Str = const std::string&;
     std::vector<FlagSpec<O>> flags = {
         {"--out", "DIR", "where report.csv, report.md and frame_vs_triangles.png go (created)", "scale-report",
          parsed(&O::out, parsePath)},

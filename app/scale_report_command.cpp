@@ -27,7 +27,7 @@
 namespace candela::app {
 namespace {
 
-struct Row {
+struct ScaleRow {
     uint32_t side = 0;
     float lodErrorPixels = 0.0f;
     options::ShadingPath path = options::ShadingPath::Forward;
@@ -37,12 +37,12 @@ struct Row {
 };
 
 // `gpuUnreliable`: the device's timestamps miss deferred work (graph::GraphTimings::gpuMsUnreliable).
-void writeReport(const std::filesystem::path& out, const std::vector<Row>& rows, const ScaleReportOptions& options,
+void writeReport(const std::filesystem::path& out, const std::vector<ScaleRow>& rows, const ScaleReportOptions& options,
                  const std::string& device, bool gpuUnreliable) {
     std::ofstream csv(out / "report.csv");
     csv << "side,lod_error_px,scene_draws,submitted_draws,culled_draws,scene_triangles,submitted_triangles,frame_ms,"
            "calibration_ms,frame_ratio,cpu_ms,forward_gpu_ms,shading_path\n";
-    for (const Row& r : rows)
+    for (const ScaleRow& r : rows)
         csv << r.side << "," << r.lodErrorPixels << "," << r.draws.sceneDraws << "," << r.draws.submittedDraws << ","
             << r.draws.culledDraws << "," << r.draws.sceneTriangles << "," << r.draws.submittedTriangles << "," << r.frameMs
             << "," << r.calibrationMs << "," << r.ratio() << "," << r.cpuMs << "," << r.forwardGpuMs << ","
@@ -55,7 +55,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<Row>& rows,
        << "\n\n"
        << "| N | draws | levels of detail | shading path | triangles in the scene | submitted | frame / calibration | CPU build + record (ms) |\n"
        << "|---|---|---|---|---|---|---|---|\n";
-    for (const Row& r : rows) {
+    for (const ScaleRow& r : rows) {
         char line[256];
         std::snprintf(line, sizeof line, "| %u | %u | %s | %s | %llu | %llu | %.2f× | %.2f |\n", r.side, r.draws.sceneDraws,
                       r.lodErrorPixels > 0.0f ? "on" : "off", options::shadingPathName(r.path), (unsigned long long)r.draws.sceneTriangles,
@@ -68,7 +68,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<Row>& rows,
                       .series = {"levels of detail on, forward", "levels of detail off, forward", "levels of detail on, visibility",
                                  "levels of detail off, visibility"},
                       .paretoLine = false};
-    for (const Row& r : rows)
+    for (const ScaleRow& r : rows)
         plot.points.push_back({double(r.draws.sceneTriangles), r.ratio(), "N=" + std::to_string(r.side),
                                (r.lodErrorPixels > 0.0f ? 0u : 1u) + (r.path == options::ShadingPath::Visibility ? 2u : 0u)});
     io::writeLogLogPlot(out / "frame_vs_triangles.png", plot);
@@ -85,7 +85,7 @@ int runScaleReport(const ScaleReportOptions& options) {
     Renderer& renderer = session.renderer();
     // The renderer keeps pointing at the last scene it drew: every scene lives until the end.
     std::list<scene::Scene> scenes;
-    std::vector<Row> rows;
+    std::vector<ScaleRow> rows;
     std::vector<options::ShadingPath> paths = {options::ShadingPath::Forward};
     if (context.choices().visibilityUnsupported.empty()) paths.push_back(options::ShadingPath::Visibility);
     Progress progress("scale-report", options.sizes.size() * 2 * paths.size(), options.common.quiet);
@@ -98,7 +98,7 @@ int runScaleReport(const ScaleReportOptions& options) {
             settings.shadingPath = path;
             renderer.validateSettings(settings);
             const FrameMeasurement m = measureFrames(renderer, settings, options.frames);
-            Row row{.side = side, .lodErrorPixels = lodError, .path = path, .draws = m.drawStats, .frameMs = median(m.frameMs),
+            ScaleRow row{.side = side, .lodErrorPixels = lodError, .path = path, .draws = m.drawStats, .frameMs = median(m.frameMs),
                     .calibrationMs = median(m.calibrationMs), .cpuMs = median(m.cpuMs)};
             if (auto forward = m.passGpuMs.find("forward"); forward != m.passGpuMs.end()) row.forwardGpuMs = median(forward->second);
             rows.push_back(row);

@@ -18,7 +18,6 @@ std::string panelList(const std::set<options::Panel>& panels) {
 
 std::vector<FlagSpec<ViewOptions>> viewFlags() {
     using O = ViewOptions;
-    using Str = const std::string&;
     std::vector<FlagSpec<O>> flags = {
         {"--frames", "N", "render N frames, then exit [run until the window is closed]", "", parsed(&O::frames, parseCount)},
         {"--screenshot", "FILE", "save the last of the --frames N frames, UI included, as PNG", "", parsed(&O::screenshot, parsePath)},

@@ -21,7 +21,7 @@
 namespace candela::scene {
 namespace {
 
-[[noreturn]] void fail(const std::string& source, const std::string& problem) {
+[[noreturn]] void failExr(const std::string& source, const std::string& problem) {
     throw UserError(source + ": " + problem);
 }
 
@@ -93,7 +93,7 @@ public:
     void check(exr_result_t result) const {
         if (result == EXR_ERR_SUCCESS) return;
         const std::string detail = !mStream.message.empty() ? mStream.message : exr_get_default_error_message(result);
-        fail(mSource, "invalid EXR header: " + detail);
+        failExr(mSource, "invalid EXR header: " + detail);
     }
 
 private:
@@ -142,11 +142,11 @@ void checkColourChannels(const exr_attr_chlist_t& list, const ColourChannels& co
         const exr_attr_chlist_entry_t& entry = list.entries[c];
         const std::string name(entry.name.str, size_t(entry.name.length));
         if (colour.grey && (name == "RY" || name == "BY"))
-            fail(source, "luminance/chroma EXR (Y, RY, BY) is not supported; save it as RGB");
+            failExr(source, "luminance/chroma EXR (Y, RY, BY) is not supported; save it as RGB");
         if (std::find(colour.names.begin(), colour.names.end(), name) == colour.names.end()) continue;
         if (entry.pixel_type != EXR_PIXEL_HALF && entry.pixel_type != EXR_PIXEL_FLOAT)
-            fail(source, "channel " + name + " is UINT; only HALF and FLOAT are supported");
-        if (entry.x_sampling != 1 || entry.y_sampling != 1) fail(source, "channel " + name + " is sub-sampled; not supported");
+            failExr(source, "channel " + name + " is UINT; only HALF and FLOAT are supported");
+        if (entry.x_sampling != 1 || entry.y_sampling != 1) failExr(source, "channel " + name + " is sub-sampled; not supported");
     }
 }
 
@@ -175,8 +175,8 @@ Choice choosePart(const Context& context, const std::string& source) {
             return {p, *colour, parts};
         }
     }
-    if (deep == parts) fail(source, "deep EXR is not supported (it holds samples at depths, not one colour per pixel)");
-    fail(source, parts > 1 ? "no part with R, G, B (or Y) channels in this " + std::to_string(parts) + "-part EXR"
+    if (deep == parts) failExr(source, "deep EXR is not supported (it holds samples at depths, not one colour per pixel)");
+    failExr(source, parts > 1 ? "no part with R, G, B (or Y) channels in this " + std::to_string(parts) + "-part EXR"
                            : "no R, G, B (or Y) channels");
 }
 
@@ -263,8 +263,8 @@ bool looksLikeExr(std::span<const uint8_t> bytes) {
 }
 
 Environment decodeExr(std::span<const uint8_t> bytes, const std::string& source, const EnvironmentLoadOptions& options) {
-    if (!looksLikeExr(bytes)) fail(source, "not an OpenEXR file (bad magic number)");
-    if (bytes.size() < 8) fail(source, "truncated EXR (" + std::to_string(bytes.size()) + " bytes)");
+    if (!looksLikeExr(bytes)) failExr(source, "not an OpenEXR file (bad magic number)");
+    if (bytes.size() < 8) failExr(source, "truncated EXR (" + std::to_string(bytes.size()) + " bytes)");
     Stream stream{bytes, {}};
     const Context context(stream, source, options);
     const Choice choice = choosePart(context, source);
@@ -276,7 +276,7 @@ Environment decodeExr(std::span<const uint8_t> bytes, const std::string& source,
     context.check(exr_get_display_window(ctx, part, &displayBox));
     const Box data = box(dataBox), display = box(displayBox);
     if (display.width() <= 0 || display.height() <= 0)
-        fail(source, "empty or inverted EXR display window " + display.text());
+        failExr(source, "empty or inverted EXR display window " + display.text());
     checkEnvironmentSize(source, uint64_t(display.width()), uint64_t(display.height()), options);
 
     Environment env;
@@ -300,7 +300,7 @@ Environment decodeExr(std::span<const uint8_t> bytes, const std::string& source,
     try {
         decodePixels(bytes, part, choice.colour, data, display, env);
     } catch (const std::exception& e) {
-        fail(source, "cannot decode EXR pixels: " + oneLine(e.what()));
+        failExr(source, "cannot decode EXR pixels: " + oneLine(e.what()));
     }
     return env;
 }

@@ -32,19 +32,6 @@ int componentCount(int type) {
     }
 }
 
-std::string typeName(int type) {
-    switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-        case TINYGLTF_TYPE_VEC2: return "VEC2";
-        case TINYGLTF_TYPE_VEC3: return "VEC3";
-        case TINYGLTF_TYPE_VEC4: return "VEC4";
-        case TINYGLTF_TYPE_MAT2: return "MAT2";
-        case TINYGLTF_TYPE_MAT3: return "MAT3";
-        case TINYGLTF_TYPE_MAT4: return "MAT4";
-        default: return "type " + std::to_string(type);
-    }
-}
-
 // begin + stride * (count - 1) + size, or false on overflow. Precondition: count > 0.
 bool rangeEnd(size_t begin, size_t stride, size_t count, size_t size, size_t& end) {
     size_t span = 0;
@@ -153,6 +140,19 @@ std::vector<T> readElements(const LoadContext& ctx, const tinygltf::Model& model
 }
 
 }  // namespace
+
+std::string typeName(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+        case TINYGLTF_TYPE_VEC2: return "VEC2";
+        case TINYGLTF_TYPE_VEC3: return "VEC3";
+        case TINYGLTF_TYPE_VEC4: return "VEC4";
+        case TINYGLTF_TYPE_MAT2: return "MAT2";
+        case TINYGLTF_TYPE_MAT3: return "MAT3";
+        case TINYGLTF_TYPE_MAT4: return "MAT4";
+        default: return "type " + std::to_string(type);
+    }
+}
 
 size_t componentSize(int componentType) {
     switch (componentType) {

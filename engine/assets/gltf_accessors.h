@@ -7,6 +7,7 @@
 
 #include <glm/vec4.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <initializer_list>
 #include <span>
@@ -20,8 +21,16 @@ struct Accessor;
 
 namespace candela::scene::gltf {
 
+// True when every component of `v` is finite (no NaN, no infinity).
+inline bool finite(const glm::vec4& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+
 // Bytes of one component of glTF componentType `componentType`; 0 for an unknown type.
 size_t componentSize(int componentType);
+
+// The name of glTF accessor type `type` ("VEC3", "MAT4"; "type 9" for an unknown one).
+std::string typeName(int type);
 
 // True for the index component types: UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT.
 bool isIndexType(int componentType);

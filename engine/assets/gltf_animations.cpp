@@ -40,16 +40,6 @@ int outputType(AnimatedProperty property, uint32_t width) {
     }
 }
 
-const char* typeName(int type) {
-    switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-        case TINYGLTF_TYPE_VEC2: return "VEC2";
-        case TINYGLTF_TYPE_VEC3: return "VEC3";
-        case TINYGLTF_TYPE_VEC4: return "VEC4";
-        default: return "a matrix type";
-    }
-}
-
 // Pointer channels (Values, Visibility) take any component type, as KHR_animation_pointer allows
 // (integers converted, normalized ones as the core specification maps them); core ones FLOAT, or
 // for rotations and weights normalized integers.

@@ -9,8 +9,6 @@
 namespace candela::scene::gltf {
 namespace {
 
-bool finite(const glm::vec4& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w); }
-
 // The accessor named `name` of `attributes`, or -1.
 int attributeAccessor(const std::map<std::string, int>& attributes, const std::string& name) {
     const auto it = attributes.find(name);

@@ -16,7 +16,7 @@
 namespace candela::scene::gltf {
 namespace {
 
-constexpr const char* kExtension = "KHR_draco_mesh_compression";
+constexpr const char* kDracoExtension = "KHR_draco_mesh_compression";
 
 // `value` in [0, 1] (unsigned C) or [-1, 1] (signed C) as a normalized integer, rounded.
 template <typename C>
@@ -141,7 +141,7 @@ std::unique_ptr<draco::Mesh> decodeMesh(const LoadContext& ctx, std::span<const 
 
 void decodePrimitive(const LoadContext& ctx, tinygltf::Model& model, tinygltf::Primitive& primitive,
                      int indicesAccessor, const std::string& what) {
-    const tinygltf::Value& extension = primitive.extensions.at(kExtension);
+    const tinygltf::Value& extension = primitive.extensions.at(kDracoExtension);
     if (!extension.IsObject()) ctx.fail(what + ": not an object");
     const tinygltf::Value& attributes = extension.Get("attributes");
     if (!attributes.IsObject()) ctx.fail(what + ": attributes is missing or not an object");
@@ -212,7 +212,7 @@ void decodePrimitive(const LoadContext& ctx, tinygltf::Model& model, tinygltf::P
     primitive.indices = indices.accessor;
     for (const auto& [semantic, accessor] : replaced) primitive.attributes[semantic] = accessor;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
-    primitive.extensions.erase(kExtension);
+    primitive.extensions.erase(kDracoExtension);
 }
 
 }  // namespace
@@ -226,7 +226,7 @@ bool detachDracoIndices(nlohmann::json& doc, DracoIndices& indices) {
         for (size_t p = 0; p < primitives.size(); ++p) {
             nlohmann::json& primitive = primitives[p];
             const auto extensions = primitive.find("extensions");
-            if (extensions == primitive.end() || !extensions->contains(kExtension)) continue;
+            if (extensions == primitive.end() || !extensions->contains(kDracoExtension)) continue;
             const auto index = primitive.find("indices");
             if (index == primitive.end()) continue;
             indices[{m, p}] = index->get<int>();
@@ -243,10 +243,10 @@ size_t decodeDracoPrimitives(const LoadContext& ctx, tinygltf::Model& model, con
         tinygltf::Mesh& mesh = model.meshes[m];
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
             tinygltf::Primitive& primitive = mesh.primitives[p];
-            if (!primitive.extensions.count(kExtension)) continue;
+            if (!primitive.extensions.count(kDracoExtension)) continue;
             const auto found = indices.find({m, p});
             decodePrimitive(ctx, model, primitive, found == indices.end() ? -1 : found->second,
-                            label("mesh", int(m), mesh.name) + " primitive " + std::to_string(p) + " " + kExtension);
+                            label("mesh", int(m), mesh.name) + " primitive " + std::to_string(p) + " " + kDracoExtension);
             ++decoded;
         }
     }

@@ -26,8 +26,6 @@ const char* modeName(int mode) {
     }
 }
 
-bool finite(const glm::vec4& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w); }
-
 // Reads the vertex attributes of one primitive into `vertices` (positions already set).
 struct Attributes {
     bool normals = false;

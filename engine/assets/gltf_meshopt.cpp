@@ -15,7 +15,7 @@
 namespace candela::scene::gltf {
 namespace {
 
-constexpr const char* kExtension = "EXT_meshopt_compression";
+constexpr const char* kMeshoptExtension = "EXT_meshopt_compression";
 
 // The most decoded bytes meshoptimizer's codecs produce per compressed byte: the attribute codec
 // spends at least 2 header bits on 16 bytes (a group of one byte column whose deltas are all zero),
@@ -111,7 +111,7 @@ void decode(const LoadContext& ctx, const Compressed& c, std::span<const uint8_t
 
 bool emptyMeshoptFallbackBuffers(nlohmann::json& doc, bool binary) {
     const auto used = doc.find("extensionsUsed");
-    if (used == doc.end() || std::find(used->begin(), used->end(), kExtension) == used->end()) return false;
+    if (used == doc.end() || std::find(used->begin(), used->end(), kMeshoptExtension) == used->end()) return false;
     const auto buffers = doc.find("buffers");
     if (buffers == doc.end()) return false;
     bool changed = false;
@@ -119,7 +119,7 @@ bool emptyMeshoptFallbackBuffers(nlohmann::json& doc, bool binary) {
         nlohmann::json& buffer = (*buffers)[i];
         const bool binChunk = binary && i == 0 && !buffer.contains("uri");
         const nlohmann::json* ext = nullptr;
-        if (const auto e = buffer.find("extensions"); e != buffer.end() && e->contains(kExtension)) ext = &(*e)[kExtension];
+        if (const auto e = buffer.find("extensions"); e != buffer.end() && e->contains(kMeshoptExtension)) ext = &(*e)[kMeshoptExtension];
         const bool fallback = ext && ext->is_object() && ext->value("fallback", false);
         if (binChunk || (buffer.contains("uri") && !fallback)) continue;
         buffer["uri"] = "data:application/octet-stream;base64,AAAA";  // 3 bytes: tinygltf refuses none
@@ -134,9 +134,9 @@ size_t decodeMeshoptBufferViews(const LoadContext& ctx, tinygltf::Model& model) 
     std::vector<std::pair<size_t, uint64_t>> moved;  // view index, offset in `decoded`
     for (size_t v = 0; v < model.bufferViews.size(); ++v) {
         tinygltf::BufferView& view = model.bufferViews[v];
-        const auto found = view.extensions.find(kExtension);
+        const auto found = view.extensions.find(kMeshoptExtension);
         if (found == view.extensions.end()) continue;
-        const std::string what = label("bufferView", int(v), view.name) + " " + kExtension;
+        const std::string what = label("bufferView", int(v), view.name) + " " + kMeshoptExtension;
         const Compressed c = readExtension(ctx, found->second, what);
         checkRules(ctx, c, view, what);
         if (size_t(c.buffer) >= model.buffers.size()) ctx.fail(what + ": buffer " + std::to_string(c.buffer) + " does not exist");
@@ -162,7 +162,7 @@ size_t decodeMeshoptBufferViews(const LoadContext& ctx, tinygltf::Model& model) 
         tinygltf::BufferView& view = model.bufferViews[v];
         view.buffer = int(model.buffers.size() - 1);
         view.byteOffset = size_t(offset);
-        view.extensions.erase(kExtension);
+        view.extensions.erase(kMeshoptExtension);
     }
     return moved.size();
 }

@@ -19,7 +19,7 @@ constexpr size_t kMaxHeaderBytes = 64 * 1024;
 constexpr uint32_t kMinRleWidth = 8;       // Radiance writes shorter scanlines flat
 constexpr uint32_t kMaxRleWidth = 0x7fff;  // the RLE marker stores the width in 15 bits
 
-[[noreturn]] void fail(const std::string& source, const std::string& problem) {
+[[noreturn]] void failHdr(const std::string& source, const std::string& problem) {
     throw UserError(source + ": " + problem);
 }
 
@@ -55,7 +55,7 @@ public:
     // Takes `count` bytes, or throws "truncated" naming scanline `row` of `rows`.
     const uint8_t* take(size_t count, uint32_t row, uint32_t rows) {
         if (count > remaining())
-            fail(mSource, "truncated: the file ends (" + std::to_string(mBytes.size()) + " bytes) inside scanline " +
+            failHdr(mSource, "truncated: the file ends (" + std::to_string(mBytes.size()) + " bytes) inside scanline " +
                               std::to_string(row) + " of " + std::to_string(rows));
         const uint8_t* p = at();
         mOffset += count;
@@ -103,15 +103,15 @@ Header parseHeader(Cursor& cursor, const std::string& source, const EnvironmentL
     auto nextLine = [&](const char* missing) {
         const std::optional<std::string_view> line = cursor.line(kMaxHeaderBytes);
         if (!line && cursor.remaining() > kMaxHeaderBytes)
-            fail(source, "header line longer than " + std::to_string(kMaxHeaderBytes) + " bytes");
-        if (!line) fail(source, missing);
+            failHdr(source, "header line longer than " + std::to_string(kMaxHeaderBytes) + " bytes");
+        if (!line) failHdr(source, missing);
         return *line;
     };
     nextLine("truncated header (no end of the first line)");
     bool haveFormat = false;
     for (;;) {
         if (cursor.offset() > kMaxHeaderBytes)
-            fail(source, "header longer than " + std::to_string(kMaxHeaderBytes) + " bytes (no blank line ending it)");
+            failHdr(source, "header longer than " + std::to_string(kMaxHeaderBytes) + " bytes (no blank line ending it)");
         const std::string_view line = nextLine("truncated header (no blank line ending it)");
         if (line.empty()) break;
         if (line.front() == '#') continue;  // comments, repeated "#?RADIANCE"
@@ -119,9 +119,9 @@ Header parseHeader(Cursor& cursor, const std::string& source, const EnvironmentL
             std::string_view format = line.substr(7);
             while (!format.empty() && (format.back() == ' ' || format.back() == '\t')) format.remove_suffix(1);
             if (format == "32-bit_rle_xyze")
-                fail(source, "FORMAT=32-bit_rle_xyze (CIE XYZ) is not supported; only 32-bit_rle_rgbe");
+                failHdr(source, "FORMAT=32-bit_rle_xyze (CIE XYZ) is not supported; only 32-bit_rle_rgbe");
             if (format != "32-bit_rle_rgbe")
-                fail(source, "unsupported FORMAT=" + quoted(format) + "; only 32-bit_rle_rgbe");
+                failHdr(source, "unsupported FORMAT=" + quoted(format) + "; only 32-bit_rle_rgbe");
             haveFormat = true;
         } else if (line.starts_with("EXPOSURE=")) {
             // EXPOSURE values are cumulative (Radiance's definition).
@@ -133,20 +133,20 @@ Header parseHeader(Cursor& cursor, const std::string& source, const EnvironmentL
         // Everything else (GAMMA=, PRIMARIES=, VIEW=, SOFTWARE=, command lines) does not change
         // how the pixels decode.
     }
-    if (!haveFormat) fail(source, "no FORMAT= line in the header (expected FORMAT=32-bit_rle_rgbe)");
+    if (!haveFormat) failHdr(source, "no FORMAT= line in the header (expected FORMAT=32-bit_rle_rgbe)");
 
     const std::optional<std::string_view> resolution = cursor.line(256);
-    if (!resolution && cursor.remaining() > 256) fail(source, "bad resolution line (no end of line within 256 bytes)");
-    if (!resolution) fail(source, "truncated: no resolution line after the header");
+    if (!resolution && cursor.remaining() > 256) failHdr(source, "bad resolution line (no end of line within 256 bytes)");
+    if (!resolution) failHdr(source, "truncated: no resolution line after the header");
     const std::vector<std::string_view> words = splitWords(*resolution);
     char axis1 = 0, axis2 = 0;
     bool positive1 = false, positive2 = false;
     uint64_t size1 = 0, size2 = 0;
     if (words.size() != 4 || !parseAxis(words[0], words[1], axis1, positive1, size1) ||
         !parseAxis(words[2], words[3], axis2, positive2, size2) || axis1 == axis2)
-        fail(source, "bad resolution line " + quoted(*resolution) + " (expected e.g. '-Y 512 +X 1024')");
+        failHdr(source, "bad resolution line " + quoted(*resolution) + " (expected e.g. '-Y 512 +X 1024')");
     if (axis1 == 'X')
-        fail(source, "unsupported orientation " + quoted(*resolution) +
+        failHdr(source, "unsupported orientation " + quoted(*resolution) +
                          " (transposed: scanlines are columns); only '±Y H ±X W' is read");
     checkEnvironmentSize(source, size2, size1, options);
     header.width = static_cast<uint32_t>(size2);
@@ -166,9 +166,9 @@ void readRleScanline(Cursor& cursor, const std::string& source, uint8_t* out, ui
             const uint8_t count = *cursor.take(1, row, rows);
             const bool run = count > 128;
             const uint32_t length = run ? count - 128u : count;
-            if (length == 0) fail(source, "scanline " + std::to_string(row) + ": zero-length RLE literal");
+            if (length == 0) failHdr(source, "scanline " + std::to_string(row) + ": zero-length RLE literal");
             if (length > width - x)
-                fail(source, "RLE " + std::string(run ? "run" : "literal") + " of " + std::to_string(length) +
+                failHdr(source, "RLE " + std::string(run ? "run" : "literal") + " of " + std::to_string(length) +
                                  " at x = " + std::to_string(x) + " overflows scanline " + std::to_string(row) +
                                  " (width " + std::to_string(width) + ")");
             const uint8_t* data = cursor.take(run ? 1 : length, row, rows);
@@ -190,11 +190,11 @@ void readFlatScanline(Cursor& cursor, const std::string& source, uint8_t* out, c
         if (texel[0] == 1 && texel[1] == 1 && texel[2] == 1) {
             const uint64_t count = texel[3] == 0 ? 0 : shift > 24 ? UINT64_MAX : uint64_t(texel[3]) << shift;
             if (count > width - x)
-                fail(source, "old-style RLE repeat of " + std::to_string(count) + " at x = " + std::to_string(x) +
+                failHdr(source, "old-style RLE repeat of " + std::to_string(count) + " at x = " + std::to_string(x) +
                                  " overflows scanline " + std::to_string(row) + " (width " + std::to_string(width) +
                                  ")");
             const uint8_t* from = x > 0 ? out + size_t(x - 1) * 4 : previous;
-            if (!from && count > 0) fail(source, "old-style RLE repeat before the first texel");
+            if (!from && count > 0) failHdr(source, "old-style RLE repeat before the first texel");
             for (uint64_t i = 0; i < count; ++i) std::memcpy(out + (x + i) * 4, from, 4);
             x += static_cast<uint32_t>(count);
             shift += 8;
@@ -211,7 +211,7 @@ void readFlatScanline(Cursor& cursor, const std::string& source, uint8_t* out, c
 bool looksLikeHdr(std::span<const uint8_t> bytes) { return bytes.size() >= 2 && bytes[0] == '#' && bytes[1] == '?'; }
 
 Environment decodeHdr(std::span<const uint8_t> bytes, const std::string& source, const EnvironmentLoadOptions& options) {
-    if (!looksLikeHdr(bytes)) fail(source, "not a Radiance HDR file (it does not start with '#?')");
+    if (!looksLikeHdr(bytes)) failHdr(source, "not a Radiance HDR file (it does not start with '#?')");
     Cursor cursor(bytes, source);
     const Header header = parseHeader(cursor, source, options);
     const uint32_t width = header.width, height = header.height;
@@ -228,7 +228,7 @@ Environment decodeHdr(std::span<const uint8_t> bytes, const std::string& source,
             !(p[2] & 0x80)) {
             const uint32_t length = uint32_t(p[2]) << 8 | p[3];
             if (length != width)
-                fail(source, "scanline " + std::to_string(row) + ": RLE length " + std::to_string(length) +
+                failHdr(source, "scanline " + std::to_string(row) + ": RLE length " + std::to_string(length) +
                                  " does not match the width " + std::to_string(width));
             cursor.take(4, row, height);
             readRleScanline(cursor, source, out, width, row, height);

@@ -17,4 +17,10 @@ std::string formatBytes(uint64_t bytes) {
     return text;
 }
 
+std::string formatNumber(const char* pattern, double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, pattern, value);
+    return text;
+}
+
 }  // namespace candela

@@ -1,8 +1,8 @@
 #pragma once
 // Errors that need no Vulkan: the user's bad input (UserError) and a broken contract between
-// Candela's own parts (InternalError), and formatBytes for their messages. Included by every CPU
-// library (the file readers among them), so it must never include a Vulkan header; the Vulkan
-// errors and VK_CHECK are vk/check.h.
+// Candela's own parts (InternalError), and formatBytes and formatNumber for their messages.
+// Included by every CPU library (the file readers among them), so it must never include a Vulkan
+// header; the Vulkan errors and VK_CHECK are vk/check.h.
 
 #include <cstdint>
 #include <stdexcept>
@@ -12,6 +12,9 @@ namespace candela {
 
 // "144 B", "12.0 KiB", "12.5 MiB", "1.5 GiB"
 std::string formatBytes(uint64_t bytes);
+// `value` printed by the printf pattern `pattern`, which takes one double ("%.2f s"); at most 63
+// characters are kept.
+std::string formatNumber(const char* pattern, double value);
 
 // An error caused by the user's input (flags, files): the message is one line naming the
 // problem (and the file, if any). Front ends print it and exit non-zero.

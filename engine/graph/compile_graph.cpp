@@ -9,7 +9,7 @@ namespace candela::graph {
 
 using detail::GraphAnalysis;
 using detail::PassEdge;
-using detail::quoted;
+using detail::quotedName;
 
 const char* cullReasonName(CullReason reason) {
     switch (reason) {
@@ -62,13 +62,13 @@ void checkMultisampling(const GraphDecl& decl, const PassDecl& pass) {
             const uint32_t count = resource.texture.samples;
             if (resource.kind != ResourceKind::Texture) continue;
             if (count > 1 && !isAttachment(access.usage) && access.usage != Usage::Sampled)
-                throw GraphError("pass " + quoted(pass.name) + " uses multisampled " + quoted(resource.name) + " as " +
+                throw GraphError("pass " + quotedName(pass.name) + " uses multisampled " + quotedName(resource.name) + " as " +
                                  usageName(access.usage) +
                                  ": a multisampled image is an attachment or sampled (resolve it to use it otherwise)");
             if (!isAttachment(access.usage)) continue;
             if (samples != 0 && count != samples)
-                throw GraphError("pass " + quoted(pass.name) + " draws into attachments of " + std::to_string(samples) +
-                                 " and " + std::to_string(count) + " samples (" + quoted(resource.name) + ")");
+                throw GraphError("pass " + quotedName(pass.name) + " draws into attachments of " + std::to_string(samples) +
+                                 " and " + std::to_string(count) + " samples (" + quotedName(resource.name) + ")");
             samples = count;
         }
     for (const AccessDecl& access : pass.writes) {
@@ -78,7 +78,7 @@ void checkMultisampling(const GraphDecl& decl, const PassDecl& pass) {
                    decl.resources[a.resource].texture.samples > 1;
         });
         if (!drawn)
-            throw GraphError("pass " + quoted(pass.name) + " resolves into " + quoted(decl.resources[access.resource].name) +
+            throw GraphError("pass " + quotedName(pass.name) + " resolves into " + quotedName(decl.resources[access.resource].name) +
                              " from no multisampled colour attachment it writes");
     }
 }
@@ -88,23 +88,23 @@ void checkAccesses(const GraphDecl& decl) {
     for (const PassDecl& pass : decl.passes) {
         for (const AccessDecl& access : pass.reads) {
             if (access.resource >= decl.resources.size())
-                throw GraphError("pass " + quoted(pass.name) + " reads resource index " +
+                throw GraphError("pass " + quotedName(pass.name) + " reads resource index " +
                                  std::to_string(access.resource) + ", which does not exist");
             if (usageWrites(access.usage))
-                throw GraphError("pass " + quoted(pass.name) + " reads " +
-                                 quoted(decl.resources[access.resource].name) + " with writing usage " +
+                throw GraphError("pass " + quotedName(pass.name) + " reads " +
+                                 quotedName(decl.resources[access.resource].name) + " with writing usage " +
                                  usageName(access.usage));
         }
         for (const AccessDecl& access : pass.writes) {
             if (access.resource >= decl.resources.size())
-                throw GraphError("pass " + quoted(pass.name) + " writes resource index " +
+                throw GraphError("pass " + quotedName(pass.name) + " writes resource index " +
                                  std::to_string(access.resource) + ", which does not exist");
             const std::string& resource = decl.resources[access.resource].name;
             if (!usageWrites(access.usage))
-                throw GraphError("pass " + quoted(pass.name) + " writes " + quoted(resource) +
+                throw GraphError("pass " + quotedName(pass.name) + " writes " + quotedName(resource) +
                                  " with read-only usage " + usageName(access.usage));
             if (access.version == 0)
-                throw GraphError("pass " + quoted(pass.name) + " writes " + quoted(resource) +
+                throw GraphError("pass " + quotedName(pass.name) + " writes " + quotedName(resource) +
                                  " (version 0): a write produces a version > 0");
         }
         checkMultisampling(decl, pass);
@@ -136,9 +136,9 @@ GraphAnalysis validateGraph(const GraphDecl& decl, CompiledGraph& compiled) {
         for (const AccessDecl& access : decl.passes[p].writes) {
             uint32_t& producer = analysis.producers[access.resource][access.version];
             if (producer != kInvalidIndex && producer != p)
-                throw GraphError("passes " + quoted(decl.passes[producer].name) + " and " +
-                                 quoted(decl.passes[p].name) + " both write " +
-                                 quoted(decl.resources[access.resource].name) + " (version " +
+                throw GraphError("passes " + quotedName(decl.passes[producer].name) + " and " +
+                                 quotedName(decl.passes[p].name) + " both write " +
+                                 quotedName(decl.resources[access.resource].name) + " (version " +
                                  std::to_string(access.version) + ")");
             producer = p;
         }
@@ -157,7 +157,7 @@ GraphAnalysis validateGraph(const GraphDecl& decl, CompiledGraph& compiled) {
             const uint32_t producer = analysis.producers[access.resource][access.version];
             // Version 0 of an import holds valid contents; anything else needs a producer.
             if (producer == kInvalidIndex && !(access.version == 0 && resource.imported))
-                throw GraphError("pass " + quoted(pass.name) + " reads " + quoted(resource.name) +
+                throw GraphError("pass " + quotedName(pass.name) + " reads " + quotedName(resource.name) +
                                  " (version " + std::to_string(access.version) +
                                  "), which no pass writes");
             addEdge(dependencies, p, {producer, access.resource});

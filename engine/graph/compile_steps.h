@@ -19,7 +19,7 @@ inline constexpr VkAccessFlags2 kWriteAccessMask =
     VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_HOST_WRITE_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
 
 // "'name'", for error messages and cull details.
-inline std::string quoted(const std::string& name) { return "'" + name + "'"; }
+inline std::string quotedName(const std::string& name) { return "'" + name + "'"; }
 
 // An edge of the pass graph, stored with the later pass: `pass` must run first because of `resource`.
 struct PassEdge {

@@ -83,8 +83,8 @@ void cullPasses(const GraphDecl& decl, const GraphAnalysis& analysis, CompiledGr
                 }
                 info.cullReason = CullReason::LostInput;
                 info.lostProducer = producer;
-                info.cullDetail = "input " + quoted(decl.resources[dependency.resource].name) +
-                                  " lost: its producer " + quoted(decl.passes[producer].name) +
+                info.cullDetail = "input " + quotedName(decl.resources[dependency.resource].name) +
+                                  " lost: its producer " + quotedName(decl.passes[producer].name) +
                                   (producerReason == CullReason::Disabled ? " is disabled"
                                                                           : " was culled (lost input)");
                 break;

@@ -77,12 +77,12 @@ void throwCycleError(const GraphDecl& decl, const std::vector<std::vector<PassEd
     std::rotate(resources.begin(), resources.begin() + first, resources.end());
 
     std::string message = "cycle between passes ";
-    for (uint32_t p : cycle) message += quoted(decl.passes[p].name) + " -> ";
-    message += quoted(decl.passes[cycle.front()].name) + " (via ";
+    for (uint32_t p : cycle) message += quotedName(decl.passes[p].name) + " -> ";
+    message += quotedName(decl.passes[cycle.front()].name) + " (via ";
     std::vector<uint32_t> named;
     for (uint32_t r : resources) {
         if (std::find(named.begin(), named.end(), r) != named.end()) continue;
-        message += (named.empty() ? "" : ", ") + quoted(decl.resources[r].name);
+        message += (named.empty() ? "" : ", ") + quotedName(decl.resources[r].name);
         named.push_back(r);
     }
     throw GraphError(message + ")");

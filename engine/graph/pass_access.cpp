@@ -7,7 +7,7 @@
 
 namespace candela::graph {
 
-using detail::quoted;
+using detail::quotedName;
 
 namespace {
 
@@ -18,7 +18,7 @@ AccessSync syncOf(const GraphDecl& decl, const PassDecl& pass, const AccessDecl&
 }
 
 std::string describe(const GraphDecl& decl, const AccessDecl& access) {
-    return quoted(decl.resources[access.resource].name) + " v" + std::to_string(access.version) + " (" +
+    return quotedName(decl.resources[access.resource].name) + " v" + std::to_string(access.version) + " (" +
            usageName(access.usage) + ")";
 }
 
@@ -49,11 +49,11 @@ const AccessDecl& declaredAccess(const GraphDecl& decl, uint32_t pass, ResourceK
                 return access;
     const std::string kindName = kind == ResourceKind::Texture ? "texture" : "buffer";
     std::string name = "an invalid " + kindName + " handle";
-    if (index < decl.resources.size()) name = quoted(decl.resources[index].name) + " v" + std::to_string(version);
+    if (index < decl.resources.size()) name = quotedName(decl.resources[index].name) + " v" + std::to_string(version);
     std::string declared;
     for (const AccessDecl& access : p.reads) declared += (declared.empty() ? "reads " : ", reads ") + describe(decl, access);
     for (const AccessDecl& access : p.writes) declared += (declared.empty() ? "writes " : ", writes ") + describe(decl, access);
-    throw GraphError("pass " + quoted(p.name) + " uses " + name + ", which its setup did not declare (it declared: " +
+    throw GraphError("pass " + quotedName(p.name) + " uses " + name + ", which its setup did not declare (it declared: " +
                      (declared.empty() ? std::string("nothing") : declared) + ")");
 }
 

@@ -8,7 +8,7 @@
 
 namespace candela::graph {
 
-using detail::quoted;
+using detail::quotedName;
 
 namespace {
 
@@ -23,10 +23,10 @@ const ResourceDecl& checkHandle(const GraphDecl& decl, const std::string& what, 
                          (index == kInvalidIndex ? std::string("none") : std::to_string(index)) + ")");
     const ResourceDecl& resource = decl.resources[index];
     if (resource.kind != kind)
-        throw GraphError(what + " " + quoted(resource.name) + " through a " + kindName(kind) +
+        throw GraphError(what + " " + quotedName(resource.name) + " through a " + kindName(kind) +
                          " handle, but it is a " + kindName(resource.kind));
     if (version >= resource.versionCount)
-        throw GraphError(what + " " + quoted(resource.name) + " (version " + std::to_string(version) +
+        throw GraphError(what + " " + quotedName(resource.name) + " (version " + std::to_string(version) +
                          "), which does not exist yet (latest is " +
                          std::to_string(resource.versionCount - 1) + ")");
     return resource;
@@ -36,7 +36,7 @@ const ResourceDecl& checkHandle(const GraphDecl& decl, const std::string& what, 
 // whose stages it does not have.
 void checkTransferUsage(const PassDecl& pass, const std::string& what, const ResourceDecl& resource, Usage usage) {
     if (pass.type != PassType::Transfer || usage == Usage::TransferSrc || usage == Usage::TransferDst) return;
-    throw GraphError(what + " " + quoted(resource.name) + " with usage " + usageName(usage) +
+    throw GraphError(what + " " + quotedName(resource.name) + " with usage " + usageName(usage) +
                      ", but it is a transfer pass (TransferSrc and TransferDst only)");
 }
 
@@ -82,12 +82,12 @@ TextureId PassBuilder::sample(TextureId texture) {
 }
 
 const TextureDesc& PassBuilder::desc(TextureId texture) const {
-    const std::string what = "pass " + quoted(mGraph.mDecl.passes[mPass].name) + " asks for the description of";
+    const std::string what = "pass " + quotedName(mGraph.mDecl.passes[mPass].name) + " asks for the description of";
     return checkHandle(mGraph.mDecl, what, ResourceKind::Texture, texture.index, texture.version).texture;
 }
 
 const BufferDesc& PassBuilder::desc(BufferId buffer) const {
-    const std::string what = "pass " + quoted(mGraph.mDecl.passes[mPass].name) + " asks for the description of";
+    const std::string what = "pass " + quotedName(mGraph.mDecl.passes[mPass].name) + " asks for the description of";
     return checkHandle(mGraph.mDecl, what, ResourceKind::Buffer, buffer.index, buffer.version).buffer;
 }
 
@@ -139,19 +139,19 @@ TextureId PassBuilder::writeDepth(TextureId texture, std::optional<float> clearD
 
 TextureId PassBuilder::resolve(TextureId multisampled, TextureId target) {
     const PassDecl& pass = mGraph.mDecl.passes[mPass];
-    const std::string what = "pass " + quoted(pass.name) + " resolves";
+    const std::string what = "pass " + quotedName(pass.name) + " resolves";
     const ResourceDecl& source = checkHandle(mGraph.mDecl, what, ResourceKind::Texture, multisampled.index, multisampled.version);
     const ResourceDecl& into = checkHandle(mGraph.mDecl, what + " into", ResourceKind::Texture, target.index, target.version);
     const auto colorWrite = std::find_if(pass.writes.begin(), pass.writes.end(), [&](const AccessDecl& a) {
         return a.resource == multisampled.index && a.version == multisampled.version && a.usage == Usage::ColorAttachment;
     });
     if (colorWrite == pass.writes.end())
-        throw GraphError(what + " " + quoted(source.name) + ", which is not a colour attachment it writes (writeColor first)");
+        throw GraphError(what + " " + quotedName(source.name) + ", which is not a colour attachment it writes (writeColor first)");
     if (source.texture.samples < 2)
-        throw GraphError(what + " " + quoted(source.name) + ", which has 1 sample (nothing to resolve)");
+        throw GraphError(what + " " + quotedName(source.name) + ", which has 1 sample (nothing to resolve)");
     if (into.texture.samples != 1 || into.texture.width != source.texture.width ||
         into.texture.height != source.texture.height || into.texture.format != source.texture.format)
-        throw GraphError(what + " " + quoted(source.name) + " into " + quoted(into.name) +
+        throw GraphError(what + " " + quotedName(source.name) + " into " + quotedName(into.name) +
                          ", which is not a single-sample image of its size and format");
     const WriteMode mode = colorWrite->mode;
     const uint32_t sourceIndex = multisampled.index;
@@ -208,7 +208,7 @@ void RenderGraph::setPassEnabled(std::string_view name, bool enabled) {
         pass.enabled = enabled;
         found = true;
     }
-    if (!found) throw GraphError("setPassEnabled: no pass named " + quoted(std::string(name)));
+    if (!found) throw GraphError("setPassEnabled: no pass named " + quotedName(std::string(name)));
 }
 
 const CompiledGraph& RenderGraph::compile(const CompileOptions& options) {
@@ -248,10 +248,10 @@ uint32_t RenderGraph::addResource(ResourceDecl resource) {
 
 AccessDecl& RenderGraph::addRead(uint32_t pass, ResourceKind kind, uint32_t index, uint32_t version, Usage usage,
                                  VkPipelineStageFlags2 stageOverride) {
-    const std::string what = "pass " + quoted(mDecl.passes[pass].name) + " reads";
+    const std::string what = "pass " + quotedName(mDecl.passes[pass].name) + " reads";
     const ResourceDecl& resource = checkHandle(mDecl, what, kind, index, version);
     if (usageWrites(usage))
-        throw GraphError(what + " " + quoted(resource.name) + " with writing usage " + usageName(usage) +
+        throw GraphError(what + " " + quotedName(resource.name) + " with writing usage " + usageName(usage) +
                          " (use write())");
     checkTransferUsage(mDecl.passes[pass], what, resource, usage);
     AccessDecl access;
@@ -265,11 +265,11 @@ AccessDecl& RenderGraph::addRead(uint32_t pass, ResourceKind kind, uint32_t inde
 // `version` is the consumed handle's version; the access produces version + 1.
 AccessDecl& RenderGraph::addWrite(uint32_t pass, ResourceKind kind, uint32_t index, uint32_t version, Usage usage,
                                   WriteMode mode, VkPipelineStageFlags2 stageOverride) {
-    const std::string what = "pass " + quoted(mDecl.passes[pass].name) + " writes";
+    const std::string what = "pass " + quotedName(mDecl.passes[pass].name) + " writes";
     checkHandle(mDecl, what, kind, index, version);
     ResourceDecl& resource = mDecl.resources[index];
     if (!usageWrites(usage))
-        throw GraphError(what + " " + quoted(resource.name) + " with read-only usage " + usageName(usage) +
+        throw GraphError(what + " " + quotedName(resource.name) + " with read-only usage " + usageName(usage) +
                          " (use read())");
     checkTransferUsage(mDecl.passes[pass], what, resource, usage);
     AccessDecl access;

@@ -20,7 +20,7 @@ using etc1s::BitReader;
 using etc1s::HuffmanTable;
 using etc1s::StreamError;
 
-constexpr uint32_t kHeaderBytes = 20;     // endpointCount .. extendedByteLength
+constexpr uint32_t kGlobalHeaderBytes = 20;     // endpointCount .. extendedByteLength
 constexpr uint32_t kImageDescBytes = 20;  // five UInt32
 constexpr uint32_t kPFrameFlag = 0x02;    // ImageDesc.imageFlags isPFrame
 
@@ -68,6 +68,10 @@ BlockColors blockColors(const std::array<uint8_t, 3>& color5, uint32_t intensity
     return colors;
 }
 
+}  // namespace
+
+namespace etc1s {
+
 // What the slices of every image share: the decoded codebooks and the slice Huffman tables.
 struct Codebooks {
     std::vector<BlockColors> endpoints;             // endpointCount entries
@@ -80,9 +84,9 @@ struct Codebooks {
     uint32_t selectorHistoryBufSize = 0;
 };
 
-}  // namespace
+}  // namespace etc1s
 
-struct BasisLzGlobal::Data : Codebooks {
+struct BasisLzGlobal::Data : etc1s::Codebooks {
     std::vector<BasisLzImageDesc> images;
 };
 
@@ -164,7 +168,7 @@ private:
 // calls block(x, y, colours, selector) with the codebook entries each block's (checked) indices name.
 // Every loop is bounded by the block count, so no input can make it run longer than the image needs.
 template <class BlockFn>
-void decodeSlice(const Codebooks& global, std::span<const uint8_t> slice, uint32_t blocksX, uint32_t blocksY,
+void decodeSlice(const etc1s::Codebooks& global, std::span<const uint8_t> slice, uint32_t blocksX, uint32_t blocksY,
                  BlockFn&& block) {
     BitReader reader(slice);
     const uint32_t endpointCount = uint32_t(global.endpoints.size());
@@ -325,8 +329,8 @@ const BasisLzImageDesc& BasisLzGlobal::imageDesc(uint32_t index) const {
 }
 
 BasisLzGlobal BasisLzGlobal::parse(std::span<const uint8_t> globalData, uint32_t imageCount) {
-    if (globalData.size() < kHeaderBytes)
-        failGlobal(std::to_string(globalData.size()) + " bytes, shorter than its " + std::to_string(kHeaderBytes) +
+    if (globalData.size() < kGlobalHeaderBytes)
+        failGlobal(std::to_string(globalData.size()) + " bytes, shorter than its " + std::to_string(kGlobalHeaderBytes) +
                    "-byte header");
     const uint8_t* p = globalData.data();
     const uint32_t endpointCount = readU16(p);
@@ -341,7 +345,7 @@ BasisLzGlobal BasisLzGlobal::parse(std::span<const uint8_t> globalData, uint32_t
     if (extendedByteLength != 0)
         failGlobal("extendedByteLength is " + std::to_string(extendedByteLength) + " (ETC1S has no extended data)");
     // The section must be exactly the header, the image descriptions and the four byte arrays.
-    const uint64_t expected = kHeaderBytes + uint64_t(kImageDescBytes) * imageCount + endpointsByteLength +
+    const uint64_t expected = kGlobalHeaderBytes + uint64_t(kImageDescBytes) * imageCount + endpointsByteLength +
                               selectorsByteLength + tablesByteLength;
     if (expected != globalData.size())
         failGlobal(std::to_string(globalData.size()) + " bytes where its header and " + std::to_string(imageCount) +
@@ -350,7 +354,7 @@ BasisLzGlobal BasisLzGlobal::parse(std::span<const uint8_t> globalData, uint32_t
     auto data = std::make_unique<Data>();
     data->images.resize(imageCount);
     for (uint32_t i = 0; i < imageCount; ++i) {
-        const uint8_t* d = p + kHeaderBytes + size_t(kImageDescBytes) * i;
+        const uint8_t* d = p + kGlobalHeaderBytes + size_t(kImageDescBytes) * i;
         BasisLzImageDesc& desc = data->images[i];
         desc = {readU32(d), readU32(d + 4), readU32(d + 8), readU32(d + 12), readU32(d + 16)};
         const std::string name = "image " + std::to_string(i) + ": ";
@@ -361,7 +365,7 @@ BasisLzGlobal BasisLzGlobal::parse(std::span<const uint8_t> globalData, uint32_t
             failGlobal(name + "alpha slice presence differs from image 0");
     }
 
-    const uint8_t* endpointsData = p + kHeaderBytes + size_t(kImageDescBytes) * imageCount;
+    const uint8_t* endpointsData = p + kGlobalHeaderBytes + size_t(kImageDescBytes) * imageCount;
     const uint8_t* selectorsData = endpointsData + endpointsByteLength;
     const uint8_t* tablesData = selectorsData + selectorsByteLength;
     const char* section = "endpoint codebook";

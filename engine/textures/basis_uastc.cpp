@@ -306,9 +306,9 @@ static_assert(kWeights[2][2] == 43 && kWeights[3][4] == 37 && kWeights[4][8] == 
 // ---- Bits -----------------------------------------------------------------------------------------
 // Sequential reads from bit 0 (byte 0's least significant bit) up. Callers never read past bit 128:
 // the mode layouts are checked above.
-class BitReader {
+class BlockBitReader {
 public:
-    explicit BitReader(const uint8_t* block) {
+    explicit BlockBitReader(const uint8_t* block) {
         for (int i = 7; i >= 0; --i) {
             mLow = (mLow << 8) | block[i];
             mHigh = (mHigh << 8) | block[8 + i];
@@ -339,7 +339,7 @@ private:
 bool decodeUastcBlock(const uint8_t* block, bool srgb, uint8_t* texels) {
     const ModeLookup lookup = kModeLookup[block[0] & 0x7F];
     if (lookup.mode >= kModeCount) return false;  // mode 19: reserved
-    BitReader bits(block);
+    BlockBitReader bits(block);
     bits.skip(lookup.length);
 
     if (lookup.mode == kSolidColourMode) {  // R, G, B, A, then ETC1 hints (ignored)

@@ -29,7 +29,7 @@ constexpr uint32_t kChannelEtc1sRgb = 0, kChannelEtc1sAaa = 15;
 constexpr uint32_t kChannelUastcRgb = 0, kChannelUastcRgba = 3;
 constexpr uint32_t kFlagPremultiplied = 1;
 
-[[noreturn]] void fail(const std::string& problem) { throw UserError("KTX2: " + problem); }
+[[noreturn]] void failKtx2(const std::string& problem) { throw UserError("KTX2: " + problem); }
 
 uint32_t u32(std::span<const uint8_t> bytes, size_t at) {
     uint32_t v = 0;
@@ -71,34 +71,34 @@ struct Layout {
 
 // Reads the basic data format descriptor block: colour model, transfer function and the channels.
 void readDfd(std::span<const uint8_t> file, uint32_t offset, uint32_t length, Layout& layout) {
-    if (length < 4 + 24) fail("data format descriptor of " + std::to_string(length) + " bytes is too short");
+    if (length < 4 + 24) failKtx2("data format descriptor of " + std::to_string(length) + " bytes is too short");
     const std::span<const uint8_t> dfd = file.subspan(offset, length);
     if (u32(dfd, 0) != length)
-        fail("data format descriptor says " + std::to_string(u32(dfd, 0)) + " bytes, the header " + std::to_string(length));
+        failKtx2("data format descriptor says " + std::to_string(u32(dfd, 0)) + " bytes, the header " + std::to_string(length));
     const uint32_t word0 = u32(dfd, 4), word1 = u32(dfd, 8), word2 = u32(dfd, 12);
     const uint32_t vendor = word0 & 0x1FFFF, type = word0 >> 17;
     const uint32_t blockSize = word1 >> 16;
-    if (vendor != 0 || type != 0) fail("the first data format descriptor block is not Khronos's basic block");
+    if (vendor != 0 || type != 0) failKtx2("the first data format descriptor block is not Khronos's basic block");
     if (blockSize < 24 || blockSize > length - 4 || (blockSize - 24) % 16 != 0)
-        fail("data format descriptor block size " + std::to_string(blockSize) + " does not fit");
+        failKtx2("data format descriptor block size " + std::to_string(blockSize) + " does not fit");
     const uint32_t model = word2 & 0xFF, transfer = (word2 >> 16) & 0xFF, flags = word2 >> 24;
     if (model == kModelEtc1s) layout.info.payload = BasisPayload::Etc1s;
     else if (model == kModelUastc) layout.info.payload = BasisPayload::Uastc;
-    else fail("colour model " + std::to_string(model) + " is not Basis Universal's ETC1S (163) or UASTC (166)");
+    else failKtx2("colour model " + std::to_string(model) + " is not Basis Universal's ETC1S (163) or UASTC (166)");
     if (transfer != kTransferLinear && transfer != kTransferSrgb)
-        fail("transfer function " + std::to_string(transfer) + " is neither linear (1) nor sRGB (2)");
+        failKtx2("transfer function " + std::to_string(transfer) + " is neither linear (1) nor sRGB (2)");
     layout.info.srgb = transfer == kTransferSrgb;
     layout.premultiplied = (flags & kFlagPremultiplied) != 0;
     const uint32_t samples = (blockSize - 24) / 16;
     const bool etc1s = layout.info.payload == BasisPayload::Etc1s;
     if (samples < 1 || samples > (etc1s ? 2u : 1u))
-        fail(std::to_string(samples) + " DFD samples for " + (etc1s ? "ETC1S (1 or 2 allowed)" : "UASTC (1 allowed)"));
+        failKtx2(std::to_string(samples) + " DFD samples for " + (etc1s ? "ETC1S (1 or 2 allowed)" : "UASTC (1 allowed)"));
     for (uint32_t s = 0; s < samples; ++s) {
         const uint32_t channel = (u32(dfd, 4 + 24 + 16 * s) >> 24) & 0x0F;
-        if (etc1s && s == 0 && channel != kChannelEtc1sRgb) fail("ETC1S's first channel is not RGB");
-        if (etc1s && s == 1 && channel != kChannelEtc1sAaa) fail("ETC1S's second channel is not AAA");
+        if (etc1s && s == 0 && channel != kChannelEtc1sRgb) failKtx2("ETC1S's first channel is not RGB");
+        if (etc1s && s == 1 && channel != kChannelEtc1sAaa) failKtx2("ETC1S's second channel is not AAA");
         if (!etc1s && channel != kChannelUastcRgb && channel != kChannelUastcRgba)
-            fail("UASTC channel " + std::to_string(channel) + " is neither RGB nor RGBA");
+            failKtx2("UASTC channel " + std::to_string(channel) + " is neither RGB nor RGBA");
         if ((etc1s && s == 1) || (!etc1s && channel == kChannelUastcRgba)) layout.info.alpha = true;
     }
 }
@@ -108,13 +108,13 @@ void readKeyValues(std::span<const uint8_t> file, uint32_t offset, uint32_t leng
     const std::span<const uint8_t> kvd = file.subspan(offset, length);
     size_t at = 0;
     while (at < kvd.size()) {
-        if (kvd.size() - at < 4) fail("key/value data ends inside an entry's length");
+        if (kvd.size() - at < 4) failKtx2("key/value data ends inside an entry's length");
         const uint32_t entry = u32(kvd, at);
         at += 4;
-        if (entry > kvd.size() - at) fail("key/value entry of " + std::to_string(entry) + " bytes runs past its section");
+        if (entry > kvd.size() - at) failKtx2("key/value entry of " + std::to_string(entry) + " bytes runs past its section");
         const std::string_view text(reinterpret_cast<const char*>(kvd.data() + at), entry);
         const size_t nul = text.find('\0');
-        if (nul == std::string_view::npos || nul == 0) fail("key/value entry without a NUL-terminated key");
+        if (nul == std::string_view::npos || nul == 0) failKtx2("key/value entry without a NUL-terminated key");
         const std::string_view key = text.substr(0, nul);
         std::string_view value = text.substr(nul + 1);
         if (!value.empty() && value.back() == '\0') value.remove_suffix(1);
@@ -127,52 +127,52 @@ void readKeyValues(std::span<const uint8_t> file, uint32_t offset, uint32_t leng
 
 Layout readLayout(std::span<const uint8_t> file, uint32_t maxDimension) {
     if (file.size() < kHeaderBytes)
-        fail("truncated: " + std::to_string(file.size()) + " bytes, the header needs " + std::to_string(kHeaderBytes));
-    if (!isKtx2(file)) fail("not a KTX 2.0 file (wrong identifier)");
+        failKtx2("truncated: " + std::to_string(file.size()) + " bytes, the header needs " + std::to_string(kHeaderBytes));
+    if (!isKtx2(file)) failKtx2("not a KTX 2.0 file (wrong identifier)");
     Layout layout;
     Ktx2Info& info = layout.info;
     const uint32_t vkFormat = u32(file, 12), width = u32(file, 20), height = u32(file, 24), depth = u32(file, 28);
     const uint32_t layers = u32(file, 32), faces = u32(file, 36), levelCount = u32(file, 40), scheme = u32(file, 44);
     if (vkFormat != 0)
-        fail("vkFormat " + std::to_string(vkFormat) + " is not a Basis Universal payload (KHR_texture_basisu needs VK_FORMAT_UNDEFINED)");
-    if (width == 0 || height == 0) fail("size " + std::to_string(width) + "x" + std::to_string(height) + " is not a 2D image");
+        failKtx2("vkFormat " + std::to_string(vkFormat) + " is not a Basis Universal payload (KHR_texture_basisu needs VK_FORMAT_UNDEFINED)");
+    if (width == 0 || height == 0) failKtx2("size " + std::to_string(width) + "x" + std::to_string(height) + " is not a 2D image");
     if (width > maxDimension || height > maxDimension)
-        fail("image size " + std::to_string(width) + "x" + std::to_string(height) + " exceeds the limit of " +
+        failKtx2("image size " + std::to_string(width) + "x" + std::to_string(height) + " exceeds the limit of " +
              std::to_string(maxDimension) + " pixels per side");
-    if (depth != 0) fail("a 3D texture (pixelDepth " + std::to_string(depth) + "), glTF textures are 2D");
-    if (layers > 1) fail("an array of " + std::to_string(layers) + " layers, glTF textures are single images");
-    if (faces != 1) fail(std::to_string(faces) + " faces, glTF textures have one");
+    if (depth != 0) failKtx2("a 3D texture (pixelDepth " + std::to_string(depth) + "), glTF textures are 2D");
+    if (layers > 1) failKtx2("an array of " + std::to_string(layers) + " layers, glTF textures are single images");
+    if (faces != 1) failKtx2(std::to_string(faces) + " faces, glTF textures have one");
     const uint32_t fullChain = uint32_t(std::bit_width(std::max(width, height)));
     if (levelCount > fullChain)
-        fail(std::to_string(levelCount) + " mip levels, a " + std::to_string(width) + "x" + std::to_string(height) +
+        failKtx2(std::to_string(levelCount) + " mip levels, a " + std::to_string(width) + "x" + std::to_string(height) +
              " image has at most " + std::to_string(fullChain));
     info.width = width;
     info.height = height;
     info.levelCount = std::max(levelCount, 1u);
-    if (scheme > 3) fail("unknown supercompression scheme " + std::to_string(scheme));
+    if (scheme > 3) failKtx2("unknown supercompression scheme " + std::to_string(scheme));
     info.supercompression = Supercompression(scheme);
 
     const uint64_t indexEnd = kHeaderBytes + uint64_t(info.levelCount) * kLevelEntryBytes;
-    if (indexEnd > file.size()) fail("truncated: the level index needs " + std::to_string(indexEnd) + " bytes");
+    if (indexEnd > file.size()) failKtx2("truncated: the level index needs " + std::to_string(indexEnd) + " bytes");
     const uint32_t dfdOffset = u32(file, 48), dfdLength = u32(file, 52);
     const uint32_t kvdOffset = u32(file, 56), kvdLength = u32(file, 60);
     const uint64_t sgdOffset = u64(file, 64), sgdLength = u64(file, 72);
     if (!inside(dfdOffset, dfdLength, file.size()) || dfdOffset < indexEnd)
-        fail("data format descriptor (" + std::to_string(dfdLength) + " bytes at " + std::to_string(dfdOffset) + ") lies outside the file");
+        failKtx2("data format descriptor (" + std::to_string(dfdLength) + " bytes at " + std::to_string(dfdOffset) + ") lies outside the file");
     if (!inside(kvdOffset, kvdLength, file.size()) || (kvdLength > 0 && kvdOffset < indexEnd))
-        fail("key/value data (" + std::to_string(kvdLength) + " bytes at " + std::to_string(kvdOffset) + ") lies outside the file");
+        failKtx2("key/value data (" + std::to_string(kvdLength) + " bytes at " + std::to_string(kvdOffset) + ") lies outside the file");
     if (!inside(sgdOffset, sgdLength, file.size()) || (sgdLength > 0 && sgdOffset < indexEnd))
-        fail("supercompression global data (" + std::to_string(sgdLength) + " bytes at " + std::to_string(sgdOffset) +
+        failKtx2("supercompression global data (" + std::to_string(sgdLength) + " bytes at " + std::to_string(sgdOffset) +
              ") lies outside the file");
     readDfd(file, dfdOffset, dfdLength, layout);
     readKeyValues(file, kvdOffset, kvdLength, layout);
 
     const bool etc1s = info.payload == BasisPayload::Etc1s;
     if (etc1s && info.supercompression != Supercompression::BasisLz)
-        fail("ETC1S payload with supercompression scheme " + std::to_string(scheme) + " (BasisLZ, 1, is required)");
+        failKtx2("ETC1S payload with supercompression scheme " + std::to_string(scheme) + " (BasisLZ, 1, is required)");
     if (!etc1s && info.supercompression != Supercompression::None && info.supercompression != Supercompression::Zstandard)
-        fail("UASTC payload with supercompression scheme " + std::to_string(scheme) + " (none or Zstandard allowed)");
-    if (etc1s != (sgdLength > 0)) fail(etc1s ? "BasisLZ without global data" : "global data without BasisLZ");
+        failKtx2("UASTC payload with supercompression scheme " + std::to_string(scheme) + " (none or Zstandard allowed)");
+    if (etc1s != (sgdLength > 0)) failKtx2(etc1s ? "BasisLZ without global data" : "global data without BasisLZ");
     layout.globalData = file.subspan(size_t(sgdOffset), size_t(sgdLength));
     info.payloadBytes = sgdLength;
 
@@ -180,16 +180,16 @@ Layout readLayout(std::span<const uint8_t> file, uint32_t maxDimension) {
         const size_t at = kHeaderBytes + level * kLevelEntryBytes;
         LevelEntry entry{u64(file, at), u64(file, at + 8), u64(file, at + 16)};
         if (!inside(entry.offset, entry.length, file.size()) || entry.offset < indexEnd)
-            fail(levelName(level) + " (" + std::to_string(entry.length) + " bytes at " + std::to_string(entry.offset) +
+            failKtx2(levelName(level) + " (" + std::to_string(entry.length) + " bytes at " + std::to_string(entry.offset) +
                  ") lies outside the file");
         const uint64_t blocks = blockBytes(levelSize(width, level), levelSize(height, level));
         if (info.supercompression == Supercompression::None && (entry.length != blocks || entry.uncompressedLength != blocks))
-            fail(levelName(level) + " holds " + std::to_string(entry.length) + " bytes, its UASTC blocks need " +
+            failKtx2(levelName(level) + " holds " + std::to_string(entry.length) + " bytes, its UASTC blocks need " +
                  std::to_string(blocks));
         if (info.supercompression == Supercompression::Zstandard && entry.uncompressedLength != blocks)
-            fail(levelName(level) + " inflates to " + std::to_string(entry.uncompressedLength) + " bytes, its UASTC blocks need " +
+            failKtx2(levelName(level) + " inflates to " + std::to_string(entry.uncompressedLength) + " bytes, its UASTC blocks need " +
                  std::to_string(blocks));
-        if (entry.length == 0) fail(levelName(level) + " is empty");
+        if (entry.length == 0) failKtx2(levelName(level) + " is empty");
         info.payloadBytes += entry.length;
         layout.levels.push_back(entry);
     }
@@ -199,15 +199,15 @@ Layout readLayout(std::span<const uint8_t> file, uint32_t maxDimension) {
 // Zstandard-inflates one level into exactly `expected` bytes.
 std::vector<uint8_t> inflate(std::span<const uint8_t> compressed, uint64_t expected, uint32_t level) {
     const unsigned long long declared = ZSTD_getFrameContentSize(compressed.data(), compressed.size());
-    if (declared == ZSTD_CONTENTSIZE_ERROR) fail(levelName(level) + ": not a Zstandard frame");
+    if (declared == ZSTD_CONTENTSIZE_ERROR) failKtx2(levelName(level) + ": not a Zstandard frame");
     if (declared != ZSTD_CONTENTSIZE_UNKNOWN && declared != expected)
-        fail(levelName(level) + ": Zstandard frame holds " + std::to_string(declared) + " bytes, the level index says " +
+        failKtx2(levelName(level) + ": Zstandard frame holds " + std::to_string(declared) + " bytes, the level index says " +
              std::to_string(expected));
     std::vector<uint8_t> out(static_cast<size_t>(expected));
     const size_t got = ZSTD_decompress(out.data(), out.size(), compressed.data(), compressed.size());
-    if (ZSTD_isError(got)) fail(levelName(level) + ": Zstandard: " + ZSTD_getErrorName(got));
+    if (ZSTD_isError(got)) failKtx2(levelName(level) + ": Zstandard: " + ZSTD_getErrorName(got));
     if (got != expected)
-        fail(levelName(level) + ": Zstandard gave " + std::to_string(got) + " bytes, the level index says " + std::to_string(expected));
+        failKtx2(levelName(level) + ": Zstandard gave " + std::to_string(got) + " bytes, the level index says " + std::to_string(expected));
     return out;
 }
 
@@ -239,7 +239,7 @@ DecodedTexture decodeKtx2(std::span<const uint8_t> bytes, uint32_t maxDimension)
         global.emplace(BasisLzGlobal::parse(layout.globalData, info.levelCount));
         const bool alphaSlices = global->imageDesc(0).alphaSliceByteLength > 0;
         if (alphaSlices != info.alpha)
-            fail(std::string("the DFD ") + (info.alpha ? "names" : "has no") + " an alpha channel but the images " +
+            failKtx2(std::string("the DFD ") + (info.alpha ? "names" : "has no") + " an alpha channel but the images " +
                  (alphaSlices ? "have" : "have no") + " alpha slices");
     }
     for (uint32_t level = 0; level < info.levelCount; ++level) {
@@ -261,7 +261,7 @@ DecodedTexture decodeKtx2(std::span<const uint8_t> bytes, uint32_t maxDimension)
         } catch (const UserError& e) {
             const std::string message = e.what();
             if (message.rfind("KTX2: ", 0) == 0) throw;
-            fail(levelName(level) + ": " + message);
+            failKtx2(levelName(level) + ": " + message);
         }
         if (flip) {
             const size_t row = size_t(decoded.width) * 4;

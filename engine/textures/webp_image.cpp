@@ -12,7 +12,7 @@
 namespace candela::textures {
 namespace {
 
-[[noreturn]] void fail(const std::string& problem) { throw UserError("WebP: " + problem); }
+[[noreturn]] void failWebp(const std::string& problem) { throw UserError("WebP: " + problem); }
 
 std::string statusName(VP8StatusCode status) {
     switch (status) {
@@ -30,9 +30,9 @@ std::string statusName(VP8StatusCode status) {
 WebPBitstreamFeatures features(std::span<const uint8_t> bytes, uint32_t maxDimension) {
     WebPBitstreamFeatures f{};
     const VP8StatusCode status = WebPGetFeatures(bytes.data(), bytes.size(), &f);
-    if (status != VP8_STATUS_OK) fail("cannot read the header (" + statusName(status) + ")");
+    if (status != VP8_STATUS_OK) failWebp("cannot read the header (" + statusName(status) + ")");
     if (f.width <= 0 || f.height <= 0 || uint32_t(f.width) > maxDimension || uint32_t(f.height) > maxDimension)
-        fail("image size " + std::to_string(f.width) + "x" + std::to_string(f.height) + " exceeds the limit of " +
+        failWebp("image size " + std::to_string(f.width) + "x" + std::to_string(f.height) + " exceeds the limit of " +
              std::to_string(maxDimension) + " pixels per side");
     return f;
 }
@@ -44,17 +44,17 @@ struct AnimDecoderDelete {
 // The first frame of an animation, composited on the canvas as the animation decoder does.
 TextureLevel firstFrame(std::span<const uint8_t> bytes) {
     WebPAnimDecoderOptions options;
-    if (!WebPAnimDecoderOptionsInit(&options)) fail("libwebp's animation decoder has another ABI version");
+    if (!WebPAnimDecoderOptionsInit(&options)) failWebp("libwebp's animation decoder has another ABI version");
     options.color_mode = MODE_RGBA;
     options.use_threads = 0;
     const WebPData data{bytes.data(), bytes.size()};
     const std::unique_ptr<WebPAnimDecoder, AnimDecoderDelete> decoder(WebPAnimDecoderNew(&data, &options));
-    if (!decoder) fail("cannot read the animation");
+    if (!decoder) failWebp("cannot read the animation");
     WebPAnimInfo info{};
-    if (!WebPAnimDecoderGetInfo(decoder.get(), &info) || info.frame_count == 0) fail("animation without frames");
+    if (!WebPAnimDecoderGetInfo(decoder.get(), &info) || info.frame_count == 0) failWebp("animation without frames");
     uint8_t* pixels = nullptr;
     int timestamp = 0;
-    if (!WebPAnimDecoderGetNext(decoder.get(), &pixels, &timestamp) || !pixels) fail("cannot decode the first frame");
+    if (!WebPAnimDecoderGetNext(decoder.get(), &pixels, &timestamp) || !pixels) failWebp("cannot decode the first frame");
     TextureLevel level{info.canvas_width, info.canvas_height, {}};
     level.rgba8.assign(pixels, pixels + size_t(level.width) * level.height * 4);
     return level;
@@ -76,7 +76,7 @@ DecodedTexture decodeWebp(std::span<const uint8_t> bytes, uint32_t maxDimension)
     DecodedTexture out;
     if (f.has_animation) {
         TextureLevel level = firstFrame(bytes);
-        if (level.width != uint32_t(f.width) || level.height != uint32_t(f.height)) fail("canvas size changed while decoding");
+        if (level.width != uint32_t(f.width) || level.height != uint32_t(f.height)) failWebp("canvas size changed while decoding");
         out.levels.push_back(std::move(level));
         out.report.notes.push_back("animated WebP: drawn from its first frame");
         return out;
@@ -85,7 +85,7 @@ DecodedTexture decodeWebp(std::span<const uint8_t> bytes, uint32_t maxDimension)
     level.rgba8.resize(size_t(level.width) * level.height * 4);
     const int stride = int(level.width * 4);
     if (!WebPDecodeRGBAInto(bytes.data(), bytes.size(), level.rgba8.data(), level.rgba8.size(), stride))
-        fail("cannot decode the image (corrupt or truncated bitstream)");
+        failWebp("cannot decode the image (corrupt or truncated bitstream)");
     out.levels.push_back(std::move(level));
     return out;
 }

@@ -89,19 +89,19 @@ constexpr ProfileData kMinimum{
 // Device reports (vulkan.gpuinfo.org) as stored in KhronosGroup/Vulkan-Profiles, folder
 // profiles/VP_LUNARG_desktop_baseline_2023/: the reports' optimal-tiling format features, limits,
 // features and extensions. Neither report lists memory types.
-constexpr VkFormatFeatureFlags2 kAll = S | L | ST | C | B | X;
-constexpr VkFormatFeatureFlags2 kDepth = S | L | D | X;
+constexpr VkFormatFeatureFlags2 kDesktopColor = S | L | ST | C | B | X;
+constexpr VkFormatFeatureFlags2 kDesktopDepth = S | L | D | X;
 
 // vp_gpuinfo_nvidia_geforce_rtx_4070_551_61_0_0_windows_11.json (commit e1cf59d9): NVIDIA GeForce
 // RTX 4070, driver 551.61, Windows 11, Vulkan 1.3.277. The sRGB formats have no storage.
 constexpr FormatCeiling kDesktopFormats[] = {
-    {VK_FORMAT_R8G8B8A8_UNORM, kAll},      {VK_FORMAT_R8G8B8A8_SRGB, kAll & ~ST},
-    {VK_FORMAT_B8G8R8A8_UNORM, kAll},      {VK_FORMAT_B8G8R8A8_SRGB, kAll & ~ST},
-    {VK_FORMAT_A2B10G10R10_UNORM_PACK32, kAll}, {VK_FORMAT_R16_SFLOAT, kAll},
-    {VK_FORMAT_R16G16_SFLOAT, kAll},       {VK_FORMAT_R16G16B16A16_SFLOAT, kAll},
-    {VK_FORMAT_R32_SFLOAT, kAll},          {VK_FORMAT_R32G32_SFLOAT, kAll},
-    {VK_FORMAT_R32G32B32A32_SFLOAT, kAll}, {VK_FORMAT_D32_SFLOAT, kDepth},
-    {VK_FORMAT_X8_D24_UNORM_PACK32, kDepth}, {VK_FORMAT_D16_UNORM, kDepth},
+    {VK_FORMAT_R8G8B8A8_UNORM, kDesktopColor},      {VK_FORMAT_R8G8B8A8_SRGB, kDesktopColor & ~ST},
+    {VK_FORMAT_B8G8R8A8_UNORM, kDesktopColor},      {VK_FORMAT_B8G8R8A8_SRGB, kDesktopColor & ~ST},
+    {VK_FORMAT_A2B10G10R10_UNORM_PACK32, kDesktopColor}, {VK_FORMAT_R16_SFLOAT, kDesktopColor},
+    {VK_FORMAT_R16G16_SFLOAT, kDesktopColor},       {VK_FORMAT_R16G16B16A16_SFLOAT, kDesktopColor},
+    {VK_FORMAT_R32_SFLOAT, kDesktopColor},          {VK_FORMAT_R32G32_SFLOAT, kDesktopColor},
+    {VK_FORMAT_R32G32B32A32_SFLOAT, kDesktopColor}, {VK_FORMAT_D32_SFLOAT, kDesktopDepth},
+    {VK_FORMAT_X8_D24_UNORM_PACK32, kDesktopDepth}, {VK_FORMAT_D16_UNORM, kDesktopDepth},
     {VK_FORMAT_R32G32_UINT, S | ST | C | X},
 };
 constexpr ProfileData kDesktop{
@@ -143,13 +143,13 @@ constexpr ProfileData kDesktop{
 // X8_D24 depth. MoltenVK exposes Metal's memoryless storage as a lazily allocated memory type on
 // Apple GPUs, so lazily allocated types stay visible.
 constexpr FormatCeiling kAppleFormats[] = {
-    {VK_FORMAT_R8G8B8A8_UNORM, kAll},      {VK_FORMAT_R8G8B8A8_SRGB, kAll},
-    {VK_FORMAT_B8G8R8A8_UNORM, kAll},      {VK_FORMAT_B8G8R8A8_SRGB, kAll},
-    {VK_FORMAT_A2B10G10R10_UNORM_PACK32, kAll}, {VK_FORMAT_R16_SFLOAT, kAll},
-    {VK_FORMAT_R16G16_SFLOAT, kAll},       {VK_FORMAT_R16G16B16A16_SFLOAT, kAll},
-    {VK_FORMAT_R32_SFLOAT, kAll},          {VK_FORMAT_R32G32_SFLOAT, kAll},
-    {VK_FORMAT_R32G32B32A32_SFLOAT, kAll}, {VK_FORMAT_D32_SFLOAT, kDepth},
-    {VK_FORMAT_X8_D24_UNORM_PACK32, 0},    {VK_FORMAT_D16_UNORM, kDepth},
+    {VK_FORMAT_R8G8B8A8_UNORM, kDesktopColor},      {VK_FORMAT_R8G8B8A8_SRGB, kDesktopColor},
+    {VK_FORMAT_B8G8R8A8_UNORM, kDesktopColor},      {VK_FORMAT_B8G8R8A8_SRGB, kDesktopColor},
+    {VK_FORMAT_A2B10G10R10_UNORM_PACK32, kDesktopColor}, {VK_FORMAT_R16_SFLOAT, kDesktopColor},
+    {VK_FORMAT_R16G16_SFLOAT, kDesktopColor},       {VK_FORMAT_R16G16B16A16_SFLOAT, kDesktopColor},
+    {VK_FORMAT_R32_SFLOAT, kDesktopColor},          {VK_FORMAT_R32G32_SFLOAT, kDesktopColor},
+    {VK_FORMAT_R32G32B32A32_SFLOAT, kDesktopColor}, {VK_FORMAT_D32_SFLOAT, kDesktopDepth},
+    {VK_FORMAT_X8_D24_UNORM_PACK32, 0},    {VK_FORMAT_D16_UNORM, kDesktopDepth},
     {VK_FORMAT_R32G32_UINT, S | ST | C | X},
 };
 constexpr ProfileData kApple{

@@ -12,7 +12,7 @@
 #include <map>
 #include <set>
 
-namespace candela::test {
+namespace candela::test::render_batch_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -223,4 +223,4 @@ TEST(RenderBatch, OutputsThatWouldCollideAreRefusedBeforeRendering) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::render_batch_test

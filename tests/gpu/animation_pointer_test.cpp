@@ -14,7 +14,7 @@
 
 #include <algorithm>
 
-namespace candela::test {
+namespace candela::test::animation_pointer_test {
 namespace {
 
 constexpr uint32_t kWidth = 160, kHeight = 120;
@@ -170,4 +170,4 @@ TEST_F(AnimationPointerTest, AHiddenNodeDrawsNothingAndItsLightLightsNothingOnBo
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::animation_pointer_test

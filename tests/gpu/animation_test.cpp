@@ -19,7 +19,7 @@
 #include <optional>
 #include <tuple>
 
-namespace candela::test {
+namespace candela::test::animation_test {
 namespace {
 
 constexpr uint32_t kWidth = 160, kHeight = 120;
@@ -116,9 +116,9 @@ TEST_F(GpuTest, PosedDrawsMatchTheStaticPathWithTheSameMatrices) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::animation_test
 
-namespace candela::test {
+namespace candela::test::animation_test {
 namespace {
 
 // The skin_morph pass's vertices for `work`, read back; the pass split by `limits` when given.
@@ -244,9 +244,9 @@ TEST_F(GpuTest, SkinMorphSplitIntoSmallRangesAndTwoDimensionalGridsIsExact) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::animation_test
 
-namespace candela::test {
+namespace candela::test::animation_test {
 namespace {
 
 TEST_F(GpuTest, LightsOnAnimatedNodesMoveWithThePose) {
@@ -278,4 +278,4 @@ TEST_F(GpuTest, LightsOnAnimatedNodesMoveWithThePose) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::animation_test

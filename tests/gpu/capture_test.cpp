@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace candela::test {
+namespace candela::test::capture_test {
 namespace {
 
 glm::vec3 referenceRadiance(uint32_t x, uint32_t y, uint32_t width, uint32_t height) {
@@ -89,4 +89,4 @@ TEST_F(GpuTest, TimestampsMeasureEveryPassThatRan) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::capture_test

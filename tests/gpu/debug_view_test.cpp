@@ -11,7 +11,7 @@
 
 #include <cmath>
 
-namespace candela::test {
+namespace candela::test::debug_view_test {
 namespace {
 
 constexpr uint32_t kWidth = 480, kHeight = 270;
@@ -171,4 +171,4 @@ TEST_F(DebugViewTest, IsAGraphVariantWithoutTheSkybox) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::debug_view_test

@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <vector>
 
-namespace candela::test {
+namespace candela::test::frames_in_flight_test {
 namespace {
 
 constexpr uint32_t kWidth = 96, kHeight = 64;
@@ -138,4 +138,4 @@ TEST_F(FramesInFlightTest, ANewEnvironmentIsComputedOnceAndWaitedForOnce) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::frames_in_flight_test

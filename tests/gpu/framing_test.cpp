@@ -7,7 +7,7 @@
 
 #include "render/renderer.h"
 
-namespace candela::test {
+namespace candela::test::framing_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -114,4 +114,4 @@ TEST_F(GpuTest, TheFieldOfViewChangesTheImageAtTheFramedDistance) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::framing_test

@@ -35,7 +35,7 @@
 #include <optional>
 #include <string>
 
-namespace candela::test {
+namespace candela::test::golden_test {
 namespace {
 
 struct GoldenCase {
@@ -338,4 +338,4 @@ INSTANTIATE_TEST_SUITE_P(Models, GoldenTest, ::testing::ValuesIn(kCases),
                          [](const ::testing::TestParamInfo<GoldenCase>& row) { return std::string(row.param.name); });
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::golden_test

@@ -9,7 +9,7 @@
 
 #include <string>
 
-namespace candela::test {
+namespace candela::test::ibl_bright_texels_test {
 namespace {
 
 namespace ref = ibl::reference;
@@ -90,4 +90,4 @@ TEST_F(IblBrightTexelsTest, ASummedSunMatchesTheReferenceWhereASampledOneDoesNot
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::ibl_bright_texels_test

@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::test {
+namespace candela::test::ibl_numerical_test {
 namespace {
 
 namespace ref = ibl::reference;
@@ -809,4 +809,4 @@ TEST_F(IblRotationTest, RotatedLookupEqualsTheMapRotatedOnTheCpu) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::ibl_numerical_test

@@ -12,7 +12,7 @@
 #include <cstdlib>
 #include <vector>
 
-namespace candela::test {
+namespace candela::test::lod_test {
 namespace {
 
 struct ImageDifference {
@@ -92,4 +92,4 @@ TEST_F(GpuTest, DefaultLevelOfDetailStaysWithinItsImageErrorOnTheDefaultScene) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::lod_test

@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 
-namespace candela::test {
+namespace candela::test::shading_path_test {
 namespace {
 
 constexpr uint32_t kWidth = 320, kHeight = 180;
@@ -324,4 +324,4 @@ TEST_F(ShadingPathTest, AutoIsTheDevicesDefault) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::shading_path_test

@@ -27,7 +27,7 @@
 #include <sstream>
 #include <string>
 
-namespace candela::test {
+namespace candela::test::stability_test {
 namespace {
 
 using options::ShadingModel;
@@ -546,4 +546,4 @@ TEST_F(StabilityTest, NormalMappedPanelsAtBothScaleExtremes) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::stability_test

@@ -13,7 +13,7 @@
 
 #include <cmath>
 
-namespace candela::test {
+namespace candela::test::tonemap_test {
 namespace {
 
 constexpr uint32_t kWidth = 64, kHeight = 48;
@@ -85,4 +85,4 @@ TEST_F(GpuTest, TonemapDitherStaysWithinOneLevel) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::tonemap_test

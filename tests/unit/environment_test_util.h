@@ -48,7 +48,7 @@ inline void writeBytes(const fs::path& path, const Bytes& bytes) {
 inline Bytes toBytes(const std::string& text) { return Bytes(text.begin(), text.end()); }
 
 // The error message loadEnvironment throws, or "" when it loads.
-inline std::string loadError(const fs::path& path, const EnvironmentLoadOptions& options = {}) {
+inline std::string environmentLoadError(const fs::path& path, const EnvironmentLoadOptions& options = {}) {
     try {
         loadEnvironment(path, options);
     } catch (const UserError& e) {

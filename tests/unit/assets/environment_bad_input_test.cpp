@@ -8,7 +8,7 @@
 #include <functional>
 #include <random>
 
-namespace candela::scene::test {
+namespace candela::scene::test::environment_bad_input_test {
 namespace {
 
 constexpr uint32_t kWidth = 40, kHeight = 5;
@@ -214,7 +214,7 @@ TEST_P(EnvironmentBadInputRow, IsOneLineUserErrorNamingTheFile) {
     EnvTempDir dir;
     const BadCase& c = GetParam();
     const fs::path path = c.make(dir.path());
-    const std::string message = loadError(path, c.options);
+    const std::string message = environmentLoadError(path, c.options);
     RecordProperty("message", message);
     candela::test::expectOneLineErrorNamingFile(path, message, c.fragment);
 }
@@ -227,12 +227,12 @@ TEST(EnvironmentBadInputBaseline, UnmodifiedInputsLoad) {
     EnvTempDir dir;
     for (Scanlines s : {Scanlines::Rle, Scanlines::Flat, Scanlines::OldRle}) {
         writeBytes(dir / "ok.hdr", validHdr(s));
-        EXPECT_EQ(loadError(dir / "ok.hdr"), "");
+        EXPECT_EQ(environmentLoadError(dir / "ok.hdr"), "");
     }
     writeBytes(dir / "ok.exr", validExr());
-    EXPECT_EQ(loadError(dir / "ok.exr"), "");
+    EXPECT_EQ(environmentLoadError(dir / "ok.exr"), "");
     writeBytes(dir / "one.hdr", hdrWithData("-Y 1 +X 8", {2, 2, 0, 8, 128 + 8, 1, 128 + 8, 1, 128 + 8, 1, 128 + 8, 128}));
-    EXPECT_EQ(loadError(dir / "one.hdr"), "");
+    EXPECT_EQ(environmentLoadError(dir / "one.hdr"), "");
 }
 
 // Each valid file cut at every length from 0 to size − 1 fails with one line naming the file.
@@ -241,7 +241,7 @@ void expectEveryTruncationFails(const Bytes& valid, const std::string& name) {
     const fs::path path = dir / name;
     for (size_t cut = 0; cut < valid.size(); ++cut) {
         writeBytes(path, Bytes(valid.begin(), valid.begin() + std::ptrdiff_t(cut)));
-        const std::string message = loadError(path);
+        const std::string message = environmentLoadError(path);
         ASSERT_FALSE(message.empty()) << "loaded when cut to " << cut << " bytes";
         ASSERT_EQ(message.rfind(path.string() + ": ", 0), 0u) << message;
         ASSERT_EQ(message.find('\n'), std::string::npos) << message;
@@ -277,7 +277,7 @@ void expectMutationsAreSafe(const Bytes& valid, const std::string& name, size_t 
         const int changes = 1 + int(rng() % 8);
         for (int i = 0; i < changes; ++i) bytes[skip + rng() % (bytes.size() - skip)] = uint8_t(rng());
         writeBytes(path, bytes);
-        const std::string message = loadError(path);
+        const std::string message = environmentLoadError(path);
         if (message.empty()) continue;
         ASSERT_EQ(message.rfind(path.string() + ": ", 0), 0u) << message;
         ASSERT_EQ(message.find('\n'), std::string::npos) << message;
@@ -295,4 +295,4 @@ TEST(EnvironmentFuzz, ExrRandomMutations) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::scene::test::environment_bad_input_test

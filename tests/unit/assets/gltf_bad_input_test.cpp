@@ -9,7 +9,7 @@
 #include <functional>
 #include <limits>
 
-namespace candela::scene::test {
+namespace candela::scene::test::gltf_bad_input_test {
 namespace {
 
 struct BadCase {
@@ -380,4 +380,4 @@ TEST(GltfBadInputBaseline, UnmodifiedInputsLoad) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::scene::test::gltf_bad_input_test

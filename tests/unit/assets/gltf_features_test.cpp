@@ -11,7 +11,7 @@
 #include <limits>
 #include <numbers>
 
-namespace candela::scene::test {
+namespace candela::scene::test::gltf_features_test {
 namespace {
 
 constexpr float kEps = 1e-6f;
@@ -883,4 +883,4 @@ TEST(GltfFeatures, UnindexedPrimitiveAndNonFiniteNormalRepaired) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::scene::test::gltf_features_test

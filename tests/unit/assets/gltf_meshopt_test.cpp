@@ -5,7 +5,7 @@
 #include "meshopt_test_util.h"
 
 
-namespace candela::scene::test {
+namespace candela::scene::test::gltf_meshopt_test {
 namespace {
 
 TEST(GltfMeshopt, QuadLoadsExactlyLikeItsPlainTwin) {
@@ -173,4 +173,4 @@ INSTANTIATE_TEST_SUITE_P(Rows, MeshoptBadInput, testing::ValuesIn(meshoptCases()
                          [](const testing::TestParamInfo<MeshoptCase>& row) { return row.param.name; });
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::scene::test::gltf_meshopt_test

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::scene::test {
+namespace candela::scene::test::gltf_transmission_layers_test {
 namespace {
 
 bool hasLine(const std::vector<std::string>& lines, const std::string& fragment) {
@@ -86,4 +86,4 @@ TEST(GltfFeatures, DispersionExtension) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::scene::test::gltf_transmission_layers_test

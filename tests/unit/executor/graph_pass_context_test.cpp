@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <string>
 
-namespace candela::graph {
+namespace candela::graph::graph_pass_context_test {
 namespace {
 
 template <class Handle>
@@ -135,4 +135,4 @@ TEST(GraphPassContext, MipViewsMustExist) {
 }
 
 }  // namespace
-}  // namespace candela::graph
+}  // namespace candela::graph::graph_pass_context_test

@@ -16,7 +16,7 @@
 #include <optional>
 #include <string>
 
-namespace candela::graph {
+namespace candela::graph::graph_attachments_test {
 namespace {
 
 constexpr TextureDesc kHdr{.width = 64, .height = 32, .format = VK_FORMAT_R16G16B16A16_SFLOAT};
@@ -197,4 +197,4 @@ TEST(GraphAttachments, AnImportIsLoadedAndALostInputClearedToItsFallback) {
 }
 
 }  // namespace
-}  // namespace candela::graph
+}  // namespace candela::graph::graph_attachments_test

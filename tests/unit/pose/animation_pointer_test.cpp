@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace candela::scene::test {
+namespace candela::scene::test::animation_pointer_test {
 namespace {
 
 // The lines of `warnings` containing `fragment`.
@@ -259,4 +259,4 @@ TEST(AnimationPointer, PointersNameWhatTheFileHas) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::scene::test::animation_pointer_test

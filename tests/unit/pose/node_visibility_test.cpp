@@ -5,7 +5,7 @@
 
 #include "pose/scene_pose.h"
 
-namespace candela::scene::test {
+namespace candela::scene::test::node_visibility_test {
 namespace {
 
 // Two triangles side by side: node 0 at the origin (drawn), node 1 hidden at x = 5 with a child,
@@ -127,4 +127,4 @@ TEST(NodeVisibility, ShownFollowsEveryAncestor) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::scene::test::node_visibility_test

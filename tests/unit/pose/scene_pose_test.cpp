@@ -9,7 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace candela::scene::test {
+namespace candela::scene::test::scene_pose_test {
 namespace {
 
 void expectVec(const glm::vec3& actual, const glm::vec3& expected, float eps = 1e-5f) {
@@ -158,9 +158,9 @@ TEST(ScenePose, ChannelsOnNodesOutsideTheSceneAndWithoutTargetAreDropped) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::scene::test::scene_pose_test
 
-namespace candela::scene::test {
+namespace candela::scene::test::scene_pose_test {
 namespace {
 
 // Every deformed vertex (the CPU reference of the skin_morph pass) lies in its draw's posed bounds
@@ -204,9 +204,9 @@ TEST(ScenePose, MorphedBoundsContainTheDeformedVertices) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::scene::test::scene_pose_test
 
-namespace candela::scene::test {
+namespace candela::scene::test::scene_pose_test {
 namespace {
 
 TEST(ScenePose, PickingHitsThePosedMesh) {
@@ -235,4 +235,4 @@ TEST(ScenePose, PickingHitsThePosedMesh) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::scene::test::scene_pose_test

@@ -25,7 +25,7 @@
 #include <sstream>
 #include <vector>
 
-namespace candela::test {
+namespace candela::test::brdf_test {
 namespace {
 
 namespace ref = reference;
@@ -272,4 +272,4 @@ TEST(BrdfReference, WhiteMetalAlbedoIsAtMostOne) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::brdf_test

@@ -28,7 +28,7 @@
 #include <map>
 #include <optional>
 
-namespace candela::test {
+namespace candela::test::layer_ibl_error_test {
 namespace {
 
 namespace ref = reference;
@@ -182,4 +182,4 @@ TEST(LayerIbl, TransmissionErrorIsMeasured) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::layer_ibl_error_test

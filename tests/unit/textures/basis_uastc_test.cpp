@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::textures {
+namespace candela::textures::basis_uastc_test {
 namespace {
 
 const std::filesystem::path kDataDir = ::candela::test::testData() / "ktx2";
@@ -391,4 +391,4 @@ TEST(UastcDecode, ImageThrowsUserErrorNamingTheInvalidBlock) {
 }
 
 }  // namespace
-}  // namespace candela::textures
+}  // namespace candela::textures::basis_uastc_test
