@@ -4,40 +4,54 @@
 
 #include "core/errors.h"
 
+#include <algorithm>
 #include <map>
 #include <memory>
+#include <set>
 
 namespace candela::app {
 namespace {
 
-// Every flag in the order help lists them (grouped as in `candela --help`: output, the viewer,
-// scene and camera, shading, lighting and IBL, the reports, diff, the device), with a value that
-// parses for every command taking it and differs from its default ("" for a switch), for the tests.
-constexpr std::pair<const char*, const char*> kFlagOrder[] = {
-    {"--out", "out"}, {"--width", "64"}, {"--height", "48"}, {"--frames", "3"}, {"--fps", "24"}, {"--turntable", "90"},
-    {"--report", "report.json"}, {"--html", "index.html"}, {"--inline-images", ""}, {"--shard", "2/4"},
-    {"--graph-dot", "graph.dot"}, {"--graph-json", "graph.json"}, {"--explain", ""}, {"--dither", ""}, {"--json", ""},
-    {"--in-flight", ""},
-    {"--screenshot", "shot.png"}, {"--no-vsync", ""}, {"--no-ui", ""}, {"--panels", "camera,debug"}, {"--shaders", "shaders"},
-    {"--ibl-report", "report.csv"},
-    {"--scene", "model.glb"}, {"--scene-index", "1"}, {"--grid", "3"}, {"--distinct-materials", ""}, {"--variant", "red"},
-    {"--animation", "Walk,2"}, {"--time", "1.5"}, {"--camera", "0"}, {"--camera-orbit", "30,70,5"}, {"--target", "0,1,0"},
-    {"--fov", "60"},
-    {"--shading", "blinn-phong"}, {"--debug-view", "roughness"}, {"--tonemap", "agx"}, {"--exposure", "1"},
-    {"--background", "#102030"}, {"--msaa", "2"}, {"--precompile", "off"}, {"--shading-path", "visibility"},
-    {"--specular-aa", "on"}, {"--lod-error", "2"}, {"--lod", "off"}, {"--cull", "off"}, {"--disable-pass", "skybox"},
-    {"--no-default-lights", ""}, {"--scene-lights", "off"}, {"--env", "studio.hdr"}, {"--env-rotation", "90"},
-    {"--env-intensity", "2"}, {"--skybox-blur", "0.3"}, {"--no-multiscatter", ""}, {"--ibl-cache", "cache"},
-    {"--irradiance", "sh9"}, {"--ibl-cube-size", "128"}, {"--ibl-levels", "5"}, {"--ibl-prefilter-samples", "32"},
-    {"--ibl-lod-bias", "1"}, {"--ibl-bright-texels", "0"}, {"--ibl-sh-size", "16"}, {"--ibl-irradiance-size", "16"},
-    {"--ibl-irradiance-samples", "128"}, {"--ibl-lut-size", "64"}, {"--ibl-lut-samples", "128"},
-    {"--repeats", "1"}, {"--quick", ""}, {"--reference-samples", "64"}, {"--sizes", "1,3"}, {"--scenes", "default,model.glb"},
-    {"--lod-errors", "0,1"}, {"--orbit-frames", "2"}, {"--switch-every", "10"}, {"--sample-every", "10"},
-    {"--ppd", "40"}, {"--monitor-distance", "1"}, {"--monitor-width", "0.5"}, {"--monitor-resolution", "1920"},
-    {"--threshold", "2"}, {"--max-flip", "0.05"}, {"--max-fraction", "0.001"}, {"--error-maps", "maps"},
-    {"--device", "0"}, {"--device-profile", "minimum"}, {"--validate", ""}, {"--memory-budget", "64"},
-    {"--pipeline-cache", "cache"}, {"--verbose", ""}, {"--quiet", ""},
-};
+// Every flag name, ordered so that each command's flags keep the order its own list declares them
+// in (`candela COMMAND --help` lists them so). `lists[c]`: the names command c of commandTable()
+// declares, in order. The lists are merged by placing, again and again, of the flags whose
+// predecessors in every list are placed, the one declared first (by the earliest command). Two
+// commands declaring two flags in opposite orders is an InternalError naming them.
+std::vector<std::string> helpOrder(const std::vector<std::vector<std::string>>& lists) {
+    std::map<std::string, size_t> rank;                 // the flag's first declaration
+    std::map<std::string, std::set<std::string>> next;  // the flags some list declares right after it
+    std::map<std::string, size_t> before;               // how many flags must come before it
+    for (const std::vector<std::string>& list : lists)
+        for (size_t i = 0; i < list.size(); ++i) {
+            rank.emplace(list[i], rank.size());
+            before[list[i]];
+            if (i > 0 && next[list[i - 1]].insert(list[i]).second) ++before[list[i]];
+        }
+    std::set<std::pair<size_t, std::string>> ready;
+    for (const auto& [name, count] : before)
+        if (count == 0) ready.insert({rank.at(name), name});
+    std::vector<std::string> order;
+    while (!ready.empty()) {
+        const std::string name = ready.begin()->second;
+        ready.erase(ready.begin());
+        order.push_back(name);
+        for (const std::string& after : next[name])
+            if (--before.at(after) == 0) ready.insert({rank.at(after), after});
+    }
+    if (order.size() == rank.size()) return order;
+    for (size_t a = 0; a < lists.size(); ++a)
+        for (size_t b = a + 1; b < lists.size(); ++b)
+            for (size_t i = 0; i < lists[a].size(); ++i)
+                for (size_t j = i + 1; j < lists[a].size(); ++j) {
+                    const auto& other = lists[b];
+                    const auto first = std::find(other.begin(), other.end(), lists[a][i]);
+                    const auto second = std::find(other.begin(), other.end(), lists[a][j]);
+                    if (first != other.end() && second != other.end() && second < first)
+                        throw InternalError(commandTable()[a].name + " declares " + lists[a][i] + " before " +
+                                            lists[a][j] + ", " + commandTable()[b].name + " after it; help cannot keep both");
+                }
+    throw InternalError("the commands declare their flags in orders that help cannot all keep");
+}
 
 using Setters = std::map<Command::Kind, Setter<Command>>;
 
@@ -58,22 +72,30 @@ void addUse(Flag& flag, Setters& setters, Command::Kind kind, FlagSpec<Command>&
 }
 
 std::vector<Flag> makeFlagTable() {
+    std::vector<std::vector<FlagSpec<Command>>> specs;
+    std::vector<std::vector<std::string>> names;
+    for (const CommandInfo& command : commandTable()) {
+        specs.push_back(command.flags());
+        names.emplace_back();
+        for (const FlagSpec<Command>& spec : specs.back()) {
+            if (std::find(names.back().begin(), names.back().end(), spec.name) != names.back().end())
+                throw InternalError(command.name + " declares " + spec.name + " twice");
+            names.back().push_back(spec.name);
+        }
+    }
     std::vector<Flag> flags;
     std::map<std::string, size_t> row;
-    for (const auto& [name, example] : kFlagOrder) {
+    for (const std::string& name : helpOrder(names)) {
         row.emplace(name, flags.size());
-        flags.push_back({.name = name, .example = example});
+        flags.push_back({.name = name});
     }
     std::vector<Setters> setters(flags.size());
-    for (const CommandInfo& command : commandTable())
-        for (FlagSpec<Command>& spec : command.flags()) {
-            const auto it = row.find(spec.name);
-            if (it == row.end()) throw InternalError(command.name + " declares " + spec.name + ", which kFlagOrder lacks");
-            if (flags[it->second].use(command.kind)) throw InternalError(command.name + " declares " + spec.name + " twice");
-            addUse(flags[it->second], setters[it->second], command.kind, std::move(spec));
-        }
+    for (size_t c = 0; c < specs.size(); ++c) {
+        const CommandInfo& command = commandTable()[c];
+        for (FlagSpec<Command>& spec : specs[c])
+            addUse(flags[row.at(spec.name)], setters[row.at(spec.name)], command.kind, std::move(spec));
+    }
     for (size_t i = 0; i < flags.size(); ++i) {
-        if (flags[i].uses.empty()) throw InternalError(flags[i].name + ": no command takes it");
         flags[i].set = [bound = std::make_shared<const Setters>(std::move(setters[i]))](Command& c, const std::string& flag,
                                                                                        const std::string& value) {
             bound->at(c.kind)(c, flag, value);

@@ -1,8 +1,8 @@
 #pragma once
 // The command line's two tables: the commands, and the flags. Each command declares its flags in
 // its own file (render_cli.h, ...: FlagSpec lists assembled from the groups of flag_groups.h);
-// flagTable() merges them into one row per flag, in the order help lists them. The parser,
-// `candela --help`, `candela COMMAND --help` and the tests all read these two tables.
+// flagTable() merges them into one row per flag, in an order that keeps each command's own. The
+// parser, `candela --help`, `candela COMMAND --help` and the tests all read these two tables.
 // (The commands are assembled in cli_commands.cpp, the flags merged in cli_flags.cpp.)
 
 #include "cli.h"
@@ -77,8 +77,6 @@ struct Flag {
     // with that command's setter; a UserError naming the flag (`name`, passed as `flag`) when it
     // is malformed.
     std::function<void(Command& command, const std::string& flag, const std::string& value)> set;
-    // A value that parses for every command taking the flag and differs from its default (tests).
-    std::string example;
 
     bool isSwitch() const { return uses.front().value.empty(); }
     // The use for `kind`; null when `kind` does not take the flag.
@@ -87,7 +85,8 @@ struct Flag {
     CommandSet commands() const;
 };
 
-// Every flag, in the order help lists them. -h/--help and --version are not in it.
+// Every flag, in the order help lists them: each command's flags in the order its list declares
+// them. -h/--help and --version are not in it.
 const std::vector<Flag>& flagTable();
 // The flag named `name`; null for none.
 const Flag* findFlag(std::string_view name);

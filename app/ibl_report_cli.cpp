@@ -10,6 +10,9 @@ std::vector<FlagSpec<IblReportOptions>> iblReportFlags() {
     using O = IblReportOptions;
     std::vector<FlagSpec<O>> flags = {
         {"--out", "DIR", "where report.csv, report.md and the plots go (created)", "ibl-report", parsed(&O::out, parsePath)},
+    };
+    append(flags, sizeFlags(&O::width, &O::height, "{} of the end-to-end images", 320, 180));
+    append(flags, {
         {"--repeats", "N",
          "rounds of precompute runs over every setting, a calibration run before each; the median time and "
          "its quartiles are reported, over the median calibration",
@@ -21,8 +24,7 @@ std::vector<FlagSpec<IblReportOptions>> iblReportFlags() {
              if (o.referenceSamples < 16) throw UserError(flag + ": need at least 16");
          }},
         requiredEnvFlag(&O::env, "the environment measured: an .hdr/.exr file or sky", "ibl-report"),
-    };
-    append(flags, sizeFlags(&O::width, &O::height, "{} of the end-to-end images", 320, 180));
+    });
     append(flags, bindTo<O>(&O::common, deviceFlags(true)));
     append(flags, bindTo<O>(&O::common, std::vector{verboseFlag(false), quietFlag()}));
     return flags;

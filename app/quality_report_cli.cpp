@@ -13,17 +13,20 @@ std::vector<FlagSpec<QualityReportOptions>> qualityReportFlags() {
     std::vector<FlagSpec<O>> flags = {
         {"--out", "DIR", "where report.csv, report.md and the plots go (created)", "quality-report", parsed(&O::out, parsePath)},
         {"--frames", "N", "timed frames per setting", "5", parsed(&O::frames, parseCount)},
+    };
+    append(flags, sizeFlags(&O::width, &O::height, "frame {} (the reference renders 4x as many pixels a side)", 640, 360));
+    append(flags, {
         {"--msaa", "N,N,...", "sample counts, each {choices} (those the device lacks are clamped, noted)", "1,2,4,8",
          [](O& o, Str flag, Str v) {
              o.msaa.clear();
              for (const std::string& item : commaSeparated(v)) o.msaa.push_back(parseChoice(flag, kSampleCounts, item));
          },
          namesOf(kSampleCounts)},
-        requiredEnvFlag(&O::env, "the glTF scenes' environment: an .hdr/.exr file or sky (the grid: the sky)", "quality-report"),
         {"--repeats", "N",
          "rounds of --frames timed frames over every setting; the median ratio and its quartiles are "
          "reported",
          "5", parsed(&O::repeats, parseCount)},
+        requiredEnvFlag(&O::env, "the glTF scenes' environment: an .hdr/.exr file or sky (the grid: the sky)", "quality-report"),
         {"--scenes", "A,B,...", "default (the built-in grid under the sky) and/or glTF files", "default",
          [](O& o, Str flag, Str v) {
              o.scenes = commaSeparated(v);
@@ -41,8 +44,7 @@ std::vector<FlagSpec<QualityReportOptions>> qualityReportFlags() {
          }},
         {"--orbit-frames", "N", "frames of the 1-degree-per-frame orbit (error and temporal difference)", "6",
          parsed(&O::orbitFrames, parseCount)},
-    };
-    append(flags, sizeFlags(&O::width, &O::height, "frame {} (the reference renders 4x as many pixels a side)", 640, 360));
+    });
     append(flags, bindTo<O>(&O::common, deviceFlags(true)));
     append(flags, bindTo<O>(&O::common, std::vector{verboseFlag(false), quietFlag()}));
     return flags;

@@ -13,6 +13,9 @@ std::vector<FlagSpec<ScaleReportOptions>> scaleReportFlags() {
         {"--out", "DIR", "where report.csv, report.md and frame_vs_triangles.png go (created)", "scale-report",
          parsed(&O::out, parsePath)},
         {"--frames", "N", "frames measured per setting", "5", parsed(&O::frames, parseCount)},
+    };
+    append(flags, frameSizeFlags(&O::width, &O::height));
+    append(flags, {
         {"--lod-error", "PIXELS", "the level-of-detail error of the \"on\" runs", valueText(options::DrawSelection{}.lodErrorPixels),
          [](O& o, Str flag, Str v) { o.lodErrorPixels = parsePixels(flag, v, false); }},
         {"--sizes", "N,N,...", "grid sides", "1,2,5,10,20,50,100",
@@ -24,8 +27,7 @@ std::vector<FlagSpec<ScaleReportOptions>> scaleReportFlags() {
                  o.sizes.push_back(side);
              }
          }},
-    };
-    append(flags, frameSizeFlags(&O::width, &O::height));
+    });
     append(flags, bindTo<O>(&O::common, deviceFlags(true)));
     append(flags, bindTo<O>(&O::common, std::vector{quietFlag()}));
     return flags;

@@ -22,9 +22,37 @@ namespace {
 const std::map<std::string, std::vector<std::string>> kCompanions = {{"--screenshot", {"--frames", "2"}},
                                                                       {"--scene-index", {"--scene", "model.glb"}}};
 
+// A value for each flag that takes one: it parses for every command taking the flag and differs
+// from its default.
+const std::map<std::string, std::string> kExamples = {
+    {"--out", "out"}, {"--width", "64"}, {"--height", "48"}, {"--frames", "3"}, {"--fps", "24"},
+    {"--turntable", "90"}, {"--report", "report.json"}, {"--html", "index.html"}, {"--shard", "2/4"},
+    {"--graph-dot", "graph.dot"}, {"--graph-json", "graph.json"}, {"--screenshot", "shot.png"},
+    {"--panels", "camera,debug"}, {"--shaders", "shaders"}, {"--ibl-report", "report.csv"},
+    {"--scene", "model.glb"}, {"--scene-index", "1"}, {"--grid", "3"}, {"--variant", "red"},
+    {"--animation", "Walk,2"}, {"--time", "1.5"}, {"--camera", "0"}, {"--camera-orbit", "30,70,5"},
+    {"--target", "0,1,0"}, {"--fov", "60"}, {"--shading", "blinn-phong"}, {"--debug-view", "roughness"},
+    {"--tonemap", "agx"}, {"--exposure", "1"}, {"--background", "#102030"}, {"--msaa", "2"},
+    {"--precompile", "off"}, {"--shading-path", "visibility"}, {"--specular-aa", "on"}, {"--lod-error", "2"},
+    {"--lod", "off"}, {"--cull", "off"}, {"--disable-pass", "skybox"}, {"--scene-lights", "off"},
+    {"--env", "studio.hdr"}, {"--env-rotation", "90"}, {"--env-intensity", "2"}, {"--skybox-blur", "0.3"},
+    {"--ibl-cache", "cache"}, {"--irradiance", "sh9"}, {"--ibl-cube-size", "128"}, {"--ibl-levels", "5"},
+    {"--ibl-prefilter-samples", "32"}, {"--ibl-lod-bias", "1"}, {"--ibl-bright-texels", "0"},
+    {"--ibl-sh-size", "16"}, {"--ibl-irradiance-size", "16"}, {"--ibl-irradiance-samples", "128"},
+    {"--ibl-lut-size", "64"}, {"--ibl-lut-samples", "128"}, {"--repeats", "1"}, {"--reference-samples", "64"},
+    {"--sizes", "1,3"}, {"--scenes", "default,model.glb"}, {"--lod-errors", "0,1"}, {"--orbit-frames", "2"},
+    {"--switch-every", "10"}, {"--sample-every", "10"}, {"--ppd", "40"}, {"--monitor-distance", "1"},
+    {"--monitor-width", "0.5"}, {"--monitor-resolution", "1920"}, {"--threshold", "2"}, {"--max-flip", "0.05"},
+    {"--max-fraction", "0.001"}, {"--error-maps", "maps"}, {"--device", "0"}, {"--device-profile", "minimum"},
+    {"--memory-budget", "64"}, {"--pipeline-cache", "cache"},
+};
+
+// The example of `flag` ("" for a switch).
+std::string exampleOf(const Flag& flag) { return flag.isSwitch() ? "" : kExamples.at(flag.name); }
+
 std::vector<std::string> argsWith(const CommandInfo& command, const Flag& flag) {
     std::vector<std::string> args = {command.name, flag.name};
-    if (!flag.isSwitch()) args.push_back(flag.example);
+    if (!flag.isSwitch()) args.push_back(exampleOf(flag));
     if (auto it = kCompanions.find(flag.name); it != kCompanions.end()) args.insert(args.end(), it->second.begin(), it->second.end());
     return args;
 }
@@ -107,11 +135,23 @@ TEST(CliFlags, TableIsWellFormed) {
                     << "help does not list the names accepted";
             }
         }
-        EXPECT_EQ(flag.example.empty(), flag.isSwitch()) << "a value flag needs an example (a switch none)";
+        EXPECT_EQ(kExamples.count(flag.name), flag.isSwitch() ? 0u : 1u)
+            << "a value flag needs an example in kExamples (a switch none)";
         for (const CommandInfo& command : commandTable()) seen &= ~CommandSet{command.kind}.bits;
         EXPECT_EQ(seen, 0u) << "a use for no command";
     }
     for (const char* reserved : {"--help", "-h", "--version"}) EXPECT_EQ(findFlag(reserved), nullptr) << reserved;
+}
+
+TEST(CliFlags, EachCommandsFlagsComeInTheOrderItDeclaresThem) {
+    for (const CommandInfo& command : commandTable()) {
+        std::vector<std::string> declared, listed;
+        for (const FlagSpec<Command>& spec : command.flags()) declared.push_back(spec.name);
+        for (const Flag& flag : flagTable())
+            if (flag.use(command.kind)) listed.push_back(flag.name);
+        EXPECT_EQ(listed, declared) << command.name;
+    }
+    for (const auto& [name, example] : kExamples) EXPECT_NE(findFlag(name), nullptr) << name << ": no such flag";
 }
 
 TEST(CliFlags, EachCommandParsesWithItsDefaults) {
@@ -125,7 +165,7 @@ TEST(CliFlags, EachCommandTakesItsFlagsAndEachChangesTheResult) {
     for (const Flag& flag : flagTable())
         for (const CommandInfo& command : commandTable()) {
             if (!flag.use(command.kind)) continue;
-            SCOPED_TRACE(command.name + " " + flag.name + " " + flag.example);
+            SCOPED_TRACE(command.name + " " + flag.name + " " + exampleOf(flag));
             Command with, without;
             ASSERT_NO_THROW(with = parseCommandLine(argsWith(command, flag)));
             ASSERT_NO_THROW(without = parseCommandLine(argsWithout(command, flag)));
