@@ -39,9 +39,9 @@ std::unique_ptr<scene::Environment> Session::takeEnvironment() {
     return out;
 }
 
-int Session::exitCode(int code) const {
-    if (context_->validationMessageCount() == 0) return code;
-    log::error(std::to_string(context_->validationMessageCount()) + " validation messages");
+int exitCodeAfter(const vk::Context& context, int code) {
+    if (context.validationMessageCount() == 0) return code;
+    log::error(std::to_string(context.validationMessageCount()) + " validation messages");
     return 3;
 }
 

@@ -20,6 +20,10 @@ namespace candela::app {
 // --pipeline-cache, else the user's cache folder). Sets the log's verbosity (--verbose).
 vk::ContextDesc contextDesc(const CommonOptions& common);
 
+// `code`, or 3 when `context` reported validation messages (their number logged as an error): the
+// exit code of a command that drew on it.
+int exitCodeAfter(const vk::Context& context, int code);
+
 class Session {
 public:
     // Loads the environment `env` asks for: a file, the procedural sky, or none; its warnings are
@@ -40,9 +44,8 @@ public:
     std::unique_ptr<scene::Environment> takeEnvironment();
     const vk::ContextDesc& contextDesc() const { return desc_; }
 
-    // `code`, or 3 when the device reported validation messages (their number logged as an error).
-    // Precondition: started.
-    int exitCode(int code) const;
+    // exitCodeAfter(context(), code). Precondition: started.
+    int exitCode(int code) const { return exitCodeAfter(*context_, code); }
 
 private:
     vk::ContextDesc desc_;

@@ -76,8 +76,7 @@ int runSoak(const SoakOptions& options) {
                     static_cast<long long>(last.liveVulkanObjects - first->liveVulkanObjects),
                     mib(last.deviceMemoryBytes) - mib(first->deviceMemoryBytes));
     }
-    if (context.validationMessageCount() > 0) return 3;
-    return 0;
+    return session.exitCode(0);
 }
 
 }  // namespace candela::app

@@ -5,7 +5,6 @@
 #include "session.h"
 #include "assets/image_file.h"
 #include "core/errors.h"
-#include "core/log.h"
 #include "scene/material_variants.h"
 #include "statistics.h"
 #include "ui/viewer.h"
@@ -113,11 +112,7 @@ int runView(const ViewOptions& options) {
         std::printf("wrote %s after %llu frames\n", options.screenshot.c_str(),
                     static_cast<unsigned long long>(viewer.framesRendered()));
     }
-    if (viewer.context().validationMessageCount() > 0) {
-        log::error(std::to_string(viewer.context().validationMessageCount()) + " validation messages");
-        return 3;
-    }
-    return 0;
+    return exitCodeAfter(viewer.context(), 0);
 }
 
 }  // namespace candela::app
