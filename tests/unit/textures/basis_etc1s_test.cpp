@@ -4,7 +4,7 @@
 // corrupted or truncated global data and slices throw candela::UserError with one line, never crash.
 
 #include "textures/basis_etc1s.h"
-#include "test_paths.h"
+#include "ktx2_fixtures.h"
 
 #include "core/errors.h"
 #include "textures/basis_etc1s_huffman.h"
@@ -15,9 +15,7 @@
 #include <cstring>
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <functional>
-#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,24 +23,10 @@
 namespace candela::textures {
 namespace {
 
-const std::filesystem::path kDataDir = ::candela::test::testData() / "ktx2";
-
-std::vector<uint8_t> readFile(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw std::runtime_error("cannot open " + path.string());
-    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
-
-uint32_t u32(const std::vector<uint8_t>& bytes, size_t at) {
-    uint32_t value = 0;
-    std::memcpy(&value, bytes.data() + at, 4);  // the KTX2 fields are little-endian, as is every test host
-    return value;
-}
-uint64_t u64(const std::vector<uint8_t>& bytes, size_t at) {
-    uint64_t value = 0;
-    std::memcpy(&value, bytes.data() + at, 8);
-    return value;
-}
+using test::levelSize;
+using test::readKtx2Fixture;
+using test::u32;
+using test::u64;
 
 // The parts of a 2D BasisLZ KTX2 file the decoder reads: the supercompression global data and each
 // level's bytes (KTX 2.0: the 80-byte header, then the level index). Just enough for the fixtures,
@@ -55,7 +39,7 @@ struct Ktx2Parts {
 };
 
 Ktx2Parts readKtx2(const std::string& name) {
-    const std::vector<uint8_t> bytes = readFile(kDataDir / (name + ".ktx2"));
+    const std::vector<uint8_t> bytes = readKtx2Fixture(name + ".ktx2");
     if (bytes.size() < 80 || bytes[1] != 'K' || bytes[5] != '2') throw std::runtime_error(name + ": not a KTX2 file");
     if (u32(bytes, 44) != 1) throw std::runtime_error(name + ": not BasisLZ");
     if (u32(bytes, 28) > 1 || u32(bytes, 32) > 0 || u32(bytes, 36) != 1) throw std::runtime_error(name + ": not 2D");
@@ -73,8 +57,6 @@ Ktx2Parts readKtx2(const std::string& name) {
     }
     return parts;
 }
-
-uint32_t levelSize(uint32_t size, uint32_t level) { return std::max(1u, size >> level); }
 
 std::vector<uint8_t> decodeLevel(const BasisLzGlobal& global, const Ktx2Parts& parts, uint32_t level) {
     const uint32_t w = levelSize(parts.width, level), h = levelSize(parts.height, level);
@@ -235,7 +217,7 @@ TEST_P(Etc1sReference, EveryLevelMatchesTheReferenceTranscoderBitForBit) {
         const std::vector<uint8_t> decoded = decodeLevel(global, parts, level);
 
         const std::string refPath =
-            (kDataDir / (std::string(fixture.name) + "_level" + std::to_string(level) + "_ref.png")).string();
+            (test::ktx2FixtureDir() / (std::string(fixture.name) + "_level" + std::to_string(level) + "_ref.png")).string();
         int w = 0, h = 0, channels = 0;
         const std::unique_ptr<stbi_uc, void (*)(void*)> ref(stbi_load(refPath.c_str(), &w, &h, &channels, 4),
                                                              stbi_image_free);

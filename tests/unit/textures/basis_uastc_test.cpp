@@ -7,7 +7,7 @@
 // indices, and trit/quint packs past their range; random and bit-flipped blocks never crash.
 
 #include "textures/basis_uastc.h"
-#include "test_paths.h"
+#include "ktx2_fixtures.h"
 
 #include "core/errors.h"
 
@@ -18,9 +18,7 @@
 #include <array>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <iterator>
 #include <memory>
 #include <random>
 #include <string>
@@ -29,24 +27,10 @@
 namespace candela::textures::basis_uastc_test {
 namespace {
 
-const std::filesystem::path kDataDir = ::candela::test::testData() / "ktx2";
-
-std::vector<uint8_t> readFile(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw std::runtime_error("cannot open " + path.string());
-    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
-
-uint32_t u32(const std::vector<uint8_t>& bytes, size_t at) {
-    uint32_t value = 0;
-    std::memcpy(&value, bytes.data() + at, 4);  // the KTX2 fields are little-endian, as is every test host
-    return value;
-}
-uint64_t u64(const std::vector<uint8_t>& bytes, size_t at) {
-    uint64_t value = 0;
-    std::memcpy(&value, bytes.data() + at, 8);
-    return value;
-}
+using test::levelSize;
+using test::readKtx2Fixture;
+using test::u32;
+using test::u64;
 
 // The parts of a 2D UASTC KTX2 file without supercompression that the decoder needs (KTX 2.0: the
 // 80-byte header, the level index after it, the data format descriptor's transfer function).
@@ -58,7 +42,7 @@ struct UastcKtx2 {
 };
 
 UastcKtx2 readUastcKtx2(const std::string& name) {
-    const std::vector<uint8_t> bytes = readFile(kDataDir / (name + ".ktx2"));
+    const std::vector<uint8_t> bytes = readKtx2Fixture(name + ".ktx2");
     if (bytes.size() < 80 || bytes[1] != 'K' || bytes[5] != '2') throw std::runtime_error(name + ": not a KTX2 file");
     if (u32(bytes, 44) != 0) throw std::runtime_error(name + ": supercompressed");
     if (u32(bytes, 28) > 1 || u32(bytes, 32) > 0 || u32(bytes, 36) != 1) throw std::runtime_error(name + ": not 2D");
@@ -83,7 +67,7 @@ struct Png {
 };
 
 Png readPng(const std::string& name) {
-    const std::vector<uint8_t> bytes = readFile(kDataDir / name);
+    const std::vector<uint8_t> bytes = readKtx2Fixture(name);
     Png png;
     int channels = 0;
     std::unique_ptr<uint8_t, void (*)(void*)> pixels(
@@ -92,8 +76,6 @@ Png readPng(const std::string& name) {
     png.rgba.assign(pixels.get(), pixels.get() + size_t(png.width) * size_t(png.height) * 4);
     return png;
 }
-
-uint32_t levelSize(uint32_t size, uint32_t level) { return std::max(1u, size >> level); }
 
 // The mode of a block, from the UASTC spec's "Mode Index" table (its prefix codes), independently
 // of the decoder's own table.
