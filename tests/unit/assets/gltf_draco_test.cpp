@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-namespace candela::scene::test::gltf_draco_test::gltf_draco_test {
+namespace candela::scene::test::gltf_draco_test {
 namespace {
 
 TEST(GltfDraco, QuadLoadsExactlyLikeItsPlainTwin) {
@@ -167,4 +167,4 @@ INSTANTIATE_TEST_SUITE_P(Rows, DracoBadInput, testing::ValuesIn(dracoCases()),
                          [](const testing::TestParamInfo<DracoCase>& row) { return row.param.name; });
 
 }  // namespace
-}  // namespace candela::scene::test::gltf_draco_test::gltf_draco_test
+}  // namespace candela::scene::test::gltf_draco_test
