@@ -137,7 +137,7 @@ nlohmann::ordered_json inFlightJson(const InFlightMeasurement& inFlight, double 
 }
 
 // The measurement as JSON (--json; the text reads some of its figures from it), but "inFlight".
-nlohmann::ordered_json benchJson(const BenchOptions& options, const scene::Scene& scene, const scene::ScenePose& pose,
+nlohmann::ordered_json benchJson(const BenchOptions& options, const scene::Scene& scene, const pose::ScenePose& pose,
                                  const RenderSettings& settings, Session& session, const BenchResult& b) {
     const FrameMeasurement& m = b.m;
     const vk::Context& context = session.context();
@@ -225,7 +225,7 @@ nlohmann::ordered_json benchJson(const BenchOptions& options, const scene::Scene
 }
 
 // The measurement as text.
-void printBench(const BenchOptions& options, const scene::Scene& scene, const scene::ScenePose& pose,
+void printBench(const BenchOptions& options, const scene::Scene& scene, const pose::ScenePose& pose,
                 const RenderSettings& settings, Session& session, const BenchResult& b, const nlohmann::ordered_json& out) {
     const FrameMeasurement& m = b.m;
     const vk::Context& context = session.context();
@@ -318,7 +318,7 @@ int runBench(const BenchOptions& options) {
     RenderSettings settings = renderSettings(options, scene, session.environment());
     settings.tonemap.dither = options.dither;
     // Frame i shows the animations at --time + i/60 s: each frame pays for evaluating its pose.
-    scene::ScenePose pose = loadPose(options, scene);
+    pose::ScenePose pose = loadPose(options, scene);
     warnAnimationConflicts(options, scene);
     settings.pose = &pose;
     log::info("camera: " + Renderer::cameraFlags(scene, settings.camera, float(settings.width) / float(settings.height), &pose));

@@ -27,11 +27,11 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::ordered_json;
 
-io::DiffSettings diffSettings(const DiffOptions& o) {
-    io::DiffSettings s;
+reports::DiffSettings diffSettings(const DiffOptions& o) {
+    reports::DiffSettings s;
     s.viewing = {o.monitorDistance, o.monitorWidth, o.monitorResolution};
     s.ppdGiven = o.ppd.has_value();
-    s.pixelsPerDegree = o.ppd ? *o.ppd : io::pixelsPerDegree(s.viewing);
+    s.pixelsPerDegree = o.ppd ? *o.ppd : reports::pixelsPerDegree(s.viewing);
     s.thresholdLevels = o.threshold;
     s.maxFlip = o.maxFlip;
     s.maxFraction = o.maxFraction;
@@ -39,7 +39,7 @@ io::DiffSettings diffSettings(const DiffOptions& o) {
 }
 
 // The pairs to compare: two files, or the images of two folders matched by relative path.
-std::vector<io::MatchedFile> pairsToCompare(const DiffOptions& o) {
+std::vector<reports::MatchedFile> pairsToCompare(const DiffOptions& o) {
     for (const std::string& path : {o.reference, o.test}) {
         std::error_code ec;
         if (!fs::exists(path, ec)) throw UserError(path + ": no such file or folder");
@@ -51,30 +51,30 @@ std::vector<io::MatchedFile> pairsToCompare(const DiffOptions& o) {
                         " is not: compare two images or two folders");
     if (!referenceFolder) {
         for (const std::string& path : {o.reference, o.test})
-            if (!io::comparedFormat(path)) throw UserError(path + ": not a .png or .exr file");
-        if (*io::comparedFormat(o.reference) != *io::comparedFormat(o.test))
+            if (!reports::comparedFormat(path)) throw UserError(path + ": not a .png or .exr file");
+        if (*reports::comparedFormat(o.reference) != *reports::comparedFormat(o.test))
             throw UserError(o.test + ": compare PNG with PNG and EXR with EXR (the other is " + o.reference + ")");
         return {{fs::path(o.test).filename().string(), fs::path(o.reference), fs::path(o.test)}};
     }
-    std::vector<io::MatchedFile> files = io::matchFolders(o.reference, o.test);
+    std::vector<reports::MatchedFile> files = reports::matchFolders(o.reference, o.test);
     if (files.empty()) throw UserError(o.reference + ", " + o.test + ": no .png or .exr images in either folder");
     return files;
 }
 
 // Where a pair's error map goes: its relative path under DIR, an EXR's with .png added.
-fs::path errorMapPath(const std::string& folder, const io::DiffPair& pair) {
+fs::path errorMapPath(const std::string& folder, const reports::DiffPair& pair) {
     return fs::path(folder) / (pair.hdr ? pair.name + ".png" : pair.name);
 }
 
-void writeErrorMap(const fs::path& path, const io::DiffPair& pair, const std::vector<float>& error) {
+void writeErrorMap(const fs::path& path, const reports::DiffPair& pair, const std::vector<float>& error) {
     std::error_code ec;
     fs::create_directories(path.parent_path(), ec);
     if (ec) throw UserError(path.parent_path().string() + ": cannot create the folder: " + ec.message());
-    io::writePng(path, pair.width, pair.height, io::magmaImage(error));
+    assets::writePng(path, pair.width, pair.height, reports::magmaImage(error));
 }
 
-std::string pairLine(const io::DiffPair& p, double thresholdLevels) {
-    std::string line = io::diffStatusName(p.status).text;
+std::string pairLine(const reports::DiffPair& p, double thresholdLevels) {
+    std::string line = reports::diffStatusName(p.status).text;
     line.resize(15, ' ');  // the statuses in a column
     line += p.name;
     if (!p.compared()) return line + ": " + p.message;
@@ -94,13 +94,13 @@ double shortest(float value) {
     return std::strtod(std::string(text, end).c_str(), nullptr);
 }
 
-ordered_json pairJson(const io::DiffPair& p) {
+ordered_json pairJson(const reports::DiffPair& p) {
     ordered_json j;
     j["name"] = p.name;
     j["reference"] = p.referencePath;
     j["test"] = p.testPath;
-    j["status"] = io::diffStatusName(p.status).key;
-    j["passed"] = p.status == io::DiffStatus::Ok;
+    j["status"] = reports::diffStatusName(p.status).key;
+    j["passed"] = p.status == reports::DiffStatus::Ok;
     j["message"] = p.message;
     j["format"] = p.hdr ? "exr" : "png";
     j["width"] = p.width;
@@ -124,8 +124,8 @@ ordered_json pairJson(const io::DiffPair& p) {
     return j;
 }
 
-ordered_json reportJson(const io::DiffReport& report) {
-    const io::DiffSettings& s = report.settings;
+ordered_json reportJson(const reports::DiffReport& report) {
+    const reports::DiffSettings& s = report.settings;
     ordered_json j;
     j["viewing"] = {{"pixelsPerDegree", shortest(s.pixelsPerDegree)},
                     {"from", s.ppdGiven ? "--ppd" : "monitor"},
@@ -136,10 +136,10 @@ ordered_json reportJson(const io::DiffReport& report) {
                        {"maxFlip", s.maxFlip ? ordered_json(*s.maxFlip) : ordered_json()},
                        {"maxFraction", s.maxFraction ? ordered_json(*s.maxFraction) : ordered_json()}};
     ordered_json pairs = ordered_json::array();
-    for (const io::DiffPair& p : report.pairs) pairs.push_back(pairJson(p));
+    for (const reports::DiffPair& p : report.pairs) pairs.push_back(pairJson(p));
     j["pairs"] = std::move(pairs);
     ordered_json totals = {{"pairs", report.pairs.size()}};
-    for (const io::DiffStatusName& status : io::kDiffStatusNames) totals[status.key] = report.count(status.status);
+    for (const reports::DiffStatusName& status : reports::kDiffStatusNames) totals[status.key] = report.count(status.status);
     totals["passed"] = report.passed();
     j["totals"] = std::move(totals);
     return j;
@@ -150,13 +150,13 @@ ordered_json reportJson(const io::DiffReport& report) {
 int runDiff(const DiffOptions& options) {
     if (options.reference.empty() || options.test.empty())
         throw UserError("diff: expected two images or two folders (candela diff A B)");
-    io::DiffReport report{diffSettings(options), {}};
+    reports::DiffReport report{diffSettings(options), {}};
     // The filters grow with the pixels per degree: 273 taps at 1000 against 21 at 67. More than
     // that (a 3840-pixel monitor 0.7 m wide seen from 10 m is 957) is refused.
     if (!(report.settings.pixelsPerDegree <= 1000.0f))
         throw UserError(formatNumber("diff: %g pixels per degree is more than 1000 (", report.settings.pixelsPerDegree) +
                         (options.ppd ? "--ppd)" : "from the --monitor flags)"));
-    const std::vector<io::MatchedFile> files = pairsToCompare(options);
+    const std::vector<reports::MatchedFile> files = pairsToCompare(options);
     // A page shows the error maps: without --error-maps they go into a folder beside it.
     const std::string errorMaps = !options.errorMaps.empty() || options.html.empty()
                                       ? options.errorMaps
@@ -168,19 +168,19 @@ int runDiff(const DiffOptions& options) {
             throw UserError(errorMaps + ": cannot create the error-map folder" + (ec ? ": " + ec.message() : ""));
     }
     for (const std::string& file : {options.report, options.html})
-        if (!file.empty()) io::checkWritable(file);
+        if (!file.empty()) assets::checkWritable(file);
 
     std::vector<float> error;
-    for (const io::MatchedFile& file : files) {
-        io::DiffPair pair;
+    for (const reports::MatchedFile& file : files) {
+        reports::DiffPair pair;
         if (!file.reference || !file.test) {
             pair = {.name = file.name,
                     .referencePath = file.reference ? file.reference->string() : "",
                     .testPath = file.test ? file.test->string() : "",
-                    .status = io::DiffStatus::Missing,
+                    .status = reports::DiffStatus::Missing,
                     .message = file.reference ? "no test image in " + options.test : "no reference image in " + options.reference};
         } else {
-            pair = io::diffImages(*file.reference, *file.test, file.name, report.settings, &error);
+            pair = reports::diffImages(*file.reference, *file.test, file.name, report.settings, &error);
             if (pair.compared() && !errorMaps.empty()) {
                 const fs::path path = errorMapPath(errorMaps, pair);
                 writeErrorMap(path, pair, error);
@@ -188,25 +188,25 @@ int runDiff(const DiffOptions& options) {
             }
         }
         for (const std::string& warning : pair.warnings) log::warn(warning);
-        if (pair.status == io::DiffStatus::Unreadable) log::error(pair.message);
+        if (pair.status == reports::DiffStatus::Unreadable) log::error(pair.message);
         std::printf("%s\n", pairLine(pair, report.settings.thresholdLevels).c_str());
         std::fflush(stdout);
         report.pairs.push_back(std::move(pair));
     }
 
-    const io::DiffSettings& s = report.settings;
+    const reports::DiffSettings& s = report.settings;
     std::printf("%zu pair%s: %zu ok, %zu over threshold, %zu missing, %zu size mismatch, %zu unreadable; FLIP at %.2f "
                 "pixels per degree",
-                report.pairs.size(), report.pairs.size() == 1 ? "" : "s", report.count(io::DiffStatus::Ok),
-                report.count(io::DiffStatus::OverThreshold), report.count(io::DiffStatus::Missing),
-                report.count(io::DiffStatus::SizeMismatch), report.count(io::DiffStatus::Unreadable), s.pixelsPerDegree);
+                report.pairs.size(), report.pairs.size() == 1 ? "" : "s", report.count(reports::DiffStatus::Ok),
+                report.count(reports::DiffStatus::OverThreshold), report.count(reports::DiffStatus::Missing),
+                report.count(reports::DiffStatus::SizeMismatch), report.count(reports::DiffStatus::Unreadable), s.pixelsPerDegree);
     if (!s.ppdGiven)
         std::printf(" (%g m from a %g m wide, %g-pixel monitor)", s.viewing.monitorDistance, s.viewing.monitorWidth,
                     s.viewing.monitorResolution);
     std::printf("\n");
     if (!options.report.empty()) writeText(options.report, reportJson(report).dump(2) + "\n");
-    if (!options.html.empty()) io::writeHtmlPage(options.html, diffPage(report, options.html), options.inlineImages);
-    if (report.count(io::DiffStatus::Unreadable)) return 2;
+    if (!options.html.empty()) reports::writeHtmlPage(options.html, diffPage(report, options.html), options.inlineImages);
+    if (report.count(reports::DiffStatus::Unreadable)) return 2;
     return report.passed() ? 0 : 1;
 }
 

@@ -8,34 +8,34 @@ namespace {
 
 namespace fs = std::filesystem;
 
-io::RowStatus rowStatus(const io::DiffPair& pair) {
+reports::RowStatus rowStatus(const reports::DiffPair& pair) {
     switch (pair.status) {
-        case io::DiffStatus::Ok: return pair.warnings.empty() ? io::RowStatus::Ok : io::RowStatus::Warning;
-        case io::DiffStatus::OverThreshold: return io::RowStatus::OverThreshold;
-        case io::DiffStatus::Missing:
-        case io::DiffStatus::SizeMismatch:
-        case io::DiffStatus::Unreadable: break;
+        case reports::DiffStatus::Ok: return pair.warnings.empty() ? reports::RowStatus::Ok : reports::RowStatus::Warning;
+        case reports::DiffStatus::OverThreshold: return reports::RowStatus::OverThreshold;
+        case reports::DiffStatus::Missing:
+        case reports::DiffStatus::SizeMismatch:
+        case reports::DiffStatus::Unreadable: break;
     }
-    return io::RowStatus::Failed;
+    return reports::RowStatus::Failed;
 }
 
 // A thumbnail of `file` ("" when there is none); browsers show PNG, not EXR.
-io::PageImage thumbnail(const std::string& label, const std::string& file, const fs::path& page, const char* none) {
+reports::PageImage thumbnail(const std::string& label, const std::string& file, const fs::path& page, const char* none) {
     if (file.empty()) return {label, {}, none};
     if (fs::path(file).extension() != ".png") return {label, {}, fs::path(file).extension().string() + ": no preview"};
-    return {label, io::pathFromPage(file, page), ""};
+    return {label, reports::pathFromPage(file, page), ""};
 }
 
 }  // namespace
 
-io::HtmlPage diffPage(const io::DiffReport& report, const fs::path& page) {
-    io::HtmlPage out;
+reports::HtmlPage diffPage(const reports::DiffReport& report, const fs::path& page) {
+    reports::HtmlPage out;
     out.title = "candela diff: " + std::to_string(report.pairs.size()) + " pair" + (report.pairs.size() == 1 ? "" : "s");
-    const auto count = [&](io::DiffStatus status) { return std::to_string(report.count(status)); };
-    out.summary.push_back(count(io::DiffStatus::Ok) + " ok, " + count(io::DiffStatus::OverThreshold) + " over threshold, " +
-                          count(io::DiffStatus::Missing) + " missing, " + count(io::DiffStatus::SizeMismatch) +
-                          " size mismatch, " + count(io::DiffStatus::Unreadable) + " unreadable");
-    const io::DiffSettings& s = report.settings;
+    const auto count = [&](reports::DiffStatus status) { return std::to_string(report.count(status)); };
+    out.summary.push_back(count(reports::DiffStatus::Ok) + " ok, " + count(reports::DiffStatus::OverThreshold) + " over threshold, " +
+                          count(reports::DiffStatus::Missing) + " missing, " + count(reports::DiffStatus::SizeMismatch) +
+                          " size mismatch, " + count(reports::DiffStatus::Unreadable) + " unreadable");
+    const reports::DiffSettings& s = report.settings;
     char line[256];
     std::snprintf(line, sizeof line, "FLIP at %.2f pixels per degree; a pixel is over the threshold above %g levels", s.pixelsPerDegree,
                   s.thresholdLevels);
@@ -45,8 +45,8 @@ io::HtmlPage diffPage(const io::DiffReport& report, const fs::path& page) {
     out.summary.push_back(gate);
     out.columns = {{"FLIP mean", 4}, {"FLIP max", 4}, {"PSNR dB", 2}, {"max diff", 1}, {"% over", 3}};
     out.errorColumn = "FLIP mean";
-    for (const io::DiffPair& pair : report.pairs) {
-        io::PageRow row;
+    for (const reports::DiffPair& pair : report.pairs) {
+        reports::PageRow row;
         row.name = pair.name;
         row.status = rowStatus(pair);
         row.error = pair.message;
@@ -56,7 +56,7 @@ io::HtmlPage diffPage(const io::DiffReport& report, const fs::path& page) {
                       thumbnail("FLIP", pair.errorMapPath, page, pair.compared() ? "no error map" : "not compared")};
         for (const auto& [label, file] : {std::pair("reference", pair.referencePath), std::pair("test", pair.testPath),
                                           std::pair("FLIP map", pair.errorMapPath)})
-            if (!file.empty()) row.links.push_back({label, io::pathFromPage(file, page)});
+            if (!file.empty()) row.links.push_back({label, reports::pathFromPage(file, page)});
         if (pair.compared()) {
             row.numbers["FLIP mean"] = pair.flip.mean;
             row.numbers["FLIP max"] = pair.flip.max;

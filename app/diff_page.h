@@ -10,6 +10,6 @@
 namespace candela::app {
 
 // The page of `report`, to be written at `page` (image paths are made relative to its folder).
-io::HtmlPage diffPage(const io::DiffReport& report, const std::filesystem::path& page);
+reports::HtmlPage diffPage(const reports::DiffReport& report, const std::filesystem::path& page);
 
 }  // namespace candela::app

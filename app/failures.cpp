@@ -11,7 +11,7 @@ Failure describeFailure(const std::exception_ptr& error) {
         std::rethrow_exception(error);
     } catch (const UserError& e) {
         return {e.what(), 2};
-    } catch (const OutOfDeviceMemory& e) {
+    } catch (const vk::OutOfDeviceMemory& e) {
         return {std::string("out of device memory: ") + e.what(), 4};
     } catch (const InternalError& e) {
         return {std::string("internal error (a bug in Candela, please report it): ") + e.what(), 1};

@@ -36,10 +36,10 @@ struct Result {
     double setupMs = 0;       // median CPU time before submit (upload, hashing, sample tables)
     double ratio = 0;         // wallMs / Context::calibrationMs
     double ratioLow = 0, ratioHigh = 0;    // wallLowMs and wallHighMs over it (the spread)
-    std::vector<ibl::LevelErrors> specular;
-    ibl::ErrorStats irradiance;
-    ibl::LutErrors lut;
-    ibl::ErrorStats image;  // relative luminance errors of the default scene against the ground truth
+    std::vector<reports::LevelErrors> specular;
+    reports::ErrorStats irradiance;
+    reports::LutErrors lut;
+    reports::ErrorStats image;  // relative luminance errors of the default scene against the ground truth
     VisibleError visible;   // the same image's visible error against the ground truth
     // ... and against the same scene through the split sum with converged maps (Context::converged):
     // what the maps alone leave visible (a blocky, speckled sun), without the split sum's own error.
@@ -47,20 +47,20 @@ struct Result {
     double specularRmse() const {  // mean relative RMSE over the roughness > 0 levels
         double sum = 0;
         int n = 0;
-        for (const ibl::LevelErrors& level : specular)
+        for (const reports::LevelErrors& level : specular)
             if (level.roughness > 0) sum += level.stats.rmse, ++n;
         return n ? sum / n : -1;
     }
     double specularMeanRelative() const {  // mean over the roughness > 0 levels
         double sum = 0;
         int n = 0;
-        for (const ibl::LevelErrors& level : specular)
+        for (const reports::LevelErrors& level : specular)
             if (level.roughness > 0) sum += level.stats.meanRelative, ++n;
         return n ? sum / n : -1;
     }
     double specularMax() const {
         double m = 0;
-        for (const ibl::LevelErrors& level : specular)
+        for (const reports::LevelErrors& level : specular)
             if (level.roughness > 0) m = std::max(m, level.stats.maxRelative);
         return m;
     }
@@ -75,15 +75,15 @@ struct Context {
     uint32_t repeats = 0;
     uint32_t width = 0, height = 0;  // end-to-end images
     uint32_t referenceSamples = 0;
-    ibl::ErrorStats convergence;  // the ground truth against itself at a quarter of the samples
+    reports::ErrorStats convergence;  // the ground truth against itself at a quarter of the samples
     VisibleError visibleConvergence;
     std::string converged;  // the settings of the converged-maps render (IblQuality::canonical)
     double convergedSpecularMax = 0;  // its maps' worst relative error (Result::specularMax)
 };
 
-// Relative luminance errors (ibl::errorStats) of `image` against `reference` (RGBA floats) over the
+// Relative luminance errors (reports::errorStats) of `image` against `reference` (RGBA floats) over the
 // pixels both cover fully.
-ibl::ErrorStats imageError(const std::vector<float>& image, const std::vector<float>& reference);
+reports::ErrorStats imageError(const std::vector<float>& image, const std::vector<float>& reference);
 // VisibleError of `image` against `reference` (RGBA floats, premultiplied, width × height).
 VisibleError visibleError(const std::vector<float>& image, const std::vector<float>& reference, uint32_t width,
                           uint32_t height);

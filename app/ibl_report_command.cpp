@@ -109,14 +109,14 @@ const ibl::CachedImage* findImage(const std::vector<ibl::CachedImage>& images, c
 // The ground truth and how far it converged: the same render at a quarter of the samples.
 struct GroundTruth {
     CapturedFrame truth;
-    ibl::ErrorStats convergence;
+    reports::ErrorStats convergence;
     report::VisibleError visibleConvergence;
 };
 
 // Renders the ground truth of `frame` (written to the report folder as ground_truth.exr and .png)
 // and the convergence check, and prints the line about them; `frame` is left at the default
 // quality without reference samples.
-GroundTruth groundTruth(Renderer& renderer, RenderSettings& frame, const scene::Environment& environment,
+GroundTruth groundTruth(Renderer& renderer, RenderSettings& frame, const assets::Environment& environment,
                         const IblReportOptions& options, Progress& progress) {
     const std::filesystem::path folder = options.out;
     GroundTruth out;
@@ -135,7 +135,7 @@ GroundTruth groundTruth(Renderer& renderer, RenderSettings& frame, const scene::
     out.visibleConvergence =
         report::visibleError(quarter.rgba32f, truth.rgba32f, truth.width, truth.height);
     frame.ibl.referenceSamples = 0;
-    io::writeExr(folder / "ground_truth.exr", truth.width, truth.height, truth.rgba32f);
+    assets::writeExr(folder / "ground_truth.exr", truth.width, truth.height, truth.rgba32f);
     report::writePreview(folder / "ground_truth.png", truth);
     progress.clear();
     std::printf("ground truth: %u samples per lobe per pixel and %u texels summed, %.0f ms; a quarter of the samples "
@@ -149,9 +149,9 @@ GroundTruth groundTruth(Renderer& renderer, RenderSettings& frame, const scene::
 // What each setting's errors are measured against: the environment, its reference and the
 // reference integrals' cache.
 struct ErrorReference {
-    const scene::Environment& environment;
-    const scene::Environment& reference;
-    ibl::ReferenceCache& cache;
+    const assets::Environment& environment;
+    const assets::Environment& reference;
+    reports::ReferenceCache& cache;
 };
 
 // Each setting's errors, one precompute per setting: its maps against the reference integrals, its
@@ -160,23 +160,23 @@ struct ErrorReference {
 std::vector<Result> measureErrors(Renderer& renderer, RenderSettings frame, const std::vector<Setting>& settings,
                                   const ErrorReference& to, const CapturedFrame& truth, const CapturedFrame& converged,
                                   const std::filesystem::path& out, Progress& progress) {
-    const scene::Environment& environment = to.environment;
+    const assets::Environment& environment = to.environment;
     std::vector<Result> results;
     for (const Setting& setting : settings) {
         progress.step(results.size() + 1, setting.group + " " + setting.label + ": errors");
         Result r{.setting = setting};
         renderer.precomputeIbl(environment, setting.quality);
         const std::vector<ibl::CachedImage> maps = renderer.iblMaps().readBack();
-        r.specular = ibl::specularErrors(*findImage(maps, "specular"), environment, to.reference, 128, to.cache);
-        r.irradiance = ibl::irradianceErrors(*findImage(maps, "irradiance"), to.reference, 256, to.cache);
-        r.lut = ibl::lutErrors(*findImage(maps, "brdf_lut"), std::max(setting.quality.lutSize / 16, 1u));
+        r.specular = reports::specularErrors(*findImage(maps, "specular"), environment, to.reference, 128, to.cache);
+        r.irradiance = reports::irradianceErrors(*findImage(maps, "irradiance"), to.reference, 256, to.cache);
+        r.lut = reports::lutErrors(*findImage(maps, "brdf_lut"), std::max(setting.quality.lutSize / 16, 1u));
         frame.iblQuality = setting.quality;
         const CapturedFrame image = renderer.capture(frame);
         r.image = report::imageError(image.rgba32f, truth.rgba32f);
         r.visible = report::visibleError(image.rgba32f, truth.rgba32f, image.width, image.height);
         r.visibleMaps = report::visibleError(image.rgba32f, converged.rgba32f, image.width, image.height);
         if (setting.quality == ibl::IblQuality{}) {
-            io::writeExr(out / "default.exr", image.width, image.height, image.rgba32f);
+            assets::writeExr(out / "default.exr", image.width, image.height, image.rgba32f);
             report::writePreview(out / "default.png", image);
             report::writeErrorMap(out / "default_error.png", image, truth.rgba32f);
         }
@@ -193,14 +193,14 @@ int runIblReport(const IblReportOptions& options) {
                               "image_worst.png"});
 
     Session session(options.common, options.env);
-    const scene::Environment& environment = *session.environment();  // the parser refuses --env none
-    const scene::Environment reference = ibl::referenceEnvironment(environment);
-    ibl::ReferenceCache cache;
+    const assets::Environment& environment = *session.environment();  // the parser refuses --env none
+    const assets::Environment reference = reports::referenceEnvironment(environment);
+    reports::ReferenceCache cache;
 
     session.start();
     vk::Context& context = session.context();
     Renderer& renderer = session.renderer();
-    const scene::Scene scene = scene::makeSphereGrid();
+    const scene::Scene scene = assets::makeSphereGrid();
     RenderSettings frame{.width = options.width, .height = options.height, .floatOutput = true, .scene = &scene};
     frame.environment = &environment;
     frame.ibl.skybox = false;        // compare the lit scene only
@@ -224,7 +224,7 @@ int runIblReport(const IblReportOptions& options) {
     convergedQuality.irradianceSamples = 1024;
     renderer.precomputeIbl(environment, convergedQuality);
     const double convergedSpecularMax =
-        Result{.specular = ibl::specularErrors(*findImage(renderer.iblMaps().readBack(), "specular"), environment,
+        Result{.specular = reports::specularErrors(*findImage(renderer.iblMaps().readBack(), "specular"), environment,
                                                reference, 128, cache)}
             .specularMax();
     frame.iblQuality = convergedQuality;

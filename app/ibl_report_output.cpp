@@ -39,8 +39,8 @@ CoveredPixels coveredPixels(const std::vector<float>& image, const std::vector<f
     CoveredPixels out;
     for (size_t i = 0; i + 3 < reference.size() && i + 3 < image.size(); i += 4) {
         if (reference[i + 3] < 1.0f || image[i + 3] < 1.0f) continue;
-        out.image.push_back(ibl::luminance({image[i], image[i + 1], image[i + 2]}));
-        out.reference.push_back(ibl::luminance({reference[i], reference[i + 1], reference[i + 2]}));
+        out.image.push_back(reports::luminance({image[i], image[i + 1], image[i + 2]}));
+        out.reference.push_back(reports::luminance({reference[i], reference[i + 1], reference[i + 2]}));
         out.pixel.push_back(i / 4);
     }
     return out;
@@ -48,20 +48,20 @@ CoveredPixels coveredPixels(const std::vector<float>& image, const std::vector<f
 
 }  // namespace
 
-ibl::ErrorStats imageError(const std::vector<float>& image, const std::vector<float>& reference) {
+reports::ErrorStats imageError(const std::vector<float>& image, const std::vector<float>& reference) {
     const CoveredPixels pixels = coveredPixels(image, reference);
-    return ibl::errorStats(pixels.image, pixels.reference);
+    return reports::errorStats(pixels.image, pixels.reference);
 }
 
 VisibleError visibleError(const std::vector<float>& image, const std::vector<float>& reference, uint32_t width,
                           uint32_t height) {
     const auto display = [&](const std::vector<float>& rgba) {
-        const std::vector<uint8_t> encoded = io::displayEncode({.width = width, .height = height, .rgba = rgba});
-        io::RgbImage linear{.width = width, .height = height, .rgb = std::vector<float>(encoded.size())};
-        for (size_t i = 0; i < encoded.size(); ++i) linear.rgb[i] = io::srgbToLinear(encoded[i]);
+        const std::vector<uint8_t> encoded = reports::displayEncode({.width = width, .height = height, .rgba = rgba});
+        reports::RgbImage linear{.width = width, .height = height, .rgb = std::vector<float>(encoded.size())};
+        for (size_t i = 0; i < encoded.size(); ++i) linear.rgb[i] = reports::srgbToLinear(encoded[i]);
         return linear;
     };
-    const std::vector<float> flip = io::ldrFlip(display(reference), display(image), io::pixelsPerDegree({}));
+    const std::vector<float> flip = reports::ldrFlip(display(reference), display(image), reports::pixelsPerDegree({}));
     const CoveredPixels pixels = coveredPixels(image, reference);
     std::vector<double> covered, relative;
     double sum = 0.0;
@@ -88,7 +88,7 @@ void writePreview(const std::filesystem::path& path, const CapturedFrame& frame)
         const float encoded = i % 4 == 3 ? x : (x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f);
         rgba[i] = static_cast<uint8_t>(std::clamp(encoded, 0.0f, 1.0f) * 255.0f + 0.5f);
     }
-    io::writePng(path, frame.width, frame.height, rgba);
+    assets::writePng(path, frame.width, frame.height, rgba);
 }
 
 void writeErrorMap(const std::filesystem::path& path, const CapturedFrame& frame, const std::vector<float>& reference) {
@@ -105,7 +105,7 @@ void writeErrorMap(const std::filesystem::path& path, const CapturedFrame& frame
         rgba[i] = rgba[i + 1] = rgba[i + 2] = static_cast<uint8_t>(e * 255.0);
         if (e > 0.1) rgba[g > r ? i + 0 : i + 2] = 255;
     }
-    io::writePng(path, frame.width, frame.height, rgba);
+    assets::writePng(path, frame.width, frame.height, rgba);
 }
 
 void writeCsv(const std::filesystem::path& out, const std::vector<Result>& results) {
@@ -116,7 +116,7 @@ void writeCsv(const std::filesystem::path& out, const std::vector<Result>& resul
            "specular_max,irradiance_rmse,irradiance_mean_relative,irradiance_max,lut_max_a,lut_max_b,lut_rms_a,lut_rms_b,image_rmse,image_mean_relative,image_max,"
            "image_relative_p99,image_flip_mean,image_flip_p99,image_flip_p999,image_flip_max,maps_flip_mean,maps_flip_p99,"
            "maps_flip_p999,maps_flip_max,bright_texels";
-    for (const ibl::LevelErrors& level : results.front().specular)
+    for (const reports::LevelErrors& level : results.front().specular)
         csv << ",rmse_r" << fixed(level.roughness, 2) << ",mean_r" << fixed(level.roughness, 2) << ",max_r"
             << fixed(level.roughness, 2);
     csv << "\n";
@@ -134,7 +134,7 @@ void writeCsv(const std::filesystem::path& out, const std::vector<Result>& resul
             << sci(r.visible.flipMean) << ',' << sci(r.visible.flipP99) << ',' << sci(r.visible.flipP999) << ','
             << sci(r.visible.flipMax) << ',' << sci(r.visibleMaps.flipMean) << ',' << sci(r.visibleMaps.flipP99) << ','
             << sci(r.visibleMaps.flipP999) << ',' << sci(r.visibleMaps.flipMax) << ',' << q.brightTexels;
-        for (const ibl::LevelErrors& level : r.specular)
+        for (const reports::LevelErrors& level : r.specular)
             csv << ',' << sci(level.stats.rmse) << ',' << sci(level.stats.meanRelative) << ',' << sci(level.stats.maxRelative);
         csv << "\n";
     }
@@ -196,7 +196,7 @@ void writePlots(const std::filesystem::path& out, const std::vector<Result>& res
     // One plot per error measure, every setting, series by group.
     auto plot = [&](const char* file, const char* title, const char* yLabel, auto&& error,
                     const std::vector<std::string>& groups) {
-        io::PlotSpec spec{.title = title,
+        reports::PlotSpec spec{.title = title,
                           .xLabel = "precompute time / median calibration pass (median of the rounds, bars: quartiles)",
                           .yLabel = yLabel};
         spec.series = groups;
@@ -213,7 +213,7 @@ void writePlots(const std::filesystem::path& out, const std::vector<Result>& res
                                    .xLow = r.ratioLow,
                                    .xHigh = r.ratioHigh});
         }
-        io::writeLogLogPlot(out / file, spec);
+        reports::writeLogLogPlot(out / file, spec);
     };
     const std::vector<std::string> specularGroups{"prefilter, filtered IS", "prefilter, sun sampled", "previous default",
                                                   "bright texels", "prefilter, plain IS", "cube size"};

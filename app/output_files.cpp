@@ -19,7 +19,7 @@ void prepareReportFolder(const std::filesystem::path& out, std::initializer_list
     std::error_code ec;
     std::filesystem::create_directories(out, ec);
     if (ec) throw UserError(out.string() + ": cannot create the report folder: " + ec.message());
-    for (const char* file : files) io::checkWritable(out / file);
+    for (const char* file : files) assets::checkWritable(out / file);
 }
 
 }  // namespace candela::app

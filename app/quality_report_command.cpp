@@ -50,7 +50,7 @@ struct QualityRow {
     Spread frameRatio;             // over the rounds: median and quartiles
     double frameMs = 0.0;          // median over the rounds of each round's median frame
     std::vector<double> roundRatios, roundMs;
-    io::DisplayError error;
+    reports::DisplayError error;
     double temporal = 0.0;       // mean frame-to-frame difference over the orbit
     double temporalError = 0.0;  // its difference from the reference's frame-to-frame changes (flicker)
     uint64_t triangles = 0;
@@ -86,8 +86,8 @@ std::vector<std::vector<uint8_t>> orbitFrames(Renderer& renderer, RenderSettings
     for (uint32_t k = 0; k < frames; ++k) {
         settings.camera.orbit = glm::vec3(float(k), 90.0f, distance);
         const CapturedFrame frame = renderer.capture(settings);
-        io::FloatImage image{frame.width, frame.height, frame.rgba32f};
-        out.push_back(io::displayEncode(scale > 1 ? io::boxDownsample(image, scale) : image));
+        reports::FloatImage image{frame.width, frame.height, frame.rgba32f};
+        out.push_back(reports::displayEncode(scale > 1 ? reports::boxDownsample(image, scale) : image));
     }
     return out;
 }
@@ -95,7 +95,7 @@ std::vector<std::vector<uint8_t>> orbitFrames(Renderer& renderer, RenderSettings
 // A row as a point of error against frame time for the Pareto front and the plots: the frame
 // ratio's spread over the rounds, and the error compared at the table's precision (3 decimals:
 // values within half its last digit count as equal).
-io::PlotPoint paretoPoint(const QualityRow& r, double error) {
+reports::PlotPoint paretoPoint(const QualityRow& r, double error) {
     constexpr double kHalfDigit = 0.0005;
     return {.x = r.frameRatio.median, .y = error, .xLow = r.frameRatio.low, .xHigh = r.frameRatio.high,
             .yLow = std::max(error - kHalfDigit, 0.0), .yHigh = error + kHalfDigit};
@@ -180,7 +180,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
            << ": temporal error against frame time](" << s.name << "_temporal.png)\n\n";
 
         for (const bool temporal : {false, true}) {
-            io::PlotSpec plot{.title = s.name + (temporal ? ": temporal error against frame time"
+            reports::PlotSpec plot{.title = s.name + (temporal ? ": temporal error against frame time"
                                                            : ": image error against frame time"),
                               .xLabel = "frame time / calibration",
                               .yLabel = temporal ? "temporal error: flicker vs the reference (of 255)" : "mean error (of 255)"};
@@ -194,12 +194,12 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
             for (const QualityRow& r : s.rows) {
                 const auto it = std::find(series.begin(), series.end(), std::tuple{r.msaa, r.specularAa, r.path});
                 if (r.isDefault) plot.highlight = plot.points.size();
-                io::PlotPoint point = paretoPoint(r, temporal ? r.temporalError : r.error.mean);
+                reports::PlotPoint point = paretoPoint(r, temporal ? r.temporalError : r.error.mean);
                 point.label = lodList(r) + " px";
                 point.series = uint32_t(it - series.begin());
                 plot.points.push_back(point);
             }
-            io::writeLogLogPlot(out / (s.name + (temporal ? "_temporal.png" : "_error.png")), plot);
+            reports::writeLogLogPlot(out / (s.name + (temporal ? "_temporal.png" : "_error.png")), plot);
         }
     }
 }
@@ -253,9 +253,9 @@ void measureSeries(Sweep& sweep, const RenderSettings& base, const Series& serie
         } else {
             result.rows.push_back({.scene = result.name, .msaa = samples, .specularAa = specularAa,
                                    .lodErrors = {lodError}, .path = path,
-                                   .error = io::displayError(frames, reference),
-                                   .temporal = io::meanFrameToFrameDifference(frames),
-                                   .temporalError = io::meanTemporalError(frames, reference),
+                                   .error = reports::displayError(frames, reference),
+                                   .temporal = reports::meanFrameToFrameDifference(frames),
+                                   .temporalError = reports::meanTemporalError(frames, reference),
                                    .triangles = stats.submittedTriangles, .draws = stats.submittedDraws,
                                    .isDefault = isDefault, .settings = settings});
             seriesFrames.push_back(std::move(frames));
@@ -282,16 +282,16 @@ int runQualityReport(const QualityReportOptions& options) {
     std::vector<std::string> files = {"report.csv", "report.md"};
     for (const std::string& name : scenes) files.insert(files.end(), {name + "_error.png", name + "_temporal.png"});
     prepareReportFolder(options.out, {});
-    for (const std::string& file : files) io::checkWritable(std::filesystem::path(options.out) / file);
+    for (const std::string& file : files) assets::checkWritable(std::filesystem::path(options.out) / file);
 
     // Everything the sweep needs is loaded first, so that a bad file fails before minutes of work.
-    const scene::Environment sky = scene::makeProceduralSky();
+    const assets::Environment sky = assets::makeProceduralSky();
     // The session's environment: the --env file of the glTF scenes; none with --env sky.
     const bool fileEnvironment = options.env.kind == EnvironmentChoice::Kind::File;
     Session session(options.common, fileEnvironment ? options.env : EnvironmentChoice{EnvironmentChoice::Kind::None});
     std::list<scene::Scene> loaded;  // the renderer keeps pointing at the last scene it drew
     for (const std::string& entry : options.scenes) {
-        scene::Scene& scene = loaded.emplace_back(entry == "default" ? scene::makeSphereGrid() : scene::loadGltf(entry));
+        scene::Scene& scene = loaded.emplace_back(entry == "default" ? assets::makeSphereGrid() : assets::loadGltf(entry));
         for (const std::string& warning : scene.report.warnings) log::warn(entry + ": " + warning);
         for (const std::string& note : scene.report.notes) log::info(entry + ": " + note);
     }
@@ -323,7 +323,7 @@ int runQualityReport(const QualityReportOptions& options) {
     auto scene = loaded.begin();
     for (size_t s = 0; s < options.scenes.size(); ++s, ++scene) {
         const bool builtin = options.scenes[s] == "default";
-        const scene::Environment* environment = builtin || !fileEnvironment ? &sky : session.environment();
+        const assets::Environment* environment = builtin || !fileEnvironment ? &sky : session.environment();
         SceneResult result{.name = scenes[s]};
         RenderSettings base{.width = options.width, .height = options.height, .scene = &*scene, .environment = environment};
         base.ibl.skybox = true;
@@ -337,7 +337,7 @@ int runQualityReport(const QualityReportOptions& options) {
         const std::vector<std::vector<uint8_t>> reference = orbitFrames(renderer, base, options.orbitFrames, kReferenceScale);
         result.referenceSeconds = msSince(referenceStart) / 1000.0;
         ++done;
-        result.referenceTemporal = io::meanFrameToFrameDifference(reference);
+        result.referenceTemporal = reports::meanFrameToFrameDifference(reference);
         // Errors first, the LOD errors of one (MSAA, specular AA, path) in a row so that a setting
         // that repeats the previous ones' work joins their row (sameWork).
         for (uint32_t samples : sampleCounts)
@@ -358,13 +358,13 @@ int runQualityReport(const QualityReportOptions& options) {
                               settingName(row).c_str(), round + 1, options.repeats, row.roundRatios.back());
                 progress.step(done, detail);
             }
-        std::vector<io::PlotPoint> points;
+        std::vector<reports::PlotPoint> points;
         for (QualityRow& r : result.rows) {
             r.frameRatio = spreadOf(r.roundRatios);
             r.frameMs = median(r.roundMs);
             points.push_back(paretoPoint(r, r.error.mean));
         }
-        for (size_t i : io::paretoFront(points)) result.rows[i].pareto = true;
+        for (size_t i : reports::paretoFront(points)) result.rows[i].pareto = true;
         std::sort(result.rows.begin(), result.rows.end(),
                   [](const QualityRow& a, const QualityRow& b) { return a.frameRatio.median < b.frameRatio.median; });
         results.push_back(std::move(result));

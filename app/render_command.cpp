@@ -57,7 +57,7 @@ LoadedScene load(const SceneInput& input, const RenderOptions& options) {
 struct Run {
     const RenderOptions& options;
     Session& session;
-    io::ImageFileFormat format;
+    assets::ImageFileFormat format;
     bool batch;     // several scenes: shorter lines, one precompute for all (sheen included)
     bool sequence;  // --frames N > 1
     bool anyFrame = false;
@@ -68,14 +68,14 @@ struct Run {
 void writeImage(const Run& run, const std::string& out, const CapturedFrame& frame) {
     createFolderOf(out);
     switch (run.format) {
-        case io::ImageFileFormat::Png: io::writePng(out, frame.width, frame.height, frame.rgba8); break;
-        case io::ImageFileFormat::Exr: io::writeExr(out, frame.width, frame.height, frame.rgba32f); break;
-        case io::ImageFileFormat::Pfm: io::writePfm(out, frame.width, frame.height, frame.rgba32f); break;
+        case assets::ImageFileFormat::Png: assets::writePng(out, frame.width, frame.height, frame.rgba8); break;
+        case assets::ImageFileFormat::Exr: assets::writeExr(out, frame.width, frame.height, frame.rgba32f); break;
+        case assets::ImageFileFormat::Pfm: assets::writePfm(out, frame.width, frame.height, frame.rgba32f); break;
     }
 }
 
 // The line printed for each image written.
-void printWritten(Run& run, const std::string& out, const CapturedFrame& frame, const scene::ScenePose& pose,
+void printWritten(Run& run, const std::string& out, const CapturedFrame& frame, const pose::ScenePose& pose,
                   const SceneReport& r) {
     std::printf("wrote %s (%ux%u", out.c_str(), frame.width, frame.height);
     if (run.sequence) std::printf(", t = %.4f s", pose.time());
@@ -124,7 +124,7 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
     }
     RenderSettings settings = renderSettings(options, scene, run.session.environment());
     settings.tonemap.dither = options.dither;
-    settings.floatOutput = io::isFloatFormat(run.format);
+    settings.floatOutput = assets::isFloatFormat(run.format);
     // One precompute serves the whole run: with the sheen cube, for scenes with or without a sheen.
     if (run.batch) settings.iblQuality.sheen = true;
     glm::vec3 orbit = settings.camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f));
@@ -139,7 +139,7 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
         }
         const std::string variantName = variant ? scene.variants[*variant] : "default";
         r.variants.push_back(variant ? variantName : "");
-        scene::ScenePose pose = loadPose(options, scene);
+        pose::ScenePose pose = loadPose(options, scene);
         settings.pose = &pose;
         if (turntable && !settings.camera.gltfCamera && orbit.z <= 0.0f) {
             // One distance for the whole turn (framing from each azimuth would move the camera in
@@ -186,7 +186,7 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
     const passes::DrawStats& stats = run.session.renderer().drawStats();
     r.triangles = stats.sceneTriangles;
     r.draws = stats.sceneDraws;
-    if (const scene::GpuScene* uploaded = run.session.renderer().uploadedScene())
+    if (const gpu_scene::GpuScene* uploaded = run.session.renderer().uploadedScene())
         for (size_t i = 0; i < scene.images.size(); ++i) {
             const scene::Image& image = scene.images[i];
             r.textures.push_back({image.name, image.format, image.width, image.height, image.encodedBytes, uploaded->imageBytes(i)});
@@ -197,7 +197,7 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
 
 // Checks the --out pattern against the scenes before anything renders: known fields, a valid
 // image format, and a different file for every scene. Returns the format.
-io::ImageFileFormat checkOutputs(const RenderOptions& options, const std::vector<SceneInput>& scenes, bool sequence) {
+assets::ImageFileFormat checkOutputs(const RenderOptions& options, const std::vector<SceneInput>& scenes, bool sequence) {
     checkOutPattern(options.out);
     if (!options.out.empty() && options.out.back() == '/')
         throw UserError("--out " + options.out + ": names a folder; give a file in it, e.g. --out " + options.out + "candela.png");
@@ -215,17 +215,17 @@ io::ImageFileFormat checkOutputs(const RenderOptions& options, const std::vector
     if (options.variant == "all" && !usesField(options.out, "variant"))
         throw UserError("--variant all: --out needs {variant} in its pattern (one image per variant), e.g. --out '{name}-{variant}.png'");
     std::map<std::string, std::string> writer;  // output → the scene that writes it
-    std::optional<io::ImageFileFormat> format;
+    std::optional<assets::ImageFileFormat> format;
     for (const SceneInput& s : scenes) {
         const std::string out = expandOutPattern(options.out, {s.name, s.path, "default", sequence ? std::optional(0u) : std::nullopt});
-        if (!format) format = io::imageFileFormat(out);
+        if (!format) format = assets::imageFileFormat(out);
         if (const auto [it, inserted] = writer.emplace(out, s.file.string()); !inserted)
             throw UserError("--out " + options.out + ": " + it->second + " and " + s.file.string() + " would both write " + out +
                             (usesField(options.out, "name") || usesField(options.out, "path")
                                  ? " (use {path}: it keeps their folders apart)"
                                  : " (give a pattern with {name} or {path}, e.g. --out 'renders/{name}.png')"));
     }
-    return format.value_or(io::ImageFileFormat::Png);
+    return format.value_or(assets::ImageFileFormat::Png);
 }
 
 // The scenes listed: --scene's file, then the SCENE arguments; neither: the built-in scene.
@@ -240,18 +240,18 @@ std::vector<SceneInput> listScenes(const RenderOptions& options) {
 
 // Checks, before anything loads, that every file the run writes can be written (a single scene's
 // image included); returns the image format.
-io::ImageFileFormat prepareOutputs(const RenderOptions& options, const std::vector<SceneInput>& listed,
+assets::ImageFileFormat prepareOutputs(const RenderOptions& options, const std::vector<SceneInput>& listed,
                                    const std::vector<SceneInput>& scenes, bool sequence) {
-    const io::ImageFileFormat format = checkOutputs(options, scenes, sequence);
+    const assets::ImageFileFormat format = checkOutputs(options, scenes, sequence);
     if (listed.size() == 1) {
         const std::string first = expandOutPattern(options.out, {listed[0].name, listed[0].path, "default", sequence ? std::optional(0u) : std::nullopt});
         createFolderOf(first);
-        io::checkWritable(first);
+        assets::checkWritable(first);
     }
     for (const std::string& path : {options.graphDot, options.graphJson, options.report, options.html})
         if (!path.empty()) {
             createFolderOf(path);
-            io::checkWritable(path);
+            assets::checkWritable(path);
         }
     return format;
 }
@@ -299,7 +299,7 @@ void runScene(Run& run, LoadedScene loaded, SceneReport& r, RunReport& report, P
 int finishRun(Run& run, const RunReport& report, std::exception_ptr singleFailure) {
     const RenderOptions& options = run.options;
     if (!options.report.empty()) writeText(options.report, reportJson(report));
-    if (!options.html.empty()) io::writeHtmlPage(options.html, renderPage(report, options.html), options.inlineImages);
+    if (!options.html.empty()) reports::writeHtmlPage(options.html, renderPage(report, options.html), options.inlineImages);
     if (singleFailure) std::rethrow_exception(singleFailure);
 
     Renderer& renderer = run.session.renderer();
@@ -343,7 +343,7 @@ int runRender(const RenderOptions& options) {
     const std::vector<SceneInput> scenes = shardOf(listed, options.shard);
     const bool single = listed.size() == 1;
     const bool sequence = options.frames > 1;
-    const io::ImageFileFormat format = prepareOutputs(options, listed, scenes, sequence);
+    const assets::ImageFileFormat format = prepareOutputs(options, listed, scenes, sequence);
 
     // The first scene is read while the environment loads and the device starts.
     std::future<LoadedScene> next;
@@ -359,7 +359,7 @@ int runRender(const RenderOptions& options) {
     session.start();
     Run run{options, session, format, !single, sequence};
     const vk::Context& context = session.context();
-    const scene::Environment* environment = session.environment();
+    const assets::Environment* environment = session.environment();
     RunReport report{.version = versionText(),
                      .device = context.report().name,
                      .environment = environment ? environment->source : "none",

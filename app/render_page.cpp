@@ -13,12 +13,12 @@ namespace fs = std::filesystem;
 // linked.
 constexpr size_t kThumbnails = 3;
 
-io::PageRow sceneRow(const SceneReport& s, const fs::path& page) {
-    io::PageRow row;
+reports::PageRow sceneRow(const SceneReport& s, const fs::path& page) {
+    reports::PageRow row;
     row.name = s.input.path;
-    row.status = !s.ok ? io::RowStatus::Failed
-                 : !s.warnings.empty() || s.validationMessages > 0 ? io::RowStatus::Warning
-                                                                   : io::RowStatus::Ok;
+    row.status = !s.ok ? reports::RowStatus::Failed
+                 : !s.warnings.empty() || s.validationMessages > 0 ? reports::RowStatus::Warning
+                                                                   : reports::RowStatus::Ok;
     row.error = s.error;
     row.warnings = s.warnings;
     if (s.validationMessages > 0) row.warnings.push_back(std::to_string(s.validationMessages) + " validation messages");
@@ -30,10 +30,10 @@ io::PageRow sceneRow(const SceneReport& s, const fs::path& page) {
     }
     for (size_t i = 0; i < s.outputs.size(); ++i) {
         const fs::path file = s.outputs[i].file;
-        row.links.push_back({file.filename().string(), io::pathFromPage(file, page)});
+        row.links.push_back({file.filename().string(), reports::pathFromPage(file, page)});
         if (i >= kThumbnails) continue;
         const bool shown = file.extension() == ".png";  // browsers show no EXR or PFM
-        row.images.push_back({s.outputs[i].label, shown ? io::pathFromPage(file, page) : fs::path(),
+        row.images.push_back({s.outputs[i].label, shown ? reports::pathFromPage(file, page) : fs::path(),
                               shown ? "" : file.extension().string() + ": no preview"});
     }
     if (!s.ok && s.outputs.empty()) row.images.push_back({"render", {}, "not rendered"});
@@ -53,8 +53,8 @@ io::PageRow sceneRow(const SceneReport& s, const fs::path& page) {
 
 }  // namespace
 
-io::HtmlPage renderPage(const RunReport& report, const fs::path& page) {
-    io::HtmlPage out;
+reports::HtmlPage renderPage(const RunReport& report, const fs::path& page) {
+    reports::HtmlPage out;
     const size_t failed = report.failed();
     out.title = "candela render: " + std::to_string(report.scenes.size()) + " scene" + (report.scenes.size() == 1 ? "" : "s");
     std::string counts = std::to_string(report.scenes.size() - failed) + " rendered, " + std::to_string(failed) + " failed";

@@ -62,7 +62,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<ScaleRow>& 
                       (unsigned long long)r.draws.submittedTriangles, r.ratio(), r.cpuMs);
         md << line;
     }
-    io::PlotSpec plot{.title = "Frame time against scene triangles (N x N sphere grid)",
+    reports::PlotSpec plot{.title = "Frame time against scene triangles (N x N sphere grid)",
                       .xLabel = "triangles in the scene",
                       .yLabel = "frame time / calibration",
                       .series = {"levels of detail on, forward", "levels of detail off, forward", "levels of detail on, visibility",
@@ -71,7 +71,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<ScaleRow>& 
     for (const ScaleRow& r : rows)
         plot.points.push_back({double(r.draws.sceneTriangles), r.ratio(), "N=" + std::to_string(r.side),
                                (r.lodErrorPixels > 0.0f ? 0u : 1u) + (r.path == options::ShadingPath::Visibility ? 2u : 0u)});
-    io::writeLogLogPlot(out / "frame_vs_triangles.png", plot);
+    reports::writeLogLogPlot(out / "frame_vs_triangles.png", plot);
 }
 
 }  // namespace
@@ -79,7 +79,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<ScaleRow>& 
 int runScaleReport(const ScaleReportOptions& options) {
     prepareReportFolder(options.out, {"report.csv", "report.md", "frame_vs_triangles.png"});
     Session session(options.common, EnvironmentChoice{});  // the procedural sky
-    const scene::Environment& sky = *session.environment();
+    const assets::Environment& sky = *session.environment();
     session.start();
     vk::Context& context = session.context();
     Renderer& renderer = session.renderer();
@@ -90,7 +90,7 @@ int runScaleReport(const ScaleReportOptions& options) {
     if (context.choices().visibilityUnsupported.empty()) paths.push_back(options::ShadingPath::Visibility);
     Progress progress("scale-report", options.sizes.size() * 2 * paths.size(), options.common.quiet);
     for (uint32_t side : options.sizes) {
-        const scene::Scene& grid = scenes.emplace_back(scene::makeSphereGrid(side));
+        const scene::Scene& grid = scenes.emplace_back(assets::makeSphereGrid(side));
         for (const float lodError : {options.lodErrorPixels, 0.0f})
         for (const options::ShadingPath path : paths) {
             RenderSettings settings{.width = options.width, .height = options.height, .scene = &grid, .environment = &sky};

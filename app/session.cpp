@@ -27,28 +27,28 @@ vk::ContextDesc contextDesc(const CommonOptions& common) {
 Session::Session(const CommonOptions& common, const EnvironmentChoice& env)
     : desc_(app::contextDesc(common)), environment_(loadEnvironment(env)) {}
 
-void Session::start() {
+void Session::start(const RendererOptions& options) {
     context_.emplace(desc_);
-    renderer_.emplace(*context_);
+    renderer_.emplace(*context_, options);
 }
 
-std::unique_ptr<scene::Environment> Session::takeEnvironment() {
+std::unique_ptr<assets::Environment> Session::takeEnvironment() {
     if (!environment_) return nullptr;
-    auto out = std::make_unique<scene::Environment>(std::move(*environment_));
+    auto out = std::make_unique<assets::Environment>(std::move(*environment_));
     environment_.reset();
     return out;
 }
 
-int exitCodeAfter(const vk::Context& context, int code) {
-    if (context.validationMessageCount() == 0) return code;
-    log::error(std::to_string(context.validationMessageCount()) + " validation messages");
+int Session::exitCode(int code) const {
+    if (context_->validationMessageCount() == 0) return code;
+    log::error(std::to_string(context_->validationMessageCount()) + " validation messages");
     return 3;
 }
 
-std::optional<scene::Environment> loadEnvironment(const EnvironmentChoice& choice) {
+std::optional<assets::Environment> loadEnvironment(const EnvironmentChoice& choice) {
     if (choice.kind == EnvironmentChoice::Kind::None) return std::nullopt;
-    scene::Environment env =
-        choice.kind == EnvironmentChoice::Kind::Sky ? scene::makeProceduralSky() : scene::loadEnvironment(choice.file);
+    assets::Environment env =
+        choice.kind == EnvironmentChoice::Kind::Sky ? assets::makeProceduralSky() : assets::loadEnvironment(choice.file);
     for (const std::string& warning : env.report.warnings) log::warn(warning);
     for (const std::string& note : env.report.notes) log::info(note);
     return env;
@@ -56,8 +56,8 @@ std::optional<scene::Environment> loadEnvironment(const EnvironmentChoice& choic
 
 
 scene::Scene readScene(const SceneOptions& options, const std::string& file) {
-    return !file.empty() ? scene::loadGltf(file, {.sceneIndex = options.sceneIndex})
-                         : scene::makeSphereGrid(options.grid.value_or(7), options.distinctMaterials);
+    return !file.empty() ? assets::loadGltf(file, {.sceneIndex = options.sceneIndex})
+                         : assets::makeSphereGrid(options.grid.value_or(7), options.distinctMaterials);
 }
 
 scene::Scene loadScene(const SceneOptions& options) {
@@ -68,20 +68,20 @@ scene::Scene loadScene(const SceneOptions& options) {
     return scene;
 }
 
-scene::ScenePose loadPose(const SceneOptions& options, const scene::Scene& scene) {
-    scene::ScenePose pose(scene, scene::selectAnimations(scene, options.animations));
+pose::ScenePose loadPose(const SceneOptions& options, const scene::Scene& scene) {
+    pose::ScenePose pose(scene, pose::selectAnimations(scene, options.animations));
     pose.evaluate(options.time);
     return pose;
 }
 
 void warnAnimationConflicts(const SceneOptions& options, const scene::Scene& scene) {
-    const std::vector<uint32_t> playing = scene::selectAnimations(scene, options.animations);
-    const std::string line = scene::describeAnimationConflicts(scene, scene::animationConflicts(scene, playing));
+    const std::vector<uint32_t> playing = pose::selectAnimations(scene, options.animations);
+    const std::string line = pose::describeAnimationConflicts(scene, pose::animationConflicts(scene, playing));
     if (!line.empty()) log::warn(scene.source + ": " + line);
 }
 
 RenderSettings renderSettings(const SceneRenderOptions& options, const scene::Scene& scene,
-                              const scene::Environment* environment) {
+                              const assets::Environment* environment) {
     RenderSettings settings{.width = options.width, .height = options.height, .scene = &scene};
     settings.disabledPasses = options.disabledPasses;
     settings.defaultLights = options.defaultLights;

@@ -1,7 +1,9 @@
 #pragma once
 // What the drawing commands set up before their first frame: the environment that lights their
 // scenes, then the device (with its pipeline cache) and a renderer on it; and the scene, pose and
-// render settings that render, view and bench's flags ask for.
+// render settings that render, view and bench's flags ask for. The session holds no scene: render
+// loads a batch on a loading thread and the viewer replaces its scene when a file is dropped, so
+// each command holds its scenes, read by the functions below.
 
 #include "cli.h"
 #include "assets/environment.h"
@@ -20,10 +22,6 @@ namespace candela::app {
 // --pipeline-cache, else the user's cache folder). Sets the log's verbosity (--verbose).
 vk::ContextDesc contextDesc(const CommonOptions& common);
 
-// `code`, or 3 when `context` reported validation messages (their number logged as an error): the
-// exit code of a command that drew on it.
-int exitCodeAfter(const vk::Context& context, int code);
-
 class Session {
 public:
     // Loads the environment `env` asks for: a file, the procedural sky, or none; its warnings are
@@ -32,30 +30,33 @@ public:
     Session(const Session&) = delete;  // the renderer points at the context
     Session& operator=(const Session&) = delete;
 
-    // Starts the device and the renderer. Precondition: not started.
-    void start();
+    // The description the device will start from; before start(), a caller may add to it (the
+    // viewer's window system: ui::WindowSystem::addTo).
+    vk::ContextDesc& contextDesc() { return desc_; }
+    // Starts the device and a renderer made with `options`. Precondition: not started.
+    void start(const RendererOptions& options = {});
     // Precondition: started.
     vk::Context& context() { return *context_; }
     Renderer& renderer() { return *renderer_; }
 
     // The environment; null for --env none.
-    const scene::Environment* environment() const { return environment_ ? &*environment_ : nullptr; }
+    const assets::Environment* environment() const { return environment_ ? &*environment_ : nullptr; }
     // Hands the environment over (to the viewer, which owns what it draws); null for --env none.
-    std::unique_ptr<scene::Environment> takeEnvironment();
-    const vk::ContextDesc& contextDesc() const { return desc_; }
+    std::unique_ptr<assets::Environment> takeEnvironment();
 
-    // exitCodeAfter(context(), code). Precondition: started.
-    int exitCode(int code) const { return exitCodeAfter(*context_, code); }
+    // `code`, or 3 when the device reported validation messages (their number logged as an
+    // error): the exit code of a command that drew on it. Precondition: started.
+    int exitCode(int code) const;
 
 private:
     vk::ContextDesc desc_;
-    std::optional<scene::Environment> environment_;
+    std::optional<assets::Environment> environment_;
     std::optional<vk::Context> context_;
     std::optional<Renderer> renderer_;
 };
 
 // The environment `choice` asks for (nullopt: none), its warnings logged, and its notes with --verbose.
-std::optional<scene::Environment> loadEnvironment(const EnvironmentChoice& choice);
+std::optional<assets::Environment> loadEnvironment(const EnvironmentChoice& choice);
 // The scene of `file` (a glTF file; "": the built-in sphere grid --grid and --distinct-materials
 // ask for), as read: nothing logged, the default variant. Safe to call on another thread.
 scene::Scene readScene(const SceneOptions& options, const std::string& file);
@@ -63,13 +64,13 @@ scene::Scene readScene(const SceneOptions& options, const std::string& file);
 scene::Scene loadScene(const SceneOptions& options);
 // The pose --animation and --time ask for (a UserError names the scene's animations when one
 // does not exist). Precondition: `scene` outlives it.
-scene::ScenePose loadPose(const SceneOptions& options, const scene::Scene& scene);
+pose::ScenePose loadPose(const SceneOptions& options, const scene::Scene& scene);
 // Logs one warning naming the scene when the animations --animation asks for drive the same
-// channels (which, and which wins: scene::describeAnimationConflicts); nothing otherwise.
+// channels (which, and which wins: pose::describeAnimationConflicts); nothing otherwise.
 void warnAnimationConflicts(const SceneOptions& options, const scene::Scene& scene);
 // The render settings the flags of render, view and bench choose (undithered: render and bench
 // set --dither, the viewer always dithers). Precondition: `scene` and `environment` outlive them.
 RenderSettings renderSettings(const SceneRenderOptions& options, const scene::Scene& scene,
-                              const scene::Environment* environment);
+                              const assets::Environment* environment);
 
 }  // namespace candela::app

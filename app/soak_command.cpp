@@ -23,12 +23,12 @@ double mib(uint64_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
 int runSoak(const SoakOptions& options) {
     std::ofstream csv;
     if (!options.out.empty()) {
-        io::checkWritable(options.out);
+        assets::checkWritable(options.out);
         csv.open(options.out);
         csv << "frame,rss_bytes,heap_bytes,live_vulkan_objects,device_memory_bytes,live_allocations,frame_ms\n";
     }
-    const scene::Scene grid = scene::makeSphereGrid();
-    const std::vector<scene::Environment> environments = soakEnvironments();
+    const scene::Scene grid = assets::makeSphereGrid();
+    const std::vector<assets::Environment> environments = soakEnvironments();
     Session session(options.common, EnvironmentChoice{EnvironmentChoice::Kind::None});  // soak brings its own skies
     session.start();
     vk::Context& context = session.context();

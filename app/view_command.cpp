@@ -62,15 +62,13 @@ void printFrameSummary(ui::Viewer& viewer, const ViewOptions& options, const Ove
 
 int runView(const ViewOptions& options) {
     if (!options.screenshot.empty()) {
-        if (io::imageFileFormat(options.screenshot) != io::ImageFileFormat::Png)
+        if (assets::imageFileFormat(options.screenshot) != assets::ImageFileFormat::Png)
             throw UserError("--screenshot " + options.screenshot + ": screenshots are PNG files");
-        io::checkWritable(options.screenshot);
+        assets::checkWritable(options.screenshot);
     }
     ui::ViewerContent content;
     content.scene = loadScene(options);
     if (!options.variant.empty()) content.variant = scene::variantIndex(content.scene, options.variant);
-    // The session loads the environment; the viewer starts the device itself (from the session's
-    // context description).
     Session session(options.common, options.env);
     content.environment = session.takeEnvironment();
     // The viewer owns the scene and environment from now on and points each frame's settings at
@@ -81,7 +79,6 @@ int runView(const ViewOptions& options) {
     content.time = options.time;
 
     ui::ViewerDesc desc;
-    desc.context = session.contextDesc();
     desc.window = {.title = "Candela — " + (options.scene.empty() ? std::string("sphere grid") : options.scene),
                    .width = options.width,
                    .height = options.height};
@@ -90,7 +87,11 @@ int runView(const ViewOptions& options) {
     desc.shaderDir = options.shaderDir;
     desc.iblReport = options.iblReport;
     desc.openPanels = options.panels;
-    ui::Viewer viewer(desc, std::move(content));
+    // The window system before the device: the device's queue must present to its windows.
+    const ui::WindowSystem windowSystem;
+    windowSystem.addTo(session.contextDesc());
+    session.start(ui::Viewer::kRendererOptions);
+    ui::Viewer viewer(desc, std::move(content), session.context(), session.renderer());
     if (options.frames > 0) {
         // frame() also returns true for frames not rendered (minimized window): count rendered ones.
         while (viewer.framesRendered() < warmUpFrames(options.frames) && viewer.frame()) {
@@ -112,7 +113,7 @@ int runView(const ViewOptions& options) {
         std::printf("wrote %s after %llu frames\n", options.screenshot.c_str(),
                     static_cast<unsigned long long>(viewer.framesRendered()));
     }
-    return exitCodeAfter(viewer.context(), 0);
+    return session.exitCode(0);
 }
 
 }  // namespace candela::app

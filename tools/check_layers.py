@@ -37,26 +37,28 @@ import sys
 
 
 def read_layers(root):
-    """engine/layers.txt as {folder: (target, kind, direct links)}, in the table's order."""
-    layers = {}
+    """engine/layers.txt as ({folder: (target, kind, direct links)}, {folder: namespace}), in the
+    table's order."""
+    layers, namespaces = {}, {}
     with open(os.path.join(root, "engine", "layers.txt"), encoding="utf-8") as f:
         for line in f:
             if not re.match(r"[a-z]", line):
                 continue
             fields = line.split()
-            folder, target, kind = fields[:3]
-            links = [x for x in fields[3:] if x not in ("|", "-")]
+            folder, target, namespace, kind = fields[:4]
+            links = [x for x in fields[4:] if x not in ("|", "-")]
             layers[folder] = (target, kind, links)
-    return layers
+            namespaces[folder] = namespace
+    return layers, namespaces
 
 
-LAYERS, ALL, CPU, CONSUMERS = {}, [], [], []
+LAYERS, NAMESPACES, ALL, CPU, CONSUMERS = {}, {}, [], [], []
 
 
 def load(root):
     """Reads the layer table and derives from it the rules of the files outside engine/."""
-    global LAYERS, ALL, CPU, CONSUMERS
-    LAYERS = read_layers(root)
+    global LAYERS, NAMESPACES, ALL, CPU, CONSUMERS
+    LAYERS, NAMESPACES = read_layers(root)
     ALL = list(LAYERS)
     CPU = [f for f, (_, kind, _) in LAYERS.items() if kind == "cpu"]
     tests = os.path.join(root, "tests", "unit")
@@ -220,6 +222,59 @@ def check_includes(root, direct):
     return errors, notes, count
 
 
+NAMESPACE_OPEN = re.compile(r"^[ \t]*namespace[ \t]+(candela(?:::\w+)*)[ \t]*\{", re.M)
+FORWARD_DECLARATION = re.compile(r"^(?:(?:class|struct)\s+\w+|enum\s+class\s+\w+\s*:\s*[\w:]+)\s*;$")
+
+
+def owns(namespace, opened):
+    """Whether a file of the row whose namespace is `namespace` may open `opened`: the row's own or
+    one nested in it, but not one another row with a longer name owns (core's candela is not
+    scene's candela::scene)."""
+    if opened != namespace and not opened.startswith(namespace + "::"):
+        return False
+    return not any(len(other) > len(namespace) and (opened == other or opened.startswith(other + "::"))
+                   for other in NAMESPACES.values())
+
+
+def block_body(text, brace):
+    """The text between the brace at `brace` and its match (None when unbalanced)."""
+    depth = 0
+    for i in range(brace, len(text)):
+        depth += {"{": 1, "}": -1}.get(text[i], 0)
+        if depth == 0:
+            return text[brace + 1:i]
+    return None
+
+
+def check_namespaces(root):
+    """Each file of engine/FOLDER declares its code in its row's namespace (engine/layers.txt), or
+    one nested in it; a block of forward declarations only may name another row's namespace (a
+    header naming a type it only points to). tests/unit/FOLDER may also use candela::test."""
+    errors = []
+    for src in sources(root):
+        parts = src.split("/")
+        if parts[0] == "engine" and len(parts) > 2 and parts[1] in LAYERS:
+            folder, extra = parts[1], ()
+        elif parts[:2] == ["tests", "unit"] and len(parts) > 3 and parts[2] in LAYERS:
+            folder, extra = parts[2], ("candela::test",)
+        else:
+            continue
+        text = open(os.path.join(root, src), encoding="utf-8", errors="replace").read()
+        code = re.sub(r"//[^\n]*", "", text)
+        for m in NAMESPACE_OPEN.finditer(code):
+            opened = m.group(1)
+            if owns(NAMESPACES[folder], opened) or any(opened == e or opened.startswith(e + "::") for e in extra):
+                continue
+            body = block_body(code, m.end() - 1) or ""
+            statements = [s.strip() + ";" for s in body.split(";") if s.strip()]
+            if statements and all(FORWARD_DECLARATION.match(" ".join(s.split())) for s in statements):
+                continue
+            line = code.count("\n", 0, m.start()) + 1
+            errors.append(f"{src}:{line}: declares code in {opened}; engine/layers.txt gives {folder} the namespace "
+                          f"{NAMESPACES[folder]}" + (f" (tests may also use {extra[0]})" if extra else ""))
+    return errors
+
+
 def check_cmake(root):
     """engine/FOLDER/CMakeLists.txt links each layer's target to what its row of the table names
     (candela_engine_library, engine/CMakeLists.txt); any candela_* library a folder links besides
@@ -255,7 +310,7 @@ DOC = "docs/architecture.md"
 DOC_WRITER = "written from engine/layers.txt by tools/check_layers.py --write-docs"
 TABLE_MARKS = (f"<!-- layer table: {DOC_WRITER}; the job column is the doc's -->", "<!-- end of layer table -->")
 LEVELS_MARKS = (f"<!-- layer levels: {DOC_WRITER} -->", "<!-- end of layer levels -->")
-TABLE_HEADER = ["| folder | CMake target | kind | links (direct) | job |", "|---|---|---|---|---|"]
+TABLE_HEADER = ["| folder | CMake target | namespace | kind | links (direct) | job |", "|---|---|---|---|---|---|"]
 
 
 def doc_levels():
@@ -282,7 +337,8 @@ def doc_table(old):
     rows = []
     for f, (target, kind, deps) in LAYERS.items():
         folder = "shaders/shared" if f == "shared" else f
-        rows.append(f"| {folder} | {target} | {kind} | {', '.join(deps) or '—'} | {jobs.get(folder, '')} |")
+        rows.append(f"| {folder} | {target} | {NAMESPACES[f]} | {kind} | {', '.join(deps) or '—'} | "
+                    f"{jobs.get(folder, '')} |")
     return TABLE_HEADER + rows + others
 
 
@@ -336,6 +392,7 @@ def main(argv):
         write_doc(root)
         return 0
     errors, notes, count = check_includes(root, "--direct" in argv)
+    errors += check_namespaces(root)
     errors += check_doc(root)
     if "--no-cmake" not in argv:
         errors += check_cmake(root)

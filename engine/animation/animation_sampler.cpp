@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-namespace candela::scene {
+namespace candela::animation {
 
 namespace {
 
@@ -176,4 +176,4 @@ double loopTime(double time, double duration) {
     return phase < duration ? phase : 0.0;
 }
 
-}  // namespace candela::scene
+}  // namespace candela::animation

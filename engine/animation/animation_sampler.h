@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::scene {
+namespace candela::animation {
 
 enum class Interpolation : uint8_t { Step, Linear, CubicSpline };
 
@@ -56,4 +56,4 @@ void evaluateSampler(const AnimationSampler& sampler, AnimatedProperty property,
 // after 10⁶ s is as exact as after one. 0 for a duration ≤ 0 or a non-finite time.
 double loopTime(double time, double duration);
 
-}  // namespace candela::scene
+}  // namespace candela::animation

@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-namespace candela::scene {
+namespace candela::animation {
 
 glm::dmat4 NodeTransform::local() const {
     if (matrix) return *matrix;
@@ -70,4 +70,4 @@ void applyAnimation(const Animation& animation, double time, std::vector<SceneNo
     }
 }
 
-}  // namespace candela::scene
+}  // namespace candela::animation

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::scene {
+namespace candela::animation {
 
 // A node's transform relative to its parent: translation · rotation · scale, or a fixed matrix
 // (glTF nodes with a "matrix" are never animation targets).
@@ -92,4 +92,4 @@ struct Animation {
 // channel's element is below it.
 void applyAnimation(const Animation& animation, double time, std::vector<SceneNode>& nodes);
 
-}  // namespace candela::scene
+}  // namespace candela::animation

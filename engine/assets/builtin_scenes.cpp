@@ -10,9 +10,9 @@
 #include <stdexcept>
 #include <string>
 
-namespace candela::scene {
+namespace candela::assets {
 
-std::pair<uint32_t, uint32_t> appendUvSphere(Scene& scene, float radius, uint32_t sectors, uint32_t stacks) {
+std::pair<uint32_t, uint32_t> appendUvSphere(scene::Scene& scene, float radius, uint32_t sectors, uint32_t stacks) {
     const auto base = static_cast<uint32_t>(scene.vertices.size());
     const auto firstIndex = static_cast<uint32_t>(scene.indices.size());
     for (uint32_t i = 0; i <= stacks; ++i) {
@@ -22,7 +22,7 @@ std::pair<uint32_t, uint32_t> appendUvSphere(Scene& scene, float radius, uint32_
             const float u = static_cast<float>(j) / static_cast<float>(sectors);
             const float azimuth = u * glm::two_pi<float>();
             const glm::vec3 n(std::sin(polar) * std::sin(azimuth), std::cos(polar), std::sin(polar) * std::cos(azimuth));
-            Vertex vertex;
+            scene::Vertex vertex;
             vertex.position = radius * n;
             vertex.normal = n;
             // d(position)/d(u) points along increasing azimuth; at the poles use the limit direction.
@@ -41,31 +41,31 @@ std::pair<uint32_t, uint32_t> appendUvSphere(Scene& scene, float radius, uint32_
     return {firstIndex, static_cast<uint32_t>(scene.indices.size()) - firstIndex};
 }
 
-Scene makeSphereGrid(uint32_t side, bool materialPerSphere) {
+scene::Scene makeSphereGrid(uint32_t side, bool materialPerSphere) {
     constexpr int kRows = 7, kColumns = 7;  // the materials
     constexpr float kSpacing = 2.5f;
     if (side == 0) throw std::invalid_argument("makeSphereGrid: a grid of 0 spheres");
-    Scene scene;
+    scene::Scene scene;
     scene.source = side == 7 ? "built-in: sphere grid" : "built-in: sphere grid " + std::to_string(side) + "x" + std::to_string(side);
     const auto [firstIndex, indexCount] = appendUvSphere(scene, 1.0f, 64, 32);
     // Its levels of detail: coarser tessellations of the same sphere (the simplifier would stop at
     // about 440 triangles: it locks the poles' coincident vertices), each with its measured
     // distance from the full detail. Together they add 34% to its indices (the budget is 50%).
-    LodChain chain;
+    scene::LodChain chain;
     chain.levels.push_back({firstIndex, indexCount, 0.0f});
     const std::vector<uint32_t> full(scene.indices.begin() + firstIndex, scene.indices.end());  // the array grows below
     for (const auto& [sectors, stacks] : {std::pair{24u, 12u}, {20u, 10u}, {16u, 8u}, {12u, 6u}, {8u, 4u}}) {
         const auto [levelFirst, levelCount] = appendUvSphere(scene, 1.0f, sectors, stacks);
         const std::span<const uint32_t> level(scene.indices.data() + levelFirst, levelCount);
-        chain.levels.push_back({levelFirst, levelCount, std::max(surfaceDeviation(scene.vertices, full, level), chain.levels.back().error)});
+        chain.levels.push_back({levelFirst, levelCount, std::max(geometry::surfaceDeviation(scene.vertices, full, level), chain.levels.back().error)});
     }
     scene.lodChains.push_back(std::move(chain));
-    Aabb sphereBounds;
+    scene::Aabb sphereBounds;
     sphereBounds.extend(glm::vec3(-1.0f));
     sphereBounds.extend(glm::vec3(1.0f));
     for (int row = 0; row < kRows; ++row)
         for (int column = 0; column < kColumns; ++column) {
-            Material material;
+            scene::Material material;
             material.name = "metallic " + std::to_string(column) + "/6, roughness " + std::to_string(row) + "/6";
             material.baseColorFactor = glm::vec4(0.5f, 0.0f, 0.0f, 1.0f);
             material.metallicFactor = static_cast<float>(column) / (kColumns - 1);
@@ -73,18 +73,18 @@ Scene makeSphereGrid(uint32_t side, bool materialPerSphere) {
             material.roughnessFactor = glm::clamp(static_cast<float>(row) / (kRows - 1), 0.05f, 1.0f);
             scene.materials.push_back(material);
         }
-    const std::vector<Material> cells = std::move(scene.materials);
-    scene.materials = materialPerSphere ? std::vector<Material>{} : cells;
+    const std::vector<scene::Material> cells = std::move(scene.materials);
+    scene.materials = materialPerSphere ? std::vector<scene::Material>{} : cells;
     for (uint32_t row = 0; row < side; ++row)
         for (uint32_t column = 0; column < side; ++column) {
-            Draw draw;
+            scene::Draw draw;
             draw.firstIndex = firstIndex;
             draw.indexCount = indexCount;
             // Sphere (row, column) wears the material of its part of the 7 × 7 grid, or a copy of
             // it in a colour of its own.
             draw.material = row * kRows / side * kColumns + column * kColumns / side;
             if (materialPerSphere) {
-                Material own = cells[draw.material];
+                scene::Material own = cells[draw.material];
                 draw.material = static_cast<uint32_t>(scene.materials.size());
                 own.name = "sphere " + std::to_string(draw.material);
                 own.baseColorFactor = glm::vec4(0.05f, 0.05f, 0.05f, 1.0f);
@@ -105,16 +105,16 @@ Scene makeSphereGrid(uint32_t side, bool materialPerSphere) {
     // square of the distance (the same irradiance where the 7 × 7 grid has its spheres).
     const float reach = float(side) / 7.0f;
     for (const glm::vec2 corner : {glm::vec2(-10, 10), glm::vec2(10, 10), glm::vec2(-10, -10), glm::vec2(10, -10)}) {
-        Light light;
-        light.type = LightType::Point;
+        scene::Light light;
+        light.type = scene::LightType::Point;
         light.intensity = 300.0f * reach * reach;
         light.position = glm::vec3(corner, 10.0f) * reach;
         scene.lights.push_back(light);
     }
     // A chart: framed head-on, rows and columns along the image's, every sphere the same size.
     scene.framingAngles = glm::vec2(0.0f, 90.0f);
-    prepareGeometry(scene);
+    geometry::prepareGeometry(scene);
     return scene;
 }
 
-}  // namespace candela::scene
+}  // namespace candela::assets

@@ -3,7 +3,7 @@
 
 #include "scene/scene.h"
 
-namespace candela::scene {
+namespace candela::assets {
 
 // The original project's showcase: a 7×7 grid of UV spheres (radius 1, 2.5 m apart) in the XY
 // plane facing +Z (framed head-on: Scene::framingAngles), metallic rising left → right (0 → 1)
@@ -16,10 +16,10 @@ namespace candela::scene {
 // own (side² materials, a stress scene: --distinct-materials): its grid cell's metallic and
 // roughness, and a base colour cycling red, green, blue by material index. Throws
 // std::invalid_argument for side 0.
-Scene makeSphereGrid(uint32_t side = 7, bool materialPerSphere = false);
+scene::Scene makeSphereGrid(uint32_t side = 7, bool materialPerSphere = false);
 
 // Appends a UV sphere (sectors around Y, stacks from +Y to −Y) with normals, tangents along +φ
 // and UVs, to `scene`'s vertex and index arrays; returns the first index and index count.
-std::pair<uint32_t, uint32_t> appendUvSphere(Scene& scene, float radius, uint32_t sectors, uint32_t stacks);
+std::pair<uint32_t, uint32_t> appendUvSphere(scene::Scene& scene, float radius, uint32_t sectors, uint32_t stacks);
 
-}  // namespace candela::scene
+}  // namespace candela::assets

@@ -13,7 +13,7 @@
 #include <fstream>
 #include <limits>
 
-namespace candela::scene {
+namespace candela::assets {
 namespace {
 
 constexpr float kHalfMax = 65504.0f;
@@ -128,4 +128,4 @@ uint64_t contentHash(const Environment& env) {
     return hash;
 }
 
-}  // namespace candela::scene
+}  // namespace candela::assets

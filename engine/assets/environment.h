@@ -7,7 +7,7 @@
 // of the environment rotation are in shaders/shared/environment.h. Formats, header tolerance and
 // sanitizing: docs/environments.md.
 //
-//     scene::Environment env = scene::loadEnvironment("venice_sunset_1k.hdr");
+//     assets::Environment env = assets::loadEnvironment("venice_sunset_1k.hdr");
 //     for (const std::string& w : env.report.warnings) log::warn(w);
 //     const float* texel = env.texel(x, y);  // linear R, G, B
 
@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::scene {
+namespace candela::assets {
 
 // An equirectangular environment map. Texels are finite and ≥ 0 (loadEnvironment and
 // makeProceduralSky guarantee it; see sanitizeEnvironment).
@@ -68,4 +68,4 @@ void checkEnvironmentSize(const std::string& source, uint64_t width, uint64_t he
 // hashed): the key of the on-disk IBL cache. Equal maps give equal hashes on every platform.
 uint64_t contentHash(const Environment& env);
 
-}  // namespace candela::scene
+}  // namespace candela::assets

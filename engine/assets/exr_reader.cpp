@@ -18,7 +18,7 @@
 #include <thread>
 #include <vector>
 
-namespace candela::scene {
+namespace candela::assets {
 namespace {
 
 [[noreturn]] void failExr(const std::string& source, const std::string& problem) {
@@ -305,4 +305,4 @@ Environment decodeExr(std::span<const uint8_t> bytes, const std::string& source,
     return env;
 }
 
-}  // namespace candela::scene
+}  // namespace candela::assets

@@ -21,7 +21,7 @@
 #include <span>
 #include <string>
 
-namespace candela::scene {
+namespace candela::assets {
 
 // True when `bytes` starts with the OpenEXR magic number 76 2f 31 01.
 bool looksLikeExr(std::span<const uint8_t> bytes);
@@ -31,4 +31,4 @@ bool looksLikeExr(std::span<const uint8_t> bytes);
 // Throws UserError "SOURCE: problem" for anything malformed or unsupported.
 Environment decodeExr(std::span<const uint8_t> bytes, const std::string& source, const EnvironmentLoadOptions& options);
 
-}  // namespace candela::scene
+}  // namespace candela::assets

@@ -7,7 +7,7 @@
 #include <bit>
 #include <cstring>
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 namespace {
 
 static_assert(std::endian::native == std::endian::little, "glTF buffers are little-endian");
@@ -263,4 +263,4 @@ std::vector<uint32_t> readIndices(const LoadContext& ctx, const tinygltf::Model&
                                   [&](const uint8_t* p) { return indexValue(p, componentType); });
 }
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

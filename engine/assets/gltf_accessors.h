@@ -19,7 +19,7 @@ class Model;
 struct Accessor;
 }
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 
 // True when every component of `v` is finite (no NaN, no infinity).
 inline bool finite(const glm::vec4& v) {
@@ -67,4 +67,4 @@ std::vector<uint32_t> readIndices(const LoadContext& ctx, const tinygltf::Model&
 // The `count` of accessor `accessor` after checking the index. Used to size vertex arrays.
 size_t accessorCount(const LoadContext& ctx, const tinygltf::Model& model, int accessor, const std::string& what);
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

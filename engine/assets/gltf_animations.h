@@ -14,7 +14,7 @@ namespace tinygltf {
 class Model;
 }
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 
 // Per glTF node: 1 when some animation channel may move it — a core channel's target node, a
 // pointer to the node (its transform, weights or KHR_node_visibility visible) or to the weights of
@@ -25,7 +25,7 @@ std::vector<uint8_t> animatedNodes(const tinygltf::Model& model);
 // of every animation: the layers an animated factor may switch on (layersAnimationMayNeed).
 // Call after loadMaterials and before the geometry is converted (tangent frames follow it).
 // Unparsed or out-of-range pointers are ignored here (loadAnimations reports them).
-void noteAnimatedMaterials(const tinygltf::Model& model, Scene& scene);
+void noteAnimatedMaterials(const tinygltf::Model& model, scene::Scene& scene);
 
 // Reads every animation of the file. Node channels are remapped from glTF node indices to
 // Scene::nodes (so loadNodes must have run); a channel whose node is not in the loaded scene
@@ -38,6 +38,6 @@ void noteAnimatedMaterials(const tinygltf::Model& model, Scene& scene);
 // differs from that node's target count). An unsupported path, a pointer Candela does not
 // animate (one warning per distinct pointer and animation) and a camera pointer of the other
 // projection are warnings, and their channels are dropped.
-void loadAnimations(const LoadContext& ctx, const tinygltf::Model& model, Scene& scene);
+void loadAnimations(const LoadContext& ctx, const tinygltf::Model& model, scene::Scene& scene);
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

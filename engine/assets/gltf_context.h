@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 
 enum class Severity : unsigned char { Warning, Note };
 
@@ -64,4 +64,4 @@ float toFloat(const LoadContext& ctx, double value, const std::string& what);
 // "mesh 2 ('Cube') primitive 0" style labels for messages: the index, and the name if there is one.
 std::string label(const char* kind, int index, const std::string& name = {});
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 namespace {
 
 // The accessor named `name` of `attributes`, or -1.
@@ -28,24 +28,24 @@ std::vector<glm::vec4> readCounted(const LoadContext& ctx, const tinygltf::Model
 void readTargets(const LoadContext& ctx, const tinygltf::Model& model, const tinygltf::Primitive& primitive,
                  const std::string& what, size_t count, SourceDeformation& out) {
     out.targetCount = uint32_t(primitive.targets.size());
-    out.deltas.assign(size_t(out.targetCount) * count, MorphDelta{});
+    out.deltas.assign(size_t(out.targetCount) * count, scene::MorphDelta{});
     for (uint32_t t = 0; t < out.targetCount; ++t) {
         const std::map<std::string, int>& target = primitive.targets[t];
         const std::string targetWhat = what + " morph target " + std::to_string(t);
-        MorphDelta* deltas = out.deltas.data() + size_t(t) * count;
+        scene::MorphDelta* deltas = out.deltas.data() + size_t(t) * count;
         auto read = [&](const char* name, std::initializer_list<int> types, auto&& store) {
             const int accessor = attributeAccessor(target, name);
             if (accessor < 0) return;
             const std::vector<glm::vec4> values = readCounted(ctx, model, accessor, types, count, targetWhat + " " + name);
             for (size_t i = 0; i < count; ++i) store(deltas[i], values[i]);
         };
-        read("POSITION", {TINYGLTF_TYPE_VEC3}, [](MorphDelta& d, const glm::vec4& v) { d.position = glm::vec4(glm::vec3(v), 0.0f); });
-        read("NORMAL", {TINYGLTF_TYPE_VEC3}, [](MorphDelta& d, const glm::vec4& v) { d.normal = glm::vec4(glm::vec3(v), 0.0f); });
-        read("TANGENT", {TINYGLTF_TYPE_VEC3}, [](MorphDelta& d, const glm::vec4& v) { d.tangent = glm::vec4(glm::vec3(v), 0.0f); });
-        read("TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, [](MorphDelta& d, const glm::vec4& v) { d.uv.x = v.x, d.uv.y = v.y; });
-        read("TEXCOORD_1", {TINYGLTF_TYPE_VEC2}, [](MorphDelta& d, const glm::vec4& v) { d.uv.z = v.x, d.uv.w = v.y; });
+        read("POSITION", {TINYGLTF_TYPE_VEC3}, [](scene::MorphDelta& d, const glm::vec4& v) { d.position = glm::vec4(glm::vec3(v), 0.0f); });
+        read("NORMAL", {TINYGLTF_TYPE_VEC3}, [](scene::MorphDelta& d, const glm::vec4& v) { d.normal = glm::vec4(glm::vec3(v), 0.0f); });
+        read("TANGENT", {TINYGLTF_TYPE_VEC3}, [](scene::MorphDelta& d, const glm::vec4& v) { d.tangent = glm::vec4(glm::vec3(v), 0.0f); });
+        read("TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, [](scene::MorphDelta& d, const glm::vec4& v) { d.uv.x = v.x, d.uv.y = v.y; });
+        read("TEXCOORD_1", {TINYGLTF_TYPE_VEC2}, [](scene::MorphDelta& d, const glm::vec4& v) { d.uv.z = v.x, d.uv.w = v.y; });
         // An RGB colour delta leaves alpha unchanged.
-        read("COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, [&](MorphDelta& d, const glm::vec4& v) { d.color = v; });
+        read("COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, [&](scene::MorphDelta& d, const glm::vec4& v) { d.color = v; });
         if (const int color = attributeAccessor(target, "COLOR_0");
             color >= 0 && model.accessors[size_t(color)].type == TINYGLTF_TYPE_VEC3)
             for (size_t i = 0; i < count; ++i) deltas[i].color.w = 0.0f;
@@ -61,7 +61,7 @@ void readSkinWeights(const LoadContext& ctx, const tinygltf::Model& model, const
         return;
     }
     out.influencesPerVertex = 4 * sets;
-    out.influences.assign(count * out.influencesPerVertex, JointInfluence{});
+    out.influences.assign(count * out.influencesPerVertex, scene::JointInfluence{});
     for (uint32_t set = 0; set < sets; ++set) {
         const std::string joints = "JOINTS_" + std::to_string(set), weights = "WEIGHTS_" + std::to_string(set);
         const int jointAccessor = attributeAccessor(primitive.attributes, joints);
@@ -86,7 +86,7 @@ void readSkinWeights(const LoadContext& ctx, const tinygltf::Model& model, const
             }
     }
     for (size_t v = 0; v < count; ++v) {
-        JointInfluence* influences = out.influences.data() + v * out.influencesPerVertex;
+        scene::JointInfluence* influences = out.influences.data() + v * out.influencesPerVertex;
         double sum = 0.0;
         for (uint32_t i = 0; i < out.influencesPerVertex; ++i) sum += influences[i].weight;
         if (!(sum > 0.0)) ctx.fail(what + ": vertex " + std::to_string(v) + " has no joint weight (all are 0)");
@@ -108,18 +108,18 @@ SourceDeformation readDeformation(const LoadContext& ctx, const tinygltf::Model&
     return out;
 }
 
-Deformation remapDeformation(const SourceDeformation& source, std::span<const uint32_t> origin, uint32_t firstVertex) {
+scene::Deformation remapDeformation(const SourceDeformation& source, std::span<const uint32_t> origin, uint32_t firstVertex) {
     const size_t count = origin.size();
     const size_t sourceCount = source.targetCount ? source.deltas.size() / source.targetCount
                                : source.influencesPerVertex ? source.influences.size() / source.influencesPerVertex
                                                             : 0;
-    Deformation out{.firstVertex = firstVertex, .vertexCount = uint32_t(count), .targetCount = source.targetCount,
+    scene::Deformation out{.firstVertex = firstVertex, .vertexCount = uint32_t(count), .targetCount = source.targetCount,
                     .influencesPerVertex = source.influencesPerVertex, .maxJoint = source.maxJoint};
     out.deltas.resize(size_t(source.targetCount) * count);
     out.maxPositionDelta.assign(source.targetCount, glm::vec3(0.0f));
     for (uint32_t t = 0; t < source.targetCount; ++t)
         for (size_t v = 0; v < count; ++v) {
-            const MorphDelta& d = source.deltas[t * sourceCount + origin[v]];
+            const scene::MorphDelta& d = source.deltas[t * sourceCount + origin[v]];
             out.deltas[t * count + v] = d;
             out.maxPositionDelta[t] = glm::max(out.maxPositionDelta[t], glm::abs(glm::vec3(d.position)));
         }
@@ -130,4 +130,4 @@ Deformation remapDeformation(const SourceDeformation& source, std::span<const ui
     return out;
 }
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

@@ -14,13 +14,13 @@ class Model;
 struct Primitive;
 }  // namespace tinygltf
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 
 struct SourceDeformation {
     uint32_t targetCount = 0;
-    std::vector<MorphDelta> deltas;  // targetCount × vertexCount, target-major
+    std::vector<scene::MorphDelta> deltas;  // targetCount × vertexCount, target-major
     uint32_t influencesPerVertex = 0;
-    std::vector<JointInfluence> influences;  // vertexCount × influencesPerVertex
+    std::vector<scene::JointInfluence> influences;  // vertexCount × influencesPerVertex
     uint32_t maxJoint = 0;                   // the largest joint index with a non-zero weight
     size_t renormalized = 0;  // vertices whose weights summed to more than 1% off 1 (renormalized)
     bool empty() const { return targetCount == 0 && influencesPerVertex == 0; }
@@ -37,6 +37,6 @@ SourceDeformation readDeformation(const LoadContext& ctx, const tinygltf::Model&
 
 // The deformation of the converted vertices [firstVertex, firstVertex + origin.size()), vertex v
 // taking the data of source vertex origin[v].
-Deformation remapDeformation(const SourceDeformation& source, std::span<const uint32_t> origin, uint32_t firstVertex);
+scene::Deformation remapDeformation(const SourceDeformation& source, std::span<const uint32_t> origin, uint32_t firstVertex);
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

@@ -13,7 +13,7 @@
 #include <span>
 #include <type_traits>
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 namespace {
 
 constexpr const char* kDracoExtension = "KHR_draco_mesh_compression";
@@ -253,4 +253,4 @@ size_t decodeDracoPrimitives(const LoadContext& ctx, tinygltf::Model& model, con
     return decoded;
 }
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

@@ -15,7 +15,7 @@ namespace tinygltf {
 class Model;
 }
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 
 // The indices accessor of each Draco primitive that has one, by (mesh, primitive).
 using DracoIndices = std::map<std::pair<size_t, size_t>, int>;
@@ -40,4 +40,4 @@ bool detachDracoIndices(nlohmann::json& doc, DracoIndices& indices);
 // Returns the number of primitives decoded.
 size_t decodeDracoPrimitives(const LoadContext& ctx, tinygltf::Model& model, const DracoIndices& indices);
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

@@ -17,7 +17,7 @@
 #include <optional>
 #include <string_view>
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 namespace {
 
 constexpr uint32_t kGlbMagic = 0x46546C67;      // "glTF"
@@ -371,4 +371,4 @@ ParsedFile parseGltf(const LoadContext& ctx, std::span<const uint8_t> file, cons
     return parsed;
 }
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

@@ -25,7 +25,7 @@
 #include <span>
 #include <vector>
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 
 struct ParsedFile {
     tinygltf::Model model;
@@ -43,4 +43,4 @@ std::vector<uint8_t> readGltfFile(const LoadContext& ctx, const std::filesystem:
 ParsedFile parseGltf(const LoadContext& ctx, std::span<const uint8_t> file, const std::filesystem::path& path,
                      uint32_t maxImageDimension);
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

@@ -16,7 +16,7 @@
 #include <limits>
 #include <memory>
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 namespace {
 
 struct StbiFree {
@@ -138,7 +138,7 @@ DecodedImage decodeImage(const LoadContext& ctx, std::span<const uint8_t> bytes,
                    : bytes.size() >= 2 && bytes[0] == 0xFF && bytes[1] == 0xD8 ? "JPEG"
                                                                                : "other";
     if (image.format == "PNG")
-        if (const std::string problem = io::pngChunkProblem(bytes); !problem.empty()) ctx.fail(what + ": " + problem);
+        if (const std::string problem = assets::pngChunkProblem(bytes); !problem.empty()) ctx.fail(what + ": " + problem);
     int w = 0, h = 0, channels = 0;
     const size_t texels = size_t(width) * size_t(height);
     if (stbi_is_16_bit_from_memory(bytes.data(), length)) {
@@ -170,7 +170,7 @@ int textureImage(const tinygltf::Texture& texture) {
 }
 
 ImageTable::ImageTable(const LoadContext& ctx, const tinygltf::Model& model,
-                       std::map<int, std::vector<uint8_t>> uriImages, const LoadOptions& options, Scene& scene)
+                       std::map<int, std::vector<uint8_t>> uriImages, const LoadOptions& options, scene::Scene& scene)
     : mCtx(ctx), mModel(model), mEncoded(std::move(uriImages)), mOptions(options), mScene(scene) {}
 
 std::span<const uint8_t> ImageTable::encoded(int index, const std::string& what) {
@@ -212,7 +212,7 @@ DecodedImage& ImageTable::decoded(int index) {
     const std::span<const uint8_t> bytes = encoded(index, what);
     DecodedImage& out = mDecoded[index] = decodeImage(mCtx, bytes, what, mOptions.maxImageDimension);
     out.encodedBytes = bytes.size();
-    SceneLoadReport::TextureDecoding& stats = mScene.report.textureDecoding;
+    scene::SceneLoadReport::TextureDecoding& stats = mScene.report.textureDecoding;
     stats.milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++stats.formats[out.format];
     stats.encodedBytes += bytes.size();
@@ -224,14 +224,14 @@ DecodedImage& ImageTable::decoded(int index) {
 int ImageTable::resolve(int index, bool srgb) {
     if (auto it = mEntries.find({index, srgb}); it != mEntries.end()) return it->second;
     const tinygltf::Image& source = mModel.images[size_t(index)];
-    Image image;
+    scene::Image image;
     image.name = !source.name.empty() ? source.name
                  : (!source.uri.empty() && source.uri.rfind("data:", 0) != 0) ? source.uri
                                                                                : "image " + std::to_string(index);
     image.srgb = srgb;
     // The pixels move into the first entry; a second use (other encoding) copies from there.
     if (auto other = mEntries.find({index, !srgb}); other != mEntries.end()) {
-        const Image& first = mScene.images[size_t(other->second)];
+        const scene::Image& first = mScene.images[size_t(other->second)];
         image.width = first.width;
         image.height = first.height;
         image.rgba8 = first.rgba8;
@@ -257,4 +257,4 @@ int ImageTable::resolve(int index, bool srgb) {
     return entry;
 }
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

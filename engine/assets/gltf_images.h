@@ -21,7 +21,7 @@ class Model;
 struct Texture;
 }
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 
 struct DecodedImage {
     uint32_t width = 0;
@@ -65,7 +65,7 @@ int textureImage(const tinygltf::Texture& texture);
 class ImageTable {
 public:
     ImageTable(const LoadContext& ctx, const tinygltf::Model& model, std::map<int, std::vector<uint8_t>> uriImages,
-               const LoadOptions& options, Scene& scene);
+               const LoadOptions& options, scene::Scene& scene);
 
     // Fails, before anything is decoded, when the entries `uses` ((glTF image, srgb) pairs) would
     // exceed the options' per-image or per-scene decoded size. Indices out of range are skipped
@@ -88,8 +88,8 @@ private:
     std::map<int, std::vector<uint8_t>> mEncoded;
     std::map<int, DecodedImage> mDecoded;
     const LoadOptions& mOptions;
-    Scene& mScene;
+    scene::Scene& mScene;
     std::map<std::pair<int, bool>, int> mEntries;  // (glTF image, srgb) → Scene::images index
 };
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

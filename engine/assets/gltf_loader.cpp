@@ -18,7 +18,7 @@
 #include <new>
 #include <string_view>
 
-namespace candela::scene {
+namespace candela::assets {
 namespace gltf {
 
 // A file with thousands of line primitives must not bury the first, informative warnings.
@@ -126,7 +126,7 @@ void checkAsset(const gltf::LoadContext& ctx, const tinygltf::Model& model) {
 }
 
 void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, const std::filesystem::path& path,
-              const LoadOptions& options, Scene& scene) {
+              const LoadOptions& options, scene::Scene& scene) {
     gltf::ParsedFile parsed = gltf::parseGltf(ctx, bytes, path, options.maxImageDimension);
     tinygltf::Model& model = parsed.model;
     checkAsset(ctx, model);
@@ -143,14 +143,14 @@ void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, cons
     gltf::loadVariantNames(ctx, model, scene);
     gltf::loadNodes(ctx, model, options.sceneIndex, scene);
     gltf::loadAnimations(ctx, model, scene);
-    if (options.prepareGeometry) prepareGeometry(scene);
+    if (options.prepareGeometry) geometry::prepareGeometry(scene);
 }
 
 }  // namespace
 
-Scene loadGltfFromMemory(std::span<const uint8_t> bytes, const std::filesystem::path& path,
+scene::Scene loadGltfFromMemory(std::span<const uint8_t> bytes, const std::filesystem::path& path,
                          const LoadOptions& options) {
-    Scene scene;
+    scene::Scene scene;
     scene.source = path.string();
     const gltf::LoadContext ctx{path.string(), &scene.report.warnings, &scene.report.notes};
     try {
@@ -162,7 +162,7 @@ Scene loadGltfFromMemory(std::span<const uint8_t> bytes, const std::filesystem::
     return scene;
 }
 
-Scene loadGltf(const std::filesystem::path& path, const LoadOptions& options) {
+scene::Scene loadGltf(const std::filesystem::path& path, const LoadOptions& options) {
     std::vector<std::string> unused;
     const gltf::LoadContext ctx{path.string(), &unused, nullptr};
     std::vector<uint8_t> bytes;
@@ -174,4 +174,4 @@ Scene loadGltf(const std::filesystem::path& path, const LoadOptions& options) {
     return loadGltfFromMemory(bytes, path, options);
 }
 
-}  // namespace candela::scene
+}  // namespace candela::assets

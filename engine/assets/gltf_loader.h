@@ -9,7 +9,7 @@
 #include <optional>
 #include <span>
 
-namespace candela::scene {
+namespace candela::assets {
 
 struct LoadOptions {
     // Images whose declared width or height exceeds this are rejected before decoding.
@@ -32,11 +32,11 @@ struct LoadOptions {
 // (JSON errors, missing files, out-of-range accessors or indices, URIs escaping the model's
 // folder, unsupported required extensions, NaN positions...). Non-fatal issues (unsupported
 // optional extensions, skipped points/lines) go to Scene::warnings.
-Scene loadGltf(const std::filesystem::path& path, const LoadOptions& options = {});
+scene::Scene loadGltf(const std::filesystem::path& path, const LoadOptions& options = {});
 
 // As loadGltf, for a file's contents already in memory: `path` names the file in messages and its
 // folder is where relative URIs (buffers, images) are read from. Borrows `bytes` for the call.
-Scene loadGltfFromMemory(std::span<const uint8_t> bytes, const std::filesystem::path& path,
+scene::Scene loadGltfFromMemory(std::span<const uint8_t> bytes, const std::filesystem::path& path,
                          const LoadOptions& options = {});
 
-}  // namespace candela::scene
+}  // namespace candela::assets

@@ -11,17 +11,17 @@
 #include <optional>
 #include <set>
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 namespace {
 
-Filter magFilter(int filter) { return filter == TINYGLTF_TEXTURE_FILTER_NEAREST ? Filter::Nearest : Filter::Linear; }
+scene::Filter magFilter(int filter) { return filter == TINYGLTF_TEXTURE_FILTER_NEAREST ? scene::Filter::Nearest : scene::Filter::Linear; }
 
-Wrap wrapMode(const LoadContext& ctx, int wrap, const std::string& what) {
+scene::Wrap wrapMode(const LoadContext& ctx, int wrap, const std::string& what) {
     switch (wrap) {
-        case TINYGLTF_TEXTURE_WRAP_REPEAT: return Wrap::Repeat;
-        case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return Wrap::MirroredRepeat;
-        case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return Wrap::ClampToEdge;
-        default: ctx.warn(what + ": unknown wrap mode " + std::to_string(wrap) + ", using REPEAT"); return Wrap::Repeat;
+        case TINYGLTF_TEXTURE_WRAP_REPEAT: return scene::Wrap::Repeat;
+        case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return scene::Wrap::MirroredRepeat;
+        case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return scene::Wrap::ClampToEdge;
+        default: ctx.warn(what + ": unknown wrap mode " + std::to_string(wrap) + ", using REPEAT"); return scene::Wrap::Repeat;
     }
 }
 
@@ -49,9 +49,9 @@ float factor(const LoadContext& ctx, double value, double lo, double hi, const s
 }
 
 // Resolves one textureInfo (index, texCoord, extensions) to a TextureRef.
-TextureRef textureRef(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images, int index, int texCoord,
+scene::TextureRef textureRef(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images, int index, int texCoord,
                       const tinygltf::ExtensionMap& extensions, bool srgb, const std::string& what) {
-    TextureRef ref;
+    scene::TextureRef ref;
     if (index < 0) return ref;
     if (size_t(index) >= model.textures.size()) ctx.fail(what + ": texture " + std::to_string(index) + " does not exist");
     const tinygltf::Texture& texture = model.textures[size_t(index)];
@@ -79,7 +79,7 @@ TextureRef textureRef(const LoadContext& ctx, const tinygltf::Model& model, Imag
     if (set > 1) {
         ctx.warn(what + ": TEXCOORD_" + (set < 1e6 ? std::to_string(int64_t(set)) : std::string("N")) +
                  " is not supported (texture ignored)");
-        return TextureRef{};
+        return scene::TextureRef{};
     }
     ref.texCoord = uint32_t(set);
     ref.sampler = texture.sampler;
@@ -130,7 +130,7 @@ std::set<std::pair<int, bool>> imageUses(const tinygltf::Model& model) {
 }
 
 // A textureInfo inside an extension object (the schema check has vetted its types).
-TextureRef extensionTexture(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
+scene::TextureRef extensionTexture(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
                             const tinygltf::Value& extension, const char* key, bool srgb, const std::string& what) {
     if (!extension.Has(key)) return {};
     const tinygltf::Value& info = extension.Get(key);
@@ -173,7 +173,7 @@ void clampedFactors(const LoadContext& ctx, const tinygltf::Value& e, const char
 
 // KHR_materials_ior and KHR_materials_specular into `out`.
 void loadSpecular(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
-                  const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+                  const tinygltf::ExtensionMap& extensions, scene::Material& out, const std::string& what) {
     if (auto it = extensions.find("KHR_materials_ior"); it != extensions.end()) {
         if (auto ior = number(it->second, "ior")) {
             // 0 is allowed (f0 = 1: the specular-glossiness conversion); otherwise at least 1.
@@ -193,7 +193,7 @@ void loadSpecular(const LoadContext& ctx, const tinygltf::Model& model, ImageTab
 
 // KHR_materials_clearcoat into `out`.
 void loadClearcoat(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
-                   const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+                   const tinygltf::ExtensionMap& extensions, scene::Material& out, const std::string& what) {
     const tinygltf::Value* found = findExtension(extensions, "KHR_materials_clearcoat");
     if (!found) return;
     const tinygltf::Value& e = *found;
@@ -211,7 +211,7 @@ void loadClearcoat(const LoadContext& ctx, const tinygltf::Model& model, ImageTa
 
 // KHR_materials_sheen into `out`.
 void loadSheen(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
-               const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+               const tinygltf::ExtensionMap& extensions, scene::Material& out, const std::string& what) {
     const tinygltf::Value* found = findExtension(extensions, "KHR_materials_sheen");
     if (!found) return;
     const tinygltf::Value& e = *found;
@@ -224,7 +224,7 @@ void loadSheen(const LoadContext& ctx, const tinygltf::Model& model, ImageTable&
 
 // KHR_materials_anisotropy into `out`.
 void loadAnisotropy(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
-                    const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+                    const tinygltf::ExtensionMap& extensions, scene::Material& out, const std::string& what) {
     const tinygltf::Value* found = findExtension(extensions, "KHR_materials_anisotropy");
     if (!found) return;
     const tinygltf::Value& e = *found;
@@ -236,7 +236,7 @@ void loadAnisotropy(const LoadContext& ctx, const tinygltf::Model& model, ImageT
 
 // KHR_materials_transmission and KHR_materials_volume into `out`.
 void loadTransmission(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
-                      const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+                      const tinygltf::ExtensionMap& extensions, scene::Material& out, const std::string& what) {
     if (const tinygltf::Value* found = findExtension(extensions, "KHR_materials_transmission")) {
         const tinygltf::Value& e = *found;
         if (auto transmission = number(e, "transmissionFactor"))
@@ -260,7 +260,7 @@ void loadTransmission(const LoadContext& ctx, const tinygltf::Model& model, Imag
 
 // KHR_materials_diffuse_transmission into `out`.
 void loadDiffuseTransmission(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
-                             const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+                             const tinygltf::ExtensionMap& extensions, scene::Material& out, const std::string& what) {
     const tinygltf::Value* found = findExtension(extensions, "KHR_materials_diffuse_transmission");
     if (!found) return;
     const tinygltf::Value& e = *found;
@@ -273,7 +273,7 @@ void loadDiffuseTransmission(const LoadContext& ctx, const tinygltf::Model& mode
 
 // KHR_materials_dispersion into `out` (after the transmission and the volume: without a volume
 // beneath a transmitting surface it has nothing to spread, which a note says).
-void loadDispersion(const LoadContext& ctx, const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+void loadDispersion(const LoadContext& ctx, const tinygltf::ExtensionMap& extensions, scene::Material& out, const std::string& what) {
     const tinygltf::Value* found = findExtension(extensions, "KHR_materials_dispersion");
     if (!found) return;
     if (auto dispersion = number(*found, "dispersion"))
@@ -285,7 +285,7 @@ void loadDispersion(const LoadContext& ctx, const tinygltf::ExtensionMap& extens
 
 // KHR_materials_iridescence into `out`.
 void loadIridescence(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
-                     const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what) {
+                     const tinygltf::ExtensionMap& extensions, scene::Material& out, const std::string& what) {
     const tinygltf::Value* found = findExtension(extensions, "KHR_materials_iridescence");
     if (!found) return;
     const tinygltf::Value& e = *found;
@@ -303,11 +303,11 @@ void loadIridescence(const LoadContext& ctx, const tinygltf::Model& model, Image
 // A copy of image `source` whose G channel holds 1 − glossiness · A (roughness, as the
 // metallic-roughness texture's G), B = 0 (metallic) and R, A = 255; appended to scene.images once
 // per (image, glossiness) through `made`.
-int roughnessFromGlossiness(Scene& scene, int source, float glossiness, std::map<std::pair<int, float>, int>& made) {
+int roughnessFromGlossiness(scene::Scene& scene, int source, float glossiness, std::map<std::pair<int, float>, int>& made) {
     const auto key = std::pair{source, glossiness};
     if (auto it = made.find(key); it != made.end()) return it->second;
-    const Image& from = scene.images[size_t(source)];
-    Image out;
+    const scene::Image& from = scene.images[size_t(source)];
+    scene::Image out;
     out.name = from.name + " (roughness = 1 - glossiness)";
     out.width = from.width;
     out.height = from.height;
@@ -330,7 +330,7 @@ int roughnessFromGlossiness(Scene& scene, int source, float glossiness, std::map
 // specular colour texture and its A a derived roughness texture (docs/materials.md). Replaces the
 // material's metallic-roughness values.
 void loadSpecularGlossiness(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images,
-                            const tinygltf::ExtensionMap& extensions, Material& out, const std::string& what, Scene& scene,
+                            const tinygltf::ExtensionMap& extensions, scene::Material& out, const std::string& what, scene::Scene& scene,
                             std::map<std::pair<int, float>, int>& derived) {
     const tinygltf::Value* found = findExtension(extensions, "KHR_materials_pbrSpecularGlossiness");
     if (!found) return;
@@ -358,27 +358,27 @@ void loadSpecularGlossiness(const LoadContext& ctx, const tinygltf::Model& model
 
 }  // namespace
 
-void loadSamplers(const LoadContext& ctx, const tinygltf::Model& model, Scene& scene) {
+void loadSamplers(const LoadContext& ctx, const tinygltf::Model& model, scene::Scene& scene) {
     for (size_t i = 0; i < model.samplers.size(); ++i) {
         const tinygltf::Sampler& s = model.samplers[i];
         const std::string what = label("sampler", int(i), s.name);
-        Sampler out;
+        scene::Sampler out;
         out.magFilter = magFilter(s.magFilter);
         switch (s.minFilter) {
             case -1: break;  // undefined: our default, trilinear
-            case TINYGLTF_TEXTURE_FILTER_NEAREST: out.minFilter = Filter::Nearest, out.mipmaps = false; break;
-            case TINYGLTF_TEXTURE_FILTER_LINEAR: out.minFilter = Filter::Linear, out.mipmaps = false; break;
+            case TINYGLTF_TEXTURE_FILTER_NEAREST: out.minFilter = scene::Filter::Nearest, out.mipmaps = false; break;
+            case TINYGLTF_TEXTURE_FILTER_LINEAR: out.minFilter = scene::Filter::Linear, out.mipmaps = false; break;
             case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
-                out.minFilter = Filter::Nearest, out.mipFilter = Filter::Nearest;
+                out.minFilter = scene::Filter::Nearest, out.mipFilter = scene::Filter::Nearest;
                 break;
             case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
-                out.minFilter = Filter::Linear, out.mipFilter = Filter::Nearest;
+                out.minFilter = scene::Filter::Linear, out.mipFilter = scene::Filter::Nearest;
                 break;
             case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
-                out.minFilter = Filter::Nearest, out.mipFilter = Filter::Linear;
+                out.minFilter = scene::Filter::Nearest, out.mipFilter = scene::Filter::Linear;
                 break;
             case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR:
-                out.minFilter = Filter::Linear, out.mipFilter = Filter::Linear;
+                out.minFilter = scene::Filter::Linear, out.mipFilter = scene::Filter::Linear;
                 break;
             default: ctx.warn(what + ": unknown minFilter " + std::to_string(s.minFilter) + ", using trilinear");
         }
@@ -388,14 +388,14 @@ void loadSamplers(const LoadContext& ctx, const tinygltf::Model& model, Scene& s
     }
 }
 
-void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images, Scene& scene) {
+void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images, scene::Scene& scene) {
     images.checkDecodedSize(imageUses(model));
     std::map<std::pair<int, float>, int> derivedImages;  // roughness images made from glossiness
     for (size_t i = 0; i < model.materials.size(); ++i) {
         const tinygltf::Material& m = model.materials[i];
         const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
         const std::string what = label("material", int(i), m.name);
-        Material out;
+        scene::Material out;
         out.name = m.name.empty() ? "material " + std::to_string(i) : m.name;
         if (pbr.baseColorFactor.size() != 4) ctx.fail(what + ": baseColorFactor must have 4 components");
         for (int c = 0; c < 4; ++c) out.baseColorFactor[c] = factor(ctx, pbr.baseColorFactor[size_t(c)], 0, 1, what + " baseColorFactor");
@@ -407,9 +407,9 @@ void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTa
         out.occlusionStrength = factor(ctx, m.occlusionTexture.strength, 0, 1, what + " occlusionTexture.strength");
         out.alphaCutoff = factor(ctx, m.alphaCutoff, 0, 1e6, what + " alphaCutoff");
         out.doubleSided = m.doubleSided;
-        if (m.alphaMode == "OPAQUE") out.alphaMode = AlphaMode::Opaque;
-        else if (m.alphaMode == "MASK") out.alphaMode = AlphaMode::Mask;
-        else if (m.alphaMode == "BLEND") out.alphaMode = AlphaMode::Blend;
+        if (m.alphaMode == "OPAQUE") out.alphaMode = scene::AlphaMode::Opaque;
+        else if (m.alphaMode == "MASK") out.alphaMode = scene::AlphaMode::Mask;
+        else if (m.alphaMode == "BLEND") out.alphaMode = scene::AlphaMode::Blend;
         else ctx.warn(what + ": unknown alphaMode '" + m.alphaMode + "', using OPAQUE");
 
         if (auto it = m.extensions.find("KHR_materials_emissive_strength"); it != m.extensions.end()) {
@@ -442,7 +442,7 @@ void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTa
     }
 }
 
-void loadVariantNames(const LoadContext& ctx, const tinygltf::Model& model, Scene& scene) {
+void loadVariantNames(const LoadContext& ctx, const tinygltf::Model& model, scene::Scene& scene) {
     const auto it = model.extensions.find("KHR_materials_variants");
     if (it == model.extensions.end() || !it->second.Has("variants")) return;
     const tinygltf::Value& variants = it->second.Get("variants");
@@ -456,7 +456,7 @@ void loadVariantNames(const LoadContext& ctx, const tinygltf::Model& model, Scen
 }
 
 std::vector<std::pair<uint32_t, uint32_t>> primitiveVariants(const LoadContext& ctx, const tinygltf::Primitive& primitive,
-                                                             const Scene& scene, const std::string& what) {
+                                                             const scene::Scene& scene, const std::string& what) {
     std::vector<std::pair<uint32_t, uint32_t>> out;
     const auto it = primitive.extensions.find("KHR_materials_variants");
     if (it == primitive.extensions.end() || !it->second.Has("mappings")) return out;
@@ -480,4 +480,4 @@ std::vector<std::pair<uint32_t, uint32_t>> primitiveVariants(const LoadContext& 
     return out;
 }
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

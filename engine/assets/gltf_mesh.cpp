@@ -13,7 +13,7 @@
 #include <limits>
 #include <numeric>
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 namespace {
 
 const char* modeName(int mode) {
@@ -34,7 +34,7 @@ struct Attributes {
 };
 
 Attributes readAttributes(const LoadContext& ctx, const tinygltf::Model& model, const tinygltf::Primitive& primitive,
-                          const std::string& what, std::vector<Vertex>& vertices) {
+                          const std::string& what, std::vector<scene::Vertex>& vertices) {
     const size_t count = vertices.size();
     auto read = [&](const char* name, std::initializer_list<int> types) {
         auto it = primitive.attributes.find(name);
@@ -61,19 +61,19 @@ Attributes readAttributes(const LoadContext& ctx, const tinygltf::Model& model, 
         return fallback;
     };
     for (size_t i = 0; i < count; ++i) {
-        Vertex& v = vertices[i];
+        scene::Vertex& v = vertices[i];
         if (!uv0.empty()) v.uv0 = glm::vec2(orDefault(0, uv0[i], glm::vec4(0.0f)));
         if (!uv1.empty()) v.uv1 = glm::vec2(orDefault(1, uv1[i], glm::vec4(0.0f)));
         if (!colors.empty()) v.color = orDefault(2, rgb ? glm::vec4(glm::vec3(colors[i]), 1.0f) : colors[i], glm::vec4(1.0f));
         if (!normals.empty()) {
             const glm::vec3 n(orDefault(3, normals[i], glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)));
             // Zero-length normals stay zero (the shader copes); others are made unit length.
-            v.normal = normalizeOrZero(n);
+            v.normal = geometry::normalizeOrZero(n);
         }
         if (!tangents.empty() && !normals.empty()) {
             const glm::vec4 t = orDefault(4, tangents[i], glm::vec4(0.0f));
-            const glm::vec3 xyz = normalizeOrZero(glm::vec3(t));
-            v.tangent = xyz != glm::vec3(0.0f) ? glm::vec4(xyz, t.w < 0.0f ? -1.0f : 1.0f) : fallbackTangent(v.normal);
+            const glm::vec3 xyz = geometry::normalizeOrZero(glm::vec3(t));
+            v.tangent = xyz != glm::vec3(0.0f) ? glm::vec4(xyz, t.w < 0.0f ? -1.0f : 1.0f) : geometry::fallbackTangent(v.normal);
         }
     }
     constexpr std::array<const char*, 5> kNames = {"TEXCOORD_0", "TEXCOORD_1", "COLOR_0", "NORMAL", "TANGENT"};
@@ -87,19 +87,19 @@ Attributes readAttributes(const LoadContext& ctx, const tinygltf::Model& model, 
 // MikkTSpace tangents for the UV set of `tangentMap` (a normal map, or the texture an anisotropy
 // direction follows); corners of one vertex that get different tangents (mirrored UVs, seams)
 // become separate vertices.
-void generateVertexTangents(const LoadContext& ctx, const std::string& what, const TextureRef& tangentMap,
-                            const Attributes& attributes, std::vector<Vertex>& vertices, std::vector<uint32_t>& indices,
+void generateVertexTangents(const LoadContext& ctx, const std::string& what, const scene::TextureRef& tangentMap,
+                            const Attributes& attributes, std::vector<scene::Vertex>& vertices, std::vector<uint32_t>& indices,
                             std::vector<uint32_t>& origin) {
     const uint32_t set = tangentMap.texCoord;
     if (!attributes.uv[set]) {
         ctx.warn(what + ": its tangent frame (normal map or anisotropy) follows TEXCOORD_" + std::to_string(set) +
                  ", which the primitive lacks; tangents are arbitrary");
-        for (Vertex& v : vertices) v.tangent = fallbackTangent(v.normal);
+        for (scene::Vertex& v : vertices) v.tangent = geometry::fallbackTangent(v.normal);
         return;
     }
     // The tangent frame follows the texture's own axes, so the UVs go through its transform (offset
     // does not change derivatives and is left out).
-    TextureTransform linear = tangentMap.transform;
+    scene::TextureTransform linear = tangentMap.transform;
     linear.offset = glm::vec2(0.0f);
     std::vector<glm::vec3> positions(vertices.size()), normals(vertices.size());
     std::vector<glm::vec2> uvs(vertices.size());
@@ -107,11 +107,11 @@ void generateVertexTangents(const LoadContext& ctx, const std::string& what, con
         positions[i] = vertices[i].position;
         normals[i] = vertices[i].normal;
         const glm::vec2 uv = set == 0 ? vertices[i].uv0 : vertices[i].uv1;
-        uvs[i] = linear.identity() ? uv : applyTextureTransform(linear, uv);
+        uvs[i] = linear.identity() ? uv : scene::applyTextureTransform(linear, uv);
     }
-    const std::vector<glm::vec4> tangents = generateTangents(positions, normals, uvs, indices);
+    const std::vector<glm::vec4> tangents = geometry::generateTangents(positions, normals, uvs, indices);
 
-    std::vector<Vertex> split;
+    std::vector<scene::Vertex> split;
     split.reserve(vertices.size());
     std::vector<uint32_t> splitOrigin;
     std::vector<int64_t> first(vertices.size(), -1);  // first split vertex made from each vertex
@@ -162,7 +162,7 @@ std::vector<uint32_t> toTriangleList(int mode, std::span<const uint32_t> in) {
     return out;
 }
 
-size_t dropZeroAreaTriangles(std::span<const Vertex> vertices, std::vector<uint32_t>& indices) {
+size_t dropZeroAreaTriangles(std::span<const scene::Vertex> vertices, std::vector<uint32_t>& indices) {
     size_t kept = 0;
     for (size_t t = 0; t + 2 < indices.size(); t += 3) {
         const glm::dvec3 a(vertices[indices[t]].position), b(vertices[indices[t + 1]].position),
@@ -177,7 +177,7 @@ size_t dropZeroAreaTriangles(std::span<const Vertex> vertices, std::vector<uint3
 }
 
 PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model& model, int meshIndex, int primitiveIndex,
-                                  const TextureRef* tangentMap, Scene& scene) {
+                                  const scene::TextureRef* tangentMap, scene::Scene& scene) {
     const tinygltf::Mesh& mesh = model.meshes[size_t(meshIndex)];
     const tinygltf::Primitive& primitive = mesh.primitives[size_t(primitiveIndex)];
     const std::string what = label("mesh", meshIndex, mesh.name) + " primitive " + std::to_string(primitiveIndex);
@@ -197,7 +197,7 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
 
     const std::vector<glm::vec4> positions = readVectors(ctx, model, position->second, {TINYGLTF_TYPE_VEC3}, what + " POSITION");
     const size_t count = positions.size();
-    std::vector<Vertex> vertices(count);
+    std::vector<scene::Vertex> vertices(count);
     for (size_t i = 0; i < count; ++i) {
         if (!finite(positions[i])) ctx.fail(what + " POSITION: vertex " + std::to_string(i) + " is not finite (NaN or infinity)");
         vertices[i].position = glm::vec3(positions[i]);
@@ -231,7 +231,7 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
     // Both steps may split vertices: `origin` maps each vertex to the file's vertex it came from.
     std::vector<uint32_t> origin(vertices.size());
     std::iota(origin.begin(), origin.end(), 0u);
-    if (!attributes.normals) makeFlatNormals(vertices, indices, origin);
+    if (!attributes.normals) geometry::makeFlatNormals(vertices, indices, origin);
     const bool haveTangents = attributes.tangents && attributes.normals;
     if (!haveTangents && tangentMap)
         generateVertexTangents(ctx, what, *tangentMap, attributes, vertices, indices, origin);
@@ -252,9 +252,9 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
     if (!deformation.empty()) {
         out.deformation = int32_t(scene.deformations.size());
         out.renormalizedWeights = deformation.renormalized;
-        scene.deformations.push_back(remapDeformation(deformation, origin, uint32_t(base)));
+        scene.deformations.push_back(assets::gltf::remapDeformation(deformation, origin, uint32_t(base)));
     }
     return out;
 }
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

@@ -12,13 +12,13 @@ namespace tinygltf {
 class Model;
 }
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 
 struct PrimitiveGeometry {
     bool drawable = false;  // false: skipped (points, lines, no POSITION, no triangles), with a warning
     uint32_t firstIndex = 0;
     uint32_t indexCount = 0;
-    Aabb bounds;  // local (mesh) space
+    scene::Aabb bounds;  // local (mesh) space
     int32_t deformation = -1;        // Scene::deformations entry (morph targets, skin weights)
     size_t renormalizedWeights = 0;  // vertices whose skin weights were more than 1% off 1
 };
@@ -32,7 +32,7 @@ struct PrimitiveGeometry {
 // Throws UserError (via ctx) on malformed data: out-of-range accessors or indices, non-finite
 // positions, attribute counts that differ from POSITION's.
 PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model& model, int mesh, int primitive,
-                                  const TextureRef* tangentMap, Scene& scene);
+                                  const scene::TextureRef* tangentMap, scene::Scene& scene);
 
 // Converts an index sequence of glTF topology `mode` (TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN)
 // to a triangle list with the winding the specification defines. Strip and fan triangles that
@@ -42,6 +42,6 @@ std::vector<uint32_t> toTriangleList(int mode, std::span<const uint32_t> indices
 // Removes the triangles of a triangle list whose corners are collinear or coincide (exactly zero
 // area: they cover no pixel and give no normal or tangent); returns how many were removed.
 // Precondition: every index < vertices.size().
-size_t dropZeroAreaTriangles(std::span<const Vertex> vertices, std::vector<uint32_t>& indices);
+size_t dropZeroAreaTriangles(std::span<const scene::Vertex> vertices, std::vector<uint32_t>& indices);
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

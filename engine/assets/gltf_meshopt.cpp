@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 namespace {
 
 constexpr const char* kMeshoptExtension = "EXT_meshopt_compression";
@@ -167,4 +167,4 @@ size_t decodeMeshoptBufferViews(const LoadContext& ctx, tinygltf::Model& model) 
     return moved.size();
 }
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

@@ -14,7 +14,7 @@ namespace tinygltf {
 class Model;
 }
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 
 // A file that requires the extension may give its placeholder ("fallback") buffers no URI, which
 // tinygltf refuses. In a document `doc` that uses EXT_meshopt_compression, replaces every buffer
@@ -32,4 +32,4 @@ bool emptyMeshoptFallbackBuffers(nlohmann::json& doc, bool binary);
 // not decode. Returns the number of views decoded.
 size_t decodeMeshoptBufferViews(const LoadContext& ctx, tinygltf::Model& model);
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

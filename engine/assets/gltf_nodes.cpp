@@ -20,7 +20,7 @@
 #include <optional>
 #include <span>
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -31,8 +31,8 @@ bool allFinite(const std::vector<double>& values) {
     return true;
 }
 
-NodeTransform localTransform(const LoadContext& ctx, const tinygltf::Node& node, const std::string& what) {
-    NodeTransform t;
+animation::NodeTransform localTransform(const LoadContext& ctx, const tinygltf::Node& node, const std::string& what) {
+    animation::NodeTransform t;
     if (!node.matrix.empty()) {
         if (node.matrix.size() != 16) ctx.fail(what + ": matrix must have 16 numbers");
         if (!allFinite(node.matrix)) ctx.fail(what + ": matrix is not finite");
@@ -100,7 +100,7 @@ class NodeWalker {
 public:
     // Nodes some animation channel moves, by a core channel or a pointer (bad indices are reported
     // by loadAnimations).
-    NodeWalker(const LoadContext& ctx, const tinygltf::Model& model, Scene& scene)
+    NodeWalker(const LoadContext& ctx, const tinygltf::Model& model, scene::Scene& scene)
         : mCtx(ctx), mModel(model), mScene(scene), mGltfMaterials(scene.materials.size()), mTargeted(animatedNodes(model)) {}
 
     void walk(const std::vector<int>& roots) {
@@ -128,7 +128,7 @@ public:
                 mCtx.fail(what + ": reached twice (a node must have at most one parent and appear once in the scene)");
             visited[size_t(item.node)] = onPath[size_t(item.node)] = 1;
             // Depth-first: the parent is already in Scene::nodes, before this node.
-            SceneNode sceneNode{.name = node.name, .source = item.node, .parent = item.parent,
+            animation::SceneNode sceneNode{.name = node.name, .source = item.node, .parent = item.parent,
                                 .transform = localTransform(mCtx, node, what),
                                 .weights = morphWeights(mCtx, mModel, node, what),
                                 .visible = visibleFlag(node)};
@@ -154,30 +154,30 @@ public:
         for (size_t i = 0; i < mScene.nodes.size(); ++i) sceneNode[size_t(mScene.nodes[i].source)] = int32_t(i);
         std::map<int, int32_t> skins;  // glTF skin → Scene::skins
         std::vector<glm::dmat4> joints;
-        for (Draw& draw : mScene.draws) {
+        for (scene::Draw& draw : mScene.draws) {
             if (draw.skin >= 0) {
                 auto [it, added] = skins.try_emplace(draw.skin, int32_t(mScene.skins.size()));
                 if (added) mScene.skins.push_back(loadSkin(draw.skin, sceneNode));
-                const Skin& skin = mScene.skins[size_t(it->second)];
-                const Deformation& deformation = mScene.deformations[size_t(draw.deformation)];
+                const scene::Skin& skin = mScene.skins[size_t(it->second)];
+                const scene::Deformation& deformation = mScene.deformations[size_t(draw.deformation)];
                 if (deformation.maxJoint >= skin.joints.size())
                     mCtx.fail(label("skin", draw.skin, skin.name) + ": a vertex names joint " + std::to_string(deformation.maxJoint) +
                               ", but the skin has " + std::to_string(skin.joints.size()) + " joints");
                 draw.skin = it->second;
-                jointMatrices(skin, mScene.nodes, joints);
+                pose::jointMatrices(skin, mScene.nodes, joints);
                 // As for a rigid mesh: a rest pose beyond a float (huge inverse bind or joint
                 // matrices) fails the file rather than leaving infinite bounds.
-                if (placeSkinnedDraw(draw, skinnedBounds(jointMeshBounds(deformation, skin, mScene.vertices), joints,
-                                                         morphReach(deformation, mScene.nodes[size_t(draw.node)].weights))) !=
-                    Placement::Placed)
+                if (pose::placeSkinnedDraw(draw, pose::skinnedBounds(pose::jointMeshBounds(deformation, skin, mScene.vertices), joints,
+                                                         pose::morphReach(deformation, mScene.nodes[size_t(draw.node)].weights))) !=
+                    pose::Placement::Placed)
                     mCtx.fail(label("skin", int(it->first), skin.name) + ": the skinned mesh's rest pose is beyond single precision");
                 draw.hidden = !mScene.nodes[size_t(draw.node)].shown;
             }
             if (!draw.hidden) mScene.bounds.extend(draw.bounds);
         }
         if (!mScene.bounds.valid() && !mScene.draws.empty()) {
-            for (const Draw& draw : mScene.draws) mScene.bounds.extend(draw.bounds);
-            if (std::any_of(mScene.draws.begin(), mScene.draws.end(), [&](const Draw& d) { return !mScene.nodes[size_t(d.node)].shown; }))
+            for (const scene::Draw& draw : mScene.draws) mScene.bounds.extend(draw.bounds);
+            if (std::any_of(mScene.draws.begin(), mScene.draws.end(), [&](const scene::Draw& d) { return !mScene.nodes[size_t(d.node)].shown; }))
                 mCtx.warn("every node is hidden (KHR_node_visibility): framing uses the hidden geometry");
         }
         if (mRenormalizedWeights)
@@ -189,7 +189,7 @@ public:
     size_t meshNodes() const { return mMeshNodes; }
 
 private:
-    Skin loadSkin(int index, const std::vector<int32_t>& sceneNode) {
+    scene::Skin loadSkin(int index, const std::vector<int32_t>& sceneNode) {
         const tinygltf::Skin& source = mModel.skins[size_t(index)];
         const std::string what = label("skin", index, source.name);
         // JOINTS are unsigned bytes or shorts: no vertex can name a joint beyond 65535.
@@ -198,7 +198,7 @@ private:
             mCtx.fail(what + ": " + std::to_string(source.joints.size()) + " joints, more than the " +
                       std::to_string(kMaxJoints) + " a vertex can name");
         if (source.joints.empty()) mCtx.fail(what + ": no joints");
-        Skin skin{.name = source.name};
+        scene::Skin skin{.name = source.name};
         for (int joint : source.joints) {
             if (joint < 0 || size_t(joint) >= mModel.nodes.size())
                 mCtx.fail(what + ": joint node " + std::to_string(joint) + " does not exist");
@@ -237,7 +237,7 @@ private:
         }
         if (mDefaultMaterial < 0) {
             mDefaultMaterial = int(mScene.materials.size());
-            mScene.materials.push_back(Material{.name = "default"});
+            mScene.materials.push_back(scene::Material{.name = "default"});
         }
         return uint32_t(mDefaultMaterial);
     }
@@ -276,7 +276,7 @@ private:
         if (!count) mCtx.fail(ext + ": none of TRANSLATION, ROTATION, SCALE");
         std::vector<glm::mat4> out(*count);
         for (size_t i = 0; i < *count; ++i) {
-            NodeTransform transform;
+            animation::NodeTransform transform;
             if (!t.empty()) transform.translation = glm::dvec3(t[3 * i], t[3 * i + 1], t[3 * i + 2]);
             if (!r.empty()) {
                 const glm::dquat q(r[4 * i + 3], r[4 * i], r[4 * i + 1], r[4 * i + 2]);
@@ -295,9 +295,9 @@ private:
         // A zero scale on any axis (here or inherited) flattens the mesh to nothing visible and
         // leaves no normal matrix: a static node's draws are left out, an animated one's are kept,
         // hidden until the animation scales them up. (A skinned mesh ignores its node's transform.)
-        Draw probe{.localBounds = Aabb{glm::vec3(0.0f), glm::vec3(0.0f)}};
+        scene::Draw probe{.localBounds = scene::Aabb{glm::vec3(0.0f), glm::vec3(0.0f)}};
         const bool movable = mMovable[size_t(sceneNode)];
-        if (skin < 0 && placeDraw(probe, world) == Placement::Singular && !movable)
+        if (skin < 0 && pose::placeDraw(probe, world) == pose::Placement::Singular && !movable)
             return mCtx.tally(Severity::Note, {"node", "zero scale, not drawn"}, what);
         // Instances, in at most two groups — those that mirror and those that do not — so that each
         // draw has one winding; shared by the mesh's primitives.
@@ -327,7 +327,7 @@ private:
             auto cached = mGeometry.find({meshIndex, int(p)});
             if (cached == mGeometry.end()) {
                 // Tangents follow the first normal map among the materials the primitive may wear.
-                std::optional<TextureRef> tangentMap = mScene.materials[material].tangentSpaceMap();
+                std::optional<scene::TextureRef> tangentMap = mScene.materials[material].tangentSpaceMap();
                 for (const auto& [variant, m] : variants)
                     if (!tangentMap) tangentMap = mScene.materials[m].tangentSpaceMap();
                 cached = mGeometry.emplace(std::pair{meshIndex, int(p)},
@@ -341,7 +341,7 @@ private:
             const bool skinned = skin >= 0 && geometry.deformation >= 0 &&
                                  mScene.deformations[size_t(geometry.deformation)].influencesPerVertex > 0;
             for (const auto& [first, count] : groups) {
-                Draw draw{.firstIndex = geometry.firstIndex,
+                scene::Draw draw{.firstIndex = geometry.firstIndex,
                           .indexCount = geometry.indexCount,
                           .material = material,
                           .localBounds = geometry.bounds,
@@ -352,9 +352,9 @@ private:
                           .instanceCount = count};
                 // The world matrix itself was checked to fit a float as the node was reached.
                 const glm::vec3 reach = geometry.deformation >= 0
-                                            ? morphReach(mScene.deformations[size_t(geometry.deformation)], mScene.nodes[size_t(sceneNode)].weights)
+                                            ? pose::morphReach(mScene.deformations[size_t(geometry.deformation)], mScene.nodes[size_t(sceneNode)].weights)
                                             : glm::vec3(0.0f);
-                if (!skinned && placeDraw(draw, world, reach, std::span(mScene.instances).subspan(first, count)) == Placement::BeyondFloat)
+                if (!skinned && pose::placeDraw(draw, world, reach, std::span(mScene.instances).subspan(first, count)) == pose::Placement::BeyondFloat)
                     mCtx.fail(what + ": a corner of its mesh in world space is beyond single precision");
                 // KHR_node_visibility: hidden with its node (an animation may show it).
                 if (!mScene.nodes[size_t(sceneNode)].shown) draw.hidden = true;
@@ -369,11 +369,11 @@ private:
         if (size_t(node.camera) >= mModel.cameras.size()) mCtx.fail(what + ": camera " + std::to_string(node.camera) + " does not exist");
         const tinygltf::Camera& source = mModel.cameras[size_t(node.camera)];
         const std::string cameraWhat = label("camera", node.camera, source.name);
-        Camera camera;
+        scene::Camera camera;
         camera.node = sceneNode;
         camera.source = node.camera;
         camera.name = !source.name.empty() ? source.name : !node.name.empty() ? node.name : "camera " + std::to_string(node.camera);
-        if (!placeCamera(camera, world)) return mCtx.warn(cameraWhat + ": degenerate node transform, camera skipped");
+        if (!pose::placeCamera(camera, world)) return mCtx.warn(cameraWhat + ": degenerate node transform, camera skipped");
         bool valid = false;
         auto fits = [](std::initializer_list<double> values) { return std::all_of(values.begin(), values.end(), fitsFloat); };
         if (source.type == "perspective") {
@@ -410,13 +410,13 @@ private:
             mCtx.fail(what + ": KHR_lights_punctual light index is missing or out of range");
         const tinygltf::Light& source = mModel.lights[size_t(i)];
         const std::string lightWhat = label("light", int(i), source.name);
-        Light light;
+        scene::Light light;
         light.node = sceneNode;
         light.source = int32_t(i);
         light.hidden = !mScene.nodes[size_t(sceneNode)].shown;  // KHR_node_visibility
-        if (source.type == "directional") light.type = LightType::Directional;
-        else if (source.type == "point") light.type = LightType::Point;
-        else if (source.type == "spot") light.type = LightType::Spot;
+        if (source.type == "directional") light.type = scene::LightType::Directional;
+        else if (source.type == "point") light.type = scene::LightType::Point;
+        else if (source.type == "spot") light.type = scene::LightType::Spot;
         else return mCtx.warn(lightWhat + ": unknown type '" + source.type + "', light skipped");
         if (source.color.size() == 3 && allFinite(source.color))
             light.color = glm::max(glm::vec3(toFloat(mCtx, source.color[0], lightWhat + " color"),
@@ -433,13 +433,13 @@ private:
         // 0 <= inner < outer <= π/2, as the extension requires.
         light.outerConeAngle = float(std::clamp(source.spot.outerConeAngle, 1e-4, kPi / 2));
         light.innerConeAngle = float(std::clamp(source.spot.innerConeAngle, 0.0, double(light.outerConeAngle) * 0.9999));
-        placeLight(light, world);
+        pose::placeLight(light, world);
         mScene.lights.push_back(light);
     }
 
     const LoadContext& mCtx;
     const tinygltf::Model& mModel;
-    Scene& mScene;
+    scene::Scene& mScene;
     size_t mGltfMaterials;
     int mDefaultMaterial = -1;
     std::map<std::pair<int, int>, PrimitiveGeometry> mGeometry;  // (mesh, primitive) → converted once
@@ -451,7 +451,7 @@ private:
 
 }  // namespace
 
-void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, std::optional<uint32_t> sceneIndex, Scene& scene) {
+void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, std::optional<uint32_t> sceneIndex, scene::Scene& scene) {
     std::vector<int> roots;
     if (model.scenes.empty()) {
         // No scene: draw every parentless node rather than nothing.
@@ -490,4 +490,4 @@ void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, std::option
     }
 }
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

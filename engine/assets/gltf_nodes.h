@@ -10,7 +10,7 @@ namespace tinygltf {
 class Model;
 }
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 
 // Walks scene `sceneIndex` (unset: the file's default scene, else scene 0; every parentless node
 // if the file has no scenes) and records the file's scene names and the one chosen, composing TRS or matrix transforms. Appends one Draw per (node, mesh primitive) —
@@ -19,6 +19,6 @@ namespace candela::scene::gltf {
 // hides are kept, hidden; sets scene.bounds (of the draws not hidden). Precondition: the glTF
 // materials are already in scene.materials (same order); a default material is appended if a
 // primitive has none. Throws UserError on cycles, nodes reachable twice, and bad indices.
-void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, std::optional<uint32_t> sceneIndex, Scene& scene);
+void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, std::optional<uint32_t> sceneIndex, scene::Scene& scene);
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

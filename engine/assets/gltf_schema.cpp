@@ -5,7 +5,7 @@
 #include <functional>
 #include <string>
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 namespace {
 
 using Json = nlohmann::json;
@@ -327,4 +327,4 @@ void checkGltfJson(const LoadContext& ctx, std::string_view json) {
     checkDocument(Checker(ctx), root);
 }
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

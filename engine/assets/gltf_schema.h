@@ -8,7 +8,7 @@
 
 #include <string_view>
 
-namespace candela::scene::gltf {
+namespace candela::assets::gltf {
 
 // Parses `json` and checks it: the root is an object with an "asset" object whose "version" is a
 // string; every top-level array is an array of objects; indices are non-negative integers;
@@ -20,4 +20,4 @@ namespace candela::scene::gltf {
 // not checked. Fails via ctx with "invalid glTF: PATH: expected ..." or the JSON parser's message.
 void checkGltfJson(const LoadContext& ctx, std::string_view json);
 
-}  // namespace candela::scene::gltf
+}  // namespace candela::assets::gltf

@@ -12,7 +12,7 @@
 #include <optional>
 #include <string_view>
 
-namespace candela::scene {
+namespace candela::assets {
 namespace {
 
 constexpr size_t kMaxHeaderBytes = 64 * 1024;
@@ -263,4 +263,4 @@ Environment decodeHdr(std::span<const uint8_t> bytes, const std::string& source,
     return env;
 }
 
-}  // namespace candela::scene
+}  // namespace candela::assets

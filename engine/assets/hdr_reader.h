@@ -18,7 +18,7 @@
 #include <span>
 #include <string>
 
-namespace candela::scene {
+namespace candela::assets {
 
 // True when `bytes` starts with the Radiance magic "#?".
 bool looksLikeHdr(std::span<const uint8_t> bytes);
@@ -28,4 +28,4 @@ bool looksLikeHdr(std::span<const uint8_t> bytes);
 // Throws UserError "SOURCE: problem" for anything malformed; never reads outside `bytes`.
 Environment decodeHdr(std::span<const uint8_t> bytes, const std::string& source, const EnvironmentLoadOptions& options);
 
-}  // namespace candela::scene
+}  // namespace candela::assets

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::io {
+namespace candela::assets {
 namespace {
 
 std::string lowerExtension(const std::filesystem::path& path) {
@@ -117,4 +117,4 @@ std::string pngChunkProblem(std::span<const uint8_t> bytes) {
     return "";
 }
 
-}  // namespace candela::io
+}  // namespace candela::assets

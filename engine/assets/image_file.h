@@ -8,7 +8,7 @@
 #include <span>
 #include <string>
 
-namespace candela::io {
+namespace candela::assets {
 
 enum class ImageFileFormat { Png, Exr, Pfm };
 
@@ -36,4 +36,4 @@ void writePfm(const std::filesystem::path& path, uint32_t width, uint32_t height
 // gigabytes: callers check this first. Precondition: `bytes` starts with the PNG signature.
 std::string pngChunkProblem(std::span<const uint8_t> bytes);
 
-}  // namespace candela::io
+}  // namespace candela::assets

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace candela::scene {
+namespace candela::assets {
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
@@ -94,4 +94,4 @@ Environment makeProceduralSky(const SkyParams& params) {
     return env;
 }
 
-}  // namespace candela::scene
+}  // namespace candela::assets

@@ -20,7 +20,7 @@
 
 #include <glm/glm.hpp>
 
-namespace candela::scene {
+namespace candela::assets {
 
 struct SkyParams {
     uint32_t width = 512;   // equirectangular size; 1 ≤ width ≤ 16384, 1 ≤ height ≤ 8192
@@ -49,4 +49,4 @@ glm::vec3 sunDirection(const SkyParams& params);
 // or beyond 16384 × 8192, or non-finite parameters. All texels are finite and ≥ 0.
 Environment makeProceduralSky(const SkyParams& params = {});
 
-}  // namespace candela::scene
+}  // namespace candela::assets

@@ -1,7 +1,7 @@
 #pragma once
 // LoadReport: what reading one input met, one line each, kept beside what was read for the front
 // end to print. The readers' results carry one each: scene::Scene (with what loading cost:
-// scene::SceneLoadReport), scene::Environment, textures::DecodedTexture and io::ComparedImage.
+// scene::SceneLoadReport), assets::Environment, textures::DecodedTexture and reports::ComparedImage.
 
 #include <string>
 #include <vector>

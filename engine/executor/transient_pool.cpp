@@ -146,14 +146,14 @@ void TransientPool::realize(const GraphDecl& decl, const CompiledGraph& compiled
             mHeaps.push_back(mContext->allocator().allocate(
                 requirements, vk::MemoryUsage::GpuOnly,
                 heap.kind == ResourceKind::Texture ? vk::ResourceTiling::Optimal : vk::ResourceTiling::Linear));
-        } catch (const OutOfDeviceMemory& e) {
+        } catch (const vk::OutOfDeviceMemory& e) {
             // Name what the heap was for: the transients placed in it.
             std::string residents;
             for (uint32_t r = 0; r < decl.resources.size(); ++r)
                 if (compiled.placements[r].heap == mHeaps.size())
                     residents += (residents.empty() ? "" : ", ") + decl.resources[r].name;
             release();
-            throw OutOfDeviceMemory("cannot allocate the render graph's transient heap of " + formatBytes(heap.size) +
+            throw vk::OutOfDeviceMemory("cannot allocate the render graph's transient heap of " + formatBytes(heap.size) +
                                     " (for " + residents + "): " + e.what());
         }
     }

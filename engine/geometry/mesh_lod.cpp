@@ -6,15 +6,15 @@
 #include <cmath>
 #include <limits>
 
-namespace candela::scene {
+namespace candela::geometry {
 
 namespace {
 
 // A uniform grid over the triangles of a list, answering "how far is this point from the surface".
 class SurfaceGrid {
 public:
-    SurfaceGrid(std::span<const Vertex> vertices, std::span<const uint32_t> indices) : mVertices(vertices), mIndices(indices) {
-        Aabb bounds;
+    SurfaceGrid(std::span<const scene::Vertex> vertices, std::span<const uint32_t> indices) : mVertices(vertices), mIndices(indices) {
+        scene::Aabb bounds;
         for (uint32_t i : indices) bounds.extend(vertices[i].position);
         mOrigin = bounds.min;
         const glm::vec3 extent = glm::max(bounds.max - bounds.min, glm::vec3(1e-12f));
@@ -25,7 +25,7 @@ public:
         // Triangles listed in every cell their box overlaps (counting sort into one array).
         std::vector<uint32_t> counts(size_t(mDims.x) * mDims.y * mDims.z + 1, 0);
         const auto forCells = [&](size_t t, auto&& visit) {
-            Aabb box;
+            scene::Aabb box;
             for (int c = 0; c < 3; ++c) box.extend(vertices[indices[t + c]].position);
             const glm::ivec3 lo = cellOf(box.min), hi = cellOf(box.max);
             for (int z = lo.z; z <= hi.z; ++z)
@@ -94,7 +94,7 @@ private:
         return glm::length(ap - ab * (vb * denominator) - ac * (vc * denominator));
     }
 
-    std::span<const Vertex> mVertices;
+    std::span<const scene::Vertex> mVertices;
     std::span<const uint32_t> mIndices;
     glm::vec3 mOrigin{0.0f};
     float mCell = 1.0f;
@@ -104,7 +104,7 @@ private:
 
 // The largest distance from the vertices, edge midpoints and centres of the triangles of `from` to
 // `to`'s surface.
-float oneSidedDeviation(std::span<const Vertex> vertices, std::span<const uint32_t> from, const SurfaceGrid& to) {
+float oneSidedDeviation(std::span<const scene::Vertex> vertices, std::span<const uint32_t> from, const SurfaceGrid& to) {
     float worst = 0.0f;
     for (size_t t = 0; t + 2 < from.size(); t += 3) {
         const glm::vec3 a = vertices[from[t]].position, b = vertices[from[t + 1]].position, c = vertices[from[t + 2]].position;
@@ -115,7 +115,7 @@ float oneSidedDeviation(std::span<const Vertex> vertices, std::span<const uint32
 }
 
 // The largest distance from the vertices `points` (indices, each once) to `to`'s surface.
-float vertexDeviation(std::span<const Vertex> vertices, std::span<const uint32_t> points, const SurfaceGrid& to) {
+float vertexDeviation(std::span<const scene::Vertex> vertices, std::span<const uint32_t> points, const SurfaceGrid& to) {
     float worst = 0.0f;
     for (uint32_t i : points) worst = std::max(worst, to.distance(vertices[i].position, worst));
     return worst;
@@ -130,18 +130,18 @@ std::vector<uint32_t> uniqueVertices(std::span<const uint32_t> indices) {
 
 }  // namespace
 
-float surfaceDeviation(std::span<const Vertex> vertices, std::span<const uint32_t> fine, std::span<const uint32_t> coarse) {
+float surfaceDeviation(std::span<const scene::Vertex> vertices, std::span<const uint32_t> fine, std::span<const uint32_t> coarse) {
     return std::max(vertexDeviation(vertices, uniqueVertices(fine), SurfaceGrid(vertices, coarse)),
                     oneSidedDeviation(vertices, coarse, SurfaceGrid(vertices, fine)));
 }
 
-std::vector<SimplifiedLevel> simplifyChain(std::span<const Vertex> vertices, std::span<const uint32_t> indices,
+std::vector<SimplifiedLevel> simplifyChain(std::span<const scene::Vertex> vertices, std::span<const uint32_t> indices,
                                            const LodChainSettings& settings) {
     std::vector<SimplifiedLevel> levels;
     if (indices.size() < 3 || vertices.empty()) return levels;
     const float* positions = &vertices[0].position.x;
     // meshopt's errors are relative to the mesh's extent; this turns them into mesh units.
-    const float scale = meshopt_simplifyScale(positions, vertices.size(), sizeof(Vertex));
+    const float scale = meshopt_simplifyScale(positions, vertices.size(), sizeof(scene::Vertex));
     const size_t budget = size_t(double(indices.size()) * settings.maxExtraIndices);
     size_t spent = 0;
     size_t previous = indices.size();
@@ -155,7 +155,7 @@ std::vector<SimplifiedLevel> simplifyChain(std::span<const Vertex> vertices, std
         // prepares in a third of the time); the error is measured against the full detail below.
         const std::span<const uint32_t> source = levels.empty() ? indices : std::span<const uint32_t>(levels.back().indices);
         const size_t count = meshopt_simplify(out.data(), source.data(), source.size(), positions, vertices.size(),
-                                              sizeof(Vertex), target, 1.0f, meshopt_SimplifyLockBorder, &error);
+                                              sizeof(scene::Vertex), target, 1.0f, meshopt_SimplifyLockBorder, &error);
         if (count == 0 || double(count) > double(previous) * settings.minimumGain || spent + count > budget) break;
         SimplifiedLevel level{std::vector<uint32_t>(out.begin(), out.begin() + std::ptrdiff_t(count)), error * scale};
         // The simplifier's error estimates the quadric distance from its input; measured against
@@ -172,7 +172,7 @@ std::vector<SimplifiedLevel> simplifyChain(std::span<const Vertex> vertices, std
     return levels;
 }
 
-uint32_t selectLod(const LodChain& chain, float worldScale, float pixelsPerUnit, float maxPixels) {
+uint32_t selectLod(const scene::LodChain& chain, float worldScale, float pixelsPerUnit, float maxPixels) {
     if (!(maxPixels > 0.0f) || !std::isfinite(pixelsPerUnit)) return 0;
     uint32_t chosen = 0;
     for (uint32_t i = 1; i < chain.levels.size(); ++i) {
@@ -182,7 +182,7 @@ uint32_t selectLod(const LodChain& chain, float worldScale, float pixelsPerUnit,
     return chosen;
 }
 
-float pixelsPerUnit(const ViewSetup& view, uint32_t heightPixels, const Aabb& bounds) {
+float pixelsPerUnit(const scene::ViewSetup& view, uint32_t heightPixels, const scene::Aabb& bounds) {
     // glm's projection[1][1]: clip y per view-space unit (÷ depth for a perspective projection).
     const float halfHeight = 0.5f * float(heightPixels);
     const float yScale = std::abs(view.projection[1][1]);
@@ -206,4 +206,4 @@ float maxScale(const glm::mat4& world) {
     return std::sqrt(bound);
 }
 
-}  // namespace candela::scene
+}  // namespace candela::geometry

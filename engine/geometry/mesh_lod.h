@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-namespace candela::scene {
+namespace candela::geometry {
 
 // How a chain is built.
 struct LodChainSettings {
@@ -37,7 +37,7 @@ struct SimplifiedLevel {
 // open borders locked (no cracks where primitives meet) and its attribute seams (vertices sharing
 // a position with different normals or UVs) kept. Returns the levels beyond the full detail,
 // coarsest last; empty when the mesh does not simplify. Precondition: every index < vertices.size().
-std::vector<SimplifiedLevel> simplifyChain(std::span<const Vertex> vertices, std::span<const uint32_t> indices,
+std::vector<SimplifiedLevel> simplifyChain(std::span<const scene::Vertex> vertices, std::span<const uint32_t> indices,
                                            const LodChainSettings& settings = {});
 
 // How far the surface of the triangle list `coarse` lies from that of `fine` (both over
@@ -45,21 +45,21 @@ std::vector<SimplifiedLevel> simplifyChain(std::span<const Vertex> vertices, std
 // the corners, edge midpoints and centre of a triangle of `coarse` to the surface of `fine` (a
 // sampled Hausdorff distance; `fine`'s small triangles are sampled at their corners only). Mesh
 // units. Precondition: every index < vertices.size(), both lists non-empty.
-float surfaceDeviation(std::span<const Vertex> vertices, std::span<const uint32_t> fine, std::span<const uint32_t> coarse);
+float surfaceDeviation(std::span<const scene::Vertex> vertices, std::span<const uint32_t> fine, std::span<const uint32_t> coarse);
 
 // Index of the coarsest level of `chain` whose error, in world units (× `worldScale`, the
 // draw's largest mesh-to-world scale), covers at most `maxPixels` at `pixelsPerUnit` (what one
 // world unit measures on screen at the draw's nearest point). Level 0 when maxPixels ≤ 0 or
 // pixelsPerUnit is infinite (the eye inside the draw's bounds).
-uint32_t selectLod(const LodChain& chain, float worldScale, float pixelsPerUnit, float maxPixels);
+uint32_t selectLod(const scene::LodChain& chain, float worldScale, float pixelsPerUnit, float maxPixels);
 
 // What one world unit measures on screen, in pixels, at the point of `bounds` (world space)
 // nearest the eye of `view`, for a viewport `heightPixels` tall; infinite when the eye is inside
 // the bounds' sphere. Orthographic views: the same everywhere.
-float pixelsPerUnit(const ViewSetup& view, uint32_t heightPixels, const Aabb& bounds);
+float pixelsPerUnit(const scene::ViewSetup& view, uint32_t heightPixels, const scene::Aabb& bounds);
 
 // The largest factor by which `world` (and, for an instanced draw, each of its instances) scales
 // a length.
 float maxScale(const glm::mat4& world);
 
-}  // namespace candela::scene
+}  // namespace candela::geometry

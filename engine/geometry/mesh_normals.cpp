@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace candela::scene {
+namespace candela::geometry {
 
 glm::vec3 normalizeOrZero(const glm::vec3& v) {
     const float largest = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
@@ -22,20 +22,20 @@ glm::vec3 faceNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c)
     return glm::vec3(n / length);
 }
 
-void makeFlatNormals(std::vector<Vertex>& vertices, std::vector<uint32_t>& indices, std::vector<uint32_t>& origin) {
+void makeFlatNormals(std::vector<scene::Vertex>& vertices, std::vector<uint32_t>& indices, std::vector<uint32_t>& origin) {
     const size_t triangleCount = indices.size() / 3;
-    std::vector<Vertex> flat;
+    std::vector<scene::Vertex> flat;
     flat.reserve(triangleCount * 3);
     std::vector<uint32_t> flatOrigin;
     flatOrigin.reserve(triangleCount * 3);
     std::vector<uint32_t> flatIndices(triangleCount * 3);
     for (size_t t = 0; t < triangleCount; ++t) {
-        const Vertex* corner[3] = {&vertices[indices[3 * t]], &vertices[indices[3 * t + 1]], &vertices[indices[3 * t + 2]]};
+        const scene::Vertex* corner[3] = {&vertices[indices[3 * t]], &vertices[indices[3 * t + 1]], &vertices[indices[3 * t + 2]]};
         const glm::vec3 n = faceNormal(corner[0]->position, corner[1]->position, corner[2]->position);
         for (size_t i = 0; i < 3; ++i) {
-            Vertex v = *corner[i];
+            scene::Vertex v = *corner[i];
             v.normal = n;
-            v.tangent = Vertex{}.tangent;
+            v.tangent = scene::Vertex{}.tangent;
             flatIndices[3 * t + i] = uint32_t(flat.size());
             flat.push_back(v);
             flatOrigin.push_back(origin[indices[3 * t + i]]);
@@ -46,4 +46,4 @@ void makeFlatNormals(std::vector<Vertex>& vertices, std::vector<uint32_t>& indic
     indices = std::move(flatIndices);
 }
 
-}  // namespace candela::scene
+}  // namespace candela::geometry

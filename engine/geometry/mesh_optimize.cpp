@@ -7,7 +7,7 @@
 #include <map>
 #include <numeric>
 
-namespace candela::scene {
+namespace candela::geometry {
 
 namespace {
 
@@ -21,12 +21,12 @@ struct Mesh {
     std::vector<uint32_t> draws;
 };
 
-std::vector<Mesh> distinctMeshes(const Scene& scene) {
+std::vector<Mesh> distinctMeshes(const scene::Scene& scene) {
     std::map<std::pair<uint32_t, uint32_t>, size_t> byRange;
     std::vector<Mesh> meshes;
-    const auto blends = [&](uint32_t material) { return scene.materials[material].alphaMode == AlphaMode::Blend; };
+    const auto blends = [&](uint32_t material) { return scene.materials[material].alphaMode == scene::AlphaMode::Blend; };
     for (uint32_t d = 0; d < scene.draws.size(); ++d) {
-        const Draw& draw = scene.draws[d];
+        const scene::Draw& draw = scene.draws[d];
         if (draw.indexCount == 0) continue;
         const auto [it, added] = byRange.try_emplace({draw.firstIndex, draw.indexCount}, meshes.size());
         if (added) meshes.push_back({.firstIndex = draw.firstIndex, .indexCount = draw.indexCount});
@@ -35,8 +35,8 @@ std::vector<Mesh> distinctMeshes(const Scene& scene) {
         mesh.blended |= blends(draw.material);
         mesh.draws.push_back(d);
     }
-    for (const DrawVariants& variants : scene.drawVariants) {
-        const Draw& draw = scene.draws[variants.draw];
+    for (const scene::DrawVariants& variants : scene.drawVariants) {
+        const scene::Draw& draw = scene.draws[variants.draw];
         if (auto it = byRange.find({draw.firstIndex, draw.indexCount}); it != byRange.end())
             for (const auto& [variant, material] : variants.materials) meshes[it->second].blended |= blends(material);
     }
@@ -61,14 +61,14 @@ std::vector<Mesh> distinctMeshes(const Scene& scene) {
 
 // Reorders the vertices [base, base + count) of `scene` for fetch locality in the order `local`
 // (indices relative to base) first uses them, and rewrites `local` and every level's indices.
-void reorderVertices(Scene& scene, uint32_t base, uint32_t count, std::vector<uint32_t>& local,
+void reorderVertices(scene::Scene& scene, uint32_t base, uint32_t count, std::vector<uint32_t>& local,
                      std::vector<SimplifiedLevel>& levels) {
     std::vector<uint32_t> remap(count);
     uint32_t next = uint32_t(meshopt_optimizeVertexFetchRemap(remap.data(), local.data(), local.size(), count));
     for (uint32_t& r : remap)
         if (r == ~0u) r = next++;  // vertices no triangle uses (e.g. of dropped zero-area triangles) go last
-    std::vector<Vertex> reordered(count);
-    meshopt_remapVertexBuffer(reordered.data(), scene.vertices.data() + base, count, sizeof(Vertex), remap.data());
+    std::vector<scene::Vertex> reordered(count);
+    meshopt_remapVertexBuffer(reordered.data(), scene.vertices.data() + base, count, sizeof(scene::Vertex), remap.data());
     std::copy(reordered.begin(), reordered.end(), scene.vertices.begin() + base);
     meshopt_remapIndexBuffer(local.data(), local.data(), local.size(), remap.data());
     for (SimplifiedLevel& level : levels)
@@ -77,21 +77,21 @@ void reorderVertices(Scene& scene, uint32_t base, uint32_t count, std::vector<ui
 
 }  // namespace
 
-void prepareGeometry(Scene& scene, const LodChainSettings& settings) {
+void prepareGeometry(scene::Scene& scene, const LodChainSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
-    SceneLoadReport::GeometryPreparation& report = scene.report.geometry;
+    scene::SceneLoadReport::GeometryPreparation& report = scene.report.geometry;
     const std::vector<Mesh> meshes = distinctMeshes(scene);
     report.meshes = meshes.size();
     for (const Mesh& mesh : meshes) {
         const uint32_t base = mesh.minVertex, count = mesh.maxVertex - mesh.minVertex + 1;
-        const std::span<const Vertex> vertices(scene.vertices.data() + base, count);
+        const std::span<const scene::Vertex> vertices(scene.vertices.data() + base, count);
         std::vector<uint32_t> local(scene.indices.begin() + mesh.firstIndex,
                                     scene.indices.begin() + mesh.firstIndex + mesh.indexCount);
         for (uint32_t& i : local) i -= base;
         if (!mesh.blended) {
             meshopt_optimizeVertexCache(local.data(), local.data(), local.size(), count);
             meshopt_optimizeOverdraw(local.data(), local.data(), local.size(), &vertices[0].position.x, count,
-                                     sizeof(Vertex), 1.05f);
+                                     sizeof(scene::Vertex), 1.05f);
         }
         // A mesh that comes with its chain (the built-in spheres') keeps it.
         const int32_t givenChain = scene.draws[mesh.draws.front()].lod;
@@ -101,12 +101,12 @@ void prepareGeometry(Scene& scene, const LodChainSettings& settings) {
         for (uint32_t i = 0; i < mesh.indexCount; ++i) scene.indices[mesh.firstIndex + i] = local[i] + base;
         report.indexBytes += uint64_t(mesh.indexCount) * sizeof(uint32_t);
         if (givenChain >= 0) {
-            const LodChain& chain = scene.lodChains[size_t(givenChain)];
+            const scene::LodChain& chain = scene.lodChains[size_t(givenChain)];
             for (size_t i = 1; i < chain.levels.size(); ++i) report.lodIndexBytes += chain.levels[i].indexCount * sizeof(uint32_t);
             report.simplifiedMeshes += chain.levels.size() > 1;
         }
         if (levels.empty()) continue;
-        LodChain chain;
+        scene::LodChain chain;
         chain.levels.push_back({mesh.firstIndex, mesh.indexCount, 0.0f});
         for (const SimplifiedLevel& level : levels) {
             chain.levels.push_back({uint32_t(scene.indices.size()), uint32_t(level.indices.size()), level.error});
@@ -120,4 +120,4 @@ void prepareGeometry(Scene& scene, const LodChainSettings& settings) {
     report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-}  // namespace candela::scene
+}  // namespace candela::geometry

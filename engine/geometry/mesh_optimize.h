@@ -6,7 +6,7 @@
 #include "geometry/mesh_lod.h"
 #include "scene/scene.h"
 
-namespace candela::scene {
+namespace candela::geometry {
 
 // Prepares every distinct mesh of `scene` (an index range the draws use) and records what it did
 // in scene.report.geometry:
@@ -20,6 +20,6 @@ namespace candela::scene {
 //    deformed (the deformation data follows the scene's vertex order).
 // The image is unchanged at level 0 but for ties in depth. Call once, after the draws are final.
 // Precondition: the draws' ranges and materials are valid.
-void prepareGeometry(Scene& scene, const LodChainSettings& settings = {});
+void prepareGeometry(scene::Scene& scene, const LodChainSettings& settings = {});
 
-}  // namespace candela::scene
+}  // namespace candela::geometry

@@ -6,7 +6,7 @@
 #include <bit>
 #include <cmath>
 
-namespace candela::scene {
+namespace candela::geometry {
 
 namespace {
 
@@ -14,7 +14,7 @@ uint8_t encode(float value) { return uint8_t(std::lround(std::clamp(value, 0.0f,
 
 }  // namespace
 
-std::vector<std::vector<uint8_t>> normalMapMipChain(const Image& image) {
+std::vector<std::vector<uint8_t>> normalMapMipChain(const scene::Image& image) {
     const uint32_t levels = std::bit_width(std::max(image.width, image.height));
     std::vector<std::vector<uint8_t>> mips;
     mips.push_back(image.rgba8);
@@ -54,4 +54,4 @@ std::vector<std::vector<uint8_t>> normalMapMipChain(const Image& image) {
     return mips;
 }
 
-}  // namespace candela::scene
+}  // namespace candela::geometry

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace candela::scene {
+namespace candela::geometry {
 
 // Mips 0 … ⌊log2 max(width, height)⌋ of `image` (RGBA8, a normal map: RGB = n · 0.5 + 0.5), sizes
 // halved as Vulkan's (⌊size / 2⌋, at least 1). Mip 0 keeps the image's RGB; each further mip
@@ -15,6 +15,6 @@ namespace candela::scene {
 // clamped at odd edges): RGB its direction, A its length (1 where they agree, less where they
 // diverge — the lost length the shader turns into roughness). Mip 0's A is 1 (255). Precondition:
 // image.rgba8 holds width × height × 4 bytes.
-std::vector<std::vector<uint8_t>> normalMapMipChain(const Image& image);
+std::vector<std::vector<uint8_t>> normalMapMipChain(const scene::Image& image);
 
-}  // namespace candela::scene
+}  // namespace candela::geometry

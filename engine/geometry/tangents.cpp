@@ -12,7 +12,7 @@
 #include <cstring>
 #include <unordered_map>
 
-namespace candela::scene {
+namespace candela::geometry {
 namespace {
 
 // MikkTSpace's tests for "not zero".
@@ -243,4 +243,4 @@ std::vector<glm::vec4> generateTangents(std::span<const glm::vec3> positions, st
     return out;
 }
 
-}  // namespace candela::scene
+}  // namespace candela::geometry

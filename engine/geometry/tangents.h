@@ -25,7 +25,7 @@
 #include <span>
 #include <vector>
 
-namespace candela::scene {
+namespace candela::geometry {
 
 // One tangent per element of `indices` (a triangle list; a trailing partial triangle is ignored and
 // gets the fallback tangent). xyz is unit length and orthogonal to the vertex normal; w = ±1 with
@@ -40,4 +40,4 @@ std::vector<glm::vec4> generateTangents(std::span<const glm::vec3> positions, st
 // A unit vector orthogonal to `normal` (any unit vector if normal is zero), as w = +1 tangent.
 glm::vec4 fallbackTangent(const glm::vec3& normal);
 
-}  // namespace candela::scene
+}  // namespace candela::geometry

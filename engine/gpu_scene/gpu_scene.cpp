@@ -15,21 +15,21 @@
 #include <cstring>
 #include <stdexcept>
 
-namespace candela::scene {
+namespace candela::gpu_scene {
 namespace {
 
 using namespace shading;
 
-VkSamplerAddressMode addressMode(Wrap wrap) {
+VkSamplerAddressMode addressMode(scene::Wrap wrap) {
     switch (wrap) {
-        case Wrap::Repeat: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
-        case Wrap::MirroredRepeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
-        case Wrap::ClampToEdge: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+        case scene::Wrap::Repeat: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+        case scene::Wrap::MirroredRepeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+        case scene::Wrap::ClampToEdge: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     }
     return VK_SAMPLER_ADDRESS_MODE_REPEAT;
 }
 
-VkFilter filterOf(Filter f) { return f == Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR; }
+VkFilter filterOf(scene::Filter f) { return f == scene::Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR; }
 
 template <class T>
 vk::Buffer uploadedBuffer(vk::Context& context, vk::Uploader& uploader, const std::vector<T>& items, const char* name,
@@ -50,10 +50,10 @@ vk::Image solidTexture(vk::Context& context, vk::Uploader& uploader, std::array<
     return image;
 }
 
-UvTransform uvTransform(const TextureRef& ref) {
+UvTransform uvTransform(const scene::TextureRef& ref) {
     // Rows of the affine KHR_texture_transform matrix (the loader's convention, shared with tangent
     // generation), plus the texture coordinate set in r0.w.
-    const glm::mat3 m = textureTransformMatrix(ref.transform);
+    const glm::mat3 m = scene::textureTransformMatrix(ref.transform);
     UvTransform out;
     out.r0 = glm::vec4(m[0][0], m[1][0], m[2][0], static_cast<float>(ref.texCoord));
     out.r1 = glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f);
@@ -62,7 +62,7 @@ UvTransform uvTransform(const TextureRef& ref) {
 
 }  // namespace
 
-MaterialData materialData(const Material& m) {
+MaterialData materialData(const scene::Material& m) {
     MaterialData out{};
     out.baseColorFactor = m.baseColorFactor;
     out.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f);
@@ -70,8 +70,8 @@ MaterialData materialData(const Material& m) {
     out.roughness = m.roughnessFactor;
     out.normalScale = m.normalScale;
     out.occlusionStrength = m.occlusionStrength;
-    const float mode = m.alphaMode == AlphaMode::Mask ? float(CANDELA_ALPHA_MASK)
-                       : m.alphaMode == AlphaMode::Blend ? float(CANDELA_ALPHA_BLEND)
+    const float mode = m.alphaMode == scene::AlphaMode::Mask ? float(CANDELA_ALPHA_MASK)
+                       : m.alphaMode == scene::AlphaMode::Blend ? float(CANDELA_ALPHA_BLEND)
                                                          : float(CANDELA_ALPHA_OPAQUE);
     out.alphaCutoff = m.alphaCutoff;
     out.alphaMode = mode;
@@ -79,7 +79,7 @@ MaterialData materialData(const Material& m) {
     return out;
 }
 
-MaterialLayerData materialLayerData(const Material& m) {
+MaterialLayerData materialLayerData(const scene::Material& m) {
     MaterialLayerData out{};
     out.specularColor = m.specularColorFactor;
     out.specular = m.specularFactor;
@@ -107,11 +107,11 @@ MaterialLayerData materialLayerData(const Material& m) {
     return out;
 }
 
-shading::LightData lightData(const Light& l) {
+shading::LightData lightData(const scene::Light& l) {
     using namespace shading;
     LightData out{};
-    const float type = l.type == LightType::Directional ? float(CANDELA_LIGHT_DIRECTIONAL)
-                       : l.type == LightType::Spot    ? float(CANDELA_LIGHT_SPOT)
+    const float type = l.type == scene::LightType::Directional ? float(CANDELA_LIGHT_DIRECTIONAL)
+                       : l.type == scene::LightType::Spot    ? float(CANDELA_LIGHT_SPOT)
                                                       : float(CANDELA_LIGHT_POINT);
     out.positionRange = glm::vec4(l.position, l.range);
     out.directionType = glm::vec4(glm::normalize(l.direction), type);
@@ -123,7 +123,7 @@ shading::LightData lightData(const Light& l) {
     return out;
 }
 
-shading::DrawData drawData(const Draw& draw) {
+shading::DrawData drawData(const scene::Draw& draw) {
     shading::DrawData data{};
     data.world = draw.world;
     // In double: the float determinant overflows for world scales near 1e13 (the loader checks the
@@ -133,17 +133,17 @@ shading::DrawData drawData(const Draw& draw) {
     return data;
 }
 
-std::vector<shading::DrawData> drawDataOf(const Scene& scene, std::span<const Draw> draws, std::vector<uint32_t>* first) {
+std::vector<shading::DrawData> drawDataOf(const scene::Scene& scene, std::span<const scene::Draw> draws, std::vector<uint32_t>* first) {
     std::vector<shading::DrawData> out;
     if (first) first->clear();
-    for (const Draw& d : draws) {
+    for (const scene::Draw& d : draws) {
         if (first) first->push_back(uint32_t(out.size()));
         if (d.instanceCount == 0) {
             out.push_back(d.hidden ? shading::DrawData{} : drawData(d));
             continue;
         }
         for (uint32_t i = 0; i < d.instanceCount; ++i) {
-            Draw instance = d;
+            scene::Draw instance = d;
             instance.world = d.world * scene.instances[d.firstInstance + i];
             out.push_back(d.hidden ? shading::DrawData{} : drawData(instance));
         }
@@ -151,25 +151,25 @@ std::vector<shading::DrawData> drawDataOf(const Scene& scene, std::span<const Dr
     return out;
 }
 
-uint32_t deformationRecordWords(const Deformation& deformation) {
+uint32_t deformationRecordWords(const scene::Deformation& deformation) {
     return deformation.influencesPerVertex * CANDELA_INFLUENCE_WORDS + deformation.targetCount * CANDELA_MORPH_DELTA_WORDS;
 }
 
-void appendDeformationRecords(const Deformation& d, std::vector<uint32_t>& words) {
-    static_assert(sizeof(MorphDelta) == CANDELA_MORPH_DELTA_WORDS * sizeof(uint32_t));
-    static_assert(sizeof(JointInfluence) == CANDELA_INFLUENCE_WORDS * sizeof(uint32_t));
+void appendDeformationRecords(const scene::Deformation& d, std::vector<uint32_t>& words) {
+    static_assert(sizeof(scene::MorphDelta) == CANDELA_MORPH_DELTA_WORDS * sizeof(uint32_t));
+    static_assert(sizeof(scene::JointInfluence) == CANDELA_INFLUENCE_WORDS * sizeof(uint32_t));
     const size_t first = words.size();
     words.resize(first + size_t(d.vertexCount) * deformationRecordWords(d));
     uint32_t* out = words.data() + first;
     for (uint32_t v = 0; v < d.vertexCount; ++v) {
         for (uint32_t i = 0; i < d.influencesPerVertex; ++i, out += CANDELA_INFLUENCE_WORDS)
-            std::memcpy(out, &d.influences[size_t(v) * d.influencesPerVertex + i], sizeof(JointInfluence));
+            std::memcpy(out, &d.influences[size_t(v) * d.influencesPerVertex + i], sizeof(scene::JointInfluence));
         for (uint32_t t = 0; t < d.targetCount; ++t, out += CANDELA_MORPH_DELTA_WORDS)
-            std::memcpy(out, &d.deltas[size_t(t) * d.vertexCount + v], sizeof(MorphDelta));
+            std::memcpy(out, &d.deltas[size_t(t) * d.vertexCount + v], sizeof(scene::MorphDelta));
     }
 }
 
-void checkIndexValues(const Scene& scene, const vk::DeviceCaps& caps) {
+void checkIndexValues(const scene::Scene& scene, const vk::DeviceCaps& caps) {
     const uint32_t limit = caps.limits.maxDrawIndexedIndexValue;
     const auto largest = std::max_element(scene.indices.begin(), scene.indices.end());
     if (largest == scene.indices.end() || *largest <= limit) return;
@@ -178,7 +178,7 @@ void checkIndexValues(const Scene& scene, const vk::DeviceCaps& caps) {
                     "): the scene has too many vertices for it");
 }
 
-GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights, float maxAnisotropy,
+GpuScene::GpuScene(vk::Context& context, const scene::Scene& scene, const std::vector<scene::Light>& extraLights, float maxAnisotropy,
                    bool sceneLights)
     : mScene(&scene), mContext(&context) {
     checkIndexValues(scene, context.caps());
@@ -189,7 +189,7 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
                                VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     if (!scene.deformations.empty()) {
         std::vector<uint32_t> words;
-        for (const Deformation& d : scene.deformations) {
+        for (const scene::Deformation& d : scene.deformations) {
             mDeformationWord.push_back(words.size());
             appendDeformationRecords(d, words);
         }
@@ -200,8 +200,8 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
 
     std::vector<LightData>& lights = mSceneLights;
     if (sceneLights)
-        for (const Light& l : scene.lights) lights.push_back(lightData(l));
-    for (const Light& l : extraLights) lights.push_back(lightData(l));
+        for (const scene::Light& l : scene.lights) lights.push_back(lightData(l));
+    for (const scene::Light& l : extraLights) lights.push_back(lightData(l));
     mLightCount = static_cast<uint32_t>(lights.size());
     mLights = uploadedBuffer(context, uploader, lights, "lights");
 
@@ -209,10 +209,10 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     mDraws = uploadedBuffer(context, uploader, draws, "draws");
 
     std::vector<MaterialData>& materials = mSceneMaterials;
-    for (const Material& m : scene.materials) materials.push_back(materialData(m));
+    for (const scene::Material& m : scene.materials) materials.push_back(materialData(m));
     mMaterials = uploadedBuffer(context, uploader, materials, "materials");
-    if (std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.layers() != 0; })) {
-        for (const Material& m : scene.materials) mSceneLayers.push_back(materialLayerData(m));
+    if (std::any_of(scene.materials.begin(), scene.materials.end(), [](const scene::Material& m) { return m.layers() != 0; })) {
+        for (const scene::Material& m : scene.materials) mSceneLayers.push_back(materialLayerData(m));
         mMaterialLayers = uploadedBuffer(context, uploader, mSceneLayers, "material_layers");
         mLayerData = mSceneLayers;
     }
@@ -223,16 +223,16 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     // normal map's mips keep the length its averaging loses (geometry/normal_map_mips.h), in A — an
     // image read both ways gets a second copy for its normal-map use.
     std::vector<bool> normalUse(scene.images.size()), otherUse(scene.images.size());
-    for (const Material& m : scene.materials) {
-        const auto mark = [&](const TextureRef& ref, bool normal) {
+    for (const scene::Material& m : scene.materials) {
+        const auto mark = [&](const scene::TextureRef& ref, bool normal) {
             if (ref.present() && size_t(ref.image) < scene.images.size()) (normal ? normalUse : otherUse)[size_t(ref.image)] = true;
         };
-        for (const TextureSlot& slot : kCoreTextureSlots) mark(m.*slot.field, slot.normalMap);
-        for (const TextureSlot& slot : kLayerTextureSlots) mark(m.*slot.field, slot.normalMap);
+        for (const scene::TextureSlot& slot : scene::kCoreTextureSlots) mark(m.*slot.field, slot.normalMap);
+        for (const scene::TextureSlot& slot : scene::kLayerTextureSlots) mark(m.*slot.field, slot.normalMap);
     }
     // A file's own levels (KTX2) are uploaded as they are, except for normal maps, whose chain must
     // carry the lost length in A (computed from level 0); other images get their mips generated.
-    const auto upload = [&](const Image& source, bool normalMap) {
+    const auto upload = [&](const scene::Image& source, bool normalMap) {
         const bool fileMips = !normalMap && !source.mips.empty();
         const uint32_t mips = fileMips ? uint32_t(source.mips.size() + 1) : std::bit_width(std::max(source.width, source.height));
         vk::Image image(context, {.width = source.width,
@@ -243,7 +243,7 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
                                            VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                   .name = source.name.c_str()});
         if (normalMap) {
-            const std::vector<std::vector<uint8_t>> chain = normalMapMipChain(source);
+            const std::vector<std::vector<uint8_t>> chain = geometry::normalMapMipChain(source);
             for (uint32_t mip = 0; mip < chain.size(); ++mip)
                 uploader.image(image, std::as_bytes(std::span(chain[mip])), mip, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
         } else if (fileMips) {
@@ -270,10 +270,10 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
     mFlatNormal = solidTexture(context, uploader, {128, 128, 255, 255}, VK_FORMAT_R8G8B8A8_UNORM, "default normal");
     uploader.submitAndWait();
 
-    for (const Sampler& s : scene.samplers)
+    for (const scene::Sampler& s : scene.samplers)
         mSamplers.push_back(vk::createSampler(context, {.filter = filterOf(s.magFilter),
                                                         .minFilter = filterOf(s.minFilter),
-                                                        .mipmapMode = s.mipFilter == Filter::Nearest
+                                                        .mipmapMode = s.mipFilter == scene::Filter::Nearest
                                                                           ? VK_SAMPLER_MIPMAP_MODE_NEAREST
                                                                           : VK_SAMPLER_MIPMAP_MODE_LINEAR,
                                                         .addressU = addressMode(s.wrapU),
@@ -286,7 +286,7 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
 
     // A texture's view (its normal-map copy for a normal map) and sampler, or `fallback` (1×1) with
     // the default sampler without one.
-    const auto binding = [&](const TextureRef& ref, const vk::Image& fallback, bool normalMap = false) {
+    const auto binding = [&](const scene::TextureRef& ref, const vk::Image& fallback, bool normalMap = false) {
         const bool has = ref.present() && static_cast<size_t>(ref.image) < mImages.size();
         const bool hasSampler = ref.sampler >= 0 && static_cast<size_t>(ref.sampler) < mSamplers.size();
         const vk::Image* image = !has                                     ? &fallback
@@ -295,14 +295,14 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, const std::vector<L
         return Binding{image->view(), hasSampler ? mSamplers[ref.sampler].get() : mDefaultSampler.get()};
     };
     // Missing textures read white (factor × 1), missing normal maps flat.
-    const auto slotBinding = [&](const Material& m, const TextureSlot& slot) {
+    const auto slotBinding = [&](const scene::Material& m, const scene::TextureSlot& slot) {
         return binding(m.*slot.field, slot.normalMap ? mFlatNormal : mWhite, slot.normalMap);
     };
-    for (const Material& m : scene.materials) {
+    for (const scene::Material& m : scene.materials) {
         auto& bindings = mBindings.emplace_back();
-        for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) bindings[slot] = slotBinding(m, kCoreTextureSlots[slot]);
+        for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) bindings[slot] = slotBinding(m, scene::kCoreTextureSlots[slot]);
         auto& layerBindings = mLayerBindings.emplace_back();
-        for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) layerBindings[slot] = slotBinding(m, kLayerTextureSlots[slot]);
+        for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) layerBindings[slot] = slotBinding(m, scene::kLayerTextureSlots[slot]);
     }
 }
 
@@ -332,4 +332,4 @@ VkDeviceSize GpuScene::textureBytes() const {
     return bytes;
 }
 
-}  // namespace candela::scene
+}  // namespace candela::gpu_scene

@@ -16,36 +16,36 @@
 #include <span>
 #include <vector>
 
-namespace candela::scene {
+namespace candela::gpu_scene {
 
 // A draw as the forward shaders read it: world and normal matrix, material index. Precondition:
 // draw.world is not singular (hidden draws are not drawn).
-shading::DrawData drawData(const Draw& draw);
+shading::DrawData drawData(const scene::Draw& draw);
 // The draw data of every draw in order, an instanced draw taking one entry per instance (world ·
 // instance matrix) — the layout of the draw buffers; hidden draws get zeros. `first[d]` receives
 // the index of draw d's first entry (what the forward pass pushes; the shader adds the instance).
-std::vector<shading::DrawData> drawDataOf(const Scene& scene, std::span<const Draw> draws, std::vector<uint32_t>* first = nullptr);
+std::vector<shading::DrawData> drawDataOf(const scene::Scene& scene, std::span<const scene::Draw> draws, std::vector<uint32_t>* first = nullptr);
 // A light as the forward shaders read it (position and range, direction and type, colour,
 // intensity — 0 for a hidden light —, cone terms).
-shading::LightData lightData(const Light& light);
+shading::LightData lightData(const scene::Light& light);
 // A material's core data (factors, alpha, every core slot's texture transform) and its layer data
 // (the layers' factors and their slots' texture transforms), as the forward shaders read them.
-shading::MaterialData materialData(const Material& material);
-shading::MaterialLayerData materialLayerData(const Material& material);
+shading::MaterialData materialData(const scene::Material& material);
+shading::MaterialLayerData materialLayerData(const scene::Material& material);
 
 // The words of one vertex's record of `deformation` in GpuScene::deformationBuffer: its
 // influencesPerVertex influences (CANDELA_INFLUENCE_WORDS each: joint, weight bits), then its
 // targetCount deltas (CANDELA_MORPH_DELTA_WORDS each: position, normal, tangent, uv, color).
-uint32_t deformationRecordWords(const Deformation& deformation);
+uint32_t deformationRecordWords(const scene::Deformation& deformation);
 // Appends the records of `deformation`'s vertices, in vertex order, to `words` (vertex-major, so
 // the records of a run of vertices are contiguous: the skin_morph pass binds only those).
-void appendDeformationRecords(const Deformation& deformation, std::vector<uint32_t>& words);
+void appendDeformationRecords(const scene::Deformation& deformation, std::vector<uint32_t>& words);
 
 // Throws UserError (one line) when an index value of `scene` passes `caps`'s
 // maxDrawIndexedIndexValue — 2^24−1 on a device without fullDrawIndexUint32 (the minimum profile),
 // where drawing it would be undefined. The indices are absolute in the scene's one vertex buffer,
 // so this is a scene of more than 16,777,215 vertices on such a device.
-void checkIndexValues(const Scene& scene, const vk::DeviceCaps& caps);
+void checkIndexValues(const scene::Scene& scene, const vk::DeviceCaps& caps);
 
 class GpuScene {
 public:
@@ -53,7 +53,7 @@ public:
     // them without `sceneLights`), and samplers limited to `maxAnisotropy`. Precondition:
     // scene.draws reference valid ranges and materials (the loader guarantees it). `scene` must
     // outlive the GpuScene.
-    GpuScene(vk::Context& context, const Scene& scene, const std::vector<Light>& extraLights = {},
+    GpuScene(vk::Context& context, const scene::Scene& scene, const std::vector<scene::Light>& extraLights = {},
              float maxAnisotropy = 8.0f, bool sceneLights = true);
 
     VkBuffer vertexBuffer() const { return mVertices.handle(); }
@@ -97,7 +97,7 @@ public:
     // The same for layer texture slot `slot` (CANDELA_LAYER_TEX_*).
     Binding layerTexture(uint32_t material, int slot) const;
 
-    const Scene& scene() const { return *mScene; }
+    const scene::Scene& scene() const { return *mScene; }
     // The sizes of the vertex and index buffers in bytes (storage-buffer range checks).
     VkDeviceSize vertexBytes() const { return mVertices.size(); }
     VkDeviceSize indexBytes() const { return mIndices.size(); }
@@ -108,7 +108,7 @@ public:
     VkDeviceSize imageBytes(size_t image) const { return mImageBytes[image]; }
 
 private:
-    const Scene* mScene;
+    const scene::Scene* mScene;
     vk::Buffer mVertices, mIndices, mLights, mDraws, mMaterials, mMaterialLayers, mDeformation;
     std::vector<uint64_t> mDeformationWord;
     uint32_t mLightCount = 0;
@@ -126,4 +126,4 @@ private:
     std::vector<std::array<Binding, CANDELA_LAYER_TEX_COUNT>> mLayerBindings;  // per material, per layer slot
 };
 
-}  // namespace candela::scene
+}  // namespace candela::gpu_scene

@@ -5,7 +5,7 @@
 // the next run instead of recomputing. Pure C++, no Vulkan calls. A file that fails to read for
 // any reason is a cache miss: the caller recomputes and overwrites it.
 //
-//     const IblCacheKey key{scene::contentHash(env), settingsText};
+//     const IblCacheKey key{assets::contentHash(env), settingsText};
 //     const std::filesystem::path file = cacheFilePath(cacheDir, key);
 //     std::string why;
 //     if (auto images = readCacheFile(file, key, &why)) { /* upload *images */ }
@@ -65,7 +65,7 @@ struct CachedImage {
 
 // What a cache file was made for. Both parts must match for a file to be used.
 struct IblCacheKey {
-    uint64_t environmentHash = 0;  // scene::contentHash of the environment
+    uint64_t environmentHash = 0;  // assets::contentHash of the environment
     std::string settings;          // canonical text of the quality settings, e.g. "cube=256 prefilter=64 ..."
 };
 

@@ -7,12 +7,12 @@
 
 #include <algorithm>
 
-namespace candela::ibl {
+namespace candela::ibl_maps {
 
 double brightCandidateLuminance(uint32_t width, uint32_t height, const std::function<double(size_t)>& luminance) {
     double power = 0.0, solidAngle = 0.0;
     for (uint32_t y = 0; y < height; ++y) {
-        const double rowAngle = reference::texelSolidAngle(y, width, height);
+        const double rowAngle = reports::reference::texelSolidAngle(y, width, height);
         double row = 0.0;
         for (uint32_t x = 0; x < width; ++x) row += luminance(size_t(y) * width + x);
         power += row * rowAngle;
@@ -50,11 +50,11 @@ BrightTexels findBrightTexels(std::span<const uint16_t> rgba, uint32_t width, ui
     for (uint32_t i : bright) {
         const uint32_t x = i % width, y = i / width;
         const glm::vec3 excess = radiance(i) - shading::iblClampLuminance(radiance(i), threshold);
-        const double texelAngle = reference::texelSolidAngle(y, width, height);
-        result.buffer.emplace_back(glm::vec3(reference::texelDirection(x, y, width, height)), 0.0f);
+        const double texelAngle = reports::reference::texelSolidAngle(y, width, height);
+        result.buffer.emplace_back(glm::vec3(reports::reference::texelDirection(x, y, width, height)), 0.0f);
         result.buffer.emplace_back(glm::vec3(glm::dvec3(excess) * (texelAngle / scale)), 0.0f);
     }
     return result;
 }
 
-}  // namespace candela::ibl
+}  // namespace candela::ibl_maps

@@ -18,7 +18,7 @@
 #include <span>
 #include <vector>
 
-namespace candela::ibl {
+namespace candela::ibl_maps {
 
 // A texel is a bright-texel candidate when its luminance is over this multiple of the map's mean
 // luminance (solid-angle weighted); the ground truth of `ibl-report` sums the same texels one by one.
@@ -49,4 +49,4 @@ double brightCandidateLuminance(uint32_t width, uint32_t height, const std::func
 BrightTexels findBrightTexels(std::span<const uint16_t> rgba, uint32_t width, uint32_t height, float scale,
                               uint32_t maxCount);
 
-}  // namespace candela::ibl
+}  // namespace candela::ibl_maps

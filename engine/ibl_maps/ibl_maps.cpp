@@ -23,7 +23,7 @@
 #include <bit>
 #include <span>
 
-namespace candela::ibl {
+namespace candela::ibl_maps {
 
 using namespace graph;
 
@@ -40,7 +40,7 @@ TextureDesc graphDesc(const vk::ImageDesc& d) {
 }
 
 // The environment's RGB texels as RGBA (alpha 1), the layout of the RGBA32F upload.
-std::vector<float> rgbaTexels(const scene::Environment& env) {
+std::vector<float> rgbaTexels(const assets::Environment& env) {
     std::vector<float> rgba(env.texelCount() * 4, 1.0f);
     for (size_t i = 0; i < env.texelCount(); ++i)
         for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = env.rgb[i * 3 + c];
@@ -49,7 +49,7 @@ std::vector<float> rgbaTexels(const scene::Environment& env) {
 
 // The environment's texels as RGBA half floats times `scale` (alpha 1), its equirect halved by
 // 2×2 boxes until it is at most `maxSize` texels wide and high (0: as it is); sets `width`, `height`.
-std::vector<uint16_t> halfTexels(const scene::Environment& env, uint32_t maxSize, float scale, uint32_t& width,
+std::vector<uint16_t> halfTexels(const assets::Environment& env, uint32_t maxSize, float scale, uint32_t& width,
                                  uint32_t& height) {
     std::vector<float> rgb = env.rgb;
     width = env.width;
@@ -81,9 +81,9 @@ IblMaps::IblMaps(vk::Context& context) : mContext(context) {}
 
 IblMaps::~IblMaps() = default;
 
-void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
+void IblMaps::setReferenceEnvironment(const assets::Environment& env) {
     const auto luminance = [&](size_t i) {
-        return ibl::luminance({env.rgb[i * 3], env.rgb[i * 3 + 1], env.rgb[i * 3 + 2]});
+        return reports::luminance({env.rgb[i * 3], env.rgb[i * 3 + 1], env.rgb[i * 3 + 2]});
     };
     const double threshold = brightCandidateLuminance(env.width, env.height, luminance);
     std::vector<uint32_t> bright;
@@ -112,13 +112,13 @@ void IblMaps::setReferenceEnvironment(const scene::Environment& env) {
     upload.submitAndWait();
 }
 
-uint32_t IblMaps::sheenFaceSize(const IblQuality& q) {
+uint32_t IblMaps::sheenFaceSize(const ibl::IblQuality& q) {
     return std::min(q.cubeSize, std::max(64u, 1u << (q.levels() - 1)));
 }
 
 uint32_t IblMaps::lutSize() const { return mLut.image ? mLut.image.desc().width : 1; }
 
-void IblMaps::createMaps(const IblQuality& q) {
+void IblMaps::createMaps(const ibl::IblQuality& q) {
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
                                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     auto makeCube = [&](Target& target, uint32_t size, uint32_t mips, const char* name) {
@@ -130,7 +130,7 @@ void IblMaps::createMaps(const IblQuality& q) {
     makeCube(mSpecular, q.cubeSize, q.levels(), "ibl_specular");
     if (q.sheen) makeCube(mSheen, sheenFaceSize(q), q.levels(), "ibl_sheen");
     else mSheen = {};
-    if (q.irradiance == IrradianceMode::Cube) {
+    if (q.irradiance == ibl::IrradianceMode::Cube) {
         makeCube(mIrradianceCube, q.irradianceSize, 1, "ibl_irradiance");
         mSh = {};
     } else {
@@ -150,7 +150,7 @@ void IblMaps::createMaps(const IblQuality& q) {
     mLutPending = mLutComputedFor != q.lutCanonical();
 }
 
-void IblMaps::createPrecomputeInputs(const scene::Environment& env) {
+void IblMaps::createPrecomputeInputs(const assets::Environment& env) {
     // The environment in half floats: half the memory of RGBA32F (1 GiB for 16384 × 8192), times
     // a power of two that keeps its brightest texel under the half-float maximum (exact; the
     // cubemap pass divides it out).
@@ -193,7 +193,7 @@ void IblMaps::ensurePasses() {
     mSheenPass = std::make_unique<passes::IblPrefilterPass>(mContext, passes::IblPrefilterPass::Lobe::Charlie);
 }
 
-bool IblMaps::setEnvironment(const scene::Environment* env, const IblQuality& quality,
+bool IblMaps::setEnvironment(const assets::Environment* env, const ibl::IblQuality& quality,
                              const std::filesystem::path& cacheDir, bool force) {
     if (!env) {
         if (mSource == MapsSource::None) return false;
@@ -211,17 +211,17 @@ bool IblMaps::setEnvironment(const scene::Environment* env, const IblQuality& qu
     }
     quality.validate();
     // An environment wider or higher than the device's images may be is halved until it fits.
-    IblQuality effective = quality;
+    ibl::IblQuality effective = quality;
     const uint32_t deviceLimit = mContext.caps().limits.maxImageDimension2D;
     if (env->width > deviceLimit || env->height > deviceLimit)
         effective.equirectMaxSize = effective.equirectMaxSize ? std::min(effective.equirectMaxSize, deviceLimit) : deviceLimit;
     return setEnvironmentAs(*env, effective, cacheDir, force);
 }
 
-bool IblMaps::setEnvironmentAs(const scene::Environment& environment, const IblQuality& quality,
+bool IblMaps::setEnvironmentAs(const assets::Environment& environment, const ibl::IblQuality& quality,
                                const std::filesystem::path& cacheDir, bool force) {
-    const scene::Environment* env = &environment;
-    const uint64_t hash = scene::contentHash(*env);
+    const assets::Environment* env = &environment;
+    const uint64_t hash = assets::contentHash(*env);
     if (!force && mSource != MapsSource::None && hash == mEnvironmentHash && quality == mQuality &&
         cacheDir == mCacheDir)
         return false;
@@ -249,7 +249,7 @@ bool IblMaps::setEnvironmentAs(const scene::Environment& environment, const IblQ
                             quality.lodBias);
     if (quality.sheen)
         mSheenPass->prepare(mLevels, kSheenSamples, quality.cubeSize, floatMips, quality.filteredSampling, quality.lodBias);
-    if (quality.irradiance == IrradianceMode::Cube)
+    if (quality.irradiance == ibl::IrradianceMode::Cube)
         mIrradianceCubePass->prepare(quality.irradianceSamples, quality.cubeSize, floatMips, quality.filteredSampling,
                             quality.lodBias);
     mSource = MapsSource::Pending;
@@ -312,7 +312,7 @@ passes::IblHandles IblMaps::addToGraph(RenderGraph& graph, ImportBindings& impor
     if (maps.sheen.valid())
         maps.sheen = mSheenPass->add(graph, {.source = resampled.cube, .specular = maps.sheen, .sourceScale = scale,
                                              .bright = bright});
-    if (mQuality.irradiance == IrradianceMode::Sh9)
+    if (mQuality.irradiance == ibl::IrradianceMode::Sh9)
         maps.sh = mShPass->add(graph, {.source = resampled.cube,
                                        .projectedFaceSize = mQuality.shSourceSize,
                                        .coefficients = maps.sh,
@@ -389,7 +389,7 @@ std::vector<std::string> IblMaps::explanation() const {
             break;
     }
     if (!frame.lutComputed) lines.emplace_back("left out: BRDF LUT pass (LUT settings unchanged)");
-    lines.emplace_back(frame.irradiance == IrradianceMode::Sh9
+    lines.emplace_back(frame.irradiance == ibl::IrradianceMode::Sh9
                            ? "left out: irradiance cube (irradiance from SH9; --irradiance cube)"
                            : "left out: SH9 projection (irradiance from the cube; --irradiance sh9)");
     lines.emplace_back(frame.sheen ? "ibl: sheen cube (Charlie-prefiltered, " + std::to_string(sheenFaceSize(mQuality)) +
@@ -399,4 +399,4 @@ std::vector<std::string> IblMaps::explanation() const {
     return lines;
 }
 
-}  // namespace candela::ibl
+}  // namespace candela::ibl_maps

@@ -40,7 +40,7 @@ class IblIrradianceCubePass;
 class IblBrdfLutPass;
 }  // namespace candela::passes
 
-namespace candela::ibl {
+namespace candela::ibl_maps {
 
 // Where the maps of the current environment came from.
 enum class MapsSource : uint8_t { None, Pending, Computed, Cache };
@@ -54,7 +54,7 @@ struct IblFrame {
     Maps maps = Maps::None;
     bool lutComputed = false;   // false: the BRDF LUT pass left out (its settings unchanged)
     uint32_t brightTexels = 0;  // Computed: texels the filters summed instead of sampling (0: none)
-    IrradianceMode irradiance = IrradianceMode::Cube;  // the other mode's pass is left out
+    ibl::IrradianceMode irradiance = ibl::IrradianceMode::Cube;  // the other mode's pass is left out
     bool sheen = false;  // the sheen cube made (false: left out, no material has a sheen)
     bool operator==(const IblFrame&) const = default;
 };
@@ -73,12 +73,12 @@ public:
     // Throws UserError for an invalid quality. Precondition: the GPU no longer uses the maps.
     // `environment` is read only during the call. `force` recomputes even when nothing changed
     // (benchmarks and reports).
-    bool setEnvironment(const scene::Environment* environment, const IblQuality& quality,
+    bool setEnvironment(const assets::Environment* environment, const ibl::IblQuality& quality,
                         const std::filesystem::path& cacheDir, bool force = false);
 
     bool hasEnvironment() const { return mSource != MapsSource::None; }
     MapsSource source() const { return mSource; }
-    const IblQuality& quality() const { return mQuality; }
+    const ibl::IblQuality& quality() const { return mQuality; }
     uint32_t specularLevels() const { return mLevels; }
     uint64_t environmentHash() const { return mEnvironmentHash; }
 
@@ -90,7 +90,7 @@ public:
     // (at most kMaxReferenceTexels, each more than kBrightTexelFactor × the mean luminance), and the list of those
     // texels, which the shader sums explicitly. Uploads and waits; precondition: the GPU no longer
     // uses the previous ones. addToGraph imports them when asked to.
-    void setReferenceEnvironment(const scene::Environment& environment);
+    void setReferenceEnvironment(const assets::Environment& environment);
     uint32_t referenceTexelCount() const { return mReferenceTexelCount; }
     static constexpr uint32_t kMaxReferenceTexels = 4096;
 
@@ -107,7 +107,7 @@ public:
 
     // Copies the current maps to the host (specular mips, irradiance, LUT), for the cache, reports
     // and tests. Waits for the GPU. Precondition: hasEnvironment() and nothing pending.
-    std::vector<CachedImage> readBack();
+    std::vector<ibl::CachedImage> readBack();
 
     // What the last addToGraph did and left out (none before the first, or without an environment).
     IblFrame lastFrame() const;
@@ -126,7 +126,7 @@ public:
     static constexpr VkFormat kEquirectFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
     static constexpr VkFormat kReferenceFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
     // The sheen cube's face: 64 texels (the sheen lobe is broad), or more when the levels need it.
-    static uint32_t sheenFaceSize(const IblQuality& quality);
+    static uint32_t sheenFaceSize(const ibl::IblQuality& quality);
     static constexpr uint32_t kSheenSamples = 64;  // Charlie samples per texel of sheen mip 0 (4× per coarser mip)
 
     // How the maps rest between frames — the final state of every graph that imports them and the
@@ -147,14 +147,14 @@ private:
                                    const vk::Image& image, const std::vector<vk::ImageView>& mipViews,
                                    const graph::ResourceState& initial, std::optional<graph::ResourceState> final);
     // setEnvironment with the device's limits applied to `quality`.
-    bool setEnvironmentAs(const scene::Environment& env, const IblQuality& quality, const std::filesystem::path& cacheDir,
+    bool setEnvironmentAs(const assets::Environment& env, const ibl::IblQuality& quality, const std::filesystem::path& cacheDir,
                           bool force);
-    void createMaps(const IblQuality& quality);
-    void createPrecomputeInputs(const scene::Environment& environment);
+    void createMaps(const ibl::IblQuality& quality);
+    void createPrecomputeInputs(const assets::Environment& environment);
     void ensurePasses();
     bool loadCache();
     void writeCache();
-    CachedImage readImage(const char* name, const vk::Image& image);
+    ibl::CachedImage readImage(const char* name, const vk::Image& image);
 
     vk::Context& mContext;
     // Ground truth (setReferenceEnvironment).
@@ -172,7 +172,7 @@ private:
     Target mFloatCube;
     float mFloatCubeScale = 1.0f;  // the float cube holds radiance × this (IblCubemapPass::floatCubeScale)
     float mEquirectScale = 1.0f;   // the equirect holds radiance × this (IblCubemapPass::halfFloatScale)
-    vk::Buffer mBright;            // ibl::BrightTexels::buffer of the equirect
+    vk::Buffer mBright;            // ibl_maps::BrightTexels::buffer of the equirect
     float mBrightThreshold = 0.0f; // its threshold, in the equirect's units
     uint32_t mBrightCount = 0;
     // Passes (created with the first environment).
@@ -183,7 +183,7 @@ private:
     std::unique_ptr<passes::IblBrdfLutPass> mLutPass;
     std::unique_ptr<passes::IblPrefilterPass> mSheenPass;
 
-    IblQuality mQuality;
+    ibl::IblQuality mQuality;
     uint32_t mLevels = 0;
     uint64_t mEnvironmentHash = 0;
     std::string mEnvironmentName;
@@ -203,4 +203,4 @@ private:
     std::string mCacheNote;  // why the cache was not used / where it was written
 };
 
-}  // namespace candela::ibl
+}  // namespace candela::ibl_maps

@@ -12,7 +12,7 @@
 #include <cstring>
 #include <span>
 
-namespace candela::ibl {
+namespace candela::ibl_maps {
 
 namespace {
 
@@ -25,13 +25,13 @@ uint32_t texelBytes(VkFormat format) {
     }
 }
 
-IblCacheKey cacheKey(uint64_t hash, const IblQuality& quality) { return {hash, quality.canonical()}; }
+ibl::IblCacheKey cacheKey(uint64_t hash, const ibl::IblQuality& quality) { return {hash, quality.canonical()}; }
 
 }  // namespace
 
-CachedImage IblMaps::readImage(const char* name, const vk::Image& image) {
+ibl::CachedImage IblMaps::readImage(const char* name, const vk::Image& image) {
     const vk::ImageDesc& desc = image.desc();
-    CachedImage out{.name = name,
+    ibl::CachedImage out{.name = name,
                     .format = static_cast<uint32_t>(desc.format),
                     .texelBytes = texelBytes(desc.format),
                     .width = desc.width,
@@ -70,10 +70,10 @@ CachedImage IblMaps::readImage(const char* name, const vk::Image& image) {
     return out;
 }
 
-std::vector<CachedImage> IblMaps::readBack() {
+std::vector<ibl::CachedImage> IblMaps::readBack() {
     if (mSource == MapsSource::None || mSource == MapsSource::Pending || mLutPending)
         throw InternalError("IblMaps::readBack: no computed maps");
-    std::vector<CachedImage> images;
+    std::vector<ibl::CachedImage> images;
     images.push_back(readImage("specular", mSpecular.image));
     if (mIrradianceCube.image) images.push_back(readImage("irradiance_cube", mIrradianceCube.image));
     if (mSh) {
@@ -89,7 +89,7 @@ std::vector<CachedImage> IblMaps::readBack() {
                           VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
         commands.submitAndWait();
         staging.invalidate();
-        CachedImage sh{.name = "irradiance_sh", .format = VK_FORMAT_R32G32B32A32_SFLOAT, .texelBytes = 16,
+        ibl::CachedImage sh{.name = "irradiance_sh", .format = VK_FORMAT_R32G32B32A32_SFLOAT, .texelBytes = 16,
                        .width = 9, .height = 1, .layers = 1, .mips = 1};
         sh.data.resize(static_cast<size_t>(mSh.size()));
         std::memcpy(sh.data.data(), staging.mapped(), sh.data.size());
@@ -101,10 +101,10 @@ std::vector<CachedImage> IblMaps::readBack() {
 }
 
 void IblMaps::writeCache() {
-    const IblCacheKey key = cacheKey(mEnvironmentHash, mQuality);
-    mCacheFile = cacheFilePath(mCacheDir, key);
+    const ibl::IblCacheKey key = cacheKey(mEnvironmentHash, mQuality);
+    mCacheFile = ibl::cacheFilePath(mCacheDir, key);
     try {
-        writeCacheFile(mCacheFile, key, readBack());
+        ibl::writeCacheFile(mCacheFile, key, readBack());
         mCacheNote = "wrote " + mCacheFile.string();
     } catch (const UserError& e) {
         // A cache that cannot be written costs the next run a precompute; it is not an error.
@@ -114,36 +114,36 @@ void IblMaps::writeCache() {
 }
 
 bool IblMaps::loadCache() {
-    const IblCacheKey key = cacheKey(mEnvironmentHash, mQuality);
-    const std::filesystem::path path = cacheFilePath(mCacheDir, key);
+    const ibl::IblCacheKey key = cacheKey(mEnvironmentHash, mQuality);
+    const std::filesystem::path path = ibl::cacheFilePath(mCacheDir, key);
     std::string reason;
-    std::optional<std::vector<CachedImage>> images = readCacheFile(path, key, &reason);
+    std::optional<std::vector<ibl::CachedImage>> images = ibl::readCacheFile(path, key, &reason);
     auto miss = [&](const std::string& why) {
         mCacheNote = "miss (" + why + ")";
         return false;
     };
     if (!images) return miss(reason);
-    auto find = [&](const char* name) -> const CachedImage* {
-        for (const CachedImage& image : *images)
+    auto find = [&](const char* name) -> const ibl::CachedImage* {
+        for (const ibl::CachedImage& image : *images)
             if (image.name == name) return &image;
         return nullptr;
     };
-    auto matches = [](const CachedImage* cached, const vk::Image& image) {
+    auto matches = [](const ibl::CachedImage* cached, const vk::Image& image) {
         const vk::ImageDesc& d = image.desc();
         return cached && cached->format == static_cast<uint32_t>(d.format) && cached->width == d.width &&
                cached->height == d.height && cached->layers == d.arrayLayers && cached->mips == d.mipLevels;
     };
-    const CachedImage* specular = find("specular");
-    const CachedImage* lut = find("brdf_lut");
-    const CachedImage* irradiance = mIrradianceCube.image ? find("irradiance_cube") : find("irradiance_sh");
-    const CachedImage* sheen = find("sheen");
+    const ibl::CachedImage* specular = find("specular");
+    const ibl::CachedImage* lut = find("brdf_lut");
+    const ibl::CachedImage* irradiance = mIrradianceCube.image ? find("irradiance_cube") : find("irradiance_sh");
+    const ibl::CachedImage* sheen = find("sheen");
     if (!matches(specular, mSpecular.image) || !matches(lut, mLut.image) || (mSheen.image && !matches(sheen, mSheen.image)) ||
         (mIrradianceCube.image && !matches(irradiance, mIrradianceCube.image)) ||
         (mSh && (!irradiance || irradiance->data.size() != mSh.size())))
         return miss(path.string() + ": maps of unexpected shape");
 
     vk::Uploader upload(mContext);
-    auto uploadImage = [&](const CachedImage& cached, const vk::Image& image) {
+    auto uploadImage = [&](const ibl::CachedImage& cached, const vk::Image& image) {
         size_t offset = 0;
         for (uint32_t mip = 0; mip < cached.mips; ++mip) {
             const size_t layerBytes = size_t(std::max(cached.width >> mip, 1u)) * std::max(cached.height >> mip, 1u) *
@@ -166,4 +166,4 @@ bool IblMaps::loadCache() {
     return true;
 }
 
-}  // namespace candela::ibl
+}  // namespace candela::ibl_maps

@@ -3,7 +3,7 @@
 #include "ibl_maps/ibl_maps.h"
 #include "passes/ibl/ibl_sheen_lut_pass.h"
 
-namespace candela::ibl {
+namespace candela::ibl_maps {
 
 using namespace graph;
 
@@ -34,4 +34,4 @@ void SheenLut::frameCompleted(const RenderGraph& graph) {
     mComputed = pass && graph.compiled().passes[*pass].cullReason == CullReason::None;
 }
 
-}  // namespace candela::ibl
+}  // namespace candela::ibl_maps

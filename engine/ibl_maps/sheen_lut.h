@@ -19,7 +19,7 @@ namespace candela::passes {
 class IblSheenLutPass;
 }
 
-namespace candela::ibl {
+namespace candela::ibl_maps {
 
 class SheenLut {
 public:
@@ -43,4 +43,4 @@ private:
     bool mAdded = false;
 };
 
-}  // namespace candela::ibl
+}  // namespace candela::ibl_maps

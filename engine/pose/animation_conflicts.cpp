@@ -7,7 +7,7 @@
 #include <map>
 #include <tuple>
 
-namespace candela::scene {
+namespace candela::pose {
 namespace {
 
 constexpr uint32_t kAllWeights = std::numeric_limits<uint32_t>::max();
@@ -15,7 +15,7 @@ constexpr uint32_t kAllWeights = std::numeric_limits<uint32_t>::max();
 // What one channel drives, as the pointer parser describes it (scene/animated_properties.h). Node
 // channels: kind Node, index = Scene::nodes index, element = the weight (kAllWeights for a whole
 // weights channel, 0 otherwise). Property channels: the object's kind and glTF index, `field` its row.
-using Target = PointerTarget;
+using Target = scene::PointerTarget;
 
 // The drivers map's order.
 struct TargetOrder {
@@ -23,38 +23,38 @@ struct TargetOrder {
     bool operator()(const Target& a, const Target& b) const { return tie(a) < tie(b); }
 };
 
-Target targetOf(const AnimationChannel& channel) {
-    Target t{.kind = PointerKind::Node, .index = channel.node, .property = channel.property};
+Target targetOf(const animation::AnimationChannel& channel) {
+    Target t{.kind = scene::PointerKind::Node, .index = channel.node, .property = channel.property};
     // Weights and Weight share one property so that a node's weight channels sort together.
-    if (channel.property == AnimatedProperty::Weights) t.element = kAllWeights;
-    if (channel.property == AnimatedProperty::Weight) {
-        t.property = AnimatedProperty::Weights;
+    if (channel.property == animation::AnimatedProperty::Weights) t.element = kAllWeights;
+    if (channel.property == animation::AnimatedProperty::Weight) {
+        t.property = animation::AnimatedProperty::Weights;
         t.element = channel.element;
     }
     return t;
 }
 
-Target targetOf(const PropertyChannel& channel) {
-    PointerKind kind = PointerKind::Material;
-    if (AnimatedObject(channel.object) == AnimatedObject::Light) kind = PointerKind::Light;
-    if (AnimatedObject(channel.object) == AnimatedObject::Camera) kind = PointerKind::Camera;
+Target targetOf(const animation::PropertyChannel& channel) {
+    scene::PointerKind kind = scene::PointerKind::Material;
+    if (scene::AnimatedObject(channel.object) == scene::AnimatedObject::Light) kind = scene::PointerKind::Light;
+    if (scene::AnimatedObject(channel.object) == scene::AnimatedObject::Camera) kind = scene::PointerKind::Camera;
     return {.kind = kind, .index = channel.index, .field = channel.field};
 }
 
-std::string nodeName(const Scene& scene, uint32_t node) {
-    const SceneNode& n = scene.nodes[node];
+std::string nodeName(const scene::Scene& scene, uint32_t node) {
+    const animation::SceneNode& n = scene.nodes[node];
     return n.name.empty() ? "node " + std::to_string(n.source) : "'" + n.name + "'";
 }
 
-std::string describe(const Scene& scene, const Target& t) {
-    if (t.kind != PointerKind::Node)
-        return pointerOf({.kind = t.kind, .index = t.index, .property = AnimatedProperty::Values, .field = t.field});
+std::string describe(const scene::Scene& scene, const Target& t) {
+    if (t.kind != scene::PointerKind::Node)
+        return scene::pointerOf({.kind = t.kind, .index = t.index, .property = animation::AnimatedProperty::Values, .field = t.field});
     const std::string of = " of " + nodeName(scene, t.index);
     switch (t.property) {
-        case AnimatedProperty::Translation: return "translation" + of;
-        case AnimatedProperty::Rotation: return "rotation" + of;
-        case AnimatedProperty::Scale: return "scale" + of;
-        case AnimatedProperty::Visibility: return "visibility" + of;
+        case animation::AnimatedProperty::Translation: return "translation" + of;
+        case animation::AnimatedProperty::Rotation: return "rotation" + of;
+        case animation::AnimatedProperty::Scale: return "scale" + of;
+        case animation::AnimatedProperty::Visibility: return "visibility" + of;
         default: return (t.element == kAllWeights ? std::string("morph weights") : "morph weight " + std::to_string(t.element)) + of;
     }
 }
@@ -63,13 +63,13 @@ void addDriver(std::vector<uint32_t>& drivers, uint32_t animation) {
     if (std::find(drivers.begin(), drivers.end(), animation) == drivers.end()) drivers.push_back(animation);
 }
 
-std::string animationName(const Scene& scene, uint32_t a) {
+std::string animationName(const scene::Scene& scene, uint32_t a) {
     const std::string& name = scene.animations[a].name;
     return name.empty() ? "animation " + std::to_string(a) : "'" + name + "'";
 }
 
 // "'A'", "'A' and 'B'", "'A', 'B' and 'C'".
-std::string listOf(const Scene& scene, const std::vector<uint32_t>& animations) {
+std::string listOf(const scene::Scene& scene, const std::vector<uint32_t>& animations) {
     std::string out;
     for (size_t i = 0; i < animations.size(); ++i)
         out += (i == 0 ? "" : i + 1 == animations.size() ? " and " : ", ") + animationName(scene, animations[i]);
@@ -78,7 +78,7 @@ std::string listOf(const Scene& scene, const std::vector<uint32_t>& animations) 
 
 }  // namespace
 
-std::vector<AnimationConflict> animationConflicts(const Scene& scene, std::span<const uint32_t> playing) {
+std::vector<AnimationConflict> animationConflicts(const scene::Scene& scene, std::span<const uint32_t> playing) {
     std::map<Target, std::vector<uint32_t>, TargetOrder> drivers;
     std::vector<Target> order;  // first appearance
     const auto add = [&](const Target& t, uint32_t a) {
@@ -87,15 +87,15 @@ std::vector<AnimationConflict> animationConflicts(const Scene& scene, std::span<
         addDriver(it->second, a);
     };
     for (uint32_t a : playing) {
-        for (const AnimationChannel& channel : scene.animations[a].channels) add(targetOf(channel), a);
-        for (const PropertyChannel& channel : scene.animations[a].properties) add(targetOf(channel), a);
+        for (const animation::AnimationChannel& channel : scene.animations[a].channels) add(targetOf(channel), a);
+        for (const animation::PropertyChannel& channel : scene.animations[a].properties) add(targetOf(channel), a);
     }
     // A whole-weights channel also writes each single weight of its node.
     for (auto& [target, animations] : drivers) {
-        if (target.kind != PointerKind::Node || target.property != AnimatedProperty::Weights || target.element == kAllWeights)
+        if (target.kind != scene::PointerKind::Node || target.property != animation::AnimatedProperty::Weights || target.element == kAllWeights)
             continue;
-        const auto all = drivers.find(Target{.kind = PointerKind::Node, .index = target.index,
-                                             .property = AnimatedProperty::Weights, .element = kAllWeights});
+        const auto all = drivers.find(Target{.kind = scene::PointerKind::Node, .index = target.index,
+                                             .property = animation::AnimatedProperty::Weights, .element = kAllWeights});
         if (all != drivers.end())
             for (uint32_t a : all->second) addDriver(animations, a);
     }
@@ -109,7 +109,7 @@ std::vector<AnimationConflict> animationConflicts(const Scene& scene, std::span<
     return out;
 }
 
-std::string describeAnimationConflicts(const Scene& scene, std::span<const AnimationConflict> conflicts) {
+std::string describeAnimationConflicts(const scene::Scene& scene, std::span<const AnimationConflict> conflicts) {
     if (conflicts.empty()) return {};
     std::vector<uint32_t> involved;
     std::map<uint32_t, size_t> wins;  // per winning animation, on how many channels
@@ -134,4 +134,4 @@ std::string describeAnimationConflicts(const Scene& scene, std::span<const Anima
     return line + " (the last in the file; animations are applied in file order, not blended)";
 }
 
-}  // namespace candela::scene
+}  // namespace candela::pose

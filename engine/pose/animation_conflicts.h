@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::scene {
+namespace candela::pose {
 
 // One channel driven by more than one playing animation.
 struct AnimationConflict {
@@ -30,12 +30,12 @@ struct AnimationConflict {
 // rotation, scale, visibility or morph weights (a weights channel overlaps every single-weight
 // channel of the same node), or a material, light or camera field. Empty when every channel has
 // at most one driver (one animation, or animations on disjoint channels).
-std::vector<AnimationConflict> animationConflicts(const Scene& scene, std::span<const uint32_t> playing);
+std::vector<AnimationConflict> animationConflicts(const scene::Scene& scene, std::span<const uint32_t> playing);
 
 // One line for the user ("" when `conflicts` is empty): which animations overlap, on how many
 // channels (the first named), and which wins — e.g. "animations 'Survey', 'Walk' and 'Run' drive
 // the same 24 channels (rotation of 'b_Hip_01', ...); 'Run' wins (the last in the file; animations
 // are applied in file order, not blended)".
-std::string describeAnimationConflicts(const Scene& scene, std::span<const AnimationConflict> conflicts);
+std::string describeAnimationConflicts(const scene::Scene& scene, std::span<const AnimationConflict> conflicts);
 
-}  // namespace candela::scene
+}  // namespace candela::pose

@@ -4,14 +4,14 @@
 #include <cfloat>
 #include <cmath>
 
-namespace candela::scene {
+namespace candela::pose {
 namespace {
 
 bool fitsFloat(double v) { return std::isfinite(v) && std::abs(v) <= double(FLT_MAX); }
 
 }  // namespace
 
-Placement placeDraw(Draw& draw, const glm::dmat4& world, const glm::vec3& reach, std::span<const glm::mat4> instances) {
+Placement placeDraw(scene::Draw& draw, const glm::dmat4& world, const glm::vec3& reach, std::span<const glm::mat4> instances) {
     draw.hidden = true;
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
@@ -22,7 +22,7 @@ Placement placeDraw(Draw& draw, const glm::dmat4& world, const glm::vec3& reach,
     double det = glm::determinant(glm::dmat3(glm::mat3(worldF)));
     if (det == 0.0 || !std::isfinite(det)) return Placement::Singular;
     if (!instances.empty()) det *= glm::determinant(glm::dmat3(glm::mat3(instances[0])));
-    Aabb bounds;
+    scene::Aabb bounds;
     const glm::dvec3 lo = glm::dvec3(draw.localBounds.min) - glm::dvec3(reach);
     const glm::dvec3 hi = glm::dvec3(draw.localBounds.max) + glm::dvec3(reach);
     const size_t copies = std::max<size_t>(instances.size(), 1);
@@ -42,7 +42,7 @@ Placement placeDraw(Draw& draw, const glm::dmat4& world, const glm::vec3& reach,
     return Placement::Placed;
 }
 
-Placement placeSkinnedDraw(Draw& draw, const Aabb& bounds) {
+Placement placeSkinnedDraw(scene::Draw& draw, const scene::Aabb& bounds) {
     draw.world = glm::mat4(1.0f);
     draw.flipWinding = false;
     draw.bounds = bounds;
@@ -52,14 +52,14 @@ Placement placeSkinnedDraw(Draw& draw, const Aabb& bounds) {
     return !fits ? Placement::BeyondFloat : bounds.valid() ? Placement::Placed : Placement::Singular;
 }
 
-void placeLight(Light& light, const glm::dmat4& world) {
+void placeLight(scene::Light& light, const glm::dmat4& world) {
     light.position = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
     const glm::dvec3 direction = glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0);
     const double length = glm::length(direction);
     light.direction = length > 0.0 && std::isfinite(length) ? glm::vec3(direction / length) : glm::vec3(0.0f, 0.0f, -1.0f);
 }
 
-bool placeCamera(Camera& camera, const glm::dmat4& world) {
+bool placeCamera(scene::Camera& camera, const glm::dmat4& world) {
     glm::dmat4 m = world;
     for (int c = 0; c < 3; ++c) {
         const double length = glm::length(glm::dvec3(m[c]));
@@ -70,4 +70,4 @@ bool placeCamera(Camera& camera, const glm::dmat4& world) {
     return true;
 }
 
-}  // namespace candela::scene
+}  // namespace candela::pose

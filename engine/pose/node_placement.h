@@ -9,7 +9,7 @@
 
 #include <span>
 
-namespace candela::scene {
+namespace candela::pose {
 
 enum class Placement : uint8_t {
     Placed,
@@ -23,20 +23,20 @@ enum class Placement : uint8_t {
 // For an instanced draw `instances` are its instance matrices (Scene::instances slice): the bounds
 // hold every instance and the winding follows world · instance 0 (the loader keeps a draw's
 // instances alike).
-Placement placeDraw(Draw& draw, const glm::dmat4& world, const glm::vec3& reach = glm::vec3(0.0f),
+Placement placeDraw(scene::Draw& draw, const glm::dmat4& world, const glm::vec3& reach = glm::vec3(0.0f),
                     std::span<const glm::mat4> instances = {});
 
 // A skinned draw: its vertices are placed in world space by the joints, so its world matrix is
 // the identity; `bounds` (pose/skinning.h skinnedBounds) become its bounds. Hidden when they are
 // invalid or beyond a float.
-Placement placeSkinnedDraw(Draw& draw, const Aabb& bounds);
+Placement placeSkinnedDraw(scene::Draw& draw, const scene::Aabb& bounds);
 
 // Sets the light's position and direction (its node's −Z) from `world`; a direction that cannot be
 // normalized stays −Z.
-void placeLight(Light& light, const glm::dmat4& world);
+void placeLight(scene::Light& light, const glm::dmat4& world);
 
 // Sets camera.world to `world` without scale (glTF cameras ignore it). False, leaving the camera
 // unchanged, when an axis has zero or non-finite length.
-bool placeCamera(Camera& camera, const glm::dmat4& world);
+bool placeCamera(scene::Camera& camera, const glm::dmat4& world);
 
-}  // namespace candela::scene
+}  // namespace candela::pose

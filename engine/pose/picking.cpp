@@ -6,12 +6,12 @@
 #include <cmath>
 #include <limits>
 
-namespace candela::scene {
+namespace candela::pose {
 
 namespace {
 
 // Slab test; returns the entry distance or nullopt.
-std::optional<float> hitBox(const Aabb& box, const Ray& ray) {
+std::optional<float> hitBox(const scene::Aabb& box, const Ray& ray) {
     float near = 0.0f, far = std::numeric_limits<float>::max();
     for (int axis = 0; axis < 3; ++axis) {
         const float inverse = 1.0f / ray.direction[axis];  // ±inf for axis-parallel rays: fine
@@ -46,7 +46,7 @@ std::optional<float> hitTriangle(const Ray& ray, const glm::vec3& a, const glm::
 
 }  // namespace
 
-Ray viewRay(const ViewSetup& view, const glm::vec2& ndc) {
+Ray viewRay(const scene::ViewSetup& view, const glm::vec2& ndc) {
     const glm::mat4 inverse = glm::inverse(view.viewProjection);
     // Reverse-Z: depth 1 at the near plane, 0.5 further along the same ray.
     const glm::vec4 nearPoint = inverse * glm::vec4(ndc, 1.0f, 1.0f);
@@ -60,15 +60,15 @@ namespace {
 // The nearest hit among `draws`; `positions(d)` gives draw d's vertex positions in its draw space
 // (indexable by the scene's absolute indices minus `base(d)`).
 template <typename Positions>
-std::optional<Pick> pick(const Scene& scene, std::span<const Draw> draws, const Ray& ray, Positions&& positions) {
+std::optional<Pick> pick(const scene::Scene& scene, std::span<const scene::Draw> draws, const Ray& ray, Positions&& positions) {
     std::optional<Pick> best;
     for (uint32_t d = 0; d < draws.size(); ++d) {
-        const Draw& draw = draws[d];
+        const scene::Draw& draw = draws[d];
         if (draw.hidden) continue;
         const std::optional<float> box = hitBox(draw.bounds, ray);
         if (!box || (best && *box > best->distance)) continue;
-        const std::pair<std::span<const Vertex>, uint32_t> range = positions(d);
-        const std::span<const Vertex> vertices = range.first;  // (no structured binding: lambdas capture it)
+        const std::pair<std::span<const scene::Vertex>, uint32_t> range = positions(d);
+        const std::span<const scene::Vertex> vertices = range.first;  // (no structured binding: lambdas capture it)
         const uint32_t base = range.second;
         for (uint32_t instance = 0; instance < std::max(draw.instanceCount, 1u); ++instance) {
             const glm::mat4 m = draw.instanceCount ? draw.world * scene.instances[draw.firstInstance + instance] : draw.world;
@@ -88,21 +88,21 @@ std::optional<Pick> pick(const Scene& scene, std::span<const Draw> draws, const 
 
 }  // namespace
 
-std::optional<Pick> pickDraw(const Scene& scene, const Ray& ray) {
-    return pick(scene, scene.draws, ray, [&](uint32_t) { return std::pair{std::span<const Vertex>(scene.vertices), 0u}; });
+std::optional<Pick> pickDraw(const scene::Scene& scene, const Ray& ray) {
+    return pick(scene, scene.draws, ray, [&](uint32_t) { return std::pair{std::span<const scene::Vertex>(scene.vertices), 0u}; });
 }
 
-std::optional<Pick> pickDraw(const Scene& scene, const ScenePose& pose, const Ray& ray) {
+std::optional<Pick> pickDraw(const scene::Scene& scene, const ScenePose& pose, const Ray& ray) {
     const std::vector<uint32_t> deformed = pose.deformedDraws();
-    std::vector<Vertex> posed;  // the deformed vertices of the draw being tested
+    std::vector<scene::Vertex> posed;  // the deformed vertices of the draw being tested
     static const std::vector<glm::dmat4> kNoJoints;
     return pick(scene, pose.draws(), ray, [&](uint32_t d) {
         if (!std::binary_search(deformed.begin(), deformed.end(), d))
-            return std::pair{std::span<const Vertex>(scene.vertices), 0u};
-        const Draw& draw = pose.draws()[d];
+            return std::pair{std::span<const scene::Vertex>(scene.vertices), 0u};
+        const scene::Draw& draw = pose.draws()[d];
         posed = deformVertices(scene, draw, pose.weights(draw), draw.skin >= 0 ? pose.jointMatrices(uint32_t(draw.skin)) : kNoJoints);
-        return std::pair{std::span<const Vertex>(posed), scene.deformations[size_t(draw.deformation)].firstVertex};
+        return std::pair{std::span<const scene::Vertex>(posed), scene.deformations[size_t(draw.deformation)].firstVertex};
     });
 }
 
-}  // namespace candela::scene
+}  // namespace candela::pose

@@ -10,7 +10,7 @@
 
 #include <optional>
 
-namespace candela::scene {
+namespace candela::pose {
 
 struct Ray {
     glm::vec3 origin{0.0f};
@@ -19,7 +19,7 @@ struct Ray {
 
 // The ray through pixel centre-relative position `ndc` ∈ [-1, 1]² (x right, y down, Vulkan's clip
 // space) of `view` (perspective, reverse-Z).
-Ray viewRay(const ViewSetup& view, const glm::vec2& ndc);
+Ray viewRay(const scene::ViewSetup& view, const glm::vec2& ndc);
 
 struct Pick {
     uint32_t draw = 0;    // index into Scene::draws
@@ -27,9 +27,9 @@ struct Pick {
 };
 
 // The nearest draw whose triangles (both faces) the ray hits, if any.
-std::optional<Pick> pickDraw(const Scene& scene, const Ray& ray);
+std::optional<Pick> pickDraw(const scene::Scene& scene, const Ray& ray);
 // The same in a pose of `scene`: posed draws, skinned and morphed meshes as deformed this frame
 // (on the CPU, pose/skinning.h); hidden draws are not hit. Pick::draw indexes pose.draws().
-std::optional<Pick> pickDraw(const Scene& scene, const ScenePose& pose, const Ray& ray);
+std::optional<Pick> pickDraw(const scene::Scene& scene, const ScenePose& pose, const Ray& ray);
 
-}  // namespace candela::scene
+}  // namespace candela::pose

@@ -9,7 +9,7 @@
 #include <charconv>
 #include <set>
 
-namespace candela::scene {
+namespace candela::pose {
 namespace {
 
 // Indices of the items whose node is marked in `moved` (one flag per node).
@@ -40,7 +40,7 @@ std::vector<uint32_t> sortedSet(std::vector<uint32_t> list) {
     return list;
 }
 
-std::string animationList(const Scene& scene) {
+std::string animationList(const scene::Scene& scene) {
     if (scene.animations.empty()) return "the scene has no animations";
     std::string out = "its animations: ";
     for (size_t i = 0; i < scene.animations.size(); ++i)
@@ -50,7 +50,7 @@ std::string animationList(const Scene& scene) {
 
 }  // namespace
 
-std::vector<uint32_t> selectAnimations(const Scene& scene, std::span<const std::string> names) {
+std::vector<uint32_t> selectAnimations(const scene::Scene& scene, std::span<const std::string> names) {
     std::set<uint32_t> chosen;
     if (names.empty()) {
         if (!scene.animations.empty()) chosen.insert(0);
@@ -71,34 +71,34 @@ std::vector<uint32_t> selectAnimations(const Scene& scene, std::span<const std::
             continue;
         }
         const auto it = std::find_if(scene.animations.begin(), scene.animations.end(),
-                                     [&](const Animation& a) { return a.name == name; });
+                                     [&](const animation::Animation& a) { return a.name == name; });
         if (it == scene.animations.end()) throw UserError("no animation named '" + name + "' (" + animationList(scene) + ")");
         chosen.insert(uint32_t(it - scene.animations.begin()));
     }
     return {chosen.begin(), chosen.end()};
 }
 
-ScenePose::ScenePose(const Scene& scene, std::vector<uint32_t> playing)
+ScenePose::ScenePose(const scene::Scene& scene, std::vector<uint32_t> playing)
     : mScene(&scene), mPlaying(std::move(playing)), mNodes(scene.nodes), mDraws(scene.draws), mLights(scene.lights),
       mCameras(scene.cameras), mMaterials(scene.materials), mLightsOf(bySource(scene.lights)), mCamerasOf(bySource(scene.cameras)) {
     std::vector<uint32_t> targets;
     for (uint32_t a : mPlaying) {
-        for (const AnimationChannel& channel : scene.animations[a].channels) targets.push_back(channel.node);
-        for (const PropertyChannel& p : scene.animations[a].properties) {
+        for (const animation::AnimationChannel& channel : scene.animations[a].channels) targets.push_back(channel.node);
+        for (const animation::PropertyChannel& p : scene.animations[a].properties) {
             mAnimatesProperties = true;
             const auto of = [&](const std::vector<std::vector<uint32_t>>& bySource) {
                 return p.index < bySource.size() ? bySource[p.index] : std::vector<uint32_t>{};
             };
-            switch (AnimatedObject(p.object)) {
-                case AnimatedObject::Material:
-                    if (p.index >= mMaterials.size() || p.field >= materialFields().size()) break;  // (the loader's are valid)
+            switch (scene::AnimatedObject(p.object)) {
+                case scene::AnimatedObject::Material:
+                    if (p.index >= mMaterials.size() || p.field >= scene::materialFields().size()) break;  // (the loader's are valid)
                     mAnimatedMaterials.push_back(p.index);
-                    mAnimatesLayers = mAnimatesLayers || materialFields()[p.field].layerData;
+                    mAnimatesLayers = mAnimatesLayers || scene::materialFields()[p.field].layerData;
                     break;
-                case AnimatedObject::Light:
+                case scene::AnimatedObject::Light:
                     for (uint32_t l : of(mLightsOf)) mPropertyLights.push_back(l);
                     break;
-                case AnimatedObject::Camera:
+                case scene::AnimatedObject::Camera:
                     for (uint32_t c : of(mCamerasOf)) mPropertyCameras.push_back(c);
                     break;
             }
@@ -107,7 +107,7 @@ ScenePose::ScenePose(const Scene& scene, std::vector<uint32_t> playing)
     mAnimatedMaterials = sortedSet(std::move(mAnimatedMaterials));
     mPropertyLights = sortedSet(std::move(mPropertyLights));
     mPropertyCameras = sortedSet(std::move(mPropertyCameras));
-    mDependent = dependentNodes(mNodes, targets);
+    mDependent = animation::dependentNodes(mNodes, targets);
     std::vector<uint8_t> moved(mNodes.size(), 0);
     for (uint32_t node : mDependent) moved[node] = 1;
     mAnimatedDraws = onMovedNodes(mDraws, moved);
@@ -116,12 +116,12 @@ ScenePose::ScenePose(const Scene& scene, std::vector<uint32_t> playing)
     mJointBounds.resize(mDraws.size());
     std::vector<uint8_t> skinMoved(scene.skins.size(), 0);
     for (size_t s = 0; s < scene.skins.size(); ++s) {
-        scene::jointMatrices(scene.skins[s], mNodes, mJoints[s]);
+        pose::jointMatrices(scene.skins[s], mNodes, mJoints[s]);
         for (uint32_t joint : scene.skins[s].joints) skinMoved[s] |= moved[joint];
         if (skinMoved[s]) mMovedSkins.push_back(uint32_t(s));
     }
     for (uint32_t d = 0; d < mDraws.size(); ++d) {
-        const Draw& draw = mDraws[d];
+        const scene::Draw& draw = mDraws[d];
         if (draw.skin < 0) continue;
         mJointBounds[d] = jointMeshBounds(scene.deformations[size_t(draw.deformation)], scene.skins[size_t(draw.skin)], scene.vertices);
         if (skinMoved[size_t(draw.skin)] && !std::binary_search(mAnimatedDraws.begin(), mAnimatedDraws.end(), d))
@@ -146,17 +146,17 @@ void ScenePose::evaluate(double time, bool loop) {
     mLoop = loop;
     if (!animated()) return;
     for (uint32_t a : mPlaying) {
-        const Animation& animation = mScene->animations[a];
-        const double at = loop ? loopTime(time, animation.duration) : time;
-        applyAnimation(animation, at, mNodes);
+        const animation::Animation& animation = mScene->animations[a];
+        const double at = loop ? animation::loopTime(time, animation.duration) : time;
+        animation::applyAnimation(animation, at, mNodes);
         applyProperties(animation, at);
     }
     if (!movesNodes()) return;
-    updateWorldTransforms(mNodes, mDependent);
-    for (uint32_t s : mMovedSkins) scene::jointMatrices(mScene->skins[s], mNodes, mJoints[s]);
+    animation::updateWorldTransforms(mNodes, mDependent);
+    for (uint32_t s : mMovedSkins) pose::jointMatrices(mScene->skins[s], mNodes, mJoints[s]);
     for (uint32_t d : mAnimatedDraws) place(d);
     for (uint32_t l : mAnimatedLights) {
-        const SceneNode& node = mNodes[size_t(mLights[l].node)];
+        const animation::SceneNode& node = mNodes[size_t(mLights[l].node)];
         placeLight(mLights[l], node.world);
         mLights[l].hidden = !node.shown;
     }
@@ -165,21 +165,21 @@ void ScenePose::evaluate(double time, bool loop) {
     for (uint32_t c : mAnimatedCameras) placeCamera(mCameras[c], mNodes[size_t(mCameras[c].node)].world);
 }
 
-void ScenePose::applyProperties(const Animation& animation, double time) {
+void ScenePose::applyProperties(const animation::Animation& animation, double time) {
     float value[4];
-    for (const PropertyChannel& p : animation.properties) {
-        const AnimationSampler& sampler = animation.samplers[p.sampler];
+    for (const animation::PropertyChannel& p : animation.properties) {
+        const animation::AnimationSampler& sampler = animation.samplers[p.sampler];
         const std::span<const float> values(value, sampler.width);
-        evaluateSampler(sampler, AnimatedProperty::Values, time, std::span<float>(value, sampler.width));
-        switch (AnimatedObject(p.object)) {
-            case AnimatedObject::Material:
+        animation::evaluateSampler(sampler, animation::AnimatedProperty::Values, time, std::span<float>(value, sampler.width));
+        switch (scene::AnimatedObject(p.object)) {
+            case scene::AnimatedObject::Material:
                 if (p.index < mMaterials.size()) writeMaterial(mMaterials[p.index], p.field, values);
                 break;
-            case AnimatedObject::Light:
+            case scene::AnimatedObject::Light:
                 if (p.index < mLightsOf.size())
                     for (uint32_t l : mLightsOf[p.index]) writeLight(mLights[l], p.field, values);
                 break;
-            case AnimatedObject::Camera:
+            case scene::AnimatedObject::Camera:
                 if (p.index < mCamerasOf.size())
                     for (uint32_t c : mCamerasOf[p.index]) writeCamera(mCameras[c], p.field, values);
                 break;
@@ -188,7 +188,7 @@ void ScenePose::applyProperties(const Animation& animation, double time) {
 }
 
 void ScenePose::place(uint32_t d) {
-    Draw& draw = mDraws[d];
+    scene::Draw& draw = mDraws[d];
     const glm::vec3 reach =
         draw.deformation >= 0 ? morphReach(mScene->deformations[size_t(draw.deformation)], weights(draw)) : glm::vec3(0.0f);
     if (draw.skin >= 0) placeSkinnedDraw(draw, skinnedBounds(mJointBounds[d], mJoints[size_t(draw.skin)], reach));
@@ -198,7 +198,7 @@ void ScenePose::place(uint32_t d) {
     if (draw.node >= 0 && !mNodes[size_t(draw.node)].shown) draw.hidden = true;
 }
 
-std::span<const float> ScenePose::weights(const Draw& draw) const {
+std::span<const float> ScenePose::weights(const scene::Draw& draw) const {
     if (draw.node < 0) return {};
     return mNodes[size_t(draw.node)].weights;
 }
@@ -206,7 +206,7 @@ std::span<const float> ScenePose::weights(const Draw& draw) const {
 std::vector<uint32_t> ScenePose::deformedDraws() const {
     std::vector<uint32_t> out;
     for (uint32_t d = 0; d < mDraws.size(); ++d) {
-        const Draw& draw = mDraws[d];
+        const scene::Draw& draw = mDraws[d];
         if (draw.hidden || draw.deformation < 0) continue;
         const std::span<const float> w = weights(draw);
         const bool morphed = mScene->deformations[size_t(draw.deformation)].targetCount > 0 &&
@@ -216,17 +216,17 @@ std::vector<uint32_t> ScenePose::deformedDraws() const {
     return out;
 }
 
-Aabb ScenePose::bounds() const {
-    Aabb out;
-    for (const Draw& d : mDraws)
+scene::Aabb ScenePose::bounds() const {
+    scene::Aabb out;
+    for (const scene::Draw& d : mDraws)
         if (!d.hidden) out.extend(d.bounds);
     return out;
 }
 
-Aabb ScenePose::boundsOverAnimation(size_t maxSamples) {
+scene::Aabb ScenePose::boundsOverAnimation(size_t maxSamples) {
     std::vector<double> times{0.0};
     for (uint32_t a : mPlaying)
-        for (const AnimationChannel& channel : mScene->animations[a].channels)
+        for (const animation::AnimationChannel& channel : mScene->animations[a].channels)
             for (float t : mScene->animations[a].samplers[channel.sampler].times) times.push_back(double(t));
     // (Property channels move nothing: their keys do not change the bounds.)
     std::sort(times.begin(), times.end());
@@ -236,7 +236,7 @@ Aabb ScenePose::boundsOverAnimation(size_t maxSamples) {
         times.clear();
         for (size_t i = 0; i < maxSamples; ++i) times.push_back(last * double(i) / double(maxSamples - 1));
     }
-    Aabb out;
+    scene::Aabb out;
     for (double t : times) {
         evaluate(t, /*loop=*/false);
         out.extend(bounds());
@@ -244,4 +244,4 @@ Aabb ScenePose::boundsOverAnimation(size_t maxSamples) {
     return out;
 }
 
-}  // namespace candela::scene
+}  // namespace candela::pose

@@ -17,18 +17,18 @@
 #include <string>
 #include <vector>
 
-namespace candela::scene {
+namespace candela::pose {
 
 // The animations named by `names` (each an index, a name, "all" or "none"; the empty list means
 // animation 0 when the scene has any), ascending and without repeats. Throws UserError naming the
 // scene's animations for a name or index that does not exist.
-std::vector<uint32_t> selectAnimations(const Scene& scene, std::span<const std::string> names);
+std::vector<uint32_t> selectAnimations(const scene::Scene& scene, std::span<const std::string> names);
 
 class ScenePose {
 public:
     // Poses `scene` (which must outlive the pose) with the animations `playing` (indices into
     // scene.animations, each valid), at time 0 until evaluate() is called.
-    ScenePose(const Scene& scene, std::vector<uint32_t> playing);
+    ScenePose(const scene::Scene& scene, std::vector<uint32_t> playing);
 
     // Applies every playing animation at `time` seconds — wrapped into each animation's own
     // duration when `loop` (as the Khronos sample viewer and three.js play them), else clamped at
@@ -46,11 +46,11 @@ public:
     // The longest duration among the playing animations, seconds (0 without any).
     double duration() const;
 
-    const std::vector<SceneNode>& nodes() const { return mNodes; }
-    const std::vector<Draw>& draws() const { return mDraws; }
-    const std::vector<Light>& lights() const { return mLights; }
-    const std::vector<Camera>& cameras() const { return mCameras; }
-    const std::vector<Material>& materials() const { return mMaterials; }
+    const std::vector<animation::SceneNode>& nodes() const { return mNodes; }
+    const std::vector<scene::Draw>& draws() const { return mDraws; }
+    const std::vector<scene::Light>& lights() const { return mLights; }
+    const std::vector<scene::Camera>& cameras() const { return mCameras; }
+    const std::vector<scene::Material>& materials() const { return mMaterials; }
     // Which draws / lights follow an animated node (indices, ascending): their placement and
     // their `hidden` (KHR_node_visibility) change with the pose.
     const std::vector<uint32_t>& animatedDraws() const { return mAnimatedDraws; }
@@ -65,36 +65,36 @@ public:
     // The joint matrices (world · inverse bind) of Scene::skins[skin] in this pose.
     const std::vector<glm::dmat4>& jointMatrices(uint32_t skin) const { return mJoints[skin]; }
     // The morph weights of a draw's node in this pose (empty without morph targets).
-    std::span<const float> weights(const Draw& draw) const;
+    std::span<const float> weights(const scene::Draw& draw) const;
     // The visible draws whose vertices must be deformed in this pose: skinned ones, and those with
     // a non-zero morph weight (a morphed mesh at all-zero weights is its rest geometry).
     std::vector<uint32_t> deformedDraws() const;
 
     // The bounds of the visible draws in this pose.
-    Aabb bounds() const;
+    scene::Aabb bounds() const;
     // Bounds containing the whole animation (what framing uses): the union of the poses at time 0
     // and at every key time of the playing animations — at most 1024, evenly spread over the
     // duration beyond that. Computed once, with the pose. Node animation reaches its extremes at
     // keys for STEP and LINEAR; cubic overshoot between keys is not covered. The scene's bounds
     // when no node moves, or when no draw is visible at any of those times.
-    const Aabb& animationBounds() const { return mAnimationBounds; }
+    const scene::Aabb& animationBounds() const { return mAnimationBounds; }
 
 private:
-    Aabb boundsOverAnimation(size_t maxSamples);
+    scene::Aabb boundsOverAnimation(size_t maxSamples);
     // Places draw `d` from the current nodes (and joints, when skinned); hidden when its node is
     // not shown.
     void place(uint32_t d);
     // Writes the property channels of `animation` at `time` (already looped or clamped).
-    void applyProperties(const Animation& animation, double time);
+    void applyProperties(const animation::Animation& animation, double time);
 
-    const Scene* mScene;
+    const scene::Scene* mScene;
     std::vector<uint32_t> mPlaying;
-    std::vector<SceneNode> mNodes;
+    std::vector<animation::SceneNode> mNodes;
     std::vector<uint32_t> mDependent;  // dependentNodes of the animated nodes
-    std::vector<Draw> mDraws;
-    std::vector<Light> mLights;
-    std::vector<Camera> mCameras;
-    std::vector<Material> mMaterials;
+    std::vector<scene::Draw> mDraws;
+    std::vector<scene::Light> mLights;
+    std::vector<scene::Camera> mCameras;
+    std::vector<scene::Material> mMaterials;
     std::vector<uint32_t> mAnimatedDraws, mAnimatedLights, mAnimatedCameras;
     // Property channels: whether the playing animations have any; per glTF light / camera
     // (PropertyChannel::index) the lights / cameras loaded from it; what they animate.
@@ -104,10 +104,10 @@ private:
     bool mAnimatesLayers = false;
     std::vector<std::vector<glm::dmat4>> mJoints;     // per skin
     std::vector<uint32_t> mMovedSkins;                // skins with a joint some playing animation moves
-    std::vector<std::vector<Aabb>> mJointBounds;  // per draw (empty unless skinned)
-    Aabb mAnimationBounds;
+    std::vector<std::vector<scene::Aabb>> mJointBounds;  // per draw (empty unless skinned)
+    scene::Aabb mAnimationBounds;
     double mTime = 0.0;
     bool mLoop = true;
 };
 
-}  // namespace candela::scene
+}  // namespace candela::pose

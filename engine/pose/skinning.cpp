@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-namespace candela::scene {
+namespace candela::pose {
 namespace {
 
 glm::dvec3 transformPoint(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); }
@@ -21,31 +21,31 @@ glm::dvec3 unit(const glm::dvec3& v) {
 
 }  // namespace
 
-void jointMatrices(const Skin& skin, const std::vector<SceneNode>& nodes, std::vector<glm::dmat4>& out) {
+void jointMatrices(const scene::Skin& skin, const std::vector<animation::SceneNode>& nodes, std::vector<glm::dmat4>& out) {
     out.resize(skin.joints.size());
     for (size_t j = 0; j < skin.joints.size(); ++j) out[j] = nodes[skin.joints[j]].world * glm::dmat4(skin.inverseBind[j]);
 }
 
-std::vector<Aabb> jointMeshBounds(const Deformation& deformation, const Skin& skin, std::span<const Vertex> vertices) {
-    std::vector<Aabb> out(skin.joints.size());
+std::vector<scene::Aabb> jointMeshBounds(const scene::Deformation& deformation, const scene::Skin& skin, std::span<const scene::Vertex> vertices) {
+    std::vector<scene::Aabb> out(skin.joints.size());
     for (uint32_t v = 0; v < deformation.vertexCount; ++v) {
         const glm::vec3& p = vertices[deformation.firstVertex + v].position;
         for (uint32_t i = 0; i < deformation.influencesPerVertex; ++i) {
-            const JointInfluence& influence = deformation.influences[size_t(v) * deformation.influencesPerVertex + i];
+            const scene::JointInfluence& influence = deformation.influences[size_t(v) * deformation.influencesPerVertex + i];
             if (influence.weight > 0.0f && influence.joint < out.size()) out[influence.joint].extend(glm::vec3(p));
         }
     }
     return out;
 }
 
-glm::vec3 morphReach(const Deformation& deformation, std::span<const float> weights) {
+glm::vec3 morphReach(const scene::Deformation& deformation, std::span<const float> weights) {
     glm::vec3 reach(0.0f);
     for (uint32_t t = 0; t < deformation.targetCount && t < weights.size(); ++t)
         reach += std::abs(weights[t]) * deformation.maxPositionDelta[t];
     return reach;
 }
 
-Aabb skinnedBounds(std::span<const Aabb> jointBounds, std::span<const glm::dmat4> joints, const glm::vec3& reach) {
+scene::Aabb skinnedBounds(std::span<const scene::Aabb> jointBounds, std::span<const glm::dmat4> joints, const glm::vec3& reach) {
     // Each box by its centre and half extent (Arvo): centre' = J c, half' = |J| h — the exact box of
     // the transformed corners, for one matrix product instead of eight.
     glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
@@ -59,23 +59,23 @@ Aabb skinnedBounds(std::span<const Aabb> jointBounds, std::span<const glm::dmat4
         lo = glm::min(lo, c - h);
         hi = glm::max(hi, c + h);
     }
-    Aabb out;
+    scene::Aabb out;
     if (lo.x <= hi.x) out.extend(glm::vec3(lo)), out.extend(glm::vec3(hi));
     return out;
 }
 
-std::vector<Vertex> deformVertices(const Scene& scene, const Draw& draw, std::span<const float> weights,
+std::vector<scene::Vertex> deformVertices(const scene::Scene& scene, const scene::Draw& draw, std::span<const float> weights,
                                    std::span<const glm::dmat4> joints) {
-    const Deformation& d = scene.deformations[size_t(draw.deformation)];
-    std::vector<Vertex> out(d.vertexCount);
+    const scene::Deformation& d = scene.deformations[size_t(draw.deformation)];
+    std::vector<scene::Vertex> out(d.vertexCount);
     for (uint32_t v = 0; v < d.vertexCount; ++v) {
-        const Vertex& base = scene.vertices[d.firstVertex + v];
+        const scene::Vertex& base = scene.vertices[d.firstVertex + v];
         glm::dvec3 p(base.position), n(base.normal), t(base.tangent);
         glm::dvec4 uv(base.uv0, base.uv1), color(base.color);
         for (uint32_t target = 0; target < d.targetCount && target < weights.size(); ++target) {
             if (weights[target] == 0.0f) continue;
             const double w = weights[target];
-            const MorphDelta& delta = d.deltas[size_t(target) * d.vertexCount + v];
+            const scene::MorphDelta& delta = d.deltas[size_t(target) * d.vertexCount + v];
             p += w * glm::dvec3(delta.position);
             n += w * glm::dvec3(delta.normal);
             t += w * glm::dvec3(delta.tangent);
@@ -85,14 +85,14 @@ std::vector<Vertex> deformVertices(const Scene& scene, const Draw& draw, std::sp
         if (draw.skin >= 0) {
             glm::dmat4 m(0.0);
             for (uint32_t i = 0; i < d.influencesPerVertex; ++i) {
-                const JointInfluence& influence = d.influences[size_t(v) * d.influencesPerVertex + i];
+                const scene::JointInfluence& influence = d.influences[size_t(v) * d.influencesPerVertex + i];
                 if (influence.weight > 0.0f) m += double(influence.weight) * joints[influence.joint];
             }
             p = transformPoint(m, p);
             n = cofactor(glm::dmat3(m)) * n;
             t = glm::dmat3(m) * t;
         }
-        Vertex& o = out[v];
+        scene::Vertex& o = out[v];
         o.position = glm::vec3(p);
         o.normal = glm::vec3(unit(n));
         o.tangent = glm::vec4(glm::vec3(unit(t)), base.tangent.w);
@@ -103,4 +103,4 @@ std::vector<Vertex> deformVertices(const Scene& scene, const Draw& draw, std::sp
     return out;
 }
 
-}  // namespace candela::scene
+}  // namespace candela::pose

@@ -13,27 +13,27 @@
 #include <span>
 #include <vector>
 
-namespace candela::scene {
+namespace candela::pose {
 
 // J_i = world(joint_i) · inverseBind_i for every joint of `skin`, into `out`.
-void jointMatrices(const Skin& skin, const std::vector<SceneNode>& nodes, std::vector<glm::dmat4>& out);
+void jointMatrices(const scene::Skin& skin, const std::vector<animation::SceneNode>& nodes, std::vector<glm::dmat4>& out);
 
 // Per joint of `skin`, the mesh-space box of the rest-pose vertices it pulls on with a non-zero
 // weight; invalid for joints that pull on none.
-std::vector<Aabb> jointMeshBounds(const Deformation& deformation, const Skin& skin, std::span<const Vertex> vertices);
+std::vector<scene::Aabb> jointMeshBounds(const scene::Deformation& deformation, const scene::Skin& skin, std::span<const scene::Vertex> vertices);
 
 // How far the morph targets at `weights` can move a vertex, per axis, in mesh space.
-glm::vec3 morphReach(const Deformation& deformation, std::span<const float> weights);
+glm::vec3 morphReach(const scene::Deformation& deformation, std::span<const float> weights);
 
 // World bounds of a skinned draw: each joint's mesh-space box, grown by the morph reach, placed
 // by that joint's matrix. Contains every deformed vertex: each is a convex combination of its
 // joints' placements of it.
-Aabb skinnedBounds(std::span<const Aabb> jointBounds, std::span<const glm::dmat4> joints, const glm::vec3& reach);
+scene::Aabb skinnedBounds(std::span<const scene::Aabb> jointBounds, std::span<const glm::dmat4> joints, const glm::vec3& reach);
 
 // The vertices of `draw`'s deformation range as the GPU pass computes them, in double precision:
 // morphed with `weights` (one per target), then skinned with `joints` when the draw is skinned
 // (world space), else left in mesh space. Precondition: draw.deformation >= 0.
-std::vector<Vertex> deformVertices(const Scene& scene, const Draw& draw, std::span<const float> weights,
+std::vector<scene::Vertex> deformVertices(const scene::Scene& scene, const scene::Draw& draw, std::span<const float> weights,
                                    std::span<const glm::dmat4> joints);
 
-}  // namespace candela::scene
+}  // namespace candela::pose

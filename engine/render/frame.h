@@ -7,6 +7,7 @@
 #include "graph/render_graph.h"
 #include "passes/drawing/shading_summary.h"
 #include "render/frame_plan.h"
+#include "render/posed_summary.h"
 #include "render/visibility_summary.h"
 
 #include <chrono>
@@ -29,7 +30,7 @@ struct Frame {
     graph::TextureId ldr;  // the 8-bit image: tonemapped scene, or encoded pattern
     // The IBL precompute passes added: declared pass indices [precomputeBegin, precomputeEnd).
     uint32_t precomputeBegin = 0, precomputeEnd = 0;
-    // The declared index of the pass computing the sheen LUT (ibl::SheenLut), if the frame added it.
+    // The declared index of the pass computing the sheen LUT (ibl_maps::SheenLut), if the frame added it.
     uint32_t sheenLutPass = graph::kInvalidIndex;
     // A scene frame's plan (what it draws and where, what it leaves out and why); none for a test
     // pattern or a calibration frame.
@@ -39,6 +40,8 @@ struct Frame {
     std::optional<passes::ShadingSummary> shading;
     // What a visibility-path frame's raster, classification and shading did; none for other frames.
     std::optional<VisibilitySummary> visibility;
+    // What a scene frame's pose animates besides its nodes (empty: nothing, or no scene frame).
+    PosedSummary posed;
     // Whether the tonemap put a solid background colour behind the scene (under a skybox pass's
     // sky, if one ran, it is not seen).
     bool solidBackground = false;
@@ -60,7 +63,7 @@ struct Frame {
     // Whether the IBL precompute passes were added to this frame.
     bool precomputes() const { return precomputeBegin != precomputeEnd; }
     // Whether a pass filling persistent maps runs in this frame: one of the IBL precompute passes
-    // (BRDF LUT included) or the sheen LUT pass. Their owners (ibl::IblMaps, ibl::SheenLut) take the
+    // (BRDF LUT included) or the sheen LUT pass. Their owners (ibl_maps::IblMaps, ibl_maps::SheenLut) take the
     // results over only once told the frame completed (SceneState::frameCompleted), so the Renderer
     // waits for such a frame before building the next. Precondition: the graph was compiled.
     bool computesMaps() const;

@@ -59,7 +59,7 @@ std::optional<passes::DeformedVertices> FrameBuilder::addSkinMorph(Frame& frame,
                                                                    passes::SkinMorphFrame& work) {
     for (const std::string& line : explainLeftOut(plan, facts, {PlannedPart::SkinMorph})) frame.explanation.push_back(line);
     if (plan.deform != DeformPlan::Deformed && plan.deform != DeformPlan::Disabled) return std::nullopt;
-    const scene::GpuScene& gpuScene = mScene.gpuScene();
+    const gpu_scene::GpuScene& gpuScene = mScene.gpuScene();
     const passes::SkinMorphPass::Inputs inputs{.scene = &gpuScene,
                                                .jobs = work.jobs,
                                                .vertexCount = work.vertexCount,
@@ -75,24 +75,24 @@ std::optional<passes::DeformedVertices> FrameBuilder::addSkinMorph(Frame& frame,
 }
 
 passes::PosedBuffers FrameBuilder::addPosedDraws(Frame& frame, const scene::Scene& scene,
-                                                            const scene::ScenePose& pose) {
+                                                            const pose::ScenePose& pose) {
     passes::PosedBuffers posed;
-    if (pose.movesNodes()) posed.draws = frame.addHostUpload("posed_draws", bytesOf(scene::drawDataOf(scene, pose.draws())));
-    const scene::GpuScene& gpuScene = mScene.gpuScene();
+    if (pose.movesNodes()) posed.draws = frame.addHostUpload("posed_draws", bytesOf(gpu_scene::drawDataOf(scene, pose.draws())));
+    const gpu_scene::GpuScene& gpuScene = mScene.gpuScene();
     if ((!pose.animatedLights().empty() || !pose.animatedLightProperties().empty()) && mScene.sceneLightsUsed()) {
         // The lights as the buffer holds them (the user's edits included), moved where the pose puts
         // them, dark while their node is hidden, with their animated properties.
         std::vector<shading::LightData> lights = gpuScene.lights();
         for (uint32_t l : pose.animatedLights()) {
             const scene::Light& light = pose.lights()[l];
-            const shading::LightData placed = scene::lightData(light);
+            const shading::LightData placed = gpu_scene::lightData(light);
             lights[l].positionRange = glm::vec4(glm::vec3(placed.positionRange), lights[l].positionRange.w);
             lights[l].directionType = glm::vec4(glm::vec3(placed.directionType), lights[l].directionType.w);
             // The buffer holds 0 for a light hidden at rest: shown, it takes the scene's intensity.
             if (light.hidden || scene.lights[l].hidden) lights[l].intensity = placed.intensity;
         }
         for (uint32_t l : pose.animatedLightProperties()) {
-            const shading::LightData animated = scene::lightData(pose.lights()[l]);
+            const shading::LightData animated = gpu_scene::lightData(pose.lights()[l]);
             lights[l].positionRange.w = animated.positionRange.w;
             lights[l].color = animated.color;
             lights[l].intensity = animated.intensity;
@@ -104,32 +104,25 @@ passes::PosedBuffers FrameBuilder::addPosedDraws(Frame& frame, const scene::Scen
         // The materials as the buffers hold them (the inspector's edits of the others stay), the
         // animated ones as the pose makes them.
         std::vector<shading::MaterialData> materials = gpuScene.materials();
-        for (uint32_t m : pose.animatedMaterials()) materials[m] = scene::materialData(pose.materials()[m]);
+        for (uint32_t m : pose.animatedMaterials()) materials[m] = gpu_scene::materialData(pose.materials()[m]);
         posed.materials = frame.addHostUpload("posed_materials", bytesOf(materials));
         if (pose.animatesMaterialLayers() && !gpuScene.materialLayers().empty()) {
             std::vector<shading::MaterialLayerData> layers = gpuScene.materialLayers();
-            for (uint32_t m : pose.animatedMaterials()) layers[m] = scene::materialLayerData(pose.materials()[m]);
+            for (uint32_t m : pose.animatedMaterials()) layers[m] = gpu_scene::materialLayerData(pose.materials()[m]);
             posed.materialLayers = frame.addHostUpload("posed_material_layers", bytesOf(layers));
         }
     }
-    // One line for --explain when the pose animates more than nodes (KHR_animation_pointer).
-    std::vector<std::string> parts;
-    const auto count = [](size_t n, const char* one) { return std::to_string(n) + " " + one + (n == 1 ? "" : "s"); };
-    if (const size_t n = pose.animatedMaterials().size())
-        parts.push_back(count(n, "material") + (posed.materialLayers.valid() ? " (posed_materials, posed_material_layers)" : " (posed_materials)"));
-    if (const size_t n = pose.animatedLightProperties().size())
-        parts.push_back(count(n, "light") + (posed.lights.valid() ? " (posed_lights)" : " (not drawn: --scene-lights off)"));
-    if (const size_t n = pose.animatedCameraProperties().size()) parts.push_back(count(n, "camera") + " (the view of a glTF camera follows)");
-    if (!parts.empty()) {
-        std::string line = "animated properties (KHR_animation_pointer), written by the CPU per frame:";
-        for (size_t i = 0; i < parts.size(); ++i) line += (i ? ", " : " ") + parts[i];
-        frame.explanation.push_back(line);
-    }
+    frame.posed = PosedSummary{.materials = uint32_t(pose.animatedMaterials().size()),
+                               .materialLayers = posed.materialLayers.valid(),
+                               .lights = uint32_t(pose.animatedLightProperties().size()),
+                               .lightsWritten = posed.lights.valid(),
+                               .cameras = uint32_t(pose.animatedCameraProperties().size())};
+    if (!frame.posed.empty()) frame.explanation.push_back(explainPosed(frame.posed));
     return posed;
 }
 
 std::optional<passes::IblInputs> FrameBuilder::addIbl(Frame& frame, const RenderSettings& settings) {
-    const ibl::IblMaps& maps = mScene.iblMaps();
+    const ibl_maps::IblMaps& maps = mScene.iblMaps();
     if (!maps.hasEnvironment()) return std::nullopt;
     const float theta = glm::radians(settings.ibl.rotationDegrees);
     const float maxLod = float(maps.specularLevels() - 1);
@@ -189,7 +182,7 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     }
     const scene::Scene& scene = *settings.scene;
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
-    const scene::ScenePose* pose = settings.pose ? settings.pose : mScene.restPose();
+    const pose::ScenePose* pose = settings.pose ? settings.pose : mScene.restPose();
     const scene::ViewSetup view = resolveView(scene, settings.camera, aspect, pose);
     frame.explanation.push_back("camera: " + cameraFlags(scene, settings.camera, aspect, pose));
 
@@ -361,7 +354,7 @@ void FrameBuilder::addExplanation(Frame& frame, const RenderSettings& settings, 
 }
 
 scene::OrbitCamera FrameBuilder::orbitCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,
-                                             const scene::ScenePose* pose) {
+                                             const pose::ScenePose* pose) {
     if (camera.orbitCamera) return *camera.orbitCamera;
     if (pose && !pose->animated()) pose = nullptr;
     const glm::vec3 orbit = camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f));
@@ -376,13 +369,13 @@ scene::OrbitCamera FrameBuilder::orbitCamera(const scene::Scene& scene, const Ca
 }
 
 std::string FrameBuilder::cameraFlags(const scene::Scene& scene, const CameraSettings& camera, float aspect,
-                                      const scene::ScenePose* pose) {
+                                      const pose::ScenePose* pose) {
     if (camera.gltfCamera && !camera.orbitCamera) return "--camera " + std::to_string(*camera.gltfCamera);
     return scene::orbitCameraFlags(orbitCamera(scene, camera, aspect, pose));
 }
 
 scene::ViewSetup FrameBuilder::resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect,
-                                           const scene::ScenePose* pose) {
+                                           const pose::ScenePose* pose) {
     if (pose && !pose->animated()) pose = nullptr;
     if (camera.orbitCamera) {
         scene::ViewSetup view = camera.orbitCamera->view(aspect);

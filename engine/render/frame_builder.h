@@ -65,18 +65,18 @@ public:
     // The view `camera` selects for `scene` at `aspect` (width / height). With an animated `pose`,
     // glTF cameras are where the pose puts them and framing contains the whole animation.
     static scene::ViewSetup resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect,
-                                        const scene::ScenePose* pose = nullptr);
+                                        const pose::ScenePose* pose = nullptr);
     // The orbit camera `camera` gives when it names no glTF camera: the interactive one as it is,
     // else scene::OrbitCamera::framing of the scene's bounds (with an animated `pose`, the bounds
     // of the whole animation) from --camera-orbit's direction or scene::defaultOrbitAngles, then
     // the distance (r > 0) and --target when given, with the --fov.
     static scene::OrbitCamera orbitCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,
-                                          const scene::ScenePose* pose = nullptr);
+                                          const pose::ScenePose* pose = nullptr);
     // The command-line flags that reproduce resolveView's view: "--camera N" for a glTF camera,
     // else scene::orbitCameraFlags (--camera-orbit, --target, --fov); printed by --explain and
     // --verbose. The viewer's lens shift has no flag.
     static std::string cameraFlags(const scene::Scene& scene, const CameraSettings& camera, float aspect,
-                                   const scene::ScenePose* pose = nullptr);
+                                   const pose::ScenePose* pose = nullptr);
 
 private:
     // The facts of a frame of `settings` at `samples` samples that the settings, the device and the
@@ -90,9 +90,9 @@ private:
                                                          passes::SkinMorphFrame& work);
     // The per-frame buffers of an animated pose — the posed draws (a node moves), lights (a light
     // moves, shows, hides or has an animated property) and materials (and their layer data) with
-    // animated properties — each only when something it holds animates; and a note for --explain
-    // when the pose animates properties (KHR_animation_pointer).
-    passes::PosedBuffers addPosedDraws(Frame& frame, const scene::Scene& scene, const scene::ScenePose& pose);
+    // animated properties — each only when something it holds animates; and what it animates
+    // besides nodes (Frame::posed) with its --explain line.
+    passes::PosedBuffers addPosedDraws(Frame& frame, const scene::Scene& scene, const pose::ScenePose& pose);
     // The IBL inputs of the draws, when the maps have an environment.
     std::optional<passes::IblInputs> addIbl(Frame& frame, const RenderSettings& settings);
     // Declares the plan's draw passes of `desc`'s list: the shading path's (with the visibility

@@ -45,7 +45,7 @@ struct RenderSettings {
     const scene::Scene* scene = nullptr;
     // The scene as its animations pose it this frame (a pose of `scene`, owned by the caller);
     // null, or a pose that animates nothing, draws the loaded rest pose with the static draw data.
-    const scene::ScenePose* pose = nullptr;
+    const pose::ScenePose* pose = nullptr;
     CameraSettings camera;
     options::ShadingModel shading = options::ShadingModel::Pbr;
     // A debug view of the forward pass instead of the shaded image (a variant of the frame graph:
@@ -71,7 +71,7 @@ struct RenderSettings {
     options::ShadingPath shadingPath = options::ShadingPath::Auto;
     // Image-based lighting: the environment (null: none; read during the call only, hashed when the
     // pointer or the quality changes), what to precompute and how to look it up.
-    const scene::Environment* environment = nullptr;
+    const assets::Environment* environment = nullptr;
     ibl::IblQuality iblQuality;
     ibl::IblLook ibl;
     std::filesystem::path iblCacheDir;  // empty: no on-disk cache

@@ -46,7 +46,7 @@ void Renderer::upload(const RenderSettings& settings) {
 void Renderer::shadersReplaced(const std::vector<std::string>& names) { mScene.shadersReplaced(names); }
 void Renderer::recomputeIbl() { mScene.recomputeIbl(); }
 
-void Renderer::setReferenceEnvironment(const scene::Environment& environment) {
+void Renderer::setReferenceEnvironment(const assets::Environment& environment) {
     mRunner.waitIdle();
     mScene.iblMaps().setReferenceEnvironment(environment);
 }
@@ -117,7 +117,7 @@ FrameTiming Renderer::renderCalibration(uint32_t width, uint32_t height) {
     return execute(std::move(frame), {});
 }
 
-FrameTiming Renderer::precomputeIbl(const scene::Environment& environment, const ibl::IblQuality& quality) {
+FrameTiming Renderer::precomputeIbl(const assets::Environment& environment, const ibl::IblQuality& quality) {
     Frame frame;  // started now: the frame time includes the environment's upload, as beginFrame's does
     mScene.useEnvironment(&environment, quality, {}, /*force=*/true);
     mBuilder.addIblMaps(frame, /*reference=*/false);

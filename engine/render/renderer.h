@@ -113,7 +113,7 @@ public:
     // whatever its address. The environment's maps, the pipelines and the caches stay.
     void releaseScene();
     // What the device holds of the scene last uploaded; null before one or after releaseScene().
-    const scene::GpuScene* uploadedScene() const { return mScene.hasGpuScene() ? &mScene.gpuScene() : nullptr; }
+    const gpu_scene::GpuScene* uploadedScene() const { return mScene.hasGpuScene() ? &mScene.gpuScene() : nullptr; }
     // After shaders were replaced (hot reload): the frame passes rebuild their pipelines at their
     // next use by themselves; a replaced IBL shader also discards the maps, so that the next frame
     // runs the precompute with it.
@@ -125,26 +125,26 @@ public:
     // Runs the IBL precompute passes alone for `environment` at `quality` — always, even when the
     // maps are current; no cache — and waits. The maps then serve the following frames (read them
     // back through iblMaps()). Throws UserError for an invalid quality.
-    FrameTiming precomputeIbl(const scene::Environment& environment, const ibl::IblQuality& quality);
+    FrameTiming precomputeIbl(const assets::Environment& environment, const ibl::IblQuality& quality);
     // Gives the ground truth (RenderSettings::ibl.referenceSamples > 0) its environment; see
-    // ibl::IblMaps::setReferenceEnvironment. Waits for the GPU.
-    void setReferenceEnvironment(const scene::Environment& environment);
+    // ibl_maps::IblMaps::setReferenceEnvironment. Waits for the GPU.
+    void setReferenceEnvironment(const assets::Environment& environment);
     // Runs the calibration pass alone at width × height (see passes/diagnostics/calibration_pass.h).
     FrameTiming renderCalibration(uint32_t width, uint32_t height);
 
     // The view the settings select for `scene` at `aspect` (width / height). With an animated
     // `pose`, glTF cameras are where the pose puts them and framing contains the whole animation.
     static scene::ViewSetup resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect,
-                                        const scene::ScenePose* pose = nullptr) {
+                                        const pose::ScenePose* pose = nullptr) {
         return FrameBuilder::resolveView(scene, camera, aspect, pose);
     }
     // The orbit camera and the flags that reproduce the view (FrameBuilder::orbitCamera, cameraFlags).
     static scene::OrbitCamera orbitCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,
-                                          const scene::ScenePose* pose = nullptr) {
+                                          const pose::ScenePose* pose = nullptr) {
         return FrameBuilder::orbitCamera(scene, camera, aspect, pose);
     }
     static std::string cameraFlags(const scene::Scene& scene, const CameraSettings& camera, float aspect,
-                                   const scene::ScenePose* pose = nullptr) {
+                                   const pose::ScenePose* pose = nullptr) {
         return FrameBuilder::cameraFlags(scene, camera, aspect, pose);
     }
 
@@ -166,6 +166,9 @@ public:
     const VisibilitySummary* lastVisibility() const {
         return mRunner.last().visibility ? &*mRunner.last().visibility : nullptr;
     }
+    // What the last frame's pose animated besides its nodes (KHR_animation_pointer); empty when
+    // nothing was, or the last frame was no scene frame.
+    const PosedSummary& lastPosed() const { return mRunner.last().posed; }
     // What the last frame drew behind the scene: the sky (a skybox pass that ran, or composited by
     // the tonemap), the tonemap's solid background colour, or nothing (alpha = coverage).
     enum class Backdrop { Sky, Color, Transparent };
@@ -179,7 +182,7 @@ public:
     // "Lights[i]" / "Materials[i]"). Values set here apply from the next frame.
     shader::ParameterRegistry& parameters() { return mParameters; }
     // The image-based-lighting maps (tests and reports read them back).
-    ibl::IblMaps& iblMaps() { return mScene.iblMaps(); }
+    ibl_maps::IblMaps& iblMaps() { return mScene.iblMaps(); }
 
 private:
     // The start every scene and pattern entry point shares: checks the settings, uploads a changed

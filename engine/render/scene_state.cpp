@@ -44,7 +44,7 @@ bool same(const std::vector<T>& a, const std::vector<T>& b) {
 }  // namespace
 
 SceneState::SceneState(vk::Context& context, FrameRunner& runner)
-    : mContext(context), mRunner(runner), mIbl(std::make_unique<ibl::IblMaps>(context)), mSheenLut(context) {}
+    : mContext(context), mRunner(runner), mIbl(std::make_unique<ibl_maps::IblMaps>(context)), mSheenLut(context) {}
 
 std::vector<scene::Light> SceneState::defaultLights() {
     scene::Light key, fill;
@@ -68,19 +68,19 @@ bool SceneState::prepareScene(const SceneChoice& choice) {
     // Software rasterizers pay ~1000× for anisotropic filtering (minutes per frame on lavapipe):
     // keep it for GPUs.
     const bool cpuDevice = mContext.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-    mGpuScene = std::make_unique<scene::GpuScene>(mContext, *choice.scene,
+    mGpuScene = std::make_unique<gpu_scene::GpuScene>(mContext, *choice.scene,
                                                   addLights ? defaultLights() : std::vector<scene::Light>{},
                                                   cpuDevice ? 1.0f : 8.0f, sceneLights);
     mKeys = passes::MaterialKeys::of(*choice.scene);
     mRestPose = choice.scene->deformations.empty()
                     ? nullptr
-                    : std::make_unique<scene::ScenePose>(*choice.scene, std::vector<uint32_t>{});
+                    : std::make_unique<pose::ScenePose>(*choice.scene, std::vector<uint32_t>{});
     mHasSheen = anySheen(*choice.scene);
     mUploaded = {choice.scene, addLights, sceneLights};
     return true;
 }
 
-void SceneState::prepareEnvironment(const scene::Environment* environment, ibl::IblQuality quality,
+void SceneState::prepareEnvironment(const assets::Environment* environment, ibl::IblQuality quality,
                                     const std::filesystem::path& cacheDir) {
     // The sheen cube is computed for scenes that have a sheen (or when asked for); maps that have
     // it serve scenes without a sheen as well.
@@ -91,7 +91,7 @@ void SceneState::prepareEnvironment(const scene::Environment* environment, ibl::
     useEnvironment(environment, quality, cacheDir, false);
 }
 
-void SceneState::useEnvironment(const scene::Environment* environment, const ibl::IblQuality& quality,
+void SceneState::useEnvironment(const assets::Environment* environment, const ibl::IblQuality& quality,
                                 const std::filesystem::path& cacheDir, bool force) {
     quality.validate();
     // The maps may be read by a frame in flight: wait before replacing them.
@@ -101,7 +101,7 @@ void SceneState::useEnvironment(const scene::Environment* environment, const ibl
         try {
             mIbl->setEnvironment(environment, effective, cacheDir, force);
             break;
-        } catch (const OutOfDeviceMemory& e) {
+        } catch (const vk::OutOfDeviceMemory& e) {
             if (effective.cubeSize <= 32) throw;
             resetIblMaps();  // drops (and, once collected, frees) what the failed attempt allocated
             mRunner.waitIdle();
@@ -176,7 +176,7 @@ void SceneState::recomputeIbl() {
 
 void SceneState::resetIblMaps() {
     mRunner.waitIdle();
-    mIbl = std::make_unique<ibl::IblMaps>(mContext);
+    mIbl = std::make_unique<ibl_maps::IblMaps>(mContext);
 }
 
 }  // namespace candela

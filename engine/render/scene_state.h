@@ -41,12 +41,12 @@ public:
     // Gives the maps `environment` at `quality` (the sheen cube when `quality` asks for it or a
     // material has a sheen; maps with it also serve scenes without) unless they have it already.
     // Precondition: a scene is uploaded.
-    void prepareEnvironment(const scene::Environment* environment, ibl::IblQuality quality,
+    void prepareEnvironment(const assets::Environment* environment, ibl::IblQuality quality,
                             const std::filesystem::path& cacheDir);
     // Waits for the GPU and gives the maps this environment and quality (see IblMaps::setEnvironment);
     // out of device memory, lowers the cube size (with a warning) rather than fail. `force`:
     // recompute, never read from the cache.
-    void useEnvironment(const scene::Environment* environment, const ibl::IblQuality& quality,
+    void useEnvironment(const assets::Environment* environment, const ibl::IblQuality& quality,
                         const std::filesystem::path& cacheDir, bool force);
     // Runs the scene's lights and materials through `parameters` (their blocks in the forward
     // program's `reflection` and, for layers, `layered`); rewrites their buffers (after waiting for
@@ -66,17 +66,17 @@ public:
     // The next frame runs the IBL precompute again (not from the cache).
     void recomputeIbl();
 
-    const scene::GpuScene& gpuScene() const { return *mGpuScene; }
+    const gpu_scene::GpuScene& gpuScene() const { return *mGpuScene; }
     bool hasGpuScene() const { return mGpuScene != nullptr; }
     const passes::MaterialKeys& materialKeys() const { return mKeys; }
     // The rest pose of an uploaded scene with skins or morph targets (drawn when a frame brings no
     // pose of its own: skinned meshes are placed by their joints even at rest); null otherwise.
-    const scene::ScenePose* restPose() const { return mRestPose.get(); }
+    const pose::ScenePose* restPose() const { return mRestPose.get(); }
     bool defaultLightsAdded() const { return mUploaded.defaultLights; }
     bool sceneLightsUsed() const { return mUploaded.sceneLights; }
     bool hasSheen() const { return mHasSheen; }
-    ibl::IblMaps& iblMaps() { return *mIbl; }
-    ibl::SheenLut& sheenLut() { return mSheenLut; }
+    ibl_maps::IblMaps& iblMaps() { return *mIbl; }
+    ibl_maps::SheenLut& sheenLut() { return mSheenLut; }
 
     // The key and fill lights added to scenes without lights (SceneChoice::defaultLights).
     static std::vector<scene::Light> defaultLights();
@@ -86,16 +86,16 @@ private:
 
     vk::Context& mContext;
     FrameRunner& mRunner;
-    std::unique_ptr<scene::GpuScene> mGpuScene;
+    std::unique_ptr<gpu_scene::GpuScene> mGpuScene;
     passes::MaterialKeys mKeys;
-    std::unique_ptr<scene::ScenePose> mRestPose;
+    std::unique_ptr<pose::ScenePose> mRestPose;
     SceneChoice mUploaded{nullptr, false, true};  // what mGpuScene holds (lights as resolved)
     bool mHasSheen = false;
     // Replaced whole when reset (a failed allocation's leftovers go with the old object).
-    std::unique_ptr<ibl::IblMaps> mIbl;
-    ibl::SheenLut mSheenLut;
+    std::unique_ptr<ibl_maps::IblMaps> mIbl;
+    ibl_maps::SheenLut mSheenLut;
     // What mIbl was last set up with (the environment is re-hashed only when these change).
-    const scene::Environment* mEnvironment = nullptr;
+    const assets::Environment* mEnvironment = nullptr;
     ibl::IblQuality mIblQuality;
     std::filesystem::path mIblCacheDir;
 };

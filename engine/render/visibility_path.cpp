@@ -9,7 +9,7 @@ namespace candela {
 
 VisibilityPath::VisibilityPath(vk::Context& context) : mContext(context), mRaster(context), mClassify(context), mShade(context) {}
 
-void VisibilityPath::setScene(const scene::GpuScene& scene, const passes::MaterialKeys& keys) {
+void VisibilityPath::setScene(const gpu_scene::GpuScene& scene, const passes::MaterialKeys& keys) {
     mUnsupported = mContext.choices().visibilityUnsupported;
     if (!mUnsupported.empty()) return;
     const uint64_t range = mContext.caps().limits.maxStorageBufferRange;

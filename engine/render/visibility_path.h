@@ -27,7 +27,7 @@ public:
 
     // Binds the scene, or records why it cannot take the path (unsupported()). Preconditions:
     // the GPU no longer uses the previous scene's sets; `scene` and `keys` outlive their use.
-    void setScene(const scene::GpuScene& scene, const passes::MaterialKeys& keys);
+    void setScene(const gpu_scene::GpuScene& scene, const passes::MaterialKeys& keys);
     // Why frames of the current scene cannot take the path ("" if they can): the device's reason,
     // or the scene's (its vertices or indices past maxStorageBufferRange).
     const std::string& unsupported() const { return mUnsupported; }

@@ -14,7 +14,7 @@
 #include <fstream>
 #include <memory>
 
-namespace candela::io {
+namespace candela::reports {
 namespace {
 
 struct StbiFree {
@@ -59,7 +59,7 @@ ComparedImage readPng(const std::filesystem::path& path) {
     if (!std::equal(bytes.begin() + 12, bytes.begin() + 16, "IHDR")) fail(path, "not a PNG file (no IHDR chunk first)");
     const auto be32 = [&](size_t at) { return uint32_t(bytes[at]) << 24 | uint32_t(bytes[at + 1]) << 16 | uint32_t(bytes[at + 2]) << 8 | bytes[at + 3]; };
     checkSize(path, be32(16), be32(20));
-    if (const std::string problem = pngChunkProblem(bytes); !problem.empty()) fail(path, problem);
+    if (const std::string problem = assets::pngChunkProblem(bytes); !problem.empty()) fail(path, problem);
     int w = 0, h = 0, channels = 0;
     std::unique_ptr<uint8_t, StbiFree> pixels(stbi_load_from_memory(bytes.data(), length, &w, &h, &channels, 3));
     if (!pixels) {
@@ -80,7 +80,7 @@ ComparedImage readExr(const std::filesystem::path& path) {
     const std::vector<uint8_t> magic = readBytes(path, 4);
     if (magic.size() < 4 || magic[0] != 0x76 || magic[1] != 0x2f || magic[2] != 0x31 || magic[3] != 0x01)
         fail(path, "not an OpenEXR file");
-    scene::Environment exr = scene::loadEnvironment(path, {.maxWidth = kMaxComparedSide, .maxHeight = kMaxComparedSide});
+    assets::Environment exr = assets::loadEnvironment(path, {.maxWidth = kMaxComparedSide, .maxHeight = kMaxComparedSide});
     checkSize(path, exr.width, exr.height);
     ComparedImage image{ComparedFormat::Exr, exr.width, exr.height, {}, {exr.width, exr.height, std::move(exr.rgb)}, {}};
     // The environment reader's warnings are about environments (an aspect other than 2:1); only
@@ -108,4 +108,4 @@ ComparedImage readComparedImage(const std::filesystem::path& path) {
     return *format == ComparedFormat::Png ? readPng(path) : readExr(path);
 }
 
-}  // namespace candela::io
+}  // namespace candela::reports

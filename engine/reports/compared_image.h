@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::io {
+namespace candela::reports {
 
 enum class ComparedFormat { Png, Exr };
 
@@ -32,7 +32,7 @@ struct ComparedImage {
     std::vector<uint8_t> rgb8;
     // Linear RGB: the PNG's values decoded with srgbToLinear; the EXR's R, G, B (or Y as grey; A
     // and other channels ignored) with NaN, ±∞ and negatives replaced as environments are
-    // (scene::sanitizeEnvironment).
+    // (assets::sanitizeEnvironment).
     RgbImage linear;
     LoadReport report;  // "PATH: ..." lines, e.g. the values replaced (warnings)
 };
@@ -40,4 +40,4 @@ struct ComparedImage {
 // Reads a PNG or EXR file, told apart by the extension (the content must match it).
 ComparedImage readComparedImage(const std::filesystem::path& path);
 
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::io {
+namespace candela::reports {
 
 enum class DiffStatus {
     Ok,             // compared, and within every threshold given
@@ -80,4 +80,4 @@ struct DiffReport {
     bool passed() const { return count(DiffStatus::Ok) == pairs.size(); }
 };
 
-}  // namespace candela::io
+}  // namespace candela::reports

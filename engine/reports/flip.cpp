@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
-namespace candela::io {
+namespace candela::reports {
 namespace {
 
 // The HPG 2020 paper's constants: colour pipeline exponent q_c and the error remapping (a colour
@@ -422,4 +422,4 @@ float srgbToLinear(uint8_t value) {
     return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
 }
 
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -11,16 +11,16 @@
 // separable Gaussians (as in the authors' implementation); images are clamped to the edge.
 // CPU only, single thread, float arithmetic.
 //
-//     const float ppd = io::pixelsPerDegree({});              // 0.7 m, 0.7 m wide, 3840 px: ≈ 67
-//     std::vector<float> error = io::ldrFlip(reference, test, ppd);
-//     io::FlipStatistics stats = io::flipStatistics(error);  // stats.mean: the usual summary
+//     const float ppd = reports::pixelsPerDegree({});              // 0.7 m, 0.7 m wide, 3840 px: ≈ 67
+//     std::vector<float> error = reports::ldrFlip(reference, test, ppd);
+//     reports::FlipStatistics stats = reports::flipStatistics(error);  // stats.mean: the usual summary
 
 #include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
 
-namespace candela::io {
+namespace candela::reports {
 
 // A linear RGB image: width × height × 3 floats, top row first.
 struct RgbImage {
@@ -91,4 +91,4 @@ FlipStatistics flipStatistics(std::span<const float> error);
 // sRGB-encoded 8-bit value → linear, the IEC 61966-2-1 curve.
 float srgbToLinear(uint8_t value);
 
-}  // namespace candela::io
+}  // namespace candela::reports

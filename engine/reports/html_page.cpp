@@ -12,7 +12,7 @@
 #include <iterator>
 #include <ostream>
 
-namespace candela::io {
+namespace candela::reports {
 
 namespace fs = std::filesystem;
 
@@ -340,4 +340,4 @@ std::filesystem::path pathFromPage(const std::filesystem::path& file, const std:
     return relative.empty() ? file : relative;
 }
 
-}  // namespace candela::io
+}  // namespace candela::reports

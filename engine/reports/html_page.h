@@ -25,7 +25,7 @@
 #include <string_view>
 #include <vector>
 
-namespace candela::io {
+namespace candela::reports {
 
 // A row's outcome. The page sorts failures first, then rows over threshold, then the rest.
 enum class RowStatus { Failed, OverThreshold, Warning, Ok };
@@ -105,4 +105,4 @@ std::filesystem::path pathFromPage(const std::filesystem::path& file, const std:
 // `path`'s folder. Throws UserError naming the file when it cannot be written.
 void writeHtmlPage(const std::filesystem::path& path, const HtmlPage& page, bool inlineImages = false);
 
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -1,6 +1,6 @@
 #include "reports/html_page_resources.h"
 
-namespace candela::io {
+namespace candela::reports {
 
 std::string_view htmlPageStyle() {
     return R"css(:root { --thumb-w: 160px; --thumb-h: 120px; }
@@ -174,4 +174,4 @@ std::string_view htmlPageScript() {
 )js";
 }
 
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -4,7 +4,7 @@
 
 #include <string_view>
 
-namespace candela::io {
+namespace candela::reports {
 
 // CSS for the page: the table, the status colours, thumbnails side by side at a fixed box size
 // (smaller below 1100 px of width), the lightbox.
@@ -15,4 +15,4 @@ std::string_view htmlPageStyle();
 // (both O(rows)), the lightbox that shows a clicked thumbnail at full size. No network access.
 std::string_view htmlPageScript();
 
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -10,11 +10,12 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <stdexcept>
 #include <string>
 
-namespace candela::ibl {
+namespace candela::reports {
 
 static_assert(kFormatRg16Sfloat == VK_FORMAT_R16G16_SFLOAT);
 static_assert(kFormatRgba16Sfloat == VK_FORMAT_R16G16B16A16_SFLOAT);
@@ -22,7 +23,6 @@ static_assert(kFormatRgba32Sfloat == VK_FORMAT_R32G32B32A32_SFLOAT);
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kMaxRelativeFloor = 1e-2;  // × mean(ref)
 constexpr double kMinNoV = 1e-4;            // CANDELA_MIN_NOV of the LUT shader
@@ -43,13 +43,13 @@ uint32_t formatTexelBytes(uint32_t format) {
     }
 }
 
-void checkFormat(const CachedImage& image) {
+void checkFormat(const ibl::CachedImage& image) {
     if (formatTexelBytes(image.format) != image.texelBytes)
         throw std::invalid_argument("ibl errors: " + image.name + ": texelBytes " + std::to_string(image.texelBytes) +
                                     " disagrees with format " + std::to_string(image.format));
 }
 
-size_t mipOffset(const CachedImage& image, uint32_t mip) {
+size_t mipOffset(const ibl::CachedImage& image, uint32_t mip) {
     size_t offset = 0;
     for (uint32_t m = 0; m < mip; ++m)
         offset += size_t(mipExtent(image.width, m)) * mipExtent(image.height, m) * image.layers * image.texelBytes;
@@ -73,19 +73,19 @@ glm::dvec3 rgb(const glm::vec4& v) { return {double(v.r), double(v.g), double(v.
 
 // ---- Image shapes ----
 
-void checkCube(const CachedImage& image) {
+void checkCube(const ibl::CachedImage& image) {
     checkFormat(image);
     if (image.layers != 6 || image.width != image.height || image.width == 0 || image.mips == 0)
         throw std::invalid_argument("ibl errors: " + image.name + " is not a cube (6 square layers)");
 }
 
-void checkSh(const CachedImage& image) {
+void checkSh(const ibl::CachedImage& image) {
     checkFormat(image);
     if (image.format != kFormatRgba32Sfloat || image.width != 9 || image.height != 1 || image.layers != 1)
         throw std::invalid_argument("ibl errors: " + image.name + " is not 9 RGBA32F SH coefficients");
 }
 
-void checkLut(const CachedImage& image) {
+void checkLut(const ibl::CachedImage& image) {
     checkFormat(image);
     if (image.width < 2 || image.width != image.height || image.layers != 1)
         throw std::invalid_argument("ibl errors: " + image.name + " is not a square LUT of size ≥ 2");
@@ -127,7 +127,7 @@ uint32_t texelIndex(double c, uint32_t size) {
 
 // Texel (i, j) of `face`, where i or j may be one beyond the face (−1 or size): then the texel of
 // the adjacent face that contains the extrapolated texel centre, as seamless cube filtering does.
-glm::dvec4 cubeTexel(const CachedImage& image, uint32_t mip, uint32_t size, uint32_t face, int64_t i, int64_t j) {
+glm::dvec4 cubeTexel(const ibl::CachedImage& image, uint32_t mip, uint32_t size, uint32_t face, int64_t i, int64_t j) {
     if (i >= 0 && j >= 0 && i < size && j < size) return texelValue(image, mip, face, uint32_t(i), uint32_t(j));
     const glm::vec2 uv((float(i) + 0.5f) / float(size), (float(j) + 0.5f) / float(size));
     const FacePoint p = facePoint(glm::dvec3(shading::cubeFaceDirection(face, uv)));
@@ -165,17 +165,17 @@ std::vector<Overlap> overlaps(uint32_t i, uint32_t n, uint32_t m, Measure&& meas
     return cells;
 }
 
-glm::dvec3 sourceTexel(const scene::Environment& env, uint32_t x, uint32_t y) {
+glm::dvec3 sourceTexel(const assets::Environment& env, uint32_t x, uint32_t y) {
     const float* t = env.texel(x, y);
     return {double(t[0]), double(t[1]), double(t[2])};
 }
 
 // Output row `row` of `out`: per source column the Ω-weighted sum over the covered rows (weight
 // cos θ0 − cos θ1 of the overlap), then per output texel the width-weighted sum over columns.
-void downsampleRow(const scene::Environment& env, scene::Environment& out, uint32_t row) {
+void downsampleRow(const assets::Environment& env, assets::Environment& out, uint32_t row) {
     const double H = env.height;
     const std::vector<Overlap> rows = overlaps(row, env.height, out.height, [H](double a, double b) {
-        return std::cos(kPi * a / H) - std::cos(kPi * b / H);
+        return std::cos(std::numbers::pi * a / H) - std::cos(std::numbers::pi * b / H);
     });
     std::vector<glm::dvec3> columnSums(env.width, glm::dvec3(0.0));
     double rowWeight = 0.0;
@@ -198,8 +198,8 @@ void downsampleRow(const scene::Environment& env, scene::Environment& out, uint3
 
 // ---- Comparisons ----
 
-LevelErrors specularLevel(const CachedImage& cube, uint32_t mip, const scene::Environment& original,
-                          const scene::Environment& reference, uint32_t texelsPerLevel, ReferenceCache& cache) {
+LevelErrors specularLevel(const ibl::CachedImage& cube, uint32_t mip, const assets::Environment& original,
+                          const assets::Environment& reference, uint32_t texelsPerLevel, ReferenceCache& cache) {
     const uint32_t size = mipExtent(cube.width, mip);
     const uint32_t denominator = std::max(cube.mips - 1, 1u);
     const uint32_t g = std::gcd(mip, denominator);
@@ -218,7 +218,7 @@ LevelErrors specularLevel(const CachedImage& cube, uint32_t mip, const scene::En
     return {float(roughness), size, errorStats(gpu, ref)};
 }
 
-glm::dvec3 evaluateSh(const CachedImage& sh, const glm::dvec3& n) {
+glm::dvec3 evaluateSh(const ibl::CachedImage& sh, const glm::dvec3& n) {
     const std::array<double, 9> basis = reference::shBasis(n);
     glm::dvec3 e(0.0);
     for (uint32_t i = 0; i < 9; ++i) e += rgb(texelValue(sh, 0, 0, i, 0)) * basis[i];
@@ -228,7 +228,7 @@ glm::dvec3 evaluateSh(const CachedImage& sh, const glm::dvec3& n) {
 }
 
 // Evaluates the irradiance map in a unit direction.
-std::function<glm::dvec3(const glm::dvec3&)> irradianceEvaluator(const CachedImage& image) {
+std::function<glm::dvec3(const glm::dvec3&)> irradianceEvaluator(const ibl::CachedImage& image) {
     if (image.name == "irradiance_sh") {
         checkSh(image);
         return [&image](const glm::dvec3& n) { return evaluateSh(image, n); };
@@ -284,7 +284,7 @@ ErrorStats errorStats(std::span<const double> gpu, std::span<const double> ref) 
 
 // ---- Reference ----
 
-scene::Environment referenceEnvironment(const scene::Environment& env, uint32_t maxWidth) {
+assets::Environment referenceEnvironment(const assets::Environment& env, uint32_t maxWidth) {
     if (env.width == 0 || env.height == 0 || env.rgb.size() != env.texelCount() * 3)
         throw std::invalid_argument("referenceEnvironment: empty environment");
     if (maxWidth == 0) throw std::invalid_argument("referenceEnvironment: maxWidth is 0");
@@ -294,7 +294,7 @@ scene::Environment referenceEnvironment(const scene::Environment& env, uint32_t 
         height = (height + 1) / 2;
     }
     if (width == env.width) return env;
-    scene::Environment out;
+    assets::Environment out;
     out.source = env.source;
     out.width = width;
     out.height = height;
@@ -311,7 +311,7 @@ glm::dvec3 ReferenceCache::get(const Key& key, const std::function<glm::dvec3()>
     return mValues.emplace(key, compute()).first->second;
 }
 
-void ReferenceCache::checkEnvironment(const scene::Environment& reference) {
+void ReferenceCache::checkEnvironment(const assets::Environment& reference) {
     if (mWidth == 0) {
         mWidth = reference.width;
         mHeight = reference.height;
@@ -324,8 +324,8 @@ void ReferenceCache::checkEnvironment(const scene::Environment& reference) {
 
 // ---- Comparisons ----
 
-std::vector<LevelErrors> specularErrors(const CachedImage& specular, const scene::Environment& original,
-                                        const scene::Environment& reference, uint32_t texelsPerLevel,
+std::vector<LevelErrors> specularErrors(const ibl::CachedImage& specular, const assets::Environment& original,
+                                        const assets::Environment& reference, uint32_t texelsPerLevel,
                                         ReferenceCache& cache) {
     checkCube(specular);
     cache.checkEnvironment(reference);
@@ -335,7 +335,7 @@ std::vector<LevelErrors> specularErrors(const CachedImage& specular, const scene
     return levels;
 }
 
-ErrorStats irradianceErrors(const CachedImage& irradiance, const scene::Environment& reference, uint32_t directions,
+ErrorStats irradianceErrors(const ibl::CachedImage& irradiance, const assets::Environment& reference, uint32_t directions,
                             ReferenceCache& cache) {
     const auto evaluate = irradianceEvaluator(irradiance);
     cache.checkEnvironment(reference);
@@ -349,7 +349,7 @@ ErrorStats irradianceErrors(const CachedImage& irradiance, const scene::Environm
     return errorStats(gpu, ref);
 }
 
-LutErrors lutErrors(const CachedImage& lut, uint32_t stride) {
+LutErrors lutErrors(const ibl::CachedImage& lut, uint32_t stride) {
     checkLut(lut);
     if (stride == 0) throw std::invalid_argument("lutErrors: stride is 0");
     const uint32_t size = lut.width;
@@ -380,7 +380,7 @@ LutErrors lutErrors(const CachedImage& lut, uint32_t stride) {
 
 // ---- Helpers ----
 
-glm::vec4 texelValue(const CachedImage& image, uint32_t mip, uint32_t layer, uint32_t x, uint32_t y) {
+glm::vec4 texelValue(const ibl::CachedImage& image, uint32_t mip, uint32_t layer, uint32_t x, uint32_t y) {
     checkFormat(image);
     if (mip >= image.mips || layer >= image.layers) throw std::out_of_range("texelValue: no such mip or layer");
     const uint32_t w = mipExtent(image.width, mip), h = mipExtent(image.height, mip);
@@ -396,7 +396,7 @@ glm::dvec3 cubeTexelDirection(uint32_t face, uint32_t x, uint32_t y, uint32_t fa
     return glm::normalize(glm::dvec3(shading::cubeFaceDirection(face, uv)));
 }
 
-glm::vec4 sampleCube(const CachedImage& image, uint32_t mip, const glm::dvec3& direction) {
+glm::vec4 sampleCube(const ibl::CachedImage& image, uint32_t mip, const glm::dvec3& direction) {
     if (direction == glm::dvec3(0.0)) throw std::invalid_argument("sampleCube: zero direction");
     const FacePoint p = facePoint(direction);
     const uint32_t size = mipExtent(image.width, mip);
@@ -426,8 +426,8 @@ glm::dvec3 fibonacciDirection(uint32_t i, uint32_t n) {
     const double y = 1.0 - (2.0 * i + 1.0) / n;
     const double r = std::sqrt(std::max(0.0, 1.0 - y * y));
     const double turns = std::fmod(double(i) * goldenFraction, 1.0);
-    const double phi = 2.0 * kPi * turns;
+    const double phi = 2.0 * std::numbers::pi * turns;
     return {r * std::cos(phi), y, r * std::sin(phi)};
 }
 
-}  // namespace candela::ibl
+}  // namespace candela::reports

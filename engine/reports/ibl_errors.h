@@ -3,7 +3,7 @@
 // CachedImages, see IblMaps::readBack) are from the converged double-precision reference of
 // ibl_reference.h. Pure C++, no Vulkan calls (VkFormat values are plain numbers here).
 //
-//     const scene::Environment ref = referenceEnvironment(env);     // ≤ 512 texels wide
+//     const assets::Environment ref = referenceEnvironment(env);     // ≤ 512 texels wide
 //     ReferenceCache cache;                                         // one per environment
 //     for (const LevelErrors& level : specularErrors(specular, env, ref, 128, cache)) ...
 //     const ErrorStats diffuse = irradianceErrors(irradianceSh, ref, 256, cache);
@@ -48,7 +48,7 @@
 #include <span>
 #include <vector>
 
-namespace candela::ibl {
+namespace candela::reports {
 
 // The VkFormat values of the read-back maps (vulkan_core.h; checked in ibl_errors.cpp).
 inline constexpr uint32_t kFormatRg16Sfloat = 83;      // VK_FORMAT_R16G16_SFLOAT: "brdf_lut"
@@ -100,7 +100,7 @@ struct LutErrors {
 // in double in one pass, so Σ L Ω over the map — the mean radiance — is preserved to float
 // rounding. `source` is kept; warnings are dropped. Throws std::invalid_argument for an empty
 // environment or maxWidth = 0.
-scene::Environment referenceEnvironment(const scene::Environment& env, uint32_t maxWidth = 512);
+assets::Environment referenceEnvironment(const assets::Environment& env, uint32_t maxWidth = 512);
 
 // A memo of reference values, so that a sweep comparing many settings at the same cube size (or
 // irradiance direction count) computes each reference value once. Keyed by what determines the
@@ -118,7 +118,7 @@ public:
     // The value stored under `key`, computing it with `compute` on the first request.
     glm::dvec3 get(const Key& key, const std::function<glm::dvec3()>& compute);
     // Records the reference environment's dimensions (first call) or checks them (later calls).
-    void checkEnvironment(const scene::Environment& reference);
+    void checkEnvironment(const assets::Environment& reference);
 
     size_t size() const { return mValues.size(); }  // values stored
     uint64_t hits() const { return mHits; }         // requests answered from the memo
@@ -136,8 +136,8 @@ private:
 // centre, roughness = m/(mips − 1); mip 0 against reference::bilinear(original, ·), the others
 // against reference::prefiltered(reference, ·, roughness). Throws std::invalid_argument if the
 // image is not a 6-layer cube of a supported format.
-std::vector<LevelErrors> specularErrors(const CachedImage& specular, const scene::Environment& original,
-                                        const scene::Environment& reference, uint32_t texelsPerLevel,
+std::vector<LevelErrors> specularErrors(const ibl::CachedImage& specular, const assets::Environment& original,
+                                        const assets::Environment& reference, uint32_t texelsPerLevel,
                                         ReferenceCache& cache);
 
 // The irradiance map ("irradiance_sh": 9×1 RGBA32F texels of coefficients, irradiance/π =
@@ -145,14 +145,14 @@ std::vector<LevelErrors> specularErrors(const CachedImage& specular, const scene
 // does; or "irradiance_cube": a 6-layer cube read by sampleCube at mip 0) against
 // reference::irradiance(reference, n) at `directions` spherical-Fibonacci directions
 // (fibonacciDirection). Throws std::invalid_argument for another name or a wrong shape.
-ErrorStats irradianceErrors(const CachedImage& irradiance, const scene::Environment& reference, uint32_t directions,
+ErrorStats irradianceErrors(const ibl::CachedImage& irradiance, const assets::Environment& reference, uint32_t directions,
                             ReferenceCache& cache);
 
 // The "brdf_lut" (RG16F, size × size, size ≥ 2) against reference::splitSum at every `stride`-th
 // texel in x and y (stride ≥ 1) plus always the last column and row: texel (x, y) stands for
 // N·V = max(x/(size−1), 1e-4) and perceptual roughness y/(size−1). Throws std::invalid_argument
 // for a wrong shape or stride 0.
-LutErrors lutErrors(const CachedImage& lut, uint32_t stride);
+LutErrors lutErrors(const ibl::CachedImage& lut, uint32_t stride);
 
 // ---- Helpers (exposed for the tests and the report) ----------------------------------------------
 
@@ -162,7 +162,7 @@ double luminance(const glm::dvec3& rgb);
 // Texel (x, y) of `layer` of `mip` decoded as RGBA float: RGBA16F, RG16F (B = 0, A = 1) or RGBA32F.
 // Throws std::invalid_argument for another format or a texelBytes that disagrees with it,
 // std::out_of_range for coordinates outside the image or data too short for them.
-glm::vec4 texelValue(const CachedImage& image, uint32_t mip, uint32_t layer, uint32_t x, uint32_t y);
+glm::vec4 texelValue(const ibl::CachedImage& image, uint32_t mip, uint32_t layer, uint32_t x, uint32_t y);
 
 // The unit direction through the centre of texel (x, y) of `face` of a cube mip of face size s
 // (shared/ibl.h's cubeFaceDirection: faces +X −X +Y −Y +Z −Z, rows top first).
@@ -173,7 +173,7 @@ glm::dvec3 cubeTexelDirection(uint32_t face, uint32_t x, uint32_t y, uint32_t fa
 // footprint texel beyond that face's edge is the adjacent face's texel containing the extrapolated
 // texel centre. At the eight corners (a 2×2 footprint over three faces) the GPU averages the three
 // texels instead; here the missing one is an edge texel of a neighbour face.
-glm::vec4 sampleCube(const CachedImage& image, uint32_t mip, const glm::dvec3& direction);
+glm::vec4 sampleCube(const ibl::CachedImage& image, uint32_t mip, const glm::dvec3& direction);
 
 // The texels compared at a cube mip of face size s: min(count, 6·s²) distinct linear indices
 // face·s² + y·s + x. Sample k is on face k mod 6 (all faces equally); within a face, sample
@@ -185,4 +185,4 @@ std::vector<uint32_t> specularSampleTexels(uint32_t faceSize, uint32_t count);
 // Point i of n ≥ 1 on the spherical Fibonacci lattice: y = 1 − (2i + 1)/n, azimuth 2π·i·(φ − 1).
 glm::dvec3 fibonacciDirection(uint32_t i, uint32_t n);
 
-}  // namespace candela::ibl
+}  // namespace candela::reports

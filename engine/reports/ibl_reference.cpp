@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
-namespace candela::ibl::reference {
+namespace candela::reports::reference {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinNoV = 1e-4;
 constexpr double kMirrorRoughness = 1e-4;  // below: the mirror (α < 1e-8)
 constexpr double kSnap = 1e-9;             // bilinear: texel fractions this close to a centre snap to it
@@ -25,7 +25,7 @@ struct GaussLegendre {
 GaussLegendre makeGaussLegendre() {
     GaussLegendre rule;
     for (int i = 0; i < kOrder; ++i) {
-        double x = std::cos(kPi * (i + 0.75) / (kOrder + 0.5));
+        double x = std::cos(std::numbers::pi * (i + 0.75) / (kOrder + 0.5));
         double derivative = 1.0;
         for (int iteration = 0; iteration < 100; ++iteration) {
             double p0 = 1.0, p1 = x;  // P_0, P_1, ... by the three-term recurrence
@@ -125,7 +125,7 @@ SplitSum splitSumRefined(double NoV, double roughness, int refinement) {
             const double sinThetaH = tanThetaH * cosThetaH;
             const double coshS = std::cosh(s);
             // dξ1 = ds / (2 cosh² s); dξ2 = dφ / 2π over [0, 2π] = dφ / π over [0, π] (symmetry).
-            inner(cosThetaH, sinThetaH, ws / (2.0 * coshS * coshS) / kPi);
+            inner(cosThetaH, sinThetaH, ws / (2.0 * coshS * coshS) / std::numbers::pi);
         });
     };
 
@@ -134,7 +134,7 @@ SplitSum splitSumRefined(double NoV, double roughness, int refinement) {
     const int phiSteps = kFullPhiPoints * refinement;
     std::vector<double> fullPhiCos, fullPhiWeight;
     for (int i = 0; i <= phiSteps; ++i) {
-        const double step = kPi / phiSteps;
+        const double step = std::numbers::pi / phiSteps;
         fullPhiCos.push_back(std::cos(i * step));
         fullPhiWeight.push_back((i == 0 || i == phiSteps) ? 0.5 * step : step);
     }
@@ -169,15 +169,15 @@ double directionalAlbedo(double NoV, double roughness) {
 // ---- Environment geometry ----
 
 glm::dvec3 texelDirection(uint32_t x, uint32_t y, uint32_t width, uint32_t height) {
-    const double phi = ((x + 0.5) / width - 0.5) * 2.0 * kPi;
-    const double theta = (y + 0.5) / height * kPi;
+    const double phi = ((x + 0.5) / width - 0.5) * 2.0 * std::numbers::pi;
+    const double theta = (y + 0.5) / height * std::numbers::pi;
     const double s = std::sin(theta);
     return {s * std::cos(phi), std::cos(theta), s * std::sin(phi)};
 }
 
 double texelSolidAngle(uint32_t y, uint32_t width, uint32_t height) {
-    const double theta0 = kPi * y / height, theta1 = kPi * (y + 1.0) / height;
-    return 2.0 * kPi / width * (std::cos(theta0) - std::cos(theta1));
+    const double theta0 = std::numbers::pi * y / height, theta1 = std::numbers::pi * (y + 1.0) / height;
+    return 2.0 * std::numbers::pi / width * (std::cos(theta0) - std::cos(theta1));
 }
 
 namespace {
@@ -187,22 +187,22 @@ namespace {
 struct Grid {
     std::vector<double> cosPhi, sinPhi, cosTheta, sinTheta, solidAngle, theta0, theta1;
 
-    explicit Grid(const scene::Environment& env) {
+    explicit Grid(const assets::Environment& env) {
         const uint32_t w = env.width, h = env.height;
         cosPhi.resize(w);
         sinPhi.resize(w);
         for (uint32_t x = 0; x < w; ++x) {
-            const double phi = ((x + 0.5) / w - 0.5) * 2.0 * kPi;
+            const double phi = ((x + 0.5) / w - 0.5) * 2.0 * std::numbers::pi;
             cosPhi[x] = std::cos(phi);
             sinPhi[x] = std::sin(phi);
         }
         for (uint32_t y = 0; y < h; ++y) {
-            const double theta = (y + 0.5) / h * kPi;
+            const double theta = (y + 0.5) / h * std::numbers::pi;
             cosTheta.push_back(std::cos(theta));
             sinTheta.push_back(std::sin(theta));
             solidAngle.push_back(texelSolidAngle(y, w, h));
-            theta0.push_back(kPi * y / h);
-            theta1.push_back(kPi * (y + 1.0) / h);
+            theta0.push_back(std::numbers::pi * y / h);
+            theta1.push_back(std::numbers::pi * (y + 1.0) / h);
         }
     }
 
@@ -213,18 +213,18 @@ struct Grid {
     // True when every direction of row y is at least 90° (plus a margin) from unit `n`, i.e. has
     // n·l < 0: the angular distance from n to the band [θ0, θ1] is max(0, θ0 − θn, θn − θ1).
     bool rowBelowHorizon(uint32_t y, double thetaN) const {
-        return std::max({0.0, theta0[y] - thetaN, thetaN - theta1[y]}) > 0.5 * kPi + 1e-9;
+        return std::max({0.0, theta0[y] - thetaN, thetaN - theta1[y]}) > 0.5 * std::numbers::pi + 1e-9;
     }
 };
 
-glm::dvec3 texelValue(const scene::Environment& env, uint32_t x, uint32_t y) {
+glm::dvec3 texelValue(const assets::Environment& env, uint32_t x, uint32_t y) {
     const float* t = env.texel(x, y);
     return {double(t[0]), double(t[1]), double(t[2])};
 }
 
 // Σ L(l)·weight(n·l, l) Ω / Σ weight(n·l, l) Ω over the texels with n·l > 0.
 template <class Weight>
-glm::dvec3 weightedAverage(const scene::Environment& env, const glm::dvec3& n, Weight&& weight) {
+glm::dvec3 weightedAverage(const assets::Environment& env, const glm::dvec3& n, Weight&& weight) {
     const Grid grid(env);
     const double thetaN = std::acos(std::clamp(n.y, -1.0, 1.0));
     glm::dvec3 sum(0.0);
@@ -247,11 +247,11 @@ glm::dvec3 weightedAverage(const scene::Environment& env, const glm::dvec3& n, W
 
 // ---- Environment integrals ----
 
-glm::dvec3 bilinear(const scene::Environment& env, const glm::dvec3& direction) {
+glm::dvec3 bilinear(const assets::Environment& env, const glm::dvec3& direction) {
     const glm::dvec3 d = glm::normalize(direction);
     const double phi = (d.x == 0.0 && d.z == 0.0) ? 0.0 : std::atan2(d.z, d.x);
-    const double u = 0.5 + phi / (2.0 * kPi);
-    const double v = std::acos(std::clamp(d.y, -1.0, 1.0)) / kPi;
+    const double u = 0.5 + phi / (2.0 * std::numbers::pi);
+    const double v = std::acos(std::clamp(d.y, -1.0, 1.0)) / std::numbers::pi;
 
     const auto split = [](double t, double& index, double& fraction) {
         index = std::floor(t);
@@ -276,32 +276,32 @@ glm::dvec3 bilinear(const scene::Environment& env, const glm::dvec3& direction) 
     return top * (1.0 - fy) + bottom * fy;
 }
 
-glm::dvec3 prefiltered(const scene::Environment& env, const glm::dvec3& R, double roughness) {
+glm::dvec3 prefiltered(const assets::Environment& env, const glm::dvec3& R, double roughness) {
     roughness = std::clamp(roughness, 0.0, 1.0);
     const double alpha = roughness * roughness;
-    if (2.0 * alpha < kPi / env.height) return bilinear(env, R);
+    if (2.0 * alpha < std::numbers::pi / env.height) return bilinear(env, R);
     const glm::dvec3 n = glm::normalize(R);
     const double alpha2 = alpha * alpha;
     // With n = v, h = normalize(n + l) has (n·h)² = (1 + n·l)/2, so
     // (n·h)²(α² − 1) + 1 = (α² (1 + n·l) + (1 − n·l)) / 2.
     return weightedAverage(env, n, [alpha2](double NoL) {
         const double d = alpha2 * (1.0 + NoL) + (1.0 - NoL);
-        return 4.0 * alpha2 / (kPi * d * d) * NoL;
+        return 4.0 * alpha2 / (std::numbers::pi * d * d) * NoL;
     });
 }
 
-glm::dvec3 irradiance(const scene::Environment& env, const glm::dvec3& n) {
+glm::dvec3 irradiance(const assets::Environment& env, const glm::dvec3& n) {
     return weightedAverage(env, glm::normalize(n), [](double NoL) { return NoL; });
 }
 
 // ---- Spherical harmonics ----
 
 std::array<double, 9> shBasis(const glm::dvec3& d) {
-    const double c0 = std::sqrt(1.0 / (4.0 * kPi));
-    const double c1 = std::sqrt(3.0 / (4.0 * kPi));
-    const double c2 = std::sqrt(15.0 / (4.0 * kPi));
-    const double c20 = std::sqrt(5.0 / (16.0 * kPi));
-    const double c22 = std::sqrt(15.0 / (16.0 * kPi));
+    const double c0 = std::sqrt(1.0 / (4.0 * std::numbers::pi));
+    const double c1 = std::sqrt(3.0 / (4.0 * std::numbers::pi));
+    const double c2 = std::sqrt(15.0 / (4.0 * std::numbers::pi));
+    const double c20 = std::sqrt(5.0 / (16.0 * std::numbers::pi));
+    const double c22 = std::sqrt(15.0 / (16.0 * std::numbers::pi));
     return {c0,
             c1 * d.y,
             c1 * d.z,
@@ -313,7 +313,7 @@ std::array<double, 9> shBasis(const glm::dvec3& d) {
             c22 * (d.x * d.x - d.y * d.y)};
 }
 
-Sh9 projectSh9(const scene::Environment& env) {
+Sh9 projectSh9(const assets::Environment& env) {
     const Grid grid(env);
     Sh9 sh{};
     for (uint32_t y = 0; y < env.height; ++y) {
@@ -338,9 +338,9 @@ glm::dvec3 irradianceFromSh9(const Sh9& sh, const glm::dvec3& n) {
 
 // ---- Test environments ----
 
-scene::Environment makeEnvironment(uint32_t width, uint32_t height,
+assets::Environment makeEnvironment(uint32_t width, uint32_t height,
                                    const std::function<glm::dvec3(const glm::dvec3& direction)>& radiance) {
-    scene::Environment env;
+    assets::Environment env;
     env.source = "reference";
     env.width = width;
     env.height = height;
@@ -357,4 +357,4 @@ scene::Environment makeEnvironment(uint32_t width, uint32_t height,
     return env;
 }
 
-}  // namespace candela::ibl::reference
+}  // namespace candela::reports::reference

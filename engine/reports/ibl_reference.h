@@ -31,7 +31,7 @@
 #include <cstdint>
 #include <functional>
 
-namespace candela::ibl::reference {
+namespace candela::reports::reference {
 
 // ---- Split sum ---------------------------------------------------------------------------------
 
@@ -72,7 +72,7 @@ double directionalAlbedo(double NoV, double roughness);
 // within 1e-9 texel of a texel centre returns that texel's value exactly. At the poles
 // (d.x = d.z = 0) u = 0.5, as in shaders/shared/environment.h. Preconditions: env is not empty;
 // direction is non-zero (it is normalised).
-glm::dvec3 bilinear(const scene::Environment& env, const glm::dvec3& direction);
+glm::dvec3 bilinear(const assets::Environment& env, const glm::dvec3& direction);
 
 // Split-sum prefiltered radiance along unit reflection direction R (with n = v = R):
 //     Σ L(l) D(h) max(n·l, 0) Ω  /  Σ D(h) max(n·l, 0) Ω,     h = normalize(R + l),
@@ -85,13 +85,13 @@ glm::dvec3 bilinear(const scene::Environment& env, const glm::dvec3& direction);
 // texel; the reference then returns bilinear(env, R) instead (and always for roughness 0, the
 // mirror). H = 256: r < 0.078; H = 512: r < 0.055; H = 1024: r < 0.039.
 // Preconditions: env is not empty; roughness ∈ [0, 1] (clamped).
-glm::dvec3 prefiltered(const scene::Environment& env, const glm::dvec3& R, double roughness);
+glm::dvec3 prefiltered(const assets::Environment& env, const glm::dvec3& R, double roughness);
 
 // The outgoing radiance of a white Lambertian surface with unit normal n:
 //     (1/π) ∫ L(l) max(n·l, 0) dl   ≈   Σ L(l) max(n·l, 0) Ω  /  Σ max(n·l, 0) Ω.
 // The discrete cosine weight Σ max(n·l, 0) Ω (→ π as the map is refined) normalises it, so a
 // constant environment c gives exactly c at any resolution. Precondition: env is not empty.
-glm::dvec3 irradiance(const scene::Environment& env, const glm::dvec3& n);
+glm::dvec3 irradiance(const assets::Environment& env, const glm::dvec3& n);
 
 // ---- Spherical harmonics (order 2, 9 coefficients) ----------------------------------------------
 
@@ -108,7 +108,7 @@ std::array<double, 9> shBasis(const glm::dvec3& d);
 
 // The projection L_lm = Σ L(l) Y_lm(l) Ω over the texels of the map (point-sampled at the texel
 // centres). Precondition: env is not empty.
-Sh9 projectSh9(const scene::Environment& env);
+Sh9 projectSh9(const assets::Environment& env);
 
 // The white Lambertian radiance of an SH9 environment at unit normal n:
 //     (1/π) Σ Â_l L_lm Y_lm(n),   Â0 = π, Â1 = 2π/3, Â2 = π/4
@@ -120,11 +120,11 @@ glm::dvec3 irradianceFromSh9(const Sh9& sh, const glm::dvec3& n);
 // A width × height equirectangular map whose texel (x, y) holds radiance(d) at its centre direction
 // d, stored as float; source "reference". Preconditions: width, height ≥ 1; radiance returns finite
 // values ≥ 0 (as every Environment holds; not checked).
-scene::Environment makeEnvironment(uint32_t width, uint32_t height,
+assets::Environment makeEnvironment(uint32_t width, uint32_t height,
                                    const std::function<glm::dvec3(const glm::dvec3& direction)>& radiance);
 
 // The centre direction of texel (x, y) of a width × height map, and its solid angle (steradians).
 glm::dvec3 texelDirection(uint32_t x, uint32_t y, uint32_t width, uint32_t height);
 double texelSolidAngle(uint32_t y, uint32_t width, uint32_t height);
 
-}  // namespace candela::ibl::reference
+}  // namespace candela::reports::reference

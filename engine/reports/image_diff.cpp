@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <map>
 
-namespace candela::io {
+namespace candela::reports {
 namespace {
 
 std::string number(const char* format, double value) {
@@ -101,4 +101,4 @@ std::vector<MatchedFile> matchFolders(const std::filesystem::path& reference, co
     return out;
 }
 
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::io {
+namespace candela::reports {
 
 // Compares `reference` with `test` and fills a DiffPair named `name`: the ꟻLIP statistics, the
 // pixel differences and the status under the settings' thresholds. A file that cannot be read
@@ -30,4 +30,4 @@ struct MatchedFile {
 };
 std::vector<MatchedFile> matchFolders(const std::filesystem::path& reference, const std::filesystem::path& test);
 
-}  // namespace candela::io
+}  // namespace candela::reports

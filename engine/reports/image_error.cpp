@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-namespace candela::io {
+namespace candela::reports {
 
 FloatImage boxDownsample(const FloatImage& image, uint32_t factor) {
     if (factor == 0 || image.width % factor || image.height % factor)
@@ -85,4 +85,4 @@ double meanTemporalError(const std::vector<std::vector<uint8_t>>& frames, const 
     return values ? sum / double(values) : 0.0;
 }
 
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace candela::io {
+namespace candela::reports {
 
 struct FloatImage {
     uint32_t width = 0, height = 0;
@@ -43,4 +43,4 @@ double meanFrameToFrameDifference(const std::vector<std::vector<uint8_t>>& frame
 // Precondition: as many frames as the reference, of its size.
 double meanTemporalError(const std::vector<std::vector<uint8_t>>& frames, const std::vector<std::vector<uint8_t>>& reference);
 
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace candela::io {
+namespace candela::reports {
 namespace {
 
 // matplotlib's _magma_data (floats with six decimals, sRGB-encoded), each component as
@@ -63,4 +63,4 @@ std::vector<uint8_t> magmaImage(std::span<const float> values) {
     return rgba;
 }
 
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-namespace candela::io {
+namespace candela::reports {
 
 // The colour of `value` in [0, 1] (clamped; NaN reads as 0), as 8-bit sRGB: entry
 // ⌊255·value + 0.5⌋ of the 256, as the ꟻLIP tool writes its error maps.
@@ -17,4 +17,4 @@ std::array<uint8_t, 3> magma(float value);
 // An error map (values in [0, 1]) as an RGBA8 image for writePng, alpha 255.
 std::vector<uint8_t> magmaImage(std::span<const float> values);
 
-}  // namespace candela::io
+}  // namespace candela::reports

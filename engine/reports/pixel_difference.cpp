@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace candela::io {
+namespace candela::reports {
 namespace {
 
 template <class T, class Value>
@@ -43,4 +43,4 @@ PixelDifference pixelDifference(std::span<const float> reference, std::span<cons
     return difference(reference, test, threshold, peak, finite);
 }
 
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <span>
 
-namespace candela::io {
+namespace candela::reports {
 
 struct PixelDifference {
     double psnr = 0.0;                  // dB; +∞ when the images are equal
@@ -26,4 +26,4 @@ PixelDifference pixelDifference(std::span<const uint8_t> reference, std::span<co
 // Non-finite values count as 0. Precondition as above.
 PixelDifference pixelDifference(std::span<const float> reference, std::span<const float> test, double threshold);
 
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <cstring>
 
-namespace candela::io {
+namespace candela::reports {
 
 namespace {
 
@@ -182,7 +182,7 @@ std::vector<LabelPlacement> placeLabels(const Layout& layout, const PlotSpec& sp
             markers.push_back({x - 1, y - 1, x + 2, y + 2});
         }
     }
-    const std::vector<LabelPlacement> placed = io::placeLabels(requests, markers, layout.labelArea());
+    const std::vector<LabelPlacement> placed = reports::placeLabels(requests, markers, layout.labelArea());
     std::vector<LabelPlacement> out(spec.points.size());
     for (size_t k = 0; k < order.size(); ++k) out[order[k]] = placed[k];
     return out;
@@ -299,7 +299,7 @@ void writeLogLogPlot(const std::filesystem::path& path, const PlotSpec& spec) {
         canvas.ring(right + 24, ly + 4, 6, Rgb{220, 0, 0});
         canvas.text(right + 36, ly, "default setting", ink);
     }
-    writePng(path, spec.width, spec.height, canvas.pixels());
+    assets::writePng(path, spec.width, spec.height, canvas.pixels());
 }
 
-}  // namespace candela::io
+}  // namespace candela::reports

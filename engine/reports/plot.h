@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::io {
+namespace candela::reports {
 
 struct PlotPoint {
     double x = 0;  // > 0 (log axis); points with x ≤ 0 or y ≤ 0 are not drawn
@@ -61,4 +61,4 @@ PixelBox plotMarkerBox(const PlotSpec& spec, size_t i);
 // Draws the plot and writes it as PNG. Throws UserError naming the file if it cannot be written.
 void writeLogLogPlot(const std::filesystem::path& path, const PlotSpec& spec);
 
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
-namespace candela::io {
+namespace candela::reports {
 
 namespace {
 
@@ -82,4 +82,4 @@ std::vector<LabelPlacement> placeLabels(const std::vector<LabelRequest>& labels,
     return out;
 }
 
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace candela::io {
+namespace candela::reports {
 
 // A rectangle in pixels, [x0, x1) × [y0, y1) (y down). Empty when x1 ≤ x0 or y1 ≤ y0.
 struct PixelBox {
@@ -41,4 +41,4 @@ struct LabelPlacement {
 std::vector<LabelPlacement> placeLabels(const std::vector<LabelRequest>& labels, const std::vector<PixelBox>& obstacles,
                                         const PixelBox& area);
 
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -201,12 +201,12 @@ std::string suffixOf(const std::vector<std::string>& t, size_t first) {
 }
 
 // The node properties a pointer names after "/nodes/{}" (weights/{k} aside).
-constexpr std::pair<std::string_view, AnimatedProperty> kNodeProperties[] = {
-    {"/translation", AnimatedProperty::Translation},
-    {"/rotation", AnimatedProperty::Rotation},
-    {"/scale", AnimatedProperty::Scale},
-    {"/weights", AnimatedProperty::Weights},
-    {"/extensions/KHR_node_visibility/visible", AnimatedProperty::Visibility},
+constexpr std::pair<std::string_view, animation::AnimatedProperty> kNodeProperties[] = {
+    {"/translation", animation::AnimatedProperty::Translation},
+    {"/rotation", animation::AnimatedProperty::Rotation},
+    {"/scale", animation::AnimatedProperty::Scale},
+    {"/weights", animation::AnimatedProperty::Weights},
+    {"/extensions/KHR_node_visibility/visible", animation::AnimatedProperty::Visibility},
 };
 
 }  // namespace
@@ -243,12 +243,12 @@ std::optional<PointerTarget> parsePointer(std::string_view pointer) {
         if (t.size() == 4 && t[2] == "weights") {
             const std::optional<uint32_t> element = indexOf(t[3]);
             if (!element) return std::nullopt;
-            out.property = AnimatedProperty::Weight;
+            out.property = animation::AnimatedProperty::Weight;
             out.element = *element;
             return out;
         }
         for (const auto& [name, property] : kNodeProperties)
-            if (suffix == name && (out.kind == PointerKind::Node || property == AnimatedProperty::Weights)) {
+            if (suffix == name && (out.kind == PointerKind::Node || property == animation::AnimatedProperty::Weights)) {
                 out.property = property;
                 return out;
             }
@@ -268,7 +268,7 @@ std::string pointerOf(const PointerTarget& target) {
         case PointerKind::Node:
         case PointerKind::Mesh: {
             std::string out = (target.kind == PointerKind::Node ? "/nodes/" : "/meshes/") + index;
-            if (target.property == AnimatedProperty::Weight) return out + "/weights/" + std::to_string(target.element);
+            if (target.property == animation::AnimatedProperty::Weight) return out + "/weights/" + std::to_string(target.element);
             for (const auto& [name, property] : kNodeProperties)
                 if (property == target.property) return out + std::string(name);
             return out;
@@ -285,10 +285,10 @@ uint32_t pointerWidth(const PointerTarget& target) {
         case PointerKind::Node:
         case PointerKind::Mesh:
             switch (target.property) {
-                case AnimatedProperty::Translation:
-                case AnimatedProperty::Scale: return 3;
-                case AnimatedProperty::Rotation: return 4;
-                case AnimatedProperty::Weights: return 0;
+                case animation::AnimatedProperty::Translation:
+                case animation::AnimatedProperty::Scale: return 3;
+                case animation::AnimatedProperty::Rotation: return 4;
+                case animation::AnimatedProperty::Weights: return 0;
                 default: return 1;
             }
         case PointerKind::Material: return materialTable().at(target.field).width;

@@ -35,7 +35,7 @@ enum class AnimatedObject : uint8_t { Material, Light, Camera };
 struct PointerTarget {
     PointerKind kind = PointerKind::Node;
     uint32_t index = 0;
-    AnimatedProperty property = AnimatedProperty::Values;
+    animation::AnimatedProperty property = animation::AnimatedProperty::Values;
     uint32_t element = 0;
     uint16_t field = 0;
     bool operator==(const PointerTarget&) const = default;

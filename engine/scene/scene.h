@@ -420,9 +420,9 @@ struct Scene {
     // The loaded scene's node hierarchy, depth-first (a parent before its children), with the
     // world transforms the draws, lights and cameras above were placed with. Empty for built-in
     // scenes. Animations move them (animation/node_tree.h, pose/scene_pose.h).
-    std::vector<SceneNode> nodes;
+    std::vector<animation::SceneNode> nodes;
     // The file's animations, in file order; channels name Scene::nodes indices.
-    std::vector<Animation> animations;
+    std::vector<animation::Animation> animations;
     std::vector<Deformation> deformations;  // Draw::deformation
     std::vector<glm::mat4> instances;       // Draw::firstInstance: each instance's TRS in its node's space
     std::vector<Skin> skins;                // Draw::skin

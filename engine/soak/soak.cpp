@@ -7,7 +7,7 @@
 namespace candela {
 
 std::vector<SoakSample> runSoak(Renderer& renderer, vk::Context& context, RenderSettings settings,
-                                const std::vector<scene::Environment>& environments, const SoakSchedule& options,
+                                const std::vector<assets::Environment>& environments, const SoakSchedule& options,
                                 const std::function<void(const SoakSample&)>& onSample) {
     std::vector<SoakSample> samples;
     for (uint32_t frame = 0; frame < options.frames; ++frame) {
@@ -32,12 +32,12 @@ std::vector<SoakSample> runSoak(Renderer& renderer, vk::Context& context, Render
     return samples;
 }
 
-std::vector<scene::Environment> soakEnvironments(uint32_t count) {
-    std::vector<scene::Environment> environments;
+std::vector<assets::Environment> soakEnvironments(uint32_t count) {
+    std::vector<assets::Environment> environments;
     for (uint32_t i = 0; i < count; ++i) {
-        scene::SkyParams params;
+        assets::SkyParams params;
         params.sunAzimuthDegrees = 45.0f + 360.0f * float(i) / float(count);
-        environments.push_back(scene::makeProceduralSky(params));
+        environments.push_back(assets::makeProceduralSky(params));
     }
     return environments;
 }

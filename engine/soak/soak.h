@@ -34,10 +34,10 @@ struct SoakSample {
 // once the GPU is idle; `onSample` sees each sample as it is taken. Preconditions: `environments` is not empty; the renderer's
 // context is otherwise idle.
 std::vector<SoakSample> runSoak(Renderer& renderer, vk::Context& context, RenderSettings settings,
-                                const std::vector<scene::Environment>& environments, const SoakSchedule& options,
+                                const std::vector<assets::Environment>& environments, const SoakSchedule& options,
                                 const std::function<void(const SoakSample&)>& onSample = {});
 
 // Environments for a soak without files: the procedural sky with the sun at `count` azimuths.
-std::vector<scene::Environment> soakEnvironments(uint32_t count = 4);
+std::vector<assets::Environment> soakEnvironments(uint32_t count = 4);
 
 }  // namespace candela

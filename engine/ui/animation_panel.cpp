@@ -36,7 +36,7 @@ void drawAnimationPanel(Viewer& viewer) {
         viewer.setPlayingAnimations(playing);
     }
     // Ticked animations that drive the same channels: which, and which wins.
-    if (const std::string overlap = scene::describeAnimationConflicts(scene, scene::animationConflicts(scene, viewer.pose().playing()));
+    if (const std::string overlap = pose::describeAnimationConflicts(scene, pose::animationConflicts(scene, viewer.pose().playing()));
         !overlap.empty())
         ImGui::TextWrapped("%s", overlap.c_str());
     bool& paused = viewer.animationPaused();
@@ -45,7 +45,7 @@ void drawAnimationPanel(Viewer& viewer) {
     ImGui::Checkbox("loop", &viewer.animationLoop());
     ImGui::SliderFloat("speed", &viewer.animationSpeed(), 0.0f, 4.0f, "%.2fx");
     const double duration = viewer.pose().duration();
-    float time = float(viewer.animationLoop() ? scene::loopTime(viewer.animationTime(), duration) : viewer.animationTime());
+    float time = float(viewer.animationLoop() ? animation::loopTime(viewer.animationTime(), duration) : viewer.animationTime());
     if (ImGui::SliderFloat("time", &time, 0.0f, float(std::max(duration, 1e-3)), "%.3f s")) viewer.setAnimationTime(time);
     if (!viewer.pose().deformedDraws().empty())
         ImGui::TextDisabled("%zu draws deformed by skin_morph", viewer.pose().deformedDraws().size());

@@ -22,7 +22,7 @@ bool gPendingSet = false;
 
 void drawEnvironmentPanel(Viewer& viewer) {
     RenderSettings& settings = viewer.settings();
-    const scene::Environment* environment = viewer.environment();
+    const assets::Environment* environment = viewer.environment();
     textPathWrapped("environment: " + (environment ? environment->source : std::string("none (no image-based lighting)")));
     if (ImGui::Button("Procedural sky")) viewer.useProceduralSky();
     ImGui::SameLine();

@@ -9,7 +9,7 @@
 #include <mutex>
 #include <sstream>
 
-namespace candela::shader {
+namespace candela::ui {
 
 namespace {
 
@@ -145,4 +145,4 @@ CompileResult compileGlsl(const std::filesystem::path& file, const std::filesyst
     return result;
 }
 
-}  // namespace candela::shader
+}  // namespace candela::ui

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-namespace candela::shader {
+namespace candela::ui {
 
 struct CompileResult {
     std::vector<uint32_t> spirv;                  // empty on failure
@@ -30,4 +30,4 @@ CompileResult compileGlsl(const std::filesystem::path& file, const std::filesyst
 // The same, as the stage the file's name gives (NAME.STAGE.glsl), without defines.
 CompileResult compileGlsl(const std::filesystem::path& file, const std::filesystem::path& includeDir);
 
-}  // namespace candela::shader
+}  // namespace candela::ui

@@ -15,7 +15,7 @@ namespace {
 
 // The stage of built-in shader "NAME.STAGE".
 VkShaderStageFlagBits stageOfName(std::string_view name) {
-    return shader::stageOfFile(std::filesystem::path(std::string(name) + ".glsl"));
+    return stageOfFile(std::filesystem::path(std::string(name) + ".glsl"));
 }
 
 // Why `replacement` cannot stand in for `original` without rebuilding descriptor sets, or "".
@@ -53,8 +53,8 @@ void ShaderHotReload::scan(std::map<std::filesystem::path, std::filesystem::file
 
 bool ShaderHotReload::reload(const std::string& name, const std::filesystem::path& file) {
     const auto start = std::chrono::steady_clock::now();
-    shader::CompileResult result =
-        shader::compileGlsl(file, mDir, stageOfName(name), shader::builtinShaderSource(name).defines);
+    CompileResult result =
+        compileGlsl(file, mDir, stageOfName(name), shader::builtinShaderSource(name).defines);
     const double compileMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     mIncludes[name] = std::set<std::filesystem::path>(result.includes.begin(), result.includes.end());
     if (!result.ok()) {

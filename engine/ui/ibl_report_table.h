@@ -29,7 +29,7 @@ struct IblReportRow {
 
 struct IblReportTable {
     std::string name;         // the compiled-in report's name ("sky", "venice_sunset_1k"), or the CSV's path
-    // What it was measured on, as scene::Environment::source names it ("procedural sky") or by a
+    // What it was measured on, as assets::Environment::source names it ("procedural sky") or by a
     // file's stem ("venice_sunset_1k"); empty when not known (a CSV of the user's).
     std::string environment;
     std::vector<IblReportRow> rows;
@@ -43,7 +43,7 @@ IblReportTable parseIblReport(std::string_view csv, std::string name);
 IblReportTable loadIblReport(const std::filesystem::path& path);
 // The compiled-in reports, their `environment` set.
 std::vector<IblReportTable> builtinIblReports();
-// Whether `table` was measured on the environment `source` (scene::Environment::source: a file's
+// Whether `table` was measured on the environment `source` (assets::Environment::source: a file's
 // path, or "procedural sky").
 bool measuredOn(const IblReportTable& table, std::string_view environmentSource);
 // The report measured on `environmentSource`, or nullopt when none of `reports` was.

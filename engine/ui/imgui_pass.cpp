@@ -11,7 +11,7 @@
 
 #include <string>
 
-namespace candela::passes {
+namespace candela::ui {
 
 using namespace graph;
 
@@ -21,7 +21,7 @@ using Framebuffer = vk::Handle<VkFramebuffer, vkDestroyFramebuffer>;
 
 // The backend reports failures through this callback (it cannot throw through C code).
 void checkBackendResult(VkResult result) {
-    if (result != VK_SUCCESS) log::error("ImGui Vulkan backend: " + std::string(vkResultName(result)));
+    if (result != VK_SUCCESS) log::error("ImGui Vulkan backend: " + std::string(vk::vkResultName(result)));
 }
 
 VkRenderPass createRenderPass(vk::Context& context, VkFormat format) {
@@ -75,7 +75,7 @@ ImGuiPass::ImGuiPass(vk::Context& context, VkFormat format, uint32_t minImageCou
     info.CheckVkResultFn = checkBackendResult;
     if (!ImGui_ImplVulkan_Init(&info, mRenderPass)) {
         vkDestroyRenderPass(context.device(), mRenderPass, nullptr);
-        throw VulkanError("cannot start Dear ImGui's Vulkan backend", VK_ERROR_INITIALIZATION_FAILED);
+        throw vk::VulkanError("cannot start Dear ImGui's Vulkan backend", VK_ERROR_INITIALIZATION_FAILED);
     }
     vk::OneShotCommands upload(context);
     ImGui_ImplVulkan_CreateFontsTexture(upload.begin());
@@ -132,4 +132,4 @@ TextureId ImGuiPass::add(RenderGraph& graph, TextureId target) {
     return data.target;
 }
 
-}  // namespace candela::passes
+}  // namespace candela::ui

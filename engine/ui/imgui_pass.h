@@ -13,7 +13,7 @@
 #include "graph/render_graph.h"
 #include "vk/handle.h"
 
-namespace candela::passes {
+namespace candela::ui {
 
 class ImGuiPass {
 public:
@@ -37,4 +37,4 @@ private:
     vk::DescriptorPool mDescriptorPool;
 };
 
-}  // namespace candela::passes
+}  // namespace candela::ui

@@ -28,7 +28,7 @@
 
 namespace candela::ui {
 
-// The Dear ImGui context and its GLFW platform backend (the Vulkan side is passes::ImGuiPass).
+// The Dear ImGui context and its GLFW platform backend (the Vulkan side is ui::ImGuiPass).
 class ImGuiContextOwner {
 public:
     explicit ImGuiContextOwner(GLFWwindow* window) {
@@ -64,25 +64,21 @@ std::string lowerExtension(const std::filesystem::path& path) {
 
 }  // namespace
 
-Viewer::Viewer(const ViewerDesc& desc, ViewerContent content)
+Viewer::Viewer(const ViewerDesc& desc, ViewerContent content, vk::Context& context, Renderer& renderer)
     : mUi(desc.ui), mScene(std::move(content.scene)), mEnvironment(std::move(content.environment)),
       mSettings(std::move(content.settings)) {
     mVariant = content.variant;
-    mPose = std::make_unique<scene::ScenePose>(mScene, scene::selectAnimations(mScene, content.animations));
+    mPose = std::make_unique<pose::ScenePose>(mScene, pose::selectAnimations(mScene, content.animations));
     // Said once here; the animation panel shows it while the ticked animations overlap.
-    if (const std::string overlap = scene::describeAnimationConflicts(mScene, scene::animationConflicts(mScene, mPose->playing()));
+    if (const std::string overlap = pose::describeAnimationConflicts(mScene, pose::animationConflicts(mScene, mPose->playing()));
         !overlap.empty())
         log::warn(mScene.source + ": " + overlap);
     mAnimationTime = content.time;
     mPose->evaluate(mAnimationTime);
     mWindow = std::make_unique<Window>(desc.window);
-    vk::ContextDesc contextDesc = desc.context;
-    for (const std::string& e : Window::requiredInstanceExtensions()) contextDesc.instanceExtensions.push_back(e);
-    contextDesc.presentSupport = Window::presentSupport;
-    mContext = std::make_unique<vk::Context>(contextDesc);
+    mContext = &context;
     mSwapchain = std::make_unique<vk::Swapchain>(*mContext, mWindow->createSurface(mContext->instance()), desc.vsync);
-    mRenderer = std::make_unique<Renderer>(*mContext, RendererOptions{.framesInFlight = desc.framesInFlight,
-                                                                        .unknownPassIsError = false});
+    mRenderer = &renderer;
     if (mUi) mImGui = std::make_unique<ImGuiContextOwner>(mWindow->handle());
     mHotReload = std::make_unique<ShaderHotReload>(desc.shaderDir.empty() ? std::filesystem::path(CANDELA_SHADER_SOURCE_DIR)
                                                                           : desc.shaderDir);
@@ -148,7 +144,7 @@ bool Viewer::openFile(const std::filesystem::path& path, std::optional<uint32_t>
     const std::string ext = lowerExtension(path);
     try {
         if (ext == ".gltf" || ext == ".glb") {
-            scene::Scene loaded = scene::loadGltf(path, {.sceneIndex = sceneIndex});
+            scene::Scene loaded = assets::loadGltf(path, {.sceneIndex = sceneIndex});
             for (const std::string& warning : loaded.report.warnings) log::warn(path.string() + ": " + warning);
             for (const std::string& note : loaded.report.notes) log::info(path.string() + ": " + note);
             // Replaced in place: the renderer is told, waits for the frames in flight and uploads
@@ -156,7 +152,7 @@ bool Viewer::openFile(const std::filesystem::path& path, std::optional<uint32_t>
             mRenderer->sceneReplaced();
             mScene = std::move(loaded);
             mVariant.reset();
-            mPose = std::make_unique<scene::ScenePose>(mScene, scene::selectAnimations(mScene, {}));
+            mPose = std::make_unique<pose::ScenePose>(mScene, pose::selectAnimations(mScene, {}));
             mAnimationTime = 0.0;
             mCamera = mInitialCamera =
                 Renderer::orbitCamera(mScene, {.fovYDegrees = mCamera.fovYDegrees}, visibleAspect(), mPose.get());
@@ -167,7 +163,7 @@ bool Viewer::openFile(const std::filesystem::path& path, std::optional<uint32_t>
         if (ext == ".hdr" || ext == ".pic" || ext == ".exr") {
             // A new object (new address) while the old one is alive: the renderer hashes it and
             // runs the precompute in the next frame.
-            auto loaded = std::make_unique<scene::Environment>(scene::loadEnvironment(path));
+            auto loaded = std::make_unique<assets::Environment>(assets::loadEnvironment(path));
             for (const std::string& warning : loaded->report.warnings) log::warn(warning);
             for (const std::string& note : loaded->report.notes) log::info(note);
             mRenderer->waitIdle();
@@ -211,7 +207,7 @@ bool Viewer::vsync() const { return mSwapchain->vsync(); }
 
 void Viewer::useProceduralSky() {
     mRenderer->waitIdle();
-    mEnvironment = std::make_unique<scene::Environment>(scene::makeProceduralSky());
+    mEnvironment = std::make_unique<assets::Environment>(assets::makeProceduralSky());
     mSettings.ibl.skybox = true;
     mSettings.tonemap.background.reset();
     environmentChanged();
@@ -272,7 +268,7 @@ void Viewer::selectVariant(std::optional<uint32_t> variant) {
 }
 
 void Viewer::setPlayingAnimations(std::vector<uint32_t> animations) {
-    mPose = std::make_unique<scene::ScenePose>(mScene, std::move(animations));
+    mPose = std::make_unique<pose::ScenePose>(mScene, std::move(animations));
     mPose->evaluate(mAnimationTime, mAnimationLoop);
 }
 
@@ -327,7 +323,7 @@ bool Viewer::ensureSwapchain(VkExtent2D extent) {
     if (mUi) {
         if (!mImGuiPass || mImGuiPass->format() != mSwapchain->format()) {
             mImGuiPass.reset();
-            mImGuiPass = std::make_unique<passes::ImGuiPass>(*mContext, mSwapchain->format(), mSwapchain->minImageCount(),
+            mImGuiPass = std::make_unique<ImGuiPass>(*mContext, mSwapchain->format(), mSwapchain->minImageCount(),
                                                              mSwapchain->imageCount());
         }
         ImGui_ImplVulkan_SetMinImageCount(std::max(2u, mSwapchain->minImageCount()));
@@ -357,7 +353,7 @@ bool Viewer::pickMaterial(const glm::vec2& pixel) {
     const glm::vec2 ndc(2.0f * (pixel.x + 0.5f) / float(extent.width) - 1.0f,
                         2.0f * (pixel.y + 0.5f) / float(extent.height) - 1.0f);
     // The mesh as it is posed on screen.
-    const std::optional<scene::Pick> pick = scene::pickDraw(mScene, *mPose, scene::viewRay(view, ndc));
+    const std::optional<pose::Pick> pick = pose::pickDraw(mScene, *mPose, pose::viewRay(view, ndc));
     if (!pick) return false;
     mSelectedMaterial = mPose->draws()[pick->draw].material;
     return true;
@@ -427,7 +423,7 @@ bool Viewer::frame() {
             setStatus("screenshot: this swapchain's images cannot be copied from", true);
         } else {
             try {
-                io::writePng(path, shot->width, shot->height, shot->rgba8);
+                assets::writePng(path, shot->width, shot->height, shot->rgba8);
                 mLastScreenshot = path.string();
                 setStatus("saved " + path.string());
             } catch (const std::exception& e) {

@@ -29,7 +29,7 @@
 namespace candela::vk {
 class Swapchain;
 }
-namespace candela::passes {
+namespace candela::ui {
 class ImGuiPass;
 }
 
@@ -38,11 +38,9 @@ namespace candela::ui {
 class ImGuiContextOwner;
 
 struct ViewerDesc {
-    vk::ContextDesc context;  // the viewer adds the window's extensions and presentation support
     WindowDesc window;
     bool vsync = true;
     bool ui = true;           // draw the ImGui panels (the ImGui pass is left out when off)
-    uint32_t framesInFlight = 2;
     // Hot reload of the shaders' GLSL from this folder; empty: the shaders/ folder of the source
     // tree the viewer was built from (when it exists).
     std::filesystem::path shaderDir;
@@ -56,17 +54,24 @@ struct ViewerDesc {
 // the render settings the command line chose (their scene/environment pointers are ignored).
 struct ViewerContent {
     scene::Scene scene;
-    std::unique_ptr<scene::Environment> environment;  // null: no image-based lighting
+    std::unique_ptr<assets::Environment> environment;  // null: no image-based lighting
     RenderSettings settings;
-    std::vector<std::string> animations;  // the ones to play (scene::selectAnimations); empty: animation 0
+    std::vector<std::string> animations;  // the ones to play (pose::selectAnimations); empty: animation 0
     double time = 0.0;                    // where playback starts, seconds
     std::optional<uint32_t> variant;      // the KHR_materials_variants variant `scene` was given (scene::selectVariant)
 };
 
 class Viewer {
 public:
-    // Throws UserError when no window can be opened or no device can present to it.
-    Viewer(const ViewerDesc& desc, ViewerContent content);
+    // What the viewer's renderer is made with: two frames in flight, and the render-graph panel's
+    // toggles may name passes a frame does not have.
+    static constexpr RendererOptions kRendererOptions{.framesInFlight = 2, .unknownPassIsError = false};
+
+    // Opens the window and draws with `renderer` on `context`. Preconditions: `context` was made
+    // from a description a WindowSystem added to (WindowSystem::addTo), and that WindowSystem,
+    // `context` and `renderer` (made with kRendererOptions) outlive the viewer. Throws UserError
+    // when no window can be opened or the device cannot present to it.
+    Viewer(const ViewerDesc& desc, ViewerContent content, vk::Context& context, Renderer& renderer);
     ~Viewer();
     Viewer(const Viewer&) = delete;
     Viewer& operator=(const Viewer&) = delete;
@@ -113,7 +118,7 @@ public:
     bool& animationPaused() { return mAnimationPaused; }
     float& animationSpeed() { return mAnimationSpeed; }
     bool& animationLoop() { return mAnimationLoop; }
-    const scene::ScenePose& pose() const { return *mPose; }
+    const pose::ScenePose& pose() const { return *mPose; }
     // Writes the last frame's graph (with the latest measured GPU times) as JSON or Graphviz dot.
     bool exportGraph(const std::filesystem::path& path, bool json);
     // Testing hook: treat the window as minimized (a window system without a window manager, such
@@ -128,7 +133,7 @@ public:
     scene::OrbitCamera& camera() { return mCamera; }
     OrbitSpeeds& speeds() { return mSpeeds; }
     const scene::Scene& scene() const { return mScene; }
-    const scene::Environment* environment() const { return mEnvironment.get(); }
+    const assets::Environment* environment() const { return mEnvironment.get(); }
     uint64_t framesRendered() const { return mFramesRendered; }
     // Frames skipped because the window was minimized.
     uint64_t framesSkipped() const { return mFramesSkipped; }
@@ -177,11 +182,11 @@ private:
 
     // Start-up order; destruction runs in reverse.
     std::unique_ptr<Window> mWindow;
-    std::unique_ptr<vk::Context> mContext;
+    vk::Context* mContext = nullptr;  // the caller's
     std::unique_ptr<vk::Swapchain> mSwapchain;
-    std::unique_ptr<Renderer> mRenderer;
+    Renderer* mRenderer = nullptr;    // the caller's
     std::unique_ptr<ImGuiContextOwner> mImGui;
-    std::unique_ptr<passes::ImGuiPass> mImGuiPass;
+    std::unique_ptr<ui::ImGuiPass> mImGuiPass;
     std::unique_ptr<ShaderHotReload> mHotReload;
     std::optional<std::chrono::system_clock::time_point> mReloadSaved;  // a reload waiting for its first frame
     double mReloadLatencyMs = -1.0;
@@ -197,13 +202,13 @@ private:
     scene::Scene mScene;
     std::optional<uint32_t> mVariant;
     // The scene's animations as they play: advanced by the wall-clock time between frames, looping.
-    std::unique_ptr<scene::ScenePose> mPose;
+    std::unique_ptr<pose::ScenePose> mPose;
     double mAnimationTime = 0.0;
     std::chrono::steady_clock::time_point mAnimationClock;
     bool mAnimationPaused = false;
     float mAnimationSpeed = 1.0f;
     bool mAnimationLoop = true;
-    std::unique_ptr<scene::Environment> mEnvironment;
+    std::unique_ptr<assets::Environment> mEnvironment;
     RenderSettings mSettings;
     scene::OrbitCamera mCamera;
     scene::OrbitCamera mInitialCamera;

@@ -1,6 +1,7 @@
 #include "ui/window.h"
 
 #include "vk/check.h"
+#include "vk/context.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -18,30 +19,46 @@ std::string gLastError;
 
 void onGlfwError(int, const char* description) { gLastError = description ? description : "unknown GLFW error"; }
 
-void initGlfw() {
-    if (gWindows++ > 0) return;
-    glfwSetErrorCallback(onGlfwError);
-    if (!glfwInit()) {
-        --gWindows;
-        throw UserError("cannot open a window: " + (gLastError.empty() ? std::string("GLFW failed to start") : gLastError) +
-                        " (is a display available? for headless use, `candela render`)");
-    }
-}
-
 void releaseGlfw() {
     if (--gWindows == 0) glfwTerminate();
+}
+
+// Starts GLFW for one more user (WindowSystem or Window); each is released with releaseGlfw.
+void initGlfw() {
+    if (gWindows++ == 0) {
+        glfwSetErrorCallback(onGlfwError);
+        if (!glfwInit()) {
+            --gWindows;
+            throw UserError("cannot open a window: " + (gLastError.empty() ? std::string("GLFW failed to start") : gLastError) +
+                            " (is a display available? for headless use, `candela render`)");
+        }
+    }
+    if (!glfwVulkanSupported()) {
+        releaseGlfw();
+        throw UserError("cannot open a window: GLFW found no Vulkan loader with window-system support");
+    }
 }
 
 Window* self(GLFWwindow* window) { return static_cast<Window*>(glfwGetWindowUserPointer(window)); }
 
 }  // namespace
 
+WindowSystem::WindowSystem() { initGlfw(); }
+
+WindowSystem::~WindowSystem() { releaseGlfw(); }
+
+void WindowSystem::addTo(vk::ContextDesc& desc) const {
+    uint32_t count = 0;
+    const char** names = glfwGetRequiredInstanceExtensions(&count);
+    if (!names) throw UserError("cannot open a window: " + gLastError);
+    desc.instanceExtensions.insert(desc.instanceExtensions.end(), names, names + count);
+    desc.presentSupport = [](VkInstance instance, VkPhysicalDevice device, uint32_t family) {
+        return glfwGetPhysicalDevicePresentationSupport(instance, device, family) == GLFW_TRUE;
+    };
+}
+
 Window::Window(const WindowDesc& desc) {
     initGlfw();
-    if (!glfwVulkanSupported()) {
-        releaseGlfw();
-        throw UserError("cannot open a window: GLFW found no Vulkan loader with window-system support");
-    }
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     mWindow = glfwCreateWindow(int(desc.width), int(desc.height), desc.title.c_str(), nullptr, nullptr);
     if (!mWindow) {
@@ -65,21 +82,10 @@ Window::~Window() {
     releaseGlfw();
 }
 
-std::vector<std::string> Window::requiredInstanceExtensions() {
-    uint32_t count = 0;
-    const char** names = glfwGetRequiredInstanceExtensions(&count);
-    if (!names) throw UserError("cannot open a window: " + gLastError);
-    return std::vector<std::string>(names, names + count);
-}
-
-bool Window::presentSupport(VkInstance instance, VkPhysicalDevice device, uint32_t family) {
-    return glfwGetPhysicalDevicePresentationSupport(instance, device, family) == GLFW_TRUE;
-}
-
 VkSurfaceKHR Window::createSurface(VkInstance instance) const {
     VkSurfaceKHR surface = VK_NULL_HANDLE;
     const VkResult result = glfwCreateWindowSurface(instance, mWindow, nullptr, &surface);
-    if (result != VK_SUCCESS) throw VulkanError("cannot create a window surface: " + gLastError, result);
+    if (result != VK_SUCCESS) throw vk::VulkanError("cannot create a window surface: " + gLastError, result);
     return surface;
 }
 

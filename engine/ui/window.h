@@ -1,7 +1,7 @@
 #pragma once
-// Window: a GLFW window for Vulkan (no client API), its input as the viewer needs it, and the
-// Vulkan glue (instance extensions, presentation support, surface creation). GLFW is initialised
-// by the first Window and terminated with the last.
+// The window system (GLFW) and its windows for Vulkan (no client API): what a device needs to
+// present to them (WindowSystem), a window's input as the viewer needs it and its surface
+// (Window). GLFW is initialised by the first WindowSystem or Window and terminated with the last.
 //
 // Threading: GLFW requires the main thread for every call here.
 
@@ -14,7 +14,27 @@
 
 struct GLFWwindow;
 
+namespace candela::vk {
+struct ContextDesc;
+}
+
 namespace candela::ui {
+
+// The window system, started for as long as this lives. A device that draws to windows is created
+// from a context description it has added to, while it lives.
+class WindowSystem {
+public:
+    // Throws UserError naming the cause when no window can be opened (no display, no Vulkan
+    // support in GLFW).
+    WindowSystem();
+    ~WindowSystem();
+    WindowSystem(const WindowSystem&) = delete;
+    WindowSystem& operator=(const WindowSystem&) = delete;
+
+    // Adds to `desc` the instance extensions the window system needs (VK_KHR_surface and the
+    // platform's) and its test of a queue family's presentation support.
+    void addTo(vk::ContextDesc& desc) const;
+};
 
 struct WindowDesc {
     std::string title = "Candela";
@@ -31,10 +51,6 @@ public:
     Window(const Window&) = delete;
     Window& operator=(const Window&) = delete;
 
-    // Instance extensions the window system needs (VK_KHR_surface + the platform's).
-    static std::vector<std::string> requiredInstanceExtensions();
-    // ContextDesc::presentSupport for this window system.
-    static bool presentSupport(VkInstance instance, VkPhysicalDevice device, uint32_t family);
     // A new surface for the window; the caller owns it (vk::Swapchain takes it).
     VkSurfaceKHR createSurface(VkInstance instance) const;
 

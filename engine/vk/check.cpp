@@ -2,7 +2,7 @@
 
 #include <string>
 
-namespace candela {
+namespace candela::vk {
 
 const char* vkResultName(VkResult result) {
     switch (result) {
@@ -59,4 +59,4 @@ void throwVulkanError(const char* expression, const char* file, int line, VkResu
     throw VulkanError(std::move(message), result);
 }
 
-}  // namespace candela
+}  // namespace candela::vk

@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace candela {
+namespace candela::vk {
 
 // The VkResult's enumerator name ("VK_ERROR_DEVICE_LOST"), or "VkResult(<n>)" if unknown.
 const char* vkResultName(VkResult result);
@@ -36,10 +36,10 @@ public:
 
 [[noreturn]] void throwVulkanError(const char* expression, const char* file, int line, VkResult result);
 
-}  // namespace candela
+}  // namespace candela::vk
 
 #define VK_CHECK(expr)                                                              \
     do {                                                                            \
         const VkResult vkCheckResult_ = (expr);                                     \
-        if (vkCheckResult_ < 0) ::candela::throwVulkanError(#expr, __FILE__, __LINE__, vkCheckResult_); \
+        if (vkCheckResult_ < 0) ::candela::vk::throwVulkanError(#expr, __FILE__, __LINE__, vkCheckResult_); \
     } while (false)

@@ -49,19 +49,19 @@ void expectPrintedCameraReproduces(const fs::path& scene, const std::string& arg
 }
 
 TEST(CameraCli, ThePrintedCameraReproducesTheDefaultFraming) {
-    const fs::path models = scene::test::sharedModels();
+    const fs::path models = assets::test::sharedModels();
     if (models.empty()) GTEST_SKIP() << "../shared/assets not present";
     expectPrintedCameraReproduces(models / "TwoSidedPlane/glTF/TwoSidedPlane.gltf", "");
 }
 
 TEST(CameraCli, ThePrintedCameraReproducesAChosenDirectionAndFieldOfView) {
-    const fs::path models = scene::test::sharedModels();
+    const fs::path models = assets::test::sharedModels();
     if (models.empty()) GTEST_SKIP() << "../shared/assets not present";
     expectPrintedCameraReproduces(models / "Duck/glTF-Binary/Duck.glb", " --camera-orbit -35,62,0 --fov 30");
 }
 
 TEST(CameraCli, ATurntableKeepsOneDistance) {
-    const fs::path models = scene::test::sharedModels();
+    const fs::path models = assets::test::sharedModels();
     if (models.empty()) GTEST_SKIP() << "../shared/assets not present";
     TempDir dir("candela_camera_cli_turntable");
     const Result r = run("render --scene " + (models / "Duck/glTF-Binary/Duck.glb").string() +
@@ -79,7 +79,7 @@ TEST(CameraCli, ATurntableKeepsOneDistance) {
 }
 
 TEST(CameraCli, AGltfCameraIsPrintedByItsIndex) {
-    const fs::path models = scene::test::sharedModels();
+    const fs::path models = assets::test::sharedModels();
     if (models.empty()) GTEST_SKIP() << "../shared/assets not present";
     TempDir dir("candela_camera_cli_gltf");
     const Result r = run("render --scene " + (models / "Cameras/glTF/Cameras.gltf").string() + " --camera 1 --explain --out " +

@@ -47,7 +47,7 @@ protected:
     void png(const std::string& name, uint32_t w, uint32_t h, uint8_t value) {
         std::vector<uint8_t> rgba(size_t(w) * h * 4, value);
         fs::create_directories((dir / name).parent_path());
-        candela::io::writePng(dir / name, w, h, rgba);
+        candela::assets::writePng(dir / name, w, h, rgba);
     }
 
     nlohmann::json json(const std::string& name) const {

@@ -24,7 +24,7 @@
 #include <functional>
 #include <limits>
 
-namespace candela::scene::test {
+namespace candela::assets::test {
 namespace {
 
 // Loads: renders quietly (valid, if unusual). Note: renders quietly too, and with --verbose says
@@ -1059,4 +1059,4 @@ TEST(CatalogueSummary, CountsRows) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::assets::test

@@ -16,8 +16,8 @@ namespace candela::test::render_batch_test {
 namespace {
 
 namespace fs = std::filesystem;
-using scene::test::GltfBuilder;
-using scene::test::writeFile;
+using assets::test::GltfBuilder;
+using assets::test::writeFile;
 using Json = nlohmann::json;
 
 constexpr const char* kSmall = " --width 48 --height 32 --validate --quiet";
@@ -59,7 +59,7 @@ fs::path variantsTriangle(const fs::path& dir) {
 }
 
 TEST(RenderBatch, OneRunRendersWhatOneRunPerSceneRendersWithOnePrecompute) {
-    const fs::path models = scene::test::sharedModels();
+    const fs::path models = assets::test::sharedModels();
     if (models.empty()) GTEST_SKIP() << "shared assets missing";
     TempDir dir("candela_batch");
     // A textured scene, a scene with a sheen (the sheen cube), and one without textures, in an order
@@ -179,10 +179,10 @@ TEST(RenderBatch, VariantsAndSequencesArePerScene) {
 TEST(RenderBatch, NothingOfASceneStaysOnTheDeviceAfterIt) {
     TempDir dir("candela_batch");
     // Six scenes alike, each with a 128 x 128 texture (64 KiB + mips on the device).
-    scene::test::Bytes pixels;
+    assets::test::Bytes pixels;
     for (int i = 0; i < 128 * 128; ++i) pixels.insert(pixels.end(), {uint8_t(i), uint8_t(i >> 7), 200, 255});
-    const scene::test::Bytes png = scene::test::makePng(128, 128, 8, 6, pixels);
-    for (int i = 0; i < 6; ++i) scene::test::texturedTriangle("", png).writeGlb(dir / "lib", "t" + std::to_string(i));
+    const assets::test::Bytes png = assets::test::makePng(128, 128, 8, 6, pixels);
+    for (int i = 0; i < 6; ++i) assets::test::texturedTriangle("", png).writeGlb(dir / "lib", "t" + std::to_string(i));
     const Result r = run("render " + (dir / "lib").string() + " --out " + (dir / "out/{name}.png").string() + " --report " +
                          (dir / "report.json").string() + kSmall);
     ASSERT_EQ(r.exitCode, 0) << r.stderrText;

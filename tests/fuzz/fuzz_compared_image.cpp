@@ -30,7 +30,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                                        ("candela_fuzz_compared_" + std::to_string(::getpid()) + (exr ? ".exr" : ".png"));
     std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(data + 1), std::streamsize(size - 1));
     try {
-        const candela::io::ComparedImage image = candela::io::readComparedImage(file);
+        const candela::reports::ComparedImage image = candela::reports::readComparedImage(file);
         const size_t values = size_t(image.width) * image.height * 3;
         if (image.width == 0 || image.height == 0) violated("an empty image was read");
         if (image.linear.width != image.width || image.linear.height != image.height || image.linear.rgb.size() != values)

@@ -79,11 +79,11 @@ void checkScene(const scene::Scene& s) {
         for (uint32_t joint : skin.joints)
             if (joint >= s.nodes.size()) violated("skin joint out of range");
     }
-    for (const scene::Animation& a : s.animations)
-        for (const scene::AnimationChannel& c : a.channels) {
+    for (const animation::Animation& a : s.animations)
+        for (const animation::AnimationChannel& c : a.channels) {
             if (c.sampler >= a.samplers.size() || c.node >= s.nodes.size()) violated("animation channel out of range");
-            if (!scene::samplerProblem(a.samplers[c.sampler], c.property).empty()) violated("animation sampler invalid");
-            if (c.property == scene::AnimatedProperty::Weights && a.samplers[c.sampler].width != s.nodes[c.node].weights.size())
+            if (!animation::samplerProblem(a.samplers[c.sampler], c.property).empty()) violated("animation sampler invalid");
+            if (c.property == animation::AnimatedProperty::Weights && a.samplers[c.sampler].width != s.nodes[c.node].weights.size())
                 violated("weights channel width differs from its node");
         }
     for (size_t i = 0; i < s.nodes.size(); ++i) {
@@ -124,7 +124,7 @@ void playScene(const scene::Scene& s) {
     if (s.animations.empty() && s.deformations.empty()) return;
     std::vector<uint32_t> all(s.animations.size());
     for (uint32_t i = 0; i < all.size(); ++i) all[i] = i;
-    scene::ScenePose pose(s, all);
+    pose::ScenePose pose(s, all);
     for (double t : {0.0, 0.37, 1e6}) {
         pose.evaluate(t);
         for (const scene::Draw& d : pose.draws())
@@ -135,13 +135,13 @@ void playScene(const scene::Scene& s) {
             const scene::Draw& d = pose.draws()[index];
             if (s.deformations[size_t(d.deformation)].vertexCount > budget) break;
             budget -= s.deformations[size_t(d.deformation)].vertexCount;
-            for (const scene::Vertex& v : scene::deformVertices(s, d, pose.weights(d), d.skin >= 0 ? pose.jointMatrices(uint32_t(d.skin)) : none))
+            for (const scene::Vertex& v : pose::deformVertices(s, d, pose.weights(d), d.skin >= 0 ? pose.jointMatrices(uint32_t(d.skin)) : none))
                 if (!finite(v.position)) violated("deformed vertex not finite");
         }
     }
 }
 
-void checkEnvironment(const scene::Environment& env) {
+void checkEnvironment(const assets::Environment& env) {
     if (env.width == 0 || env.height == 0 || env.width > kMaxEnvWidth || env.height > kMaxEnvHeight)
         violated("environment size out of range");
     if (env.rgb.size() != env.texelCount() * 3) violated("environment texel array does not match its size");
@@ -149,13 +149,13 @@ void checkEnvironment(const scene::Environment& env) {
         if (!std::isfinite(v) || v < 0.0f) violated("environment texel not finite or negative after sanitizing");
 }
 
-void decodeEnvironment(scene::Environment (*decode)(std::span<const uint8_t>, const std::string&,
-                                                    const scene::EnvironmentLoadOptions&),
+void decodeEnvironment(assets::Environment (*decode)(std::span<const uint8_t>, const std::string&,
+                                                    const assets::EnvironmentLoadOptions&),
                        const uint8_t* data, size_t size) {
-    const scene::EnvironmentLoadOptions options{.maxWidth = kMaxEnvWidth, .maxHeight = kMaxEnvHeight};
+    const assets::EnvironmentLoadOptions options{.maxWidth = kMaxEnvWidth, .maxHeight = kMaxEnvHeight};
     try {
-        scene::Environment env = decode(std::span<const uint8_t>(data, size), "fuzz", options);
-        scene::sanitizeEnvironment(env);
+        assets::Environment env = decode(std::span<const uint8_t>(data, size), "fuzz", options);
+        assets::sanitizeEnvironment(env);
         checkEnvironment(env);
     } catch (const UserError&) {
     }
@@ -165,17 +165,17 @@ void decodeEnvironment(scene::Environment (*decode)(std::span<const uint8_t>, co
 
 void fuzzGltf(const uint8_t* data, size_t size, const std::filesystem::path& uriFolder) {
     try {
-        const scene::Scene s = scene::loadGltfFromMemory(std::span<const uint8_t>(data, size), uriFolder / "fuzz.gltf",
-                                                         scene::LoadOptions{.maxImageDimension = kMaxImageDimension});
+        const scene::Scene s = assets::loadGltfFromMemory(std::span<const uint8_t>(data, size), uriFolder / "fuzz.gltf",
+                                                         assets::LoadOptions{.maxImageDimension = kMaxImageDimension});
         checkScene(s);
         playScene(s);
     } catch (const UserError&) {
     }
 }
 
-void fuzzHdr(const uint8_t* data, size_t size) { decodeEnvironment(&scene::decodeHdr, data, size); }
+void fuzzHdr(const uint8_t* data, size_t size) { decodeEnvironment(&assets::decodeHdr, data, size); }
 
-void fuzzExr(const uint8_t* data, size_t size) { decodeEnvironment(&scene::decodeExr, data, size); }
+void fuzzExr(const uint8_t* data, size_t size) { decodeEnvironment(&assets::decodeExr, data, size); }
 
 namespace {
 

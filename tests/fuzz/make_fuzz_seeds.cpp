@@ -24,7 +24,7 @@
 #include <sstream>
 
 using namespace candela::scene;
-using namespace candela::scene::test;
+using namespace candela::assets::test;
 
 namespace {
 

@@ -30,9 +30,9 @@ std::filesystem::path model(const char* path) {
 
 #define LOAD_OR_SKIP(var, path)                                                         \
     if (!std::filesystem::exists(model(path))) GTEST_SKIP() << "shared asset missing"; \
-    const scene::Scene var = scene::loadGltf(model(path))
+    const scene::Scene var = assets::loadGltf(model(path))
 
-RenderSettings settingsFor(const scene::Scene& scene, const scene::ScenePose* pose) {
+RenderSettings settingsFor(const scene::Scene& scene, const pose::ScenePose* pose) {
     RenderSettings settings{.width = kWidth, .height = kHeight, .scene = &scene, .pose = pose};
     // A fixed camera: framing would follow the animation's bounds, which the static scene has not.
     settings.camera.orbit = glm::vec3(30.0f, 70.0f, 5.0f);
@@ -58,7 +58,7 @@ TEST_F(GpuTest, StaticSceneGraphIsTheSameWithOrWithoutAPose) {
         // Box has no animations; BoxAnimated is asked for none: both draw the rest pose, through
         // the static draw buffer, with the very graph (passes, resources, barriers) of no pose.
         const std::vector<std::string> none{"none"};
-        const scene::ScenePose pose(*s, scene::selectAnimations(*s, none));
+        const pose::ScenePose pose(*s, pose::selectAnimations(*s, none));
         Renderer renderer(context());
         const CapturedFrame without = renderer.capture(settingsFor(*s, nullptr));
         const std::string withoutGraph = graphJson(renderer);
@@ -72,7 +72,7 @@ TEST_F(GpuTest, StaticSceneGraphIsTheSameWithOrWithoutAPose) {
 
 TEST_F(GpuTest, PoseReachesTheForwardPassThroughTheGraph) {
     LOAD_OR_SKIP(scene, "BoxAnimated/glTF-Binary/BoxAnimated.glb");
-    scene::ScenePose pose(scene, scene::selectAnimations(scene, {}));
+    pose::ScenePose pose(scene, pose::selectAnimations(scene, {}));
     Renderer renderer(context());
     pose.evaluate(0.0);
     const CapturedFrame start = renderer.capture(settingsFor(scene, &pose));
@@ -102,7 +102,7 @@ TEST_F(GpuTest, PoseReachesTheForwardPassThroughTheGraph) {
 
 TEST_F(GpuTest, PosedDrawsMatchTheStaticPathWithTheSameMatrices) {
     LOAD_OR_SKIP(scene, "BoxAnimated/glTF-Binary/BoxAnimated.glb");
-    scene::ScenePose pose(scene, scene::selectAnimations(scene, {}));
+    pose::ScenePose pose(scene, pose::selectAnimations(scene, {}));
     pose.evaluate(1.875);
     // The same scene with the pose's draws baked in as its rest pose.
     scene::Scene frozen = scene;
@@ -122,7 +122,7 @@ namespace candela::test::animation_test {
 namespace {
 
 // The skin_morph pass's vertices for `work`, read back; the pass split by `limits` when given.
-std::vector<scene::Vertex> deformOnGpu(vk::Context& context, const scene::GpuScene& gpuScene,
+std::vector<scene::Vertex> deformOnGpu(vk::Context& context, const gpu_scene::GpuScene& gpuScene,
                                        const passes::SkinMorphFrame& work,
                                        const std::optional<passes::SkinMorphLimits>& limits = std::nullopt) {
     GraphRunner runner(context);
@@ -158,14 +158,14 @@ std::vector<scene::Vertex> deformOnGpu(vk::Context& context, const scene::GpuSce
 }
 
 // The skin_morph pass's vertices read back, against the double-precision CPU reference
-// (scene::deformVertices) of the same pose: within 1e-5 relative to the model's size.
+// (pose::deformVertices) of the same pose: within 1e-5 relative to the model's size.
 void expectGpuDeformationMatchesReference(vk::Context& context, const char* path, const std::vector<std::string>& animations,
                                           double time) {
     if (!std::filesystem::exists(model(path))) GTEST_SKIP() << "shared asset missing";
-    const scene::Scene scene = scene::loadGltf(model(path));
-    scene::ScenePose pose(scene, scene::selectAnimations(scene, animations));
+    const scene::Scene scene = assets::loadGltf(model(path));
+    pose::ScenePose pose(scene, pose::selectAnimations(scene, animations));
     pose.evaluate(time);
-    const scene::GpuScene gpuScene(context, scene);
+    const gpu_scene::GpuScene gpuScene(context, scene);
     const passes::SkinMorphFrame work = passes::skinMorphFrame(gpuScene, pose);
     ASSERT_FALSE(work.jobs.empty());
     const std::vector<scene::Vertex> gpu = deformOnGpu(context, gpuScene, work);
@@ -177,7 +177,7 @@ void expectGpuDeformationMatchesReference(vk::Context& context, const char* path
         const scene::Draw& draw = pose.draws()[d];
         static const std::vector<glm::dmat4> none;
         const std::vector<scene::Vertex> reference =
-            scene::deformVertices(scene, draw, pose.weights(draw), draw.skin >= 0 ? pose.jointMatrices(uint32_t(draw.skin)) : none);
+            pose::deformVertices(scene, draw, pose.weights(draw), draw.skin >= 0 ? pose.jointMatrices(uint32_t(draw.skin)) : none);
         const scene::Deformation& deformation = scene.deformations[size_t(draw.deformation)];
         for (uint32_t v = 0; v < reference.size(); ++v) {
             const scene::Vertex& g = gpu[size_t(int64_t(deformation.firstVertex) + work.vertexOffset[d] + v)];
@@ -222,10 +222,10 @@ TEST_F(GpuTest, SkinMorphSplitIntoSmallRangesAndTwoDimensionalGridsIsExact) {
          {std::tuple<const char*, std::vector<std::string>, double, uint64_t>{"Fox/glTF-Binary/Fox.glb", {"1"}, 0.37, 16 * 1024},
           {"MorphStressTest/glTF-Binary/MorphStressTest.glb", {"all"}, 0.6, 256 * 1024}}) {
         if (!std::filesystem::exists(model(path))) GTEST_SKIP() << "shared asset missing";
-        const scene::Scene scene = scene::loadGltf(model(path));
-        scene::ScenePose pose(scene, scene::selectAnimations(scene, animations));
+        const scene::Scene scene = assets::loadGltf(model(path));
+        pose::ScenePose pose(scene, pose::selectAnimations(scene, animations));
         pose.evaluate(time);
-        const scene::GpuScene gpuScene(context(), scene);
+        const gpu_scene::GpuScene gpuScene(context(), scene);
         const passes::SkinMorphFrame work = passes::skinMorphFrame(gpuScene, pose);
         const passes::SkinMorphLimits small{.maxStorageBufferRange = range, .storageOffsetAlignment = 256, .maxGroups = {3, 65535}};
         size_t dispatches = 0, grids = 0;
@@ -255,11 +255,11 @@ TEST_F(GpuTest, LightsOnAnimatedNodesMoveWithThePose) {
     scene::Scene scene = box;
     scene.nodes.push_back({.name = "lamp", .source = -1, .parent = -1});
     scene.lights.push_back({.type = scene::LightType::Point, .intensity = 20.0f, .node = int32_t(scene.nodes.size() - 1)});
-    scene::Animation carry{.name = "carry", .duration = 1.0};
+    animation::Animation carry{.name = "carry", .duration = 1.0};
     carry.samplers.push_back({.times = {0, 1}, .values = {-2, 1, 2, 2, 1, 2}, .width = 3});
-    carry.channels.push_back({.sampler = 0, .node = uint32_t(scene.nodes.size() - 1), .property = scene::AnimatedProperty::Translation});
+    carry.channels.push_back({.sampler = 0, .node = uint32_t(scene.nodes.size() - 1), .property = animation::AnimatedProperty::Translation});
     scene.animations.push_back(carry);
-    scene::ScenePose pose(scene, {0});
+    pose::ScenePose pose(scene, {0});
     Renderer renderer(context());
     pose.evaluate(0.0);
     const CapturedFrame left = renderer.capture(settingsFor(scene, &pose));

@@ -41,7 +41,7 @@ protected:
         return frame.rgba8.data() + (size_t(p.y) * frame.width + size_t(p.x)) * 4;
     }
 
-    scene::Scene mGrid = scene::makeSphereGrid();
+    scene::Scene mGrid = assets::makeSphereGrid();
     std::unique_ptr<Renderer> mRenderer;
 };
 
@@ -147,7 +147,7 @@ TEST_F(DebugViewTest, GgxTermsStayInTheirRanges) {
 }
 
 TEST_F(DebugViewTest, IsAGraphVariantWithoutTheSkybox) {
-    const scene::Environment sky = scene::makeProceduralSky();
+    const assets::Environment sky = assets::makeProceduralSky();
     RenderSettings settings{.width = 64, .height = 36, .scene = &mGrid};
     settings.environment = &sky;
     settings.iblQuality.cubeSize = 64;

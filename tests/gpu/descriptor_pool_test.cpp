@@ -63,7 +63,7 @@ TEST_F(GpuTest, FiveThousandMaterialsRender) {
     // Metric: the three base colours the 5,041 materials cycle through (red, green, blue by material
     // index) each dominate a share of the covered pixels: a material set written or bound for the
     // wrong material would shift the shares; a failed pool, a throw.
-    const scene::Scene scene = scene::makeSphereGrid(71, true);
+    const scene::Scene scene = assets::makeSphereGrid(71, true);
     ASSERT_EQ(scene.materials.size(), 71u * 71u);
     Renderer renderer(context());
     RenderSettings settings{.width = 320, .height = 320, .scene = &scene};

@@ -118,7 +118,7 @@ TEST(VkCheck, ErrorNamesCallFileLineAndResult) {
     try {
         VK_CHECK(VK_ERROR_OUT_OF_DEVICE_MEMORY);
         FAIL() << "expected a throw";
-    } catch (const VulkanError& e) {
+    } catch (const vk::VulkanError& e) {
         const std::string text = e.what();
         EXPECT_NE(text.find("VK_ERROR_OUT_OF_DEVICE_MEMORY failed at"), std::string::npos) << text;
         EXPECT_NE(text.find("device_layer_test.cpp:"), std::string::npos) << text;

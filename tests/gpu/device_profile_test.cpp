@@ -48,8 +48,8 @@ TEST_F(MinimumProfileTest, AProgramOverAPerStageLimitIsRefusedByName) {
 TEST_F(MinimumProfileTest, AnEnvironmentWiderThanTheDeviceAllowsIsHalvedToFit) {
     // Metric: the IBL settings the maps were computed with name the limit, and the frame is finite
     // and lit by the environment (constant 0.5: the sphere is grey, not black).
-    const scene::Environment env = ibl::reference::makeEnvironment(8192, 32, [](const glm::dvec3&) { return glm::dvec3(0.5); });
-    const scene::Scene scene = scene::makeSphereGrid(1);
+    const assets::Environment env = reports::reference::makeEnvironment(8192, 32, [](const glm::dvec3&) { return glm::dvec3(0.5); });
+    const scene::Scene scene = assets::makeSphereGrid(1);
     Renderer renderer(context());
     const CapturedFrame frame =
         renderer.capture({.width = 32, .height = 32, .floatOutput = true, .scene = &scene, .environment = &env});

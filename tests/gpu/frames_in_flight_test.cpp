@@ -62,8 +62,8 @@ protected:
         return index && renderer.lastGraph().compiled().passes[*index].cullReason == graph::CullReason::None;
     }
 
-    scene::Scene mScene = scene::makeSphereGrid();
-    scene::Environment mSky = scene::makeProceduralSky();
+    scene::Scene mScene = assets::makeSphereGrid();
+    assets::Environment mSky = assets::makeProceduralSky();
     RenderSettings mSettings{.width = kWidth, .height = kHeight};
 };
 
@@ -99,7 +99,7 @@ TEST_F(FramesInFlightTest, OnlyTheFrameComputingTheMapsIsWaitedForAndTheOthersRe
         // The maps are current: imported, never computed again (nor the sheen LUT).
         EXPECT_FALSE(renderer.lastGraph().findPass("ibl_prefilter").has_value()) << "frame " << i;
         EXPECT_FALSE(renderer.lastGraph().findPass("ibl_sheen_lut").has_value()) << "frame " << i;
-        EXPECT_TRUE(renderer.lastGraph().findResource(ibl::IblMaps::kSpecularName).has_value());
+        EXPECT_TRUE(renderer.lastGraph().findResource(ibl_maps::IblMaps::kSpecularName).has_value());
     }
     EXPECT_EQ(renderer.completionWaits(), 1u) << "a frame lit by the maps was waited for";
     const vk::FrameRingStats& after = renderer.frameRingStats();
@@ -121,7 +121,7 @@ TEST_F(FramesInFlightTest, ANewEnvironmentIsComputedOnceAndWaitedForOnce) {
     for (int i = 0; i < 3; ++i) target.frame(renderer, mSettings);
     EXPECT_EQ(renderer.completionWaits(), 1u);
     // Another sun: the next frame runs the precompute (and is waited for), the ones after do not.
-    const scene::Environment other = scene::makeProceduralSky({.sunAzimuthDegrees = 200.0f});
+    const assets::Environment other = assets::makeProceduralSky({.sunAzimuthDegrees = 200.0f});
     mSettings.environment = &other;
     target.frame(renderer, mSettings);
     EXPECT_TRUE(ran(renderer, "ibl_prefilter"));

@@ -11,7 +11,7 @@ namespace candela::test::framing_test {
 namespace {
 
 namespace fs = std::filesystem;
-using scene::test::GltfBuilder;
+using assets::test::GltfBuilder;
 
 constexpr uint32_t kWidth = 320, kHeight = 180;
 
@@ -65,13 +65,13 @@ scene::Scene boxScene(const fs::path& dir, glm::vec3 size) {
     const int mesh = b.addMesh({{"POSITION", b.addFloats(positions, "VEC3", 3)}, {"NORMAL", b.addFloats(normals, "VEC3", 3)}},
                                b.addIndices(indices));
     b.setScene({b.addNode({{"mesh", mesh}, {"scale", {size.x, size.y, size.z}}})});
-    return scene::loadGltf(b.writeGlb(dir, "box"));
+    return assets::loadGltf(b.writeGlb(dir, "box"));
 }
 
 TEST_F(GpuTest, AFlatModelFramedByDefaultIsNotSeenEdgeOn) {
-    const fs::path models = scene::test::sharedModels();
+    const fs::path models = assets::test::sharedModels();
     if (models.empty()) GTEST_SKIP() << "../shared/assets not present";
-    const scene::Scene plane = scene::loadGltf(models / "TwoSidedPlane/glTF/TwoSidedPlane.gltf");
+    const scene::Scene plane = assets::loadGltf(models / "TwoSidedPlane/glTF/TwoSidedPlane.gltf");
     const Coverage c = render(context(), plane);
     // The 2 × 2 m plane in the ground, from 15° above the horizon: a fifth of the image (measured:
     // 19.7%), its near edge across the width.

@@ -149,7 +149,7 @@ void writeDiff(const std::filesystem::path& path, const std::vector<uint8_t>& a,
         const uint8_t v = static_cast<uint8_t>(std::min(255, d * 16));
         diff[i] = v, diff[i + 1] = d > kPixelThreshold ? 0 : v, diff[i + 2] = d > kPixelThreshold ? 0 : v, diff[i + 3] = 255;
     }
-    io::writePng(path, kWidth, kHeight, diff);
+    assets::writePng(path, kWidth, kHeight, diff);
 }
 
 // Pixels of two kWidth × kHeight RGBA8 images that differ by more than kPixelThreshold levels in
@@ -181,22 +181,22 @@ std::optional<std::vector<uint8_t>> render(vk::Context& context, const GoldenCas
     if (*c.model) {
         const std::filesystem::path path = ::candela::test::sharedAssets() / "models" / c.model;
         if (!std::filesystem::exists(path)) return std::nullopt;
-        scene = scene::loadGltf(path);
+        scene = assets::loadGltf(path);
         if (*c.variant) scene::selectVariant(scene, scene::variantIndex(scene, c.variant));
     } else {
-        scene = scene::makeSphereGrid();
+        scene = assets::makeSphereGrid();
     }
-    std::optional<scene::Environment> environment;
+    std::optional<assets::Environment> environment;
     if (std::string(c.environment) == "sky") {
-        environment = scene::makeProceduralSky();
+        environment = assets::makeProceduralSky();
     } else if (*c.environment) {
         const std::filesystem::path path = ::candela::test::sharedAssets() / "environments" / c.environment;
         if (!std::filesystem::exists(path)) return std::nullopt;
-        environment = scene::loadEnvironment(path);
+        environment = assets::loadEnvironment(path);
     }
     std::vector<std::string> animations;
     if (*c.animation) animations.emplace_back(c.animation);
-    scene::ScenePose pose(scene, scene::selectAnimations(scene, animations));
+    pose::ScenePose pose(scene, pose::selectAnimations(scene, animations));
     pose.evaluate(c.time);
     RenderSettings settings{.width = kWidth, .height = kHeight, .scene = &scene, .pose = &pose};
     settings.camera.orbit = c.orbit;
@@ -229,7 +229,7 @@ TEST_P(GoldenTest, MatchesApprovedImage) {
     int w = 0, h = 0, channels = 0;
     stbi_uc* expected = stbi_load(golden.c_str(), &w, &h, &channels, 4);
     if (!expected) {
-        io::writePng(actual, kWidth, kHeight, image);
+        assets::writePng(actual, kWidth, kHeight, image);
         FAIL() << "no golden " << golden << "; look at " << actual << " and approve it with tools/approve-goldens.sh";
     }
     ASSERT_EQ(w, int(kWidth));
@@ -237,7 +237,7 @@ TEST_P(GoldenTest, MatchesApprovedImage) {
     const auto [differing, maxDifference] = compare(image.data(), expected);
     const double share = double(differing) / (kWidth * kHeight);
     const bool pass = share <= kMaxDifferingShare && maxDifference <= kMaxDifference;
-    if (!pass || keepRenders()) io::writePng(actual, kWidth, kHeight, image);
+    if (!pass || keepRenders()) assets::writePng(actual, kWidth, kHeight, image);
     if (!pass) {
         writeDiff(outDir / (std::string(c.name) + ".diff.png"), image, expected);
     }
@@ -288,7 +288,7 @@ TEST_P(GoldenTest, ShadingPathsAgree) {
     if (failed || keepRenders()) {
         const std::filesystem::path outDir = ::candela::test::goldenOut();
         std::filesystem::create_directories(outDir);
-        io::writePng(outDir / (std::string(c.name) + ".visibility.png"), kWidth, kHeight, *visibility);
+        assets::writePng(outDir / (std::string(c.name) + ".visibility.png"), kWidth, kHeight, *visibility);
         if (failed) writeDiff(outDir / (std::string(c.name) + ".paths.diff.png"), *visibility, forward->data());
     }
 }
@@ -320,7 +320,7 @@ TEST_F(GpuTest, MeshoptRendersLikeThePlainFile) {
     if (!std::filesystem::exists(models / "DamagedHelmet/glTF-Binary/DamagedHelmet.glb")) GTEST_SKIP() << "../shared/assets not present";
     TempDir dir;
     const std::filesystem::path packed = dir.path() / "helmet.glb";
-    scene::test::gltfpack(models / "DamagedHelmet/glTF-Binary/DamagedHelmet.glb", packed);
+    assets::test::gltfpack(models / "DamagedHelmet/glTF-Binary/DamagedHelmet.glb", packed);
     ASSERT_FALSE(HasFailure());
     const GoldenCase plain{"damaged_helmet", "DamagedHelmet/glTF-Binary/DamagedHelmet.glb", {-30.0f, 80.0f, 0.0f}};
     const std::string packedPath = packed.string();

@@ -12,7 +12,7 @@
 namespace candela::test::ibl_bright_texels_test {
 namespace {
 
-namespace ref = ibl::reference;
+namespace ref = reports::reference;
 
 class IblBrightTexelsTest : public GpuTest {};
 
@@ -26,19 +26,19 @@ const ibl::CachedImage* findImage(const std::vector<ibl::CachedImage>& images, c
 
 // A 256×128 sky of luminance ≈ 0.5 with a one-texel sun of luminance ≈ 2·10⁴ (the procedural sky's
 // ratio: its 0.5° sun is ~28,000 over a sky of ~1), away from the cube's face seams.
-scene::Environment sunEnvironment() {
-    scene::Environment env = constantEnvironment(256, 128, glm::vec3(0.3f, 0.5f, 0.8f));
+assets::Environment sunEnvironment() {
+    assets::Environment env = constantEnvironment(256, 128, glm::vec3(0.3f, 0.5f, 0.8f));
     float* sun = env.texel(77, 40);
     sun[0] = 2.2e4f, sun[1] = 2.0e4f, sun[2] = 1.7e4f;
     return env;
 }
 
 struct MapErrors {
-    std::vector<ibl::LevelErrors> specular;
-    ibl::ErrorStats irradiance;
+    std::vector<reports::LevelErrors> specular;
+    reports::ErrorStats irradiance;
 };
 
-MapErrors computeErrors(vk::Context& context, const scene::Environment& env, uint32_t brightTexels,
+MapErrors computeErrors(vk::Context& context, const assets::Environment& env, uint32_t brightTexels,
                         ibl::IrradianceMode irradiance) {
     const scene::Scene scene = sphereScene(kProbeSphere, 16, 8);
     Renderer renderer(context);
@@ -54,10 +54,10 @@ MapErrors computeErrors(vk::Context& context, const scene::Environment& env, uin
     EXPECT_NE(specular, nullptr);
     EXPECT_NE(irr, nullptr);
     if (!specular || !irr) return errors;
-    const scene::Environment reduced = ibl::referenceEnvironment(env);
-    ibl::ReferenceCache cache;
-    errors.specular = ibl::specularErrors(*specular, env, reduced, 256, cache);
-    errors.irradiance = ibl::irradianceErrors(*irr, reduced, 256, cache);
+    const assets::Environment reduced = reports::referenceEnvironment(env);
+    reports::ReferenceCache cache;
+    errors.specular = reports::specularErrors(*specular, env, reduced, 256, cache);
+    errors.irradiance = reports::irradianceErrors(*irr, reduced, 256, cache);
     return errors;
 }
 
@@ -70,7 +70,7 @@ MapErrors computeErrors(vk::Context& context, const scene::Environment& env, uin
 // too, so the split must not change it: mean relative errors within 5e-3 of each other (both 0.14:
 // the order-2 truncation of a point source).
 TEST_F(IblBrightTexelsTest, ASummedSunMatchesTheReferenceWhereASampledOneDoesNot) {
-    const scene::Environment env = sunEnvironment();
+    const assets::Environment env = sunEnvironment();
     const MapErrors summed = computeErrors(context(), env, 256, ibl::IrradianceMode::Sh9);
     const MapErrors sampled = computeErrors(context(), env, 0, ibl::IrradianceMode::Sh9);
     ASSERT_EQ(summed.specular.size(), sampled.specular.size());

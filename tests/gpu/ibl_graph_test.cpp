@@ -1,5 +1,5 @@
 // What the frame graph leaves out, asserted from the compiled graph and from the maps' record of
-// the frame (ibl::IblFrame), never from timings or the --explain words: no environment → no
+// the frame (ibl_maps::IblFrame), never from timings or the --explain words: no environment → no
 // precompute, no skybox, no IBL shading; an unchanged environment → no precompute; changing only
 // how maps are read (rotation, intensity) → no precompute; changing the quality → precompute
 // without the LUT when the LUT's settings did not change; the on-disk cache replaces the
@@ -48,7 +48,7 @@ bool explains(const Renderer& renderer, const std::string& fragment) {
 
 class IblGraphTest : public GpuTest {
 protected:
-    RenderSettings settings(const scene::Environment* environment) {
+    RenderSettings settings(const assets::Environment* environment) {
         RenderSettings s{.width = 48, .height = 32, .scene = &mScene};
         s.msaa = 1;  // the variant names below are the single-sample ones, on any device
         s.environment = environment;
@@ -59,8 +59,8 @@ protected:
         s.iblQuality.prefilterSamples = 8;
         return s;
     }
-    scene::Scene mScene = scene::makeSphereGrid();
-    scene::Environment mSky = scene::makeProceduralSky({.width = 64, .height = 32});
+    scene::Scene mScene = assets::makeSphereGrid();
+    assets::Environment mSky = assets::makeProceduralSky({.width = 64, .height = 32});
 };
 
 TEST_F(IblGraphTest, NoEnvironmentRunsNoPrecomputeNoSkyboxNoIblShading) {
@@ -70,7 +70,7 @@ TEST_F(IblGraphTest, NoEnvironmentRunsNoPrecomputeNoSkyboxNoIblShading) {
     EXPECT_FALSE(anyIbl(passes));
     EXPECT_FALSE(has(passes, "skybox"));
     EXPECT_FALSE(renderer.lastGraph().findPass("skybox").has_value()) << "not even declared";
-    EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl::IblFrame::Maps::None);
+    EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl_maps::IblFrame::Maps::None);
     EXPECT_TRUE(explains(renderer, "left out: image-based lighting (no environment)"));
     EXPECT_EQ(variantDraws(renderer, "pbr"), 49u) << "the forward variant without IBL work";
 }
@@ -84,8 +84,8 @@ TEST_F(IblGraphTest, PrecomputeRunsOnceThenOnlyWhenEnvironmentOrQualityChanges) 
         EXPECT_TRUE(has(passes, name)) << name;
     EXPECT_FALSE(has(passes, "ibl_irradiance_sh"));
     EXPECT_EQ(renderer.lastPlan()->sky, SkyPlacement::Tonemap);
-    const ibl::IblFrame first = renderer.iblMaps().lastFrame();
-    EXPECT_EQ(first.maps, ibl::IblFrame::Maps::Computed);
+    const ibl_maps::IblFrame first = renderer.iblMaps().lastFrame();
+    EXPECT_EQ(first.maps, ibl_maps::IblFrame::Maps::Computed);
     EXPECT_TRUE(first.lutComputed);
     EXPECT_EQ(first.irradiance, ibl::IrradianceMode::Cube);
     EXPECT_FALSE(first.sheen) << "no material has a sheen";
@@ -98,7 +98,7 @@ TEST_F(IblGraphTest, PrecomputeRunsOnceThenOnlyWhenEnvironmentOrQualityChanges) 
     EXPECT_FALSE(anyIbl(passes));
     for (const graph::PassDecl& pass : renderer.lastGraph().declaration().passes)
         EXPECT_NE(pass.name.rfind("ibl_", 0), 0u) << pass.name;
-    EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl::IblFrame::Maps::Kept);
+    EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl_maps::IblFrame::Maps::Kept);
     EXPECT_FALSE(renderer.iblMaps().lastFrame().lutComputed);
 
     // Reading the maps differently changes no map.
@@ -114,11 +114,11 @@ TEST_F(IblGraphTest, PrecomputeRunsOnceThenOnlyWhenEnvironmentOrQualityChanges) 
     passes = ranPasses(renderer);
     EXPECT_TRUE(has(passes, "ibl_prefilter"));
     EXPECT_FALSE(has(passes, "ibl_brdf_lut"));
-    EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl::IblFrame::Maps::Computed);
+    EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl_maps::IblFrame::Maps::Computed);
     EXPECT_FALSE(renderer.iblMaps().lastFrame().lutComputed);
 
     // Another environment (new content): precompute, still no LUT.
-    scene::Environment other = scene::makeProceduralSky({.width = 64, .height = 32, .sunAzimuthDegrees = 120.0f});
+    assets::Environment other = assets::makeProceduralSky({.width = 64, .height = 32, .sunAzimuthDegrees = 120.0f});
     s.environment = &other;
     renderer.capture(s);
     passes = ranPasses(renderer);
@@ -171,8 +171,8 @@ TEST_F(IblGraphTest, CacheReplacesThePrecomputeOfALaterRunAndACorruptFileIsRecom
         Renderer renderer(context());
         const std::vector<uint8_t> cached = renderer.capture(s).rgba8;
         EXPECT_FALSE(anyIbl(ranPasses(renderer))) << "maps loaded from the cache";
-        EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl::IblFrame::Maps::FromCache);
-        EXPECT_EQ(renderer.iblMaps().source(), ibl::MapsSource::Cache);
+        EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl_maps::IblFrame::Maps::FromCache);
+        EXPECT_EQ(renderer.iblMaps().source(), ibl_maps::MapsSource::Cache);
         EXPECT_TRUE(cached == computed) << "the cached maps render exactly like the computed ones";
         file = renderer.iblMaps().cacheFile();
     }
@@ -186,11 +186,11 @@ TEST_F(IblGraphTest, CacheReplacesThePrecomputeOfALaterRunAndACorruptFileIsRecom
         Renderer renderer(context());
         const std::vector<uint8_t> recomputed = renderer.capture(s).rgba8;
         EXPECT_TRUE(has(ranPasses(renderer), "ibl_prefilter"));
-        EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl::IblFrame::Maps::Computed);
+        EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl_maps::IblFrame::Maps::Computed);
         EXPECT_TRUE(explains(renderer, "ibl cache: ")) << "why the file was not used";
         EXPECT_TRUE(recomputed == computed);
         std::string reason;
-        EXPECT_TRUE(ibl::readCacheFile(file, {scene::contentHash(mSky), s.iblQuality.canonical()}, &reason).has_value())
+        EXPECT_TRUE(ibl::readCacheFile(file, {assets::contentHash(mSky), s.iblQuality.canonical()}, &reason).has_value())
             << reason;
     }
     std::filesystem::remove_all(dir);
@@ -200,7 +200,7 @@ TEST_F(IblGraphTest, MapsReplacedBetweenFramesAreTheOnesBound) {
     // The forward and skybox passes resolve the maps through the graph each frame, so replacing
     // the environment and the maps' size between frames must give exactly the image of a renderer
     // that only ever saw the new ones — in the frame that computes them and in the next.
-    const scene::Environment dusk = scene::makeProceduralSky(
+    const assets::Environment dusk = assets::makeProceduralSky(
         {.width = 64, .height = 32, .sunElevationDegrees = 4.0f, .sunAzimuthDegrees = 200.0f,
          .zenithRadiance = {0.1f, 0.1f, 0.3f}});
     RenderSettings first = settings(&mSky);

@@ -34,7 +34,7 @@
 namespace candela::test::ibl_numerical_test {
 namespace {
 
-namespace ref = ibl::reference;
+namespace ref = reports::reference;
 using ibl::CachedImage;
 
 constexpr double kPi = std::numbers::pi;
@@ -128,7 +128,7 @@ class IblRotationTest : public GpuTest {};
 // Metric: max over interior pixels and RGB of |x − 1|. Tolerance: 0.02. Measured on lavapipe:
 // 4.9e-4 on every sphere (one step of the RGBA16F frame just below 1).
 TEST_F(IblFurnaceTest, WhiteSpheresInAUniformEnvironmentReflectOneWithMultiscatter) {
-    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
+    const assets::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
     const std::vector<Sphere> spheres = furnaceSpheres();
     const scene::Scene scene = sphereScene(spheres, 64, 32);
     Renderer renderer(context());
@@ -184,7 +184,7 @@ TEST_F(IblFurnaceTest, WhiteSpheresInAUniformEnvironmentReflectOneWithMultiscatt
 //    specular lobe loses is not returned, but the diffuse weight is 1 − E_ss, not 1 − E). Metric:
 //    max |x − 1| over the same pixels (no μ exclusion). Tolerance: 0.02 (converged-LUT run only).
 TEST_F(IblFurnaceTest, WithoutMultiscatterMetalsReflectTheirDirectionalAlbedo) {
-    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
+    const assets::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
     const std::vector<Sphere> spheres = furnaceSpheres();
     // Finer tessellation: the interpolated normals follow the analytic sphere more closely.
     const scene::Scene scene = sphereScene(spheres, 128, 64);
@@ -290,7 +290,7 @@ TEST_F(IblFurnaceTest, WithoutMultiscatterMetalsReflectTheirDirectionalAlbedo) {
 //   SH: |sh[0]·Y00 − c| ≤ 1e-3 (relative to c per channel), |sh[i≥1]| < 1e-3.
 TEST_F(IblMapsTest, ConstantEnvironmentGivesConstantMaps) {
     const glm::dvec3 c(0.7, 0.5, 0.3);
-    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(c));
+    const assets::Environment env = constantEnvironment(64, 32, glm::vec3(c));
     const scene::Scene scene = sphereScene(kProbeSphere, 32, 16);
     Renderer renderer(context());
     RenderSettings settings{.width = 32, .height = 32, .floatOutput = true, .scene = &scene, .defaultLights = false,
@@ -351,7 +351,7 @@ TEST_F(IblMapsTest, ConstantEnvironmentGivesConstantMaps) {
 
 // The split-sum LUT, read back after a frame that computed it; `format`: the format the device
 // stores it in (DeviceChoices::brdfLut).
-std::vector<glm::vec2> computeLut(Renderer& renderer, const scene::Scene& scene, const scene::Environment& env,
+std::vector<glm::vec2> computeLut(Renderer& renderer, const scene::Scene& scene, const assets::Environment& env,
                                   uint32_t size, uint32_t samples, VkFormat format) {
     ibl::IblQuality quality = smallQuality();
     quality.cubeSize = 16;  // the LUT does not depend on the environment: keep the rest tiny
@@ -423,7 +423,7 @@ void compareLutWithReference(const std::vector<glm::vec2>& ab, uint32_t size, ui
 //     0.0048). A wrong visibility term, Fresnel weight, sample mapping or swapped axis moves A or B
 //     by more than 0.05 somewhere, so both tolerances catch real bugs.
 TEST_F(IblLutTest, LutIsBoundedAndMatchesTheReferenceSplitSum) {
-    const scene::Environment env = constantEnvironment(16, 8, glm::vec3(1.0f));
+    const assets::Environment env = constantEnvironment(16, 8, glm::vec3(1.0f));
     const scene::Scene scene = sphereScene(kProbeSphere, 32, 16);
     Renderer renderer(context());
     const ibl::IblQuality defaults;
@@ -482,12 +482,12 @@ TEST_F(IblShTest, CosineLobesProjectToTheirAnalyticCoefficients) {
         Case{"plusZ", {0, 0, 1}, {L00, 0, L1, 0, 0, 0, L2, 0, 0}},
         Case{"plusY", {0, 1, 0}, {L00, L1, 0, 0, 0, 0, -0.5 * L2, 0, -std::sqrt(3.0) / 2.0 * L2}},
     };
-    std::list<scene::Environment> environments;  // distinct addresses: the renderer re-hashes on a new pointer
+    std::list<assets::Environment> environments;  // distinct addresses: the renderer re-hashes on a new pointer
     const scene::Scene scene = sphereScene(kProbeSphere, 32, 16);
     Renderer renderer(context());
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
-        const scene::Environment& env = environments.emplace_back(ref::makeEnvironment(
+        const assets::Environment& env = environments.emplace_back(ref::makeEnvironment(
             512, 256, [&](const glm::dvec3& d) { return glm::dvec3(std::max(glm::dot(d, c.axis), 0.0)); }));
         ASSERT_EQ(frameProblem(renderer.capture({.width = 16, .height = 16, .floatOutput = true, .scene = &scene,
                                                   .defaultLights = false, .environment = &env,
@@ -582,7 +582,7 @@ MapStats checkMaps(const std::vector<CachedImage>& maps) {
 //       and each mip of it averages rounded texels: abs 3e-3 there (measured 2.2e-3 on values up
 //       to 1.5, 4.5 half-float ulps).
 TEST_F(IblExtremeTest, ExtremeEnvironmentsGiveFiniteBoundedMapsAndFrames) {
-    std::list<scene::Environment> environments;  // distinct addresses: the renderer re-hashes on a new pointer
+    std::list<assets::Environment> environments;  // distinct addresses: the renderer re-hashes on a new pointer
     const std::vector<Sphere> spheres = {{glm::vec3(-2.5f, 0.0f, 0.0f), 1.0f, 1.0f, 0.0f},
                                          {glm::vec3(0.0f), 1.0f, 1.0f, 0.5f},
                                          {glm::vec3(2.5f, 0.0f, 0.0f), 1.0f, 0.0f, 0.3f}};
@@ -590,7 +590,7 @@ TEST_F(IblExtremeTest, ExtremeEnvironmentsGiveFiniteBoundedMapsAndFrames) {
     Renderer renderer(context());
 
     // Renders (precompute included), reads the maps back and checks them and the frame.
-    auto run = [&](const scene::Environment& env, const ibl::IblQuality& quality, const std::string& name) {
+    auto run = [&](const assets::Environment& env, const ibl::IblQuality& quality, const std::string& name) {
         SCOPED_TRACE(name);
         RenderSettings settings{.width = 64, .height = 36, .floatOutput = true, .scene = &scene,
                                 .defaultLights = false, .environment = &env, .iblQuality = quality};
@@ -613,7 +613,7 @@ TEST_F(IblExtremeTest, ExtremeEnvironmentsGiveFiniteBoundedMapsAndFrames) {
 
     // (a) One texel of 1e5 in a black 256×128 map.
     {
-        scene::Environment& env = environments.emplace_back(constantEnvironment(256, 128, glm::vec3(0.0f)));
+        assets::Environment& env = environments.emplace_back(constantEnvironment(256, 128, glm::vec3(0.0f)));
         const uint32_t sx = 100, sy = 40;
         float* t = env.texel(sx, sy);
         t[0] = t[1] = t[2] = 1e5f;
@@ -659,7 +659,7 @@ TEST_F(IblExtremeTest, ExtremeEnvironmentsGiveFiniteBoundedMapsAndFrames) {
     }
     // (b) Texels of 1e6, above the half-float maximum.
     {
-        scene::Environment& env = environments.emplace_back(constantEnvironment(64, 32, glm::vec3(1.0f)));
+        assets::Environment& env = environments.emplace_back(constantEnvironment(64, 32, glm::vec3(1.0f)));
         for (uint32_t x : {10u, 11u})
             for (uint32_t y : {12u, 13u}) {
                 float* t = env.texel(x, y);
@@ -671,7 +671,7 @@ TEST_F(IblExtremeTest, ExtremeEnvironmentsGiveFiniteBoundedMapsAndFrames) {
     // (c) A 1×1 map: a constant environment.
     {
         const glm::dvec3 c(2.0, 1.0, 0.5);
-        const scene::Environment& env = environments.emplace_back(constantEnvironment(1, 1, glm::vec3(c)));
+        const assets::Environment& env = environments.emplace_back(constantEnvironment(1, 1, glm::vec3(c)));
         const std::vector<CachedImage> maps = run(env, sh, "oneByOne.sh9");
         double worst = 0.0;
         forEachHalfTexel(*findImage(maps, "specular"), [&](const TexelRef&, const glm::vec4& v) {
@@ -689,7 +689,7 @@ TEST_F(IblExtremeTest, ExtremeEnvironmentsGiveFiniteBoundedMapsAndFrames) {
     // (d) 8192×4096, smooth (red 0.5 + 0.25·y + 0.2·x ≥ 0.18).
     {
         const auto start = std::chrono::steady_clock::now();
-        scene::Environment& env = environments.emplace_back(ref::makeEnvironment(
+        assets::Environment& env = environments.emplace_back(ref::makeEnvironment(
             8192, 4096, [](const glm::dvec3& d) { return glm::dvec3(0.5 + 0.25 * d.y + 0.2 * d.x, 0.5, 0.25); }));
         measured("huge.makeEnvironmentSeconds",
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -705,7 +705,7 @@ TEST_F(IblExtremeTest, ExtremeEnvironmentsGiveFiniteBoundedMapsAndFrames) {
     }
     // (e) Non-power-of-two 333×97.
     {
-        const scene::Environment& env =
+        const assets::Environment& env =
             environments.emplace_back(ref::makeEnvironment(333, 97, [](const glm::dvec3& d) {
                 return glm::dvec3(1.0 + 0.5 * d.x + 0.3 * d.z * d.y, 0.5 + 0.4 * d.y, 1.0);
             }));
@@ -740,11 +740,11 @@ TEST_F(IblExtremeTest, ExtremeEnvironmentsGiveFiniteBoundedMapsAndFrames) {
 // Also checked: coverage identical; the rotation changes the mirror render by > 0.1 somewhere.
 TEST_F(IblRotationTest, RotatedLookupEqualsTheMapRotatedOnTheCpu) {
     constexpr uint32_t W = 128, H = 64;
-    const scene::Environment original = ref::makeEnvironment(W, H, [](const glm::dvec3& d) {
+    const assets::Environment original = ref::makeEnvironment(W, H, [](const glm::dvec3& d) {
         const double bright = std::max(d.x, 0.0);
         return glm::dvec3(4.0 * bright, 2.0 * bright * (1.0 + d.z), 0.5 * bright * (1.0 - d.z) + 0.05);
     });
-    scene::Environment turned = original;
+    assets::Environment turned = original;
     for (uint32_t y = 0; y < H; ++y)
         for (uint32_t x = 0; x < W; ++x) {
             const float* from = original.texel((x + W - W / 4) % W, y);

@@ -39,7 +39,7 @@ ImageDifference difference(const CapturedFrame& a, const CapturedFrame& b) {
 TEST_F(GpuTest, CulledDrawsChangeNoPixel) {
     // Close to the grid's centre most spheres are outside the view: with culling they are not
     // submitted, and the image is the same to the bit.
-    const scene::Scene grid = scene::makeSphereGrid();
+    const scene::Scene grid = assets::makeSphereGrid();
     Renderer renderer(context());
     RenderSettings settings{.width = 320, .height = 180, .scene = &grid};
     settings.camera.orbit = glm::vec3(20.0f, 80.0f, 6.0f);
@@ -63,8 +63,8 @@ TEST_F(GpuTest, DefaultLevelOfDetailStaysWithinItsImageErrorOnTheDefaultScene) {
     // the target was set on — the default before the framing fitted the grid's box to the image
     // (issue 31): from 33.1 m, the grid's bounding sphere in the 45° field of view × 1.05 — where
     // every sphere takes a coarser level.
-    const scene::Scene grid = scene::makeSphereGrid();
-    const scene::Environment sky = scene::makeProceduralSky();
+    const scene::Scene grid = assets::makeSphereGrid();
+    const assets::Environment sky = assets::makeProceduralSky();
     Renderer renderer(context());
     for (const bool framed : {true, false}) {
         SCOPED_TRACE(framed ? "default view" : "from 33.1 m");

@@ -32,7 +32,7 @@ TEST_F(GpuTest, ScenesWithoutLayersKeepTheCoreProgramAndVariants) {
     // The sphere grid and DamagedHelmet at one sample (the variant names are the single-sample
     // ones on any device): the variant lines as they were before the layers existed,
     // and the layered program left out.
-    const scene::Scene grid = scene::makeSphereGrid();
+    const scene::Scene grid = assets::makeSphereGrid();
     Renderer renderer(context());
     renderer.capture({.width = 64, .height = 36, .scene = &grid, .msaa = 1});
     EXPECT_EQ(lastShading(renderer).draws, 49u);
@@ -42,7 +42,7 @@ TEST_F(GpuTest, ScenesWithoutLayersKeepTheCoreProgramAndVariants) {
     const std::filesystem::path helmetPath =
         ::candela::test::sharedAssets() / "models/DamagedHelmet/glTF-Binary/DamagedHelmet.glb";
     if (!std::filesystem::exists(helmetPath)) GTEST_SKIP() << "shared asset missing: the helmet half is not run";
-    const scene::Scene helmet = scene::loadGltf(helmetPath);
+    const scene::Scene helmet = assets::loadGltf(helmetPath);
     renderer.capture({.width = 64, .height = 36, .scene = &helmet, .msaa = 1});
     EXPECT_EQ(lastShading(renderer).draws, 1u);
     EXPECT_EQ(lastShading(renderer).variants, (std::map<std::string, uint32_t>{{"pbr+normal-map", 1}}));
@@ -54,7 +54,7 @@ TEST_F(GpuTest, LayeredProgramAtTheCoreValuesDrawsTheCoreImage) {
     // once plain and once with an IOR a hair from 1.5, which puts every material in the layered
     // program. Metric: max absolute difference per 8-bit channel ≤ 1 level (the two programs
     // round the same formulas differently).
-    scene::Scene core = scene::makeSphereGrid();
+    scene::Scene core = assets::makeSphereGrid();
     for (scene::Material& m : core.materials) m.metallicFactor = m.metallicFactor < 0.5f ? 0.0f : 1.0f;
     scene::Scene layered = core;
     for (scene::Material& m : layered.materials) m.ior = 1.5000001f;
@@ -79,7 +79,7 @@ TEST_F(GpuTest, LayeredProgramAtTheCoreValuesDrawsTheCoreImage) {
 // Metric: over interior pixels (no uncovered pixel within 2 px) and RGB, max |x − 1| and max x − 1.
 // Tolerances: 0.02 (the bound), and never above 1 by more than one RGBA16F step (1/1024).
 TEST_F(GpuTest, ClearcoatKeepsTheWhiteFurnace) {
-    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
+    const assets::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
     const std::vector<Sphere> spheres = furnaceSpheres();
     scene::Scene scene = sphereScene(spheres, 64, 32);
     for (size_t i = 0; i < spheres.size(); ++i) {
@@ -109,7 +109,7 @@ TEST_F(GpuTest, ClearcoatKeepsTheWhiteFurnace) {
 // up to 0.6 toward grazing views, plus the reflection). Interior pixels from a frame of the same
 // spheres without skybox. Metric and tolerances of the furnace as the clearcoat's.
 TEST_F(GpuTest, TransmissionKeepsTheWhiteFurnaceWhereTheBtdfIsSmooth) {
-    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
+    const assets::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
     const std::vector<Sphere> spheres = furnaceSpheres();
     const scene::Scene opaque = sphereScene(spheres, 64, 32);
     Renderer renderer(context());
@@ -170,7 +170,7 @@ TEST_F(GpuTest, TransmissionKeepsTheWhiteFurnaceWhereTheBtdfIsSmooth) {
 // `transmission`, a sphere 1e6 thick of attenuation distance 1e-6 lets through only the channel its
 // attenuation colour keeps whole, a thin wall some of each.
 TEST_F(GpuTest, TransmissionExtremesStayFinite) {
-    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(0.5f, 0.7f, 1.0f));
+    const assets::Environment env = constantEnvironment(64, 32, glm::vec3(0.5f, 0.7f, 1.0f));
     const std::vector<Sphere> spheres = furnaceSpheres();
     scene::Scene scene = sphereScene(spheres, 64, 32);
     for (size_t i = 0; i < spheres.size(); ++i) {
@@ -222,7 +222,7 @@ TEST_F(GpuTest, TransmissionExtremesStayFinite) {
 // float frame finite and non-negative, alpha in [0, 1]; the debug views iridescence-thickness and
 // -fresnel too, and the film of thickness 0 shows none (black in iridescence-fresnel).
 TEST_F(GpuTest, IridescenceExtremesStayFinite) {
-    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(0.5f, 0.7f, 1.0f));
+    const assets::Environment env = constantEnvironment(64, 32, glm::vec3(0.5f, 0.7f, 1.0f));
     const std::vector<Sphere> spheres = furnaceSpheres();
     scene::Scene scene = sphereScene(spheres, 64, 32);
     const float thicknesses[] = {0.0f, 1.0f, 1200.0f, 400.0f, 400.0f};
@@ -258,7 +258,7 @@ TEST_F(GpuTest, IridescenceExtremesStayFinite) {
 // Metric: |got − expected|. Tolerance: 2e-3 + 0.5% of the expected value (E reaches 4.1 at grazing
 // views of the smoothest sheen, where the lobe is sharpest).
 TEST_F(GpuTest, SheenLutMatchesTheDoubleReference) {
-    constexpr uint32_t kSize = ibl::SheenLut::kSize;
+    constexpr uint32_t kSize = ibl_maps::SheenLut::kSize;
     const passes::IblSheenLutPass pass(context());
     GraphRunner runner(context());
     graph::RenderGraph graph;
@@ -314,7 +314,7 @@ TEST_F(GpuTest, SheenLutMatchesTheDoubleReference) {
 // Metric: over interior pixels, max |x − 1| of the brightest channel (red) and max x − 1 of any.
 // Tolerances: 0.02 (the bound) and one RGBA16F step above 1 (1/1024).
 TEST_F(GpuTest, SheenKeepsTheWhiteFurnace) {
-    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
+    const assets::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
     const std::vector<Sphere> spheres = furnaceSpheres();
     Renderer renderer(context());
     for (const glm::vec3& color : {glm::vec3(1.0f), glm::vec3(1.0f, 0.5f, 0.2f)}) {

@@ -31,12 +31,12 @@ void expectNoValidationMessages(const vk::Context& context) {
 
 TEST(MemoryBudget, TooSmallForAnythingNamesTheResourceAndLeaksNothing) {
     auto context = budgetContext(1);
-    const scene::Scene grid = scene::makeSphereGrid();
+    const scene::Scene grid = assets::makeSphereGrid();
     std::string message;
     try {
         Renderer renderer(*context);
         renderer.capture({.width = 64, .height = 36, .scene = &grid});
-    } catch (const OutOfDeviceMemory& e) {
+    } catch (const vk::OutOfDeviceMemory& e) {
         message = e.what();
     }
     ASSERT_FALSE(message.empty()) << "a 1 MiB budget cannot hold the sphere grid";
@@ -52,8 +52,8 @@ TEST(MemoryBudget, TooSmallForAnythingNamesTheResourceAndLeaksNothing) {
 
 TEST(MemoryBudget, IblMapsFallBackToALowerResolution) {
     auto context = budgetContext(8);
-    const scene::Scene grid = scene::makeSphereGrid();
-    const scene::Environment sky = scene::makeProceduralSky();
+    const scene::Scene grid = assets::makeSphereGrid();
+    const assets::Environment sky = assets::makeProceduralSky();
     Renderer renderer(*context);
     RenderSettings settings{.width = 64, .height = 36, .floatOutput = true, .scene = &grid};
     settings.environment = &sky;
@@ -67,7 +67,7 @@ TEST(MemoryBudget, IblMapsFallBackToALowerResolution) {
 
 TEST(MemoryBudget, AFrameThatDoesNotFitFailsAndTheNextOneRenders) {
     auto context = budgetContext(8);
-    const scene::Scene grid = scene::makeSphereGrid();
+    const scene::Scene grid = assets::makeSphereGrid();
     Renderer renderer(*context);
     RenderSettings settings{.width = 64, .height = 36, .scene = &grid};
     renderer.capture(settings);
@@ -76,14 +76,14 @@ TEST(MemoryBudget, AFrameThatDoesNotFitFailsAndTheNextOneRenders) {
     try {
         renderer.renderFrame(settings);  // no readback buffer: the transients are what does not fit
         FAIL() << "1920x1080 transients fit in 8 MiB?";
-    } catch (const OutOfDeviceMemory& e) {
+    } catch (const vk::OutOfDeviceMemory& e) {
         EXPECT_NE(std::string(e.what()).find("render graph's transient heap"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("hdr"), std::string::npos) << e.what();
     }
     try {
         renderer.capture(settings);
         FAIL() << "1920x1080 fits in 8 MiB?";
-    } catch (const OutOfDeviceMemory& e) {
+    } catch (const vk::OutOfDeviceMemory& e) {
         EXPECT_NE(std::string(e.what()).find("cannot allocate"), std::string::npos) << e.what();
     }
     settings.width = 64;

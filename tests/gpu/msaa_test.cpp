@@ -104,7 +104,7 @@ TEST_F(GpuTest, MsaaOfALitSceneChangesSilhouettesAndLeavesMostOfTheInteriorsAlon
     // 3 × 3 neighbourhood is covered (alpha 1) without MSAA: at least 60% of them bit-identical in
     // the linear red channel, mean relative difference ≤ 0.5%. Silhouettes: some pixels partly
     // covered (0 < alpha < 1).
-    const scene::Scene grid = scene::makeSphereGrid();
+    const scene::Scene grid = assets::makeSphereGrid();
     Renderer renderer(context());
     RenderSettings settings{.width = 320, .height = 180, .floatOutput = true, .scene = &grid};
     settings.msaa = 1;
@@ -171,18 +171,18 @@ TEST_F(GpuTest, EveryFrameVariantIsValidationCleanAtEverySampleCount) {
     // background + forward_transmission (TransmissionTest), alpha masks (AlphaBlendModeTest), the
     // skybox switched off (bypassed); each at --msaa 1, 2, 4, 8.
     std::list<scene::Scene> scenes;
-    scenes.push_back(scene::makeSphereGrid());
+    scenes.push_back(assets::makeSphereGrid());
     for (const char* model : {"TransmissionTest/glTF-Binary/TransmissionTest.glb",
                               "AlphaBlendModeTest/glTF-Binary/AlphaBlendModeTest.glb"}) {
         const std::filesystem::path path = ::candela::test::sharedAssets() / "models" / model;
-        if (std::filesystem::exists(path)) scenes.push_back(scene::loadGltf(path));
+        if (std::filesystem::exists(path)) scenes.push_back(assets::loadGltf(path));
     }
-    const scene::Environment sky = scene::makeProceduralSky();
+    const assets::Environment sky = assets::makeProceduralSky();
     Renderer renderer(context());
     uint32_t frames = 0;
     enum class Sky { Default, SkyboxPass, SkyboxDisabled };
     for (const scene::Scene& scene : scenes)
-        for (const scene::Environment* environment : {static_cast<const scene::Environment*>(nullptr), &sky})
+        for (const assets::Environment* environment : {static_cast<const assets::Environment*>(nullptr), &sky})
             for (uint32_t samples : {1u, 2u, 4u, 8u})
                 for (Sky skyCase : {Sky::Default, Sky::SkyboxPass, Sky::SkyboxDisabled}) {
                     if (!environment && skyCase != Sky::Default) continue;
@@ -212,8 +212,8 @@ TEST_F(GpuTest, OnlyAttachmentsThatStayInOneRenderPassAreTransientImages) {
     // the forward pass stores its multisampled colour and depth for the skybox to load; with the sky
     // in the tonemap or without an environment the forward pass is the only one drawing. The
     // fixture checks validation.
-    const scene::Scene grid = scene::makeSphereGrid();
-    const scene::Environment sky = scene::makeProceduralSky();
+    const scene::Scene grid = assets::makeSphereGrid();
+    const assets::Environment sky = assets::makeProceduralSky();
     Renderer renderer(context());
     const auto usage = [&](const char* name) {
         const std::optional<uint32_t> resource = renderer.lastGraph().findResource(name);
@@ -249,8 +249,8 @@ TEST_F(GpuTest, OnlyAttachmentsThatStayInOneRenderPassAreTransientImages) {
 TEST_F(GpuTest, MultisampledAttachmentsAreCountedInTheTransientMemory) {
     // Memory report (issue #15): the graph's transient bytes at 4 samples grow by the multisampled
     // colour and the depth's extra samples, as the device sizes them.
-    const scene::Scene grid = scene::makeSphereGrid();
-    const scene::Environment sky = scene::makeProceduralSky();
+    const scene::Scene grid = assets::makeSphereGrid();
+    const assets::Environment sky = assets::makeProceduralSky();
     Renderer renderer(context());
     RenderSettings settings{.width = 320, .height = 180, .scene = &grid, .environment = &sky};
     settings.msaa = 1;

@@ -52,7 +52,7 @@ protected:
     }
     // Builds what a frame of the grid with the sky needs (graphics and compute pipelines).
     static void renderFrame(vk::Context& context) {
-        const scene::Scene grid = scene::makeSphereGrid();
+        const scene::Scene grid = assets::makeSphereGrid();
         Renderer renderer(context);
         renderer.capture({.width = 32, .height = 18, .scene = &grid});
     }
@@ -187,7 +187,7 @@ TEST_F(GpuTest, PreparedBuildsRunOnWorkersAndFailuresSurfaceAtUse) {
 TEST_F(GpuTest, DebugViewsPreparedInTheBackgroundDrawLikeOnesBuiltAtFirstDraw) {
     // The same debug view, once built at its first draw and once taken from the background builds:
     // identical images (the pipelines are the same), no validation message, nothing leaked.
-    const scene::Scene grid = scene::makeSphereGrid();
+    const scene::Scene grid = assets::makeSphereGrid();
     RenderSettings settings{.width = 64, .height = 36, .scene = &grid};
     CapturedFrame atFirstDraw, prepared;
     {
@@ -218,7 +218,7 @@ TEST_F(GpuTest, DebugViewsPreparedInTheBackgroundDrawLikeOnesBuiltAtFirstDraw) {
 }
 
 TEST_F(GpuTest, RendererDestroyedWhileBackgroundBuildsRunLeaksNothing) {
-    const scene::Scene grid = scene::makeSphereGrid();
+    const scene::Scene grid = assets::makeSphereGrid();
     {
         Renderer renderer(context());
         const RenderSettings settings{.width = 32, .height = 18, .scene = &grid, .precompile = options::Precompile::DebugViews};

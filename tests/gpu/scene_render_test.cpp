@@ -16,11 +16,11 @@ namespace {
 // Writes captures next to the test binary when CANDELA_TEST_OUTPUT is set (for looking at them).
 void maybeWrite(const char* name, const CapturedFrame& frame) {
     if (const char* dir = std::getenv("CANDELA_TEST_OUTPUT"))
-        io::writePng(std::string(dir) + "/" + name, frame.width, frame.height, frame.rgba8);
+        assets::writePng(std::string(dir) + "/" + name, frame.width, frame.height, frame.rgba8);
 }
 
 TEST_F(GpuTest, SphereGridRendersFiniteHdrAndCullsTonemapForFloatOutput) {
-    const scene::Scene grid = scene::makeSphereGrid();
+    const scene::Scene grid = assets::makeSphereGrid();
     Renderer renderer(context());
     const CapturedFrame hdr = renderer.capture({.width = 160, .height = 90, .floatOutput = true, .scene = &grid});
     size_t covered = 0;
@@ -37,7 +37,7 @@ TEST_F(GpuTest, SphereGridRendersFiniteHdrAndCullsTonemapForFloatOutput) {
 }
 
 TEST_F(GpuTest, SphereGridPngHasLitSpheresOnTheBackground) {
-    const scene::Scene grid = scene::makeSphereGrid();
+    const scene::Scene grid = assets::makeSphereGrid();
     Renderer renderer(context());
     RenderSettings settings{.width = 960, .height = 540, .scene = &grid};
     settings.tonemap.background = shading::srgbDecode(glm::vec3(0x26 / 255.0f));
@@ -50,7 +50,7 @@ TEST_F(GpuTest, SphereGridPngHasLitSpheresOnTheBackground) {
 }
 
 TEST_F(GpuTest, TransparentBackgroundWritesAlphaZeroOutsideGeometry) {
-    const scene::Scene grid = scene::makeSphereGrid();
+    const scene::Scene grid = assets::makeSphereGrid();
     Renderer renderer(context());
     const CapturedFrame frame = renderer.capture({.width = 160, .height = 90, .scene = &grid});  // no background
     EXPECT_EQ(frame.rgba8[3], 0);  // corner: background
@@ -62,7 +62,7 @@ TEST_F(GpuTest, SceneLightsOffLeavesTheFilesLightsOut) {
     // The grid's four point lights are the scene's own: off, with no default lights and no
     // environment, nothing lights the spheres — covered pixels stay, black; with default lights
     // the scene counts as light-less and gets the key and fill lights instead.
-    const scene::Scene grid = scene::makeSphereGrid();
+    const scene::Scene grid = assets::makeSphereGrid();
     Renderer renderer(context());
     RenderSettings settings{.width = 160, .height = 90, .floatOutput = true, .scene = &grid, .defaultLights = false,
                             .sceneLights = false};

@@ -25,7 +25,7 @@ protected:
         if (!context().choices().visibilityUnsupported.empty()) GTEST_SKIP() << context().choices().visibilityUnsupported;
     }
     CapturedFrame render(options::ShadingPath path, options::DebugView view = options::DebugView::None,
-                         const scene::Environment* environment = nullptr, std::optional<uint32_t> msaa = 1) {
+                         const assets::Environment* environment = nullptr, std::optional<uint32_t> msaa = 1) {
         RenderSettings settings{.width = kWidth, .height = kHeight, .scene = &mGrid};
         settings.camera = mCamera;
         settings.shadingPath = path;
@@ -44,7 +44,7 @@ protected:
     // The samples of the last frame's visibility image (0: the frame took the forward path).
     uint32_t visibilitySamples() const { return mRenderer->lastVisibility() ? mRenderer->lastVisibility()->samples : 0; }
 
-    scene::Scene mGrid = scene::makeSphereGrid();
+    scene::Scene mGrid = assets::makeSphereGrid();
     CameraSettings mCamera;  // the default: framing
     std::unique_ptr<Renderer> mRenderer;
 };
@@ -83,7 +83,7 @@ size_t pixelsDifferingBy(const CapturedFrame& a, const CapturedFrame& b, int lev
 }
 
 TEST_F(ShadingPathTest, VisibilityFramesScheduleItsPassesInsteadOfTheForwardOnes) {
-    const scene::Environment sky = scene::makeProceduralSky();
+    const assets::Environment sky = assets::makeProceduralSky();
     render(options::ShadingPath::Visibility, options::DebugView::None, &sky);
     for (const char* pass : {"visibility", "visibility_classify", "visibility_clear", "visibility_shade", "tonemap"})
         EXPECT_TRUE(declares(pass)) << pass;
@@ -103,7 +103,7 @@ TEST_F(ShadingPathTest, VisibilityFramesScheduleItsPassesInsteadOfTheForwardOnes
 // A float (HDR) capture reads the image before the tonemap: the visibility path then draws the sky
 // into it with the skybox pass, as the forward path does (the quality report's frames are such).
 TEST_F(ShadingPathTest, FloatCapturesHaveTheSkyOnBothPaths) {
-    const scene::Environment sky = scene::makeProceduralSky();
+    const assets::Environment sky = assets::makeProceduralSky();
     RenderSettings settings{.width = kWidth, .height = kHeight, .floatOutput = true, .scene = &mGrid, .environment = &sky};
     settings.msaa = 1;
     settings.shadingPath = options::ShadingPath::Forward;
@@ -166,7 +166,7 @@ TEST_F(ShadingPathTest, AStillScenesFramesAreTheSameImage) {
 // grid, whose spheres' edges are against the background and each other).
 TEST_F(ShadingPathTest, MsaaResolvesInTheShadingAsTheForwardPathResolves) {
     if (!(context().caps().limits.sampledImageIntegerSampleCounts & VK_SAMPLE_COUNT_4_BIT)) GTEST_SKIP() << "no 4-sample integer images";
-    const scene::Environment sky = scene::makeProceduralSky();
+    const assets::Environment sky = assets::makeProceduralSky();
     const CapturedFrame forward = render(options::ShadingPath::Forward, options::DebugView::None, &sky, 4);
     const CapturedFrame visibility = render(options::ShadingPath::Visibility, options::DebugView::None, &sky, 4);
     EXPECT_EQ(visibilitySamples(), 4u);
@@ -192,7 +192,7 @@ TEST_F(ShadingPathTest, MsaaAlphaMaskedCoverageMatchesTheForwardPathButOnTheMask
     const std::filesystem::path file =
         ::candela::test::sharedAssets() / "models/AlphaBlendModeTest/glTF-Binary/AlphaBlendModeTest.glb";
     if (!std::filesystem::exists(file)) GTEST_SKIP() << "../shared/assets not present";
-    mGrid = scene::loadGltf(file);
+    mGrid = assets::loadGltf(file);
     for (scene::Material& m : mGrid.materials)
         if (m.alphaMode == scene::AlphaMode::Blend) m.alphaMode = scene::AlphaMode::Opaque;
     mCamera = measuredView(mGrid);
@@ -213,12 +213,12 @@ TEST_F(ShadingPathTest, MsaaAlphaMaskedCoverageMatchesTheForwardPathButOnTheMask
 // sample over each sample's own surface, the visibility path over the pixel's resolved colour.
 TEST_F(ShadingPathTest, MsaaBlendedAndTransmissiveDrawsFollowTheVisibilityPathsShading) {
     if (!(context().caps().limits.sampledImageIntegerSampleCounts & VK_SAMPLE_COUNT_4_BIT)) GTEST_SKIP() << "no 4-sample integer images";
-    const scene::Environment sky = scene::makeProceduralSky();
+    const assets::Environment sky = assets::makeProceduralSky();
     for (const char* model : {"AlphaBlendModeTest", "TransmissionTest"}) {
         const std::filesystem::path file =
             ::candela::test::sharedAssets() / "models" / model / "glTF-Binary" / (std::string(model) + ".glb");
         if (!std::filesystem::exists(file)) GTEST_SKIP() << "../shared/assets not present";
-        mGrid = scene::loadGltf(file);
+        mGrid = assets::loadGltf(file);
         mCamera = measuredView(mGrid);
         renderer().sceneReplaced();
         const CapturedFrame forward = render(options::ShadingPath::Forward, options::DebugView::None, &sky, 4);

@@ -14,8 +14,8 @@ namespace candela::test {
 namespace {
 
 TEST_F(GpuTest, SoakKeepsObjectsAndMemoryFlatAfterWarmUp) {
-    const scene::Scene grid = scene::makeSphereGrid();
-    const std::vector<scene::Environment> environments = soakEnvironments(3);
+    const scene::Scene grid = assets::makeSphereGrid();
+    const std::vector<assets::Environment> environments = soakEnvironments(3);
     Renderer renderer(context());
     RenderSettings settings{.width = 64, .height = 36, .scene = &grid};
     settings.iblQuality.cubeSize = 64;  // the precompute is not under test; keep it short

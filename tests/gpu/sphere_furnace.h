@@ -34,8 +34,8 @@ inline void measured(const std::string& key, double value) {
 
 // ---- Environments and scenes --------------------------------------------------------------------
 
-inline scene::Environment constantEnvironment(uint32_t width, uint32_t height, glm::vec3 c) {
-    scene::Environment env;
+inline assets::Environment constantEnvironment(uint32_t width, uint32_t height, glm::vec3 c) {
+    assets::Environment env;
     env.source = "constant";
     env.width = width;
     env.height = height;
@@ -59,7 +59,7 @@ struct Sphere {
 inline scene::Scene sphereScene(const std::vector<Sphere>& spheres, uint32_t sectors, uint32_t stacks) {
     scene::Scene scene;
     scene.source = "built-in: IBL test spheres";
-    const auto [firstIndex, indexCount] = scene::appendUvSphere(scene, 1.0f, sectors, stacks);
+    const auto [firstIndex, indexCount] = assets::appendUvSphere(scene, 1.0f, sectors, stacks);
     for (const Sphere& s : spheres) {
         scene::Material material;
         material.baseColorFactor = glm::vec4(1.0f);
@@ -185,7 +185,7 @@ inline ibl::IblQuality smallSh9Quality() {
 
 // The settings of a furnace frame of `scene` in `env`: 320×180 float output, the furnace camera,
 // no punctual lights, the small IBL quality, no skybox. `scene` and `env` must outlive the settings.
-inline RenderSettings furnaceSettings(const scene::Scene& scene, const scene::Environment& env) {
+inline RenderSettings furnaceSettings(const scene::Scene& scene, const assets::Environment& env) {
     RenderSettings settings{.width = 320, .height = 180, .floatOutput = true, .scene = &scene,
                             .camera = furnaceCamera(), .defaultLights = false, .environment = &env,
                             .iblQuality = smallQuality()};

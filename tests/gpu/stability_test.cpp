@@ -101,7 +101,7 @@ void maybeWrite(const CapturedFrame& ldr, ShadingModel model, Tonemap op, float 
     const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
     const std::string name = std::string(test->name()) + "_" + std::to_string(counter++) + "_" + shadingName(model) +
                              "_" + options::tonemapName(op) + "_" + std::to_string(int(ev)) + "ev.png";
-    io::writePng(std::string(dir) + "/" + name, ldr.width, ldr.height, ldr.rgba8);
+    assets::writePng(std::string(dir) + "/" + name, ldr.width, ldr.height, ldr.rgba8);
 }
 
 // Renders `settings.scene` with every shading model (HDR) and, for each, every tone mapping
@@ -238,7 +238,7 @@ scene::Scene scaled(scene::Scene scene, float k, ScaleBy by) {
 // The sphere grid with roughness exactly 0 … 1 (bottom → top; the built-in grid starts at 0.05),
 // metallic exactly 0 … 1 (left → right) and a white base colour (F0 = 1 exactly at metallic 1).
 scene::Scene extremeMaterialGrid() {
-    scene::Scene grid = scene::makeSphereGrid();
+    scene::Scene grid = assets::makeSphereGrid();
     for (size_t i = 0; i < grid.materials.size(); ++i) {
         grid.materials[i].roughnessFactor = float(i / 7) / 6.0f;
         grid.materials[i].baseColorFactor = glm::vec4(1.0f);
@@ -378,7 +378,7 @@ private:
 // Measured on lavapipe: no coverage change, mean ≤ 8.1e-6, max 9.6e-4.
 void StabilityTest::expectScaleInvariant(float k) {
     Renderer renderer(context());
-    const scene::Scene* reference = keep(scene::makeSphereGrid());
+    const scene::Scene* reference = keep(assets::makeSphereGrid());
     const CapturedFrame unscaled = renderHdr(renderer, {.scene = reference});
     const size_t covered = coveredPixels(unscaled);
     // 49 unit spheres framed by the grid's bounding sphere cover about 12% of the image.

@@ -21,9 +21,9 @@ struct Frames {
 
 // The scene at `early` and `late` seconds (its first animation playing), 240 × 160 over a black background.
 Frames render(vk::Context& context, const std::string& name, double early, double late) {
-    const scene::Scene scene = scene::loadGltf(::candela::test::testScenes() / (name + ".glb"));
+    const scene::Scene scene = assets::loadGltf(::candela::test::testScenes() / (name + ".glb"));
     EXPECT_TRUE(scene.report.warnings.empty()) << name << ": " << scene.report.warnings.front();
-    scene::ScenePose pose(scene, scene::selectAnimations(scene, {}));
+    pose::ScenePose pose(scene, pose::selectAnimations(scene, {}));
     Renderer renderer(context);
     RenderSettings settings{.width = 240, .height = 160, .scene = &scene, .pose = &pose};
     settings.tonemap.background = glm::vec3(0.0f);

@@ -88,8 +88,8 @@ TEST_P(LosslessWebpCopy, RendersExactlyLikeThePngOriginal) {
     const fs::path gltf = ::candela::test::sharedAssets() / "models" / GetParam() / "glTF" / (std::string(GetParam()) + ".gltf");
     if (!fs::exists(gltf)) GTEST_SKIP() << gltf << " not present";
     TempDir dir;
-    const scene::Scene original = scene::loadGltf(gltf);
-    const scene::Scene copy = scene::loadGltf(webpCopy(gltf, dir.path() / "model"));
+    const scene::Scene original = assets::loadGltf(gltf);
+    const scene::Scene copy = assets::loadGltf(webpCopy(gltf, dir.path() / "model"));
     EXPECT_TRUE(copy.report.warnings.empty()) << copy.report.warnings.front();
     ASSERT_EQ(copy.images.size(), original.images.size());
     for (size_t i = 0; i < copy.images.size(); ++i) EXPECT_EQ(copy.images[i].rgba8, original.images[i].rgba8) << "image " << i;
@@ -104,11 +104,11 @@ TEST_P(LosslessWebpCopy, RendersExactlyLikeThePngOriginal) {
 // A triangle textured with `image` (a KHR_texture_basisu KTX2 file, or a PNG) sampled from level 0
 // only (LINEAR filters, no mips), so that the frame shows the decoded texels and nothing generated.
 std::vector<uint8_t> renderTexturedTriangle(vk::Context& context, const std::vector<uint8_t>& image, bool ktx2) {
-    scene::test::GltfBuilder b = ktx2 ? scene::test::ktx2Triangle(image) : scene::test::texturedTriangle("", image);
+    assets::test::GltfBuilder b = ktx2 ? assets::test::ktx2Triangle(image) : assets::test::texturedTriangle("", image);
     b.doc["samplers"] = Json::array({{{"magFilter", 9729}, {"minFilter", 9729}}});
     b.doc["textures"][0]["sampler"] = 0;
     TempDir dir;
-    const scene::Scene scene = scene::loadGltf(b.writeGlb(dir.path()));
+    const scene::Scene scene = assets::loadGltf(b.writeGlb(dir.path()));
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     Renderer renderer(context);
     RenderSettings settings{.width = 160, .height = 120, .scene = &scene};
@@ -121,8 +121,8 @@ TEST_F(GpuTest, Ktx2TexturesDrawTheReferenceDecodersTexels) {
     for (const auto& [ktx2, png] : {std::pair{"etc1s_mips.ktx2", "etc1s_mips_level0_ref.png"},
                                     std::pair{"uastc_mips_l0.ktx2", "uastc_mips_l0_level0_srgb.png"}}) {
         SCOPED_TRACE(ktx2);
-        const std::vector<uint8_t> fromKtx2 = renderTexturedTriangle(context(), scene::test::readBytes(data / ktx2), true);
-        const std::vector<uint8_t> fromPng = renderTexturedTriangle(context(), scene::test::readBytes(data / png), false);
+        const std::vector<uint8_t> fromKtx2 = renderTexturedTriangle(context(), assets::test::readBytes(data / ktx2), true);
+        const std::vector<uint8_t> fromPng = renderTexturedTriangle(context(), assets::test::readBytes(data / png), false);
         ASSERT_EQ(fromKtx2.size(), fromPng.size());
         size_t differing = 0, covered = 0;
         for (size_t i = 0; i < fromKtx2.size(); i += 4) {

@@ -27,7 +27,7 @@ TEST_F(GpuTest, GpuSceneUploadsEveryTextureSlotOfTheTables) {
     for (const scene::TextureSlot& slot : scene::kLayerTextureSlots) give(textured.*slot.field);
     textured.clearcoatFactor = 1.0f;  // a layer, so that the layer parameters are uploaded
     scene.materials = {textured, scene::Material{.name = "no textures"}};
-    const scene::GpuScene gpu(context(), scene);
+    const gpu_scene::GpuScene gpu(context(), scene);
 
     std::set<VkImageView> views;
     for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {

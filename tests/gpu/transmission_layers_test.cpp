@@ -30,7 +30,7 @@ namespace {
 // through an absorbing volume (attenuation colour (0.5, 0.8, 1) at distance 0.5): never above 1,
 // and the dielectric's red below its blue where the layer transmits.
 TEST_F(GpuTest, DiffuseTransmissionKeepsTheWhiteFurnace) {
-    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
+    const assets::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
     const std::vector<Sphere> spheres = furnaceSpheres();
     Renderer renderer(context());
     for (int pass = 0; pass < 3; ++pass) {
@@ -78,7 +78,7 @@ TEST_F(GpuTest, DiffuseTransmissionKeepsTheWhiteFurnace) {
 // a black colour and a transmission of 1 let nothing through, a thin weight 1 lets light through,
 // and 1e6 of a medium of attenuation distance 1e-6 and colour (0.5, 0.8, 1) only the blue.
 TEST_F(GpuTest, DiffuseTransmissionExtremesStayFinite) {
-    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(0.5f, 0.7f, 1.0f));
+    const assets::Environment env = constantEnvironment(64, 32, glm::vec3(0.5f, 0.7f, 1.0f));
     const std::vector<Sphere> spheres = furnaceSpheres();
     scene::Scene scene = sphereScene(spheres, 64, 32);
     struct Case {
@@ -140,7 +140,7 @@ TEST_F(GpuTest, DiffuseTransmissionExtremesStayFinite) {
 // Metric: max absolute difference per 8-bit channel ≤ 1 level (as
 // LayeredProgramAtTheCoreValuesDrawsTheCoreImage: the two programs round the same formulas apart).
 TEST_F(GpuTest, DiffuseTransmissionOfWeightZeroDrawsTheCoreImage) {
-    scene::Scene core = scene::makeSphereGrid();
+    scene::Scene core = assets::makeSphereGrid();
     for (scene::Material& m : core.materials) m.metallicFactor = m.metallicFactor < 0.5f ? 0.0f : 1.0f;
     scene::Scene layered = core;
     for (scene::Material& m : layered.materials) m.animatedLayers = scene::kLayerDiffuseTransmission;
@@ -158,8 +158,8 @@ TEST_F(GpuTest, DiffuseTransmissionOfWeightZeroDrawsTheCoreImage) {
 // An equirectangular environment of vertical stripes (white and black, 8 texels wide, 1 above the
 // horizon's blue): what a clear sphere shows through its volume moves with the IOR, so the colour
 // channels of a dispersive one come apart at the stripes' edges.
-scene::Environment stripedEnvironment() {
-    scene::Environment env = constantEnvironment(256, 128, glm::vec3(0.0f));
+assets::Environment stripedEnvironment() {
+    assets::Environment env = constantEnvironment(256, 128, glm::vec3(0.0f));
     for (uint32_t y = 0; y < env.height; ++y)
         for (uint32_t x = 0; x < env.width; ++x) {
             const float v = (x / 8) % 2 == 0 ? 1.0f : 0.05f;
@@ -178,7 +178,7 @@ scene::Environment stripedEnvironment() {
 // (measured 0.10: the exit points of red and blue are about 0.09 m apart, 2 px, across stripe edges
 // the small IBL cube of the furnace settings softens over several pixels).
 TEST_F(GpuTest, DispersionZeroDrawsTheImageWithoutItAndLargeStaysFinite) {
-    const scene::Environment env = stripedEnvironment();
+    const assets::Environment env = stripedEnvironment();
     const std::vector<Sphere> spheres = furnaceSpheres();
     const auto glass = [&](float dispersion, bool layer) {
         scene::Scene scene = sphereScene(spheres, 64, 32);
@@ -233,7 +233,7 @@ TEST_F(GpuTest, DispersionZeroDrawsTheImageWithoutItAndLargeStaysFinite) {
 // Tolerance 0.02°: the mesh's interpolated normals (a 64 × 32 UV sphere) and the view's 8-bit
 // output, which the float frame's RGBA16F matches.
 TEST_F(GpuTest, DispersionViewShowsTheAngleBetweenTheRedAndBlueRays) {
-    const scene::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
+    const assets::Environment env = constantEnvironment(64, 32, glm::vec3(1.0f));
     const std::vector<Sphere> spheres = furnaceSpheres();
     scene::Scene scene = sphereScene(spheres, 64, 32);
     for (scene::Material& m : scene.materials) {
@@ -276,7 +276,7 @@ TEST_F(GpuTest, DispersionViewShowsTheAngleBetweenTheRedAndBlueRays) {
 // within 2 levels.
 TEST_F(GpuTest, DiffuseTransmissionAndDispersionAgreeOnBothShadingPaths) {
     if (!context().choices().visibilityUnsupported.empty()) GTEST_SKIP() << context().choices().visibilityUnsupported;
-    const scene::Environment env = stripedEnvironment();
+    const assets::Environment env = stripedEnvironment();
     const std::vector<Sphere> spheres = furnaceSpheres();
     scene::Scene scene = sphereScene(spheres, 64, 32);
     for (size_t i = 0; i < spheres.size(); ++i) {

@@ -24,7 +24,7 @@
 
 namespace fs = std::filesystem;
 using namespace candela;
-using namespace candela::io;
+using namespace candela::reports;
 
 namespace {
 
@@ -66,45 +66,45 @@ std::vector<uint8_t> heatMap(const std::vector<uint8_t>& a, const std::vector<ui
 struct Example {
     const char* name;
     const char* file;  // image file stem
-    RowStatus status;
+    reports::RowStatus status;
     float hue, shift;
     std::map<std::string, double> numbers;
 };
 
-PageRow exampleRow(const fs::path& dir, const Example& e) {
-    PageRow row{.name = e.name, .status = e.status, .numbers = e.numbers};
+reports::PageRow exampleRow(const fs::path& dir, const Example& e) {
+    reports::PageRow row{.name = e.name, .status = e.status, .numbers = e.numbers};
     const std::string stem = std::string("images/") + e.file;
     const auto reference = render(e.hue, 0), rendered = render(e.hue, e.shift);
-    writePng(dir / (stem + ".reference.png"), kWidth, kHeight, reference);
+    assets::writePng(dir / (stem + ".reference.png"), kWidth, kHeight, reference);
     row.images.push_back({.label = "reference", .path = stem + ".reference.png"});
-    if (e.status == RowStatus::Failed) {
+    if (e.status == reports::RowStatus::Failed) {
         row.images.push_back({.label = "new", .missingText = "not rendered"});
         row.images.push_back({.label = "ꟻLIP", .missingText = "no ꟻLIP map"});
         return row;
     }
-    writePng(dir / (stem + ".new.png"), kWidth, kHeight, rendered);
-    writePng(dir / (stem + ".flip.png"), kWidth, kHeight, heatMap(reference, rendered));
+    assets::writePng(dir / (stem + ".new.png"), kWidth, kHeight, rendered);
+    assets::writePng(dir / (stem + ".flip.png"), kWidth, kHeight, heatMap(reference, rendered));
     row.images.push_back({.label = "new", .path = stem + ".new.png"});
     row.images.push_back({.label = "ꟻLIP", .path = stem + ".flip.png"});
     row.links = {{.label = "new.png", .path = stem + ".new.png"}, {.label = "flip.png", .path = stem + ".flip.png"}};
     return row;
 }
 
-HtmlPage examplePage(const fs::path& dir) {
-    HtmlPage page{.title = "Example batch render",
+reports::HtmlPage examplePage(const fs::path& dir) {
+    reports::HtmlPage page{.title = "Example batch render",
                   .summary = {"7 scenes, 1 failed, 1 over threshold, 1 warning", "device: llvmpipe (LLVM 15.0.6, 256 bits)",
                               "12.3 s"},
                   .columns = {{.name = "ꟻLIP mean", .decimals = 4}, {.name = "p99", .decimals = 1}, {.name = "ms", .decimals = 1}},
                   .errorColumn = "ꟻLIP mean"};
     const Example examples[] = {
-        {"DamagedHelmet", "damaged_helmet", RowStatus::Ok, 0.3f, 0.02f, {{"ꟻLIP mean", 0.0123}, {"p99", 2}, {"ms", 41.25}}},
-        {"broken.gltf", "broken", RowStatus::Failed, 1.0f, 0, {}},
-        {"MetalRoughSpheres", "metal_rough_spheres", RowStatus::OverThreshold, 2.0f, 0.6f,
+        {"DamagedHelmet", "damaged_helmet", reports::RowStatus::Ok, 0.3f, 0.02f, {{"ꟻLIP mean", 0.0123}, {"p99", 2}, {"ms", 41.25}}},
+        {"broken.gltf", "broken", reports::RowStatus::Failed, 1.0f, 0, {}},
+        {"MetalRoughSpheres", "metal_rough_spheres", reports::RowStatus::OverThreshold, 2.0f, 0.6f,
          {{"ꟻLIP mean", 0.2051}, {"p99", 24}, {"ms", 18.5}}},
-        {"Fox (t=1.5)", "fox", RowStatus::Warning, 3.0f, 0.05f, {{"ꟻLIP mean", 0.0311}, {"p99", 5.5}, {"ms", 22}}},
-        {"SimpleInstancing", "simple_instancing", RowStatus::Ok, 4.0f, 0.01f, {{"ꟻLIP mean", 0.0042}, {"p99", 1}}},
-        {"<b>Sponza</b> & \"friends\"", "sponza", RowStatus::Ok, 5.0f, 0.03f, {{"ꟻLIP mean", 0.0198}, {"p99", 3}, {"ms", 95.75}}},
-        {"TextureSettings", "texture_settings", RowStatus::Ok, 5.8f, 0.015f, {{"ꟻLIP mean", 0.0087}, {"p99", 2}, {"ms", 9.5}}},
+        {"Fox (t=1.5)", "fox", reports::RowStatus::Warning, 3.0f, 0.05f, {{"ꟻLIP mean", 0.0311}, {"p99", 5.5}, {"ms", 22}}},
+        {"SimpleInstancing", "simple_instancing", reports::RowStatus::Ok, 4.0f, 0.01f, {{"ꟻLIP mean", 0.0042}, {"p99", 1}}},
+        {"<b>Sponza</b> & \"friends\"", "sponza", reports::RowStatus::Ok, 5.0f, 0.03f, {{"ꟻLIP mean", 0.0198}, {"p99", 3}, {"ms", 95.75}}},
+        {"TextureSettings", "texture_settings", reports::RowStatus::Ok, 5.8f, 0.015f, {{"ꟻLIP mean", 0.0087}, {"p99", 2}, {"ms", 9.5}}},
     };
     for (const Example& e : examples) page.rows.push_back(exampleRow(dir, e));
     page.rows[0].notes = {"3 draws, 1 material"};
@@ -118,21 +118,21 @@ HtmlPage examplePage(const fs::path& dir) {
 
 // "scene 0000" … "scene 0999": failed when i % 100 == 7 (their ꟻLIP map missing), over threshold
 // when i % 50 == 3, ok otherwise; ꟻLIP mean (i × 37 mod 1000) / 1000, ms i / 10.
-HtmlPage largePage(const fs::path& dir) {
+reports::HtmlPage largePage(const fs::path& dir) {
     const auto reference = render(0.5f, 0), rendered = render(0.5f, 0.2f);
-    writePng(dir / "images/reference.png", kWidth, kHeight, reference);
-    writePng(dir / "images/new.png", kWidth, kHeight, rendered);
-    writePng(dir / "images/flip.png", kWidth, kHeight, heatMap(reference, rendered));
-    HtmlPage page{.title = "1,000 rows", .summary = {"1000 scenes, 10 failed, 20 over threshold"},
+    assets::writePng(dir / "images/reference.png", kWidth, kHeight, reference);
+    assets::writePng(dir / "images/new.png", kWidth, kHeight, rendered);
+    assets::writePng(dir / "images/flip.png", kWidth, kHeight, heatMap(reference, rendered));
+    reports::HtmlPage page{.title = "1,000 rows", .summary = {"1000 scenes, 10 failed, 20 over threshold"},
                   .columns = {{.name = "ꟻLIP mean"}, {.name = "ms", .decimals = 1}}, .errorColumn = "ꟻLIP mean"};
     for (int i = 0; i < 1000; ++i) {
         char name[16];
         std::snprintf(name, sizeof name, "scene %04d", i);
-        const RowStatus status = i % 100 == 7 ? RowStatus::Failed : i % 50 == 3 ? RowStatus::OverThreshold : RowStatus::Ok;
-        PageRow row{.name = name, .status = status, .numbers = {{"ꟻLIP mean", (i * 37 % 1000) / 1000.0}, {"ms", i / 10.0}}};
+        const reports::RowStatus status = i % 100 == 7 ? reports::RowStatus::Failed : i % 50 == 3 ? reports::RowStatus::OverThreshold : reports::RowStatus::Ok;
+        reports::PageRow row{.name = name, .status = status, .numbers = {{"ꟻLIP mean", (i * 37 % 1000) / 1000.0}, {"ms", i / 10.0}}};
         row.images = {{.label = "reference", .path = "images/reference.png"}, {.label = "new", .path = "images/new.png"},
                       {.label = "ꟻLIP", .path = "images/flip.png"}};
-        if (status == RowStatus::Failed) row.images[2] = {.label = "ꟻLIP", .missingText = "no ꟻLIP map"};
+        if (status == reports::RowStatus::Failed) row.images[2] = {.label = "ꟻLIP", .missingText = "no ꟻLIP map"};
         page.rows.push_back(std::move(row));
     }
     return page;
@@ -149,13 +149,13 @@ int main(int argc, char** argv) {
         const fs::path out = argv[1];
         fs::remove_all(out);
         fs::create_directories(out / "beside" / "images");
-        const HtmlPage page = examplePage(out / "beside");
-        writeHtmlPage(out / "beside" / "example.html", page);
-        const std::string inlined = renderHtmlPage(page, {.inlineImages = true, .imageFolder = out / "beside"});
+        const reports::HtmlPage page = examplePage(out / "beside");
+        reports::writeHtmlPage(out / "beside" / "example.html", page);
+        const std::string inlined = reports::renderHtmlPage(page, {.inlineImages = true, .imageFolder = out / "beside"});
         writeFileAtomically(out / "inline" / "example.html",
                             [&](std::ostream& o) { o.write(inlined.data(), std::streamsize(inlined.size())); });
         writeHtmlPage(out / "empty" / "example.html",
-                      HtmlPage{.title = "No rows", .summary = {"0 scenes"}, .columns = {{.name = "ꟻLIP mean"}}, .errorColumn = "ꟻLIP mean"});
+                      reports::HtmlPage{.title = "No rows", .summary = {"0 scenes"}, .columns = {{.name = "ꟻLIP mean"}}, .errorColumn = "ꟻLIP mean"});
         fs::create_directories(out / "large" / "images");
         writeHtmlPage(out / "large" / "example.html", largePage(out / "large"));
     } catch (const std::exception& e) {

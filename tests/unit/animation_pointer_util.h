@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace candela::scene::test {
+namespace candela::assets::test {
 
 // One pointer channel with a sampler of its own: key times, values (`type` of floats per key, or
 // unsigned bytes with kUnsignedByte), interpolation.
@@ -62,4 +62,4 @@ inline void setVisible(GltfBuilder& b, int node, bool visible) {
     useExtension(b, "KHR_node_visibility");
 }
 
-}  // namespace candela::scene::test
+}  // namespace candela::assets::test

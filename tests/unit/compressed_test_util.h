@@ -10,10 +10,10 @@
 
 #include <cstdlib>
 
-namespace candela::scene::test {
+namespace candela::assets::test {
 
 // Same draws, indices and vertex positions, normals and texture coordinates, to the bit.
-inline void expectSameGeometry(const Scene& a, const Scene& b) {
+inline void expectSameGeometry(const scene::Scene& a, const scene::Scene& b) {
     ASSERT_EQ(a.draws.size(), b.draws.size());
     ASSERT_EQ(a.indices, b.indices);
     ASSERT_EQ(a.vertices.size(), b.vertices.size());
@@ -25,7 +25,7 @@ inline void expectSameGeometry(const Scene& a, const Scene& b) {
 }
 
 // Every face of `a` within `tolerance` × the diagonal of `reference` of the same face of `reference`.
-inline void expectBoundsNear(const Aabb& a, const Aabb& reference, float tolerance, const std::string& where = "") {
+inline void expectBoundsNear(const scene::Aabb& a, const scene::Aabb& reference, float tolerance, const std::string& where = "") {
     const float extent = glm::length(reference.max - reference.min);
     for (int axis = 0; axis < 3; ++axis) {
         EXPECT_NEAR(a.min[axis], reference.min[axis], tolerance * extent) << where << " axis " << axis;
@@ -35,9 +35,9 @@ inline void expectBoundsNear(const Aabb& a, const Aabb& reference, float toleran
 
 // The scene bounds of `a` and `b`, posed by `animations` (as --animation) at each of `times`, agree
 // within `tolerance` of the extent.
-inline void expectSamePosedBounds(const Scene& a, const Scene& b, const std::vector<std::string>& animations,
+inline void expectSamePosedBounds(const scene::Scene& a, const scene::Scene& b, const std::vector<std::string>& animations,
                                   float tolerance, std::initializer_list<double> times) {
-    ScenePose pa(a, selectAnimations(a, animations)), pb(b, selectAnimations(b, animations));
+    pose::ScenePose pa(a, pose::selectAnimations(a, animations)), pb(b, pose::selectAnimations(b, animations));
     for (double time : times) {
         pa.evaluate(time);
         pb.evaluate(time);
@@ -58,11 +58,11 @@ inline void gltfpack(const fs::path& input, const fs::path& output) {
 inline void expectLoadFails(const fs::path& file, const std::string& fragment) {
     std::string message;
     try {
-        loadGltf(file);
+        assets::loadGltf(file);
     } catch (const UserError& e) {
         message = e.what();
     }
     candela::test::expectOneLineErrorNamingFile(file, message, fragment);
 }
 
-}  // namespace candela::scene::test
+}  // namespace candela::assets::test

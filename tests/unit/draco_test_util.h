@@ -9,7 +9,7 @@
 #include <draco/compression/encode.h>
 #include <draco/mesh/mesh.h>
 
-namespace candela::scene::test {
+namespace candela::assets::test {
 
 struct DracoQuad {
     std::vector<float> positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
@@ -72,4 +72,4 @@ struct DracoQuad {
     }
 };
 
-}  // namespace candela::scene::test
+}  // namespace candela::assets::test

@@ -23,7 +23,7 @@
 #include <vector>
 #include <unistd.h>
 
-namespace candela::scene::test {
+namespace candela::assets::test {
 
 namespace fs = std::filesystem;
 using Bytes = std::vector<uint8_t>;
@@ -48,9 +48,9 @@ inline void writeBytes(const fs::path& path, const Bytes& bytes) {
 inline Bytes toBytes(const std::string& text) { return Bytes(text.begin(), text.end()); }
 
 // The error message loadEnvironment throws, or "" when it loads.
-inline std::string environmentLoadError(const fs::path& path, const EnvironmentLoadOptions& options = {}) {
+inline std::string environmentLoadError(const fs::path& path, const assets::EnvironmentLoadOptions& options = {}) {
     try {
-        loadEnvironment(path, options);
+        assets::loadEnvironment(path, options);
     } catch (const UserError& e) {
         return e.what();
     }
@@ -178,7 +178,7 @@ using candela::test::makeExrParts;
 using candela::test::rgbChannels;
 
 // Solid-angle-weighted mean luminance (Rec. 709 weights) of an equirectangular map.
-inline double meanLuminance(const Environment& env) {
+inline double meanLuminance(const assets::Environment& env) {
     double sum = 0.0, weights = 0.0;
     for (uint32_t y = 0; y < env.height; ++y) {
         const double w = std::sin((y + 0.5) / env.height * 3.14159265358979);
@@ -191,4 +191,4 @@ inline double meanLuminance(const Environment& env) {
     return sum / weights;
 }
 
-}  // namespace candela::scene::test
+}  // namespace candela::assets::test

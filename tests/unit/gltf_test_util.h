@@ -22,7 +22,7 @@
 #include <vector>
 #include <unistd.h>
 
-namespace candela::scene::test {
+namespace candela::assets::test {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
@@ -46,7 +46,7 @@ inline fs::path sharedModels() {
 // Skips the test when ../shared/assets is absent.
 #define REQUIRE_MODELS()                                                            \
     do {                                                                            \
-        if (sharedModels().empty()) GTEST_SKIP() << "../shared/assets not present"; \
+        if (assets::test::sharedModels().empty()) GTEST_SKIP() << "../shared/assets not present"; \
     } while (false)
 
 using candela::test::TempDir;
@@ -288,9 +288,9 @@ inline Bytes testKtx2(const std::string& name) { return readBytes(::candela::tes
 
 // Loads and returns the UserError's message, or "" if the load succeeded. Any other exception
 // comes back as "UNEXPECTED ...", which no expectation matches.
-inline std::string loadError(const fs::path& path, const LoadOptions& options = {}) {
+inline std::string loadError(const fs::path& path, const assets::LoadOptions& options = {}) {
     try {
-        (void)loadGltf(path, options);
+        (void)assets::loadGltf(path, options);
     } catch (const UserError& e) {
         return e.what();
     } catch (const std::exception& e) {
@@ -299,4 +299,4 @@ inline std::string loadError(const fs::path& path, const LoadOptions& options = 
     return {};
 }
 
-}  // namespace candela::scene::test
+}  // namespace candela::assets::test

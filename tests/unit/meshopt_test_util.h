@@ -8,7 +8,7 @@
 
 #include <meshoptimizer.h>
 
-namespace candela::scene::test {
+namespace candela::assets::test {
 
 // One bufferView's data: `decoded` is what a loader must end up with; `filtered` what goes into
 // the codec (equal to `decoded` without a filter).
@@ -140,4 +140,4 @@ inline GltfBuilder meshoptQuad(bool compress) {
     return b;
 }
 
-}  // namespace candela::scene::test
+}  // namespace candela::assets::test

@@ -20,6 +20,7 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <set>
 #include <tuple>
 
@@ -65,8 +66,8 @@ protected:
               options::ShadingPath shadingPath = options::ShadingPath::Auto) {
         ui::ViewerContent content;
         content.settings.shadingPath = shadingPath;
-        content.scene = scene::makeSphereGrid();
-        if (environment) content.environment = std::make_unique<scene::Environment>(scene::makeProceduralSky());
+        content.scene = assets::makeSphereGrid();
+        if (environment) content.environment = std::make_unique<assets::Environment>(assets::makeProceduralSky());
         content.settings.ibl.skybox = environment;
         content.settings.tonemap.background = environment ? std::nullopt : std::optional(glm::vec3(0.02f));
         content.settings.iblQuality.cubeSize = 64;  // keeps the precompute short; the maps are not under test
@@ -74,13 +75,17 @@ protected:
         // As `candela view` does: every debug view's variants built in the background, while the
         // tests draw, edit parameters, reload shaders and replace the scene.
         content.settings.precompile = options::Precompile::DebugViews;
-        mViewer = std::make_unique<ui::Viewer>(
-            ui::ViewerDesc{.context = {.validation = true},
-                           .window = {.width = mWidth, .height = mHeight},
-                           .ui = ui,
-                           .shaderDir = shaderDir,
-                           .openPanels = mPanels},
-            std::move(content));
+        // As `candela view` does: the window system, then the device and renderer, then the viewer.
+        mWindowSystem.emplace();
+        vk::ContextDesc context{.validation = true};
+        mWindowSystem->addTo(context);
+        mContext.emplace(context);
+        mRenderer.emplace(*mContext, ui::Viewer::kRendererOptions);
+        mViewer = std::make_unique<ui::Viewer>(ui::ViewerDesc{.window = {.width = mWidth, .height = mHeight},
+                                                              .ui = ui,
+                                                              .shaderDir = shaderDir,
+                                                              .openPanels = mPanels},
+                                               std::move(content), *mContext, *mRenderer);
     }
     void TearDown() override {
         if (!mViewer) return;
@@ -160,6 +165,9 @@ protected:
     }
 
     test::TempDir mDir{"candela_viewer"};
+    std::optional<ui::WindowSystem> mWindowSystem;  // outlives the device, which outlives the viewer
+    std::optional<vk::Context> mContext;
+    std::optional<Renderer> mRenderer;
     std::unique_ptr<ui::Viewer> mViewer;
     uint32_t mWidth = 480, mHeight = 300;
     std::set<options::Panel> mPanels = options::kPanelsOpenByDefault;

@@ -1,5 +1,5 @@
 // Times reading OpenEXR environment maps through Candela's reader (OpenEXRCore header check +
-// OpenEXR C++ decode, scene::decodeExr) against tinyexr 1.0.1 (the reader it replaced,
+// OpenEXR C++ decode, assets::decodeExr) against tinyexr 1.0.1 (the reader it replaced,
 // LoadEXRFromMemory), alternating file by file within each round so that both see the same machine
 // state; prints the median of the rounds per file and the ratio. Both decode from memory to float;
 // file reading is not timed. No GPU.
@@ -58,7 +58,7 @@ std::vector<float> bigMap(uint32_t width, uint32_t height) {
 std::vector<Input> writeInputs(const fs::path& out, const std::vector<std::string>& hdrs) {
     std::vector<Input> inputs;
     for (const std::string& hdr : hdrs) {
-        const scene::Environment env = scene::loadEnvironment(hdr);
+        const assets::Environment env = assets::loadEnvironment(hdr);
         inputs.push_back({fs::path(hdr).stem().string() + ".exr",
                           test::makeExr(env.width, env.height, test::rgbChannels(env.rgb, test::ExrType::Half))});
     }
@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
                         throw std::runtime_error(inputs[i].name + ": tinyexr: " + (error ? error : "?"));
                     std::free(rgba);
                 }));
-                ours[i].push_back(milliseconds([&] { scene::decodeExr(bytes, inputs[i].name, {}); }));
+                ours[i].push_back(milliseconds([&] { assets::decodeExr(bytes, inputs[i].name, {}); }));
             }
         std::printf("| file | size | tinyexr 1.0.1 (ms) | Candela/OpenEXR 3.1 (ms) | OpenEXR / tinyexr |\n|---|---|---|---|---|\n");
         for (size_t i = 0; i < inputs.size(); ++i) {

@@ -18,7 +18,8 @@
 #include <string>
 #include <vector>
 
-using namespace candela::scene;
+using namespace candela;
+using scene::Scene;
 
 int main(int argc, char** argv) {
     if (argc < 2) {
@@ -27,9 +28,9 @@ int main(int argc, char** argv) {
     }
     const int frames = argc > 2 ? std::max(1, std::atoi(argv[2])) : 4000;
     try {
-        const Scene scene = loadGltf(argv[1]);
+        const Scene scene = assets::loadGltf(argv[1]);
         const std::vector<std::string> all{"all"};
-        ScenePose pose(scene, selectAnimations(scene, all));
+        pose::ScenePose pose(scene, pose::selectAnimations(scene, all));
         std::vector<uint8_t> flush(size_t(32) << 20);
         const auto run = [&](bool cold) {
             std::vector<double> us;

@@ -28,7 +28,7 @@ void appendWords(std::vector<uint32_t>& words, const T& value) {
 
 }  // namespace
 
-SkinMorphFrame skinMorphFrame(const scene::GpuScene& gpuScene, const scene::ScenePose& pose) {
+SkinMorphFrame skinMorphFrame(const gpu_scene::GpuScene& gpuScene, const pose::ScenePose& pose) {
     const scene::Scene& scene = gpuScene.scene();
     SkinMorphFrame out;
     out.vertexOffset.assign(pose.draws().size(), INT32_MIN);
@@ -45,7 +45,7 @@ SkinMorphFrame skinMorphFrame(const scene::GpuScene& gpuScene, const scene::Scen
                          .vertexCount = deformation.vertexCount,
                          .targetFirstVertex = out.vertexCount,
                          .recordWord = gpuScene.deformationWord(size_t(draw.deformation)),
-                         .recordWords = scene::deformationRecordWords(deformation),
+                         .recordWords = gpu_scene::deformationRecordWords(deformation),
                          .deltaWord = deformation.influencesPerVertex * CANDELA_INFLUENCE_WORDS,
                          .influencesPerVertex = draw.skin >= 0 ? deformation.influencesPerVertex : 0,
                          .jointWord = draw.skin >= 0 ? jointWord[size_t(draw.skin)] : 0,

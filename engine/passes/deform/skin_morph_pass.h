@@ -30,7 +30,7 @@ struct SkinMorphFrame {
     std::vector<int32_t> vertexOffset;
 };
 // Precondition: `pose` poses the scene `scene` was uploaded from.
-SkinMorphFrame skinMorphFrame(const scene::GpuScene& scene, const scene::ScenePose& pose);
+SkinMorphFrame skinMorphFrame(const gpu_scene::GpuScene& scene, const pose::ScenePose& pose);
 
 class SkinMorphPass {
 public:
@@ -39,7 +39,7 @@ public:
     explicit SkinMorphPass(vk::Context& context, const std::optional<SkinMorphLimits>& limits = std::nullopt);
 
     struct Inputs {
-        const scene::GpuScene* scene = nullptr;  // base vertices and deformation records (persistent)
+        const gpu_scene::GpuScene* scene = nullptr;  // base vertices and deformation records (persistent)
         std::vector<SkinMorphJob> jobs;          // one per deformed draw; disjoint target ranges
         uint32_t vertexCount = 0;                // of the deformed-vertex buffer: Σ jobs' vertexCount
         graph::BufferId frameData;               // this frame's joint matrices and non-zero weights, CPU-written

@@ -16,15 +16,15 @@ namespace {
 scene::LodLevel levelOf(const scene::Scene& scene, const scene::Draw& draw, const scene::ViewSetup& view, uint32_t height,
                         float maxPixels) {
     if (draw.lod < 0 || !(maxPixels > 0.0f)) return {draw.firstIndex, draw.indexCount, 0.0f};
-    float scale = scene::maxScale(draw.world);
+    float scale = geometry::maxScale(draw.world);
     if (draw.instanceCount > 0) {
         float instanceScale = 0.0f;
         for (uint32_t i = 0; i < draw.instanceCount; ++i)
-            instanceScale = std::max(instanceScale, scene::maxScale(scene.instances[draw.firstInstance + i]));
+            instanceScale = std::max(instanceScale, geometry::maxScale(scene.instances[draw.firstInstance + i]));
         scale *= instanceScale;
     }
     const scene::LodChain& chain = scene.lodChains[size_t(draw.lod)];
-    return chain.levels[scene::selectLod(chain, scale, scene::pixelsPerUnit(view, height, draw.bounds), maxPixels)];
+    return chain.levels[geometry::selectLod(chain, scale, geometry::pixelsPerUnit(view, height, draw.bounds), maxPixels)];
 }
 
 DrawRange rangeOf(const MaterialKey& key, bool transmission) {

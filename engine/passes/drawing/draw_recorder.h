@@ -35,7 +35,7 @@ struct DrawCall {
 // cull mode and front face and a push-constant block of sizeof(FramePush); `deformed` is valid if
 // any draw's vertexOffset is not kRestVertices; the hooks record no rendering begin or end.
 template <class PipelineBound, class MaterialSet>
-void recordDraws(const graph::PassContext& ctx, std::span<const DrawCall> draws, const scene::GpuScene& scene, VkBuffer deformed,
+void recordDraws(const graph::PassContext& ctx, std::span<const DrawCall> draws, const gpu_scene::GpuScene& scene, VkBuffer deformed,
                  shading::FramePush push, DrawStats* recorded, PipelineBound&& pipelineBound, MaterialSet&& materialSet) {
     DrawStats unused;
     DrawStats& stats = recorded ? *recorded : unused;

@@ -4,7 +4,7 @@ namespace candela::passes {
 
 using namespace graph;
 
-FrameInputs makeFrameInputs(const FrameInputsDesc& desc, const scene::GpuScene& scene) {
+FrameInputs makeFrameInputs(const FrameInputsDesc& desc, const gpu_scene::GpuScene& scene) {
     FrameInputs out;
     uint32_t lightTypes = 0;
     for (const shading::LightData& light : scene.lights()) lightTypes |= 1u << static_cast<uint32_t>(light.directionType.w);

@@ -89,7 +89,7 @@ struct FrameInputs {
 
 // The inputs of a frame of `desc` drawing `scene`. The push constants hold the view, the light
 // count and the IBL parameters (the user's edits are applied by the caller).
-FrameInputs makeFrameInputs(const FrameInputsDesc& desc, const scene::GpuScene& scene);
+FrameInputs makeFrameInputs(const FrameInputsDesc& desc, const gpu_scene::GpuScene& scene);
 
 // Which of the frame's per-frame buffers a pass reads and in which shader stages (0: the pass
 // type's default stages).

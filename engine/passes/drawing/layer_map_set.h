@@ -19,7 +19,7 @@ namespace candela::passes {
 
 // The layer maps of one frame (invalid handles: not in this frame).
 struct LayerMaps {
-    graph::TextureId sheenLut;   // R32F E(N·V, sheen roughness) (ibl::SheenLut)
+    graph::TextureId sheenLut;   // R32F E(N·V, sheen roughness) (ibl_maps::SheenLut)
     graph::TextureId sheenCube;  // RGBA16F cube, mip m Charlie-prefiltered at sheen roughness m / (levels − 1)
     graph::TextureId transmission;  // RGBA16F, the opaque image with its box-filtered mips (TransmissionBackgroundPass)
 };

@@ -5,7 +5,7 @@
 
 namespace candela::passes {
 
-SceneBuffers sceneBuffersOf(const scene::GpuScene& scene) {
+SceneBuffers sceneBuffersOf(const gpu_scene::GpuScene& scene) {
     return {.lights = scene.lightBuffer(), .draws = scene.drawBuffer(), .materials = scene.materialBuffer()};
 }
 
@@ -20,7 +20,7 @@ VkDescriptorSet writeSceneSet(vk::Context& context, vk::DescriptorAllocator& all
     return writer.commit(context, allocator);
 }
 
-VkDescriptorSet frameSceneSet(const graph::PassContext& ctx, const vk::Program& program, const scene::GpuScene& scene,
+VkDescriptorSet frameSceneSet(const graph::PassContext& ctx, const vk::Program& program, const gpu_scene::GpuScene& scene,
                               const PosedBuffers& declared, VkDescriptorSet sceneSet) {
     const auto posed = [&](graph::BufferId buffer, std::string_view block) { return buffer.valid() && program.declares(0, block); };
     if (!posed(declared.lights, SceneBlock<shading::LightData>::name) && !posed(declared.draws, SceneBlock<shading::DrawData>::name) &&
@@ -34,10 +34,10 @@ VkDescriptorSet frameSceneSet(const graph::PassContext& ctx, const vk::Program& 
 }
 
 VkDescriptorSet writeMaterialSet(vk::Context& context, vk::DescriptorAllocator& allocator, const vk::Program& program,
-                                 const scene::GpuScene& scene, uint32_t material, VkBuffer layers) {
+                                 const gpu_scene::GpuScene& scene, uint32_t material, VkBuffer layers) {
     vk::DescriptorWriter writer(program, 1);
     for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
-        const scene::GpuScene::Binding b = scene.texture(material, slot);
+        const gpu_scene::GpuScene::Binding b = scene.texture(material, slot);
         writer.image(scene::kCoreTextureSlots[slot].sampler, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
     }
     if (layers != VK_NULL_HANDLE) {
@@ -46,14 +46,14 @@ VkDescriptorSet writeMaterialSet(vk::Context& context, vk::DescriptorAllocator& 
         for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) {
             const char* name = scene::kLayerTextureSlots[slot].sampler;
             if (!program.declares(1, name)) continue;
-            const scene::GpuScene::Binding b = scene.layerTexture(material, slot);
+            const gpu_scene::GpuScene::Binding b = scene.layerTexture(material, slot);
             writer.image(name, b.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler);
         }
     }
     return writer.commit(context, allocator);
 }
 
-PosedMaterialSets::PosedMaterialSets(const graph::PassContext& ctx, const scene::GpuScene& scene, graph::BufferId declaredLayers,
+PosedMaterialSets::PosedMaterialSets(const graph::PassContext& ctx, const gpu_scene::GpuScene& scene, graph::BufferId declaredLayers,
                                      size_t slots)
     : mCtx(ctx), mScene(scene), mLayers(declaredLayers), mSets(declaredLayers.valid() ? slots : 0, VK_NULL_HANDLE) {}
 

@@ -25,7 +25,7 @@ struct SceneBuffers {
     VkBuffer materials = VK_NULL_HANDLE;
 };
 // The scene's own buffers.
-SceneBuffers sceneBuffersOf(const scene::GpuScene& scene);
+SceneBuffers sceneBuffersOf(const gpu_scene::GpuScene& scene);
 
 // Writes set 0 of `program`: each scene block the program declares, naming `buffers`' one. The set
 // comes from `allocator` and lives as long as it does.
@@ -35,7 +35,7 @@ VkDescriptorSet writeSceneSet(vk::Context& context, vk::DescriptorAllocator& all
 // Set 0 of `program` in a pass's execute callback: `sceneSet` (written for the scene's own buffers)
 // unless the frame has a posed buffer among those `declared` (declareFrameReads) that the program
 // reads; then a set naming it, from the frame's descriptor pool.
-VkDescriptorSet frameSceneSet(const graph::PassContext& ctx, const vk::Program& program, const scene::GpuScene& scene,
+VkDescriptorSet frameSceneSet(const graph::PassContext& ctx, const vk::Program& program, const gpu_scene::GpuScene& scene,
                               const PosedBuffers& declared, VkDescriptorSet sceneSet);
 
 // The frame's deformed vertices as `declared` (declareFrameReads) resolve them in a pass's execute
@@ -49,7 +49,7 @@ inline VkBuffer deformedBuffer(const graph::PassContext& ctx, const DeclaredFram
 // the program declares (a program specialized to the material's layers declares only theirs).
 // The set comes from `allocator` and lives as long as it does.
 VkDescriptorSet writeMaterialSet(vk::Context& context, vk::DescriptorAllocator& allocator, const vk::Program& program,
-                                 const scene::GpuScene& scene, uint32_t material, VkBuffer layers);
+                                 const gpu_scene::GpuScene& scene, uint32_t material, VkBuffer layers);
 
 // Within one pass's execute callback: the layered materials' sets 1 naming the frame's posed layer
 // parameters, written at first use, one per slot (a material, or a texture set). Without posed
@@ -58,14 +58,14 @@ class PosedMaterialSets {
 public:
     // `declaredLayers`: the posed material layers as the pass declared them (invalid: none);
     // `slots`: how many sets the pass indexes. Preconditions: the arguments outlive this object.
-    PosedMaterialSets(const graph::PassContext& ctx, const scene::GpuScene& scene, graph::BufferId declaredLayers, size_t slots);
+    PosedMaterialSets(const graph::PassContext& ctx, const gpu_scene::GpuScene& scene, graph::BufferId declaredLayers, size_t slots);
     // `sceneSet` unless `layered` and the frame has posed layer data; then set 1 of `program` for
     // `material`, naming the frame's buffer, written once for `slot`.
     VkDescriptorSet get(size_t slot, bool layered, const vk::Program& program, uint32_t material, VkDescriptorSet sceneSet);
 
 private:
     const graph::PassContext& mCtx;
-    const scene::GpuScene& mScene;
+    const gpu_scene::GpuScene& mScene;
     graph::BufferId mLayers;
     std::vector<VkDescriptorSet> mSets;
 };

@@ -111,7 +111,7 @@ const shader::ShaderReflection* ForwardPass::layeredReflection() {
     return nullptr;
 }
 
-void ForwardPass::setScene(const scene::GpuScene& gpuScene, const MaterialKeys& keys) {
+void ForwardPass::setScene(const gpu_scene::GpuScene& gpuScene, const MaterialKeys& keys) {
     mScene = &gpuScene;
     mKeys = &keys;
     mPrepared.reset();  // other keys: their variants are not queued yet

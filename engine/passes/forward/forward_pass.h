@@ -44,7 +44,7 @@ public:
     // no graph resource.
     // Call once per GpuScene; `keys` are its materials' (MaterialKeys::of). Preconditions: the GPU no
     // longer uses the previous scene's sets; `scene` and `keys` outlive their use by this pass.
-    void setScene(const scene::GpuScene& scene, const MaterialKeys& keys);
+    void setScene(const gpu_scene::GpuScene& scene, const MaterialKeys& keys);
 
     // Adds "forward": clears new targets of `size` and draws the list's opaque and masked ranges,
     // then its blended one unless the list has transmissive draws (addTransmissive draws those).
@@ -111,7 +111,7 @@ private:
     std::optional<vk::Program> mCoreProgram;
     IblSet mIblSet;
     LayerMapSet mLayerSet;
-    const scene::GpuScene* mScene = nullptr;
+    const gpu_scene::GpuScene* mScene = nullptr;
     const MaterialKeys* mKeys = nullptr;
     std::unique_ptr<vk::DescriptorAllocator> mSets;
     VkDescriptorSet mSceneSet = VK_NULL_HANDLE;

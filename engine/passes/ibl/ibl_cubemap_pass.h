@@ -29,7 +29,7 @@ public:
         float cubeScale = 1.0f;
         float equirectScale = 1.0f;  // halfFloatScale of the environment
         // The float cube's source texels are clamped to this luminance, in the equirect's units
-        // (radiance × equirectScale): ibl::BrightTexels::threshold. Infinity: none.
+        // (radiance × equirectScale): ibl_maps::BrightTexels::threshold. Infinity: none.
         float clampLuminance = std::numeric_limits<float>::infinity();
     };
     struct Outputs {

@@ -1,6 +1,6 @@
 #pragma once
 // The image-based-lighting maps as one frame's graph knows them: handles of the imported maps (or,
-// in a frame that computes them, of the versions its precompute passes write). ibl::IblMaps makes
+// in a frame that computes them, of the versions its precompute passes write). ibl_maps::IblMaps makes
 // them (IblMaps::addToGraph); the forward and skybox passes declare reads of the ones they use and
 // resolve them through their PassContext, so a map replaced between frames is never bound stale.
 

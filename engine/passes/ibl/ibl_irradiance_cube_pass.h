@@ -24,7 +24,7 @@ public:
         // RGBA16F cube, one mip, contents discarded; an imported one needs its mip view bound.
         graph::TextureId irradiance;
         float sourceScale = 1.0f;  // the source holds radiance × sourceScale (IblCubemapPass::Inputs::cubeScale)
-        graph::BufferId bright;    // the texels the source was clamped at (ibl::BrightTexels::buffer)
+        graph::BufferId bright;    // the texels the source was clamped at (ibl_maps::BrightTexels::buffer)
     };
     // Adds the pass; returns the irradiance cube's new version. The pass object must outlive execution.
     graph::TextureId add(graph::RenderGraph& graph, const Inputs& inputs) const;

@@ -18,7 +18,7 @@ public:
         uint32_t projectedFaceSize;  // face size of the mip projected (a power of two ≤ sourceFaceSize)
         graph::BufferId coefficients;  // ≥ kBytes, storage usage; contents discarded
         float sourceScale = 1.0f;      // the source holds radiance × sourceScale (IblCubemapPass::Inputs::cubeScale)
-        graph::BufferId bright;        // the texels the source was clamped at (ibl::BrightTexels::buffer)
+        graph::BufferId bright;        // the texels the source was clamped at (ibl_maps::BrightTexels::buffer)
     };
     // Adds the pass; returns the buffer's new version. The pass object must outlive execution.
     graph::BufferId add(graph::RenderGraph& graph, const Inputs& inputs) const;

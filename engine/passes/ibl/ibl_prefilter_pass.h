@@ -35,7 +35,7 @@ public:
         // mip views bound.
         graph::TextureId specular;
         float sourceScale = 1.0f;  // the source holds radiance × sourceScale (IblCubemapPass::Inputs::cubeScale)
-        // The texels the source was clamped at (ibl::BrightTexels::buffer, storage): added per texel
+        // The texels the source was clamped at (ibl_maps::BrightTexels::buffer, storage): added per texel
         // with the lobe of each mip.
         graph::BufferId bright;
     };

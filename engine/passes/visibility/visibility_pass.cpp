@@ -36,7 +36,7 @@ const vk::Pipeline& VisibilityPass::pipeline(const Variant& v) {
     });
 }
 
-void VisibilityPass::setScene(const scene::GpuScene& scene, const TextureSets& sets) {
+void VisibilityPass::setScene(const gpu_scene::GpuScene& scene, const TextureSets& sets) {
     mScene = &scene;
     mTextureSets = &sets;
     mSets = std::make_unique<vk::DescriptorAllocator>(mContext, 4);
@@ -50,7 +50,7 @@ void VisibilityPass::setScene(const scene::GpuScene& scene, const TextureSets& s
     mMaskedSceneSet = writeSceneSet(mContext, *mSets, masked, sceneBuffersOf(scene));
     mBaseColorSets.clear();
     for (uint32_t material : sets.firstMaterial) {
-        const scene::GpuScene::Binding b = scene.texture(material, CANDELA_TEX_BASE_COLOR);
+        const gpu_scene::GpuScene::Binding b = scene.texture(material, CANDELA_TEX_BASE_COLOR);
         mBaseColorSets.push_back(vk::DescriptorWriter(masked, 1)
                                      .image(scene::kCoreTextureSlots[CANDELA_TEX_BASE_COLOR].sampler, b.view,
                                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, b.sampler)

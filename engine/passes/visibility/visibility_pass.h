@@ -34,7 +34,7 @@ public:
     // Writes the scene's descriptor sets (draws, materials; the base colour texture of each of its
     // texture sets, for masked draws). Preconditions: the GPU no longer uses the previous scene's
     // sets; `scene` and `sets` (the scene's, textureSetsOf) outlive their use.
-    void setScene(const scene::GpuScene& scene, const TextureSets& sets);
+    void setScene(const gpu_scene::GpuScene& scene, const TextureSets& sets);
 
     // Adds "visibility": clears new targets of `size` and draws `items` (opaque, then masked) with
     // `frame`'s view, pose and deformed vertices, through the draw recorder (draw_recorder.h).
@@ -52,7 +52,7 @@ private:
 
     vk::Context& mContext;
     vk::PipelineCache<Variant> mPipelines;
-    const scene::GpuScene* mScene = nullptr;
+    const gpu_scene::GpuScene* mScene = nullptr;
     const TextureSets* mTextureSets = nullptr;
     std::unique_ptr<vk::DescriptorAllocator> mSets;
     VkDescriptorSet mOpaqueSceneSet = VK_NULL_HANDLE, mMaskedSceneSet = VK_NULL_HANDLE;

@@ -50,7 +50,7 @@ const vk::Pipeline& VisibilityShadePass::pipeline(const ShadeKey& key) {
     });
 }
 
-void VisibilityShadePass::setScene(const scene::GpuScene& scene, const MaterialKeys& keys, const TextureSets& sets) {
+void VisibilityShadePass::setScene(const gpu_scene::GpuScene& scene, const MaterialKeys& keys, const TextureSets& sets) {
     mScene = &scene;
     mTextureSets = &sets;
     mSets = std::make_unique<vk::DescriptorAllocator>(mContext, 4);

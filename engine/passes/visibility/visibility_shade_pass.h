@@ -35,7 +35,7 @@ public:
     // and, where a material of it has layers, the layer parameters and textures: scene_bindings.h).
     // Preconditions: the GPU no longer uses the previous scene's sets; `scene`, `keys` and `sets`
     // (the scene's) outlive their use.
-    void setScene(const scene::GpuScene& scene, const MaterialKeys& keys, const TextureSets& sets);
+    void setScene(const gpu_scene::GpuScene& scene, const MaterialKeys& keys, const TextureSets& sets);
 
     struct Inputs {
         graph::TextureId visibility;  // VisibilityPass's, at the frame's sample count
@@ -76,7 +76,7 @@ private:
     LayerMapSet mLayerSet;
     vk::Sampler mNearest;
     std::optional<vk::Program> mCoreProgram, mLayeredProgram;
-    const scene::GpuScene* mScene = nullptr;
+    const gpu_scene::GpuScene* mScene = nullptr;
     std::unique_ptr<vk::DescriptorAllocator> mSets;
     VkDescriptorSet mSceneSet = VK_NULL_HANDLE;
     // Set 1 per texture set, of the core and the layered program (null where no material of the

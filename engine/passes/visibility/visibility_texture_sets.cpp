@@ -4,7 +4,7 @@
 
 namespace candela::passes {
 
-TextureSets textureSetsOf(const scene::GpuScene& scene) {
+TextureSets textureSetsOf(const gpu_scene::GpuScene& scene) {
     TextureSets out;
     using Slots = std::vector<std::pair<VkImageView, VkSampler>>;
     std::map<Slots, uint32_t> index;
@@ -12,11 +12,11 @@ TextureSets textureSetsOf(const scene::GpuScene& scene) {
     for (uint32_t material = 0; material < materials; ++material) {
         Slots slots;
         for (int slot = 0; slot < CANDELA_TEX_COUNT; ++slot) {
-            const scene::GpuScene::Binding b = scene.texture(material, slot);
+            const gpu_scene::GpuScene::Binding b = scene.texture(material, slot);
             slots.emplace_back(b.view, b.sampler);
         }
         for (int slot = 0; slot < CANDELA_LAYER_TEX_COUNT; ++slot) {
-            const scene::GpuScene::Binding b = scene.layerTexture(material, slot);
+            const gpu_scene::GpuScene::Binding b = scene.layerTexture(material, slot);
             slots.emplace_back(b.view, b.sampler);
         }
         const auto [it, added] = index.try_emplace(std::move(slots), static_cast<uint32_t>(out.firstMaterial.size()));

@@ -25,6 +25,6 @@ struct TextureSets {
 };
 
 // The texture sets of `scene`'s materials, numbered in material order.
-TextureSets textureSetsOf(const scene::GpuScene& scene);
+TextureSets textureSetsOf(const gpu_scene::GpuScene& scene);
 
 }  // namespace candela::passes

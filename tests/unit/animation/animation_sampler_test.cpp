@@ -10,7 +10,7 @@
 #include <cmath>
 #include <vector>
 
-namespace candela::scene {
+namespace candela::animation {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -231,4 +231,4 @@ TEST(AnimationSampler, PlainValuesInterpolatePerComponent) {
 }
 
 }  // namespace
-}  // namespace candela::scene
+}  // namespace candela::animation

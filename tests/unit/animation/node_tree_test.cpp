@@ -11,7 +11,7 @@
 #include <cmath>
 #include <numeric>
 
-namespace candela::scene::node_tree_test {
+namespace candela::animation::node_tree_test {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -111,4 +111,4 @@ TEST(NodeTree, ChannelsWriteTransformsAndWeights) {
 }
 
 }  // namespace
-}  // namespace candela::scene::node_tree_test
+}  // namespace candela::animation::node_tree_test

@@ -8,7 +8,7 @@
 #include <functional>
 #include <random>
 
-namespace candela::scene::test::environment_bad_input_test {
+namespace candela::assets::test::environment_bad_input_test {
 namespace {
 
 constexpr uint32_t kWidth = 40, kHeight = 5;
@@ -20,14 +20,14 @@ struct BadCase {
     EnvironmentLoadOptions options = {};
 };
 
-Bytes validHdr(Scanlines scanlines = Scanlines::Rle) {
+assets::test::Bytes validHdr(Scanlines scanlines = Scanlines::Rle) {
     HdrWriter writer;
     writer.scanlines = scanlines;
     return writer.write(testTexels(kWidth, kHeight), kWidth, kHeight);
 }
 
 // A valid header for a W×H image followed by `data`.
-Bytes hdrWithData(const std::string& resolution, const Bytes& data, const std::string& lines = "FORMAT=32-bit_rle_rgbe\n") {
+assets::test::Bytes hdrWithData(const std::string& resolution, const Bytes& data, const std::string& lines = "FORMAT=32-bit_rle_rgbe\n") {
     Bytes bytes = toBytes("#?RADIANCE\n" + lines + "\n" + resolution + "\n");
     bytes.insert(bytes.end(), data.begin(), data.end());
     return bytes;
@@ -38,7 +38,7 @@ size_t headerSize(const Bytes& hdr) {
     return text.find("+X") + text.substr(text.find("+X")).find('\n') + 1;
 }
 
-Bytes validExr(Imf::Compression compression = Imf::ZIP_COMPRESSION) {
+assets::test::Bytes validExr(Imf::Compression compression = Imf::ZIP_COMPRESSION) {
     std::vector<float> rgb;
     for (uint32_t i = 0; i < 16 * 8; ++i) rgb.insert(rgb.end(), {float(i), 0.5f * float(i % 7), 2.0f});
     return makeExr(16, 8, rgbChannels(rgb, ExrType::Half), {compression});
@@ -58,7 +58,7 @@ void setI32(Bytes& bytes, size_t at, int32_t v) {
 
 // validExr() with one int32 of a window attribute (dataWindow or displayWindow: xMin, yMin, xMax,
 // yMax at byte offsets 0, 4, 8, 12 of its value) set to `v`.
-Bytes exrWithWindowValue(const std::string& window, size_t offset, int32_t v) {
+assets::test::Bytes exrWithWindowValue(const std::string& window, size_t offset, int32_t v) {
     Bytes b = validExr();
     setI32(b, exrAttribute(b, window, "box2i") + offset, v);
     return b;
@@ -71,7 +71,7 @@ std::function<fs::path(const fs::path&)> file(const std::string& name, std::func
     };
 }
 
-Bytes garbage(size_t size, uint32_t seed) {
+assets::test::Bytes garbage(size_t size, uint32_t seed) {
     std::mt19937 rng(seed);
     Bytes bytes(size);
     for (uint8_t& b : bytes) b = uint8_t(rng());
@@ -194,11 +194,11 @@ std::vector<BadCase> badCases() {
     // The display window is the picture we allocate: held to the same limits.
     exr("ExrHugeDisplayWindow", [] { return exrWithWindowValue("displayWindow", 8, 99999); }, "image size 100000x8 exceeds the limit 16384x8192");
     exr("ExrInvertedDisplayWindow", [] { return exrWithWindowValue("displayWindow", 12, -3); }, "display window");
-    exr("ExrNoRgb", [] { return makeExr(4, 2, {{"Z", ExrType::Float, std::vector<float>(8, 1.0f)}}); }, "no R, G, B (or Y) channels");
+    exr("ExrNoRgb", [] { return test::makeExr(4, 2, {{"Z", test::ExrType::Float, std::vector<float>(8, 1.0f)}}); }, "no R, G, B (or Y) channels");
     exr("ExrUintRed", [] {
-            std::vector<ExrChannel> channels = rgbChannels(std::vector<float>(24, 1.0f), ExrType::Float);
-            channels[0].type = ExrType::Uint;
-            return makeExr(4, 2, channels);
+            std::vector<test::ExrChannel> channels = test::rgbChannels(std::vector<float>(24, 1.0f), test::ExrType::Float);
+            channels[0].type = test::ExrType::Uint;
+            return test::makeExr(4, 2, channels);
         }, "channel R is UINT; only HALF and FLOAT are supported");
     exr("ExrGarbagePixels", [] {
             Bytes b = validExr();
@@ -264,7 +264,7 @@ TEST(EnvironmentFuzz, TiledExrTruncatedAtEveryOffset) {
     // loads: only level 0 is read.)
     std::vector<float> rgb;
     for (uint32_t i = 0; i < 16 * 8; ++i) rgb.insert(rgb.end(), {float(i), 0.5f * float(i % 7), 2.0f});
-    expectEveryTruncationFails(makeExr(16, 8, rgbChannels(rgb, ExrType::Float), {Imf::PIZ_COMPRESSION, true, 4}), "tiled.exr");
+    expectEveryTruncationFails(test::makeExr(16, 8, test::rgbChannels(rgb, test::ExrType::Float), {Imf::PIZ_COMPRESSION, true, 4}), "tiled.exr");
 }
 
 // Random byte changes (1–8 per file, seeded): each file loads or fails with one line.
@@ -295,4 +295,4 @@ TEST(EnvironmentFuzz, ExrRandomMutations) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test::environment_bad_input_test
+}  // namespace candela::assets::test::environment_bad_input_test

@@ -6,7 +6,7 @@
 #include <iostream>
 #include <limits>
 
-namespace candela::scene::test::environment_test {
+namespace candela::assets::test::environment_test {
 namespace {
 
 std::vector<fs::path> sharedMaps() {
@@ -115,4 +115,4 @@ TEST(EnvironmentHash, SharedMapsHashDistinctly) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test::environment_test
+}  // namespace candela::assets::test::environment_test

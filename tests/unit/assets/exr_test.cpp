@@ -9,7 +9,7 @@
 
 #include <limits>
 
-namespace candela::scene::test {
+namespace candela::assets::test {
 namespace {
 
 // Interleaved RGB test texels, all exact in half precision (11-bit significands).
@@ -40,7 +40,7 @@ TEST(ExrRoundTrip, FloatRgbEveryCompression) {
         if (compression == Imf::DWAA_COMPRESSION || compression == Imf::DWAB_COMPRESSION) continue;
         SCOPED_TRACE("compression " + candela::test::compressionName(compression));
         EnvTempDir dir;
-        const Environment env = loadBytes(dir, makeExr(width, height, rgbChannels(rgb, ExrType::Float), {compression}));
+        const Environment env = loadBytes(dir, test::makeExr(width, height, test::rgbChannels(rgb, test::ExrType::Float), {compression}));
         ASSERT_EQ(env.width, width);
         ASSERT_EQ(env.height, height);
         if (compression == Imf::PXR24_COMPRESSION) {
@@ -61,7 +61,7 @@ TEST(ExrRoundTrip, HalfRgbEveryCompression) {
     for (Imf::Compression compression : candela::test::kExrCompressions) {
         SCOPED_TRACE("compression " + candela::test::compressionName(compression));
         EnvTempDir dir;
-        const Environment env = loadBytes(dir, makeExr(width, height, rgbChannels(rgb, ExrType::Half), {compression}));
+        const Environment env = loadBytes(dir, test::makeExr(width, height, test::rgbChannels(rgb, test::ExrType::Half), {compression}));
         ASSERT_EQ(env.rgb.size(), rgb.size());
         if (!lossy(compression)) {
             EXPECT_EQ(env.rgb, rgb);
@@ -78,7 +78,7 @@ TEST(ExrRoundTrip, HalfRgbaIgnoresAlpha) {
     const uint32_t width = 64, height = 32;
     const std::vector<float> rgb = halfExactRgb(width, height);
     EnvTempDir dir;
-    const Environment env = loadBytes(dir, makeExr(width, height, rgbChannels(rgb, ExrType::Half, /*alpha=*/true)));
+    const Environment env = loadBytes(dir, test::makeExr(width, height, test::rgbChannels(rgb, test::ExrType::Half, /*alpha=*/true)));
     EXPECT_EQ(env.rgb, rgb);
     EXPECT_TRUE(env.report.warnings.empty());
 }
@@ -92,7 +92,7 @@ TEST(ExrRoundTrip, TiledEveryLevelModeAndPartialTiles) {
             SCOPED_TRACE("levels " + std::to_string(int(levels)) + ", " + candela::test::compressionName(compression));
             EnvTempDir dir;
             const Environment env =
-                loadBytes(dir, makeExr(width, height, rgbChannels(rgb, ExrType::Float), {compression, true, 8, levels}));
+                loadBytes(dir, test::makeExr(width, height, test::rgbChannels(rgb, test::ExrType::Float), {compression, true, 8, levels}));
             ASSERT_EQ(env.width, width);
             ASSERT_EQ(env.height, height);
             EXPECT_EQ(env.rgb, rgb);
@@ -100,13 +100,13 @@ TEST(ExrRoundTrip, TiledEveryLevelModeAndPartialTiles) {
 }
 
 TEST(ExrRoundTrip, WriteExrHalfRgba) {
-    // What `--out frame.exr` writes (io::writeExr: half RGBA, ZIP) reads back exactly.
+    // What `--out frame.exr` writes (assets::writeExr: half RGBA, ZIP) reads back exactly.
     const uint32_t width = 16, height = 8;
     const std::vector<float> rgb = halfExactRgb(width, height);
     std::vector<float> rgba;
     for (size_t i = 0; i < rgb.size(); i += 3) rgba.insert(rgba.end(), {rgb[i], rgb[i + 1], rgb[i + 2], 0.25f});
     EnvTempDir dir;
-    io::writeExr(dir / "s.exr", width, height, rgba);
+    assets::writeExr(dir / "s.exr", width, height, rgba);
     const Environment env = loadEnvironment(dir / "s.exr");
     EXPECT_EQ(env.rgb, rgb);
     EXPECT_TRUE(env.report.warnings.empty());
@@ -119,7 +119,7 @@ TEST(ExrWindows, DisplayWindowIsThePictureDataOutsideIsCroppedMissingIsBlack) {
     std::vector<float> rgb;
     for (uint32_t y = 0; y < height; ++y)
         for (uint32_t x = 0; x < width; ++x) rgb.insert(rgb.end(), {float(x), float(y), 1.0f});
-    ExrLayout layout;
+    test::ExrLayout layout;
     layout.dataX = -2;
     layout.dataY = 3;
     layout.display = Imath::Box2i({0, 2}, {7, 5});
@@ -128,7 +128,7 @@ TEST(ExrWindows, DisplayWindowIsThePictureDataOutsideIsCroppedMissingIsBlack) {
         layout.tiled = tiled;
         layout.tileSize = 4;
         EnvTempDir dir;
-        const Environment env = loadBytes(dir, makeExr(width, height, rgbChannels(rgb, ExrType::Float), layout));
+        const Environment env = loadBytes(dir, test::makeExr(width, height, test::rgbChannels(rgb, test::ExrType::Float), layout));
         ASSERT_EQ(env.width, 8u);
         ASSERT_EQ(env.height, 4u);
         for (uint32_t x = 0; x < 8; ++x) EXPECT_EQ(env.texel(x, 0)[2], 0.0f) << "display row 2 has no data";
@@ -151,7 +151,7 @@ TEST(ExrWindows, DataWindowInsideTheDisplayWindowIsDecodedInPlace) {
     const uint32_t width = 4, height = 2;
     std::vector<float> y(width * height);
     for (size_t i = 0; i < y.size(); ++i) y[i] = 1.0f + float(i);
-    ExrLayout layout;
+    test::ExrLayout layout;
     layout.dataX = 2;
     layout.dataY = 1;
     layout.display = Imath::Box2i({0, 0}, {7, 3});
@@ -161,7 +161,7 @@ TEST(ExrWindows, DataWindowInsideTheDisplayWindowIsDecodedInPlace) {
         for (float v : y) rgb.insert(rgb.end(), {v, 2.0f * v, 3.0f * v});
         EnvTempDir dir;
         const Environment env = loadBytes(
-            dir, makeExr(width, height, grey ? std::vector<ExrChannel>{{"Y", ExrType::Half, y}} : rgbChannels(rgb, ExrType::Float), layout));
+            dir, test::makeExr(width, height, grey ? std::vector<test::ExrChannel>{{"Y", test::ExrType::Half, y}} : rgbChannels(rgb, ExrType::Float), layout));
         ASSERT_EQ(env.width, 8u);
         ASSERT_EQ(env.height, 4u);
         for (uint32_t py = 0; py < 4; ++py)
@@ -181,12 +181,12 @@ TEST(ExrParts, FirstColourPartIsUsedWithANote) {
     const uint32_t width = 8, height = 4;
     const std::vector<float> rgb = halfExactRgb(width, height);
     const std::vector<float> depth(width * height, 3.0f);
-    ExrPart z{"depth", width, height, {{"Z", ExrType::Float, depth}}, {}, false};
+    test::ExrPart z{"depth", width, height, {{"Z", ExrType::Float, depth}}, {}, false};
     ExrPart deep{"samples", width, height, rgbChannels(rgb, ExrType::Float), {Imf::ZIPS_COMPRESSION}, true};
     ExrPart colour{"beauty", width, height, rgbChannels(rgb, ExrType::Half), {Imf::PIZ_COMPRESSION, true, 4}, false};
     ExrPart other{"other", width, height, rgbChannels(std::vector<float>(rgb.size(), 9.0f), ExrType::Half), {}, false};
     EnvTempDir dir;
-    const Environment env = loadBytes(dir, makeExrParts({z, deep, colour, other}));
+    const Environment env = loadBytes(dir, test::makeExrParts({z, deep, colour, other}));
     EXPECT_EQ(env.rgb, rgb);
     EXPECT_TRUE(env.report.warnings.empty());
     EXPECT_EQ(env.report.notes, std::vector<std::string>{(dir / "map.exr").string() + ": 4-part EXR: part 2 'beauty' used (the first with R, G, B)"});
@@ -195,11 +195,11 @@ TEST(ExrParts, FirstColourPartIsUsedWithANote) {
 TEST(ExrParts, DeepOnlyIsRefusedInOneLine) {
     const uint32_t width = 8, height = 4;
     EnvTempDir dir;
-    ExrPart deep{"samples", width, height, rgbChannels(halfExactRgb(width, height), ExrType::Float), {Imf::RLE_COMPRESSION}, true};
+    test::ExrPart deep{"samples", width, height, rgbChannels(halfExactRgb(width, height), ExrType::Float), {Imf::RLE_COMPRESSION}, true};
     ExrPart second = deep;
     second.name = "more samples";
     for (const std::vector<ExrPart>& parts : {std::vector<ExrPart>{deep}, std::vector<ExrPart>{deep, second}}) {
-        writeBytes(dir / "deep.exr", makeExrParts(parts));
+        writeBytes(dir / "deep.exr", test::makeExrParts(parts));
         try {
             loadEnvironment(dir / "deep.exr");
             ADD_FAILURE() << "a deep file loaded";
@@ -216,15 +216,15 @@ TEST(ExrRoundTrip, GreyYChannelAndExtraChannels) {
     std::vector<float> y(width * height), depth(width * height, 7.0f);
     for (size_t i = 0; i < y.size(); ++i) y[i] = float(i) * 0.5f;
     EnvTempDir dir;
-    const Environment grey = loadBytes(dir, makeExr(width, height, {{"Y", ExrType::Half, y}}), "y.exr");
+    const Environment grey = loadBytes(dir, test::makeExr(width, height, {{"Y", test::ExrType::Half, y}}), "y.exr");
     for (size_t i = 0; i < y.size(); ++i)
         for (size_t c = 0; c < 3; ++c) ASSERT_EQ(grey.rgb[i * 3 + c], y[i]);
 
     // RGB wins over Y; unrelated channels (even UINT ones) are ignored.
-    std::vector<ExrChannel> channels = rgbChannels(halfExactRgb(width, height), ExrType::Float);
-    channels.push_back({"Y", ExrType::Float, y});
-    channels.push_back({"Z", ExrType::Float, depth});
-    channels.push_back({"id", ExrType::Uint, depth});
+    std::vector<test::ExrChannel> channels = test::rgbChannels(halfExactRgb(width, height), test::ExrType::Float);
+    channels.push_back({"Y", test::ExrType::Float, y});
+    channels.push_back({"Z", test::ExrType::Float, depth});
+    channels.push_back({"id", test::ExrType::Uint, depth});
     const Environment env = loadBytes(dir, makeExr(width, height, channels), "rgbyz.exr");
     EXPECT_EQ(env.rgb, halfExactRgb(width, height));
 }
@@ -242,7 +242,7 @@ TEST(ExrSanitize, NanInfAndNegativeTexelsAreReplacedAndCounted) {
     set(5, -0.0f, 0.5f, 0.5f);    // −0 is not negative: not counted, becomes +0
     set(6, 100000.0f, 0.5f, 0.5f);  // the brightest finite value (above the half maximum)
     EnvTempDir dir;
-    const Environment env = loadBytes(dir, makeExr(width, height, rgbChannels(rgb, ExrType::Float)));
+    const Environment env = loadBytes(dir, test::makeExr(width, height, test::rgbChannels(rgb, test::ExrType::Float)));
     EXPECT_EQ(env.replacedTexels, 5u);
     auto texel = [&](uint32_t i) { return std::array<float, 3>{env.rgb[i * 3], env.rgb[i * 3 + 1], env.rgb[i * 3 + 2]}; };
     EXPECT_EQ(texel(0), (std::array<float, 3>{0.0f, 0.5f, 0.5f}));
@@ -266,7 +266,7 @@ TEST(ExrSanitize, OverflowedHalfBecomesTheHalfMaximum) {
     std::vector<float> rgb(width * height * 3, 1.0f);
     rgb[3] = 1e6f;
     EnvTempDir dir;
-    const Environment env = loadBytes(dir, makeExr(width, height, rgbChannels(rgb, ExrType::Half)));
+    const Environment env = loadBytes(dir, test::makeExr(width, height, test::rgbChannels(rgb, test::ExrType::Half)));
     EXPECT_EQ(env.replacedTexels, 1u);
     EXPECT_EQ(env.rgb[3], 65504.0f);
     ASSERT_FALSE(env.report.warnings.empty());
@@ -274,4 +274,4 @@ TEST(ExrSanitize, OverflowedHalfBecomesTheHalfMaximum) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::assets::test

@@ -13,7 +13,7 @@
 #include <iterator>
 #include <vector>
 
-namespace candela::fuzz {
+namespace candela::assets::test::fuzz_regression_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -36,7 +36,7 @@ TEST(FuzzRegressions, GltfInputsLoadOrFailCleanly) {
     for (const fs::path& file : inputs("gltf")) {
         SCOPED_TRACE(file.string());
         const std::vector<uint8_t> bytes = bytesOf(file);
-        fuzzGltf(bytes.data(), bytes.size(), kRegressions.parent_path() / "uri-folder");
+        fuzz::fuzzGltf(bytes.data(), bytes.size(), kRegressions.parent_path() / "uri-folder");
     }
 }
 
@@ -44,7 +44,7 @@ TEST(FuzzRegressions, Ktx2InputsLoadOrFailCleanly) {
     for (const fs::path& file : inputs("ktx2")) {
         SCOPED_TRACE(file.string());
         const std::vector<uint8_t> bytes = bytesOf(file);
-        fuzzKtx2(bytes.data(), bytes.size());
+        fuzz::fuzzKtx2(bytes.data(), bytes.size());
     }
 }
 
@@ -52,7 +52,7 @@ TEST(FuzzRegressions, WebpInputsLoadOrFailCleanly) {
     for (const fs::path& file : inputs("webp")) {
         SCOPED_TRACE(file.string());
         const std::vector<uint8_t> bytes = bytesOf(file);
-        fuzzWebp(bytes.data(), bytes.size());
+        fuzz::fuzzWebp(bytes.data(), bytes.size());
     }
 }
 
@@ -60,7 +60,7 @@ TEST(FuzzRegressions, HdrInputsLoadOrFailCleanly) {
     for (const fs::path& file : inputs("hdr")) {
         SCOPED_TRACE(file.string());
         const std::vector<uint8_t> bytes = bytesOf(file);
-        fuzzHdr(bytes.data(), bytes.size());
+        fuzz::fuzzHdr(bytes.data(), bytes.size());
     }
 }
 
@@ -68,7 +68,7 @@ TEST(FuzzRegressions, ExrInputsLoadOrFailCleanly) {
     for (const fs::path& file : inputs("exr")) {
         SCOPED_TRACE(file.string());
         const std::vector<uint8_t> bytes = bytesOf(file);
-        fuzzExr(bytes.data(), bytes.size());
+        fuzz::fuzzExr(bytes.data(), bytes.size());
     }
 }
 
@@ -83,7 +83,7 @@ TEST(FuzzRegressions, ExrHeadersOnlyALenientParseAcceptsAreRefused) {
     for (const auto& [file, fragment] : cases) {
         const std::vector<uint8_t> bytes = bytesOf(kRegressions / "exr" / file);
         try {
-            scene::decodeExr(bytes, "a.exr", {});
+            assets::decodeExr(bytes, "a.exr", {});
             ADD_FAILURE() << file << " loaded";
         } catch (const UserError& e) {
             const std::string message = e.what();
@@ -94,4 +94,4 @@ TEST(FuzzRegressions, ExrHeadersOnlyALenientParseAcceptsAreRefused) {
 }
 
 }  // namespace
-}  // namespace candela::fuzz
+}  // namespace candela::assets::test::fuzz_regression_test

@@ -9,7 +9,7 @@
 #include <functional>
 #include <limits>
 
-namespace candela::scene::test::gltf_bad_input_test {
+namespace candela::assets::test::gltf_bad_input_test {
 namespace {
 
 struct BadCase {
@@ -19,7 +19,7 @@ struct BadCase {
     LoadOptions options = {};
 };
 
-GltfBuilder triangle() {
+assets::test::GltfBuilder triangle() {
     GltfBuilder b;
     b.addTriangle();
     return b;
@@ -357,7 +357,7 @@ std::vector<BadCase> badCases() {
 class Row : public testing::TestWithParam<BadCase> {};
 
 TEST_P(Row, IsOneLineUserErrorNamingTheFile) {
-    TempDir dir;
+    test::TempDir dir;
     const BadCase& c = GetParam();
     const fs::path path = c.make(dir.path());
     const std::string message = loadError(path, c.options);
@@ -370,7 +370,7 @@ INSTANTIATE_TEST_SUITE_P(GltfBadInput, Row, testing::ValuesIn(badCases()),
 
 // The unmodified inputs the table starts from do load, so each row fails for its own reason.
 TEST(GltfBadInputBaseline, UnmodifiedInputsLoad) {
-    TempDir dir;
+    test::TempDir dir;
     EXPECT_EQ(loadError(triangle().writeGltf(dir / "a")), "");
     EXPECT_EQ(loadError(triangle().writeGlb(dir / "b")), "");
     EXPECT_EQ(loadError(triangle().writeEmbedded(dir / "c")), "");
@@ -380,4 +380,4 @@ TEST(GltfBadInputBaseline, UnmodifiedInputsLoad) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test::gltf_bad_input_test
+}  // namespace candela::assets::test::gltf_bad_input_test

@@ -6,15 +6,15 @@
 
 #include <cmath>
 
-namespace candela::scene::test::gltf_draco_test {
+namespace candela::assets::test::gltf_draco_test {
 namespace {
 
 TEST(GltfDraco, QuadLoadsExactlyLikeItsPlainTwin) {
-    TempDir dir;
+    test::TempDir dir;
     const DracoQuad quad;
-    const Scene plain = loadGltf(quad.plain().writeGlb(dir.path(), "plain"));
-    const Scene glb = loadGltf(quad.compressed().writeGlb(dir.path(), "draco"));
-    const Scene gltf = loadGltf(quad.compressed().writeGltf(dir.path(), "draco"));
+    const scene::Scene plain = loadGltf(quad.plain().writeGlb(dir.path(), "plain"));
+    const scene::Scene glb = loadGltf(quad.compressed().writeGlb(dir.path(), "draco"));
+    const scene::Scene gltf = loadGltf(quad.compressed().writeGltf(dir.path(), "draco"));
     EXPECT_TRUE(glb.report.warnings.empty()) << glb.report.warnings.front();
     EXPECT_EQ(plain.indices.size(), 6u);
     expectSameGeometry(plain, glb);
@@ -22,7 +22,7 @@ TEST(GltfDraco, QuadLoadsExactlyLikeItsPlainTwin) {
 }
 
 TEST(GltfDraco, AttributesOutsideTheStreamStayPlainAndIntegerAccessorsKeepTheirType) {
-    TempDir dir;
+    test::TempDir dir;
     DracoQuad quad;
     quad.uvs = {0, 1, 0.5f, 1, 0.5f, 0, 0, 0};
     // COLOR_0 is not in the Draco stream: read from its own accessor as usual.
@@ -33,7 +33,7 @@ TEST(GltfDraco, AttributesOutsideTheStreamStayPlainAndIntegerAccessorsKeepTheirT
     b.doc["accessors"][2]["componentType"] = kUnsignedShort;
     b.doc["accessors"][2]["normalized"] = true;
     b.doc["extensionsUsed"].push_back("KHR_mesh_quantization");
-    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGlb(dir.path()));
     ASSERT_EQ(scene.vertices.size(), 4u);
     EXPECT_EQ(scene.vertices[1].color, glm::vec4(0, 1, 0, 1));
     EXPECT_NEAR(scene.vertices[1].uv0.x, 0.5f, 1.0f / 65535.0f);
@@ -41,11 +41,11 @@ TEST(GltfDraco, AttributesOutsideTheStreamStayPlainAndIntegerAccessorsKeepTheirT
 }
 
 TEST(GltfDraco, StripPrimitiveIsDecodedAsTriangles) {
-    TempDir dir;
+    test::TempDir dir;
     const DracoQuad quad;
     GltfBuilder b = quad.compressed();
     b.doc["meshes"][0]["primitives"][0]["mode"] = kStrip;
-    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGlb(dir.path()));
     EXPECT_EQ(scene.indices.size(), 6u);
 }
 
@@ -56,7 +56,7 @@ fs::path model(const std::string& name, const std::string& variant, const std::s
 }
 
 // Same draws (index counts, materials), bounds within `tolerance` of the extent (quantization).
-void expectSameShape(const Scene& draco, const Scene& plain, float tolerance) {
+void expectSameShape(const scene::Scene& draco, const scene::Scene& plain, float tolerance) {
     ASSERT_EQ(draco.draws.size(), plain.draws.size());
     EXPECT_EQ(draco.indices.size(), plain.indices.size());
     expectBoundsNear(draco.bounds, plain.bounds, tolerance);
@@ -69,10 +69,10 @@ void expectSameShape(const Scene& draco, const Scene& plain, float tolerance) {
 // Khronos sample `name` from glTF-Draco/`dracoFile` and glTF-Binary/NAME.glb: the Draco one loads
 // quietly, with the plain one's draws and bounds within 0.1% (its quantization).
 struct Pair {
-    Scene draco, plain;
+    scene::Scene draco, plain;
 };
 Pair loadPair(const std::string& name, const std::string& dracoFile) {
-    Pair pair{loadGltf(model(name, "glTF-Draco", dracoFile)), loadGltf(model(name, "glTF-Binary", name + ".glb"))};
+    Pair pair{assets::loadGltf(model(name, "glTF-Draco", dracoFile)), loadGltf(model(name, "glTF-Binary", name + ".glb"))};
     EXPECT_TRUE(pair.draco.report.warnings.empty()) << pair.draco.report.warnings.front();
     expectSameShape(pair.draco, pair.plain, 1e-3f);
     return pair;
@@ -116,7 +116,7 @@ class DracoBadInput : public testing::TestWithParam<DracoCase> {};
 
 TEST_P(DracoBadInput, IsOneLineErrorNamingThePrimitive) {
     const DracoCase& row = GetParam();
-    TempDir dir;
+    test::TempDir dir;
     DracoQuad quad;
     if (row.quad) row.quad(quad);
     Bytes stream = quad.encode();
@@ -126,8 +126,8 @@ TEST_P(DracoBadInput, IsOneLineErrorNamingThePrimitive) {
     expectLoadFails(b.writeGlb(dir.path()), row.fragment);
 }
 
-Json& primitiveOf(GltfBuilder& b) { return b.doc["meshes"][0]["primitives"][0]; }
-Json& dracoOf(GltfBuilder& b) { return primitiveOf(b)["extensions"]["KHR_draco_mesh_compression"]; }
+assets::test::Json& primitiveOf(GltfBuilder& b) { return b.doc["meshes"][0]["primitives"][0]; }
+assets::test::Json& dracoOf(GltfBuilder& b) { return primitiveOf(b)["extensions"]["KHR_draco_mesh_compression"]; }
 
 // Accessors of DracoQuad::compressed(): 0 POSITION, 1 NORMAL, 2 TEXCOORD_0, 3 indices.
 std::vector<DracoCase> dracoCases() {
@@ -167,4 +167,4 @@ INSTANTIATE_TEST_SUITE_P(Rows, DracoBadInput, testing::ValuesIn(dracoCases()),
                          [](const testing::TestParamInfo<DracoCase>& row) { return row.param.name; });
 
 }  // namespace
-}  // namespace candela::scene::test::gltf_draco_test
+}  // namespace candela::assets::test::gltf_draco_test

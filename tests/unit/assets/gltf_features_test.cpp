@@ -11,7 +11,7 @@
 #include <limits>
 #include <numbers>
 
-namespace candela::scene::test::gltf_features_test {
+namespace candela::assets::test::gltf_features_test {
 namespace {
 
 constexpr float kEps = 1e-6f;
@@ -22,22 +22,22 @@ void expectVec(const glm::vec3& actual, const glm::vec3& expected, float eps = k
     EXPECT_NEAR(actual.z, expected.z, eps);
 }
 
-bool hasWarning(const Scene& scene, const std::string& fragment) {
+bool hasWarning(const scene::Scene& scene, const std::string& fragment) {
     for (const std::string& w : scene.report.warnings)
         if (w.find(fragment) != std::string::npos) return true;
     return false;
 }
 
 // The vertices of draw `d`'s triangles, in index order.
-std::vector<Vertex> corners(const Scene& scene, size_t d = 0) {
-    std::vector<Vertex> out;
-    const Draw& draw = scene.draws.at(d);
+std::vector<scene::Vertex> corners(const scene::Scene& scene, size_t d = 0) {
+    std::vector<scene::Vertex> out;
+    const scene::Draw& draw = scene.draws.at(d);
     for (uint32_t i = 0; i < draw.indexCount; ++i) out.push_back(scene.vertices.at(scene.indices.at(draw.firstIndex + i)));
     return out;
 }
 
 // A mesh of one real triangle and one whose corners lie on a line, `copies` times (one node each).
-GltfBuilder degenerateMeshes(int copies) {
+assets::test::GltfBuilder degenerateMeshes(int copies) {
     GltfBuilder b;
     const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0, 2, 0, 0, 3, 0, 0}, "VEC3", 3);
     const int indices = b.addIndices({0, 1, 2, 1, 3, 4});
@@ -50,23 +50,23 @@ GltfBuilder degenerateMeshes(int copies) {
 TEST(GltfFeatures, DegenerateTrianglesAreANoteFoldedIntoOneLine) {
     // The glTF-Validator reports degenerate triangles as information: they are dropped quietly,
     // with one note for --verbose however many primitives have them.
-    TempDir dir;
-    const Scene one = loadGltf(degenerateMeshes(1).writeGltf(dir / "one"));
+    test::TempDir dir;
+    const scene::Scene one = loadGltf(degenerateMeshes(1).writeGltf(dir / "one"));
     EXPECT_TRUE(one.report.warnings.empty()) << one.report.warnings.front();
     EXPECT_EQ(one.report.notes, (std::vector<std::string>{"mesh 0 primitive 0: 1 zero-area triangle dropped"}));
-    const Scene many = loadGltf(degenerateMeshes(100).writeGltf(dir / "many"));
+    const scene::Scene many = loadGltf(degenerateMeshes(100).writeGltf(dir / "many"));
     EXPECT_TRUE(many.report.warnings.empty()) << many.report.warnings.front();
     EXPECT_EQ(many.report.notes, (std::vector<std::string>{"100 primitives: 100 zero-area triangles dropped"}));
     EXPECT_EQ(many.draws.size(), 100u);
 }
 
 TEST(GltfFeatures, TriangleInAllThreeContainers) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     b.addTriangle();
     for (const fs::path& path : {b.writeGltf(dir / "a"), b.writeGlb(dir / "b"), b.writeEmbedded(dir / "c")}) {
         SCOPED_TRACE(path.string());
-        const Scene scene = loadGltf(path);
+        const scene::Scene scene = loadGltf(path);
         EXPECT_EQ(scene.source, path.string());
         ASSERT_EQ(scene.vertices.size(), 3u);
         EXPECT_EQ(scene.indices, (std::vector<uint32_t>{0, 1, 2}));
@@ -96,7 +96,7 @@ TEST(GltfFeatures, StripAndFanIndexConversion) {
 }
 
 TEST(GltfFeatures, StripAndFanFilesKeepCounterClockwiseWinding) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     // A zig-zag strip and a fan of a unit square, all in the XY plane facing +Z; no normals, so the
     // flat normals reveal each triangle's winding.
@@ -105,16 +105,16 @@ TEST(GltfFeatures, StripAndFanFilesKeepCounterClockwiseWinding) {
     const int m0 = b.addMesh({{"POSITION", strip}}, -1, -1, kStrip);
     const int m1 = b.addMesh({{"POSITION", fan}}, b.addIndices({0, 1, 2, 3}), -1, kFan);
     b.setScene({b.addNode({{"mesh", m0}}), b.addNode({{"mesh", m1}})});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
     ASSERT_EQ(scene.draws.size(), 2u);
     EXPECT_EQ(scene.draws[0].indexCount, 9u);
     EXPECT_EQ(scene.draws[1].indexCount, 6u);
     for (size_t d = 0; d < 2; ++d)
-        for (const Vertex& v : corners(scene, d)) expectVec(v.normal, {0, 0, 1});
+        for (const scene::Vertex& v : corners(scene, d)) expectVec(v.normal, {0, 0, 1});
 }
 
 TEST(GltfFeatures, SparseAccessorsWithAndWithoutBufferView) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
     const int idx = b.addView(std::vector<uint8_t>{1, 0, 0, 0});
@@ -126,8 +126,8 @@ TEST(GltfFeatures, SparseAccessorsWithAndWithoutBufferView) {
     const int uvVal = b.addView(std::vector<float>{0.5f, 0.25f});
     b.doc["accessors"][uv]["sparse"] = {{"count", 1}, {"indices", {{"bufferView", uvIdx}, {"componentType", kUnsignedInt}}}, {"values", {{"bufferView", uvVal}}}};
     b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}, {"TEXCOORD_0", uv}})}})});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    const std::vector<Vertex> v = corners(scene);
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const std::vector<scene::Vertex> v = corners(scene);
     ASSERT_EQ(v.size(), 3u);
     expectVec(v[0].position, {0, 0, 0});
     expectVec(v[1].position, {5, 6, 7});
@@ -138,7 +138,7 @@ TEST(GltfFeatures, SparseAccessorsWithAndWithoutBufferView) {
 }
 
 TEST(GltfFeatures, NormalizedIntegerTexcoordsAndColors) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
     // VEC2 of UNSIGNED_BYTE padded to a 4-byte stride, as vertex attributes must be.
@@ -147,8 +147,8 @@ TEST(GltfFeatures, NormalizedIntegerTexcoordsAndColors) {
     const int colorView = b.addView(std::vector<uint16_t>{65535, 0, 32768, 0, 0, 65535, 0, 0, 0, 0, 0, 0}, 8);
     const int color = b.addAccessor(colorView, kUnsignedShort, 3, "VEC3", true);
     b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}, {"TEXCOORD_0", uv}, {"COLOR_0", color}})}})});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    const std::vector<Vertex> v = corners(scene);
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const std::vector<scene::Vertex> v = corners(scene);
     ASSERT_EQ(v.size(), 3u);
     EXPECT_EQ(v[0].uv0, glm::vec2(0.0f, 0.0f));
     EXPECT_FLOAT_EQ(v[1].uv0.x, 128.0f / 255.0f);
@@ -163,7 +163,7 @@ TEST(GltfFeatures, NormalizedIntegerTexcoordsAndColors) {
 }
 
 TEST(GltfFeatures, MeshQuantizationIntegersAndNodeScale) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     b.doc["extensionsUsed"] = {"KHR_mesh_quantization"};
     b.doc["extensionsRequired"] = {"KHR_mesh_quantization"};
@@ -177,9 +177,9 @@ TEST(GltfFeatures, MeshQuantizationIntegersAndNodeScale) {
     const int uv = b.addAccessor(uvView, kShort, 3, "VEC2", true);
     const int mesh = b.addMesh({{"POSITION", pos}, {"NORMAL", normal}, {"TEXCOORD_0", uv}}, b.addIndices({0, 1, 2}));
     b.setScene({b.addNode({{"mesh", mesh}, {"scale", {0.001, 0.001, 0.001}}})});
-    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGlb(dir.path()));
     EXPECT_TRUE(scene.report.warnings.empty());
-    const std::vector<Vertex> v = corners(scene);
+    const std::vector<scene::Vertex> v = corners(scene);
     ASSERT_EQ(v.size(), 3u);
     expectVec(v[1].position, {1000, 0, 0});
     expectVec(v[2].position, {0, -2000, 0});
@@ -194,14 +194,14 @@ TEST(GltfFeatures, MeshQuantizationIntegersAndNodeScale) {
 }
 
 TEST(GltfFeatures, NegativeScaleFlipsWinding) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     b.addTriangle();
     const int a = b.addNode({{"mesh", 0}, {"scale", {-1, 1, 1}}});
     const int c = b.addNode({{"mesh", 0}, {"scale", {-1, -1, 1}}});  // two mirrors: a rotation
     const int d = b.addNode({{"children", {b.addNode({{"mesh", 0}})}}, {"scale", {1, 1, -2}}});  // inherited
     b.setScene({0, a, c, d});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
     ASSERT_EQ(scene.draws.size(), 4u);
     EXPECT_FALSE(scene.draws[0].flipWinding);
     EXPECT_TRUE(scene.draws[1].flipWinding);
@@ -209,7 +209,7 @@ TEST(GltfFeatures, NegativeScaleFlipsWinding) {
     EXPECT_TRUE(scene.draws[3].flipWinding);
     // One primitive, converted once and shared by all four draws.
     EXPECT_EQ(scene.vertices.size(), 3u);
-    for (const Draw& draw : scene.draws) EXPECT_EQ(draw.firstIndex, 0u);
+    for (const scene::Draw& draw : scene.draws) EXPECT_EQ(draw.firstIndex, 0u);
     expectVec(scene.draws[1].bounds.min, {-1, 0, 0});
     expectVec(scene.draws[1].bounds.max, {0, 1, 0});
 }
@@ -217,13 +217,13 @@ TEST(GltfFeatures, NegativeScaleFlipsWinding) {
 TEST(GltfFeatures, LargeAndSmallValidScalesLoadQuietly) {
     // det(world) is 1e39 and 1e-45 here: beyond a float, but the meshes are valid and drawn (the
     // determinant and the normal matrix are taken in double).
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     b.addTriangle();
     const int big = b.addNode({{"mesh", 0}, {"scale", {1e13, 1e13, -1e13}}});
     const int small = b.addNode({{"mesh", 0}, {"scale", {1e-15, 1e-15, 1e-15}}});
     b.setScene({big, small});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.draws.size(), 2u);
     EXPECT_TRUE(scene.draws[0].flipWinding);
@@ -232,7 +232,7 @@ TEST(GltfFeatures, LargeAndSmallValidScalesLoadQuietly) {
 }
 
 TEST(GltfFeatures, GpuInstancesAreOneDrawPerWindingWithEveryInstanceInTheBounds) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     b.addTriangle();
     // Three instances: two plain, one mirrored (scale x −1) — the mirrored one gets a draw of its own.
@@ -240,7 +240,7 @@ TEST(GltfFeatures, GpuInstancesAreOneDrawPerWindingWithEveryInstanceInTheBounds)
     const int s = b.addFloats({1, 1, 1, 2, 2, 2, -1, 1, 1}, "VEC3", 3);
     b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {{"TRANSLATION", t}, {"SCALE", s}};
     b.doc["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.draws.size(), 2u);
     EXPECT_EQ(scene.draws[0].instanceCount, 2u);
@@ -256,7 +256,7 @@ TEST(GltfFeatures, GpuInstancesAreOneDrawPerWindingWithEveryInstanceInTheBounds)
 }
 
 TEST(GltfFeatures, MatrixAndTrsGiveTheSameWorldTransform) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     b.addTriangle();
     const glm::dquat q = glm::angleAxis(0.7, glm::normalize(glm::dvec3(1, 2, 3)));
@@ -271,7 +271,7 @@ TEST(GltfFeatures, MatrixAndTrsGiveTheSameWorldTransform) {
     const int child = b.addNode({{"mesh", 0}, {"rotation", {0, 0, std::sqrt(0.5), std::sqrt(0.5)}}});
     const int parent = b.addNode({{"translation", {10, 0, 0}}, {"children", {child}}});
     b.setScene({trs, mat, parent});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
     ASSERT_EQ(scene.draws.size(), 3u);
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) {
@@ -283,22 +283,22 @@ TEST(GltfFeatures, MatrixAndTrsGiveTheSameWorldTransform) {
 }
 
 TEST(GltfFeatures, MissingNormalsAreFlatPerTriangle) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     // Two triangles sharing edge (0,1): one in the XY plane facing +Z, one in the XZ plane facing +Y.
     const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}, "VEC3", 3);
     const int mesh = b.addMesh({{"POSITION", pos}}, b.addIndices({0, 1, 2, 1, 0, 3}));
     b.setScene({b.addNode({{"mesh", mesh}})});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
     EXPECT_EQ(scene.vertices.size(), 6u);  // de-indexed: each triangle owns its corners
-    const std::vector<Vertex> v = corners(scene);
+    const std::vector<scene::Vertex> v = corners(scene);
     ASSERT_EQ(v.size(), 6u);
     for (int i = 0; i < 3; ++i) expectVec(v[size_t(i)].normal, {0, 0, 1});
     for (int i = 3; i < 6; ++i) expectVec(v[size_t(i)].normal, {0, 1, 0});
 }
 
 TEST(GltfFeatures, MaterialFactorsModesAndExtensions) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     b.addTriangle();
     b.doc["extensionsUsed"] = {"KHR_materials_emissive_strength", "KHR_materials_unlit"};
@@ -309,11 +309,11 @@ TEST(GltfFeatures, MaterialFactorsModesAndExtensions) {
          {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 5.0}}}, {"KHR_materials_unlit", Json::object()}}}},
         {{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"metallicFactor", 7}}}}});
     b.doc["meshes"][0]["primitives"][0]["material"] = 1;
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
     ASSERT_EQ(scene.materials.size(), 2u);  // no default needed
-    const Material& m = scene.materials[0];
+    const scene::Material& m = scene.materials[0];
     EXPECT_EQ(m.name, "m0");
-    EXPECT_EQ(m.alphaMode, AlphaMode::Mask);
+    EXPECT_EQ(m.alphaMode, scene::AlphaMode::Mask);
     EXPECT_FLOAT_EQ(m.alphaCutoff, 0.3f);
     EXPECT_TRUE(m.doubleSided);
     EXPECT_TRUE(m.unlit);
@@ -323,9 +323,9 @@ TEST(GltfFeatures, MaterialFactorsModesAndExtensions) {
     EXPECT_FLOAT_EQ(m.roughnessFactor, 0.6f);
     expectVec(m.emissiveFactor, {0.1f, 0.2f, 0.3f});
     EXPECT_FALSE(m.baseColor.present());
-    const Material& n = scene.materials[1];
+    const scene::Material& n = scene.materials[1];
     EXPECT_EQ(n.name, "material 1");
-    EXPECT_EQ(n.alphaMode, AlphaMode::Blend);
+    EXPECT_EQ(n.alphaMode, scene::AlphaMode::Blend);
     EXPECT_FALSE(n.unlit);
     EXPECT_FALSE(n.doubleSided);
     EXPECT_FLOAT_EQ(n.emissiveStrength, 1.0f);
@@ -336,7 +336,7 @@ TEST(GltfFeatures, MaterialFactorsModesAndExtensions) {
 TEST(GltfFeatures, IorAndSpecularExtensions) {
     // Factors, both textures (the colour one sRGB, with a texture transform), the IOR's special 0,
     // defaults, out-of-range values clamped with a warning, and which materials pay for the layer.
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b = texturedTriangle("", smallPng({10, 20, 30, 40}));
     b.doc["extensionsUsed"] = {"KHR_materials_ior", "KHR_materials_specular", "KHR_texture_transform"};
     const Json core = b.doc["materials"][0];
@@ -351,9 +351,9 @@ TEST(GltfFeatures, IorAndSpecularExtensions) {
         {{"extensions", {{"KHR_materials_ior", {{"ior", 1.5}}}, {"KHR_materials_specular", Json::object()}}}},
         {{"extensions", {{"KHR_materials_ior", {{"ior", 0.5}}}, {"KHR_materials_specular", {{"specularFactor", 3}}}}}},
         core});
-    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGlb(dir.path()));
     ASSERT_EQ(scene.materials.size(), 5u);
-    const Material& m = scene.materials[0];
+    const scene::Material& m = scene.materials[0];
     EXPECT_FLOAT_EQ(m.ior, 1.33f);
     EXPECT_FLOAT_EQ(m.specularFactor, 0.5f);
     expectVec(m.specularColorFactor, {2.0f, 1.0f, 0.25f});
@@ -362,9 +362,9 @@ TEST(GltfFeatures, IorAndSpecularExtensions) {
     EXPECT_FALSE(scene.images.at(size_t(m.specular.image)).srgb);
     EXPECT_TRUE(scene.images.at(size_t(m.specularColor.image)).srgb);
     EXPECT_EQ(m.specularColor.transform.scale, glm::vec2(2.0f));
-    EXPECT_EQ(m.layers(), uint32_t(kLayerSpecular));
+    EXPECT_EQ(m.layers(), uint32_t(scene::kLayerSpecular));
     EXPECT_FLOAT_EQ(scene.materials[1].ior, 0.0f);  // f0 = 1: the specular-glossiness conversion
-    EXPECT_EQ(scene.materials[1].layers(), uint32_t(kLayerSpecular));
+    EXPECT_EQ(scene.materials[1].layers(), uint32_t(scene::kLayerSpecular));
     // IOR 1.5 and an empty specular extension are the core Fresnel: no layer to pay for.
     EXPECT_EQ(scene.materials[2].layers(), 0u);
     EXPECT_EQ(scene.materials[4].layers(), 0u);
@@ -378,7 +378,7 @@ TEST(GltfFeatures, IorAndSpecularExtensions) {
 TEST(GltfFeatures, ClearcoatExtension) {
     // Factors, the three textures (linear, the normal map with its scale and a transform), the
     // defaults, factor 0 disabling the layer whatever its textures, clamping with a warning.
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b = texturedTriangle("", smallPng({10, 20, 30, 40}));
     b.doc["extensionsUsed"] = {"KHR_materials_clearcoat", "KHR_texture_transform"};
     const Json core = b.doc["materials"][0];
@@ -393,19 +393,19 @@ TEST(GltfFeatures, ClearcoatExtension) {
         {{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatTexture", {{"index", 0}}}}}}}},
         {{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.5}, {"clearcoatRoughnessFactor", -1}}}}}},
         core});
-    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGlb(dir.path()));
     ASSERT_EQ(scene.materials.size(), 5u);
-    const Material& m = scene.materials[0];
+    const scene::Material& m = scene.materials[0];
     EXPECT_FLOAT_EQ(m.clearcoatFactor, 0.75f);
     EXPECT_FLOAT_EQ(m.clearcoatRoughnessFactor, 0.25f);
     EXPECT_FLOAT_EQ(m.clearcoatNormalScale, 0.5f);
     ASSERT_TRUE(m.clearcoat.present() && m.clearcoatRoughness.present() && m.clearcoatNormal.present());
     EXPECT_FALSE(scene.images.at(size_t(m.clearcoat.image)).srgb);
     EXPECT_EQ(m.clearcoatNormal.transform.offset, glm::vec2(0.5f, 0.0f));
-    EXPECT_EQ(m.layers(), uint32_t(kLayerClearcoat | kLayerClearcoatNormal));
+    EXPECT_EQ(m.layers(), uint32_t(scene::kLayerClearcoat | scene::kLayerClearcoatNormal));
     // Defaults: roughness 0, no normal map.
     EXPECT_FLOAT_EQ(scene.materials[1].clearcoatRoughnessFactor, 0.0f);
-    EXPECT_EQ(scene.materials[1].layers(), uint32_t(kLayerClearcoat));
+    EXPECT_EQ(scene.materials[1].layers(), uint32_t(scene::kLayerClearcoat));
     // clearcoatFactor defaults to 0, which disables the layer.
     EXPECT_EQ(scene.materials[2].layers(), 0u);
     EXPECT_EQ(scene.materials[4].layers(), 0u);
@@ -418,7 +418,7 @@ TEST(GltfFeatures, ClearcoatExtension) {
 
 TEST(GltfFeatures, SheenExtension) {
     // Factors, both textures (colour sRGB, roughness linear), the default (black: no layer), clamping.
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b = texturedTriangle("", smallPng());
     b.doc["extensionsUsed"] = {"KHR_materials_sheen"};
     b.doc["materials"] = Json::array({
@@ -428,15 +428,15 @@ TEST(GltfFeatures, SheenExtension) {
              {"sheenRoughnessTexture", {{"index", 0}}}}}}}},
         {{"extensions", {{"KHR_materials_sheen", {{"sheenRoughnessFactor", 0.5}}}}}},
         {{"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {1.5, 0, 0}}, {"sheenRoughnessFactor", 2}}}}}}});
-    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGlb(dir.path()));
     ASSERT_EQ(scene.materials.size(), 3u);
-    const Material& m = scene.materials[0];
+    const scene::Material& m = scene.materials[0];
     expectVec(m.sheenColorFactor, {0.5f, 0.25f, 1.0f});
     EXPECT_FLOAT_EQ(m.sheenRoughnessFactor, 0.3f);
     ASSERT_TRUE(m.sheenColor.present() && m.sheenRoughness.present());
     EXPECT_TRUE(scene.images.at(size_t(m.sheenColor.image)).srgb);
     EXPECT_FALSE(scene.images.at(size_t(m.sheenRoughness.image)).srgb);
-    EXPECT_EQ(m.layers(), uint32_t(kLayerSheen));
+    EXPECT_EQ(m.layers(), uint32_t(scene::kLayerSheen));
     EXPECT_EQ(scene.materials[1].layers(), 0u);  // a black sheen colour disables the layer
     expectVec(scene.materials[2].sheenColorFactor, {1.0f, 0.0f, 0.0f});
     EXPECT_FLOAT_EQ(scene.materials[2].sheenRoughnessFactor, 1.0f);
@@ -448,7 +448,7 @@ TEST(GltfFeatures, SheenExtension) {
 TEST(GltfFeatures, AnisotropyExtension) {
     // Strength (clamped), rotation (any angle, kept modulo 2π), the texture (linear), the default
     // (strength 0: no layer), and the tangent frame it needs though there is no normal map.
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b = texturedTriangle("", smallPng());
     b.doc["extensionsUsed"] = {"KHR_materials_anisotropy"};
     b.doc["materials"] = Json::array({
@@ -456,14 +456,14 @@ TEST(GltfFeatures, AnisotropyExtension) {
                           {{"anisotropyStrength", 0.6}, {"anisotropyRotation", 1.0}, {"anisotropyTexture", {{"index", 0}}}}}}}},
         {{"extensions", {{"KHR_materials_anisotropy", {{"anisotropyRotation", 0.5}}}}}},
         {{"extensions", {{"KHR_materials_anisotropy", {{"anisotropyStrength", 4}, {"anisotropyRotation", 7.0}}}}}}});
-    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGlb(dir.path()));
     ASSERT_EQ(scene.materials.size(), 3u);
-    const Material& m = scene.materials[0];
+    const scene::Material& m = scene.materials[0];
     EXPECT_FLOAT_EQ(m.anisotropyStrength, 0.6f);
     EXPECT_FLOAT_EQ(m.anisotropyRotation, 1.0f);
     ASSERT_TRUE(m.anisotropy.present());
     EXPECT_FALSE(scene.images.at(size_t(m.anisotropy.image)).srgb);
-    EXPECT_EQ(m.layers(), uint32_t(kLayerAnisotropy));
+    EXPECT_EQ(m.layers(), uint32_t(scene::kLayerAnisotropy));
     EXPECT_EQ(scene.materials[1].layers(), 0u);
     EXPECT_FLOAT_EQ(scene.materials[2].anisotropyStrength, 1.0f);
     EXPECT_NEAR(scene.materials[2].anisotropyRotation, 7.0 - 2.0 * std::numbers::pi, 1e-6);
@@ -478,7 +478,7 @@ TEST(GltfFeatures, TransmissionAndVolumeExtensions) {
     // Transmission (factor, linear texture, default 0: no layer), volume (thickness, its linear
     // texture, attenuation; a volume without transmission or with thickness 0 is no layer), clamping
     // and the specification's infinite default attenuation distance (0 here).
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b = texturedTriangle("", smallPng());
     b.doc["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_volume"};
     b.doc["materials"] = Json::array({
@@ -494,9 +494,9 @@ TEST(GltfFeatures, TransmissionAndVolumeExtensions) {
         {{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 3}}},
                          {"KHR_materials_volume",
                           {{"thicknessFactor", -1}, {"attenuationDistance", 0}, {"attenuationColor", {2, 0.5, -1}}}}}}}});
-    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGlb(dir.path()));
     ASSERT_EQ(scene.materials.size(), 5u);
-    const Material& m = scene.materials[0];
+    const scene::Material& m = scene.materials[0];
     EXPECT_FLOAT_EQ(m.transmissionFactor, 0.8f);
     EXPECT_FLOAT_EQ(m.thicknessFactor, 2.5f);
     EXPECT_FLOAT_EQ(m.attenuationDistance, 0.25f);
@@ -504,10 +504,10 @@ TEST(GltfFeatures, TransmissionAndVolumeExtensions) {
     ASSERT_TRUE(m.transmission.present() && m.thickness.present());
     EXPECT_FALSE(scene.images.at(size_t(m.transmission.image)).srgb);
     EXPECT_FALSE(scene.images.at(size_t(m.thickness.image)).srgb);
-    EXPECT_EQ(m.layers(), uint32_t(kLayerTransmission | kLayerVolume));
-    EXPECT_EQ(scene.materials[1].layers(), uint32_t(kLayerTransmission));  // thin-walled
+    EXPECT_EQ(m.layers(), uint32_t(scene::kLayerTransmission | scene::kLayerVolume));
+    EXPECT_EQ(scene.materials[1].layers(), uint32_t(scene::kLayerTransmission));  // thin-walled
     EXPECT_FLOAT_EQ(scene.materials[1].attenuationDistance, 0.0f);          // infinite
-    EXPECT_EQ(scene.materials[2].layers(), uint32_t(kLayerTransmission));  // thickness 0: thin-walled
+    EXPECT_EQ(scene.materials[2].layers(), uint32_t(scene::kLayerTransmission));  // thickness 0: thin-walled
     EXPECT_EQ(scene.materials[3].layers(), 0u);                            // a volume needs transmission
     EXPECT_FLOAT_EQ(scene.materials[4].transmissionFactor, 1.0f);
     EXPECT_FLOAT_EQ(scene.materials[4].thicknessFactor, 0.0f);
@@ -524,7 +524,7 @@ TEST(GltfFeatures, TransmissionAndVolumeExtensions) {
 TEST(GltfFeatures, IridescenceExtension) {
     // Factor, IOR, thickness range, both textures (linear), the defaults (IOR 1.3, 100 … 400 nm;
     // factor 0: no layer), clamping, and a film of thickness 0 everywhere (no layer).
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b = texturedTriangle("", smallPng());
     b.doc["extensionsUsed"] = {"KHR_materials_iridescence"};
     b.doc["materials"] = Json::array({
@@ -538,21 +538,21 @@ TEST(GltfFeatures, IridescenceExtension) {
         {{"extensions", {{"KHR_materials_iridescence", {{"iridescenceFactor", 1}, {"iridescenceThicknessMaximum", 0}}}}}},
         {{"extensions",
           {{"KHR_materials_iridescence", {{"iridescenceFactor", 2}, {"iridescenceIor", 0.5}, {"iridescenceThicknessMinimum", -5}}}}}}});
-    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGlb(dir.path()));
     ASSERT_EQ(scene.materials.size(), 5u);
-    const Material& m = scene.materials[0];
+    const scene::Material& m = scene.materials[0];
     EXPECT_FLOAT_EQ(m.iridescenceFactor, 0.8f);
     EXPECT_FLOAT_EQ(m.iridescenceIor, 1.8f);
     EXPECT_FLOAT_EQ(m.iridescenceThicknessMinimum, 200.0f);
     EXPECT_FLOAT_EQ(m.iridescenceThicknessMaximum, 600.0f);
     ASSERT_TRUE(m.iridescence.present() && m.iridescenceThickness.present());
     EXPECT_FALSE(scene.images.at(size_t(m.iridescence.image)).srgb);
-    EXPECT_EQ(m.layers(), uint32_t(kLayerIridescence));
-    const Material& defaults = scene.materials[1];
+    EXPECT_EQ(m.layers(), uint32_t(scene::kLayerIridescence));
+    const scene::Material& defaults = scene.materials[1];
     EXPECT_FLOAT_EQ(defaults.iridescenceIor, 1.3f);
     EXPECT_FLOAT_EQ(defaults.iridescenceThicknessMinimum, 100.0f);
     EXPECT_FLOAT_EQ(defaults.iridescenceThicknessMaximum, 400.0f);
-    EXPECT_EQ(defaults.layers(), uint32_t(kLayerIridescence));
+    EXPECT_EQ(defaults.layers(), uint32_t(scene::kLayerIridescence));
     EXPECT_EQ(scene.materials[2].layers(), 0u);  // factor 0
     EXPECT_EQ(scene.materials[3].layers(), 0u);  // thickness 0 everywhere
     EXPECT_FLOAT_EQ(scene.materials[4].iridescenceFactor, 1.0f);
@@ -568,7 +568,7 @@ TEST(GltfFeatures, SpecularGlossinessIsConvertedToTheSpecularLayer) {
     // diffuse → base colour (factor and sRGB texture), metallic 0, roughness = 1 − glossiness (a
     // derived texture from the specularGlossiness alpha), specular colour = specularFactor × the
     // texture's sRGB RGB with IOR 0 (f0 = specular colour); without textures, factors alone.
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b = texturedTriangle("", smallPng({200, 100, 50, 64}));  // alpha 64: glossiness 0.25 there
     b.doc["extensionsUsed"] = {"KHR_materials_pbrSpecularGlossiness"};
     b.doc["materials"] = Json::array({
@@ -579,9 +579,9 @@ TEST(GltfFeatures, SpecularGlossinessIsConvertedToTheSpecularLayer) {
         {{"extensions", {{"KHR_materials_pbrSpecularGlossiness", {{"glossinessFactor", 0.8}, {"specularFactor", {0.04, 0.04, 0.04}}}}}}},
         {{"pbrMetallicRoughness", {{"metallicFactor", 0.3}}},
          {"extensions", {{"KHR_materials_pbrSpecularGlossiness", Json::object()}}}}});
-    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGlb(dir.path()));
     ASSERT_EQ(scene.materials.size(), 3u);
-    const Material& m = scene.materials[0];
+    const scene::Material& m = scene.materials[0];
     EXPECT_EQ(m.baseColorFactor, glm::vec4(0.5f, 0.25f, 1.0f, 0.75f));
     EXPECT_EQ(m.metallicFactor, 0.0f);
     EXPECT_EQ(m.ior, 0.0f);
@@ -590,14 +590,14 @@ TEST(GltfFeatures, SpecularGlossinessIsConvertedToTheSpecularLayer) {
     ASSERT_TRUE(m.baseColor.present() && m.specularColor.present() && m.metallicRoughness.present());
     EXPECT_TRUE(scene.images.at(size_t(m.baseColor.image)).srgb);
     EXPECT_TRUE(scene.images.at(size_t(m.specularColor.image)).srgb);
-    const Image& roughness = scene.images.at(size_t(m.metallicRoughness.image));
+    const scene::Image& roughness = scene.images.at(size_t(m.metallicRoughness.image));
     EXPECT_FALSE(roughness.srgb);
     EXPECT_EQ(m.roughnessFactor, 1.0f);
     // Texel 0: glossiness 0.5 × 64/255 → roughness G = 255 − 32 = 223; the others (alpha 255): 128.
     EXPECT_EQ(roughness.rgba8[1], 223);
     EXPECT_EQ(roughness.rgba8[2], 0);  // metallic 0
     EXPECT_EQ(roughness.rgba8[5], 128);
-    EXPECT_EQ(m.layers(), uint32_t(kLayerSpecular));
+    EXPECT_EQ(m.layers(), uint32_t(scene::kLayerSpecular));
     EXPECT_FLOAT_EQ(scene.materials[1].roughnessFactor, 0.2f);
     EXPECT_FALSE(scene.materials[1].metallicRoughness.present());
     // The extension replaces the metallic-roughness values; its defaults: white diffuse, f0 1,
@@ -611,14 +611,14 @@ TEST(GltfFeatures, SpecularGlossinessIsConvertedToTheSpecularLayer) {
 TEST(GltfFeatures, MaterialVariants) {
     // Root variant names, per-primitive mappings (one mapping for two variants), selection by
     // name, back to the defaults, and the error for an unknown name.
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b = texturedTriangle("", smallPng());
     b.doc["extensionsUsed"] = {"KHR_materials_variants"};
     b.doc["materials"] = Json::array({Json::object(), {{"name", "red"}}, {{"name", "blue"}}});
     b.doc["meshes"][0]["primitives"][0]["extensions"] = {
         {"KHR_materials_variants", {{"mappings", {{{"material", 1}, {"variants", {0}}}, {{"material", 2}, {"variants", {1, 2}}}}}}}};
     b.doc["extensions"] = {{"KHR_materials_variants", {{"variants", Json::array({Json{{"name", "Red"}}, Json{{"name", "Blue"}}, Json{{"name", "Gold"}}})}}}};
-    Scene scene = loadGltf(b.writeGlb(dir.path()));
+    scene::Scene scene = loadGltf(b.writeGlb(dir.path()));
     ASSERT_EQ(scene.variants, (std::vector<std::string>{"Red", "Blue", "Gold"}));
     ASSERT_EQ(scene.drawVariants.size(), 1u);
     EXPECT_EQ(scene.draws[0].material, 0u);
@@ -639,7 +639,7 @@ TEST(GltfFeatures, MaterialVariants) {
 }
 
 // A triangle whose material uses `png` for all five textures, plus samplers.
-GltfBuilder fiveTextureModel(const Bytes& png) {
+assets::test::GltfBuilder fiveTextureModel(const Bytes& png) {
     GltfBuilder b;
     const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
     const int uv = b.addFloats({0, 0, 1, 0, 0, 1}, "VEC2", 2);
@@ -662,13 +662,13 @@ GltfBuilder fiveTextureModel(const Bytes& png) {
 }
 
 TEST(GltfFeatures, TexturesSamplersAndTextureTransform) {
-    TempDir dir;
-    const Scene scene = loadGltf(fiveTextureModel(smallPng({10, 20, 30, 40})).writeGlb(dir.path()));
+    test::TempDir dir;
+    const scene::Scene scene = loadGltf(fiveTextureModel(smallPng({10, 20, 30, 40})).writeGlb(dir.path()));
     // One image used as sRGB (base colour, emissive) and linear (the rest): two entries.
     ASSERT_EQ(scene.images.size(), 2u);
-    const Material& m = scene.materials.at(0);
-    const Image& srgb = scene.images.at(size_t(m.baseColor.image));
-    const Image& linear = scene.images.at(size_t(m.metallicRoughness.image));
+    const scene::Material& m = scene.materials.at(0);
+    const scene::Image& srgb = scene.images.at(size_t(m.baseColor.image));
+    const scene::Image& linear = scene.images.at(size_t(m.metallicRoughness.image));
     EXPECT_TRUE(srgb.srgb);
     EXPECT_FALSE(linear.srgb);
     EXPECT_EQ(m.emissive.image, m.baseColor.image);
@@ -694,34 +694,34 @@ TEST(GltfFeatures, TexturesSamplersAndTextureTransform) {
     EXPECT_TRUE(m.baseColor.transform.identity());
 
     ASSERT_EQ(scene.samplers.size(), 3u);
-    const Sampler& s0 = scene.samplers[0];
-    EXPECT_EQ(s0.magFilter, Filter::Nearest);
-    EXPECT_EQ(s0.minFilter, Filter::Nearest);
-    EXPECT_EQ(s0.mipFilter, Filter::Nearest);
+    const scene::Sampler& s0 = scene.samplers[0];
+    EXPECT_EQ(s0.magFilter, scene::Filter::Nearest);
+    EXPECT_EQ(s0.minFilter, scene::Filter::Nearest);
+    EXPECT_EQ(s0.mipFilter, scene::Filter::Nearest);
     EXPECT_TRUE(s0.mipmaps);
-    EXPECT_EQ(s0.wrapU, Wrap::ClampToEdge);
-    EXPECT_EQ(s0.wrapV, Wrap::MirroredRepeat);
-    EXPECT_EQ(scene.samplers[1].minFilter, Filter::Linear);
+    EXPECT_EQ(s0.wrapU, scene::Wrap::ClampToEdge);
+    EXPECT_EQ(s0.wrapV, scene::Wrap::MirroredRepeat);
+    EXPECT_EQ(scene.samplers[1].minFilter, scene::Filter::Linear);
     EXPECT_FALSE(scene.samplers[1].mipmaps);  // LINEAR: no mip sampling
     EXPECT_TRUE(scene.samplers[2].mipmaps);   // undefined: trilinear default
-    EXPECT_EQ(scene.samplers[2].wrapU, Wrap::Repeat);
+    EXPECT_EQ(scene.samplers[2].wrapU, scene::Wrap::Repeat);
 }
 
 TEST(GltfFeatures, SixteenBitPngRoundedTo8Bits) {
-    TempDir dir;
+    test::TempDir dir;
     // RGBA16, big-endian samples: 0x8080 → 128, 0x00FF → 1, 0xFFFF → 255, 0x7F80 → 127 (round(v / 257)).
     Bytes pixels = {0x80, 0x80, 0x00, 0xFF, 0xFF, 0xFF, 0x7F, 0x80};
-    const Scene scene = loadGltf(fiveTextureModel(makePng(1, 1, 16, 6, pixels)).writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(fiveTextureModel(makePng(1, 1, 16, 6, pixels)).writeGlb(dir.path()));
     ASSERT_EQ(scene.images.size(), 2u);
     EXPECT_EQ(scene.images[0].rgba8, (std::vector<uint8_t>{128, 1, 255, 127}));
 }
 
 TEST(GltfFeatures, ExternalImageFilesAndDotSegmentsInsideTheFolder) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b = fiveTextureModel(smallPng());
     b.doc["images"][0] = {{"uri", "textures/../textures/my%20tex.png"}};
     writeFile(dir / "textures" / "my tex.png", smallPng({1, 2, 3, 4}));
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
     ASSERT_EQ(scene.images.size(), 2u);
     EXPECT_EQ(scene.images[0].rgba8[0], 1);
     EXPECT_EQ(scene.images[0].name, "textures/../textures/my%20tex.png");
@@ -731,17 +731,17 @@ TEST(GltfFeatures, ImagesBehindUnsupportedExtensionsAreNotDecoded) {
     // A texture whose only image is named by an extension Candela does not read (here a made-up
     // EXT_texture_avif-style one, whose image stb_image cannot read either) is dropped with a
     // warning, its image never decoded; a texture with a core source beside it uses that source.
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b = fiveTextureModel(smallPng());
     writeFile(dir / "pic.avif", std::string("....ftypavif not really"));
-    writeFile(dir / "ok.png", smallPng({7, 7, 7, 255}));
+    assets::test::writeFile(dir / "ok.png", smallPng({7, 7, 7, 255}));
     b.doc["images"] = Json::array({{{"uri", "pic.avif"}}, {{"uri", "ok.png"}}});
     b.doc["textures"] = Json::array({{{"source", 1}, {"extensions", {{"EXT_texture_avif", {{"source", 0}}}}}},
                                      {{"extensions", {{"EXT_texture_avif", {{"source", 0}}}}}},
                                      {{"source", 1}}});
     b.doc["extensionsUsed"] = {"EXT_texture_avif", "KHR_texture_transform"};
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
-    const Material& m = scene.materials.at(0);
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Material& m = scene.materials.at(0);
     ASSERT_TRUE(m.baseColor.present());
     EXPECT_EQ(scene.images.at(size_t(m.baseColor.image)).rgba8[0], 7);
     EXPECT_FALSE(m.metallicRoughness.present());  // texture 1: no source Candela reads
@@ -751,7 +751,7 @@ TEST(GltfFeatures, ImagesBehindUnsupportedExtensionsAreNotDecoded) {
 }
 
 TEST(GltfFeatures, LightsInWorldSpace) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     b.addTriangle();
     b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
@@ -768,18 +768,18 @@ TEST(GltfFeatures, LightsInWorldSpace) {
     // A scaled, translated parent: positions scale, directions stay unit.
     const int parent = b.addNode({{"translation", {0, 0, 5}}, {"scale", {2, 2, 2}}, {"rotation", {std::sqrt(0.5), 0, 0, std::sqrt(0.5)}}, {"children", {spotChild}}});
     b.setScene({0, sun, bulb, parent});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
     ASSERT_EQ(scene.lights.size(), 3u);
-    EXPECT_EQ(scene.lights[0].type, LightType::Directional);
+    EXPECT_EQ(scene.lights[0].type, scene::LightType::Directional);
     expectVec(scene.lights[0].direction, {-1, 0, 0});
     expectVec(scene.lights[0].color, {1, 0.5f, 0.25f});
     EXPECT_FLOAT_EQ(scene.lights[0].intensity, 3.0f);
-    EXPECT_EQ(scene.lights[1].type, LightType::Point);
+    EXPECT_EQ(scene.lights[1].type, scene::LightType::Point);
     expectVec(scene.lights[1].position, {1, 2, 3});
     EXPECT_FLOAT_EQ(scene.lights[1].range, 5.0f);
     EXPECT_FLOAT_EQ(scene.lights[1].intensity, 100.0f);
-    const Light& spot = scene.lights[2];
-    EXPECT_EQ(spot.type, LightType::Spot);
+    const scene::Light& spot = scene.lights[2];
+    EXPECT_EQ(spot.type, scene::LightType::Spot);
     // Parent rotates 90° about +X: local (0,1,0)·2 → (0,0,2), plus (0,0,5); −Z → +Y.
     expectVec(spot.position, {0, 0, 7}, 1e-5f);
     expectVec(spot.direction, {0, 1, 0}, 1e-6f);
@@ -788,7 +788,7 @@ TEST(GltfFeatures, LightsInWorldSpace) {
 }
 
 TEST(GltfFeatures, CamerasInWorldSpaceWithoutScale) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     b.addTriangle();
     b.doc["cameras"] = Json::array({
@@ -798,9 +798,9 @@ TEST(GltfFeatures, CamerasInWorldSpaceWithoutScale) {
     const int c0 = b.addNode({{"camera", 0}, {"translation", {1, 2, 3}}, {"scale", {4, 4, 4}}, {"rotation", {0, std::sqrt(0.5), 0, std::sqrt(0.5)}}});
     const int c1 = b.addNode({{"camera", 1}, {"name", "orthoNode"}});
     b.setScene({0, c0, c1});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
     ASSERT_EQ(scene.cameras.size(), 2u);
-    const Camera& p = scene.cameras[0];
+    const scene::Camera& p = scene.cameras[0];
     EXPECT_EQ(p.name, "persp");
     EXPECT_TRUE(p.perspective);
     EXPECT_FLOAT_EQ(p.yfov, 0.5f);
@@ -810,7 +810,7 @@ TEST(GltfFeatures, CamerasInWorldSpaceWithoutScale) {
     expectVec(glm::vec3(p.world[3]), {1, 2, 3});
     expectVec(glm::vec3(p.world[0]), {0, 0, -1});  // scale removed, rotation kept
     expectVec(-glm::vec3(p.world[2]), {-1, 0, 0});  // looks down local −Z → world −X
-    const Camera& o = scene.cameras[1];
+    const scene::Camera& o = scene.cameras[1];
     EXPECT_EQ(o.name, "orthoNode");
     EXPECT_FALSE(o.perspective);
     EXPECT_FLOAT_EQ(o.xmag, 2.0f);
@@ -819,63 +819,63 @@ TEST(GltfFeatures, CamerasInWorldSpaceWithoutScale) {
 }
 
 TEST(GltfFeatures, PointsAndLinesSkippedWithOneWarningLine) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     b.addTriangle();
     const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}, "VEC3", 3);
     b.doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", pos}}}, {"mode", kPoints}});
     b.doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", pos}}}, {"mode", kLines}});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
     EXPECT_EQ(scene.draws.size(), 1u);
     EXPECT_EQ(scene.report.warnings, (std::vector<std::string>{"2 primitives: points or lines, not drawn (only triangles are)"}));
     b.doc["meshes"][0]["primitives"].erase(2);
-    const Scene one = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene one = loadGltf(b.writeGltf(dir.path()));
     EXPECT_EQ(one.report.warnings, (std::vector<std::string>{"mesh 0 primitive 1 (POINTS): points or lines, not drawn (only triangles are)"}));
 }
 
 TEST(GltfFeatures, OptionalUnsupportedExtensionWarnsAndLoads) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     b.addTriangle();
     b.doc["extensionsUsed"] = {"EXT_made_up", "KHR_texture_transform"};
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
     EXPECT_EQ(scene.draws.size(), 1u);
     EXPECT_EQ(scene.report.warnings, (std::vector<std::string>{"extension EXT_made_up is not supported (ignored)"}));
 }
 
 TEST(GltfFeatures, DefaultSceneAndSceneless) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     b.addTriangle();
     const int second = b.addNode({{"mesh", 0}, {"translation", {5, 0, 0}}});
     b.doc["scenes"] = Json::array({{{"nodes", {0}}}, {{"nodes", {second}}}});
     b.doc["scene"] = 1;
-    Scene scene = loadGltf(b.writeGltf(dir / "a"));
+    scene::Scene scene = loadGltf(b.writeGltf(dir / "a"));
     ASSERT_EQ(scene.draws.size(), 1u);
     expectVec(scene.bounds.min, {5, 0, 0});
     // Without scenes every parentless node is drawn, with a warning.
     b.doc.erase("scenes");
     b.doc.erase("scene");
-    scene = loadGltf(b.writeGltf(dir / "b"));
+    scene = assets::loadGltf(b.writeGltf(dir / "b"));
     EXPECT_EQ(scene.draws.size(), 2u);
     expectVec(scene.bounds.min, {0, 0, 0});
     expectVec(scene.bounds.max, {6, 1, 0});
     EXPECT_TRUE(hasWarning(scene, "no scene defined"));
     // A scene without nodes is valid and draws nothing: it loads, with one warning saying so.
     b.doc["scenes"] = Json::array({{{"nodes", Json::array()}}});
-    scene = loadGltf(b.writeGltf(dir / "c"));
+    scene = assets::loadGltf(b.writeGltf(dir / "c"));
     EXPECT_TRUE(scene.draws.empty());
     EXPECT_EQ(scene.report.warnings, std::vector<std::string>{"nothing to draw: scene 0 has no nodes"});
 }
 
 TEST(GltfFeatures, UnindexedPrimitiveAndNonFiniteNormalRepaired) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b;
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1}, "VEC3", 3);
     const int nrm = b.addFloats({0, 0, 2, 0, 0, 1, nan, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3", 3);
     b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}, {"NORMAL", nrm}})}})});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
     EXPECT_EQ(scene.indices, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5}));
     expectVec(scene.vertices[0].normal, {0, 0, 1});  // normalized
     expectVec(scene.vertices[2].normal, {0, 0, 1});  // NaN replaced
@@ -883,4 +883,4 @@ TEST(GltfFeatures, UnindexedPrimitiveAndNonFiniteNormalRepaired) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test::gltf_features_test
+}  // namespace candela::assets::test::gltf_features_test

@@ -5,14 +5,14 @@
 #include "meshopt_test_util.h"
 
 
-namespace candela::scene::test::gltf_meshopt_test {
+namespace candela::assets::test::gltf_meshopt_test {
 namespace {
 
 TEST(GltfMeshopt, QuadLoadsExactlyLikeItsPlainTwin) {
-    TempDir dir;
-    const Scene plain = loadGltf(meshoptQuad(false).writeGlb(dir.path(), "plain"));
-    const Scene glb = loadGltf(meshoptQuad(true).writeGlb(dir.path(), "meshopt"));
-    const Scene gltf = loadGltf(meshoptQuad(true).writeGltf(dir.path(), "meshopt"));
+    test::TempDir dir;
+    const scene::Scene plain = loadGltf(meshoptQuad(false).writeGlb(dir.path(), "plain"));
+    const scene::Scene glb = loadGltf(meshoptQuad(true).writeGlb(dir.path(), "meshopt"));
+    const scene::Scene gltf = loadGltf(meshoptQuad(true).writeGltf(dir.path(), "meshopt"));
     EXPECT_TRUE(glb.report.warnings.empty()) << glb.report.warnings.front();
     EXPECT_TRUE(gltf.report.warnings.empty()) << gltf.report.warnings.front();
     ASSERT_EQ(plain.indices.size(), 6u);
@@ -22,7 +22,7 @@ TEST(GltfMeshopt, QuadLoadsExactlyLikeItsPlainTwin) {
 }
 
 TEST(GltfMeshopt, IndexSequenceForAStrip) {
-    TempDir dir;
+    test::TempDir dir;
     auto make = [](bool compress) {
         GltfBuilder b;
         const std::vector<float> positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
@@ -32,8 +32,8 @@ TEST(GltfMeshopt, IndexSequenceForAStrip) {
         b.setScene({b.addNode({{"mesh", b.addMesh({{"POSITION", pos}}, idx, -1, kStrip)}})});
         return b;
     };
-    const Scene plain = loadGltf(make(false).writeGlb(dir.path(), "plain"));
-    const Scene compressed = loadGltf(make(true).writeGlb(dir.path(), "meshopt"));
+    const scene::Scene plain = loadGltf(make(false).writeGlb(dir.path(), "plain"));
+    const scene::Scene compressed = loadGltf(make(true).writeGlb(dir.path(), "meshopt"));
     EXPECT_EQ(plain.indices.size(), 6u);
     expectSameGeometry(plain, compressed);
 }
@@ -41,7 +41,7 @@ TEST(GltfMeshopt, IndexSequenceForAStrip) {
 // Animation keys: times plain codec, rotations through the QUATERNION filter (normalized shorts),
 // translations through the EXPONENTIAL filter: the pose is the same at every time.
 TEST(GltfMeshopt, AnimationKeysDecodeToThePlainPose) {
-    TempDir dir;
+    test::TempDir dir;
     auto make = [](bool compress) {
         GltfBuilder b;
         b.addTriangle();
@@ -59,11 +59,11 @@ TEST(GltfMeshopt, AnimationKeysDecodeToThePlainPose) {
         b.doc["extensionsUsed"] = compress ? Json{"EXT_meshopt_compression", "KHR_mesh_quantization"} : Json{"KHR_mesh_quantization"};
         return b;
     };
-    const Scene plain = loadGltf(make(false).writeGlb(dir.path(), "plain"));
-    const Scene compressed = loadGltf(make(true).writeGlb(dir.path(), "meshopt"));
+    const scene::Scene plain = loadGltf(make(false).writeGlb(dir.path(), "plain"));
+    const scene::Scene compressed = loadGltf(make(true).writeGlb(dir.path(), "meshopt"));
     ASSERT_EQ(compressed.animations.size(), 1u);
-    ScenePose a(plain, selectAnimations(plain, {}));
-    ScenePose b(compressed, selectAnimations(compressed, {}));
+    pose::ScenePose a(plain, pose::selectAnimations(plain, {}));
+    pose::ScenePose b(compressed, pose::selectAnimations(compressed, {}));
     for (double time : {0.0, 0.3, 0.5, 0.8, 1.0}) {
         a.evaluate(time);
         b.evaluate(time);
@@ -86,9 +86,9 @@ fs::path gltfpacked(const TempDir& dir, const std::string& model) {
 
 TEST(GltfMeshopt, GltfpackedFoxAnimatesLikeTheOriginal) {
     REQUIRE_MODELS();
-    TempDir dir;
-    const Scene original = loadGltf(sharedModels() / "Fox/glTF-Binary/Fox.glb");
-    const Scene packed = loadGltf(gltfpacked(dir, "Fox/glTF-Binary/Fox.glb"));
+    test::TempDir dir;
+    const scene::Scene original = loadGltf(sharedModels() / "Fox/glTF-Binary/Fox.glb");
+    const scene::Scene packed = loadGltf(gltfpacked(dir, "Fox/glTF-Binary/Fox.glb"));
     EXPECT_TRUE(packed.report.warnings.empty()) << packed.report.warnings.front();
     ASSERT_EQ(packed.animations.size(), original.animations.size());
     for (size_t i = 0; i < original.animations.size(); ++i) EXPECT_EQ(packed.animations[i].name, original.animations[i].name);
@@ -103,9 +103,9 @@ TEST(GltfMeshopt, GltfpackedFoxAnimatesLikeTheOriginal) {
 
 TEST(GltfMeshopt, GltfpackedDamagedHelmetMatchesTheOriginal) {
     REQUIRE_MODELS();
-    TempDir dir;
-    const Scene original = loadGltf(sharedModels() / "DamagedHelmet/glTF-Binary/DamagedHelmet.glb");
-    const Scene packed = loadGltf(gltfpacked(dir, "DamagedHelmet/glTF-Binary/DamagedHelmet.glb"));
+    test::TempDir dir;
+    const scene::Scene original = loadGltf(sharedModels() / "DamagedHelmet/glTF-Binary/DamagedHelmet.glb");
+    const scene::Scene packed = loadGltf(gltfpacked(dir, "DamagedHelmet/glTF-Binary/DamagedHelmet.glb"));
     EXPECT_TRUE(packed.report.warnings.empty()) << packed.report.warnings.front();
     // Full detail (the levels of detail of the two differ with the quantized positions).
     EXPECT_EQ(packed.report.geometry.indexBytes, original.report.geometry.indexBytes);
@@ -125,13 +125,13 @@ void PrintTo(const MeshoptCase& c, std::ostream* os) { *os << c.name; }
 class MeshoptBadInput : public testing::TestWithParam<MeshoptCase> {};
 
 TEST_P(MeshoptBadInput, IsOneLineErrorNamingTheView) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b = meshoptQuad(true);
     GetParam().edit(b);
     expectLoadFails(b.writeGlb(dir.path()), GetParam().fragment);
 }
 
-Json& meshoptOf(GltfBuilder& b, int view) { return b.doc["bufferViews"][view]["extensions"]["EXT_meshopt_compression"]; }
+assets::test::Json& meshoptOf(GltfBuilder& b, int view) { return b.doc["bufferViews"][view]["extensions"]["EXT_meshopt_compression"]; }
 
 std::vector<MeshoptCase> meshoptCases() {
     return {
@@ -173,4 +173,4 @@ INSTANTIATE_TEST_SUITE_P(Rows, MeshoptBadInput, testing::ValuesIn(meshoptCases()
                          [](const testing::TestParamInfo<MeshoptCase>& row) { return row.param.name; });
 
 }  // namespace
-}  // namespace candela::scene::test::gltf_meshopt_test
+}  // namespace candela::assets::test::gltf_meshopt_test

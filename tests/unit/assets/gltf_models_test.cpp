@@ -11,7 +11,7 @@
 #include <map>
 #include <set>
 
-namespace candela::scene::test {
+namespace candela::assets::test {
 namespace {
 
 fs::path model(const std::string& name, const std::string& variant, const std::string& file) {
@@ -25,11 +25,11 @@ void expectVec(const glm::vec3& actual, const glm::vec3& expected, float eps = 1
 }
 
 // Every vertex a draw references: unit tangent orthogonal to its (unit) normal, w = ±1.
-void expectTangentFrames(const Scene& scene, float orthoEps = 1e-4f) {
+void expectTangentFrames(const scene::Scene& scene, float orthoEps = 1e-4f) {
     size_t checked = 0;
-    for (const Draw& draw : scene.draws)
+    for (const scene::Draw& draw : scene.draws)
         for (uint32_t i = 0; i < draw.indexCount; ++i) {
-            const Vertex& v = scene.vertices[scene.indices[draw.firstIndex + i]];
+            const scene::Vertex& v = scene.vertices[scene.indices[draw.firstIndex + i]];
             ASSERT_NEAR(glm::length(glm::vec3(v.tangent)), 1.0f, 1e-5f);
             ASSERT_NEAR(glm::dot(glm::vec3(v.tangent), v.normal), 0.0f, orthoEps);
             ASSERT_TRUE(v.tangent.w == 1.0f || v.tangent.w == -1.0f) << v.tangent.w;
@@ -40,10 +40,10 @@ void expectTangentFrames(const Scene& scene, float orthoEps = 1e-4f) {
 
 TEST(GltfModels, BoxInAllThreeVariants) {
     REQUIRE_MODELS();
-    const Scene gltf = loadGltf(model("Box", "glTF", "Box.gltf"));
-    const Scene glb = loadGltf(model("Box", "glTF-Binary", "Box.glb"));
-    const Scene embedded = loadGltf(model("Box", "glTF-Embedded", "Box.gltf"));
-    for (const Scene* s : {&gltf, &glb, &embedded}) {
+    const scene::Scene gltf = loadGltf(model("Box", "glTF", "Box.gltf"));
+    const scene::Scene glb = loadGltf(model("Box", "glTF-Binary", "Box.glb"));
+    const scene::Scene embedded = loadGltf(model("Box", "glTF-Embedded", "Box.gltf"));
+    for (const scene::Scene* s : {&gltf, &glb, &embedded}) {
         EXPECT_EQ(s->vertices.size(), 24u);
         EXPECT_EQ(s->indices.size(), 36u);
         ASSERT_EQ(s->draws.size(), 1u);
@@ -68,11 +68,11 @@ TEST(GltfModels, BoxInAllThreeVariants) {
 
 TEST(GltfModels, BoxTexturedInAllThreeVariants) {
     REQUIRE_MODELS();
-    std::vector<Scene> scenes;
-    scenes.push_back(loadGltf(model("BoxTextured", "glTF", "BoxTextured.gltf")));
+    std::vector<scene::Scene> scenes;
+    scenes.push_back(assets::loadGltf(model("BoxTextured", "glTF", "BoxTextured.gltf")));
     scenes.push_back(loadGltf(model("BoxTextured", "glTF-Binary", "BoxTextured.glb")));
     scenes.push_back(loadGltf(model("BoxTextured", "glTF-Embedded", "BoxTextured.gltf")));
-    for (const Scene& s : scenes) {
+    for (const scene::Scene& s : scenes) {
         ASSERT_EQ(s.images.size(), 1u);
         EXPECT_EQ(s.images[0].width, 256u);
         EXPECT_EQ(s.images[0].height, 256u);
@@ -80,11 +80,11 @@ TEST(GltfModels, BoxTexturedInAllThreeVariants) {
         EXPECT_TRUE(s.images[0].srgb);
         EXPECT_EQ(s.images[0].rgba8, scenes[0].images[0].rgba8);  // same pixels from file, GLB and data URI
         ASSERT_EQ(s.samplers.size(), 1u);
-        EXPECT_EQ(s.samplers[0].magFilter, Filter::Linear);
-        EXPECT_EQ(s.samplers[0].minFilter, Filter::Nearest);  // NEAREST_MIPMAP_LINEAR
-        EXPECT_EQ(s.samplers[0].mipFilter, Filter::Linear);
+        EXPECT_EQ(s.samplers[0].magFilter, scene::Filter::Linear);
+        EXPECT_EQ(s.samplers[0].minFilter, scene::Filter::Nearest);  // NEAREST_MIPMAP_LINEAR
+        EXPECT_EQ(s.samplers[0].mipFilter, scene::Filter::Linear);
         EXPECT_TRUE(s.samplers[0].mipmaps);
-        const Material& m = s.materials.at(0);
+        const scene::Material& m = s.materials.at(0);
         EXPECT_EQ(m.baseColor.image, 0);
         EXPECT_EQ(m.baseColor.sampler, 0);
         EXPECT_FALSE(m.normal.present());
@@ -104,7 +104,7 @@ TEST(GltfModels, EverySampleModelLoadsWithAtMostThreeWarningLines) {
         const std::string extension = entry.path().extension().string();
         if (extension != ".gltf" && extension != ".glb") continue;
         ++files;
-        const Scene s = loadGltf(entry.path(), {.prepareGeometry = false});
+        const scene::Scene s = loadGltf(entry.path(), {.prepareGeometry = false});
         std::string lines;
         for (const std::string& w : s.report.warnings) lines += "\n  " + w;
         EXPECT_LE(s.report.warnings.size(), 3u) << entry.path() << lines;
@@ -114,7 +114,7 @@ TEST(GltfModels, EverySampleModelLoadsWithAtMostThreeWarningLines) {
 
 TEST(GltfModels, Cameras) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("Cameras", "glTF", "Cameras.gltf"));
+    const scene::Scene s = loadGltf(model("Cameras", "glTF", "Cameras.gltf"));
     ASSERT_EQ(s.cameras.size(), 2u);
     EXPECT_TRUE(s.cameras[0].perspective);
     EXPECT_FLOAT_EQ(s.cameras[0].yfov, 0.7f);
@@ -123,7 +123,7 @@ TEST(GltfModels, Cameras) {
     EXPECT_FLOAT_EQ(s.cameras[0].zfar, 100.0f);
     EXPECT_FALSE(s.cameras[1].perspective);
     EXPECT_FLOAT_EQ(s.cameras[1].xmag, 1.0f);
-    for (const Camera& c : s.cameras) expectVec(glm::vec3(c.world[3]), {0.5f, 0.5f, 3.0f});
+    for (const scene::Camera& c : s.cameras) expectVec(glm::vec3(c.world[3]), {0.5f, 0.5f, 3.0f});
     // The quad has no normals: 2 flat triangles → 6 vertices, plus the default material.
     EXPECT_EQ(s.vertices.size(), 6u);
     ASSERT_EQ(s.materials.size(), 1u);
@@ -132,16 +132,16 @@ TEST(GltfModels, Cameras) {
 
 TEST(GltfModels, TriangleWithoutIndices) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("TriangleWithoutIndices", "glTF", "TriangleWithoutIndices.gltf"));
+    const scene::Scene s = loadGltf(model("TriangleWithoutIndices", "glTF", "TriangleWithoutIndices.gltf"));
     EXPECT_EQ(s.indices, (std::vector<uint32_t>{0, 1, 2}));
     ASSERT_EQ(s.vertices.size(), 3u);
-    for (const Vertex& v : s.vertices) expectVec(v.normal, {0, 0, 1});
+    for (const scene::Vertex& v : s.vertices) expectVec(v.normal, {0, 0, 1});
     expectVec(s.vertices[1].position, {1, 0, 0});
 }
 
 TEST(GltfModels, MeshPrimitiveModes) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("MeshPrimitiveModes", "glTF", "MeshPrimitiveModes.gltf"));
+    const scene::Scene s = loadGltf(model("MeshPrimitiveModes", "glTF", "MeshPrimitiveModes.gltf"));
     // POINTS, LINES, LINE_LOOP and LINE_STRIP are skipped; TRIANGLES (6), the strip (6 indices → 4
     // triangles) and the fan (8 indices → 6 triangles) are drawn, all facing +Z.
     ASSERT_EQ(s.draws.size(), 3u);
@@ -149,7 +149,7 @@ TEST(GltfModels, MeshPrimitiveModes) {
     EXPECT_EQ(s.draws[1].indexCount, 12u);
     EXPECT_EQ(s.draws[2].indexCount, 18u);
     EXPECT_EQ(s.vertices.size(), 48u);  // no normals: flat, one vertex per corner
-    for (const Vertex& v : s.vertices) expectVec(v.normal, {0, 0, 1});
+    for (const scene::Vertex& v : s.vertices) expectVec(v.normal, {0, 0, 1});
     // The four primitives of points and lines, folded into one line.
     EXPECT_EQ(s.report.warnings, (std::vector<std::string>{"4 primitives: points or lines, not drawn (only triangles are)"}));
     expectVec(glm::vec3(s.draws[1].world[3]), {0, -3, 0});
@@ -157,7 +157,7 @@ TEST(GltfModels, MeshPrimitiveModes) {
 
 TEST(GltfModels, SimpleMeshesShareGeometry) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("SimpleMeshes", "glTF", "SimpleMeshes.gltf"));
+    const scene::Scene s = loadGltf(model("SimpleMeshes", "glTF", "SimpleMeshes.gltf"));
     ASSERT_EQ(s.draws.size(), 2u);
     EXPECT_EQ(s.vertices.size(), 3u);
     EXPECT_EQ(s.draws[0].firstIndex, s.draws[1].firstIndex);
@@ -167,17 +167,17 @@ TEST(GltfModels, SimpleMeshesShareGeometry) {
 
 TEST(GltfModels, NormalTangentTestGeneratesTangents) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("NormalTangentTest", "glTF", "NormalTangentTest.gltf"));
+    const scene::Scene s = loadGltf(model("NormalTangentTest", "glTF", "NormalTangentTest.gltf"));
     ASSERT_EQ(s.draws.size(), 1u);
     EXPECT_EQ(s.draws[0].indexCount, 23322u);
     EXPECT_GE(s.vertices.size(), 3983u);  // split only where corners disagree
     EXPECT_TRUE(s.report.warnings.empty());
     expectTangentFrames(s);
     // Every triangle of this model maps the texture without mirroring: w = +1 throughout.
-    for (const Vertex& v : s.vertices) ASSERT_EQ(v.tangent.w, 1.0f);
+    for (const scene::Vertex& v : s.vertices) ASSERT_EQ(v.tangent.w, 1.0f);
     // Three images: base colour sRGB; occlusion-roughness-metallic and normal linear.
     ASSERT_EQ(s.images.size(), 3u);
-    const Material& m = s.materials.at(0);
+    const scene::Material& m = s.materials.at(0);
     EXPECT_TRUE(s.images[size_t(m.baseColor.image)].srgb);
     EXPECT_FALSE(s.images[size_t(m.normal.image)].srgb);
     EXPECT_EQ(m.occlusion.image, m.metallicRoughness.image);
@@ -190,15 +190,15 @@ struct Agreement {
     float worstDegrees = 0.0f;
 };
 
-Agreement compareWithGenerated(const Scene& s) {
+Agreement compareWithGenerated(const scene::Scene& s) {
     std::vector<glm::vec3> positions, normals;
     std::vector<glm::vec2> uvs;
-    for (const Vertex& v : s.vertices) {
+    for (const scene::Vertex& v : s.vertices) {
         positions.push_back(v.position);
         normals.push_back(v.normal);
         uvs.push_back(v.uv0);
     }
-    const std::vector<glm::vec4> generated = generateTangents(positions, normals, uvs, s.indices);
+    const std::vector<glm::vec4> generated = geometry::generateTangents(positions, normals, uvs, s.indices);
     Agreement a;
     for (size_t c = 0; c < s.indices.size(); ++c) {
         const glm::vec4 given = s.vertices[s.indices[c]].tangent;
@@ -216,7 +216,7 @@ TEST(GltfModels, NormalTangentMirrorTestMatchesExportedMikkTSpace) {
     REQUIRE_MODELS();
     // This model ships Blender's MikkTSpace tangents; regenerate them from the same vertices (in
     // the file's order: no geometry preparation).
-    const Scene s = loadGltf(model("NormalTangentMirrorTest", "glTF", "NormalTangentMirrorTest.gltf"), {.prepareGeometry = false});
+    const scene::Scene s = loadGltf(model("NormalTangentMirrorTest", "glTF", "NormalTangentMirrorTest.gltf"), {.prepareGeometry = false});
     ASSERT_EQ(s.indices.size(), 15720u);
     EXPECT_EQ(s.vertices.size(), 2770u);  // tangents supplied: kept, nothing split
     const Agreement a = compareWithGenerated(s);
@@ -230,15 +230,15 @@ TEST(GltfModels, NormalTangentMirrorTestMatchesExportedMikkTSpace) {
 TEST(GltfModels, NormalTangentMirrorTestWithoutTangentsGetsBothHandedness) {
     REQUIRE_MODELS();
     // A copy of the model with its TANGENT attribute removed, so the loader must generate them.
-    TempDir dir;
+    test::TempDir dir;
     const fs::path source = model("NormalTangentMirrorTest", "glTF", "");
     for (const auto& entry : fs::directory_iterator(source)) fs::copy_file(entry.path(), dir / entry.path().filename().string());
     Json doc = Json::parse(readBytes(source / "NormalTangentMirrorTest.gltf"));
     doc["meshes"][0]["primitives"][0]["attributes"].erase("TANGENT");
     writeFile(dir / "NormalTangentMirrorTest.gltf", doc.dump());
     // Corner by corner: both in the file's triangle order (no geometry preparation).
-    const Scene generated = loadGltf(dir / "NormalTangentMirrorTest.gltf", {.prepareGeometry = false});
-    const Scene supplied = loadGltf(source / "NormalTangentMirrorTest.gltf", {.prepareGeometry = false});
+    const scene::Scene generated = loadGltf(dir / "NormalTangentMirrorTest.gltf", {.prepareGeometry = false});
+    const scene::Scene supplied = loadGltf(source / "NormalTangentMirrorTest.gltf", {.prepareGeometry = false});
     EXPECT_TRUE(generated.report.warnings.empty());
     expectTangentFrames(generated);
     ASSERT_EQ(generated.indices.size(), supplied.indices.size());
@@ -261,14 +261,14 @@ TEST(GltfModels, NormalTangentMirrorTestWithoutTangentsGetsBothHandedness) {
 
 TEST(GltfModels, AlphaBlendModeTest) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("AlphaBlendModeTest", "glTF-Binary", "AlphaBlendModeTest.glb"));
+    const scene::Scene s = loadGltf(model("AlphaBlendModeTest", "glTF-Binary", "AlphaBlendModeTest.glb"));
     EXPECT_EQ(s.draws.size(), 9u);
     ASSERT_EQ(s.materials.size(), 6u);
-    const std::map<std::string, std::pair<AlphaMode, float>> expected = {
-        {"MatBed", {AlphaMode::Opaque, 0.5f}},       {"MatBlend", {AlphaMode::Blend, 0.5f}},
-        {"MatCutoff25", {AlphaMode::Mask, 0.25f}},   {"MatCutoff75", {AlphaMode::Mask, 0.75f}},
-        {"MatCutoffDefault", {AlphaMode::Mask, 0.5f}}, {"MatOpaque", {AlphaMode::Opaque, 0.5f}}};
-    for (const Material& m : s.materials) {
+    const std::map<std::string, std::pair<scene::AlphaMode, float>> expected = {
+        {"MatBed", {scene::AlphaMode::Opaque, 0.5f}},       {"MatBlend", {scene::AlphaMode::Blend, 0.5f}},
+        {"MatCutoff25", {scene::AlphaMode::Mask, 0.25f}},   {"MatCutoff75", {scene::AlphaMode::Mask, 0.75f}},
+        {"MatCutoffDefault", {scene::AlphaMode::Mask, 0.5f}}, {"MatOpaque", {scene::AlphaMode::Opaque, 0.5f}}};
+    for (const scene::Material& m : s.materials) {
         SCOPED_TRACE(m.name);
         ASSERT_TRUE(expected.count(m.name));
         EXPECT_EQ(m.alphaMode, expected.at(m.name).first);
@@ -277,27 +277,27 @@ TEST(GltfModels, AlphaBlendModeTest) {
     }
     // JPEG/PNG images from bufferViews: 2 linear (normal; occlusion-roughness-metallic), 2 sRGB.
     ASSERT_EQ(s.images.size(), 4u);
-    EXPECT_EQ(std::count_if(s.images.begin(), s.images.end(), [](const Image& i) { return i.srgb; }), 2);
-    for (const Image& i : s.images) EXPECT_EQ(i.rgba8.size(), size_t(i.width) * i.height * 4);
+    EXPECT_EQ(std::count_if(s.images.begin(), s.images.end(), [](const scene::Image& i) { return i.srgb; }), 2);
+    for (const scene::Image& i : s.images) EXPECT_EQ(i.rgba8.size(), size_t(i.width) * i.height * 4);
     EXPECT_TRUE(s.report.warnings.empty());
 }
 
 TEST(GltfModels, TextureTransformTest) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("TextureTransformTest", "glTF", "TextureTransformTest.gltf"));
+    const scene::Scene s = loadGltf(model("TextureTransformTest", "glTF", "TextureTransformTest.gltf"));
     EXPECT_TRUE(s.report.warnings.empty());
     EXPECT_EQ(s.draws.size(), 12u);
     ASSERT_EQ(s.materials.size(), 9u);
     EXPECT_EQ(s.materials[0].baseColor.transform.offset, glm::vec2(0.5f, 0.0f));
     EXPECT_FLOAT_EQ(s.materials[3].baseColor.transform.rotation, 0.39269908169872414f);
     EXPECT_EQ(s.materials[4].baseColor.transform.scale, glm::vec2(1.5f));
-    const TextureTransform& all = s.materials[5].baseColor.transform;
+    const scene::TextureTransform& all = s.materials[5].baseColor.transform;
     EXPECT_EQ(all.offset, glm::vec2(-0.2f, -0.1f));
     EXPECT_FLOAT_EQ(all.rotation, 0.3f);
     EXPECT_EQ(all.scale, glm::vec2(1.5f));
     EXPECT_TRUE(s.materials[6].baseColor.transform.identity());
     ASSERT_EQ(s.samplers.size(), 1u);
-    EXPECT_EQ(s.samplers[0].wrapU, Wrap::ClampToEdge);
+    EXPECT_EQ(s.samplers[0].wrapU, scene::Wrap::ClampToEdge);
     EXPECT_FALSE(s.samplers[0].mipmaps);
     EXPECT_EQ(s.images.size(), 5u);
 }
@@ -309,7 +309,7 @@ TEST(GltfModels, TextureTransformRotatesTowardTheCorrectMarker) {
     // Supported" marker, so the tip's texture coordinate is that marker's. Each quad maps
     // u = x + 0.5, v = 0.5 − y (checked below). The transform is right when the "Correct"
     // marker's surface point samples the tip.
-    const Scene s = loadGltf(model("TextureTransformTest", "glTF", "TextureTransformTest.gltf"));
+    const scene::Scene s = loadGltf(model("TextureTransformTest", "glTF", "TextureTransformTest.gltf"));
     ASSERT_EQ(s.draws.size(), 12u);  // 0–2 offsets; 3 rotation (+4 correct, 5 not supported, 6 error);
                                      // 7 scale (+8 correct, 9 not supported); 10 all (+11 correct)
     auto uvOf = [&](size_t quad, size_t marker) {
@@ -317,40 +317,40 @@ TEST(GltfModels, TextureTransformRotatesTowardTheCorrectMarker) {
         return glm::vec2(p.x + 0.5f, 0.5f - p.y);
     };
     for (uint32_t i = 0; i < s.draws[3].indexCount; ++i) {
-        const Vertex& v = s.vertices[s.indices[s.draws[3].firstIndex + i]];
+        const scene::Vertex& v = s.vertices[s.indices[s.draws[3].firstIndex + i]];
         EXPECT_EQ(v.uv0, glm::vec2(v.position.x + 0.5f, 0.5f - v.position.y));
     }
     const glm::vec2 tip = uvOf(3, 5);
-    const TextureTransform& rotation = s.materials[3].baseColor.transform;
-    EXPECT_LT(glm::length(applyTextureTransform(rotation, uvOf(3, 4)) - tip), 1e-3f);
-    EXPECT_GT(glm::length(applyTextureTransform(rotation, uvOf(3, 6)) - tip), 0.2f);
-    EXPECT_LT(glm::length(applyTextureTransform(s.materials[4].baseColor.transform, uvOf(7, 8)) - uvOf(7, 9)), 1e-3f);
+    const scene::TextureTransform& rotation = s.materials[3].baseColor.transform;
+    EXPECT_LT(glm::length(scene::applyTextureTransform(rotation, uvOf(3, 4)) - tip), 1e-3f);
+    EXPECT_GT(glm::length(scene::applyTextureTransform(rotation, uvOf(3, 6)) - tip), 0.2f);
+    EXPECT_LT(glm::length(scene::applyTextureTransform(s.materials[4].baseColor.transform, uvOf(7, 8)) - uvOf(7, 9)), 1e-3f);
     // "All" combines offset, rotation and scale; its marker is placed by eye (about 0.03 off).
-    EXPECT_LT(glm::length(applyTextureTransform(s.materials[5].baseColor.transform, uvOf(10, 11)) - tip), 0.04f);
+    EXPECT_LT(glm::length(scene::applyTextureTransform(s.materials[5].baseColor.transform, uvOf(10, 11)) - tip), 0.04f);
 }
 
 TEST(GltfModels, DamagedHelmet) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("DamagedHelmet", "glTF-Binary", "DamagedHelmet.glb"));
+    const scene::Scene s = loadGltf(model("DamagedHelmet", "glTF-Binary", "DamagedHelmet.glb"));
     ASSERT_EQ(s.draws.size(), 1u);
     EXPECT_EQ(s.draws[0].indexCount, 46356u);
     EXPECT_GE(s.vertices.size(), 14556u);
     EXPECT_TRUE(s.report.warnings.empty());
     expectTangentFrames(s);  // no TANGENT in the file, a normal texture: generated
     ASSERT_EQ(s.images.size(), 5u);
-    const Material& m = s.materials.at(0);
+    const scene::Material& m = s.materials.at(0);
     EXPECT_TRUE(s.images[size_t(m.baseColor.image)].srgb);
     EXPECT_TRUE(s.images[size_t(m.emissive.image)].srgb);
     EXPECT_FALSE(s.images[size_t(m.normal.image)].srgb);
     EXPECT_FALSE(s.images[size_t(m.occlusion.image)].srgb);
     EXPECT_FALSE(s.images[size_t(m.metallicRoughness.image)].srgb);
-    for (const Image& i : s.images) EXPECT_EQ(i.width, 2048u);
+    for (const scene::Image& i : s.images) EXPECT_EQ(i.width, 2048u);
     expectVec(glm::vec3(s.draws[0].world * glm::vec4(0, 1, 0, 0)), {0, 0, 1}, 1e-6f);  // +90° about X
 }
 
 TEST(GltfModels, EmissiveStrengthTest) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("EmissiveStrengthTest", "glTF-Binary", "EmissiveStrengthTest.glb"));
+    const scene::Scene s = loadGltf(model("EmissiveStrengthTest", "glTF-Binary", "EmissiveStrengthTest.glb"));
     EXPECT_TRUE(s.report.warnings.empty());
     ASSERT_EQ(s.materials.size(), 6u);
     const std::vector<float> strengths = {4, 1, 2, 1, 8, 16};
@@ -361,7 +361,7 @@ TEST(GltfModels, EmissiveStrengthTest) {
 
 TEST(GltfModels, UnlitTestRequiresASupportedExtension) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("UnlitTest", "glTF", "UnlitTest.gltf"));
+    const scene::Scene s = loadGltf(model("UnlitTest", "glTF", "UnlitTest.gltf"));
     EXPECT_TRUE(s.report.warnings.empty());
     ASSERT_EQ(s.materials.size(), 2u);
     EXPECT_TRUE(s.materials[0].unlit);
@@ -371,7 +371,7 @@ TEST(GltfModels, UnlitTestRequiresASupportedExtension) {
 
 TEST(GltfModels, OrientationTestMatrixAndTrsNodes) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("OrientationTest", "glTF", "OrientationTest.gltf"));
+    const scene::Scene s = loadGltf(model("OrientationTest", "glTF", "OrientationTest.gltf"));
     ASSERT_EQ(s.draws.size(), 13u);
     EXPECT_EQ(s.materials.size(), 7u);
     // Scene root order [5, 12, 10, ...]: draw 0 is node 5 ('ArrowZ2', a matrix), draw 9 node 0
@@ -379,12 +379,12 @@ TEST(GltfModels, OrientationTestMatrixAndTrsNodes) {
     expectVec(glm::vec3(s.draws[0].world[3]), {0, 0, -5});
     expectVec(glm::vec3(s.draws[0].world[0]), {0.9563047863767122f, -0.2923716890963366f, 0});
     expectVec(glm::vec3(s.draws[9].world[3]), {5, 0, 0});
-    for (const Draw& d : s.draws) EXPECT_FALSE(d.flipWinding);
+    for (const scene::Draw& d : s.draws) EXPECT_FALSE(d.flipWinding);
 }
 
 TEST(GltfModels, NegativeScaleTestFlipsTheRightDraws) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("NegativeScaleTest", "glTF-Binary", "NegativeScaleTest.glb"));
+    const scene::Scene s = loadGltf(model("NegativeScaleTest", "glTF-Binary", "NegativeScaleTest.glb"));
     // Roots [0, 1, 2, 3, 4, 7→(5, 6), 10→(8, 9), 13→(11, 12)]. A mirrored node flips; a mirrored
     // node under a mirrored parent does not.
     const std::vector<bool> flips = {false, false, false, false, true, false, true, true, false, true, false};
@@ -395,10 +395,10 @@ TEST(GltfModels, NegativeScaleTestFlipsTheRightDraws) {
 
 TEST(GltfModels, VertexColorTest) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("VertexColorTest", "glTF", "VertexColorTest.gltf"));
+    const scene::Scene s = loadGltf(model("VertexColorTest", "glTF", "VertexColorTest.gltf"));
     ASSERT_EQ(s.draws.size(), 2u);
     std::set<std::array<float, 4>> colors;
-    const Draw& d = s.draws[1];
+    const scene::Draw& d = s.draws[1];
     for (uint32_t i = 0; i < d.indexCount; ++i) {
         const glm::vec4 c = s.vertices[s.indices[d.firstIndex + i]].color;
         colors.insert({c.r, c.g, c.b, c.a});
@@ -410,8 +410,8 @@ TEST(GltfModels, VertexColorTest) {
 
 TEST(GltfModels, MultiUVTest) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("MultiUVTest", "glTF-Binary", "MultiUVTest.glb"));
-    const Material& m = s.materials.at(0);
+    const scene::Scene s = loadGltf(model("MultiUVTest", "glTF-Binary", "MultiUVTest.glb"));
+    const scene::Material& m = s.materials.at(0);
     EXPECT_EQ(m.baseColor.texCoord, 0u);
     EXPECT_EQ(m.emissive.texCoord, 1u);
     EXPECT_NE(s.vertices.at(0).uv0, s.vertices.at(0).uv1);
@@ -423,11 +423,11 @@ TEST(GltfModels, MultiUVTest) {
 
 TEST(GltfModels, TextureSettingsTest) {
     REQUIRE_MODELS();
-    const Scene s = loadGltf(model("TextureSettingsTest", "glTF", "TextureSettingsTest.gltf"));
+    const scene::Scene s = loadGltf(model("TextureSettingsTest", "glTF", "TextureSettingsTest.gltf"));
     EXPECT_EQ(s.draws.size(), 10u);
     ASSERT_EQ(s.samplers.size(), 5u);
-    std::set<Wrap> wraps;
-    for (const Sampler& sampler : s.samplers) wraps.insert(sampler.wrapU), wraps.insert(sampler.wrapV);
+    std::set<scene::Wrap> wraps;
+    for (const scene::Sampler& sampler : s.samplers) wraps.insert(sampler.wrapU), wraps.insert(sampler.wrapV);
     EXPECT_EQ(wraps.size(), 3u);  // REPEAT, MIRRORED_REPEAT and CLAMP_TO_EDGE all appear
     EXPECT_TRUE(s.materials[7].doubleSided);
     EXPECT_FALSE(s.materials[8].doubleSided);
@@ -438,7 +438,7 @@ TEST(GltfModels, SpecGlossVsMetalRoughConvertsItsSpecularGlossinessMaterials) {
     // Its extensionsRequired lists KHR_materials_pbrSpecularGlossiness (archived): converted on
     // load to the specular layer (docs/materials.md), quietly.
     const fs::path path = model("SpecGlossVsMetalRough", "glTF", "SpecGlossVsMetalRough.gltf");
-    const Scene s = loadGltf(path);
+    const scene::Scene s = loadGltf(path);
     ASSERT_EQ(s.materials.size(), 4u);
     EXPECT_EQ(s.materials[0].name, "BottleMat_SpecGloss");
     EXPECT_EQ(s.materials[0].ior, 0.0f);
@@ -457,54 +457,54 @@ TEST(GltfModels, NodesAreKeptParentsFirstWithTheTransformsTheDrawsWerePlacedWith
                                  model("Cameras", "glTF", "Cameras.gltf"),
                                  model("LightsPunctualLamp", "glTF", "LightsPunctualLamp.gltf")}) {
         SCOPED_TRACE(path.string());
-        const Scene scene = loadGltf(path);
+        const scene::Scene scene = loadGltf(path);
         ASSERT_FALSE(scene.nodes.empty());
         for (size_t i = 0; i < scene.nodes.size(); ++i) {
             EXPECT_LT(scene.nodes[i].parent, int32_t(i));
             EXPECT_GE(scene.nodes[i].source, 0);
         }
-        for (const Draw& draw : scene.draws) {
+        for (const scene::Draw& draw : scene.draws) {
             ASSERT_GE(draw.node, 0);
             ASSERT_LT(size_t(draw.node), scene.nodes.size());
             EXPECT_EQ(draw.world, glm::mat4(scene.nodes[size_t(draw.node)].world));
         }
-        for (const Light& light : scene.lights) EXPECT_GE(light.node, 0);
-        for (const Camera& camera : scene.cameras) EXPECT_GE(camera.node, 0);
+        for (const scene::Light& light : scene.lights) EXPECT_GE(light.node, 0);
+        for (const scene::Camera& camera : scene.cameras) EXPECT_GE(camera.node, 0);
         // Recomputing every world transform from the local ones gives the loaded ones exactly:
         // what animation will do each frame for the animated subtrees.
-        std::vector<SceneNode> nodes = scene.nodes;
+        std::vector<animation::SceneNode> nodes = scene.nodes;
         std::vector<uint32_t> all;
-        for (SceneNode& node : nodes) {
+        for (animation::SceneNode& node : nodes) {
             all.push_back(uint32_t(all.size()));
             node.world = glm::dmat4(0.0);
         }
-        updateWorldTransforms(nodes, all);
+        animation::updateWorldTransforms(nodes, all);
         for (size_t i = 0; i < nodes.size(); ++i) EXPECT_EQ(nodes[i].world, scene.nodes[i].world) << "node " << i;
     }
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::assets::test
 
-namespace candela::scene::test {
+namespace candela::assets::test {
 namespace {
 
 TEST(GltfModels, MultipleScenesDefaultAndChosen) {
     if (sharedModels().empty()) GTEST_SKIP() << "../shared/assets not present";
     const fs::path path = sharedModels() / "MultipleScenes/glTF/MultipleScenes.gltf";
     // The file names scene 1 (one node); scene 0 holds the other node.
-    const Scene byDefault = loadGltf(path);
+    const scene::Scene byDefault = loadGltf(path);
     EXPECT_EQ(byDefault.sceneIndex, 1u);
     EXPECT_EQ(byDefault.sceneNames, (std::vector<std::string>{"scene 0", "scene 1"}));
     ASSERT_EQ(byDefault.nodes.size(), 1u);
     EXPECT_EQ(byDefault.nodes[0].source, 1);
-    const Scene first = loadGltf(path, {.sceneIndex = 0u});
+    const scene::Scene first = loadGltf(path, {.sceneIndex = 0u});
     EXPECT_EQ(first.sceneIndex, 0u);
     ASSERT_EQ(first.nodes.size(), 1u);
     EXPECT_EQ(first.nodes[0].source, 0);
     EXPECT_NE(first.indices.size(), byDefault.indices.size());  // a triangle and a square
     try {
-        loadGltf(path, {.sceneIndex = 2u});
+        assets::loadGltf(path, {.sceneIndex = 2u});
         FAIL() << "no error";
     } catch (const UserError& e) {
         EXPECT_NE(std::string(e.what()).find("scene 2 does not exist (the file has 2 scenes)"), std::string::npos) << e.what();
@@ -512,4 +512,4 @@ TEST(GltfModels, MultipleScenesDefaultAndChosen) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::assets::test

@@ -6,7 +6,7 @@
 
 #include <random>
 
-namespace candela::scene::test {
+namespace candela::assets::test {
 namespace {
 
 using candela::test::encodeAnimatedWebp;
@@ -14,7 +14,7 @@ using candela::test::encodeWebp;
 
 // width × height RGBA8 texels from a fixed seed, with fully transparent texels whose RGB is not 0
 // (a lossless encoder without `exact` would drop it).
-Bytes noise(uint32_t width, uint32_t height, uint32_t seed) {
+assets::test::Bytes noise(uint32_t width, uint32_t height, uint32_t seed) {
     std::mt19937 rng(seed);
     Bytes pixels(size_t(width) * height * 4);
     for (uint8_t& v : pixels) v = uint8_t(rng());
@@ -22,7 +22,7 @@ Bytes noise(uint32_t width, uint32_t height, uint32_t seed) {
     return pixels;
 }
 
-Bytes solid(uint32_t width, uint32_t height, std::array<uint8_t, 4> rgba) {
+assets::test::Bytes solid(uint32_t width, uint32_t height, std::array<uint8_t, 4> rgba) {
     Bytes pixels;
     for (size_t i = 0; i < size_t(width) * height; ++i) pixels.insert(pixels.end(), rgba.begin(), rgba.end());
     return pixels;
@@ -35,9 +35,9 @@ bool hasLine(const std::vector<std::string>& lines, const std::string& fragment)
 }
 
 TEST(GltfTextureFormatsTest, LosslessWebpDecodesToTheSameBytes) {
-    TempDir dir;
+    test::TempDir dir;
     const Bytes pixels = noise(13, 7, 1);
-    const Scene scene = loadGltf(webpTriangle(encodeWebp(13, 7, pixels, true)).writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(webpTriangle(encodeWebp(13, 7, pixels, true)).writeGlb(dir.path()));
     ASSERT_EQ(scene.images.size(), 1u);
     EXPECT_EQ(scene.images[0].width, 13u);
     EXPECT_EQ(scene.images[0].height, 7u);
@@ -47,13 +47,13 @@ TEST(GltfTextureFormatsTest, LosslessWebpDecodesToTheSameBytes) {
 }
 
 TEST(GltfTextureFormatsTest, LossyWebpKeepsItsAlphaAndComesCloseInColour) {
-    TempDir dir;
+    test::TempDir dir;
     // A smooth gradient (lossy coding's good case) under a hard-edged alpha.
     const uint32_t w = 32, h = 16;
     Bytes pixels;
     for (uint32_t y = 0; y < h; ++y)
         for (uint32_t x = 0; x < w; ++x) pixels.insert(pixels.end(), {uint8_t(x * 8), uint8_t(y * 16), 128, uint8_t(x < 16 ? 255 : 64)});
-    const Scene scene = loadGltf(webpTriangle(encodeWebp(w, h, pixels, false, 95.0f)).writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(webpTriangle(encodeWebp(w, h, pixels, false, 95.0f)).writeGlb(dir.path()));
     ASSERT_EQ(scene.images.size(), 1u);
     const Bytes& got = scene.images[0].rgba8;
     ASSERT_EQ(got.size(), pixels.size());
@@ -66,23 +66,23 @@ TEST(GltfTextureFormatsTest, LossyWebpKeepsItsAlphaAndComesCloseInColour) {
 }
 
 TEST(GltfTextureFormatsTest, WebpIsPreferredOverTheFallbackSource) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b = texturedTriangle("", smallPng({255, 0, 0, 255}));  // image 0: the PNG fallback
     const Bytes green = solid(2, 2, {0, 255, 0, 255});
     const Bytes webp = encodeWebp(2, 2, green, true);
     b.doc["images"].push_back({{"bufferView", b.addView(webp.data(), webp.size())}, {"mimeType", "image/webp"}});
     b.doc["textures"][0]["extensions"] = {{"EXT_texture_webp", {{"source", 1}}}};
     b.doc["extensionsUsed"] = {"EXT_texture_webp"};
-    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGlb(dir.path()));
     ASSERT_EQ(scene.images.size(), 1u);  // the fallback is never decoded
     EXPECT_EQ(scene.images[0].rgba8, green);
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
 }
 
 TEST(GltfTextureFormatsTest, AnimatedWebpGivesItsFirstFrameWithANote) {
-    TempDir dir;
+    test::TempDir dir;
     const Bytes first = noise(8, 4, 2), second = solid(8, 4, {10, 20, 30, 255});
-    const Scene scene = loadGltf(webpTriangle(encodeAnimatedWebp(8, 4, {first, second})).writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(webpTriangle(encodeAnimatedWebp(8, 4, {first, second})).writeGlb(dir.path()));
     ASSERT_EQ(scene.images.size(), 1u);
     // The animation decoder composites onto a canvas: transparent texels keep the frame's bytes only
     // where alpha is not 0, so compare alpha everywhere and colour where the texel is visible.
@@ -98,7 +98,7 @@ TEST(GltfTextureFormatsTest, AnimatedWebpGivesItsFirstFrameWithANote) {
 }
 
 TEST(GltfTextureFormatsTest, BadWebpIsOneLineNamingTheImage) {
-    TempDir dir;
+    test::TempDir dir;
     Bytes webp = encodeWebp(16, 16, noise(16, 16, 3), true);
     webp.resize(webp.size() / 2);  // truncated bitstream
     const std::string error = loadError(webpTriangle(webp).writeGlb(dir.path()));
@@ -112,7 +112,7 @@ TEST(GltfTextureFormatsTest, BadWebpIsOneLineNamingTheImage) {
 }
 
 TEST(GltfTextureFormatsTest, WebpAboveTheSizeLimitFailsBeforeDecoding) {
-    TempDir dir;
+    test::TempDir dir;
     LoadOptions options;
     options.maxImageDimension = 8;
     const std::string error = loadError(webpTriangle(encodeWebp(16, 4, noise(16, 4, 4), true)).writeGlb(dir.path()), options);
@@ -120,14 +120,14 @@ TEST(GltfTextureFormatsTest, WebpAboveTheSizeLimitFailsBeforeDecoding) {
 }
 
 TEST(GltfTextureFormatsTest, AnUnusedBrokenWebpIsNeverRead) {
-    TempDir dir;
+    test::TempDir dir;
     GltfBuilder b = texturedTriangle("", smallPng());
     const Bytes broken = {'R', 'I', 'F', 'F', 4, 0, 0, 0, 'W', 'E', 'B', 'P'};
     b.doc["images"].push_back({{"bufferView", b.addView(broken.data(), broken.size())}, {"mimeType", "image/webp"}});
-    const Scene scene = loadGltf(b.writeGlb(dir.path()));
+    const scene::Scene scene = loadGltf(b.writeGlb(dir.path()));
     EXPECT_EQ(scene.images.size(), 1u);
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::assets::test

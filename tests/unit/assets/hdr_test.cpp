@@ -4,7 +4,7 @@
 // made from, RGBE's shared 8-bit mantissa leaves each channel within max(r, g, b)/128.
 #include "environment_test_util.h"
 
-namespace candela::scene::test {
+namespace candela::assets::test {
 namespace {
 
 constexpr uint32_t kWidth = 40, kHeight = 5;  // ≥ 8 wide so the RLE path is taken
@@ -163,4 +163,4 @@ TEST(HdrRoundTrip, ContentDecidesTheFormatNotTheExtension) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::assets::test

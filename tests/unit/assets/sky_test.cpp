@@ -8,7 +8,7 @@
 
 #include <iostream>
 
-namespace candela::scene::test {
+namespace candela::assets::test {
 namespace {
 
 using shading::directionToEquirectUv;
@@ -239,4 +239,4 @@ TEST(SkyProcedural, BadParametersAreUserErrors) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::assets::test

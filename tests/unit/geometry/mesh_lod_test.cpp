@@ -15,13 +15,13 @@
 #include <map>
 #include <set>
 
-namespace candela::scene {
+namespace candela::geometry {
 namespace {
 
 // A unit UV sphere (64 × 32, as the built-in grid's) alone in a scene, indices relative to its vertices.
-Scene sphere() {
-    Scene scene;
-    appendUvSphere(scene, 1.0f, 64, 32);
+scene::Scene sphere() {
+    scene::Scene scene;
+    assets::appendUvSphere(scene, 1.0f, 64, 32);
     return scene;
 }
 
@@ -47,7 +47,7 @@ float pointTriangleDistance(glm::vec3 p, glm::vec3 a, glm::vec3 b, glm::vec3 c) 
 }
 
 // The largest distance from a vertex of `from` to the surface of triangle list `to`.
-float oneSidedDistance(const std::vector<Vertex>& v, const std::vector<uint32_t>& from, const std::vector<uint32_t>& to) {
+float oneSidedDistance(const std::vector<scene::Vertex>& v, const std::vector<uint32_t>& from, const std::vector<uint32_t>& to) {
     float worst = 0.0f;
     for (uint32_t i : std::set<uint32_t>(from.begin(), from.end())) {
         float nearest = INFINITY;
@@ -59,7 +59,7 @@ float oneSidedDistance(const std::vector<Vertex>& v, const std::vector<uint32_t>
 }
 
 TEST(MeshLod, SphereChainGetsCoarserWithGrowingErrorWithinTheMemoryBudget) {
-    const Scene s = sphere();
+    const scene::Scene s = sphere();
     const std::vector<SimplifiedLevel> levels = simplifyChain(s.vertices, s.indices);
     // Two: the poles' 65 coincident vertices (one per UV column) are locked, so the third level
     // would keep more than 0.6 of the second's triangles.
@@ -78,7 +78,7 @@ TEST(MeshLod, SphereChainGetsCoarserWithGrowingErrorWithinTheMemoryBudget) {
 TEST(MeshLod, EachLevelStaysWithinItsErrorOfTheFullDetail) {
     // Brute force, every vertex of each against every triangle of the other: no level lies further
     // from the full detail than its error says (the simplifier's own estimate alone would not hold).
-    const Scene s = sphere();
+    const scene::Scene s = sphere();
     for (const SimplifiedLevel& level : simplifyChain(s.vertices, s.indices)) {
         const float distance = std::max(oneSidedDistance(s.vertices, s.indices, level.indices),
                                         oneSidedDistance(s.vertices, level.indices, s.indices));
@@ -90,9 +90,9 @@ TEST(MeshLod, EachLevelStaysWithinItsErrorOfTheFullDetail) {
 
 TEST(MeshLod, SurfaceDeviationMatchesBruteForce) {
     // The grid search against the brute-force distance, both ways, on the sphere and a coarser sphere.
-    Scene s;
-    const auto [fine, fineCount] = appendUvSphere(s, 1.0f, 48, 24);
-    const auto [coarse, coarseCount] = appendUvSphere(s, 1.0f, 10, 5);
+    scene::Scene s;
+    const auto [fine, fineCount] = assets::appendUvSphere(s, 1.0f, 48, 24);
+    const auto [coarse, coarseCount] = assets::appendUvSphere(s, 1.0f, 10, 5);
     const std::vector<uint32_t> a(s.indices.begin() + fine, s.indices.begin() + fine + fineCount);
     const std::vector<uint32_t> b(s.indices.begin() + coarse, s.indices.begin() + coarse + coarseCount);
     const float brute = std::max(oneSidedDistance(s.vertices, a, b), oneSidedDistance(s.vertices, b, a));
@@ -107,13 +107,13 @@ TEST(MeshLod, SurfaceDeviationMatchesBruteForce) {
 TEST(MeshLod, DistanceDoublingMovesOneLevel) {
     // Errors doubling along the chain: from a perspective view, doubling the distance halves the
     // projected error and moves the choice one level coarser.
-    LodChain chain;
+    scene::LodChain chain;
     for (float error : {0.0f, 0.01f, 0.02f, 0.04f, 0.08f}) chain.levels.push_back({0, 3, error});
-    OrbitCamera camera;
-    const ViewSetup view = camera.view(1.0f);
+    scene::OrbitCamera camera;
+    const scene::ViewSetup view = camera.view(1.0f);
     const auto levelAt = [&](float distance) {
         const glm::vec3 centre = view.eye + glm::normalize(camera.target - view.eye) * (distance + 0.5f);
-        return selectLod(chain, 1.0f, pixelsPerUnit(view, 1000, Aabb{centre - 0.5f / std::sqrt(3.0f), centre + 0.5f / std::sqrt(3.0f)}), 1.0f);
+        return selectLod(chain, 1.0f, pixelsPerUnit(view, 1000, scene::Aabb{centre - 0.5f / std::sqrt(3.0f), centre + 0.5f / std::sqrt(3.0f)}), 1.0f);
     };
     // 1 px at distance d: error = d · 2 tan(22.5°) / 1000 ≈ d · 8.3e-4; level 1 (0.01) from d ≈ 12.
     const uint32_t first = levelAt(13.0f);
@@ -124,10 +124,10 @@ TEST(MeshLod, DistanceDoublingMovesOneLevel) {
     EXPECT_EQ(levelAt(6.0f), 0u);
     // No error allowed, or the eye inside the bounds: full detail.
     EXPECT_EQ(selectLod(chain, 1.0f, 1.0f, 0.0f), 0u);
-    EXPECT_EQ(selectLod(chain, 1.0f, pixelsPerUnit(view, 1000, Aabb{view.eye - 1.0f, view.eye + 1.0f}), 1.0f), 0u);
+    EXPECT_EQ(selectLod(chain, 1.0f, pixelsPerUnit(view, 1000, scene::Aabb{view.eye - 1.0f, view.eye + 1.0f}), 1.0f), 0u);
     // A world scale of 2 doubles every error: one level finer.
     const glm::vec3 centre = view.eye + glm::normalize(camera.target - view.eye) * 26.5f;
-    EXPECT_EQ(selectLod(chain, 2.0f, pixelsPerUnit(view, 1000, Aabb{centre - 0.2f, centre + 0.2f}), 1.0f), first);
+    EXPECT_EQ(selectLod(chain, 2.0f, pixelsPerUnit(view, 1000, scene::Aabb{centre - 0.2f, centre + 0.2f}), 1.0f), first);
 }
 
 TEST(MeshLod, MaxScaleIsExactForTrsAndNeverLessUnderShear) {
@@ -142,11 +142,11 @@ TEST(MeshLod, MaxScaleIsExactForTrsAndNeverLessUnderShear) {
 TEST(MeshLod, OpenBordersStayLocked) {
     // A bumpy 33 × 33 grid with an open border: every border edge of the full detail is still a
     // border edge of every level (no crack against a neighbouring primitive).
-    Scene s;
+    scene::Scene s;
     constexpr uint32_t n = 33;
     for (uint32_t y = 0; y < n; ++y)
         for (uint32_t x = 0; x < n; ++x) {
-            Vertex v;
+            scene::Vertex v;
             v.position = glm::vec3(float(x), float(y), 0.3f * std::sin(0.4f * float(x)) * std::cos(0.3f * float(y)));
             s.vertices.push_back(v);
         }
@@ -178,17 +178,17 @@ TEST(MeshLod, OpenBordersStayLocked) {
 }
 
 TEST(MeshLod, PreparationKeepsBlendOrderAndDeformedMeshesAndTheTrianglesDrawn) {
-    Scene s;
-    for (int m = 0; m < 3; ++m) appendUvSphere(s, 1.0f, 32, 16);
+    scene::Scene s;
+    for (int m = 0; m < 3; ++m) assets::appendUvSphere(s, 1.0f, 32, 16);
     const uint32_t perSphere = uint32_t(s.indices.size() / 3);
     s.materials.resize(2);
-    s.materials[1].alphaMode = AlphaMode::Blend;
+    s.materials[1].alphaMode = scene::AlphaMode::Blend;
     s.deformations.resize(1);
     for (uint32_t m = 0; m < 3; ++m) s.draws.push_back({.firstIndex = m * perSphere, .indexCount = perSphere, .material = m == 1 ? 1u : 0u, .deformation = m == 2 ? 0 : -1});
-    const Scene before = s;
-    prepareGeometry(s);
+    const scene::Scene before = s;
+    geometry::prepareGeometry(s);
     // The triangles each draw shows, as sets of corner positions, are the same.
-    const auto triangles = [](const Scene& scene, const Draw& d) {
+    const auto triangles = [](const scene::Scene& scene, const scene::Draw& d) {
         std::multiset<std::array<float, 9>> out;
         for (uint32_t i = 0; i < d.indexCount; i += 3) {
             std::array<float, 9> t;
@@ -205,7 +205,7 @@ TEST(MeshLod, PreparationKeepsBlendOrderAndDeformedMeshesAndTheTrianglesDrawn) {
     // The deformed one gets no chain and keeps its vertices where they were (its triangles may be reordered).
     const uint32_t deformedFirst = before.indices[2 * perSphere];
     EXPECT_TRUE(std::equal(s.vertices.begin() + deformedFirst, s.vertices.end(), before.vertices.begin() + deformedFirst,
-                           [](const Vertex& a, const Vertex& b) { return a.position == b.position && a.uv0 == b.uv0; }));
+                           [](const scene::Vertex& a, const scene::Vertex& b) { return a.position == b.position && a.uv0 == b.uv0; }));
     EXPECT_GE(s.draws[0].lod, 0);
     EXPECT_GE(s.draws[1].lod, 0);
     EXPECT_EQ(s.draws[2].lod, -1);
@@ -215,4 +215,4 @@ TEST(MeshLod, PreparationKeepsBlendOrderAndDeformedMeshesAndTheTrianglesDrawn) {
 }
 
 }  // namespace
-}  // namespace candela::scene
+}  // namespace candela::geometry

@@ -59,7 +59,7 @@ scene::Image image(uint32_t width, uint32_t height, auto&& texel) {
 }
 
 TEST(NormalMapMips, AFlatMapStaysFlatAndFullLength) {
-    const auto mips = scene::normalMapMipChain(image(8, 4, [](uint32_t, uint32_t) { return glm::vec3(0, 0, 1); }));
+    const auto mips = geometry::normalMapMipChain(image(8, 4, [](uint32_t, uint32_t) { return glm::vec3(0, 0, 1); }));
     ASSERT_EQ(mips.size(), 4u);  // 8×4, 4×2, 2×1, 1×1
     EXPECT_EQ(mips[3].size(), 4u);
     for (const auto& mip : mips)
@@ -74,7 +74,7 @@ TEST(NormalMapMips, DivergingNormalsShortenTheMeanAndMipZeroKeepsItsTexels) {
     // with length cos 30° = 0.866 (A = 221).
     const float s = std::sin(glm::radians(30.0f)), c = std::cos(glm::radians(30.0f));
     const scene::Image source = image(16, 16, [&](uint32_t x, uint32_t y) { return glm::vec3((x + y) % 2 ? s : -s, 0.0f, c); });
-    const auto mips = scene::normalMapMipChain(source);
+    const auto mips = geometry::normalMapMipChain(source);
     ASSERT_EQ(mips.size(), 5u);
     for (size_t i = 0; i < mips[0].size(); ++i) EXPECT_EQ(mips[0][i], i % 4 == 3 ? 255 : source.rgba8[i]);
     for (size_t level = 1; level < mips.size(); ++level)
@@ -86,7 +86,7 @@ TEST(NormalMapMips, DivergingNormalsShortenTheMeanAndMipZeroKeepsItsTexels) {
 }
 
 TEST(NormalMapMips, OddSizesFollowVulkansMipSizes) {
-    const auto mips = scene::normalMapMipChain(image(5, 3, [](uint32_t x, uint32_t) { return glm::normalize(glm::vec3(0.1f * float(x), 0, 1)); }));
+    const auto mips = geometry::normalMapMipChain(image(5, 3, [](uint32_t x, uint32_t) { return glm::normalize(glm::vec3(0.1f * float(x), 0, 1)); }));
     ASSERT_EQ(mips.size(), 3u);  // 5×3, 2×1, 1×1
     EXPECT_EQ(mips[1].size(), 2u * 1u * 4u);
     EXPECT_EQ(mips[2].size(), 4u);

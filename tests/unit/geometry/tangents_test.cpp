@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-namespace candela::scene {
+namespace candela::geometry {
 namespace {
 
 void expectTangent(const glm::vec4& actual, const glm::vec4& expected, float eps = 1e-6f) {
@@ -142,4 +142,4 @@ TEST(Tangents, NoTextureExtentFallsBackToAUnitOrthogonalTangent) {
 }
 
 }  // namespace
-}  // namespace candela::scene
+}  // namespace candela::geometry

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-namespace candela::scene {
+namespace candela::gpu_scene {
 namespace {
 
 vk::DeviceCaps deviceWithFullIndices() {
@@ -18,8 +18,8 @@ vk::DeviceCaps deviceWithFullIndices() {
     return caps;
 }
 
-Scene sceneWithLargestIndex(uint32_t largest) {
-    Scene scene;
+scene::Scene sceneWithLargestIndex(uint32_t largest) {
+    scene::Scene scene;
     scene.source = "big.glb";
     scene.indices = {0, 1, largest, 2, 3, 4};
     return scene;
@@ -44,8 +44,8 @@ TEST(IndexValues, MinimumProfileRefusesIndicesPast24Bits) {
 
 TEST(IndexValues, FullDrawIndexUint32DrawsEveryIndex) {
     EXPECT_NO_THROW(checkIndexValues(sceneWithLargestIndex(0xFFFFFFFEu), deviceWithFullIndices()));
-    EXPECT_NO_THROW(checkIndexValues(Scene{}, vk::narrowCaps(deviceWithFullIndices(), options::DeviceProfile::Minimum)));
+    EXPECT_NO_THROW(checkIndexValues(scene::Scene{}, vk::narrowCaps(deviceWithFullIndices(), options::DeviceProfile::Minimum)));
 }
 
 }  // namespace
-}  // namespace candela::scene
+}  // namespace candela::gpu_scene

@@ -10,7 +10,7 @@
 
 #include <cmath>
 
-namespace candela::ibl {
+namespace candela::ibl_maps {
 namespace {
 
 constexpr uint32_t kWidth = 64, kHeight = 32;
@@ -59,18 +59,18 @@ TEST(BrightTexels, ASunTexelCarriesItsExcessFlux) {
     double power = 0, solidAngle = 0;
     for (uint32_t y = 0; y < kHeight; ++y)
         for (uint32_t x = 0; x < kWidth; ++x) {
-            const double omega = reference::texelSolidAngle(y, kWidth, kHeight);
+            const double omega = reports::reference::texelSolidAngle(y, kWidth, kHeight);
             power += shading::iblLuminance(map.get(x, y)) * omega;
             solidAngle += omega;
         }
     EXPECT_NEAR(bright.threshold, kBrightTexelFactor * power / solidAngle * map.scale, 1e-3 * bright.threshold);
     const Entry e = entry(bright, 0);
-    const glm::dvec3 expectedDirection = reference::texelDirection(10, 7, kWidth, kHeight);
+    const glm::dvec3 expectedDirection = reports::reference::texelDirection(10, 7, kWidth, kHeight);
     EXPECT_NEAR(glm::distance(glm::dvec3(e.direction), expectedDirection), 0.0, 1e-6);
     const glm::vec3 stored = map.get(10, 7) * map.scale;
     const glm::vec3 clamped = shading::iblClampLuminance(stored, bright.threshold);
     EXPECT_NEAR(shading::iblLuminance(clamped), bright.threshold, 1e-3 * bright.threshold);
-    const double omega = reference::texelSolidAngle(7, kWidth, kHeight);
+    const double omega = reports::reference::texelSolidAngle(7, kWidth, kHeight);
     for (int c = 0; c < 3; ++c) {
         const double expected = (stored[c] - clamped[c]) / map.scale * omega;
         EXPECT_NEAR(e.flux[c], expected, 1e-5 * expected) << c;
@@ -93,7 +93,7 @@ TEST(BrightTexels, TheCountIsCappedAtTheBrightest) {
         const glm::dvec3 d(entry(three, i).direction);
         bool found = false;
         for (uint32_t x = 7; x < 10; ++x)
-            found |= glm::distance(d, reference::texelDirection(x, 16, kWidth, kHeight)) < 1e-6;
+            found |= glm::distance(d, reports::reference::texelDirection(x, 16, kWidth, kHeight)) < 1e-6;
         EXPECT_TRUE(found) << "entry " << i << " is not one of the three brightest texels";
     }
     const BrightTexels none = findBrightTexels(map.texels, kWidth, kHeight, map.scale, 0);
@@ -110,7 +110,7 @@ TEST(BrightTexels, TheSplitKeepsTheMapsEnergy) {
     glm::dvec3 original(0.0), split(0.0);
     for (uint32_t y = 0; y < kHeight; ++y)
         for (uint32_t x = 0; x < kWidth; ++x) {
-            const double omega = reference::texelSolidAngle(y, kWidth, kHeight);
+            const double omega = reports::reference::texelSolidAngle(y, kWidth, kHeight);
             original += glm::dvec3(map.get(x, y)) * omega;
             split += glm::dvec3(shading::iblClampLuminance(map.get(x, y), bright.threshold)) * omega;
         }
@@ -119,4 +119,4 @@ TEST(BrightTexels, TheSplitKeepsTheMapsEnergy) {
 }
 
 }  // namespace
-}  // namespace candela::ibl
+}  // namespace candela::ibl_maps

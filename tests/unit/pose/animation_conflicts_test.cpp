@@ -11,45 +11,45 @@
 #include <set>
 #include <tuple>
 
-namespace candela::scene::test {
+namespace candela::pose::test {
 namespace {
 
 // A scene of `nodes` named root nodes and no draws.
-Scene nodesNamed(std::vector<std::string> names) {
-    Scene scene;
+scene::Scene nodesNamed(std::vector<std::string> names) {
+    scene::Scene scene;
     for (std::string& name : names) scene.nodes.push_back({.name = std::move(name), .source = int32_t(scene.nodes.size())});
     return scene;
 }
 
 // Adds an animation named `name` whose channels move the given nodes' `property` to a constant
 // `value` (one key at 0 s; the value's width is the property's).
-void addAnimation(Scene& scene, std::string name, std::vector<std::pair<uint32_t, AnimatedProperty>> channels,
+void addAnimation(scene::Scene& scene, std::string name, std::vector<std::pair<uint32_t, animation::AnimatedProperty>> channels,
                   float value = 1.0f) {
-    Animation a{.name = std::move(name)};
+    animation::Animation a{.name = std::move(name)};
     for (const auto& [node, property] : channels) {
-        const uint32_t width = property == AnimatedProperty::Rotation ? 4 : property == AnimatedProperty::Weights
+        const uint32_t width = property == animation::AnimatedProperty::Rotation ? 4 : property == animation::AnimatedProperty::Weights
                                                                                 ? uint32_t(scene.nodes[node].weights.size())
-                                                                            : property == AnimatedProperty::Weight ? 1 : 3;
+                                                                            : property == animation::AnimatedProperty::Weight ? 1 : 3;
         std::vector<float> values(width, value);
-        if (property == AnimatedProperty::Rotation) values = {0, 0, 0, 1};
-        a.samplers.push_back({.times = {0.0f}, .values = values, .interpolation = Interpolation::Linear, .width = width});
+        if (property == animation::AnimatedProperty::Rotation) values = {0, 0, 0, 1};
+        a.samplers.push_back({.times = {0.0f}, .values = values, .interpolation = animation::Interpolation::Linear, .width = width});
         a.channels.push_back({.sampler = uint32_t(a.samplers.size() - 1), .node = node, .property = property});
     }
     scene.animations.push_back(std::move(a));
 }
 
-std::vector<uint32_t> all(const Scene& scene) { return selectAnimations(scene, std::vector<std::string>{"all"}); }
+std::vector<uint32_t> all(const scene::Scene& scene) { return selectAnimations(scene, std::vector<std::string>{"all"}); }
 
 TEST(AnimationConflicts, FoxClipsDriveTheSameJointsAndTheLastWins) {
     REQUIRE_MODELS();
-    const Scene scene = loadGltf(sharedModels() / "Fox/glTF-Binary/Fox.glb");
+    const scene::Scene scene = assets::loadGltf(assets::test::sharedModels() / "Fox/glTF-Binary/Fox.glb");
     ASSERT_EQ(scene.animations.size(), 3u);
     // The channels every clip drives, counted from the file: (node, property) in all three.
-    std::set<std::pair<uint32_t, AnimatedProperty>> common;
-    for (const AnimationChannel& c : scene.animations[0].channels) common.insert({c.node, c.property});
+    std::set<std::pair<uint32_t, animation::AnimatedProperty>> common;
+    for (const animation::AnimationChannel& c : scene.animations[0].channels) common.insert({c.node, c.property});
     for (uint32_t a = 1; a < 3; ++a) {
-        std::set<std::pair<uint32_t, AnimatedProperty>> here;
-        for (const AnimationChannel& c : scene.animations[a].channels)
+        std::set<std::pair<uint32_t, animation::AnimatedProperty>> here;
+        for (const animation::AnimationChannel& c : scene.animations[a].channels)
             if (common.count({c.node, c.property})) here.insert({c.node, c.property});
         common = here;
     }
@@ -69,8 +69,8 @@ TEST(AnimationConflicts, FoxClipsDriveTheSameJointsAndTheLastWins) {
         both.evaluate(t);
         run.evaluate(t);
         for (const auto& [node, property] : common) {
-            const NodeTransform& a = both.nodes()[node].transform;
-            const NodeTransform& b = run.nodes()[node].transform;
+            const animation::NodeTransform& a = both.nodes()[node].transform;
+            const animation::NodeTransform& b = run.nodes()[node].transform;
             EXPECT_EQ(std::tie(a.translation, a.rotation, a.scale), std::tie(b.translation, b.rotation, b.scale))
                 << "node " << scene.nodes[node].name << " at " << t << " s";
         }
@@ -82,26 +82,26 @@ TEST(AnimationConflicts, FoxClipsDriveTheSameJointsAndTheLastWins) {
 }
 
 TEST(AnimationConflicts, DisjointChannelsDoNotConflict) {
-    Scene scene = nodesNamed({"a", "b"});
-    addAnimation(scene, "moveA", {{0, AnimatedProperty::Translation}, {0, AnimatedProperty::Rotation}});
-    addAnimation(scene, "moveB", {{1, AnimatedProperty::Translation}});
-    addAnimation(scene, "scaleA", {{0, AnimatedProperty::Scale}});  // the same node, another property
+    scene::Scene scene = nodesNamed({"a", "b"});
+    addAnimation(scene, "moveA", {{0, animation::AnimatedProperty::Translation}, {0, animation::AnimatedProperty::Rotation}});
+    addAnimation(scene, "moveB", {{1, animation::AnimatedProperty::Translation}});
+    addAnimation(scene, "scaleA", {{0, animation::AnimatedProperty::Scale}});  // the same node, another property
     EXPECT_TRUE(animationConflicts(scene, all(scene)).empty());
 }
 
 TEST(AnimationConflicts, InterpolationTestClipsAreDisjoint) {
     REQUIRE_MODELS();
-    const Scene scene = loadGltf(sharedModels() / "InterpolationTest/glTF-Binary/InterpolationTest.glb");
+    const scene::Scene scene = assets::loadGltf(assets::test::sharedModels() / "InterpolationTest/glTF-Binary/InterpolationTest.glb");
     ASSERT_GT(scene.animations.size(), 1u);
     EXPECT_TRUE(animationConflicts(scene, all(scene)).empty());
 }
 
 TEST(AnimationConflicts, EachChannelNamesItsDriversAndTheLineItsWinners) {
-    Scene scene = nodesNamed({"hip", "", "tail"});
-    addAnimation(scene, "Idle", {{0, AnimatedProperty::Rotation}, {1, AnimatedProperty::Translation}}, 1.0f);
-    addAnimation(scene, "Wag", {{2, AnimatedProperty::Rotation}}, 2.0f);
-    addAnimation(scene, "Walk", {{0, AnimatedProperty::Rotation}, {1, AnimatedProperty::Translation}}, 3.0f);
-    addAnimation(scene, "", {{2, AnimatedProperty::Rotation}}, 4.0f);  // unnamed
+    scene::Scene scene = nodesNamed({"hip", "", "tail"});
+    addAnimation(scene, "Idle", {{0, animation::AnimatedProperty::Rotation}, {1, animation::AnimatedProperty::Translation}}, 1.0f);
+    addAnimation(scene, "Wag", {{2, animation::AnimatedProperty::Rotation}}, 2.0f);
+    addAnimation(scene, "Walk", {{0, animation::AnimatedProperty::Rotation}, {1, animation::AnimatedProperty::Translation}}, 3.0f);
+    addAnimation(scene, "", {{2, animation::AnimatedProperty::Rotation}}, 4.0f);  // unnamed
 
     const std::vector<AnimationConflict> conflicts = animationConflicts(scene, all(scene));
     ASSERT_EQ(conflicts.size(), 3u);
@@ -127,12 +127,12 @@ TEST(AnimationConflicts, EachChannelNamesItsDriversAndTheLineItsWinners) {
 }
 
 TEST(AnimationConflicts, WeightsOverlapTheirSingleWeights) {
-    Scene scene = nodesNamed({"face"});
+    scene::Scene scene = nodesNamed({"face"});
     scene.nodes[0].weights = {0, 0, 0};
-    addAnimation(scene, "all", {{0, AnimatedProperty::Weights}});
-    Animation one{.name = "blink"};
-    one.samplers.push_back({.times = {0.0f}, .values = {1.0f}, .interpolation = Interpolation::Step, .width = 1});
-    one.channels.push_back({.sampler = 0, .node = 0, .property = AnimatedProperty::Weight, .element = 2});
+    addAnimation(scene, "all", {{0, animation::AnimatedProperty::Weights}});
+    animation::Animation one{.name = "blink"};
+    one.samplers.push_back({.times = {0.0f}, .values = {1.0f}, .interpolation = animation::Interpolation::Step, .width = 1});
+    one.channels.push_back({.sampler = 0, .node = 0, .property = animation::AnimatedProperty::Weight, .element = 2});
     scene.animations.push_back(one);
     scene.animations.push_back(one);
     scene.animations.back().name = "wink";
@@ -149,14 +149,14 @@ TEST(AnimationConflicts, WeightsOverlapTheirSingleWeights) {
 }
 
 TEST(AnimationConflicts, PropertyChannelsConflictOnTheSameField) {
-    Scene scene;
+    scene::Scene scene;
     scene.materials.resize(2);
-    const std::optional<PointerTarget> emissive = parsePointer("/materials/1/emissiveFactor");
+    const std::optional<scene::PointerTarget> emissive = scene::parsePointer("/materials/1/emissiveFactor");
     ASSERT_TRUE(emissive);
     for (const char* name : {"glow", "pulse"}) {
-        Animation a{.name = name};
-        a.samplers.push_back({.times = {0.0f}, .values = {1, 1, 1}, .interpolation = Interpolation::Linear, .width = 3});
-        a.properties.push_back({.sampler = 0, .object = uint8_t(AnimatedObject::Material), .index = 1, .field = emissive->field});
+        animation::Animation a{.name = name};
+        a.samplers.push_back({.times = {0.0f}, .values = {1, 1, 1}, .interpolation = animation::Interpolation::Linear, .width = 3});
+        a.properties.push_back({.sampler = 0, .object = uint8_t(scene::AnimatedObject::Material), .index = 1, .field = emissive->field});
         scene.animations.push_back(std::move(a));
     }
     const std::vector<AnimationConflict> conflicts = animationConflicts(scene, all(scene));
@@ -169,4 +169,4 @@ TEST(AnimationConflicts, PropertyChannelsConflictOnTheSameField) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test
+}  // namespace candela::pose::test

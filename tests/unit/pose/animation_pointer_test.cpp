@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace candela::scene::test::animation_pointer_test {
+namespace candela::pose::test::animation_pointer_test {
 namespace {
 
 // The lines of `warnings` containing `fragment`.
@@ -19,33 +19,33 @@ size_t linesWith(const std::vector<std::string>& warnings, const std::string& fr
 }
 
 // The canonical triangle with material 0 (baseColorFactor red) on it.
-GltfBuilder redTriangle() {
-    GltfBuilder b;
+assets::test::GltfBuilder redTriangle() {
+    assets::test::GltfBuilder b;
     b.addTriangle();
-    b.doc["materials"] = Json::array({{{"pbrMetallicRoughness", {{"baseColorFactor", {1, 0, 0, 1}}}}}});
+    b.doc["materials"] = assets::test::Json::array({{{"pbrMetallicRoughness", {{"baseColorFactor", {1, 0, 0, 1}}}}}});
     b.doc["meshes"][0]["primitives"][0]["material"] = 0;
     return b;
 }
 
 TEST(AnimationPointer, NodeTransformsThroughPointersEqualTheCoreChannels) {
-    TempDir dir;
-    GltfBuilder b = redTriangle();
+    candela::test::TempDir dir;
+    assets::test::GltfBuilder b = redTriangle();
     const std::vector<float> times = {0, 1, 2};
     const std::vector<float> t = {0, 0, 0, 1, 2, 3, -1, 0, 4};
     const std::vector<float> r = {0, 0, 0, 1, 0, 0.7071068f, 0, 0.7071068f, 0, 1, 0, 0};
     const std::vector<float> s = {1, 1, 1, 2, 1, 0.5f, 1, 3, 1};
     // Animation 0: core channels; animation 1: the same samplers' data through pointers.
     const int input = b.addFloats(times, "SCALAR", 1);
-    Json core = {{"samplers", Json::array()}, {"channels", Json::array()}};
+    assets::test::Json core = {{"samplers", assets::test::Json::array()}, {"channels", assets::test::Json::array()}};
     for (const auto& [path, values, type] : {std::tuple{"translation", t, "VEC3"}, {"rotation", r, "VEC4"}, {"scale", s, "VEC3"}}) {
         core["samplers"].push_back({{"input", input}, {"output", b.addFloats(values, type, type == std::string("VEC4") ? 4 : 3)}});
         core["channels"].push_back({{"sampler", core["samplers"].size() - 1}, {"target", {{"node", 0}, {"path", path}}}});
     }
     b.doc["animations"].push_back(core);
-    addPointerAnimation(b, {{.pointer = "/nodes/0/translation", .times = times, .values = t, .type = "VEC3"},
+    assets::test::addPointerAnimation(b, {{.pointer = "/nodes/0/translation", .times = times, .values = t, .type = "VEC3"},
                             {.pointer = "/nodes/0/rotation", .times = times, .values = r, .type = "VEC4"},
                             {.pointer = "/nodes/0/scale", .times = times, .values = s, .type = "VEC3"}});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = assets::loadGltf(b.writeGltf(dir.path()));
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.animations.size(), 2u);
     EXPECT_EQ(scene.animations[1].channels.size(), 3u);
@@ -62,17 +62,17 @@ TEST(AnimationPointer, NodeTransformsThroughPointersEqualTheCoreChannels) {
 }
 
 TEST(AnimationPointer, MaterialFactorsAndTextureTransformsAnimate) {
-    TempDir dir;
-    GltfBuilder b = texturedTriangle("", smallPng());
+    candela::test::TempDir dir;
+    assets::test::GltfBuilder b = assets::test::texturedTriangle("", assets::test::smallPng());
     b.doc["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {1, 0, 0, 1};
     const std::string texture = "/materials/0/pbrMetallicRoughness/baseColorTexture/extensions/KHR_texture_transform/";
-    addPointerAnimation(b, {{.pointer = "/materials/0/pbrMetallicRoughness/baseColorFactor", .times = {0, 1},
+    assets::test::addPointerAnimation(b, {{.pointer = "/materials/0/pbrMetallicRoughness/baseColorFactor", .times = {0, 1},
                              .values = {1, 0, 0, 1, 0, 0, 1, 1}, .type = "VEC4"},
                             {.pointer = "/materials/0/pbrMetallicRoughness/roughnessFactor", .times = {0, 1}, .values = {0.2f, 0.6f},
                              .interpolation = "STEP"},
                             {.pointer = texture + "offset", .times = {0, 2}, .values = {0, 0, 1, -2}, .type = "VEC2"},
                             {.pointer = texture + "rotation", .times = {0, 2}, .values = {0, 1}}});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = assets::loadGltf(b.writeGltf(dir.path()));
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.animations[0].properties.size(), 4u);
     EXPECT_NEAR(scene.animations[0].duration, 2.0, 1e-9);
@@ -82,7 +82,7 @@ TEST(AnimationPointer, MaterialFactorsAndTextureTransformsAnimate) {
     EXPECT_EQ(pose.animatedMaterials(), std::vector<uint32_t>{0});
     EXPECT_FALSE(pose.animatesMaterialLayers());
     pose.evaluate(0.25, false);
-    const Material& m = pose.materials()[0];
+    const scene::Material& m = pose.materials()[0];
     EXPECT_NEAR(m.baseColorFactor.r, 0.75f, 1e-6f);
     EXPECT_NEAR(m.baseColorFactor.b, 0.25f, 1e-6f);
     EXPECT_EQ(m.baseColorFactor.a, 1.0f);
@@ -100,15 +100,15 @@ TEST(AnimationPointer, MaterialFactorsAndTextureTransformsAnimate) {
 }
 
 TEST(AnimationPointer, LayerFactorsAndLayerTextureTransformsAnimate) {
-    TempDir dir;
-    GltfBuilder b = redTriangle();
+    candela::test::TempDir dir;
+    assets::test::GltfBuilder b = redTriangle();
     b.doc["materials"][0]["extensions"]["KHR_materials_sheen"] = {{"sheenColorFactor", {1, 1, 1}}};
-    addPointerAnimation(b, {{.pointer = "/materials/0/extensions/KHR_materials_sheen/sheenRoughnessFactor", .times = {0, 1},
+    assets::test::addPointerAnimation(b, {{.pointer = "/materials/0/extensions/KHR_materials_sheen/sheenRoughnessFactor", .times = {0, 1},
                              .values = {0, 1}},
                             {.pointer = "/materials/0/extensions/KHR_materials_sheen/sheenColorTexture/extensions/"
                                         "KHR_texture_transform/scale",
                              .times = {0, 1}, .values = {1, 1, 3, 5}, .type = "VEC2"}});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = assets::loadGltf(b.writeGltf(dir.path()));
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ScenePose pose(scene, {0});
     EXPECT_TRUE(pose.animatesMaterialLayers());
@@ -119,22 +119,22 @@ TEST(AnimationPointer, LayerFactorsAndLayerTextureTransformsAnimate) {
 
 // Two nodes share glTF light 0 (a spot): both Scene lights follow its animated properties.
 TEST(AnimationPointer, LightPropertiesAnimate) {
-    TempDir dir;
-    GltfBuilder b = redTriangle();
+    candela::test::TempDir dir;
+    assets::test::GltfBuilder b = redTriangle();
     b.doc["extensions"]["KHR_lights_punctual"]["lights"] =
-        Json::array({{{"type", "spot"}, {"intensity", 10}, {"spot", {{"innerConeAngle", 0.1}, {"outerConeAngle", 0.5}}}}});
-    useExtension(b, "KHR_lights_punctual");
+        assets::test::Json::array({{{"type", "spot"}, {"intensity", 10}, {"spot", {{"innerConeAngle", 0.1}, {"outerConeAngle", 0.5}}}}});
+    assets::test::useExtension(b, "KHR_lights_punctual");
     const int a = b.addNode({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
     const int c = b.addNode({{"translation", {0, 1, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
     b.doc["scenes"][0]["nodes"].push_back(a);
     b.doc["scenes"][0]["nodes"].push_back(c);
     const std::string light = "/extensions/KHR_lights_punctual/lights/0/";
-    addPointerAnimation(b, {{.pointer = light + "intensity", .times = {0, 1}, .values = {10, 30}},
+    assets::test::addPointerAnimation(b, {{.pointer = light + "intensity", .times = {0, 1}, .values = {10, 30}},
                             {.pointer = light + "color", .times = {0, 1}, .values = {1, 1, 1, 0, 0.5f, 1}, .type = "VEC3"},
                             {.pointer = light + "spot/outerConeAngle", .times = {0, 1}, .values = {0.5f, 1.0f}},
                             {.pointer = light + "spot/innerConeAngle", .times = {0, 1}, .values = {0.1f, 0.3f}},
                             {.pointer = light + "range", .times = {0, 1}, .values = {0, 8}}});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = assets::loadGltf(b.writeGltf(dir.path()));
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.lights.size(), 2u);
     EXPECT_EQ(scene.lights[0].source, 0);
@@ -143,7 +143,7 @@ TEST(AnimationPointer, LightPropertiesAnimate) {
     EXPECT_EQ(pose.animatedLightProperties(), (std::vector<uint32_t>{0, 1}));
     EXPECT_TRUE(pose.animatedLights().empty());  // nothing moves them
     pose.evaluate(0.5, false);
-    for (const Light& l : pose.lights()) {
+    for (const scene::Light& l : pose.lights()) {
         EXPECT_NEAR(l.intensity, 20.0f, 1e-5f);
         EXPECT_NEAR(l.color.r, 0.5f, 1e-6f);
         EXPECT_NEAR(l.color.g, 0.75f, 1e-6f);
@@ -155,16 +155,16 @@ TEST(AnimationPointer, LightPropertiesAnimate) {
 }
 
 TEST(AnimationPointer, CameraProjectionAnimates) {
-    TempDir dir;
-    GltfBuilder b = redTriangle();
-    b.doc["cameras"] = Json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}},
+    candela::test::TempDir dir;
+    assets::test::GltfBuilder b = redTriangle();
+    b.doc["cameras"] = assets::test::Json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}},
                                     {{"type", "orthographic"}, {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0}, {"zfar", 10}}}}});
     b.doc["scenes"][0]["nodes"].push_back(b.addNode({{"camera", 0}, {"translation", {0, 0, 3}}}));
     b.doc["scenes"][0]["nodes"].push_back(b.addNode({{"camera", 1}, {"translation", {0, 0, 3}}}));
-    addPointerAnimation(b, {{.pointer = "/cameras/0/perspective/yfov", .times = {0, 2}, .values = {0.5f, 1.5f}},
+    assets::test::addPointerAnimation(b, {{.pointer = "/cameras/0/perspective/yfov", .times = {0, 2}, .values = {0.5f, 1.5f}},
                             {.pointer = "/cameras/1/orthographic/ymag", .times = {0, 2}, .values = {1, 3}},
                             {.pointer = "/cameras/0/orthographic/xmag", .times = {0, 2}, .values = {1, 3}}});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = assets::loadGltf(b.writeGltf(dir.path()));
     // The orthographic property of the perspective camera is left out, with a warning.
     ASSERT_EQ(scene.report.warnings.size(), 1u);
     EXPECT_NE(scene.report.warnings[0].find("pointer '/cameras/0/orthographic/xmag': camera 0 is perspective (ignored)"), std::string::npos)
@@ -181,19 +181,19 @@ TEST(AnimationPointer, CameraProjectionAnimates) {
 }
 
 TEST(AnimationPointer, MorphWeightsOfNodesAndMeshesAnimate) {
-    TempDir dir;
-    GltfBuilder b;
+    candela::test::TempDir dir;
+    assets::test::GltfBuilder b;
     const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
     const int d0 = b.addFloats({0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3", 3);
     const int d1 = b.addFloats({1, 0, 0, 1, 0, 0, 1, 0, 0}, "VEC3", 3);
     const int mesh = b.addMesh({{"POSITION", pos}}, b.addIndices({0, 1, 2}));
-    b.doc["meshes"][size_t(mesh)]["primitives"][0]["targets"] = Json::array({{{"POSITION", d0}}, {{"POSITION", d1}}});
+    b.doc["meshes"][size_t(mesh)]["primitives"][0]["targets"] = assets::test::Json::array({{{"POSITION", d0}}, {{"POSITION", d1}}});
     const int own = b.addNode({{"mesh", mesh}, {"weights", {0.5, 0.5}}});  // its own weights: the mesh's do not apply
     const int shared = b.addNode({{"mesh", mesh}});
     b.setScene({own, shared});
-    addPointerAnimation(b, {{.pointer = "/meshes/0/weights", .times = {0, 1}, .values = {0, 0, 1, 0.5f}},
+    assets::test::addPointerAnimation(b, {{.pointer = "/meshes/0/weights", .times = {0, 1}, .values = {0, 0, 1, 0.5f}},
                             {.pointer = "/nodes/0/weights/1", .times = {0, 1}, .values = {0.5f, 0}}});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = assets::loadGltf(b.writeGltf(dir.path()));
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.animations[0].channels.size(), 2u);
     ScenePose pose(scene, {0});
@@ -203,13 +203,13 @@ TEST(AnimationPointer, MorphWeightsOfNodesAndMeshesAnimate) {
 }
 
 TEST(AnimationPointer, AnUnsupportedPointerWarnsOncePerPointer) {
-    TempDir dir;
-    GltfBuilder b = redTriangle();
-    addPointerAnimation(b, {{.pointer = "/materials/0/foo", .times = {0, 1}, .values = {0, 1}},
+    candela::test::TempDir dir;
+    assets::test::GltfBuilder b = redTriangle();
+    assets::test::addPointerAnimation(b, {{.pointer = "/materials/0/foo", .times = {0, 1}, .values = {0, 1}},
                             {.pointer = "/materials/0/foo", .times = {0, 1}, .values = {0, 1}},
                             {.pointer = "/materials/0/extensions/KHR_materials_volume_scatter/scatterAnisotropy", .times = {0, 1}, .values = {0, 1}},
                             {.pointer = "/materials/0/pbrMetallicRoughness/metallicFactor", .times = {0, 1}, .values = {0, 1}}});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = assets::loadGltf(b.writeGltf(dir.path()));
     EXPECT_EQ(linesWith(scene.report.warnings, "animation 0: pointer '/materials/0/foo' is not supported (ignored)"), 1u);
     EXPECT_EQ(linesWith(scene.report.warnings, "pointer '/materials/0/extensions/KHR_materials_volume_scatter/scatterAnisotropy' is not supported"), 1u);
     EXPECT_EQ(scene.report.warnings.size(), 2u);  // and none about the extension itself
@@ -217,33 +217,33 @@ TEST(AnimationPointer, AnUnsupportedPointerWarnsOncePerPointer) {
 }
 
 TEST(AnimationPointer, AFactorAnimatedFromZeroKeepsItsLayer) {
-    TempDir dir;
-    GltfBuilder b = redTriangle();
+    candela::test::TempDir dir;
+    assets::test::GltfBuilder b = redTriangle();
     b.doc["materials"].push_back({{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 0}}}}}});
-    b.doc["materials"].push_back(Json::object());  // no extension: the factor's default, 0
-    addPointerAnimation(b, {{.pointer = "/materials/1/extensions/KHR_materials_clearcoat/clearcoatFactor", .times = {0, 1}, .values = {0, 1}},
+    b.doc["materials"].push_back(assets::test::Json::object());  // no extension: the factor's default, 0
+    assets::test::addPointerAnimation(b, {{.pointer = "/materials/1/extensions/KHR_materials_clearcoat/clearcoatFactor", .times = {0, 1}, .values = {0, 1}},
                             {.pointer = "/materials/2/extensions/KHR_materials_anisotropy/anisotropyStrength", .times = {0, 1},
                              .values = {0, 1}}});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = assets::loadGltf(b.writeGltf(dir.path()));
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     EXPECT_EQ(scene.materials[0].layers(), 0u);
     EXPECT_EQ(scene.materials[1].clearcoatFactor, 0.0f);
-    EXPECT_EQ(scene.materials[1].animatedLayers, uint32_t(kLayerClearcoat));
-    EXPECT_EQ(scene.materials[1].layers(), uint32_t(kLayerClearcoat));
-    EXPECT_EQ(scene.materials[2].layers(), uint32_t(kLayerAnisotropy));
+    EXPECT_EQ(scene.materials[1].animatedLayers, uint32_t(scene::kLayerClearcoat));
+    EXPECT_EQ(scene.materials[1].layers(), uint32_t(scene::kLayerClearcoat));
+    EXPECT_EQ(scene.materials[2].layers(), uint32_t(scene::kLayerAnisotropy));
     // The layer stays while the factor is 0 in the pose.
     ScenePose pose(scene, {0});
     pose.evaluate(0.0);
     EXPECT_EQ(pose.materials()[1].clearcoatFactor, 0.0f);
-    EXPECT_EQ(pose.materials()[1].layers(), uint32_t(kLayerClearcoat));
+    EXPECT_EQ(pose.materials()[1].layers(), uint32_t(scene::kLayerClearcoat));
 }
 
 TEST(AnimationPointer, PointersNameWhatTheFileHas) {
-    TempDir dir;
+    candela::test::TempDir dir;
     const auto error = [&](const std::string& pointer, const std::string& type = "SCALAR", std::vector<float> values = {0, 1}) {
-        GltfBuilder b = redTriangle();
-        addPointerAnimation(b, {{.pointer = pointer, .times = {0, 1}, .values = std::move(values), .type = type}});
-        return loadError(b.writeGltf(dir.path()));
+        assets::test::GltfBuilder b = redTriangle();
+        assets::test::addPointerAnimation(b, {{.pointer = pointer, .times = {0, 1}, .values = std::move(values), .type = type}});
+        return assets::test::loadError(b.writeGltf(dir.path()));
     };
     EXPECT_NE(error("/materials/1/pbrMetallicRoughness/roughnessFactor").find(
                   "animation 0 channel 0: pointer '/materials/1/pbrMetallicRoughness/roughnessFactor': material 1 does not exist"),
@@ -259,4 +259,4 @@ TEST(AnimationPointer, PointersNameWhatTheFileHas) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test::animation_pointer_test
+}  // namespace candela::pose::test::animation_pointer_test

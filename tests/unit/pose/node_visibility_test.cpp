@@ -5,27 +5,27 @@
 
 #include "pose/scene_pose.h"
 
-namespace candela::scene::test::node_visibility_test {
+namespace candela::pose::test::node_visibility_test {
 namespace {
 
 // Two triangles side by side: node 0 at the origin (drawn), node 1 hidden at x = 5 with a child,
 // node 2 (visible itself, at x = 10 under node 1), which has a triangle and a point light.
-GltfBuilder hiddenBranch() {
-    GltfBuilder b;
+assets::test::GltfBuilder hiddenBranch() {
+    assets::test::GltfBuilder b;
     b.addTriangle();
-    b.doc["extensions"]["KHR_lights_punctual"]["lights"] = Json::array({{{"type", "point"}, {"intensity", 5}}});
-    useExtension(b, "KHR_lights_punctual");
+    b.doc["extensions"]["KHR_lights_punctual"]["lights"] = assets::test::Json::array({{{"type", "point"}, {"intensity", 5}}});
+    assets::test::useExtension(b, "KHR_lights_punctual");
     const int child = b.addNode({{"mesh", 0}, {"translation", {5, 0, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
     const int parent = b.addNode({{"mesh", 0}, {"translation", {5, 0, 0}}, {"children", {child}}});
-    setVisible(b, parent, false);
+    assets::test::setVisible(b, parent, false);
     setVisible(b, child, true);
     b.setScene({0, parent});
     return b;
 }
 
 TEST(NodeVisibility, AHiddenParentHidesItsVisibleChildsDrawsAndLights) {
-    TempDir dir;
-    const Scene scene = loadGltf(hiddenBranch().writeGltf(dir.path()));
+    candela::test::TempDir dir;
+    const scene::Scene scene = assets::loadGltf(hiddenBranch().writeGltf(dir.path()));
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.nodes.size(), 3u);
     EXPECT_TRUE(scene.nodes[0].shown);
@@ -49,30 +49,30 @@ TEST(NodeVisibility, AHiddenParentHidesItsVisibleChildsDrawsAndLights) {
 }
 
 TEST(NodeVisibility, EveryNodeHiddenFramesTheHiddenGeometryWithAWarning) {
-    TempDir dir;
-    GltfBuilder b;
+    candela::test::TempDir dir;
+    assets::test::GltfBuilder b;
     b.addTriangle();
-    setVisible(b, 0, false);
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    assets::test::setVisible(b, 0, false);
+    const scene::Scene scene = assets::loadGltf(b.writeGltf(dir.path()));
     ASSERT_EQ(scene.report.warnings.size(), 1u);
     EXPECT_EQ(scene.report.warnings[0], "every node is hidden (KHR_node_visibility): framing uses the hidden geometry");
     EXPECT_TRUE(scene.draws[0].hidden);
     EXPECT_EQ(scene.bounds.max, glm::vec3(1, 1, 0));
     // Visible by default, and when said so: no warning.
-    setVisible(b, 0, true);
-    EXPECT_TRUE(loadGltf(b.writeGltf(dir.path())).report.warnings.empty());
+    assets::test::setVisible(b, 0, true);
+    EXPECT_TRUE(assets::loadGltf(b.writeGltf(dir.path())).report.warnings.empty());
 }
 
 TEST(NodeVisibility, AnAnimatedVisibilityTogglesAtItsKey) {
-    TempDir dir;
-    GltfBuilder b = hiddenBranch();
+    candela::test::TempDir dir;
+    assets::test::GltfBuilder b = hiddenBranch();
     // Node 2 (the hidden parent) shown from 1 s (unsigned bytes, as the specification asks), hidden again from 2 s.
-    addPointerAnimation(b, {{.pointer = "/nodes/2/extensions/KHR_node_visibility/visible", .times = {0, 1, 2}, .values = {0, 1, 0},
-                             .interpolation = "STEP", .componentType = kUnsignedByte}});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    assets::test::addPointerAnimation(b, {{.pointer = "/nodes/2/extensions/KHR_node_visibility/visible", .times = {0, 1, 2}, .values = {0, 1, 0},
+                             .interpolation = "STEP", .componentType = assets::test::kUnsignedByte}});
+    const scene::Scene scene = assets::loadGltf(b.writeGltf(dir.path()));
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.animations[0].channels.size(), 1u);
-    EXPECT_EQ(scene.animations[0].channels[0].property, AnimatedProperty::Visibility);
+    EXPECT_EQ(scene.animations[0].channels[0].property, animation::AnimatedProperty::Visibility);
     ScenePose pose(scene, {0});
     EXPECT_TRUE(pose.movesNodes());
     EXPECT_EQ(pose.animatedDraws(), (std::vector<uint32_t>{1, 2}));
@@ -95,11 +95,11 @@ TEST(NodeVisibility, AnAnimatedVisibilityTogglesAtItsKey) {
 }
 
 TEST(NodeVisibility, AVisibilityChannelTakesStepInterpolationOnly) {
-    TempDir dir;
-    GltfBuilder b = hiddenBranch();
-    addPointerAnimation(b, {{.pointer = "/nodes/2/extensions/KHR_node_visibility/visible", .times = {0, 1}, .values = {0, 1},
-                             .interpolation = "LINEAR", .componentType = kUnsignedByte}});
-    const std::string message = loadError(b.writeGltf(dir.path()));
+    candela::test::TempDir dir;
+    assets::test::GltfBuilder b = hiddenBranch();
+    assets::test::addPointerAnimation(b, {{.pointer = "/nodes/2/extensions/KHR_node_visibility/visible", .times = {0, 1}, .values = {0, 1},
+                             .interpolation = "LINEAR", .componentType = assets::test::kUnsignedByte}});
+    const std::string message = assets::test::loadError(b.writeGltf(dir.path()));
     EXPECT_NE(message.find("animation 0 channel 0: pointer '/nodes/2/extensions/KHR_node_visibility/visible': a visibility is a "
                            "bool: sampler 0 must use STEP interpolation, not LINEAR"),
               std::string::npos)
@@ -108,23 +108,23 @@ TEST(NodeVisibility, AVisibilityChannelTakesStepInterpolationOnly) {
 
 // The world transforms and shown flags of a partial update equal a full one's.
 TEST(NodeVisibility, ShownFollowsEveryAncestor) {
-    std::vector<SceneNode> nodes(4);
+    std::vector<animation::SceneNode> nodes(4);
     nodes[1].parent = 0;
     nodes[2].parent = 1;
     nodes[3].parent = 0;
     nodes[1].visible = false;
     const std::vector<uint32_t> all = {0, 1, 2, 3};
-    updateWorldTransforms(nodes, all);
+    animation::updateWorldTransforms(nodes, all);
     EXPECT_TRUE(nodes[0].shown);
     EXPECT_FALSE(nodes[1].shown);
     EXPECT_FALSE(nodes[2].shown);
     EXPECT_TRUE(nodes[3].shown);
     nodes[1].visible = true;
     nodes[0].visible = false;
-    const std::vector<uint32_t> dirty = dependentNodes(nodes, std::vector<uint32_t>{0});
+    const std::vector<uint32_t> dirty = animation::dependentNodes(nodes, std::vector<uint32_t>{0});
     updateWorldTransforms(nodes, dirty);
-    for (const SceneNode& n : nodes) EXPECT_FALSE(n.shown);
+    for (const animation::SceneNode& n : nodes) EXPECT_FALSE(n.shown);
 }
 
 }  // namespace
-}  // namespace candela::scene::test::node_visibility_test
+}  // namespace candela::pose::test::node_visibility_test

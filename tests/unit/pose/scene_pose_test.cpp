@@ -9,7 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace candela::scene::test::scene_pose_test {
+namespace candela::pose::test::scene_pose_test {
 namespace {
 
 void expectVec(const glm::vec3& actual, const glm::vec3& expected, float eps = 1e-5f) {
@@ -19,7 +19,7 @@ void expectVec(const glm::vec3& actual, const glm::vec3& expected, float eps = 1
 }
 
 // The draw placed by glTF node `source`.
-uint32_t drawOf(const Scene& scene, int source) {
+uint32_t drawOf(const scene::Scene& scene, int source) {
     for (uint32_t i = 0; i < scene.draws.size(); ++i)
         if (scene.nodes[size_t(scene.draws[i].node)].source == source) return i;
     ADD_FAILURE() << "no draw from node " << source;
@@ -31,7 +31,7 @@ TEST(ScenePose, BoxAnimatedFollowsItsKeys) {
     // Node 0 (root) translates: (0,0,0) at 0 s, (0,2.52,0) from 1.25 s to 2.5 s, back at 3.708 s.
     // Node 2 (a mesh, under node 1) rotates from the identity at 1.25 s to 180° about +X at 2.5 s.
     // Node 3 (the other mesh) is static.
-    const Scene scene = loadGltf(sharedModels() / "BoxAnimated/glTF-Binary/BoxAnimated.glb");
+    const scene::Scene scene = assets::loadGltf(assets::test::sharedModels() / "BoxAnimated/glTF-Binary/BoxAnimated.glb");
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.animations.size(), 1u);
     EXPECT_EQ(scene.animations[0].channels.size(), 2u);
@@ -63,7 +63,7 @@ TEST(ScenePose, BoxAnimatedFollowsItsKeys) {
 
 TEST(ScenePose, NoAnimationIsTheRestPose) {
     REQUIRE_MODELS();
-    const Scene scene = loadGltf(sharedModels() / "BoxAnimated/glTF-Binary/BoxAnimated.glb");
+    const scene::Scene scene = assets::loadGltf(assets::test::sharedModels() / "BoxAnimated/glTF-Binary/BoxAnimated.glb");
     const std::vector<std::string> none{"none"};
     ScenePose pose(scene, selectAnimations(scene, none));
     EXPECT_FALSE(pose.animated());
@@ -73,7 +73,7 @@ TEST(ScenePose, NoAnimationIsTheRestPose) {
 
 TEST(ScenePose, SelectionByIndexNameAllAndNone) {
     REQUIRE_MODELS();
-    const Scene scene = loadGltf(sharedModels() / "InterpolationTest/glTF-Binary/InterpolationTest.glb");
+    const scene::Scene scene = assets::loadGltf(assets::test::sharedModels() / "InterpolationTest/glTF-Binary/InterpolationTest.glb");
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.animations.size(), 9u);
     EXPECT_EQ(scene.animations[0].name, "Step Scale");
@@ -95,7 +95,7 @@ TEST(ScenePose, SelectionByIndexNameAllAndNone) {
 
 TEST(ScenePose, InterpolationTestModesDifferBetweenKeys) {
     REQUIRE_MODELS();
-    const Scene scene = loadGltf(sharedModels() / "InterpolationTest/glTF-Binary/InterpolationTest.glb");
+    const scene::Scene scene = assets::loadGltf(assets::test::sharedModels() / "InterpolationTest/glTF-Binary/InterpolationTest.glb");
     ScenePose pose(scene, selectAnimations(scene, std::vector<std::string>{"all"}));
     // Each cube is moved by exactly one animation, its own.
     EXPECT_EQ(pose.animatedDraws().size(), 9u);
@@ -105,10 +105,10 @@ TEST(ScenePose, InterpolationTestModesDifferBetweenKeys) {
     float y[3];
     for (int i = 0; i < 3; ++i) {
         const int node = 8 + i;
-        const Animation& animation = scene.animations[size_t(6 + i)];
+        const animation::Animation& animation = scene.animations[size_t(6 + i)];
         ASSERT_EQ(scene.nodes[animation.channels[0].node].source, node);
         float value[3];
-        evaluateSampler(animation.samplers[0], AnimatedProperty::Translation, 0.3, value);
+        animation::evaluateSampler(animation.samplers[0], animation::AnimatedProperty::Translation, 0.3, value);
         y[i] = pose.draws()[drawOf(scene, node)].world[3].y;
         EXPECT_NEAR(y[i], value[1], 1e-5f);
     }
@@ -119,15 +119,15 @@ TEST(ScenePose, InterpolationTestModesDifferBetweenKeys) {
 TEST(ScenePose, ZeroScaleAnimatedNodeIsKeptHiddenUntilScaledUp) {
     // A node at scale 0 that an animation grows: the loader keeps its draw (a static one it would
     // drop with a warning); the pose hides it at 0 and shows it at 1.
-    TempDir dir;
-    GltfBuilder b;
+    candela::test::TempDir dir;
+    assets::test::GltfBuilder b;
     b.addTriangle();
     b.doc["nodes"][0]["scale"] = {0, 0, 0};
     const int times = b.addFloats({0, 1}, "SCALAR", 1);
     const int scales = b.addFloats({0, 0, 0, 1, 1, 1}, "VEC3", 3);
-    b.doc["animations"] = Json::array({{{"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "scale"}}}}}},
+    b.doc["animations"] = assets::test::Json::array({{{"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "scale"}}}}}},
                                         {"samplers", {{{"input", times}, {"output", scales}}}}}});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = assets::loadGltf(b.writeGltf(dir.path()));
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.draws.size(), 1u);
     EXPECT_TRUE(scene.draws[0].hidden);
@@ -141,16 +141,16 @@ TEST(ScenePose, ZeroScaleAnimatedNodeIsKeptHiddenUntilScaledUp) {
 }
 
 TEST(ScenePose, ChannelsOnNodesOutsideTheSceneAndWithoutTargetAreDropped) {
-    TempDir dir;
-    GltfBuilder b;
+    candela::test::TempDir dir;
+    assets::test::GltfBuilder b;
     b.addTriangle();
     const int other = b.addNode({{"translation", {1, 2, 3}}});  // not in the scene
     const int times = b.addFloats({0, 1}, "SCALAR", 1);
     const int moves = b.addFloats({0, 0, 0, 1, 0, 0}, "VEC3", 3);
-    b.doc["animations"] = Json::array({{{"channels", {{{"sampler", 0}, {"target", {{"node", other}, {"path", "translation"}}}},
+    b.doc["animations"] = assets::test::Json::array({{{"channels", {{{"sampler", 0}, {"target", {{"node", other}, {"path", "translation"}}}},
                                                        {{"sampler", 0}, {"target", {{"path", "translation"}}}}}},
                                         {"samplers", {{{"input", times}, {"output", moves}}}}}});
-    const Scene scene = loadGltf(b.writeGltf(dir.path()));
+    const scene::Scene scene = assets::loadGltf(b.writeGltf(dir.path()));
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ASSERT_EQ(scene.animations.size(), 1u);
     EXPECT_TRUE(scene.animations[0].channels.empty());
@@ -158,20 +158,20 @@ TEST(ScenePose, ChannelsOnNodesOutsideTheSceneAndWithoutTargetAreDropped) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test::scene_pose_test
+}  // namespace candela::pose::test::scene_pose_test
 
-namespace candela::scene::test::scene_pose_test {
+namespace candela::pose::test::scene_pose_test {
 namespace {
 
 // Every deformed vertex (the CPU reference of the skin_morph pass) lies in its draw's posed bounds
 // and in the bounds over the whole animation, at keys and between them.
 void expectBoundsContainDeformedVertices(const char* path, const std::vector<std::string>& animations) {
-    if (sharedModels().empty()) GTEST_SKIP() << "../shared/assets not present";
-    const Scene scene = loadGltf(sharedModels() / path);
+    if (assets::test::sharedModels().empty()) GTEST_SKIP() << "../shared/assets not present";
+    const scene::Scene scene = assets::loadGltf(assets::test::sharedModels() / path);
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ScenePose pose(scene, selectAnimations(scene, animations));
-    const Aabb all = pose.animationBounds();
-    const auto inside = [](const Aabb& box, const glm::vec3& p) {
+    const scene::Aabb all = pose.animationBounds();
+    const auto inside = [](const scene::Aabb& box, const glm::vec3& p) {
         const glm::vec3 slack = 1e-4f * (glm::abs(box.max) + glm::abs(box.min) + 1.0f);
         return glm::all(glm::greaterThanEqual(p, box.min - slack)) && glm::all(glm::lessThanEqual(p, box.max + slack));
     };
@@ -179,11 +179,11 @@ void expectBoundsContainDeformedVertices(const char* path, const std::vector<std
     for (double t : {0.0, 0.37, 0.8, 1.3, 2.9}) {
         pose.evaluate(t);
         for (uint32_t d : pose.deformedDraws()) {
-            const Draw& draw = pose.draws()[d];
+            const scene::Draw& draw = pose.draws()[d];
             static const std::vector<glm::dmat4> none;
-            const std::vector<Vertex> vertices =
+            const std::vector<scene::Vertex> vertices =
                 deformVertices(scene, draw, pose.weights(draw), draw.skin >= 0 ? pose.jointMatrices(uint32_t(draw.skin)) : none);
-            for (const Vertex& v : vertices) {
+            for (const scene::Vertex& v : vertices) {
                 const glm::vec3 world = glm::vec3(draw.world * glm::vec4(v.position, 1.0f));
                 ASSERT_TRUE(inside(draw.bounds, world)) << path << " t=" << t << " draw " << d;
                 ASSERT_TRUE(inside(all, world)) << path << " t=" << t << " draw " << d;
@@ -204,19 +204,19 @@ TEST(ScenePose, MorphedBoundsContainTheDeformedVertices) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test::scene_pose_test
+}  // namespace candela::pose::test::scene_pose_test
 
-namespace candela::scene::test::scene_pose_test {
+namespace candela::pose::test::scene_pose_test {
 namespace {
 
 TEST(ScenePose, PickingHitsThePosedMesh) {
     REQUIRE_MODELS();
-    const Scene scene = loadGltf(sharedModels() / "Fox/glTF-Binary/Fox.glb");
+    const scene::Scene scene = assets::loadGltf(assets::test::sharedModels() / "Fox/glTF-Binary/Fox.glb");
     ScenePose pose(scene, selectAnimations(scene, std::vector<std::string>{"Run"}));
     pose.evaluate(0.4);
     const uint32_t d = pose.deformedDraws().at(0);
-    const Draw& draw = pose.draws()[d];
-    const std::vector<Vertex> posed = deformVertices(scene, draw, pose.weights(draw), pose.jointMatrices(uint32_t(draw.skin)));
+    const scene::Draw& draw = pose.draws()[d];
+    const std::vector<scene::Vertex> posed = deformVertices(scene, draw, pose.weights(draw), pose.jointMatrices(uint32_t(draw.skin)));
     const uint32_t base = scene.deformations[size_t(draw.deformation)].firstVertex;
     // A ray from far above onto the posed centroid of some triangle hits the fox no further than it;
     // the same ray against the rest pose (bind pose) hits elsewhere or not at all.
@@ -235,4 +235,4 @@ TEST(ScenePose, PickingHitsThePosedMesh) {
 }
 
 }  // namespace
-}  // namespace candela::scene::test::scene_pose_test
+}  // namespace candela::pose::test::scene_pose_test

@@ -13,7 +13,7 @@
 
 #include <filesystem>
 
-namespace candela::io {
+namespace candela::reports {
 namespace {
 
 const std::filesystem::path kData = ::candela::test::testData() / "flip";
@@ -80,4 +80,4 @@ TEST(FlipReference, ErrorMapIsTheReturnedStatistics) {
 }
 
 }  // namespace
-}  // namespace candela::io
+}  // namespace candela::reports

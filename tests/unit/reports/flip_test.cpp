@@ -13,7 +13,7 @@
 #include <numbers>
 #include <stdexcept>
 
-namespace candela::io {
+namespace candela::reports {
 namespace {
 
 RgbImage uniform(uint32_t w, uint32_t h, float r, float g, float b) {
@@ -274,4 +274,4 @@ TEST(Flip, SrgbDecoding) {
 }
 
 }  // namespace
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -15,7 +15,7 @@
 #include <iterator>
 #include <regex>
 
-namespace candela::io {
+namespace candela::reports {
 namespace {
 
 size_t count(const std::string& text, const std::string& what) {
@@ -135,9 +135,9 @@ TEST(HtmlPage, ThousandRowsRenderInOrderAndDeterministically) {
 }
 
 TEST(HtmlPage, InlinedImagesAreDataUrisOfTheFilesBytes) {
-    const test::TempDir dir("candela_html_page");
+    const candela::test::TempDir dir("candela_html_page");
     const std::vector<uint8_t> rgba{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255};
-    writePng(dir / "new render.png", 2, 2, rgba);
+    assets::writePng(dir / "new render.png", 2, 2, rgba);
     std::ifstream in(dir / "new render.png", std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     ASSERT_GT(bytes.size(), 8u);
@@ -200,7 +200,7 @@ TEST(HtmlPage, ContractErrorsAreInternalErrors) {
 }
 
 TEST(HtmlPage, WritesTheFileOrNamesItInTheError) {
-    const test::TempDir dir("candela_html_page");
+    const candela::test::TempDir dir("candela_html_page");
     const HtmlPage page{.title = "written", .rows = {row("a", RowStatus::Ok)}};
     writeHtmlPage(dir / "out" / "page.html", page);
     std::ifstream in(dir / "out" / "page.html", std::ios::binary);
@@ -219,4 +219,4 @@ TEST(HtmlPage, WritesTheFileOrNamesItInTheError) {
 }
 
 }  // namespace
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -17,7 +17,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace candela::ibl::test {
+namespace candela::reports::test {
 namespace {
 
 namespace ref = reference;
@@ -44,9 +44,9 @@ void appendTexel(std::vector<std::byte>& data, uint32_t format, const glm::vec4&
     }
 }
 
-CachedImage makeImage(const char* name, uint32_t format, uint32_t width, uint32_t height, uint32_t layers,
+ibl::CachedImage makeImage(const char* name, uint32_t format, uint32_t width, uint32_t height, uint32_t layers,
                       uint32_t mips, const TexelFn& texel) {
-    CachedImage image{.name = name,
+    ibl::CachedImage image{.name = name,
                       .format = format,
                       .texelBytes = format == kFormatRg16Sfloat ? 4u : (format == kFormatRgba16Sfloat ? 8u : 16u),
                       .width = width,
@@ -65,7 +65,7 @@ CachedImage makeImage(const char* name, uint32_t format, uint32_t width, uint32_
 using DirectionFn = std::function<glm::dvec3(uint32_t mip, const glm::dvec3& direction)>;
 
 // An RGBA16F cube whose texel (face, x, y) of mip m holds value(m, its centre direction).
-CachedImage makeCube(const char* name, uint32_t faceSize, uint32_t mips, const DirectionFn& value) {
+ibl::CachedImage makeCube(const char* name, uint32_t faceSize, uint32_t mips, const DirectionFn& value) {
     return makeImage(name, kFormatRgba16Sfloat, faceSize, faceSize, 6, mips,
                      [&](uint32_t m, uint32_t face, uint32_t x, uint32_t y) {
                          const uint32_t s = std::max(faceSize >> m, 1u);
@@ -74,7 +74,7 @@ CachedImage makeCube(const char* name, uint32_t faceSize, uint32_t mips, const D
 }
 
 // Overwrites texel (mip, layer, x, y) of an RGBA16F image.
-void setTexel(CachedImage& image, uint32_t mip, uint32_t layer, uint32_t x, uint32_t y, const glm::vec4& v) {
+void setTexel(ibl::CachedImage& image, uint32_t mip, uint32_t layer, uint32_t x, uint32_t y, const glm::vec4& v) {
     size_t offset = 0;
     for (uint32_t m = 0; m < mip; ++m)
         offset += size_t(std::max(image.width >> m, 1u)) * std::max(image.height >> m, 1u) * image.layers * 8;
@@ -92,14 +92,14 @@ glm::dvec3 smoothRadiance(const glm::dvec3& d) {
 glm::dvec3 linearRadiance(const glm::dvec3& d) { return glm::dvec3(1.0 + 0.5 * d.x); }
 
 // The cube of reference values: mip 0 bilinear(original), mip m prefiltered(reference, r = m/(mips−1)).
-CachedImage referenceCube(const scene::Environment& original, const scene::Environment& reference, uint32_t faceSize,
+ibl::CachedImage referenceCube(const assets::Environment& original, const assets::Environment& reference, uint32_t faceSize,
                           uint32_t mips) {
     return makeCube("specular", faceSize, mips, [&](uint32_t m, const glm::dvec3& d) {
         return m == 0 ? ref::bilinear(original, d) : ref::prefiltered(reference, d, double(m) / (mips - 1));
     });
 }
 
-glm::dvec3 meanRadiance(const scene::Environment& env) {
+glm::dvec3 meanRadiance(const assets::Environment& env) {
     glm::dvec3 sum(0.0);
     for (uint32_t y = 0; y < env.height; ++y)
         for (uint32_t x = 0; x < env.width; ++x) {
@@ -112,7 +112,7 @@ glm::dvec3 meanRadiance(const scene::Environment& env) {
 // ---- Texel decoding ----
 
 TEST(IblErrorsTexelValue, DecodesKnownHalves) {
-    CachedImage rgba{.name = "h", .format = kFormatRgba16Sfloat, .texelBytes = 8, .width = 1, .height = 1,
+    ibl::CachedImage rgba{.name = "h", .format = kFormatRgba16Sfloat, .texelBytes = 8, .width = 1, .height = 1,
                      .layers = 1, .mips = 1};
     const uint16_t halves[4] = {0x3C00, 0xC000, 0x3800, 0x7C00};  // 1, −2, 0.5, +Inf
     rgba.data.resize(8);
@@ -123,7 +123,7 @@ TEST(IblErrorsTexelValue, DecodesKnownHalves) {
     EXPECT_EQ(v.z, 0.5f);
     EXPECT_EQ(v.w, std::numeric_limits<float>::infinity());
 
-    CachedImage rg{.name = "rg", .format = kFormatRg16Sfloat, .texelBytes = 4, .width = 1, .height = 1,
+    ibl::CachedImage rg{.name = "rg", .format = kFormatRg16Sfloat, .texelBytes = 4, .width = 1, .height = 1,
                    .layers = 1, .mips = 1};
     const uint16_t rgHalves[2] = {0x3555, 0x0001};  // 0.333251953125, 2^−24 (smallest subnormal)
     rg.data.resize(4);
@@ -138,7 +138,7 @@ TEST(IblErrorsTexelValue, DecodesKnownHalves) {
 }
 
 TEST(IblErrorsTexelValue, AddressesMipsLayersAndRows) {
-    const CachedImage cube = makeImage("c", kFormatRgba32Sfloat, 4, 4, 6, 3, [](uint32_t m, uint32_t l, uint32_t x,
+    const ibl::CachedImage cube = makeImage("c", kFormatRgba32Sfloat, 4, 4, 6, 3, [](uint32_t m, uint32_t l, uint32_t x,
                                                                                uint32_t y) {
         return glm::vec4(float(m), float(l), float(x), float(y));
     });
@@ -151,7 +151,7 @@ TEST(IblErrorsTexelValue, AddressesMipsLayersAndRows) {
     EXPECT_THROW(texelValue(cube, 1, 0, 0, 2), std::out_of_range);
     EXPECT_THROW(texelValue(cube, 3, 0, 0, 0), std::out_of_range);
     EXPECT_THROW(texelValue(cube, 0, 6, 0, 0), std::out_of_range);
-    CachedImage truncated = cube;
+    ibl::CachedImage truncated = cube;
     truncated.data.resize(truncated.data.size() - 1);
     EXPECT_THROW(texelValue(truncated, 2, 5, 0, 0), std::out_of_range);
 }
@@ -209,7 +209,7 @@ TEST(IblErrorsCube, FaceCentresAreTheAxesInVulkanOrder) {
 
 TEST(IblErrorsCube, SamplingAtTexelCentresReturnsTheTexel) {
     const uint32_t size = 4;
-    const CachedImage cube = makeImage("c", kFormatRgba32Sfloat, size, size, 6, 1,
+    const ibl::CachedImage cube = makeImage("c", kFormatRgba32Sfloat, size, size, 6, 1,
                                        [](uint32_t, uint32_t l, uint32_t x, uint32_t y) {
                                            return glm::vec4(float(l), float(x), float(y), 0.0f);
                                        });
@@ -263,9 +263,9 @@ TEST(IblErrorsCube, SampleTexelsAreDistinctAndCoverEveryFace) {
 class IblErrorsSpecular : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        original = new scene::Environment(ref::makeEnvironment(128, 64, smoothRadiance));
-        reduced = new scene::Environment(referenceEnvironment(*original, 64));
-        cube = new CachedImage(referenceCube(*original, *reduced, kFaceSize, kMips));
+        original = new assets::Environment(ref::makeEnvironment(128, 64, smoothRadiance));
+        reduced = new assets::Environment(referenceEnvironment(*original, 64));
+        cube = new ibl::CachedImage(referenceCube(*original, *reduced, kFaceSize, kMips));
     }
     static void TearDownTestSuite() {
         delete original;
@@ -273,9 +273,9 @@ protected:
         delete cube;
     }
     static constexpr uint32_t kFaceSize = 8, kMips = 4, kTexels = 64;
-    static inline scene::Environment* original = nullptr;
-    static inline scene::Environment* reduced = nullptr;
-    static inline CachedImage* cube = nullptr;
+    static inline assets::Environment* original = nullptr;
+    static inline assets::Environment* reduced = nullptr;
+    static inline ibl::CachedImage* cube = nullptr;
 };
 
 TEST_F(IblErrorsSpecular, ReferenceValuesMeasureOnlyHalfRounding) {
@@ -306,7 +306,7 @@ TEST_F(IblErrorsSpecular, OneDoubledTexelShowsAtItsLevelOnly) {
     const uint32_t mip = 1, size = kFaceSize >> mip;
     const uint32_t index = specularSampleTexels(size, kTexels)[7];
     const uint32_t face = index / (size * size), x = index % size, y = index / size % size;
-    CachedImage changed = *cube;
+    ibl::CachedImage changed = *cube;
     setTexel(changed, mip, face, x, y, 2.0f * texelValue(*cube, mip, face, x, y));
     const std::vector<LevelErrors> after = specularErrors(changed, *original, *reduced, kTexels, cache);
     // |2r − r| / (r + 0.01·mean) with r ≈ mean: just under 1.
@@ -321,7 +321,7 @@ TEST_F(IblErrorsSpecular, OneDoubledTexelShowsAtItsLevelOnly) {
 
 TEST_F(IblErrorsSpecular, MirroredCubeIsFarOff) {
     // The reference values of −d in direction d: what swapped faces would give.
-    const CachedImage mirrored = makeCube("specular", kFaceSize, kMips, [&](uint32_t m, const glm::dvec3& d) {
+    const ibl::CachedImage mirrored = makeCube("specular", kFaceSize, kMips, [&](uint32_t m, const glm::dvec3& d) {
         return m == 0 ? ref::bilinear(*original, -d) : ref::prefiltered(*reduced, -d, double(m) / (kMips - 1));
     });
     ReferenceCache cache;
@@ -330,7 +330,7 @@ TEST_F(IblErrorsSpecular, MirroredCubeIsFarOff) {
 }
 
 TEST_F(IblErrorsSpecular, NanTexelIsReported) {
-    CachedImage broken = *cube;
+    ibl::CachedImage broken = *cube;
     const uint32_t index = specularSampleTexels(kFaceSize, kTexels)[0];
     setTexel(broken, 0, index / 64, index % 8, index / 8 % 8, glm::vec4(std::numeric_limits<float>::quiet_NaN()));
     ReferenceCache cache;
@@ -348,8 +348,8 @@ TEST_F(IblErrorsSpecular, CacheRefusesAnotherEnvironmentSize) {
 
 TEST(IblErrorsSpecularConstant, ConstantEnvironmentAndCubeMeasureZero) {
     const glm::dvec3 c(0.25, 0.5, 2.0);  // exact in half
-    const scene::Environment env = ref::makeEnvironment(32, 16, [&](const glm::dvec3&) { return c; });
-    const CachedImage cube = makeCube("specular", 8, 3, [&](uint32_t, const glm::dvec3&) { return c; });
+    const assets::Environment env = ref::makeEnvironment(32, 16, [&](const glm::dvec3&) { return c; });
+    const ibl::CachedImage cube = makeCube("specular", 8, 3, [&](uint32_t, const glm::dvec3&) { return c; });
     ReferenceCache cache;
     const std::vector<LevelErrors> levels = specularErrors(cube, env, env, 32, cache);
     ASSERT_EQ(levels.size(), 3u);
@@ -359,21 +359,21 @@ TEST(IblErrorsSpecularConstant, ConstantEnvironmentAndCubeMeasureZero) {
         EXPECT_EQ(level.stats.count, std::min(32u, 6 * level.faceSize * level.faceSize));
     }
     // Another mip count at the same face size shares mip 0 (roughness 0) and nothing else here.
-    const CachedImage four = makeCube("specular", 8, 4, [&](uint32_t, const glm::dvec3&) { return c; });
+    const ibl::CachedImage four = makeCube("specular", 8, 4, [&](uint32_t, const glm::dvec3&) { return c; });
     specularErrors(four, env, env, 32, cache);
     EXPECT_EQ(cache.hits(), 32u);
 }
 
 // ---- Irradiance ----
 
-CachedImage shImage(const std::array<glm::vec3, 9>& sh) {
+ibl::CachedImage shImage(const std::array<glm::vec3, 9>& sh) {
     return makeImage("irradiance_sh", kFormatRgba32Sfloat, 9, 1, 1, 1,
                      [&](uint32_t, uint32_t, uint32_t x, uint32_t) { return glm::vec4(sh[x], 0.0f); });
 }
 
 TEST(IblErrorsIrradiance, ShOfAConstantEnvironmentIsExact) {
     const glm::dvec3 c(0.3, 1.7, 0.05);
-    const scene::Environment env = ref::makeEnvironment(32, 16, [&](const glm::dvec3&) { return c; });
+    const assets::Environment env = ref::makeEnvironment(32, 16, [&](const glm::dvec3&) { return c; });
     std::array<glm::vec3, 9> sh{};
     sh[0] = glm::vec3(c / kY00);
     ReferenceCache cache;
@@ -386,7 +386,7 @@ TEST(IblErrorsIrradiance, ShOfAConstantEnvironmentIsExact) {
 
 // L = 1 + 0.5 x has irradiance/π = 1 + x/3 (band 1 scaled by 2/3): sh[0] = 1/Y00, sh[3] = 1/(3·Y1).
 TEST(IblErrorsIrradiance, ShOfALinearEnvironmentAndAWrongBasisOrder) {
-    const scene::Environment env = ref::makeEnvironment(128, 64, linearRadiance);
+    const assets::Environment env = ref::makeEnvironment(128, 64, linearRadiance);
     std::array<glm::vec3, 9> sh{};
     sh[0] = glm::vec3(float(1.0 / kY00));
     sh[3] = glm::vec3(float(1.0 / (3.0 * kY1)));
@@ -401,7 +401,7 @@ TEST(IblErrorsIrradiance, ShOfALinearEnvironmentAndAWrongBasisOrder) {
 
 // The forward shader clamps SH irradiance at 0: a negative band 0 over a black environment is exact.
 TEST(IblErrorsIrradiance, ShIsClampedAtZeroLikeTheShader) {
-    const scene::Environment black = ref::makeEnvironment(16, 8, [](const glm::dvec3&) { return glm::dvec3(0.0); });
+    const assets::Environment black = ref::makeEnvironment(16, 8, [](const glm::dvec3&) { return glm::dvec3(0.0); });
     std::array<glm::vec3, 9> sh{};
     sh[0] = glm::vec3(-1.0f);
     ReferenceCache cache;
@@ -413,7 +413,7 @@ TEST(IblErrorsIrradiance, ShIsClampedAtZeroLikeTheShader) {
 }
 
 TEST(IblErrorsIrradiance, CubeOfALinearEnvironment) {
-    const scene::Environment env = ref::makeEnvironment(128, 64, linearRadiance);
+    const assets::Environment env = ref::makeEnvironment(128, 64, linearRadiance);
     const auto exact = [](uint32_t, const glm::dvec3& n) { return glm::dvec3(1.0 + n.x / 3.0); };
     ReferenceCache cache;
     const ErrorStats s = irradianceErrors(makeCube("irradiance_cube", 16, 1, exact), env, 128, cache);
@@ -429,7 +429,7 @@ TEST(IblErrorsIrradiance, CubeOfALinearEnvironment) {
 class IblErrorsLut : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        lut = new CachedImage(makeImage("brdf_lut", kFormatRg16Sfloat, kSize, kSize, 1, 1,
+        lut = new ibl::CachedImage(makeImage("brdf_lut", kFormatRg16Sfloat, kSize, kSize, 1, 1,
                                         [](uint32_t, uint32_t, uint32_t x, uint32_t y) {
                                             const double NoV = std::max(double(x) / (kSize - 1), 1e-4);
                                             const ref::SplitSum s = ref::splitSum(NoV, double(y) / (kSize - 1));
@@ -437,15 +437,15 @@ protected:
                                         }));
     }
     static void TearDownTestSuite() { delete lut; }
-    static CachedImage offBy(uint32_t x, uint32_t y, float delta) {
-        CachedImage changed = *lut;
+    static ibl::CachedImage offBy(uint32_t x, uint32_t y, float delta) {
+        ibl::CachedImage changed = *lut;
         const glm::vec4 v = texelValue(*lut, 0, 0, x, y);
         const uint16_t a = glm::packHalf1x16(v.x + delta);
         std::memcpy(changed.data.data() + (size_t(y) * kSize + x) * 4, &a, 2);
         return changed;
     }
     static constexpr uint32_t kSize = 32;
-    static inline CachedImage* lut = nullptr;
+    static inline ibl::CachedImage* lut = nullptr;
 };
 
 TEST_F(IblErrorsLut, ReferenceValuesMeasureOnlyHalfRounding) {
@@ -473,7 +473,7 @@ TEST_F(IblErrorsLut, OneTexelOffByATenth) {
 
 TEST_F(IblErrorsLut, BadShapes) {
     EXPECT_THROW(lutErrors(*lut, 0), std::invalid_argument);
-    CachedImage one = makeImage("brdf_lut", kFormatRg16Sfloat, 1, 1, 1, 1,
+    ibl::CachedImage one = makeImage("brdf_lut", kFormatRg16Sfloat, 1, 1, 1, 1,
                                 [](uint32_t, uint32_t, uint32_t, uint32_t) { return glm::vec4(0.0f); });
     EXPECT_THROW(lutErrors(one, 1), std::invalid_argument);
 }
@@ -486,15 +486,15 @@ glm::dvec3 busyRadiance(const glm::dvec3& d) {
 }
 
 TEST(IblErrorsReferenceEnvironment, PreservesTheMeanAndHalvesSizes) {
-    const scene::Environment env = ref::makeEnvironment(100, 50, busyRadiance);
-    const scene::Environment odd = referenceEnvironment(env, 32);  // 100 → 50 → 25; 50 → 25 → 13
+    const assets::Environment env = ref::makeEnvironment(100, 50, busyRadiance);
+    const assets::Environment odd = referenceEnvironment(env, 32);  // 100 → 50 → 25; 50 → 25 → 13
     EXPECT_EQ(odd.width, 25u);
     EXPECT_EQ(odd.height, 13u);
     const glm::dvec3 mean = meanRadiance(env), reducedMean = meanRadiance(odd);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(reducedMean[c] / mean[c], 1.0, 1e-6) << c;
 
-    const scene::Environment even = ref::makeEnvironment(64, 32, busyRadiance);
-    const scene::Environment quarter = referenceEnvironment(even, 16);
+    const assets::Environment even = ref::makeEnvironment(64, 32, busyRadiance);
+    const assets::Environment quarter = referenceEnvironment(even, 16);
     EXPECT_EQ(quarter.width, 16u);
     EXPECT_EQ(quarter.height, 8u);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(meanRadiance(quarter)[c] / meanRadiance(even)[c], 1.0, 1e-6) << c;
@@ -511,13 +511,13 @@ TEST(IblErrorsReferenceEnvironment, PreservesTheMeanAndHalvesSizes) {
 }
 
 TEST(IblErrorsReferenceEnvironment, SmallMapsAreKept) {
-    const scene::Environment env = ref::makeEnvironment(16, 8, busyRadiance);
-    const scene::Environment same = referenceEnvironment(env, 16);
+    const assets::Environment env = ref::makeEnvironment(16, 8, busyRadiance);
+    const assets::Environment same = referenceEnvironment(env, 16);
     EXPECT_EQ(same.width, 16u);
     EXPECT_EQ(same.rgb, env.rgb);
     EXPECT_THROW(referenceEnvironment(env, 0), std::invalid_argument);
-    EXPECT_THROW(referenceEnvironment(scene::Environment{}, 16), std::invalid_argument);
+    EXPECT_THROW(referenceEnvironment(assets::Environment{}, 16), std::invalid_argument);
 }
 
 }  // namespace
-}  // namespace candela::ibl::test
+}  // namespace candela::reports::test

@@ -18,7 +18,7 @@
 #include <tuple>
 #include <vector>
 
-namespace candela::ibl::reference::test {
+namespace candela::reports::reference::test {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -197,7 +197,7 @@ TEST(IblReferenceEnvironment, ConstantEnvironmentIsReproduced) {
     const glm::dvec3 c = constant({});
     const glm::dvec3 directions[] = {{0, 1, 0}, {0, -1, 0}, {1, 0, 0}, {0.3, -0.2, 0.9}, {-0.6, 0.7, -0.1}};
     for (const auto& [w, h] : {std::pair{64u, 32u}, std::pair{7u, 3u}}) {
-        const scene::Environment env = makeEnvironment(w, h, constant);
+        const assets::Environment env = makeEnvironment(w, h, constant);
         for (const glm::dvec3& d : directions) {
             EXPECT_LT(relativeError(irradiance(env, d), c), 1e-9) << w << "×" << h;
             for (double roughness : {0.0, 0.3, 1.0}) {
@@ -210,7 +210,7 @@ TEST(IblReferenceEnvironment, ConstantEnvironmentIsReproduced) {
 // L(d) = max(d.y, 0): (1/π) ∫ cos² = 2/3 exactly at n = +Y. The 512 × 256 map's error is that of
 // sampling at texel centres (measured −4.2e-6 at +Y, +4.0e-6 at +X; tolerance 2e-5).
 TEST(IblReferenceEnvironment, SkyDomeIrradiance) {
-    const scene::Environment env = makeEnvironment(512, 256, [](const glm::dvec3& d) { return glm::dvec3(std::max(d.y, 0.0)); });
+    const assets::Environment env = makeEnvironment(512, 256, [](const glm::dvec3& d) { return glm::dvec3(std::max(d.y, 0.0)); });
     const glm::dvec3 up = irradiance(env, {0, 1, 0});
     std::cout << "sky dome irradiance at +Y: " << up.x << " (error " << up.x - 2.0 / 3.0 << ")\n";
     EXPECT_NEAR(up.x, 2.0 / 3.0, 2e-5);
@@ -222,7 +222,7 @@ TEST(IblReferenceEnvironment, SkyDomeIrradiance) {
 }
 
 TEST(IblReferenceEnvironment, PrefilteredLinearEnvironment) {
-    const scene::Environment env = makeEnvironment(128, 64, [](const glm::dvec3& d) { return glm::dvec3(1.0 + d.x); });
+    const assets::Environment env = makeEnvironment(128, 64, [](const glm::dvec3& d) { return glm::dvec3(1.0 + d.x); });
     const double plus = prefiltered(env, {1, 0, 0}, 0.5).x, minus = prefiltered(env, {-1, 0, 0}, 0.5).x;
     EXPECT_GT(plus, minus);
     EXPECT_GT(minus, 0.0);
@@ -248,7 +248,7 @@ TEST(IblReferenceEnvironment, PrefilteredLinearEnvironment) {
 
 // The narrow-lobe rule: bilinear when 2α < π/H (64 × 32: r < 0.2215), the texel sum above.
 TEST(IblReferenceEnvironment, PrefilteredFallsBackToBilinearForSubTexelLobes) {
-    const scene::Environment env = makeEnvironment(64, 32, [](const glm::dvec3& d) {
+    const assets::Environment env = makeEnvironment(64, 32, [](const glm::dvec3& d) {
         return glm::dvec3(1.0 + d.x + 0.5 * d.y * d.z, 2.0 + std::sin(5.0 * d.z), 1.5 + d.y);
     });
     const glm::dvec3 R = glm::normalize(glm::dvec3(0.3, 0.5, -0.8));
@@ -260,7 +260,7 @@ TEST(IblReferenceEnvironment, PrefilteredFallsBackToBilinearForSubTexelLobes) {
 }
 
 TEST(IblReferenceEnvironment, RoughnessZeroReturnsTexelAtItsCentre) {
-    const scene::Environment env = makeEnvironment(37, 19, [](const glm::dvec3& d) {
+    const assets::Environment env = makeEnvironment(37, 19, [](const glm::dvec3& d) {
         return glm::dvec3(1.0 + d.x + 0.5 * d.y * d.z, 2.0 + std::sin(5.0 * d.z), 1.5 + d.y);
     });
     for (uint32_t y = 0; y < env.height; y += 3) {
@@ -275,7 +275,7 @@ TEST(IblReferenceEnvironment, RoughnessZeroReturnsTexelAtItsCentre) {
 TEST(IblReferenceEnvironment, BilinearWrapsInUAndClampsInV) {
     // Texel value = column index: halfway between the last column's centre and the first's (the
     // seam, −X) is their average.
-    scene::Environment env = makeEnvironment(8, 4, [](const glm::dvec3&) { return glm::dvec3(0.0); });
+    assets::Environment env = makeEnvironment(8, 4, [](const glm::dvec3&) { return glm::dvec3(0.0); });
     for (uint32_t y = 0; y < env.height; ++y)
         for (uint32_t x = 0; x < env.width; ++x) env.texel(x, y)[0] = float(x);
     EXPECT_NEAR(bilinear(env, {-1, 0, 0}).x, 3.5, 1e-9);
@@ -308,7 +308,7 @@ TEST(IblReferenceSh9, ClampedCosineLobe) {
     // Measured error of the 1024 × 512 projection: ≤ 4.2e-6 (texel-centre sampling, the kink at the
     // lobe's horizon); tolerance 1e-5.
     for (const glm::dvec3& axis : {glm::dvec3(0, 0, 1), glm::dvec3(0, 1, 0), glm::normalize(glm::dvec3(0.4, -0.5, 0.77))}) {
-        const scene::Environment env =
+        const assets::Environment env =
             makeEnvironment(1024, 512, [axis](const glm::dvec3& d) { return glm::dvec3(std::max(glm::dot(d, axis), 0.0)); });
         const Sh9 got = projectSh9(env), expected = clampedCosineSh9(axis);
         double maxError = 0.0;
@@ -348,7 +348,7 @@ double band2(const glm::dvec3& d) {
 }
 
 TEST(IblReferenceSh9, MatchesIrradianceForQuadraticEnvironment) {
-    const scene::Environment env =
+    const assets::Environment env =
         makeEnvironment(512, 256, [](const glm::dvec3& d) { return glm::dvec3(1.5 + band1(d) + band2(d)); });
     const Sh9 sh = projectSh9(env);
     double maxSh = 0.0, maxDirect = 0.0, maxBetween = 0.0;
@@ -368,4 +368,4 @@ TEST(IblReferenceSh9, MatchesIrradianceForQuadraticEnvironment) {
 }
 
 }  // namespace
-}  // namespace candela::ibl::reference::test
+}  // namespace candela::reports::reference::test

@@ -16,7 +16,7 @@
 #include <fstream>
 #include <iterator>
 
-namespace candela::io {
+namespace candela::reports {
 namespace {
 
 namespace fs = std::filesystem;
@@ -55,7 +55,7 @@ TEST(PixelDifference, HandComputedFloat) {
 
 class DiffFiles : public ::testing::Test {
 protected:
-    test::TempDir dir{"candela_diff"};
+    candela::test::TempDir dir{"candela_diff"};
 
     // A w × h RGBA image of one colour, with pixel 0 changed to `first`.
     fs::path png(const std::string& name, uint32_t w, uint32_t h, uint8_t value, uint8_t first) {
@@ -63,12 +63,12 @@ protected:
         for (size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 255;
         rgba[0] = rgba[1] = rgba[2] = first;
         fs::create_directories((dir / name).parent_path());
-        writePng(dir / name, w, h, rgba);
+        assets::writePng(dir / name, w, h, rgba);
         return dir / name;
     }
     fs::path exr(const std::string& name, uint32_t w, uint32_t h, float value) {
         std::vector<float> rgba(size_t(w) * h * 4, value);
-        writeExr(dir / name, w, h, rgba);
+        assets::writeExr(dir / name, w, h, rgba);
         return dir / name;
     }
     fs::path file(const std::string& name, const std::string& bytes) {
@@ -104,7 +104,7 @@ TEST_F(DiffFiles, ReadsExrAsLinear) {
     std::vector<float> rgba(16 * 4, 1.0f);
     rgba[0] = NAN;
     rgba[5] = -2.0f;
-    writeExr(dir / "nan.exr", 4, 4, rgba);
+    assets::writeExr(dir / "nan.exr", 4, 4, rgba);
     const ComparedImage repaired = readComparedImage(dir / "nan.exr");
     EXPECT_EQ(repaired.linear.rgb[0], 0.0f);
     EXPECT_EQ(repaired.linear.rgb[4], 0.0f);
@@ -146,7 +146,7 @@ TEST_F(DiffFiles, BadFilesAreOneLineErrorsNamingTheFile) {
         } catch (const UserError& e) {
             message = e.what();
         }
-        test::expectOneLineErrorNamingFile(row.path, message, row.fragment);
+        candela::test::expectOneLineErrorNamingFile(row.path, message, row.fragment);
     }
 }
 
@@ -242,4 +242,4 @@ TEST_F(DiffFiles, FoldersMatchByRelativePath) {
 }
 
 }  // namespace
-}  // namespace candela::io
+}  // namespace candela::reports

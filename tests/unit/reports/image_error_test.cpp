@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-namespace candela::io {
+namespace candela::reports {
 namespace {
 
 TEST(ImageError, BoxDownsampleAveragesEachBlockInLinearRadiance) {
@@ -58,4 +58,4 @@ TEST(ImageError, TemporalErrorIsTheFlickerTheReferenceDoesNotHave) {
 }
 
 }  // namespace
-}  // namespace candela::io
+}  // namespace candela::reports

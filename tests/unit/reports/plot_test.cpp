@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-namespace candela::io {
+namespace candela::reports {
 namespace {
 
 TEST(Plot, ParetoFrontKeepsThePointsNoOtherBeatsOnBothAxes) {
@@ -127,7 +127,7 @@ TEST(Plot, CrowdedLabelsDoNotOverlapEachOtherOrTheMarkers) {
 }
 
 TEST(Plot, WritesAPngOfTheRequestedSizeWithSomethingDrawn) {
-    const test::TempDir dir("candela_plot");
+    const candela::test::TempDir dir("candela_plot");
     const auto path = dir / "plot.png";
     PlotSpec spec{.title = "error vs time", .xLabel = "ms", .yLabel = "error", .series = {"a", "b"}};
     spec.points = {{.x = 10, .y = 0.5, .label = "8"}, {.x = 100, .y = 0.05, .label = "64", .series = 1},
@@ -147,4 +147,4 @@ TEST(Plot, WritesAPngOfTheRequestedSizeWithSomethingDrawn) {
 }
 
 }  // namespace
-}  // namespace candela::io
+}  // namespace candela::reports

@@ -16,10 +16,10 @@ namespace {
 std::vector<PointerTarget> everyTarget() {
     std::vector<PointerTarget> out;
     for (PointerKind kind : {PointerKind::Node, PointerKind::Mesh})
-        for (AnimatedProperty p : {AnimatedProperty::Translation, AnimatedProperty::Rotation, AnimatedProperty::Scale,
-                                   AnimatedProperty::Weights, AnimatedProperty::Weight, AnimatedProperty::Visibility})
-            if (kind == PointerKind::Node || p == AnimatedProperty::Weights || p == AnimatedProperty::Weight)
-                out.push_back({.kind = kind, .index = 7, .property = p, .element = p == AnimatedProperty::Weight ? 2u : 0u});
+        for (animation::AnimatedProperty p : {animation::AnimatedProperty::Translation, animation::AnimatedProperty::Rotation, animation::AnimatedProperty::Scale,
+                                   animation::AnimatedProperty::Weights, animation::AnimatedProperty::Weight, animation::AnimatedProperty::Visibility})
+            if (kind == PointerKind::Node || p == animation::AnimatedProperty::Weights || p == animation::AnimatedProperty::Weight)
+                out.push_back({.kind = kind, .index = 7, .property = p, .element = p == animation::AnimatedProperty::Weight ? 2u : 0u});
     for (uint16_t f = 0; f < materialFields().size(); ++f) out.push_back({.kind = PointerKind::Material, .index = 7, .field = f});
     for (uint16_t f = 0; f < lightFields().size(); ++f) out.push_back({.kind = PointerKind::Light, .index = 7, .field = f});
     for (uint16_t f = 0; f < cameraFields().size(); ++f) out.push_back({.kind = PointerKind::Camera, .index = 7, .field = f});

@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <sstream>
 
-namespace candela {
+namespace candela::scene {
 namespace {
 
 scene::Aabb box(glm::vec3 size, glm::vec3 centre = glm::vec3(0.0f)) {
@@ -89,7 +89,7 @@ TEST(Framing, DefaultDirection) {
     s.bounds = {};
     EXPECT_EQ(scene::defaultOrbitAngles(s), glm::vec2(0.0f, 75.0f));
     // The sphere grid, a chart, head-on.
-    EXPECT_EQ(scene::defaultOrbitAngles(scene::makeSphereGrid(2)), glm::vec2(0.0f, 90.0f));
+    EXPECT_EQ(scene::defaultOrbitAngles(assets::makeSphereGrid(2)), glm::vec2(0.0f, 90.0f));
 }
 
 TEST(Framing, TheFlagsReadBackAsTheSameCamera) {
@@ -116,4 +116,4 @@ TEST(Framing, TheFlagsReadBackAsTheSameCamera) {
 }
 
 }  // namespace
-}  // namespace candela
+}  // namespace candela::scene

@@ -223,7 +223,7 @@ TEST(BrdfLayers, ClearcoatUnderPunctualLightsNeverAddsEnergy) {
     for (double roughness : {0.0, 0.25, 0.5, 0.75, 1.0})
         for (double cosine : {0.05, 0.2, 0.5, 1.0}) {
             const double fresnel = 0.04 + 0.96 * std::pow(1.0 - cosine, 5.0);
-            const double albedo = 1.0 - fresnel * (1.0 - ibl::reference::directionalAlbedo(cosine, std::max(roughness, 0.045)));
+            const double albedo = 1.0 - fresnel * (1.0 - reports::reference::directionalAlbedo(cosine, std::max(roughness, 0.045)));
             EXPECT_LE(albedo, 1.0);
             if (albedo < lowest) {
                 lowest = albedo;

@@ -58,9 +58,9 @@ std::vector<Environment> environments() {
     const std::filesystem::path path =
         ::candela::test::sharedAssets() / "environments" / "studio_small_03_1k.hdr";
     if (std::filesystem::exists(path)) {
-        auto env = std::make_shared<scene::Environment>(scene::loadEnvironment(path));
+        auto env = std::make_shared<assets::Environment>(assets::loadEnvironment(path));
         out.push_back({"studio_small_03", [env](const dvec3& d) {
-                           const dvec3 c = ibl::reference::bilinear(*env, d);
+                           const dvec3 c = reports::reference::bilinear(*env, d);
                            return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
                        }});
     }
@@ -158,7 +158,7 @@ TEST(LayerIbl, TransmissionErrorIsMeasured) {
                 });
                 const shading::DielectricFresnel d = shading::dielectricFresnel(float(ior), glm::vec3(1.0f), 1.0f);
                 const auto lut = [&](double r) {
-                    const ibl::reference::SplitSum s = ibl::reference::splitSum(NoV, r);
+                    const reports::reference::SplitSum s = reports::reference::splitSum(NoV, r);
                     return glm::vec2(float(s.a), float(s.b));
                 };
                 const shading::Transmission t = shading::transmissionLayer(1.0f, float(roughness), float(ior));

@@ -47,17 +47,17 @@ void main() {
 }
 )";
 
-shader::CompileResult compileCompute(const TempDir& dir, const std::string& name, const std::string& defines) {
+ui::CompileResult compileCompute(const TempDir& dir, const std::string& name, const std::string& defines) {
     const std::filesystem::path file = dir / (name + ".comp.glsl");
     std::ofstream(file) << "#version 460\n#extension GL_GOOGLE_include_directive : require\n" << defines << kComputeBody;
-    return shader::compileGlsl(file, CANDELA_SHADER_SOURCE_DIR);
+    return ui::compileGlsl(file, CANDELA_SHADER_SOURCE_DIR);
 }
 
 TEST(ForwardShader, MaterialEvaluationAndLightingCompileInAComputeShader) {
     const TempDir dir("candela_forward_shader");
     for (const auto& [name, defines] : {std::pair<std::string, std::string>{"core", ""},
                                         {"layered", "#define CANDELA_MATERIAL_LAYERS\n"}}) {
-        const shader::CompileResult result = compileCompute(dir, name, defines);
+        const ui::CompileResult result = compileCompute(dir, name, defines);
         EXPECT_TRUE(result.ok()) << name << ": " << (result.errors.empty() ? "" : result.errors.front());
     }
 }

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-namespace candela {
+namespace candela::ui {
 namespace {
 
 scene::OrbitCamera camera() {
@@ -59,16 +59,16 @@ TEST(OrbitControls, SettingTheEyeKeepsTheTarget) {
 }
 
 TEST(Picking, RayThroughTheCentreHitsTheMiddleSphere) {
-    const scene::Scene grid = scene::makeSphereGrid();
+    const scene::Scene grid = assets::makeSphereGrid();
     const scene::OrbitCamera c = scene::OrbitCamera::framing(grid.bounds, 16.0f / 9.0f);
     const scene::ViewSetup view = c.view(16.0f / 9.0f);
-    const scene::Ray ray = scene::viewRay(view, {0.0f, 0.0f});
+    const pose::Ray ray = pose::viewRay(view, {0.0f, 0.0f});
     EXPECT_NEAR(glm::dot(ray.direction, glm::normalize(c.target - c.eye())), 1.0f, 1e-5f);
-    const std::optional<scene::Pick> pick = scene::pickDraw(grid, ray);
+    const std::optional<pose::Pick> pick = pose::pickDraw(grid, ray);
     ASSERT_TRUE(pick.has_value());
     EXPECT_EQ(grid.draws[pick->draw].material, 24u);
     EXPECT_LT(pick->distance, c.radius);
-    EXPECT_FALSE(scene::pickDraw(grid, scene::viewRay(view, {0.99f, -0.99f})).has_value());
+    EXPECT_FALSE(pose::pickDraw(grid, pose::viewRay(view, {0.99f, -0.99f})).has_value());
 }
 
 TEST(Picking, NearestOfTwoOverlappingTrianglesAndBothFaces) {
@@ -81,15 +81,15 @@ TEST(Picking, NearestOfTwoOverlappingTrianglesAndBothFaces) {
         for (uint32_t i = 0; i < 3; ++i) draw.bounds.extend(s.vertices[s.indices[draw.firstIndex + i]].position);
         s.draws.push_back(draw);
     }
-    const std::optional<scene::Pick> pick = scene::pickDraw(s, {{0.0f, 0.0f, 5.0f}, {0.0f, 0.0f, -1.0f}});
+    const std::optional<pose::Pick> pick = pose::pickDraw(s, {{0.0f, 0.0f, 5.0f}, {0.0f, 0.0f, -1.0f}});
     ASSERT_TRUE(pick.has_value());
     EXPECT_EQ(s.draws[pick->draw].material, 1u);  // draw 1 holds the near triangle
     EXPECT_FLOAT_EQ(pick->distance, 5.0f);
     // From behind, the far triangle is the nearest.
-    const std::optional<scene::Pick> back = scene::pickDraw(s, {{0.0f, 0.0f, -5.0f}, {0.0f, 0.0f, 1.0f}});
+    const std::optional<pose::Pick> back = pose::pickDraw(s, {{0.0f, 0.0f, -5.0f}, {0.0f, 0.0f, 1.0f}});
     ASSERT_TRUE(back.has_value());
     EXPECT_EQ(s.draws[back->draw].material, 0u);
 }
 
 }  // namespace
-}  // namespace candela
+}  // namespace candela::ui
