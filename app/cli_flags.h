@@ -85,6 +85,11 @@ struct Flag {
     CommandSet commands() const;
 };
 
+// "--flag VALUE" as help shows it; an enum-valued flag's VALUE is its names: "--cull on|off".
+std::string flagUsage(const Flag& flag, const FlagUse& use);
+// What the flag does for the commands of `use`, with the names it accepts and its default.
+std::string flagDescription(const Flag& flag, const FlagUse& use);
+
 // Every flag, in the order help lists them: each command's flags in the order its list declares
 // them. -h/--help and --version are not in it.
 const std::vector<Flag>& flagTable();

@@ -45,24 +45,22 @@ std::string row(const std::string& left, const std::string& text) {
     return out + wrap(text, kTextColumn, kTextColumn) + "\n";
 }
 
-// "--flag VALUE"; an enum-valued flag's VALUE can be its names: "--cull on|off".
-std::string usage(const Flag& flag, const FlagUse& use) {
+}  // namespace
+
+std::string flagUsage(const Flag& flag, const FlagUse& use) {
     if (use.value != "{choices}") return flag.name + (use.value.empty() ? "" : " " + use.value);
     std::string names;
     for (const std::string& name : flag.choices) names += (names.empty() ? "" : "|") + name;
     return flag.name + " " + names;
 }
 
-// What the flag does for the commands of `use`, with the names it accepts and its default.
-std::string description(const Flag& flag, const FlagUse& use) {
+std::string flagDescription(const Flag& flag, const FlagUse& use) {
     std::string text = use.help;
     if (const size_t at = text.find("{choices}"); at != std::string::npos)
         text.replace(at, 9, joinChoices(flag.choices, flag.otherForm));
     if (!use.defaultValue.empty()) text += " [" + use.defaultValue + "]";
     return text;
 }
-
-}  // namespace
 
 std::string versionText() { return "candela " CANDELA_VERSION; }
 
@@ -71,7 +69,7 @@ std::string commandHelp(std::string_view name) {
     std::string out = "usage: candela " + command.name + " " + command.arguments + "\n" +
                       wrap(command.summary, 0, 0) + "\n\nflags:\n";
     for (const Flag& flag : flagTable())
-        if (const FlagUse* use = flag.use(command.kind)) out += row(usage(flag, *use), description(flag, *use));
+        if (const FlagUse* use = flag.use(command.kind)) out += row(flagUsage(flag, *use), flagDescription(flag, *use));
     out += row("-h, --help", "print this help");
     if (!command.notes.empty()) out += "\n" + wrap(command.notes, 0, 0) + "\n";
     return out;
@@ -93,8 +91,8 @@ std::string usageText() {
         std::string& group = groups[set.bits];
         std::string previous;
         for (const FlagUse& use : flag.uses) {
-            const std::string left = usage(flag, use);
-            const std::string text = description(flag, use);
+            const std::string left = flagUsage(flag, use);
+            const std::string text = flagDescription(flag, use);
             group += row(left == previous ? "" : left, flag.uses.size() > 1 ? commandList(use.commands) + ": " + text : text);
             previous = left;
         }

@@ -29,7 +29,10 @@ std::vector<FlagSpec<ViewOptions>> viewFlags() {
              for (const std::string& item : commaSeparated(v)) o.panels.insert(parseChoice(flag, options::kPanelNames, item));
          },
          namesOf(options::kPanelNames)},
-        {"--shaders", "DIR", "hot-reload the shaders from DIR [the source tree's shaders/ folder]", "", parsed(&O::shaderDir, parsePath)},
+        {"--shaders", "DIR",
+         "hot-reload the shaders from DIR [the shaders/ folder of the source tree the executable was built in, "
+         "when it runs from there]",
+         "", parsed(&O::shaderDir, parsePath)},
         {"--ibl-report", "FILE", "show this ibl-report CSV's figures in the environment panel too", "",
          parsed(&O::iblReport, parsePath)},
     };

@@ -30,7 +30,7 @@ import sys
 
 COMMANDS = ["render", "view", "bench", "ibl-report", "scale-report", "quality-report", "diff", "soak", "info"]
 # Flags of other tools that the docs quote in their own command lines.
-OTHER_TOOLS_FLAGS = {"--preset", "--build", "--test-dir", "--target", "--target-env", "--gtest_filter", "--array",
+OTHER_TOOLS_FLAGS = {"--preset", "--build", "--install", "--prefix", "--test-dir", "--target", "--target-env", "--gtest_filter", "--array",
                      "--basisu", "--gtest_brief",
                      "--write-docs",  # tools/check_layers.py's
                      "--assets",  # tools/gpu-check.sh's

@@ -67,10 +67,12 @@ def load(root):
     # Files outside engine/: the first row whose path matches (a file, or a folder ending in /):
     # (path, folders it may include (and everything below them))
     CONSUMERS = [
-        # candela_cli: the argument parser, tested without the engine (tests/cli): the settings chosen
-        # by name (options), the IBL settings and the names-table lookups; no device-side layer.
+        # candela_cli: the argument parser, tested without the engine (tests/cli), and the manual page
+        # and completions written from its tables (candela_cli_docs): the settings chosen by name
+        # (options), the IBL settings and the names-table lookups; no device-side layer.
         *[(f"app/{name}", ["ibl", "core", "options", "shared"])
           for name in ["cli.h", "cli.cpp", "cli_commands.cpp", "cli_flags.h", "cli_flags.cpp", "cli_help.cpp",
+                       "cli_manual.h", "cli_manual.cpp", "cli_docs_main.cpp",
                        "cli_values.h", "cli_values.cpp", "flag_spec.h", "flag_groups.h", "flag_groups.cpp",
                        "common_options.h", "scene_render_options.h",
                        *[f"{command}_cli.{ext}" for command in ["render", "view", "bench", "ibl_report", "scale_report",

@@ -14,6 +14,7 @@ packages=(
   libdraco-dev libmeshoptimizer-dev gltfpack
   libwebp-dev libzstd-dev
   chromium chromium-driver  # the HTML page in a browser (tests/html, label browser)
+  zsh fish groff-base       # the completions parsed and the manual page formatted (tests/install)
 )
 
 missing=()

@@ -33,6 +33,23 @@ std::string layoutChange(const shader::ShaderReflection& original, const shader:
 
 }  // namespace
 
+std::filesystem::path findSourceShaders(const std::filesystem::path& start) {
+    std::error_code ec;
+    std::filesystem::path folder = start;
+    for (int level = 0; level <= 4 && !folder.empty(); ++level) {
+        if (std::filesystem::is_regular_file(folder / "shaders" / "builtin_shaders.txt", ec)) return folder / "shaders";
+        if (folder == folder.parent_path()) break;
+        folder = folder.parent_path();
+    }
+    return {};
+}
+
+std::filesystem::path sourceShadersOfExecutable() {
+    std::error_code ec;
+    const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", ec);
+    return ec ? std::filesystem::path() : findSourceShaders(executable.parent_path());
+}
+
 ShaderHotReload::ShaderHotReload(std::filesystem::path shaderDir) : mDir(std::move(shaderDir)) {
     std::error_code ec;
     mEnabled = !mDir.empty() && std::filesystem::is_directory(mDir, ec);

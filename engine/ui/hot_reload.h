@@ -17,6 +17,14 @@
 
 namespace candela::ui {
 
+// The shaders/ folder of the source tree a build folder inside it belongs to: the first of
+// `start` and its parents (four at most) that holds shaders/builtin_shaders.txt; empty when none
+// does. From the executable's folder (build/release/app) it finds the tree's shaders/; an
+// installed executable has none, and the viewer then reloads only from --shaders.
+std::filesystem::path findSourceShaders(const std::filesystem::path& start);
+// findSourceShaders from the running executable's folder (/proc/self/exe); empty if unknown.
+std::filesystem::path sourceShadersOfExecutable();
+
 class ShaderHotReload {
 public:
     // `shaderDir`: the folder holding the built-in shaders' sources. Watches nothing if it does

@@ -80,8 +80,7 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content, vk::Context& conte
     mSwapchain = std::make_unique<vk::Swapchain>(*mContext, mWindow->createSurface(mContext->instance()), desc.vsync);
     mRenderer = &renderer;
     if (mUi) mImGui = std::make_unique<ImGuiContextOwner>(mWindow->handle());
-    mHotReload = std::make_unique<ShaderHotReload>(desc.shaderDir.empty() ? std::filesystem::path(CANDELA_SHADER_SOURCE_DIR)
-                                                                          : desc.shaderDir);
+    mHotReload = std::make_unique<ShaderHotReload>(desc.shaderDir.empty() ? sourceShadersOfExecutable() : desc.shaderDir);
 
     mSettings.floatOutput = false;
     const float aspect = visibleAspect();

@@ -23,7 +23,7 @@
 #include <iterator>
 #include <sstream>
 
-using namespace candela::scene;
+using namespace candela::assets;
 using namespace candela::assets::test;
 
 namespace {
