@@ -23,14 +23,22 @@ ValueKind valueKind(const Flag& flag, const FlagUse& use) {
     return ValueKind::Free;
 }
 
-std::string joined(const std::vector<std::string>& words, std::string_view separator = " ") {
+// `words` separated by spaces.
+std::string joined(const std::vector<std::string>& words) {
     std::string out;
-    for (const std::string& w : words) out += (out.empty() ? "" : std::string(separator)) + w;
+    for (const std::string& w : words) out += (out.empty() ? "" : " ") + w;
     return out;
 }
 
-// The first clause of `text` (up to a ';' or ':' followed by a space), at most 80 characters: a
-// completion menu's one-line description.
+// The commands' names, in help's order.
+std::vector<std::string> commandNames() {
+    std::vector<std::string> names;
+    for (const CommandInfo& command : commandTable()) names.push_back(command.name);
+    return names;
+}
+
+// The first clause of `text` (up to "; ", ": ", " (" or " ["), at most 80 characters: a completion
+// menu's one-line description.
 std::string shortDescription(const std::string& text) {
     size_t end = text.size();
     for (std::string_view stop : {"; ", ": ", " (", " ["})
@@ -51,22 +59,15 @@ std::string shellQuoted(const std::string& text) {
 // ASCII hyphens), and no line starting with a control character.
 std::string roff(const std::string& text) {
     std::string out;
-    for (size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
+    bool lineStart = true;
+    for (char c : text) {
+        if (lineStart && (c == '.' || c == '\'')) out += "\\&";  // else a request
         if (c == '\\') out += "\\e";
         else if (c == '-') out += "\\-";
         else out += c;
+        lineStart = c == '\n';
     }
-    // A line starting with . or ' would be a request.
-    std::string lines;
-    for (size_t at = 0; at <= out.size();) {
-        const size_t end = std::min(out.find('\n', at), out.size());
-        if (end > at && (out[at] == '.' || out[at] == '\'')) lines += "\\&";
-        lines.append(out, at, end - at);
-        if (end < out.size()) lines += '\n';
-        at = end + 1;
-    }
-    return lines;
+    return out;
 }
 
 // The flags a command takes with their use for it, in help's order.
@@ -123,8 +124,7 @@ std::string manPage() {
 }
 
 std::string bashCompletion() {
-    std::vector<std::string> names;
-    for (const CommandInfo& command : commandTable()) names.push_back(command.name);
+    const std::vector<std::string> names = commandNames();
     std::string flags, values;
     for (const CommandInfo& command : commandTable()) {
         std::vector<std::string> list;
@@ -215,8 +215,7 @@ std::string zshCompletion() {
 std::string fishCompletion() {
     std::string out = "# fish completion for candela, generated from its flag table (app/cli_manual.cpp); do not edit.\n"
                       "complete -c candela -f\n";
-    std::vector<std::string> names;
-    for (const CommandInfo& command : commandTable()) names.push_back(command.name);
+    const std::vector<std::string> names = commandNames();
     for (const CommandInfo& command : commandTable())
         out += "complete -c candela -n " + shellQuoted("not __fish_seen_subcommand_from " + joined(names)) + " -a " +
                command.name + " -d " + shellQuoted(shortDescription(command.summary)) + "\n";

@@ -228,14 +228,17 @@ NAMESPACE_OPEN = re.compile(r"^[ \t]*namespace[ \t]+(candela(?:::\w+)*)[ \t]*\{"
 FORWARD_DECLARATION = re.compile(r"^(?:(?:class|struct)\s+\w+|enum\s+class\s+\w+\s*:\s*[\w:]+)\s*;$")
 
 
+def within(opened, namespace):
+    """Whether `opened` is `namespace` or nested in it."""
+    return opened == namespace or opened.startswith(namespace + "::")
+
+
 def owns(namespace, opened):
     """Whether a file of the row whose namespace is `namespace` may open `opened`: the row's own or
     one nested in it, but not one another row with a longer name owns (core's candela is not
     scene's candela::scene)."""
-    if opened != namespace and not opened.startswith(namespace + "::"):
-        return False
-    return not any(len(other) > len(namespace) and (opened == other or opened.startswith(other + "::"))
-                   for other in NAMESPACES.values())
+    return within(opened, namespace) and not any(len(other) > len(namespace) and within(opened, other)
+                                                 for other in NAMESPACES.values())
 
 
 def block_body(text, brace):
@@ -265,7 +268,7 @@ def check_namespaces(root):
         code = re.sub(r"//[^\n]*", "", text)
         for m in NAMESPACE_OPEN.finditer(code):
             opened = m.group(1)
-            if owns(NAMESPACES[folder], opened) or any(opened == e or opened.startswith(e + "::") for e in extra):
+            if owns(NAMESPACES[folder], opened) or any(within(opened, e) for e in extra):
                 continue
             body = block_body(code, m.end() - 1) or ""
             statements = [s.strip() + ";" for s in body.split(";") if s.strip()]
