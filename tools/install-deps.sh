@@ -15,6 +15,7 @@ packages=(
   libwebp-dev libzstd-dev
   chromium chromium-driver  # the HTML page in a browser (tests/html, label browser)
   zsh fish groff-base       # the completions parsed and the manual page formatted (tests/install)
+  dpkg-dev file             # cpack -G DEB: dpkg-shlibdeps derives Depends (packaging/)
 )
 
 missing=()
