@@ -1,5 +1,6 @@
 #include "failures.h"
 
+#include "candela/errors.h"
 #include "core/errors.h"
 #include "core/log.h"
 #include "vk/check.h"
@@ -11,6 +12,10 @@ Failure describeFailure(const std::exception_ptr& error) {
         std::rethrow_exception(error);
     } catch (const UserError& e) {
         return {e.what(), 2};
+    } catch (const candela::InputError& e) {
+        return {e.what(), 2};
+    } catch (const candela::OutOfMemoryError& e) {
+        return {e.what(), 4};  // "out of device memory: ..." (engine/api/errors.cpp)
     } catch (const vk::OutOfDeviceMemory& e) {
         return {std::string("out of device memory: ") + e.what(), 4};
     } catch (const InternalError& e) {

@@ -3,6 +3,8 @@
 // renders; each scene's device memory is freed before the next is uploaded.
 
 #include "commands.h"
+#include "api/access.h"
+#include "candela/device.h"
 #include "failures.h"
 #include "render_page.h"
 #include "render_report.h"
@@ -62,23 +64,12 @@ struct Run {
     bool sequence;  // --frames N > 1
     bool anyFrame = false;
     bool gpuNoteShown = false;  // graph::kUnreliableGpuTimes, said once after the first marked line
-    CapturedFrame lastFrame;  // for --graph-dot/--graph-json of a single scene
 };
 
-void writeImage(const Run& run, const std::string& out, const CapturedFrame& frame) {
-    createFolderOf(out);
-    switch (run.format) {
-        case assets::ImageFileFormat::Png: assets::writePng(out, frame.width, frame.height, frame.rgba8); break;
-        case assets::ImageFileFormat::Exr: assets::writeExr(out, frame.width, frame.height, frame.rgba32f); break;
-        case assets::ImageFileFormat::Pfm: assets::writePfm(out, frame.width, frame.height, frame.rgba32f); break;
-    }
-}
-
 // The line printed for each image written.
-void printWritten(Run& run, const std::string& out, const CapturedFrame& frame, const pose::ScenePose& pose,
-                  const SceneReport& r) {
+void printWritten(Run& run, const std::string& out, const CapturedFrame& frame, double time, const SceneReport& r) {
     std::printf("wrote %s (%ux%u", out.c_str(), frame.width, frame.height);
-    if (run.sequence) std::printf(", t = %.4f s", pose.time());
+    if (run.sequence) std::printf(", t = %.4f s", time);
     if (run.batch) {
         std::printf("): load %.1f ms, upload %.1f ms, frame %.1f ms\n", r.loadMs, r.uploadMs, r.frameMs.back());
     } else {
@@ -100,10 +91,13 @@ void printWritten(Run& run, const std::string& out, const CapturedFrame& frame, 
     std::fflush(stdout);
 }
 
-// Renders every image of one scene (each variant asked for, each frame of a sequence) and fills
-// `r` with what it took. Throws what the renderer or the writers throw.
-void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progress) {
+// Renders every image of one scene (each variant asked for, each frame of a sequence) through the
+// public API (candela::Device::renderSequence, with the flags the API does not have applied to
+// each frame's settings: engine/api/access.h) and fills `r` with what it took. Throws what the
+// API or the writers throw.
+void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progress) {
     const RenderOptions& options = run.options;
+    scene::Scene& scene = Access::impl(held).scene;
     r.extensions = scene.report.extensionsUsed;
     r.imageDecodeMs = scene.report.textureDecoding.milliseconds;
     r.decompressionMs = scene.report.decompression.milliseconds;
@@ -115,73 +109,59 @@ void renderScene(Run& run, scene::Scene& scene, SceneReport& r, Progress& progre
     log::Capture capture;  // what the renderer logs from here on belongs to this scene
     warnAnimationConflicts(options, scene);  // once per scene, whatever the variants
 
-    std::vector<std::optional<uint32_t>> variants;
-    if (options.variant == "all") {
-        for (uint32_t v = 0; v < scene.variants.size(); ++v) variants.push_back(v);
-        if (variants.empty()) variants.push_back(std::nullopt);
-    } else {
-        variants.push_back(options.variant.empty() ? std::nullopt : std::optional(scene::variantIndex(scene, options.variant)));
-    }
-    RenderSettings settings = renderSettings(options, scene, run.session.environment());
-    settings.tonemap.dither = options.dither;
-    settings.floatOutput = assets::isFloatFormat(run.format);
-    // One precompute serves the whole run: with the sheen cube, for scenes with or without a sheen.
-    if (run.batch) settings.iblQuality.sheen = true;
-    glm::vec3 orbit = settings.camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f));
-    const bool turntable = run.sequence && options.turntableDegrees != 0.0f;
+    std::vector<std::string> variants;  // "": the default materials
+    if (options.variant == "all") variants = scene.variants;
+    if (variants.empty()) variants.push_back(options.variant == "all" ? "" : options.variant);
+    candela::RenderOptions api = apiRenderOptions(options);
+    api.dither = options.dither;
+    api.format = assets::isFloatFormat(run.format) ? candela::PixelFormat::Rgba32Float : candela::PixelFormat::Rgba8Srgb;
     const float aspect = float(options.width) / float(options.height);
     std::string cameraLine;  // the last camera printed (--verbose)
+    double time = 0.0;       // the pose's, of the frame being drawn
 
-    for (const std::optional<uint32_t> variant : variants) {
-        if (variant) {
-            run.session.renderer().sceneReplaced();  // the draws' materials change: uploaded again
-            scene::selectVariant(scene, variant);
+    // What the flags ask beyond the API's options, for each frame; --verbose prints the camera.
+    const SettingsHook flags = [&](RenderSettings& settings) {
+        applyRenderFlags(options, settings);
+        // One precompute serves the whole run: with the sheen cube, for scenes with or without a sheen.
+        if (run.batch) settings.iblQuality.sheen = true;
+        time = settings.pose->time();
+        if (log::verbose()) {
+            const std::string line = "camera: " + Renderer::cameraFlags(scene, settings.camera, aspect, settings.pose);
+            if (line != cameraLine) log::info(cameraLine = line);
         }
-        const std::string variantName = variant ? scene.variants[*variant] : "default";
-        r.variants.push_back(variant ? variantName : "");
-        pose::ScenePose pose = loadPose(options, scene);
-        settings.pose = &pose;
-        if (turntable && !settings.camera.gltfCamera && orbit.z <= 0.0f) {
-            // One distance for the whole turn (framing from each azimuth would move the camera in
-            // and out): the largest any of its frames needs.
-            CameraSettings camera = settings.camera;
-            float radius = 0.0f;
-            for (uint32_t i = 0; i < options.frames; ++i) {
-                camera.orbit = orbit + glm::vec3(options.turntableDegrees * float(i) / float(options.frames), 0.0f, 0.0f);
-                radius = std::max(radius, Renderer::orbitCamera(scene, camera, aspect, &pose).radius);
-            }
-            orbit.z = radius;
-        }
-        const auto uploadStart = Clock::now();
-        run.session.renderer().upload(settings);
-        r.uploadMs += msSince(uploadStart);
-        for (uint32_t i = 0; i < options.frames; ++i) {
-            if (run.sequence) {
-                pose.evaluate(options.time + double(i) / options.fps);
-                if (turntable)
-                    settings.camera.orbit = orbit + glm::vec3(options.turntableDegrees * float(i) / float(options.frames), 0.0f, 0.0f);
-            }
-            if (log::verbose()) {
-                const std::string line = "camera: " + Renderer::cameraFlags(scene, settings.camera, aspect, &pose);
-                if (line != cameraLine) log::info(cameraLine = line);
-            }
-            const auto frameStart = Clock::now();
-            run.lastFrame = run.session.renderer().capture(settings);
+    };
+    for (const std::string& variant : variants) {
+        api.variant = variant;
+        const std::string variantName = variant.empty() ? "default" : variant;
+        r.variants.push_back(variant);
+        Clock::time_point stageStart = Clock::now();
+        const candela::ProgressCallback stages = [&](const candela::RenderProgress& stage) {
+            // The upload runs between the first two stages.
+            if (stage.stage == candela::RenderProgress::Stage::Frame && stage.frame == 0) r.uploadMs += msSince(stageStart);
+            stageStart = Clock::now();
+            return true;
+        };
+        const candela::FrameCallback write = [&](uint32_t i, const candela::Image& image) {
+            r.frameMs.push_back(msSince(stageStart));
+            const CapturedFrame& frame = Access::impl(run.session.device()).lastFrame;
             run.anyFrame = true;
-            r.frameMs.push_back(msSince(frameStart));
             double gpu = 0.0;
-            for (double ms : run.lastFrame.timings.gpuMs) gpu += std::max(ms, 0.0);
+            for (double ms : frame.timings.gpuMs) gpu += std::max(ms, 0.0);
             r.gpuMs.push_back(gpu);
             const std::string out = expandOutPattern(
                 options.out, {r.input.name, r.input.path, variantName, run.sequence ? std::optional(i) : std::nullopt});
-            writeImage(run, out, run.lastFrame);
-            std::string label = variant ? variantName : "";
+            createFolderOf(out);
+            candela::writeImage(out, image);
+            std::string label = variant;
             if (run.sequence) label += (label.empty() ? "" : ", ") + ("frame " + std::to_string(i));
             r.outputs.push_back({out, label.empty() ? "render" : label});
             progress.clear();
-            printWritten(run, out, run.lastFrame, pose, r);
+            printWritten(run, out, frame, time, r);
             if (!run.batch) progress.step(i + 1, "frames written");
-        }
+        };
+        Access::renderSequence(run.session.device(), held, api,
+                               {.frames = options.frames, .fps = options.fps, .turntableDegrees = options.turntableDegrees},
+                               write, run.session.apiEnvironment(), stages, flags);
     }
     const passes::DrawStats& stats = run.session.renderer().drawStats();
     r.triangles = stats.sceneTriangles;
@@ -262,9 +242,11 @@ void runScene(Run& run, LoadedScene loaded, SceneReport& r, RunReport& report, P
               std::exception_ptr& singleFailure) {
     vk::Context& context = run.session.context();
     const uint32_t validationBefore = context.validationMessageCount();
+    std::optional<candela::Scene> scene;  // kept until the device has let go of it
     try {
         if (loaded.error) std::rethrow_exception(loaded.error);
-        renderScene(run, *loaded.scene, r, progress);
+        scene.emplace(Access::scene(std::move(*loaded.scene)));
+        renderScene(run, *scene, r, progress);
         r.ok = true;
     } catch (...) {
         if (!run.batch) singleFailure = std::current_exception();
@@ -286,8 +268,8 @@ void runScene(Run& run, LoadedScene loaded, SceneReport& r, RunReport& report, P
     if (report.precomputeMs < 0.0) report.precomputeMs = run.session.renderer().lastPrecompute().frameMs;
     if (run.batch) {
         // Nothing of this scene stays, on the device or on the host.
-        run.session.renderer().releaseScene();
-        loaded.scene.reset();
+        run.session.device().release();
+        scene.reset();
         returnFreedHeapMemory();
         r.retainedHostBytes = residentBytes();
         r.retainedDeviceBytes = context.allocator().stats().allocatedBytes;
@@ -308,10 +290,11 @@ int finishRun(Run& run, const RunReport& report, std::exception_ptr singleFailur
     if (run.anyFrame) {
         // The graph exports describe the last frame.
         const graph::RenderGraph& graph = renderer.lastGraph();
+        const CapturedFrame& lastFrame = Access::impl(run.session.device()).lastFrame;
         if (!options.graphDot.empty())
-            writeText(options.graphDot, graph::exportDot(graph.declaration(), graph.compiled(), &run.lastFrame.timings));
+            writeText(options.graphDot, graph::exportDot(graph.declaration(), graph.compiled(), &lastFrame.timings));
         if (!options.graphJson.empty())
-            writeText(options.graphJson, graph::exportJson(graph.declaration(), graph.compiled(), &run.lastFrame.timings));
+            writeText(options.graphJson, graph::exportJson(graph.declaration(), graph.compiled(), &lastFrame.timings));
     }
     const size_t scenes = report.scenes.size();
     if (run.batch) {

@@ -2,6 +2,7 @@
 
 #include "session.h"
 
+#include "api/access.h"
 #include "assets/builtin_scenes.h"
 #include "assets/gltf_loader.h"
 #include "assets/procedural_sky.h"
@@ -9,7 +10,6 @@
 #include "core/log.h"
 #include "pose/animation_conflicts.h"
 #include "scene/material_variants.h"
-#include "shared/tonemap.h"
 
 namespace candela::app {
 
@@ -24,24 +24,28 @@ vk::ContextDesc contextDesc(const CommonOptions& common) {
                                                                   : std::filesystem::path(common.pipelineCache)};
 }
 
-Session::Session(const CommonOptions& common, const EnvironmentChoice& env)
-    : desc_(app::contextDesc(common)), environment_(loadEnvironment(env)) {}
-
-void Session::start(const RendererOptions& options) {
-    context_.emplace(desc_);
-    renderer_.emplace(*context_, options);
+Session::Session(const CommonOptions& common, const EnvironmentChoice& env) : desc_(app::contextDesc(common)) {
+    if (std::optional<assets::Environment> loaded = loadEnvironment(env)) environment_.emplace(Access::environment(std::move(*loaded)));
 }
+
+void Session::start(const RendererOptions& options) { device_.emplace(Access::device(desc_, options)); }
+
+vk::Context& Session::context() { return Access::impl(*device_).context; }
+Renderer& Session::renderer() { return Access::impl(*device_).renderer; }
+
+const assets::Environment* Session::environment() const { return environment_ ? &Access::impl(*environment_) : nullptr; }
 
 std::unique_ptr<assets::Environment> Session::takeEnvironment() {
     if (!environment_) return nullptr;
-    auto out = std::make_unique<assets::Environment>(std::move(*environment_));
+    auto out = std::make_unique<assets::Environment>(std::move(Access::impl(*environment_)));
     environment_.reset();
     return out;
 }
 
 int Session::exitCode(int code) const {
-    if (context_->validationMessageCount() == 0) return code;
-    log::error(std::to_string(context_->validationMessageCount()) + " validation messages");
+    const uint32_t messages = device_->validationMessages();
+    if (messages == 0) return code;
+    log::error(std::to_string(messages) + " validation messages");
     return 3;
 }
 
@@ -80,40 +84,61 @@ void warnAnimationConflicts(const SceneOptions& options, const scene::Scene& sce
     if (!line.empty()) log::warn(scene.source + ": " + line);
 }
 
-RenderSettings renderSettings(const SceneRenderOptions& options, const scene::Scene& scene,
-                              const assets::Environment* environment) {
-    RenderSettings settings{.width = options.width, .height = options.height, .scene = &scene};
+// The API's enumerations list the same choices in the same order as the flags' tables.
+static_assert(int(candela::Tonemap::PbrNeutral) == int(options::Tonemap::PbrNeutral) &&
+              int(candela::Tonemap::Aces) == int(options::Tonemap::Aces) && int(candela::Tonemap::Agx) == int(options::Tonemap::Agx) &&
+              int(candela::Tonemap::Reinhard) == int(options::Tonemap::Reinhard) &&
+              int(candela::Tonemap::Linear) == int(options::Tonemap::Linear));
+static_assert(int(candela::ShadingPath::Auto) == int(options::ShadingPath::Auto) &&
+              int(candela::ShadingPath::Forward) == int(options::ShadingPath::Forward) &&
+              int(candela::ShadingPath::Visibility) == int(options::ShadingPath::Visibility));
+
+candela::RenderOptions apiRenderOptions(const SceneRenderOptions& options) {
+    candela::RenderOptions api;
+    api.width = options.width;
+    api.height = options.height;
+    api.camera.gltfCamera = options.camera;
+    api.camera.orbit = options.cameraOrbit;
+    api.camera.target = options.target;
+    api.camera.fovYDegrees = options.fovDegrees;
+    api.tonemap = candela::Tonemap(int(options.tonemap));
+    api.exposureEv = options.exposureEv;
+    api.msaa = options.msaa;
+    api.shadingPath = candela::ShadingPath(int(options.shadingPath));
+    using Kind = candela::Background::Kind;
+    switch (options.background.kind) {
+        case Background::Kind::Auto: api.background.kind = Kind::Auto; break;
+        case Background::Kind::Skybox: api.background.kind = Kind::Environment; break;
+        case Background::Kind::Transparent: api.background.kind = Kind::Transparent; break;
+        case Background::Kind::Color: api.background.kind = Kind::Color; break;
+    }
+    api.background.srgb = options.background.srgb;
+    api.animations = options.animations;
+    api.time = options.time;
+    api.variant = options.variant;
+    return api;
+}
+
+void applyRenderFlags(const SceneRenderOptions& options, RenderSettings& settings) {
     settings.disabledPasses = options.disabledPasses;
-    settings.defaultLights = options.defaultLights;
+    if (!options.defaultLights) settings.defaultLights = false;
     settings.sceneLights = options.sceneLights;
     settings.drawSelection = {.frustumCulling = options.frustumCulling, .lodErrorPixels = options.lodErrorPixels};
     settings.shadingOptions.specularAntiAliasing = options.specularAa;
-    settings.msaa = options.msaa;
     settings.precompile = options.precompile;
-    settings.shadingPath = options.shadingPath;
-    if (options.camera) settings.camera.gltfCamera = *options.camera;
-    if (options.cameraOrbit) settings.camera.orbit = glm::vec3((*options.cameraOrbit)[0], (*options.cameraOrbit)[1], (*options.cameraOrbit)[2]);
-    if (options.target) settings.camera.target = glm::vec3((*options.target)[0], (*options.target)[1], (*options.target)[2]);
-    settings.camera.fovYDegrees = options.fovDegrees;
     settings.shading = options.shading;
-    settings.tonemap.op = options.tonemap;
     settings.debugView = options.debugView;
-    settings.tonemap.exposureEv = options.exposureEv;
-    settings.environment = environment;
     settings.iblQuality = options.iblQuality;
+    const bool skybox = settings.ibl.skybox;  // the background's, from the API's options
     settings.ibl = options.iblLook;
+    settings.ibl.skybox = skybox;
     settings.iblCacheDir = options.iblCache;
-    // With an environment the skybox is the background unless another one is asked for.
-    Background background = options.background;
-    constexpr float kGrey = 0x26 / 255.0f;  // #262626
-    if (background.kind == Background::Kind::Auto)
-        background = environment ? Background{Background::Kind::Skybox} : Background{Background::Kind::Color, {kGrey, kGrey, kGrey}};
-    settings.ibl.skybox = background.kind == Background::Kind::Skybox;
-    if (background.kind == Background::Kind::Color)
-        settings.tonemap.background = shading::srgbDecode(glm::vec3(background.srgb[0], background.srgb[1], background.srgb[2]));
-    // The default key and fill lights stand in for an environment: with one, light-less scenes
-    // are lit by it alone.
-    if (environment) settings.defaultLights = false;
+}
+
+RenderSettings renderSettings(const SceneRenderOptions& options, const scene::Scene& scene,
+                              const assets::Environment* environment) {
+    RenderSettings settings = candela::renderSettings(apiRenderOptions(options), scene, environment);
+    applyRenderFlags(options, settings);
     return settings;
 }
 

@@ -1,11 +1,15 @@
 #pragma once
 // What the drawing commands set up before their first frame: the environment that lights their
-// scenes, then the device (with its pipeline cache) and a renderer on it; and the scene, pose and
-// render settings that render, view and bench's flags ask for. The session holds no scene: render
+// scenes, then the device (with its pipeline cache) and a renderer on it, both held as the public
+// API's objects (candela::Environment, candela::Device: render draws through the API, and the other
+// commands reach the renderer inside); and the scene, pose and render settings that render, view
+// and bench's flags ask for. The session holds no scene: render
 // loads a batch on a loading thread and the viewer replaces its scene when a file is dropped, so
 // each command holds its scenes, read by the functions below.
 
 #include "cli.h"
+#include "candela/device.h"
+#include "candela/render.h"
 #include "assets/environment.h"
 #include "pose/scene_pose.h"
 #include "render/renderer.h"
@@ -36,11 +40,13 @@ public:
     // Starts the device and a renderer made with `options`. Precondition: not started.
     void start(const RendererOptions& options = {});
     // Precondition: started.
-    vk::Context& context() { return *context_; }
-    Renderer& renderer() { return *renderer_; }
+    candela::Device& device() { return *device_; }
+    vk::Context& context();
+    Renderer& renderer();
 
     // The environment; null for --env none.
-    const assets::Environment* environment() const { return environment_ ? &*environment_ : nullptr; }
+    const assets::Environment* environment() const;
+    const candela::Environment* apiEnvironment() const { return environment_ ? &*environment_ : nullptr; }
     // Hands the environment over (to the viewer, which owns what it draws); null for --env none.
     std::unique_ptr<assets::Environment> takeEnvironment();
 
@@ -50,9 +56,8 @@ public:
 
 private:
     vk::ContextDesc desc_;
-    std::optional<assets::Environment> environment_;
-    std::optional<vk::Context> context_;
-    std::optional<Renderer> renderer_;
+    std::optional<candela::Environment> environment_;
+    std::optional<candela::Device> device_;
 };
 
 // The environment `choice` asks for (nullopt: none), its warnings logged, and its notes with --verbose.
@@ -68,8 +73,14 @@ pose::ScenePose loadPose(const SceneOptions& options, const scene::Scene& scene)
 // Logs one warning naming the scene when the animations --animation asks for drive the same
 // channels (which, and which wins: pose::describeAnimationConflicts); nothing otherwise.
 void warnAnimationConflicts(const SceneOptions& options, const scene::Scene& scene);
-// The render settings the flags of render, view and bench choose (undithered: render and bench
-// set --dither, the viewer always dithers). Precondition: `scene` and `environment` outlive them.
+// What the flags of render, view and bench ask of the public API's render options (undithered:
+// render and bench set --dither, the viewer always dithers).
+candela::RenderOptions apiRenderOptions(const SceneRenderOptions& options);
+// What those flags ask that the API does not offer (debug views, draw selection, lights, IBL
+// quality and look...), set in the settings the API made from apiRenderOptions.
+void applyRenderFlags(const SceneRenderOptions& options, RenderSettings& settings);
+// The render settings the flags choose: the API's settings for apiRenderOptions, with
+// applyRenderFlags. Precondition: `scene` and `environment` outlive them.
 RenderSettings renderSettings(const SceneRenderOptions& options, const scene::Scene& scene,
                               const assets::Environment* environment);
 

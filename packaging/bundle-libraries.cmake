@@ -1,4 +1,4 @@
-# Installs the shared libraries CANDELA_BUNDLED_BINARIES need, but glibc's (every Linux has its own,
+# Installs the shared libraries CANDELA_BUNDLED_BINARIES and CANDELA_BUNDLED_LIBRARIES need, but glibc's (every Linux has its own,
 # matched to its ld.so), into CANDELA_BUNDLED_LIBDIR, each under the names its link chain has
 # (libglfw.so.3 -> libglfw.so.3.3); and, on Debian, the copyright file of each package they come
 # from into CANDELA_BUNDLED_DOCDIR/third-party/PACKAGE/. The install script of the component
@@ -6,6 +6,7 @@
 set(prefix "$ENV{DESTDIR}${CMAKE_INSTALL_PREFIX}")
 file(GET_RUNTIME_DEPENDENCIES
   EXECUTABLES ${CANDELA_BUNDLED_BINARIES}
+  LIBRARIES ${CANDELA_BUNDLED_LIBRARIES}
   RESOLVED_DEPENDENCIES_VAR libraries
   UNRESOLVED_DEPENDENCIES_VAR unresolved
   PRE_EXCLUDE_REGEXES "^(libc|libm|libdl|libpthread|librt|libutil|libresolv|libmvec|ld-linux-x86-64)\\.so")

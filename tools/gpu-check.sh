@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# The GPU check: runs from a bundle (tools/make-bundle.sh) on a machine with a Vulkan driver and
-# writes one report, OUT/report.md, with the files it summarizes beside it:
+# The GPU check: runs from the relocatable tarball (docs/packaging.md; `cpack -G TGZ -D
+# CANDELA_GPU_CHECK=ON` adds the GPU test binary, the validation layer and what the tests read) on a
+# machine with a Vulkan driver and writes one report, OUT/report.md, with the files it summarizes
+# beside it:
 #   1. `candela info` under the validation layer: the devices, the one chosen, the features
 #   2. the golden scenes (tests/gpu/golden_test.cpp) through both shading paths under validation,
 #      every render kept, compared with the approved lavapipe images by ꟻLIP (`candela diff`)
 #   3. 1280x720 renders of the default scene and DamagedHelmet on both paths, under validation
 #   4. `candela bench` of DamagedHelmet and the 10x10 grid (as ratios to the calibration pass)
-#   5. the rest of the GPU test binary, if the bundle has it (every test under validation)
+#   5. the rest of the GPU test binary, if the tarball has it (every test under validation)
+# Steps 2 and 5 need the GPU test binary; without the validation layer in the tarball (the plain
+# one) every step runs without validation, which the report says.
 #   ./gpu-check.sh [--assets DIR] [--out DIR] [--tests-timeout SECONDS]
 #                  [--golden-filter GTEST_PATTERN] [--tests-filter GTEST_PATTERN] [--bench-frames N]
 # --assets: the shared sample assets (models/, environments/); without them the golden cases of
@@ -32,8 +36,13 @@ while [ $# -gt 0 ]; do
   esac
 done
 mkdir -p "$out" && out=$(cd "$out" && pwd)
-export LD_LIBRARY_PATH=$bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-export VK_LAYER_PATH=$bundle/lib/vulkan/explicit_layer.d
+# The programs find the tarball's libraries by their run path ($ORIGIN/../lib); the loader finds
+# the tarball's validation layer here.
+validate=""
+if [ -f "$bundle/lib/vulkan/explicit_layer.d/VkLayer_khronos_validation.json" ]; then
+  export VK_LAYER_PATH=$bundle/lib/vulkan/explicit_layer.d
+  validate=--validate
+fi
 export CANDELA_GOLDEN_DIR=$bundle/share/candela/golden
 export CANDELA_TEST_DATA=$bundle/share/candela/test-data
 export CANDELA_TEST_SCENES=$bundle/share/candela/test-scenes
@@ -56,12 +65,13 @@ timed() {  # NAME COMMAND...: runs COMMAND, its output in OUT/NAME.log, its seco
   echo "commit: $(cat "$bundle/share/candela/commit" 2>/dev/null || echo unknown)"
   echo "date: $(date -u +%FT%TZ)"
   echo "kernel: $(uname -srm)"
+  echo "validation: ${validate:+on (the layer in the tarball, with synchronization validation)}${validate:-off (no validation layer in the tarball)}"
   echo "cpu: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //') ($(nproc) threads)"
   command -v nvidia-smi > /dev/null && nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader | sed 's/^/gpu: /'
 } > "$out/machine.txt"
 
 step "info"
-timed info "$candela" info --validate || status=1
+timed info "$candela" info $validate || status=1
 
 step "golden scenes, both shading paths"
 if [ -x "$tests" ]; then
@@ -75,16 +85,16 @@ if [ -x "$tests" ]; then
       > "$out/flip-$path.log" 2>&1
   done
 else
-  echo "no GPU test binary in the bundle" > "$out/golden.log"
+  echo "no GPU test binary in the tarball" > "$out/golden.log"
 fi
 
 step "renders"
 helmet=""
 [ -n "$assets" ] && helmet=$assets/models/DamagedHelmet/glTF-Binary/DamagedHelmet.glb
 for path in forward visibility; do
-  timed "render-default-$path" "$candela" render --validate --shading-path "$path" --out "$out/default-$path.png" || status=1
+  timed "render-default-$path" "$candela" render $validate --shading-path "$path" --out "$out/default-$path.png" || status=1
   if [ -f "$helmet" ]; then
-    timed "render-helmet-$path" "$candela" render --validate --shading-path "$path" --scene "$helmet" \
+    timed "render-helmet-$path" "$candela" render $validate --shading-path "$path" --scene "$helmet" \
       --out "$out/helmet-$path.png" || status=1
   fi
 done
@@ -97,7 +107,7 @@ step "repeated frames"
 for path in forward visibility; do
   for msaa in 1 4; do
     name=frames-$path-msaa$msaa
-    timed "$name" "$candela" render --validate --shading-path "$path" --msaa "$msaa" --width 640 --height 360 \
+    timed "$name" "$candela" render $validate --shading-path "$path" --msaa "$msaa" --width 640 --height 360 \
       --frames 3 --out "$out/$name-%d.png" || status=1
     for i in 1 2; do
       "$candela" diff "$out/$name-0.png" "$out/$name-$i.png" > "$out/$name-0-$i.diff" 2>&1
@@ -132,7 +142,7 @@ def seconds(name):
     return float(text(name + ".seconds", "nan") or "nan")
 print("# GPU check\n")
 print("```\n" + text("machine.txt").strip() + "\n```\n")
-print("## Device (`candela info --validate`, exit %s)\n" % text("info.rc", "?").strip())
+print("## Device (`candela info`, exit %s)\n" % text("info.rc", "?").strip())
 print("```\n" + text("info.log").strip() + "\n```\n")
 
 def tests(name):
@@ -202,7 +212,7 @@ for path in ("forward", "visibility"):
                                                        p["maxChannelDifference"], 100 * p["fractionOverThreshold"]))
     print()
 
-print("## Renders (1280x720, `--validate`)\n")
+print("## Renders (1280x720)\n")
 for name in sorted(f[:-4] for f in os.listdir(out) if f.startswith("render-") and f.endswith(".log")):
     log = text(name + ".log").strip().splitlines()
     print("- %s: exit %s, %.1f s%s" % (name, text(name + ".rc", "?").strip(), seconds(name),

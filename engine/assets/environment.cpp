@@ -52,8 +52,10 @@ void checkEnvironmentSize(const std::string& source, uint64_t width, uint64_t he
 }
 
 Environment loadEnvironment(const std::filesystem::path& path, const EnvironmentLoadOptions& options) {
-    const std::string source = path.string();
-    const std::vector<uint8_t> bytes = readFile(path);
+    return decodeEnvironment(readFile(path), path.string(), options);
+}
+
+Environment decodeEnvironment(std::span<const uint8_t> bytes, const std::string& source, const EnvironmentLoadOptions& options) {
     Environment env;
     if (looksLikeHdr(bytes)) {
         env = decodeHdr(bytes, source, options);
@@ -61,7 +63,7 @@ Environment loadEnvironment(const std::filesystem::path& path, const Environment
         env = decodeExr(bytes, source, options);
     } else {
         // Neither magic: let the extension's decoder name the problem.
-        const std::string ext = lowerExtension(path);
+        const std::string ext = lowerExtension(source);
         if (ext == ".hdr" || ext == ".pic" || ext == ".rgbe") decodeHdr(bytes, source, options);
         if (ext == ".exr") decodeExr(bytes, source, options);
         throw UserError(source + ": unknown environment format (expected a Radiance .hdr or an OpenEXR .exr file)");

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <span>
 #include <vector>
 
 namespace candela::assets {
@@ -51,6 +52,10 @@ struct EnvironmentLoadOptions {
 // never reads out of bounds. NaN, Inf and negative texels are repaired by sanitizeEnvironment and
 // reported in `warnings`, as are header values that are deliberately ignored (EXPOSURE=).
 Environment loadEnvironment(const std::filesystem::path& path, const EnvironmentLoadOptions& options = {});
+// As loadEnvironment, for a file's contents in memory: `source` names it in messages (and its
+// extension the format named when the content matches neither). Borrows `bytes` for the call.
+Environment decodeEnvironment(std::span<const uint8_t> bytes, const std::string& source,
+                              const EnvironmentLoadOptions& options = {});
 
 // Replaces non-finite and negative channel values in `env.rgb` and counts the texels touched into
 // `env.replacedTexels` (added to any previous count); appends one warning line when any were found.

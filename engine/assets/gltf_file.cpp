@@ -178,6 +178,8 @@ std::vector<uint8_t> canonicalGlb(const LoadContext& ctx, std::string_view json,
 struct FsState {
     std::string base;     // absolute folder of the model, ending in '/'
     std::string problem;  // first URI that could not be used, as a one-line message
+    const UriReader* reader = nullptr;  // set: URIs are read by it, not from the file system
+    std::map<std::string, std::vector<uint8_t>> read;  // what the reader gave, by relative URI
     void record(std::string message) {
         if (problem.empty()) problem = std::move(message);
     }
@@ -204,6 +206,15 @@ bool fsFileExists(const std::string& absPath, void* user) {
         fs.record("URI '" + rel + "' " + *why);
         return false;
     }
+    if (fs.reader) {
+        std::optional<std::vector<uint8_t>> bytes = (*fs.reader)(rel);
+        if (!bytes) {
+            fs.record("cannot read '" + rel + "': the URI resolver has no such file");
+            return false;
+        }
+        fs.read[rel] = std::move(*bytes);
+        return true;
+    }
     std::error_code ec;
     const auto status = std::filesystem::status(absPath, ec);
     if (!std::filesystem::exists(status)) {
@@ -222,6 +233,21 @@ std::string fsExpandFilePath(const std::string& path, void*) { return path; }
 bool fsReadWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& absPath, void* user) {
     auto& fs = *static_cast<FsState*>(user);
     const std::string rel = absPath.size() > fs.base.size() ? absPath.substr(fs.base.size()) : absPath;
+    if (fs.reader) {
+        const auto it = fs.read.find(rel);
+        if (it == fs.read.end()) {
+            fs.record("cannot read '" + rel + "': the URI resolver has no such file");
+            return false;
+        }
+        if (it->second.size() >= std::numeric_limits<uint32_t>::max()) {
+            fs.record("cannot read '" + rel + "': larger than 4 GiB");
+            return false;
+        }
+        *out = std::move(it->second);
+        fs.read.erase(it);
+        if (out->empty()) fs.record("cannot read '" + rel + "': empty file");
+        return true;
+    }
     std::ifstream in(absPath, std::ios::binary);
     if (!in) {
         fs.record("cannot read '" + rel + "': " + std::strerror(errno));
@@ -314,7 +340,7 @@ std::string notGltfKind(std::span<const uint8_t> file) {
 }  // namespace
 
 ParsedFile parseGltf(const LoadContext& ctx, std::span<const uint8_t> file, const std::filesystem::path& path,
-                     uint32_t maxImageDimension) {
+                     uint32_t maxImageDimension, const UriReader& reader) {
     if (file.empty()) ctx.fail("empty file");
     if (file.size() >= std::numeric_limits<uint32_t>::max()) ctx.fail("file larger than 4 GiB");
     if (const std::string kind = notGltfKind(file); !kind.empty()) ctx.fail("not a glTF file: looks like " + kind);
@@ -344,6 +370,7 @@ ParsedFile parseGltf(const LoadContext& ctx, std::span<const uint8_t> file, cons
     std::vector<uint8_t> glb;
     if (binary) glb = canonicalGlb(ctx, json, chunks.bin);
     FsState fs;
+    if (reader) fs.reader = &reader;
     std::error_code ec;
     const std::filesystem::path folder = std::filesystem::absolute(path, ec).lexically_normal().parent_path();
     fs.base = folder.string();

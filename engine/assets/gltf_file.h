@@ -16,6 +16,7 @@
 #include "assets/gltf_context.h"
 #include "assets/gltf_draco.h"
 #include "assets/gltf_images.h"
+#include "assets/gltf_loader.h"
 
 #include <tiny_gltf.h>
 
@@ -38,9 +39,10 @@ struct ParsedFile {
 std::vector<uint8_t> readGltfFile(const LoadContext& ctx, const std::filesystem::path& path);
 
 // Parses `file` (JSON or GLB, told apart by content), the contents of a file at `path`: `path`'s
-// folder is where relative URIs are resolved. Throws UserError via ctx for anything malformed,
-// missing or escaping that folder. tinygltf's warnings go to ctx.warn. Borrows `file` for the call.
+// folder is where relative URIs are resolved, read by `reader` when it is set. Throws UserError via
+// ctx for anything malformed, missing or escaping that folder. tinygltf's warnings go to ctx.warn.
+// Borrows `file` for the call.
 ParsedFile parseGltf(const LoadContext& ctx, std::span<const uint8_t> file, const std::filesystem::path& path,
-                     uint32_t maxImageDimension);
+                     uint32_t maxImageDimension, const UriReader& reader = {});
 
 }  // namespace candela::assets::gltf

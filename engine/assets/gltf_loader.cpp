@@ -127,7 +127,7 @@ void checkAsset(const gltf::LoadContext& ctx, const tinygltf::Model& model) {
 
 void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, const std::filesystem::path& path,
               const LoadOptions& options, scene::Scene& scene) {
-    gltf::ParsedFile parsed = gltf::parseGltf(ctx, bytes, path, options.maxImageDimension);
+    gltf::ParsedFile parsed = gltf::parseGltf(ctx, bytes, path, options.maxImageDimension, options.uriReader);
     tinygltf::Model& model = parsed.model;
     checkAsset(ctx, model);
     scene.report.extensionsUsed = model.extensionsUsed;

@@ -6,10 +6,17 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <span>
+#include <string>
+#include <vector>
 
 namespace candela::assets {
+
+// Reads the file a relative URI names (after the loader's checks: no absolute path, no scheme, not
+// leaving the model's folder): its bytes, or nullopt when there is none.
+using UriReader = std::function<std::optional<std::vector<uint8_t>>(const std::string& uri)>;
 
 struct LoadOptions {
     // Images whose declared width or height exceeds this are rejected before decoding.
@@ -26,6 +33,8 @@ struct LoadOptions {
     // overdraw and fetch, with levels of detail). false keeps the file's triangle and vertex order
     // and builds no levels.
     bool prepareGeometry = true;
+    // Where external URIs are read from; unset: the files in the model's folder.
+    UriReader uriReader;
 };
 
 // Loads `path`. Throws candela::UserError with one line "PATH: problem" for anything malformed

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# tools/make-bundle.sh and tools/gpu-check.sh on lavapipe: the bundle holds every library its
-# programs link but glibc's (resolved from its lib/ alone), and the check, run from the unpacked
-# tarball in another folder on one golden case, one GPU test and 2 bench frames, writes a report
+# The GPU check's tarball (`cpack -G TGZ -D CANDELA_GPU_CHECK=ON`) and tools/gpu-check.sh on
+# lavapipe: the tarball holds every library its programs and the validation layer link but glibc's
+# (its programs find them by their run path, the layer by the loader's), and the check, run from
+# the unpacked tarball in another folder on one golden case, one GPU test and 2 bench frames, writes a report
 # whose every step ran and whose figures are lavapipe's own (the golden renders equal the approved
 # images within the goldens' tolerances; a still scene's repeated frames are identical).
 #   tests/cli/gpu_check_test.sh BUILD_DIR
@@ -12,21 +13,26 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAILED: $*" >&2; exit 1; }
 
-"$root/tools/make-bundle.sh" "$build" "$tmp/made" > /dev/null
+cpack --config "$build/CPackConfig.cmake" -G TGZ -D CANDELA_GPU_CHECK=ON -B "$tmp/made" > "$tmp/cpack.log" 2>&1 ||
+  { cat "$tmp/cpack.log" >&2; fail "cpack"; }
 mkdir "$tmp/elsewhere"
-tar -C "$tmp/elsewhere" -xzf "$tmp/made/candela-bundle.tar.gz"
-bundle=$tmp/elsewhere/candela-bundle
+tar -C "$tmp/elsewhere" -xzf "$tmp/made"/candela-*-gpu-check.tar.gz
+bundle=$(echo "$tmp/elsewhere"/candela-*)
 
-# Every library resolves inside the bundle, or is glibc's.
-glibc='^(libc|libm|libdl|libpthread|librt|libutil|libresolv|ld-linux-x86-64)\.so|linux-vdso'
-for elf in "$bundle/bin/candela" "$bundle/bin/candela_gpu_tests" "$bundle/lib/libVkLayer_khronos_validation.so"; do
-  LD_LIBRARY_PATH=$bundle/lib ldd "$elf" | while read -r name arrow path _; do
+# Every library resolves inside the tarball, or is glibc's: the programs' by their run path, the
+# layer's (loaded by the tarball's Vulkan loader) as the loader's own.
+glibc='^(libc|libm|libdl|libpthread|librt|libutil|libresolv|libmvec|ld-linux-x86-64)\.so|linux-vdso'
+check() {  # ELF [LD_LIBRARY_PATH]
+  env -u LD_LIBRARY_PATH ${2:+LD_LIBRARY_PATH=$2} ldd "$1" | while read -r name arrow path _; do
     [[ $name =~ $glibc ]] && continue
     [ "$arrow" = "=>" ] || continue
-    [[ $path == "$bundle/lib/"* ]] || fail "$(basename "$elf"): $name resolves to $path, not the bundle"
+    [[ $(realpath "$path") == "$bundle/lib/"* ]] || fail "$(basename "$1"): $name resolves to $path, not the tarball"
   done
-done
-grep -q '"library_path": "../../libVkLayer_khronos_validation.so"' \
+}
+check "$bundle/bin/candela"
+check "$bundle/bin/candela_gpu_tests"
+check "$bundle/lib/libVkLayer_khronos_validation.so" "$bundle/lib"
+grep -Eq '"library_path" *: *"../../libVkLayer_khronos_validation.so"' \
   "$bundle/lib/vulkan/explicit_layer.d/VkLayer_khronos_validation.json" || fail "layer manifest"
 ! grep -rq "$root" "$bundle/lib/vulkan" "$bundle/gpu-check.sh" || fail "a path of the source tree in the bundle"
 

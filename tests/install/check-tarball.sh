@@ -3,7 +3,7 @@
 # space), its executable finds every shared library it needs but glibc's in the tarball's lib/
 # through its run path, nothing in it holds the path of the source or build folder, and it renders
 # the default scene and a sample model (DamagedHelmet, when the shared assets are there) from an
-# empty folder.
+# empty folder; its gpu-check.sh runs the steps that need no test binary and writes its report.
 #   tests/install/check-tarball.sh PACKAGE_DIR BUILD_DIR SOURCE_DIR    (ctest: package.tarball)
 set -euo pipefail
 packages=$(cd "$1" && pwd)
@@ -46,4 +46,11 @@ if [ -f "$helmet" ]; then
 else
   echo "note: $helmet is absent; only the default scene rendered"
 fi
+
+# The GPU check runs from it too: without the test binary and the layer, what the executable can.
+"$top/gpu-check.sh" --out "$tmp/report" --bench-frames 2 2> "$tmp/steps" || { cat "$tmp/steps" >&2; fail "gpu-check.sh"; }
+for line in "validation: off (no validation layer in the tarball)" "- render-default-forward: exit 0" \
+            "- render-default-visibility: exit 0" "| built-in: sphere grid 10x10 |"; do
+  grep -qF -- "$line" "$tmp/report/report.md" || { cat "$tmp/report/report.md" >&2; fail "gpu-check's report lacks: $line"; }
+done
 echo "ok"

@@ -1,0 +1,251 @@
+// candela::Device (candela/device.h): a vk::Context and a Renderer; the public render options
+// turned into the renderer's settings; frames read back into the public pixel formats.
+
+#include "api/access.h"
+#include "candela/device.h"
+#include "core/cache_files.h"
+#include "options/device_profile.h"
+#include "pose/scene_pose.h"
+#include "scene/camera.h"
+#include "scene/material_variants.h"
+#include "shared/tonemap.h"
+#include "vk/check.h"
+
+#include <glm/gtc/packing.hpp>
+
+#include <cstring>
+
+namespace candela {
+namespace {
+
+options::Tonemap tonemapOf(Tonemap tonemap) {
+    switch (tonemap) {
+        case Tonemap::PbrNeutral: return options::Tonemap::PbrNeutral;
+        case Tonemap::Aces: return options::Tonemap::Aces;
+        case Tonemap::Agx: return options::Tonemap::Agx;
+        case Tonemap::Reinhard: return options::Tonemap::Reinhard;
+        case Tonemap::Linear: return options::Tonemap::Linear;
+    }
+    throw UserError("unknown tone mapping operator " + std::to_string(int(tonemap)));
+}
+
+options::ShadingPath shadingPathOf(ShadingPath path) {
+    switch (path) {
+        case ShadingPath::Auto: return options::ShadingPath::Auto;
+        case ShadingPath::Forward: return options::ShadingPath::Forward;
+        case ShadingPath::Visibility: return options::ShadingPath::Visibility;
+    }
+    throw UserError("unknown shading path " + std::to_string(int(path)));
+}
+
+vk::ContextDesc contextDescOf(const DeviceOptions& options) {
+    vk::ContextDesc desc{.validation = options.validation,
+                         .deviceSelector = options.device,
+                         .deviceMemoryBudget = uint64_t(options.memoryBudgetMib) << 20};
+    if (!options.profile.empty()) {
+        desc.profile = options::parseDeviceProfile(options.profile);
+        if (!desc.profile)
+            throw UserError("device profile '" + options.profile + "': choose from " + options::deviceProfileList());
+    }
+    desc.pipelineCacheFolder = options.pipelineCache == "off" ? std::filesystem::path()
+                               : options.pipelineCache.empty() ? userCacheFolder()
+                                                               : std::filesystem::path(options.pipelineCache);
+    return desc;
+}
+
+// `frame` in `format`, into `rows` rows of `rowBytes` bytes at `out`.
+void copyPixels(const CapturedFrame& frame, PixelFormat format, std::byte* out, size_t rowBytes) {
+    const size_t width = frame.width;
+    for (uint32_t y = 0; y < frame.height; ++y) {
+        std::byte* row = out + y * rowBytes;
+        switch (format) {
+            case PixelFormat::Rgba8Srgb: std::memcpy(row, frame.rgba8.data() + y * width * 4, width * 4); break;
+            case PixelFormat::Rgba32Float:
+                std::memcpy(row, frame.rgba32f.data() + y * width * 4, width * 4 * sizeof(float));
+                break;
+            case PixelFormat::Rgba16Float: {
+                // The GPU wrote half floats; the readback widened them: this narrows them back exactly.
+                const float* in = frame.rgba32f.data() + y * width * 4;
+                for (size_t i = 0; i < width * 4; ++i) {
+                    const uint16_t half = glm::packHalf1x16(in[i]);
+                    std::memcpy(row + i * 2, &half, 2);
+                }
+                break;
+            }
+        }
+    }
+}
+
+// Checks the cancel flag and asks the callback; throws CancelledError for either.
+void reportProgress(Device::Impl& device, const ProgressCallback& progress, const RenderProgress& where) {
+    if (device.cancelled.exchange(false)) throw CancelledError();
+    if (progress && !progress(where)) throw CancelledError();
+}
+
+}  // namespace
+
+RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& scene,
+                              const assets::Environment* environment) {
+    RenderSettings settings{.width = options.width, .height = options.height, .scene = &scene};
+    settings.floatOutput = options.format != PixelFormat::Rgba8Srgb;
+    settings.camera.gltfCamera = options.camera.gltfCamera;
+    if (options.camera.orbit) settings.camera.orbit = glm::vec3((*options.camera.orbit)[0], (*options.camera.orbit)[1], (*options.camera.orbit)[2]);
+    if (options.camera.target) settings.camera.target = glm::vec3((*options.camera.target)[0], (*options.camera.target)[1], (*options.camera.target)[2]);
+    settings.camera.fovYDegrees = options.camera.fovYDegrees;
+    settings.tonemap.op = tonemapOf(options.tonemap);
+    settings.tonemap.exposureEv = options.exposureEv;
+    settings.tonemap.dither = options.dither;
+    settings.msaa = options.msaa;
+    settings.shadingPath = shadingPathOf(options.shadingPath);
+    settings.environment = environment;
+    // With an environment the skybox is the background unless another one is asked for.
+    Background background = options.background;
+    constexpr float kGrey = 0x26 / 255.0f;  // #262626
+    if (background.kind == Background::Kind::Auto)
+        background = environment ? Background{Background::Kind::Environment, {}} : Background{Background::Kind::Color, {kGrey, kGrey, kGrey}};
+    settings.ibl.skybox = background.kind == Background::Kind::Environment;
+    if (background.kind == Background::Kind::Color)
+        settings.tonemap.background = shading::srgbDecode(glm::vec3(background.srgb[0], background.srgb[1], background.srgb[2]));
+    // The default key and fill lights stand in for an environment: with one, light-less scenes
+    // are lit by it alone.
+    if (environment) settings.defaultLights = false;
+    return settings;
+}
+
+namespace {
+
+// Starts the device `desc` describes; its start-up failures as the API's errors.
+std::unique_ptr<Device::Impl> startDevice(const vk::ContextDesc& desc, const RendererOptions& options = {}) {
+    std::unique_ptr<Device::Impl> impl;
+    translateErrors("", [&] {
+        try {
+            impl = std::make_unique<Device::Impl>(desc, options);
+        } catch (const UserError&) {
+            throw;
+        } catch (const vk::VulkanError&) {
+            throw;
+        } catch (const std::runtime_error& e) {
+            throw DeviceError(e.what());  // no suitable device, or its start-up failed
+        }
+    });
+    return impl;
+}
+
+}  // namespace
+
+Device Access::device(const vk::ContextDesc& desc, const RendererOptions& options) {
+    return Device(startDevice(desc, options));
+}
+
+Device::Device(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+Device::Device(const DeviceOptions& options) {
+    vk::ContextDesc desc;
+    translateErrors("", [&] { desc = contextDescOf(options); });
+    impl_ = startDevice(desc);
+}
+Device::Device(Device&&) noexcept = default;
+Device& Device::operator=(Device&&) noexcept = default;
+Device::~Device() = default;
+
+const std::string& Device::name() const { return impl_->context.report().name; }
+
+void Device::cancel() noexcept { impl_->cancelled = true; }
+
+void Device::release() {
+    translateErrors("", [&] { impl_->renderer.releaseScene(); });
+}
+
+uint32_t Device::validationMessages() const { return impl_->context.validationMessageCount(); }
+
+void Access::renderSequence(Device& device, const Scene& scene, const RenderOptions& options,
+                            const SequenceOptions& sequence, const FrameCallback& onFrame,
+                            const Environment* environment, const ProgressCallback& progress,
+                            const SettingsHook& hook) {
+    Device::Impl& impl = *device.impl_;
+    Scene::Impl& held = *scene.impl_;
+    translateErrors(held.scene.source, [&] {
+        impl.cancelled = false;
+        if (sequence.frames == 0) throw UserError("an image sequence of 0 frames");
+        if (!(sequence.fps > 0.0)) throw UserError("an image sequence at " + std::to_string(sequence.fps) + " frames per second");
+        const std::optional<uint32_t> variant =
+            options.variant.empty() ? std::nullopt : std::optional(scene::variantIndex(held.scene, options.variant));
+        if (variant != held.variant) {
+            impl.renderer.sceneReplaced();  // the draws' materials change: uploaded again
+            scene::selectVariant(held.scene, variant);
+            held.variant = variant;
+        }
+        RenderSettings settings =
+            renderSettings(options, held.scene, environment ? &environment->impl_->environment : nullptr);
+        pose::ScenePose pose(held.scene, pose::selectAnimations(held.scene, options.animations));
+        pose.evaluate(options.time);
+        settings.pose = &pose;
+
+        glm::vec3 orbit = settings.camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(held.scene), 0.0f));
+        const bool turntable = sequence.frames > 1 && sequence.turntableDegrees != 0.0f;
+        const auto turned = [&](uint32_t i) {
+            return orbit + glm::vec3(sequence.turntableDegrees * float(i) / float(sequence.frames), 0.0f, 0.0f);
+        };
+        if (turntable && !settings.camera.gltfCamera && orbit.z <= 0.0f) {
+            // One distance for the whole turn (framing from each azimuth would move the camera in
+            // and out): the largest any of its frames needs.
+            CameraSettings camera = settings.camera;
+            float radius = 0.0f;
+            const float aspect = float(settings.width) / float(settings.height);
+            for (uint32_t i = 0; i < sequence.frames; ++i) {
+                camera.orbit = turned(i);
+                radius = std::max(radius, Renderer::orbitCamera(held.scene, camera, aspect, &pose).radius);
+            }
+            orbit.z = radius;
+        }
+        // Frame i's pose and camera, and the front end's settings for it.
+        const auto setUpFrame = [&](uint32_t i) {
+            if (sequence.frames > 1) {
+                pose.evaluate(options.time + double(i) / sequence.fps);
+                if (turntable) settings.camera.orbit = turned(i);
+            }
+            if (hook) hook(settings);
+        };
+        setUpFrame(0);
+        reportProgress(impl, progress, {RenderProgress::Stage::Upload, 0, sequence.frames});
+        impl.renderer.validateSettings(settings);
+        impl.renderer.upload(settings);
+        Image image{options.width, options.height, options.format, {}};
+        const size_t rowBytes = size_t(options.width) * bytesPerPixel(options.format);
+        image.pixels.resize(rowBytes * options.height);
+        for (uint32_t i = 0; i < sequence.frames; ++i) {
+            if (i > 0) setUpFrame(i);
+            reportProgress(impl, progress, {RenderProgress::Stage::Frame, i, sequence.frames});
+            impl.lastFrame = impl.renderer.capture(settings);
+            copyPixels(impl.lastFrame, options.format, image.pixels.data(), rowBytes);
+            onFrame(i, image);
+        }
+    });
+}
+
+void Device::renderSequence(const Scene& scene, const RenderOptions& options, const SequenceOptions& sequence,
+                            const FrameCallback& onFrame, const Environment* environment,
+                            const ProgressCallback& progress) {
+    Access::renderSequence(*this, scene, options, sequence, onFrame, environment, progress, {});
+}
+
+Image Device::render(const Scene& scene, const RenderOptions& options, const Environment* environment,
+                     const ProgressCallback& progress) {
+    Image out;
+    renderSequence(scene, options, {}, [&](uint32_t, const Image& image) { out = image; }, environment, progress);
+    return out;
+}
+
+void Device::renderInto(void* pixels, size_t rowBytes, const Scene& scene, const RenderOptions& options,
+                        const Environment* environment, const ProgressCallback& progress) {
+    const size_t packed = size_t(options.width) * bytesPerPixel(options.format);
+    if (rowBytes < packed)
+        throw InputError("", "renderInto: rows of " + std::to_string(rowBytes) + " bytes hold fewer than the " +
+                                 std::to_string(options.width) + " pixels of a row (" + std::to_string(packed) + " bytes)");
+    renderSequence(scene, options, {}, [&](uint32_t, const Image& image) {
+        for (uint32_t y = 0; y < image.height; ++y)
+            std::memcpy(static_cast<std::byte*>(pixels) + y * rowBytes, image.pixels.data() + y * packed, packed);
+    }, environment, progress);
+}
+
+}  // namespace candela
