@@ -103,6 +103,8 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
     constexpr float kGrey = 0x26 / 255.0f;  // #262626
     if (background.kind == Background::Kind::Auto)
         background = environment ? Background{Background::Kind::Environment, {}} : Background{Background::Kind::Color, {kGrey, kGrey, kGrey}};
+    if (background.kind == Background::Kind::Environment && !environment)
+        throw UserError("Background::Kind::Environment: there is no environment to show; give one, or another background");
     settings.ibl.skybox = background.kind == Background::Kind::Environment;
     if (background.kind == Background::Kind::Color)
         settings.tonemap.background = shading::srgbDecode(glm::vec3(background.srgb[0], background.srgb[1], background.srgb[2]));

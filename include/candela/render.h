@@ -32,7 +32,7 @@ enum class ShadingPath { Auto, Forward, Visibility };
 struct Background {
     enum class Kind {
         Auto,         // the environment when there is one, else Color #262626
-        Environment,  // the environment (black without one)
+        Environment,  // the environment (without one: an InputError)
         Transparent,  // alpha 0
         Color,        // `srgb`
     } kind = Kind::Auto;

@@ -207,6 +207,9 @@ TEST(Api, BadInputIsAnInputErrorNamingItsFile) {
     options = small();
     options.camera.gltfCamera = 3;
     EXPECT_THROW(device.render(grid, options), InputError);
+    options = small();
+    options.background.kind = Background::Kind::Environment;  // and no environment given
+    EXPECT_THROW(device.render(grid, options), InputError);
     // The device is still good.
     EXPECT_EQ(device.render(grid, small()).pixels.size(), 64u * 48u * 4u);
     EXPECT_EQ(messages(device), 0u);
