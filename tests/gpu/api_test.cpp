@@ -20,7 +20,7 @@
 #include <map>
 #include <thread>
 
-namespace candela::test {
+namespace candela::test::api_test {
 namespace {
 
 using assets::test::Bytes;
@@ -293,4 +293,4 @@ TEST(Api, WriteImageRefusesAFormatTheFileCannotHold) {
 }
 
 }  // namespace
-}  // namespace candela::test
+}  // namespace candela::test::api_test

@@ -20,8 +20,9 @@ cmake -S "$source/examples/embed" -B "$tmp/embed" "${generator[@]}" -DCMAKE_PREF
   > "$tmp/configure.log" 2>&1 || { cat "$tmp/configure.log"; fail "configuring examples/embed against $prefix"; }
 cmake --build "$tmp/embed" > "$tmp/build.log" 2>&1 || { cat "$tmp/build.log"; fail "building examples/embed"; }
 # The example links the installed library, not the build tree's.
-ldd "$tmp/embed/embed_candela" | grep -q "libcandela.so.* => $prefix/lib/libcandela.so" ||
-  fail "embed_candela does not load $prefix/lib/libcandela.so: $(ldd "$tmp/embed/embed_candela" | grep candela)"
+loaded=$(ldd "$tmp/embed/embed_candela")  # not piped into grep -q, whose early exit fails ldd with pipefail
+grep -q "libcandela.so.* => $prefix/lib/libcandela.so" <<< "$loaded" ||
+  fail "embed_candela does not load $prefix/lib/libcandela.so: $(grep candela <<< "$loaded")"
 
 model=${CANDELA_SHARED_ASSETS:-$source/../shared/assets}/models/DamagedHelmet/glTF-Binary/DamagedHelmet.glb
 [ -f "$model" ] || { echo "skipped: $model is absent"; exit 77; }

@@ -30,7 +30,8 @@ man=$prefix/share/man/man1/candela.1
 if command -v groff >/dev/null; then
   warnings=$(groff -man -Tutf8 -ww -z "$man" 2>&1)
   [ -z "$warnings" ] || fail "groff warns on the manual page: $warnings"
-  groff -man -Tutf8 -P -cbou "$man" 2>/dev/null | grep -q -- "--shading-path auto|forward|visibility" || fail "the manual page has no --shading-path"
+  formatted=$(groff -man -Tutf8 -P -cbou "$man" 2>/dev/null)  # not piped into grep -q (SIGPIPE under pipefail)
+  grep -q -- "--shading-path auto|forward|visibility" <<< "$formatted" || fail "the manual page has no --shading-path"
 else
   echo "note: no groff; the manual page's formatting is not checked"
 fi
