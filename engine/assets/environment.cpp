@@ -2,6 +2,7 @@
 
 #include "assets/exr_reader.h"
 #include "assets/hdr_reader.h"
+#include "assets/image_file.h"
 #include "core/errors.h"
 
 #include <algorithm>
@@ -17,12 +18,6 @@ namespace candela::assets {
 namespace {
 
 constexpr float kHalfMax = 65504.0f;
-
-std::string lowerExtension(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
 
 std::vector<uint8_t> readFile(const std::filesystem::path& path) {
     const std::string name = path.string();

@@ -18,13 +18,14 @@
 #include <vector>
 
 namespace candela::assets {
-namespace {
 
 std::string lowerExtension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     return ext;
 }
+
+namespace {
 
 void checkSize(const std::filesystem::path& path, uint32_t width, uint32_t height, size_t have, size_t channels) {
     if (static_cast<size_t>(width) * height * channels != have)

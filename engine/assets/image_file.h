@@ -12,6 +12,9 @@ namespace candela::assets {
 
 enum class ImageFileFormat { Png, Exr, Pfm };
 
+// The extension of `path`, lower-case (".png"; "" for none).
+std::string lowerExtension(const std::filesystem::path& path);
+
 // The format implied by the path's extension (.png, .exr, .pfm; case-insensitive).
 // Throws UserError naming the file for any other extension.
 ImageFileFormat imageFileFormat(const std::filesystem::path& path);
