@@ -19,9 +19,7 @@ vk::ContextDesc contextDesc(const CommonOptions& common) {
             .deviceSelector = common.device,
             .deviceMemoryBudget = uint64_t(common.memoryBudgetMib) << 20,
             .profile = common.deviceProfile,
-            .pipelineCacheFolder = common.pipelineCache == "off" ? std::filesystem::path()
-                                   : common.pipelineCache.empty() ? userCacheFolder()
-                                                                  : std::filesystem::path(common.pipelineCache)};
+            .pipelineCacheFolder = pipelineCacheFolder(common.pipelineCache)};
 }
 
 Session::Session(const CommonOptions& common, const EnvironmentChoice& env) : desc_(app::contextDesc(common)) {

@@ -47,13 +47,11 @@ vk::ContextDesc contextDescOf(const DeviceOptions& options) {
         if (!desc.profile)
             throw UserError("device profile '" + options.profile + "': choose from " + options::deviceProfileList());
     }
-    desc.pipelineCacheFolder = options.pipelineCache == "off" ? std::filesystem::path()
-                               : options.pipelineCache.empty() ? userCacheFolder()
-                                                               : std::filesystem::path(options.pipelineCache);
+    desc.pipelineCacheFolder = pipelineCacheFolder(options.pipelineCache);
     return desc;
 }
 
-// `frame` in `format`, into `rows` rows of `rowBytes` bytes at `out`.
+// `frame` in `format`, into frame.height rows of `rowBytes` bytes at `out`.
 void copyPixels(const CapturedFrame& frame, PixelFormat format, std::byte* out, size_t rowBytes) {
     const size_t width = frame.width;
     for (uint32_t y = 0; y < frame.height; ++y) {
@@ -74,6 +72,15 @@ void copyPixels(const CapturedFrame& frame, PixelFormat format, std::byte* out, 
             }
         }
     }
+}
+
+// The bytes of one row of the image `options` ask for, without padding.
+size_t packedRowBytes(const RenderOptions& options) { return size_t(options.width) * bytesPerPixel(options.format); }
+
+// An image of the size and format `options` ask for, its pixels zero. Made once the renderer has
+// accepted the size (a size beyond the device's limit is an InputError, not an allocation).
+Image blankImage(const RenderOptions& options) {
+    return {options.width, options.height, options.format, std::vector<std::byte>(packedRowBytes(options) * options.height)};
 }
 
 // Checks the cancel flag and asks the callback; throws CancelledError for either.
@@ -160,10 +167,9 @@ void Device::release() {
 
 uint32_t Device::validationMessages() const { return impl_->context.validationMessageCount(); }
 
-void Access::renderSequence(Device& device, const Scene& scene, const RenderOptions& options,
-                            const SequenceOptions& sequence, const FrameCallback& onFrame,
-                            const Environment* environment, const ProgressCallback& progress,
-                            const SettingsHook& hook) {
+void Access::renderFrames(Device& device, const Scene& scene, const RenderOptions& options,
+                          const SequenceOptions& sequence, const CaptureSink& sink, const Environment* environment,
+                          const ProgressCallback& progress, const SettingsHook& hook) {
     Device::Impl& impl = *device.impl_;
     Scene::Impl& held = *scene.impl_;
     translateErrors(held.scene.source, [&] {
@@ -212,17 +218,25 @@ void Access::renderSequence(Device& device, const Scene& scene, const RenderOpti
         reportProgress(impl, progress, {RenderProgress::Stage::Upload, 0, sequence.frames});
         impl.renderer.validateSettings(settings);
         impl.renderer.upload(settings);
-        Image image{options.width, options.height, options.format, {}};
-        const size_t rowBytes = size_t(options.width) * bytesPerPixel(options.format);
-        image.pixels.resize(rowBytes * options.height);
         for (uint32_t i = 0; i < sequence.frames; ++i) {
             if (i > 0) setUpFrame(i);
             reportProgress(impl, progress, {RenderProgress::Stage::Frame, i, sequence.frames});
             impl.lastFrame = impl.renderer.capture(settings);
-            copyPixels(impl.lastFrame, options.format, image.pixels.data(), rowBytes);
-            onFrame(i, image);
+            sink(i, impl.lastFrame);
         }
     });
+}
+
+void Access::renderSequence(Device& device, const Scene& scene, const RenderOptions& options,
+                            const SequenceOptions& sequence, const FrameCallback& onFrame,
+                            const Environment* environment, const ProgressCallback& progress,
+                            const SettingsHook& hook) {
+    Image image;
+    renderFrames(device, scene, options, sequence, [&](uint32_t i, const CapturedFrame& frame) {
+        if (i == 0) image = blankImage(options);
+        copyPixels(frame, options.format, image.pixels.data(), packedRowBytes(options));
+        onFrame(i, image);
+    }, environment, progress, hook);
 }
 
 void Device::renderSequence(const Scene& scene, const RenderOptions& options, const SequenceOptions& sequence,
@@ -233,21 +247,23 @@ void Device::renderSequence(const Scene& scene, const RenderOptions& options, co
 
 Image Device::render(const Scene& scene, const RenderOptions& options, const Environment* environment,
                      const ProgressCallback& progress) {
-    Image out;
-    renderSequence(scene, options, {}, [&](uint32_t, const Image& image) { out = image; }, environment, progress);
-    return out;
+    Image image;
+    Access::renderFrames(*this, scene, options, {}, [&](uint32_t, const CapturedFrame& frame) {
+        image = blankImage(options);
+        copyPixels(frame, options.format, image.pixels.data(), packedRowBytes(options));
+    }, environment, progress, {});
+    return image;
 }
 
 void Device::renderInto(void* pixels, size_t rowBytes, const Scene& scene, const RenderOptions& options,
                         const Environment* environment, const ProgressCallback& progress) {
-    const size_t packed = size_t(options.width) * bytesPerPixel(options.format);
+    const size_t packed = packedRowBytes(options);
     if (rowBytes < packed)
         throw InputError("", "renderInto: rows of " + std::to_string(rowBytes) + " bytes hold fewer than the " +
                                  std::to_string(options.width) + " pixels of a row (" + std::to_string(packed) + " bytes)");
-    renderSequence(scene, options, {}, [&](uint32_t, const Image& image) {
-        for (uint32_t y = 0; y < image.height; ++y)
-            std::memcpy(static_cast<std::byte*>(pixels) + y * rowBytes, image.pixels.data() + y * packed, packed);
-    }, environment, progress);
+    Access::renderFrames(*this, scene, options, {}, [&](uint32_t, const CapturedFrame& frame) {
+        copyPixels(frame, options.format, static_cast<std::byte*>(pixels), rowBytes);
+    }, environment, progress, {});
 }
 
 }  // namespace candela

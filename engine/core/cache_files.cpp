@@ -49,6 +49,11 @@ fs::path userCacheFolder(const char* xdgCacheHome, const char* home) {
 
 fs::path userCacheFolder() { return userCacheFolder(std::getenv("XDG_CACHE_HOME"), std::getenv("HOME")); }
 
+fs::path pipelineCacheFolder(const std::string& choice) {
+    if (choice == "off") return {};
+    return choice.empty() ? userCacheFolder() : fs::path(choice);
+}
+
 std::string hex16(uint64_t v) {
     std::string s(16, '0');
     for (int i = 15; i >= 0; --i, v >>= 4) s[size_t(i)] = "0123456789abcdef"[v & 0xf];

@@ -20,6 +20,9 @@ namespace candela {
 std::filesystem::path userCacheFolder();
 // The same from given values of XDG_CACHE_HOME and HOME (null: unset). Pure.
 std::filesystem::path userCacheFolder(const char* xdgCacheHome, const char* home);
+// The pipeline cache's folder a choice names (--pipeline-cache, DeviceOptions::pipelineCache):
+// "off" none (an empty path), "" the user's cache folder, anything else that folder.
+std::filesystem::path pipelineCacheFolder(const std::string& choice);
 
 inline constexpr uint64_t kFnv1a64Basis = 0xcbf29ce484222325ull;
 inline constexpr uint64_t kFnv1a64Prime = 0x100000001b3ull;

@@ -30,6 +30,12 @@ TEST(UserCacheFolder, FollowsTheXdgBaseDirectorySpecification) {
     EXPECT_EQ(userCacheFolder("/xdg", nullptr), fs::path("/xdg/candela"));
 }
 
+TEST(PipelineCacheFolder, OffIsNoneEmptyIsTheUsersAnythingElseThatFolder) {
+    EXPECT_TRUE(pipelineCacheFolder("off").empty());
+    EXPECT_EQ(pipelineCacheFolder(""), userCacheFolder());
+    EXPECT_EQ(pipelineCacheFolder("some/folder"), fs::path("some/folder"));
+}
+
 TEST(AtomicWrite, WritesReplacesAndLeavesNoTemporary) {
     test::TempDir dir("candela_atomic");
     const fs::path path = dir / "sub" / "file.bin";
