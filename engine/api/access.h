@@ -56,8 +56,9 @@ struct Access {
     static Scene::Impl& impl(const Scene& scene) { return *scene.impl_; }
     static const assets::Environment& impl(const Environment& environment) { return environment.impl_->environment; }
     // Device::renderSequence's frames, each handed to `sink` as the renderer captured it (valid
-    // during the call; also kept in Impl::lastFrame), with `hook` applied to each frame's settings.
-    using CaptureSink = std::function<void(uint32_t index, const CapturedFrame& frame)>;
+    // during the call; also kept in Impl::lastFrame) with its camera, with `hook` applied to each
+    // frame's settings.
+    using CaptureSink = std::function<void(uint32_t index, const CapturedFrame& frame, const CameraInfo& camera)>;
     static void renderFrames(Device& device, const Scene& scene, const RenderOptions& options,
                              const SequenceOptions& sequence, const CaptureSink& sink, const Environment* environment,
                              const ProgressCallback& progress, const SettingsHook& hook);

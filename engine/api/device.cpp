@@ -11,8 +11,10 @@
 #include "shared/tonemap.h"
 #include "vk/check.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
+#include <cmath>
 #include <cstring>
 
 namespace candela {
@@ -89,16 +91,98 @@ void reportProgress(Device::Impl& device, const ProgressCallback& progress, cons
     if (progress && !progress(where)) throw CancelledError();
 }
 
+glm::vec3 vec3Of(const std::array<float, 3>& v) { return {v[0], v[1], v[2]}; }
+
+// The renderer's camera settings for `options` (intrinsics as fractions of the image).
+CameraSettings cameraSettings(const RenderOptions& options) {
+    const Camera& camera = options.camera;
+    CameraSettings out;
+    out.gltfCamera = camera.gltfCamera;
+    if (camera.orbit) out.orbit = vec3Of(*camera.orbit);
+    if (camera.target) out.target = vec3Of(*camera.target);
+    out.fovYDegrees = camera.fovYDegrees;
+    if (camera.cameraToWorld) {
+        glm::mat4 m;
+        std::memcpy(&m[0][0], camera.cameraToWorld->data(), sizeof(m));
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                if (!std::isfinite(m[c][r])) throw UserError("Camera::cameraToWorld: a value is not finite");
+        if (m[0][3] != 0.0f || m[1][3] != 0.0f || m[2][3] != 0.0f || m[3][3] != 1.0f)
+            throw UserError("Camera::cameraToWorld: the last row is not 0 0 0 1");
+        if (std::abs(glm::determinant(glm::mat3(m))) < 1e-12f) throw UserError("Camera::cameraToWorld: the matrix is singular");
+        out.cameraToWorld = m;
+    }
+    if (camera.intrinsics) {
+        const auto& k = *camera.intrinsics;
+        for (float value : k)
+            if (!std::isfinite(value)) throw UserError("Camera::intrinsics: a value is not finite");
+        if (!(k[0] > 0.0f && k[1] > 0.0f)) throw UserError("Camera::intrinsics: the focal lengths fx and fy must be positive");
+        const float width = float(std::max(options.width, 1u)), height = float(std::max(options.height, 1u));
+        out.intrinsics = scene::Intrinsics{.fx = k[0] / width, .fy = k[1] / height, .cx = k[2] / width, .cy = k[3] / height};
+    }
+    return out;
+}
+
+// The camera of `view` for an image of width × height, as the API reports it.
+CameraInfo cameraInfo(const scene::ViewSetup& view, uint32_t width, uint32_t height) {
+    CameraInfo info{.width = width, .height = height};
+    const glm::mat4 cameraToWorld = glm::inverse(view.view);
+    std::memcpy(info.cameraToWorld.data(), &cameraToWorld[0][0], sizeof(cameraToWorld));
+    std::memcpy(info.projection.data(), &view.projection[0][0], sizeof(view.projection));
+    const glm::mat4& p = view.projection;
+    info.orthographic = p[2][3] == 0.0f;  // w does not depend on depth
+    if (info.orthographic) {
+        info.xmag = 1.0f / p[0][0];
+        info.ymag = -1.0f / p[1][1];
+        info.zfar = p[3][2] / p[2][2];
+        info.znear = info.zfar - 1.0f / p[2][2];
+        return info;
+    }
+    const scene::Intrinsics k = scene::intrinsicsOf(p);
+    info.intrinsics = {k.fx * float(width), k.fy * float(height), k.cx * float(width), k.cy * float(height)};
+    info.fovYDegrees = glm::degrees(2.0f * std::atan(0.5f / k.fy));
+    info.znear = view.znear;
+    if (p[2][2] != 0.0f) info.zfar = p[3][2] / p[2][2];
+    return info;
+}
+
+// The orbit (θ°, φ°, r) of frame 0 of a turntable that turns `sequence.turntableDegrees` over its
+// frames, r fixed at the largest distance any frame's framing needs (framing from each azimuth would
+// move the camera in and out); nullopt when the sequence is no turntable of the orbit camera.
+std::optional<glm::vec3> turntableOrbit(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                        const pose::ScenePose& pose, const SequenceOptions& sequence) {
+    if (sequence.frames <= 1 || sequence.turntableDegrees == 0.0f || camera.gltfCamera || camera.cameraToWorld)
+        return std::nullopt;
+    glm::vec3 orbit = camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f));
+    if (orbit.z <= 0.0f) {
+        CameraSettings turned = camera;
+        float radius = 0.0f;
+        for (uint32_t i = 0; i < sequence.frames; ++i) {
+            turned.orbit = orbit + glm::vec3(sequence.turntableDegrees * float(i) / float(sequence.frames), 0.0f, 0.0f);
+            radius = std::max(radius, Renderer::orbitCamera(scene, turned, aspect, &pose).radius);
+        }
+        orbit.z = radius;
+    }
+    return orbit;
+}
+
+// Frame i's orbit of the turntable that starts at `orbit`.
+glm::vec3 turnedOrbit(const glm::vec3& orbit, const SequenceOptions& sequence, uint32_t i) {
+    return orbit + glm::vec3(sequence.turntableDegrees * float(i) / float(sequence.frames), 0.0f, 0.0f);
+}
+
+void checkSequence(const SequenceOptions& sequence) {
+    if (sequence.frames == 0) throw UserError("an image sequence of 0 frames");
+    if (!(sequence.fps > 0.0)) throw UserError("an image sequence at " + std::to_string(sequence.fps) + " frames per second");
+}
+
 }  // namespace
 
 RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& scene,
                               const assets::Environment* environment) {
     RenderSettings settings{.width = options.width, .height = options.height, .scene = &scene};
     settings.floatOutput = options.format != PixelFormat::Rgba8Srgb;
-    settings.camera.gltfCamera = options.camera.gltfCamera;
-    if (options.camera.orbit) settings.camera.orbit = glm::vec3((*options.camera.orbit)[0], (*options.camera.orbit)[1], (*options.camera.orbit)[2]);
-    if (options.camera.target) settings.camera.target = glm::vec3((*options.camera.target)[0], (*options.camera.target)[1], (*options.camera.target)[2]);
-    settings.camera.fovYDegrees = options.camera.fovYDegrees;
+    settings.camera = cameraSettings(options);
     settings.tonemap.op = tonemapOf(options.tonemap);
     settings.tonemap.exposureEv = options.exposureEv;
     settings.tonemap.dither = options.dither;
@@ -174,8 +258,7 @@ void Access::renderFrames(Device& device, const Scene& scene, const RenderOption
     Scene::Impl& held = *scene.impl_;
     translateErrors(held.scene.source, [&] {
         impl.cancelled = false;
-        if (sequence.frames == 0) throw UserError("an image sequence of 0 frames");
-        if (!(sequence.fps > 0.0)) throw UserError("an image sequence at " + std::to_string(sequence.fps) + " frames per second");
+        checkSequence(sequence);
         const std::optional<uint32_t> variant =
             options.variant.empty() ? std::nullopt : std::optional(scene::variantIndex(held.scene, options.variant));
         if (variant != held.variant) {
@@ -189,28 +272,13 @@ void Access::renderFrames(Device& device, const Scene& scene, const RenderOption
         pose.evaluate(options.time);
         settings.pose = &pose;
 
-        glm::vec3 orbit = settings.camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(held.scene), 0.0f));
-        const bool turntable = sequence.frames > 1 && sequence.turntableDegrees != 0.0f;
-        const auto turned = [&](uint32_t i) {
-            return orbit + glm::vec3(sequence.turntableDegrees * float(i) / float(sequence.frames), 0.0f, 0.0f);
-        };
-        if (turntable && !settings.camera.gltfCamera && orbit.z <= 0.0f) {
-            // One distance for the whole turn (framing from each azimuth would move the camera in
-            // and out): the largest any of its frames needs.
-            CameraSettings camera = settings.camera;
-            float radius = 0.0f;
-            const float aspect = float(settings.width) / float(settings.height);
-            for (uint32_t i = 0; i < sequence.frames; ++i) {
-                camera.orbit = turned(i);
-                radius = std::max(radius, Renderer::orbitCamera(held.scene, camera, aspect, &pose).radius);
-            }
-            orbit.z = radius;
-        }
+        const float aspect = float(settings.width) / float(settings.height);
+        const std::optional<glm::vec3> turntable = turntableOrbit(held.scene, settings.camera, aspect, pose, sequence);
         // Frame i's pose and camera, and the front end's settings for it.
         const auto setUpFrame = [&](uint32_t i) {
             if (sequence.frames > 1) {
                 pose.evaluate(options.time + double(i) / sequence.fps);
-                if (turntable) settings.camera.orbit = turned(i);
+                if (turntable) settings.camera.orbit = turnedOrbit(*turntable, sequence, i);
             }
             if (hook) hook(settings);
         };
@@ -221,10 +289,48 @@ void Access::renderFrames(Device& device, const Scene& scene, const RenderOption
         for (uint32_t i = 0; i < sequence.frames; ++i) {
             if (i > 0) setUpFrame(i);
             reportProgress(impl, progress, {RenderProgress::Stage::Frame, i, sequence.frames});
+            const CameraInfo camera = cameraInfo(Renderer::resolveView(held.scene, settings.camera, aspect, settings.pose),
+                                                 settings.width, settings.height);
             impl.lastFrame = impl.renderer.capture(settings);
-            sink(i, impl.lastFrame);
+            sink(i, impl.lastFrame, camera);
         }
     });
+}
+
+RenderOptions sequenceFrame(const Scene& scene, const RenderOptions& options, const SequenceOptions& sequence,
+                            uint32_t index) {
+    const scene::Scene& held = Access::impl(scene).scene;
+    RenderOptions out = options;
+    translateErrors(held.source, [&] {
+        checkSequence(sequence);
+        if (index >= sequence.frames)
+            throw UserError("frame " + std::to_string(index) + " of a sequence of " + std::to_string(sequence.frames));
+        if (options.width == 0 || options.height == 0) throw UserError("an image of " + std::to_string(options.width) + "x" + std::to_string(options.height) + " pixels");
+        pose::ScenePose pose(held, pose::selectAnimations(held, options.animations));
+        pose.evaluate(options.time);
+        const float aspect = float(options.width) / float(options.height);
+        out.time = options.time + double(index) / sequence.fps;
+        if (const auto turntable = turntableOrbit(held, cameraSettings(options), aspect, pose, sequence)) {
+            const glm::vec3 orbit = turnedOrbit(*turntable, sequence, index);
+            out.camera.orbit = std::array<float, 3>{orbit.x, orbit.y, orbit.z};
+        }
+    });
+    return out;
+}
+
+Camera lookAt(const std::array<float, 3>& eye, const std::array<float, 3>& target, const std::array<float, 3>& up) {
+    Camera camera;
+    translateErrors("", [&] {
+        const glm::vec3 from = vec3Of(eye), to = vec3Of(target), upward = vec3Of(up);
+        const float distance = glm::length(to - from);
+        if (!std::isfinite(distance) || !(distance > 0.0f)) throw UserError("lookAt: the eye and the target are one point");
+        if (glm::length(glm::cross((to - from) / distance, upward)) < 1e-6f * glm::length(upward) || glm::length(upward) == 0.0f)
+            throw UserError("lookAt: the up vector is parallel to the line of sight");
+        const glm::mat4 cameraToWorld = glm::inverse(glm::lookAt(from, to, upward));
+        camera.cameraToWorld.emplace();
+        std::memcpy(camera.cameraToWorld->data(), &cameraToWorld[0][0], sizeof(cameraToWorld));
+    });
+    return camera;
 }
 
 void Access::renderSequence(Device& device, const Scene& scene, const RenderOptions& options,
@@ -232,9 +338,10 @@ void Access::renderSequence(Device& device, const Scene& scene, const RenderOpti
                             const Environment* environment, const ProgressCallback& progress,
                             const SettingsHook& hook) {
     Image image;
-    renderFrames(device, scene, options, sequence, [&](uint32_t i, const CapturedFrame& frame) {
+    renderFrames(device, scene, options, sequence, [&](uint32_t i, const CapturedFrame& frame, const CameraInfo& camera) {
         if (i == 0) image = blankImage(options);
         copyPixels(frame, options.format, image.pixels.data(), packedRowBytes(options));
+        image.camera = camera;
         onFrame(i, image);
     }, environment, progress, hook);
 }
@@ -248,22 +355,26 @@ void Device::renderSequence(const Scene& scene, const RenderOptions& options, co
 Image Device::render(const Scene& scene, const RenderOptions& options, const Environment* environment,
                      const ProgressCallback& progress) {
     Image image;
-    Access::renderFrames(*this, scene, options, {}, [&](uint32_t, const CapturedFrame& frame) {
+    Access::renderFrames(*this, scene, options, {}, [&](uint32_t, const CapturedFrame& frame, const CameraInfo& camera) {
         image = blankImage(options);
         copyPixels(frame, options.format, image.pixels.data(), packedRowBytes(options));
+        image.camera = camera;
     }, environment, progress, {});
     return image;
 }
 
-void Device::renderInto(void* pixels, size_t rowBytes, const Scene& scene, const RenderOptions& options,
-                        const Environment* environment, const ProgressCallback& progress) {
+CameraInfo Device::renderInto(void* pixels, size_t rowBytes, const Scene& scene, const RenderOptions& options,
+                              const Environment* environment, const ProgressCallback& progress) {
     const size_t packed = packedRowBytes(options);
     if (rowBytes < packed)
         throw InputError("", "renderInto: rows of " + std::to_string(rowBytes) + " bytes hold fewer than the " +
                                  std::to_string(options.width) + " pixels of a row (" + std::to_string(packed) + " bytes)");
-    Access::renderFrames(*this, scene, options, {}, [&](uint32_t, const CapturedFrame& frame) {
+    CameraInfo info;
+    Access::renderFrames(*this, scene, options, {}, [&](uint32_t, const CapturedFrame& frame, const CameraInfo& camera) {
         copyPixels(frame, options.format, static_cast<std::byte*>(pixels), rowBytes);
+        info = camera;
     }, environment, progress, {});
+    return info;
 }
 
 }  // namespace candela

@@ -371,6 +371,7 @@ scene::OrbitCamera FrameBuilder::orbitCamera(const scene::Scene& scene, const Ca
 std::string FrameBuilder::cameraFlags(const scene::Scene& scene, const CameraSettings& camera, float aspect,
                                       const pose::ScenePose* pose) {
     if (camera.gltfCamera && !camera.orbitCamera) return "--camera " + std::to_string(*camera.gltfCamera);
+    if (camera.cameraToWorld || camera.intrinsics) return "a placed camera or intrinsics (no flags give them)";
     return scene::orbitCameraFlags(orbitCamera(scene, camera, aspect, pose));
 }
 
@@ -389,9 +390,18 @@ scene::ViewSetup FrameBuilder::resolveView(const scene::Scene& scene, const Came
         if (*camera.gltfCamera >= scene.cameras.size())
             throw UserError("--camera " + std::to_string(*camera.gltfCamera) + ": the scene has " +
                             std::to_string(scene.cameras.size()) + " cameras");
+        if (camera.intrinsics) throw UserError("intrinsics apply to the orbit or a placed camera, not to a glTF camera");
         return scene::cameraView((pose ? pose->cameras() : scene.cameras)[*camera.gltfCamera], aspect);
     }
-    return orbitCamera(scene, camera, aspect, pose).view(aspect);
+    scene::ViewSetup view = camera.cameraToWorld
+                                ? scene::placedView(*camera.cameraToWorld, glm::radians(camera.fovYDegrees), aspect,
+                                                    pose ? pose->animationBounds() : scene.bounds)
+                                : orbitCamera(scene, camera, aspect, pose).view(aspect);
+    if (camera.intrinsics) {
+        view.projection = scene::perspectiveReverseZ(*camera.intrinsics, view.znear);
+        view.viewProjection = view.projection * view.view;
+    }
+    return view;
 }
 
 }  // namespace candela

@@ -30,6 +30,12 @@ struct CameraSettings {
     std::optional<glm::vec3> orbit;         // --camera-orbit θ°,φ°,r (r ≤ 0: frame the bounds)
     std::optional<glm::vec3> target;        // --target X,Y,Z
     float fovYDegrees = 45.0f;              // --fov
+    // A camera placed by its camera-to-world matrix (the API's look-at and placed cameras):
+    // overrides orbit and target (scene::placedView).
+    std::optional<glm::mat4> cameraToWorld;
+    // Pinhole intrinsics (fractions of the image) of the orbit or placed camera: override
+    // fovYDegrees. Not with a glTF camera.
+    std::optional<scene::Intrinsics> intrinsics;
     // An interactive camera (the viewer's), used as is; overrides the three above.
     std::optional<scene::OrbitCamera> orbitCamera;
     // Moves the image centre right by this many NDC units (off-axis projection; negative: left):

@@ -41,6 +41,25 @@ glm::mat4 orthographicReverseZ(float xmag, float ymag, float znear, float zfar) 
     return m;
 }
 
+glm::mat4 perspectiveReverseZ(const Intrinsics& k, float znear) {
+    // NDC x = 2u − 1 for u in image widths: x_clip = 2fx·x + (2cx − 1)·(−z); y likewise, v down.
+    glm::mat4 m(0.0f);
+    m[0][0] = 2.0f * k.fx;
+    m[1][1] = -2.0f * k.fy;
+    m[2][0] = 1.0f - 2.0f * k.cx;
+    m[2][1] = 1.0f - 2.0f * k.cy;
+    m[2][3] = -1.0f;
+    m[3][2] = znear;
+    return m;
+}
+
+Intrinsics intrinsicsOf(const glm::mat4& projection) {
+    return {.fx = 0.5f * projection[0][0],
+            .fy = -0.5f * projection[1][1],
+            .cx = 0.5f * (1.0f - projection[2][0]),
+            .cy = 0.5f * (1.0f - projection[2][1])};
+}
+
 glm::vec3 OrbitCamera::eye() const {
     const float theta = glm::radians(thetaDegrees), phi = glm::radians(phiDegrees);
     return target + radius * glm::vec3(std::sin(phi) * std::sin(theta), std::cos(phi), std::sin(phi) * std::cos(theta));
@@ -126,6 +145,20 @@ ViewSetup cameraView(const Camera& camera, float viewportAspect) {
                                             : perspectiveReverseZ(camera.yfov, aspect, camera.znear);
     else
         out.projection = orthographicReverseZ(camera.xmag, camera.ymag, camera.znear, camera.zfar > 0.0f ? camera.zfar : 1e4f);
+    out.viewProjection = out.projection * out.view;
+    return out;
+}
+
+ViewSetup placedView(const glm::mat4& cameraToWorld, float fovY, float aspect, const Aabb& bounds) {
+    ViewSetup out;
+    out.eye = glm::vec3(cameraToWorld[3]);
+    out.view = glm::inverse(cameraToWorld);
+    out.znear = 0.01f;
+    if (bounds.valid()) {
+        const float diagonal = glm::length(bounds.max - bounds.min);
+        out.znear = std::max(1e-3f * glm::length(out.eye - 0.5f * (bounds.min + bounds.max)), std::max(1e-4f * diagonal, 1e-6f));
+    }
+    out.projection = perspectiveReverseZ(fovY, aspect, out.znear);
     out.viewProjection = out.projection * out.view;
     return out;
 }

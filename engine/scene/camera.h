@@ -34,6 +34,19 @@ glm::mat4 perspectiveReverseZ(float fovY, float aspect, float znear, float zfar)
 // Orthographic, reverse-Z (depth 1 at znear, 0 at zfar). xmag, ymag: half extents.
 glm::mat4 orthographicReverseZ(float xmag, float ymag, float znear, float zfar);
 
+// A pinhole camera's intrinsics as fractions of the image: focal lengths fx, cx in widths and fy,
+// cy in heights. In pixels (multiplied by width, height) they are OpenCV's K = [fx 0 cx; 0 fy cy;
+// 0 0 1] for an image whose top-left corner is (0, 0), v down, pixel (i, j) centred at (i + ½, j + ½):
+// a point at (x, y, z) in the camera's glTF axes (looking down −Z, +Y up) lands at
+// u = fx·x/(−z) + cx, v = fy·(−y)/(−z) + cy.
+struct Intrinsics {
+    float fx = 0.0f, fy = 0.0f, cx = 0.5f, cy = 0.5f;
+};
+// Perspective, reverse-Z, infinite far plane, with `k`'s focal lengths and principal point.
+glm::mat4 perspectiveReverseZ(const Intrinsics& k, float znear);
+// The intrinsics of a perspective `projection` (one of the above; the inverse of the line above).
+Intrinsics intrinsicsOf(const glm::mat4& projection);
+
 struct OrbitCamera {
     glm::vec3 target{0.0f};
     float thetaDegrees = 0.0f;   // azimuth about +Y; 0 = on +Z
@@ -67,5 +80,11 @@ std::string orbitCameraFlags(const OrbitCamera& camera);
 
 // The view of a glTF camera; the viewport's aspect is used when the camera has none.
 ViewSetup cameraView(const Camera& camera, float viewportAspect);
+
+// The view of a camera placed by its camera-to-world matrix (rotation and translation; glTF's axes)
+// with a vertical field of view (radians) at `aspect`; its near plane 1/1000 of the distance from
+// the eye to the centre of `bounds` (at least 1e-4 of the box's diagonal; 0.01 for invalid bounds),
+// as the orbit camera's is 1/1000 of its distance to its target.
+ViewSetup placedView(const glm::mat4& cameraToWorld, float fovY, float aspect, const Aabb& bounds);
 
 }  // namespace candela::scene

@@ -63,9 +63,9 @@ public:
     Image render(const Scene& scene, const RenderOptions& options, const Environment* environment = nullptr,
                  const ProgressCallback& progress = {});
     // As render(), into `pixels`: options.height rows of `rowBytes` bytes each (at least
-    // options.width × bytesPerPixel(options.format)), top row first. Precondition: `pixels` holds
-    // them all.
-    void renderInto(void* pixels, std::size_t rowBytes, const Scene& scene, const RenderOptions& options,
+    // options.width × bytesPerPixel(options.format)), top row first; returns the camera. Precondition:
+    // `pixels` holds them all.
+    CameraInfo renderInto(void* pixels, std::size_t rowBytes, const Scene& scene, const RenderOptions& options,
                     const Environment* environment = nullptr, const ProgressCallback& progress = {});
     // Renders `sequence.frames` images, handing each to `onFrame` as it is read back.
     void renderSequence(const Scene& scene, const RenderOptions& options, const SequenceOptions& sequence,
@@ -87,5 +87,12 @@ private:
     std::unique_ptr<Impl> impl_;
     friend struct Access;
 };
+
+// The options of frame `index` of `sequence` (index < sequence.frames): RenderOptions::time
+// advanced by index / fps and, for a turntable, the orbit camera turned, at the one distance that
+// frames every frame. Device::renderSequence renders exactly these; with them a caller renders the
+// frames one at a time. Throws InputError for a sequence of 0 frames, fps ≤ 0 or an index beyond it.
+CANDELA_API RenderOptions sequenceFrame(const Scene& scene, const RenderOptions& options,
+                                        const SequenceOptions& sequence, uint32_t index);
 
 }  // namespace candela

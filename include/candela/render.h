@@ -14,14 +14,26 @@
 
 namespace candela {
 
-// The camera: a glTF camera of the scene, or the orbit camera, which frames the scene's bounds
-// unless a distance is given.
+// The camera: a glTF camera of the scene; a camera placed by its camera-to-world matrix; or the
+// orbit camera, which frames the scene's bounds unless a distance is given.
 struct Camera {
     std::optional<uint32_t> gltfCamera;             // the scene's camera of this index
-    std::optional<std::array<float, 3>> orbit;      // azimuth°, elevation°, distance (≤ 0: frame the bounds)
+    std::optional<std::array<float, 3>> orbit;      // azimuth°, polar angle° from +Y, distance (≤ 0: frame the bounds)
     std::optional<std::array<float, 3>> target;     // the point looked at [the bounds' centre]
-    float fovYDegrees = 45.0f;                      // vertical field of view of the orbit camera
+    float fovYDegrees = 45.0f;                      // vertical field of view of the orbit or placed camera
+    // Camera to world, column-major, in glTF's axes (the camera looks down its −Z, +Y up): overrides
+    // orbit and target. lookAt() makes one. Its near plane is 1/1000 of its distance to the scene's centre.
+    std::optional<std::array<float, 16>> cameraToWorld;
+    // Pinhole intrinsics fx, fy, cx, cy in pixels of the rendered image (CameraInfo::intrinsics
+    // says the convention): override fovYDegrees. Not with gltfCamera. With the orbit camera the
+    // distance framing chooses does not change (as with fovYDegrees).
+    std::optional<std::array<float, 4>> intrinsics;
 };
+
+// A camera at `eye` looking at `target`, `up` pointing up in the image (up must not be parallel to
+// the line of sight). Throws InputError when eye and target coincide or up is parallel.
+CANDELA_API Camera lookAt(const std::array<float, 3>& eye, const std::array<float, 3>& target,
+                          const std::array<float, 3>& up = {0.0f, 1.0f, 0.0f});
 
 enum class Tonemap { PbrNeutral, Aces, Agx, Reinhard, Linear };
 // Forward draws and shades each surface; Visibility writes a visibility buffer and shades it in
