@@ -16,6 +16,7 @@ packages=(
   chromium chromium-driver  # the HTML page in a browser (tests/html, label browser)
   zsh fish groff-base       # the completions parsed and the manual page formatted (tests/install)
   dpkg-dev file             # cpack -G DEB: dpkg-shlibdeps derives Depends (packaging/)
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed   # the Python module (python/)
 )
 
 missing=()

@@ -19,13 +19,19 @@
 
 namespace candela {
 
+// A number no other Scene or Environment of the process has had: a Device tells a new object
+// from a destroyed one that had the same address (whose uploads it holds) by it.
+uint64_t newObjectId();
+
 struct Scene::Impl {
     scene::Scene scene;
     std::optional<uint32_t> variant;  // the variant selected in `scene` (nullopt: its defaults)
+    uint64_t id = newObjectId();
 };
 
 struct Environment::Impl {
     assets::Environment environment;
+    uint64_t id = newObjectId();
 };
 
 struct Device::Impl {
@@ -34,6 +40,13 @@ struct Device::Impl {
     Renderer renderer;
     std::atomic<bool> cancelled{false};
     CapturedFrame lastFrame;  // the last image read back (its timings: the front end's report)
+    // The Scene and Environment objects last drawn (their Impl addresses, as the renderer compares
+    // them, and ids): one at a known address with another id replaced a destroyed one.
+    struct Drawn {
+        const void* address = nullptr;
+        uint64_t id = 0;
+    };
+    Drawn lastScene, lastEnvironment;
 };
 
 // The internal settings `options` ask for when `scene` is drawn lit by `environment` (null: none).

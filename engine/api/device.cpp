@@ -259,6 +259,17 @@ void Access::renderFrames(Device& device, const Scene& scene, const RenderOption
     translateErrors(held.scene.source, [&] {
         impl.cancelled = false;
         checkSequence(sequence);
+        // A Scene or Environment at the address of a destroyed one the renderer drew: it is not
+        // the one uploaded, whatever the address says.
+        const auto replaced = [](Device::Impl::Drawn& last, const void* address, uint64_t id) {
+            const bool same = last.address == address && last.id != id;
+            last = {address, id};
+            return same;
+        };
+        if (replaced(impl.lastScene, &held.scene, held.id)) impl.renderer.sceneReplaced();
+        const auto* drawnEnvironment = environment ? &environment->impl_->environment : nullptr;
+        if (environment && replaced(impl.lastEnvironment, drawnEnvironment, environment->impl_->id))
+            impl.renderer.environmentReplaced();
         const std::optional<uint32_t> variant =
             options.variant.empty() ? std::nullopt : std::optional(scene::variantIndex(held.scene, options.variant));
         if (variant != held.variant) {

@@ -8,16 +8,22 @@
 #include "assets/gltf_loader.h"
 #include "assets/procedural_sky.h"
 
+#include <atomic>
 #include <cstring>
 
 namespace candela {
+
+uint64_t newObjectId() {
+    static std::atomic<uint64_t> next{1};
+    return next++;
+}
 
 Scene::Scene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Scene::Scene(Scene&&) noexcept = default;
 Scene& Scene::operator=(Scene&&) noexcept = default;
 Scene::~Scene() = default;
 
-Scene Access::scene(scene::Scene scene) { return Scene(std::make_unique<Scene::Impl>(Scene::Impl{std::move(scene), std::nullopt})); }
+Scene Access::scene(scene::Scene scene) { return Scene(std::make_unique<Scene::Impl>(Scene::Impl{std::move(scene), std::nullopt, newObjectId()})); }
 
 Scene Scene::fromFile(const std::string& path, std::optional<uint32_t> sceneIndex) {
     std::optional<Scene> out;
@@ -75,7 +81,7 @@ Environment& Environment::operator=(Environment&&) noexcept = default;
 Environment::~Environment() = default;
 
 Environment Access::environment(assets::Environment environment) {
-    return Environment(std::make_unique<Environment::Impl>(Environment::Impl{std::move(environment)}));
+    return Environment(std::make_unique<Environment::Impl>(Environment::Impl{std::move(environment), newObjectId()}));
 }
 
 Environment Environment::fromFile(const std::string& path) {

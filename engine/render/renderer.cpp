@@ -37,6 +37,7 @@ vk::MsaaChoice Renderer::msaa(std::optional<uint32_t> requested) const { return 
 VkDeviceSize Renderer::sceneTextureBytes() const { return mScene.hasGpuScene() ? mScene.gpuScene().textureBytes() : 0; }
 
 void Renderer::sceneReplaced() { mScene.sceneReplaced(); }
+void Renderer::environmentReplaced() { mScene.environmentReplaced(); }
 void Renderer::releaseScene() { mScene.releaseScene(); }
 
 void Renderer::upload(const RenderSettings& settings) {

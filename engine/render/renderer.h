@@ -103,6 +103,8 @@ public:
     // The Scene object last drawn was replaced in place (same address, new contents): the next
     // frame uploads it anew. Waits for the frames in flight.
     void sceneReplaced();
+    // The same for the Environment object last used (its maps made anew by the next frame).
+    void environmentReplaced();
     // Does now what the next frame with `settings` would do first: uploads its scene unless it is
     // uploaded (waiting for the copies) and gives the maps its environment (their precompute runs
     // in that frame). Lets a caller time the upload apart from the frame. Throws UserError as

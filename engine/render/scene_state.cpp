@@ -163,6 +163,10 @@ void SceneState::sceneReplaced() {
     mUploaded.scene = nullptr;
 }
 
+void SceneState::environmentReplaced() {
+    if (mEnvironment) useEnvironment(nullptr, mIblQuality, mIblCacheDir, false);
+}
+
 void SceneState::shadersReplaced(const std::vector<std::string>& names) {
     if (std::none_of(names.begin(), names.end(), [](const std::string& n) { return n.rfind("ibl_", 0) == 0; })) return;
     resetIblMaps();

@@ -58,6 +58,9 @@ public:
     void frameCompleted(const graph::RenderGraph& graph);
     // The Scene object last drawn was replaced in place: the next frame uploads it anew.
     void sceneReplaced();
+    // The Environment object last used was replaced in place: its maps are dropped (after waiting
+    // for the GPU) and the next frame computes (or reads from the cache) the new one's.
+    void environmentReplaced();
     // Frees what the device holds of the uploaded scene (after waiting for the frames in flight);
     // the next frame uploads its scene, whatever its address. The maps stay.
     void releaseScene();

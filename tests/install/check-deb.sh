@@ -58,6 +58,8 @@ mkdir "$tmp/empty"
   else
     echo "note: $helmet is absent; only the default scene rendered"
   fi
+  # Debian's Python finds the module without PYTHONPATH.
+  env -u PYTHONPATH /usr/bin/python3 "$source/tests/install/check-python.py" /usr || fail "import candela"
 )
 
 $sudo env DEBIAN_FRONTEND=noninteractive apt-get purge -y -qq candela > "$tmp/apt.log" 2>&1 ||

@@ -65,4 +65,10 @@ fi
 mkdir "$tmp/empty"
 (cd "$tmp/empty" && "$prefix/bin/candela" render --width 96 --height 54 --out grid.png) || fail "the installed candela does not render"
 [ -s "$tmp/empty/grid.png" ] || fail "no grid.png"
+# The Python module from the prefix's dist-packages (python/CMakeLists.txt).
+python=/usr/bin/python3
+site=$(find "$prefix/lib" -maxdepth 2 -name dist-packages -type d)
+[ -n "$site" ] && [ -f "$site/candela/__init__.py" ] || fail "the Python package candela is not installed"
+(cd "$tmp/empty" && env PYTHONPATH="$site" "$python" "$source/tests/install/check-python.py" "$prefix") ||
+  fail "the installed Python module does not render"
 echo "ok"

@@ -46,6 +46,13 @@ if [ -f "$helmet" ]; then
 else
   echo "note: $helmet is absent; only the default scene rendered"
 fi
+# The Python module, with PYTHONPATH at the tarball's dist-packages: it loads libcandela.so from
+# the tarball's lib/.
+site=$(find "$top/lib" -maxdepth 2 -name dist-packages -type d)
+[ -n "$site" ] || fail "no Python package in the tarball"
+module=$(find "$site/candela" -name '_candela*.so')
+env -u LD_LIBRARY_PATH ldd "$module" | grep -q "libcandela.so.* => $top/lib/" || fail "the Python module does not load the tarball's libcandela.so"
+env -u LD_LIBRARY_PATH PYTHONPATH="$site" /usr/bin/python3 "$source/tests/install/check-python.py" "$top" || fail "import candela"
 
 # The GPU check runs from it too: without the test binary and the layer, what the executable can.
 "$top/gpu-check.sh" --out "$tmp/report" --bench-frames 2 2> "$tmp/steps" || { cat "$tmp/steps" >&2; fail "gpu-check.sh"; }

@@ -1,0 +1,48 @@
+"""Candela from Python: physically based glTF 2.0 rendering on Vulkan into NumPy arrays.
+
+    import candela
+    with candela.Device() as device:
+        scene = device.load_scene("DamagedHelmet.glb")
+        frame = device.render(scene, width=512, height=512, environment=device.load_environment())
+        frame["color"]        # numpy.ndarray, 512 x 512 x 4, uint8 sRGB (alpha: coverage)
+        frame.camera.K        # the intrinsics it was rendered with
+
+docs/python.md describes every call; the C++ API it binds is include/candela/.
+"""
+
+from ._candela import (
+    Camera,
+    CameraInfo,
+    CancelledError,
+    Device,
+    DeviceError,
+    DeviceLostError,
+    Environment,
+    Error,
+    InputError,
+    InternalFailure,
+    OutOfMemoryError,
+    Scene,
+    SequenceIterator,
+    __version__,
+    load_environment,
+    load_scene,
+)
+
+
+class Frame(dict):
+    """One rendered image: output name -> NumPy array (height x width x channels, C-contiguous,
+    owned by NumPy), and `camera`, the CameraInfo it was rendered with."""
+
+    camera: CameraInfo
+
+    def __repr__(self):
+        shapes = ", ".join(f"{name}: {array.dtype}{list(array.shape)}" for name, array in self.items())
+        return f"Frame({shapes}; {self.camera!r})"
+
+
+__all__ = [
+    "Camera", "CameraInfo", "CancelledError", "Device", "DeviceError", "DeviceLostError", "Environment", "Error",
+    "Frame", "InputError", "InternalFailure", "OutOfMemoryError", "Scene", "SequenceIterator", "__version__",
+    "load_environment", "load_scene",
+]
