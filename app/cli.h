@@ -47,7 +47,7 @@ Command parseCommandLine(const std::vector<std::string>& args);
 std::string usageText();
 // `candela COMMAND --help`: the flags of `command` only. Precondition: `command` is a command name.
 std::string commandHelp(std::string_view command);
-// `candela --version`: "candela 0.2.0" (CMake's PROJECT_VERSION).
+// `candela --version`: "candela 0.3.0" (CMake's PROJECT_VERSION).
 std::string versionText();
 
 }  // namespace candela::app

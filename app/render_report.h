@@ -54,7 +54,7 @@ struct SceneReport {
 };
 
 struct RunReport {
-    std::string version;       // "candela 0.2.0"
+    std::string version;       // "candela 0.3.0"
     std::string device;        // the chosen device's name
     std::string environment;   // what lit the scenes
     uint32_t width = 0, height = 0;

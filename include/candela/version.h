@@ -4,7 +4,7 @@
 // minor release may change both (the library's soname, libcandela.so.0.y, changes with it).
 
 #define CANDELA_VERSION_MAJOR 0
-#define CANDELA_VERSION_MINOR 2
+#define CANDELA_VERSION_MINOR 3
 #define CANDELA_VERSION_PATCH 0
 // "MAJOR.MINOR.PATCH", from the three above.
 #define CANDELA_VERSION_TEXT_(major, minor, patch) #major "." #minor "." #patch

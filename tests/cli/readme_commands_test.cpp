@@ -6,7 +6,9 @@
 // tools/build-and-render.sh and tools/build-and-test.sh (they build; kSetUpCommands). `candela
 // view` commands are interactive (they run until the window is closed): each runs under a private
 // Xvfb for kViewSeconds and must print no error and no validation message in that time (or exit
-// 0), then is ended. See docs/testing.md#the-readmes-commands.
+// 0), then is ended. Every ```python block is one test too: the block runs as a script with the
+// Python the module was built for and PYTHONPATH at the build tree's package (python/), under the
+// same rules. See docs/testing.md#the-readmes-commands.
 #include "run_candela.h"
 #include "test_paths.h"
 #include "../viewer/xvfb.h"
@@ -38,7 +40,9 @@ constexpr int kCommandTimeoutSeconds = 600;
 
 struct Block {
     int line = 0;  // of the opening fence
-    std::vector<std::string> commands;
+    std::vector<std::string> commands;  // a ```sh block's
+    bool python = false;                // a ```python block: `script`
+    std::string script;
 };
 
 void PrintTo(const Block& block, std::ostream* os) { *os << "README.md line " << block.line; }
@@ -53,23 +57,25 @@ std::vector<std::string> readmeLines() {
 bool startsWith(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
 // The ```sh blocks: one command per line, a trailing backslash continues it; blank lines and
-// lines that are only a comment are not commands.
+// lines that are only a comment are not commands. And the ```python blocks, each a script.
 std::vector<Block> shBlocks(const std::vector<std::string>& lines) {
     std::vector<Block> blocks;
-    bool inSh = false, inOther = false;
+    bool inSh = false, inPython = false, inOther = false;
     std::string pending;
     for (size_t i = 0; i < lines.size(); ++i) {
         const std::string& line = lines[i];
-        if (!inSh && !inOther && startsWith(line, "```")) {
+        if (!inSh && !inPython && !inOther && startsWith(line, "```")) {
             inSh = line == "```sh";
-            inOther = !inSh;
-            if (inSh) blocks.push_back({int(i + 1), {}});
+            inPython = line == "```python";
+            inOther = !inSh && !inPython;
+            if (inSh || inPython) blocks.push_back({.line = int(i + 1), .python = inPython});
             continue;
         }
-        if ((inSh || inOther) && line == "```") {
-            inSh = inOther = false;
+        if ((inSh || inPython || inOther) && line == "```") {
+            inSh = inPython = inOther = false;
             continue;
         }
+        if (inPython) blocks.back().script += line + "\n";
         if (!inSh) continue;
         if (!line.empty() && line.back() == '\\') {
             pending += line.substr(0, line.size() - 1);
@@ -96,7 +102,7 @@ bool isView(const std::string& command) { return startsWith(command, std::string
 std::vector<Block> runnableBlocks() {
     std::vector<Block> out;
     for (Block& block : shBlocks(readmeLines())) {
-        bool runnable = false;
+        bool runnable = block.python;
         for (const std::string& command : block.commands) runnable = runnable || !isSetUp(command);
         if (runnable) out.push_back(std::move(block));
     }
@@ -174,9 +180,20 @@ TEST_P(ReadmeBlock, EveryCommandRuns) {
     fs::create_directories(dir.path() / "build/release/app");
     fs::create_symlink(CANDELA_EXECUTABLE, dir.path() / kExecutable);
 
+    std::vector<std::string> commands = GetParam().commands;
+    if (GetParam().python) {
+#ifdef CANDELA_PYTHON
+        setenv("PYTHONPATH", CANDELA_PYTHON_PATH, 1);
+        std::ofstream(dir.path() / ".readme_block.py") << GetParam().script;
+        commands = {std::string(CANDELA_PYTHON) + " .readme_block.py"};
+#else
+        GTEST_SKIP() << "the Python module is not built";
+#endif
+    }
+
     XvfbEnvironment xvfb;  // started for the first `view` command when DISPLAY is unset
     bool xvfbStarted = false;
-    for (const std::string& command : GetParam().commands) {
+    for (const std::string& command : commands) {
         if (isSetUp(command)) continue;
         SCOPED_TRACE("README.md block at line " + std::to_string(GetParam().line) + ": " + command);
         const auto start = std::chrono::steady_clock::now();

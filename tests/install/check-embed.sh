@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The CMake package (docs/embedding.md): the build installed into a temporary prefix; examples/embed
-# configured as a project of its own with find_package(Candela 0.2 CONFIG) on that prefix, built and
+# configured as a project of its own with find_package(Candela 0.3 CONFIG) on that prefix, built and
 # run on DamagedHelmet (from the shared assets; skipped when they are absent);
 # its PNG must equal `candela render`'s of the same settings byte for byte.
 #   tests/install/check-embed.sh BUILD_DIR SOURCE_DIR    (ctest: package.embed)
