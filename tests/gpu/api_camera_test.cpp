@@ -3,7 +3,7 @@
 // principal point moves the image by whole pixels, CameraInfo reports the camera drawn with, and
 // sequenceFrame's frames rendered one at a time are renderSequence's.
 
-#include "gpu_test.h"
+#include "api_test_util.h"
 #include "candela/candela.h"
 
 #include <gtest/gtest.h>
@@ -42,7 +42,7 @@ int largestDifference(const Image& a, const Image& b, uint32_t x0 = 0, uint32_t 
 }
 
 TEST(ApiCamera, PlacedAndPinholeCamerasReproduceTheOrbitCamera) {
-    Device device({.validation = true, .pipelineCache = "off"});
+    Device device(validated());
     const Scene grid = Scene::sphereGrid(3);
     const RenderOptions orbit = small();
     const Image byOrbit = device.render(grid, orbit);
@@ -85,11 +85,11 @@ TEST(ApiCamera, PlacedAndPinholeCamerasReproduceTheOrbitCamera) {
     const Image byShifted = device.render(grid, shifted);
     EXPECT_LE(largestDifference(byOrbit, byShifted, 0, kWidth - 8, 8), 1);
     EXPECT_GT(largestDifference(byOrbit, byShifted), 8);  // it did move
-    EXPECT_EQ(device.validationMessages(), 0u);
+    EXPECT_EQ(messages(device), 0u);
 }
 
 TEST(ApiCamera, SequenceFramesOneAtATimeAreTheSequence) {
-    Device device({.validation = true, .pipelineCache = "off"});
+    Device device(validated());
     const Scene grid = Scene::sphereGrid(3);
     RenderOptions options = small();
     options.camera.orbit.reset();  // framed: one distance for the whole turn
@@ -107,11 +107,11 @@ TEST(ApiCamera, SequenceFramesOneAtATimeAreTheSequence) {
     }
     EXPECT_NE(sequence[0].camera.cameraToWorld, sequence[1].camera.cameraToWorld);
     EXPECT_THROW(sequenceFrame(grid, options, turn, 3), InputError);
-    EXPECT_EQ(device.validationMessages(), 0u);
+    EXPECT_EQ(messages(device), 0u);
 }
 
 TEST(ApiCamera, ImpossibleCamerasAreInputErrors) {
-    Device device({.validation = true, .pipelineCache = "off"});
+    Device device(validated());
     const Scene grid = Scene::sphereGrid(2);
     EXPECT_THROW(lookAt({1.0f, 2.0f, 3.0f}, {1.0f, 2.0f, 3.0f}), InputError);
     EXPECT_THROW(lookAt({0.0f, 2.0f, 0.0f}, {0.0f, 0.0f, 0.0f}), InputError);  // looking along up
@@ -124,7 +124,7 @@ TEST(ApiCamera, ImpossibleCamerasAreInputErrors) {
     options = small();
     options.camera.cameraToWorld = std::array<float, 16>{};  // singular, last row not 0 0 0 1
     EXPECT_THROW(device.render(grid, options), InputError);
-    EXPECT_EQ(device.validationMessages(), 0u);
+    EXPECT_EQ(messages(device), 0u);
 }
 
 }  // namespace

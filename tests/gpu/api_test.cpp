@@ -4,6 +4,7 @@
 // its errors.
 
 #include "gltf_test_util.h"
+#include "api_test_util.h"
 #include "gpu_test.h"
 #include "temp_dir.h"
 #include "api/access.h"
@@ -30,17 +31,6 @@ using assets::test::texturedTriangle;
 using assets::test::writeFile;
 namespace fs = std::filesystem;
 
-// A device under validation, with no pipeline-cache file.
-DeviceOptions validated() { return {.validation = true, .pipelineCache = "off"}; }
-
-// The validation messages of `context` that count (with CANDELA_BEST_PRACTICES=1, the
-// best-practices copy of the suite, less those that do not apply: gpu_test.h).
-uint32_t messages(const vk::Context& context) {
-    uint32_t count = 0;
-    for (const vk::ValidationMessage& m : context.validationMessages()) count += bestPracticesNotApplicable(m.text) ? 0 : 1;
-    return count;
-}
-uint32_t messages(Device& device) { return messages(Access::impl(device).context); }
 
 RenderOptions small(uint32_t width = 64, uint32_t height = 48) {
     RenderOptions options;
