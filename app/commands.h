@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <initializer_list>
+#include <sstream>
 #include <string>
 
 namespace candela::app {
@@ -22,6 +23,16 @@ int runDiff(const DiffOptions& options);
 
 // Writes `text` to the file `path` (replacing it); a UserError "PATH: cannot write" otherwise.
 void writeText(const std::string& path, const std::string& text);
+// A text file streamed into memory and written atomically (writeText) by commit(); nothing is
+// written without it.
+class TextFile : public std::ostringstream {
+public:
+    explicit TextFile(std::filesystem::path path) : mPath(std::move(path)) {}
+    void commit() { writeText(mPath.string(), str()); }
+
+private:
+    std::filesystem::path mPath;
+};
 // Creates the report folder `out` and checks that each of `files` can be written in it; a
 // UserError names the folder or file otherwise (ibl-report, scale-report).
 void prepareReportFolder(const std::filesystem::path& out, std::initializer_list<const char*> files);

@@ -1,5 +1,6 @@
 // `candela ibl-report`'s files: CSV, markdown, log-log plots with the Pareto front, previews.
 
+#include "commands.h"
 #include "ibl_report.h"
 #include "statistics.h"
 
@@ -110,7 +111,7 @@ void writeErrorMap(const std::filesystem::path& path, const CapturedFrame& frame
 
 void writeCsv(const std::filesystem::path& out, const std::vector<Result>& results) {
     // One row per setting, errors per roughness level at the end.
-    std::ofstream csv(out / "report.csv");
+    TextFile csv(out / "report.csv");
     csv << "group,setting,cube,levels,prefilter_samples,filtered,irradiance,sh_size,irradiance_samples,lut_size,"
            "lut_samples,precompute_ms,precompute_gpu_ms,setup_ms,ratio_to_calibration,ratio_min,ratio_max,specular_rmse,specular_mean_relative,"
            "specular_max,irradiance_rmse,irradiance_mean_relative,irradiance_max,lut_max_a,lut_max_b,lut_rms_a,lut_rms_b,image_rmse,image_mean_relative,image_max,"
@@ -138,7 +139,7 @@ void writeCsv(const std::filesystem::path& out, const std::vector<Result>& resul
             csv << ',' << sci(level.stats.rmse) << ',' << sci(level.stats.meanRelative) << ',' << sci(level.stats.maxRelative);
         csv << "\n";
     }
-    if (!csv) throw UserError((out / "report.csv").string() + ": cannot write");
+    csv.commit();
 
 }
 
@@ -185,10 +186,7 @@ void writeMarkdown(const std::filesystem::path& out, const Context& c, const std
            << fixed(r.visibleMaps.flipP999, 3) << " | " << fixed(r.visibleMaps.flipMax, 3) << " |\n";
     md << "\nPlots: specular.png, irradiance.png, lut.png, image.png (error against precompute time, log-log, "
           "Pareto front marked, the default ringed).\n";
-    std::ofstream file(out / "report.md");
-    file << md.str();
-    if (!file) throw UserError((out / "report.md").string() + ": cannot write");
-
+    writeText((out / "report.md").string(), md.str());
 }
 
 void writePlots(const std::filesystem::path& out, const std::vector<Result>& results) {

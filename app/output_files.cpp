@@ -3,6 +3,7 @@
 #include "commands.h"
 
 #include "assets/image_file.h"
+#include "core/cache_files.h"
 #include "core/errors.h"
 
 #include <fstream>
@@ -10,9 +11,7 @@
 namespace candela::app {
 
 void writeText(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) throw UserError(path + ": cannot write");
+    writeFileAtomically(path, [&](std::ostream& out) { out.write(text.data(), std::streamsize(text.size())); });
 }
 
 void prepareReportFolder(const std::filesystem::path& out, std::initializer_list<const char*> files) {

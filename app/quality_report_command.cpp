@@ -129,7 +129,7 @@ bool sameWork(const QualityRow& row, const std::vector<std::vector<uint8_t>>& ro
 
 void writeReport(const std::filesystem::path& out, const std::vector<SceneResult>& results, const QualityReportOptions& o,
                  const std::string& device, const vk::MsaaChoice& defaultMsaa, const std::vector<std::string>& notes) {
-    std::ofstream csv(out / "report.csv");
+    TextFile csv(out / "report.csv");
     csv << "scene,msaa,specular_aa,lod_error_px,shading_path,frame_ratio,frame_ratio_min,frame_ratio_max,frame_ms,mean_error,"
            "p99_error,temporal,temporal_error,reference_temporal,submitted_triangles,pareto,default\n";
     for (const SceneResult& s : results)
@@ -139,7 +139,8 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
                 << r.frameRatio.high << "," << r.frameMs << "," << r.error.mean << "," << r.error.p99 << "," << r.temporal << "," << r.temporalError << ","
                 << s.referenceTemporal << "," << r.triangles << "," << r.pareto << "," << r.isDefault << "\n";
 
-    std::ofstream md(out / "report.md");
+    csv.commit();
+    TextFile md(out / "report.md");
     md << "# Quality report: anti-aliasing and levels of detail\n\n"
        << o.width << "×" << o.height << " on " << device << ". Frame time: in each of " << o.repeats
        << " rounds over every setting (alternately forwards and backwards), the median of " << o.frames
@@ -202,6 +203,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<SceneResult
             reports::writeLogLogPlot(out / (s.name + (temporal ? "_temporal.png" : "_error.png")), plot);
         }
     }
+    md.commit();
 }
 
 // What the settings of one scene are measured with, and the progress over all of them.

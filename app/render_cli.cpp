@@ -34,10 +34,15 @@ std::vector<FlagSpec<RenderOptions>> renderFlags() {
          "failure, sortable (self-contained: no network; images beside it)",
          "", parsed(&O::html, parsePath)},
         inlineImagesFlag(&O::inlineImages),
-        {"--shard", "I/N",
+        {"--shard", "I/N|auto[/N]",
          "render only share I of N of the scenes (every N-th, from the I-th): one machine's part of a "
-         "library spread over N machines",
-         "", parsed(&O::shard, parseShard)},
+         "library spread over N machines; auto reads I and N from a Slurm array, a Kubernetes indexed "
+         "job (give N) or GitLab's parallel jobs",
+         "", parsed(&O::shard, [](Str flag, Str value) { return parseShard(flag, value); })},
+        {"--resume", "",
+         "skip the scenes whose output files are all there and complete (a killed or preempted run "
+         "goes on where it stopped; what it left half-written is removed)",
+         "", setsTo(&O::resume, true)},
         {"--graph-dot", "FILE", "write the compiled render graph as Graphviz dot", "", parsed(&O::graphDot, parsePath)},
         {"--graph-json", "FILE", "write the compiled render graph as JSON (passes, resources, barriers, timings)", "",
          parsed(&O::graphJson, parsePath)},

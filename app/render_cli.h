@@ -18,6 +18,7 @@ struct RenderOptions : SceneRenderOptions {
     std::string html;         // --html FILE (a page of the run)
     bool inlineImages = false;  // --inline-images (the page holds its images)
     Shard shard;              // --shard I/N
+    bool resume = false;      // --resume: skip scenes whose outputs are all complete
     std::string graphDot;     // --graph-dot FILE
     std::string graphJson;    // --graph-json FILE
     bool explain = false;     // --explain

@@ -21,6 +21,7 @@
 #include "vk/context.h"
 #include "vk/timestamps.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <future>
@@ -91,6 +92,35 @@ void printWritten(Run& run, const std::string& out, const CapturedFrame& frame, 
     std::fflush(stdout);
 }
 
+// The files scene `input` writes for `variantName` ("default": the default materials): one, or
+// one per frame of a sequence.
+std::vector<std::string> outputsOf(const RenderOptions& options, const SceneInput& input, const std::string& variantName) {
+    if (options.frames <= 1) return {expandOutPattern(options.out, {input.name, input.path, variantName, std::nullopt})};
+    std::vector<std::string> out;
+    for (uint32_t i = 0; i < options.frames; ++i) out.push_back(expandOutPattern(options.out, {input.name, input.path, variantName, i}));
+    return out;
+}
+
+// --resume: whether every file of `outputs` is there and a whole image; removes what a killed
+// writer left beside each (its temporary files) either way.
+bool outputsComplete(const std::vector<std::string>& outputs) {
+    bool complete = true;
+    for (const std::string& out : outputs) {
+        assets::removeStaleTemporaries(out);
+        complete = complete && assets::imageFileComplete(out);
+    }
+    return complete;
+}
+
+// Records in `r` the outputs of a scene (or variant) that --resume left as they were.
+void recordResumed(SceneReport& r, const std::vector<std::string>& outputs, const std::string& variant) {
+    for (size_t i = 0; i < outputs.size(); ++i) {
+        std::string label = variant;
+        if (outputs.size() > 1) label += (label.empty() ? "" : ", ") + ("frame " + std::to_string(i));
+        r.outputs.push_back({outputs[i], label.empty() ? "render" : label});
+    }
+}
+
 // Renders every image of one scene (each variant asked for, each frame of a sequence) through the
 // public API (candela::Device::renderSequence, with the flags the API does not have applied to
 // each frame's settings: engine/api/access.h) and fills `r` with what it took. Throws what the
@@ -134,6 +164,14 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
         api.variant = variant;
         const std::string variantName = variant.empty() ? "default" : variant;
         r.variants.push_back(variant);
+        // --variant all: each variant's files are known once the file is read.
+        if (options.resume && options.variant == "all") {
+            const std::vector<std::string> outputs = outputsOf(options, r.input, variantName);
+            if (outputsComplete(outputs)) {
+                recordResumed(r, outputs, variant);
+                continue;
+            }
+        }
         Clock::time_point stageStart = Clock::now();
         const candela::ProgressCallback stages = [&](const candela::RenderProgress& stage) {
             // The upload runs between the first two stages.
@@ -298,8 +336,10 @@ int finishRun(Run& run, const RunReport& report, std::exception_ptr singleFailur
     }
     const size_t scenes = report.scenes.size();
     if (run.batch) {
+        const size_t resumed = size_t(std::count_if(report.scenes.begin(), report.scenes.end(), [](const SceneReport& r) { return r.resumed; }));
+        if (resumed > 0) std::printf("%zu of %zu scenes were complete already (--resume)\n", resumed, scenes);
         std::printf("rendered %zu of %zu scenes in %.2f s (%.3f s a scene after start-up; environment precomputed %u time%s)\n",
-                    scenes - report.failed(), scenes, report.totalMs / 1000.0,
+                    scenes - report.failed() - resumed, scenes, report.totalMs / 1000.0,
                     scenes == 0 ? 0.0 : (report.totalMs - report.startupMs) / 1000.0 / double(scenes),
                     report.precomputes, report.precomputes == 1 ? "" : "s");
         if (options.shard.count > 1)
@@ -328,13 +368,27 @@ int runRender(const RenderOptions& options) {
     const bool sequence = options.frames > 1;
     const assets::ImageFileFormat format = prepareOutputs(options, listed, scenes, sequence);
 
+    // --resume: the scenes whose files are all complete are not rendered again (with --variant all,
+    // each variant is checked once the file is read: renderScene). What a killed run left
+    // half-written is removed.
+    std::vector<size_t> pending;
+    std::vector<bool> resumed(scenes.size(), false);
+    for (size_t i = 0; i < scenes.size(); ++i) {
+        resumed[i] = options.resume && options.variant != "all" &&
+                     outputsComplete(outputsOf(options, scenes[i], options.variant.empty() ? "default" : options.variant));
+        if (!resumed[i]) pending.push_back(i);
+    }
+    if (options.resume)
+        for (const std::string& path : {options.graphDot, options.graphJson, options.report, options.html})
+            if (!path.empty()) assets::removeStaleTemporaries(path);
+
     // The first scene is read while the environment loads and the device starts.
     std::future<LoadedScene> next;
     const auto startLoad = [&](size_t i) { next = std::async(std::launch::async, load, std::cref(scenes[i]), std::cref(options)); };
-    if (!scenes.empty()) startLoad(0);
+    if (!pending.empty()) startLoad(pending[0]);
     Session session(options.common, options.env);
     std::optional<LoadedScene> first;
-    if (single && !scenes.empty()) {
+    if (single && !pending.empty()) {
         // Bad input fails before the device starts, as it always has for one scene.
         first = next.get();
         if (first->error) std::rethrow_exception(first->error);
@@ -352,22 +406,35 @@ int runRender(const RenderOptions& options) {
                      .scenesListed = listed.size(),
                      .gpuMsUnreliable = !vk::timestampsMeasurePasses(context.properties().deviceType)};
     report.startupMs = msSince(runStart);
+    size_t reported = 0;  // report.scenes holds scenes [0, reported)
+    const auto addResumed = [&](size_t i) {
+        SceneReport& r = report.scenes.emplace_back();
+        r.input = scenes[i];
+        r.ok = r.resumed = true;
+        recordResumed(r, outputsOf(options, scenes[i], options.variant.empty() ? "default" : options.variant), options.variant);
+        log::info((r.input.file.empty() ? std::string("the default scene") : r.input.file.string()) + ": complete already (--resume)");
+    };
     Progress progress("render", run.batch ? scenes.size() : options.frames, options.common.quiet || (run.batch ? false : !sequence));
     std::exception_ptr singleFailure;
-    for (size_t i = 0; i < scenes.size(); ++i) {
+    for (size_t k = 0; k < pending.size(); ++k) {
+        const size_t i = pending[k];
+        // The scenes --resume found complete before this one: reported, not loaded.
+        for (; reported < i; ++reported) addResumed(reported);
         const auto waitStart = Clock::now();
         LoadedScene loaded = first ? std::move(*first) : next.get();
         const double waitMs = msSince(waitStart);
         first.reset();
-        if (i + 1 < scenes.size()) startLoad(i + 1);  // the next file is read while this one renders
+        if (k + 1 < pending.size()) startLoad(pending[k + 1]);  // the next file is read while this one renders
         SceneReport& r = report.scenes.emplace_back();
         r.input = scenes[i];
         r.loadMs = loaded.ms;
         // The first load overlaps the device's start-up only: counted whole.
-        r.loadWaitMs = i == 0 ? loaded.ms : waitMs;
+        r.loadWaitMs = k == 0 ? loaded.ms : waitMs;
         runScene(run, std::move(loaded), r, report, progress, singleFailure);
         if (run.batch) progress.step(i + 1, r.input.name);
+        reported = i + 1;
     }
+    for (; reported < scenes.size(); ++reported) addResumed(reported);
     progress.finish();
     report.precomputes = session.renderer().precomputeCount();
     report.totalMs = msSince(runStart);

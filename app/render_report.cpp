@@ -26,7 +26,7 @@ Json sceneJson(const SceneReport& s) {
     out["file"] = s.input.file.generic_string();
     out["name"] = s.input.name;
     out["path"] = s.input.path;
-    out["status"] = s.ok ? "ok" : "failed";
+    out["status"] = s.resumed ? "complete" : s.ok ? "ok" : "failed";
     if (!s.ok) {
         out["error"] = s.error;
         out["exitCode"] = s.exitCode;

@@ -21,6 +21,7 @@ struct TextureReport {
 struct SceneReport {
     SceneInput input;
     bool ok = false;
+    bool resumed = false;  // --resume: its outputs were complete already; not rendered
     std::string error;  // the one-line message of a failed scene
     int exitCode = 0;   // what a run of this scene alone would have exited with
     double loadMs = 0.0;    // reading and decoding the file (on the loading thread), of which:

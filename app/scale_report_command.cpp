@@ -39,7 +39,7 @@ struct ScaleRow {
 // `gpuUnreliable`: the device's timestamps miss deferred work (graph::GraphTimings::gpuMsUnreliable).
 void writeReport(const std::filesystem::path& out, const std::vector<ScaleRow>& rows, const ScaleReportOptions& options,
                  const std::string& device, bool gpuUnreliable) {
-    std::ofstream csv(out / "report.csv");
+    TextFile csv(out / "report.csv");
     csv << "side,lod_error_px,scene_draws,submitted_draws,culled_draws,scene_triangles,submitted_triangles,frame_ms,"
            "calibration_ms,frame_ratio,cpu_ms,forward_gpu_ms,shading_path\n";
     for (const ScaleRow& r : rows)
@@ -47,7 +47,8 @@ void writeReport(const std::filesystem::path& out, const std::vector<ScaleRow>& 
             << r.draws.culledDraws << "," << r.draws.sceneTriangles << "," << r.draws.submittedTriangles << "," << r.frameMs
             << "," << r.calibrationMs << "," << r.ratio() << "," << r.cpuMs << "," << r.forwardGpuMs << ","
             << options::shadingPathName(r.path) << "\n";
-    std::ofstream md(out / "report.md");
+    csv.commit();
+    TextFile md(out / "report.md");
     md << "# Scale report\n\nThe built-in sphere grid at N × N spheres, framed alike, under the procedural sky, "
        << options.width << "×" << options.height << " on " << device << ", median of " << options.frames
        << " frames; frame time as a ratio to the calibration pass of the same run."
@@ -62,6 +63,7 @@ void writeReport(const std::filesystem::path& out, const std::vector<ScaleRow>& 
                       (unsigned long long)r.draws.submittedTriangles, r.ratio(), r.cpuMs);
         md << line;
     }
+    md.commit();
     reports::PlotSpec plot{.title = "Frame time against scene triangles (N x N sphere grid)",
                       .xLabel = "triangles in the scene",
                       .yLabel = "frame time / calibration",

@@ -99,17 +99,74 @@ std::vector<SceneInput> expandSceneInputs(const std::vector<std::string>& inputs
     return std::move(collector.mScenes);
 }
 
-Shard parseShard(const std::string& flag, const std::string& value) {
-    const size_t slash = value.find('/');
-    const auto number = [&](const std::string& text) -> uint32_t {
-        if (text.empty() || text.size() > 6 || !std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); }))
-            return 0;
-        return uint32_t(std::stoul(text));
+namespace {
+
+// A decimal number of at most 6 digits; nullopt for anything else.
+std::optional<uint32_t> smallNumber(const std::string& text) {
+    if (text.empty() || text.size() > 6 || !std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); }))
+        return std::nullopt;
+    return uint32_t(std::stoul(text));
+}
+
+// --shard auto[/N]: the job array's index and count from the environment.
+Shard shardFromEnvironment(const std::string& flag, const std::string& value, const EnvironmentLookup& env) {
+    const auto variable = [&](const char* name) -> std::optional<std::string> {
+        const char* text = env(name);
+        if (!text || !*text) return std::nullopt;
+        return std::string(text);
     };
+    const auto numberOf = [&](const char* name, const std::string& text) {
+        const std::optional<uint32_t> n = smallNumber(text);
+        if (!n) throw UserError(flag + " " + value + ": " + name + " is '" + text + "', not a number");
+        return *n;
+    };
+    std::optional<uint32_t> count;
+    if (value != "auto") {
+        count = smallNumber(value.substr(5));
+        if (!count || *count < 1) throw UserError(flag + ": expected auto or auto/N with N >= 1, got '" + value + "'");
+    }
+    Shard shard;
+    std::string from;
+    if (const auto id = variable("SLURM_ARRAY_TASK_ID")) {
+        // Slurm job arrays: ids from SLURM_ARRAY_TASK_MIN (--array=0-3 or 1-4), SLURM_ARRAY_TASK_COUNT tasks.
+        const uint32_t first = variable("SLURM_ARRAY_TASK_MIN") ? numberOf("SLURM_ARRAY_TASK_MIN", *variable("SLURM_ARRAY_TASK_MIN")) : 0;
+        const uint32_t task = numberOf("SLURM_ARRAY_TASK_ID", *id);
+        if (task < first) throw UserError(flag + " " + value + ": SLURM_ARRAY_TASK_ID " + *id + " is below SLURM_ARRAY_TASK_MIN");
+        shard.index = task - first + 1;
+        if (!count && variable("SLURM_ARRAY_TASK_COUNT")) count = numberOf("SLURM_ARRAY_TASK_COUNT", *variable("SLURM_ARRAY_TASK_COUNT"));
+        from = "SLURM_ARRAY_TASK_ID";
+    } else if (const auto index = variable("JOB_COMPLETION_INDEX")) {
+        // Kubernetes indexed jobs: 0 … completions − 1; the count is not in the environment.
+        shard.index = numberOf("JOB_COMPLETION_INDEX", *index) + 1;
+        from = "JOB_COMPLETION_INDEX";
+    } else if (const auto node = variable("CI_NODE_INDEX")) {
+        // GitLab CI's parallel jobs: 1 … CI_NODE_TOTAL.
+        shard.index = numberOf("CI_NODE_INDEX", *node);
+        if (!count && variable("CI_NODE_TOTAL")) count = numberOf("CI_NODE_TOTAL", *variable("CI_NODE_TOTAL"));
+        from = "CI_NODE_INDEX";
+    } else {
+        throw UserError(flag + " " + value + ": none of SLURM_ARRAY_TASK_ID, JOB_COMPLETION_INDEX and CI_NODE_INDEX is set; "
+                        "give I/N");
+    }
+    if (!count)
+        throw UserError(flag + " " + value + ": " + from + " is set but the number of shards is not; give it: " + flag + " auto/N");
+    shard.count = *count;
+    if (shard.index < 1 || shard.index > shard.count)
+        throw UserError(flag + " " + value + ": " + from + " gives shard " + std::to_string(shard.index) + " of " +
+                        std::to_string(shard.count) + " (a sparse or offset array?)");
+    return shard;
+}
+
+}  // namespace
+
+Shard parseShard(const std::string& flag, const std::string& value, const EnvironmentLookup& env) {
+    if (value == "auto" || value.rfind("auto/", 0) == 0) return shardFromEnvironment(flag, value, env);
+    const size_t slash = value.find('/');
+    const auto number = [&](const std::string& text) -> uint32_t { return smallNumber(text).value_or(0); };
     const Shard shard{slash == std::string::npos ? 0 : number(value.substr(0, slash)),
                       slash == std::string::npos ? 0 : number(value.substr(slash + 1))};
     if (shard.index < 1 || shard.count < 1 || shard.index > shard.count)
-        throw UserError(flag + ": expected I/N with 1 <= I <= N (this machine's share of N), got '" + value + "'");
+        throw UserError(flag + ": expected I/N with 1 <= I <= N (this machine's share of N), or auto, got '" + value + "'");
     return shard;
 }
 

@@ -10,7 +10,9 @@
 #include "core/errors.h"
 
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -48,8 +50,16 @@ struct Shard {
     uint32_t count = 1;
     bool operator==(const Shard&) const = default;
 };
-// Parses "I/N" (1 ≤ I ≤ N); UserError naming `flag` otherwise.
-Shard parseShard(const std::string& flag, const std::string& value);
+// Reads an environment variable (null: unset); std::getenv by default, a table in tests.
+using EnvironmentLookup = std::function<const char*(const char* name)>;
+// Parses "I/N" (1 ≤ I ≤ N), or "auto" / "auto/N": the index from a job array's environment —
+// Slurm's SLURM_ARRAY_TASK_ID (less SLURM_ARRAY_TASK_MIN, with SLURM_ARRAY_TASK_COUNT shards), a
+// Kubernetes indexed job's JOB_COMPLETION_INDEX (from 0; N must be given), GitLab's CI_NODE_INDEX
+// (from 1, CI_NODE_TOTAL shards) — N, when given, taking precedence over the count found.
+// UserError naming `flag` otherwise.
+Shard parseShard(const std::string& flag, const std::string& value, const EnvironmentLookup& env = [](const char* name) {
+    return static_cast<const char*>(std::getenv(name));
+});
 std::vector<SceneInput> shardOf(const std::vector<SceneInput>& scenes, Shard shard);
 
 // What the fields of an --out pattern stand for in one output file.

@@ -21,10 +21,10 @@ double mib(uint64_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
 }  // namespace
 
 int runSoak(const SoakOptions& options) {
-    std::ofstream csv;
+    // Written when the run ends (atomically: a killed run leaves no truncated file).
+    TextFile csv(options.out);
     if (!options.out.empty()) {
         assets::checkWritable(options.out);
-        csv.open(options.out);
         csv << "frame,rss_bytes,heap_bytes,live_vulkan_objects,device_memory_bytes,live_allocations,frame_ms\n";
     }
     const scene::Scene grid = assets::makeSphereGrid();
@@ -49,7 +49,7 @@ int runSoak(const SoakOptions& options) {
                                 mib(s.heapBytes), static_cast<long long>(s.liveVulkanObjects), mib(s.deviceMemoryBytes),
                                 s.liveAllocations, s.lastFrameMs);
                     std::fflush(stdout);
-                    if (csv)
+                    if (!options.out.empty())
                         csv << s.frame << ',' << s.residentBytes << ',' << s.heapBytes << ',' << s.liveVulkanObjects << ','
                             << s.deviceMemoryBytes << ',' << s.liveAllocations << ',' << s.lastFrameMs << '\n';
                     char detail[64];
@@ -58,7 +58,7 @@ int runSoak(const SoakOptions& options) {
                     progress.step(s.frame, detail);
                 });
     progress.finish();
-    if (!options.out.empty() && !csv) throw UserError(options.out + ": cannot write");
+    if (!options.out.empty()) csv.commit();
     // Growth after warm-up: from the first sample at or after one full cycle of environments.
     const uint32_t warmUp = options.switchEvery * uint32_t(environments.size());
     const SoakSample* first = nullptr;

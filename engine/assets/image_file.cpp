@@ -1,11 +1,14 @@
 #include "assets/image_file.h"
 
+#include "assets/exr_reader.h"
+#include "core/cache_files.h"
 #include "core/errors.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStdIO.h>
 #include <stb_image_write.h>
 
 #include <algorithm>
@@ -56,9 +59,14 @@ void checkWritable(const std::filesystem::path& path) {
 
 void writePng(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const uint8_t> rgba) {
     checkSize(path, width, height, rgba.size(), 4);
-    if (!stbi_write_png(path.c_str(), static_cast<int>(width), static_cast<int>(height), 4, rgba.data(),
-                        static_cast<int>(width * 4)))
-        throw UserError(path.string() + ": cannot write PNG");
+    writeFileAtomically(path, [&](std::ostream& out) {
+        const auto append = [](void* stream, void* data, int size) {
+            static_cast<std::ostream*>(stream)->write(static_cast<const char*>(data), size);
+        };
+        if (!stbi_write_png_to_func(append, &out, static_cast<int>(width), static_cast<int>(height), 4, rgba.data(),
+                                    static_cast<int>(width * 4)))
+            throw UserError(path.string() + ": cannot write PNG");
+    });
 }
 
 void writeExr(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const float> rgba) {
@@ -76,8 +84,9 @@ void writeExr(const std::filesystem::path& path, uint32_t width, uint32_t height
         frame.insert(names[c], Imf::Slice(Imf::HALF, base + c * sizeof(Imath::half), 4 * sizeof(Imath::half),
                                           size_t(width) * 4 * sizeof(Imath::half)));
     }
+    Imf::StdOSStream encoded;  // in memory, then written atomically
     try {
-        Imf::OutputFile file(path.c_str(), header);
+        Imf::OutputFile file(encoded, header);
         file.setFrameBuffer(frame);
         file.writePixels(static_cast<int>(height));
     } catch (const std::exception& e) {
@@ -85,21 +94,81 @@ void writeExr(const std::filesystem::path& path, uint32_t width, uint32_t height
         std::replace(message.begin(), message.end(), '\n', ' ');
         throw UserError(path.string() + ": cannot write EXR: " + message);
     }
+    const std::string bytes = encoded.str();
+    writeFileAtomically(path, [&](std::ostream& out) { out.write(bytes.data(), std::streamsize(bytes.size())); });
 }
 
 void writePfm(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const float> rgba) {
     checkSize(path, width, height, rgba.size(), 4);
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw UserError(path.string() + ": cannot write: " + std::strerror(errno));
-    // Negative scale = little-endian; rows run bottom to top.
-    out << "PF\n" << width << ' ' << height << "\n-1.0\n";
-    std::vector<float> row(static_cast<size_t>(width) * 3);
-    for (uint32_t y = height; y-- > 0;) {
-        for (uint32_t x = 0; x < width; ++x)
-            for (int c = 0; c < 3; ++c) row[x * 3 + c] = rgba[(static_cast<size_t>(y) * width + x) * 4 + c];
-        out.write(reinterpret_cast<const char*>(row.data()), static_cast<std::streamsize>(row.size() * sizeof(float)));
+    writeFileAtomically(path, [&](std::ostream& out) {
+        // Negative scale = little-endian; rows run bottom to top.
+        out << "PF\n" << width << ' ' << height << "\n-1.0\n";
+        std::vector<float> row(static_cast<size_t>(width) * 3);
+        for (uint32_t y = height; y-- > 0;) {
+            for (uint32_t x = 0; x < width; ++x)
+                for (int c = 0; c < 3; ++c) row[x * 3 + c] = rgba[(static_cast<size_t>(y) * width + x) * 4 + c];
+            out.write(reinterpret_cast<const char*>(row.data()), static_cast<std::streamsize>(row.size() * sizeof(float)));
+        }
+    });
+}
+
+namespace {
+
+std::string readAll(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+bool pngComplete(const std::string& bytes) {
+    static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    static const unsigned char kEnd[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+    return bytes.size() >= 8 + 12 && std::memcmp(bytes.data(), kSignature, 8) == 0 &&
+           std::memcmp(bytes.data() + bytes.size() - 12, kEnd, 12) == 0 &&
+           pngChunkProblem(std::span(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size())).empty();
+}
+
+bool pfmComplete(const std::string& bytes) {
+    uint32_t width = 0, height = 0;
+    double scale = 0.0;
+    int consumed = 0;
+    if (std::sscanf(bytes.c_str(), "PF\n%u %u\n%lf\n%n", &width, &height, &scale, &consumed) != 3 || consumed <= 0) return false;
+    return bytes.size() == size_t(consumed) + size_t(width) * height * 3 * sizeof(float);
+}
+
+}  // namespace
+
+bool imageFileComplete(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return false;
+    try {
+        switch (imageFileFormat(path)) {
+            case ImageFileFormat::Png: return pngComplete(readAll(path));
+            case ImageFileFormat::Pfm: return pfmComplete(readAll(path));
+            case ImageFileFormat::Exr: {
+                // Decoded whole: OpenEXR's isComplete() checks the offset table, not that the last
+                // chunk's data is all there.
+                const std::string bytes = readAll(path);
+                decodeExr(std::span(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()), path.string(), {});
+                return true;
+            }
+        }
+    } catch (const std::exception&) {
     }
-    if (!out) throw UserError(path.string() + ": write failed");
+    return false;
+}
+
+size_t removeStaleTemporaries(const std::filesystem::path& path) {
+    const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    const std::string prefix = path.filename().string() + ".tmp-";
+    std::error_code ec;
+    size_t removed = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+        const std::string name = entry.path().filename().string();
+        if (name.size() != prefix.size() + 16 || name.rfind(prefix, 0) != 0) continue;
+        if (name.find_first_not_of("0123456789abcdef", prefix.size()) != std::string::npos) continue;
+        removed += std::filesystem::remove(entry.path(), ec) ? 1 : 0;
+    }
+    return removed;
 }
 
 std::string pngChunkProblem(std::span<const uint8_t> bytes) {

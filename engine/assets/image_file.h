@@ -1,7 +1,9 @@
 #pragma once
 // Writing captured frames to disk: PNG (8-bit, sRGB-encoded), OpenEXR (linear half float, through
 // OpenEXR's C++ library) and PFM (linear 32-bit float RGB, written by hand: it is a 3-line header and raw floats).
-// Every failure is a UserError naming the file and the problem.
+// Every file is written to a temporary name in its folder and renamed into place
+// (writeFileAtomically), so a run killed mid-write never leaves a truncated file under the final
+// name. Every failure is a UserError naming the file and the problem.
 
 #include <cstdint>
 #include <filesystem>
@@ -31,6 +33,15 @@ void writePng(const std::filesystem::path& path, uint32_t width, uint32_t height
 // `rgba`: width × height × 4 floats, top row first. Alpha is written to EXR, dropped for PFM.
 void writeExr(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const float> rgba);
 void writePfm(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const float> rgba);
+
+// Whether the file at `path` is a whole image of its extension's format: a PNG whose chunks reach
+// IEND, an EXR that decodes whole (assets::decodeExr), a PFM as long as its header says. False for a
+// missing, truncated or foreign file. `candela render --resume` skips scenes whose outputs all are.
+bool imageFileComplete(const std::filesystem::path& path);
+
+// Removes what a killed writer of `path` left: the temporary files "<name>.tmp-<16 hex digits>"
+// beside it (writeFileAtomically). Returns how many.
+size_t removeStaleTemporaries(const std::filesystem::path& path);
 
 // Reading PNG with stb_image: the first chunk whose declared length passes the end of `bytes`,
 // as "chunk IDAT at byte 33 declares 1073741853 bytes, past the end of the file (120 bytes)"; ""

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include <fstream>
 #include <set>
 
@@ -118,6 +120,42 @@ TEST(SceneBatch, ShardFlagTakesIOverN) {
     EXPECT_EQ(parseShard("--shard", "1/1"), (Shard{1, 1}));
     for (const char* bad : {"0/4", "5/4", "4", "/4", "1/", "a/b", "1/0", "-1/4", "1/4/2"})
         EXPECT_THROW(parseShard("--shard", bad), UserError) << bad;
+}
+
+// --shard auto: the job runners' environments, as a table.
+TEST(SceneBatch, ShardAutoReadsTheJobArraysEnvironment) {
+    const auto from = [](std::map<std::string, std::string> table) {
+        return [table = std::move(table)](const char* name) -> const char* {
+            const auto it = table.find(name);
+            return it == table.end() ? nullptr : it->second.c_str();
+        };
+    };
+    // Slurm, --array=0-3 and --array=1-4 (ids from SLURM_ARRAY_TASK_MIN).
+    EXPECT_EQ(parseShard("--shard", "auto", from({{"SLURM_ARRAY_TASK_ID", "2"}, {"SLURM_ARRAY_TASK_MIN", "0"}, {"SLURM_ARRAY_TASK_COUNT", "4"}})),
+              (Shard{3, 4}));
+    EXPECT_EQ(parseShard("--shard", "auto", from({{"SLURM_ARRAY_TASK_ID", "4"}, {"SLURM_ARRAY_TASK_MIN", "1"}, {"SLURM_ARRAY_TASK_COUNT", "4"}})),
+              (Shard{4, 4}));
+    // Kubernetes: the index from 0, the count given.
+    EXPECT_EQ(parseShard("--shard", "auto/8", from({{"JOB_COMPLETION_INDEX", "0"}})), (Shard{1, 8}));
+    EXPECT_EQ(parseShard("--shard", "auto/8", from({{"JOB_COMPLETION_INDEX", "7"}})), (Shard{8, 8}));
+    // GitLab: from 1.
+    EXPECT_EQ(parseShard("--shard", "auto", from({{"CI_NODE_INDEX", "2"}, {"CI_NODE_TOTAL", "3"}})), (Shard{2, 3}));
+    // A count given wins over the environment's.
+    EXPECT_EQ(parseShard("--shard", "auto/2", from({{"CI_NODE_INDEX", "2"}, {"CI_NODE_TOTAL", "3"}})), (Shard{2, 2}));
+    const auto fails = [&](const std::string& value, std::map<std::string, std::string> table, const std::string& says) {
+        try {
+            parseShard("--shard", value, from(std::move(table)));
+            ADD_FAILURE() << value << ": no error";
+        } catch (const UserError& e) {
+            EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+        }
+    };
+    fails("auto", {}, "none of SLURM_ARRAY_TASK_ID, JOB_COMPLETION_INDEX and CI_NODE_INDEX is set");
+    fails("auto", {{"JOB_COMPLETION_INDEX", "3"}}, "give it: --shard auto/N");
+    fails("auto/4", {{"JOB_COMPLETION_INDEX", "4"}}, "gives shard 5 of 4");
+    fails("auto/4", {{"JOB_COMPLETION_INDEX", "x"}}, "JOB_COMPLETION_INDEX is 'x', not a number");
+    fails("auto/0", {{"JOB_COMPLETION_INDEX", "0"}}, "auto/N with N >= 1");
+    fails("auto", {{"SLURM_ARRAY_TASK_ID", "7"}, {"SLURM_ARRAY_TASK_COUNT", "3"}}, "gives shard 8 of 3");
 }
 
 TEST(SceneBatch, OutPatternsNameEachImage) {
