@@ -142,7 +142,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"SceneListBinary", "render @{dir}/binary.txt --out {dir}/x.png", "@{dir}/binary.txt line 1: a NUL byte"},
                       BadInput{"SceneListNamesAMissingFile", "render @{dir}/missing.txt --out {dir}/x.png", "{dir}/nope.glb: cannot open"},
                       BadInput{"FolderWithoutScenes", "render {dir}/folder.gltf --out {dir}/x.png", "no glTF scene (.gltf or .glb) in {dir}/folder.gltf"},
-                      BadInput{"ShardBeyondCount", "render --shard 5/4", "--shard: expected I/N with 1 <= I <= N (this machine's share of N), got '5/4'"},
+                      BadInput{"ShardBeyondCount", "render --shard 5/4", "--shard: expected I/N with 1 <= I <= N (this machine's share of N), or auto, got '5/4'"},
                       BadInput{"OutPatternUnknownField", "render --out {dir}/{scene}.png", "unknown field {scene}"},
                       BadInput{"PngAsScene", "render --scene {dir}/image.png --out {dir}/x.png", "{dir}/image.png: not a glTF file: looks like a PNG image"},
                       BadInput{"OutIsAFolder", "render --out {dir}/renders/", "--out {dir}/renders/: names a folder; give a file in it, e.g. --out {dir}/renders/candela.png"},
