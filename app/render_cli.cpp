@@ -25,6 +25,22 @@ std::vector<FlagSpec<RenderOptions>> renderFlags() {
          "turn the orbit camera by DEGREES over an image sequence (360: once round), framed at one "
          "distance",
          "0", parsed(&O::turntableDegrees, parseNumber)},
+        {"--views", "N",
+         "N images of one pose from directions spread evenly on a sphere (Fibonacci), all at one framing "
+         "distance, written as a sequence (--out holds a %04d-style number) with their cameras in "
+         "transforms.json beside them",
+         "", parsed(&O::views, parseCount)},
+        {"--view-ring", "ELEVATION",
+         "put --views on a ring ELEVATION degrees above the horizon instead of a sphere", "",
+         [](O& o, Str flag, Str v) { o.viewRing = parseNumber(flag, v); }},
+        {"--light-seed", "S",
+         "jittered lighting: turn the environment of each frame or view by a further angle drawn from the "
+         "number S (the same images for the same S)",
+         "", [](O& o, Str flag, Str v) {
+             if (v.empty() || v.size() > 19 || v.find_first_not_of("0123456789") != std::string::npos)
+                 throw UserError(flag + ": expected a whole number, got '" + v + "'");
+             o.lightSeed = std::stoull(v);
+         }},
         {"--report", "FILE",
          "write a JSON report of the run: per scene the load, upload and frame times, triangles, draws, "
          "textures and their bytes, extensions, warnings and the files written",
@@ -63,6 +79,10 @@ void takeRenderArgument(RenderOptions& options, const std::string& argument) { o
 void checkRenderOptions(const RenderOptions& options) {
     checkSceneFlags(options, !options.inputs.empty(), true);
     checkLightingFlags(options);
+    if (options.views > 0 && (options.frames > 1 || options.turntableDegrees != 0.0f))
+        throw UserError("--views: views are of one pose; not with --frames or --turntable");
+    if (options.viewRing && options.views == 0) throw UserError("--view-ring: puts --views on a ring; give --views N");
+    if (options.lightSeed && !options.sequence()) throw UserError("--light-seed: jitters the lighting of --views or --frames; give one");
 }
 
 }  // namespace candela::app

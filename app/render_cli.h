@@ -5,6 +5,8 @@
 #include "scene_batch.h"
 #include "scene_render_options.h"
 
+#include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,16 @@ struct RenderOptions : SceneRenderOptions {
     uint32_t frames = 0;
     double fps = 0.0;
     float turntableDegrees = 0.0f;
+    // --views N: N images of one pose from directions spread evenly on a sphere (a Fibonacci
+    // lattice) or, with --view-ring ELEVATION, on a ring that far above the horizon, all at one
+    // framing distance; written as a sequence, with transforms.json.
+    uint32_t views = 0;
+    std::optional<float> viewRing;
+    // --light-seed S: each frame's or view's environment turned further by a jitter drawn from S.
+    std::optional<uint64_t> lightSeed;
+    // The images of one scene's sequence or views (1 for a still).
+    uint32_t frameCount() const { return views > 0 ? views : std::max(frames, 1u); }
+    bool sequence() const { return frames > 1 || views > 0; }
     bool operator==(const RenderOptions&) const = default;
 };
 

@@ -4,6 +4,7 @@
 
 #include "commands.h"
 #include "api/access.h"
+#include "candela/dataset.h"
 #include "candela/device.h"
 #include "failures.h"
 #include "render_page.h"
@@ -27,8 +28,12 @@
 #include <future>
 #include <map>
 
+#include <nlohmann/json.hpp>
+
 namespace candela::app {
 namespace {
+
+namespace fs = std::filesystem;
 
 // Creates the folder `file` goes in.
 void createFolderOf(const std::filesystem::path& file) {
@@ -62,7 +67,7 @@ struct Run {
     Session& session;
     assets::ImageFileFormat format;
     bool batch;     // several scenes: shorter lines, one precompute for all (sheen included)
-    bool sequence;  // --frames N > 1
+    bool sequence;  // --frames N > 1 or --views N
     bool anyFrame = false;
     bool gpuNoteShown = false;  // graph::kUnreliableGpuTimes, said once after the first marked line
 };
@@ -95,19 +100,31 @@ void printWritten(Run& run, const std::string& out, const CapturedFrame& frame, 
 // The files scene `input` writes for `variantName` ("default": the default materials): one, or
 // one per frame of a sequence.
 std::vector<std::string> outputsOf(const RenderOptions& options, const SceneInput& input, const std::string& variantName) {
-    if (options.frames <= 1) return {expandOutPattern(options.out, {input.name, input.path, variantName, std::nullopt})};
+    if (!options.sequence()) return {expandOutPattern(options.out, {input.name, input.path, variantName, std::nullopt})};
     std::vector<std::string> out;
-    for (uint32_t i = 0; i < options.frames; ++i) out.push_back(expandOutPattern(options.out, {input.name, input.path, variantName, i}));
+    for (uint32_t i = 0; i < options.frameCount(); ++i)
+        out.push_back(expandOutPattern(options.out, {input.name, input.path, variantName, i}));
     return out;
 }
 
-// --resume: whether every file of `outputs` is there and a whole image; removes what a killed
-// writer left beside each (its temporary files) either way.
-bool outputsComplete(const std::vector<std::string>& outputs) {
+// The cameras of a sequence's frames (transforms.json) go into the folder of its first frame.
+fs::path transformsFileOf(const std::string& firstFrame) { return fs::path(firstFrame).parent_path() / "transforms.json"; }
+
+// --resume: whether every file of `outputs` is there and a whole image, and for a sequence its
+// transforms.json a JSON document with a camera for each; removes what a killed writer left beside
+// each (its temporary files) either way.
+bool outputsComplete(const std::vector<std::string>& outputs, bool sequence) {
     bool complete = true;
     for (const std::string& out : outputs) {
         assets::removeStaleTemporaries(out);
         complete = complete && assets::imageFileComplete(out);
+    }
+    if (sequence && !outputs.empty()) {
+        const fs::path transforms = transformsFileOf(outputs.front());
+        assets::removeStaleTemporaries(transforms);
+        std::ifstream in(transforms);
+        const nlohmann::json json = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+        complete = complete && json.is_object() && json.contains("frames") && json["frames"].size() == outputs.size();
     }
     return complete;
 }
@@ -119,6 +136,24 @@ void recordResumed(SceneReport& r, const std::vector<std::string>& outputs, cons
         if (outputs.size() > 1) label += (label.empty() ? "" : ", ") + ("frame " + std::to_string(i));
         r.outputs.push_back({outputs[i], label.empty() ? "render" : label});
     }
+}
+
+// The API's sequence of `options`: frames, a turntable, or views; jittered lighting.
+candela::SequenceOptions sequenceOptions(const RenderOptions& options) {
+    candela::SequenceOptions sequence{.frames = std::max(options.frames, 1u), .fps = options.fps > 0.0 ? options.fps : 30.0,
+                                      .turntableDegrees = options.turntableDegrees, .lightingSeed = options.lightSeed};
+    if (options.views > 0)
+        sequence.views = options.viewRing ? candela::ringViews(options.views, *options.viewRing) : candela::sphereViews(options.views);
+    return sequence;
+}
+
+// Writes the cameras of a sequence's frames as transforms.json in the folder of its first frame,
+// the frames' paths relative to it.
+void writeTransforms(std::vector<candela::DatasetFrame> frames) {
+    const fs::path file = transformsFileOf(frames.front().file);
+    const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+    for (candela::DatasetFrame& frame : frames) frame.file = fs::path(frame.file).lexically_relative(folder).generic_string();
+    writeText(file.string(), candela::transformsJson(frames));
 }
 
 // Renders every image of one scene (each variant asked for, each frame of a sequence) through the
@@ -146,6 +181,7 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
     api.dither = options.dither;
     api.format = assets::isFloatFormat(run.format) ? candela::PixelFormat::Rgba32Float : candela::PixelFormat::Rgba8Srgb;
     const float aspect = float(options.width) / float(options.height);
+    const candela::SequenceOptions sequence = sequenceOptions(options);
     std::string cameraLine;  // the last camera printed (--verbose)
     double time = 0.0;       // the pose's, of the frame being drawn
 
@@ -167,7 +203,7 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
         // --variant all: each variant's files are known once the file is read.
         if (options.resume && options.variant == "all") {
             const std::vector<std::string> outputs = outputsOf(options, r.input, variantName);
-            if (outputsComplete(outputs)) {
+            if (outputsComplete(outputs, run.sequence)) {
                 recordResumed(r, outputs, variant);
                 continue;
             }
@@ -179,6 +215,7 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
             stageStart = Clock::now();
             return true;
         };
+        std::vector<candela::DatasetFrame> cameras;  // of a sequence: its transforms.json
         const candela::FrameCallback write = [&](uint32_t i, const candela::Image& image) {
             r.frameMs.push_back(msSince(stageStart));
             const CapturedFrame& frame = Access::impl(run.session.device()).lastFrame;
@@ -193,13 +230,15 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
             std::string label = variant;
             if (run.sequence) label += (label.empty() ? "" : ", ") + ("frame " + std::to_string(i));
             r.outputs.push_back({out, label.empty() ? "render" : label});
+            if (run.sequence)
+                cameras.push_back({.file = out, .camera = image.camera,
+                                   .environmentRotationDegrees = candela::sequenceFrame(held, api, sequence, i).environmentRotationDegrees});
             progress.clear();
             printWritten(run, out, frame, time, r);
             if (!run.batch) progress.step(i + 1, "frames written");
         };
-        Access::renderSequence(run.session.device(), held, api,
-                               {.frames = options.frames, .fps = options.fps, .turntableDegrees = options.turntableDegrees},
-                               write, run.session.apiEnvironment(), stages, flags);
+        Access::renderSequence(run.session.device(), held, api, sequence, write, run.session.apiEnvironment(), stages, flags);
+        if (run.sequence) writeTransforms(cameras);
     }
     const passes::DrawStats& stats = run.session.renderer().drawStats();
     r.triangles = stats.sceneTriangles;
@@ -219,6 +258,16 @@ assets::ImageFileFormat checkOutputs(const RenderOptions& options, const std::ve
     checkOutPattern(options.out);
     if (!options.out.empty() && options.out.back() == '/')
         throw UserError("--out " + options.out + ": names a folder; give a file in it, e.g. --out " + options.out + "candela.png");
+    if (sequence) {
+        // One transforms.json per scene: the scenes' frames in folders of their own.
+        std::map<fs::path, std::string> cameras;
+        for (const SceneInput& s : scenes) {
+            const fs::path file = transformsFileOf(expandOutPattern(options.out, {s.name, s.path, "default", 0u}));
+            if (const auto [it, inserted] = cameras.emplace(file, s.file.string()); !inserted)
+                throw UserError("--out " + options.out + ": " + it->second + " and " + s.file.string() + " would both write " +
+                                file.string() + " (put {name} or {path} in the folder, e.g. --out 'renders/{path}/%04d.png')");
+        }
+    }
     if (!sequence) {
         bool frameField = usesField(options.out, "frame");
         try {
@@ -227,8 +276,8 @@ assets::ImageFileFormat checkOutputs(const RenderOptions& options, const std::ve
         } catch (const UserError&) {
         }
         if (frameField)
-            throw UserError("--out " + options.out + ": a frame number field without --frames N (an image sequence); "
-                            "give --frames, or write %% for a literal %");
+            throw UserError("--out " + options.out + ": a frame number field without --frames N or --views N (an image "
+                            "sequence); give one, or write %% for a literal %");
     }
     if (options.variant == "all" && !usesField(options.out, "variant"))
         throw UserError("--variant all: --out needs {variant} in its pattern (one image per variant), e.g. --out '{name}-{variant}.png'");
@@ -365,7 +414,7 @@ int runRender(const RenderOptions& options) {
     const std::vector<SceneInput> listed = listScenes(options);
     const std::vector<SceneInput> scenes = shardOf(listed, options.shard);
     const bool single = listed.size() == 1;
-    const bool sequence = options.frames > 1;
+    const bool sequence = options.sequence();
     const assets::ImageFileFormat format = prepareOutputs(options, listed, scenes, sequence);
 
     // --resume: the scenes whose files are all complete are not rendered again (with --variant all,
@@ -375,7 +424,7 @@ int runRender(const RenderOptions& options) {
     std::vector<bool> resumed(scenes.size(), false);
     for (size_t i = 0; i < scenes.size(); ++i) {
         resumed[i] = options.resume && options.variant != "all" &&
-                     outputsComplete(outputsOf(options, scenes[i], options.variant.empty() ? "default" : options.variant));
+                     outputsComplete(outputsOf(options, scenes[i], options.variant.empty() ? "default" : options.variant), sequence);
         if (!resumed[i]) pending.push_back(i);
     }
     if (options.resume)
@@ -414,7 +463,7 @@ int runRender(const RenderOptions& options) {
         recordResumed(r, outputsOf(options, scenes[i], options.variant.empty() ? "default" : options.variant), options.variant);
         log::info((r.input.file.empty() ? std::string("the default scene") : r.input.file.string()) + ": complete already (--resume)");
     };
-    Progress progress("render", run.batch ? scenes.size() : options.frames, options.common.quiet || (run.batch ? false : !sequence));
+    Progress progress("render", run.batch ? scenes.size() : options.frameCount(), options.common.quiet || (run.batch ? false : !sequence));
     std::exception_ptr singleFailure;
     for (size_t k = 0; k < pending.size(); ++k) {
         const size_t i = pending[k];

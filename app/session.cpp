@@ -114,6 +114,7 @@ candela::RenderOptions apiRenderOptions(const SceneRenderOptions& options) {
     api.animations = options.animations;
     api.time = options.time;
     api.variant = options.variant;
+    api.environmentRotationDegrees = options.iblLook.rotationDegrees;
     return api;
 }
 
@@ -127,9 +128,13 @@ void applyRenderFlags(const SceneRenderOptions& options, RenderSettings& setting
     settings.shading = options.shading;
     settings.debugView = options.debugView;
     settings.iblQuality = options.iblQuality;
-    const bool skybox = settings.ibl.skybox;  // the background's, from the API's options
+    // The background's skybox and the environment's rotation (--env-rotation, jittered per view)
+    // come from the API's options.
+    const bool skybox = settings.ibl.skybox;
+    const float rotation = settings.ibl.rotationDegrees;
     settings.ibl = options.iblLook;
     settings.ibl.skybox = skybox;
+    settings.ibl.rotationDegrees = rotation;
     settings.iblCacheDir = options.iblCache;
 }
 

@@ -237,9 +237,14 @@ RenderCall renderCall(const py::kwargs& kwargs, bool sequence, candela::Sequence
                                                           : py::cast<std::vector<std::string>>(value);
         } else if (name == "time") o.time = py::cast<double>(value);
         else if (name == "variant") o.variant = value.is_none() ? "" : py::cast<std::string>(value);
+        else if (name == "environment_rotation") o.environmentRotationDegrees = py::cast<float>(value);
         else if (sequence && name == "frames") sequenceOptions->frames = py::cast<uint32_t>(value);
         else if (sequence && name == "fps") sequenceOptions->fps = py::cast<double>(value);
         else if (sequence && name == "turntable") sequenceOptions->turntableDegrees = py::cast<float>(value);
+        else if (sequence && name == "views") sequenceOptions->views = py::cast<std::vector<std::array<float, 2>>>(value);
+        else if (sequence && name == "lighting_seed") {
+            if (!value.is_none()) sequenceOptions->lightingSeed = py::cast<uint64_t>(value);
+        }
         else throw py::type_error("unexpected keyword argument '" + name + "'");
     }
     if (call.outputs.empty()) inputError("outputs: ask for at least one");
@@ -269,6 +274,7 @@ py::object renderOne(PyDevice& self, const candela::Scene& scene, const RenderCa
     py::object frame = py::module_::import("candela").attr("Frame")();
     frame["color"] = color;
     frame.attr("camera") = py::cast(camera);
+    frame.attr("environment_rotation") = o.environmentRotationDegrees;
     return frame;
 }
 
@@ -281,7 +287,7 @@ struct SequenceIterator {
     uint32_t next = 0;
 
     py::object advance() {
-        if (next >= sequence.frames) throw py::stop_iteration();
+        if (next >= candela::frameCount(sequence)) throw py::stop_iteration();
         const auto& held = py::cast<const candela::Scene&>(scene);
         RenderCall frameCall = call;
         frameCall.options = candela::sequenceFrame(held, call.options, sequence, next);
@@ -422,7 +428,35 @@ PYBIND11_MODULE(_candela, m) {
     py::class_<SequenceIterator>(m, "SequenceIterator", "The frames of Device.render_sequence, rendered as they are asked for.")
         .def("__iter__", [](py::object self) { return self; })
         .def("__next__", &SequenceIterator::advance)
-        .def("__len__", [](const SequenceIterator& s) { return s.sequence.frames - s.next; });
+        .def("__len__", [](const SequenceIterator& s) { return candela::frameCount(s.sequence) - s.next; });
+
+    const auto tuples = [](const std::vector<std::array<float, 2>>& views) {
+        py::list out;
+        for (const auto& view : views) out.append(py::make_tuple(view[0], view[1]));
+        return out;
+    };
+    m.def("sphere_views", [tuples](uint32_t count) { return tuples(candela::sphereViews(count)); }, py::arg("count"),
+          "count (azimuth, polar) directions in degrees spread evenly over the sphere (a Fibonacci lattice), for "
+          "render_sequence(views=...)");
+    m.def("ring_views", [tuples](uint32_t count, float elevation) { return tuples(candela::ringViews(count, elevation)); },
+          py::arg("count"), py::arg("elevation"),
+          "count (azimuth, polar) directions in degrees on a ring `elevation` degrees above the horizon");
+    m.def("transforms_json",
+          [](const py::iterable& frames) {
+              std::vector<candela::DatasetFrame> out;
+              for (const py::handle& item : frames) {
+                  const auto pair = py::cast<py::tuple>(item);
+                  if (pair.size() != 2) throw py::type_error("transforms_json: expected (file, Frame) pairs");
+                  const py::object frame = pair[1];
+                  out.push_back({.file = py::cast<std::filesystem::path>(pair[0]).generic_string(),
+                                 .camera = py::cast<candela::CameraInfo>(frame.attr("camera")),
+                                 .environmentRotationDegrees = py::cast<float>(frame.attr("environment_rotation"))});
+              }
+              return candela::transformsJson(out);
+          },
+          py::arg("frames"),
+          "The cameras of (file, Frame) pairs as NeRF's transforms.json text (files relative to its folder), as "
+          "`candela render --views` writes it.");
 
     py::class_<PyDevice>(m, "Device", "A Vulkan 1.3 device and a renderer on it; a context manager (close() on exit).")
         .def(py::init([](const std::string& device, const std::string& profile, bool validation, const std::string& pipelineCache,
@@ -464,8 +498,11 @@ PYBIND11_MODULE(_candela, m) {
              [](py::object self, py::object scene, const py::kwargs& kwargs) {
                  SequenceIterator iterator{.device = self, .scene = scene};
                  iterator.call = renderCall(kwargs, true, &iterator.sequence);
-                 if (iterator.sequence.frames == 0) inputError("an image sequence of 0 frames");
-                 if (!(iterator.sequence.fps > 0.0)) inputError("an image sequence at " + std::to_string(iterator.sequence.fps) + " frames per second");
+                 if (iterator.sequence.views.empty()) {
+                     if (iterator.sequence.frames == 0) inputError("an image sequence of 0 frames");
+                     if (!(iterator.sequence.fps > 0.0))
+                         inputError("an image sequence at " + std::to_string(iterator.sequence.fps) + " frames per second");
+                 }
                  py::cast<const candela::Scene&>(scene);  // a TypeError now, not at the first frame
                  return iterator;
              },

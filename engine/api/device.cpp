@@ -146,34 +146,61 @@ CameraInfo cameraInfo(const scene::ViewSetup& view, uint32_t width, uint32_t hei
     return info;
 }
 
-// The orbit (θ°, φ°, r) of frame 0 of a turntable that turns `sequence.turntableDegrees` over its
-// frames, r fixed at the largest distance any frame's framing needs (framing from each azimuth would
-// move the camera in and out); nullopt when the sequence is no turntable of the orbit camera.
-std::optional<glm::vec3> turntableOrbit(const scene::Scene& scene, const CameraSettings& camera, float aspect,
-                                        const pose::ScenePose& pose, const SequenceOptions& sequence) {
-    if (sequence.frames <= 1 || sequence.turntableDegrees == 0.0f || camera.gltfCamera || camera.cameraToWorld)
-        return std::nullopt;
-    glm::vec3 orbit = camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f));
-    if (orbit.z <= 0.0f) {
-        CameraSettings turned = camera;
-        float radius = 0.0f;
-        for (uint32_t i = 0; i < sequence.frames; ++i) {
-            turned.orbit = orbit + glm::vec3(sequence.turntableDegrees * float(i) / float(sequence.frames), 0.0f, 0.0f);
-            radius = std::max(radius, Renderer::orbitCamera(scene, turned, aspect, &pose).radius);
-        }
-        orbit.z = radius;
+// The orbit camera's (θ°, φ°, r) for each frame of a turntable or of views, r fixed at the largest
+// distance any frame's framing needs (framing from each direction would move the camera in and
+// out) unless the orbit gives one; empty when the sequence is neither, or is not of the orbit camera.
+std::vector<glm::vec3> sequenceOrbits(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                                      const pose::ScenePose& pose, const SequenceOptions& sequence) {
+    const bool turntable = sequence.views.empty() && sequence.frames > 1 && sequence.turntableDegrees != 0.0f;
+    if (!turntable && sequence.views.empty()) return {};
+    if (camera.gltfCamera || camera.cameraToWorld) {
+        if (turntable) return {};  // a turntable of a fixed camera: it does not turn (as ever)
+        throw UserError("views of a scene need the orbit camera, not a glTF or placed camera");
     }
-    return orbit;
+    const glm::vec3 base = camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f));
+    std::vector<glm::vec3> orbits;
+    for (uint32_t i = 0; i < frameCount(sequence); ++i)
+        orbits.push_back(turntable ? base + glm::vec3(sequence.turntableDegrees * float(i) / float(sequence.frames), 0.0f, 0.0f)
+                                   : glm::vec3(sequence.views[i][0], sequence.views[i][1], base.z));
+    if (base.z <= 0.0f) {
+        CameraSettings framed = camera;
+        float radius = 0.0f;
+        for (const glm::vec3& orbit : orbits) {
+            framed.orbit = glm::vec3(orbit.x, orbit.y, 0.0f);
+            radius = std::max(radius, Renderer::orbitCamera(scene, framed, aspect, &pose).radius);
+        }
+        for (glm::vec3& orbit : orbits) orbit.z = radius;
+    }
+    return orbits;
 }
 
-// Frame i's orbit of the turntable that starts at `orbit`.
-glm::vec3 turnedOrbit(const glm::vec3& orbit, const SequenceOptions& sequence, uint32_t i) {
-    return orbit + glm::vec3(sequence.turntableDegrees * float(i) / float(sequence.frames), 0.0f, 0.0f);
+// The further turn of frame i's environment with jittered lighting: 360° × a uniform number from
+// (seed, i) by SplitMix64, the same on every machine.
+float lightingJitterDegrees(uint64_t seed, uint32_t i) {
+    uint64_t z = seed + (uint64_t(i) + 1) * 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    z ^= z >> 31;
+    return float(double(z >> 11) * 0x1.0p-53 * 360.0);
 }
 
 void checkSequence(const SequenceOptions& sequence) {
+    if (!sequence.views.empty()) {
+        for (const auto& view : sequence.views)
+            if (!std::isfinite(view[0]) || !std::isfinite(view[1])) throw UserError("a view direction is not finite");
+        return;
+    }
     if (sequence.frames == 0) throw UserError("an image sequence of 0 frames");
     if (!(sequence.fps > 0.0)) throw UserError("an image sequence at " + std::to_string(sequence.fps) + " frames per second");
+}
+
+// The time of frame i: views are all of one pose.
+double frameTime(const RenderOptions& options, const SequenceOptions& sequence, uint32_t i) {
+    return sequence.views.empty() ? options.time + double(i) / sequence.fps : options.time;
+}
+
+float frameEnvironmentRotation(const RenderOptions& options, const SequenceOptions& sequence, uint32_t i) {
+    return options.environmentRotationDegrees + (sequence.lightingSeed ? lightingJitterDegrees(*sequence.lightingSeed, i) : 0.0f);
 }
 
 }  // namespace
@@ -189,6 +216,7 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
     settings.msaa = options.msaa;
     settings.shadingPath = shadingPathOf(options.shadingPath);
     settings.environment = environment;
+    settings.ibl.rotationDegrees = options.environmentRotationDegrees;
     // With an environment the skybox is the background unless another one is asked for.
     Background background = options.background;
     constexpr float kGrey = 0x26 / 255.0f;  // #262626
@@ -284,22 +312,22 @@ void Access::renderFrames(Device& device, const Scene& scene, const RenderOption
         settings.pose = &pose;
 
         const float aspect = float(settings.width) / float(settings.height);
-        const std::optional<glm::vec3> turntable = turntableOrbit(held.scene, settings.camera, aspect, pose, sequence);
-        // Frame i's pose and camera, and the front end's settings for it.
+        const std::vector<glm::vec3> orbits = sequenceOrbits(held.scene, settings.camera, aspect, pose, sequence);
+        const uint32_t frames = frameCount(sequence);
+        // Frame i's pose, camera and lighting, and the front end's settings for it.
         const auto setUpFrame = [&](uint32_t i) {
-            if (sequence.frames > 1) {
-                pose.evaluate(options.time + double(i) / sequence.fps);
-                if (turntable) settings.camera.orbit = turnedOrbit(*turntable, sequence, i);
-            }
+            if (frames > 1 && sequence.views.empty()) pose.evaluate(frameTime(options, sequence, i));
+            if (!orbits.empty()) settings.camera.orbit = orbits[i];
+            settings.ibl.rotationDegrees = frameEnvironmentRotation(options, sequence, i);
             if (hook) hook(settings);
         };
         setUpFrame(0);
-        reportProgress(impl, progress, {RenderProgress::Stage::Upload, 0, sequence.frames});
+        reportProgress(impl, progress, {RenderProgress::Stage::Upload, 0, frames});
         impl.renderer.validateSettings(settings);
         impl.renderer.upload(settings);
-        for (uint32_t i = 0; i < sequence.frames; ++i) {
+        for (uint32_t i = 0; i < frames; ++i) {
             if (i > 0) setUpFrame(i);
-            reportProgress(impl, progress, {RenderProgress::Stage::Frame, i, sequence.frames});
+            reportProgress(impl, progress, {RenderProgress::Stage::Frame, i, frames});
             const CameraInfo camera = cameraInfo(Renderer::resolveView(held.scene, settings.camera, aspect, settings.pose),
                                                  settings.width, settings.height);
             impl.lastFrame = impl.renderer.capture(settings);
@@ -314,19 +342,34 @@ RenderOptions sequenceFrame(const Scene& scene, const RenderOptions& options, co
     RenderOptions out = options;
     translateErrors(held.source, [&] {
         checkSequence(sequence);
-        if (index >= sequence.frames)
-            throw UserError("frame " + std::to_string(index) + " of a sequence of " + std::to_string(sequence.frames));
+        if (index >= frameCount(sequence))
+            throw UserError("frame " + std::to_string(index) + " of a sequence of " + std::to_string(frameCount(sequence)));
         if (options.width == 0 || options.height == 0) throw UserError("an image of " + std::to_string(options.width) + "x" + std::to_string(options.height) + " pixels");
         pose::ScenePose pose(held, pose::selectAnimations(held, options.animations));
         pose.evaluate(options.time);
         const float aspect = float(options.width) / float(options.height);
-        out.time = options.time + double(index) / sequence.fps;
-        if (const auto turntable = turntableOrbit(held, cameraSettings(options), aspect, pose, sequence)) {
-            const glm::vec3 orbit = turnedOrbit(*turntable, sequence, index);
-            out.camera.orbit = std::array<float, 3>{orbit.x, orbit.y, orbit.z};
-        }
+        out.time = frameTime(options, sequence, index);
+        out.environmentRotationDegrees = frameEnvironmentRotation(options, sequence, index);
+        const std::vector<glm::vec3> orbits = sequenceOrbits(held, cameraSettings(options), aspect, pose, sequence);
+        if (!orbits.empty()) out.camera.orbit = std::array<float, 3>{orbits[index].x, orbits[index].y, orbits[index].z};
     });
     return out;
+}
+
+std::vector<std::array<float, 2>> sphereViews(uint32_t count) {
+    std::vector<std::array<float, 2>> views;
+    const double golden = 180.0 * (3.0 - std::sqrt(5.0));  // 137.5°
+    for (uint32_t i = 0; i < count; ++i) {
+        const double y = 1.0 - 2.0 * (i + 0.5) / count;  // cos φ at equal steps
+        views.push_back({float(std::fmod(golden * i, 360.0)), float(glm::degrees(std::acos(y)))});
+    }
+    return views;
+}
+
+std::vector<std::array<float, 2>> ringViews(uint32_t count, float elevationDegrees) {
+    std::vector<std::array<float, 2>> views;
+    for (uint32_t i = 0; i < count; ++i) views.push_back({360.0f * float(i) / float(count), 90.0f - elevationDegrees});
+    return views;
 }
 
 Camera lookAt(const std::array<float, 3>& eye, const std::array<float, 3>& target, const std::array<float, 3>& up) {

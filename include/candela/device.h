@@ -88,10 +88,12 @@ private:
     friend struct Access;
 };
 
-// The options of frame `index` of `sequence` (index < sequence.frames): RenderOptions::time
-// advanced by index / fps and, for a turntable, the orbit camera turned, at the one distance that
-// frames every frame. Device::renderSequence renders exactly these; with them a caller renders the
-// frames one at a time. Throws InputError for a sequence of 0 frames, fps ≤ 0 or an index beyond it.
+// The options of frame `index` of `sequence` (index < frameCount(sequence)): RenderOptions::time
+// advanced by index / fps, or for views the orbit camera's direction views[index]; for a turntable
+// the orbit camera turned; the orbit's one distance that frames every frame; the environment's
+// jittered rotation. Device::renderSequence renders exactly these; with them a caller renders the
+// frames one at a time. Throws InputError for a sequence of 0 frames, fps ≤ 0, an index beyond it,
+// or views of a glTF or placed camera.
 CANDELA_API RenderOptions sequenceFrame(const Scene& scene, const RenderOptions& options,
                                         const SequenceOptions& sequence, uint32_t index);
 

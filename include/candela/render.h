@@ -67,6 +67,7 @@ struct RenderOptions {
     std::vector<std::string> animations;
     double time = 0.0;
     std::string variant;                  // a KHR_materials_variants name; "": the default materials
+    float environmentRotationDegrees = 0.0f;  // turns the environment about +Y (from +X towards +Z)
 };
 
 // An image sequence: frame i shows RenderOptions::time + i / fps; with turntableDegrees the orbit
@@ -75,7 +76,27 @@ struct SequenceOptions {
     uint32_t frames = 1;
     double fps = 30.0;
     float turntableDegrees = 0.0f;
+    // Views of one pose instead: when not empty, frame i looks from the orbit direction views[i]
+    // (azimuth°, polar angle°, as Camera::orbit), all at the one distance that frames every view
+    // (or Camera::orbit's distance when given), at RenderOptions::time; frames, fps and
+    // turntableDegrees are then not used. sphereViews() and ringViews() make them.
+    std::vector<std::array<float, 2>> views;
+    // Jittered lighting: frame i's environment turned by a further angle in [0°, 360°) drawn from
+    // (seed, i) — the same for the same seed on every machine. Unset: no jitter.
+    std::optional<uint64_t> lightingSeed;
 };
+
+// The number of images `sequence` makes: views.size() when views are given, else frames.
+inline uint32_t frameCount(const SequenceOptions& sequence) {
+    return sequence.views.empty() ? sequence.frames : uint32_t(sequence.views.size());
+}
+
+// `count` directions spread evenly over the sphere (a Fibonacci lattice: polar angles at equal
+// steps of cos φ, azimuths 137.5° apart), from the top down.
+CANDELA_API std::vector<std::array<float, 2>> sphereViews(uint32_t count);
+// `count` directions on a ring `elevationDegrees` above the horizon, azimuths 360° / count apart
+// from 0 (+Z).
+CANDELA_API std::vector<std::array<float, 2>> ringViews(uint32_t count, float elevationDegrees);
 
 // Where a render stands, for a progress callback (Device::render).
 struct RenderProgress {

@@ -27,14 +27,19 @@ from ._candela import (
     __version__,
     load_environment,
     load_scene,
+    ring_views,
+    sphere_views,
+    transforms_json,
 )
 
 
 class Frame(dict):
     """One rendered image: output name -> NumPy array (height x width x channels, C-contiguous,
-    owned by NumPy), and `camera`, the CameraInfo it was rendered with."""
+    owned by NumPy); `camera`, the CameraInfo it was rendered with, and `environment_rotation`,
+    the environment's turn in degrees (jittered per view with lighting_seed)."""
 
     camera: CameraInfo
+    environment_rotation: float
 
     def __repr__(self):
         shapes = ", ".join(f"{name}: {array.dtype}{list(array.shape)}" for name, array in self.items())
@@ -44,5 +49,5 @@ class Frame(dict):
 __all__ = [
     "Camera", "CameraInfo", "CancelledError", "Device", "DeviceError", "DeviceLostError", "Environment", "Error",
     "Frame", "InputError", "InternalFailure", "OutOfMemoryError", "Scene", "SequenceIterator", "__version__",
-    "load_environment", "load_scene",
+    "load_environment", "load_scene", "ring_views", "sphere_views", "transforms_json",
 ]

@@ -1,5 +1,5 @@
 # Type hints of the module candela (docs/python.md).
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from os import PathLike
 from types import TracebackType
 from typing import Literal
@@ -79,6 +79,11 @@ def load_environment(source: _Source | None = None, *, name: str = "") -> Enviro
 
 class Frame(dict[str, numpy.ndarray]):
     camera: CameraInfo
+    environment_rotation: float
+
+def sphere_views(count: int) -> list[tuple[float, float]]: ...
+def ring_views(count: int, elevation: float) -> list[tuple[float, float]]: ...
+def transforms_json(frames: Iterable[tuple[str | PathLike[str], Frame]]) -> str: ...
 
 _Output = Literal["color"]
 _Tonemap = Literal["pbr-neutral", "aces", "agx", "reinhard", "linear"]
@@ -111,12 +116,13 @@ class Device:
                dtype: numpy.typing.DTypeLike = numpy.uint8, tonemap: _Tonemap = "pbr-neutral", exposure: float = 0.0,
                msaa: int | None = None, shading_path: _ShadingPath = "auto", background: _Background = "auto",
                dither: bool = False, animations: Sequence[str] | str = (), time: float = 0.0,
-               variant: str | None = None) -> Frame: ...
+               variant: str | None = None, environment_rotation: float = 0.0) -> Frame: ...
     def render_sequence(self, scene: Scene, *, frames: int = 1, fps: float = 30.0, turntable: float = 0.0,
+                        views: Sequence[tuple[float, float]] = (), lighting_seed: int | None = None,
                         width: int = 1280, height: int = 720, camera: Camera | None = None,
                         outputs: Sequence[_Output] | _Output = ("color",), environment: Environment | None = None,
                         dtype: numpy.typing.DTypeLike = numpy.uint8, tonemap: _Tonemap = "pbr-neutral",
                         exposure: float = 0.0, msaa: int | None = None, shading_path: _ShadingPath = "auto",
                         background: _Background = "auto", dither: bool = False,
                         animations: Sequence[str] | str = (), time: float = 0.0,
-                        variant: str | None = None) -> SequenceIterator: ...
+                        variant: str | None = None, environment_rotation: float = 0.0) -> SequenceIterator: ...

@@ -6,6 +6,11 @@
 #include "run_candela.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <set>
 
 namespace candela::test {
 namespace {
@@ -76,6 +81,40 @@ TEST(CameraCli, ATurntableKeepsOneDistance) {
     const std::string radius = orbits[0].substr(orbits[0].rfind(',') + 1);
     for (size_t i = 0; i < orbits.size(); ++i)
         EXPECT_EQ(orbits[i], std::to_string(90 * i) + ",75," + radius) << r.stderrText;
+}
+
+// --views N: N images from the sphere's directions at one distance, and transforms.json beside them
+// with each image's camera (docs/datasets.md); two scenes' views may not share one transforms.json.
+TEST(CameraCli, ViewsWriteTheirImagesAndTransformsJson) {
+    TempDir dir("candela_camera_cli_views");
+    const Result r = run("render --views 5 --view-ring 10 --light-seed 3 --out " + (dir / "grid/v_%02d.png").string() + kSmall);
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    std::ifstream in(dir / "grid/transforms.json");
+    const nlohmann::json json = nlohmann::json::parse(in);
+    ASSERT_EQ(json["frames"].size(), 5u);
+    EXPECT_EQ(json["w"], 96);
+    EXPECT_EQ(json["h"], 64);
+    std::set<double> rotations;
+    for (size_t i = 0; i < 5; ++i) {
+        const nlohmann::json& frame = json["frames"][i];
+        char name[16];
+        std::snprintf(name, sizeof name, "v_%02zu.png", i);
+        EXPECT_EQ(frame["file_path"], name);
+        EXPECT_TRUE(fs::exists(dir / "grid" / name));
+        // The ring 10° above the horizon, azimuths 72° apart: the eye at height r·sin 10°.
+        const auto& m = frame["transform_matrix"];
+        const double x = m[0][3], y = m[1][3], z = m[2][3];
+        const double radius = std::sqrt(x * x + y * y + z * z);
+        EXPECT_NEAR(y / radius, std::sin(10.0 * 3.14159265358979 / 180.0), 1e-5) << i;
+        EXPECT_NEAR(std::atan2(x, z) * 180.0 / 3.14159265358979, i <= 2 ? 72.0 * i : 72.0 * i - 360.0, 1e-3) << i;
+        rotations.insert(frame["environment_rotation_degrees"].get<double>());
+    }
+    EXPECT_EQ(rotations.size(), 5u);  // jittered lighting
+    // Two scenes writing views into one folder: one transforms.json each would collide.
+    const Result both = run("render --views 2 " + (dir / "a.glb").string() + " " + (dir / "b.glb").string() + " --out " +
+                            (dir / "out/{name}_%02d.png").string() + kSmall);
+    EXPECT_EQ(both.exitCode, 2);
+    EXPECT_NE(both.stderrText.find("would both write " + (dir / "out/transforms.json").string()), std::string::npos) << both.stderrText;
 }
 
 TEST(CameraCli, AGltfCameraIsPrintedByItsIndex) {

@@ -12,6 +12,8 @@
 #include <cstdlib>
 #include <numbers>
 
+#include <glm/glm.hpp>
+
 namespace candela::test::api_camera_test {
 namespace {
 
@@ -125,6 +127,86 @@ TEST(ApiCamera, ImpossibleCamerasAreInputErrors) {
     options.camera.cameraToWorld = std::array<float, 16>{};  // singular, last row not 0 0 0 1
     EXPECT_THROW(device.render(grid, options), InputError);
     EXPECT_EQ(messages(device), 0u);
+}
+
+// The direction (unit vector) of orbit angles (θ°, φ°), as the orbit camera places its eye.
+glm::dvec3 directionOf(const std::array<float, 2>& view) {
+    const double theta = glm::radians(double(view[0])), phi = glm::radians(double(view[1]));
+    return {std::sin(phi) * std::sin(theta), std::cos(phi), std::sin(phi) * std::cos(theta)};
+}
+
+TEST(ApiCamera, SphereViewsSpreadEvenlyAndRingViewsKeepTheirElevation) {
+    const std::vector<std::array<float, 2>> sphere = sphereViews(200);
+    ASSERT_EQ(sphere.size(), 200u);
+    glm::dvec3 sum(0.0);
+    double closest = 1e9;
+    for (size_t i = 0; i < sphere.size(); ++i) {
+        sum += directionOf(sphere[i]);
+        for (size_t j = 0; j < i; ++j)
+            closest = std::min(closest, std::acos(glm::clamp(glm::dot(directionOf(sphere[i]), directionOf(sphere[j])), -1.0, 1.0)));
+    }
+    // Even: the directions balance out, and no two are much closer than the spacing of an even
+    // spread (the square root of the sphere's area per point; a Fibonacci lattice keeps ~0.8 of it).
+    EXPECT_LT(glm::length(sum) / 200.0, 0.01);
+    EXPECT_GT(closest, 0.7 * std::sqrt(4.0 * std::numbers::pi / 200.0));
+    const std::vector<std::array<float, 2>> ring = ringViews(8, 20.0f);
+    ASSERT_EQ(ring.size(), 8u);
+    for (size_t i = 0; i < ring.size(); ++i) {
+        EXPECT_FLOAT_EQ(ring[i][0], 45.0f * float(i));
+        EXPECT_FLOAT_EQ(ring[i][1], 70.0f);
+    }
+}
+
+TEST(ApiCamera, ViewsLookFromTheirDirectionsAtOneDistanceWithJitteredLighting) {
+    Device device(validated());
+    const Scene grid = Scene::sphereGrid(3);
+    const Environment sky = Environment::sky();
+    RenderOptions options = small();
+    options.camera.orbit.reset();
+    const SequenceOptions views{.views = sphereViews(5), .lightingSeed = 42};
+    std::vector<Image> images;
+    device.renderSequence(grid, options, views, [&](uint32_t, const Image& image) { images.push_back(image); }, &sky);
+    ASSERT_EQ(images.size(), 5u);
+    double radius = -1.0;
+    std::vector<float> rotations;
+    for (uint32_t i = 0; i < 5; ++i) {
+        const auto& m = images[i].camera.cameraToWorld;
+        const glm::dvec3 eye(m[12], m[13], m[14]);  // the grid is centred on the origin
+        if (radius < 0.0) radius = glm::length(eye);
+        EXPECT_NEAR(glm::length(eye), radius, 1e-4 * radius) << "view " << i;
+        EXPECT_GT(glm::dot(glm::normalize(eye), directionOf(views.views[i])), 0.99999) << "view " << i;
+        const RenderOptions frame = sequenceFrame(grid, options, views, i);
+        EXPECT_EQ(frame.time, options.time);  // one pose
+        rotations.push_back(frame.environmentRotationDegrees);
+        EXPECT_EQ(sequenceFrame(grid, options, views, i).environmentRotationDegrees, rotations.back());  // the same seed, the same turn
+        EXPECT_EQ(device.render(grid, frame, &sky).pixels, images[i].pixels) << "view " << i;
+    }
+    for (size_t i = 1; i < rotations.size(); ++i) EXPECT_NE(rotations[i], rotations[0]);
+    for (float r : rotations) EXPECT_TRUE(r >= 0.0f && r < 360.0f) << r;
+    SequenceOptions otherSeed = views;
+    otherSeed.lightingSeed = 43;
+    EXPECT_NE(sequenceFrame(grid, options, otherSeed, 0).environmentRotationDegrees, rotations[0]);
+    // Views need the orbit camera.
+    RenderOptions placed = options;
+    placed.camera = lookAt({0.0f, 0.0f, 5.0f}, {0.0f, 0.0f, 0.0f});
+    EXPECT_THROW(device.renderSequence(grid, placed, views, [](uint32_t, const Image&) {}), InputError);
+    EXPECT_EQ(messages(device), 0u);
+}
+
+TEST(ApiCamera, TransformsJsonHoldsEachFramesCamera) {
+    CameraInfo camera;
+    camera.width = 64;
+    camera.height = 48;
+    camera.intrinsics = {50.0f, 50.0f, 32.0f, 24.0f};
+    camera.znear = 0.01f;
+    camera.cameraToWorld = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 2, 3, 1};
+    const std::string json = transformsJson({{"a.png", camera, 10.0f}, {"b.png", camera, 20.0f}});
+    for (const char* field : {"\"fl_x\": 50.0", "\"cx\": 32.0", "\"w\": 64", "\"file_path\": \"b.png\"", "\"far\": null",
+                              "\"environment_rotation_degrees\": 20.0"})
+        EXPECT_NE(json.find(field), std::string::npos) << field << " in\n" << json;
+    camera.orthographic = true;
+    EXPECT_THROW(transformsJson({{"a.png", camera, 0.0f}}), InputError);
+    EXPECT_THROW(transformsJson({}), InputError);
 }
 
 }  // namespace
