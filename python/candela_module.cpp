@@ -435,6 +435,25 @@ PYBIND11_MODULE(_candela, m) {
         for (const auto& view : views) out.append(py::make_tuple(view[0], view[1]));
         return out;
     };
+    m.def("write_image",
+          [](const std::filesystem::path& path, const py::array& pixels) {
+              candela::Image image;
+              if (pixels.ndim() != 3 || pixels.shape(2) != 4) inputError(path.string() + ": write_image takes an H x W x 4 array");
+              image.height = uint32_t(pixels.shape(0));
+              image.width = uint32_t(pixels.shape(1));
+              if (pixels.dtype().equal(py::dtype::of<uint8_t>())) image.format = candela::PixelFormat::Rgba8Srgb;
+              else if (pixels.dtype().equal(py::dtype::of<float>())) image.format = candela::PixelFormat::Rgba32Float;
+              else if (pixels.dtype().equal(py::dtype("float16"))) image.format = candela::PixelFormat::Rgba16Float;
+              else inputError(path.string() + ": write_image takes uint8, float16 or float32 pixels");
+              const auto contiguous = py::array::ensure(pixels, py::array::c_style);
+              image.pixels.resize(size_t(contiguous.nbytes()));
+              std::memcpy(image.pixels.data(), contiguous.data(), image.pixels.size());
+              py::gil_scoped_release released;
+              candela::writeImage(path.string(), image);
+          },
+          py::arg("path"), py::arg("pixels"),
+          "Writes an H x W x 4 array as `candela render --out` does: .png from uint8 (sRGB), .exr or .pfm from float16 "
+          "or float32 (linear), through a temporary file renamed into place.");
     m.def("sphere_views", [tuples](uint32_t count) { return tuples(candela::sphereViews(count)); }, py::arg("count"),
           "count (azimuth, polar) directions in degrees spread evenly over the sphere (a Fibonacci lattice), for "
           "render_sequence(views=...)");

@@ -30,6 +30,7 @@ from ._candela import (
     ring_views,
     sphere_views,
     transforms_json,
+    write_image,
 )
 
 
@@ -49,5 +50,5 @@ class Frame(dict):
 __all__ = [
     "Camera", "CameraInfo", "CancelledError", "Device", "DeviceError", "DeviceLostError", "Environment", "Error",
     "Frame", "InputError", "InternalFailure", "OutOfMemoryError", "Scene", "SequenceIterator", "__version__",
-    "load_environment", "load_scene", "ring_views", "sphere_views", "transforms_json",
+    "load_environment", "load_scene", "ring_views", "sphere_views", "transforms_json", "write_image",
 ]

@@ -35,3 +35,9 @@ def sky():
 @pytest.fixture(scope="session")
 def grid():
     return candela.Scene.sphere_grid(3)
+
+
+def pytest_configure(config):
+    # Debian 12's dask.distributed (2022.12) calls tornado's deprecated IOLoop.make_current when a
+    # LocalCluster starts: theirs, not Candela's.
+    config.addinivalue_line("filterwarnings", "ignore:make_current is deprecated:DeprecationWarning")
