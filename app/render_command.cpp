@@ -107,22 +107,33 @@ std::vector<std::string> outputsOf(const RenderOptions& options, const SceneInpu
     return out;
 }
 
-// The cameras of a sequence's frames (transforms.json) go into the folder of its first frame.
-fs::path transformsFileOf(const std::string& firstFrame) { return fs::path(firstFrame).parent_path() / "transforms.json"; }
+// The file of a sequence's cameras, in the folder of its first frame: transforms.json when that
+// folder holds one sequence — the run has one scene or the --out pattern's folder has {name} or
+// {path}, and one variant or {variant} in the folder — else NAME.transforms.json (NAME-VARIANT
+// with --variant all), beside the other scenes' frames.
+fs::path transformsFileOf(const RenderOptions& options, const SceneInput& input, const std::string& variantName,
+                          const std::string& firstFrame, bool oneScene) {
+    const std::string folderPattern = fs::path(options.out).parent_path().string();
+    const bool sceneFolder = oneScene || folderPattern.find("{name}") != std::string::npos ||
+                             folderPattern.find("{path}") != std::string::npos;
+    const bool variantFolder = options.variant != "all" || folderPattern.find("{variant}") != std::string::npos;
+    const fs::path folder = fs::path(firstFrame).parent_path();
+    if (sceneFolder && variantFolder) return folder / "transforms.json";
+    return folder / (input.name + (options.variant == "all" ? "-" + variantName : "") + ".transforms.json");
+}
 
 // --resume: whether every file of `outputs` is there and a whole image, and for a sequence its
-// transforms.json a JSON document with a camera for each; removes what a killed writer left beside
+// `transforms` file a JSON document with a camera for each; removes what a killed writer left beside
 // each (its temporary files) either way.
-bool outputsComplete(const std::vector<std::string>& outputs, bool sequence) {
+bool outputsComplete(const std::vector<std::string>& outputs, const std::optional<fs::path>& transforms) {
     bool complete = true;
     for (const std::string& out : outputs) {
         assets::removeStaleTemporaries(out);
         complete = complete && assets::imageFileComplete(out);
     }
-    if (sequence && !outputs.empty()) {
-        const fs::path transforms = transformsFileOf(outputs.front());
-        assets::removeStaleTemporaries(transforms);
-        std::ifstream in(transforms);
+    if (transforms) {
+        assets::removeStaleTemporaries(*transforms);
+        std::ifstream in(*transforms);
         const nlohmann::json json = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
         complete = complete && json.is_object() && json.contains("frames") && json["frames"].size() == outputs.size();
     }
@@ -147,10 +158,9 @@ candela::SequenceOptions sequenceOptions(const RenderOptions& options) {
     return sequence;
 }
 
-// Writes the cameras of a sequence's frames as transforms.json in the folder of its first frame,
-// the frames' paths relative to it.
-void writeTransforms(std::vector<candela::DatasetFrame> frames) {
-    const fs::path file = transformsFileOf(frames.front().file);
+// Writes the cameras of a sequence's frames to `file` (transformsFileOf), the frames' paths
+// relative to its folder.
+void writeTransforms(const fs::path& file, std::vector<candela::DatasetFrame> frames) {
     const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
     for (candela::DatasetFrame& frame : frames) frame.file = fs::path(frame.file).lexically_relative(folder).generic_string();
     writeText(file.string(), candela::transformsJson(frames));
@@ -182,6 +192,11 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
     api.format = assets::isFloatFormat(run.format) ? candela::PixelFormat::Rgba32Float : candela::PixelFormat::Rgba8Srgb;
     const float aspect = float(options.width) / float(options.height);
     const candela::SequenceOptions sequence = sequenceOptions(options);
+    // A sequence's cameras file, given its frames.
+    const auto camerasOf = [&](const std::vector<std::string>& frames, const std::string& variantName) -> std::optional<fs::path> {
+        if (!run.sequence) return std::nullopt;
+        return transformsFileOf(options, r.input, variantName, frames.front(), !run.batch);
+    };
     std::string cameraLine;  // the last camera printed (--verbose)
     double time = 0.0;       // the pose's, of the frame being drawn
 
@@ -203,7 +218,7 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
         // --variant all: each variant's files are known once the file is read.
         if (options.resume && options.variant == "all") {
             const std::vector<std::string> outputs = outputsOf(options, r.input, variantName);
-            if (outputsComplete(outputs, run.sequence)) {
+            if (outputsComplete(outputs, camerasOf(outputs, variantName))) {
                 recordResumed(r, outputs, variant);
                 continue;
             }
@@ -238,7 +253,7 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
             if (!run.batch) progress.step(i + 1, "frames written");
         };
         Access::renderSequence(run.session.device(), held, api, sequence, write, run.session.apiEnvironment(), stages, flags);
-        if (run.sequence) writeTransforms(cameras);
+        if (run.sequence) writeTransforms(*camerasOf(outputsOf(options, r.input, variantName), variantName), cameras);
     }
     const passes::DrawStats& stats = run.session.renderer().drawStats();
     r.triangles = stats.sceneTriangles;
@@ -258,16 +273,6 @@ assets::ImageFileFormat checkOutputs(const RenderOptions& options, const std::ve
     checkOutPattern(options.out);
     if (!options.out.empty() && options.out.back() == '/')
         throw UserError("--out " + options.out + ": names a folder; give a file in it, e.g. --out " + options.out + "candela.png");
-    if (sequence) {
-        // One transforms.json per scene: the scenes' frames in folders of their own.
-        std::map<fs::path, std::string> cameras;
-        for (const SceneInput& s : scenes) {
-            const fs::path file = transformsFileOf(expandOutPattern(options.out, {s.name, s.path, "default", 0u}));
-            if (const auto [it, inserted] = cameras.emplace(file, s.file.string()); !inserted)
-                throw UserError("--out " + options.out + ": " + it->second + " and " + s.file.string() + " would both write " +
-                                file.string() + " (put {name} or {path} in the folder, e.g. --out 'renders/{path}/%04d.png')");
-        }
-    }
     if (!sequence) {
         bool frameField = usesField(options.out, "frame");
         try {
@@ -424,7 +429,13 @@ int runRender(const RenderOptions& options) {
     std::vector<bool> resumed(scenes.size(), false);
     for (size_t i = 0; i < scenes.size(); ++i) {
         resumed[i] = options.resume && options.variant != "all" &&
-                     outputsComplete(outputsOf(options, scenes[i], options.variant.empty() ? "default" : options.variant), sequence);
+                     [&] {
+                         const std::string variantName = options.variant.empty() ? "default" : options.variant;
+                         const std::vector<std::string> outputs = outputsOf(options, scenes[i], variantName);
+                         return outputsComplete(outputs, sequence ? std::optional(transformsFileOf(options, scenes[i], variantName,
+                                                                                                   outputs.front(), single))
+                                                                  : std::nullopt);
+                     }();
         if (!resumed[i]) pending.push_back(i);
     }
     if (options.resume)

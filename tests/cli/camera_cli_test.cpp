@@ -110,11 +110,21 @@ TEST(CameraCli, ViewsWriteTheirImagesAndTransformsJson) {
         rotations.insert(frame["environment_rotation_degrees"].get<double>());
     }
     EXPECT_EQ(rotations.size(), 5u);  // jittered lighting
-    // Two scenes writing views into one folder: one transforms.json each would collide.
+    // Two scenes' views in one folder: a cameras file each, named after the scene.
+    for (const char* name : {"a", "b"}) {
+        assets::test::GltfBuilder b;
+        b.addTriangle();
+        b.writeGlb(dir.path(), name);
+    }
     const Result both = run("render --views 2 " + (dir / "a.glb").string() + " " + (dir / "b.glb").string() + " --out " +
                             (dir / "out/{name}_%02d.png").string() + kSmall);
-    EXPECT_EQ(both.exitCode, 2);
-    EXPECT_NE(both.stderrText.find("would both write " + (dir / "out/transforms.json").string()), std::string::npos) << both.stderrText;
+    ASSERT_EQ(both.exitCode, 0) << both.stderrText;
+    EXPECT_FALSE(fs::exists(dir / "out/transforms.json"));
+    for (const char* name : {"a", "b"}) {
+        std::ifstream file(dir / "out" / (std::string(name) + ".transforms.json"));
+        const nlohmann::json cameras = nlohmann::json::parse(file);
+        EXPECT_EQ(cameras["frames"][1]["file_path"], std::string(name) + "_01.png");
+    }
 }
 
 TEST(CameraCli, AGltfCameraIsPrintedByItsIndex) {

@@ -20,13 +20,16 @@ namespace {
 // Flags that a command takes only together with another: the companions both sides of a
 // comparison get.
 const std::map<std::string, std::vector<std::string>> kCompanions = {{"--screenshot", {"--frames", "2"}},
-                                                                      {"--scene-index", {"--scene", "model.glb"}}};
+                                                                      {"--scene-index", {"--scene", "model.glb"}},
+                                                                      {"--view-ring", {"--views", "4"}},
+                                                                      {"--light-seed", {"--views", "4"}}};
 
 // A value for each flag that takes one: it parses for every command taking the flag and differs
 // from its default.
 const std::map<std::string, std::string> kExamples = {
     {"--out", "out"}, {"--width", "64"}, {"--height", "48"}, {"--frames", "3"}, {"--fps", "24"},
     {"--turntable", "90"}, {"--report", "report.json"}, {"--html", "index.html"}, {"--shard", "2/4"},
+    {"--views", "6"}, {"--view-ring", "20"}, {"--light-seed", "7"},
     {"--graph-dot", "graph.dot"}, {"--graph-json", "graph.json"}, {"--screenshot", "shot.png"},
     {"--panels", "camera,debug"}, {"--shaders", "shaders"}, {"--ibl-report", "report.csv"},
     {"--scene", "model.glb"}, {"--scene-index", "1"}, {"--grid", "3"}, {"--variant", "red"},
