@@ -33,6 +33,12 @@ def sky():
 
 
 @pytest.fixture(scope="session")
+def helmet():
+    """DamagedHelmet, read once for the suite."""
+    return candela.load_scene(shared_model("DamagedHelmet"))
+
+
+@pytest.fixture(scope="session")
 def grid():
     return candela.Scene.sphere_grid(3)
 

@@ -33,12 +33,11 @@ def test_the_colour_is_an_array_numpy_owns(device, grid, sky):
 
 
 @pytest.mark.skipif(not CANDELA, reason="CANDELA_EXECUTABLE not set")
-def test_python_renders_what_the_command_line_renders(device, sky, tmp_path):
-    helmet = shared_model("DamagedHelmet")
-    subprocess.run([CANDELA, "render", "--scene", str(helmet), "--width", "64", "--height", "48",
+def test_python_renders_what_the_command_line_renders(device, helmet, sky, tmp_path):
+    subprocess.run([CANDELA, "render", "--scene", str(shared_model("DamagedHelmet")), "--width", "64", "--height", "48",
                     "--pipeline-cache", "off", "--out", str(tmp_path / "cli.pfm")], check=True, capture_output=True)
     cli = read_pfm(tmp_path / "cli.pfm")
-    frame = device.render(device.load_scene(helmet), width=64, height=48, environment=sky, dtype=np.float32)
+    frame = device.render(helmet, width=64, height=48, environment=sky, dtype=np.float32)
     np.testing.assert_array_equal(frame["color"][..., :3], cli)
 
 
@@ -50,10 +49,10 @@ def test_float_formats_hold_the_same_values(device, grid):
     assert full[..., 3].sum() > 0
 
 
-def test_a_scene_from_bytes_is_the_files_scene(device):
-    helmet = shared_model("DamagedHelmet")
-    from_file = device.render(device.load_scene(helmet), width=48, height=48)["color"]
-    from_bytes = device.render(device.load_scene(helmet.read_bytes(), name="helmet.glb"), width=48, height=48)["color"]
+def test_a_scene_from_bytes_is_the_files_scene(device, helmet):
+    from_file = device.render(helmet, width=48, height=48)["color"]
+    from_bytes = device.render(device.load_scene(shared_model("DamagedHelmet").read_bytes(), name="helmet.glb"),
+                               width=48, height=48)["color"]
     np.testing.assert_array_equal(from_file, from_bytes)
 
 
@@ -81,14 +80,13 @@ def test_sequences_play_animations_frame_by_frame(device):
     assert not np.array_equal(frames[0], frames[1])
 
 
-def test_the_gil_is_released_while_rendering(device):
-    helmet = device.load_scene(shared_model("DamagedHelmet"))
+def test_the_gil_is_released_while_rendering(device, helmet):
     device.render(helmet, width=16, height=16)  # uploaded: the render below is the frame alone
     done = threading.Event()
     counted = 0
 
     def render():
-        device.render(helmet, width=512, height=512, msaa=4)
+        device.render(helmet, width=256, height=256, msaa=4)
         done.set()
 
     worker = threading.Thread(target=render)

@@ -32,14 +32,12 @@ def test_views_look_from_their_directions_at_one_distance(device, grid, sky):
 
 
 @pytest.mark.skipif(not CANDELA, reason="CANDELA_EXECUTABLE not set")
-def test_transforms_json_and_images_equal_the_command_lines(device, sky, tmp_path):
-    helmet = shared_model("DamagedHelmet")
-    subprocess.run([CANDELA, "render", "--scene", str(helmet), "--views", "3", "--light-seed", "9", "--width", "48",
+def test_transforms_json_and_images_equal_the_command_lines(device, helmet, sky, tmp_path):
+    subprocess.run([CANDELA, "render", "--scene", str(shared_model("DamagedHelmet")), "--views", "3", "--light-seed", "9", "--width", "48",
                     "--height", "40", "--pipeline-cache", "off", "--out", str(tmp_path / "views/%03d.pfm")],
                    check=True, capture_output=True)
     cli = (tmp_path / "views" / "transforms.json").read_text()
-    scene = device.load_scene(helmet)
-    frames = list(device.render_sequence(scene, views=candela.sphere_views(3), lighting_seed=9, width=48, height=40,
+    frames = list(device.render_sequence(helmet, views=candela.sphere_views(3), lighting_seed=9, width=48, height=40,
                                          environment=sky, dtype=np.float32))
     assert candela.transforms_json([(f"{i:03d}.pfm", f) for i, f in enumerate(frames)]) == cli
     for i, frame in enumerate(frames):
