@@ -111,7 +111,7 @@ def render_object(scene_file, out_folder, *, views=20, ring=None, lighting_seed=
         return {**entry, "status": "ok", "views": views, "warnings": list(scene.warnings),
                 "validation_messages": device.validation_messages - validation_before,
                 "seconds": time.perf_counter() - start}
-    except candela.Error as error:
+    except (candela.Error, OSError) as error:  # Candela's one-line message; a file that cannot be written
         return {**entry, "status": "failed", "error": str(error), "seconds": time.perf_counter() - start}
 
 
@@ -120,7 +120,8 @@ def render_library(client, inputs, out, *, views=20, manifest="manifest.json", *
     one task per file, into out/<file's path without extension>/ (relative to the folder it was
     found in). Gathers the entries, in the files' order, into out/`manifest` (written atomically)
     and returns it: per file its status ("ok", "complete" when a finished folder was there already,
-    "failed" with the error), worker and time, and the run's counts."""
+    "failed" with the error — Candela's, a file that could not be written, or the task's when its
+    worker process was lost), worker and time, and the run's counts."""
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     tasks = []
@@ -132,7 +133,14 @@ def render_library(client, inputs, out, *, views=20, manifest="manifest.json", *
     start = time.perf_counter()
     futures = [client.submit(render_object, str(file), str(folder), views=views, pure=False, **options)
                for file, folder in tasks]
-    objects = client.gather(futures)
+    # In the files' order; a task that died (its worker process lost) is that file's failure.
+    objects = []
+    for (file, folder), future in zip(tasks, futures):
+        try:
+            objects.append(future.result())
+        except Exception as error:  # noqa: BLE001 - whatever the cluster raised, reported per file
+            objects.append({"file": str(file), "folder": str(folder), "status": "failed",
+                            "error": f"{file}: the task failed: {type(error).__name__}: {error}"})
     result = {"candela": candela.__version__, "views": views, "seconds": time.perf_counter() - start,
               "counts": {status: sum(o["status"] == status for o in objects) for status in ("ok", "complete", "failed")},
               "objects": objects}
