@@ -4,6 +4,7 @@
 
 #include "commands.h"
 #include "api/access.h"
+#include "api/cameras.h"
 #include "candela/dataset.h"
 #include "candela/device.h"
 #include "failures.h"
@@ -112,41 +113,51 @@ std::vector<std::string> outputsOf(const RenderOptions& options, const SceneInpu
 // {path}, and one variant or {variant} in the folder — else NAME.transforms.json (NAME-VARIANT
 // with --variant all), beside the other scenes' frames.
 fs::path transformsFileOf(const RenderOptions& options, const SceneInput& input, const std::string& variantName,
-                          const std::string& firstFrame, bool oneScene) {
+                          bool oneScene) {
     const std::string folderPattern = fs::path(options.out).parent_path().string();
     const bool sceneFolder = oneScene || folderPattern.find("{name}") != std::string::npos ||
                              folderPattern.find("{path}") != std::string::npos;
     const bool variantFolder = options.variant != "all" || folderPattern.find("{variant}") != std::string::npos;
-    const fs::path folder = fs::path(firstFrame).parent_path();
+    const fs::path folder = fs::path(expandOutPattern(options.out, {input.name, input.path, variantName, 0u})).parent_path();
     if (sceneFolder && variantFolder) return folder / "transforms.json";
     return folder / (input.name + (options.variant == "all" ? "-" + variantName : "") + ".transforms.json");
 }
 
-// --resume: whether every file of `outputs` is there and a whole image, and for a sequence its
-// `transforms` file a JSON document with a camera for each; removes what a killed writer left beside
-// each (its temporary files) either way.
-bool outputsComplete(const std::vector<std::string>& outputs, const std::optional<fs::path>& transforms) {
+// --resume: whether every file scene `input` writes for `variantName` is there and a whole image,
+// and for a sequence its transforms file a JSON document with a camera for each; removes what a
+// killed writer left beside each (its temporary files) either way.
+bool outputsComplete(const RenderOptions& options, const SceneInput& input, const std::string& variantName, bool oneScene) {
+    const std::vector<std::string> outputs = outputsOf(options, input, variantName);
     bool complete = true;
     for (const std::string& out : outputs) {
         assets::removeStaleTemporaries(out);
         complete = complete && assets::imageFileComplete(out);
     }
-    if (transforms) {
-        assets::removeStaleTemporaries(*transforms);
-        std::ifstream in(*transforms);
+    if (options.sequence()) {
+        const fs::path transforms = transformsFileOf(options, input, variantName, oneScene);
+        assets::removeStaleTemporaries(transforms);
+        std::ifstream in(transforms);
         const nlohmann::json json = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
         complete = complete && json.is_object() && json.contains("frames") && json["frames"].size() == outputs.size();
     }
     return complete;
 }
 
+// The name of `variant` in --out patterns: "default" for the default materials ("").
+std::string variantNameOf(const std::string& variant) { return variant.empty() ? "default" : variant; }
+
+// What an output shows, in the report and the page: "render", the variant, "frame 3", "blue, frame 3".
+std::string outputLabel(const std::string& variant, std::optional<uint32_t> frame) {
+    std::string label = variant;
+    if (frame) label += (label.empty() ? "" : ", ") + ("frame " + std::to_string(*frame));
+    return label.empty() ? "render" : label;
+}
+
 // Records in `r` the outputs of a scene (or variant) that --resume left as they were.
-void recordResumed(SceneReport& r, const std::vector<std::string>& outputs, const std::string& variant) {
-    for (size_t i = 0; i < outputs.size(); ++i) {
-        std::string label = variant;
-        if (outputs.size() > 1) label += (label.empty() ? "" : ", ") + ("frame " + std::to_string(i));
-        r.outputs.push_back({outputs[i], label.empty() ? "render" : label});
-    }
+void recordResumed(SceneReport& r, const RenderOptions& options, const std::string& variant) {
+    const std::vector<std::string> outputs = outputsOf(options, r.input, variantNameOf(variant));
+    for (size_t i = 0; i < outputs.size(); ++i)
+        r.outputs.push_back({outputs[i], outputLabel(variant, options.sequence() ? std::optional(uint32_t(i)) : std::nullopt)});
 }
 
 // The API's sequence of `options`: frames, a turntable, or views; jittered lighting.
@@ -192,11 +203,6 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
     api.format = assets::isFloatFormat(run.format) ? candela::PixelFormat::Rgba32Float : candela::PixelFormat::Rgba8Srgb;
     const float aspect = float(options.width) / float(options.height);
     const candela::SequenceOptions sequence = sequenceOptions(options);
-    // A sequence's cameras file, given its frames.
-    const auto camerasOf = [&](const std::vector<std::string>& frames, const std::string& variantName) -> std::optional<fs::path> {
-        if (!run.sequence) return std::nullopt;
-        return transformsFileOf(options, r.input, variantName, frames.front(), !run.batch);
-    };
     std::string cameraLine;  // the last camera printed (--verbose)
     double time = 0.0;       // the pose's, of the frame being drawn
 
@@ -213,15 +219,12 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
     };
     for (const std::string& variant : variants) {
         api.variant = variant;
-        const std::string variantName = variant.empty() ? "default" : variant;
+        const std::string variantName = variantNameOf(variant);
         r.variants.push_back(variant);
         // --variant all: each variant's files are known once the file is read.
-        if (options.resume && options.variant == "all") {
-            const std::vector<std::string> outputs = outputsOf(options, r.input, variantName);
-            if (outputsComplete(outputs, camerasOf(outputs, variantName))) {
-                recordResumed(r, outputs, variant);
-                continue;
-            }
+        if (options.resume && options.variant == "all" && outputsComplete(options, r.input, variantName, !run.batch)) {
+            recordResumed(r, options, variant);
+            continue;
         }
         Clock::time_point stageStart = Clock::now();
         const candela::ProgressCallback stages = [&](const candela::RenderProgress& stage) {
@@ -238,22 +241,20 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
             double gpu = 0.0;
             for (double ms : frame.timings.gpuMs) gpu += std::max(ms, 0.0);
             r.gpuMs.push_back(gpu);
-            const std::string out = expandOutPattern(
-                options.out, {r.input.name, r.input.path, variantName, run.sequence ? std::optional(i) : std::nullopt});
+            const std::optional<uint32_t> frameNumber = run.sequence ? std::optional(i) : std::nullopt;
+            const std::string out = expandOutPattern(options.out, {r.input.name, r.input.path, variantName, frameNumber});
             createFolderOf(out);
             candela::writeImage(out, image);
-            std::string label = variant;
-            if (run.sequence) label += (label.empty() ? "" : ", ") + ("frame " + std::to_string(i));
-            r.outputs.push_back({out, label.empty() ? "render" : label});
+            r.outputs.push_back({out, outputLabel(variant, frameNumber)});
             if (run.sequence)
                 cameras.push_back({.file = out, .camera = image.camera,
-                                   .environmentRotationDegrees = candela::sequenceFrame(held, api, sequence, i).environmentRotationDegrees});
+                                   .environmentRotationDegrees = frameEnvironmentRotation(api, sequence, i)});
             progress.clear();
             printWritten(run, out, frame, time, r);
             if (!run.batch) progress.step(i + 1, "frames written");
         };
         Access::renderSequence(run.session.device(), held, api, sequence, write, run.session.apiEnvironment(), stages, flags);
-        if (run.sequence) writeTransforms(*camerasOf(outputsOf(options, r.input, variantName), variantName), cameras);
+        if (run.sequence) writeTransforms(transformsFileOf(options, r.input, variantName, !run.batch), cameras);
     }
     const passes::DrawStats& stats = run.session.renderer().drawStats();
     r.triangles = stats.sceneTriangles;
@@ -426,18 +427,9 @@ int runRender(const RenderOptions& options) {
     // each variant is checked once the file is read: renderScene). What a killed run left
     // half-written is removed.
     std::vector<size_t> pending;
-    std::vector<bool> resumed(scenes.size(), false);
-    for (size_t i = 0; i < scenes.size(); ++i) {
-        resumed[i] = options.resume && options.variant != "all" &&
-                     [&] {
-                         const std::string variantName = options.variant.empty() ? "default" : options.variant;
-                         const std::vector<std::string> outputs = outputsOf(options, scenes[i], variantName);
-                         return outputsComplete(outputs, sequence ? std::optional(transformsFileOf(options, scenes[i], variantName,
-                                                                                                   outputs.front(), single))
-                                                                  : std::nullopt);
-                     }();
-        if (!resumed[i]) pending.push_back(i);
-    }
+    for (size_t i = 0; i < scenes.size(); ++i)
+        if (!options.resume || options.variant == "all" || !outputsComplete(options, scenes[i], variantNameOf(options.variant), single))
+            pending.push_back(i);
     if (options.resume)
         for (const std::string& path : {options.graphDot, options.graphJson, options.report, options.html})
             if (!path.empty()) assets::removeStaleTemporaries(path);
@@ -471,7 +463,7 @@ int runRender(const RenderOptions& options) {
         SceneReport& r = report.scenes.emplace_back();
         r.input = scenes[i];
         r.ok = r.resumed = true;
-        recordResumed(r, outputsOf(options, scenes[i], options.variant.empty() ? "default" : options.variant), options.variant);
+        recordResumed(r, options, options.variant);
         log::info((r.input.file.empty() ? std::string("the default scene") : r.input.file.string()) + ": complete already (--resume)");
     };
     Progress progress("render", run.batch ? scenes.size() : options.frameCount(), options.common.quiet || (run.batch ? false : !sequence));

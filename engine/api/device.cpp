@@ -12,10 +12,8 @@
 #include "shared/tonemap.h"
 #include "vk/check.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
-#include <cmath>
 #include <cstring>
 
 namespace candela {
