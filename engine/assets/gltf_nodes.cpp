@@ -310,8 +310,11 @@ private:
         if (instances) {
             for (bool mirrored : {false, true}) {
                 const uint32_t first = uint32_t(mScene.instances.size());
-                for (const glm::mat4& m : *instances)
-                    if ((glm::determinant(glm::mat3(m)) < 0.0f) == mirrored) mScene.instances.push_back(m);
+                for (size_t i = 0; i < instances->size(); ++i)
+                    if ((glm::determinant(glm::mat3((*instances)[i])) < 0.0f) == mirrored) {
+                        mScene.instances.push_back((*instances)[i]);
+                        mScene.instanceIndices.push_back(uint32_t(i));
+                    }
                 if (mScene.instances.size() > first) groups.emplace_back(first, uint32_t(mScene.instances.size()) - first);
             }
             if (groups.empty()) return;  // zero instances: nothing to draw
@@ -346,6 +349,8 @@ private:
                           .material = material,
                           .localBounds = geometry.bounds,
                           .node = sceneNode,
+                          .mesh = meshIndex,
+                          .primitive = int32_t(p),
                           .deformation = geometry.deformation,
                           .skin = skinned ? skin : -1,  // the glTF skin until finishSkins
                           .firstInstance = first,

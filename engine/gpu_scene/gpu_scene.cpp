@@ -136,16 +136,22 @@ shading::DrawData drawData(const scene::Draw& draw) {
 std::vector<shading::DrawData> drawDataOf(const scene::Scene& scene, std::span<const scene::Draw> draws, std::vector<uint32_t>* first) {
     std::vector<shading::DrawData> out;
     if (first) first->clear();
+    const auto id = [](int32_t index) { return index >= 0 ? uint32_t(index) : CANDELA_NO_ID; };
     for (const scene::Draw& d : draws) {
         if (first) first->push_back(uint32_t(out.size()));
+        const uint32_t node = d.node >= 0 && size_t(d.node) < scene.nodes.size() ? id(scene.nodes[size_t(d.node)].source) : CANDELA_NO_ID;
+        const glm::uvec4 ids(node, id(d.mesh), id(d.primitive), CANDELA_NO_ID);
         if (d.instanceCount == 0) {
             out.push_back(d.hidden ? shading::DrawData{} : drawData(d));
+            out.back().ids = ids;
             continue;
         }
         for (uint32_t i = 0; i < d.instanceCount; ++i) {
             scene::Draw instance = d;
             instance.world = d.world * scene.instances[d.firstInstance + i];
             out.push_back(d.hidden ? shading::DrawData{} : drawData(instance));
+            const size_t at = d.firstInstance + i;
+            out.back().ids = glm::uvec4(glm::uvec3(ids), at < scene.instanceIndices.size() ? scene.instanceIndices[at] : i);
         }
     }
     return out;

@@ -24,6 +24,8 @@ shading::DrawData drawData(const scene::Draw& draw);
 // The draw data of every draw in order, an instanced draw taking one entry per instance (world ·
 // instance matrix) — the layout of the draw buffers; hidden draws get zeros. `first[d]` receives
 // the index of draw d's first entry (what the forward pass pushes; the shader adds the instance).
+// Each entry's IDs (DrawData::ids) name the glTF node (Scene::nodes' source), mesh, primitive and
+// instance (Scene::instanceIndices; a scene without them: the instance's place in its draw).
 std::vector<shading::DrawData> drawDataOf(const scene::Scene& scene, std::span<const scene::Draw> draws, std::vector<uint32_t>* first = nullptr);
 // A light as the forward shaders read it (position and range, direction and type, colour,
 // intensity — 0 for a hidden light —, cone terms).

@@ -318,6 +318,10 @@ struct Draw {
     Aabb bounds;               // world space
     Aabb localBounds;          // mesh space
     int32_t node = -1;         // index into Scene::nodes (-1: built-in scenes, which have no nodes)
+    // The glTF mesh and the index of the primitive within it that this draw draws (-1: built-in
+    // scenes, which have no meshes): the mesh and primitive IDs of the per-pixel outputs.
+    int32_t mesh = -1;
+    int32_t primitive = -1;
     int32_t deformation = -1;  // index into Scene::deformations: morph targets and/or skin weights
     // Index into Scene::skins when the node is skinned and the primitive has joints: its vertices
     // are then placed by the joints in world space and `world` is the identity.
@@ -425,6 +429,9 @@ struct Scene {
     std::vector<animation::Animation> animations;
     std::vector<Deformation> deformations;  // Draw::deformation
     std::vector<glm::mat4> instances;       // Draw::firstInstance: each instance's TRS in its node's space
+    // Parallel to `instances`: each instance's index in its node's EXT_mesh_gpu_instancing
+    // accessors (the loader groups a node's instances by whether they mirror, so the order differs).
+    std::vector<uint32_t> instanceIndices;
     std::vector<Skin> skins;                // Draw::skin
     std::vector<LodChain> lodChains;        // Draw::lod
     // The file's scenes by name (unnamed ones as "scene N") and the one loaded; empty for files

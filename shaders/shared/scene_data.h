@@ -19,6 +19,8 @@ CANDELA_NAMESPACE_BEGIN
 #define CANDELA_ALPHA_OPAQUE 0u
 #define CANDELA_ALPHA_MASK 1u
 #define CANDELA_ALPHA_BLEND 2u
+// An ID the per-pixel outputs give where there is none: no glTF node, mesh or instance, no surface.
+#define CANDELA_NO_ID 0xFFFFFFFFu
 
 // One punctual light (KHR_lights_punctual), world space.
 struct LightData {
@@ -34,6 +36,9 @@ struct DrawData {
     mat4 world;
     mat4 normalMatrix;  // inverse transpose of world's upper 3×3 (as a mat4)
     uvec4 material;     // x: index into the material array
+    // The per-pixel outputs' IDs (docs/outputs.md): the glTF node, mesh, primitive within the
+    // mesh, and the EXT_mesh_gpu_instancing instance; CANDELA_NO_ID where there is none.
+    uvec4 ids;
 };
 
 // KHR_texture_transform of one texture slot as a 2×3 matrix: uv' = (dot(r0.xy, uv) + r0.z,
@@ -123,7 +128,7 @@ CANDELA_NAMESPACE_END
 
 #ifdef __cplusplus
 static_assert(sizeof(candela::shading::LightData) == 64);
-static_assert(sizeof(candela::shading::DrawData) == 144);
+static_assert(sizeof(candela::shading::DrawData) == 160);
 static_assert(sizeof(candela::shading::MaterialData) == 64 + 32 * CANDELA_TEX_COUNT);
 static_assert(sizeof(candela::shading::MaterialLayerData) == 128 + 32 * CANDELA_LAYER_TEX_COUNT);
 static_assert(sizeof(candela::shading::FramePush) == 128);
