@@ -2,7 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // The forward pass's vertex stage (forward.vert, and with CANDELA_MATERIAL_LAYERS defined
 // forward_layers.vert: builtin_shaders.txt): world-space position, normal and tangent of one drawn
-// primitive, and the transformed texture coordinates of each texture slot.
+// primitive, and the transformed texture coordinates of each texture slot; with CANDELA_AOV defined
+// (aov.vert: the per-pixel outputs' pass, aov.frag.glsl) also the draw entry of the instance.
 #include "shading/scene_buffers.glsl"
 
 layout(location = 0) in vec3 inPosition;
@@ -35,6 +36,9 @@ layout(location = 4) out vec2 outTexUv[CANDELA_TEX_COUNT];
 // slots, and a device need offer only 16 output locations.
 layout(location = 4 + CANDELA_TEX_COUNT) out vec4 outLayerUv[(CANDELA_LAYER_TEX_COUNT + 1) / 2];
 #endif
+#ifdef CANDELA_AOV
+layout(location = 4 + CANDELA_TEX_COUNT) flat out uint outEntry;  // index into Draws of this instance
+#endif
 
 void main() {
     // Instanced draws (EXT_mesh_gpu_instancing) have one entry per instance, in a row.
@@ -53,6 +57,9 @@ void main() {
         vec2 second = transformUv(layer.uv[min(2 * i + 1, CANDELA_LAYER_TEX_COUNT - 1)], inUv0, inUv1);
         outLayerUv[i] = vec4(transformUv(layer.uv[2 * i], inUv0, inUv1), second);
     }
+#endif
+#ifdef CANDELA_AOV
+    outEntry = push.counts.y + gl_InstanceIndex;
 #endif
     gl_Position = push.viewProjection * world;
 }

@@ -5,6 +5,7 @@
 
 #include "executor/graph_executor.h"
 #include "graph/render_graph.h"
+#include "passes/aov/aov_pass.h"
 #include "passes/drawing/shading_summary.h"
 #include "render/frame_plan.h"
 #include "render/posed_summary.h"
@@ -28,6 +29,8 @@ struct Frame {
     graph::ImportBindings imports;
     graph::TextureId hdr;  // linear HDR (RGBA16F): the scene after forward and skybox, or the test pattern
     graph::TextureId ldr;  // the 8-bit image: tonemapped scene, or encoded pattern
+    // The aov pass's targets when the frame asks for per-pixel outputs besides colour.
+    std::optional<passes::AovTargets> aov;
     // The IBL precompute passes added: declared pass indices [precomputeBegin, precomputeEnd).
     uint32_t precomputeBegin = 0, precomputeEnd = 0;
     // The declared index of the pass computing the sheen LUT (ibl_maps::SheenLut), if the frame added it.

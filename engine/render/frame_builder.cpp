@@ -25,11 +25,12 @@ constexpr VkFormat kLdrFormat = VK_FORMAT_R8G8B8A8_SRGB;
 FrameBuilder::FrameBuilder(vk::Context& context, SceneState& scene, shader::ParameterRegistry& parameters)
     : mContext(context), mScene(scene), mParameters(parameters), mPattern(context), mEncode(context, kLdrFormat),
       mForward(context), mSkybox(context), mExpand(context), mTransmissionBackground(context), mSkinMorph(context), mTonemap(context),
-      mCalibration(context), mVisibility(context) {}
+      mCalibration(context), mAov(context), mVisibility(context) {}
 
 void FrameBuilder::sceneUploaded() {
     mForward.setScene(mScene.gpuScene(), mScene.materialKeys());
     mVisibility.setScene(mScene.gpuScene(), mScene.materialKeys());
+    mAov.setScene(mScene.gpuScene(), mScene.materialKeys());
 }
 
 vk::MsaaChoice FrameBuilder::msaa(std::optional<uint32_t> requested) const {
@@ -270,6 +271,10 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     const passes::DrawTarget drawn = addDraws(frame, plan, facts, visibility, tables ? &*tables : nullptr, view, ibl ? &*ibl : nullptr);
     frame.hdr = drawn.hdr;
     addTonemap(frame, settings, plan, target, view, ibl ? &*ibl : nullptr);
+    if (settings.outputs.beyondColor())
+        frame.aov = mAov.add(graph, settings.width, settings.height, settings.outputs.aovTargets(), list, inputs);
+    else
+        frame.explanation.emplace_back("left out: pass 'aov' (no per-pixel output besides colour is asked for: --outputs)");
     passes::ShadingSummary shading = passes::summarizeShading(list, mScene.materialKeys(), scene, mScene.gpuScene().lightCount(),
                                                               inputs.variant, inputs.posed.draws.valid());
     addExplanation(frame, settings, msaa, passes::explainShading(shading, list, settings.drawSelection), plan, facts);

@@ -14,6 +14,7 @@
 // Test pattern:  pattern (compute, HDR) → encode (graphics, 8-bit sRGB).
 // Calibration:   calibration alone (benchmarks' unit of time).
 
+#include "passes/aov/aov_pass.h"
 #include "passes/diagnostics/calibration_pass.h"
 #include "passes/post/encode_pass.h"
 #include "passes/forward/forward_pass.h"
@@ -124,6 +125,7 @@ private:
     passes::SkinMorphPass mSkinMorph;
     passes::TonemapPass mTonemap;
     passes::CalibrationPass mCalibration;
+    passes::AovPass mAov;
     VisibilityPath mVisibility;
     passes::DrawStats mStats;  // of the last scene frame; the recorder adds its state changes
     std::optional<uint32_t> mMsaaWarnedFor;  // the clamped request last warned of (once per request)

@@ -6,18 +6,19 @@
 #include <glm/gtc/packing.hpp>
 
 #include <cstring>
+#include <stdexcept>
 #include <utility>
 
 namespace candela {
 
-graph::BufferId Readback::import(Frame& frame, VkDeviceSize bytes) {
+graph::BufferId Readback::import(Frame& frame, VkDeviceSize bytes, std::string name) {
     if (!mBuffer || mBuffer.size() != bytes)
         mBuffer = vk::Buffer(mContext, {.size = bytes,
                                         .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                         .memory = vk::MemoryUsage::Readback,
-                                        .name = "readback"});
+                                        .name = name.c_str()});
     const graph::BufferId readback =
-        frame.graph->importBuffer("readback", {.size = bytes}, graph::ResourceState{}, passes::hostReadState());
+        frame.graph->importBuffer(std::move(name), {.size = bytes}, graph::ResourceState{}, passes::hostReadState());
     frame.imports.bind(readback, mBuffer.handle());
     return readback;
 }
@@ -32,6 +33,60 @@ std::vector<float> Readback::rgba32f(size_t texels) {
     std::vector<float> out(texels * 4);
     const auto* half = reinterpret_cast<const uint16_t*>(mBuffer.mapped());
     for (size_t i = 0; i < out.size(); ++i) out[i] = glm::unpackHalf1x16(half[i]);
+    return out;
+}
+
+std::vector<ReadbackSource> Readback::addOutputs(Frame& frame, options::PixelOutputs outputs, size_t texels) {
+    std::vector<ReadbackSource> sources;
+    std::vector<graph::TextureId> images;
+    std::vector<VkDeviceSize> bytes;
+    const auto add = [&](uint32_t target, graph::TextureId image) {
+        const VkFormat format = frame.graph->declaration().resources[image.index].texture.format;
+        sources.push_back({target, format});
+        images.push_back(image);
+        bytes.push_back(VkDeviceSize(texels) * graph::formatTexelSize(format));
+    };
+    for (uint32_t t = 0; t < CANDELA_AOV_TARGET_COUNT; ++t)
+        if (frame.aov->targets[t].valid()) add(t, frame.aov->targets[t]);
+    if (outputs.has(options::PixelOutput::ClipDepth)) add(CANDELA_AOV_CLIP_DEPTH, frame.aov->depth);
+    passes::addReadbackPass(*frame.graph, "readback_outputs", images, import(frame, passes::packedOffsets(bytes).back(), "readback_outputs"));
+    return sources;
+}
+
+std::vector<CapturedOutput> Readback::outputs(options::PixelOutputs outputs, std::span<const ReadbackSource> sources, size_t texels) {
+    mBuffer.invalidate();
+    std::vector<VkDeviceSize> bytes;
+    for (const ReadbackSource& source : sources) bytes.push_back(VkDeviceSize(texels) * graph::formatTexelSize(source.format));
+    const std::vector<VkDeviceSize> offsets = passes::packedOffsets(bytes);
+    const auto* base = static_cast<const std::byte*>(mBuffer.mapped());
+    std::vector<CapturedOutput> out;
+    for (const auto& [output, name] : options::kPixelOutputNames) {
+        if (output == options::PixelOutput::Color || !outputs.has(output)) continue;
+        const options::PixelOutputLayout layout = options::pixelOutputLayout(output);
+        size_t s = 0;
+        while (s < sources.size() && sources[s].target != layout.target) ++s;
+        if (s == sources.size()) throw std::logic_error(std::string("Readback: no image holds output ") + name);
+        const VkFormat format = sources[s].format;
+        const uint32_t texelSize = graph::formatTexelSize(format);
+        const bool half = format == VK_FORMAT_R16G16B16A16_SFLOAT || format == VK_FORMAT_R16G16_SFLOAT;
+        const std::byte* texel = base + offsets[s];
+        CapturedOutput captured{.output = output, .channels = layout.channels};
+        (layout.integer ? captured.ids.resize(texels * layout.channels) : captured.floats.resize(texels * layout.channels));
+        for (size_t i = 0; i < texels; ++i, texel += texelSize)
+            for (uint32_t c = 0; c < layout.channels; ++c) {
+                const size_t at = i * layout.channels + c, channel = layout.firstChannel + c;
+                if (half) {
+                    uint16_t h;
+                    std::memcpy(&h, texel + 2 * channel, 2);
+                    captured.floats[at] = glm::unpackHalf1x16(h);
+                } else if (layout.integer) {
+                    std::memcpy(&captured.ids[at], texel + 4 * channel, 4);
+                } else {
+                    std::memcpy(&captured.floats[at], texel + 4 * channel, 4);
+                }
+            }
+        out.push_back(std::move(captured));
+    }
     return out;
 }
 

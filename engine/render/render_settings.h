@@ -8,6 +8,7 @@
 #include "ibl/ibl_settings.h"
 #include "options/debug_view.h"
 #include "options/draw_selection.h"
+#include "options/pixel_output.h"
 #include "passes/drawing/shading_variant.h"
 #include "options/precompile.h"
 #include "options/shading_path.h"
@@ -47,6 +48,10 @@ struct RenderSettings {
     uint32_t width = 1280;
     uint32_t height = 720;
     bool floatOutput = false;  // capture linear HDR (EXR/PFM) instead of 8-bit sRGB (PNG)
+    // What a capture reads back (docs/outputs.md): the colour image and any per-pixel outputs
+    // besides it (the aov pass, declared only when one is asked for). Without colour the passes
+    // that make the image are culled (a scene frame only).
+    options::PixelOutputs outputs{options::PixelOutput::Color};
     // The scene to draw; null renders the procedural test pattern instead (passes/diagnostics/pattern_pass.h).
     const scene::Scene* scene = nullptr;
     // The scene as its animations pose it this frame (a pose of `scene`, owned by the caller);

@@ -18,7 +18,7 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 Renderer::Renderer(vk::Context& context, RendererOptions options)
     : mContext(context), mOptions(options), mRunner(context, options.framesInFlight), mScene(context, mRunner),
-      mBuilder(context, mScene, mParameters), mReadback(context) {}
+      mBuilder(context, mScene, mParameters), mReadback(context), mOutputReadback(context) {}
 
 Renderer::~Renderer() { mRunner.waitIdle(); }
 
@@ -105,9 +105,15 @@ FrameTiming Renderer::execute(Frame frame, const RenderSettings& settings) {
 
 FrameTiming Renderer::renderFrame(const RenderSettings& settings) {
     Frame frame = beginFrame(settings);
-    // Without a readback the frame's result is kept alive as an exported output, as a swapchain
-    // image would be.
-    frame.graph->exportTexture(frame.ldr);
+    // Without a readback the frame's results (the image, and the per-pixel outputs asked for) are
+    // kept alive as exported outputs, as a swapchain image would be.
+    // Without colour among the outputs, the passes that make the image are culled, as in a capture.
+    if (settings.outputs.has(options::PixelOutput::Color) || !frame.aov) frame.graph->exportTexture(frame.ldr);
+    if (frame.aov) {
+        for (const graph::TextureId target : frame.aov->targets)
+            if (target.valid()) frame.graph->exportTexture(target);
+        if (settings.outputs.has(options::PixelOutput::ClipDepth)) frame.graph->exportTexture(frame.aov->depth);
+    }
     return execute(std::move(frame), settings);
 }
 
@@ -152,7 +158,12 @@ CapturedFrame Renderer::capture(const RenderSettings& settings) {
     Frame frame = beginFrame(settings);
     const VkDeviceSize texel = settings.floatOutput ? 8 : 4;  // RGBA16F or RGBA8
     const size_t texels = static_cast<size_t>(settings.width) * settings.height;
-    passes::addReadbackPass(*frame.graph, settings.floatOutput ? frame.hdr : frame.ldr, mReadback.import(frame, texel * texels));
+    // A frame without a scene (the test pattern) has colour only.
+    const bool color = settings.outputs.has(options::PixelOutput::Color) || !frame.aov;
+    if (color)
+        passes::addReadbackPass(*frame.graph, settings.floatOutput ? frame.hdr : frame.ldr, mReadback.import(frame, texel * texels));
+    const std::vector<ReadbackSource> sources = frame.aov ? mOutputReadback.addOutputs(frame, settings.outputs, texels)
+                                                          : std::vector<ReadbackSource>{};
     const FrameTiming timing = execute(std::move(frame), settings);
 
     CapturedFrame captured;
@@ -161,11 +172,19 @@ CapturedFrame Renderer::capture(const RenderSettings& settings) {
     captured.submitWaitMs = timing.submitWaitMs;
     captured.timings = timing.timings;
     const RenderGraph& graph = *mRunner.last().graph;
-    const PassInfo& readbackInfo = graph.compiled().passes[*graph.findPass("readback")];
-    if (readbackInfo.cullReason != CullReason::None) throw UserError(nothingToCapture(graph));
     const auto readStart = std::chrono::steady_clock::now();
-    if (settings.floatOutput) captured.rgba32f = mReadback.rgba32f(texels);
-    else captured.rgba8 = mReadback.rgba8(texels, VK_FORMAT_R8G8B8A8_UNORM);
+    if (color) {
+        const PassInfo& readbackInfo = graph.compiled().passes[*graph.findPass("readback")];
+        if (readbackInfo.cullReason != CullReason::None) throw UserError(nothingToCapture(graph));
+        if (settings.floatOutput) captured.rgba32f = mReadback.rgba32f(texels);
+        else captured.rgba8 = mReadback.rgba8(texels, VK_FORMAT_R8G8B8A8_UNORM);
+    }
+    if (!sources.empty()) {
+        const PassInfo& readbackInfo = graph.compiled().passes[*graph.findPass("readback_outputs")];
+        if (readbackInfo.cullReason != CullReason::None)
+            throw UserError("no per-pixel outputs to capture: pass 'aov' did not run (" + readbackInfo.cullDetail + ")");
+        captured.outputs = mOutputReadback.outputs(settings.outputs, sources, texels);
+    }
     captured.readbackMs = msSince(readStart);
     return captured;
 }

@@ -30,6 +30,9 @@ struct CapturedFrame {
     uint32_t height = 0;
     std::vector<uint8_t> rgba8;   // !floatOutput: sRGB-encoded RGBA, top row first
     std::vector<float> rgba32f;   // floatOutput: linear RGBA, top row first
+    // RenderSettings::outputs besides colour (in options::PixelOutput order); rgba8 and rgba32f
+    // are empty when colour was not asked for.
+    std::vector<CapturedOutput> outputs;
     graph::GraphTimings timings;  // per declared pass; negative where not run/measured
     double submitWaitMs = 0.0;    // CPU wall time from submit to the fence
     double readbackMs = 0.0;      // CPU time to copy (and convert) the pixels out of the buffer
@@ -207,6 +210,7 @@ private:
     SceneState mScene;
     FrameBuilder mBuilder;
     Readback mReadback;
+    Readback mOutputReadback;  // the per-pixel outputs besides colour
     PrecomputeTime mLastPrecompute;
     uint32_t mPrecomputes = 0;
 };

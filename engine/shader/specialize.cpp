@@ -9,7 +9,8 @@
 namespace candela::shader {
 namespace {
 
-constexpr uint32_t kOpDecorate = 71, kDecorationSpecId = 1;
+constexpr uint32_t kOpDecorate = 71, kDecorationSpecId = 1, kDecorationLocation = 30;
+constexpr uint32_t kOpVariable = 59, kStorageClassOutput = 3;
 constexpr uint32_t kOpConstantTrue = 41, kOpConstantFalse = 42, kOpConstant = 43;
 constexpr uint32_t kOpSpecConstantTrue = 48, kOpSpecConstantFalse = 49, kOpSpecConstant = 50;
 
@@ -81,6 +82,27 @@ std::vector<uint32_t> specializeSpirv(std::span<const uint32_t> spirv, std::span
     std::vector<uint32_t> out;
     if (!optimizer.Run(frozenSpirv.data(), frozenSpirv.size(), &out))
         throw std::runtime_error("specializing " + debugName + " failed: " + messages);
+    return out;
+}
+
+std::vector<uint32_t> remapOutputLocations(std::span<const uint32_t> spirv, std::span<const uint32_t> locations,
+                                           const std::string& debugName) {
+    constexpr size_t kHeader = 5;
+    if (spirv.size() < kHeader) throw std::runtime_error(debugName + ": not SPIR-V");
+    std::vector<uint32_t> out(spirv.begin(), spirv.end());
+    std::unordered_map<uint32_t, bool> output;  // result id → an Output variable
+    for (size_t i = kHeader; i < out.size();) {
+        const uint32_t words = out[i] >> 16, opcode = out[i] & 0xFFFFu;
+        if (words == 0 || i + words > out.size()) throw std::runtime_error(debugName + ": malformed SPIR-V");
+        if (opcode == kOpVariable && words >= 4 && out[i + 3] == kStorageClassOutput) output[out[i + 2]] = true;
+        i += words;
+    }
+    for (size_t i = kHeader; i < out.size(); i += out[i] >> 16) {
+        const uint32_t words = out[i] >> 16, opcode = out[i] & 0xFFFFu;
+        if (opcode == kOpDecorate && words == 4 && out[i + 2] == kDecorationLocation && output.count(out[i + 1]) &&
+            out[i + 3] < locations.size())
+            out[i + 3] = locations[out[i + 3]];
+    }
     return out;
 }
 

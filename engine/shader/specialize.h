@@ -1,6 +1,7 @@
 #pragma once
 // Specialization at load: SPIR-V with some specialization constants fixed to values and the code
-// and resources those values leave unused removed (SPIRV-Tools' optimizer). A program variant then
+// and resources those values leave unused removed (SPIRV-Tools' optimizer); a fragment stage's
+// output locations moved. A program variant then
 // declares only the descriptors it reads, so its layout fits per-stage limits a generic program
 // would exceed (the layered forward program on devices with 16 samplers per stage).
 
@@ -35,5 +36,12 @@ using FrozenConstant = std::pair<uint32_t, uint32_t>;
 // optimizer fails. The other specialization constants stay specialization constants.
 std::vector<uint32_t> specializeSpirv(std::span<const uint32_t> spirv, std::span<const FrozenConstant> frozen,
                                       const std::string& debugName);
+
+// `spirv` with each Output variable decorated Location l moved to locations[l] (one beyond the
+// table keeps its own): a fragment stage whose outputs are bound to other colour attachments than
+// the ones it was compiled for (the aov pass: the targets a frame asks for, packed). Throws
+// std::runtime_error naming `debugName` for malformed SPIR-V.
+std::vector<uint32_t> remapOutputLocations(std::span<const uint32_t> spirv, std::span<const uint32_t> locations,
+                                           const std::string& debugName);
 
 }  // namespace candela::shader

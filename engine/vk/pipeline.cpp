@@ -27,6 +27,9 @@ Program::Program(Context& context, const std::vector<std::string_view>& shaderNa
             specialized = shader::specializeSpirv(declared, specialization.frozen, std::string(name));
             specializedReflections.push_back(shader::reflectSpirv(specialized, std::string(name)));
         }
+        if (!specialization.outputLocations.empty() && reflections.back().stage == VK_SHADER_STAGE_FRAGMENT_BIT)
+            specialized = shader::remapOutputLocations(specialized.empty() ? declared : std::span<const uint32_t>(specialized),
+                                                       specialization.outputLocations, std::string(name));
         const std::span<const uint32_t> spirv = specialized.empty() ? declared : std::span<const uint32_t>(specialized);
         const VkShaderModuleCreateInfo info{.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
                                             .codeSize = spirv.size_bytes(),
@@ -131,7 +134,7 @@ Pipeline Pipeline::compute(Context& context, std::string_view shaderName, const 
 Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std::string_view fragmentShader,
                             const GraphicsPipelineDesc& desc) {
     Pipeline out;
-    ProgramSpecialization programSpecialization{.sets = desc.specializedSets};
+    ProgramSpecialization programSpecialization{.sets = desc.specializedSets, .outputLocations = desc.outputLocations};
     for (uint32_t id : desc.frozenConstants) programSpecialization.frozen.emplace_back(id, desc.specialization.at(id));
     out.mProgram = Program(context, {vertexShader, fragmentShader}, programSpecialization);
     out.mBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;

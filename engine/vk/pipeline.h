@@ -22,6 +22,9 @@ namespace candela::vk {
 struct ProgramSpecialization {
     std::vector<shader::FrozenConstant> frozen;
     std::vector<uint32_t> sets;
+    // The fragment stage's output at location l moved to outputLocations[l] (shader::
+    // remapOutputLocations); empty: as compiled.
+    std::vector<uint32_t> outputLocations;
 };
 
 class Program {
@@ -90,6 +93,8 @@ struct GraphicsPipelineDesc {
     // sets whose layouts then declare only what the specialized code reads (ProgramSpecialization).
     std::vector<uint32_t> frozenConstants;
     std::vector<uint32_t> specializedSets;
+    // ProgramSpecialization::outputLocations: where the fragment stage's outputs go.
+    std::vector<uint32_t> outputLocations;
     std::vector<VkVertexInputBindingDescription> vertexBindings;
     std::vector<VkVertexInputAttributeDescription> vertexAttributes;
 };

@@ -6,7 +6,8 @@
 #define CANDELA_SHARED_SPECIALIZATION_IDS_H
 
 // ---- The shading programs: forward.*, forward_layers.*, forward_reference.frag, the visibility
-// raster (visibility_masked.frag) and the visibility shading (visibility_shade*.comp).
+// raster (visibility_masked.frag), the visibility shading (visibility_shade*.comp) and the
+// per-pixel outputs (aov.frag).
 #define CANDELA_SPEC_NORMAL_MAP 0  // the material has a normal texture
 #define CANDELA_SPEC_LIGHTS 1  // the frame has punctual lights
 #define CANDELA_SPEC_UNLIT 2  // KHR_materials_unlit
@@ -28,6 +29,7 @@
 #define CANDELA_SPEC_SAMPLES 18  // the frame's sample count (visibility raster and shading)
 #define CANDELA_SPEC_TILE_X 20  // the visibility shading's workgroup size (a screen tile)
 #define CANDELA_SPEC_TILE_Y 21
+#define CANDELA_SPEC_AOV_TARGETS 22  // bit 1 << CANDELA_AOV_* of the targets the aov pass writes (aov.frag)
 
 // ---- The tonemap programs (tonemap.frag, tonemap_sky.frag).
 #define CANDELA_SPEC_TONEMAP_OPERATOR 0  // CANDELA_TONEMAP_*
@@ -69,6 +71,7 @@ inline constexpr uint32_t kShadingSpecializationIds[] = {
     CANDELA_SPEC_SAMPLES,
     CANDELA_SPEC_TILE_X,
     CANDELA_SPEC_TILE_Y,
+    CANDELA_SPEC_AOV_TARGETS,
 };
 consteval bool specializationIdsUnique() {
     for (uint32_t a = 0; a < std::size(kShadingSpecializationIds); ++a)

@@ -4,6 +4,7 @@
 #include "shader/builtin_shaders.h"
 #include "shader/reflection.h"
 #include "shader/specialize.h"
+#include "shared/aov_targets.h"
 #include "shared/shading_tables.h"
 #include "shared/specialization_ids.h"
 
@@ -85,6 +86,41 @@ TEST(Specialize, MalformedSpirvIsAnErrorNotACrash) {
     const uint32_t truncated[] = {0x07230203u, 0x00010600u, 0, 10, 0, (9u << 16) | 71u, 1};
     const FrozenConstant any[] = {{kLayersId, 1}};
     EXPECT_THROW(specializeSpirv(truncated, any, "truncated"), std::runtime_error);
+}
+
+// The Location of each fragment output the entry point names (the interface a pipeline sees).
+std::vector<uint32_t> outputLocations(const std::vector<uint32_t>& spirv) {
+    std::vector<uint32_t> interface, outputs, locations;
+    for (size_t i = 5; i < spirv.size(); i += spirv[i] >> 16) {
+        const uint32_t words = spirv[i] >> 16, opcode = spirv[i] & 0xFFFFu;
+        if (opcode == 15) {  // OpEntryPoint: model, id, a nul-terminated name, then the interface
+            size_t at = i + 3;
+            while (at < i + words && (spirv[at] >> 24) != 0) ++at;
+            interface.assign(spirv.begin() + long(at + 1), spirv.begin() + long(i + words));
+        }
+        if (opcode == 59 && spirv[i + 3] == 3) outputs.push_back(spirv[i + 2]);  // OpVariable, Output
+    }
+    for (size_t i = 5; i < spirv.size(); i += spirv[i] >> 16)
+        if ((spirv[i] & 0xFFFFu) == 71 && spirv[i + 2] == 30 &&
+            std::find(outputs.begin(), outputs.end(), spirv[i + 1]) != outputs.end() &&
+            std::find(interface.begin(), interface.end(), spirv[i + 1]) != interface.end())
+            locations.push_back(spirv[i + 3]);
+    std::sort(locations.begin(), locations.end());
+    return locations;
+}
+
+// The aov pass's program: frozen to the targets a frame asks for, it keeps only their outputs, which
+// the remap packs into the attachments' locations.
+TEST(Specialize, TheAovProgramKeepsTheTargetsAskedForPacked) {
+    const std::span<const uint32_t> generic = builtinShader("aov.frag");
+    EXPECT_EQ(outputLocations({generic.begin(), generic.end()}).size(), size_t(CANDELA_AOV_TARGET_COUNT));
+    const FrozenConstant targets[] = {{CANDELA_SPEC_AOV_TARGETS, (1u << CANDELA_AOV_NORMAL) | (1u << CANDELA_AOV_INSTANCE)}};
+    const std::vector<uint32_t> frozen = specializeSpirv(generic, targets, "aov");
+    EXPECT_EQ(outputLocations(frozen), (std::vector<uint32_t>{CANDELA_AOV_NORMAL, CANDELA_AOV_INSTANCE}));
+    std::vector<uint32_t> packed(CANDELA_AOV_TARGET_COUNT, CANDELA_AOV_TARGET_COUNT);
+    packed[CANDELA_AOV_NORMAL] = 0;
+    packed[CANDELA_AOV_INSTANCE] = 1;
+    EXPECT_EQ(outputLocations(remapOutputLocations(frozen, packed, "aov")), (std::vector<uint32_t>{0, 1}));
 }
 
 }  // namespace
