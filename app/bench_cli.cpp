@@ -15,6 +15,7 @@ std::vector<FlagSpec<BenchOptions>> benchFlags() {
          "measured frames left out, and why (with --json: as \"explain\")",
          "", setsTo(&O::explain, true)},
         ditherFlag(&O::dither),
+        outputsFlag(&O::outputs),
         {"--json", "", "machine-readable output", "", setsTo(&O::json, true)},
         {"--in-flight", "",
          "also run the frames as the viewer does, into an offscreen image with frames in "

@@ -2,6 +2,7 @@
 // `candela bench`'s options and flags.
 
 #include "flag_spec.h"
+#include "options/pixel_output.h"
 #include "scene_render_options.h"
 
 #include <vector>
@@ -14,6 +15,8 @@ struct BenchOptions : SceneRenderOptions {
     bool dither = false;    // --dither
     bool json = false;      // --json
     bool inFlight = false;  // --in-flight (also frames as the viewer runs them, offscreen)
+    // --outputs LIST: the per-pixel outputs each measured frame makes (the aov pass's cost).
+    options::PixelOutputs outputs{options::PixelOutput::Color};
     bool operator==(const BenchOptions&) const = default;
 };
 

@@ -317,6 +317,7 @@ int runBench(const BenchOptions& options) {
     Session session(options.common, options.env);
     RenderSettings settings = renderSettings(options, scene, session.environment());
     settings.tonemap.dither = options.dither;
+    settings.outputs = options.outputs;
     // Frame i shows the animations at --time + i/60 s: each frame pays for evaluating its pose.
     pose::ScenePose pose = loadPose(options, scene);
     warnAnimationConflicts(options, scene);

@@ -2,7 +2,12 @@
 
 #include "flag_groups.h"
 
+#include "cli_values.h"
 #include "options/draw_selection.h"
+
+#include <algorithm>
+#include <optional>
+#include <string_view>
 
 namespace candela::app {
 
@@ -271,6 +276,21 @@ void checkLightingFlags(const SceneRenderOptions& o) {
     o.iblQuality.validate();
     if (o.env.kind == EnvironmentChoice::Kind::None && o.background.kind == Background::Kind::Skybox)
         throw UserError("--background skybox: there is no environment to show (--env none)");
+}
+
+options::PixelOutputs parseOutputs(const std::string& flag, const std::string& value) {
+    std::vector<std::string> names;
+    for (size_t at = 0; at <= value.size();) {
+        const size_t comma = std::min(value.find(',', at), value.size());
+        names.push_back(value.substr(at, comma - at));
+        at = comma + 1;
+    }
+    const std::vector<std::string_view> views(names.begin(), names.end());
+    std::string_view bad;
+    if (const std::optional<options::PixelOutputs> outputs = options::pixelOutputsNamed(views, &bad)) return *outputs;
+    std::vector<std::string> known = namesOf(options::kPixelOutputNames);
+    known.emplace_back("ids");
+    throw UserError(flag + ": expected " + joinChoices(known) + ", got '" + std::string(bad) + "'");
 }
 
 }  // namespace candela::app

@@ -3,6 +3,7 @@
 // fills: output (frame size, --dither, --inline-images), scene and camera, shading and image,
 // lighting and IBL, reports (--env of the report commands) and device (CommonOptions).
 
+#include "options/pixel_output.h"
 #include "flag_spec.h"
 #include "scene_render_options.h"
 
@@ -36,6 +37,18 @@ std::vector<FlagSpec<O>> frameSizeFlags(uint32_t O::*width, uint32_t O::*height)
 template <class O>
 FlagSpec<O> ditherFlag(bool O::*dither) {
     return {"--dither", "", "dither the 8-bit output (the viewer always does)", "", setsTo(dither, true)};
+}
+
+// --outputs LIST (render and bench): the per-pixel outputs (options/pixel_output.h).
+options::PixelOutputs parseOutputs(const std::string& flag, const std::string& value);
+template <class O>
+FlagSpec<O> outputsFlag(options::PixelOutputs O::*outputs) {
+    return {"--outputs", "LIST",
+            "what each image gives per pixel, comma-separated: color, depth (view depth, metres), clip_depth, "
+            "normal (world space), base_color, alpha, metallic_roughness, emissive, node_id, mesh_id, "
+            "primitive_id, material_id, instance_id, or ids for the five IDs; all but colour at the pixel "
+            "centre, exact at --msaa 1 (docs/outputs.md); a .exr --out holds them all as channels",
+            "color", parsed(outputs, parseOutputs)};
 }
 
 // --inline-images (render and diff).

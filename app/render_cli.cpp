@@ -2,6 +2,7 @@
 
 #include "render_cli.h"
 
+#include "cli_values.h"
 #include "flag_groups.h"
 
 namespace candela::app {
@@ -67,6 +68,11 @@ std::vector<FlagSpec<RenderOptions>> renderFlags() {
          "left out, and why",
          "", setsTo(&O::explain, true)},
         ditherFlag(&O::dither),
+        outputsFlag(&O::outputs),
+        {"--outputs-format", "npy|exr|png",
+         "how --outputs besides colour are stored beside a .png or .pfm --out: a NumPy array, an EXR "
+         "file (32-bit float or uint channels) or a PNG picture to look at, each FILE-STEM.OUTPUT.EXT",
+         "npy", parsed(&O::outputsFormat, [](Str flag, Str v) { return parseChoice(flag, options::kOutputFilesNames, v); })},
     };
     append(flags, bindTo<O>(frameSizeFlags(&O::width, &O::height)));
     append(flags, bindTo<O>(sceneRenderFlags(false)));

@@ -2,6 +2,7 @@
 // `candela render`'s options and flags.
 
 #include "flag_spec.h"
+#include "options/pixel_output.h"
 #include "scene_batch.h"
 #include "scene_render_options.h"
 
@@ -25,6 +26,10 @@ struct RenderOptions : SceneRenderOptions {
     std::string graphJson;    // --graph-json FILE
     bool explain = false;     // --explain
     bool dither = false;      // --dither
+    // --outputs LIST: what each image gives per pixel (options/pixel_output.h); --outputs-format: how
+    // the outputs besides colour are stored beside a .png or .pfm.
+    options::PixelOutputs outputs{options::PixelOutput::Color};
+    options::OutputFiles outputsFormat = options::OutputFiles::Npy;
     // An image sequence of --frames N frames at --fps F, written to the --out pattern (one %d, e.g.
     // frame_%04d.png); frame i shows --time + i / F, and with --turntable DEGREES the orbit camera
     // turns that far over the sequence.

@@ -100,6 +100,20 @@ void printWritten(Run& run, const std::string& out, const CapturedFrame& frame, 
 
 // The files scene `input` writes for `variantName` ("default": the default materials): one, or
 // one per frame of a sequence.
+// The API's outputs of --outputs.
+std::vector<candela::Output> apiOutputs(const RenderOptions& options) {
+    std::vector<candela::Output> out;
+    for (candela::Output o : candela::allOutputs())
+        if (options.outputs.has(options::PixelOutput(uint32_t(o)))) out.push_back(o);
+    return out;
+}
+
+// The files one image at `path` is written as: the colour image and the other --outputs
+// (candela::outputFiles).
+std::vector<std::string> filesOf(const RenderOptions& options, const std::string& path) {
+    return candela::outputFiles(path, apiOutputs(options), candela::OutputFileFormat(uint32_t(options.outputsFormat)));
+}
+
 std::vector<std::string> outputsOf(const RenderOptions& options, const SceneInput& input, const std::string& variantName) {
     if (!options.sequence()) return {expandOutPattern(options.out, {input.name, input.path, variantName, std::nullopt})};
     std::vector<std::string> out;
@@ -129,10 +143,11 @@ fs::path transformsFileOf(const RenderOptions& options, const SceneInput& input,
 bool outputsComplete(const RenderOptions& options, const SceneInput& input, const std::string& variantName, bool oneScene) {
     const std::vector<std::string> outputs = outputsOf(options, input, variantName);
     bool complete = true;
-    for (const std::string& out : outputs) {
-        assets::removeStaleTemporaries(out);
-        complete = complete && assets::imageFileComplete(out);
-    }
+    for (const std::string& out : outputs)
+        for (const std::string& file : filesOf(options, out)) {
+            assets::removeStaleTemporaries(file);
+            complete = complete && assets::imageFileComplete(file);
+        }
     if (options.sequence()) {
         const fs::path transforms = transformsFileOf(options, input, variantName, oneScene);
         assets::removeStaleTemporaries(transforms);
@@ -157,7 +172,8 @@ std::string outputLabel(const std::string& variant, std::optional<uint32_t> fram
 void recordResumed(SceneReport& r, const RenderOptions& options, const std::string& variant) {
     const std::vector<std::string> outputs = outputsOf(options, r.input, variantNameOf(variant));
     for (size_t i = 0; i < outputs.size(); ++i)
-        r.outputs.push_back({outputs[i], outputLabel(variant, options.sequence() ? std::optional(uint32_t(i)) : std::nullopt)});
+        for (const std::string& file : filesOf(options, outputs[i]))
+            r.outputs.push_back({file, outputLabel(variant, options.sequence() ? std::optional(uint32_t(i)) : std::nullopt)});
 }
 
 // The API's sequence of `options`: frames, a turntable, or views; jittered lighting.
@@ -201,6 +217,7 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
     candela::RenderOptions api = apiRenderOptions(options);
     api.dither = options.dither;
     api.format = assets::isFloatFormat(run.format) ? candela::PixelFormat::Rgba32Float : candela::PixelFormat::Rgba8Srgb;
+    api.outputs = apiOutputs(options);
     const float aspect = float(options.width) / float(options.height);
     const candela::SequenceOptions sequence = sequenceOptions(options);
     std::string cameraLine;  // the last camera printed (--verbose)
@@ -244,8 +261,8 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
             const std::optional<uint32_t> frameNumber = run.sequence ? std::optional(i) : std::nullopt;
             const std::string out = expandOutPattern(options.out, {r.input.name, r.input.path, variantName, frameNumber});
             createFolderOf(out);
-            candela::writeImage(out, image);
-            r.outputs.push_back({out, outputLabel(variant, frameNumber)});
+            candela::writeImage(out, image, candela::OutputFileFormat(uint32_t(options.outputsFormat)));
+            for (const std::string& file : filesOf(options, out)) r.outputs.push_back({file, outputLabel(variant, frameNumber)});
             if (run.sequence)
                 cameras.push_back({.file = out, .camera = image.camera,
                                    .environmentRotationDegrees = frameEnvironmentRotation(api, sequence, i)});

@@ -10,6 +10,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <mutex>
@@ -201,12 +202,6 @@ candela::Background backgroundOf(const py::handle& value) {
     return {Kind::Color, vec3Of(value, "background")};
 }
 
-// The outputs a render can return (docs/python.md).
-const std::vector<std::string>& knownOutputs() {
-    static const std::vector<std::string> names{"color"};
-    return names;
-}
-
 RenderCall renderCall(const py::kwargs& kwargs, bool sequence, candela::SequenceOptions* sequenceOptions) {
     RenderCall call;
     candela::RenderOptions& o = call.options;
@@ -248,11 +243,18 @@ RenderCall renderCall(const py::kwargs& kwargs, bool sequence, candela::Sequence
         else throw py::type_error("unexpected keyword argument '" + name + "'");
     }
     if (call.outputs.empty()) inputError("outputs: ask for at least one");
+    o.outputs.clear();
     for (const std::string& output : call.outputs) {
-        bool known = false;
-        for (const std::string& name : knownOutputs()) known |= name == output;
-        if (!known) inputError("outputs: '" + output + "' is not an output; choose from color");
+        const std::vector<candela::Output> named = candela::outputsNamed(output);
+        if (named.empty()) {
+            std::string known;
+            for (candela::Output each : candela::allOutputs()) known += std::string(candela::outputName(each)) + ", ";
+            inputError("outputs: '" + output + "' is not an output; choose from " + known + "ids");
+        }
+        for (candela::Output each : named)
+            if (std::find(o.outputs.begin(), o.outputs.end(), each) == o.outputs.end()) o.outputs.push_back(each);
     }
+    std::sort(o.outputs.begin(), o.outputs.end());
     if (call.dtype.equal(py::dtype::of<uint8_t>())) o.format = candela::PixelFormat::Rgba8Srgb;
     else if (call.dtype.equal(py::dtype::of<float>())) o.format = candela::PixelFormat::Rgba32Float;
     else if (call.dtype.equal(py::dtype("float16"))) o.format = candela::PixelFormat::Rgba16Float;
@@ -262,19 +264,44 @@ RenderCall renderCall(const py::kwargs& kwargs, bool sequence, candela::Sequence
 
 // Renders one image of `scene` as `call` asks: a candela.Frame (a dict of NumPy arrays with a
 // `camera`). The colour array is allocated first and read back into; the GIL is released meanwhile.
+// An output besides colour as a NumPy array that owns its values (moved, not copied): H×W for one
+// channel, else H×W×C; float32, or uint32 for the IDs.
+template <typename T>
+py::array ownedArray(std::vector<T>&& values, const candela::OutputImage& image) {
+    auto* held = new std::vector<T>(std::move(values));
+    py::capsule owner(held, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+    std::vector<py::ssize_t> shape{py::ssize_t(image.height), py::ssize_t(image.width)};
+    if (image.channels > 1) shape.push_back(py::ssize_t(image.channels));
+    return py::array_t<T>(shape, held->data(), owner);
+}
+
 py::object renderOne(PyDevice& self, const candela::Scene& scene, const RenderCall& call) {
     const candela::RenderOptions& o = call.options;
     if (o.width == 0 || o.height == 0) inputError("an image of " + std::to_string(o.width) + "x" + std::to_string(o.height) + " pixels");
+    py::object frame = py::module_::import("candela").attr("Frame")();
+    frame.attr("environment_rotation") = o.environmentRotationDegrees;
+    if (o.outputs != std::vector<candela::Output>{candela::Output::Color}) {
+        // Outputs besides colour: the image in host memory, each output's values moved into its array.
+        candela::Image image = self.with([&](candela::Device& device) { return device.render(scene, o, call.environment); });
+        if (!image.pixels.empty()) {
+            py::array color(call.dtype, std::vector<py::ssize_t>{py::ssize_t(o.height), py::ssize_t(o.width), 4});
+            std::memcpy(color.mutable_data(), image.pixels.data(), image.pixels.size());
+            frame["color"] = color;
+        }
+        for (candela::OutputImage& output : image.outputs)
+            frame[candela::outputName(output.output)] =
+                output.ids.empty() ? ownedArray(std::move(output.values), output) : ownedArray(std::move(output.ids), output);
+        frame.attr("camera") = py::cast(image.camera);
+        return frame;
+    }
     py::array color(call.dtype, std::vector<py::ssize_t>{py::ssize_t(o.height), py::ssize_t(o.width), 4});
     void* pixels = color.mutable_data();
     const size_t rowBytes = size_t(o.width) * candela::bytesPerPixel(o.format);
     const candela::CameraInfo camera = self.with([&](candela::Device& device) {
         return device.renderInto(pixels, rowBytes, scene, o, call.environment);
     });
-    py::object frame = py::module_::import("candela").attr("Frame")();
     frame["color"] = color;
     frame.attr("camera") = py::cast(camera);
-    frame.attr("environment_rotation") = o.environmentRotationDegrees;
     return frame;
 }
 
@@ -334,6 +361,10 @@ constexpr const char* kLoadEnvironmentDoc = "A .hdr/.exr from a path or bytes; N
 PYBIND11_MODULE(_candela, m) {
     m.doc() = "Candela's C++ API for Python (import candela; docs/python.md).";
     m.attr("__version__") = candela::version();
+    m.attr("NO_ID") = candela::NoId;
+    py::list outputNames;
+    for (candela::Output output : candela::allOutputs()) outputNames.append(candela::outputName(output));
+    m.attr("OUTPUTS") = py::tuple(outputNames);
     registerErrors(m);
 
     py::class_<candela::CameraInfo>(m, "CameraInfo",

@@ -2,6 +2,7 @@
 // turned into the renderer's settings; frames read back into the public pixel formats.
 
 #include "api/access.h"
+#include "api/outputs.h"
 #include "api/cameras.h"
 #include "candela/device.h"
 #include "core/cache_files.h"
@@ -78,10 +79,14 @@ void copyPixels(const CapturedFrame& frame, PixelFormat format, std::byte* out, 
 // The bytes of one row of the image `options` ask for, without padding.
 size_t packedRowBytes(const RenderOptions& options) { return size_t(options.width) * bytesPerPixel(options.format); }
 
-// An image of the size and format `options` ask for, its pixels zero. Made once the renderer has
-// accepted the size (a size beyond the device's limit is an InputError, not an allocation).
-Image blankImage(const RenderOptions& options) {
-    return {options.width, options.height, options.format, std::vector<std::byte>(packedRowBytes(options) * options.height)};
+// `frame` as the API's image of `options`: its pixels (none without colour) and other outputs.
+Image imageOf(const CapturedFrame& frame, const RenderOptions& options, const CameraInfo& camera) {
+    Image image{options.width, options.height, options.format, {}, camera, outputImagesOf(frame.outputs, options.width, options.height)};
+    if (!frame.rgba8.empty() || !frame.rgba32f.empty()) {
+        image.pixels.resize(packedRowBytes(options) * options.height);
+        copyPixels(frame, options.format, image.pixels.data(), packedRowBytes(options));
+    }
+    return image;
 }
 
 // Checks the cancel flag and asks the callback; throws CancelledError for either.
@@ -96,6 +101,8 @@ RenderSettings renderSettings(const RenderOptions& options, const scene::Scene& 
                               const assets::Environment* environment) {
     RenderSettings settings{.width = options.width, .height = options.height, .scene = &scene};
     settings.floatOutput = options.format != PixelFormat::Rgba8Srgb;
+    settings.outputs = pixelOutputsOf(options.outputs);
+    if (settings.outputs.empty()) throw UserError("RenderOptions::outputs: no output asked for; give at least one (Output::Color)");
     settings.camera = cameraSettings(options);
     settings.tonemap.op = tonemapOf(options.tonemap);
     settings.tonemap.exposureEv = options.exposureEv;
@@ -227,12 +234,8 @@ void Access::renderSequence(Device& device, const Scene& scene, const RenderOpti
                             const SequenceOptions& sequence, const FrameCallback& onFrame,
                             const Environment* environment, const ProgressCallback& progress,
                             const SettingsHook& hook) {
-    Image image;
     renderFrames(device, scene, options, sequence, [&](uint32_t i, const CapturedFrame& frame, const CameraInfo& camera) {
-        if (i == 0) image = blankImage(options);
-        copyPixels(frame, options.format, image.pixels.data(), packedRowBytes(options));
-        image.camera = camera;
-        onFrame(i, image);
+        onFrame(i, imageOf(frame, options, camera));
     }, environment, progress, hook);
 }
 
@@ -246,9 +249,7 @@ Image Device::render(const Scene& scene, const RenderOptions& options, const Env
                      const ProgressCallback& progress) {
     Image image;
     Access::renderFrames(*this, scene, options, {}, [&](uint32_t, const CapturedFrame& frame, const CameraInfo& camera) {
-        image = blankImage(options);
-        copyPixels(frame, options.format, image.pixels.data(), packedRowBytes(options));
-        image.camera = camera;
+        image = imageOf(frame, options, camera);
     }, environment, progress, {});
     return image;
 }
@@ -259,6 +260,8 @@ CameraInfo Device::renderInto(void* pixels, size_t rowBytes, const Scene& scene,
     if (rowBytes < packed)
         throw InputError("", "renderInto: rows of " + std::to_string(rowBytes) + " bytes hold fewer than the " +
                                  std::to_string(options.width) + " pixels of a row (" + std::to_string(packed) + " bytes)");
+    if (options.outputs != std::vector<Output>{Output::Color})
+        throw InputError("", "renderInto: renders the colour image alone (RenderOptions::outputs {Output::Color}); render() gives the others");
     CameraInfo info;
     Access::renderFrames(*this, scene, options, {}, [&](uint32_t, const CapturedFrame& frame, const CameraInfo& camera) {
         copyPixels(frame, options.format, static_cast<std::byte*>(pixels), rowBytes);

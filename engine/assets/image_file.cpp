@@ -1,6 +1,6 @@
 #include "assets/image_file.h"
 
-#include "assets/exr_reader.h"
+#include "assets/output_file.h"
 #include "core/cache_files.h"
 #include "core/errors.h"
 
@@ -141,16 +141,16 @@ bool imageFileComplete(const std::filesystem::path& path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) return false;
     try {
+        if (lowerExtension(path) == ".npy") {
+            const std::string bytes = readAll(path);
+            return npyComplete(std::span(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()));
+        }
         switch (imageFileFormat(path)) {
             case ImageFileFormat::Png: return pngComplete(readAll(path));
             case ImageFileFormat::Pfm: return pfmComplete(readAll(path));
-            case ImageFileFormat::Exr: {
-                // Decoded whole: OpenEXR's isComplete() checks the offset table, not that the last
-                // chunk's data is all there.
-                const std::string bytes = readAll(path);
-                decodeExr(std::span(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()), path.string(), {});
-                return true;
-            }
+            // Decoded whole, every channel (the outputs' too): OpenEXR's isComplete() checks the
+            // offset table, not that the last chunk's data is all there.
+            case ImageFileFormat::Exr: return exrDecodesWhole(path);
         }
     } catch (const std::exception&) {
     }

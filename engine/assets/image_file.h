@@ -35,7 +35,8 @@ void writeExr(const std::filesystem::path& path, uint32_t width, uint32_t height
 void writePfm(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const float> rgba);
 
 // Whether the file at `path` is a whole image of its extension's format: a PNG whose chunks reach
-// IEND, an EXR that decodes whole (assets::decodeExr), a PFM as long as its header says. False for a
+// IEND, an EXR whose every channel decodes whole, a PFM as long as its header says, a NumPy .npy
+// array (output_file.h) its data fills. False for a
 // missing, truncated or foreign file. `candela render --resume` skips scenes whose outputs all are.
 bool imageFileComplete(const std::filesystem::path& path);
 

@@ -68,6 +68,9 @@ struct RenderOptions {
     double time = 0.0;
     std::string variant;                  // a KHR_materials_variants name; "": the default materials
     float environmentRotationDegrees = 0.0f;  // turns the environment about +Y (from +X towards +Z)
+    // What to render per pixel (Image::pixels for Output::Color, Image::outputs for the rest).
+    // Without Color the passes that make the image are culled and Image::pixels is empty.
+    std::vector<Output> outputs{Output::Color};
 };
 
 // An image sequence: frame i shows RenderOptions::time + i / fps; with turntableDegrees the orbit

@@ -6,6 +6,7 @@
         frame = device.render(scene, width=512, height=512, environment=device.load_environment())
         frame["color"]        # numpy.ndarray, 512 x 512 x 4, uint8 sRGB (alpha: coverage)
         frame.camera.K        # the intrinsics it was rendered with
+        device.render(scene, outputs=["color", "depth", "normal", "ids"])  # per-pixel outputs besides
 
 docs/python.md describes every call; the C++ API it binds is include/candela/.
 """
@@ -22,6 +23,8 @@ from ._candela import (
     InputError,
     InternalFailure,
     OutOfMemoryError,
+    NO_ID,
+    OUTPUTS,
     Scene,
     SequenceIterator,
     __version__,
@@ -35,8 +38,8 @@ from ._candela import (
 
 
 class Frame(dict):
-    """One rendered image: output name -> NumPy array (height x width x channels, C-contiguous,
-    owned by NumPy); `camera`, the CameraInfo it was rendered with, and `environment_rotation`,
+    """One rendered image: output name -> NumPy array (height x width x channels, or height x width
+    for one channel; C-contiguous, owned by NumPy; docs/outputs.md); `camera`, the CameraInfo it was rendered with, and `environment_rotation`,
     the environment's turn in degrees (jittered per view with lighting_seed)."""
 
     camera: CameraInfo
@@ -49,6 +52,6 @@ class Frame(dict):
 
 __all__ = [
     "Camera", "CameraInfo", "CancelledError", "Device", "DeviceError", "DeviceLostError", "Environment", "Error",
-    "Frame", "InputError", "InternalFailure", "OutOfMemoryError", "Scene", "SequenceIterator", "__version__",
+    "Frame", "InputError", "InternalFailure", "NO_ID", "OUTPUTS", "OutOfMemoryError", "Scene", "SequenceIterator", "__version__",
     "load_environment", "load_scene", "ring_views", "sphere_views", "transforms_json", "write_image",
 ]

@@ -8,6 +8,9 @@ import numpy
 import numpy.typing
 
 __version__: str
+# The ID outputs' value where there is none; every output's name.
+NO_ID: int
+OUTPUTS: tuple[str, ...]
 
 class Error(RuntimeError): ...
 class InputError(Error):
@@ -86,7 +89,9 @@ def ring_views(count: int, elevation: float) -> list[tuple[float, float]]: ...
 def write_image(path: str | PathLike[str], pixels: numpy.ndarray) -> None: ...
 def transforms_json(frames: Iterable[tuple[str | PathLike[str], Frame]]) -> str: ...
 
-_Output = Literal["color"]
+# The per-pixel outputs (docs/outputs.md); "ids" stands for the five IDs.
+_Output = Literal["color", "depth", "clip_depth", "normal", "base_color", "alpha", "metallic_roughness", "emissive",
+                  "node_id", "mesh_id", "primitive_id", "material_id", "instance_id", "ids"]
 _Tonemap = Literal["pbr-neutral", "aces", "agx", "reinhard", "linear"]
 _ShadingPath = Literal["auto", "forward", "visibility"]
 _Background = Literal["auto", "environment", "transparent"] | Sequence[float]

@@ -72,22 +72,25 @@ def _object_files(folder, count):
 
 def object_complete(folder, views):
     """Whether `folder` holds a finished object: its transforms.json (written last) lists `views`
-    frames whose files are all there."""
+    frames whose files (the image and every OUTPUT_file_path) are all there."""
     transforms = Path(folder) / "transforms.json"
     try:
         frames = json.loads(transforms.read_text())["frames"]
     except (OSError, ValueError, KeyError):
         return False
-    return len(frames) == views and all((Path(folder) / f["file_path"]).is_file() for f in frames)
+    return len(frames) == views and all((Path(folder) / f[key]).is_file()
+                                        for f in frames for key in f if key.endswith("file_path"))
 
 
 def render_object(scene_file, out_folder, *, views=20, ring=None, lighting_seed=None, environment=None,
                   device_options=None, resume=True, **settings):
     """Renders `scene_file` from `views` directions (a Fibonacci sphere, or a ring `ring` degrees
-    above the horizon) into `out_folder`: NNN.png per view and transforms.json (written last, so a
-    folder with it is finished). `environment`: an .hdr/.exr path, None for the built-in sky.
-    `settings`: Device.render's keywords. Returns the object's manifest entry; a Candela error is
-    returned as a failure of this file, not raised."""
+    above the horizon) into `out_folder`: NNN.png per view, with `outputs=` besides colour each
+    output as NNN.OUTPUT.npy (named in the view's transforms.json entry as OUTPUT_file_path, e.g.
+    depth_file_path), and transforms.json (written last, so a folder with it is finished).
+    `environment`: an .hdr/.exr path, None for the built-in sky. `settings`: Device.render's
+    keywords. Returns the object's manifest entry; a Candela error is returned as a failure of
+    this file, not raised."""
     start = time.perf_counter()
     entry = {"file": str(scene_file), "folder": str(out_folder), "worker": os.getpid()}
     try:
@@ -101,12 +104,28 @@ def render_object(scene_file, out_folder, *, views=20, ring=None, lighting_seed=
         directions = candela.ring_views(views, ring) if ring is not None else candela.sphere_views(views)
         validation_before = device.validation_messages
         frames = []
+        extra = []  # per view: the files of its outputs besides colour
         for i, frame in enumerate(device.render_sequence(scene, views=directions, lighting_seed=lighting_seed,
                                                          environment=lighting, **settings)):
             name = f"{i:03d}.png"
-            candela.write_image(out_folder / name, frame["color"])
+            if "color" in frame:
+                candela.write_image(out_folder / name, frame["color"])
+            files = {}
+            for output, values in frame.items():
+                if output == "color":
+                    continue
+                files[f"{output}_file_path"] = f"{i:03d}.{output}.npy"
+                _write_atomically(out_folder / files[f"{output}_file_path"], lambda out, v=values: numpy.save(out, v))
             frames.append((name, frame))
+            extra.append(files)
         text = candela.transforms_json(frames)
+        if any(extra):
+            document = json.loads(text)
+            for entry_json, files in zip(document["frames"], extra):
+                entry_json.update(files)
+                if "color" not in settings.get("outputs", ["color"]):
+                    del entry_json["file_path"]
+            text = json.dumps(document, indent=2) + "\n"
         _write_atomically(out_folder / "transforms.json", lambda out: out.write(text.encode()))
         return {**entry, "status": "ok", "views": views, "warnings": list(scene.warnings),
                 "validation_messages": device.validation_messages - validation_before,

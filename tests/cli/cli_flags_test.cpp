@@ -29,7 +29,7 @@ const std::map<std::string, std::vector<std::string>> kCompanions = {{"--screens
 const std::map<std::string, std::string> kExamples = {
     {"--out", "out"}, {"--width", "64"}, {"--height", "48"}, {"--frames", "3"}, {"--fps", "24"},
     {"--turntable", "90"}, {"--report", "report.json"}, {"--html", "index.html"}, {"--shard", "2/4"},
-    {"--views", "6"}, {"--view-ring", "20"}, {"--light-seed", "7"},
+    {"--views", "6"}, {"--view-ring", "20"}, {"--light-seed", "7"}, {"--outputs", "color,depth,ids"}, {"--outputs-format", "exr"},
     {"--graph-dot", "graph.dot"}, {"--graph-json", "graph.json"}, {"--screenshot", "shot.png"},
     {"--panels", "camera,debug"}, {"--shaders", "shaders"}, {"--ibl-report", "report.csv"},
     {"--scene", "model.glb"}, {"--scene-index", "1"}, {"--grid", "3"}, {"--variant", "red"},

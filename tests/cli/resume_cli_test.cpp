@@ -142,5 +142,42 @@ TEST(Resume, ATruncatedOrMissingOutputIsRenderedAgainAndAWholeOneIsNot) {
     EXPECT_EQ(fs::last_write_time(dir.path() / "out/scene10.png"), untouched);
 }
 
+// --outputs: the outputs besides colour beside a .png as NumPy arrays (a truncated one rendered
+// again by --resume), or all of them as named channels of one .exr; a bad name is one line.
+TEST(Resume, OutputsBesideTheImageAreFilesResumeChecksToo) {
+    const TempDir dir("candela_resume_outputs");
+    const fs::path scenes = library(dir.path() / "scenes", 2);
+    const std::string args = "render " + scenes.string() + " --outputs color,depth,normal,ids --out " +
+                             (dir.path() / "out/{name}.png").string() + kSize;
+    ASSERT_EQ(run(args).exitCode, 0);
+    const fs::path depth = dir.path() / "out/scene10.depth.npy";
+    const std::string whole = readFile(depth);
+    // A NumPy array of 120 × 160 float32 after its 64-byte-aligned header.
+    ASSERT_EQ(whole.size(), 128u + 120 * 160 * 4);
+    EXPECT_EQ(whole.substr(0, 6), "\x93NUMPY");
+    EXPECT_NE(whole.find("'descr': '<f4', 'fortran_order': False, 'shape': (120, 160), }"), std::string::npos);
+    EXPECT_NE(readFile(dir.path() / "out/scene11.normal.npy").find("'shape': (120, 160, 3)"), std::string::npos);
+    EXPECT_NE(readFile(dir.path() / "out/scene11.instance_id.npy").find("'<u4'"), std::string::npos);
+    std::ofstream(depth, std::ios::binary | std::ios::trunc) << whole.substr(0, whole.size() - 4);
+    ASSERT_FALSE(assets::imageFileComplete(depth));
+    const Result resumed = run(args + " --resume");
+    ASSERT_EQ(resumed.exitCode, 0) << resumed.stderrText;
+    EXPECT_NE(resumed.stdoutText.find("1 of 2 scenes were complete already"), std::string::npos) << resumed.stdoutText;
+    EXPECT_EQ(readFile(depth), whole);
+
+    const fs::path exr = dir.path() / "one.exr";
+    const Result one = run("render " + (scenes / "scene10.glb").string() + " --outputs color,depth,normal,ids --out " + exr.string() + kSize);
+    ASSERT_EQ(one.exitCode, 0) << one.stderrText;
+    const std::string bytes = readFile(exr);
+    for (const char* channel : {"R", "A", "Z", "normal.X", "normal.Z", "node_id.id", "instance_id.id"})
+        EXPECT_NE(bytes.find(std::string(channel) + '\0'), std::string::npos) << channel;
+    EXPECT_TRUE(assets::imageFileComplete(exr));
+
+    const Result bad = run("render --outputs color,albedo --out " + (dir.path() / "bad.png").string() + kSize);
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.stderrText.find("--outputs: expected color, depth"), std::string::npos) << bad.stderrText;
+    EXPECT_NE(bad.stderrText.find("got 'albedo'"), std::string::npos) << bad.stderrText;
+}
+
 }  // namespace
 }  // namespace candela::test::resume_cli_test

@@ -4,6 +4,7 @@
 #include "assets/exr_reader.h"
 #include "assets/gltf_loader.h"
 #include "assets/hdr_reader.h"
+#include "assets/output_file.h"
 #include "core/errors.h"
 #include "pose/scene_pose.h"
 #include "pose/skinning.h"
@@ -209,5 +210,13 @@ void decodeTexture(Decode decode, const uint8_t* data, size_t size, const char* 
 void fuzzKtx2(const uint8_t* data, size_t size) { decodeTexture(&textures::decodeKtx2, data, size, "KTX2"); }
 
 void fuzzWebp(const uint8_t* data, size_t size) { decodeTexture(&textures::decodeWebp, data, size, "WebP"); }
+
+void fuzzNpy(const uint8_t* data, size_t size) {
+    const std::span<const uint8_t> bytes(data, size);
+    if (!assets::npyComplete(bytes)) return;
+    // Complete: a version 1.0 header of the length it declares, then a whole number of values.
+    const size_t header = 10 + (size_t(data[8]) | size_t(data[9]) << 8);
+    if (size < header || (size - header) % 4 != 0) violated("npyComplete accepted a file its header does not describe");
+}
 
 }  // namespace candela::fuzz

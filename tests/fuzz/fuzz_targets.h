@@ -34,4 +34,8 @@ void fuzzKtx2(const uint8_t* data, size_t size);
 // textures::decodeWebp (libwebp behind Candela's checks); the same checks for its single level.
 void fuzzWebp(const uint8_t* data, size_t size);
 
+// assets::npyComplete (a per-pixel output's .npy file, --resume's check); checks that a file it
+// calls complete is as long as its header's 4-byte values say.
+void fuzzNpy(const uint8_t* data, size_t size);
+
 }  // namespace candela::fuzz

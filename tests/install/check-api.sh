@@ -41,7 +41,7 @@ echo "${#headers[@]} headers compile alone; they reach $(wc -l < "$tmp/reached")
 nm -D --defined-only "$library" | c++filt | sed -E 's/^[0-9a-f]+ //' |
   grep -Ev '^[WVu] ((typeinfo|typeinfo name|vtable) for )?(std::|__gnu_cxx::|void std::|std::__cxx11::basic_string<[^>]*>[^ ]* (std|__gnu_cxx)::)' |
   cut -d' ' -f2- > "$tmp/symbols"
-public='^(candela::(version|bytesPerPixel|writeImage|lookAt|sequenceFrame|sphereViews|ringViews|transformsJson)(\[abi:cxx11\])?\(|candela::(Device|Scene|Environment|Error|InputError|DeviceError|DeviceLostError|OutOfMemoryError|CancelledError|InternalFailure)::|(typeinfo|typeinfo name|vtable) for candela::(Error|InputError|DeviceError|DeviceLostError|OutOfMemoryError|CancelledError|InternalFailure)$)'
+public='^(candela::(version|bytesPerPixel|writeImage|lookAt|sequenceFrame|sphereViews|ringViews|transformsJson|outputName|outputsNamed|allOutputs|outputChannels|outputFiles)(\[abi:cxx11\])?\(|candela::(Device|Scene|Environment|Error|InputError|DeviceError|DeviceLostError|OutOfMemoryError|CancelledError|InternalFailure)::|(typeinfo|typeinfo name|vtable) for candela::(Error|InputError|DeviceError|DeviceLostError|OutOfMemoryError|CancelledError|InternalFailure)$)'
 others=$(grep -Ev "$public" "$tmp/symbols" || true)
 [ -z "$others" ] || fail "libcandela.so exports more than the API: $(echo "$others" | head -5)"
 grep -q "^candela::Device::render(" "$tmp/symbols" || fail "libcandela.so does not export candela::Device::render"

@@ -5,6 +5,7 @@ import json
 import os
 import shutil
 
+import numpy as np
 import pytest
 
 from conftest import shared_model
@@ -31,7 +32,8 @@ def test_a_library_across_two_workers(client, tmp_path):
         shutil.copytree(model.parent, library / name)
     (library / "broken.glb").write_bytes(b"glTF\x02\x00\x00\x00\x10\x00\x00\x00nonsense")
     out = tmp_path / "dataset"
-    options = dict(views=3, width=48, height=40, device_options={"validation": True, "pipeline_cache": "off"})
+    options = dict(views=3, width=48, height=40, outputs=["color", "depth", "normal", "ids"],
+                   device_options={"validation": True, "pipeline_cache": "off"})
     manifest = render_library(client, [library], out, **options)
 
     objects = manifest["objects"]
@@ -49,6 +51,12 @@ def test_a_library_across_two_workers(client, tmp_path):
         transforms = json.loads((folder / "transforms.json").read_text())
         assert [f["file_path"] for f in transforms["frames"]] == ["000.png", "001.png", "002.png"]
         assert transforms["w"] == 48 and transforms["h"] == 40
+        # The outputs besides colour beside each view, named in its entry.
+        first = transforms["frames"][0]
+        assert first["depth_file_path"] == "000.depth.npy" and first["node_id_file_path"] == "000.node_id.npy"
+        depth, normal = np.load(folder / first["depth_file_path"]), np.load(folder / first["normal_file_path"])
+        assert depth.shape == (40, 48) and normal.shape == (40, 48, 3) and np.isfinite(depth).any()
+        assert np.load(folder / first["material_id_file_path"]).dtype == np.uint32
     assert json.loads((out / "manifest.json").read_text())["counts"] == manifest["counts"]
     assert not list(out.rglob("*.tmp-*"))
 

@@ -4,6 +4,7 @@
 
 #include "temp_dir.h"
 #include "assets/image_file.h"
+#include "assets/output_file.h"
 
 #include <gtest/gtest.h>
 
@@ -36,7 +37,15 @@ TEST(ImageFileComplete, WhatTheWritersWriteIsCompleteAndNoPrefixOfItIs) {
     writePng(dir.path() / "a.png", width, height, rgba8);
     writeExr(dir.path() / "a.exr", width, height, rgba32);
     writePfm(dir.path() / "a.pfm", width, height, rgba32);
-    for (const char* name : {"a.png", "a.exr", "a.pfm"}) {
+    // The per-pixel outputs' files: a NumPy array, and an EXR of float and uint channels.
+    std::vector<float> depth(width * height, 2.5f);
+    std::vector<uint32_t> ids(width * height, 0xFFFFFFFFu);
+    const OutputPlane planes[] = {{.name = "depth", .channels = {"Z"}, .floats = depth},
+                                  {.name = "node_id", .channels = {"node_id.id"}, .integer = true, .ids = ids}};
+    writeNpy(dir.path() / "a.npy", width, height, planes[1]);
+    writeOutputsExr(dir.path() / "b.exr", width, height, rgba32, planes);
+    EXPECT_EQ(readFile(dir.path() / "a.npy").size(), 128u + width * height * 4);
+    for (const char* name : {"a.png", "a.exr", "a.pfm", "a.npy", "b.exr"}) {
         const fs::path file = dir.path() / name;
         ASSERT_TRUE(imageFileComplete(file)) << name;
         const std::string bytes = readFile(file);
