@@ -279,12 +279,7 @@ void checkLightingFlags(const SceneRenderOptions& o) {
 }
 
 options::PixelOutputs parseOutputs(const std::string& flag, const std::string& value) {
-    std::vector<std::string> names;
-    for (size_t at = 0; at <= value.size();) {
-        const size_t comma = std::min(value.find(',', at), value.size());
-        names.push_back(value.substr(at, comma - at));
-        at = comma + 1;
-    }
+    const std::vector<std::string> names = commaSeparated(value);
     const std::vector<std::string_view> views(names.begin(), names.end());
     std::string_view bad;
     if (const std::optional<options::PixelOutputs> outputs = options::pixelOutputsNamed(views, &bad)) return *outputs;

@@ -13,12 +13,7 @@
 
 layout(constant_id = CANDELA_SPEC_AOV_TARGETS) const uint kTargets = 0u;
 
-layout(location = 0) in vec3 inWorldPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec4 inTangent;
-layout(location = 3) in vec4 inColor;
-layout(location = 4) in vec2 inTexUv[CANDELA_TEX_COUNT];
-layout(location = 4 + CANDELA_TEX_COUNT) flat in uint inEntry;  // this instance's index into Draws
+layout(location = 4 + CANDELA_TEX_COUNT) flat in uint inEntry;  // this instance's index into Draws (aov.vert)
 
 layout(location = CANDELA_AOV_VIEW_DEPTH) out float outViewDepth;
 layout(location = CANDELA_AOV_NORMAL) out vec4 outNormal;
@@ -30,6 +25,7 @@ layout(location = CANDELA_AOV_INSTANCE) out uint outInstance;
 
 #define CANDELA_CORE_TEXTURE(inputs, field, slot) texture(field##Texture, (inputs).uv[slot])
 #include "shading/material_eval.glsl"
+#include "shading/fragment_inputs.glsl"
 
 bool writes(uint target) { return (kTargets & (1u << target)) != 0u; }
 
@@ -45,17 +41,7 @@ float viewDepth(vec3 p) {
 }
 
 void main() {
-    SurfaceInputs inputs;
-    inputs.draw = push.counts.y;
-    inputs.eye = push.eye.xyz;
-    inputs.position = inWorldPosition;
-    inputs.normal = inNormal;
-    inputs.tangent = inTangent;
-    inputs.faceNormal = normalize(cross(dFdx(inWorldPosition), dFdy(inWorldPosition)));
-    inputs.frontFacing = gl_FrontFacing;
-    inputs.color = inColor;
-    inputs.uv = inTexUv;
-    inputs.normalChange = 0.0f;
+    SurfaceInputs inputs = fragmentInputs();  // kSpecularAa is off: no normal change computed
     MaterialData m = materialOf(inputs);
     vec4 baseColor = materialBaseColor(inputs);
     // The surfaces the outputs describe: opaque ones; masked ones where alpha reaches the cutoff

@@ -51,8 +51,7 @@ void writeImage(const std::string& path, const Image& image, OutputFileFormat ou
             }
         }
         if (file == assets::ImageFileFormat::Exr && (color || !image.outputs.empty())) {
-            if (image.outputs.empty()) assets::writeExr(path, image.width, image.height, rgba);
-            else writeOutputFiles(path, image, rgba, outputFormat);
+            writeOutputFiles(path, image, rgba, outputFormat);
             return;
         }
         if (file == assets::ImageFileFormat::Pfm && color) assets::writePfm(path, image.width, image.height, rgba);

@@ -4,11 +4,6 @@
 #include "core/cache_files.h"
 #include "core/errors.h"
 
-#include <OpenEXR/ImfChannelList.h>
-#include <OpenEXR/ImfFrameBuffer.h>
-#include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfOutputFile.h>
-#include <OpenEXR/ImfStdIO.h>
 #include <stb_image_write.h>
 
 #include <algorithm>
@@ -71,31 +66,7 @@ void writePng(const std::filesystem::path& path, uint32_t width, uint32_t height
 
 void writeExr(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const float> rgba) {
     checkSize(path, width, height, rgba.size(), 4);
-    // Half RGBA, ZIP (lossless; 16 scanlines per chunk), through OpenEXR's C++ library. It writes
-    // only from slices of the channels' own type, so the floats are rounded to half here.
-    Imf::Header header(static_cast<int>(width), static_cast<int>(height));
-    header.compression() = Imf::ZIP_COMPRESSION;
-    std::vector<Imath::half> halves(rgba.begin(), rgba.end());
-    Imf::FrameBuffer frame;
-    const char* names[] = {"R", "G", "B", "A"};
-    char* base = reinterpret_cast<char*>(halves.data());
-    for (size_t c = 0; c < 4; ++c) {
-        header.channels().insert(names[c], Imf::Channel(Imf::HALF));
-        frame.insert(names[c], Imf::Slice(Imf::HALF, base + c * sizeof(Imath::half), 4 * sizeof(Imath::half),
-                                          size_t(width) * 4 * sizeof(Imath::half)));
-    }
-    Imf::StdOSStream encoded;  // in memory, then written atomically
-    try {
-        Imf::OutputFile file(encoded, header);
-        file.setFrameBuffer(frame);
-        file.writePixels(static_cast<int>(height));
-    } catch (const std::exception& e) {
-        std::string message = e.what();
-        std::replace(message.begin(), message.end(), '\n', ' ');
-        throw UserError(path.string() + ": cannot write EXR: " + message);
-    }
-    const std::string bytes = encoded.str();
-    writeFileAtomically(path, [&](std::ostream& out) { out.write(bytes.data(), std::streamsize(bytes.size())); });
+    writeOutputsExr(path, width, height, rgba, {});  // half RGBA and no other channel
 }
 
 void writePfm(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const float> rgba) {

@@ -1,6 +1,6 @@
 #pragma once
 // Writing captured frames to disk: PNG (8-bit, sRGB-encoded), OpenEXR (linear half float, through
-// OpenEXR's C++ library) and PFM (linear 32-bit float RGB, written by hand: it is a 3-line header and raw floats).
+// OpenEXR's C++ library: output_file.h's writer, without other channels) and PFM (linear 32-bit float RGB, written by hand: it is a 3-line header and raw floats).
 // Every file is written to a temporary name in its folder and renamed into place
 // (writeFileAtomically), so a run killed mid-write never leaves a truncated file under the final
 // name. Every failure is a UserError naming the file and the problem.

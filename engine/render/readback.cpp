@@ -40,15 +40,12 @@ std::vector<ReadbackSource> Readback::addOutputs(Frame& frame, options::PixelOut
     std::vector<ReadbackSource> sources;
     std::vector<graph::TextureId> images;
     std::vector<VkDeviceSize> bytes;
-    const auto add = [&](uint32_t target, graph::TextureId image) {
+    for (const auto& [target, image] : frame.aov->images(outputs.has(options::PixelOutput::ClipDepth))) {
         const VkFormat format = frame.graph->declaration().resources[image.index].texture.format;
         sources.push_back({target, format});
         images.push_back(image);
         bytes.push_back(VkDeviceSize(texels) * graph::formatTexelSize(format));
-    };
-    for (uint32_t t = 0; t < CANDELA_AOV_TARGET_COUNT; ++t)
-        if (frame.aov->targets[t].valid()) add(t, frame.aov->targets[t]);
-    if (outputs.has(options::PixelOutput::ClipDepth)) add(CANDELA_AOV_CLIP_DEPTH, frame.aov->depth);
+    }
     passes::addReadbackPass(*frame.graph, "readback_outputs", images, import(frame, passes::packedOffsets(bytes).back(), "readback_outputs"));
     return sources;
 }

@@ -109,11 +109,9 @@ FrameTiming Renderer::renderFrame(const RenderSettings& settings) {
     // kept alive as exported outputs, as a swapchain image would be.
     // Without colour among the outputs, the passes that make the image are culled, as in a capture.
     if (settings.outputs.has(options::PixelOutput::Color) || !frame.aov) frame.graph->exportTexture(frame.ldr);
-    if (frame.aov) {
-        for (const graph::TextureId target : frame.aov->targets)
-            if (target.valid()) frame.graph->exportTexture(target);
-        if (settings.outputs.has(options::PixelOutput::ClipDepth)) frame.graph->exportTexture(frame.aov->depth);
-    }
+    if (frame.aov)
+        for (const auto& [target, image] : frame.aov->images(settings.outputs.has(options::PixelOutput::ClipDepth)))
+            frame.graph->exportTexture(image);
     return execute(std::move(frame), settings);
 }
 

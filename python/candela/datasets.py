@@ -121,9 +121,9 @@ def render_object(scene_file, out_folder, *, views=20, ring=None, lighting_seed=
         text = candela.transforms_json(frames)
         if any(extra):
             document = json.loads(text)
-            for entry_json, files in zip(document["frames"], extra):
+            for entry_json, (_, frame), files in zip(document["frames"], frames, extra):
                 entry_json.update(files)
-                if "color" not in settings.get("outputs", ["color"]):
+                if "color" not in frame:  # no image was written
                     del entry_json["file_path"]
             text = json.dumps(document, indent=2) + "\n"
         _write_atomically(out_folder / "transforms.json", lambda out: out.write(text.encode()))

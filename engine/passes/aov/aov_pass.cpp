@@ -44,13 +44,8 @@ const vk::Pipeline& AovPass::pipeline(const Variant& v) {
             .specialization = shader::specializationValues({{CANDELA_SPEC_AOV_TARGETS, v.targets},
                                                             {CANDELA_SPEC_NORMAL_MAP, v.normalMap},
                                                             {CANDELA_SPEC_ALPHA_MASK, v.alphaTest}}),
-            .vertexBindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}},
-            .vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
-                                 {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
-                                 {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, tangent)},
-                                 {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv0)},
-                                 {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv1)},
-                                 {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, color)}}};
+            .vertexBindings = sceneVertexBindings(),
+            .vertexAttributes = sceneVertexAttributes()};
         // The targets asked for are fixed in the program at load, which then has no output for the
         // others, and their outputs are moved to the attachments' locations: in order, packed.
         desc.frozenConstants = {CANDELA_SPEC_AOV_TARGETS};

@@ -19,6 +19,7 @@
 
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace candela::passes {
@@ -31,6 +32,16 @@ inline constexpr std::array<VkFormat, CANDELA_AOV_TARGET_COUNT> kAovFormats = {
 struct AovTargets {
     std::array<graph::TextureId, CANDELA_AOV_TARGET_COUNT> targets;  // invalid where not asked for
     graph::TextureId depth;  // D32, reverse Z (0: nothing drawn)
+
+    // The images that hold the outputs asked for, each with its number: the targets asked for
+    // (CANDELA_AOV_*) and, with `clipDepth`, the depth (CANDELA_AOV_CLIP_DEPTH).
+    std::vector<std::pair<uint32_t, graph::TextureId>> images(bool clipDepth) const {
+        std::vector<std::pair<uint32_t, graph::TextureId>> out;
+        for (uint32_t t = 0; t < CANDELA_AOV_TARGET_COUNT; ++t)
+            if (targets[t].valid()) out.emplace_back(t, targets[t]);
+        if (clipDepth) out.emplace_back(CANDELA_AOV_CLIP_DEPTH, depth);
+        return out;
+    }
 };
 
 class AovPass {

@@ -12,8 +12,10 @@
 #include "passes/drawing/frame_inputs.h"
 #include "vk/pipeline.h"
 
+#include <cstddef>
 #include <optional>
 #include <span>
+#include <vector>
 
 namespace candela::passes {
 
@@ -93,6 +95,21 @@ void recordDraws(const graph::PassContext& ctx, std::span<const DrawCall> draws,
         vkCmdDrawIndexed(cmd, item.indexCount, item.instances, item.firstIndex, restVertices ? 0 : draw.vertexOffset, 0);
     }
     ctx.endRendering();
+}
+
+// The vertex input of a program that reads the scene's vertices whole, as recordDraws binds them
+// (scene::Vertex at binding 0): position, normal, tangent, texture coordinates 0 and 1 and COLOR_0
+// at locations 0–5 (forward.vert.glsl).
+inline std::vector<VkVertexInputBindingDescription> sceneVertexBindings() {
+    return {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+}
+inline std::vector<VkVertexInputAttributeDescription> sceneVertexAttributes() {
+    return {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
+            {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
+            {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, tangent)},
+            {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv0)},
+            {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv1)},
+            {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, color)}};
 }
 
 // Binds `set` at index `index` of `pipeline`'s layout (graphics), counting it in `stats` (a hook's).

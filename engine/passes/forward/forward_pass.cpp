@@ -31,13 +31,8 @@ vk::GraphicsPipelineDesc pipelineDesc(const ShadingVariant& v, bool specializeLa
         .alphaToCoverage = v.alphaToCoverage,
         .dynamicCullMode = true,
         .specialization = specializationConstants(v),
-        .vertexBindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}},
-        .vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
-                             {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
-                             {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, tangent)},
-                             {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv0)},
-                             {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv1)},
-                             {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, color)}}};
+        .vertexBindings = sceneVertexBindings(),
+        .vertexAttributes = sceneVertexAttributes()};
     // Where the generic layered program exceeds the device's per-stage limits, it is specialized to
     // the variant's layers (CANDELA_SPEC_LAYERS) at load: its material set (1) and layer maps (3)
     // declare only what those layers read (docs/device-layer.md); sets 0 and 2 keep every binding,
