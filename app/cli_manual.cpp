@@ -119,6 +119,8 @@ std::string manPage() {
            ".SH ENVIRONMENT\n"
            ".TP\n.B VK_ICD_FILENAMES\nthe Vulkan driver to use, as for any Vulkan program (e.g. Mesa's lavapipe "
            "for headless rendering on the CPU)\n"
+           ".TP\n.B CANDELA_DEVICE\nthe device to use when \\fB\\-\\-device\\fR is not given (the same selector; "
+           "\\fBswiftshader\\fR adds the SwiftShader driver of Debian's chromium package)\n"
            ".SH SEE ALSO\nThe documentation installed with Candela (README.md and docs/).\n";
     return out;
 }

@@ -217,7 +217,10 @@ EnvironmentChoice parseEnvironment(Str flag, Str v) {
 std::vector<FlagSpec<CommonOptions>> deviceFlags(bool rendering) {
     using O = CommonOptions;
     std::vector<FlagSpec<O>> flags = {
-        {"--device", "SEL", "device index or case-insensitive name substring (see candela info)", "",
+        {"--device", "SEL",
+         "device index or case-insensitive name substring (see candela info); without it CANDELA_DEVICE; one naming "
+         "swiftshader adds the SwiftShader driver of Debian's chromium package",
+         "",
          [](O& o, Str, Str v) { o.device = v; }},
         {"--device-profile", "NAME",
          "see the device through a profile: minimum (what Vulkan 1.3 guarantees), desktop or apple (published "

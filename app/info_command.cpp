@@ -7,6 +7,7 @@
 #include "render/visibility_path.h"
 #include "vk/check.h"
 #include "vk/device_select.h"
+#include "vk/timestamps.h"
 
 #include <cstdio>
 
@@ -43,7 +44,7 @@ int runInfo(const InfoOptions& options) {
                 r.transferFamily);
     std::printf("  timestamps: %s\n", r.timestampValidBits
                                           ? (std::to_string(r.timestampValidBits) + " valid bits, period " +
-                                             std::to_string(r.timestampPeriodNs) + " ns")
+                                             std::to_string(r.timestampPeriodNs) + " ns; " + vk::timestampBehaviour(r.driverId))
                                                 .c_str()
                                           : "not supported");
     const vk::MsaaChoice msaa = vk::chooseMsaa(context.properties().deviceType, context.attachmentSampleCounts(), std::nullopt);

@@ -18,10 +18,10 @@ struct GraphTimings {
     // Per declared pass: host wall milliseconds of the pass submitted and waited for alone
     // (RenderSettings::serialPasses; negative for passes that did not run). Empty when the frame
     // ran as one submit. On devices whose timestamps mark when commands are issued rather than
-    // when deferred work runs (llvmpipe rasterizes at the end of a render pass), only these show
+    // when deferred work runs (lavapipe rasterizes at the end of a render pass), only these show
     // where the time goes.
     std::vector<double> serialMs;
-    // Whether gpuMs miss work the device runs after a pass's closing timestamp (CPU devices:
+    // Whether gpuMs miss work the device runs after a pass's closing timestamp (lavapipe:
     // vk::timestampsMeasurePasses is false). Every output that prints gpuMs then says so, with
     // kUnreliableGpuTimes.
     bool gpuMsUnreliable = false;
@@ -29,7 +29,7 @@ struct GraphTimings {
 
 // Said wherever per-pass GPU times are shown while GraphTimings::gpuMsUnreliable.
 inline constexpr const char* kUnreliableGpuTimes =
-    "per-pass GPU times are unreliable on this CPU device: its timestamps mark when a pass's commands are "
+    "per-pass GPU times are unreliable on lavapipe: its timestamps mark when a pass's commands are "
     "issued, while the work runs later (llvmpipe rasterizes a render pass's draws when it ends), so a pass's "
     "cost shows in another pass or in none; `candela bench` measures each pass submitted alone";
 

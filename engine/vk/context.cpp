@@ -5,6 +5,7 @@
 #include "vk/device_choices.h"
 #include "vk/device_select.h"
 #include "vk/library_pin.h"
+#include "vk/named_drivers.h"
 #include "vk/pipeline_cache_file.h"
 
 #include <algorithm>
@@ -120,6 +121,7 @@ Context::~Context() {
 }
 
 void Context::createInstance(const ContextDesc& desc) {
+    addNamedDriver(effectiveDeviceSelector(desc.deviceSelector));
     // The driver and layers loaded from here on stay loaded (vk/library_pin.h); noted before the
     // first loader call, which may load them already.
     const LibraryPin pin;
@@ -216,7 +218,8 @@ void Context::pickPhysicalDevice(const ContextDesc& desc) {
         candidates.push_back({properties.deviceName, properties.deviceType, properties.apiVersion,
                               unsuitableReason(mInstance.handle, device, desc.presentSupport, caps.back())});
     }
-    const DeviceChoice choice = chooseDevice(candidates, desc.deviceSelector);
+    const DeviceChoice choice = chooseDevice(candidates, effectiveDeviceSelector(desc.deviceSelector),
+                                             desc.deviceSelector.empty() ? "CANDELA_DEVICE" : "--device");
     mPhysicalDevice = devices[choice.index];
     vkGetPhysicalDeviceProperties(mPhysicalDevice, &mProperties);
     mCaps = std::move(caps[choice.index]);
@@ -231,6 +234,7 @@ void Context::pickPhysicalDevice(const ContextDesc& desc) {
     vkGetPhysicalDeviceProperties2(mPhysicalDevice, &properties2);
     mReport.driverName = driver.driverName;
     mReport.driverInfo = driver.driverInfo;
+    mReport.driverId = driver.driverID;
 }
 
 void Context::createDevice(const ContextDesc& desc) {

@@ -42,7 +42,8 @@ struct ContextDesc {
     // With validation: the layer's best-practices checks too (performance warnings such as
     // barriers wider than they need to be). Also on when CANDELA_BEST_PRACTICES=1.
     bool bestPractices = false;
-    // "" picks the best device; an index or a case-insensitive name substring picks one (--device).
+    // "" picks the best device (or the one CANDELA_DEVICE selects); an index or a case-insensitive
+    // name substring picks one (--device). One naming SwiftShader adds its driver (vk/named_drivers.h).
     std::string deviceSelector;
     // Instance extensions a window system needs (e.g. from glfwGetRequiredInstanceExtensions).
     std::vector<std::string> instanceExtensions;
@@ -76,6 +77,7 @@ struct DeviceReport {
     std::string reason;            // why it was chosen
     uint32_t apiVersion = 0;
     std::string driverName, driverInfo;
+    VkDriverId driverId = VkDriverId(0);  // VK_DRIVER_ID_MESA_LLVMPIPE, _GOOGLE_SWIFTSHADER, … (0: unknown)
     std::string profile;           // the device profile in use ("native" when none)
     std::vector<std::string> enabledFeatures;
     std::vector<std::string> enabledExtensions;

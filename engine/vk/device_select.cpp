@@ -1,5 +1,7 @@
 #include "vk/device_select.h"
 
+#include "vk/named_drivers.h"
+
 #include "core/errors.h"
 
 #include <algorithm>
@@ -29,10 +31,11 @@ bool allDigits(std::string_view text) {
     return !text.empty() && std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); });
 }
 
-DeviceChoice requireSuitable(const std::vector<DeviceCandidate>& devices, uint32_t index, std::string reason) {
+DeviceChoice requireSuitable(const std::vector<DeviceCandidate>& devices, uint32_t index, std::string_view source,
+                             std::string reason) {
     const DeviceCandidate& device = devices[index];
     if (!device.unsuitable.empty())
-        throw UserError("--device: device " + std::to_string(index) + " '" + device.name + "' cannot be used: " +
+        throw UserError(std::string(source) + ": device " + std::to_string(index) + " '" + device.name + "' cannot be used: " +
                         device.unsuitable);
     return {index, std::move(reason)};
 }
@@ -49,22 +52,26 @@ const char* deviceTypeName(VkPhysicalDeviceType type) {
     }
 }
 
-DeviceChoice chooseDevice(const std::vector<DeviceCandidate>& devices, std::string_view selector) {
+DeviceChoice chooseDevice(const std::vector<DeviceCandidate>& devices, std::string_view selector, std::string_view source) {
+    const std::string from(source);
     if (devices.empty()) throw UserError("no Vulkan device found (is a Vulkan driver such as mesa-vulkan-drivers installed?)");
 
     if (allDigits(selector)) {
         const unsigned long index = std::stoul(std::string(selector));
         if (index >= devices.size())
-            throw UserError("--device " + std::string(selector) + ": no such device index (there are " +
+            throw UserError(from + " " + std::string(selector) + ": no such device index (there are " +
                             std::to_string(devices.size()) + " devices)");
-        return requireSuitable(devices, static_cast<uint32_t>(index), "selected by index with --device");
+        return requireSuitable(devices, static_cast<uint32_t>(index), source, "selected by index with " + from);
     }
     if (!selector.empty()) {
         const std::string needle = lower(selector);
         for (uint32_t i = 0; i < devices.size(); ++i)
             if (lower(devices[i].name).find(needle) != std::string::npos)
-                return requireSuitable(devices, i, "name matches --device '" + std::string(selector) + "'");
-        throw UserError("--device '" + std::string(selector) + "' matches no Vulkan device");
+                return requireSuitable(devices, i, source, "name matches " + from + " '" + std::string(selector) + "'");
+        throw UserError(from + " '" + std::string(selector) + "' matches no Vulkan device" +
+                        (needle.find("swiftshader") != std::string::npos
+                             ? " (SwiftShader's driver comes with Debian's chromium package: " + std::string(kSwiftShaderManifest) + ")"
+                             : std::string()));
     }
 
     uint32_t best = ~0u;

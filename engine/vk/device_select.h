@@ -25,8 +25,10 @@ struct DeviceChoice {
 // Picks a device. `selector` empty: the first suitable device by type preference
 // discrete > integrated > virtual > CPU > other. `selector` all digits: that index.
 // Otherwise: the first device whose name contains `selector` (case-insensitive).
-// Throws UserError if the selector matches nothing, the match is unsuitable, or no device is suitable.
-DeviceChoice chooseDevice(const std::vector<DeviceCandidate>& devices, std::string_view selector);
+// Throws UserError if the selector matches nothing, the match is unsuitable, or no device is suitable;
+// its message names `source`, where the selector came from ("--device" or "CANDELA_DEVICE").
+DeviceChoice chooseDevice(const std::vector<DeviceCandidate>& devices, std::string_view selector,
+                          std::string_view source = "--device");
 
 const char* deviceTypeName(VkPhysicalDeviceType type);
 

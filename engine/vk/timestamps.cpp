@@ -4,10 +4,19 @@
 
 namespace candela::vk {
 
-bool timestampsMeasurePasses(VkPhysicalDeviceType type) { return type != VK_PHYSICAL_DEVICE_TYPE_CPU; }
+bool timestampsMeasurePasses(VkDriverId driver) { return driver != VK_DRIVER_ID_MESA_LLVMPIPE; }
+
+const char* timestampBehaviour(VkDriverId driver) {
+    if (driver == VK_DRIVER_ID_MESA_LLVMPIPE)
+        return "per-pass times unreliable: llvmpipe rasterizes a render pass's draws when the render pass ends, after the "
+               "pass's closing timestamp (`candela bench` measures each pass submitted alone)";
+    if (driver == VK_DRIVER_ID_GOOGLE_SWIFTSHADER)
+        return "per-pass times measured: SwiftShader finishes the work recorded before a timestamp before it writes it";
+    return "per-pass times measured: each timestamp is written when the work recorded before it has finished";
+}
 
 TimestampPool::TimestampPool(Context& context, uint32_t capacity)
-    : mContext(&context), mCapacity(capacity), mMeasuresPasses(timestampsMeasurePasses(context.properties().deviceType)) {
+    : mContext(&context), mCapacity(capacity), mMeasuresPasses(timestampsMeasurePasses(context.report().driverId)) {
     const DeviceReport& report = context.report();
     if (report.timestampValidBits == 0 || capacity == 0) return;
     mPeriodNs = report.timestampPeriodNs;

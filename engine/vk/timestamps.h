@@ -11,10 +11,14 @@
 namespace candela::vk {
 
 // Whether timestamps written around a pass's commands measure what the pass costs on a device of
-// `type`. Not on CPU devices: llvmpipe (lavapipe) rasterizes a render pass's draws when the render
-// pass ends and runs other work after the timestamp that follows it, so a pass's time is mostly
-// the recording of its commands (graph::GraphTimings::gpuMsUnreliable).
-bool timestampsMeasurePasses(VkPhysicalDeviceType type);
+// driver `driver`. Not on lavapipe (llvmpipe): it rasterizes a render pass's draws when the render
+// pass ends and runs other work after the timestamp that follows it, so a pass's time is mostly the
+// recording of its commands (graph::GraphTimings::gpuMsUnreliable). SwiftShader, the other CPU
+// driver, waits for its renderer before it writes a timestamp (bench: each pass's GPU time within
+// 8% of the pass submitted alone, docs/devices.md); GPUs write them when the work before is done.
+bool timestampsMeasurePasses(VkDriverId driver);
+// One line for `candela info`: what the device's per-pass timestamps measure.
+const char* timestampBehaviour(VkDriverId driver);
 
 class TimestampPool {
 public:

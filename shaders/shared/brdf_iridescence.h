@@ -17,6 +17,13 @@ CANDELA_NAMESPACE_BEGIN
 
 // ---- Iridescence (the thin film) ----
 
+// cos of arguments of tens of radians: Vulkan bounds cos's error only on [−π, π] (2⁻¹¹ absolute),
+// and beyond it an implementation's own range reduction may lose digits (SwiftShader's was off by
+// 6e-3 relative in the film's colour), so the argument is brought into [−π, π] first; the
+// reduction's rounding is an ulp of the argument (4e-6 at 32 rad).
+CANDELA_FN float cosOfPhase(float x) { return cos(x - (2.0f * CANDELA_PI) * floor(x * (0.5f / CANDELA_PI) + 0.5f)); }
+CANDELA_FN vec3 cosOfPhase(vec3 x) { return cos(x - (2.0f * CANDELA_PI) * floor(x * (0.5f / CANDELA_PI) + 0.5f)); }
+
 // The XYZ colour matching functions' Fourier transform at optical path difference `opd` (nm) with
 // phase shift `shift`, as Rec. 709 RGB (the specification's Gaussian fit).
 CANDELA_FN vec3 filmSensitivity(float opd, vec3 shift) {
@@ -24,8 +31,8 @@ CANDELA_FN vec3 filmSensitivity(float opd, vec3 shift) {
     vec3 val = vec3(5.4856e-13f, 4.4201e-13f, 5.2481e-13f);
     vec3 pos = vec3(1.6810e+06f, 1.7953e+06f, 2.2084e+06f);
     vec3 var = vec3(4.3278e+09f, 9.3046e+09f, 6.6121e+09f);
-    vec3 xyz = val * sqrt(2.0f * CANDELA_PI * var) * cos(pos * phase + shift) * exp(-(phase * phase) * var);
-    xyz.x += 9.7470e-14f * sqrt(2.0f * CANDELA_PI * 4.5282e+09f) * cos(2.2399e+06f * phase + shift.x) *
+    vec3 xyz = val * sqrt(2.0f * CANDELA_PI * var) * cosOfPhase(pos * phase + shift) * exp(-(phase * phase) * var);
+    xyz.x += 9.7470e-14f * sqrt(2.0f * CANDELA_PI * 4.5282e+09f) * cosOfPhase(2.2399e+06f * phase + shift.x) *
              exp(-4.5282e+09f * (phase * phase));
     xyz = xyz * (1.0f / 1.0685e-7f);
     return vec3(3.2404542f * xyz.x - 1.5371385f * xyz.y - 0.4985314f * xyz.z,

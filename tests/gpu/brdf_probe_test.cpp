@@ -11,7 +11,10 @@
 //     brdf.h had measured 5.3e-3 here).
 //   - Blinn-Phong: relative 5e-3: (N·H)^s with s up to 19998 amplifies the rounding of N·H near 1
 //     (bound 2.4e-3, see brdf_test.cpp), plus the GPU's pow (exp2 · log2). Measured 1.4e-3.
-//   - absolute 1e-9 · intensity below the floor.
+//   - absolute below the floor: 1e-9 · intensity, or the relative tolerance at the floor where that
+//     is larger (Blinn-Phong: 5e-9), so that a value just under the floor may be off by what the same
+//     value just over it may. SwiftShader's pow (exp2 · log2) is off by 1.04e-3 relative at
+//     Blinn-Phong's grazing texels, on both sides of the floor (1.03e-9 absolute just under it).
 // And: no NaN or Inf anywhere in the output, at intensity 1 and 1e6.
 #include "gpu_test.h"
 #include "graph_runner.h"
@@ -21,6 +24,7 @@
 #include "passes/post/readback_pass.h"
 #include "shared/scene_data.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <iostream>
@@ -122,7 +126,7 @@ void checkProbe(const std::vector<glm::vec4>& texels, float intensity, const sha
                   << "\n";
         ::testing::Test::RecordProperty(std::string("max_relative_") + kModelNames[model], std::to_string(s.maxRelative));
         EXPECT_LE(s.maxRelative, tolerance) << s.worstRelative;
-        EXPECT_LE(s.maxAbsolute, kAbsoluteTolerance * intensity) << s.worstAbsolute;
+        EXPECT_LE(s.maxAbsolute, std::max(kAbsoluteTolerance, tolerance * kFloor) * intensity) << s.worstAbsolute;
     }
 }
 

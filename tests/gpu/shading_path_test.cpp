@@ -325,3 +325,43 @@ TEST_F(ShadingPathTest, AutoIsTheDevicesDefault) {
 
 }  // namespace
 }  // namespace candela::test::shading_path_test
+
+namespace candela::test::shading_path_test {
+namespace {
+
+// A device without geometryShader (gl_PrimitiveID in the fragment stage): asked for the visibility
+// path, the frame is drawn by the forward path and --explain says why. SwiftShader lacks it (the
+// suite's second device: this is the fallback that runs there); on a device that has it, the Apple
+// profile (MoltenVK reports none) narrows a second context.
+TEST_F(GpuTest, WithoutGeometryShaderTheVisibilityPathFallsBackToForward) {
+    std::unique_ptr<vk::Context> narrowed;
+    vk::Context* device = &context();
+    if (context().choices().visibilityUnsupported.empty()) {
+        narrowed = std::make_unique<vk::Context>(vk::ContextDesc{.validation = true, .profile = options::DeviceProfile::Apple});
+        device = narrowed.get();
+    }
+    const std::string& unsupported = device->choices().visibilityUnsupported;
+    ASSERT_NE(unsupported.find("geometryShader"), std::string::npos) << unsupported;
+    const scene::Scene grid = assets::makeSphereGrid(3);
+    {
+        Renderer renderer(*device);
+        RenderSettings settings{.width = 64, .height = 64, .scene = &grid};
+        settings.shadingPath = options::ShadingPath::Visibility;
+        const CapturedFrame frame = renderer.capture(settings);
+        EXPECT_FALSE(frame.rgba8.empty());
+        EXPECT_TRUE(renderer.lastGraph().findPass("forward").has_value());
+        EXPECT_FALSE(renderer.lastGraph().findPass("visibility").has_value());
+        const std::vector<std::string> lines = renderer.explain();
+        EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [&](const std::string& line) {
+            return line.find("shading path: forward (" + unsupported + ")") != std::string::npos;
+        })) << "no line says why the forward path draws the frame";
+    }
+    if (narrowed) {
+        narrowed->waitIdleAndCollect();
+        for (const vk::ValidationMessage& m : narrowed->validationMessages())
+            if (!bestPracticesNotApplicable(m.text)) ADD_FAILURE() << "validation: " << m.text;
+    }
+}
+
+}  // namespace
+}  // namespace candela::test::shading_path_test
