@@ -35,6 +35,7 @@ OTHER_TOOLS_FLAGS = {"--preset", "--build", "--install", "--prefix", "--test-dir
                      "--write-docs",  # tools/check_layers.py's
                      "--assets",  # tools/gpu-check.sh's
                      "--size",  # tools/python-overhead.py's
+                     "--doc", "--samples",  # tools/validator/oracle.py's
                      "--scen"}  # the README's example of a mistyped flag and its error
 TREE_ROOTS = ("app/", "engine/", "shaders/", "tests/", "tools/", "docs/", "assets/", ".ci/")
 FLAG = re.compile(r"(?<![\w-])(--[a-z][a-z0-9_-]*)")

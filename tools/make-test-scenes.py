@@ -225,7 +225,7 @@ def animation_pointer_sweep(path):
         materials.append(glb.add("materials", m))
     sphere_row(glb, sphere, materials, 0.0)
     glb.doc.setdefault("extensions", {})["KHR_lights_punctual"] = {"lights": [
-        {"type": "point", "color": [1, 1, 1], "intensity": 20, "range": 0}]}
+        {"type": "point", "color": [1, 1, 1], "intensity": 20}]}
     glb.node({"name": "light", "translation": [0, 2.5, 2], "extensions": {"KHR_lights_punctual": {"light": 0}}})
     glb.add("cameras", {"type": "perspective", "perspective": {"yfov": 0.6, "znear": 0.1, "aspectRatio": 1.5}})
     glb.node({"name": "camera", "camera": 0, "translation": [0, 0, 9]})

@@ -467,6 +467,10 @@ void loadNodes(const LoadContext& ctx, const tinygltf::Model& model, std::option
         for (size_t i = 0; i < model.nodes.size(); ++i)
             if (!isChild[i]) roots.push_back(int(i));
         if (sceneIndex) ctx.fail("scene " + std::to_string(*sceneIndex) + " does not exist (the file has no scenes)");
+        // "scene" names a default scene the file does not have: an unresolved reference (the
+        // glTF-Validator's UNRESOLVED_REFERENCE), not a file without scenes.
+        if (model.defaultScene >= 0)
+            ctx.fail("scene " + std::to_string(model.defaultScene) + " (the default scene) does not exist (the file has no scenes)");
     } else {
         const size_t index = sceneIndex ? *sceneIndex : size_t(model.defaultScene >= 0 ? model.defaultScene : 0);
         if (index >= model.scenes.size())

@@ -21,10 +21,12 @@ bool DeviceCaps::hasMemoryType(VkMemoryPropertyFlags flags) const {
 
 DeviceCaps queryDeviceCaps(VkPhysicalDevice device) {
     DeviceCaps caps;
-    VkPhysicalDeviceVulkan13Properties p13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_PROPERTIES};
+    VkPhysicalDeviceDriverProperties driver{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    VkPhysicalDeviceVulkan13Properties p13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_PROPERTIES, .pNext = &driver};
     VkPhysicalDeviceVulkan11Properties p11{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_PROPERTIES, .pNext = &p13};
     VkPhysicalDeviceProperties2 properties{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, .pNext = &p11};
     vkGetPhysicalDeviceProperties2(device, &properties);
+    caps.driver = driver.driverID;
     const VkPhysicalDeviceLimits& l = properties.properties.limits;
     DeviceLimits& out = caps.limits;
     out.maxPerStageDescriptorSamplers = l.maxPerStageDescriptorSamplers;

@@ -83,6 +83,8 @@ struct DeviceExtensions {
 };
 
 struct DeviceCaps {
+    // The driver (VkPhysicalDeviceDriverProperties::driverID; 0: unknown), for its known defects.
+    VkDriverId driver = VkDriverId(0);
     DeviceLimits limits;
     DeviceFeatures features;
     DeviceExtensions extensions;

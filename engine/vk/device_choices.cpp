@@ -51,6 +51,10 @@ DeviceChoices chooseForDevice(const DeviceCaps& caps) {
         c.fallbacks.push_back("layered materials: a program per layer combination, declaring only its layers' textures "
                               "(the program with every layer has " + over + ")");
     }
+    c.cubeBordersNeedADraw = caps.driver == VK_DRIVER_ID_GOOGLE_SWIFTSHADER;
+    if (c.cubeBordersNeedADraw)
+        c.fallbacks.push_back("IBL precompute: a draw binds the environment cube after compute writes it, so that "
+                              "SwiftShader refreshes the face borders its filtering reads");
     c.visibilityUnsupported = visibilityUnsupported(caps);
     if (!c.visibilityUnsupported.empty()) c.fallbacks.push_back("shading: the forward path only (the visibility path needs " + c.visibilityUnsupported + ")");
     return c;

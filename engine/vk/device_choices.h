@@ -32,6 +32,13 @@ struct DeviceChoices {
     // R32G32_UINT, and its compute shading binds 5 sets, ~10 storage buffers and the layered
     // program's 19 material textures besides the maps. Frames then take the forward path.
     std::string visibilityUnsupported;
+    // Whether a cube map written by a compute shader must be bound to a draw before a compute
+    // shader samples it with linear filtering. SwiftShader keeps a one-texel border around each
+    // face for seamless filtering and refreshes it only when a draw is about to sample the image;
+    // a compute shader filtering across a face edge otherwise reads stale borders
+    // (docs/devices.md). The IBL precompute then draws once, rasterizing nothing, with the cube
+    // bound (passes/ibl/ibl_cube_borders.h).
+    bool cubeBordersNeedADraw = false;
     // One line per fallback taken ("BRDF LUT: R16G16B16A16_SFLOAT instead of R16G16_SFLOAT (no
     // STORAGE_IMAGE)"); empty when the device has everything.
     std::vector<std::string> fallbacks;

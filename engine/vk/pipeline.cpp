@@ -136,7 +136,9 @@ Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std
     Pipeline out;
     ProgramSpecialization programSpecialization{.sets = desc.specializedSets, .outputLocations = desc.outputLocations};
     for (uint32_t id : desc.frozenConstants) programSpecialization.frozen.emplace_back(id, desc.specialization.at(id));
-    out.mProgram = Program(context, {vertexShader, fragmentShader}, programSpecialization);
+    std::vector<std::string_view> shaders{vertexShader};
+    if (!fragmentShader.empty()) shaders.push_back(fragmentShader);
+    out.mProgram = Program(context, shaders, programSpecialization);
     out.mBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
     out.mShaderNames = {std::string(vertexShader), std::string(fragmentShader)};
     out.mDesc = desc;
@@ -160,6 +162,7 @@ Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std
     const VkPipelineViewportStateCreateInfo viewport{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO, .viewportCount = 1, .scissorCount = 1};
     const VkPipelineRasterizationStateCreateInfo raster{.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
+                                                        .rasterizerDiscardEnable = desc.rasterizerDiscard,
                                                         .polygonMode = VK_POLYGON_MODE_FILL,
                                                         .cullMode = desc.cullMode,
                                                         .frontFace = desc.frontFace,

@@ -95,6 +95,8 @@ struct GraphicsPipelineDesc {
     std::vector<uint32_t> specializedSets;
     // ProgramSpecialization::outputLocations: where the fragment stage's outputs go.
     std::vector<uint32_t> outputLocations;
+    // Primitives are discarded before rasterization: a vertex-only program (fragment shader "").
+    bool rasterizerDiscard = false;
     std::vector<VkVertexInputBindingDescription> vertexBindings;
     std::vector<VkVertexInputAttributeDescription> vertexAttributes;
 };

@@ -21,6 +21,8 @@
 #include <zlib.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <limits>
 
@@ -404,6 +406,13 @@ std::vector<Row> catalogue() {
     }, [] { return texturedTriangle("", smallPng()); }), "lies outside buffer 0");
     error("out of range", "ChildIndex", gltfEdited([](Json& j) { j["nodes"][0]["children"] = {9}; }), "node 9 does not exist");
     error("out of range", "SceneIndex", gltfEdited([](Json& j) { j["scene"] = 3; }), "scene 3 does not exist");
+    // A default scene named in a file without scenes: it rendered an empty image with "nothing to
+    // draw: the file has no scene and no nodes" (#43; the glTF-Validator: UNRESOLVED_REFERENCE).
+    error("out of range", "SceneIndexWithoutScenes", gltfEdited([](Json& j) {
+        j.erase("scenes");
+        j.erase("nodes");
+        j["scene"] = 7;
+    }), "scene 7 (the default scene) does not exist (the file has no scenes)", true);
     error("out of range", "MeshIndex", gltfEdited([](Json& j) { j["nodes"][0]["mesh"] = 4; }), "mesh 4 does not exist");
     error("out of range", "CameraIndex", gltfEdited([](Json& j) { j["nodes"][0]["camera"] = 4; }), "camera 4 does not exist");
     error("out of range", "LightIndex", gltfEdited([](Json& j) { j["nodes"][0]["extensions"] = {{"KHR_lights_punctual", {{"light", 2}}}}; }), "KHR_lights_punctual light index");
@@ -1046,6 +1055,27 @@ INSTANTIATE_TEST_SUITE_P(Files, Catalogue, testing::ValuesIn(catalogue()), [](co
         if (std::isalnum(static_cast<unsigned char>(c))) kind += c;
     return kind + "_" + param.param.name;
 });
+
+// Not a test: writes every row's files under $CANDELA_CATALOGUE_DUMP/KIND_NAME/ with a manifest
+// (manifest.tsv: folder, file to open, outcome, the row's text) for tools/validator/oracle.py, which
+// runs the glTF-Validator over them. Run with --gtest_also_run_disabled_tests
+// --gtest_filter=CatalogueFiles.DISABLED_WriteEveryRowsFiles.
+TEST(CatalogueFiles, DISABLED_WriteEveryRowsFiles) {
+    const char* root = std::getenv("CANDELA_CATALOGUE_DUMP");
+    ASSERT_NE(root, nullptr) << "set CANDELA_CATALOGUE_DUMP to the folder to write";
+    const char* outcomes[] = {"error", "warning", "note", "loads"};
+    std::ofstream manifest(fs::path(root) / "manifest.tsv");
+    for (const Row& row : catalogue()) {
+        std::string kind;
+        for (char c : row.kind)
+            if (std::isalnum(static_cast<unsigned char>(c))) kind += c;
+        const fs::path dir = fs::path(root) / (kind + "_" + row.name);
+        fs::create_directories(dir);
+        const fs::path file = row.make(dir);
+        manifest << dir.filename().string() << '\t' << fs::relative(file, dir).string() << '\t'
+                 << outcomes[static_cast<int>(row.outcome)] << '\t' << row.fragment << '\n';
+    }
+}
 
 // The figures docs/robustness.md quotes: rows per outcome and how many needed a fix.
 TEST(CatalogueSummary, CountsRows) {

@@ -7,13 +7,14 @@
 // differs by more than 24 levels. lavapipe is deterministic on one machine; the slack absorbs LLVM
 // code generation differences between CPUs.
 //
-// On another driver (SwiftShader, the suite's second device: docs/devices.md) the approved
-// lavapipe images are compared by LDR-ꟻLIP: a case fails when the mean exceeds 0.02. Another
-// rasterizer moves silhouettes (SwiftShader snaps vertices to 1/16 of a pixel, lavapipe to 1/256:
-// edge pixels differ by up to 156 levels) and filters textures with its own LOD arithmetic (text
-// edges in TextureSettingsTest), which the per-level metric cannot tell from an error. Measured on
-// SwiftShader: mean ꟻLIP ≤ 0.0151 (texture_settings), 0.0065 or less for 22 of the 26 cases lit
-// without an environment.
+// On another driver (SwiftShader, the suite's second device: docs/devices.md; a GPU in the GPU
+// check) the approved lavapipe images are compared by LDR-ꟻLIP: a case fails when the mean exceeds
+// 0.03. Another implementation moves silhouettes (SwiftShader snaps vertices to 1/16 of a pixel,
+// lavapipe to 1/256: edge pixels differ by up to 228 levels), filters textures with its own LOD
+// arithmetic (text edges in TextureSettingsTest) and rounds small specular highlights otherwise,
+// which the per-level metric cannot tell from an error. Measured: on SwiftShader mean ꟻLIP up to
+// 0.0226 (ibl_specular_test; 0.0151 at most lit without an environment), on the NVIDIA H200 of the
+// GPU check's first run up to 0.0268 (ibl_transmission_test).
 //
 // On failure, or when a golden is missing, the render and an amplified difference image are
 // written to ${build}/tests/gpu/golden_out/ (CANDELA_GOLDEN_OUT in the environment moves it);
@@ -70,7 +71,7 @@ constexpr uint32_t kWidth = 256, kHeight = 192;
 constexpr int kPixelThreshold = 3;
 constexpr int kMaxDifference = 24;
 constexpr double kMaxDifferingShare = 0.001;
-constexpr double kOtherDriverMaxFlipMean = 0.02;
+constexpr double kOtherDriverMaxFlipMean = 0.03;
 
 // LDR-ꟻLIP mean of two kWidth × kHeight RGBA8 sRGB images (alpha ignored).
 double flipMean(const uint8_t* actual, const uint8_t* expected) {

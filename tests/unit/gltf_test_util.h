@@ -14,10 +14,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 #include <unistd.h>
@@ -172,8 +174,22 @@ struct GltfBuilder {
         doc["accessors"].push_back(a);
         return int(doc["accessors"].size() - 1);
     }
+    // With min and max per component over the finite values (the glTF-Validator requires them for
+    // POSITION and animation inputs; tools/validator/oracle.py runs it over the files these build).
     int addFloats(const std::vector<float>& values, const std::string& type, int components) {
-        return addAccessor(addView(values), kFloat, values.size() / size_t(components), type);
+        const int accessor = addAccessor(addView(values), kFloat, values.size() / size_t(components), type);
+        Json low = Json::array(), high = Json::array();
+        for (int c = 0; c < components; ++c) {
+            float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+            for (size_t i = size_t(c); i < values.size(); i += size_t(components))
+                if (std::isfinite(values[i])) lo = std::min(lo, values[i]), hi = std::max(hi, values[i]);
+            if (!(lo <= hi)) return accessor;  // no finite value: no bounds
+            low.push_back(lo);
+            high.push_back(hi);
+        }
+        doc["accessors"][size_t(accessor)]["min"] = low;
+        doc["accessors"][size_t(accessor)]["max"] = high;
+        return accessor;
     }
     int addIndices(const std::vector<uint16_t>& indices) {
         return addAccessor(addView(indices), kUnsignedShort, indices.size(), "SCALAR");

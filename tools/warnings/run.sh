@@ -11,7 +11,7 @@ models=${2:-../shared/assets/models}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 (cd "$work" && npm install --silent gltf-validator@2.0.0-dev.3.10 >/dev/null 2>&1)
-NODE_PATH="$work/node_modules" node tools/warnings/validate.js "$models" > "$work/validator.jsonl"
+NODE_PATH="$work/node_modules" node tools/validator/validate.js "$models" > "$work/validator.jsonl"
 mkdir -p "$work/lines"
 find "$models" -name '*.gltf' -o -name '*.glb' | sort | while read -r file; do
     rel=${file#"$models"/}

@@ -27,7 +27,8 @@ IblCubemapPass::IblCubemapPass(vk::Context& context)
     : mResample(vk::Pipeline::compute(context, halfCube(context) ? "ibl_cubemap_half.comp" : "ibl_cubemap.comp")),
       mDownsample(vk::Pipeline::compute(context, halfCube(context) ? "ibl_cube_downsample_half.comp"
                                                                    : "ibl_cube_downsample.comp")),
-      mSampler(vk::createSampler(context, vk::kNearestSampler)) {}
+      mSampler(vk::createSampler(context, vk::kNearestSampler)),
+      mBorders(context) {}
 
 uint32_t IblCubemapPass::supersampleFactor(uint32_t faceSize, uint32_t equirectWidth, uint32_t equirectHeight) {
     // Solid angle of a cube texel (4π / 6N², on average) over an equirect texel at the equator (2π² / WH).
@@ -76,6 +77,7 @@ IblCubemapPass::Outputs IblCubemapPass::add(RenderGraph& graph, const Inputs& in
                 const uint32_t mipGroups = groupCount(down.dstFaceSize, CANDELA_IBL_GROUP);
                 dispatchCompute(ctx, mDownsample, mipSet, &down, sizeof(down), mipGroups, mipGroups, 6);
             }
+            mBorders.record(ctx, ctx.view(d.cube), ctx.layout(d.cube));
         });
     return {data.cube, data.specular};
 }

@@ -7,6 +7,7 @@
 // irradiance passes read with filtered importance sampling.
 
 #include "graph/render_graph.h"
+#include "passes/ibl/ibl_cube_borders.h"
 #include "vk/pipeline.h"
 #include "vk/sampler.h"
 
@@ -53,6 +54,7 @@ private:
     vk::Pipeline mResample;
     vk::Pipeline mDownsample;
     vk::Sampler mSampler;  // for the equirect's descriptor (the shader reads it with texelFetch)
+    CubeBorderDraw mBorders;
 };
 
 }  // namespace candela::passes

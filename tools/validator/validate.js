@@ -1,5 +1,7 @@
-// Validates every glTF/GLB under a folder with the Khronos glTF-Validator (npm gltf-validator);
-// one JSON line per file: error, warning and info counts and the codes. Used by run.sh.
+// Validates glTF/GLB files with the Khronos glTF-Validator (npm gltf-validator): every one under a
+// folder, or those listed in a file (one path a line) given as @LIST; one JSON line per file: error,
+// warning and info counts, the codes, and each error's message and JSON pointer. Used by
+// tools/warnings/run.sh and tools/validator/oracle.py. Usage: node validate.js FOLDER|@LIST
 const validator = require('gltf-validator');
 const fs = require('fs');
 const path = require('path');
@@ -12,7 +14,9 @@ function walk(dir, out) {
   return out;
 }
 (async () => {
-  for (const file of walk(process.argv[2], []).sort()) {
+  const arg = process.argv[2];
+  const files = arg.startsWith('@') ? fs.readFileSync(arg.slice(1), 'utf8').split('\n').filter(l => l) : walk(arg, []).sort();
+  for (const file of files) {
     const data = new Uint8Array(fs.readFileSync(file));
     try {
       const report = await validator.validateBytes(data, {
@@ -22,7 +26,8 @@ function walk(dir, out) {
         })});
       const codes = {};
       for (const m of report.issues.messages) { const k = ['E','W','I','H'][m.severity] + ':' + m.code; codes[k] = (codes[k] || 0) + 1; }
-      console.log(JSON.stringify({file, errors: report.issues.numErrors, warnings: report.issues.numWarnings, infos: report.issues.numInfos, hints: report.issues.numHints, codes}));
+      const errorMessages = report.issues.messages.filter(m => m.severity === 0).slice(0, 5).map(m => m.code + ' ' + (m.pointer || '') + ': ' + m.message);
+      console.log(JSON.stringify({file, errors: report.issues.numErrors, warnings: report.issues.numWarnings, infos: report.issues.numInfos, hints: report.issues.numHints, codes, errorMessages}));
     } catch (e) { console.log(JSON.stringify({file, failed: String(e)})); }
   }
 })();
