@@ -23,8 +23,10 @@
 namespace candela {
 
 struct DeviceOptions {
-    // Which device: "" the best one (a discrete GPU before an integrated one before a CPU driver),
-    // else an index or a case-insensitive part of its name (as `candela info` lists them).
+    // Which device: "" the one the CANDELA_DEVICE variable selects, else the best one (a discrete
+    // GPU before an integrated one before a CPU driver); else an index or a case-insensitive part
+    // of its name (as `candela info` lists them). A selector containing "swiftshader" adds the
+    // SwiftShader driver of Debian's chromium package (docs/devices.md).
     std::string device;
     // Narrows what Candela uses of the device to a profile: "native" (all of it), "minimum",
     // "desktop" or "apple" (docs/device-layer.md); "": the CANDELA_DEVICE_PROFILE variable, else native.
