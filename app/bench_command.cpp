@@ -178,7 +178,7 @@ nlohmann::ordered_json benchJson(const BenchOptions& options, const scene::Scene
                     {"minRatio", minimum(frameMs) / minimum(calibrationMs)}};
     const nlohmann::ordered_json passes = passesJson(m);
     out["passes"] = passes;
-    const bool gpuUnreliable = !vk::timestampsMeasurePasses(context.report().driverId);
+    const bool gpuUnreliable = !vk::timestampsMeasurePasses(context.caps().driver);
     if (gpuUnreliable) out["gpuMsUnreliable"] = graph::kUnreliableGpuTimes;
         out["shadingPath"] = shadingPathLine(m.explain);
     nlohmann::ordered_json pathsOut = nlohmann::ordered_json::array();

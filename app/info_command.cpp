@@ -44,7 +44,7 @@ int runInfo(const InfoOptions& options) {
                 r.transferFamily);
     std::printf("  timestamps: %s\n", r.timestampValidBits
                                           ? (std::to_string(r.timestampValidBits) + " valid bits, period " +
-                                             std::to_string(r.timestampPeriodNs) + " ns; " + vk::timestampBehaviour(r.driverId))
+                                             std::to_string(r.timestampPeriodNs) + " ns; " + vk::timestampBehaviour(context.caps().driver))
                                                 .c_str()
                                           : "not supported");
     const vk::MsaaChoice msaa = vk::chooseMsaa(context.properties().deviceType, context.attachmentSampleCounts(), std::nullopt);

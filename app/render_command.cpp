@@ -473,7 +473,7 @@ int runRender(const RenderOptions& options) {
                      .height = options.height,
                      .shard = options.shard,
                      .scenesListed = listed.size(),
-                     .gpuMsUnreliable = !vk::timestampsMeasurePasses(context.report().driverId)};
+                     .gpuMsUnreliable = !vk::timestampsMeasurePasses(context.caps().driver)};
     report.startupMs = msSince(runStart);
     size_t reported = 0;  // report.scenes holds scenes [0, reported)
     const auto addResumed = [&](size_t i) {

@@ -113,7 +113,7 @@ int runScaleReport(const ScaleReportOptions& options) {
     }
     progress.finish();
     writeReport(options.out, rows, options, context.report().name,
-                !vk::timestampsMeasurePasses(context.report().driverId));
+                !vk::timestampsMeasurePasses(context.caps().driver));
     std::printf("wrote %s/report.csv, report.md, frame_vs_triangles.png\n", options.out.c_str());
     return 0;
 }

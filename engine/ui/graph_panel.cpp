@@ -55,7 +55,7 @@ void drawGraphPanel(Viewer& viewer) {
 
     // The times' column as wide as its widest cell or header (a culled pass shows the reason). On CPU
     // devices the times are marked "GPU ms*" and say why on hover (graph::kUnreliableGpuTimes).
-    const bool unreliable = !vk::timestampsMeasurePasses(viewer.context().report().driverId);
+    const bool unreliable = !vk::timestampsMeasurePasses(viewer.context().caps().driver);
     if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
         ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthStretch);
         ImGui::TableSetupColumn(unreliable ? "GPU ms*" : "GPU ms", ImGuiTableColumnFlags_WidthFixed);

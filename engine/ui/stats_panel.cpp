@@ -21,7 +21,7 @@ void drawStatsPanel(Viewer& viewer) {
         if (t.gpuMs >= 0.0) gpuTotal += t.gpuMs;
     // Each pass's time (the render-graph panel has them too) one click away: the stats stay short.
     // On CPU devices the timestamps miss deferred work: marked "*", the reason on hover.
-    const bool unreliable = !vk::timestampsMeasurePasses(viewer.context().report().driverId);
+    const bool unreliable = !vk::timestampsMeasurePasses(viewer.context().caps().driver);
     const char* mark = unreliable ? "*" : "";
     char total[64];
     std::snprintf(total, sizeof total, "GPU, all passes: %.2f ms%s###gpu", gpuTotal, mark);

@@ -245,7 +245,7 @@ bool Viewer::exportGraph(const std::filesystem::path& path, bool json) {
     // The latest completed frame may be an older graph than the last declared one: match by name.
     graph::GraphTimings timings;
     for (const graph::PassDecl& pass : graph.declaration().passes) timings.gpuMs.push_back(mRenderer->completedPassMs(pass.name));
-    timings.gpuMsUnreliable = !vk::timestampsMeasurePasses(mContext->report().driverId);
+    timings.gpuMsUnreliable = !vk::timestampsMeasurePasses(mContext->caps().driver);
     const std::string text = json ? graph::exportJson(graph.declaration(), graph.compiled(), &timings)
                                   : graph::exportDot(graph.declaration(), graph.compiled(), &timings);
     std::ofstream out(path, std::ios::binary);

@@ -234,7 +234,6 @@ void Context::pickPhysicalDevice(const ContextDesc& desc) {
     vkGetPhysicalDeviceProperties2(mPhysicalDevice, &properties2);
     mReport.driverName = driver.driverName;
     mReport.driverInfo = driver.driverInfo;
-    mReport.driverId = driver.driverID;
 }
 
 void Context::createDevice(const ContextDesc& desc) {

@@ -77,7 +77,6 @@ struct DeviceReport {
     std::string reason;            // why it was chosen
     uint32_t apiVersion = 0;
     std::string driverName, driverInfo;
-    VkDriverId driverId = VkDriverId(0);  // VK_DRIVER_ID_MESA_LLVMPIPE, _GOOGLE_SWIFTSHADER, … (0: unknown)
     std::string profile;           // the device profile in use ("native" when none)
     std::vector<std::string> enabledFeatures;
     std::vector<std::string> enabledExtensions;

@@ -16,7 +16,7 @@ const char* timestampBehaviour(VkDriverId driver) {
 }
 
 TimestampPool::TimestampPool(Context& context, uint32_t capacity)
-    : mContext(&context), mCapacity(capacity), mMeasuresPasses(timestampsMeasurePasses(context.report().driverId)) {
+    : mContext(&context), mCapacity(capacity), mMeasuresPasses(timestampsMeasurePasses(context.caps().driver)) {
     const DeviceReport& report = context.report();
     if (report.timestampValidBits == 0 || capacity == 0) return;
     mPeriodNs = report.timestampPeriodNs;
