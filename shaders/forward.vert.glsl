@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // The forward pass's vertex stage (forward.vert, and with CANDELA_MATERIAL_LAYERS defined
 // forward_layers.vert: builtin_shaders.txt): world-space position, normal and tangent of one drawn
-// primitive, and the transformed texture coordinates of each texture slot; with CANDELA_AOV defined
+// primitive (triangles, lines or points), and the transformed texture coordinates of each texture slot; with CANDELA_AOV defined
 // (aov.vert: the per-pixel outputs' pass, aov.frag.glsl) also the draw entry of the instance.
 #include "shading/scene_buffers.glsl"
 
@@ -62,4 +62,7 @@ void main() {
     outEntry = push.counts.y + gl_InstanceIndex;
 #endif
     gl_Position = push.viewProjection * world;
+    // POINTS draws (point-list pipelines) are one pixel, as glTF viewers draw them; other
+    // topologies ignore it.
+    gl_PointSize = 1.0f;
 }

@@ -16,14 +16,10 @@
 namespace candela::assets::gltf {
 namespace {
 
-const char* modeName(int mode) {
-    switch (mode) {
-        case TINYGLTF_MODE_POINTS: return "POINTS";
-        case TINYGLTF_MODE_LINE: return "LINES";
-        case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
-        case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
-        default: return "?";
-    }
+scene::Topology topologyOf(int mode) {
+    if (mode == TINYGLTF_MODE_POINTS) return scene::Topology::Points;
+    if (mode >= TINYGLTF_MODE_LINE && mode <= TINYGLTF_MODE_LINE_STRIP) return scene::Topology::Lines;
+    return scene::Topology::Triangles;
 }
 
 // Reads the vertex attributes of one primitive into `vertices` (positions already set).
@@ -162,6 +158,19 @@ std::vector<uint32_t> toTriangleList(int mode, std::span<const uint32_t> in) {
     return out;
 }
 
+std::vector<uint32_t> toLineList(int mode, std::span<const uint32_t> in) {
+    std::vector<uint32_t> out;
+    const size_t n = in.size();
+    if (mode == TINYGLTF_MODE_LINE) {
+        out.assign(in.begin(), in.begin() + std::ptrdiff_t(n - n % 2));
+        return out;
+    }
+    // LINE_STRIP: p_i = {v_i, v_(i+1)}; LINE_LOOP adds {v_(n-1), v_0}.
+    for (size_t i = 0; i + 1 < n; ++i) out.insert(out.end(), {in[i], in[i + 1]});
+    if (mode == TINYGLTF_MODE_LINE_LOOP && n >= 2) out.insert(out.end(), {in[n - 1], in[0]});
+    return out;
+}
+
 size_t dropZeroAreaTriangles(std::span<const scene::Vertex> vertices, std::vector<uint32_t>& indices) {
     size_t kept = 0;
     for (size_t t = 0; t + 2 < indices.size(); t += 3) {
@@ -182,12 +191,6 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
     const tinygltf::Primitive& primitive = mesh.primitives[size_t(primitiveIndex)];
     const std::string what = label("mesh", meshIndex, mesh.name) + " primitive " + std::to_string(primitiveIndex);
     const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
-    if (mode >= TINYGLTF_MODE_POINTS && mode <= TINYGLTF_MODE_LINE_STRIP) {
-        // One line per file: "4 primitives: points or lines, not drawn (only triangles are)".
-        ctx.tally(Severity::Warning, {"primitive", "points or lines, not drawn (only triangles are)"},
-                  what + " (" + modeName(mode) + ")");
-        return {};
-    }
     if (mode > TINYGLTF_MODE_TRIANGLE_FAN) ctx.fail(what + ": invalid mode " + std::to_string(mode));
     const auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) {
@@ -216,25 +219,39 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
         indices.resize(count);
         std::iota(indices.begin(), indices.end(), 0u);
     }
-    if (mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
-        ctx.warn(what + ": " + std::to_string(indices.size()) + " indices is not a multiple of 3 (extra dropped)");
-    indices = toTriangleList(mode, indices);
-    // Degenerate triangles cover no pixel: the glTF-Validator reports them as information.
-    if (const size_t dropped = dropZeroAreaTriangles(vertices, indices))
-        ctx.tally(Severity::Note, {"primitive", "zero-area triangle dropped", "zero-area triangles dropped"}, what, dropped);
-    if (indices.empty()) {
-        ctx.tally(Severity::Note, {"primitive", "no triangles, skipped"}, what);
-        return {};
-    }
-
-    // Without normals the specification asks for flat normals, and any TANGENT is ignored.
-    // Both steps may split vertices: `origin` maps each vertex to the file's vertex it came from.
+    const scene::Topology topology = topologyOf(mode);
     std::vector<uint32_t> origin(vertices.size());
     std::iota(origin.begin(), origin.end(), 0u);
-    if (!attributes.normals) geometry::makeFlatNormals(vertices, indices, origin);
-    const bool haveTangents = attributes.tangents && attributes.normals;
-    if (!haveTangents && tangentMap)
-        generateVertexTangents(ctx, what, *tangentMap, attributes, vertices, indices, origin);
+    if (topology == scene::Topology::Triangles) {
+        if (mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
+            ctx.warn(what + ": " + std::to_string(indices.size()) + " indices is not a multiple of 3 (extra dropped)");
+        indices = toTriangleList(mode, indices);
+        // Degenerate triangles cover no pixel: the glTF-Validator reports them as information.
+        if (const size_t dropped = dropZeroAreaTriangles(vertices, indices))
+            ctx.tally(Severity::Note, {"primitive", "zero-area triangle dropped", "zero-area triangles dropped"}, what, dropped);
+        if (indices.empty()) {
+            ctx.tally(Severity::Note, {"primitive", "no triangles, skipped"}, what);
+            return {};
+        }
+        // Without normals the specification asks for flat normals, and any TANGENT is ignored.
+        // Both steps may split vertices: `origin` maps each vertex to the file's vertex it came from.
+        if (!attributes.normals) geometry::makeFlatNormals(vertices, indices, origin);
+        const bool haveTangents = attributes.tangents && attributes.normals;
+        if (!haveTangents && tangentMap)
+            generateVertexTangents(ctx, what, *tangentMap, attributes, vertices, indices, origin);
+    } else {
+        if (mode == TINYGLTF_MODE_LINE && indices.size() % 2 != 0)
+            ctx.warn(what + ": " + std::to_string(indices.size()) + " indices is not a multiple of 2 (extra dropped)");
+        if (topology == scene::Topology::Lines) indices = toLineList(mode, indices);
+        if (indices.empty()) {
+            ctx.tally(Severity::Note, {"primitive", "nothing to draw, skipped"}, what);
+            return {};
+        }
+        // Points and lines have no surface to derive a normal or a tangent frame from: without
+        // NORMAL they are drawn unshaded; with it, a normal map's tangent follows the normal.
+        if (attributes.normals && !attributes.tangents && tangentMap)
+            for (scene::Vertex& v : vertices) v.tangent = geometry::fallbackTangent(v.normal);
+    }
 
     const size_t base = scene.vertices.size();
     if (base + vertices.size() > std::numeric_limits<uint32_t>::max() ||
@@ -242,6 +259,8 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
         ctx.fail(what + ": the scene exceeds 2^32 vertices or indices");
     PrimitiveGeometry out;
     out.drawable = true;
+    out.topology = topology;
+    out.unshaded = topology != scene::Topology::Triangles && !attributes.normals;
     out.firstIndex = uint32_t(scene.indices.size());
     out.indexCount = uint32_t(indices.size());
     for (uint32_t i : indices) {

@@ -15,20 +15,23 @@ class Model;
 namespace candela::assets::gltf {
 
 struct PrimitiveGeometry {
-    bool drawable = false;  // false: skipped (points, lines, no POSITION, no triangles), with a warning
+    bool drawable = false;  // false: skipped (no POSITION, nothing left to draw), with a warning or note
     uint32_t firstIndex = 0;
     uint32_t indexCount = 0;
+    scene::Topology topology = scene::Topology::Triangles;
+    bool unshaded = false;  // points or lines without NORMAL (scene::Draw::unshaded)
     scene::Aabb bounds;  // local (mesh) space
     int32_t deformation = -1;        // Scene::deformations entry (morph targets, skin weights)
     size_t renormalizedWeights = 0;  // vertices whose skin weights were more than 1% off 1
 };
 
 // Reads primitive `primitive` of mesh `mesh` (both indices valid) and appends it to scene.vertices
-// and scene.indices as a triangle list, with absolute indices. Strips and fans are converted;
-// normals are computed flat when absent; tangents are generated (MikkTSpace, on the texture
-// coordinates of `tangentMap`) when `tangentMap` is given (a material of the primitive has a normal
-// map: Material::tangentSpaceMap) and the primitive has no TANGENT, splitting vertices whose corners
-// disagree.
+// and scene.indices as a triangle, line or point list (scene::Topology), with absolute indices.
+// Strips, fans and loops are converted. Triangles: normals are computed flat when absent; tangents
+// are generated (MikkTSpace, on the texture coordinates of `tangentMap`) when `tangentMap` is given
+// (a material of the primitive has a normal map: Material::tangentSpaceMap) and the primitive has
+// no TANGENT, splitting vertices whose corners disagree. Points and lines keep their vertices:
+// without NORMAL they are unshaded; with it and without TANGENT, a tangent is made from the normal.
 // Throws UserError (via ctx) on malformed data: out-of-range accessors or indices, non-finite
 // positions, attribute counts that differ from POSITION's.
 PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model& model, int mesh, int primitive,
@@ -38,6 +41,11 @@ PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model&
 // to a triangle list with the winding the specification defines. Strip and fan triangles that
 // repeat an index (degenerate stitching) are dropped; a partial trailing list triangle is dropped.
 std::vector<uint32_t> toTriangleList(int mode, std::span<const uint32_t> indices);
+
+// Converts an index sequence of glTF topology `mode` (LINES, LINE_LOOP or LINE_STRIP) to a line
+// list (index pairs), as the specification defines them: a loop closes from its last index to its
+// first; an odd trailing LINES index is dropped.
+std::vector<uint32_t> toLineList(int mode, std::span<const uint32_t> indices);
 
 // Removes the triangles of a triangle list whose corners are collinear or coincide (exactly zero
 // area: they cover no pixel and give no normal or tangent); returns how many were removed.

@@ -346,6 +346,8 @@ private:
             for (const auto& [first, count] : groups) {
                 scene::Draw draw{.firstIndex = geometry.firstIndex,
                           .indexCount = geometry.indexCount,
+                          .topology = geometry.topology,
+                          .unshaded = geometry.unshaded,
                           .material = material,
                           .localBounds = geometry.bounds,
                           .node = sceneNode,

@@ -27,7 +27,8 @@ std::vector<Mesh> distinctMeshes(const scene::Scene& scene) {
     const auto blends = [&](uint32_t material) { return scene.materials[material].alphaMode == scene::AlphaMode::Blend; };
     for (uint32_t d = 0; d < scene.draws.size(); ++d) {
         const scene::Draw& draw = scene.draws[d];
-        if (draw.indexCount == 0) continue;
+        // Points and lines are drawn as they come: no cache order, no levels (nothing simplifies them).
+        if (draw.indexCount == 0 || draw.topology != scene::Topology::Triangles) continue;
         const auto [it, added] = byRange.try_emplace({draw.firstIndex, draw.indexCount}, meshes.size());
         if (added) meshes.push_back({.firstIndex = draw.firstIndex, .indexCount = draw.indexCount});
         Mesh& mesh = meshes[it->second];

@@ -8,7 +8,8 @@
 
 namespace candela::geometry {
 
-// Prepares every distinct mesh of `scene` (an index range the draws use) and records what it did
+// Prepares every distinct triangle mesh of `scene` (an index range the draws use; points and lines
+// are left as they are) and records what it did
 // in scene.report.geometry:
 //  - its triangles reordered for the vertex cache, then against overdraw — except a mesh drawn
 //    with an alpha-blended material (the order of its triangles is the order they blend in);

@@ -64,7 +64,7 @@ std::optional<Pick> pick(const scene::Scene& scene, std::span<const scene::Draw>
     std::optional<Pick> best;
     for (uint32_t d = 0; d < draws.size(); ++d) {
         const scene::Draw& draw = draws[d];
-        if (draw.hidden) continue;
+        if (draw.hidden || draw.topology != scene::Topology::Triangles) continue;  // a ray hits no point or line
         const std::optional<float> box = hitBox(draw.bounds, ray);
         if (!box || (best && *box > best->distance)) continue;
         const std::pair<std::span<const scene::Vertex>, uint32_t> range = positions(d);

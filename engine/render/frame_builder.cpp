@@ -221,6 +221,7 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     list.hiddenDraws -= leftOut;  // their own note says why (addSkinMorph)
     facts.transmissiveDraws = !list.empty(passes::DrawRange::Transmissive);
     facts.blendedDraws = !list.empty(passes::DrawRange::Blended);
+    facts.pointAndLineDraws = !list.empty(passes::DrawRange::PointsAndLines);
     FramePlan plan = planFrame(facts);
 
     const auto deformed = addSkinMorph(frame, plan, facts, work);
@@ -304,6 +305,7 @@ passes::DrawTarget FrameBuilder::addDraws(Frame& frame, const FramePlan& plan, c
             drawn.depth = depth;
         }
         if (plan.msaaExpand) drawn = mExpand.add(graph, drawn);
+        if (plan.pointsAndLinesPass) drawn = mForward.addPointsAndLines(graph, drawn, desc.list, desc.inputs, desc.recorded);
         if (plan.blendedPass) drawn = mForward.addBlended(graph, drawn, desc.list, desc.inputs, desc.recorded);
     } else {
         frame.explanation.push_back(explainForwardPath(plan, facts));

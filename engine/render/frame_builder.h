@@ -9,8 +9,9 @@
 //                → [skybox] → [transmission_background → forward_transmission] → tonemap (8-bit);
 //                on the visibility path (docs/shading-paths.md) visibility → visibility_classify →
 //                visibility_shade replace forward (the sky composited by the tonemap, or drawn under
-//                the image by skybox), and the blended draws follow in forward_blended when no
-//                transmissive draw does; at MSAA, msaa_expand first gives them a multisampled image.
+//                the image by skybox), the points and lines follow in forward_points_lines and the
+//                blended draws in forward_blended when no transmissive draw does; at MSAA,
+//                msaa_expand first gives them a multisampled image.
 // Test pattern:  pattern (compute, HDR) → encode (graphics, 8-bit sRGB).
 // Calibration:   calibration alone (benchmarks' unit of time).
 

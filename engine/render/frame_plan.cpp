@@ -79,10 +79,12 @@ FramePlan planFrame(const FrameFacts& facts) {
         plan.alphaMasking = facts.alphaToOne ? AlphaMasking::AlphaToCoverage : AlphaMasking::AlphaTestNoAlphaToOne;
 
     if (plan.path == ShadingPath::Visibility) {
-        // The visibility path's image is resolved: blended and transmissive draws at MSAA need one at
-        // the frame's sample count; the blended draws follow in their own pass unless the
-        // transmissive pass draws them.
-        plan.msaaExpand = facts.samples > 1 && (facts.transmissiveDraws || facts.blendedDraws);
+        // The visibility path's image is resolved: the draws drawn forward after it (points and lines,
+        // which the visibility buffer does not hold, blended and transmissive draws) need one at
+        // the frame's sample count at MSAA; the points and lines follow in their own pass, then the
+        // blended draws in theirs unless the transmissive pass draws them.
+        plan.msaaExpand = facts.samples > 1 && (facts.transmissiveDraws || facts.blendedDraws || facts.pointAndLineDraws);
+        plan.pointsAndLinesPass = facts.pointAndLineDraws;
         plan.blendedPass = !facts.transmissiveDraws && facts.blendedDraws;
     }
     return plan;

@@ -37,6 +37,7 @@ struct FrameFacts {
     uint32_t deformedDraws = 0;     // draws the pose deforms (skinned, or a non-zero morph weight)
     bool transmissiveDraws = false; // the draw list has transmissive draws (debug views have none)
     bool blendedDraws = false;
+    bool pointAndLineDraws = false;  // the draw list has opaque or masked point or line draws
     bool shadingListsFit = true;    // the visibility path's shading lists fit a tile's mask
     // ---- The device's.
     options::ShadingPath devicePath = options::ShadingPath::Forward;  // what `auto` takes
@@ -126,7 +127,8 @@ struct FramePlan {
     SkyPlacement sky = SkyPlacement::None;
     TransmissionPlan transmission = TransmissionPlan::None;
     bool sheenLut = false;       // the layered program reads the sheen LUT (computed once, then imported)
-    bool msaaExpand = false;     // visibility path at MSAA: blended or transmissive draws need a multisampled image
+    bool msaaExpand = false;     // visibility path at MSAA: forward draws after it need a multisampled image
+    bool pointsAndLinesPass = false;  // visibility path: forward_points_lines draws the points and lines
     bool blendedPass = false;    // visibility path: forward_blended draws the blended draws (no transmissive ones)
     AlphaMasking alphaMasking = AlphaMasking::AlphaTest;
     TonemapLook tonemapLook = TonemapLook::AsSet;

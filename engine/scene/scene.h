@@ -307,11 +307,27 @@ struct LodChain {
     std::vector<LodLevel> levels;
 };
 
+// What a draw's indices list. glTF's seven modes are converted on load: TRIANGLES, TRIANGLE_STRIP
+// and TRIANGLE_FAN to a triangle list, LINES, LINE_LOOP and LINE_STRIP to a line list (index
+// pairs), POINTS to a point list. Points and lines are drawn one pixel wide.
+enum class Topology : uint8_t { Triangles, Lines, Points };
+inline const char* topologyName(Topology topology) {
+    return topology == Topology::Triangles ? "triangles" : topology == Topology::Lines ? "lines" : "points";
+}
+// Indices per primitive of `topology`: 3, 2, 1.
+inline uint32_t indicesPerPrimitive(Topology topology) {
+    return topology == Topology::Triangles ? 3u : topology == Topology::Lines ? 2u : 1u;
+}
+
 // One drawn primitive instance: an index range of Scene::indices (into Scene::vertices) with the
-// world transform of its node. Non-triangle-list topologies are converted to lists on load.
+// world transform of its node.
 struct Draw {
     uint32_t firstIndex = 0;
     uint32_t indexCount = 0;
+    Topology topology = Topology::Triangles;
+    // Points or lines without NORMAL: drawn as their material unlit (base colour × COLOR_0, alpha),
+    // as the glTF specification's implementation note asks, since nothing gives them a normal.
+    bool unshaded = false;
     uint32_t material = 0;  // index into Scene::materials (a default material is appended if needed)
     glm::mat4 world{1.0f};
     bool flipWinding = false;  // det(world) < 0: the front face is clockwise

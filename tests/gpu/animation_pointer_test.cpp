@@ -30,11 +30,6 @@ size_t differingPixels(const CapturedFrame& a, const CapturedFrame& b) {
 
 class AnimationPointerTest : public GpuTest {
 protected:
-    std::vector<options::ShadingPath> paths() {
-        std::vector<options::ShadingPath> out{options::ShadingPath::Forward};
-        if (context().choices().visibilityUnsupported.empty()) out.push_back(options::ShadingPath::Visibility);
-        return out;
-    }
     static RenderSettings settings(const scene::Scene& scene, const pose::ScenePose* pose, options::ShadingPath path) {
         RenderSettings s{.width = kWidth, .height = kHeight, .scene = &scene, .pose = pose};
         s.shadingPath = path;
@@ -63,7 +58,7 @@ protected:
         pose::ScenePose pose(grid, {0});
         scene::Scene frozen = grid;
         frozen.animations.clear();
-        for (options::ShadingPath path : paths()) {
+        for (options::ShadingPath path : shadingPaths()) {
             Renderer animated(context()), still(context());
             std::vector<CapturedFrame> frames;
             for (double t : {0.0, 0.5, 1.0}) {
@@ -139,7 +134,7 @@ TEST_F(AnimationPointerTest, AHiddenNodeDrawsNothingAndItsLightLightsNothingOnBo
     for (scene::Light& l : shown.lights) l.hidden = false;
     scene::Scene animatedScene = visibilityScene(dir.path(), true, true);
     pose::ScenePose pose(animatedScene, {0});
-    for (options::ShadingPath path : paths()) {
+    for (options::ShadingPath path : shadingPaths()) {
         const auto fixedView = [&](RenderSettings s) {
             // Framing would follow the bounds, which differ between the scenes.
             s.camera.orbit = glm::vec3(20.0f, 55.0f, 5.0f);

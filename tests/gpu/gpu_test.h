@@ -5,12 +5,14 @@
 // best-practices checks are on too, and only the warnings listed in bestPracticesNotApplicable —
 // each with the reason it does not apply (docs/testing.md) — are let through.
 
+#include "options/shading_path.h"
 #include "vk/context.h"
 
 #include <gtest/gtest.h>
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace candela::test {
 
@@ -45,6 +47,13 @@ protected:
             if (!bestPracticesNotApplicable(m.text)) ADD_FAILURE() << "validation: " << m.text;
     }
     vk::Context& context() { return *mContext; }
+    // The shading paths the device runs: forward, and the visibility path unless the device lacks
+    // what it needs (DeviceChoices::visibilityUnsupported).
+    std::vector<options::ShadingPath> shadingPaths() {
+        std::vector<options::ShadingPath> out{options::ShadingPath::Forward};
+        if (context().choices().visibilityUnsupported.empty()) out.push_back(options::ShadingPath::Visibility);
+        return out;
+    }
     // For the one test that proves validation catches a missing barrier.
     void expectValidationMessages() { mExpectValidationMessages = true; }
 

@@ -34,7 +34,7 @@ using Bytes = std::vector<uint8_t>;
 enum : int {
     kByte = 5120, kUnsignedByte = 5121, kShort = 5122, kUnsignedShort = 5123, kUnsignedInt = 5125, kFloat = 5126
 };
-enum : int { kPoints = 0, kLines = 1, kTriangles = 4, kStrip = 5, kFan = 6 };
+enum : int { kPoints = 0, kLines = 1, kLineLoop = 2, kLineStrip = 3, kTriangles = 4, kStrip = 5, kFan = 6 };
 
 // The sample models in ../shared/assets, or "" when that folder is absent.
 inline fs::path sharedModels() {

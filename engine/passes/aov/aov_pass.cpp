@@ -37,6 +37,7 @@ const vk::Pipeline& AovPass::pipeline(const Variant& v) {
     return mPipelines.get(mContext, v, [&] {
         vk::GraphicsPipelineDesc desc{
             .depthFormat = kDepthFormat,
+            .topology = primitiveTopology(v.topology),
             .depthTest = true,
             .depthWrite = true,
             .depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL,
@@ -88,7 +89,10 @@ AovTargets AovPass::add(RenderGraph& graph, uint32_t width, uint32_t height, uin
     draws.reserve(list.items.size());
     for (const DrawListItem& item : list.items) {
         const MaterialKey& key = mKeys->keys[item.key];
-        draws.push_back({.pipeline = &pipeline({.targets = targets, .normalMap = key.normalMap, .alphaTest = key.alphaMask || key.blend}),
+        draws.push_back({.pipeline = &pipeline({.targets = targets,
+                                                .normalMap = key.normalMap,
+                                                .alphaTest = key.alphaMask || key.blend,
+                                                .topology = key.topology}),
                          .item = item,
                          .vertexOffset = frame.vertexOffsetOf(item.draw),
                          .materialSet = mMaterialSets[item.material]});

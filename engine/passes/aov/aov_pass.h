@@ -65,6 +65,7 @@ private:
         uint32_t targets = 0;
         bool normalMap = false;
         bool alphaTest = false;  // masked (at the cutoff) or blended (at ½) materials
+        scene::Topology topology = scene::Topology::Triangles;
         auto operator<=>(const Variant&) const = default;
     };
     const vk::Pipeline& pipeline(const Variant& variant);

@@ -30,6 +30,7 @@ scene::LodLevel levelOf(const scene::Scene& scene, const scene::Draw& draw, cons
 DrawRange rangeOf(const MaterialKey& key, bool transmission) {
     if (key.transmissive && transmission) return DrawRange::Transmissive;
     if (key.blend) return DrawRange::Blended;
+    if (key.topology != scene::Topology::Triangles) return DrawRange::PointsAndLines;
     return key.alphaMask ? DrawRange::Masked : DrawRange::Opaque;
 }
 
@@ -47,6 +48,7 @@ const char* drawRangeName(DrawRange range) {
     switch (range) {
     case DrawRange::Opaque: return "opaque";
     case DrawRange::Masked: return "masked";
+    case DrawRange::PointsAndLines: return "points and lines";
     case DrawRange::Transmissive: return "transmissive";
     case DrawRange::Blended: return "blended";
     }
@@ -63,16 +65,44 @@ MaterialKey materialKeyOf(const scene::Material& m) {
             .transmissive = layered && (m.layers() & scene::kLayerTransmission) != 0};
 }
 
+MaterialKey materialKeyOf(const scene::Material& material, const scene::Draw& draw) {
+    MaterialKey key = materialKeyOf(material);
+    key.topology = draw.topology;
+    // Unlit, drawn by the program of the material's layers still: its material set has their layout.
+    if (draw.unshaded) {
+        key.unlit = true;
+        key.normalMap = false;
+        key.transmissive = false;
+    }
+    return key;
+}
+
 MaterialKeys MaterialKeys::of(const scene::Scene& scene) {
     MaterialKeys out;
+    const auto indexOf = [&](const MaterialKey& key) {
+        const auto index = uint32_t(std::find(out.keys.begin(), out.keys.end(), key) - out.keys.begin());
+        if (index == out.keys.size()) out.keys.push_back(key);
+        return index;
+    };
     out.ofMaterial.reserve(scene.materials.size());
-    for (const scene::Material& m : scene.materials) {
-        const MaterialKey key = materialKeyOf(m);
-        const auto found = std::find(out.keys.begin(), out.keys.end(), key);
-        out.ofMaterial.push_back(uint32_t(found - out.keys.begin()));
-        if (found == out.keys.end()) out.keys.push_back(key);
-    }
+    for (const scene::Material& m : scene.materials) out.ofMaterial.push_back(indexOf(materialKeyOf(m)));
+    const auto addShaped = [&](uint32_t material, const scene::Draw& draw) {
+        out.ofShapedMaterial.try_emplace({material, draw.topology, draw.unshaded},
+                                         indexOf(materialKeyOf(scene.materials[material], draw)));
+    };
+    for (const scene::Draw& draw : scene.draws)
+        if (draw.topology != scene::Topology::Triangles) addShaped(draw.material, draw);
+    for (const scene::DrawVariants& variants : scene.drawVariants)
+        if (const scene::Draw& draw = scene.draws[variants.draw]; draw.topology != scene::Topology::Triangles) {
+            addShaped(variants.defaultMaterial, draw);
+            for (const auto& [variant, material] : variants.materials) addShaped(material, draw);
+        }
     return out;
+}
+
+uint32_t MaterialKeys::keyOf(uint32_t material, const scene::Draw& draw) const {
+    if (draw.topology == scene::Topology::Triangles) return ofMaterial[material];
+    return ofShapedMaterial.at({material, draw.topology, draw.unshaded});
 }
 
 std::span<const DrawListItem> DrawList::range(DrawRange r) const { return ranges(r, r); }
@@ -105,7 +135,8 @@ DrawList buildDrawList(const DrawListInputs& in) {
         const uint32_t instances = std::max(draw.instanceCount, 1u);
         DrawStats& stats = list.stats;
         ++stats.sceneDraws;
-        stats.sceneTriangles += uint64_t(draw.indexCount / 3) * instances;
+        const bool triangles = draw.topology == scene::Topology::Triangles;
+        if (triangles) stats.sceneTriangles += uint64_t(draw.indexCount / 3) * instances;
         if (in.selection.frustumCulling && !frustum.intersects(draw.bounds)) {
             ++stats.culledDraws;
             continue;
@@ -113,8 +144,10 @@ DrawList buildDrawList(const DrawListInputs& in) {
         const scene::LodLevel level = levelOf(in.scene, draw, in.view, in.targetHeight, in.selection.lodErrorPixels);
         stats.coarserDraws += level.firstIndex != draw.firstIndex;
         ++stats.submittedDraws;
-        stats.submittedTriangles += uint64_t(level.indexCount / 3) * instances;
-        const uint32_t key = in.keys.ofMaterial[draw.material];
+        if (triangles) stats.submittedTriangles += uint64_t(level.indexCount / 3) * instances;
+        else (draw.topology == scene::Topology::Lines ? stats.submittedLines : stats.submittedPoints) +=
+            uint64_t(level.indexCount / scene::indicesPerPrimitive(draw.topology)) * instances;
+        const uint32_t key = in.keys.keyOf(draw.material, draw);
         const glm::vec3 centre = 0.5f * (draw.bounds.min + draw.bounds.max);
         list.items.push_back({.draw = i,
                               .material = draw.material,
@@ -148,7 +181,9 @@ std::string describeSelection(const DrawList& list, const options::DrawSelection
     const DrawStats& s = list.stats;
     return "draws: " + std::to_string(s.submittedDraws) + " of " + std::to_string(s.sceneDraws) + " submitted (" +
            std::to_string(s.culledDraws) + " outside the view frustum" + (selection.frustumCulling ? "" : ", culling off") +
-           "), " + std::to_string(s.submittedTriangles) + " of " + std::to_string(s.sceneTriangles) + " triangles; " +
+           "), " + std::to_string(s.submittedTriangles) + " of " + std::to_string(s.sceneTriangles) + " triangles" +
+           (s.submittedLines ? ", " + std::to_string(s.submittedLines) + " lines" : std::string()) +
+           (s.submittedPoints ? ", " + std::to_string(s.submittedPoints) + " points" : std::string()) + "; " +
            std::to_string(s.coarserDraws) + " draws at a coarser level of detail (" +
            (selection.lodErrorPixels > 0.0f ? "error ≤ " + formatPixels(selection.lodErrorPixels) + " px"
                                             : std::string("levels of detail off")) +

@@ -16,6 +16,8 @@
 
 #include <array>
 #include <compare>
+#include <map>
+#include <tuple>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -23,15 +25,16 @@
 
 namespace candela::passes {
 
-// The ranges of a draw list, in drawing order. Opaque and masked draws are sorted by material key,
-// then material (fewest state changes); transmissive and blended ones back to front.
+// The ranges of a draw list, in drawing order. Opaque, masked and point-and-line draws are sorted by
+// material key, then material (fewest state changes); transmissive and blended ones back to front.
 enum class DrawRange : uint8_t {
-    Opaque,        // alpha mode OPAQUE
-    Masked,        // alpha mode MASK (alpha test, or alpha to coverage)
-    Transmissive,  // KHR_materials_transmission: drawn over the opaque image, which they see through
-    Blended,       // alpha mode BLEND
+    Opaque,          // alpha mode OPAQUE (triangles)
+    Masked,          // alpha mode MASK (alpha test, or alpha to coverage) (triangles)
+    PointsAndLines,  // opaque and masked points and lines: drawn forward on both paths (the visibility buffer holds triangles)
+    Transmissive,    // KHR_materials_transmission: drawn over the opaque image, which they see through
+    Blended,         // alpha mode BLEND
 };
-inline constexpr size_t kDrawRangeCount = 4;
+inline constexpr size_t kDrawRangeCount = 5;
 const char* drawRangeName(DrawRange range);
 
 // What a material asks of the forward program, whatever the frame: the material half of a
@@ -45,16 +48,27 @@ struct MaterialKey {
     // program draws the material.
     uint32_t layers = 0;
     bool transmissive = false;  // has a transmission layer
+    // The draw's topology (a pipeline each): a material's key is for triangles, draws of points and
+    // lines have keys of their own (MaterialKeys::keyOf).
+    scene::Topology topology = scene::Topology::Triangles;
     auto operator<=>(const MaterialKey&) const = default;
 };
+// The key of `material` on triangles.
 MaterialKey materialKeyOf(const scene::Material& material);
+// The key of `material` drawn by `draw`: its topology; unlit when the draw is unshaded.
+MaterialKey materialKeyOf(const scene::Material& material, const scene::Draw& draw);
 
 // The distinct material keys of a scene and each material's; made once per scene.
 struct MaterialKeys {
-    std::vector<MaterialKey> keys;   // in first-use order of the materials
-    std::vector<uint32_t> ofMaterial;  // per scene material: its index into `keys`
+    std::vector<MaterialKey> keys;     // in first-use order of the materials, then of the point and line draws
+    std::vector<uint32_t> ofMaterial;  // per scene material: its index into `keys` on triangles
+    // The keys of materials on points and lines, by (material, topology, unshaded): every material a
+    // point or line draw may wear (KHR_materials_variants' included).
+    std::map<std::tuple<uint32_t, scene::Topology, bool>, uint32_t> ofShapedMaterial;
     static MaterialKeys of(const scene::Scene& scene);
     const MaterialKey& operator[](uint32_t material) const { return keys[ofMaterial[material]]; }
+    // The index into `keys` of `material` drawn by `draw`. Precondition: `keys` is of the draw's scene.
+    uint32_t keyOf(uint32_t material, const scene::Draw& draw) const;
 };
 
 // One draw the frame submits.

@@ -112,6 +112,13 @@ inline std::vector<VkVertexInputAttributeDescription> sceneVertexAttributes() {
             {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, color)}};
 }
 
+// The primitive topology of a pipeline drawing the scene's draws of `topology`.
+inline VkPrimitiveTopology primitiveTopology(scene::Topology topology) {
+    return topology == scene::Topology::Triangles ? VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST
+           : topology == scene::Topology::Lines   ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST
+                                                  : VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+}
+
 // Binds `set` at index `index` of `pipeline`'s layout (graphics), counting it in `stats` (a hook's).
 inline void bindGraphicsSet(VkCommandBuffer cmd, const vk::Pipeline& pipeline, uint32_t index, VkDescriptorSet set, DrawStats& stats) {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), index, 1, &set, 0, nullptr);

@@ -14,10 +14,11 @@ ShadingSummary summarizeShading(const DrawList& list, const MaterialKeys& keys, 
     for (const DrawListItem& item : list.items) ++perKey[item.key];
     for (uint32_t key = 0; key < perKey.size(); ++key)
         if (perKey[key]) out.variants[shadingVariant(keys.keys[key], frame).name()] += perKey[key];
+    // Unlit variants also draw points and lines without normals (Draw::unshaded).
+    for (const MaterialKey& key : keys.keys) out.unlit = out.unlit || key.unlit;
     for (uint32_t material = 0; material < scene.materials.size(); ++material) {
         const scene::Material& m = scene.materials[material];
         out.normalMaps = out.normalMaps || m.normal.present();
-        out.unlit = out.unlit || m.unlit;
         if (const uint32_t layers = keys[material].layers) out.layered.push_back({m.name, layers});
     }
     return out;
@@ -42,7 +43,7 @@ std::vector<std::string> explainShading(const ShadingSummary& summary, const Dra
         out.push_back("left out: " + std::to_string(summary.hiddenDraws) + " draws of hidden nodes (KHR_node_visibility)");
     if (!summary.lights) out.emplace_back("left out: light loop (no punctual lights)");
     if (!summary.normalMaps) out.emplace_back("left out: normal mapping / TBN work (no material has a normal texture)");
-    if (!summary.unlit) out.emplace_back("left out: unlit variant (no KHR_materials_unlit material)");
+    if (!summary.unlit) out.emplace_back("left out: unlit variant (no KHR_materials_unlit material, no unshaded point or line)");
     for (const ShadingSummary::LayeredMaterial& material : summary.layered)
         out.push_back("material '" + material.name + "' pays for layers: " + plusLayerNames(material.layers).substr(1) +
                       " (the layered forward program)");

@@ -24,7 +24,7 @@ struct ShadingSummary {
     uint32_t hiddenDraws = 0;                  // hidden or scaled to nothing: not drawn
     bool lights = false;                       // the scene has punctual lights (else no light loop)
     bool normalMaps = false;                   // a material has a normal texture (else no TBN work)
-    bool unlit = false;                        // a material is KHR_materials_unlit (else no unlit variant)
+    bool unlit = false;                        // a material is KHR_materials_unlit, or points or lines unshaded (else no unlit variant)
     // The materials that pay for layers (the layered program), in material order.
     struct LayeredMaterial {
         std::string name;

@@ -30,6 +30,7 @@ ShadingVariant shadingVariant(const MaterialKey& key, const FrameVariant& frame)
     v.specularAa = !key.unlit && frame.specularAa;
     v.samples = frame.samples;
     v.alphaToCoverage = key.alphaMask && frame.alphaToCoverage;
+    v.topology = key.topology;
     return v;
 }
 
@@ -63,6 +64,7 @@ std::string ShadingVariant::name() const {
     if (samples > 1) out += "+msaa" + std::to_string(samples);
     if (alphaToCoverage) out += "+alpha-to-coverage";
     if (debugView != options::DebugView::None) out += std::string("+debug-") + options::debugViewName(debugView);
+    if (topology != scene::Topology::Triangles) (out += "+") += scene::topologyName(topology);
     return out;
 }
 

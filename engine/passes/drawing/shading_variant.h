@@ -52,6 +52,7 @@ struct ShadingVariant {
     bool specularAa = false;
     uint32_t samples = 1;
     bool alphaToCoverage = false;
+    scene::Topology topology = scene::Topology::Triangles;  // the pipeline's primitive topology
     auto operator<=>(const ShadingVariant&) const = default;
     // E.g. "pbr+normal-map+ibl-sh9+msaa4" (for --explain).
     std::string name() const;

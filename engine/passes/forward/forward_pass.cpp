@@ -23,6 +23,7 @@ vk::GraphicsPipelineDesc pipelineDesc(const ShadingVariant& v, bool specializeLa
     vk::GraphicsPipelineDesc out{
         .colorFormats = {passes::kHdrFormat},
         .depthFormat = passes::kDepthFormat,
+        .topology = primitiveTopology(v.topology),
         .depthTest = true,
         .depthWrite = !v.blend,
         .depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL,
@@ -139,7 +140,7 @@ DrawTarget ForwardPass::addOpaque(RenderGraph& graph, const DrawTargetSize& size
     // Without transmissive draws the blended ones follow the opaque ones here (the transmissive
     // range between them is then empty); with them, forward_transmission draws them.
     const bool transmission = !list.empty(DrawRange::Transmissive);
-    return addDrawPass(graph, "forward", list.ranges(DrawRange::Opaque, transmission ? DrawRange::Masked : DrawRange::Blended),
+    return addDrawPass(graph, "forward", list.ranges(DrawRange::Opaque, transmission ? DrawRange::PointsAndLines : DrawRange::Blended),
                        frame, recorded, [&](PassBuilder& builder) {
                            return drawInto(builder, createDrawTarget(builder, size), true, DepthUse::Clear);
                        });
@@ -154,6 +155,14 @@ DrawTarget ForwardPass::addTransmissive(RenderGraph& graph, const DrawTarget& op
     const std::vector<DrawListItem> items = list.backToFront(DrawRange::Transmissive, DrawRange::Blended);
     return addDrawPass(graph, "forward_transmission", items, inputs, recorded,
                        [&](PassBuilder& builder) { return drawInto(builder, opaque, false, DepthUse::Write); });
+}
+
+DrawTarget ForwardPass::addPointsAndLines(RenderGraph& graph, const DrawTarget& target, const DrawList& list,
+                                         const FrameInputs& frame, DrawStats* recorded) {
+    if (list.empty(DrawRange::PointsAndLines))
+        throw std::logic_error("ForwardPass::addPointsAndLines: the draw list has no point or line draw");
+    return addDrawPass(graph, "forward_points_lines", list.range(DrawRange::PointsAndLines), frame, recorded,
+                       [&](PassBuilder& builder) { return drawInto(builder, target, false, DepthUse::Write); });
 }
 
 DrawTarget ForwardPass::addBlended(RenderGraph& graph, const DrawTarget& target, const DrawList& list, const FrameInputs& frame,

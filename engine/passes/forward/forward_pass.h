@@ -3,8 +3,8 @@
 // target (RGBA16F, alpha = coverage, premultiplied) with a reverse-Z depth buffer. Each draw uses
 // the pipeline variant of its material key and the frame's bits (passes/drawing/shading_variant.h).
 //
-// A frame adds "forward" (addOpaque: the opaque and masked ranges, then the blended one sorted
-// back to front) and, when the list has transmissive draws, "forward_transmission"
+// A frame adds "forward" (addOpaque: the opaque, masked and point-and-line ranges, then the
+// blended one sorted back to front) and, when the list has transmissive draws, "forward_transmission"
 // (addTransmissive: the transmissive and blended draws back to front over the opaque image, reading
 // its copy with mips, TransmissionBackgroundPass). Both take what they draw from their arguments:
 // the pass keeps no state between calls. What every draw of the frame shares (push constants, the
@@ -57,6 +57,12 @@ public:
     // versions. Precondition: the list has transmissive draws.
     DrawTarget addTransmissive(graph::RenderGraph& graph, const DrawTarget& opaque, graph::TextureId background,
                                const DrawList& list, const FrameInputs& frame, DrawStats* recorded = nullptr);
+
+    // Adds "forward_points_lines": the list's opaque and masked points and lines over `target` (the
+    // visibility path's shaded image and its depth, tested and written). Precondition: the list
+    // has such draws.
+    DrawTarget addPointsAndLines(graph::RenderGraph& graph, const DrawTarget& target, const DrawList& list, const FrameInputs& frame,
+                                 DrawStats* recorded = nullptr);
 
     // Adds "forward_blended": the list's blended draws, back to front, over `target` (the visibility
     // path's shaded image and its depth, tested but not written). Precondition: the list has blended

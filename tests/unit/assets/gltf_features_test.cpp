@@ -95,6 +95,16 @@ TEST(GltfFeatures, StripAndFanIndexConversion) {
     EXPECT_TRUE(gltf::toTriangleList(kFan, std::vector<uint32_t>{}).empty());
 }
 
+TEST(GltfFeatures, LineIndexConversion) {
+    const std::vector<uint32_t> five = {0, 1, 2, 3, 4};
+    EXPECT_EQ(gltf::toLineList(kLines, five), (std::vector<uint32_t>{0, 1, 2, 3}));
+    EXPECT_EQ(gltf::toLineList(kLineStrip, five), (std::vector<uint32_t>{0, 1, 1, 2, 2, 3, 3, 4}));
+    EXPECT_EQ(gltf::toLineList(kLineLoop, five), (std::vector<uint32_t>{0, 1, 1, 2, 2, 3, 3, 4, 4, 0}));
+    EXPECT_TRUE(gltf::toLineList(kLineStrip, std::vector<uint32_t>{7}).empty());
+    EXPECT_TRUE(gltf::toLineList(kLineLoop, std::vector<uint32_t>{7}).empty());
+    EXPECT_TRUE(gltf::toLineList(kLines, std::vector<uint32_t>{}).empty());
+}
+
 TEST(GltfFeatures, StripAndFanFilesKeepCounterClockwiseWinding) {
     test::TempDir dir;
     GltfBuilder b;
@@ -818,19 +828,46 @@ TEST(GltfFeatures, CamerasInWorldSpaceWithoutScale) {
     EXPECT_FLOAT_EQ(o.zfar, 50.0f);
 }
 
-TEST(GltfFeatures, PointsAndLinesSkippedWithOneWarningLine) {
+TEST(GltfFeatures, PointsAndLinesAreDrawnUnshadedWithoutNormals) {
     test::TempDir dir;
     GltfBuilder b;
     b.addTriangle();
     const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}, "VEC3", 3);
-    b.doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", pos}}}, {"mode", kPoints}});
-    b.doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", pos}}}, {"mode", kLines}});
+    const int normals = b.addFloats({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3", 3);
+    const int colours = b.addFloats({1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1}, "VEC3", 3);
+    auto& primitives = b.doc["meshes"][0]["primitives"];
+    primitives.push_back({{"attributes", {{"POSITION", pos}, {"COLOR_0", colours}}}, {"mode", kPoints}});
+    primitives.push_back({{"attributes", {{"POSITION", pos}}}, {"mode", kLines}});
+    primitives.push_back({{"attributes", {{"POSITION", pos}, {"NORMAL", normals}}}, {"mode", kLineLoop}});
+    primitives.push_back({{"attributes", {{"POSITION", pos}}}, {"mode", kLineStrip}});
     const scene::Scene scene = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_EQ(scene.draws.size(), 1u);
-    EXPECT_EQ(scene.report.warnings, (std::vector<std::string>{"2 primitives: points or lines, not drawn (only triangles are)"}));
-    b.doc["meshes"][0]["primitives"].erase(2);
-    const scene::Scene one = loadGltf(b.writeGltf(dir.path()));
-    EXPECT_EQ(one.report.warnings, (std::vector<std::string>{"mesh 0 primitive 1 (POINTS): points or lines, not drawn (only triangles are)"}));
+    EXPECT_TRUE(scene.report.warnings.empty());
+    ASSERT_EQ(scene.draws.size(), 5u);
+    const auto indicesOf = [&](const scene::Draw& d) {
+        std::vector<uint32_t> out(scene.indices.begin() + d.firstIndex, scene.indices.begin() + d.firstIndex + d.indexCount);
+        const uint32_t first = out.empty() ? 0 : *std::min_element(out.begin(), out.end());
+        for (uint32_t& i : out) i -= first;
+        return out;
+    };
+    EXPECT_EQ(scene.draws[0].topology, scene::Topology::Triangles);
+    EXPECT_FALSE(scene.draws[0].unshaded);  // triangles get flat normals
+    EXPECT_EQ(scene.draws[1].topology, scene::Topology::Points);
+    EXPECT_TRUE(scene.draws[1].unshaded);
+    EXPECT_EQ(indicesOf(scene.draws[1]), (std::vector<uint32_t>{0, 1, 2, 3}));
+    EXPECT_EQ(scene.draws[2].topology, scene::Topology::Lines);
+    EXPECT_EQ(indicesOf(scene.draws[2]), (std::vector<uint32_t>{0, 1, 2, 3}));
+    EXPECT_EQ(scene.draws[3].topology, scene::Topology::Lines);
+    EXPECT_FALSE(scene.draws[3].unshaded);  // it has normals: lit
+    EXPECT_EQ(indicesOf(scene.draws[3]), (std::vector<uint32_t>{0, 1, 1, 2, 2, 3, 3, 0}));
+    EXPECT_EQ(indicesOf(scene.draws[4]), (std::vector<uint32_t>{0, 1, 1, 2, 2, 3}));
+    // Points keep their vertices and colours (no flat-normal split).
+    const uint32_t first = scene.indices[scene.draws[1].firstIndex];
+    expectVec(glm::vec3(scene.vertices[first + 1].color), {0, 1, 0});
+    // An odd LINES index count drops the last index, with a warning.
+    primitives[2]["indices"] = b.addIndices({0, 1, 2});
+    const scene::Scene odd = loadGltf(b.writeGltf(dir.path()));
+    EXPECT_EQ(odd.draws[2].indexCount, 2u);
+    EXPECT_EQ(odd.report.warnings, (std::vector<std::string>{"mesh 0 primitive 2: 3 indices is not a multiple of 2 (extra dropped)"}));
 }
 
 TEST(GltfFeatures, OptionalUnsupportedExtensionWarnsAndLoads) {

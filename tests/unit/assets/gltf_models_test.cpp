@@ -142,17 +142,24 @@ TEST(GltfModels, TriangleWithoutIndices) {
 TEST(GltfModels, MeshPrimitiveModes) {
     REQUIRE_MODELS();
     const scene::Scene s = loadGltf(model("MeshPrimitiveModes", "glTF", "MeshPrimitiveModes.gltf"));
-    // POINTS, LINES, LINE_LOOP and LINE_STRIP are skipped; TRIANGLES (6), the strip (6 indices → 4
-    // triangles) and the fan (8 indices → 6 triangles) are drawn, all facing +Z.
-    ASSERT_EQ(s.draws.size(), 3u);
-    EXPECT_EQ(s.draws[0].indexCount, 18u);
-    EXPECT_EQ(s.draws[1].indexCount, 12u);
-    EXPECT_EQ(s.draws[2].indexCount, 18u);
-    EXPECT_EQ(s.vertices.size(), 48u);  // no normals: flat, one vertex per corner
-    for (const scene::Vertex& v : s.vertices) expectVec(v.normal, {0, 0, 1});
-    // The four primitives of points and lines, folded into one line.
-    EXPECT_EQ(s.report.warnings, (std::vector<std::string>{"4 primitives: points or lines, not drawn (only triangles are)"}));
-    expectVec(glm::vec3(s.draws[1].world[3]), {0, -3, 0});
+    // Seven primitives over the same hexagon: POINTS (7 points), LINES (6 lines), LINE_LOOP (7),
+    // LINE_STRIP (6), TRIANGLES (6), the strip (6 indices → 4 triangles) and the fan (8 → 6).
+    ASSERT_EQ(s.draws.size(), 7u);
+    const std::vector<std::pair<scene::Topology, uint32_t>> expected = {
+        {scene::Topology::Points, 7},     {scene::Topology::Lines, 12},     {scene::Topology::Lines, 14},
+        {scene::Topology::Lines, 12},     {scene::Topology::Triangles, 18}, {scene::Topology::Triangles, 12},
+        {scene::Topology::Triangles, 18}};
+    for (size_t d = 0; d < expected.size(); ++d) {
+        EXPECT_EQ(s.draws[d].topology, expected[d].first) << d;
+        EXPECT_EQ(s.draws[d].indexCount, expected[d].second) << d;
+        // No normals: points and lines unshaded, triangles flat (one vertex per corner, facing +Z).
+        EXPECT_EQ(s.draws[d].unshaded, expected[d].first != scene::Topology::Triangles) << d;
+    }
+    EXPECT_EQ(s.vertices.size(), 4 * 7u + 48u);
+    for (size_t d = 4; d < 7; ++d)
+        for (uint32_t i = 0; i < s.draws[d].indexCount; ++i) expectVec(s.vertices[s.indices[s.draws[d].firstIndex + i]].normal, {0, 0, 1});
+    EXPECT_TRUE(s.report.warnings.empty());
+    expectVec(glm::vec3(s.draws[5].world[3]), {0, -3, 0});
 }
 
 TEST(GltfModels, SimpleMeshesShareGeometry) {

@@ -86,6 +86,39 @@ TEST(DrawList, RangesHoldTheirAlphaModesInDrawingOrder) {
     EXPECT_EQ(list.ranges(DrawRange::Opaque, DrawRange::Masked).size(), 4u);
 }
 
+TEST(DrawList, PointsAndLinesHaveARangeAndKeysOfTheirOwn) {
+    Fixture f = mixedScene();
+    const auto shaped = [](scene::Draw d, scene::Topology topology, bool unshaded) {
+        d.topology = topology;
+        d.unshaded = unshaded;
+        d.indexCount = 12;
+        return d;
+    };
+    f.scene.draws.push_back(shaped(drawAt(0, {0, 0, -4}), scene::Topology::Lines, true));    // 8: opaque lines, no normals
+    f.scene.draws.push_back(shaped(drawAt(1, {0, 0, -4}), scene::Topology::Points, false));  // 9: masked points with normals
+    f.scene.draws.push_back(shaped(drawAt(2, {0, 0, -2}), scene::Topology::Lines, false));   // 10: blended lines
+    const DrawList list = f.build();
+    // Opaque and masked points and lines get their own range (drawn forward on both paths); blended
+    // ones blend back to front with the blended triangles.
+    EXPECT_EQ(drawsOf(list.range(DrawRange::PointsAndLines)), (std::vector<uint32_t>{8, 9}));
+    EXPECT_EQ(drawsOf(list.range(DrawRange::Blended)), (std::vector<uint32_t>{4, 0, 10}));
+    EXPECT_EQ(drawsOf(list.range(DrawRange::Opaque)), (std::vector<uint32_t>{1, 7, 5}));
+    const MaterialKey& lines = f.keys.keys[list.range(DrawRange::PointsAndLines)[0].key];
+    EXPECT_EQ(lines.topology, scene::Topology::Lines);
+    EXPECT_TRUE(lines.unlit);  // no normals: unshaded
+    const MaterialKey& points = f.keys.keys[list.range(DrawRange::PointsAndLines)[1].key];
+    EXPECT_EQ(points.topology, scene::Topology::Points);
+    EXPECT_FALSE(points.unlit);
+    EXPECT_TRUE(points.alphaMask);
+    // The triangles' keys are the materials' own; the variants name their topology.
+    EXPECT_EQ(f.keys.keyOf(0, f.scene.draws[0]), f.keys.ofMaterial[0]);
+    EXPECT_NE(f.keys.keyOf(0, f.scene.draws[8]), f.keys.ofMaterial[0]);
+    EXPECT_EQ(shadingVariant(lines, {}).name(), "unlit+lines");
+    EXPECT_EQ(list.stats.submittedTriangles, 8u * 12);
+    EXPECT_EQ(list.stats.submittedLines, 12u);  // two line draws of 12 indices: 6 lines each
+    EXPECT_EQ(list.stats.submittedPoints, 12u);
+}
+
 TEST(DrawList, TransmissiveAndBlendedMergeBackToFront) {
     Fixture f = mixedScene();
     const DrawList list = f.build();

@@ -153,6 +153,20 @@ TEST(FramePlan, VisibilityPathExpandsAndDrawsBlendedDrawsOnlyWhenNeeded) {
     EXPECT_FALSE(planFrame(facts).blendedPass);
 }
 
+TEST(FramePlan, VisibilityPathDrawsPointsAndLinesForwardAfterIt) {
+    FrameFacts facts = visibilityFrame();
+    facts.pointAndLineDraws = true;
+    EXPECT_TRUE(planFrame(facts).pointsAndLinesPass);
+    EXPECT_FALSE(planFrame(facts).msaaExpand);
+    facts.samples = 4;  // drawn into the multisampled image, like blended draws
+    EXPECT_TRUE(planFrame(facts).msaaExpand);
+    EXPECT_FALSE(planFrame(facts).blendedPass);
+    // The forward path draws them in its forward pass.
+    facts.requestedPath = ShadingPath::Forward;
+    EXPECT_FALSE(planFrame(facts).pointsAndLinesPass);
+    EXPECT_FALSE(planFrame(facts).msaaExpand);
+}
+
 TEST(FramePlan, SkinMorphAsThePoseNeedsIt) {
     FrameFacts facts = visibilityFrame();
     EXPECT_EQ(planFrame(facts).deform, DeformPlan::Static);
@@ -224,17 +238,19 @@ TEST(FramePlan, TooManyShadingListsChangesOnlyThePath) {
     facts.deformable = true;
     facts.deformedDraws = 2;
     facts.sheen = true;
+    facts.pointAndLineDraws = true;
     FramePlan fits = planFrame(facts);
     facts.shadingListsFit = false;
     const FramePlan fallback = planFrame(facts);
     EXPECT_EQ(fallback.path, ShadingPath::Forward);
     EXPECT_EQ(fallback.pathReason, PathReason::TooManyShadingLists);
-    EXPECT_TRUE(fits.msaaExpand && fits.blendedPass);
-    EXPECT_FALSE(fallback.msaaExpand || fallback.blendedPass);
+    EXPECT_TRUE(fits.msaaExpand && fits.blendedPass && fits.pointsAndLinesPass);
+    EXPECT_FALSE(fallback.msaaExpand || fallback.blendedPass || fallback.pointsAndLinesPass);
     fits.path = fallback.path;
     fits.pathReason = fallback.pathReason;
     fits.msaaExpand = fallback.msaaExpand;
     fits.blendedPass = fallback.blendedPass;
+    fits.pointsAndLinesPass = fallback.pointsAndLinesPass;
     EXPECT_EQ(fits, fallback);
 }
 
