@@ -50,6 +50,9 @@ struct PassDecl {
     PassType type = PassType::Graphics;
     bool sideEffect = false;  // kept even when no output depends on it (e.g. readback to host)
     bool enabled = true;      // runtime toggle; disabled passes are culled like unused ones
+    // Non-empty: the pass cannot be switched off, and why (PassBuilder::cannotBeDisabled): the
+    // frame's callers refuse to disable it (render/frame_runner.cpp, the viewer's graph panel).
+    std::string cannotBeDisabled;
     std::vector<AccessDecl> reads;
     std::vector<AccessDecl> writes;
 };

@@ -162,6 +162,7 @@ TextureId PassBuilder::resolve(TextureId multisampled, TextureId target) {
 }
 
 void PassBuilder::sideEffect() { mGraph.mDecl.passes[mPass].sideEffect = true; }
+void PassBuilder::cannotBeDisabled(std::string why) { mGraph.mDecl.passes[mPass].cannotBeDisabled = std::move(why); }
 
 TextureId RenderGraph::importTexture(std::string name, const TextureDesc& desc, const ResourceState& initial,
                                      std::optional<ResourceState> final) {

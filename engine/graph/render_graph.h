@@ -82,6 +82,10 @@ public:
 
     // Keeps the pass alive even if no output depends on it.
     void sideEffect();
+    // Marks the pass as one that cannot be switched off, `why` saying what switching it off would
+    // leave undefined (PassDecl::cannotBeDisabled). For a pass whose writes preserve what came
+    // before (so that the cull step would bypass it) but whose consumers read what only it writes.
+    void cannotBeDisabled(std::string why);
 
 private:
     friend class RenderGraph;

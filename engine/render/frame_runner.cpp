@@ -30,11 +30,16 @@ double FrameRunner::completedPassMs(std::string_view pass) const {
 std::chrono::steady_clock::time_point FrameRunner::submit(Frame frame, const SubmitOptions& options) {
     RenderGraph& graph = *frame.graph;
     for (const std::string& name : options.disabledPasses) {
-        if (!graph.findPass(name)) {
+        const std::optional<uint32_t> pass = graph.findPass(name);
+        if (!pass) {
             if (!options.unknownPassIsError) continue;
             std::string names;
             for (const PassDecl& p : graph.declaration().passes) names += (names.empty() ? "" : ", ") + p.name;
             throw UserError("cannot disable pass '" + name + "': no such pass (passes: " + names + ")");
+        }
+        if (const std::string& why = graph.declaration().passes[*pass].cannotBeDisabled; !why.empty()) {
+            if (!options.unknownPassIsError) continue;  // the viewer: its panel shows the box greyed out
+            throw UserError("cannot disable pass '" + name + "': " + why);
         }
         graph.setPassEnabled(name, false);
     }

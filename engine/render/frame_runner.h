@@ -26,8 +26,9 @@ public:
 
     struct SubmitOptions {
         std::span<const std::string> disabledPasses;  // pass names switched off in this frame (read during submit)
-        // false: a disabled pass the frame does not declare is ignored (the viewer keeps toggles
-        // across scene and environment changes); true: it is a UserError (the command line).
+        // false: a disabled pass the frame does not declare, or one that cannot be switched off
+        // (PassDecl::cannotBeDisabled), is ignored (the viewer keeps toggles across scene and
+        // environment changes); true: it is a UserError (the command line).
         bool unknownPassIsError = true;
         bool emitBarriers = true;  // testing hook: false records no barriers (sync validation must object)
         const PresentTarget* present = nullptr;

@@ -44,8 +44,9 @@ using OverlayFn = std::function<graph::TextureId(graph::RenderGraph& graph, grap
 // How the renderer runs frames, whatever they show.
 struct RendererOptions {
     uint32_t framesInFlight = 2;
-    // false: a disabled pass (RenderSettings::disabledPasses) that a frame does not declare is
-    // ignored (the viewer keeps toggles across scene and environment changes); true: UserError.
+    // false: a disabled pass (RenderSettings::disabledPasses) that a frame does not declare, or
+    // that cannot be switched off, is ignored (the viewer keeps toggles across scene and
+    // environment changes); true: UserError.
     bool unknownPassIsError = true;
     bool emitBarriers = true;  // testing hook: false records no barriers (sync validation must object)
 };

@@ -73,11 +73,15 @@ void drawGraphPanel(Viewer& viewer) {
             ImGui::TableNextColumn();
             ImGui::PushID(int(p));
             bool enabled = viewer.passEnabled(pass.name);
-            // The UI's own pass cannot be switched off from the UI (--no-ui leaves it out).
+            // The UI's own pass cannot be switched off from the UI (--no-ui leaves it out), nor a
+            // pass the frame cannot do without (PassDecl::cannotBeDisabled: the reason on hover).
             const bool self = pass.name == "imgui";
-            if (self) ImGui::BeginDisabled();
+            const bool fixed = self || !pass.cannotBeDisabled.empty();
+            if (fixed) ImGui::BeginDisabled();
             if (ImGui::Checkbox("##enabled", &enabled)) viewer.setPassEnabled(pass.name, enabled);
-            if (self) ImGui::EndDisabled();
+            if (fixed) ImGui::EndDisabled();
+            if (!pass.cannotBeDisabled.empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+                ImGui::SetTooltip("cannot be switched off: %s", pass.cannotBeDisabled.c_str());
             ImGui::SameLine();
             if (culled) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
             const bool open = ImGui::TreeNodeEx(pass.name.c_str(), ImGuiTreeNodeFlags_SpanAvailWidth);

@@ -169,6 +169,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"InfoDeviceMatchesNothing", "info --device no-such-gpu", "matches no Vulkan device"},
                       BadInput{"SwitchWithValue", "render --validate=yes", "--validate takes no value"},
                       BadInput{"UnknownPassToDisable", "render --disable-pass nosuchpass --out /tmp/candela_np.png", "nosuchpass"},
+                      BadInput{"PassThatCannotBeDisabled",
+                               "render --width 16 --height 16 --disable-pass ibl_prefilter --out /tmp/candela_np.png",
+                               "cannot disable pass 'ibl_prefilter': it writes the specular map's rough levels"},
                       // Scenes ({dir}: the files of writeSceneFiles) and the scene, camera and image options.
                       BadInput{"VariantUnknown", "render --scene {dir}/variants.gltf --variant green --out {dir}/x.png",
                                "--variant: {dir}/variants.gltf has no variant 'green' (its variants: red, blue)"},
@@ -411,7 +414,7 @@ TEST(Cli, FloatOutputsCullTheTonemapPass) {
 }
 
 TEST(Cli, BenchReportsFrameAndPassesAsRatiosToCalibration) {
-    const std::string command = std::string(CANDELA_EXECUTABLE) + " bench --validate --frames 2 --width 48 --height 32 --json --explain";
+    const std::string command = candela::test::candelaExecutable() + " bench --validate --frames 2 --width 48 --height 32 --json --explain";
     FILE* pipe = popen(command.c_str(), "r");
     std::string out;
     std::array<char, 4096> buffer;
@@ -628,7 +631,7 @@ TEST(Cli, QualityReportSweepsMsaaSpecularAaAndLevelsOfDetail) {
 // variable, and an unknown name in either is a one-line error with exit code 2.
 TEST(Cli, InfoUnderADeviceProfileListsItsLimitsAndFallbacks) {
     const auto capture = [](const std::string& prefix, const std::string& args, int* status) {
-        const std::string command = prefix + " " + std::string(CANDELA_EXECUTABLE) + " info " + args + " 2>&1";
+        const std::string command = prefix + " " + candela::test::candelaExecutable() + " info " + args + " 2>&1";
         FILE* pipe = popen(command.c_str(), "r");
         std::string out;
         std::array<char, 4096> buffer;
@@ -660,7 +663,7 @@ TEST(Cli, InfoUnderADeviceProfileListsItsLimitsAndFallbacks) {
 }
 
 TEST(Cli, InfoListsDevicesAndTheChoice) {
-    const std::string command = std::string(CANDELA_EXECUTABLE) + " info 2>&1";
+    const std::string command = candela::test::candelaExecutable() + " info 2>&1";
     FILE* pipe = popen(command.c_str(), "r");
     std::string out;
     std::array<char, 4096> buffer;

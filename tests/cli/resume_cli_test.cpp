@@ -68,7 +68,7 @@ TEST(Resume, AKilledLibraryRunResumedEndsWithTheFilesOfAnUninterruptedOne) {
 
     // The same run, killed once three images are written.
     const fs::path out = dir.path() / "killed";
-    const std::string command = std::string(CANDELA_EXECUTABLE) + " render " + scenes.string() + " --out " +
+    const std::string command = candelaExecutable() + " render " + scenes.string() + " --out " +
                                 (out / "{name}.png").string() + " --report " + (out / "report.json").string() + kSize +
                                 " >/dev/null 2>&1";
     const pid_t pid = fork();

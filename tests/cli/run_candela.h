@@ -1,5 +1,7 @@
 #pragma once
-// Runs the real `candela` executable (CANDELA_EXECUTABLE) for the CLI tests.
+// Runs the real `candela` executable for the CLI tests: the build tree's (CANDELA_EXECUTABLE), or
+// the one the environment variable CANDELA_EXECUTABLE names (the sanitized stage of
+// tools/build-and-test.sh runs this binary against the sanitized executable).
 
 #include "temp_dir.h"
 
@@ -16,6 +18,12 @@
 #include <string>
 
 namespace candela::test {
+
+// The executable the tests run.
+inline std::string candelaExecutable() {
+    const char* chosen = std::getenv("CANDELA_EXECUTABLE");
+    return chosen && *chosen ? chosen : CANDELA_EXECUTABLE;
+}
 
 // The executable's cache folder (XDG_CACHE_HOME, where its pipeline cache goes by default) is a
 // folder of this test process, removed at exit: the tests never write into the user's cache.
@@ -35,7 +43,7 @@ struct Result {
 inline Result run(const std::string& args) {
     const auto stdoutFile =
         std::filesystem::temp_directory_path() / ("candela_cli_stdout_" + std::to_string(::getpid()) + ".txt");
-    const std::string command = std::string(CANDELA_EXECUTABLE) + " " + args + " 2>&1 >" + stdoutFile.string();
+    const std::string command = candelaExecutable() + " " + args + " 2>&1 >" + stdoutFile.string();
     FILE* pipe = popen(command.c_str(), "r");
     Result result;
     std::array<char, 4096> buffer;

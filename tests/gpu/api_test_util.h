@@ -1,7 +1,7 @@
 #pragma once
 // Helpers of the public API's GPU tests (api_test.cpp, api_camera_test.cpp): a validated device
-// and its validation messages that count (with CANDELA_BEST_PRACTICES=1, the best-practices copy
-// of the suite, less those that do not apply: gpu_test.h).
+// and its validation messages that count (with CANDELA_BEST_PRACTICES=1, as ctest runs the suite
+// on lavapipe, less those that do not apply: gpu_test.h).
 
 #include "gpu_test.h"
 #include "api/access.h"

@@ -194,11 +194,12 @@ bool keepRenders() {
     return keep && std::string(keep) == "1";
 }
 
-// The case rendered at kWidth × kHeight (RGBA8) on `shadingPath`, or nullopt when a shared
-// asset it needs is absent; `explain` (if given) receives the frame's --explain lines.
-std::optional<std::vector<uint8_t>> render(vk::Context& context, const GoldenCase& c,
-                                           options::ShadingPath shadingPath = options::ShadingPath::Auto,
-                                           std::vector<std::string>* explain = nullptr) {
+// The case rendered at kWidth × kHeight (RGBA8) once per shading path of `paths`, by one Renderer
+// (the scene loaded and the environment's maps computed once), or nullopt when a shared asset it
+// needs is absent; `explain` (if given) receives the last frame's --explain lines.
+std::optional<std::vector<std::vector<uint8_t>>> renderPaths(vk::Context& context, const GoldenCase& c,
+                                                             const std::vector<options::ShadingPath>& paths,
+                                                             std::vector<std::string>* explain = nullptr) {
     scene::Scene scene;
     if (*c.model) {
         const std::filesystem::path path = ::candela::test::sharedAssets() / "models" / c.model;
@@ -229,14 +230,25 @@ std::optional<std::vector<uint8_t>> render(vk::Context& context, const GoldenCas
         settings.defaultLights = false;
         settings.ibl.rotationDegrees = c.environmentRotation;
     }
-    settings.shadingPath = shadingPath;
     // One sample, as lavapipe's default that the goldens were approved at: a GPU's default (4)
     // would move every silhouette pixel, and the GPU check compares the same frame on any device.
     settings.msaa = 1;
     Renderer renderer(context);
-    std::vector<uint8_t> rgba = renderer.capture(settings).rgba8;
+    std::vector<std::vector<uint8_t>> out;
+    for (const options::ShadingPath path : paths) {
+        settings.shadingPath = path;
+        out.push_back(renderer.capture(settings).rgba8);
+    }
     if (explain) *explain = renderer.explain();
-    return rgba;
+    return out;
+}
+
+// The case on `shadingPath` (see renderPaths).
+std::optional<std::vector<uint8_t>> render(vk::Context& context, const GoldenCase& c,
+                                           options::ShadingPath shadingPath = options::ShadingPath::Auto) {
+    auto images = renderPaths(context, c, {shadingPath});
+    if (!images) return std::nullopt;
+    return std::move(images->front());
 }
 
 TEST_P(GoldenTest, MatchesApprovedImage) {
@@ -289,9 +301,10 @@ TEST_P(GoldenTest, ShadingPathsAgree) {
     const GoldenCase& c = GetParam();
     if (!context().choices().visibilityUnsupported.empty()) GTEST_SKIP() << context().choices().visibilityUnsupported;
     std::vector<std::string> explain;
-    const auto forward = render(context(), c, options::ShadingPath::Forward);
-    const auto visibility = render(context(), c, options::ShadingPath::Visibility, &explain);
-    if (!forward || !visibility) GTEST_SKIP() << "shared asset missing for " << c.name;
+    const auto images = renderPaths(context(), c, {options::ShadingPath::Forward, options::ShadingPath::Visibility}, &explain);
+    if (!images) GTEST_SKIP() << "shared asset missing for " << c.name;
+    const std::vector<uint8_t>* forward = &(*images)[0];
+    const std::vector<uint8_t>* visibility = &(*images)[1];
     EXPECT_TRUE(std::any_of(explain.begin(), explain.end(),
                             [](const std::string& l) { return l.starts_with("shading path: visibility"); }))
         << c.name << ": the frame did not take the visibility path";

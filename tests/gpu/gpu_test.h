@@ -1,9 +1,9 @@
 #pragma once
 // Fixture for GPU tests: a vk::Context on the default device (lavapipe in CI) with the Khronos
 // validation layer and synchronization validation always on. Any validation message fails the test.
-// With CANDELA_BEST_PRACTICES=1 (the "best-practices/" copy of the suite in ctest) the layer's
-// best-practices checks are on too, and only the warnings listed in bestPracticesNotApplicable —
-// each with the reason it does not apply (docs/testing.md) — are let through.
+// With CANDELA_BEST_PRACTICES=1 (ctest's lavapipe run of the suite) the layer's best-practices
+// checks are on too, and only the warnings listed in bestPracticesNotApplicable — each with the
+// reason it does not apply (docs/testing.md) — are let through.
 
 #include "options/shading_path.h"
 #include "vk/context.h"

@@ -380,9 +380,13 @@ TEST_F(ViewerTest, EnvironmentPanelActions) {
     EXPECT_TRUE(skyDrawn());
     frames(1);
     EXPECT_FALSE(mViewer->renderer().lastGraph().findPass("ibl_cubemap").has_value());
+    // A pass that cannot be switched off (its box is greyed out) runs whatever the toggle says.
+    mViewer->setPassEnabled("ibl_prefilter", false);
     mViewer->recomputeIbl();  // the recompute button, same settings
     frames(1);
     EXPECT_TRUE(mViewer->renderer().lastGraph().findPass("ibl_cubemap").has_value());
+    EXPECT_TRUE(ran("ibl_prefilter"));
+    mViewer->setPassEnabled("ibl_prefilter", true);
     mViewer->settings().iblQuality.prefilterSamples = 16;  // a setting picked from the table
     frames(1);
     EXPECT_TRUE(mViewer->renderer().lastGraph().findPass("ibl_prefilter").has_value());

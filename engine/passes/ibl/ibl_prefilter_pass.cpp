@@ -65,6 +65,12 @@ TextureId IblPrefilterPass::add(RenderGraph& graph, const Inputs& in) const {
             // GGX keeps mip 0 (the cubemap pass's); Charlie writes every mip.
             d.specular = builder.write(in.specular, Usage::StorageWrite,
                                        mLobe == Lobe::Ggx ? WriteMode::Preserve : WriteMode::Discard);
+            // Switched off, the cull step would bypass it (its write preserves mip 0) and leave the
+            // rough mips, which only it writes, undefined.
+            if (mLobe == Lobe::Ggx)
+                builder.cannotBeDisabled("it writes the specular map's rough levels (mips 1 and up), which nothing else "
+                                         "writes; without it what rough surfaces reflect is undefined (a cheaper "
+                                         "prefilter: --ibl-prefilter-samples)");
         },
         [this, inverseScale = 1.0f / in.sourceScale](const Data& d, PassContext& ctx) {
             const uint32_t faceSize = ctx.desc(d.specular).width;
