@@ -7,7 +7,13 @@ chromedriver's W3C WebDriver protocol with urllib and json.
                              [--timeout SECONDS]
 
 Exits 0 when everything matches, 1 with one line per mismatch, 2 when the browser cannot be driven
-(chromedriver does not start, a timeout). Always stops chromedriver and the browser it started.
+(Chromium or chromedriver does not start, a timeout). Always stops chromedriver and the browser.
+
+The script starts Chromium itself, its remote debugging on 127.0.0.1, and attaches chromedriver to
+it (debuggerAddress): a browser chromedriver starts is reached through the name "localhost", which
+a minimal Debian root (debootstrap --variant=minbase, no /etc/hosts) does not resolve, and
+chromedriver then fails POST /session ("session not created", "unable to connect to renderer")
+while Chromium itself runs there.
 As a module: check_page(page, expectations) returns the list of mismatches (raises BrowserError).
 
 Expectations (a JSON object; every key optional; row names are data-name, column names are
@@ -77,21 +83,47 @@ class WebDriver:
         self.deadline = deadline
         self.scratch = tempfile.mkdtemp(prefix="candela-html-check-")
         self.log = os.path.join(self.scratch, "chromedriver.log")
+        self.browser_stderr = os.path.join(self.scratch, "chromium.log")
         self.port = free_port()
         self.process = subprocess.Popen([chromedriver, f"--port={self.port}", f"--log-path={self.log}"],
                                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
+        self.browser = None
         self.session = None
         try:
             self._wait_ready()
             profile = os.path.join(self.scratch, "profile")
             os.mkdir(profile)
-            options = {"binary": chromium, "args": CHROMIUM_ARGS + [f"--user-data-dir={profile}"]}
+            debugger = self._start_browser(chromium, profile)
+            options = {"debuggerAddress": debugger}
             caps = {"browserName": "chrome", "goog:chromeOptions": options, "goog:loggingPrefs": {"browser": "ALL"},
                     "timeouts": {"pageLoad": 30000, "script": 30000, "implicit": 0}}
             self.session = self.request("POST", "/session", {"capabilities": {"alwaysMatch": caps}})["sessionId"]
         except BaseException:
             self.close()
             raise
+
+    def _start_browser(self, chromium, profile):
+        """Starts Chromium with remote debugging on 127.0.0.1 (a port it picks and writes into
+        PROFILE/DevToolsActivePort); returns the address chromedriver attaches to."""
+        with open(self.browser_stderr, "wb") as err:
+            self.browser = subprocess.Popen(
+                [chromium] + CHROMIUM_ARGS + [f"--user-data-dir={profile}", "--remote-debugging-address=127.0.0.1",
+                                              "--remote-debugging-port=0", "about:blank"],
+                stdout=subprocess.DEVNULL, stderr=err, start_new_session=True)
+        active = os.path.join(profile, "DevToolsActivePort")
+        while True:
+            if self.browser.poll() is not None:
+                raise BrowserError(f"{chromium} exited with status {self.browser.returncode} before opening its "
+                                   f"debugging port{self.tail(self.browser_stderr, 'chromium')}")
+            try:
+                with open(active, encoding="utf-8") as f:
+                    port = f.readline().strip()
+                if port.isdigit():
+                    return f"127.0.0.1:{port}"
+            except OSError:
+                pass
+            self.check_deadline("waiting for chromium to open its debugging port")
+            time.sleep(0.05)
 
     def __enter__(self):
         return self
@@ -116,10 +148,14 @@ class WebDriver:
             raise Deadline(f"timed out {what}")
 
     def log_tail(self, lines=15):
+        return self.tail(self.log, "chromedriver", lines)
+
+    @staticmethod
+    def tail(path, what, lines=15):
         try:
-            with open(self.log, encoding="utf-8", errors="replace") as f:
+            with open(path, encoding="utf-8", errors="replace") as f:
                 tail = f.readlines()[-lines:]
-            return "\nchromedriver log (last lines):\n" + "".join(tail)
+            return f"\n{what} log (last lines):\n" + "".join(tail)
         except OSError:
             return ""
 
@@ -175,22 +211,29 @@ class WebDriver:
                 pass
             self.session = None
         if self.process.poll() is None:
-            for sig, wait in ((signal.SIGTERM, 5), (signal.SIGKILL, 5)):
-                try:
-                    os.killpg(self.process.pid, sig)
-                except ProcessLookupError:
-                    break
-                try:
-                    self.process.wait(timeout=wait)
-                    break
-                except subprocess.TimeoutExpired:
-                    continue
+            stop_group(self.process)
         else:
-            try:  # chromedriver is gone; the browser it started may not be
+            try:  # chromedriver is gone; what it started may not be
                 os.killpg(self.process.pid, signal.SIGKILL)
             except (ProcessLookupError, PermissionError):
                 pass
+        if self.browser is not None:
+            stop_group(self.browser)
         shutil.rmtree(self.scratch, ignore_errors=True)
+
+
+def stop_group(process):
+    """Stops `process` and its process group (SIGTERM, then SIGKILL), waiting for it."""
+    for sig, wait in ((signal.SIGTERM, 5), (signal.SIGKILL, 5)):
+        try:
+            os.killpg(process.pid, sig)
+        except ProcessLookupError:
+            return
+        try:
+            process.wait(timeout=wait)
+            return
+        except subprocess.TimeoutExpired:
+            continue
 
 
 def free_port():
