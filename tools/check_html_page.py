@@ -76,8 +76,8 @@ class Deadline(Exception):
 
 
 class WebDriver:
-    """A chromedriver process and one session in it. Use as a context manager: leaving it ends the
-    session and stops chromedriver's whole process group (the browser included)."""
+    """A chromedriver process, the Chromium it attaches to and one session. Use as a context manager:
+    leaving it ends the session and stops both process groups (chromedriver's and the browser's)."""
 
     def __init__(self, chromedriver, chromium, deadline):
         self.deadline = deadline

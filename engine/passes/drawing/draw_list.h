@@ -16,11 +16,11 @@
 
 #include <array>
 #include <compare>
-#include <map>
-#include <tuple>
 #include <cstdint>
+#include <map>
 #include <span>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace candela::passes {

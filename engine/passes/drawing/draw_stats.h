@@ -5,8 +5,9 @@
 
 namespace candela::passes {
 
-// What the last frame drew: draws and triangles of the scene (lines and points submitted besides) (visible ones, each instance
-// counted) against those submitted, and the state changes recorded to draw them.
+// What the last frame drew: draws and triangles of the scene (visible ones, each instance counted)
+// against those submitted, the lines and points submitted, and the state changes recorded to draw
+// them.
 struct DrawStats {
     uint32_t sceneDraws = 0, submittedDraws = 0, culledDraws = 0;
     uint32_t coarserDraws = 0;  // submitted at a level of detail beyond the full one
