@@ -11,6 +11,8 @@
 #include "stopwatch.h"
 
 #include "graph/graph_export.h"
+#include "render/camera_framing.h"
+#include "scene/camera.h"
 #include "vk/pipeline_cache_file.h"
 #include "vk/timestamps.h"
 
@@ -322,6 +324,14 @@ int runBench(const BenchOptions& options) {
     pose::ScenePose pose = loadPose(options, scene);
     warnAnimationConflicts(options, scene);
     settings.pose = &pose;
+    {
+        // Framed once over the frames' poses, as render frames a sequence: the camera holds still.
+        std::vector<double> times;
+        for (uint32_t i = 0; i < std::max(options.frames, 1u); ++i) times.push_back(options.time + i / 60.0);
+        const glm::vec2 direction(settings.camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f)));
+        settings.camera = resolveFraming(scene, settings.camera, float(settings.width) / float(settings.height), &pose, times,
+                                         std::span(&direction, 1));
+    }
     log::info("camera: " + Renderer::cameraFlags(scene, settings.camera, float(settings.width) / float(settings.height), &pose));
     const auto advance = [&](uint32_t frame) {
         const auto start = Clock::now();

@@ -56,11 +56,11 @@ std::vector<FlagSpec<SceneOptions>> sceneFlags() {
          parsed(&O::target, parseTriple)},
         {"--fov", "DEGREES",
          "vertical field of view of the orbit camera; framing keeps its distance, so a narrower field "
-         "shows the model bigger",
-         "45",
+         "shows the model bigger [framing fits it to the silhouette with a 10% margin; 45 with a distance]",
+         "",
          [](O& o, Str flag, Str v) {
              o.fovDegrees = parseNumber(flag, v);
-             if (o.fovDegrees <= 0.0f || o.fovDegrees >= 180.0f)
+             if (*o.fovDegrees <= 0.0f || *o.fovDegrees >= 180.0f)
                  throw UserError(flag + ": expected degrees between 0 and 180, got '" + v + "'");
          }},
     };

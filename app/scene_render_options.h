@@ -31,7 +31,7 @@ struct SceneOptions {
     std::optional<uint32_t> camera;      // --camera INDEX (glTF camera)
     std::optional<std::array<float, 3>> cameraOrbit;  // --camera-orbit THETA,PHI,RADIUS
     std::optional<std::array<float, 3>> target;       // --target X,Y,Z
-    float fovDegrees = 0.0f;                          // --fov DEGREES (vertical)
+    std::optional<float> fovDegrees;                  // --fov DEGREES (vertical; none: framing fits it)
     bool operator==(const SceneOptions&) const = default;
 };
 

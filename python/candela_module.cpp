@@ -133,7 +133,7 @@ std::string describe(const candela::Camera& camera) {
                std::to_string((*camera.orbit)[2]);
     else out += "framed";
     if (camera.intrinsics) out += ", K";
-    else out += ", fov_y=" + std::to_string(camera.fovYDegrees);
+    else if (camera.fovYDegrees) out += ", fov_y=" + std::to_string(*camera.fovYDegrees);
     return out + ")";
 }
 

@@ -29,7 +29,7 @@ stage "release build"
 cmake --preset release -DCANDELA_UNIT_TESTS=OFF >/dev/null
 cmake --build --preset release -j"$(nproc)"
 stage "release tests"
-ctest --preset release -j"$(nproc)" --timeout 600
+ctest --preset release -j"$(nproc)" --timeout 600 --output-on-failure
 stage "sanitized build"
 cmake --preset asan >/dev/null
 # The CLI tests' own binary is the release one (below): what they test is the executable they run.

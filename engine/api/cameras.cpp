@@ -4,6 +4,7 @@
 
 #include "api/access.h"
 #include "api/cameras.h"
+#include "render/camera_framing.h"
 #include "render/renderer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -79,29 +80,27 @@ CameraInfo cameraInfo(const scene::ViewSetup& view, uint32_t width, uint32_t hei
     return info;
 }
 
-std::vector<glm::vec3> sequenceOrbits(const scene::Scene& scene, const CameraSettings& camera, float aspect,
-                                      const pose::ScenePose& pose, const SequenceOptions& sequence) {
+SequenceCamera sequenceCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                              const pose::ScenePose& pose, const RenderOptions& options, const SequenceOptions& sequence) {
+    SequenceCamera out{.camera = camera};
     const bool turntable = sequence.views.empty() && sequence.frames > 1 && sequence.turntableDegrees != 0.0f;
-    if (!turntable && sequence.views.empty()) return {};
-    if (camera.gltfCamera || camera.cameraToWorld) {
-        if (turntable) return {};  // a turntable of a fixed camera: it does not turn (as ever)
-        throw UserError("views of a scene need the orbit camera, not a glTF or placed camera");
+    if (camera.gltfCamera || camera.cameraToWorld || camera.orbitCamera) {
+        if (!sequence.views.empty()) throw UserError("views of a scene need the orbit camera, not a glTF or placed camera");
+        return out;  // (a turntable of a fixed camera does not turn)
     }
     const glm::vec3 base = camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f));
-    std::vector<glm::vec3> orbits;
-    for (uint32_t i = 0; i < frameCount(sequence); ++i)
-        orbits.push_back(turntable ? base + glm::vec3(sequence.turntableDegrees * float(i) / float(sequence.frames), 0.0f, 0.0f)
-                                   : glm::vec3(sequence.views[i][0], sequence.views[i][1], base.z));
-    if (base.z <= 0.0f) {
-        CameraSettings framed = camera;
-        float radius = 0.0f;
-        for (const glm::vec3& orbit : orbits) {
-            framed.orbit = glm::vec3(orbit.x, orbit.y, 0.0f);
-            radius = std::max(radius, Renderer::orbitCamera(scene, framed, aspect, &pose).radius);
-        }
-        for (glm::vec3& orbit : orbits) orbit.z = radius;
-    }
-    return orbits;
+    const uint32_t frames = frameCount(sequence);
+    std::vector<glm::vec2> directions;
+    for (uint32_t i = 0; i < ((turntable || !sequence.views.empty()) ? frames : 1u); ++i)
+        directions.push_back(turntable ? glm::vec2(base.x + sequence.turntableDegrees * float(i) / float(sequence.frames), base.y)
+                             : sequence.views.empty() ? glm::vec2(base)
+                                                      : glm::vec2(sequence.views[i][0], sequence.views[i][1]));
+    std::vector<double> times;
+    for (uint32_t i = 0; i < (sequence.views.empty() ? frames : 1u); ++i) times.push_back(frameTime(options, sequence, i));
+    out.camera = resolveFraming(scene, camera, aspect, &pose, times, directions);
+    if (directions.size() > 1 || turntable)
+        for (const glm::vec2& direction : directions) out.orbits.push_back(glm::vec3(direction, out.camera.orbit->z));
+    return out;
 }
 
 void checkSequence(const SequenceOptions& sequence) {
@@ -136,8 +135,11 @@ RenderOptions sequenceFrame(const Scene& scene, const RenderOptions& options, co
         const float aspect = float(options.width) / float(options.height);
         out.time = frameTime(options, sequence, index);
         out.environmentRotationDegrees = frameEnvironmentRotation(options, sequence, index);
-        const std::vector<glm::vec3> orbits = sequenceOrbits(held, cameraSettings(options), aspect, pose, sequence);
-        if (!orbits.empty()) out.camera.orbit = std::array<float, 3>{orbits[index].x, orbits[index].y, orbits[index].z};
+        const SequenceCamera framed = sequenceCamera(held, cameraSettings(options), aspect, pose, options, sequence);
+        const glm::vec3 orbit = framed.orbits.empty() ? framed.camera.orbit.value_or(glm::vec3(0.0f)) : framed.orbits[index];
+        if (framed.camera.orbit) out.camera.orbit = std::array<float, 3>{orbit.x, orbit.y, orbit.z};
+        if (framed.camera.target) out.camera.target = std::array<float, 3>{framed.camera.target->x, framed.camera.target->y, framed.camera.target->z};
+        out.camera.fovYDegrees = framed.camera.fovYDegrees;
     });
     return out;
 }

@@ -27,12 +27,22 @@ CameraInfo cameraInfo(const scene::ViewSetup& view, uint32_t width, uint32_t hei
 // direction that is not finite.
 void checkSequence(const SequenceOptions& sequence);
 
-// The orbit camera's (θ°, φ°, r) for each frame of a turntable or of views, r fixed at the largest
-// distance any frame's framing needs (framing from each direction would move the camera in and
-// out) unless the orbit gives one; empty when the sequence is neither, or a turntable of a glTF or
-// placed camera (which does not turn). UserError for views of a glTF or placed camera.
-std::vector<glm::vec3> sequenceOrbits(const scene::Scene& scene, const CameraSettings& camera, float aspect,
-                                      const pose::ScenePose& pose, const SequenceOptions& sequence);
+// The camera of every frame of `sequence` (a still is a sequence of one frame). When the orbit
+// camera frames the scene (no glTF or placed camera, and no distance and target given), framing is
+// resolved once, over every frame's direction and every frame's pose (scene/framing.h over
+// pose/shown_points.h at frameTime of each frame): the camera holds still over the sequence, at
+// one distance, and every frame keeps the margin. `camera` comes back with the target, the
+// distance (orbit's r) and the field of view filled in where it left them, and `framing` saying
+// what was framed; as it was for a glTF or placed camera. UserError for views of a glTF or placed
+// camera.
+struct SequenceCamera {
+    CameraSettings camera;          // frame 0's
+    // Each frame's (θ°, φ°, r) for a turntable or views (it replaces camera.orbit); empty otherwise,
+    // and for a turntable of a glTF or placed camera (which does not turn).
+    std::vector<glm::vec3> orbits;
+};
+SequenceCamera sequenceCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,
+                              const pose::ScenePose& pose, const RenderOptions& options, const SequenceOptions& sequence);
 
 // The time of frame i (views are all of one pose), and its environment's rotation (jittered with
 // SequenceOptions::lightingSeed).

@@ -206,12 +206,14 @@ void Access::renderFrames(Device& device, const Scene& scene, const RenderOption
         settings.pose = &pose;
 
         const float aspect = float(settings.width) / float(settings.height);
-        const std::vector<glm::vec3> orbits = sequenceOrbits(held.scene, settings.camera, aspect, pose, sequence);
+        // Framing resolved once for the whole sequence: the camera holds still over it.
+        const SequenceCamera framed = sequenceCamera(held.scene, settings.camera, aspect, pose, options, sequence);
+        settings.camera = framed.camera;
         const uint32_t frames = frameCount(sequence);
         // Frame i's pose, camera and lighting, and the front end's settings for it.
         const auto setUpFrame = [&](uint32_t i) {
             if (frames > 1 && sequence.views.empty()) pose.evaluate(frameTime(options, sequence, i));
-            if (!orbits.empty()) settings.camera.orbit = orbits[i];
+            if (!framed.orbits.empty()) settings.camera.orbit = framed.orbits[i];
             settings.ibl.rotationDegrees = frameEnvironmentRotation(options, sequence, i);
             if (hook) hook(settings);
         };

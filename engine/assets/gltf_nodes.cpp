@@ -5,6 +5,7 @@
 #include "assets/gltf_materials.h"
 #include "assets/gltf_mesh.h"
 #include "pose/node_placement.h"
+#include "pose/shown_points.h"
 #include "pose/skinning.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -148,7 +149,7 @@ public:
 
     // After the walk: the skins the draws use (joints must be in the scene), skinned draws placed
     // by their joints' rest pose, one warning for renormalized skin weights, the scene bounds (of
-    // the draws not hidden; of all, with a warning, when every one is).
+    // the vertices of the draws not hidden; of all, with a warning, when every one is).
     void finish() {
         std::vector<int32_t> sceneNode(mModel.nodes.size(), -1);
         for (size_t i = 0; i < mScene.nodes.size(); ++i) sceneNode[size_t(mScene.nodes[i].source)] = int32_t(i);
@@ -173,10 +174,12 @@ public:
                     mCtx.fail(label("skin", int(it->first), skin.name) + ": the skinned mesh's rest pose is beyond single precision");
                 draw.hidden = !mScene.nodes[size_t(draw.node)].shown;
             }
-            if (!draw.hidden) mScene.bounds.extend(draw.bounds);
         }
+        // The vertices as placed, skinned and morphed, not the draws' boxes: the same bounds for
+        // every structure of the file that draws the same image.
+        mScene.bounds = pose::shownBounds(mScene);
         if (!mScene.bounds.valid() && !mScene.draws.empty()) {
-            for (const scene::Draw& draw : mScene.draws) mScene.bounds.extend(draw.bounds);
+            mScene.bounds = pose::shownBounds(mScene, /*includeHidden=*/true);
             if (std::any_of(mScene.draws.begin(), mScene.draws.end(), [&](const scene::Draw& d) { return !mScene.nodes[size_t(d.node)].shown; }))
                 mCtx.warn("every node is hidden (KHR_node_visibility): framing uses the hidden geometry");
         }

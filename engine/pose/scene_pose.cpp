@@ -129,9 +129,6 @@ ScenePose::ScenePose(const scene::Scene& scene, std::vector<uint32_t> playing)
     }
     mAnimatedLights = onMovedNodes(mLights, moved);
     mAnimatedCameras = onMovedNodes(mCameras, moved);
-    mAnimationBounds = movesNodes() ? boundsOverAnimation(1024) : scene.bounds;
-    // Nothing visible at any sampled time: frame what the loader framed.
-    if (!mAnimationBounds.valid()) mAnimationBounds = scene.bounds;
     evaluate(0.0);
 }
 
@@ -220,27 +217,6 @@ scene::Aabb ScenePose::bounds() const {
     scene::Aabb out;
     for (const scene::Draw& d : mDraws)
         if (!d.hidden) out.extend(d.bounds);
-    return out;
-}
-
-scene::Aabb ScenePose::boundsOverAnimation(size_t maxSamples) {
-    std::vector<double> times{0.0};
-    for (uint32_t a : mPlaying)
-        for (const animation::AnimationChannel& channel : mScene->animations[a].channels)
-            for (float t : mScene->animations[a].samplers[channel.sampler].times) times.push_back(double(t));
-    // (Property channels move nothing: their keys do not change the bounds.)
-    std::sort(times.begin(), times.end());
-    times.erase(std::unique(times.begin(), times.end()), times.end());
-    if (times.size() > maxSamples && maxSamples >= 2) {
-        const double last = times.back();
-        times.clear();
-        for (size_t i = 0; i < maxSamples; ++i) times.push_back(last * double(i) / double(maxSamples - 1));
-    }
-    scene::Aabb out;
-    for (double t : times) {
-        evaluate(t, /*loop=*/false);
-        out.extend(bounds());
-    }
     return out;
 }
 

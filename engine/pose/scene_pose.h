@@ -46,6 +46,7 @@ public:
     // The longest duration among the playing animations, seconds (0 without any).
     double duration() const;
 
+    const scene::Scene& scene() const { return *mScene; }
     const std::vector<animation::SceneNode>& nodes() const { return mNodes; }
     const std::vector<scene::Draw>& draws() const { return mDraws; }
     const std::vector<scene::Light>& lights() const { return mLights; }
@@ -70,17 +71,11 @@ public:
     // a non-zero morph weight (a morphed mesh at all-zero weights is its rest geometry).
     std::vector<uint32_t> deformedDraws() const;
 
-    // The bounds of the visible draws in this pose.
+    // The bounds of the visible draws in this pose (the union of their boxes: what culling uses;
+    // framing fits the vertices themselves, pose/shown_points.h).
     scene::Aabb bounds() const;
-    // Bounds containing the whole animation (what framing uses): the union of the poses at time 0
-    // and at every key time of the playing animations — at most 1024, evenly spread over the
-    // duration beyond that. Computed once, with the pose. Node animation reaches its extremes at
-    // keys for STEP and LINEAR; cubic overshoot between keys is not covered. The scene's bounds
-    // when no node moves, or when no draw is visible at any of those times.
-    const scene::Aabb& animationBounds() const { return mAnimationBounds; }
 
 private:
-    scene::Aabb boundsOverAnimation(size_t maxSamples);
     // Places draw `d` from the current nodes (and joints, when skinned); hidden when its node is
     // not shown.
     void place(uint32_t d);
@@ -105,7 +100,6 @@ private:
     std::vector<std::vector<glm::dmat4>> mJoints;     // per skin
     std::vector<uint32_t> mMovedSkins;                // skins with a joint some playing animation moves
     std::vector<std::vector<scene::Aabb>> mJointBounds;  // per draw (empty unless skinned)
-    scene::Aabb mAnimationBounds;
     double mTime = 0.0;
     bool mLoop = true;
 };

@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 #include "core/log.h"
+#include "render/camera_framing.h"
 #include "render/explain_plan.h"
 #include "shared/tonemap.h"
 #include "vk/context.h"
@@ -186,6 +187,7 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     const pose::ScenePose* pose = settings.pose ? settings.pose : mScene.restPose();
     const scene::ViewSetup view = resolveView(scene, settings.camera, aspect, pose);
     frame.explanation.push_back("camera: " + cameraFlags(scene, settings.camera, aspect, pose));
+    if (!settings.camera.framing.empty()) frame.explanation.push_back("framing: " + settings.camera.framing);
 
     // The facts the plan decides from: the settings, the device, the pose's deformed draws and
     // the draw list's ranges.
@@ -363,15 +365,15 @@ void FrameBuilder::addExplanation(Frame& frame, const RenderSettings& settings, 
 scene::OrbitCamera FrameBuilder::orbitCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,
                                              const pose::ScenePose* pose) {
     if (camera.orbitCamera) return *camera.orbitCamera;
-    if (pose && !pose->animated()) pose = nullptr;
-    const glm::vec3 orbit = camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f));
-    scene::OrbitCamera out = scene::OrbitCamera::framing(pose ? pose->animationBounds() : scene.bounds, aspect, orbit.x,
-                                                         orbit.y, camera.fovYDegrees);
-    if (orbit.z > 0.0f) {
-        out.radius = orbit.z;
-        out.znear = orbit.z * 1e-3f;
-    }
-    if (camera.target) out.target = *camera.target;
+    const glm::vec2 direction(camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f)));
+    const CameraSettings resolved = resolveFraming(scene, camera, aspect, pose, {}, std::span(&direction, 1));
+    scene::OrbitCamera out;
+    out.target = *resolved.target;
+    out.thetaDegrees = direction.x;
+    out.phiDegrees = direction.y;
+    out.radius = resolved.orbit->z;
+    out.fovYDegrees = *resolved.fovYDegrees;
+    out.znear = out.radius * 1e-3f;
     return out;
 }
 
@@ -401,8 +403,9 @@ scene::ViewSetup FrameBuilder::resolveView(const scene::Scene& scene, const Came
         return scene::cameraView((pose ? pose->cameras() : scene.cameras)[*camera.gltfCamera], aspect);
     }
     scene::ViewSetup view = camera.cameraToWorld
-                                ? scene::placedView(*camera.cameraToWorld, glm::radians(camera.fovYDegrees), aspect,
-                                                    pose ? pose->animationBounds() : scene.bounds)
+                                ? scene::placedView(*camera.cameraToWorld,
+                                                    glm::radians(camera.fovYDegrees.value_or(scene::kFramingFovYDegrees)),
+                                                    aspect, pose ? pose->bounds() : scene.bounds)
                                 : orbitCamera(scene, camera, aspect, pose).view(aspect);
     if (camera.intrinsics) {
         view.projection = scene::perspectiveReverseZ(*camera.intrinsics, view.znear);

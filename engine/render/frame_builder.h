@@ -65,13 +65,14 @@ public:
     void finishPipelineBuilds() { mForward.finishBuilds(); }
 
     // The view `camera` selects for `scene` at `aspect` (width / height). With an animated `pose`,
-    // glTF cameras are where the pose puts them and framing contains the whole animation.
+    // glTF cameras are where the pose puts them and framing fits the pose as it stands.
     static scene::ViewSetup resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect,
                                         const pose::ScenePose* pose = nullptr);
     // The orbit camera `camera` gives when it names no glTF camera: the interactive one as it is,
-    // else scene::OrbitCamera::framing of the scene's bounds (with an animated `pose`, the bounds
-    // of the whole animation) from --camera-orbit's direction or scene::defaultOrbitAngles, then
-    // the distance (r > 0) and --target when given, with the --fov.
+    // else scene::frame of what the scene shows (pose/shown_points.h: with an animated `pose`, the
+    // pose as it stands) from --camera-orbit's direction or scene::defaultOrbitAngles, with the
+    // distance (r > 0), --target and --fov where given (45° with a distance and no --fov). A front
+    // end that draws a sequence resolves framing once for all its frames (api/cameras.h).
     static scene::OrbitCamera orbitCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,
                                           const pose::ScenePose* pose = nullptr);
     // The command-line flags that reproduce resolveView's view: "--camera N" for a glTF camera,

@@ -30,7 +30,8 @@ struct CameraSettings {
     std::optional<uint32_t> gltfCamera;     // --camera INDEX
     std::optional<glm::vec3> orbit;         // --camera-orbit θ°,φ°,r (r ≤ 0: frame the bounds)
     std::optional<glm::vec3> target;        // --target X,Y,Z
-    float fovYDegrees = 45.0f;              // --fov
+    // --fov; none: framing fits it (scene/framing.h), else 45° (a given distance, a placed camera).
+    std::optional<float> fovYDegrees;
     // A camera placed by its camera-to-world matrix (the API's look-at and placed cameras):
     // overrides orbit and target (scene::placedView).
     std::optional<glm::mat4> cameraToWorld;
@@ -42,6 +43,9 @@ struct CameraSettings {
     // Moves the image centre right by this many NDC units (off-axis projection; negative: left):
     // the viewer centres the scene between its panel columns.
     float lensShiftX = 0.0f;
+    // How framing chose the orbit camera above, when a front end resolved it once for a whole
+    // sequence (api/cameras.h frameSequence): printed by --explain; empty otherwise.
+    std::string framing;
 };
 
 struct RenderSettings {

@@ -139,7 +139,7 @@ public:
     FrameTiming renderCalibration(uint32_t width, uint32_t height);
 
     // The view the settings select for `scene` at `aspect` (width / height). With an animated
-    // `pose`, glTF cameras are where the pose puts them and framing contains the whole animation.
+    // `pose`, glTF cameras are where the pose puts them and framing fits the pose as it stands.
     static scene::ViewSetup resolveView(const scene::Scene& scene, const CameraSettings& camera, float aspect,
                                         const pose::ScenePose* pose = nullptr) {
         return FrameBuilder::resolveView(scene, camera, aspect, pose);

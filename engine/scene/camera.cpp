@@ -78,39 +78,6 @@ ViewSetup OrbitCamera::view(float aspect) const {
     return out;
 }
 
-OrbitCamera OrbitCamera::framing(const Aabb& bounds, float aspect, float thetaDegrees, float phiDegrees,
-                                 float fovYDegrees) {
-    // The box's projection spans at most 1 / kMargin of the image's width or height (a margin of
-    // about 4.5% on each side).
-    constexpr float kMargin = 1.1f;
-    OrbitCamera camera;
-    camera.thetaDegrees = thetaDegrees;
-    camera.phiDegrees = phiDegrees;
-    camera.fovYDegrees = fovYDegrees;
-    if (!bounds.valid()) return camera;
-    camera.target = 0.5f * (bounds.min + bounds.max);
-    // The view's axes (distance 1: the rotation does not depend on it).
-    camera.radius = 1.0f;
-    const glm::mat3 rotation(camera.view(aspect).view);
-    const float tanY = std::tan(glm::radians(kFramingFovYDegrees) * 0.5f) / kMargin;
-    const float tanX = tanY * std::max(aspect, 1e-6f);
-    // A corner at view-space offset q from the target is at depth d − q.z from an eye at distance
-    // d; it is inside the field of view when |q.x| ≤ (d − q.z)·tanX and |q.y| ≤ (d − q.z)·tanY.
-    const float diagonal = glm::length(bounds.max - bounds.min);
-    float distance = 0.0f, nearest = -1e30f;
-    for (int i = 0; i < 8; ++i) {
-        const glm::vec3 corner((i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
-                               (i & 4) ? bounds.max.z : bounds.min.z);
-        const glm::vec3 q = rotation * (corner - camera.target);
-        distance = std::max(distance, q.z + std::max(std::abs(q.x) / tanX, std::abs(q.y) / tanY));
-        nearest = std::max(nearest, q.z);
-    }
-    // Never inside the box (a line seen end-on fits at any distance beyond its near end).
-    camera.radius = std::max({distance, nearest + 0.01f * diagonal, 1e-6f});
-    camera.znear = camera.radius * 1e-3f;
-    return camera;
-}
-
 glm::vec2 defaultOrbitAngles(const Scene& scene) {
     if (scene.framingAngles) return *scene.framingAngles;
     const glm::vec3 extent = scene.bounds.valid() ? scene.bounds.max - scene.bounds.min : glm::vec3(0.0f);

@@ -15,8 +15,8 @@ namespace candela::scene {
 // as model-viewer's default camera-orbit "0deg 75deg"; a flat model lying in the ground plane is
 // then seen, not edge-on (docs/scenes.md, "Framing").
 constexpr float kDefaultOrbitPolarDegrees = 75.0f;
-// The vertical field of view framing fits the bounds in. --fov changes the field of view at the
-// distance framing chose (a narrower one shows the model bigger); it does not change the distance.
+// The cone framing fits the bounding sphere in (scene/framing.h), and the field of view of an orbit
+// camera given a distance without one.
 constexpr float kFramingFovYDegrees = 45.0f;
 
 struct ViewSetup {
@@ -58,14 +58,6 @@ struct OrbitCamera {
     // eye = target + radius · (sin φ sin θ, cos φ, sin φ cos θ)
     glm::vec3 eye() const;
     ViewSetup view(float aspect) const;
-
-    // Looks at the centre of `bounds` from direction (θ, φ), at the nearest distance where the
-    // eight corners of the box fall inside both fields of view of a kFramingFovYDegrees camera at
-    // `aspect` (width / height), with a margin: a wide model fills the width of a wide image, a tall
-    // one the height. The camera returned has the field of view `fovYDegrees`, which does not
-    // change the distance. Invalid bounds: the default camera, looking at the origin.
-    static OrbitCamera framing(const Aabb& bounds, float aspect, float thetaDegrees = 0.0f,
-                               float phiDegrees = kDefaultOrbitPolarDegrees, float fovYDegrees = kFramingFovYDegrees);
 };
 
 // The direction (θ°, φ°) the orbit camera frames `scene` from when the command line gives none:

@@ -8,6 +8,8 @@
 #include "graph/graph_export.h"
 #include "pose/animation_conflicts.h"
 #include "pose/picking.h"
+#include "pose/shown_points.h"
+#include "render/camera_framing.h"
 #include "scene/material_variants.h"
 #include "shader/shader_library.h"
 #include "ui/imgui_pass.h"
@@ -86,7 +88,7 @@ Viewer::Viewer(const ViewerDesc& desc, ViewerContent content, vk::Context& conte
     const float aspect = visibleAspect();
     if (!mSettings.camera.orbitCamera) {
         // Start from the view the command line chose (framing the scene by default), as render does.
-        mCamera = Renderer::orbitCamera(mScene, mSettings.camera, aspect, mPose.get());
+        mCamera = Renderer::orbitCamera(mScene, framedWhilePlaying(mSettings.camera), aspect, mPose.get());
         if (mSettings.camera.gltfCamera && *mSettings.camera.gltfCamera < mScene.cameras.size()) {
             // Orbit about the point the glTF camera looks at, at the depth of the scene's centre.
             const glm::mat4& world = mPose->cameras()[*mSettings.camera.gltfCamera].world;
@@ -154,7 +156,8 @@ bool Viewer::openFile(const std::filesystem::path& path, std::optional<uint32_t>
             mPose = std::make_unique<pose::ScenePose>(mScene, pose::selectAnimations(mScene, {}));
             mAnimationTime = 0.0;
             mCamera = mInitialCamera =
-                Renderer::orbitCamera(mScene, {.fovYDegrees = mCamera.fovYDegrees}, visibleAspect(), mPose.get());
+                Renderer::orbitCamera(mScene, framedWhilePlaying({.fovYDegrees = mSettings.camera.fovYDegrees}), visibleAspect(),
+                                      mPose.get());
             mSettings.camera.gltfCamera.reset();
             setStatus("opened " + path.string());
             return true;
@@ -190,13 +193,19 @@ float Viewer::visibleAspect() const {
     return layoutPanels(float(extent.width), float(extent.height), mFontSize).sceneAspect(float(extent.height));
 }
 
+CameraSettings Viewer::framedWhilePlaying(const CameraSettings& camera) const {
+    const glm::vec2 direction(camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(mScene), 0.0f)));
+    // (At most 256 poses: framing evaluates each three times, skinning every vertex.)
+    return resolveFraming(mScene, camera, visibleAspect(), mPose.get(), pose::animationTimes(*mPose, 256), std::span(&direction, 1),
+                          /*loop=*/false);
+}
+
 void Viewer::frameScene() {
-    const float aspect = visibleAspect();
-    const scene::OrbitCamera framed =
-        scene::OrbitCamera::framing(mPose->animationBounds(), aspect, mCamera.thetaDegrees, mCamera.phiDegrees, mCamera.fovYDegrees);
-    mCamera.target = framed.target;
-    mCamera.radius = framed.radius;
-    mCamera.znear = framed.znear;
+    const CameraSettings framed = framedWhilePlaying(
+        {.orbit = glm::vec3(mCamera.thetaDegrees, mCamera.phiDegrees, 0.0f), .fovYDegrees = mCamera.fovYDegrees});
+    mCamera.target = *framed.target;
+    mCamera.radius = framed.orbit->z;
+    mCamera.znear = mCamera.radius * 1e-3f;
 }
 
 void Viewer::resetCamera() { mCamera = mInitialCamera; }

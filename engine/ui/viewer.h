@@ -92,7 +92,7 @@ public:
     bool openFile(const std::filesystem::path& path, std::optional<uint32_t> sceneIndex = std::nullopt);
     // Saves the next rendered frame (UI included) as PNG.
     void requestScreenshot(const std::filesystem::path& path);
-    void frameScene();   // F: frame the scene's bounds from the current direction
+    void frameScene();   // F: frame the scene from the current direction, at the current field of view
     void resetCamera();  // R: the initial view
     void setVsync(bool vsync);
     bool vsync() const;
@@ -177,6 +177,10 @@ private:
     void setStatus(std::string line, bool error = false);
     // Width / height of the part of the window between the panel columns (the whole window without UI).
     float visibleAspect() const;
+    // `camera` with framing resolved over the whole of the playing animations (the viewer plays
+    // them: render/camera_framing.h at pose::animationTimes, clamped), from its orbit's direction or
+    // the scene's default one.
+    CameraSettings framedWhilePlaying(const CameraSettings& camera) const;
     // The settings of the next frame: the scene, environment and camera of the viewer.
     RenderSettings frameSettings(VkExtent2D extent) const;
 

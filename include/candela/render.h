@@ -15,12 +15,15 @@
 namespace candela {
 
 // The camera: a glTF camera of the scene; a camera placed by its camera-to-world matrix; or the
-// orbit camera, which frames the scene's bounds unless a distance is given.
+// orbit camera, which frames what the scene shows unless a distance is given (docs/scenes.md,
+// "Framing": the target, the distance and the field of view it chooses).
 struct Camera {
     std::optional<uint32_t> gltfCamera;             // the scene's camera of this index
     std::optional<std::array<float, 3>> orbit;      // azimuth°, polar angle° from +Y, distance (≤ 0: frame the bounds)
     std::optional<std::array<float, 3>> target;     // the point looked at [the bounds' centre]
-    float fovYDegrees = 45.0f;                      // vertical field of view of the orbit or placed camera
+    // Vertical field of view of the orbit or placed camera; none: framing's for the orbit camera that
+    // frames the scene, else 45°.
+    std::optional<float> fovYDegrees;
     // Camera to world, column-major, in glTF's axes (the camera looks down its −Z, +Y up): overrides
     // orbit and target. lookAt() makes one. Its near plane is 1/1000 of its distance to the scene's centre.
     std::optional<std::array<float, 16>> cameraToWorld;

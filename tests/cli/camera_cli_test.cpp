@@ -32,21 +32,22 @@ std::string cameraFlags(const std::string& text) {
     return text.substr(start, text.find('\n', start) - start);
 }
 
-// Renders `scene` with `args`, then with the camera --explain printed; both images must be the same.
-void expectPrintedCameraReproduces(const fs::path& scene, const std::string& args) {
+// Renders `scene` with `args` and `kept`, then with the camera --explain printed and `kept`; both
+// images must be the same.
+void expectPrintedCameraReproduces(const fs::path& scene, const std::string& args, const std::string& kept = "") {
     TempDir dir("candela_camera_cli");
     const fs::path first = dir / "auto.png", second = dir / "printed.png";
-    const Result framed = run("render --scene " + scene.string() + args + " --explain --out " + first.string() + kSmall);
+    const Result framed = run("render --scene " + scene.string() + args + kept + " --explain --out " + first.string() + kSmall);
     ASSERT_EQ(framed.exitCode, 0) << framed.stderrText;
     const std::string flags = cameraFlags(framed.stdoutText);
     ASSERT_FALSE(flags.empty()) << framed.stdoutText;
     EXPECT_NE(flags.find("--camera-orbit"), std::string::npos) << flags;
     // --verbose prints the same line (on stderr, with the other information).
-    const Result verbose = run("render --scene " + scene.string() + args + " --verbose --out " + (dir / "v.png").string() +
+    const Result verbose = run("render --scene " + scene.string() + args + kept + " --verbose --out " + (dir / "v.png").string() +
                                " --width 96 --height 64 --validate");
     ASSERT_EQ(verbose.exitCode, 0) << verbose.stderrText;
     EXPECT_EQ(cameraFlags(verbose.stderrText), flags) << verbose.stderrText;
-    const Result again = run("render --scene " + scene.string() + " " + flags + " --out " + second.string() + kSmall);
+    const Result again = run("render --scene " + scene.string() + " " + flags + kept + " --out " + second.string() + kSmall);
     ASSERT_EQ(again.exitCode, 0) << again.stderrText;
     const std::string a = readFile(first), b = readFile(second);
     ASSERT_FALSE(a.empty());
@@ -63,6 +64,38 @@ TEST(CameraCli, ThePrintedCameraReproducesAChosenDirectionAndFieldOfView) {
     const fs::path models = assets::test::sharedModels();
     if (models.empty()) GTEST_SKIP() << "../shared/assets not present";
     expectPrintedCameraReproduces(models / "Duck/glTF-Binary/Duck.glb", " --camera-orbit -35,62,0 --fov 30");
+}
+
+TEST(CameraCli, ThePrintedCameraReproducesAnAnimatedStill) {
+    const fs::path models = assets::test::sharedModels();
+    if (models.empty()) GTEST_SKIP() << "../shared/assets not present";
+    expectPrintedCameraReproduces(models / "BoxAnimated/glTF-Binary/BoxAnimated.glb", "", " --time 1.5");
+}
+
+// --explain says what framing fitted: the vertices of the pose shown for a still, of every frame's
+// pose for a sequence (which keeps one camera), of the scene as loaded when nothing moves.
+TEST(CameraCli, ExplainSaysWhatFramingFitted) {
+    const fs::path models = assets::test::sharedModels();
+    if (models.empty()) GTEST_SKIP() << "../shared/assets not present";
+    TempDir dir("candela_camera_cli_framing");
+    const std::string box = (models / "BoxAnimated/glTF-Binary/BoxAnimated.glb").string();
+    const Result still = run("render --scene " + box + " --time 1.5 --explain --out " + (dir / "s.png").string() + kSmall);
+    ASSERT_EQ(still.exitCode, 0) << still.stderrText;
+    EXPECT_NE(still.stdoutText.find("framing: the vertices of the pose at 1.5 s: the target at the centre of their box, the distance "
+                                    "R / sin 15°"),
+              std::string::npos)
+        << still.stdoutText;
+    const Result sequence = run("render --scene " + box + " --frames 3 --fps 2 --explain --out " + (dir / "q_%d.png").string() + kSmall);
+    ASSERT_EQ(sequence.exitCode, 0) << sequence.stderrText;
+    EXPECT_NE(sequence.stdoutText.find("framing: the vertices of the poses at 3 times (0 s to 1 s)"), std::string::npos)
+        << sequence.stdoutText;
+    std::set<std::string> cameras;
+    for (size_t at = 0; (at = sequence.stdoutText.find("camera: --", at)) != std::string::npos; ++at)
+        cameras.insert(sequence.stdoutText.substr(at, sequence.stdoutText.find('\n', at) - at));
+    EXPECT_EQ(cameras.size(), 1u) << sequence.stdoutText;  // the camera holds still
+    const Result rest = run("render --scene " + box + " --animation none --explain --out " + (dir / "r.png").string() + kSmall);
+    ASSERT_EQ(rest.exitCode, 0) << rest.stderrText;
+    EXPECT_NE(rest.stdoutText.find("framing: the scene's vertices:"), std::string::npos) << rest.stdoutText;
 }
 
 TEST(CameraCli, ATurntableKeepsOneDistance) {

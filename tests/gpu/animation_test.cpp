@@ -170,7 +170,7 @@ void expectGpuDeformationMatchesReference(vk::Context& context, const char* path
     ASSERT_FALSE(work.jobs.empty());
     const std::vector<scene::Vertex> gpu = deformOnGpu(context, gpuScene, work);
 
-    const float size = glm::length(pose.animationBounds().max - pose.animationBounds().min);
+    const float size = glm::length(pose.bounds().max - pose.bounds().min);
     size_t compared = 0;
     double worstPosition = 0.0, worstNormal = 0.0, moved = 0.0;
     for (uint32_t d : pose.deformedDraws()) {

@@ -293,7 +293,9 @@ TEST_F(AovTest, CoverageIsTheImagesAndBothPathsAgreeAtMsaa1) {
             ASSERT_EQ(std::isfinite(depth[i]), frame->rgba8[4 * i + 3] > 0) << "pixel " << i;
             covered += std::isfinite(depth[i]);
         }
-        EXPECT_GT(covered, depth.size() / 4);
+        // (The grid spans 80% of the image's height since framing fits its silhouette: 22.5% of the
+        // pixels; 91% of the height and over a quarter of them before.)
+        EXPECT_GT(covered, depth.size() / 5);
     }
     ASSERT_EQ(forward.outputs.size(), visibility.outputs.size());
     for (size_t o = 0; o < forward.outputs.size(); ++o) {

@@ -74,10 +74,17 @@ def test_a_sequence_is_an_iterator_of_its_frames_one_at_a_time(device, grid):
 
 def test_sequences_play_animations_frame_by_frame(device):
     fox = device.load_scene(shared_model("Fox"))
-    frames = [f["color"] for f in device.render_sequence(fox, frames=2, fps=2.0, animations="Run", width=48, height=48)]
-    still = device.render(fox, animations="Run", time=0.5, width=48, height=48)["color"]
+    # One camera for both: framed by default, a sequence fits all its frames' poses, a still its own.
+    camera = candela.Camera.orbit(0.0, 75.0, 300.0, target=(0.0, 40.0, 0.0))
+    frames = [f["color"] for f in device.render_sequence(fox, frames=2, fps=2.0, animations="Run", camera=camera,
+                                                         width=48, height=48)]
+    still = device.render(fox, animations="Run", time=0.5, camera=camera, width=48, height=48)["color"]
     np.testing.assert_array_equal(frames[1], still)  # frame 1 at 1/fps s is the pose at 0.5 s
     assert not np.array_equal(frames[0], frames[1])
+    # Framed by default, the camera holds still over the sequence.
+    framed = [f.camera.camera_to_world for f in device.render_sequence(fox, frames=2, fps=2.0, animations="Run",
+                                                                       width=48, height=48)]
+    np.testing.assert_array_equal(framed[0], framed[1])
 
 
 def test_the_gil_is_released_while_rendering(device, helmet):

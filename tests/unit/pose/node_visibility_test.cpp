@@ -4,6 +4,7 @@
 #include "animation_pointer_util.h"
 
 #include "pose/scene_pose.h"
+#include "pose/shown_points.h"
 
 namespace candela::pose::test::node_visibility_test {
 namespace {
@@ -45,7 +46,7 @@ TEST(NodeVisibility, AHiddenParentHidesItsVisibleChildsDrawsAndLights) {
     // The pose and its bounds agree, with no animation.
     const ScenePose pose(scene, {});
     EXPECT_EQ(pose.bounds().max, glm::vec3(1, 1, 0));
-    EXPECT_EQ(pose.animationBounds().max, glm::vec3(1, 1, 0));
+    EXPECT_EQ(shownBounds(scene).max, glm::vec3(1, 1, 0));
 }
 
 TEST(NodeVisibility, EveryNodeHiddenFramesTheHiddenGeometryWithAWarning) {
@@ -90,8 +91,16 @@ TEST(NodeVisibility, AnAnimatedVisibilityTogglesAtItsKey) {
     EXPECT_EQ(pose.draws()[2].world[3], glm::vec4(10, 0, 0, 1));
     pose.evaluate(2.5, false);
     EXPECT_TRUE(pose.draws()[2].hidden);
-    // Framing covers what the animation ever shows.
-    EXPECT_EQ(pose.animationBounds().max, glm::vec3(11, 1, 0));
+    // Framing the whole animation covers what it ever shows; framing the pose at 2.5 s, what that shows.
+    scene::Aabb all, now;
+    shownPoints(scene, &pose, animationTimes(pose, 64), /*loop=*/false)([&](std::span<const glm::vec3> batch) {
+        for (const glm::vec3& p : batch) all.extend(p);
+    });
+    shownPoints(scene, &pose)([&](std::span<const glm::vec3> batch) {
+        for (const glm::vec3& p : batch) now.extend(p);
+    });
+    EXPECT_EQ(all.max, glm::vec3(11, 1, 0));
+    EXPECT_EQ(now.max, glm::vec3(1, 1, 0));
 }
 
 TEST(NodeVisibility, AVisibilityChannelTakesStepInterpolationOnly) {

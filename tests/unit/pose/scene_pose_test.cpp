@@ -5,6 +5,7 @@
 
 #include "pose/scene_pose.h"
 #include "pose/picking.h"
+#include "pose/shown_points.h"
 #include "pose/skinning.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -56,9 +57,21 @@ TEST(ScenePose, BoxAnimatedFollowsItsKeys) {
     expectVec(pose.draws()[moving].world[3], {0, 1.26f, 0}, 1e-4f);
     pose.evaluate(100.0, /*loop=*/false);
     expectVec(pose.draws()[moving].world[3], {0, 0, 0});
-    // The bounds over the animation contain the top of the climb.
-    EXPECT_NEAR(pose.animationBounds().max.y, 2.52f + 0.5f, 1e-5f);
-    EXPECT_NEAR(pose.animationBounds().min.y, -0.5f, 1e-5f);
+    // The points over the whole animation reach the top of the climb, where the box, turning, stands
+    // highest at atan(0.335 / 0.5) = 34° between the keys (0° and 180°): 2.52 + √(0.5² + 0.335²);
+    // those of one pose, only its own.
+    scene::Aabb all;
+    shownPoints(scene, &pose, animationTimes(pose, 1024), /*loop=*/false)([&](std::span<const glm::vec3> batch) {
+        for (const glm::vec3& p : batch) all.extend(p);
+    });
+    EXPECT_NEAR(all.max.y, 2.52f + std::sqrt(0.25f + 0.33504f * 0.33504f), 2e-3f);
+    EXPECT_NEAR(all.min.y, -0.5f, 1e-5f);
+    pose.evaluate(0.0);
+    scene::Aabb now;
+    shownPoints(scene, &pose)([&](std::span<const glm::vec3> batch) {
+        for (const glm::vec3& p : batch) now.extend(p);
+    });
+    EXPECT_NEAR(now.max.y, 0.5f, 1e-5f);
 }
 
 TEST(ScenePose, NoAnimationIsTheRestPose) {
@@ -163,14 +176,13 @@ TEST(ScenePose, ChannelsOnNodesOutsideTheSceneAndWithoutTargetAreDropped) {
 namespace candela::pose::test::scene_pose_test {
 namespace {
 
-// Every deformed vertex (the CPU reference of the skin_morph pass) lies in its draw's posed bounds
-// and in the bounds over the whole animation, at keys and between them.
+// Every deformed vertex (the CPU reference of the skin_morph pass) lies in its draw's posed bounds,
+// at keys and between them, and is one of the points framing fits for that pose (in float).
 void expectBoundsContainDeformedVertices(const char* path, const std::vector<std::string>& animations) {
     if (assets::test::sharedModels().empty()) GTEST_SKIP() << "../shared/assets not present";
     const scene::Scene scene = assets::loadGltf(assets::test::sharedModels() / path);
     EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
     ScenePose pose(scene, selectAnimations(scene, animations));
-    const scene::Aabb all = pose.animationBounds();
     const auto inside = [](const scene::Aabb& box, const glm::vec3& p) {
         const glm::vec3 slack = 1e-4f * (glm::abs(box.max) + glm::abs(box.min) + 1.0f);
         return glm::all(glm::greaterThanEqual(p, box.min - slack)) && glm::all(glm::lessThanEqual(p, box.max + slack));
@@ -178,6 +190,10 @@ void expectBoundsContainDeformedVertices(const char* path, const std::vector<std
     size_t checked = 0;
     for (double t : {0.0, 0.37, 0.8, 1.3, 2.9}) {
         pose.evaluate(t);
+        std::vector<glm::vec3> points;
+        visitShownPoints(pose, [&](std::span<const glm::vec3> batch) { points.insert(points.end(), batch.begin(), batch.end()); });
+        scene::Aabb shown;
+        for (const glm::vec3& p : points) shown.extend(p);
         for (uint32_t d : pose.deformedDraws()) {
             const scene::Draw& draw = pose.draws()[d];
             static const std::vector<glm::dmat4> none;
@@ -186,7 +202,7 @@ void expectBoundsContainDeformedVertices(const char* path, const std::vector<std
             for (const scene::Vertex& v : vertices) {
                 const glm::vec3 world = glm::vec3(draw.world * glm::vec4(v.position, 1.0f));
                 ASSERT_TRUE(inside(draw.bounds, world)) << path << " t=" << t << " draw " << d;
-                ASSERT_TRUE(inside(all, world)) << path << " t=" << t << " draw " << d;
+                ASSERT_TRUE(inside(shown, world)) << path << " t=" << t << " draw " << d;
                 ++checked;
             }
         }
@@ -209,14 +225,33 @@ TEST(ScenePose, MorphedBoundsContainTheDeformedVertices) {
 namespace candela::pose::test::scene_pose_test {
 namespace {
 
-TEST(ScenePose, PickingHitsThePosedMesh) {
-    REQUIRE_MODELS();
+// Fox running, at 0.4 s: its skinned draw and the CPU reference of its deformed vertices.
+struct RunningFox {
     const scene::Scene scene = assets::loadGltf(assets::test::sharedModels() / "Fox/glTF-Binary/Fox.glb");
-    ScenePose pose(scene, selectAnimations(scene, std::vector<std::string>{"Run"}));
-    pose.evaluate(0.4);
-    const uint32_t d = pose.deformedDraws().at(0);
+    ScenePose pose{scene, selectAnimations(scene, std::vector<std::string>{"Run"})};
+    const uint32_t d = (pose.evaluate(0.4), pose.deformedDraws().at(0));
     const scene::Draw& draw = pose.draws()[d];
     const std::vector<scene::Vertex> posed = deformVertices(scene, draw, pose.weights(draw), pose.jointMatrices(uint32_t(draw.skin)));
+};
+
+// The points framing fits for a skinned draw are the skin_morph reference's positions.
+TEST(ScenePose, FramingFitsTheSkinMorphReference) {
+    REQUIRE_MODELS();
+    const RunningFox fox;
+    std::vector<glm::vec3> points;
+    visitDrawPoints(fox.scene, fox.draw, fox.pose.weights(fox.draw), fox.pose.jointMatrices(uint32_t(fox.draw.skin)),
+                    [&](std::span<const glm::vec3> batch) { points.insert(points.end(), batch.begin(), batch.end()); });
+    ASSERT_EQ(points.size(), fox.posed.size());
+    for (size_t i = 0; i < points.size(); ++i) ASSERT_LT(glm::length(points[i] - fox.posed[i].position), 1e-3f) << i;  // (the fox is ~100 units long)
+}
+
+TEST(ScenePose, PickingHitsThePosedMesh) {
+    REQUIRE_MODELS();
+    const RunningFox fox;
+    const scene::Scene& scene = fox.scene;
+    const ScenePose& pose = fox.pose;
+    const scene::Draw& draw = fox.draw;
+    const std::vector<scene::Vertex>& posed = fox.posed;
     const uint32_t base = scene.deformations[size_t(draw.deformation)].firstVertex;
     // A ray from far above onto the posed centroid of some triangle hits the fox no further than it;
     // the same ray against the rest pose (bind pose) hits elsewhere or not at all.

@@ -1,6 +1,7 @@
 // Mouse control of the orbit camera (ui/orbit_controls.h) and picking (pose/picking.h).
 #include "assets/builtin_scenes.h"
 #include "pose/picking.h"
+#include "pose/shown_points.h"
 #include "ui/orbit_controls.h"
 
 #include <gtest/gtest.h>
@@ -60,7 +61,7 @@ TEST(OrbitControls, SettingTheEyeKeepsTheTarget) {
 
 TEST(Picking, RayThroughTheCentreHitsTheMiddleSphere) {
     const scene::Scene grid = assets::makeSphereGrid();
-    const scene::OrbitCamera c = scene::OrbitCamera::framing(grid.bounds, 16.0f / 9.0f);
+    const scene::OrbitCamera c = scene::frame(pose::shownPoints(grid, nullptr), {.aspect = 16.0f / 9.0f, .directions = {{0.0f, 75.0f}}});
     const scene::ViewSetup view = c.view(16.0f / 9.0f);
     const pose::Ray ray = pose::viewRay(view, {0.0f, 0.0f});
     EXPECT_NEAR(glm::dot(ray.direction, glm::normalize(c.target - c.eye())), 1.0f, 1e-5f);
