@@ -218,7 +218,11 @@ uvec2 distinctId(ivec2 pixel, out int count) {
 
 void main() {
     uint tile = tileLists[push.counts.z * frame.extent.w + gl_WorkGroupID.x];
-    ivec2 pixel = ivec2(tile & 0xffffu, tile >> 16u) * ivec2(gl_WorkGroupSize.xy) + ivec2(gl_LocalInvocationID.xy);
+    // Unsigned, converted once: ivec2(gl_WorkGroupSize.xy) is a spec-constant IAdd that
+    // SPIRV-Tools' spec-constant folding (run by the validation layer on every specialized module)
+    // can rewrite to use constants declared after it — invalid SPIR-V, VUID 06719, when nothing else
+    // in the module uses int 8 and int 1 earlier (docs/shading-paths.md).
+    ivec2 pixel = ivec2(uvec2(tile & 0xffffu, tile >> 16u) * gl_WorkGroupSize.xy + gl_LocalInvocationID.xy);
     ivec2 size = ivec2(frame.extent.xy);
     if (any(greaterThanEqual(pixel, size))) return;
 #ifdef CANDELA_VISIBILITY_MSAA

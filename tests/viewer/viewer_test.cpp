@@ -537,14 +537,26 @@ TEST_F(ViewerTest, HotReloadRebuildsTheComputeShadingOfTheVisibilityPath) {
     EXPECT_GT(shadedBlue.rgba[centre + 2], 150);
     EXPECT_EQ(shadedBlue.rgba[2 * 4 + 2], before.rgba[2 * 4 + 2]);  // the background is not shaded
 
-    // A compile error names the file and line in every shader made from it; blue stays.
-    editFile(shaders / "visibility_shade.comp.glsl", blue, "imageStore(shaded, pixel, undefinedThing);");
+    // Every shading function dead (a constant stored): the module the validation layer
+    // specializes stays valid (its spec-constant folding once made it invalid: VUID 06719,
+    // docs/shading-paths.md).
+    const std::string green = "imageStore(shaded, pixel, vec4(0.0, 0.5, 0.0, 1.0));";
+    editFile(shaders / "visibility_shade.comp.glsl", blue, green);
+    frames(1);
+    EXPECT_TRUE(mViewer->hotReload().errors().empty());
+    const Image shadedGreen = screenshot("green.png");
+    EXPECT_LT(shadedGreen.rgba[centre + 0], 10);
+    EXPECT_GT(shadedGreen.rgba[centre + 1], 100);
+    EXPECT_LT(shadedGreen.rgba[centre + 2], 10);
+
+    // A compile error names the file and line in every shader made from it; green stays.
+    editFile(shaders / "visibility_shade.comp.glsl", green, "imageStore(shaded, pixel, undefinedThing);");
     frames(1);
     ASSERT_FALSE(mViewer->hotReload().errors().empty());
     const std::string error = mViewer->hotReload().errors()[0];
     EXPECT_NE(error.find("visibility_shade.comp.glsl:"), std::string::npos) << error;
     EXPECT_NE(error.find("undefinedThing"), std::string::npos) << error;
-    EXPECT_EQ(screenshot("still_blue.png").rgba, shadedBlue.rgba);
+    EXPECT_EQ(screenshot("still_green.png").rgba, shadedGreen.rgba);
 
     editFile(shaders / "visibility_shade.comp.glsl", "imageStore(shaded, pixel, undefinedThing);", store);
     frames(1);
