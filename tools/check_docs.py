@@ -36,6 +36,7 @@ OTHER_TOOLS_FLAGS = {"--preset", "--build", "--install", "--prefix", "--test-dir
                      "--assets",  # tools/gpu-check.sh's
                      "--size",  # tools/python-overhead.py's
                      "--doc", "--samples",  # tools/validator/oracle.py's
+                     "--set-spec-const-default-value", "--freeze-spec-const", "--fold-spec-const-op-composite",  # spirv-opt's
                      "--scen"}  # the README's example of a mistyped flag and its error
 TREE_ROOTS = ("app/", "engine/", "shaders/", "tests/", "tools/", "docs/", "assets/", ".ci/")
 FLAG = re.compile(r"(?<![\w-])(--[a-z][a-z0-9_-]*)")
