@@ -25,6 +25,9 @@ for package in "${packages[@]}"; do
     missing+=("$package")
   fi
 done
+# The glTF-Validator oracle (validator.oracle) runs the npm validator under Node.js: Debian's, when
+# the machine has no node and npm of its own (a minimal Debian root has neither).
+command -v node >/dev/null && command -v npm >/dev/null || missing+=(nodejs npm)
 [ ${#missing[@]} -eq 0 ] && exit 0
 
 echo "installing: ${missing[*]}"
