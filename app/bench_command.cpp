@@ -12,7 +12,6 @@
 
 #include "graph/graph_export.h"
 #include "render/camera_framing.h"
-#include "scene/camera.h"
 #include "vk/pipeline_cache_file.h"
 #include "vk/timestamps.h"
 
@@ -328,9 +327,7 @@ int runBench(const BenchOptions& options) {
         // Framed once over the frames' poses, as render frames a sequence: the camera holds still.
         std::vector<double> times;
         for (uint32_t i = 0; i < std::max(options.frames, 1u); ++i) times.push_back(options.time + i / 60.0);
-        const glm::vec2 direction(settings.camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f)));
-        settings.camera = resolveFraming(scene, settings.camera, float(settings.width) / float(settings.height), &pose, times,
-                                         std::span(&direction, 1));
+        settings.camera = resolveFraming(scene, settings.camera, float(settings.width) / float(settings.height), &pose, times);
     }
     log::info("camera: " + Renderer::cameraFlags(scene, settings.camera, float(settings.width) / float(settings.height), &pose));
     const auto advance = [&](uint32_t frame) {

@@ -32,9 +32,11 @@ std::string framingNote(bool posed, std::span<const double> times, size_t direct
 }  // namespace
 
 CameraSettings resolveFraming(const scene::Scene& scene, const CameraSettings& camera, float aspect, const pose::ScenePose* pose,
-                              std::span<const double> times, std::span<const glm::vec2> directions, bool loop) {
+                              std::span<const double> times, std::span<const glm::vec2> given, bool loop) {
     CameraSettings out = camera;
-    if (camera.orbitCamera || directions.empty()) return out;
+    if (camera.orbitCamera) return out;
+    const glm::vec2 own(camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f)));
+    const std::span<const glm::vec2> directions = given.empty() ? std::span(&own, 1) : given;
     const bool distance = camera.orbit && camera.orbit->z > 0.0f;
     if (distance && camera.target) {
         out.orbit = glm::vec3(directions[0], camera.orbit->z);

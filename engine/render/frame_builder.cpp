@@ -365,12 +365,11 @@ void FrameBuilder::addExplanation(Frame& frame, const RenderSettings& settings, 
 scene::OrbitCamera FrameBuilder::orbitCamera(const scene::Scene& scene, const CameraSettings& camera, float aspect,
                                              const pose::ScenePose* pose) {
     if (camera.orbitCamera) return *camera.orbitCamera;
-    const glm::vec2 direction(camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(scene), 0.0f)));
-    const CameraSettings resolved = resolveFraming(scene, camera, aspect, pose, {}, std::span(&direction, 1));
+    const CameraSettings resolved = resolveFraming(scene, camera, aspect, pose, {});
     scene::OrbitCamera out;
     out.target = *resolved.target;
-    out.thetaDegrees = direction.x;
-    out.phiDegrees = direction.y;
+    out.thetaDegrees = resolved.orbit->x;
+    out.phiDegrees = resolved.orbit->y;
     out.radius = resolved.orbit->z;
     out.fovYDegrees = *resolved.fovYDegrees;
     out.znear = out.radius * 1e-3f;

@@ -194,10 +194,8 @@ float Viewer::visibleAspect() const {
 }
 
 CameraSettings Viewer::framedWhilePlaying(const CameraSettings& camera) const {
-    const glm::vec2 direction(camera.orbit.value_or(glm::vec3(scene::defaultOrbitAngles(mScene), 0.0f)));
     // (At most 256 poses: framing evaluates each three times, skinning every vertex.)
-    return resolveFraming(mScene, camera, visibleAspect(), mPose.get(), pose::animationTimes(*mPose, 256), std::span(&direction, 1),
-                          /*loop=*/false);
+    return resolveFraming(mScene, camera, visibleAspect(), mPose.get(), pose::animationTimes(*mPose, 256), {}, /*loop=*/false);
 }
 
 void Viewer::frameScene() {
