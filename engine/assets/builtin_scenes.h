@@ -9,7 +9,7 @@ namespace candela::assets {
 // plane facing +Z (framed head-on: Scene::framingAngles), metallic rising left → right (0 → 1)
 // and roughness bottom → top (0.05 → 1), base colour a dark red, lit by 4 white point lights of
 // 300 cd in front of the grid's corners.
-// The spheres (64 × 32) have levels of detail: 24 × 12, 20 × 10, 16 × 8, 12 × 6 and 8 × 4.
+// The spheres (64 × 32) have levels of detail: 32 × 16, 24 × 12, 16 × 8, 12 × 6 and 8 × 4.
 // With `side` other than 7: side × side spheres over the same 7 × 7 materials (each sphere wearing
 // its part of the grid's), the lights as far out, relative to the grid, and as bright where the
 // spheres are (`bench --grid N`). With `materialPerSphere` every sphere wears a material of its

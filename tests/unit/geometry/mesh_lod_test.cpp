@@ -4,6 +4,7 @@
 #include "assets/builtin_scenes.h"
 #include "geometry/mesh_lod.h"
 #include "geometry/mesh_optimize.h"
+#include "options/draw_selection.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 
@@ -86,6 +88,26 @@ TEST(MeshLod, EachLevelStaysWithinItsErrorOfTheFullDetail) {
         // ...and the error is no gross overestimate either (it picks the level).
         EXPECT_GE(distance, 0.5f * level.error) << level.indices.size() / 3 << " triangles";
     }
+}
+
+TEST(MeshLod, TheBuiltInSpheresChainLeavesNoGapAtTheDefaultView) {
+    // The default view (1280 × 720) sees the grid's spheres at about 35 px per metre. The chain
+    // once went from 64 × 32 straight to 24 × 12, whose error (0.0164 m, 0.57 px there) missed the
+    // 0.5 px default: every sphere drew its full 3,968 triangles. No step may multiply the error
+    // by more than 2.5 (a step is one level per distance doubling, DistanceDoublingMovesOneLevel),
+    // and the first level (32 × 16: 0.0096 m, 0.33 px) must show at most 0.75 of the default there.
+    const scene::Scene grid = assets::makeSphereGrid();
+    ASSERT_EQ(grid.lodChains.size(), 1u);
+    const scene::LodChain& chain = grid.lodChains[0];
+    ASSERT_GE(chain.levels.size(), 3u);
+    for (size_t i = 1; i < chain.levels.size(); ++i) {
+        std::printf("level %zu: %u triangles, error %.4f m (%.2f px at 35 px/m)\n", i, chain.levels[i].indexCount / 3,
+                    double(chain.levels[i].error), double(chain.levels[i].error * 35.0f));
+        if (i >= 2) {
+            EXPECT_LE(chain.levels[i].error, 2.5f * chain.levels[i - 1].error) << "level " << i;
+        }
+    }
+    EXPECT_LE(chain.levels[1].error * 35.0f, 0.75f * options::DrawSelection::kDefaultLodErrorPixels);
 }
 
 TEST(MeshLod, SurfaceDeviationMatchesBruteForce) {
