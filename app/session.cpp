@@ -57,13 +57,13 @@ std::optional<assets::Environment> loadEnvironment(const EnvironmentChoice& choi
 }
 
 
-scene::Scene readScene(const SceneOptions& options, const std::string& file) {
-    return !file.empty() ? assets::loadGltf(file, {.sceneIndex = options.sceneIndex})
+scene::Scene readScene(const SceneOptions& options, const std::string& file, bool deferLevelsOfDetail) {
+    return !file.empty() ? assets::loadGltf(file, {.sceneIndex = options.sceneIndex, .deferLevelsOfDetail = deferLevelsOfDetail})
                          : assets::makeSphereGrid(options.grid.value_or(7), options.distinctMaterials);
 }
 
 scene::Scene loadScene(const SceneOptions& options) {
-    scene::Scene scene = readScene(options, options.scene);
+    scene::Scene scene = readScene(options, options.scene, false);
     for (const std::string& warning : scene.report.warnings) log::warn(options.scene + ": " + warning);
     for (const std::string& note : scene.report.notes) log::info(options.scene + ": " + note);
     if (!options.variant.empty()) scene::selectVariant(scene, scene::variantIndex(scene, options.variant));

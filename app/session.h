@@ -63,9 +63,12 @@ private:
 // The environment `choice` asks for (nullopt: none), its warnings logged, and its notes with --verbose.
 std::optional<assets::Environment> loadEnvironment(const EnvironmentChoice& choice);
 // The scene of `file` (a glTF file; "": the built-in sphere grid --grid and --distinct-materials
-// ask for), as read: nothing logged, the default variant. Safe to call on another thread.
-scene::Scene readScene(const SceneOptions& options, const std::string& file);
-// readScene of --scene with its warnings logged (notes with --verbose) and --variant selected.
+// ask for), as read: nothing logged, the default variant; its levels of detail built, or left for
+// the API to build if they pay (`deferLevelsOfDetail`: geometry/lod_cost.h). Safe to call on
+// another thread.
+scene::Scene readScene(const SceneOptions& options, const std::string& file, bool deferLevelsOfDetail);
+// readScene of --scene with its warnings logged (notes with --verbose) and --variant selected, its
+// levels of detail built (the viewer and bench draw frames without end, or many).
 scene::Scene loadScene(const SceneOptions& options);
 // The pose --animation and --time ask for (a UserError names the scene's animations when one
 // does not exist). Precondition: `scene` outlives it.

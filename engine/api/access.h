@@ -27,6 +27,9 @@ struct Scene::Impl {
     scene::Scene scene;
     std::optional<uint32_t> variant;  // the variant selected in `scene` (nullopt: its defaults)
     uint64_t id = newObjectId();
+    // Frames drawn of it so far: with those asked next, what decides whether its levels of detail,
+    // deferred at load, are built (geometry/lod_cost.h).
+    uint64_t framesDrawn = 0;
 };
 
 struct Environment::Impl {

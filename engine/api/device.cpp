@@ -6,6 +6,9 @@
 #include "api/cameras.h"
 #include "candela/device.h"
 #include "core/cache_files.h"
+#include "core/parallel_for.h"
+#include "geometry/lod_cost.h"
+#include "geometry/mesh_optimize.h"
 #include "options/device_profile.h"
 #include "pose/scene_pose.h"
 #include "scene/camera.h"
@@ -173,6 +176,26 @@ void Device::release() {
 
 uint32_t Device::validationMessages() const { return impl_->context.validationMessageCount(); }
 
+namespace {
+
+// Builds the levels of detail of `held` that its load deferred when drawing them at full detail for
+// the frames drawn so far and the `frames` ahead costs more on `impl`'s device than building them
+// (geometry/lod_cost.h); the decision's line goes to the scene's report (--explain).
+void buildLevelsOfDetailIfTheyPay(Device::Impl& impl, Scene::Impl& held, uint32_t frames, float lodErrorPixels) {
+    scene::SceneLoadReport::GeometryPreparation& geometry = held.scene.report.geometry;
+    if (!geometry.lodDeferred) return;
+    const bool cpu = impl.context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    const geometry::LodDecision decision =
+        geometry::decideLevelsOfDetail(geometry::lodCandidateTriangles(held.scene), held.framesDrawn, frames, lodErrorPixels,
+                                       geometry::measuredTriangleCosts(cpu), hardwareThreads());
+    geometry.lodDecision = decision.reason;
+    if (!decision.build) return;
+    geometry::buildLevelsOfDetail(held.scene);
+    impl.renderer.sceneReplaced();  // its index buffer grew: uploaded again
+}
+
+}  // namespace
+
 void Access::renderFrames(Device& device, const Scene& scene, const RenderOptions& options,
                           const SequenceOptions& sequence, const CaptureSink& sink, const Environment* environment,
                           const ProgressCallback& progress, const SettingsHook& hook) {
@@ -218,6 +241,8 @@ void Access::renderFrames(Device& device, const Scene& scene, const RenderOption
             if (hook) hook(settings);
         };
         setUpFrame(0);
+        buildLevelsOfDetailIfTheyPay(impl, held, frames, settings.drawSelection.lodErrorPixels);
+        held.framesDrawn += frames;
         reportProgress(impl, progress, {RenderProgress::Stage::Upload, 0, frames});
         impl.renderer.validateSettings(settings);
         impl.renderer.upload(settings);

@@ -27,13 +27,14 @@ Scene Access::scene(scene::Scene scene) { return Scene(std::make_unique<Scene::I
 
 Scene Scene::fromFile(const std::string& path, std::optional<uint32_t> sceneIndex) {
     std::optional<Scene> out;
-    translateErrors(path, [&] { out = Access::scene(assets::loadGltf(path, {.sceneIndex = sceneIndex})); });
+    // The levels of detail wait for the frames asked (Device::render*: geometry/lod_cost.h).
+    translateErrors(path, [&] { out = Access::scene(assets::loadGltf(path, {.sceneIndex = sceneIndex, .deferLevelsOfDetail = true})); });
     return std::move(*out);
 }
 
 Scene Scene::fromMemory(std::span<const std::byte> bytes, const std::string& name, const UriResolver& resolver,
                         std::optional<uint32_t> sceneIndex) {
-    assets::LoadOptions options{.sceneIndex = sceneIndex};
+    assets::LoadOptions options{.sceneIndex = sceneIndex, .deferLevelsOfDetail = true};
     // Without a resolver every URI is refused, as the resolver that has no file would.
     options.uriReader = [&resolver](const std::string& uri) -> std::optional<std::vector<uint8_t>> {
         if (!resolver) return std::nullopt;

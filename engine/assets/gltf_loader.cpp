@@ -143,7 +143,8 @@ void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, cons
     gltf::loadVariantNames(ctx, model, scene);
     gltf::loadNodes(ctx, model, options.sceneIndex, scene);
     gltf::loadAnimations(ctx, model, scene);
-    if (options.prepareGeometry) geometry::prepareGeometry(scene);
+    if (options.prepareGeometry)
+        geometry::prepareGeometry(scene, options.deferLevelsOfDetail ? geometry::LevelsOfDetail::Defer : geometry::LevelsOfDetail::Build);
 }
 
 }  // namespace

@@ -33,6 +33,9 @@ struct LoadOptions {
     // overdraw and fetch, with levels of detail). false keeps the file's triangle and vertex order
     // and builds no levels.
     bool prepareGeometry = true;
+    // Leave the levels of detail for later (geometry::buildLevelsOfDetail, when a cost model says
+    // they pay: the API decides from the frames it is asked for; Scene::report.geometry.lodDeferred).
+    bool deferLevelsOfDetail = false;
     // Where external URIs are read from; unset: the files in the model's folder.
     UriReader uriReader;
 };

@@ -1,5 +1,7 @@
 #include "geometry/mesh_optimize.h"
 
+#include "core/parallel_for.h"
+
 #include <meshoptimizer.h>
 
 #include <algorithm>
@@ -61,9 +63,8 @@ std::vector<Mesh> distinctMeshes(const scene::Scene& scene) {
 }
 
 // Reorders the vertices [base, base + count) of `scene` for fetch locality in the order `local`
-// (indices relative to base) first uses them, and rewrites `local` and every level's indices.
-void reorderVertices(scene::Scene& scene, uint32_t base, uint32_t count, std::vector<uint32_t>& local,
-                     std::vector<SimplifiedLevel>& levels) {
+// (indices relative to base) first uses them, and rewrites `local`.
+void reorderVertices(scene::Scene& scene, uint32_t base, uint32_t count, std::vector<uint32_t>& local) {
     std::vector<uint32_t> remap(count);
     uint32_t next = uint32_t(meshopt_optimizeVertexFetchRemap(remap.data(), local.data(), local.size(), count));
     for (uint32_t& r : remap)
@@ -72,53 +73,86 @@ void reorderVertices(scene::Scene& scene, uint32_t base, uint32_t count, std::ve
     meshopt_remapVertexBuffer(reordered.data(), scene.vertices.data() + base, count, sizeof(scene::Vertex), remap.data());
     std::copy(reordered.begin(), reordered.end(), scene.vertices.begin() + base);
     meshopt_remapIndexBuffer(local.data(), local.data(), local.size(), remap.data());
-    for (SimplifiedLevel& level : levels)
-        meshopt_remapIndexBuffer(level.indices.data(), level.indices.data(), level.indices.size(), remap.data());
+}
+
+// Whether buildLevelsOfDetail gives `mesh` a chain.
+bool candidate(const scene::Scene& scene, const Mesh& mesh) { return !mesh.deformed && scene.draws[mesh.draws.front()].lod < 0; }
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
 
-void prepareGeometry(scene::Scene& scene, const LodChainSettings& settings) {
+void prepareGeometry(scene::Scene& scene, LevelsOfDetail lod, const LodChainSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
     scene::SceneLoadReport::GeometryPreparation& report = scene.report.geometry;
     const std::vector<Mesh> meshes = distinctMeshes(scene);
     report.meshes = meshes.size();
     for (const Mesh& mesh : meshes) {
         const uint32_t base = mesh.minVertex, count = mesh.maxVertex - mesh.minVertex + 1;
-        const std::span<const scene::Vertex> vertices(scene.vertices.data() + base, count);
         std::vector<uint32_t> local(scene.indices.begin() + mesh.firstIndex,
                                     scene.indices.begin() + mesh.firstIndex + mesh.indexCount);
         for (uint32_t& i : local) i -= base;
         if (!mesh.blended) {
             meshopt_optimizeVertexCache(local.data(), local.data(), local.size(), count);
-            meshopt_optimizeOverdraw(local.data(), local.data(), local.size(), &vertices[0].position.x, count,
+            meshopt_optimizeOverdraw(local.data(), local.data(), local.size(), &scene.vertices[base].position.x, count,
                                      sizeof(scene::Vertex), 1.05f);
         }
-        // A mesh that comes with its chain (the built-in spheres') keeps it.
-        const int32_t givenChain = scene.draws[mesh.draws.front()].lod;
-        std::vector<SimplifiedLevel> levels = mesh.deformed || givenChain >= 0 ? std::vector<SimplifiedLevel>{}
-                                                                               : simplifyChain(vertices, local, settings);
-        if (!mesh.deformed && !mesh.sharesVertices) reorderVertices(scene, base, count, local, levels);
+        if (!mesh.deformed && !mesh.sharesVertices) reorderVertices(scene, base, count, local);
         for (uint32_t i = 0; i < mesh.indexCount; ++i) scene.indices[mesh.firstIndex + i] = local[i] + base;
         report.indexBytes += uint64_t(mesh.indexCount) * sizeof(uint32_t);
-        if (givenChain >= 0) {
-            const scene::LodChain& chain = scene.lodChains[size_t(givenChain)];
+        // A mesh that comes with its chain (the built-in spheres') keeps it.
+        if (const int32_t given = scene.draws[mesh.draws.front()].lod; given >= 0) {
+            const scene::LodChain& chain = scene.lodChains[size_t(given)];
             for (size_t i = 1; i < chain.levels.size(); ++i) report.lodIndexBytes += chain.levels[i].indexCount * sizeof(uint32_t);
             report.simplifiedMeshes += chain.levels.size() > 1;
         }
-        if (levels.empty()) continue;
+    }
+    report.milliseconds = msSince(start);
+    report.lodDeferred = lod == LevelsOfDetail::Defer && lodCandidateTriangles(scene) > 0;
+    if (lod == LevelsOfDetail::Build) buildLevelsOfDetail(scene, settings);
+}
+
+uint64_t lodCandidateTriangles(const scene::Scene& scene) {
+    uint64_t triangles = 0;
+    for (const Mesh& mesh : distinctMeshes(scene))
+        if (candidate(scene, mesh)) triangles += mesh.indexCount / 3;
+    return triangles;
+}
+
+void buildLevelsOfDetail(scene::Scene& scene, const LodChainSettings& settings, uint32_t threads) {
+    const auto start = std::chrono::steady_clock::now();
+    scene::SceneLoadReport::GeometryPreparation& report = scene.report.geometry;
+    std::vector<Mesh> meshes = distinctMeshes(scene);
+    std::erase_if(meshes, [&](const Mesh& mesh) { return !candidate(scene, mesh); });
+    // The largest first: parallelFor hands them out in order.
+    std::stable_sort(meshes.begin(), meshes.end(), [](const Mesh& a, const Mesh& b) { return a.indexCount > b.indexCount; });
+    std::vector<std::vector<SimplifiedLevel>> chains(meshes.size());
+    parallelFor(meshes.size(), [&](size_t m) {
+        const Mesh& mesh = meshes[m];
+        const uint32_t base = mesh.minVertex, count = mesh.maxVertex - mesh.minVertex + 1;
+        std::vector<uint32_t> local(scene.indices.begin() + mesh.firstIndex, scene.indices.begin() + mesh.firstIndex + mesh.indexCount);
+        for (uint32_t& i : local) i -= base;
+        chains[m] = simplifyChain(std::span<const scene::Vertex>(scene.vertices.data() + base, count), local, settings);
+    }, threads);
+    for (size_t m = 0; m < meshes.size(); ++m) {
+        if (chains[m].empty()) continue;
+        const Mesh& mesh = meshes[m];
         scene::LodChain chain;
         chain.levels.push_back({mesh.firstIndex, mesh.indexCount, 0.0f});
-        for (const SimplifiedLevel& level : levels) {
+        for (const SimplifiedLevel& level : chains[m]) {
             chain.levels.push_back({uint32_t(scene.indices.size()), uint32_t(level.indices.size()), level.error});
-            for (uint32_t i : level.indices) scene.indices.push_back(i + base);
+            for (uint32_t i : level.indices) scene.indices.push_back(i + mesh.minVertex);
             report.lodIndexBytes += level.indices.size() * sizeof(uint32_t);
         }
         for (uint32_t d : mesh.draws) scene.draws[d].lod = int32_t(scene.lodChains.size());
         scene.lodChains.push_back(std::move(chain));
         ++report.simplifiedMeshes;
     }
-    report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    report.lodDeferred = false;
+    report.lodMilliseconds += msSince(start);
+    report.milliseconds += msSince(start);
 }
 
 }  // namespace candela::geometry

@@ -417,13 +417,18 @@ struct SceneLoadReport : LoadReport {
     } textureDecoding;
     // What preparing the geometry for drawing did (geometry/mesh_optimize.h): the distinct meshes
     // (index ranges the draws use), how many got a chain of levels of detail, the index memory of
-    // their full detail and of the chains' further levels, and the wall time it took.
+    // their full detail and of the chains' further levels, and the wall time it took (the chains'
+    // share of it apart); whether the chains wait for a cost model's decision (lodDeferred), and
+    // that decision's line once made (geometry/lod_cost.h).
     struct GeometryPreparation {
         size_t meshes = 0;
         size_t simplifiedMeshes = 0;
         uint64_t indexBytes = 0;
         uint64_t lodIndexBytes = 0;
         double milliseconds = 0.0;
+        double lodMilliseconds = 0.0;
+        bool lodDeferred = false;
+        std::string lodDecision;
     } geometry;
 };
 

@@ -8,7 +8,8 @@ ShadingSummary summarizeShading(const DrawList& list, const MaterialKeys& keys, 
                        .instances = list.instances,
                        .posed = posed,
                        .hiddenDraws = list.hiddenDraws,
-                       .lights = lightCount > 0};
+                       .lights = lightCount > 0,
+                       .lodDecision = scene.report.geometry.lodDecision};
     // Draws per material key, then per variant name (keys of one frame may share a variant).
     std::vector<uint32_t> perKey(keys.keys.size(), 0);
     for (const DrawListItem& item : list.items) ++perKey[item.key];
@@ -34,6 +35,7 @@ std::vector<std::string> explainShading(const ShadingSummary& summary, const Dra
     for (const auto& [name, count] : summary.variants) used += " " + name + " ×" + std::to_string(count);
     out.push_back(used);
     out.push_back(describeSelection(list, selection));
+    if (!summary.lodDecision.empty()) out.push_back(summary.lodDecision);
     if (summary.posed)
         out.push_back("animated: draw matrices of this frame's pose, written by the CPU into a per-frame buffer" +
                       (summary.hiddenDraws

@@ -25,6 +25,7 @@ struct ShadingSummary {
     bool lights = false;                       // the scene has punctual lights (else no light loop)
     bool normalMaps = false;                   // a material has a normal texture (else no TBN work)
     bool unlit = false;                        // a material is KHR_materials_unlit, or points or lines unshaded (else no unlit variant)
+    std::string lodDecision;                   // whether the levels of detail were built, and why ("": built at load)
     // The materials that pay for layers (the layered program), in material order.
     struct LayeredMaterial {
         std::string name;
