@@ -172,8 +172,11 @@ std::vector<FlagSpec<LightingOptions>> lightingFlags() {
          }},
         {"--no-multiscatter", "", "single-scattering split sum only (no Fdez-Aguera energy compensation)", "",
          [](O& o, Str, Str) { o.iblLook.multiscatter = false; }},
-        {"--ibl-cache", "DIR", "keep precomputed IBL maps in DIR, keyed by environment content and quality", "",
-         parsed(&O::iblCache, parsePath)},
+        {"--ibl-cache", "DIR|off",
+         "keep the environment's precomputed maps in DIR across runs, keyed by its content, the quality settings and the "
+         "precompute shaders (a damaged file is ignored and replaced; beyond 1 GiB the least recently used are removed); "
+         "off: compute them every run [$XDG_CACHE_HOME/candela/ibl, else ~/.cache/candela/ibl]",
+         "", parsed(&O::iblCache, parsePath)},
         {"--irradiance", "{choices}", "diffuse irradiance as 9 spherical-harmonic coefficients (sh9) or a cube",
          ibl::irradianceModeName(quality.irradiance),
          [](O& o, Str flag, Str v) { o.iblQuality.irradiance = parseChoice(flag, ibl::kIrradianceModeNames, v); },

@@ -135,7 +135,7 @@ void applyRenderFlags(const SceneRenderOptions& options, RenderSettings& setting
     settings.ibl = options.iblLook;
     settings.ibl.skybox = skybox;
     settings.ibl.rotationDegrees = rotation;
-    settings.iblCacheDir = options.iblCache;
+    settings.iblCacheDir = iblCacheFolder(options.iblCache);
 }
 
 RenderSettings renderSettings(const SceneRenderOptions& options, const scene::Scene& scene,

@@ -13,6 +13,7 @@
 #include "vk/context.h"
 
 #include <atomic>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
@@ -42,6 +43,7 @@ struct Device::Impl {
     vk::Context context;
     Renderer renderer;
     std::atomic<bool> cancelled{false};
+    std::filesystem::path iblCacheDir;  // DeviceOptions::iblCache (empty: none; a front end's hook may set its own)
     CapturedFrame lastFrame;  // the last image read back (its timings: the front end's report)
     // The Scene and Environment objects last drawn (their Impl addresses, as the renderer compares
     // them, and ids): one at a known address with another id replaced a destroyed one.

@@ -161,6 +161,7 @@ Device::Device(const DeviceOptions& options) {
     vk::ContextDesc desc;
     translateErrors("", [&] { desc = contextDescOf(options); });
     impl_ = startDevice(desc);
+    impl_->iblCacheDir = iblCacheFolder(options.iblCache);
 }
 Device::Device(Device&&) noexcept = default;
 Device& Device::operator=(Device&&) noexcept = default;
@@ -224,6 +225,7 @@ void Access::renderFrames(Device& device, const Scene& scene, const RenderOption
         }
         RenderSettings settings =
             renderSettings(options, held.scene, environment ? &environment->impl_->environment : nullptr);
+        settings.iblCacheDir = impl.iblCacheDir;
         pose::ScenePose pose(held.scene, pose::selectAnimations(held.scene, options.animations));
         pose.evaluate(options.time);
         settings.pose = &pose;

@@ -54,6 +54,13 @@ fs::path pipelineCacheFolder(const std::string& choice) {
     return choice.empty() ? userCacheFolder() : fs::path(choice);
 }
 
+fs::path iblCacheFolder(const std::string& choice) {
+    if (choice == "off") return {};
+    if (!choice.empty()) return fs::path(choice);
+    const fs::path user = userCacheFolder();
+    return user.empty() ? fs::path() : user / "ibl";
+}
+
 std::string hex16(uint64_t v) {
     std::string s(16, '0');
     for (int i = 15; i >= 0; --i, v >>= 4) s[size_t(i)] = "0123456789abcdef"[v & 0xf];

@@ -23,6 +23,10 @@ std::filesystem::path userCacheFolder(const char* xdgCacheHome, const char* home
 // The pipeline cache's folder a choice names (--pipeline-cache, DeviceOptions::pipelineCache):
 // "off" none (an empty path), "" the user's cache folder, anything else that folder.
 std::filesystem::path pipelineCacheFolder(const std::string& choice);
+// The IBL maps cache's folder a choice names (--ibl-cache, DeviceOptions::iblCache): "off" none (an
+// empty path), "" the user's cache folder's "ibl" folder (none without a user's cache folder),
+// anything else that folder.
+std::filesystem::path iblCacheFolder(const std::string& choice);
 
 inline constexpr uint64_t kFnv1a64Basis = 0xcbf29ce484222325ull;
 inline constexpr uint64_t kFnv1a64Prime = 0x100000001b3ull;

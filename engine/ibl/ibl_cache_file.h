@@ -66,8 +66,13 @@ struct CachedImage {
 // What a cache file was made for. Both parts must match for a file to be used.
 struct IblCacheKey {
     uint64_t environmentHash = 0;  // assets::contentHash of the environment
-    std::string settings;          // canonical text of the quality settings, e.g. "cube=256 prefilter=64 ..."
+    // Canonical text of everything else that changes the maps: the quality settings and the hash of
+    // the precompute shaders' SPIR-V, e.g. "v4 cube=256 ... shaders=0123456789abcdef".
+    std::string settings;
 };
+
+// At most this much of a cache folder's .cibl files is kept (evictCacheFiles).
+inline constexpr uint64_t kIblCacheCapBytes = uint64_t(1) << 30;  // 1 GiB
 
 // dir / "<16 lowercase hex digits of environmentHash>-<16 of fnv1a64(settings)>.cibl". Two keys
 // may share a name (a hash collision); readCacheFile compares the full key, so a collision is only
@@ -95,5 +100,17 @@ void writeCacheFile(const std::filesystem::path& path, const IblCacheKey& key, c
 // throws for bad content (only std::bad_alloc could escape); never reads out of bounds.
 std::optional<std::vector<CachedImage>> readCacheFile(const std::filesystem::path& path, const IblCacheKey& key,
                                                       std::string* reason);
+
+// Marks the cache file at `path` as just used (its last write time: now), so that evictCacheFiles
+// removes it after the files used longer ago. Errors are ignored (the file is then older than it
+// should be).
+void touchCacheFile(const std::filesystem::path& path);
+
+// Removes the least recently used cache files of `dir` (*.cibl, by last write time: written, or
+// touched when read) until those left take at most `capBytes` — never `keep` (the file just
+// written, which alone may exceed the cap). Returns the files removed. A file another process
+// removed or cannot be removed is skipped; never throws for the folder's state.
+std::vector<std::filesystem::path> evictCacheFiles(const std::filesystem::path& dir, uint64_t capBytes,
+                                                   const std::filesystem::path& keep);
 
 }  // namespace candela::ibl

@@ -42,6 +42,13 @@ class IblBrdfLutPass;
 
 namespace candela::ibl_maps {
 
+// FNV-1a 64 of the names and current SPIR-V of the precompute's shaders (every built-in "ibl_*"
+// shader; a hot-reloaded one's replacement).
+uint64_t precomputeShadersHash();
+// The cache key of the maps of an environment with content hash `environmentHash` at `quality`:
+// the quality's canonical text and precomputeShadersHash (maps made by other code are another key's).
+ibl::IblCacheKey iblCacheKey(uint64_t environmentHash, const ibl::IblQuality& quality);
+
 // Where the maps of the current environment came from.
 enum class MapsSource : uint8_t { None, Pending, Computed, Cache };
 

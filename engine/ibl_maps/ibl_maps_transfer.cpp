@@ -2,8 +2,11 @@
 
 #include "ibl_maps/ibl_maps.h"
 
+#include "core/cache_files.h"
 #include "core/errors.h"
 #include "core/log.h"
+#include "shader/builtin_shaders.h"
+#include "shader/shader_library.h"
 #include "vk/commands.h"
 #include "vk/context.h"
 #include "vk/upload.h"
@@ -25,9 +28,23 @@ uint32_t texelBytes(VkFormat format) {
     }
 }
 
-ibl::IblCacheKey cacheKey(uint64_t hash, const ibl::IblQuality& quality) { return {hash, quality.canonical()}; }
-
 }  // namespace
+
+uint64_t precomputeShadersHash() {
+    uint64_t hash = kFnv1a64Basis;
+    for (const std::string_view name : shader::builtinShaderNames()) {
+        if (!name.starts_with("ibl_")) continue;
+        const std::span<const uint32_t> spirv = shader::shaderSpirv(name);
+        hash = fnv1a64Update(hash, name.data(), name.size());
+        hash = fnv1a64Update(hash, spirv.data(), spirv.size_bytes());
+    }
+    return hash;
+}
+
+ibl::IblCacheKey iblCacheKey(uint64_t hash, const ibl::IblQuality& quality) {
+    return {hash, quality.canonical() + " shaders=" + hex16(precomputeShadersHash())};
+}
+
 
 ibl::CachedImage IblMaps::readImage(const char* name, const vk::Image& image) {
     const vk::ImageDesc& desc = image.desc();
@@ -101,11 +118,15 @@ std::vector<ibl::CachedImage> IblMaps::readBack() {
 }
 
 void IblMaps::writeCache() {
-    const ibl::IblCacheKey key = cacheKey(mEnvironmentHash, mQuality);
+    const ibl::IblCacheKey key = iblCacheKey(mEnvironmentHash, mQuality);
     mCacheFile = ibl::cacheFilePath(mCacheDir, key);
     try {
         ibl::writeCacheFile(mCacheFile, key, readBack());
         mCacheNote = "wrote " + mCacheFile.string();
+        const size_t evicted = ibl::evictCacheFiles(mCacheDir, ibl::kIblCacheCapBytes, mCacheFile).size();
+        if (evicted)
+            mCacheNote += " (" + std::to_string(evicted) + " least recently used maps removed: the folder's cap is " +
+                          formatBytes(ibl::kIblCacheCapBytes) + ")";
     } catch (const UserError& e) {
         // A cache that cannot be written costs the next run a precompute; it is not an error.
         mCacheNote = std::string("not written: ") + e.what();
@@ -114,7 +135,7 @@ void IblMaps::writeCache() {
 }
 
 bool IblMaps::loadCache() {
-    const ibl::IblCacheKey key = cacheKey(mEnvironmentHash, mQuality);
+    const ibl::IblCacheKey key = iblCacheKey(mEnvironmentHash, mQuality);
     const std::filesystem::path path = ibl::cacheFilePath(mCacheDir, key);
     std::string reason;
     std::optional<std::vector<ibl::CachedImage>> images = ibl::readCacheFile(path, key, &reason);
@@ -163,6 +184,7 @@ bool IblMaps::loadCache() {
     mLutPending = false;
     mCacheFile = path;
     mCacheNote = "loaded " + path.string();
+    ibl::touchCacheFile(path);  // recently used: evicted last
     return true;
 }
 

@@ -37,6 +37,9 @@ struct DeviceOptions {
     // The folder of the on-disk pipeline cache: "" the user's cache folder ($XDG_CACHE_HOME/candela),
     // "off" none.
     std::string pipelineCache;
+    // The folder of the on-disk cache of environments' precomputed maps: "" the user's cache
+    // folder's ($XDG_CACHE_HOME/candela/ibl), "off" none (computed for every new environment).
+    std::string iblCache;
     // Caps the device memory used (MiB; 0: the device's own limit). Beyond it: OutOfMemoryError.
     uint32_t memoryBudgetMib = 0;
 };

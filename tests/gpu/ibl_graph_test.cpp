@@ -190,7 +190,7 @@ TEST_F(IblGraphTest, CacheReplacesThePrecomputeOfALaterRunAndACorruptFileIsRecom
         EXPECT_TRUE(explains(renderer, "ibl cache: ")) << "why the file was not used";
         EXPECT_TRUE(recomputed == computed);
         std::string reason;
-        EXPECT_TRUE(ibl::readCacheFile(file, {assets::contentHash(mSky), s.iblQuality.canonical()}, &reason).has_value())
+        EXPECT_TRUE(ibl::readCacheFile(file, ibl_maps::iblCacheKey(assets::contentHash(mSky), s.iblQuality), &reason).has_value())
             << reason;
     }
     std::filesystem::remove_all(dir);
