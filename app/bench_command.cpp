@@ -17,6 +17,7 @@
 
 #include "core/errors.h"
 #include "core/log.h"
+#include "bench_cold.h"
 #include "statistics.h"
 
 #include <nlohmann/json.hpp>
@@ -311,6 +312,7 @@ void printBench(const BenchOptions& options, const scene::Scene& scene, const po
 }  // namespace
 
 int runBench(const BenchOptions& options) {
+    if (options.cold > 0) return runColdBench(options);
     const auto loadStart = Clock::now();
     const scene::Scene scene = loadScene(options);
     BenchResult b;

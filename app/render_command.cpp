@@ -208,6 +208,9 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
     r.warnings = scene.report.warnings;
     r.notes = scene.report.notes;
     log::Capture capture;  // what the renderer logs from here on belongs to this scene
+    const uint32_t precomputesBefore = run.session.renderer().precomputeCount();
+    const double lodBefore = scene.report.geometry.lodMilliseconds;
+    const vk::Context::PipelineCreation pipelinesBefore = run.session.context().pipelineCreation();
     warnAnimationConflicts(options, scene);  // once per scene, whatever the variants
 
     std::vector<std::string> variants;  // "": the default materials
@@ -257,10 +260,13 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
             double gpu = 0.0;
             for (double ms : frame.timings.gpuMs) gpu += std::max(ms, 0.0);
             r.gpuMs.push_back(gpu);
+            r.readbackMs.push_back(frame.readbackMs);
             const std::optional<uint32_t> frameNumber = run.sequence ? std::optional(i) : std::nullopt;
             const std::string out = expandOutPattern(options.out, {r.input.name, r.input.path, variantName, frameNumber});
             createFolderOf(out);
+            const auto encodeStart = Clock::now();
             candela::writeImage(out, image, candela::OutputFileFormat(uint32_t(options.outputsFormat)));
+            r.encodeMs.push_back(msSince(encodeStart));
             for (const std::string& file : filesOf(options, out)) r.outputs.push_back({file, outputLabel(variant, frameNumber)});
             if (run.sequence)
                 cameras.push_back({.file = out, .camera = image.camera,
@@ -273,9 +279,21 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
         if (run.sequence) writeTransforms(transformsFileOf(options, r.input, variantName, !run.batch), cameras);
     }
     r.geometryMs = scene.report.geometry.milliseconds;  // with the levels of detail, if they were built
+    r.lodMs = scene.report.geometry.lodMilliseconds - lodBefore;
+    r.parseMs = std::max(0.0, r.loadMs - r.imageDecodeMs - r.decompressionMs - (r.geometryMs - r.lodMs));
+    const vk::Context::PipelineCreation pipelines = run.session.context().pipelineCreation();
+    r.pipelines = pipelines.count - pipelinesBefore.count;
+    r.pipelineMs = pipelines.milliseconds - pipelinesBefore.milliseconds;
     const passes::DrawStats& stats = run.session.renderer().drawStats();
     r.triangles = stats.sceneTriangles;
     r.draws = stats.sceneDraws;
+    r.work = {.drawsSubmitted = stats.submittedDraws, .culledDraws = stats.culledDraws, .coarserDraws = stats.coarserDraws,
+              .trianglesSubmitted = stats.submittedTriangles, .pipelineBinds = stats.pipelineBinds,
+              .descriptorBinds = stats.descriptorBinds, .texelsDecoded = scene.report.textureDecoding.decodedBytes / 4,
+              .simplifiedMeshes = scene.report.geometry.simplifiedMeshes,
+              .iblPrecomputes = run.session.renderer().precomputeCount() - precomputesBefore};
+    const graph::GraphDecl& graph = run.session.renderer().lastGraph().declaration();
+    for (uint32_t pass : run.session.renderer().lastGraph().compiled().order) r.work.passes.push_back(graph.passes[pass].name);
     if (const gpu_scene::GpuScene* uploaded = run.session.renderer().uploadedScene())
         for (size_t i = 0; i < scene.images.size(); ++i) {
             const scene::Image& image = scene.images[i];
@@ -390,6 +408,11 @@ void runScene(Run& run, LoadedScene loaded, SceneReport& r, RunReport& report, P
 // the summary lines; returns the exit code (rethrows a single scene's failure).
 int finishRun(Run& run, const RunReport& report, std::exception_ptr singleFailure) {
     const RenderOptions& options = run.options;
+    if (log::verbose()) {
+        for (const SceneReport& scene : report.scenes)
+            if (scene.ok && !scene.resumed) log::info(sceneTimeLine(scene));
+        log::info(runTimeLine(report));
+    }
     if (!options.report.empty()) writeText(options.report, reportJson(report));
     if (!options.html.empty()) reports::writeHtmlPage(options.html, renderPage(report, options.html), options.inlineImages);
     if (singleFailure) std::rethrow_exception(singleFailure);
@@ -434,6 +457,7 @@ int finishRun(Run& run, const RunReport& report, std::exception_ptr singleFailur
 
 int runRender(const RenderOptions& options) {
     const auto runStart = Clock::now();
+    const double processStartMs = processAgeMs();
     const std::vector<SceneInput> listed = listScenes(options);
     const std::vector<SceneInput> scenes = shardOf(listed, options.shard);
     const bool single = listed.size() == 1;
@@ -455,14 +479,18 @@ int runRender(const RenderOptions& options) {
     std::future<LoadedScene> next;
     const auto startLoad = [&](size_t i) { next = std::async(std::launch::async, load, std::cref(scenes[i]), std::cref(options)); };
     if (!pending.empty()) startLoad(pending[0]);
+    const auto environmentStart = Clock::now();
     Session session(options.common, options.env);
+    const double environmentMs = msSince(environmentStart);
     std::optional<LoadedScene> first;
     if (single && !pending.empty()) {
         // Bad input fails before the device starts, as it always has for one scene.
         first = next.get();
         if (first->error) std::rethrow_exception(first->error);
     }
+    const auto deviceStart = Clock::now();
     session.start();
+    const double deviceMs = msSince(deviceStart);
     Run run{options, session, format, !single, sequence};
     const vk::Context& context = session.context();
     const assets::Environment* environment = session.environment();
@@ -475,6 +503,9 @@ int runRender(const RenderOptions& options) {
                      .scenesListed = listed.size(),
                      .gpuMsUnreliable = !vk::timestampsMeasurePasses(context.caps().driver)};
     report.startupMs = msSince(runStart);
+    report.processStartMs = processStartMs;
+    report.environmentMs = environmentMs;
+    report.deviceMs = deviceMs;
     size_t reported = 0;  // report.scenes holds scenes [0, reported)
     const auto addResumed = [&](size_t i) {
         SceneReport& r = report.scenes.emplace_back();

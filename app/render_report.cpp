@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace candela::app {
 namespace {
@@ -36,11 +37,28 @@ Json sceneJson(const SceneReport& s) {
     out["imageDecodeMs"] = ms(s.imageDecodeMs);
     out["decompressionMs"] = ms(s.decompressionMs);
     out["geometryMs"] = ms(s.geometryMs);
+    out["parseMs"] = ms(s.parseMs);
+    out["lodMs"] = ms(s.lodMs);
     out["uploadMs"] = ms(s.uploadMs);
+    out["pipelines"] = s.pipelines;
+    out["pipelineMs"] = ms(s.pipelineMs);
     out["frameMs"] = msList(s.frameMs);
     out["gpuMs"] = msList(s.gpuMs);
+    out["readbackMs"] = msList(s.readbackMs);
+    out["encodeMs"] = msList(s.encodeMs);
     out["triangles"] = s.triangles;
     out["draws"] = s.draws;
+    const SceneReport::Work& w = s.work;
+    out["work"] = {{"drawsSubmitted", w.drawsSubmitted},
+                   {"culledDraws", w.culledDraws},
+                   {"coarserDraws", w.coarserDraws},
+                   {"trianglesSubmitted", w.trianglesSubmitted},
+                   {"pipelineBinds", w.pipelineBinds},
+                   {"descriptorBinds", w.descriptorBinds},
+                   {"passes", w.passes},
+                   {"texelsDecoded", w.texelsDecoded},
+                   {"simplifiedMeshes", w.simplifiedMeshes},
+                   {"iblPrecomputes", w.iblPrecomputes}};
     Json textures = Json::array();
     uint64_t encoded = 0, device = 0;
     for (const TextureReport& t : s.textures) {
@@ -77,6 +95,39 @@ size_t RunReport::failed() const {
     return size_t(std::count_if(scenes.begin(), scenes.end(), [](const SceneReport& s) { return !s.ok; }));
 }
 
+namespace {
+
+std::string millis(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, value < 10.0 ? "%.1f ms" : "%.0f ms", value);
+    return text;
+}
+
+double sum(const std::vector<double>& values) {
+    double total = 0.0;
+    for (double v : values) total += v;
+    return total;
+}
+
+}  // namespace
+
+std::string sceneTimeLine(const SceneReport& s) {
+    return "time to image, " + s.input.name + ": parse " + millis(s.parseMs) + ", texture decode " + millis(s.imageDecodeMs) +
+           ", Draco/meshopt " + millis(s.decompressionMs) + ", geometry " + millis(s.geometryMs - s.lodMs) +
+           " (waited for the load " + millis(s.loadWaitMs) + "), levels of detail " + millis(s.lodMs) + ", upload " +
+           millis(s.uploadMs) + ", " + std::to_string(s.frameMs.size()) + (s.frameMs.size() == 1 ? " frame " : " frames ") +
+           millis(sum(s.frameMs)) + " (of it read-back " + millis(sum(s.readbackMs)) + "; " + std::to_string(s.pipelines) +
+           " pipelines created, " + millis(s.pipelineMs) + " of the driver compiling their shaders), encoding and writing " +
+           millis(sum(s.encodeMs));
+}
+
+std::string runTimeLine(const RunReport& r) {
+    return "time to image, the run: process start " + (r.processStartMs >= 0.0 ? millis(r.processStartMs) : std::string("unknown")) +
+           ", environment " + millis(r.environmentMs) + ", device " + millis(r.deviceMs) + " (start-up " + millis(r.startupMs) +
+           "), environment precompute " + (r.precomputeMs >= 0.0 ? millis(r.precomputeMs) + " (in the first frame)" : std::string("none")) +
+           ", total " + millis(r.totalMs);
+}
+
 std::string reportJson(const RunReport& r) {
     Json out;
     out["candela"] = r.version;
@@ -89,7 +140,10 @@ std::string reportJson(const RunReport& r) {
     out["scenesRendered"] = r.scenes.size() - r.failed();
     out["scenesFailed"] = r.failed();
     out["totalMs"] = ms(r.totalMs);
+    out["processStartMs"] = ms(r.processStartMs);
     out["startupMs"] = ms(r.startupMs);
+    out["environmentMs"] = ms(r.environmentMs);
+    out["deviceMs"] = ms(r.deviceMs);
     out["precomputeMs"] = ms(r.precomputeMs);
     out["precomputes"] = r.precomputes;
     out["peakHostBytes"] = r.peakHostBytes;

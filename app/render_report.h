@@ -29,11 +29,31 @@ struct SceneReport {
     double decompressionMs = 0.0;   // Draco and meshopt geometry
     double geometryMs = 0.0;        // preparing the geometry (optimized orders, levels of detail)
     double loadWaitMs = 0.0;  // how long rendering waited for the load; the rest overlapped the previous scene
+    double parseMs = 0.0;   // of loadMs, the rest: reading and parsing the file, converting its data
+    double lodMs = 0.0;     // building its levels of detail before its frames (the cost model's choice)
     double uploadMs = 0.0;  // to device memory, waited for
+    uint64_t pipelines = 0;     // pipelines created during its frames,
+    double pipelineMs = 0.0;    // and the time that took, summed over threads (lavapipe's shader JIT)
     std::vector<double> frameMs;  // per image written: render, wait and read back (CPU wall time)
     std::vector<double> gpuMs;    // per image written: the GPU time of its passes
+    std::vector<double> readbackMs;  // per image written: of frameMs, copying the pixels to the host
+    std::vector<double> encodeMs;    // per image written: encoding and writing its files
     uint64_t triangles = 0;       // of the scene's draws (full detail)
     uint32_t draws = 0;
+    // The work its images asked of the renderer, in deterministic counts (the times above vary):
+    // the last image's draws, triangles, levels, state changes and scheduled passes; the texels
+    // decoded from the file; the meshes given levels of detail; the environment precomputes its
+    // frames ran (0: the maps were kept, or loaded from the cache). Pinned for the default views by
+    // tests/cli/work_counters_test.cpp.
+    struct Work {
+        uint32_t drawsSubmitted = 0, culledDraws = 0, coarserDraws = 0;
+        uint64_t trianglesSubmitted = 0;
+        uint32_t pipelineBinds = 0, descriptorBinds = 0;
+        std::vector<std::string> passes;
+        uint64_t texelsDecoded = 0;
+        uint64_t simplifiedMeshes = 0;
+        uint32_t iblPrecomputes = 0;
+    } work;
     std::vector<TextureReport> textures;
     std::vector<std::string> extensions;  // the file's extensionsUsed
     std::vector<std::string> variants;    // the KHR_materials_variants drawn ("" for the default materials)
@@ -62,7 +82,10 @@ struct RunReport {
     Shard shard;
     size_t scenesListed = 0;   // before --shard took this machine's share
     double totalMs = 0.0;      // the whole run, device creation included
-    double startupMs = 0.0;    // device creation and environment loading
+    double processStartMs = -1.0;  // from the process's creation to the render command (negative: unknown)
+    double startupMs = 0.0;    // device creation and environment loading, of which:
+    double environmentMs = 0.0;  //   reading (or making) the environment
+    double deviceMs = 0.0;       //   starting the device and the renderer
     double precomputeMs = -1.0;  // the environment's precompute (negative: none)
     uint32_t precomputes = 0;    // how often the environment was precomputed (1 with an environment)
     uint64_t peakHostBytes = 0;    // the largest SceneReport::hostBytes
@@ -76,5 +99,11 @@ struct RunReport {
 
 // The report as JSON (fields described in docs/pipelines.md).
 std::string reportJson(const RunReport& report);
+
+// The time-to-image profile in words (--verbose): where a scene's time went, from its file to its
+// files written, e.g. "time to image, Duck: parse 4 ms, texture decode 12 ms, …"; and the run's
+// own part, from the process's creation to the first scene.
+std::string sceneTimeLine(const SceneReport& scene);
+std::string runTimeLine(const RunReport& report);
 
 }  // namespace candela::app

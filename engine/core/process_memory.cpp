@@ -1,6 +1,10 @@
 #include "core/process_memory.h"
 
+#include <ctime>
 #include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
 #include <malloc.h>
 #include <unistd.h>
 
@@ -34,6 +38,25 @@ void returnFreedHeapMemory() {
 #if defined(__GLIBC__)
     malloc_trim(0);
 #endif
+}
+
+double processAgeMs() {
+    std::ifstream in("/proc/self/stat");
+    std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // Field 22 (starttime) counts from the closing parenthesis of field 2 (the command may hold spaces).
+    const size_t close = stat.rfind(')');
+    if (close == std::string::npos) return -1.0;
+    std::istringstream fields(stat.substr(close + 2));
+    std::string field;
+    for (int i = 3; i < 22 && fields >> field; ++i) {
+    }
+    unsigned long long startTicks = 0;
+    if (!(fields >> startTicks)) return -1.0;
+    const long ticksPerSecond = sysconf(_SC_CLK_TCK);
+    timespec now{};
+    if (ticksPerSecond <= 0 || clock_gettime(CLOCK_BOOTTIME, &now) != 0) return -1.0;
+    const double nowMs = double(now.tv_sec) * 1000.0 + double(now.tv_nsec) * 1e-6;
+    return nowMs - double(startTicks) * 1000.0 / double(ticksPerSecond);
 }
 
 }  // namespace candela

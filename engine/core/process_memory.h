@@ -1,5 +1,6 @@
 #pragma once
-// The process's resident set size (host memory actually in RAM), for the soak measurements.
+// The process's resident set size (host memory actually in RAM), for the soak measurements, and
+// its age (the time-to-image profile).
 
 #include <cstdint>
 
@@ -17,5 +18,8 @@ uint64_t heapMappedBytes();
 // Gives the memory the C heap holds free back to the system (glibc: malloc_trim), so that the
 // resident size shows what is in use (a run over many scenes, between scenes). No-op elsewhere.
 void returnFreedHeapMemory();
+// Milliseconds since the process was created (Linux: /proc/self/stat's start time, in clock ticks
+// of 10 ms, against CLOCK_BOOTTIME); negative where not available.
+double processAgeMs();
 
 }  // namespace candela

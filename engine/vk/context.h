@@ -118,6 +118,18 @@ public:
     // its file (written back when the context is destroyed).
     VkPipelineCache pipelineCache() const;
     const PipelineCacheFile& pipelineCacheFile() const { return *mPipelineCache; }
+    // The pipelines created since the context was, and the time their vkCreate*Pipelines calls
+    // took, summed over the threads that made them (a CPU driver compiles the shaders then:
+    // lavapipe's LLVM JIT). Pipeline::compute and ::graphics count themselves; any thread.
+    struct PipelineCreation {
+        uint64_t count = 0;
+        double milliseconds = 0.0;
+    };
+    PipelineCreation pipelineCreation() const { return {mPipelinesCreated.load(), double(mPipelineNanoseconds.load()) * 1e-6}; }
+    void countPipelineCreation(uint64_t nanoseconds) {
+        ++mPipelinesCreated;
+        mPipelineNanoseconds += nanoseconds;
+    }
 
     // Validation messages (warnings and errors) seen since creation.
     uint32_t validationMessageCount() const { return mValidationCount.load(); }
@@ -178,6 +190,7 @@ private:
     std::function<void(const ValidationMessage&)> mOnValidation;
     options::DeviceProfile mProfile = options::DeviceProfile::Native;
     std::atomic<uint32_t> mValidationCount{0};
+    std::atomic<uint64_t> mPipelinesCreated{0}, mPipelineNanoseconds{0};
     mutable std::mutex mValidationMutex;
     std::vector<ValidationMessage> mValidationMessages;
     InstanceOwner mInstance;

@@ -7,6 +7,7 @@
 #include "vk/device_choices.h"
 
 #include <algorithm>
+#include <chrono>
 
 namespace candela::vk {
 
@@ -126,7 +127,9 @@ Pipeline Pipeline::compute(Context& context, std::string_view shaderName, const 
                   .pSpecializationInfo = constants.get()},
         .layout = out.mProgram.layout()};
     VkPipeline pipeline = VK_NULL_HANDLE;
+    const auto start = std::chrono::steady_clock::now();
     VK_CHECK(vkCreateComputePipelines(context.device(), context.pipelineCache(), 1, &info, nullptr, &pipeline));
+    context.countPipelineCreation(uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start).count()));
     out.mPipeline = PipelineHandle(context, pipeline);
     return out;
 }
@@ -213,7 +216,9 @@ Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std
                                             .pDynamicState = &dynamic,
                                             .layout = out.mProgram.layout()};
     VkPipeline pipeline = VK_NULL_HANDLE;
+    const auto start = std::chrono::steady_clock::now();
     VK_CHECK(vkCreateGraphicsPipelines(context.device(), context.pipelineCache(), 1, &info, nullptr, &pipeline));
+    context.countPipelineCreation(uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start).count()));
     out.mPipeline = PipelineHandle(context, pipeline);
     return out;
 }

@@ -1,3 +1,4 @@
+#include "bench_cli.h"
 #include "cli.h"
 #include "core/errors.h"
 
@@ -63,6 +64,17 @@ TEST(CliParse, SceneLights) {
     EXPECT_TRUE(parseCommandLine({"bench", "--scene-lights=on"}).bench.sceneLights);
     EXPECT_FALSE(parseCommandLine({"view", "--scene-lights", "off"}).view.sceneLights);
     EXPECT_THROW(parseCommandLine({"render", "--scene-lights", "no"}), UserError);
+}
+
+TEST(CliParse, BenchColdPassesOnTheRenderFlagsAlone) {
+    const Command c = parseCommandLine({"bench", "--cold", "3", "--scene", "x.glb", "--frames=5", "--json", "--width", "64",
+                                        "--explain", "--in-flight", "--frames", "2", "--ibl-cache", "off"});
+    EXPECT_EQ(c.bench.cold, 3u);
+    EXPECT_EQ(c.bench.arguments.size(), 14u);
+    EXPECT_EQ(coldRenderArguments(c.bench.arguments),
+              (std::vector<std::string>{"--scene", "x.glb", "--width", "64", "--ibl-cache", "off"}));
+    EXPECT_EQ(coldRenderArguments({"--cold=2"}), std::vector<std::string>{});
+    EXPECT_EQ(parseCommandLine({"bench"}).bench.cold, 0u);
 }
 
 TEST(CliParse, Errors) {
