@@ -1,10 +1,10 @@
 #include "assets/image_file.h"
 
 #include "assets/output_file.h"
+#include "assets/png_encoder.h"
 #include "core/cache_files.h"
 #include "core/errors.h"
 
-#include <stb_image_write.h>
 
 #include <algorithm>
 #include <cctype>
@@ -54,14 +54,8 @@ void checkWritable(const std::filesystem::path& path) {
 
 void writePng(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const uint8_t> rgba) {
     checkSize(path, width, height, rgba.size(), 4);
-    writeFileAtomically(path, [&](std::ostream& out) {
-        const auto append = [](void* stream, void* data, int size) {
-            static_cast<std::ostream*>(stream)->write(static_cast<const char*>(data), size);
-        };
-        if (!stbi_write_png_to_func(append, &out, static_cast<int>(width), static_cast<int>(height), 4, rgba.data(),
-                                    static_cast<int>(width * 4)))
-            throw UserError(path.string() + ": cannot write PNG");
-    });
+    const std::vector<uint8_t> png = encodePng(width, height, rgba);
+    writeFileAtomically(path, [&](std::ostream& out) { out.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size())); });
 }
 
 void writeExr(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const float> rgba) {
