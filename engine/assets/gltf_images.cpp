@@ -4,6 +4,7 @@
 #include "assets/image_file.h"
 
 #include "core/errors.h"
+#include "core/parallel_for.h"
 #include "textures/ktx2_file.h"
 #include "textures/webp_image.h"
 
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <exception>
 #include <limits>
 #include <memory>
 
@@ -68,11 +70,6 @@ ImageHeader texturesHeader(std::span<const uint8_t> bytes, uint32_t maxDimension
     return {width, height, 1};
 }
 
-// Forwards a decoder's notes and warnings to the load's log, naming the image.
-void report(const LoadContext& ctx, const textures::DecodedTexture& texture, const std::string& what) {
-    for (const std::string& note : texture.report.notes) ctx.note(what + ": " + note);
-    for (const std::string& warning : texture.report.warnings) ctx.warn(what + ": " + warning);
-}
 
 }  // namespace
 
@@ -116,7 +113,8 @@ DecodedImage decodeImage(const LoadContext& ctx, std::span<const uint8_t> bytes,
         } catch (const UserError& e) {
             ctx.fail(what + ": " + e.what());
         }
-        report(ctx, texture, what);
+        for (const std::string& note : texture.report.notes) image.notes.push_back(what + ": " + note);
+        for (const std::string& warning : texture.report.warnings) image.warnings.push_back(what + ": " + warning);
         if (textures::isKtx2(bytes)) {
             const textures::Ktx2Info info = textures::readKtx2Info(bytes, maxDimension);
             image.fileSrgb = info.srgb;
@@ -203,6 +201,17 @@ void ImageTable::checkDecodedSize(const std::set<std::pair<int, bool>>& uses) {
                   formatBytes(mOptions.maxTotalImageBytes) + " per scene");
 }
 
+DecodedImage& ImageTable::keep(int index, DecodedImage image, uint64_t declaredBytes) {
+    for (const std::string& note : image.notes) mCtx.note(note);
+    for (const std::string& warning : image.warnings) mCtx.warn(warning);
+    scene::SceneLoadReport::TextureDecoding& stats = mScene.report.textureDecoding;
+    ++stats.formats[image.format];
+    stats.encodedBytes += image.encodedBytes;
+    stats.decodedBytes += declaredBytes;
+    mEncoded.erase(index);
+    return mDecoded[index] = std::move(image);
+}
+
 DecodedImage& ImageTable::decoded(int index) {
     auto it = mDecoded.find(index);
     if (it != mDecoded.end()) return it->second;
@@ -210,15 +219,49 @@ DecodedImage& ImageTable::decoded(int index) {
     const uint64_t decodedBytes = declaredBytes(index);  // the per-image limit, before any pixel is decoded
     const auto start = std::chrono::steady_clock::now();
     const std::span<const uint8_t> bytes = encoded(index, what);
-    DecodedImage& out = mDecoded[index] = decodeImage(mCtx, bytes, what, mOptions.maxImageDimension);
-    out.encodedBytes = bytes.size();
-    scene::SceneLoadReport::TextureDecoding& stats = mScene.report.textureDecoding;
-    stats.milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    ++stats.formats[out.format];
-    stats.encodedBytes += bytes.size();
-    stats.decodedBytes += decodedBytes;
-    mEncoded.erase(index);
-    return out;
+    DecodedImage image = decodeImage(mCtx, bytes, what, mOptions.maxImageDimension);
+    image.encodedBytes = bytes.size();
+    mScene.report.textureDecoding.milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return keep(index, std::move(image), decodedBytes);
+}
+
+void ImageTable::decodeAll(const std::set<std::pair<int, bool>>& uses) {
+    // Each image once, the largest files first; their encoded bytes and declared sizes found here
+    // (bufferViews range-checked, limits applied) before any decoding starts.
+    struct Job {
+        int index;
+        std::string what;
+        std::span<const uint8_t> bytes;
+        uint64_t declaredBytes;
+    };
+    std::vector<Job> jobs;
+    for (const auto& [index, srgb] : uses) {
+        if (index < 0 || size_t(index) >= mModel.images.size() || mDecoded.count(index) ||
+            (!jobs.empty() && jobs.back().index == index))
+            continue;
+        const std::string what = label("image", index, mModel.images[size_t(index)].name);
+        jobs.push_back({index, what, encoded(index, what), declaredBytes(index)});
+    }
+    std::vector<size_t> order(jobs.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return jobs[a].bytes.size() > jobs[b].bytes.size(); });
+    std::vector<DecodedImage> images(jobs.size());
+    std::vector<std::exception_ptr> errors(jobs.size());
+    const auto start = std::chrono::steady_clock::now();
+    parallelFor(order.size(), [&](size_t k) {
+        const Job& job = jobs[order[k]];
+        try {
+            images[order[k]] = decodeImage(mCtx, job.bytes, job.what, mOptions.maxImageDimension);
+            images[order[k]].encodedBytes = job.bytes.size();
+        } catch (...) {
+            errors[order[k]] = std::current_exception();
+        }
+    });
+    mScene.report.textureDecoding.milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    for (size_t j = 0; j < jobs.size(); ++j) {
+        if (errors[j]) std::rethrow_exception(errors[j]);
+        keep(jobs[j].index, std::move(images[j]), jobs[j].declaredBytes);
+    }
 }
 
 int ImageTable::resolve(int index, bool srgb) {

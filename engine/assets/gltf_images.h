@@ -31,6 +31,9 @@ struct DecodedImage {
     std::optional<bool> fileSrgb;            // the transfer function a KTX2 file declares
     std::string format;                      // as SceneLoadReport::TextureDecoding::formats names it
     uint64_t encodedBytes = 0;               // of the file (or buffer view) it was decoded from
+    // The decoder's notes and warnings, each naming the image: for the load's log, in image order
+    // (images decode in parallel; the log is written on the loading thread).
+    std::vector<std::string> notes, warnings;
 };
 
 // What an image's header declares, read without decoding a pixel.
@@ -49,7 +52,8 @@ ImageHeader checkImageHeader(const LoadContext& ctx, std::span<const uint8_t> by
 
 // Decodes `bytes` to RGBA8 after checkImageHeader, so an absurd declared size allocates nothing.
 // 16-bit sources are rounded to 8 bits; a KTX2 file's own mip levels are kept. The decoders' notes
-// and warnings go to ctx, prefixed with `what`. Throws via ctx.fail("WHAT: problem").
+// and warnings are returned in the image's, prefixed with `what`. Throws via ctx.fail("WHAT:
+// problem"). Safe to call on several threads at once.
 DecodedImage decodeImage(const LoadContext& ctx, std::span<const uint8_t> bytes, const std::string& what,
                          uint32_t maxDimension);
 
@@ -72,12 +76,21 @@ public:
     // (resolve's callers report them).
     void checkDecodedSize(const std::set<std::pair<int, bool>>& uses);
 
+    // Decodes every image of `uses` ((glTF image, srgb) pairs; indices out of range skipped) at
+    // once, on every core (parallelFor, the largest files first), for resolve to take; their notes
+    // and warnings go to the log in image order, and the first failure in image order is thrown.
+    // The report's decode time is the wall time this takes.
+    void decodeAll(const std::set<std::pair<int, bool>>& uses);
+
     // The Scene::images index for glTF image `image` used with the given encoding; decodes it on first
-    // use (bufferView images are range-checked here). Precondition: 0 <= image < model.images.size().
+    // use unless decodeAll did (bufferView images are range-checked here). Precondition: 0 <= image
+    // < model.images.size().
     int resolve(int image, bool srgb);
 
 private:
     DecodedImage& decoded(int image);
+    // Takes a decoded image into the table: its notes and warnings to the log, its sizes to the report.
+    DecodedImage& keep(int image, DecodedImage decoded, uint64_t declaredBytes);
     // The encoded bytes of glTF image `image` (bufferView images are range-checked here).
     std::span<const uint8_t> encoded(int image, const std::string& what);
     // The RGBA8 bytes the image's header declares; fails above the per-image limit.

@@ -389,7 +389,9 @@ void loadSamplers(const LoadContext& ctx, const tinygltf::Model& model, scene::S
 }
 
 void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images, scene::Scene& scene) {
-    images.checkDecodedSize(imageUses(model));
+    const std::set<std::pair<int, bool>> uses = imageUses(model);
+    images.checkDecodedSize(uses);
+    images.decodeAll(uses);
     std::map<std::pair<int, float>, int> derivedImages;  // roughness images made from glossiness
     for (size_t i = 0; i < model.materials.size(); ++i) {
         const tinygltf::Material& m = model.materials[i];
