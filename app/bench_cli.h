@@ -17,7 +17,6 @@ struct BenchOptions : SceneRenderOptions {
     bool json = false;      // --json
     bool inFlight = false;  // --in-flight (also frames as the viewer runs them, offscreen)
     uint32_t cold = 0;      // --cold N: N fresh render processes instead (bench_cold.h)
-    std::vector<std::string> arguments;  // the command line after "bench" (what --cold passes on)
     // --outputs LIST: the per-pixel outputs each measured frame makes (the aov pass's cost).
     options::PixelOutputs outputs{options::PixelOutput::Color};
     bool operator==(const BenchOptions&) const = default;

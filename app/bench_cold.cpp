@@ -60,11 +60,11 @@ std::string firstLine(const fs::path& file) {
 
 }  // namespace
 
-int runColdBench(const BenchOptions& options) {
+int runColdBench(const BenchOptions& options, const std::vector<std::string>& benchArguments) {
     const fs::path folder = fs::temp_directory_path() / ("candela-bench-cold-" + std::to_string(::getpid()));
     fs::create_directories(folder);
     std::vector<std::string> arguments = {"render"};
-    for (const std::string& word : coldRenderArguments(options.arguments)) arguments.push_back(word);
+    for (const std::string& word : coldRenderArguments(benchArguments)) arguments.push_back(word);
     arguments.insert(arguments.end(), {"--out", (folder / "cold.png").string(), "--quiet"});
     const fs::path errors = folder / "stderr.txt";
 

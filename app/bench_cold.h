@@ -8,8 +8,8 @@
 
 namespace candela::app {
 
-// Runs the cold measurement and prints it (as JSON with --json). Returns the exit code.
-// Precondition: options.cold > 0.
-int runColdBench(const BenchOptions& options);
+// Runs the cold measurement of the bench command line `arguments` (after "bench") and prints it (as
+// JSON with --json). Returns the exit code. Precondition: options.cold > 0.
+int runColdBench(const BenchOptions& options, const std::vector<std::string>& arguments);
 
 }  // namespace candela::app

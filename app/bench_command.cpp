@@ -311,8 +311,8 @@ void printBench(const BenchOptions& options, const scene::Scene& scene, const po
 
 }  // namespace
 
-int runBench(const BenchOptions& options) {
-    if (options.cold > 0) return runColdBench(options);
+int runBench(const BenchOptions& options, const std::vector<std::string>& arguments) {
+    if (options.cold > 0) return runColdBench(options, arguments);
     const auto loadStart = Clock::now();
     const scene::Scene scene = loadScene(options);
     BenchResult b;

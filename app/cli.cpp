@@ -118,7 +118,7 @@ Command parseCommandLine(const std::vector<std::string>& args) {
         return command;
     }
     command.kind = info->kind;
-    if (command.kind == Kind::Bench) command.bench.arguments.assign(args.begin() + 1, args.end());
+    command.arguments.assign(args.begin() + 1, args.end());
     for (const Flag& flag : flagTable())
         if (const FlagUse* use = flag.use(command.kind); use && !use->defaultValue.empty()) flag.set(command, flag.name, use->defaultValue);
 

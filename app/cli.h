@@ -33,6 +33,8 @@ struct Command {
     ScaleReportOptions scaleReport;
     QualityReportOptions qualityReport;
     DiffOptions diff;
+    // The command line after the command's name, as given (what `bench --cold` passes on to render).
+    std::vector<std::string> arguments;
     // The common options of the command (defaults for help and version).
     const CommonOptions& common() const;
     CommonOptions& common();

@@ -8,11 +8,12 @@
 #include <initializer_list>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace candela::app {
 
 int runRender(const RenderOptions& options);
-int runBench(const BenchOptions& options);
+int runBench(const BenchOptions& options, const std::vector<std::string>& arguments);
 int runView(const ViewOptions& options);
 int runInfo(const InfoOptions& options);
 int runIblReport(const IblReportOptions& options);

@@ -20,7 +20,7 @@ int run(const Command& command) {
         case Command::Kind::Render: return runRender(command.render);
         case Command::Kind::View: return runView(command.view);
         case Command::Kind::Info: return runInfo(command.info);
-        case Command::Kind::Bench: return runBench(command.bench);
+        case Command::Kind::Bench: return runBench(command.bench, command.arguments);
         case Command::Kind::IblReport: return runIblReport(command.iblReport);
         case Command::Kind::Soak: return runSoak(command.soak);
         case Command::Kind::ScaleReport: return runScaleReport(command.scaleReport);

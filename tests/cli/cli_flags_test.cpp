@@ -47,7 +47,7 @@ const std::map<std::string, std::string> kExamples = {
     {"--switch-every", "10"}, {"--sample-every", "10"}, {"--ppd", "40"}, {"--monitor-distance", "1"},
     {"--monitor-width", "0.5"}, {"--monitor-resolution", "1920"}, {"--threshold", "2"}, {"--max-flip", "0.05"},
     {"--max-fraction", "0.001"}, {"--error-maps", "maps"}, {"--device", "0"}, {"--device-profile", "minimum"},
-    {"--memory-budget", "64"}, {"--pipeline-cache", "cache"},
+    {"--memory-budget", "64"}, {"--pipeline-cache", "cache"}, {"--cold", "2"},
 };
 
 // The example of `flag` ("" for a switch).

@@ -70,8 +70,8 @@ TEST(CliParse, BenchColdPassesOnTheRenderFlagsAlone) {
     const Command c = parseCommandLine({"bench", "--cold", "3", "--scene", "x.glb", "--frames=5", "--json", "--width", "64",
                                         "--explain", "--in-flight", "--frames", "2", "--ibl-cache", "off"});
     EXPECT_EQ(c.bench.cold, 3u);
-    EXPECT_EQ(c.bench.arguments.size(), 14u);
-    EXPECT_EQ(coldRenderArguments(c.bench.arguments),
+    EXPECT_EQ(c.arguments.size(), 14u);
+    EXPECT_EQ(coldRenderArguments(c.arguments),
               (std::vector<std::string>{"--scene", "x.glb", "--width", "64", "--ibl-cache", "off"}));
     EXPECT_EQ(coldRenderArguments({"--cold=2"}), std::vector<std::string>{});
     EXPECT_EQ(parseCommandLine({"bench"}).bench.cold, 0u);
