@@ -5,20 +5,18 @@
 #include "stopwatch.h"
 
 #include "core/errors.h"
-#include "core/log.h"
 
 #include <nlohmann/json.hpp>
 
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
-#include <unistd.h>
 
 extern char** environ;
 

@@ -110,7 +110,8 @@ void prepareGeometry(scene::Scene& scene, LevelsOfDetail lod, const LodChainSett
         }
     }
     report.milliseconds = msSince(start);
-    report.lodDeferred = lod == LevelsOfDetail::Defer && lodCandidateTriangles(scene) > 0;
+    report.lodDeferred = lod == LevelsOfDetail::Defer &&
+                         std::any_of(meshes.begin(), meshes.end(), [&](const Mesh& mesh) { return candidate(scene, mesh); });
     if (lod == LevelsOfDetail::Build) buildLevelsOfDetail(scene, settings);
 }
 

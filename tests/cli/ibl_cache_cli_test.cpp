@@ -9,13 +9,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
 namespace {
 
 namespace fs = std::filesystem;
+using candela::test::fileText;
 using candela::test::Result;
 using candela::test::run;
 
@@ -25,11 +25,6 @@ std::vector<fs::path> mapFiles(const fs::path& folder) {
     for (const auto& entry : fs::directory_iterator(folder, ec))
         if (entry.path().extension() == ".cibl") out.push_back(entry.path());
     return out;
-}
-
-std::string fileText(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 fs::path mapsFolder() { return fs::path(std::getenv("XDG_CACHE_HOME")) / "candela" / "ibl"; }

@@ -9,13 +9,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
 namespace {
 
 namespace fs = std::filesystem;
+using candela::test::fileText;
 using candela::test::Result;
 using candela::test::run;
 
@@ -26,11 +26,6 @@ std::vector<fs::path> cacheFiles(const fs::path& folder) {
     for (const auto& entry : fs::directory_iterator(folder, ec))
         if (entry.path().filename().string().rfind("pipelines-", 0) == 0) out.push_back(entry.path());
     return out;
-}
-
-std::string readText(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 fs::path userFolder() { return fs::path(std::getenv("XDG_CACHE_HOME")) / "candela"; }
@@ -45,13 +40,13 @@ TEST(CliPipelineCache, DefaultsToTheUsersCacheFolderAndReplacesADamagedFileQuiet
     ASSERT_EQ(r.exitCode, 0) << r.stderrText;
     const std::vector<fs::path> files = cacheFiles(userFolder());
     ASSERT_EQ(files.size(), 1u);
-    EXPECT_EQ(readText(files[0]).substr(0, 12), std::string("CANDELA-PSO\0", 12));
+    EXPECT_EQ(fileText(files[0]).substr(0, 12), std::string("CANDELA-PSO\0", 12));
 
     std::ofstream(files[0], std::ios::binary | std::ios::trunc) << "not a pipeline cache";
     r = run(kSmallRender + (out / "b.png").string());
     ASSERT_EQ(r.exitCode, 0) << r.stderrText;
     EXPECT_EQ(r.stderrText, "");  // ignored without a word...
-    EXPECT_EQ(readText(files[0]).substr(0, 12), std::string("CANDELA-PSO\0", 12));  // ...and replaced
+    EXPECT_EQ(fileText(files[0]).substr(0, 12), std::string("CANDELA-PSO\0", 12));  // ...and replaced
     std::ofstream(files[0], std::ios::binary | std::ios::trunc) << "not a pipeline cache";
     r = run(kSmallRender + (out / "c.png").string() + " --verbose");
     ASSERT_EQ(r.exitCode, 0) << r.stderrText;

@@ -56,4 +56,10 @@ inline Result run(const std::string& args) {
     return result;
 }
 
+// The bytes of the file at `path` ("" when it cannot be read).
+inline std::string fileText(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
 }  // namespace candela::test
