@@ -14,11 +14,8 @@ layout(push_constant) uniform Push {
 
 #include "shared/sky.glsl"
 
-layout(location = 0) in vec2 inUv;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    vec3 sky = skyRadiance(push.inverseViewProjection, push.eye.xyz, push.ibl.rotation.xy, push.ibl.skyboxLod, push.ibl.intensity,
-                           inUv * 2.0f - 1.0f);
-    outColor = vec4(sky, 1.0f);
+    outColor = vec4(skyRadiance(push.rays, gl_FragCoord.xy, push.ibl.skyboxLod, push.ibl.intensity), 1.0f);
 }

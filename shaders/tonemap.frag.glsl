@@ -7,9 +7,6 @@
 // its RGB is premultiplied by coverage.
 #include "shared/tonemap.h"
 #include "shared/specialization_ids.h"
-#ifdef CANDELA_TONEMAP_SKY
-#include "shared/ibl.h"
-#endif
 
 // Specialization constants: llvmpipe executes both sides of uniform branches, so the operator and
 // the output options are compiled in rather than selected at run time.
@@ -49,9 +46,7 @@ void main() {
     vec4 hdr = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0);
 #ifdef CANDELA_TONEMAP_SKY
     // Under the image, as the skybox pass blends it: colour += (1 − coverage) · sky, coverage 1.
-    vec2 ndc = gl_FragCoord.xy / vec2(textureSize(hdrImage, 0)) * 2.0f - 1.0f;
-    vec3 behind = skyRadiance(sky.inverseViewProjection, sky.eyeIntensity.xyz, sky.rotationLod.xy, sky.rotationLod.z,
-                              sky.eyeIntensity.w, ndc);
+    vec3 behind = skyRadiance(sky.rays, gl_FragCoord.xy, sky.intensityLod.y, sky.intensityLod.x);
     hdr = vec4(hdr.rgb + (1.0f - clamp(hdr.a, 0.0f, 1.0f)) * behind, 1.0f);
 #endif
     float coverage = clamp(hdr.a, 0.0f, 1.0f);

@@ -3,12 +3,12 @@
 #include "core/errors.h"
 #include "core/log.h"
 #include "render/camera_framing.h"
+#include "passes/backdrop/sky_rays.h"
 #include "render/explain_plan.h"
 #include "shared/tonemap.h"
 #include "vk/context.h"
 #include "vk/pipeline_cache_file.h"
 
-#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -335,9 +335,8 @@ void FrameBuilder::addTonemap(Frame& frame, const RenderSettings& settings, cons
     if (plan.sky == SkyPlacement::Tonemap)
         sky = passes::TonemapPass::Sky{
             .specular = ibl->maps.specular,
-            .params = {.inverseViewProjection = glm::inverse(view.viewProjection),
-                       .eyeIntensity = glm::vec4(view.eye, ibl->params.intensity),
-                       .rotationLod = glm::vec4(ibl->params.rotation.x, ibl->params.rotation.y, ibl->params.skyboxLod, 0.0f)}};
+            .params = {.rays = passes::skyRays(view.viewProjection, view.eye, ibl->params.rotation, settings.width, settings.height),
+                       .intensityLod = glm::vec4(ibl->params.intensity, ibl->params.skyboxLod, 0.0f, 0.0f)}};
     const passes::TonemapSettings tonemap = tonemapOf(settings, plan);
     frame.solidBackground = tonemap.background.has_value();
     frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemap, &mParameters, sky ? &*sky : nullptr);

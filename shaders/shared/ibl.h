@@ -17,6 +17,7 @@
 
 #include "shared/brdf.h"
 #include "shared/compat.h"
+#include "shared/sky_rays.h"
 
 CANDELA_NAMESPACE_BEGIN
 
@@ -100,10 +101,9 @@ struct IblParams {
     /*Ignore*/ float lutSize;        // BRDF LUT texels per side
 };
 
-// skybox.frag
+// skybox.frag (ibl.rotation is in the rays already)
 struct SkyboxPush {
-    /*Ignore*/ mat4 inverseViewProjection;
-    /*Ignore*/ vec4 eye;  // xyz: camera position (world)
+    SkyRays rays;
     IblParams ibl;
 };
 
@@ -291,7 +291,7 @@ CANDELA_NAMESPACE_END
 static_assert(sizeof(candela::shading::IblFilterPush) == 32);
 static_assert(sizeof(candela::shading::IblCubemapPush) == 32);
 static_assert(sizeof(candela::shading::IblParams) == 32);
-static_assert(sizeof(candela::shading::SkyboxPush) == 112);
+static_assert(sizeof(candela::shading::SkyboxPush) == 80);
 #endif
 
 #endif

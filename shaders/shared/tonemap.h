@@ -5,6 +5,7 @@
 #define CANDELA_SHARED_TONEMAP_H
 
 #include "shared/compat.h"
+#include "shared/sky_rays.h"
 
 CANDELA_NAMESPACE_BEGIN
 
@@ -23,11 +24,10 @@ struct TonemapParams {
 };
 
 // The sky tonemap_sky.frag composites under the image (shared/sky.glsl), after TonemapParams in its
-// push constants (128 bytes together).
+// push constants (96 bytes together).
 struct TonemapSky {
-    /*Ignore*/ mat4 inverseViewProjection;
-    /*Ignore*/ vec4 eyeIntensity;  // xyz: camera position (world); w: the environment's intensity
-    /*Ignore*/ vec4 rotationLod;   // xy: the environment rotation (IblParams::rotation); z: the mip shown; w unused
+    SkyRays rays;                   // the environment rotation included
+    /*Ignore*/ vec4 intensityLod;   // x: the environment's intensity; y: the mip shown; zw unused
 };
 
 // Khronos PBR Neutral (https://github.com/KhronosGroup/ToneMapping, reference implementation).
@@ -114,7 +114,7 @@ CANDELA_NAMESPACE_END
 
 #ifdef __cplusplus
 static_assert(sizeof(candela::shading::TonemapParams) == 32);
-static_assert(sizeof(candela::shading::TonemapParams) + sizeof(candela::shading::TonemapSky) == 128);
+static_assert(sizeof(candela::shading::TonemapParams) + sizeof(candela::shading::TonemapSky) == 96);
 #endif
 
 #endif

@@ -1,9 +1,8 @@
 #include "passes/backdrop/skybox_pass.h"
 
 #include "executor/graph_executor.h"
+#include "passes/backdrop/sky_rays.h"
 #include "passes/recording/fullscreen.h"
-
-#include <glm/gtc/matrix_inverse.hpp>
 
 namespace candela::passes {
 
@@ -43,8 +42,8 @@ DrawTarget SkyboxPass::add(RenderGraph& graph, const scene::ViewSetup& view, con
                                                .blend = vk::BlendMode::Under,
                                                .samples = samples});
             });
-            d.push = {.inverseViewProjection = glm::inverse(view.viewProjection),
-                      .eye = glm::vec4(view.eye, 1.0f),
+            const TextureDesc& target = builder.desc(in.target.color);
+            d.push = {.rays = skyRays(view.viewProjection, view.eye, in.params.rotation, target.width, target.height),
                       .ibl = in.params};
             if (parameters)
                 parameters->apply("skybox", "Push", d.pipeline->program().reflection().pushConstants.members, d.push);
