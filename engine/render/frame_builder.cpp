@@ -273,7 +273,7 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     }
     const passes::DrawTarget drawn = addDraws(frame, plan, facts, visibility, tables ? &*tables : nullptr, view, ibl ? &*ibl : nullptr);
     frame.hdr = drawn.hdr;
-    addTonemap(frame, settings, plan, target, view, ibl ? &*ibl : nullptr);
+    addTonemap(frame, settings, plan, target, view, ibl ? &*ibl : nullptr, drawn.depth);
     if (settings.outputs.beyondColor())
         frame.aov = mAov.add(graph, settings.width, settings.height, settings.outputs.aovTargets(), list, inputs);
     else
@@ -324,7 +324,7 @@ passes::DrawTarget FrameBuilder::addDraws(Frame& frame, const FramePlan& plan, c
 }
 
 void FrameBuilder::addTonemap(Frame& frame, const RenderSettings& settings, const FramePlan& plan, std::optional<TextureId> target,
-                              const scene::ViewSetup& view, const passes::IblInputs* ibl) {
+                              const scene::ViewSetup& view, const passes::IblInputs* ibl, TextureId depth) {
     RenderGraph& graph = *frame.graph;
     // UNORM target: the tonemap shader encodes sRGB itself, which also lets it dither.
     const TextureId ldr = target ? *target
@@ -336,7 +336,8 @@ void FrameBuilder::addTonemap(Frame& frame, const RenderSettings& settings, cons
         sky = passes::TonemapPass::Sky{
             .specular = ibl->maps.specular,
             .params = {.rays = passes::skyRays(view.viewProjection, view.eye, ibl->params.rotation, settings.width, settings.height),
-                       .intensityLod = glm::vec4(ibl->params.intensity, ibl->params.skyboxLod, 0.0f, 0.0f)}};
+                       .intensityLod = glm::vec4(ibl->params.intensity, ibl->params.skyboxLod, 0.0f, 0.0f)},
+            .depth = plan.skyWhereUncovered ? depth : TextureId{}};
     const passes::TonemapSettings tonemap = tonemapOf(settings, plan);
     frame.solidBackground = tonemap.background.has_value();
     frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemap, &mParameters, sky ? &*sky : nullptr);

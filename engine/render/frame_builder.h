@@ -106,7 +106,7 @@ private:
                                 const passes::IblInputs* ibl);
     // Adds the tonemap of frame.hdr into `target` (or a new "ldr"), with the sky where the plan puts it there.
     void addTonemap(Frame& frame, const RenderSettings& settings, const FramePlan& plan, std::optional<graph::TextureId> target,
-                    const scene::ViewSetup& view, const passes::IblInputs* ibl);
+                    const scene::ViewSetup& view, const passes::IblInputs* ibl, graph::TextureId depth);
     // The tonemap's settings for the frame: the settings' own, with the plan's look and grey
     // background for a debug view.
     static passes::TonemapSettings tonemapOf(const RenderSettings& settings, const FramePlan& plan);

@@ -66,6 +66,7 @@ FramePlan planFrame(const FrameFacts& facts) {
     if (sky) {
         const bool inTonemap = plan.transmission != TransmissionPlan::SeesOpaqueImage && !facts.floatOutput && !facts.skyboxDisabled;
         plan.sky = inTonemap ? SkyPlacement::Tonemap : SkyPlacement::SkyboxPass;
+        plan.skyWhereUncovered = inTonemap && facts.samples == 1 && plan.transmission == TransmissionPlan::None;
     } else if (facts.environment) {
         plan.leftOut.push_back({PlannedPart::Skybox, debugView ? LeftOutReason::DebugView : LeftOutReason::NotTheBackground});
     }

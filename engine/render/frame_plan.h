@@ -126,6 +126,11 @@ struct FramePlan {
     DeformPlan deform = DeformPlan::Static;
     SkyPlacement sky = SkyPlacement::None;
     TransmissionPlan transmission = TransmissionPlan::None;
+    // The tonemap's sky only where nothing was drawn (the scene's depth still at the far plane):
+    // one sample (the depth then matches the image) and no transmissive draws (which write depth
+    // and may let the sky through). Depth-tested, so the rasterizer leaves covered pixels out of
+    // the sky's program, which a branch in the shader does not do on llvmpipe.
+    bool skyWhereUncovered = false;
     bool sheenLut = false;       // the layered program reads the sheen LUT (computed once, then imported)
     bool msaaExpand = false;     // visibility path at MSAA: forward draws after it need a multisampled image
     bool pointsAndLinesPass = false;  // visibility path: forward_points_lines draws the points and lines

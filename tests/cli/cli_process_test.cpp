@@ -485,7 +485,7 @@ TEST(Cli, DefaultRenderIsLitByTheProceduralSkyWithPrecomputeFirst) {
     EXPECT_LT(position("ibl_cubemap"), position("ibl_irradiance_cube"));
     // The sky is composited by the tonemap, right after the forward pass.
     EXPECT_EQ(position("tonemap"), position("forward") + 1);
-    EXPECT_NE(r.stdoutText.find("sky: composited under the image by the tonemap"), std::string::npos) << r.stdoutText;
+    EXPECT_NE(r.stdoutText.find("sky: composited by the tonemap where nothing was drawn"), std::string::npos) << r.stdoutText;
     EXPECT_NE(r.stdoutText.find("ibl: environment 'procedural sky'"), std::string::npos) << r.stdoutText;
     EXPECT_NE(r.stdoutText.find("ibl: maps computed by this frame's precompute passes"), std::string::npos) << r.stdoutText;
     EXPECT_NE(r.stdoutText.find("left out: SH9 projection"), std::string::npos) << r.stdoutText;

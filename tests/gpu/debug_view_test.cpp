@@ -163,7 +163,8 @@ TEST_F(DebugViewTest, IsAGraphVariantWithoutTheSkybox) {
     settings.debugView = options::DebugView::None;
     renderer().capture(settings);
     const std::vector<std::string> shaded = renderer().explain();
-    EXPECT_NE(std::find(shaded.begin(), shaded.end(), "sky: composited under the image by the tonemap (no skybox pass)"),
+    EXPECT_NE(std::find(shaded.begin(), shaded.end(),
+                        "sky: composited by the tonemap where nothing was drawn (depth-tested; no skybox pass)"),
               shaded.end());
     settings.floatOutput = true;
     renderer().capture(settings);

@@ -128,8 +128,9 @@ protected:
     // The last frame drew the sky: composited by the tonemap, or by the skybox pass.
     bool skyDrawn() {
         const std::vector<std::string> lines = mViewer->renderer().explain();
-        return ran("skybox") || std::find(lines.begin(), lines.end(),
-                                          "sky: composited under the image by the tonemap (no skybox pass)") != lines.end();
+        return ran("skybox") || std::any_of(lines.begin(), lines.end(), [](const std::string& line) {
+                   return line.starts_with("sky: composited ") && line.find(" by the tonemap ") != std::string::npos;
+               });
     }
 
     // Every panel's window lies inside the window and overlaps no other; each is as wide as its

@@ -32,7 +32,9 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
         TextureId hdr;
         TextureId target;
         TextureId specular;
-        const vk::Pipeline* pipeline = nullptr;
+        TextureId depth;                           // valid: the sky drawn only where it is 0
+        const vk::Pipeline* pipeline = nullptr;    // every pixel, or with `depth` the covered ones
+        const vk::Pipeline* skyPipeline = nullptr; // the sky's pixels (tonemap_sky.frag)
         Push push{};
     };
     const Data& data = graph.addPass<Data>(
@@ -46,28 +48,57 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
                                               {CANDELA_SPEC_TONEMAP_ENCODE_SRGB, !isSrgbFormat(format)},
                                               {CANDELA_SPEC_TONEMAP_DITHER, settings.dither},
                                               {CANDELA_SPEC_TONEMAP_BACKGROUND, settings.background.has_value()}});
-            // The key's last entry selects the program (it is no constant of the shaders).
-            std::vector<uint32_t> key = specialization;
-            key.push_back(sky ? 1u : 0u);
-            d.pipeline = &mPipelines.get(mContext, {format, key}, [&] {
-                return vk::Pipeline::graphics(mContext, "fullscreen.vert", sky ? "tonemap_sky.frag" : "tonemap.frag",
-                                              {.colorFormats = {format}, .specialization = specialization});
-            });
+            if (sky && sky->depth.valid()) d.depth = builder.read(sky->depth, Usage::DepthRead);
+            const VkFormat depthFormat = d.depth.valid() ? builder.desc(d.depth).format : VK_FORMAT_UNDEFINED;
+            // Program: 0 tonemap.frag, 1 tonemap_sky.frag; depth: 0 none, 1 covered pixels (stored
+            // depth above the far plane's 0), 2 the sky's (stored depth 0). The key's last two
+            // entries select them (they are no constants of the shaders).
+            const auto pipeline = [&](uint32_t program, uint32_t depth) {
+                std::vector<uint32_t> key = specialization;
+                key.insert(key.end(), {program, depth});
+                return &mPipelines.get(mContext, {format, key}, [&] {
+                    return vk::Pipeline::graphics(mContext, "fullscreen.vert", program ? "tonemap_sky.frag" : "tonemap.frag",
+                                                  {.colorFormats = {format},
+                                                   .depthFormat = depth ? depthFormat : VK_FORMAT_UNDEFINED,
+                                                   .depthTest = depth != 0,
+                                                   .depthCompare = depth == 1 ? VK_COMPARE_OP_LESS : VK_COMPARE_OP_GREATER_OR_EQUAL,
+                                                   .specialization = specialization});
+                });
+            };
+            if (!sky) {
+                d.pipeline = pipeline(0, 0);
+            } else if (d.depth.valid()) {
+                d.pipeline = pipeline(0, 1);
+                d.skyPipeline = pipeline(1, 2);
+            } else {
+                d.skyPipeline = pipeline(1, 0);
+            }
             d.push.params.background = settings.background ? glm::vec4(*settings.background, 1.0f) : glm::vec4(0.0f);
             d.push.params.exposureEv = settings.exposureEv;
             if (sky) {
                 d.specular = builder.sample(sky->specular);
                 d.push.sky = sky->params;
             }
-            if (parameters)
-                parameters->apply("tonemap", "Push", d.pipeline->program().reflection().pushConstants.members, d.push);
+            if (parameters) {
+                const vk::Pipeline& reflected = d.skyPipeline ? *d.skyPipeline : *d.pipeline;
+                parameters->apply("tonemap", "Push", reflected.program().reflection().pushConstants.members, d.push);
+            }
         },
         [sampler = mSampler.get(), trilinear = mTrilinear.get()](const Data& d, PassContext& ctx) {
-            const uint32_t pushSize = d.specular.valid() ? sizeof(Push) : sizeof(shading::TonemapParams);
-            vk::DescriptorWriter writer(d.pipeline->program(), 0);
-            writer.image("hdrImage", ctx.view(d.hdr), ctx.layout(d.hdr), sampler);
-            if (d.specular.valid()) writer.image("specularCube", ctx.view(d.specular), ctx.layout(d.specular), trilinear);
-            drawFullscreenTriangle(ctx, *d.pipeline, writer.commit(ctx.context(), ctx.descriptors()), &d.push, pushSize);
+            ctx.beginRendering();
+            const auto draw = [&](const vk::Pipeline& pipeline, bool withSky) {
+                vk::DescriptorWriter writer(pipeline.program(), 0);
+                writer.image("hdrImage", ctx.view(d.hdr), ctx.layout(d.hdr), sampler);
+                if (withSky) writer.image("specularCube", ctx.view(d.specular), ctx.layout(d.specular), trilinear);
+                const VkDescriptorSet set = writer.commit(ctx.context(), ctx.descriptors());
+                pipeline.bind(ctx.cmd());
+                vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 0, 1, &set, 0, nullptr);
+                pipeline.pushConstants(ctx.cmd(), &d.push, withSky ? sizeof(Push) : sizeof(shading::TonemapParams));
+                vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+            };
+            if (d.pipeline) draw(*d.pipeline, false);
+            if (d.skyPipeline) draw(*d.skyPipeline, true);
+            ctx.endRendering();
         });
     return data.target;
 }

@@ -35,9 +35,14 @@ public:
     // an _SRGB format is encoded by the hardware, a UNORM one by the shader). Returns its new version.
     // With `parameters`, the user's values for its push constants apply ("tonemap", "Push").
     // With `sky`, the sky (the specular cube, shared/sky.glsl) is composited under `hdr` first.
+    // With the sky's `depth` (the scene's reverse-Z depth at the target's size, one sample), the
+    // sky is computed only where nothing was drawn (depth 0): the pass draws twice, the covered
+    // pixels without the sky and the others with it, each depth-tested, so that the rasterizer
+    // leaves the sky's program out of covered blocks (on llvmpipe a branch would not).
     struct Sky {
         graph::TextureId specular;
         shading::TonemapSky params;
+        graph::TextureId depth;
     };
     graph::TextureId add(graph::RenderGraph& graph, graph::TextureId hdr, graph::TextureId target,
                          const TonemapSettings& settings, shader::ParameterRegistry* parameters = nullptr,

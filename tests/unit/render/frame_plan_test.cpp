@@ -96,6 +96,25 @@ TEST(FramePlan, SkyGoesToTheTonemapUnlessTransmissionOrTheOutputNeedsIt) {
     EXPECT_EQ(planFrame(off).sky, SkyPlacement::SkyboxPass);
 }
 
+TEST(FramePlan, TheTonemapsSkyIsDepthTestedAtOneSampleWithoutTransmissiveDraws) {
+    FrameFacts facts = visibilityFrame();
+    facts.samples = 1;
+    EXPECT_TRUE(planFrame(facts).skyWhereUncovered);
+    EXPECT_EQ(explainPasses(planFrame(facts), facts, false).back(),
+              "sky: composited by the tonemap where nothing was drawn (depth-tested; no skybox pass)");
+    FrameFacts msaa = facts;
+    msaa.samples = 4;  // the depth is multisampled, the image the tonemap reads is not
+    EXPECT_FALSE(planFrame(msaa).skyWhereUncovered);
+    EXPECT_EQ(explainPasses(planFrame(msaa), msaa, false).back(), "sky: composited under the image by the tonemap (no skybox pass)");
+    FrameFacts blind = facts;
+    blind.transmissiveDraws = blind.transmissionBackgroundDisabled = true;  // they write depth and may be seen through
+    EXPECT_EQ(planFrame(blind).sky, SkyPlacement::Tonemap);
+    EXPECT_FALSE(planFrame(blind).skyWhereUncovered);
+    FrameFacts hdr = facts;
+    hdr.floatOutput = true;  // the skybox pass draws it, depth-tested itself
+    EXPECT_FALSE(planFrame(hdr).skyWhereUncovered);
+}
+
 TEST(FramePlan, SkyboxLeftOutWithItsReason) {
     FrameFacts facts = visibilityFrame();
     facts.skyboxWanted = false;
