@@ -1,6 +1,7 @@
 #include "gpu_scene/gpu_scene.h"
 
 #include "core/errors.h"
+#include "geometry/image_mips.h"
 #include "geometry/normal_map_mips.h"
 
 #include "scene/texture_transform.h"
@@ -238,6 +239,7 @@ GpuScene::GpuScene(vk::Context& context, const scene::Scene& scene, const std::v
     }
     // A file's own levels (KTX2) are uploaded as they are, except for normal maps, whose chain must
     // carry the lost length in A (computed from level 0); other images get their mips generated.
+    const bool cpuMips = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     const auto upload = [&](const scene::Image& source, bool normalMap) {
         const bool fileMips = !normalMap && !source.mips.empty();
         const uint32_t mips = fileMips ? uint32_t(source.mips.size() + 1) : std::bit_width(std::max(source.width, source.height));
@@ -256,6 +258,11 @@ GpuScene::GpuScene(vk::Context& context, const scene::Scene& scene, const std::v
             uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
             for (uint32_t mip = 1; mip < mips; ++mip)
                 uploader.image(image, std::as_bytes(std::span(source.mips[mip - 1])), mip, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        } else if (cpuMips) {
+            uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+            const std::vector<std::vector<uint8_t>> chain = geometry::boxMipChain(source);
+            for (uint32_t mip = 1; mip < mips; ++mip)
+                uploader.image(image, std::as_bytes(std::span(chain[mip - 1])), mip, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
         } else {
             uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                            /*generateMips=*/true);

@@ -127,38 +127,6 @@ TEST(VkCheck, ErrorNamesCallFileLineAndResult) {
     }
 }
 
-TEST_F(GpuTest, GeneratedMipChainAveragesTheLevelAbove) {
-    // 4×4 UNORM image: left half 0, right half 200 → mip 1 (2×2) is 0 | 200, mip 2 (1×1) is 100.
-    const uint32_t size = 4;
-    std::vector<uint8_t> texels(size * size * 4);
-    for (uint32_t y = 0; y < size; ++y)
-        for (uint32_t x = 0; x < size; ++x)
-            for (int c = 0; c < 4; ++c) texels[(y * size + x) * 4 + c] = x < 2 ? 0 : 200;
-    vk::Image image(context(), {.width = size, .height = size, .mipLevels = 3, .format = VK_FORMAT_R8G8B8A8_UNORM,
-                                .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                                         VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
-    vk::Uploader uploader(context());
-    uploader.image(image, std::as_bytes(std::span(texels)), 0, 0, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, true);
-    uploader.submitAndWait();
-
-    vk::Buffer readback(context(), {.size = 4 * 4 + 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                    .memory = vk::MemoryUsage::Readback});
-    vk::OneShotCommands commands(context());
-    VkCommandBuffer cmd = commands.begin();
-    const VkBufferImageCopy regions[] = {
-        {.bufferOffset = 0, .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 1, 0, 1}, .imageExtent = {2, 2, 1}},
-        {.bufferOffset = 16, .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 2, 0, 1}, .imageExtent = {1, 1, 1}}};
-    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle(), 2, regions);
-    copiesToHostBarrier(cmd);
-    commands.submitAndWait();
-    readback.invalidate();
-    const auto* bytes = reinterpret_cast<const uint8_t*>(readback.mapped());
-    EXPECT_EQ(bytes[0], 0);        // mip 1, (0,0)
-    EXPECT_EQ(bytes[4], 200);      // mip 1, (1,0)
-    EXPECT_NEAR(bytes[16], 100, 1);  // mip 2
-}
-
-
 // vk/library_pin.h: contexts created and destroyed one after another in one process (a test binary,
 // a program that embeds Candela) load the driver and layers once and keep them. Unpinned, the
 // loader unloads and reloads them for every context, and NVIDIA's driver fails to load again after

@@ -1,0 +1,132 @@
+#include "geometry/image_mips.h"
+
+#include "core/parallel_for.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <vector>
+
+namespace candela::geometry {
+
+namespace {
+
+// sRGB code → linear, and the linear values halfway between consecutive codes: the nearest code of
+// a linear value is the number of midpoints at or below it. `start` holds that number at the start
+// of each of kCells equal cells of [0, 1]; a cell (6.1e-5 wide) holds at most one midpoint (the
+// closest two lie 3.0e-4 apart), so a lookup and one comparison find the code.
+struct SrgbTables {
+    static constexpr uint32_t kCells = 1u << 14;
+    std::array<float, 256> linear{};
+    std::array<float, 255> midpoints{};
+    std::array<uint8_t, kCells + 1> start{};
+    SrgbTables() {
+        const auto decode = [](double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); };
+        for (int c = 0; c < 256; ++c) linear[size_t(c)] = float(decode(c / 255.0));
+        for (int c = 0; c < 255; ++c) midpoints[size_t(c)] = float(decode((c + 0.5) / 255.0));
+        for (uint32_t i = 0; i <= kCells; ++i)
+            start[i] = uint8_t(std::upper_bound(midpoints.begin(), midpoints.end(), float(i) / float(kCells)) - midpoints.begin());
+    }
+    uint8_t encode(float value) const {
+        if (!(value > 0.0f)) return 0;
+        if (value >= 1.0f) return 255;
+        uint32_t code = start[uint32_t(value * float(kCells))];
+        while (code < 255 && midpoints[code] <= value) ++code;
+        return uint8_t(code);
+    }
+};
+
+// The nearest integer to sum / 4, ties to even (no bias).
+uint8_t quarterRoundedToEven(uint32_t sum) {
+    const uint32_t q = sum >> 2, r = sum & 3u;
+    return uint8_t(q + (r > 2u || (r == 2u && (q & 1u)) ? 1u : 0u));
+}
+
+const SrgbTables& srgbTables() {
+    static const SrgbTables tables;
+    return tables;
+}
+
+}  // namespace
+
+std::vector<std::vector<uint8_t>> boxMipChain(const scene::Image& image) {
+    constexpr uint32_t kBand = 16;  // rows per parallelFor iteration
+    const uint32_t levels = std::bit_width(std::max(image.width, image.height));
+    const SrgbTables& tables = srgbTables();
+    std::vector<std::vector<uint8_t>> mips;
+    const uint8_t* above = image.rgba8.data();
+    uint32_t width = image.width, height = image.height;
+    for (uint32_t level = 1; level < levels; ++level) {
+        const uint32_t w = std::max(1u, width / 2), h = std::max(1u, height / 2);
+        std::vector<uint8_t> texels(size_t(w) * h * 4);
+        // Where a texel's centre falls in the level above (texel units, centres at i + 0.5): the
+        // pair of texels a linear filter mixes there and the second one's weight. A 2:1 ratio
+        // lands between two texels at weight ½ (the box average); an odd size elsewhere.
+        struct Tap {
+            uint32_t first, second;
+            float weight;
+        };
+        const auto taps = [](uint32_t to, uint32_t from) {
+            std::vector<Tap> out(to);
+            for (uint32_t i = 0; i < to; ++i) {
+                const double u = (i + 0.5) * double(from) / double(to) - 0.5;
+                const double base = std::floor(u);
+                const auto clampTo = [&](double v) { return uint32_t(std::clamp(v, 0.0, double(from - 1))); };
+                out[i] = {clampTo(base), clampTo(base + 1.0), float(u - base)};
+            }
+            return out;
+        };
+        const std::vector<Tap> columns = taps(w, width), rows = taps(h, height);
+        // An exact halving (each texel the box of 2 × 2 above): the same average, found directly.
+        const bool halved = 2 * w == width && 2 * h == height;
+        const auto band = [&](size_t b) {
+            for (uint32_t y = uint32_t(b) * kBand; y < std::min(h, uint32_t(b + 1) * kBand); ++y)
+                for (uint32_t x = 0; x < w && halved; ++x) {
+                    const uint8_t* top = above + (size_t(2 * y) * width + 2 * x) * 4;
+                    const uint8_t* bottom = top + size_t(width) * 4;
+                    uint8_t* out = &texels[(size_t(y) * w + x) * 4];
+                    for (int c = 0; c < 4; ++c) {
+                        if (image.srgb && c < 3)
+                            out[c] = tables.encode(0.25f * (tables.linear[top[c]] + tables.linear[top[4 + c]] +
+                                                            tables.linear[bottom[c]] + tables.linear[bottom[4 + c]]));
+                        else
+                            out[c] = quarterRoundedToEven(uint32_t(top[c]) + top[4 + c] + bottom[c] + bottom[4 + c]);
+                    }
+                }
+            for (uint32_t y = uint32_t(b) * kBand; y < std::min(h, uint32_t(b + 1) * kBand) && !halved; ++y)
+                for (uint32_t x = 0; x < w; ++x) {
+                    const Tap& tx = columns[x];
+                    const Tap& ty = rows[y];
+                    const std::array<const uint8_t*, 4> source = {
+                        above + (size_t(ty.first) * width + tx.first) * 4, above + (size_t(ty.first) * width + tx.second) * 4,
+                        above + (size_t(ty.second) * width + tx.first) * 4, above + (size_t(ty.second) * width + tx.second) * 4};
+                    const std::array<float, 4> weight = {(1.0f - tx.weight) * (1.0f - ty.weight), tx.weight * (1.0f - ty.weight),
+                                                         (1.0f - tx.weight) * ty.weight, tx.weight * ty.weight};
+                    uint8_t* out = &texels[(size_t(y) * w + x) * 4];
+                    for (int c = 0; c < 4; ++c) {
+                        float sum = 0.0f;
+                        if (image.srgb && c < 3) {
+                            for (int k = 0; k < 4; ++k) sum += weight[size_t(k)] * tables.linear[source[size_t(k)][c]];
+                            out[c] = tables.encode(sum);
+                        } else {
+                            for (int k = 0; k < 4; ++k) sum += weight[size_t(k)] * float(source[size_t(k)][c]);
+                            out[c] = uint8_t(std::nearbyint(sum));  // ties to even: no bias
+                        }
+                    }
+                }
+        };
+        const size_t bands = (h + kBand - 1) / kBand;
+        if (uint64_t(w) * h < 65536) {
+            for (size_t b = 0; b < bands; ++b) band(b);
+        } else {
+            parallelFor(bands, band);
+        }
+        mips.push_back(std::move(texels));
+        above = mips.back().data();
+        width = w, height = h;
+    }
+    return mips;
+}
+
+}  // namespace candela::geometry
