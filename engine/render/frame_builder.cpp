@@ -2,8 +2,8 @@
 
 #include "core/errors.h"
 #include "core/log.h"
-#include "render/camera_framing.h"
 #include "passes/backdrop/sky_rays.h"
+#include "render/camera_framing.h"
 #include "render/explain_plan.h"
 #include "shared/tonemap.h"
 #include "vk/context.h"

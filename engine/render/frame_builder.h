@@ -104,7 +104,8 @@ private:
     passes::DrawTarget addDraws(Frame& frame, const FramePlan& plan, const FrameFacts& facts, const VisibilityPath::FrameDesc& desc,
                                 const passes::VisibilityFrameTables* tables, const scene::ViewSetup& view,
                                 const passes::IblInputs* ibl);
-    // Adds the tonemap of frame.hdr into `target` (or a new "ldr"), with the sky where the plan puts it there.
+    // Adds the tonemap of frame.hdr into `target` (or a new "ldr"), with the sky where the plan puts it
+    // there: only where `depth` (the scene's) is the far plane's when plan.skyWhereUncovered.
     void addTonemap(Frame& frame, const RenderSettings& settings, const FramePlan& plan, std::optional<graph::TextureId> target,
                     const scene::ViewSetup& view, const passes::IblInputs* ibl, graph::TextureId depth);
     // The tonemap's settings for the frame: the settings' own, with the plan's look and grey

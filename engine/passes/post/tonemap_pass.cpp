@@ -90,11 +90,8 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
                 vk::DescriptorWriter writer(pipeline.program(), 0);
                 writer.image("hdrImage", ctx.view(d.hdr), ctx.layout(d.hdr), sampler);
                 if (withSky) writer.image("specularCube", ctx.view(d.specular), ctx.layout(d.specular), trilinear);
-                const VkDescriptorSet set = writer.commit(ctx.context(), ctx.descriptors());
-                pipeline.bind(ctx.cmd());
-                vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 0, 1, &set, 0, nullptr);
-                pipeline.pushConstants(ctx.cmd(), &d.push, withSky ? sizeof(Push) : sizeof(shading::TonemapParams));
-                vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+                recordFullscreenTriangle(ctx, pipeline, writer.commit(ctx.context(), ctx.descriptors()), &d.push,
+                                         withSky ? sizeof(Push) : sizeof(shading::TonemapParams));
             };
             if (d.pipeline) draw(*d.pipeline, false);
             if (d.skyPipeline) draw(*d.skyPipeline, true);

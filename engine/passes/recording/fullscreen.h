@@ -11,13 +11,20 @@
 
 namespace candela::passes {
 
-inline void drawFullscreenTriangle(const graph::PassContext& ctx, const vk::Pipeline& pipeline, VkDescriptorSet set,
-                                   const void* pushConstants = nullptr, uint32_t pushSize = 0) {
-    ctx.beginRendering();
+// Within rendering begun by the pass: binds `pipeline` and `set` (set 0), pushes the constants if
+// any and draws the triangle.
+inline void recordFullscreenTriangle(const graph::PassContext& ctx, const vk::Pipeline& pipeline, VkDescriptorSet set,
+                                     const void* pushConstants = nullptr, uint32_t pushSize = 0) {
     pipeline.bind(ctx.cmd());
     vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 0, 1, &set, 0, nullptr);
     if (pushConstants) pipeline.pushConstants(ctx.cmd(), pushConstants, pushSize);
     vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+}
+
+inline void drawFullscreenTriangle(const graph::PassContext& ctx, const vk::Pipeline& pipeline, VkDescriptorSet set,
+                                   const void* pushConstants = nullptr, uint32_t pushSize = 0) {
+    ctx.beginRendering();
+    recordFullscreenTriangle(ctx, pipeline, set, pushConstants, pushSize);
     ctx.endRendering();
 }
 
