@@ -60,9 +60,21 @@ std::vector<std::vector<uint8_t>> boxMipChain(const scene::Image& image) {
     for (uint32_t level = 1; level < levels; ++level) {
         const uint32_t w = std::max(1u, width / 2), h = std::max(1u, height / 2);
         std::vector<uint8_t> texels(size_t(w) * h * 4);
-        // Where a texel's centre falls in the level above (texel units, centres at i + 0.5): the
-        // pair of texels a linear filter mixes there and the second one's weight. A 2:1 ratio
-        // lands between two texels at weight ½ (the box average); an odd size elsewhere.
+        // An exact halving: each texel the box of the 2 × 2 above it.
+        const auto halvedTexel = [&](uint32_t x, uint32_t y, uint8_t* out) {
+            const uint8_t* top = above + (size_t(2 * y) * width + 2 * x) * 4;
+            const uint8_t* bottom = top + size_t(width) * 4;
+            for (int c = 0; c < 4; ++c) {
+                if (image.srgb && c < 3)
+                    out[c] = tables.encode(0.25f * (tables.linear[top[c]] + tables.linear[top[4 + c]] + tables.linear[bottom[c]] +
+                                                    tables.linear[bottom[4 + c]]));
+                else
+                    out[c] = quarterRoundedToEven(uint32_t(top[c]) + top[4 + c] + bottom[c] + bottom[4 + c]);
+            }
+        };
+        // Otherwise (an odd size): where a texel's centre falls in the level above (texel units,
+        // centres at i + 0.5), the pair of texels a linear filter mixes there and the second one's
+        // weight, clamped at the edges.
         struct Tap {
             uint32_t first, second;
             float weight;
@@ -77,43 +89,33 @@ std::vector<std::vector<uint8_t>> boxMipChain(const scene::Image& image) {
             }
             return out;
         };
-        const std::vector<Tap> columns = taps(w, width), rows = taps(h, height);
-        // An exact halving (each texel the box of 2 × 2 above): the same average, found directly.
         const bool halved = 2 * w == width && 2 * h == height;
+        const std::vector<Tap> columns = halved ? std::vector<Tap>{} : taps(w, width);
+        const std::vector<Tap> rows = halved ? std::vector<Tap>{} : taps(h, height);
+        const auto filteredTexel = [&](uint32_t x, uint32_t y, uint8_t* out) {
+            const Tap& tx = columns[x];
+            const Tap& ty = rows[y];
+            const std::array<const uint8_t*, 4> source = {
+                above + (size_t(ty.first) * width + tx.first) * 4, above + (size_t(ty.first) * width + tx.second) * 4,
+                above + (size_t(ty.second) * width + tx.first) * 4, above + (size_t(ty.second) * width + tx.second) * 4};
+            const std::array<float, 4> weight = {(1.0f - tx.weight) * (1.0f - ty.weight), tx.weight * (1.0f - ty.weight),
+                                                 (1.0f - tx.weight) * ty.weight, tx.weight * ty.weight};
+            for (int c = 0; c < 4; ++c) {
+                float sum = 0.0f;
+                if (image.srgb && c < 3) {
+                    for (int k = 0; k < 4; ++k) sum += weight[size_t(k)] * tables.linear[source[size_t(k)][c]];
+                    out[c] = tables.encode(sum);
+                } else {
+                    for (int k = 0; k < 4; ++k) sum += weight[size_t(k)] * float(source[size_t(k)][c]);
+                    out[c] = uint8_t(std::nearbyint(sum));  // ties to even: no bias
+                }
+            }
+        };
         const auto band = [&](size_t b) {
             for (uint32_t y = uint32_t(b) * kBand; y < std::min(h, uint32_t(b + 1) * kBand); ++y)
-                for (uint32_t x = 0; x < w && halved; ++x) {
-                    const uint8_t* top = above + (size_t(2 * y) * width + 2 * x) * 4;
-                    const uint8_t* bottom = top + size_t(width) * 4;
-                    uint8_t* out = &texels[(size_t(y) * w + x) * 4];
-                    for (int c = 0; c < 4; ++c) {
-                        if (image.srgb && c < 3)
-                            out[c] = tables.encode(0.25f * (tables.linear[top[c]] + tables.linear[top[4 + c]] +
-                                                            tables.linear[bottom[c]] + tables.linear[bottom[4 + c]]));
-                        else
-                            out[c] = quarterRoundedToEven(uint32_t(top[c]) + top[4 + c] + bottom[c] + bottom[4 + c]);
-                    }
-                }
-            for (uint32_t y = uint32_t(b) * kBand; y < std::min(h, uint32_t(b + 1) * kBand) && !halved; ++y)
                 for (uint32_t x = 0; x < w; ++x) {
-                    const Tap& tx = columns[x];
-                    const Tap& ty = rows[y];
-                    const std::array<const uint8_t*, 4> source = {
-                        above + (size_t(ty.first) * width + tx.first) * 4, above + (size_t(ty.first) * width + tx.second) * 4,
-                        above + (size_t(ty.second) * width + tx.first) * 4, above + (size_t(ty.second) * width + tx.second) * 4};
-                    const std::array<float, 4> weight = {(1.0f - tx.weight) * (1.0f - ty.weight), tx.weight * (1.0f - ty.weight),
-                                                         (1.0f - tx.weight) * ty.weight, tx.weight * ty.weight};
                     uint8_t* out = &texels[(size_t(y) * w + x) * 4];
-                    for (int c = 0; c < 4; ++c) {
-                        float sum = 0.0f;
-                        if (image.srgb && c < 3) {
-                            for (int k = 0; k < 4; ++k) sum += weight[size_t(k)] * tables.linear[source[size_t(k)][c]];
-                            out[c] = tables.encode(sum);
-                        } else {
-                            for (int k = 0; k < 4; ++k) sum += weight[size_t(k)] * float(source[size_t(k)][c]);
-                            out[c] = uint8_t(std::nearbyint(sum));  // ties to even: no bias
-                        }
-                    }
+                    halved ? halvedTexel(x, y, out) : filteredTexel(x, y, out);
                 }
         };
         const size_t bands = (h + kBand - 1) / kBand;
