@@ -20,12 +20,6 @@
 namespace candela::test {
 namespace {
 
-// Makes copy results visible to host reads after the fence.
-void copiesToHostBarrier(VkCommandBuffer cmd) {
-    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                      VK_ACCESS_2_HOST_READ_BIT);
-}
-
 TEST_F(GpuTest, SmallBuffersShareDeviceMemoryBlocks) {
     const uint32_t before = context().allocator().stats().deviceMemoryObjects;
     std::vector<vk::Buffer> buffers;

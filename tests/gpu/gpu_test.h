@@ -6,6 +6,7 @@
 // reason it does not apply (docs/testing.md) — are let through.
 
 #include "options/shading_path.h"
+#include "vk/commands.h"
 #include "vk/context.h"
 
 #include <gtest/gtest.h>
@@ -31,6 +32,12 @@ inline bool bestPracticesNotApplicable(const std::string& text) {
             "VK_ACCESS_2_INPUT_ATTACHMENT_READ_BIT|VK_ACCESS_2_SHADER_READ_BIT."))
         return true;
     return false;
+}
+
+// Makes copy results visible to host reads after the fence (a test's read-back).
+inline void copiesToHostBarrier(VkCommandBuffer cmd) {
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                      VK_ACCESS_2_HOST_READ_BIT);
 }
 
 class GpuTest : public ::testing::Test {

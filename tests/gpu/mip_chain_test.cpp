@@ -83,8 +83,7 @@ protected:
         const VkCommandBuffer cmd = commands.begin();
         vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle(), uint32_t(regions.size()),
                                regions.data());
-        vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                          VK_ACCESS_2_HOST_READ_BIT);
+        copiesToHostBarrier(cmd);
         commands.submitAndWait();
         readback.invalidate();
         const auto* bytes = reinterpret_cast<const uint8_t*>(readback.mapped());
