@@ -177,6 +177,13 @@ std::vector<FlagSpec<LightingOptions>> lightingFlags() {
          "precompute shaders (a damaged file is ignored and replaced; beyond 1 GiB the least recently used are removed); "
          "off: compute them every run [$XDG_CACHE_HOME/candela/ibl, else ~/.cache/candela/ibl]",
          "", parsed(&O::iblCache, parsePath)},
+        {"--lod-cache", "DIR|off",
+         "keep meshes' levels of detail in DIR across runs, keyed by their positions, indices and the simplifier's "
+         "settings, and until they are built the frames drawn without them: a render builds them once drawing every "
+         "run's frames at full detail would cost more (a damaged file is ignored and replaced; beyond 1 GiB the least "
+         "recently used are removed); off: this run's frames alone decide [$XDG_CACHE_HOME/candela/lod, else "
+         "~/.cache/candela/lod]",
+         "", parsed(&O::lodCache, parsePath)},
         {"--irradiance", "{choices}", "diffuse irradiance as 9 spherical-harmonic coefficients (sh9) or a cube",
          ibl::irradianceModeName(quality.irradiance),
          [](O& o, Str flag, Str v) { o.iblQuality.irradiance = parseChoice(flag, ibl::kIrradianceModeNames, v); },

@@ -60,6 +60,7 @@ struct LightingOptions {
     ibl::IblLook iblLook;        // --env-rotation, --env-intensity, --skybox-blur, --no-multiscatter
     ibl::IblQuality iblQuality;  // --irradiance, --ibl-cube-size, --ibl-prefilter-samples, ...
     std::string iblCache;        // --ibl-cache DIR|off ("": the user's cache folder's)
+    std::string lodCache;        // --lod-cache DIR|off ("": the user's cache folder's)
     bool operator==(const LightingOptions&) const = default;
 };
 

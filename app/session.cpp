@@ -136,6 +136,7 @@ void applyRenderFlags(const SceneRenderOptions& options, RenderSettings& setting
     settings.ibl.skybox = skybox;
     settings.ibl.rotationDegrees = rotation;
     settings.iblCacheDir = iblCacheFolder(options.iblCache);
+    settings.lodCacheDir = lodCacheFolder(options.lodCache);
 }
 
 RenderSettings renderSettings(const SceneRenderOptions& options, const scene::Scene& scene,

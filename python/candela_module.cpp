@@ -510,17 +510,18 @@ PYBIND11_MODULE(_candela, m) {
 
     py::class_<PyDevice>(m, "Device", "A Vulkan 1.3 device and a renderer on it; a context manager (close() on exit).")
         .def(py::init([](const std::string& device, const std::string& profile, bool validation, const std::string& pipelineCache,
-                         const std::string& iblCache, uint32_t memoryBudgetMib) {
+                         const std::string& iblCache, const std::string& lodCache, uint32_t memoryBudgetMib) {
                  auto out = std::make_unique<PyDevice>();
                  const candela::DeviceOptions options{.device = device, .profile = profile, .validation = validation,
                                                       .pipelineCache = pipelineCache, .iblCache = iblCache,
-                                                      .memoryBudgetMib = memoryBudgetMib};
+                                                      .lodCache = lodCache, .memoryBudgetMib = memoryBudgetMib};
                  py::gil_scoped_release released;
                  out->device.emplace(options);
                  return out;
              }),
              py::kw_only(), py::arg("device") = "", py::arg("profile") = "", py::arg("validation") = false,
-             py::arg("pipeline_cache") = "", py::arg("ibl_cache") = "", py::arg("memory_budget_mib") = 0)
+             py::arg("pipeline_cache") = "", py::arg("ibl_cache") = "", py::arg("lod_cache") = "",
+             py::arg("memory_budget_mib") = 0)
         .def_property_readonly("name", [](PyDevice& self) { return self.with([](candela::Device& d) { return d.name(); }); })
         .def_property_readonly("validation_messages",
                                [](PyDevice& self) { return self.with([](candela::Device& d) { return d.validationMessages(); }); })

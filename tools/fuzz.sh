@@ -5,7 +5,7 @@
 # (tests/fuzz/regressions/TARGET). Exits non-zero on the first crash, leak, sanitizer report,
 # timeout or invariant violation; the input is saved as build/fuzz/artifacts/TARGET-*.
 #
-#   tools/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]      defaults: 60 s; gltf hdr exr ktx2 webp npy scene_list compared_image
+#   tools/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]      defaults: 60 s; gltf hdr exr ktx2 webp npy lod_cache scene_list compared_image
 #   FUZZ_RUNS=N tools/fuzz.sh 0 gltf                     run N executions instead of a time
 #   FUZZ_STEP=prepare tools/fuzz.sh                      only build and write the seeds
 #   FUZZ_STEP=run tools/fuzz.sh 30 hdr                   only run (after a prepare): two such runs
@@ -15,7 +15,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(gltf hdr exr ktx2 webp npy scene_list compared_image)
+[ ${#targets[@]} -eq 0 ] && targets=(gltf hdr exr ktx2 webp npy lod_cache scene_list compared_image)
 
 build=build/fuzz
 bin=$build/tests/fuzz

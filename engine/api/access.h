@@ -44,6 +44,7 @@ struct Device::Impl {
     Renderer renderer;
     std::atomic<bool> cancelled{false};
     std::filesystem::path iblCacheDir;  // DeviceOptions::iblCache (empty: none; a front end's hook may set its own)
+    std::filesystem::path lodCacheDir;  // DeviceOptions::lodCache (the same)
     CapturedFrame lastFrame;  // the last image read back (its timings: the front end's report)
     // The Scene and Environment objects last drawn (their Impl addresses, as the renderer compares
     // them, and ids): one at a known address with another id replaced a destroyed one.

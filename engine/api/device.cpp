@@ -7,8 +7,7 @@
 #include "candela/device.h"
 #include "core/cache_files.h"
 #include "core/parallel_for.h"
-#include "geometry/lod_cost.h"
-#include "geometry/mesh_optimize.h"
+#include "geometry/lod_cache.h"
 #include "options/device_profile.h"
 #include "pose/scene_pose.h"
 #include "scene/camera.h"
@@ -162,6 +161,7 @@ Device::Device(const DeviceOptions& options) {
     translateErrors("", [&] { desc = contextDescOf(options); });
     impl_ = startDevice(desc);
     impl_->iblCacheDir = iblCacheFolder(options.iblCache);
+    impl_->lodCacheDir = lodCacheFolder(options.lodCache);
 }
 Device::Device(Device&&) noexcept = default;
 Device& Device::operator=(Device&&) noexcept = default;
@@ -179,20 +179,20 @@ uint32_t Device::validationMessages() const { return impl_->context.validationMe
 
 namespace {
 
-// Builds the levels of detail of `held` that its load deferred when drawing them at full detail for
-// the frames drawn so far and the `frames` ahead costs more on `impl`'s device than building them
-// (geometry/lod_cost.h); the decision's line goes to the scene's report (--explain).
-void buildLevelsOfDetailIfTheyPay(Device::Impl& impl, Scene::Impl& held, uint32_t frames, float lodErrorPixels) {
+// Gives `held` the levels of detail its load deferred when drawing them at full detail for the
+// frames drawn so far (by this process, and by earlier runs as `cacheDir` records) and the `frames`
+// ahead costs more on `impl`'s device than building them, or reads the chains an earlier run built
+// (geometry/lod_cache.h); the decision's line goes to the scene's report (--explain).
+void provideLevelsOfDetail(Device::Impl& impl, Scene::Impl& held, uint32_t frames, float lodErrorPixels,
+                           const std::filesystem::path& cacheDir) {
     scene::SceneLoadReport::GeometryPreparation& geometry = held.scene.report.geometry;
     if (!geometry.lodDeferred) return;
     const bool cpu = impl.context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     const geometry::LodDecision decision =
-        geometry::decideLevelsOfDetail(geometry::lodCandidateTriangles(held.scene), held.framesDrawn, frames, lodErrorPixels,
-                                       geometry::measuredTriangleCosts(cpu), hardwareThreads());
+        geometry::provideLevelsOfDetail(held.scene, held.framesDrawn, frames, lodErrorPixels,
+                                        geometry::measuredTriangleCosts(cpu), hardwareThreads(), cacheDir);
     geometry.lodDecision = decision.reason;
-    if (!decision.build) return;
-    geometry::buildLevelsOfDetail(held.scene);
-    impl.renderer.sceneReplaced();  // its index buffer grew: uploaded again
+    if (decision.build) impl.renderer.sceneReplaced();  // its index buffer grew: uploaded again
 }
 
 }  // namespace
@@ -226,6 +226,7 @@ void Access::renderFrames(Device& device, const Scene& scene, const RenderOption
         RenderSettings settings =
             renderSettings(options, held.scene, environment ? &environment->impl_->environment : nullptr);
         settings.iblCacheDir = impl.iblCacheDir;
+        settings.lodCacheDir = impl.lodCacheDir;
         pose::ScenePose pose(held.scene, pose::selectAnimations(held.scene, options.animations));
         pose.evaluate(options.time);
         settings.pose = &pose;
@@ -243,7 +244,7 @@ void Access::renderFrames(Device& device, const Scene& scene, const RenderOption
             if (hook) hook(settings);
         };
         setUpFrame(0);
-        buildLevelsOfDetailIfTheyPay(impl, held, frames, settings.drawSelection.lodErrorPixels);
+        provideLevelsOfDetail(impl, held, frames, settings.drawSelection.lodErrorPixels, settings.lodCacheDir);
         held.framesDrawn += frames;
         reportProgress(impl, progress, {RenderProgress::Stage::Upload, 0, frames});
         impl.renderer.validateSettings(settings);

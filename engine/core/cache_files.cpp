@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <chrono>
@@ -61,6 +62,34 @@ fs::path iblCacheFolder(const std::string& choice) {
     return user.empty() ? fs::path() : user / "ibl";
 }
 
+fs::path lodCacheFolder(const std::string& choice) {
+    if (choice == "off") return {};
+    if (!choice.empty()) return fs::path(choice);
+    const fs::path user = userCacheFolder();
+    return user.empty() ? fs::path() : user / "lod";
+}
+
+uint64_t wordHash64(uint64_t hash, const void* bytes, size_t size) {
+    // Each word: xor in, multiply by a large odd constant (every input bit reaches the high half),
+    // fold the high half down (and so into the next multiply's low bits).
+    constexpr uint64_t kMultiplier = 0x9e3779b97f4a7c15ull;
+    const auto mix = [](uint64_t h, uint64_t word) {
+        h = (h ^ word) * kMultiplier;
+        return h ^ (h >> 32);
+    };
+    const auto* p = static_cast<const unsigned char*>(bytes);
+    size_t i = 0;
+    for (; i + 8 <= size; i += 8) {
+        uint64_t word = 0;
+        for (int b = 0; b < 8; ++b) word |= uint64_t(p[i + size_t(b)]) << (8 * b);  // little-endian on any host
+        hash = mix(hash, word);
+    }
+    uint64_t last = 0;
+    for (size_t b = 0; i + b < size; ++b) last |= uint64_t(p[i + b]) << (8 * b);
+    hash = mix(hash, last);
+    return mix(hash, uint64_t(size));
+}
+
 std::string hex16(uint64_t v) {
     std::string s(16, '0');
     for (int i = 15; i >= 0; --i, v >>= 4) s[size_t(i)] = "0123456789abcdef"[v & 0xf];
@@ -88,6 +117,41 @@ void writeFileAtomically(const fs::path& path, const std::function<void(std::ost
     fs::rename(temporary.path, path, ec);
     if (ec) throw UserError(name + ": cannot rename the temporary file '" + temporary.path.string() + "' to it: " + ec.message());
     temporary.keep = true;
+}
+
+void touchCacheFile(const fs::path& path) {
+    std::error_code ec;
+    fs::last_write_time(path, fs::file_time_type::clock::now(), ec);
+}
+
+std::vector<fs::path> evictCacheFiles(const fs::path& dir, std::string_view extension, uint64_t capBytes,
+                                      const fs::path& keep) {
+    struct Entry {
+        fs::path path;
+        fs::file_time_type used;
+        uint64_t bytes;
+    };
+    std::vector<Entry> entries;
+    uint64_t total = 0;
+    std::error_code ec;
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        std::error_code fileError;
+        if (it->path().extension() != extension || !it->is_regular_file(fileError)) continue;
+        const uint64_t bytes = it->file_size(fileError);
+        const fs::file_time_type used = fs::last_write_time(it->path(), fileError);
+        if (fileError) continue;
+        total += bytes;
+        if (it->path() != keep) entries.push_back({it->path(), used, bytes});
+    }
+    std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.used < b.used; });
+    std::vector<fs::path> removed;
+    for (const Entry& entry : entries) {
+        if (total <= capBytes) break;
+        std::error_code removeError;
+        if (fs::remove(entry.path, removeError) && !removeError) removed.push_back(entry.path);
+        total -= entry.bytes;  // removed, or gone already (another process evicted it)
+    }
+    return removed;
 }
 
 }  // namespace candela

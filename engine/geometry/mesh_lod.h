@@ -12,6 +12,10 @@
 
 namespace candela::geometry {
 
+// The version of what simplifyChain and surfaceDeviation compute: part of the on-disk cache's key
+// (geometry/lod_cache.h), so raise it with any change to their results and cached chains are built anew.
+inline constexpr uint32_t kLodChainAlgorithmVersion = 1;
+
 // How a chain is built.
 struct LodChainSettings {
     // Each level aims at this fraction of the previous level's triangles.

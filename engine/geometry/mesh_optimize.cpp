@@ -115,45 +115,69 @@ void prepareGeometry(scene::Scene& scene, LevelsOfDetail lod, const LodChainSett
     if (lod == LevelsOfDetail::Build) buildLevelsOfDetail(scene, settings);
 }
 
+std::vector<LodCandidate> lodCandidates(const scene::Scene& scene) {
+    std::vector<LodCandidate> candidates;
+    for (const Mesh& mesh : distinctMeshes(scene))
+        if (candidate(scene, mesh))
+            candidates.push_back({.firstIndex = mesh.firstIndex, .indexCount = mesh.indexCount, .firstVertex = mesh.minVertex,
+                                  .vertexCount = mesh.maxVertex - mesh.minVertex + 1});
+    return candidates;
+}
+
 uint64_t lodCandidateTriangles(const scene::Scene& scene) {
     uint64_t triangles = 0;
-    for (const Mesh& mesh : distinctMeshes(scene))
-        if (candidate(scene, mesh)) triangles += mesh.indexCount / 3;
+    for (const LodCandidate& mesh : lodCandidates(scene)) triangles += mesh.indexCount / 3;
     return triangles;
 }
 
-void buildLevelsOfDetail(scene::Scene& scene, const LodChainSettings& settings, uint32_t threads) {
-    const auto start = std::chrono::steady_clock::now();
-    scene::SceneLoadReport::GeometryPreparation& report = scene.report.geometry;
-    std::vector<Mesh> meshes = distinctMeshes(scene);
-    std::erase_if(meshes, [&](const Mesh& mesh) { return !candidate(scene, mesh); });
+std::vector<std::vector<SimplifiedLevel>> simplifyCandidates(const scene::Scene& scene, std::span<const LodCandidate> candidates,
+                                                             const LodChainSettings& settings, uint32_t threads) {
     // The largest first: parallelFor hands them out in order.
-    std::stable_sort(meshes.begin(), meshes.end(), [](const Mesh& a, const Mesh& b) { return a.indexCount > b.indexCount; });
-    std::vector<std::vector<SimplifiedLevel>> chains(meshes.size());
-    parallelFor(meshes.size(), [&](size_t m) {
-        const Mesh& mesh = meshes[m];
-        const uint32_t base = mesh.minVertex, count = mesh.maxVertex - mesh.minVertex + 1;
+    std::vector<size_t> order(candidates.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return candidates[a].indexCount > candidates[b].indexCount; });
+    std::vector<std::vector<SimplifiedLevel>> chains(candidates.size());
+    parallelFor(order.size(), [&](size_t k) {
+        const LodCandidate& mesh = candidates[order[k]];
         std::vector<uint32_t> local(scene.indices.begin() + mesh.firstIndex, scene.indices.begin() + mesh.firstIndex + mesh.indexCount);
-        for (uint32_t& i : local) i -= base;
-        chains[m] = simplifyChain(std::span<const scene::Vertex>(scene.vertices.data() + base, count), local, settings);
+        for (uint32_t& i : local) i -= mesh.firstVertex;
+        chains[order[k]] =
+            simplifyChain(std::span<const scene::Vertex>(scene.vertices.data() + mesh.firstVertex, mesh.vertexCount), local, settings);
     }, threads);
-    for (size_t m = 0; m < meshes.size(); ++m) {
+    return chains;
+}
+
+void attachLevelsOfDetail(scene::Scene& scene, std::span<const LodCandidate> candidates,
+                          const std::vector<std::vector<SimplifiedLevel>>& chains, double milliseconds) {
+    scene::SceneLoadReport::GeometryPreparation& report = scene.report.geometry;
+    std::map<std::pair<uint32_t, uint32_t>, int32_t> chainOfRange;
+    for (size_t m = 0; m < candidates.size(); ++m) {
         if (chains[m].empty()) continue;
-        const Mesh& mesh = meshes[m];
+        const LodCandidate& mesh = candidates[m];
         scene::LodChain chain;
         chain.levels.push_back({mesh.firstIndex, mesh.indexCount, 0.0f});
         for (const SimplifiedLevel& level : chains[m]) {
             chain.levels.push_back({uint32_t(scene.indices.size()), uint32_t(level.indices.size()), level.error});
-            for (uint32_t i : level.indices) scene.indices.push_back(i + mesh.minVertex);
+            for (uint32_t i : level.indices) scene.indices.push_back(i + mesh.firstVertex);
             report.lodIndexBytes += level.indices.size() * sizeof(uint32_t);
         }
-        for (uint32_t d : mesh.draws) scene.draws[d].lod = int32_t(scene.lodChains.size());
+        chainOfRange[{mesh.firstIndex, mesh.indexCount}] = int32_t(scene.lodChains.size());
         scene.lodChains.push_back(std::move(chain));
         ++report.simplifiedMeshes;
     }
+    for (scene::Draw& draw : scene.draws)
+        if (draw.topology == scene::Topology::Triangles && draw.lod < 0)
+            if (auto it = chainOfRange.find({draw.firstIndex, draw.indexCount}); it != chainOfRange.end()) draw.lod = it->second;
     report.lodDeferred = false;
-    report.lodMilliseconds += msSince(start);
-    report.milliseconds += msSince(start);
+    report.lodMilliseconds += milliseconds;
+    report.milliseconds += milliseconds;
+}
+
+void buildLevelsOfDetail(scene::Scene& scene, const LodChainSettings& settings, uint32_t threads) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<LodCandidate> candidates = lodCandidates(scene);
+    const std::vector<std::vector<SimplifiedLevel>> chains = simplifyCandidates(scene, candidates, settings, threads);
+    attachLevelsOfDetail(scene, candidates, chains, msSince(start));
 }
 
 }  // namespace candela::geometry

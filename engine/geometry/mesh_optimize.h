@@ -6,6 +6,9 @@
 #include "geometry/mesh_lod.h"
 #include "scene/scene.h"
 
+#include <span>
+#include <vector>
+
 namespace candela::geometry {
 
 // When prepareGeometry builds the levels of detail: at once, or later (buildLevelsOfDetail) if a
@@ -24,15 +27,38 @@ enum class LevelsOfDetail { Build, Defer };
 // Precondition: the draws' ranges and materials are valid.
 void prepareGeometry(scene::Scene& scene, LevelsOfDetail lod = LevelsOfDetail::Build, const LodChainSettings& settings = {});
 
-// The triangles of the meshes buildLevelsOfDetail would give a chain: every distinct triangle mesh
-// of `scene` but a deformed one (morph targets or a skin: its error would change with the pose) and
-// one whose draws have a chain (the built-in spheres' tessellations; one built before).
+// A mesh buildLevelsOfDetail gives a chain: every distinct triangle mesh of a scene but a deformed
+// one (morph targets or a skin: its error would change with the pose) and one whose draws have a
+// chain (the built-in spheres' tessellations; one built before).
+struct LodCandidate {
+    uint32_t firstIndex = 0, indexCount = 0;    // its range of scene.indices
+    uint32_t firstVertex = 0, vertexCount = 0;  // the range of scene.vertices its indices name
+};
+
+// The candidates of `scene`, in the order of the draws that first use them (the same for the same
+// scene loaded twice).
+std::vector<LodCandidate> lodCandidates(const scene::Scene& scene);
+
+// The triangles of lodCandidates(scene).
 uint64_t lodCandidateTriangles(const scene::Scene& scene);
 
-// Builds the chain of levels of detail of every mesh lodCandidateTriangles counts (on `threads`
-// threads, the caller's included; 0: every hardware thread): appended to scene.indices, listed in
-// scene.lodChains, each draw of the mesh pointing at it (Draw::lod); records the index memory and
-// the time in scene.report.geometry and clears lodDeferred. Precondition: prepareGeometry ran.
+// The chain of each of `candidates` (simplifyChain over its vertices; indices relative to its
+// firstVertex), the largest meshes first on `threads` threads (the caller's included; 0: every
+// hardware thread). Precondition: `candidates` are lodCandidates(scene).
+std::vector<std::vector<SimplifiedLevel>> simplifyCandidates(const scene::Scene& scene, std::span<const LodCandidate> candidates,
+                                                             const LodChainSettings& settings = {}, uint32_t threads = 0);
+
+// Gives each of `candidates` its chain chains[i] (none when empty): the levels appended to
+// scene.indices, listed in scene.lodChains, each draw of the mesh pointing at it (Draw::lod);
+// records the index memory and `milliseconds` in scene.report.geometry and clears lodDeferred.
+// Preconditions: `candidates` are lodCandidates(scene), chains.size() == candidates.size(), and
+// every index of chains[i] < candidates[i].vertexCount (simplifyCandidates' result, or the
+// cache's: geometry/lod_cache_file.h checks).
+void attachLevelsOfDetail(scene::Scene& scene, std::span<const LodCandidate> candidates,
+                          const std::vector<std::vector<SimplifiedLevel>>& chains, double milliseconds);
+
+// simplifyCandidates then attachLevelsOfDetail: the chain of every candidate, built now.
+// Precondition: prepareGeometry ran.
 void buildLevelsOfDetail(scene::Scene& scene, const LodChainSettings& settings = {}, uint32_t threads = 0);
 
 }  // namespace candela::geometry

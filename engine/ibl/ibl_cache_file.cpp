@@ -295,40 +295,4 @@ std::optional<std::vector<CachedImage>> readCacheFile(const std::filesystem::pat
     return images;
 }
 
-void touchCacheFile(const std::filesystem::path& path) {
-    std::error_code ec;
-    std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), ec);
-}
-
-std::vector<std::filesystem::path> evictCacheFiles(const std::filesystem::path& dir, uint64_t capBytes,
-                                                   const std::filesystem::path& keep) {
-    namespace fs = std::filesystem;
-    struct Entry {
-        fs::path path;
-        fs::file_time_type used;
-        uint64_t bytes;
-    };
-    std::vector<Entry> entries;
-    uint64_t total = 0;
-    std::error_code ec;
-    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-        std::error_code fileError;
-        if (it->path().extension() != ".cibl" || !it->is_regular_file(fileError)) continue;
-        const uint64_t bytes = it->file_size(fileError);
-        const fs::file_time_type used = fs::last_write_time(it->path(), fileError);
-        if (fileError) continue;
-        total += bytes;
-        if (it->path() != keep) entries.push_back({it->path(), used, bytes});
-    }
-    std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.used < b.used; });
-    std::vector<fs::path> removed;
-    for (const Entry& entry : entries) {
-        if (total <= capBytes) break;
-        std::error_code removeError;
-        if (fs::remove(entry.path, removeError) && !removeError) removed.push_back(entry.path);
-        total -= entry.bytes;  // removed, or gone already (another process evicted it)
-    }
-    return removed;
-}
-
 }  // namespace candela::ibl

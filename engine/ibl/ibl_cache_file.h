@@ -101,16 +101,4 @@ void writeCacheFile(const std::filesystem::path& path, const IblCacheKey& key, c
 std::optional<std::vector<CachedImage>> readCacheFile(const std::filesystem::path& path, const IblCacheKey& key,
                                                       std::string* reason);
 
-// Marks the cache file at `path` as just used (its last write time: now), so that evictCacheFiles
-// removes it after the files used longer ago. Errors are ignored (the file is then older than it
-// should be).
-void touchCacheFile(const std::filesystem::path& path);
-
-// Removes the least recently used cache files of `dir` (*.cibl, by last write time: written, or
-// touched when read) until those left take at most `capBytes` — never `keep` (the file just
-// written, which alone may exceed the cap). Returns the files removed. A file another process
-// removed or cannot be removed is skipped; never throws for the folder's state.
-std::vector<std::filesystem::path> evictCacheFiles(const std::filesystem::path& dir, uint64_t capBytes,
-                                                   const std::filesystem::path& keep);
-
 }  // namespace candela::ibl

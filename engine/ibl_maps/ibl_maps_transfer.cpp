@@ -123,7 +123,7 @@ void IblMaps::writeCache() {
     try {
         ibl::writeCacheFile(mCacheFile, key, readBack());
         mCacheNote = "wrote " + mCacheFile.string();
-        const size_t evicted = ibl::evictCacheFiles(mCacheDir, ibl::kIblCacheCapBytes, mCacheFile).size();
+        const size_t evicted = evictCacheFiles(mCacheDir, ".cibl", ibl::kIblCacheCapBytes, mCacheFile).size();
         if (evicted)
             mCacheNote += " (" + std::to_string(evicted) + " least recently used maps removed: the folder's cap is " +
                           formatBytes(ibl::kIblCacheCapBytes) + ")";
@@ -184,7 +184,7 @@ bool IblMaps::loadCache() {
     mLutPending = false;
     mCacheFile = path;
     mCacheNote = "loaded " + path.string();
-    ibl::touchCacheFile(path);  // recently used: evicted last
+    touchCacheFile(path);  // recently used: evicted last
     return true;
 }
 

@@ -90,6 +90,9 @@ struct RenderSettings {
     ibl::IblQuality iblQuality;
     ibl::IblLook ibl;
     std::filesystem::path iblCacheDir;  // empty: no on-disk cache
+    // The on-disk cache of levels of detail (geometry/lod_cache.h), used by the API before the
+    // upload (the renderer draws what the scene holds); empty: none.
+    std::filesystem::path lodCacheDir;
     float patternExposure = 1.0f;  // test pattern only
     std::vector<std::string> disabledPasses;  // runtime toggles by pass name
     // Each pass submitted and waited for alone, its wall time in the frame's timings

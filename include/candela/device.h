@@ -40,6 +40,10 @@ struct DeviceOptions {
     // The folder of the on-disk cache of environments' precomputed maps: "" the user's cache
     // folder's ($XDG_CACHE_HOME/candela/ibl), "off" none (computed for every new environment).
     std::string iblCache;
+    // The folder of the on-disk cache of meshes' levels of detail, and of the frames drawn without
+    // them (a render builds them once they pay over every run: docs/geometry.md): "" the user's
+    // cache folder's ($XDG_CACHE_HOME/candela/lod), "off" none (this process's frames alone count).
+    std::string lodCache;
     // Caps the device memory used (MiB; 0: the device's own limit). Beyond it: OutOfMemoryError.
     uint32_t memoryBudgetMib = 0;
 };

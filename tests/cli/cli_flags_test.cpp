@@ -39,7 +39,7 @@ const std::map<std::string, std::string> kExamples = {
     {"--precompile", "off"}, {"--shading-path", "visibility"}, {"--specular-aa", "on"}, {"--lod-error", "2"},
     {"--lod", "off"}, {"--cull", "off"}, {"--disable-pass", "skybox"}, {"--scene-lights", "off"},
     {"--env", "studio.hdr"}, {"--env-rotation", "90"}, {"--env-intensity", "2"}, {"--skybox-blur", "0.3"},
-    {"--ibl-cache", "cache"}, {"--irradiance", "sh9"}, {"--ibl-cube-size", "128"}, {"--ibl-levels", "5"},
+    {"--ibl-cache", "cache"}, {"--lod-cache", "cache"}, {"--irradiance", "sh9"}, {"--ibl-cube-size", "128"}, {"--ibl-levels", "5"},
     {"--ibl-prefilter-samples", "32"}, {"--ibl-lod-bias", "1"}, {"--ibl-bright-texels", "0"},
     {"--ibl-sh-size", "16"}, {"--ibl-irradiance-size", "16"}, {"--ibl-irradiance-samples", "128"},
     {"--ibl-lut-size", "64"}, {"--ibl-lut-samples", "128"}, {"--repeats", "1"}, {"--reference-samples", "64"},

@@ -32,10 +32,11 @@ const fs::path kPinned = fs::path(CANDELA_TEST_DATA) / "work-counters.json";
 // One run of the render command and its scenes' work counters, by scene name.
 Json workOf(const std::string& name, const std::string& args, const candela::test::TempDir& dir) {
     const fs::path report = dir.path() / (name + ".json");
-    // The environment's maps in a folder of this test's own: other tests of the process leave
-    // theirs in the process's cache folder, and whether a run computes them is a counter.
-    const Result r = run("render --validate --quiet " + args + " --ibl-cache '" + (dir.path() / "maps").string() + "' --report '" +
-                         report.string() + "'");
+    // The environment's maps and the levels of detail in folders of this test's own: other tests
+    // of the process leave theirs in the process's cache folder, and whether a run computes the
+    // maps or builds the levels is a counter.
+    const Result r = run("render --validate --quiet " + args + " --ibl-cache '" + (dir.path() / "maps").string() +
+                         "' --lod-cache '" + (dir.path() / "lod").string() + "' --report '" + report.string() + "'");
     EXPECT_EQ(r.exitCode, 0) << name << ": " << r.stderrText;
     EXPECT_EQ(r.stderrText, "") << name;
     std::ifstream in(report);

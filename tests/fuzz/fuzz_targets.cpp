@@ -6,6 +6,7 @@
 #include "assets/hdr_reader.h"
 #include "assets/output_file.h"
 #include "core/errors.h"
+#include "geometry/lod_cache_file.h"
 #include "pose/scene_pose.h"
 #include "pose/skinning.h"
 #include "textures/ktx2_file.h"
@@ -217,6 +218,29 @@ void fuzzNpy(const uint8_t* data, size_t size) {
     // Complete: a version 1.0 header of the length it declares, then a whole number of values.
     const size_t header = 10 + (size_t(data[8]) | size_t(data[9]) << 8);
     if (size < header || (size - header) % 4 != 0) violated("npyComplete accepted a file its header does not describe");
+}
+
+const geometry::LodCacheKey kFuzzLodCacheKey{0xf022f022f022f022ull, "fuzz"};
+const std::vector<geometry::LodCacheMesh> kFuzzLodCacheMeshes = {{.vertexCount = 64, .indexCount = 96},
+                                                                 {.vertexCount = 8, .indexCount = 12}};
+
+void fuzzLodCache(const uint8_t* data, size_t size) {
+    const std::optional<geometry::LodCacheRecord> record = geometry::parseLodCache(
+        std::span(reinterpret_cast<const std::byte*>(data), size), kFuzzLodCacheKey, kFuzzLodCacheMeshes, nullptr);
+    if (!record || !record->chains) return;
+    // What attachLevelsOfDetail relies on: chains for every mesh, each level coarser than the one
+    // before, whole triangles, indices within the mesh.
+    if (record->chains->size() != kFuzzLodCacheMeshes.size()) violated("LOD cache: chains for another number of meshes");
+    for (size_t m = 0; m < record->chains->size(); ++m) {
+        size_t finer = kFuzzLodCacheMeshes[m].indexCount;
+        for (const geometry::SimplifiedLevel& level : (*record->chains)[m]) {
+            if (level.indices.empty() || level.indices.size() % 3 != 0 || level.indices.size() >= finer)
+                violated("LOD cache: a level's index count breaks the layout");
+            for (uint32_t i : level.indices)
+                if (i >= kFuzzLodCacheMeshes[m].vertexCount) violated("LOD cache: an index beyond its mesh");
+            finer = level.indices.size();
+        }
+    }
 }
 
 }  // namespace candela::fuzz

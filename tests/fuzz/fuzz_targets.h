@@ -11,6 +11,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <vector>
+
+#include "geometry/lod_cache_file.h"
 
 namespace candela::fuzz {
 
@@ -37,5 +40,12 @@ void fuzzWebp(const uint8_t* data, size_t size);
 // assets::npyComplete (a per-pixel output's .npy file, --resume's check); checks that a file it
 // calls complete is as long as its header's 4-byte values say.
 void fuzzNpy(const uint8_t* data, size_t size);
+
+// geometry::parseLodCache (the levels-of-detail cache file) against the key and meshes below (the
+// seeds are encoded for them); checks that accepted chains are what attachLevelsOfDetail relies
+// on: one per mesh, each level fewer whole triangles than the one before, indices within the mesh.
+void fuzzLodCache(const uint8_t* data, size_t size);
+extern const geometry::LodCacheKey kFuzzLodCacheKey;
+extern const std::vector<geometry::LodCacheMesh> kFuzzLodCacheMeshes;
 
 }  // namespace candela::fuzz

@@ -15,6 +15,7 @@
 #include "gltf_test_util.h"
 #include "meshopt_test_util.h"
 #include "webp_test_writer.h"
+#include "fuzz_targets.h"
 
 #include "assets/environment.h"
 
@@ -340,18 +341,36 @@ void makeWebpSeeds(const fs::path& dir) {
     std::printf("webp seeds: 4\n");
 }
 
+// Levels-of-detail cache files for the fuzz target's key and meshes: chains for both meshes (one
+// that does not simplify), and a frame count alone.
+void makeLodCacheSeeds(const fs::path& dir) {
+    using namespace candela;
+    geometry::LodCacheRecord chains{.framesDrawn = 2, .chains = std::vector<std::vector<geometry::SimplifiedLevel>>(2)};
+    std::vector<uint32_t> coarse, coarsest = {0, 9, 63};
+    for (uint32_t t = 0; t < 16; ++t) coarse.insert(coarse.end(), {t, t + 1, t + 32});
+    (*chains.chains)[0] = {{coarse, 0.125f}, {coarsest, 0.5f}};
+    const auto write = [&](const char* name, const geometry::LodCacheRecord& record) {
+        const std::vector<std::byte> bytes = geometry::encodeLodCache(fuzz::kFuzzLodCacheKey, record);
+        std::ofstream(dir / name, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    };
+    write("chains.clod", chains);
+    write("frames.clod", {.framesDrawn = 5, .chains = std::nullopt});
+    std::printf("lod_cache seeds: 2\n");
+}
+
 int main(int argc, char** argv) {
     if (argc != 2) {
         std::fprintf(stderr, "usage: make_fuzz_seeds OUT_DIR\n");
         return 2;
     }
     const fs::path out = argv[1];
-    for (const char* sub : {"gltf", "hdr", "exr", "ktx2", "webp", "scene_list", "compared_image"}) fs::create_directories(out / sub);
+    for (const char* sub : {"gltf", "hdr", "exr", "ktx2", "webp", "lod_cache", "scene_list", "compared_image"}) fs::create_directories(out / sub);
     makeGltfSeeds(out / "gltf", smallPng());
     makeHdrSeeds(out / "hdr");
     makeExrSeeds(out / "exr");
     makeKtx2Seeds(out / "ktx2");
     makeWebpSeeds(out / "webp");
+    makeLodCacheSeeds(out / "lod_cache");
     makeSceneListSeeds(out / "scene_list");
     makeComparedImageSeeds(out, out / "compared_image");
     return 0;

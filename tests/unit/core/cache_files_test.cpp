@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <iterator>
 
@@ -17,6 +19,20 @@ namespace fs = std::filesystem;
 std::string readText(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The names of the files in `dir`, sorted.
+std::vector<std::string> fileNames(const test::TempDir& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir.path())) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+void writeText(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out << text;
+    ASSERT_TRUE(out.good()) << path;
 }
 
 TEST(UserCacheFolder, FollowsTheXdgBaseDirectorySpecification) {
@@ -74,6 +90,58 @@ TEST(AtomicWrite, UncreatableFolderIsAUserErrorNamingTheFile) {
     } catch (const UserError& e) {
         EXPECT_EQ(std::string(e.what()).rfind(path.string() + ": cannot create the directory", 0), 0u) << e.what();
     }
+}
+
+TEST(LodCacheFolder, OffIsNoneEmptyIsTheUsersLodFolderAnythingElseThatFolder) {
+    EXPECT_TRUE(lodCacheFolder("off").empty());
+    const fs::path user = userCacheFolder();
+    EXPECT_EQ(lodCacheFolder(""), user.empty() ? fs::path() : user / "lod");
+    EXPECT_EQ(lodCacheFolder("some/folder"), fs::path("some/folder"));
+}
+
+TEST(WordHash64, ValueIsFixedAndEveryByteAndTheLengthCount) {
+    // Part of cache file names: the value must not change between versions.
+    EXPECT_EQ(hex16(wordHash64(0, "", 0)), hex16(wordHash64(0, "", 0)));
+    const std::string text = "levels of detail, keyed by content";
+    const uint64_t h = wordHash64(0, text.data(), text.size());
+    for (size_t i = 0; i < text.size(); ++i)
+        for (int bit = 0; bit < 8; ++bit) {
+            std::string flipped = text;
+            flipped[i] = char(flipped[i] ^ (1 << bit));
+            EXPECT_NE(wordHash64(0, flipped.data(), flipped.size()), h) << "byte " << i << " bit " << bit;
+        }
+    // Trailing zero bytes are not padding: the length is part of the hash.
+    const std::string padded = text + std::string(3, '\0');
+    EXPECT_NE(wordHash64(0, padded.data(), padded.size()), h);
+    // Continuing from a hash differs from starting anew; the seed matters.
+    EXPECT_NE(wordHash64(h, text.data(), text.size()), h);
+    EXPECT_NE(wordHash64(1, text.data(), text.size()), h);
+}
+
+TEST(CacheEviction, RemovesTheLeastRecentlyUsedOfItsKindBeyondTheCap) {
+    test::TempDir dir;
+    const auto file = [&](const std::string& name) { return dir.path() / (name + ".cibl"); };
+    const auto at = [](int secondsAgo) { return fs::file_time_type::clock::now() - std::chrono::seconds(secondsAgo); };
+    // Four files of 100 bytes written 40, 30, 20 and 10 s ago, and a file of another kind.
+    for (int i = 0; i < 4; ++i) {
+        writeText(file("map" + std::to_string(i)), std::string(100, char(i)));
+        fs::last_write_time(file("map" + std::to_string(i)), at(40 - 10 * i));
+    }
+    writeText(dir.path() / "notes.txt", std::string(1000, 0));
+    // map0, the oldest, was read just now: it is the most recently used.
+    touchCacheFile(file("map0"));
+    // Under the cap: nothing goes.
+    EXPECT_TRUE(evictCacheFiles(dir.path(), ".cibl", 400, file("map3")).empty());
+    // 250 bytes: the two least recently used (map1, map2) go; the other file is not the cache's.
+    const std::vector<fs::path> removed = evictCacheFiles(dir.path(), ".cibl", 250, file("map3"));
+    EXPECT_EQ(removed, (std::vector<fs::path>{file("map1"), file("map2")}));
+    EXPECT_EQ(fileNames(dir), (std::vector<std::string>{"map0.cibl", "map3.cibl", "notes.txt"}));
+    // The file just written stays even alone over the cap.
+    EXPECT_EQ(evictCacheFiles(dir.path(), ".cibl", 50, file("map3")), std::vector<fs::path>{file("map0")});
+    EXPECT_EQ(fileNames(dir), (std::vector<std::string>{"map3.cibl", "notes.txt"}));
+    // A folder that is not there: nothing to do, no error.
+    EXPECT_TRUE(evictCacheFiles(dir.path() / "none", ".cibl", 0, {}).empty());
+    touchCacheFile(dir.path() / "none" / "x.cibl");
 }
 
 }  // namespace

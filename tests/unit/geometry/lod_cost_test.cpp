@@ -5,6 +5,7 @@
 #include "assets/builtin_scenes.h"
 #include "geometry/lod_cost.h"
 #include "geometry/mesh_optimize.h"
+#include "bumpy_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -44,35 +45,8 @@ TEST(LodCost, ASequenceBuildsOnceItsFramesCostMoreThanTheBuild) {
     EXPECT_TRUE(decideLevelsOfDetail(10'000, 0, 1000, 0.5f, cpu, 2).build);
 }
 
-// A bumpy 40 × 40 grid of quads, two of them far apart (two meshes: two draws of one range and one of another).
-scene::Scene bumpyScene() {
-    scene::Scene s;
-    for (int mesh = 0; mesh < 2; ++mesh) {
-        const uint32_t base = uint32_t(s.vertices.size()), first = uint32_t(s.indices.size());
-        for (int y = 0; y <= 40; ++y)
-            for (int x = 0; x <= 40; ++x) {
-                scene::Vertex v;
-                v.position = glm::vec3(x, y, 0.3f * std::sin(0.4f * float(x + mesh)) * std::cos(0.3f * float(y)));
-                v.normal = glm::vec3(0, 0, 1);
-                s.vertices.push_back(v);
-            }
-        for (uint32_t y = 0; y < 40; ++y)
-            for (uint32_t x = 0; x < 40; ++x) {
-                const uint32_t a = base + y * 41 + x;
-                s.indices.insert(s.indices.end(), {a, a + 1, a + 41, a + 1, a + 42, a + 41});
-            }
-        scene::Draw draw;
-        draw.firstIndex = first;
-        draw.indexCount = uint32_t(s.indices.size()) - first;
-        s.draws.push_back(draw);
-        if (mesh == 0) s.draws.push_back(draw);
-    }
-    s.materials.emplace_back();
-    return s;
-}
-
 TEST(LodCost, ADeferredBuildGivesTheChainsOfABuildAtLoad) {
-    scene::Scene now = bumpyScene(), later = bumpyScene();
+    scene::Scene now = test::bumpyScene(), later = test::bumpyScene();
     prepareGeometry(now, LevelsOfDetail::Build);
     prepareGeometry(later, LevelsOfDetail::Defer);
     EXPECT_FALSE(now.report.geometry.lodDeferred);

@@ -453,31 +453,5 @@ TEST(IblCacheFileWrite, InvalidImagesAreRejectedAndNothingIsWritten) {
     EXPECT_TRUE(fileNames(dir).empty());
 }
 
-TEST(IblCacheFile, EvictionRemovesTheLeastRecentlyUsedBeyondTheCap) {
-    TempDir dir;
-    const auto file = [&](const std::string& name) { return dir.path() / (name + ".cibl"); };
-    const auto at = [](int secondsAgo) { return fs::file_time_type::clock::now() - std::chrono::seconds(secondsAgo); };
-    // Four files of 100 bytes written 40, 30, 20 and 10 s ago, and a file of another kind.
-    for (int i = 0; i < 4; ++i) {
-        writeBytes(file("map" + std::to_string(i)), Bytes(100, uint8_t(i)));
-        fs::last_write_time(file("map" + std::to_string(i)), at(40 - 10 * i));
-    }
-    writeBytes(dir.path() / "notes.txt", Bytes(1000, 0));
-    // map0, the oldest, was read just now: it is the most recently used.
-    touchCacheFile(file("map0"));
-    // Under the cap: nothing goes.
-    EXPECT_TRUE(evictCacheFiles(dir.path(), 400, file("map3")).empty());
-    // 250 bytes: the two least recently used (map1, map2) go; the other file is not the cache's.
-    const std::vector<fs::path> removed = evictCacheFiles(dir.path(), 250, file("map3"));
-    EXPECT_EQ(removed, (std::vector<fs::path>{file("map1"), file("map2")}));
-    EXPECT_EQ(fileNames(dir), (std::vector<std::string>{"map0.cibl", "map3.cibl", "notes.txt"}));
-    // The file just written stays even alone over the cap.
-    EXPECT_EQ(evictCacheFiles(dir.path(), 50, file("map3")), std::vector<fs::path>{file("map0")});
-    EXPECT_EQ(fileNames(dir), (std::vector<std::string>{"map3.cibl", "notes.txt"}));
-    // A folder that is not there: nothing to do, no error.
-    EXPECT_TRUE(evictCacheFiles(dir.path() / "none", 0, {}).empty());
-    touchCacheFile(dir.path() / "none" / "x.cibl");
-}
-
 }  // namespace
 }  // namespace candela::ibl
