@@ -8,6 +8,7 @@
 #include "candela/dataset.h"
 #include "candela/device.h"
 #include "failures.h"
+#include "image_writer.h"
 #include "render_page.h"
 #include "render_report.h"
 #include "scene_batch.h"
@@ -71,31 +72,58 @@ struct Run {
     bool sequence;  // --frames N > 1 or --views N
     bool anyFrame = false;
     bool gpuNoteShown = false;  // graph::kUnreliableGpuTimes, said once after the first marked line
+    // A single scene's failure, rethrown after the report is written.
+    std::exception_ptr singleFailure;
+    // Encodes and writes each image while the next one is drawn (finished before the report).
+    ImageWriter writer;
+    // The report of the scene being drawn (null between scenes): an image of it that fails to be
+    // written stops it.
+    const SceneReport* rendering = nullptr;
 };
 
-// The line printed for each image written.
-void printWritten(Run& run, const std::string& out, const CapturedFrame& frame, double time, const SceneReport& r) {
-    std::printf("wrote %s (%ux%u", out.c_str(), frame.width, frame.height);
-    if (run.sequence) std::printf(", t = %.4f s", time);
-    if (run.batch) {
-        std::printf("): load %.1f ms, upload %.1f ms, frame %.1f ms\n", r.loadMs, r.uploadMs, r.frameMs.back());
-    } else {
-        std::printf("): submit+wait %.2f ms, readback %.2f ms", frame.submitWaitMs, frame.readbackMs);
-        const graph::GraphDecl& decl = run.session.renderer().lastGraph().declaration();
-        const char* mark = frame.timings.gpuMsUnreliable ? "*" : "";
-        bool marked = false;
-        for (uint32_t pass : run.session.renderer().lastGraph().compiled().order)
-            if (frame.timings.gpuMs.size() > pass && frame.timings.gpuMs[pass] >= 0.0) {
-                std::printf("; %s %.2f ms GPU%s", decl.passes[pass].name.c_str(), frame.timings.gpuMs[pass], mark);
-                marked = *mark != '\0';
-            }
-        std::printf("\n");
-        if (marked && !run.gpuNoteShown) {
-            std::printf("* %s\n", graph::kUnreliableGpuTimes);
-            run.gpuNoteShown = true;
+// printf into a std::string.
+template <typename... Args>
+std::string printed(const char* pattern, Args... args) {
+    std::string out(size_t(std::snprintf(nullptr, 0, pattern, args...)), '\0');
+    std::snprintf(out.data(), out.size() + 1, pattern, args...);
+    return out;
+}
+
+// The lines printed once an image is written (with the footnote on lavapipe's GPU times after the
+// first that needs it), made while its frame's figures are at hand.
+std::string writtenLines(Run& run, const std::string& out, const CapturedFrame& frame, double time, const SceneReport& r) {
+    std::string text = printed("wrote %s (%ux%u", out.c_str(), frame.width, frame.height);
+    if (run.sequence) text += printed(", t = %.4f s", time);
+    if (run.batch) return text + printed("): load %.1f ms, upload %.1f ms, frame %.1f ms\n", r.loadMs, r.uploadMs, r.frameMs.back());
+    text += printed("): submit+wait %.2f ms, readback %.2f ms", frame.submitWaitMs, frame.readbackMs);
+    const graph::GraphDecl& decl = run.session.renderer().lastGraph().declaration();
+    const char* mark = frame.timings.gpuMsUnreliable ? "*" : "";
+    bool marked = false;
+    for (uint32_t pass : run.session.renderer().lastGraph().compiled().order)
+        if (frame.timings.gpuMs.size() > pass && frame.timings.gpuMs[pass] >= 0.0) {
+            text += printed("; %s %.2f ms GPU%s", decl.passes[pass].name.c_str(), frame.timings.gpuMs[pass], mark);
+            marked = *mark != '\0';
         }
+    text += "\n";
+    if (marked && !run.gpuNoteShown) {
+        text += printed("* %s\n", graph::kUnreliableGpuTimes);
+        run.gpuNoteShown = true;
     }
-    std::fflush(stdout);
+    return text;
+}
+
+// Records `error` as scene `r`'s failure (and a single scene's, to be rethrown after the report);
+// a batch logs it and goes on.
+void failScene(Run& run, SceneReport& r, const std::exception_ptr& error, Progress& progress) {
+    if (!run.batch) run.singleFailure = error;
+    const Failure failure = describeFailure(error);
+    r.ok = false;
+    r.error = failure.message;
+    r.exitCode = failure.exitCode;
+    // Loader messages name their file already; the renderer's do not.
+    if (!r.input.file.empty() && r.error.rfind(r.input.file.string(), 0) != 0) r.error = r.input.file.string() + ": " + r.error;
+    progress.clear();
+    if (run.batch) log::error(r.error);
 }
 
 // The files scene `input` writes for `variantName` ("default": the default materials): one, or
@@ -264,16 +292,25 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
             const std::optional<uint32_t> frameNumber = run.sequence ? std::optional(i) : std::nullopt;
             const std::string out = expandOutPattern(options.out, {r.input.name, r.input.path, variantName, frameNumber});
             createFolderOf(out);
-            const auto encodeStart = Clock::now();
-            candela::writeImage(out, image, candela::OutputFileFormat(uint32_t(options.outputsFormat)));
-            r.encodeMs.push_back(msSince(encodeStart));
             for (const std::string& file : filesOf(options, out)) r.outputs.push_back({file, outputLabel(variant, frameNumber)});
             if (run.sequence)
                 cameras.push_back({.file = out, .camera = image.camera,
                                    .environmentRotationDegrees = frameEnvironmentRotation(api, sequence, i)});
-            progress.clear();
-            printWritten(run, out, frame, time, r);
-            if (!run.batch) progress.step(i + 1, "frames written");
+            // Written while the next image is drawn: what became of it is known at the next write
+            // (or the run's end). A failed write stops this scene; one of a scene drawn before is
+            // recorded as that scene's failure.
+            SceneReport* written = &r;
+            run.writer.write(out, image, candela::OutputFileFormat(uint32_t(options.outputsFormat)),
+                             [&run, &progress, written, lines = writtenLines(run, out, frame, time, r), i](
+                                 double encodeMs, std::exception_ptr error) {
+                                 if (error && run.rendering == written) std::rethrow_exception(error);
+                                 if (error) return failScene(run, *written, error, progress);
+                                 written->encodeMs.push_back(encodeMs);
+                                 progress.clear();
+                                 std::fputs(lines.c_str(), stdout);
+                                 std::fflush(stdout);
+                                 if (!run.batch) progress.step(i + 1, "frames written");
+                             });
         };
         Access::renderSequence(run.session.device(), held, api, sequence, write, run.session.apiEnvironment(), stages, flags);
         if (run.sequence) writeTransforms(transformsFileOf(options, r.input, variantName, !run.batch), cameras);
@@ -365,27 +402,21 @@ assets::ImageFileFormat prepareOutputs(const RenderOptions& options, const std::
 }
 
 // Renders one scene of the run into `r`; a failure is recorded in `r` (and logged in a batch),
-// and for a single scene also kept in `singleFailure` to be rethrown after the report is written.
-void runScene(Run& run, LoadedScene loaded, SceneReport& r, RunReport& report, Progress& progress,
-              std::exception_ptr& singleFailure) {
+// and for a single scene also kept in run.singleFailure to be rethrown after the report is written.
+void runScene(Run& run, LoadedScene loaded, SceneReport& r, RunReport& report, Progress& progress) {
     vk::Context& context = run.session.context();
     const uint32_t validationBefore = context.validationMessageCount();
     std::optional<candela::Scene> scene;  // kept until the device has let go of it
     try {
         if (loaded.error) std::rethrow_exception(loaded.error);
         scene.emplace(Access::scene(std::move(*loaded.scene)));
+        run.rendering = &r;
         renderScene(run, *scene, r, progress);
         r.ok = true;
     } catch (...) {
-        if (!run.batch) singleFailure = std::current_exception();
-        const Failure failure = describeFailure(std::current_exception());
-        r.error = failure.message;
-        r.exitCode = failure.exitCode;
-        // Loader messages name their file already; the renderer's do not.
-        if (!r.input.file.empty() && r.error.rfind(r.input.file.string(), 0) != 0) r.error = r.input.file.string() + ": " + r.error;
-        progress.clear();
-        if (run.batch) log::error(r.error);
+        failScene(run, r, std::current_exception(), progress);
     }
+    run.rendering = nullptr;
     r.validationMessages = context.validationMessageCount() - validationBefore;
     r.hostBytes = residentBytes();
     const vk::MemoryStats device = context.allocator().stats();
@@ -406,7 +437,7 @@ void runScene(Run& run, LoadedScene loaded, SceneReport& r, RunReport& report, P
 
 // After the last scene: the report and page, --explain, the graph exports of the last frame and
 // the summary lines; returns the exit code (rethrows a single scene's failure).
-int finishRun(Run& run, const RunReport& report, std::exception_ptr singleFailure) {
+int finishRun(Run& run, const RunReport& report) {
     const RenderOptions& options = run.options;
     if (log::verbose()) {
         for (const SceneReport& scene : report.scenes)
@@ -415,7 +446,7 @@ int finishRun(Run& run, const RunReport& report, std::exception_ptr singleFailur
     }
     if (!options.report.empty()) writeText(options.report, reportJson(report));
     if (!options.html.empty()) reports::writeHtmlPage(options.html, renderPage(report, options.html), options.inlineImages);
-    if (singleFailure) std::rethrow_exception(singleFailure);
+    if (run.singleFailure) std::rethrow_exception(run.singleFailure);
 
     Renderer& renderer = run.session.renderer();
     if (options.explain && run.anyFrame)
@@ -515,7 +546,7 @@ int runRender(const RenderOptions& options) {
         log::info((r.input.file.empty() ? std::string("the default scene") : r.input.file.string()) + ": complete already (--resume)");
     };
     Progress progress("render", run.batch ? scenes.size() : options.frameCount(), options.common.quiet || (run.batch ? false : !sequence));
-    std::exception_ptr singleFailure;
+    report.scenes.reserve(scenes.size());  // the writer's pending image points at its scene's report
     for (size_t k = 0; k < pending.size(); ++k) {
         const size_t i = pending[k];
         // The scenes --resume found complete before this one: reported, not loaded.
@@ -530,15 +561,16 @@ int runRender(const RenderOptions& options) {
         r.loadMs = loaded.ms;
         // The first load overlaps the device's start-up only: counted whole.
         r.loadWaitMs = k == 0 ? loaded.ms : waitMs;
-        runScene(run, std::move(loaded), r, report, progress, singleFailure);
+        runScene(run, std::move(loaded), r, report, progress);
         if (run.batch) progress.step(i + 1, r.input.name);
         reported = i + 1;
     }
     for (; reported < scenes.size(); ++reported) addResumed(reported);
+    run.writer.finish();
     progress.finish();
     report.precomputes = session.renderer().precomputeCount();
     report.totalMs = msSince(runStart);
-    return finishRun(run, report, singleFailure);
+    return finishRun(run, report);
 }
 
 }  // namespace candela::app

@@ -128,6 +128,46 @@ TEST(RenderBatch, AFailingSceneIsReportedAndTheRunGoesOn) {
     EXPECT_EQ(report["scenes"][2]["status"], "ok");
 }
 
+// Images are written while the next scene is drawn (app/image_writer.h): one that cannot be written
+// fails its own scene, not the one drawn when the failure is known, and the run goes on.
+TEST(RenderBatch, AnImageThatCannotBeWrittenFailsItsSceneAlone) {
+    TempDir dir("candela_batch");
+    for (const char* name : {"a", "b", "c"}) triangle(dir / "lib", name);
+    fs::create_directories(dir / "out/b.png");  // a folder where b's image goes
+    const Result r = run("render " + (dir / "lib").string() + " --out " + (dir / "out/{name}.png").string() + " --report " +
+                         (dir / "report.json").string() + kSmall);
+    EXPECT_NE(r.exitCode, 0) << r.stderrText;
+    EXPECT_TRUE(fs::is_regular_file(dir / "out/a.png"));
+    EXPECT_TRUE(fs::is_regular_file(dir / "out/c.png"));
+    const std::string b = (dir / "lib/b.glb").string(), bOut = (dir / "out/b.png").string();
+    EXPECT_NE(r.stderrText.find("1 of 3 scenes failed:\n  " + b + ": "), std::string::npos) << r.stderrText;
+    EXPECT_NE(r.stderrText.find(bOut), std::string::npos) << r.stderrText;
+    const Json report = readJson(dir / "report.json");
+    EXPECT_EQ(report["scenesFailed"], 1);
+    EXPECT_EQ(report["scenes"][0]["status"], "ok");
+    EXPECT_EQ(report["scenes"][1]["status"], "failed");
+    EXPECT_NE(report["scenes"][1]["error"].get<std::string>().find(bOut), std::string::npos) << report["scenes"][1]["error"];
+    EXPECT_EQ(report["scenes"][2]["status"], "ok");
+    // The images written are said so, in order; the one that was not is not.
+    const size_t a = r.stdoutText.find("wrote " + (dir / "out/a.png").string()), c = r.stdoutText.find("wrote " + (dir / "out/c.png").string());
+    EXPECT_NE(a, std::string::npos) << r.stdoutText;
+    EXPECT_NE(c, std::string::npos) << r.stdoutText;
+    EXPECT_LT(a, c);
+    EXPECT_EQ(r.stdoutText.find("wrote " + bOut), std::string::npos) << r.stdoutText;
+}
+
+// In a sequence, a frame that cannot be written stops the run with the error naming the file.
+TEST(RenderBatch, AFrameThatCannotBeWrittenStopsItsSequence) {
+    TempDir dir("candela_batch");
+    const fs::path scene = triangle(dir / "lib", "a");
+    fs::create_directories(dir / "out/f_0001.png");
+    const Result r = run("render --scene " + scene.string() + " --frames 4 --out " + (dir / "out/f_%04d.png").string() + kSmall);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.stderrText.find((dir / "out/f_0001.png").string()), std::string::npos) << r.stderrText;
+    EXPECT_TRUE(fs::is_regular_file(dir / "out/f_0000.png"));
+    EXPECT_FALSE(fs::exists(dir / "out/f_0003.png")) << "the sequence stopped at the failed frame (one frame after it at most)";
+}
+
 TEST(RenderBatch, ShardsCoverEverySceneExactlyOnce) {
     TempDir dir("candela_batch");
     for (int i = 0; i < 7; ++i) triangle(dir / "lib" / ("group" + std::to_string(i % 3)), "t" + std::to_string(i));
