@@ -13,7 +13,8 @@ namespace candela::geometry {
 // halved as Vulkan's (⌊size / 2⌋, at least 1). Mip 0 keeps the image's RGB; each further mip
 // holds, per texel, the mean of the unit normals of mip 0 it covers (2 × 2 box filters in turn,
 // clamped at odd edges): RGB its direction, A its length (1 where they agree, less where they
-// diverge — the lost length the shader turns into roughness). Mip 0's A is 1 (255). Precondition:
+// diverge — the lost length the shader turns into roughness). Mip 0's A is 1 (255). Rows are
+// computed on every core (core/parallel_for.h); the result does not depend on how many. Precondition:
 // image.rgba8 holds width × height × 4 bytes.
 std::vector<std::vector<uint8_t>> normalMapMipChain(const scene::Image& image);
 
