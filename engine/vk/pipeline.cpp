@@ -134,14 +134,18 @@ Pipeline Pipeline::compute(Context& context, std::string_view shaderName, const 
     return out;
 }
 
+ProgramSpecialization programSpecialization(const GraphicsPipelineDesc& desc) {
+    ProgramSpecialization out{.sets = desc.specializedSets, .outputLocations = desc.outputLocations};
+    for (uint32_t id : desc.frozenConstants) out.frozen.emplace_back(id, desc.specialization.at(id));
+    return out;
+}
+
 Pipeline Pipeline::graphics(Context& context, std::string_view vertexShader, std::string_view fragmentShader,
                             const GraphicsPipelineDesc& desc) {
     Pipeline out;
-    ProgramSpecialization programSpecialization{.sets = desc.specializedSets, .outputLocations = desc.outputLocations};
-    for (uint32_t id : desc.frozenConstants) programSpecialization.frozen.emplace_back(id, desc.specialization.at(id));
     std::vector<std::string_view> shaders{vertexShader};
     if (!fragmentShader.empty()) shaders.push_back(fragmentShader);
-    out.mProgram = Program(context, shaders, programSpecialization);
+    out.mProgram = Program(context, shaders, programSpecialization(desc));
     out.mBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
     out.mShaderNames = {std::string(vertexShader), std::string(fragmentShader)};
     out.mDesc = desc;

@@ -101,6 +101,11 @@ struct GraphicsPipelineDesc {
     std::vector<VkVertexInputAttributeDescription> vertexAttributes;
 };
 
+// The specialization of the program Pipeline::graphics builds for `desc`: its frozen constants
+// with their values, its specialized sets and output locations. A Program made with it has the
+// layouts and reflection of that pipeline's, without compiling a pipeline.
+ProgramSpecialization programSpecialization(const GraphicsPipelineDesc& desc);
+
 class Pipeline {
 public:
     Pipeline() = default;

@@ -100,10 +100,23 @@ const vk::Program& ForwardPass::coreProgram() {
     return *mCoreProgram;
 }
 
+const vk::Program& ForwardPass::layeredProgram(uint32_t layers) {
+    auto it = mLayeredPrograms.find(layers);
+    if (it == mLayeredPrograms.end() || it->second.stale()) {
+        const vk::GraphicsPipelineDesc desc =
+            pipelineDesc(ShadingVariant{.layers = layers}, mContext.choices().specializeLayeredProgram);
+        it = mLayeredPrograms
+                 .insert_or_assign(layers, vk::Program(mContext, {"forward_layers.vert", "forward_layers.frag"},
+                                                       vk::programSpecialization(desc)))
+                 .first;
+    }
+    return it->second;
+}
+
 const shader::ShaderReflection* ForwardPass::layeredReflection() {
     if (!mKeys) return nullptr;
     for (const MaterialKey& key : mKeys->keys)
-        if (key.layers) return &pipeline(ShadingVariant{.layers = key.layers}).program().reflection();
+        if (key.layers) return &layeredProgram(key.layers).reflection();
     return nullptr;
 }
 
@@ -116,13 +129,13 @@ void ForwardPass::setScene(const gpu_scene::GpuScene& gpuScene, const MaterialKe
     mMaterialSets.clear();
     // Every core variant has the set layouts of the core program, so sets written with it fit them
     // all (and no core pipeline is compiled for them here). A layered material's set follows the
-    // layered program of its layers (specialized to them where the device's limits need it), read
-    // from the pipeline of those layers.
+    // layered program of its layers (specialized to them where the device's limits need it:
+    // layeredProgram, which compiles no pipeline).
     const vk::Program& core = coreProgram();
     const size_t materials = gpuScene.scene().materials.size();
     std::vector<const vk::Program*> programs(materials, &core);  // each material set's layout
     for (uint32_t material = 0; material < materials; ++material)
-        if (const uint32_t layers = keys[material].layers) programs[material] = &pipeline(ShadingVariant{.layers = layers}).program();
+        if (const uint32_t layers = keys[material].layers) programs[material] = &layeredProgram(layers);
     // One pool for the scene's sets: the scene set and a material set per material.
     vk::DescriptorCounts total = vk::DescriptorCounts::ofSet(core, 0);
     for (const vk::Program* program : programs) total += vk::DescriptorCounts::ofSet(*program, 1);

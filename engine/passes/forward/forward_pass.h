@@ -27,6 +27,7 @@
 #include "vk/pipeline_cache.h"
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -107,6 +108,10 @@ private:
     // The core program (shader modules, layouts, reflection: no pipeline), whose set layouts every
     // core variant shares and whose sets 0 and 2 every layered variant shares.
     const vk::Program& coreProgram();
+    // The program of the layered variants of `layers` (what every such variant's pipeline is built
+    // with: its set layouts and reflection), made without compiling a pipeline; rebuilt when a shader
+    // was replaced.
+    const vk::Program& layeredProgram(uint32_t layers);
     // Queues the pipeline of every material key for `frame` (see prepare).
     void queue(const FrameVariant& frame, WorkerPool::Priority priority);
 
@@ -115,6 +120,7 @@ private:
     vk::PipelineCache<ShadingVariant> mPipelines;
     std::optional<FrameVariant> mPrepared, mPreparedViews;  // what prepare/prepareDebugViews last queued for
     std::optional<vk::Program> mCoreProgram;
+    std::map<uint32_t, vk::Program> mLayeredPrograms;  // by layer bits
     IblSet mIblSet;
     LayerMapSet mLayerSet;
     const gpu_scene::GpuScene* mScene = nullptr;
