@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 #include "core/log.h"
+#include "gpu_scene/gpu_scene.h"
 #include "passes/backdrop/sky_rays.h"
 #include "render/camera_framing.h"
 #include "render/explain_plan.h"
@@ -27,6 +28,12 @@ FrameBuilder::FrameBuilder(vk::Context& context, SceneState& scene, shader::Para
     : mContext(context), mScene(scene), mParameters(parameters), mPattern(context), mEncode(context, kLdrFormat),
       mForward(context), mSkybox(context), mExpand(context), mTransmissionBackground(context), mSkinMorph(context), mTonemap(context),
       mCalibration(context), mAov(context), mVisibility(context) {}
+
+void FrameBuilder::prepareAhead(const scene::Scene& scene, std::span<const scene::Light> lights) {
+    uint32_t types = 0;
+    for (const scene::Light& light : lights) types |= 1u << static_cast<uint32_t>(gpu_scene::lightData(light).directionType.w);
+    mForward.prepareAhead(passes::MaterialKeys::of(scene), !lights.empty(), types);
+}
 
 void FrameBuilder::sceneUploaded() {
     mForward.setScene(mScene.gpuScene(), mScene.materialKeys());

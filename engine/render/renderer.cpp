@@ -41,7 +41,11 @@ void Renderer::environmentReplaced() { mScene.environmentReplaced(); }
 void Renderer::releaseScene() { mScene.releaseScene(); }
 
 void Renderer::upload(const RenderSettings& settings) {
-    if (mScene.prepareScene({settings.scene, settings.defaultLights, settings.sceneLights})) mBuilder.sceneUploaded();
+    const SceneChoice choice{settings.scene, settings.defaultLights, settings.sceneLights};
+    // A new scene's pipelines compile on the workers while its textures upload.
+    if (settings.precompile != options::Precompile::Off && mScene.uploads(choice))
+        mBuilder.prepareAhead(*settings.scene, SceneState::lightsOf(choice));
+    if (mScene.prepareScene(choice)) mBuilder.sceneUploaded();
     mScene.prepareEnvironment(settings.environment, settings.iblQuality, settings.iblCacheDir);
 }
 void Renderer::shadersReplaced(const std::vector<std::string>& names) { mScene.shadersReplaced(names); }

@@ -57,11 +57,33 @@ std::vector<scene::Light> SceneState::defaultLights() {
     return {key, fill};
 }
 
+namespace {
+
+// Which lights a frame of `choice` draws: the scene's own, the default ones, or neither.
+struct LightChoice {
+    bool scene = false, defaults = false;
+};
+LightChoice lightChoice(const SceneChoice& choice) {
+    const bool scene = choice.sceneLights && !choice.scene->lights.empty();
+    return {scene, choice.defaultLights && !scene};
+}
+
+}  // namespace
+
+bool SceneState::uploads(const SceneChoice& choice) const {
+    const LightChoice lights = lightChoice(choice);
+    return choice.scene != mUploaded.scene || lights.defaults != mUploaded.defaultLights || lights.scene != mUploaded.sceneLights;
+}
+
+std::vector<scene::Light> SceneState::lightsOf(const SceneChoice& choice) {
+    const LightChoice lights = lightChoice(choice);
+    return lights.scene ? choice.scene->lights : lights.defaults ? defaultLights() : std::vector<scene::Light>{};
+}
+
 bool SceneState::prepareScene(const SceneChoice& choice) {
-    const bool sceneLights = choice.sceneLights && !choice.scene->lights.empty();
-    const bool addLights = choice.defaultLights && !sceneLights;
-    if (choice.scene == mUploaded.scene && addLights == mUploaded.defaultLights && sceneLights == mUploaded.sceneLights)
-        return false;
+    if (!uploads(choice)) return false;
+    const LightChoice lights = lightChoice(choice);
+    const bool sceneLights = lights.scene, addLights = lights.defaults;
     // The previous scene's buffers may still be used by a frame in flight: wait first, and free
     // them before the new scene takes its memory.
     releaseScene();

@@ -38,6 +38,11 @@ public:
     // Uploads `choice` unless it is what is uploaded; returns whether it uploaded (the passes then
     // bind the new scene).
     bool prepareScene(const SceneChoice& choice);
+    // Whether prepareScene(choice) would upload.
+    bool uploads(const SceneChoice& choice) const;
+    // The punctual lights a frame of `choice` draws: the scene's own (sceneLights, when it has
+    // some), else the default key and fill (defaultLights), else none.
+    static std::vector<scene::Light> lightsOf(const SceneChoice& choice);
     // Gives the maps `environment` at `quality` (the sheen cube when `quality` asks for it or a
     // material has a sheen; maps with it also serve scenes without) unless they have it already.
     // Precondition: a scene is uploaded.

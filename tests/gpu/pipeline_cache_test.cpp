@@ -217,6 +217,35 @@ TEST_F(GpuTest, DebugViewsPreparedInTheBackgroundDrawLikeOnesBuiltAtFirstDraw) {
     EXPECT_EQ(context().liveObjects(), 0);
 }
 
+TEST_F(GpuTest, ANewScenesPipelinesCompileWhileItUploadsForAFrameLikeTheLast) {
+    // After a frame of the grid, uploading a scene with other material keys (alpha-masked) queues
+    // their forward pipelines for a frame of the same bits: they are built before its first frame,
+    // which then compiles nothing and draws what a renderer that never queued ahead draws.
+    const scene::Scene grid = assets::makeSphereGrid();
+    scene::Scene masked = assets::makeSphereGrid();
+    for (scene::Material& material : masked.materials) material.alphaMode = scene::AlphaMode::Mask;
+    RenderSettings settings{.width = 48, .height = 27, .scene = &masked, .precompile = options::Precompile::Off};
+    CapturedFrame reference;
+    {
+        Renderer renderer(context());
+        reference = renderer.capture(settings);
+    }
+    Renderer renderer(context());
+    settings.precompile = options::Precompile::Frame;
+    settings.scene = &grid;
+    renderer.capture(settings);
+    renderer.finishPipelineBuilds();
+    settings.scene = &masked;
+    const uint64_t before = context().pipelineCreation().count;
+    renderer.upload(settings);
+    renderer.finishPipelineBuilds();
+    const uint64_t ahead = context().pipelineCreation().count - before;
+    EXPECT_GT(ahead, 0u) << "the masked variants compile before the scene's first frame";
+    const CapturedFrame frame = renderer.capture(settings);
+    EXPECT_EQ(context().pipelineCreation().count - before, ahead) << "its first frame found every pipeline built";
+    EXPECT_EQ(frame.rgba8, reference.rgba8);
+}
+
 TEST_F(GpuTest, RendererDestroyedWhileBackgroundBuildsRunLeaksNothing) {
     const scene::Scene grid = assets::makeSphereGrid();
     {

@@ -64,8 +64,8 @@ const vk::Pipeline& ForwardPass::pipeline(const ShadingVariant& v) {
     return mPipelines.get(mContext, v, [&] { return buildPipeline(mContext, v); });
 }
 
-void ForwardPass::queue(const FrameVariant& frame, WorkerPool::Priority priority) {
-    for (const MaterialKey& key : mKeys->keys) {
+void ForwardPass::queue(const MaterialKeys& keys, const FrameVariant& frame, WorkerPool::Priority priority) {
+    for (const MaterialKey& key : keys.keys) {
         const ShadingVariant v = shadingVariant(key, frame);
         mPipelines.prepare(mWorkers, v, [context = &mContext, v] { return buildPipeline(*context, v); }, priority);
     }
@@ -73,9 +73,17 @@ void ForwardPass::queue(const FrameVariant& frame, WorkerPool::Priority priority
 
 bool ForwardPass::prepare(const FrameVariant& frame) {
     if (mPrepared == frame) return false;
-    mPrepared = frame;
-    queue(frame, WorkerPool::Priority::Soon);
+    mPrepared = mLastFrame = frame;
+    queue(*mKeys, frame, WorkerPool::Priority::Soon);
     return true;
+}
+
+void ForwardPass::prepareAhead(const MaterialKeys& keys, bool lights, uint32_t lightTypes) {
+    if (!mLastFrame) return;
+    FrameVariant frame = *mLastFrame;
+    frame.lights = lights;
+    frame.lightTypes = lightTypes;
+    queue(keys, frame, WorkerPool::Priority::Soon);
 }
 
 void ForwardPass::prepareDebugViews(const FrameVariant& frame) {
@@ -84,11 +92,11 @@ void ForwardPass::prepareDebugViews(const FrameVariant& frame) {
     if (mPreparedViews == base) return;
     mPreparedViews = base;
     // The shaded image first: the view a debug view is most often switched back to.
-    queue(base, WorkerPool::Priority::Background);
+    queue(*mKeys, base, WorkerPool::Priority::Background);
     for (options::DebugView view : options::allDebugViews()) {
         FrameVariant f = base;
         f.debugView = view;
-        queue(f, WorkerPool::Priority::Background);
+        queue(*mKeys, f, WorkerPool::Priority::Background);
     }
 }
 

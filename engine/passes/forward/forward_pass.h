@@ -77,6 +77,12 @@ public:
     // if no worker has started it). Cheap when `frame` is the one last prepared; returns whether it
     // was not (something may have been queued). Precondition: a scene is set.
     bool prepare(const FrameVariant& frame);
+    // Queues (priority Soon) the pipelines of `keys` — a scene about to be uploaded — for a frame
+    // with the bits of the last one prepared and these lights (`lights`: any; `lightTypes`: bit
+    // 1 << CANDELA_LIGHT_* of each), so that they compile on the workers while the scene uploads:
+    // a batch's next scene is most often drawn like the one before. A frame of other bits queues
+    // its own in prepare() and leaves these unused. Nothing before a first frame.
+    void prepareAhead(const MaterialKeys& keys, bool lights, uint32_t lightTypes);
     // Queues, in the background, the same for every debug view (None included) of `frame`'s other
     // bits, so that a switch of the view finds them built. Cheap when done already for `frame`.
     void prepareDebugViews(const FrameVariant& frame);
@@ -112,13 +118,14 @@ private:
     // with: its set layouts and reflection), made without compiling a pipeline; rebuilt when a shader
     // was replaced.
     const vk::Program& layeredProgram(uint32_t layers);
-    // Queues the pipeline of every material key for `frame` (see prepare).
-    void queue(const FrameVariant& frame, WorkerPool::Priority priority);
+    // Queues the pipeline of every key of `keys` for `frame` (see prepare).
+    void queue(const MaterialKeys& keys, const FrameVariant& frame, WorkerPool::Priority priority);
 
     vk::Context& mContext;
     WorkerPool mWorkers;  // before mPipelines: outlives the builds it runs
     vk::PipelineCache<ShadingVariant> mPipelines;
     std::optional<FrameVariant> mPrepared, mPreparedViews;  // what prepare/prepareDebugViews last queued for
+    std::optional<FrameVariant> mLastFrame;  // what prepare() last queued for, whatever the scene
     std::optional<vk::Program> mCoreProgram;
     std::map<uint32_t, vk::Program> mLayeredPrograms;  // by layer bits
     IblSet mIblSet;
