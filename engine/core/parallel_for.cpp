@@ -33,4 +33,15 @@ void parallelFor(size_t count, const std::function<void(size_t)>& fn, uint32_t t
         if (error) std::rethrow_exception(error);
 }
 
+void parallelForRows(uint32_t width, uint32_t rows, const std::function<void(uint32_t)>& fn) {
+    constexpr uint32_t kBand = 16;
+    if (uint64_t(width) * rows < 65536) {
+        for (uint32_t y = 0; y < rows; ++y) fn(y);
+        return;
+    }
+    parallelFor((rows + kBand - 1) / kBand, [&](size_t band) {
+        for (uint32_t y = uint32_t(band) * kBand; y < std::min(rows, uint32_t(band + 1) * kBand); ++y) fn(y);
+    });
+}
+
 }  // namespace candela

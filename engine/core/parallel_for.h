@@ -19,4 +19,9 @@ uint32_t hardwareThreads();
 // Precondition: fn may be called concurrently for different i.
 void parallelFor(size_t count, const std::function<void(size_t)>& fn, uint32_t threads = 0);
 
+// Calls fn(y) for every row y in [0, rows) of an image `width` items wide: bands of 16 rows handed
+// out by parallelFor, or all on the calling thread when the image holds fewer than 65,536 items
+// (starting threads would cost more). Precondition: fn may be called concurrently for different rows.
+void parallelForRows(uint32_t width, uint32_t rows, const std::function<void(uint32_t)>& fn);
+
 }  // namespace candela

@@ -51,7 +51,6 @@ const SrgbTables& srgbTables() {
 }  // namespace
 
 std::vector<std::vector<uint8_t>> boxMipChain(const scene::Image& image) {
-    constexpr uint32_t kBand = 16;  // rows per parallelFor iteration
     const uint32_t levels = std::bit_width(std::max(image.width, image.height));
     const SrgbTables& tables = srgbTables();
     std::vector<std::vector<uint8_t>> mips;
@@ -111,19 +110,12 @@ std::vector<std::vector<uint8_t>> boxMipChain(const scene::Image& image) {
                 }
             }
         };
-        const auto band = [&](size_t b) {
-            for (uint32_t y = uint32_t(b) * kBand; y < std::min(h, uint32_t(b + 1) * kBand); ++y)
-                for (uint32_t x = 0; x < w; ++x) {
-                    uint8_t* out = &texels[(size_t(y) * w + x) * 4];
-                    halved ? halvedTexel(x, y, out) : filteredTexel(x, y, out);
-                }
-        };
-        const size_t bands = (h + kBand - 1) / kBand;
-        if (uint64_t(w) * h < 65536) {
-            for (size_t b = 0; b < bands; ++b) band(b);
-        } else {
-            parallelFor(bands, band);
-        }
+        parallelForRows(w, h, [&](uint32_t y) {
+            for (uint32_t x = 0; x < w; ++x) {
+                uint8_t* out = &texels[(size_t(y) * w + x) * 4];
+                halved ? halvedTexel(x, y, out) : filteredTexel(x, y, out);
+            }
+        });
         mips.push_back(std::move(texels));
         above = mips.back().data();
         width = w, height = h;

@@ -72,8 +72,7 @@ LodDecision provideLevelsOfDetail(scene::Scene& scene, uint64_t framesDrawn, std
                                   const std::filesystem::path& cacheDir, const LodChainSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<LodCandidate> candidates = lodCandidates(scene);
-    uint64_t triangles = 0;
-    for (const LodCandidate& mesh : candidates) triangles += mesh.indexCount / 3;
+    const uint64_t triangles = lodCandidateTriangles(candidates);
     const auto build = [&] {
         const std::vector<std::vector<SimplifiedLevel>> chains = simplifyCandidates(scene, candidates, settings);
         attachLevelsOfDetail(scene, candidates, chains, millisecondsSince(start));

@@ -124,11 +124,13 @@ std::vector<LodCandidate> lodCandidates(const scene::Scene& scene) {
     return candidates;
 }
 
-uint64_t lodCandidateTriangles(const scene::Scene& scene) {
+uint64_t lodCandidateTriangles(std::span<const LodCandidate> candidates) {
     uint64_t triangles = 0;
-    for (const LodCandidate& mesh : lodCandidates(scene)) triangles += mesh.indexCount / 3;
+    for (const LodCandidate& mesh : candidates) triangles += mesh.indexCount / 3;
     return triangles;
 }
+
+uint64_t lodCandidateTriangles(const scene::Scene& scene) { return lodCandidateTriangles(lodCandidates(scene)); }
 
 std::vector<std::vector<SimplifiedLevel>> simplifyCandidates(const scene::Scene& scene, std::span<const LodCandidate> candidates,
                                                              const LodChainSettings& settings, uint32_t threads) {

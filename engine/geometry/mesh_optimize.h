@@ -39,7 +39,8 @@ struct LodCandidate {
 // scene loaded twice).
 std::vector<LodCandidate> lodCandidates(const scene::Scene& scene);
 
-// The triangles of lodCandidates(scene).
+// The triangles of `candidates`, and of lodCandidates(scene).
+uint64_t lodCandidateTriangles(std::span<const LodCandidate> candidates);
 uint64_t lodCandidateTriangles(const scene::Scene& scene);
 
 // The chain of each of `candidates` (simplifyChain over its vertices; indices relative to its

@@ -7,23 +7,12 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <functional>
 
 namespace candela::geometry {
 
 namespace {
 
 uint8_t encode(float value) { return uint8_t(std::lround(std::clamp(value, 0.0f, 1.0f) * 255.0f)); }
-
-constexpr uint32_t kBand = 16;  // rows per parallelFor iteration
-
-// fn(y) for every row y < rows, bands of rows on every core (each row's texels depend on the
-// level above alone: the result does not depend on the threads).
-void forEachRow(uint32_t rows, const std::function<void(uint32_t)>& fn) {
-    parallelFor((rows + kBand - 1) / kBand, [&](size_t band) {
-        for (uint32_t y = uint32_t(band) * kBand; y < std::min(rows, uint32_t(band + 1) * kBand); ++y) fn(y);
-    });
-}
 
 }  // namespace
 
@@ -34,7 +23,8 @@ std::vector<std::vector<uint8_t>> normalMapMipChain(const scene::Image& image) {
     for (size_t i = 3; i < mips[0].size(); i += 4) mips[0][i] = 255;
     // The mean unit normal per texel of the current mip (mip 0: each texel's own, normalized).
     std::vector<glm::vec3> mean(size_t(image.width) * image.height);
-    forEachRow(image.height, [&](uint32_t y) {
+    // Each row's texels depend on the level above alone: the result does not depend on the threads.
+    parallelForRows(image.width, image.height, [&](uint32_t y) {
         for (size_t i = size_t(y) * image.width; i < size_t(y + 1) * image.width; ++i) {
             const glm::vec3 n = glm::vec3(image.rgba8[i * 4], image.rgba8[i * 4 + 1], image.rgba8[i * 4 + 2]) / 127.5f - 1.0f;
             const float length = glm::length(n);
@@ -46,7 +36,7 @@ std::vector<std::vector<uint8_t>> normalMapMipChain(const scene::Image& image) {
         const uint32_t w = std::max(1u, width / 2), h = std::max(1u, height / 2);
         std::vector<glm::vec3> next(size_t(w) * h);
         std::vector<uint8_t> texels(next.size() * 4);
-        forEachRow(h, [&](uint32_t y) {
+        parallelForRows(w, h, [&](uint32_t y) {
             for (uint32_t x = 0; x < w; ++x) {
                 glm::vec3 sum(0.0f);
                 for (uint32_t dy = 0; dy < 2; ++dy)

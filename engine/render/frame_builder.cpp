@@ -30,9 +30,9 @@ FrameBuilder::FrameBuilder(vk::Context& context, SceneState& scene, shader::Para
       mCalibration(context), mAov(context), mVisibility(context) {}
 
 void FrameBuilder::prepareAhead(const scene::Scene& scene, std::span<const scene::Light> lights) {
-    uint32_t types = 0;
-    for (const scene::Light& light : lights) types |= 1u << static_cast<uint32_t>(gpu_scene::lightData(light).directionType.w);
-    mForward.prepareAhead(passes::MaterialKeys::of(scene), !lights.empty(), types);
+    std::vector<shading::LightData> data;
+    for (const scene::Light& light : lights) data.push_back(gpu_scene::lightData(light));
+    mForward.prepareAhead(passes::MaterialKeys::of(scene), !lights.empty(), passes::lightTypeBits(data));
 }
 
 void FrameBuilder::sceneUploaded() {

@@ -4,13 +4,17 @@ namespace candela::passes {
 
 using namespace graph;
 
+uint32_t lightTypeBits(std::span<const shading::LightData> lights) {
+    uint32_t types = 0;
+    for (const shading::LightData& light : lights) types |= 1u << static_cast<uint32_t>(light.directionType.w);
+    return types;
+}
+
 FrameInputs makeFrameInputs(const FrameInputsDesc& desc, const gpu_scene::GpuScene& scene) {
     FrameInputs out;
-    uint32_t lightTypes = 0;
-    for (const shading::LightData& light : scene.lights()) lightTypes |= 1u << static_cast<uint32_t>(light.directionType.w);
     out.variant = {.model = desc.model,
                    .lights = scene.lightCount() > 0,
-                   .lightTypes = lightTypes,
+                   .lightTypes = lightTypeBits(scene.lights()),
                    .ibl = desc.ibl != nullptr,
                    .irradianceSh = !desc.ibl || desc.ibl->irradianceSh,
                    .multiscatter = !desc.ibl || desc.ibl->multiscatter,

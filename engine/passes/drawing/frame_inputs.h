@@ -20,6 +20,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace candela::passes {
@@ -90,6 +91,9 @@ struct FrameInputs {
 // The inputs of a frame of `desc` drawing `scene`. The push constants hold the view, the light
 // count and the IBL parameters (the user's edits are applied by the caller).
 FrameInputs makeFrameInputs(const FrameInputsDesc& desc, const gpu_scene::GpuScene& scene);
+
+// FrameVariant::lightTypes of a frame drawing `lights`: bit 1 << CANDELA_LIGHT_* of each.
+uint32_t lightTypeBits(std::span<const shading::LightData> lights);
 
 // Which of the frame's per-frame buffers a pass reads and in which shader stages (0: the pass
 // type's default stages).

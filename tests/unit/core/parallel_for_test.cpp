@@ -1,5 +1,6 @@
 // parallelFor (core/parallel_for.h): every iteration once, on more than one thread when asked, and
-// the first exception in iteration order rethrown after the others ran.
+// the first exception in iteration order rethrown after the others ran; parallelForRows: every
+// row once, a small image's on the calling thread alone.
 #include "core/parallel_for.h"
 
 #include <gtest/gtest.h>
@@ -42,6 +43,23 @@ TEST(ParallelFor, RethrowsTheFirstFailureAfterTheRestRan) {
         EXPECT_STREQ(e.what(), "iteration 7");
     }
     EXPECT_EQ(ran.load(), 50);
+}
+
+TEST(ParallelForRows, RunsEveryRowOnceAndASmallImagesOnTheCaller) {
+    for (const auto& [width, rows] : {std::pair{4096u, 37u}, std::pair{100u, 20u}, std::pair{1u, 0u}}) {
+        std::vector<std::atomic<int>> calls(rows);
+        std::mutex mutex;
+        std::set<std::thread::id> threads;
+        parallelForRows(width, rows, [&](uint32_t y) {
+            ++calls[y];
+            const std::lock_guard lock(mutex);
+            threads.insert(std::this_thread::get_id());
+        });
+        for (const std::atomic<int>& c : calls) EXPECT_EQ(c.load(), 1) << width << " x " << rows;
+        if (uint64_t(width) * rows < 65536) {
+            EXPECT_TRUE(threads.empty() || threads == std::set{std::this_thread::get_id()}) << width << " x " << rows;
+        }
+    }
 }
 
 }  // namespace
