@@ -5,6 +5,8 @@
 
 #include "temp_dir.h"
 
+#include <gtest/gtest.h>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -16,6 +18,8 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <system_error>
+#include <utility>
 
 namespace candela::test {
 
@@ -25,11 +29,30 @@ inline std::string candelaExecutable() {
     return chosen && *chosen ? chosen : CANDELA_EXECUTABLE;
 }
 
-// The executable's cache folder (XDG_CACHE_HOME, where its pipeline cache goes by default) is a
-// folder of this test process, removed at exit: the tests never write into the user's cache.
+// Empties the folder it is given at the start of every test.
+class EmptyFolderPerTest : public testing::EmptyTestEventListener {
+public:
+    explicit EmptyFolderPerTest(std::filesystem::path folder) : mFolder(std::move(folder)) {}
+    void OnTestStart(const testing::TestInfo&) override {
+        std::error_code ec;
+        std::filesystem::remove_all(mFolder, ec);
+        std::filesystem::create_directories(mFolder, ec);
+    }
+
+private:
+    std::filesystem::path mFolder;
+};
+
+// The executable's cache folder (XDG_CACHE_HOME: its pipeline, IBL and level-of-detail caches go
+// there by default) is a folder of this test process, removed at exit: the tests never write into
+// the user's cache. It is emptied before each test, so that a test sees the same caches whether
+// it runs alone (ctest: one process a test) or after others in one process (the sanitized stage's
+// shards): the level-of-detail cache counts the frames of earlier runs of a file, and another
+// test's renders would change what this one's build.
 inline const bool kPrivateCacheHome = [] {
     static const TempDir home("candela_cli_cache_home");
     ::setenv("XDG_CACHE_HOME", home.path().c_str(), 1);
+    testing::UnitTest::GetInstance()->listeners().Append(new EmptyFolderPerTest(home.path()));  // owned by GoogleTest
     return true;
 }();
 
