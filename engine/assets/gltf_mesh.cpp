@@ -185,6 +185,22 @@ size_t dropZeroAreaTriangles(std::span<const scene::Vertex> vertices, std::vecto
     return dropped;
 }
 
+PrimitiveSource primitiveSource(const tinygltf::Model& model, int meshIndex, int primitiveIndex, const scene::TextureRef* tangentMap) {
+    const tinygltf::Primitive& primitive = model.meshes[size_t(meshIndex)].primitives[size_t(primitiveIndex)];
+    PrimitiveSource source{.mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode,
+                           .indices = primitive.indices,
+                           .attributes = primitive.attributes,
+                           .targets = primitive.targets};
+    if (tangentMap) {
+        source.generatedTangents = true;
+        source.tangentTexCoord = tangentMap->texCoord;
+        source.tangentRotation = tangentMap->transform.rotation;
+        source.tangentScaleX = tangentMap->transform.scale.x;
+        source.tangentScaleY = tangentMap->transform.scale.y;
+    }
+    return source;
+}
+
 PrimitiveGeometry appendPrimitive(const LoadContext& ctx, const tinygltf::Model& model, int meshIndex, int primitiveIndex,
                                   const scene::TextureRef* tangentMap, scene::Scene& scene) {
     const tinygltf::Mesh& mesh = model.meshes[size_t(meshIndex)];

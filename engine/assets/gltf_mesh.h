@@ -4,8 +4,11 @@
 #include "assets/gltf_context.h"
 #include "scene/scene.h"
 
+#include <compare>
 #include <cstdint>
+#include <map>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace tinygltf {
@@ -24,6 +27,26 @@ struct PrimitiveGeometry {
     int32_t deformation = -1;        // Scene::deformations entry (morph targets, skin weights)
     size_t renormalizedWeights = 0;  // vertices whose skin weights were more than 1% off 1
 };
+
+// What appendPrimitive reads of a primitive: two primitives with equal sources convert to the same
+// geometry, which the loader then converts once and shares among their draws (exporters often give
+// each material its own mesh over the same accessors: MetalRoughSpheresNoTextures' 98 spheres are
+// one accessor set). The tangent frame generated for a normal map is part of it: its texture
+// coordinate set and the linear part of its transform (an offset changes no derivative).
+struct PrimitiveSource {
+    int mode = 0;      // TINYGLTF_MODE_*, TRIANGLES when the primitive gives none
+    int indices = -1;  // accessor, -1 for none
+    std::map<std::string, int> attributes;
+    std::vector<std::map<std::string, int>> targets;
+    bool generatedTangents = false;  // a tangent map was given (whether or not the primitive has TANGENT)
+    uint32_t tangentTexCoord = 0;
+    float tangentRotation = 0.0f, tangentScaleX = 1.0f, tangentScaleY = 1.0f;
+    auto operator<=>(const PrimitiveSource&) const = default;
+};
+
+// The source of primitive `primitive` of mesh `mesh` (both indices valid) converted with
+// `tangentMap` (as appendPrimitive takes it).
+PrimitiveSource primitiveSource(const tinygltf::Model& model, int mesh, int primitive, const scene::TextureRef* tangentMap);
 
 // Reads primitive `primitive` of mesh `mesh` (both indices valid) and appends it to scene.vertices
 // and scene.indices as a triangle, line or point list (scene::Topology), with absolute indices.

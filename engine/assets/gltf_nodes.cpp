@@ -20,6 +20,7 @@
 #include <map>
 #include <optional>
 #include <span>
+#include <utility>
 
 namespace candela::assets::gltf {
 namespace {
@@ -330,16 +331,15 @@ private:
             const uint32_t material = materialIndex(primitives[p].material, primitiveName);
             const std::vector<std::pair<uint32_t, uint32_t>> variants =
                 primitiveVariants(mCtx, primitives[p], mScene, primitiveName);
-            auto cached = mGeometry.find({meshIndex, int(p)});
+            // Tangents follow the first normal map among the materials the primitive may wear.
+            std::optional<scene::TextureRef> tangentMap = mScene.materials[material].tangentSpaceMap();
+            for (const auto& [variant, m] : variants)
+                if (!tangentMap) tangentMap = mScene.materials[m].tangentSpaceMap();
+            const scene::TextureRef* tangents = tangentMap ? &*tangentMap : nullptr;
+            PrimitiveSource source = primitiveSource(mModel, meshIndex, int(p), tangents);
+            auto cached = mGeometry.find(source);
             if (cached == mGeometry.end()) {
-                // Tangents follow the first normal map among the materials the primitive may wear.
-                std::optional<scene::TextureRef> tangentMap = mScene.materials[material].tangentSpaceMap();
-                for (const auto& [variant, m] : variants)
-                    if (!tangentMap) tangentMap = mScene.materials[m].tangentSpaceMap();
-                cached = mGeometry.emplace(std::pair{meshIndex, int(p)},
-                                           appendPrimitive(mCtx, mModel, meshIndex, int(p), tangentMap ? &*tangentMap : nullptr,
-                                                           mScene))
-                             .first;
+                cached = mGeometry.emplace(std::move(source), appendPrimitive(mCtx, mModel, meshIndex, int(p), tangents, mScene)).first;
                 mRenormalizedWeights += cached->second.renormalizedWeights;
             }
             const PrimitiveGeometry& geometry = cached->second;
@@ -452,7 +452,7 @@ private:
     scene::Scene& mScene;
     size_t mGltfMaterials;
     int mDefaultMaterial = -1;
-    std::map<std::pair<int, int>, PrimitiveGeometry> mGeometry;  // (mesh, primitive) → converted once
+    std::map<PrimitiveSource, PrimitiveGeometry> mGeometry;  // each source converted once
     std::vector<uint8_t> mTargeted;  // per glTF node: an animation channel targets it
     std::vector<uint8_t> mMovable;   // per Scene::nodes entry: it or an ancestor is targeted
     size_t mRenormalizedWeights = 0;  // over every primitive read

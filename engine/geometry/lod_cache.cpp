@@ -72,14 +72,14 @@ LodDecision provideLevelsOfDetail(scene::Scene& scene, uint64_t framesDrawn, std
                                   const std::filesystem::path& cacheDir, const LodChainSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<LodCandidate> candidates = lodCandidates(scene);
-    const uint64_t triangles = lodCandidateTriangles(candidates);
+    const LodWork work = lodCandidateWork(scene, candidates);
     const auto build = [&] {
         const std::vector<std::vector<SimplifiedLevel>> chains = simplifyCandidates(scene, candidates, settings);
         attachLevelsOfDetail(scene, candidates, chains, millisecondsSince(start));
         return chains;
     };
-    if (cacheDir.empty() || triangles == 0 || !(lodErrorPixels > 0.0f)) {
-        LodDecision decision = decideLevelsOfDetail(triangles, framesDrawn, framesAhead, lodErrorPixels, costs, cores);
+    if (cacheDir.empty() || work.builtTriangles == 0 || !(lodErrorPixels > 0.0f)) {
+        LodDecision decision = decideLevelsOfDetail(work, framesDrawn, framesAhead, lodErrorPixels, costs, cores);
         if (decision.build) build();
         return decision;
     }
@@ -99,7 +99,7 @@ LodDecision provideLevelsOfDetail(scene::Scene& scene, uint64_t framesDrawn, std
     const std::string ignored = !record && std::filesystem::exists(path, ec) ? "; ignored " + why : "";
     const uint64_t earlier = record ? record->framesDrawn : 0;
     const uint64_t before = std::max(framesDrawn, earlier);
-    LodDecision decision = decideLevelsOfDetail(triangles, before, framesAhead, lodErrorPixels, costs, cores);
+    LodDecision decision = decideLevelsOfDetail(work, before, framesAhead, lodErrorPixels, costs, cores);
     if (earlier > 0 && decision.reason.ends_with(")"))  // the figures: say where the frames before this run's come from
         decision.reason.insert(decision.reason.size() - 1, "; " + std::to_string(before) + " of the frames drawn before, as the cache records");
     decision.reason += ignored;

@@ -23,17 +23,20 @@ TriangleCosts measuredTriangleCosts(bool cpuDevice) {
     return {.buildMicroseconds = 3.0, .drawMicroseconds = cpuDevice ? 0.55 : 0.001};
 }
 
-LodDecision decideLevelsOfDetail(uint64_t triangles, uint64_t framesDrawn, std::optional<uint64_t> framesAhead,
+LodDecision decideLevelsOfDetail(const LodWork& work, uint64_t framesDrawn, std::optional<uint64_t> framesAhead,
                                  float lodErrorPixels, const TriangleCosts& costs, uint32_t cores) {
     if (!(lodErrorPixels > 0.0f)) return {false, "levels of detail: not built (--lod off)"};
-    if (triangles == 0) return {false, "levels of detail: none to build (no mesh would get a chain)"};
+    if (work.builtTriangles == 0) return {false, "levels of detail: none to build (no mesh would get a chain)"};
     if (!framesAhead) return {true, "levels of detail: built (frames without end)"};
     const uint64_t frames = framesDrawn + *framesAhead;
-    const double build = double(triangles) * costs.buildMicroseconds / double(std::max(cores, 1u));
-    const double draw = double(triangles) * costs.drawMicroseconds * double(frames);
-    const std::string figures = "drawing " + std::to_string(triangles) + " triangles at full detail for " + std::to_string(frames) +
-                                (frames == 1 ? " frame" : " frames") + " costs about " + milliseconds(draw) +
-                                " on this device, building their chains about " + milliseconds(build);
+    const double build = double(work.builtTriangles) * costs.buildMicroseconds / double(std::max(cores, 1u));
+    const double draw = double(work.drawnTriangles) * costs.drawMicroseconds * double(frames);
+    const std::string chains = work.builtTriangles == work.drawnTriangles
+                                   ? "their chains"
+                                   : "the chains of the " + std::to_string(work.builtTriangles) + " distinct triangles";
+    const std::string figures = "drawing " + std::to_string(work.drawnTriangles) + " triangles at full detail for " +
+                                std::to_string(frames) + (frames == 1 ? " frame" : " frames") + " costs about " + milliseconds(draw) +
+                                " on this device, building " + chains + " about " + milliseconds(build);
     if (draw >= build) return {true, "levels of detail: built (" + figures + ")"};
     return {false, "levels of detail: not built, every mesh drawn at full detail (" + figures + ")"};
 }

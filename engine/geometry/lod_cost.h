@@ -24,17 +24,25 @@ struct TriangleCosts {
 // SwiftShader) drawing a triangle costs as much as a GPU's thousands; `cpuDevice` picks which.
 TriangleCosts measuredTriangleCosts(bool cpuDevice);
 
+// The triangles the choice weighs: those the chains are built from (each distinct mesh once) and
+// those a frame draws of the same meshes at full detail (each draw and instance of them: one mesh
+// drawn by 98 nodes is built once and drawn 98 times).
+struct LodWork {
+    uint64_t builtTriangles = 0;
+    uint64_t drawnTriangles = 0;
+};
+
 struct LodDecision {
     bool build = false;
     std::string reason;  // one line for --explain, starting "levels of detail: "
 };
 
-// Rent or buy: builds when what drawing `triangles` (the meshes that would get a chain) in full
-// costs over the frames drawn so far and those ahead reaches what building their chains costs on
-// `cores` cores. `framesAhead` nullopt: frames without end (the viewer): always builds.
+// Rent or buy: builds when what drawing `work.drawnTriangles` (of the meshes that would get a
+// chain) in full costs over the frames drawn so far and those ahead reaches what building the
+// chains of `work.builtTriangles` costs on `cores` cores. `framesAhead` nullopt: frames without end (the viewer): always builds.
 // lodErrorPixels ≤ 0 (levels of detail off): never. Deciding at every new frame count keeps the
 // total within twice that of the better choice made knowing every frame in advance.
-LodDecision decideLevelsOfDetail(uint64_t triangles, uint64_t framesDrawn, std::optional<uint64_t> framesAhead,
+LodDecision decideLevelsOfDetail(const LodWork& work, uint64_t framesDrawn, std::optional<uint64_t> framesAhead,
                                  float lodErrorPixels, const TriangleCosts& costs, uint32_t cores);
 
 }  // namespace candela::geometry

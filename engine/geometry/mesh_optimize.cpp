@@ -124,13 +124,20 @@ std::vector<LodCandidate> lodCandidates(const scene::Scene& scene) {
     return candidates;
 }
 
-uint64_t lodCandidateTriangles(std::span<const LodCandidate> candidates) {
-    uint64_t triangles = 0;
-    for (const LodCandidate& mesh : candidates) triangles += mesh.indexCount / 3;
-    return triangles;
+LodWork lodCandidateWork(const scene::Scene& scene, std::span<const LodCandidate> candidates) {
+    LodWork work;
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> triangles;  // (firstIndex, indexCount) → triangles
+    for (const LodCandidate& mesh : candidates) {
+        work.builtTriangles += mesh.indexCount / 3;
+        triangles.emplace(std::pair{mesh.firstIndex, mesh.indexCount}, mesh.indexCount / 3);
+    }
+    for (const scene::Draw& draw : scene.draws)
+        if (auto it = triangles.find({draw.firstIndex, draw.indexCount}); it != triangles.end())
+            work.drawnTriangles += uint64_t(it->second) * std::max(draw.instanceCount, 1u);
+    return work;
 }
 
-uint64_t lodCandidateTriangles(const scene::Scene& scene) { return lodCandidateTriangles(lodCandidates(scene)); }
+LodWork lodCandidateWork(const scene::Scene& scene) { return lodCandidateWork(scene, lodCandidates(scene)); }
 
 std::vector<std::vector<SimplifiedLevel>> simplifyCandidates(const scene::Scene& scene, std::span<const LodCandidate> candidates,
                                                              const LodChainSettings& settings, uint32_t threads) {

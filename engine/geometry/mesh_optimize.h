@@ -3,6 +3,7 @@
 // post-transform vertex cache and against overdraw, vertices reordered for fetch locality, and a
 // chain of levels of detail per mesh (geometry/mesh_lod.h). See docs/geometry.md.
 
+#include "geometry/lod_cost.h"
 #include "geometry/mesh_lod.h"
 #include "scene/scene.h"
 
@@ -39,9 +40,11 @@ struct LodCandidate {
 // scene loaded twice).
 std::vector<LodCandidate> lodCandidates(const scene::Scene& scene);
 
-// The triangles of `candidates`, and of lodCandidates(scene).
-uint64_t lodCandidateTriangles(std::span<const LodCandidate> candidates);
-uint64_t lodCandidateTriangles(const scene::Scene& scene);
+// The work of giving `candidates` (lodCandidates(scene)) their chains: their triangles, and those
+// the draws of `scene` that use them submit in a frame at full detail (each instance counted).
+// Without `candidates`: those of lodCandidates(scene).
+LodWork lodCandidateWork(const scene::Scene& scene, std::span<const LodCandidate> candidates);
+LodWork lodCandidateWork(const scene::Scene& scene);
 
 // The chain of each of `candidates` (simplifyChain over its vertices; indices relative to its
 // firstVertex), the largest meshes first on `threads` threads (the caller's included; 0: every

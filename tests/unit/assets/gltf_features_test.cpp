@@ -36,13 +36,15 @@ std::vector<scene::Vertex> corners(const scene::Scene& scene, size_t d = 0) {
     return out;
 }
 
-// A mesh of one real triangle and one whose corners lie on a line, `copies` times (one node each).
+// A mesh of one real triangle and one whose corners lie on a line, `copies` times (one node each,
+// each over accessors of its own).
 assets::test::GltfBuilder degenerateMeshes(int copies) {
     GltfBuilder b;
-    const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0, 2, 0, 0, 3, 0, 0}, "VEC3", 3);
-    const int indices = b.addIndices({0, 1, 2, 1, 3, 4});
     std::vector<int> nodes;
-    for (int i = 0; i < copies; ++i) nodes.push_back(b.addNode({{"mesh", b.addMesh({{"POSITION", pos}}, indices)}}));
+    for (int i = 0; i < copies; ++i) {
+        const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0, 2, 0, 0, 3, 0, 0}, "VEC3", 3);
+        nodes.push_back(b.addNode({{"mesh", b.addMesh({{"POSITION", pos}}, b.addIndices({0, 1, 2, 1, 3, 4}))}}));
+    }
     b.setScene(nodes);
     return b;
 }
@@ -669,6 +671,42 @@ assets::test::GltfBuilder fiveTextureModel(const Bytes& png) {
     const int mesh = b.addMesh({{"POSITION", pos}, {"TEXCOORD_0", uv}}, b.addIndices({0, 1, 2}), 0);
     b.setScene({b.addNode({{"mesh", mesh}})});
     return b;
+}
+
+TEST(GltfFeatures, PrimitivesOverTheSameAccessorsShareTheirGeometry) {
+    // Three meshes over one accessor set, each with a material of its own (as exporters write a
+    // material per mesh): the plain two share one conversion; the normal-mapped one gets its own,
+    // with generated tangents. A fourth over other accessors has its own too.
+    test::TempDir dir;
+    GltfBuilder b = fiveTextureModel(makePng(1, 1, 8, 6, {255, 255, 255, 255}));
+    const Json triangle = b.doc["meshes"][0]["primitives"][0];
+    const int pos = triangle["attributes"]["POSITION"], uv = triangle["attributes"]["TEXCOORD_0"], indices = triangle["indices"];
+    b.doc["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorFactor", {1, 0, 0, 1}}}}});
+    b.doc["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorFactor", {0, 1, 0, 1}}}}});
+    const Json attributes = {{"POSITION", pos}, {"TEXCOORD_0", uv}};
+    const int red = b.addMesh(attributes, indices, 1), green = b.addMesh(attributes, indices, 2);
+    const int other = b.addMesh({{"POSITION", b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3)}}, indices, 1);
+    b.setScene({b.addNode({{"mesh", 0}}), b.addNode({{"mesh", red}}), b.addNode({{"mesh", green}}), b.addNode({{"mesh", other}})});
+    const scene::Scene scene = loadGltf(b.writeGlb(dir.path()), {.prepareGeometry = false});
+    EXPECT_TRUE(scene.report.warnings.empty()) << scene.report.warnings.front();
+    ASSERT_EQ(scene.draws.size(), 4u);
+    EXPECT_EQ(scene.vertices.size(), 9u);  // three conversions of three vertices
+    EXPECT_EQ(scene.indices.size(), 9u);
+    const scene::Draw &mapped = scene.draws[0], &plainRed = scene.draws[1], &plainGreen = scene.draws[2], &own = scene.draws[3];
+    EXPECT_EQ(plainRed.firstIndex, plainGreen.firstIndex);
+    EXPECT_NE(plainRed.material, plainGreen.material);
+    EXPECT_NE(mapped.firstIndex, plainRed.firstIndex);
+    EXPECT_NE(own.firstIndex, plainRed.firstIndex);
+    EXPECT_NE(own.firstIndex, mapped.firstIndex);
+    // The note of a shared conversion is given once: one primitive's triangles were dropped.
+    const scene::Scene degenerate = loadGltf(degenerateMeshes(1).writeGltf(dir / "degenerate"));
+    GltfBuilder twice = degenerateMeshes(1);
+    twice.doc["meshes"].push_back(twice.doc["meshes"][0]);
+    twice.setScene({0, twice.addNode({{"mesh", 1}})});
+    const scene::Scene shared = loadGltf(twice.writeGltf(dir / "twice"));
+    EXPECT_EQ(shared.report.notes, degenerate.report.notes);
+    EXPECT_EQ(shared.vertices.size(), degenerate.vertices.size());
+    EXPECT_EQ(shared.draws.size(), 2u);
 }
 
 TEST(GltfFeatures, TexturesSamplersAndTextureTransform) {
