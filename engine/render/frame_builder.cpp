@@ -29,10 +29,10 @@ FrameBuilder::FrameBuilder(vk::Context& context, SceneState& scene, shader::Para
       mForward(context), mSkybox(context), mExpand(context), mTransmissionBackground(context), mSkinMorph(context), mTonemap(context),
       mCalibration(context), mAov(context), mVisibility(context) {}
 
-void FrameBuilder::prepareAhead(const scene::Scene& scene, std::span<const scene::Light> lights) {
+void FrameBuilder::prepareAhead(const passes::MaterialKeys& keys, std::span<const scene::Light> lights) {
     std::vector<shading::LightData> data;
     for (const scene::Light& light : lights) data.push_back(gpu_scene::lightData(light));
-    mForward.prepareAhead(passes::MaterialKeys::of(scene), !lights.empty(), passes::lightTypeBits(data));
+    mForward.prepareAhead(keys, !lights.empty(), passes::lightTypeBits(data));
 }
 
 void FrameBuilder::sceneUploaded() {

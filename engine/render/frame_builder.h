@@ -45,9 +45,10 @@ public:
 
     // The scene was uploaded anew (SceneState::prepareScene): the forward pass binds it.
     void sceneUploaded();
-    // Before `scene` is uploaded, drawn with `lights`: queues its forward pipelines for a frame like
-    // the last one (ForwardPass::prepareAhead), so that they compile while it uploads.
-    void prepareAhead(const scene::Scene& scene, std::span<const scene::Light> lights);
+    // Before a scene whose materials have `keys` (passes::MaterialKeys::of) is uploaded, drawn with
+    // `lights`: queues its forward pipelines for a frame like the last one
+    // (ForwardPass::prepareAhead), so that they compile while it uploads.
+    void prepareAhead(const passes::MaterialKeys& keys, std::span<const scene::Light> lights);
     // Declares the scene frame for `settings` (a scene is uploaded, the environment prepared): the
     // tonemap writes `target` when given (a presentable image), else a new transient "ldr".
     // Throws UserError for a bad camera choice.

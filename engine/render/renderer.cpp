@@ -5,6 +5,7 @@
 #include "vk/context.h"
 
 #include <chrono>
+#include <utility>
 
 namespace candela {
 
@@ -42,10 +43,13 @@ void Renderer::releaseScene() { mScene.releaseScene(); }
 
 void Renderer::upload(const RenderSettings& settings) {
     const SceneChoice choice{settings.scene, settings.defaultLights, settings.sceneLights};
-    // A new scene's pipelines compile on the workers while its textures upload.
-    if (settings.precompile != options::Precompile::Off && mScene.uploads(choice))
-        mBuilder.prepareAhead(*settings.scene, SceneState::lightsOf(choice));
-    if (mScene.prepareScene(choice)) mBuilder.sceneUploaded();
+    if (mScene.uploads(choice)) {
+        passes::MaterialKeys keys = passes::MaterialKeys::of(*settings.scene);
+        // A new scene's pipelines compile on the workers while its textures upload.
+        if (settings.precompile != options::Precompile::Off) mBuilder.prepareAhead(keys, SceneState::lightsOf(choice));
+        mScene.prepareScene(choice, std::move(keys));
+        mBuilder.sceneUploaded();
+    }
     mScene.prepareEnvironment(settings.environment, settings.iblQuality, settings.iblCacheDir);
 }
 void Renderer::shadersReplaced(const std::vector<std::string>& names) { mScene.shadersReplaced(names); }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <utility>
 
 namespace candela {
 
@@ -80,7 +81,7 @@ std::vector<scene::Light> SceneState::lightsOf(const SceneChoice& choice) {
     return lights.scene ? choice.scene->lights : lights.defaults ? defaultLights() : std::vector<scene::Light>{};
 }
 
-bool SceneState::prepareScene(const SceneChoice& choice) {
+bool SceneState::prepareScene(const SceneChoice& choice, passes::MaterialKeys keys) {
     if (!uploads(choice)) return false;
     const LightChoice lights = lightChoice(choice);
     const bool sceneLights = lights.scene, addLights = lights.defaults;
@@ -93,7 +94,7 @@ bool SceneState::prepareScene(const SceneChoice& choice) {
     mGpuScene = std::make_unique<gpu_scene::GpuScene>(mContext, *choice.scene,
                                                   addLights ? defaultLights() : std::vector<scene::Light>{},
                                                   cpuDevice ? 1.0f : 8.0f, sceneLights);
-    mKeys = passes::MaterialKeys::of(*choice.scene);
+    mKeys = std::move(keys);
     mRestPose = choice.scene->deformations.empty()
                     ? nullptr
                     : std::make_unique<pose::ScenePose>(*choice.scene, std::vector<uint32_t>{});

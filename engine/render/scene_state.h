@@ -36,8 +36,9 @@ public:
     SceneState(vk::Context& context, FrameRunner& runner);
 
     // Uploads `choice` unless it is what is uploaded; returns whether it uploaded (the passes then
-    // bind the new scene).
-    bool prepareScene(const SceneChoice& choice);
+    // bind the new scene). `keys` are its materials' (passes::MaterialKeys::of(*choice.scene)),
+    // computed once by the caller, who also queues their pipelines ahead of the upload.
+    bool prepareScene(const SceneChoice& choice, passes::MaterialKeys keys);
     // Whether prepareScene(choice) would upload.
     bool uploads(const SceneChoice& choice) const;
     // The punctual lights a frame of `choice` draws: the scene's own (sceneLights, when it has
