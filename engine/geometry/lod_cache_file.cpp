@@ -1,5 +1,6 @@
 #include "geometry/lod_cache_file.h"
 
+#include "core/cache_fields.h"
 #include "core/cache_files.h"
 
 #include <array>
@@ -18,65 +19,16 @@ constexpr std::array<char, 12> kMagic = {'C', 'A', 'N', 'D', 'E', 'L', 'A', '-',
 // Files larger than this are not read (the chains of a 100 M-triangle scene are smaller).
 constexpr uint64_t kMaxFileBytes = uint64_t(4) << 30;
 
-class Writer {
-public:
-    void bytes(const void* data, size_t size) {
+// Appends what a CacheFieldWriter writes to `out`.
+struct BytesSink {
+    std::vector<std::byte>* out;
+    void operator()(const void* data, size_t size) const {
         const auto* p = static_cast<const std::byte*>(data);
-        mOut.insert(mOut.end(), p, p + size);
+        out->insert(out->end(), p, p + size);
     }
-    void u32(uint32_t v) {
-        const std::array<uint8_t, 4> b = {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
-        bytes(b.data(), b.size());
-    }
-    void u64(uint64_t v) {
-        u32(uint32_t(v));
-        u32(uint32_t(v >> 32));
-    }
-    std::vector<std::byte> finish() {
-        u64(fnv1a64Update(kFnv1a64Basis, mOut.data(), mOut.size()));
-        return std::move(mOut);
-    }
-
-private:
-    std::vector<std::byte> mOut;
 };
 
-// Little-endian fields from bytes; a read past the end fails and sets problem().
-class Reader {
-public:
-    explicit Reader(std::span<const std::byte> bytes) : mBytes(bytes) {}
-    size_t offset() const { return mOffset; }
-    size_t remaining() const { return mBytes.size() - mOffset; }
-    const std::string& problem() const { return mProblem; }
-    bool fail(std::string problem) {
-        mProblem = std::move(problem);
-        return false;
-    }
-    bool bytes(void* out, size_t size, const char* what) {
-        if (size > remaining())
-            return fail("truncated: the file ends (" + std::to_string(mBytes.size()) + " bytes) inside " + what);
-        if (size) std::memcpy(out, mBytes.data() + mOffset, size);
-        mOffset += size;
-        return true;
-    }
-    bool u32(uint32_t& v, const char* what) {
-        std::array<uint8_t, 4> b{};
-        if (!bytes(b.data(), b.size(), what)) return false;
-        v = uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24;
-        return true;
-    }
-    bool u64(uint64_t& v, const char* what) {
-        uint32_t lo = 0, hi = 0;
-        if (!u32(lo, what) || !u32(hi, what)) return false;
-        v = uint64_t(hi) << 32 | lo;
-        return true;
-    }
-
-private:
-    std::span<const std::byte> mBytes;
-    size_t mOffset = 0;
-    std::string mProblem;
-};
+using Reader = CacheFieldReader<CacheBytesSource>;
 
 // Reads mesh `m`'s levels into `levels`, checking them against `mesh`.
 bool readChain(Reader& in, uint32_t m, const LodCacheMesh& mesh, std::vector<SimplifiedLevel>& levels) {
@@ -121,7 +73,8 @@ fs::path lodCacheFilePath(const fs::path& dir, const LodCacheKey& key) {
 
 std::vector<std::byte> encodeLodCache(const LodCacheKey& key, const LodCacheRecord& record) {
     if (key.settings.size() > kLodCacheMaxSettingsLength) throw std::invalid_argument("LOD cache: settings text too long");
-    Writer out;
+    std::vector<std::byte> bytes;
+    CacheFieldWriter out(BytesSink{&bytes});
     out.bytes(kMagic.data(), kMagic.size());
     out.u32(kLodCacheVersion);
     out.u64(key.contentHash);
@@ -139,7 +92,8 @@ std::vector<std::byte> encodeLodCache(const LodCacheKey& key, const LodCacheReco
                 for (uint32_t i : level.indices) out.u32(i);
             }
         }
-    return out.finish();
+    out.u64(out.hash());  // the checksum
+    return bytes;
 }
 
 void writeLodCacheFile(const fs::path& path, const LodCacheKey& key, const LodCacheRecord& record) {
@@ -151,7 +105,7 @@ void writeLodCacheFile(const fs::path& path, const LodCacheKey& key, const LodCa
 
 std::optional<LodCacheRecord> parseLodCache(std::span<const std::byte> bytes, const LodCacheKey& key,
                                             std::span<const LodCacheMesh> meshes, std::string* reason) {
-    Reader in(bytes);
+    Reader in(bytes.size(), CacheBytesSource{bytes});
     const auto miss = [&](const std::string& why) -> std::optional<LodCacheRecord> {
         if (reason) *reason = why;
         return std::nullopt;
@@ -180,7 +134,7 @@ std::optional<LodCacheRecord> parseLodCache(std::span<const std::byte> bytes, co
         for (uint32_t m = 0; m < meshCount; ++m)
             if (!readChain(in, m, meshes[m], (*record.chains)[m])) return miss(in.problem());
     }
-    const uint64_t contents = fnv1a64Update(kFnv1a64Basis, bytes.data(), in.offset());
+    const uint64_t contents = in.hash();
     uint64_t checksum = 0;
     if (!in.u64(checksum, "the checksum")) return miss(in.problem());
     if (in.remaining() != 0) return miss(std::to_string(in.remaining()) + " unexpected bytes after the checksum");

@@ -1,5 +1,6 @@
 #include "ibl/ibl_cache_file.h"
 
+#include "core/cache_fields.h"
 #include "core/cache_files.h"
 #include "core/errors.h"
 
@@ -74,73 +75,22 @@ std::string dataSizeProblem(const CachedImage& image, uint64_t dataBytes) {
            std::to_string(expected);
 }
 
-// Little-endian fields into a stream, hashing every byte written.
-class Writer {
-public:
-    explicit Writer(std::ostream& out) : mOut(out) {}
-    void bytes(const void* data, size_t size) {
-        mOut.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
-        mHash = fnv1a64Update(mHash, data, size);
-    }
-    void u32(uint32_t v) {
-        const std::array<unsigned char, 4> b = {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
-        bytes(b.data(), b.size());
-    }
-    void u64(uint64_t v) {
-        u32(uint32_t(v));
-        u32(uint32_t(v >> 32));
-    }
-    uint64_t hash() const { return mHash; }
-
-private:
-    std::ostream& mOut;
-    uint64_t mHash = kFnv1a64Basis;
+// Writes what a CacheFieldWriter writes to a stream.
+struct StreamSink {
+    std::ostream* out;
+    void operator()(const void* data, size_t size) const { out->write(static_cast<const char*>(data), std::streamsize(size)); }
 };
 
-// Little-endian fields from a stream of known size, hashing every byte read. A read that would
-// pass the end of the file fails (and sets problem()) without touching the stream.
-class Reader {
-public:
-    Reader(std::ifstream& in, uint64_t size) : mIn(in), mSize(size) {}
-    uint64_t remaining() const { return mSize - mOffset; }
-    const std::string& problem() const { return mProblem; }
-    bool fail(std::string problem) {
-        mProblem = std::move(problem);
-        return false;
+// Reads a CacheFieldReader's bytes from a file stream.
+struct StreamSource {
+    std::ifstream* in;
+    bool operator()(void* out, size_t size) const {
+        in->read(static_cast<char*>(out), std::streamsize(size));
+        return *in && size_t(in->gcount()) == size;
     }
-
-    bool bytes(void* data, uint64_t size, const std::string& what) {
-        if (size > remaining())
-            return fail("truncated: the file ends (" + std::to_string(mSize) + " bytes) inside " + what);
-        if (size == 0) return true;
-        mIn.read(static_cast<char*>(data), static_cast<std::streamsize>(size));
-        if (!mIn || uint64_t(mIn.gcount()) != size)
-            return fail("read failed at byte " + std::to_string(mOffset) + " (" + what + "): " + std::strerror(errno));
-        mHash = fnv1a64Update(mHash, data, size_t(size));
-        mOffset += size;
-        return true;
-    }
-    bool u32(uint32_t& v, const std::string& what) {
-        std::array<unsigned char, 4> b{};
-        if (!bytes(b.data(), b.size(), what)) return false;
-        v = uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24;
-        return true;
-    }
-    bool u64(uint64_t& v, const std::string& what) {
-        uint32_t lo = 0, hi = 0;
-        if (!u32(lo, what) || !u32(hi, what)) return false;
-        v = uint64_t(hi) << 32 | lo;
-        return true;
-    }
-    uint64_t hash() const { return mHash; }
-
-private:
-    std::ifstream& mIn;
-    uint64_t mSize;
-    uint64_t mOffset = 0;
-    uint64_t mHash = kFnv1a64Basis;
-    std::string mProblem;
 };
+
+using Reader = CacheFieldReader<StreamSource>;
 
 // Reads the fields of one image, checking each size before allocating for it.
 bool readImage(Reader& in, uint32_t index, uint64_t& payload, CachedImage& image) {
@@ -220,7 +170,7 @@ void writeCacheFile(const std::filesystem::path& path, const IblCacheKey& key, c
         invalid("the images' data adds up to more than " + std::to_string(kIblCacheMaxPayloadBytes) + " bytes");
 
     writeFileAtomically(path, [&](std::ostream& out) {
-        Writer writer(out);
+        CacheFieldWriter writer(StreamSink{&out});
         writer.bytes(kMagic.data(), kMagic.size());
         writer.u32(kIblCacheVersion);
         writer.u64(key.environmentHash);
@@ -254,7 +204,7 @@ std::optional<std::vector<CachedImage>> readCacheFile(const std::filesystem::pat
     if (size < 0 || !file) return miss("cannot read the file size");
     if (size == 0) return miss("empty file");
 
-    Reader in(file, uint64_t(size));
+    Reader in(uint64_t(size), StreamSource{&file});
     std::array<char, kMagic.size()> magic{};
     if (!in.bytes(magic.data(), magic.size(), "the magic")) return miss(in.problem());
     if (magic != kMagic) return miss("not an IBL cache file (bad magic)");
