@@ -31,12 +31,15 @@ fi
 for target in "${targets[@]}"; do
   work="$build/corpus/$target"  # grows across local runs; new inputs land here
   mkdir -p "$work"
+  # Every input that ever failed, where the target has had a finding.
+  regressions=()
+  [ -d "tests/fuzz/regressions/$target" ] && regressions=("tests/fuzz/regressions/$target")
   limit=(-max_total_time="$seconds")
   [ -n "${FUZZ_RUNS:-}" ] && limit=(-runs="$FUZZ_RUNS")
   echo "fuzz_$target: ${FUZZ_RUNS:+$FUZZ_RUNS runs}${FUZZ_RUNS:-$seconds s}"
   # -timeout: one input may take at most 10 s (a hang is a finding); -rss_limit_mb: 2 GiB.
   "$bin/fuzz_$target" "${limit[@]}" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-    -artifact_prefix="$build/artifacts/$target-" "$work" "$build/seeds/$target" "tests/fuzz/regressions/$target" \
+    -artifact_prefix="$build/artifacts/$target-" "$work" "$build/seeds/$target" "${regressions[@]}" \
     2>"$build/fuzz-$target.log" || { tail -60 "$build/fuzz-$target.log"; exit 1; }
   grep -E "^stat::(number_of_executed_units|average_exec_per_sec|peak_rss_mb)" "$build/fuzz-$target.log"
   grep -E "^#[0-9]+ +DONE" "$build/fuzz-$target.log" || true
