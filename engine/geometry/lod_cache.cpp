@@ -72,7 +72,7 @@ LodDecision provideLevelsOfDetail(scene::Scene& scene, uint64_t framesDrawn, std
                                   const std::filesystem::path& cacheDir, const LodChainSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<LodCandidate> candidates = lodCandidates(scene);
-    const LodWork work = lodCandidateWork(scene, candidates);
+    const LodWork work = lodCandidateWork(candidates);
     const auto build = [&] {
         const std::vector<std::vector<SimplifiedLevel>> chains = simplifyCandidates(scene, candidates, settings);
         attachLevelsOfDetail(scene, candidates, chains, millisecondsSince(start));

@@ -117,27 +117,26 @@ void prepareGeometry(scene::Scene& scene, LevelsOfDetail lod, const LodChainSett
 
 std::vector<LodCandidate> lodCandidates(const scene::Scene& scene) {
     std::vector<LodCandidate> candidates;
-    for (const Mesh& mesh : distinctMeshes(scene))
-        if (candidate(scene, mesh))
-            candidates.push_back({.firstIndex = mesh.firstIndex, .indexCount = mesh.indexCount, .firstVertex = mesh.minVertex,
-                                  .vertexCount = mesh.maxVertex - mesh.minVertex + 1});
+    for (const Mesh& mesh : distinctMeshes(scene)) {
+        if (!candidate(scene, mesh)) continue;
+        uint64_t drawn = 0;
+        for (uint32_t d : mesh.draws) drawn += uint64_t(mesh.indexCount / 3) * std::max(scene.draws[d].instanceCount, 1u);
+        candidates.push_back({.firstIndex = mesh.firstIndex, .indexCount = mesh.indexCount, .firstVertex = mesh.minVertex,
+                              .vertexCount = mesh.maxVertex - mesh.minVertex + 1, .drawnTriangles = drawn});
+    }
     return candidates;
 }
 
-LodWork lodCandidateWork(const scene::Scene& scene, std::span<const LodCandidate> candidates) {
+LodWork lodCandidateWork(std::span<const LodCandidate> candidates) {
     LodWork work;
-    std::map<std::pair<uint32_t, uint32_t>, uint32_t> triangles;  // (firstIndex, indexCount) → triangles
     for (const LodCandidate& mesh : candidates) {
         work.builtTriangles += mesh.indexCount / 3;
-        triangles.emplace(std::pair{mesh.firstIndex, mesh.indexCount}, mesh.indexCount / 3);
+        work.drawnTriangles += mesh.drawnTriangles;
     }
-    for (const scene::Draw& draw : scene.draws)
-        if (auto it = triangles.find({draw.firstIndex, draw.indexCount}); it != triangles.end())
-            work.drawnTriangles += uint64_t(it->second) * std::max(draw.instanceCount, 1u);
     return work;
 }
 
-LodWork lodCandidateWork(const scene::Scene& scene) { return lodCandidateWork(scene, lodCandidates(scene)); }
+LodWork lodCandidateWork(const scene::Scene& scene) { return lodCandidateWork(lodCandidates(scene)); }
 
 std::vector<std::vector<SimplifiedLevel>> simplifyCandidates(const scene::Scene& scene, std::span<const LodCandidate> candidates,
                                                              const LodChainSettings& settings, uint32_t threads) {

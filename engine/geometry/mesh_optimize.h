@@ -34,16 +34,16 @@ void prepareGeometry(scene::Scene& scene, LevelsOfDetail lod = LevelsOfDetail::B
 struct LodCandidate {
     uint32_t firstIndex = 0, indexCount = 0;    // its range of scene.indices
     uint32_t firstVertex = 0, vertexCount = 0;  // the range of scene.vertices its indices name
+    uint64_t drawnTriangles = 0;  // what the draws using it submit a frame at full detail (each instance counted)
 };
 
 // The candidates of `scene`, in the order of the draws that first use them (the same for the same
 // scene loaded twice).
 std::vector<LodCandidate> lodCandidates(const scene::Scene& scene);
 
-// The work of giving `candidates` (lodCandidates(scene)) their chains: their triangles, and those
-// the draws of `scene` that use them submit in a frame at full detail (each instance counted).
-// Without `candidates`: those of lodCandidates(scene).
-LodWork lodCandidateWork(const scene::Scene& scene, std::span<const LodCandidate> candidates);
+// The work of giving `candidates` their chains: their triangles, and those their draws submit in a
+// frame at full detail. Without `candidates`: those of lodCandidates(scene).
+LodWork lodCandidateWork(std::span<const LodCandidate> candidates);
 LodWork lodCandidateWork(const scene::Scene& scene);
 
 // The chain of each of `candidates` (simplifyChain over its vertices; indices relative to its

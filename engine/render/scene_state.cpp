@@ -81,8 +81,7 @@ std::vector<scene::Light> SceneState::lightsOf(const SceneChoice& choice) {
     return lights.scene ? choice.scene->lights : lights.defaults ? defaultLights() : std::vector<scene::Light>{};
 }
 
-bool SceneState::prepareScene(const SceneChoice& choice, passes::MaterialKeys keys) {
-    if (!uploads(choice)) return false;
+void SceneState::prepareScene(const SceneChoice& choice, passes::MaterialKeys keys) {
     const LightChoice lights = lightChoice(choice);
     const bool sceneLights = lights.scene, addLights = lights.defaults;
     // The previous scene's buffers may still be used by a frame in flight: wait first, and free
@@ -100,7 +99,6 @@ bool SceneState::prepareScene(const SceneChoice& choice, passes::MaterialKeys ke
                     : std::make_unique<pose::ScenePose>(*choice.scene, std::vector<uint32_t>{});
     mHasSheen = anySheen(*choice.scene);
     mUploaded = {choice.scene, addLights, sceneLights};
-    return true;
 }
 
 void SceneState::prepareEnvironment(const assets::Environment* environment, ibl::IblQuality quality,

@@ -35,11 +35,11 @@ public:
     // Preconditions: `context` and `runner` outlive the state.
     SceneState(vk::Context& context, FrameRunner& runner);
 
-    // Uploads `choice` unless it is what is uploaded; returns whether it uploaded (the passes then
-    // bind the new scene). `keys` are its materials' (passes::MaterialKeys::of(*choice.scene)),
-    // computed once by the caller, who also queues their pipelines ahead of the upload.
-    bool prepareScene(const SceneChoice& choice, passes::MaterialKeys keys);
-    // Whether prepareScene(choice) would upload.
+    // Uploads `choice` (the passes then bind the new scene). `keys` are its materials'
+    // (passes::MaterialKeys::of(*choice.scene)), computed once by the caller, who also queues their
+    // pipelines ahead of the upload. Precondition: uploads(choice).
+    void prepareScene(const SceneChoice& choice, passes::MaterialKeys keys);
+    // Whether `choice` is not what is uploaded (prepareScene(choice) is then due).
     bool uploads(const SceneChoice& choice) const;
     // The punctual lights a frame of `choice` draws: the scene's own (sceneLights, when it has
     // some), else the default key and fill (defaultLights), else none.

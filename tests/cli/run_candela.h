@@ -48,7 +48,7 @@ private:
 // the user's cache. It is emptied before each test, so that a test sees the same caches whether
 // it runs alone (ctest: one process a test) or after others in one process (the sanitized stage's
 // shards): the level-of-detail cache counts the frames of earlier runs of a file, and another
-// test's renders would change what this one's build.
+// test's renders would change what this one builds.
 inline const bool kPrivateCacheHome = [] {
     static const TempDir home("candela_cli_cache_home");
     ::setenv("XDG_CACHE_HOME", home.path().c_str(), 1);
