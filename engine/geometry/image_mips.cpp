@@ -6,6 +6,9 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace candela::geometry {
@@ -19,28 +22,31 @@ namespace {
 struct SrgbTables {
     static constexpr uint32_t kCells = 1u << 14;
     std::array<float, 256> linear{};
-    std::array<float, 255> midpoints{};
+    std::array<float, 256> midpoints{};  // [255]: +∞
     std::array<uint8_t, kCells + 1> start{};
     SrgbTables() {
         const auto decode = [](double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); };
         for (int c = 0; c < 256; ++c) linear[size_t(c)] = float(decode(c / 255.0));
         for (int c = 0; c < 255; ++c) midpoints[size_t(c)] = float(decode((c + 0.5) / 255.0));
+        midpoints[255] = std::numeric_limits<float>::infinity();
         for (uint32_t i = 0; i <= kCells; ++i)
-            start[i] = uint8_t(std::upper_bound(midpoints.begin(), midpoints.end(), float(i) / float(kCells)) - midpoints.begin());
+            start[i] = uint8_t(std::upper_bound(midpoints.begin(), midpoints.begin() + 255, float(i) / float(kCells)) - midpoints.begin());
     }
     uint8_t encode(float value) const {
         if (!(value > 0.0f)) return 0;
         if (value >= 1.0f) return 255;
-        uint32_t code = start[uint32_t(value * float(kCells))];
-        while (code < 255 && midpoints[code] <= value) ++code;
-        return uint8_t(code);
+        const uint32_t code = start[uint32_t(value * float(kCells))];
+        // At most one midpoint lies in the cell: one comparison, without a branch (midpoints[255] is
+        // past every value).
+        return uint8_t(code + (midpoints[code] <= value ? 1u : 0u));
     }
 };
 
-// The nearest integer to sum / 4, ties to even (no bias).
+// The nearest integer to sum / 4, ties to even (no bias): up when the remainder is 3, or 2 with q
+// odd — without a branch (texture data makes it unpredictable).
 uint8_t quarterRoundedToEven(uint32_t sum) {
     const uint32_t q = sum >> 2, r = sum & 3u;
-    return uint8_t(q + (r > 2u || (r == 2u && (q & 1u)) ? 1u : 0u));
+    return uint8_t(q + uint32_t(r + (q & 1u) > 2u));
 }
 
 const SrgbTables& srgbTables() {
@@ -50,26 +56,53 @@ const SrgbTables& srgbTables() {
 
 }  // namespace
 
-std::vector<std::vector<uint8_t>> boxMipChain(const scene::Image& image) {
-    const uint32_t levels = std::bit_width(std::max(image.width, image.height));
+uint32_t mipLevelCount(uint32_t width, uint32_t height) { return std::bit_width(std::max({width, height, 1u})); }
+
+std::vector<TexelLevel> packedLevels(uint32_t width, uint32_t height, uint32_t first, std::vector<std::vector<uint8_t>>& storage) {
+    const uint32_t levels = mipLevelCount(width, height);
+    storage.assign(levels > first ? levels - first : 0, {});
+    std::vector<TexelLevel> views;
+    for (uint32_t level = first; level < levels; ++level) {
+        const uint32_t w = std::max(1u, width >> level), h = std::max(1u, height >> level);
+        std::vector<uint8_t>& texels = storage[level - first];
+        texels.resize(size_t(w) * h * 4);
+        views.push_back({texels.data(), size_t(w) * 4, w, h});
+    }
+    return views;
+}
+
+void checkMipLevels(uint32_t width, uint32_t height, uint32_t first, std::span<const TexelLevel> levels, const char* what) {
+    const uint32_t count = mipLevelCount(width, height);
+    if (levels.size() + first != count)
+        throw std::invalid_argument(std::string(what) + ": " + std::to_string(levels.size()) + " level views for " +
+                                    std::to_string(count - first) + " levels");
+    for (uint32_t i = 0; i < levels.size(); ++i) {
+        const TexelLevel& l = levels[i];
+        const uint32_t level = first + i;
+        if (l.width != std::max(1u, width >> level) || l.height != std::max(1u, height >> level) || l.rowPitch < size_t(l.width) * 4 ||
+            !l.data)
+            throw std::invalid_argument(std::string(what) + ": level " + std::to_string(level) + "'s view does not fit it");
+    }
+}
+
+void writeBoxMipChain(const scene::Image& image, std::span<const TexelLevel> mips) {
+    checkMipLevels(image.width, image.height, 1, mips, "writeBoxMipChain");
     const SrgbTables& tables = srgbTables();
-    std::vector<std::vector<uint8_t>> mips;
+    const int linearLightChannels = image.srgb ? 3 : 0;  // RGB of sRGB images are averaged in linear light
     const uint8_t* above = image.rgba8.data();
+    size_t abovePitch = size_t(image.width) * 4;
     uint32_t width = image.width, height = image.height;
-    for (uint32_t level = 1; level < levels; ++level) {
-        const uint32_t w = std::max(1u, width / 2), h = std::max(1u, height / 2);
-        std::vector<uint8_t> texels(size_t(w) * h * 4);
+    for (const TexelLevel& mip : mips) {
+        const uint32_t w = mip.width, h = mip.height;
         // An exact halving: each texel the box of the 2 × 2 above it.
         const auto halvedTexel = [&](uint32_t x, uint32_t y, uint8_t* out) {
-            const uint8_t* top = above + (size_t(2 * y) * width + 2 * x) * 4;
-            const uint8_t* bottom = top + size_t(width) * 4;
-            for (int c = 0; c < 4; ++c) {
-                if (image.srgb && c < 3)
-                    out[c] = tables.encode(0.25f * (tables.linear[top[c]] + tables.linear[top[4 + c]] + tables.linear[bottom[c]] +
-                                                    tables.linear[bottom[4 + c]]));
-                else
-                    out[c] = quarterRoundedToEven(uint32_t(top[c]) + top[4 + c] + bottom[c] + bottom[4 + c]);
-            }
+            const uint8_t* top = above + size_t(2 * y) * abovePitch + size_t(2 * x) * 4;
+            const uint8_t* bottom = top + abovePitch;
+            int c = 0;
+            for (; c < linearLightChannels; ++c)
+                out[c] = tables.encode(0.25f * (tables.linear[top[c]] + tables.linear[top[4 + c]] + tables.linear[bottom[c]] +
+                                                tables.linear[bottom[4 + c]]));
+            for (; c < 4; ++c) out[c] = quarterRoundedToEven(uint32_t(top[c]) + top[4 + c] + bottom[c] + bottom[4 + c]);
         };
         // Otherwise (an odd size): where a texel's centre falls in the level above (texel units,
         // centres at i + 0.5), the pair of texels a linear filter mixes there and the second one's
@@ -95,8 +128,8 @@ std::vector<std::vector<uint8_t>> boxMipChain(const scene::Image& image) {
             const Tap& tx = columns[x];
             const Tap& ty = rows[y];
             const std::array<const uint8_t*, 4> source = {
-                above + (size_t(ty.first) * width + tx.first) * 4, above + (size_t(ty.first) * width + tx.second) * 4,
-                above + (size_t(ty.second) * width + tx.first) * 4, above + (size_t(ty.second) * width + tx.second) * 4};
+                above + ty.first * abovePitch + size_t(tx.first) * 4, above + ty.first * abovePitch + size_t(tx.second) * 4,
+                above + ty.second * abovePitch + size_t(tx.first) * 4, above + ty.second * abovePitch + size_t(tx.second) * 4};
             const std::array<float, 4> weight = {(1.0f - tx.weight) * (1.0f - ty.weight), tx.weight * (1.0f - ty.weight),
                                                  (1.0f - tx.weight) * ty.weight, tx.weight * ty.weight};
             for (int c = 0; c < 4; ++c) {
@@ -112,14 +145,19 @@ std::vector<std::vector<uint8_t>> boxMipChain(const scene::Image& image) {
         };
         parallelForRows(w, h, [&](uint32_t y) {
             for (uint32_t x = 0; x < w; ++x) {
-                uint8_t* out = &texels[(size_t(y) * w + x) * 4];
+                uint8_t* out = mip.row(y) + size_t(x) * 4;
                 halved ? halvedTexel(x, y, out) : filteredTexel(x, y, out);
             }
         });
-        mips.push_back(std::move(texels));
-        above = mips.back().data();
+        above = mip.data;
+        abovePitch = mip.rowPitch;
         width = w, height = h;
     }
+}
+
+std::vector<std::vector<uint8_t>> boxMipChain(const scene::Image& image) {
+    std::vector<std::vector<uint8_t>> mips;
+    writeBoxMipChain(image, packedLevels(image.width, image.height, 1, mips));
     return mips;
 }
 

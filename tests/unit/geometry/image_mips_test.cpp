@@ -1,10 +1,16 @@
 // geometry::boxMipChain (geometry/image_mips.h) on small images: the levels' sizes halve as
 // Vulkan's, a constant image stays constant at every level, and a 2 × 2 block averages in linear
-// light when the image is sRGB, as it is otherwise. The chain against the exact box average on a
+// light when the image is sRGB, as it is otherwise; both chains write the same texels into rows
+// with padding between them, and refuse views of the wrong levels. The chain against the exact box average on a
 // random image, next to the device's blits: tests/gpu/mip_chain_test.cpp.
 #include "geometry/image_mips.h"
+#include "geometry/normal_map_mips.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <stdexcept>
 
 namespace candela::geometry {
 namespace {
@@ -42,6 +48,51 @@ TEST(ImageMips, TwoByTwoAveragesInLinearLightForSrgbAndRoundsTiesToEven) {
     chain = boxMipChain(image);
     // Linear 0.5 is sRGB code 187.5 → 188; alpha stays linear.
     EXPECT_EQ(chain[0], (std::vector<uint8_t>{188, 188, 188, 2}));
+}
+
+// Levels written into another owner's memory, rows further apart than their texels (a linearly tiled
+// texture's): the same texels as the packed chain, and the padding between rows left alone.
+TEST(ImageMips, ChainsWrittenIntoPaddedRowsMatchThePackedOnes) {
+    std::mt19937 random(3);
+    scene::Image image{.name = "random", .width = 37, .height = 11};
+    image.rgba8.resize(size_t(image.width) * image.height * 4);
+    for (uint8_t& b : image.rgba8) b = uint8_t(random());
+    constexpr uint8_t kPad = 0xA5;
+    for (const bool normalMap : {false, true}) {
+        image.srgb = !normalMap;
+        const uint32_t first = normalMap ? 0 : 1;
+        std::vector<std::vector<uint8_t>> memory;
+        std::vector<TexelLevel> levels;
+        for (uint32_t level = first; level < mipLevelCount(image.width, image.height); ++level) {
+            const uint32_t w = std::max(1u, image.width >> level), h = std::max(1u, image.height >> level);
+            const size_t pitch = size_t(w) * 4 + 12;
+            memory.emplace_back(pitch * h, kPad);
+            levels.push_back({memory.back().data(), pitch, w, h});
+        }
+        normalMap ? writeNormalMapMipChain(image, levels) : writeBoxMipChain(image, levels);
+        const std::vector<std::vector<uint8_t>> packed = normalMap ? normalMapMipChain(image) : boxMipChain(image);
+        ASSERT_EQ(packed.size(), levels.size());
+        for (size_t i = 0; i < levels.size(); ++i)
+            for (uint32_t y = 0; y < levels[i].height; ++y) {
+                const uint8_t* row = levels[i].row(y);
+                EXPECT_TRUE(std::equal(row, row + levels[i].width * 4, packed[i].begin() + size_t(y) * levels[i].width * 4))
+                    << (normalMap ? "normal map" : "box") << " level " << i + first << " row " << y;
+                EXPECT_TRUE(std::all_of(row + levels[i].width * 4, row + levels[i].rowPitch, [](uint8_t b) { return b == kPad; }));
+            }
+    }
+}
+
+TEST(ImageMips, ViewsOfTheWrongLevelsAreRefused) {
+    const scene::Image image = filledImage(8, 4, {1, 2, 3, 4}, false);
+    std::vector<std::vector<uint8_t>> memory;
+    std::vector<TexelLevel> levels = packedLevels(8, 4, 1, memory);
+    EXPECT_THROW(writeBoxMipChain(image, std::span(levels).first(2)), std::invalid_argument);  // one level short
+    EXPECT_THROW(writeNormalMapMipChain(image, levels), std::invalid_argument);                 // no level 0
+    levels[1].width = 3;
+    EXPECT_THROW(writeBoxMipChain(image, levels), std::invalid_argument);  // level 2 is 2 × 1
+    levels[1].width = 2;
+    levels[1].rowPitch = 4;
+    EXPECT_THROW(writeBoxMipChain(image, levels), std::invalid_argument);  // rows overlap
 }
 
 }  // namespace
