@@ -5,6 +5,7 @@
 
 #include "core/errors.h"
 #include "core/parallel_for.h"
+#include "core/process_memory.h"
 #include "textures/ktx2_file.h"
 #include "textures/webp_image.h"
 
@@ -150,6 +151,9 @@ DecodedImage decodeImage(const LoadContext& ctx, std::span<const uint8_t> bytes,
         std::unique_ptr<uint8_t, StbiFree> pixels(stbi_load_from_memory(bytes.data(), length, &w, &h, &channels, 4));
         if (!pixels) ctx.fail(what + ": cannot decode image (" + stbiReason() + ")");
         if (uint32_t(w) != width || uint32_t(h) != height) ctx.fail(what + ": image size changed while decoding");
+        // Huge pages for the copy's first touches: a 2048² image is 4,096 fresh 4 KiB pages otherwise.
+        image.rgba8.reserve(texels * 4);
+        adviseHugePages(image.rgba8.data(), image.rgba8.capacity());
         image.rgba8.assign(pixels.get(), pixels.get() + texels * 4);
     }
     image.width = width;

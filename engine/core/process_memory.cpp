@@ -1,5 +1,6 @@
 #include "core/process_memory.h"
 
+#include <cstdint>
 #include <ctime>
 #include <fstream>
 #include <iterator>
@@ -7,6 +8,10 @@
 #include <string>
 #include <malloc.h>
 #include <unistd.h>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace candela {
 
@@ -37,6 +42,17 @@ uint64_t heapMappedBytes() {
 void returnFreedHeapMemory() {
 #if defined(__GLIBC__)
     malloc_trim(0);
+#endif
+}
+
+void adviseHugePages(void* data, size_t bytes) {
+#if defined(__linux__)
+    constexpr uintptr_t kHugePage = uintptr_t(2) << 20;
+    const uintptr_t begin = (reinterpret_cast<uintptr_t>(data) + kHugePage - 1) & ~(kHugePage - 1);
+    const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) & ~(kHugePage - 1);
+    if (data && end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);  // refused without THP: no matter
+#else
+    (void)data, (void)bytes;
 #endif
 }
 

@@ -1,6 +1,7 @@
 #include "gpu_scene/gpu_scene.h"
 
 #include "core/errors.h"
+#include "core/parallel_for.h"
 #include "geometry/image_mips.h"
 #include "geometry/normal_map_mips.h"
 
@@ -14,6 +15,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <span>
 #include <stdexcept>
 
 namespace candela::gpu_scene {
@@ -238,34 +240,59 @@ GpuScene::GpuScene(vk::Context& context, const scene::Scene& scene, const std::v
         for (const scene::TextureSlot& slot : scene::kLayerTextureSlots) mark(m.*slot.field, slot.normalMap);
     }
     // A file's own levels (KTX2) are uploaded as they are, except for normal maps, whose chain must
-    // carry the lost length in A (computed from level 0); other images get their mips generated.
+    // carry the lost length in A (computed from level 0); other images get their mips generated: on
+    // a GPU by blits, on a CPU device by the CPU (docs/textures.md#mip-chains). Where the device
+    // allows (DeviceCaps::hostWrittenTextures), every level is written straight into the texture's
+    // memory, without staging copies.
     const bool cpuMips = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    const bool hostWritten = context.caps().hostWrittenTextures;
     const auto upload = [&](const scene::Image& source, bool normalMap) {
         const bool fileMips = !normalMap && !source.mips.empty();
-        const uint32_t mips = fileMips ? uint32_t(source.mips.size() + 1) : std::bit_width(std::max(source.width, source.height));
+        const uint32_t mips = fileMips ? uint32_t(source.mips.size() + 1) : geometry::mipLevelCount(source.width, source.height);
         vk::Image image(context, {.width = source.width,
                                   .height = source.height,
                                   .mipLevels = mips,
                                   .format = source.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
-                                  .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                                           VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                  .name = source.name.c_str()});
-        if (normalMap) {
+                                  .usage = hostWritten ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT)
+                                                       : VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                                                           VK_IMAGE_USAGE_TRANSFER_SRC_BIT),
+                                  .name = source.name.c_str(),
+                                  .hostWritten = hostWritten});
+        const VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        if (hostWritten) {
+            std::vector<geometry::TexelLevel> levels;
+            for (uint32_t mip = 0; mip < mips; ++mip) {
+                const vk::Image::HostTexels at = image.hostTexels(mip);
+                levels.push_back({reinterpret_cast<uint8_t*>(at.data), size_t(at.rowPitch), std::max(1u, source.width >> mip),
+                                  std::max(1u, source.height >> mip)});
+            }
+            const auto copyLevel = [](const geometry::TexelLevel& to, const std::vector<uint8_t>& texels) {
+                parallelForRows(to.width, to.height, [&](uint32_t y) {
+                    std::memcpy(to.row(y), texels.data() + size_t(y) * to.width * 4, size_t(to.width) * 4);
+                });
+            };
+            if (normalMap) {
+                geometry::writeNormalMapMipChain(source, levels);
+            } else {
+                copyLevel(levels[0], source.rgba8);
+                if (fileMips)
+                    for (uint32_t mip = 1; mip < mips; ++mip) copyLevel(levels[mip], source.mips[mip - 1]);
+                else
+                    geometry::writeBoxMipChain(source, std::span(levels).subspan(1));
+            }
+            uploader.hostWritten(image, layout);
+        } else if (normalMap) {
             const std::vector<std::vector<uint8_t>> chain = geometry::normalMapMipChain(source);
-            for (uint32_t mip = 0; mip < chain.size(); ++mip)
-                uploader.image(image, std::as_bytes(std::span(chain[mip])), mip, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+            for (uint32_t mip = 0; mip < chain.size(); ++mip) uploader.image(image, std::as_bytes(std::span(chain[mip])), mip, 0, layout);
         } else if (fileMips) {
-            uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-            for (uint32_t mip = 1; mip < mips; ++mip)
-                uploader.image(image, std::as_bytes(std::span(source.mips[mip - 1])), mip, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+            uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, layout);
+            for (uint32_t mip = 1; mip < mips; ++mip) uploader.image(image, std::as_bytes(std::span(source.mips[mip - 1])), mip, 0, layout);
         } else if (cpuMips) {
-            uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+            uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, layout);
             const std::vector<std::vector<uint8_t>> chain = geometry::boxMipChain(source);
-            for (uint32_t mip = 1; mip < mips; ++mip)
-                uploader.image(image, std::as_bytes(std::span(chain[mip - 1])), mip, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+            for (uint32_t mip = 1; mip < mips; ++mip) uploader.image(image, std::as_bytes(std::span(chain[mip - 1])), mip, 0, layout);
         } else {
-            uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                           /*generateMips=*/true);
+            uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, layout, /*generateMips=*/true);
         }
         return image;
     };

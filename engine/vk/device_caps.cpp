@@ -3,6 +3,7 @@
 #include "vk/check.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 namespace candela::vk {
@@ -81,6 +82,23 @@ DeviceCaps queryDeviceCaps(VkPhysicalDevice device) {
         vkGetPhysicalDeviceFormatProperties2(device, format, &p2);
         caps.formats.emplace_back(format, p3.optimalTilingFeatures);
     }
+
+    const auto linearTextures = [&](VkFormat format) {
+        VkFormatProperties3 p3{.sType = VK_STRUCTURE_TYPE_FORMAT_PROPERTIES_3};
+        VkFormatProperties2 p2{.sType = VK_STRUCTURE_TYPE_FORMAT_PROPERTIES_2, .pNext = &p3};
+        vkGetPhysicalDeviceFormatProperties2(device, format, &p2);
+        const VkFormatFeatureFlags2 needed = format_feature::kSampled | format_feature::kLinear;
+        VkImageFormatProperties image{};
+        return (p3.linearTilingFeatures & needed) == needed &&
+               vkGetPhysicalDeviceImageFormatProperties(device, format, VK_IMAGE_TYPE_2D, VK_IMAGE_TILING_LINEAR,
+                                                        VK_IMAGE_USAGE_SAMPLED_BIT, 0, &image) == VK_SUCCESS &&
+               image.maxExtent.width >= out.maxImageDimension2D && image.maxExtent.height >= out.maxImageDimension2D &&
+               image.maxMipLevels >= uint32_t(std::bit_width(out.maxImageDimension2D));
+    };
+    caps.hostWrittenTextures = properties.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU &&
+                               caps.hasMemoryType(VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
+                                                  VK_MEMORY_PROPERTY_HOST_COHERENT_BIT) &&
+                               linearTextures(VK_FORMAT_R8G8B8A8_UNORM) && linearTextures(VK_FORMAT_R8G8B8A8_SRGB);
     return caps;
 }
 

@@ -94,6 +94,14 @@ struct DeviceCaps {
     uint32_t memoryTypeMask = 0;
     // Optimal-tiling features of each of kCandelaFormats.
     std::vector<std::pair<VkFormat, VkFormatFeatureFlags2>> formats;
+    // Whether sampled RGBA8 textures (UNORM and sRGB) may be host-written (ImageDesc::hostWritten:
+    // linear tiling in host-visible memory, written in place, no staging copy): on a CPU device
+    // (lavapipe: its images are host memory, laid out linearly either way) whose linear tiling
+    // samples both formats with linear filtering, with full mip chains up to maxImageDimension2D,
+    // and which has a host-visible, coherent, device-local memory type. SwiftShader's linear images
+    // have one mip, so it has not. Profiles clear it: they stand for GPUs, which sample linear images
+    // slowly when at all.
+    bool hostWrittenTextures = false;
 
     // The optimal-tiling features of `format` (0 for a format not in kCandelaFormats).
     VkFormatFeatureFlags2 formatFeatures(VkFormat format) const;

@@ -1,8 +1,10 @@
 #include "vk/image.h"
 
+#include "core/errors.h"
 #include "vk/check.h"
 #include "vk/context.h"
 
+#include <string>
 #include <utility>
 
 namespace candela::vk {
@@ -52,10 +54,10 @@ VkImageCreateInfo imageCreateInfo(const ImageDesc& desc) {
             .mipLevels = desc.mipLevels,
             .arrayLayers = desc.arrayLayers,
             .samples = static_cast<VkSampleCountFlagBits>(desc.samples),
-            .tiling = VK_IMAGE_TILING_OPTIMAL,
+            .tiling = desc.hostWritten ? VK_IMAGE_TILING_LINEAR : VK_IMAGE_TILING_OPTIMAL,
             .usage = desc.usage,
             .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
-            .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED};
+            .initialLayout = desc.hostWritten ? VK_IMAGE_LAYOUT_PREINITIALIZED : VK_IMAGE_LAYOUT_UNDEFINED};
 }
 
 void Image::create(Context& context, const ImageDesc& desc) {
@@ -73,7 +75,8 @@ Image::Image(Context& context, const ImageDesc& desc) {
         VkMemoryRequirements requirements;
         vkGetImageMemoryRequirements(context.device(), mImage, &requirements);
         try {
-            mAllocation = context.allocator().allocate(requirements, desc.memory, ResourceTiling::Optimal);
+            mAllocation = desc.hostWritten ? context.allocator().allocate(requirements, MemoryUsage::Stream, ResourceTiling::Linear)
+                                           : context.allocator().allocate(requirements, desc.memory, ResourceTiling::Optimal);
         } catch (const OutOfDeviceMemory& e) {
             throw OutOfDeviceMemory("cannot allocate " + formatBytes(requirements.size) + " for image '" +
                                     (desc.name ? desc.name : "unnamed") + "': " + e.what());
@@ -98,6 +101,16 @@ Image::Image(Context& context, const ImageDesc& desc, const ExternalMemory& memo
         release();
         throw;
     }
+}
+
+Image::HostTexels Image::hostTexels(uint32_t mip, uint32_t layer) const {
+    if (!mDesc.hostWritten || !mAllocation.mapped || mip >= mDesc.mipLevels || layer >= mDesc.arrayLayers)
+        throw InternalError(std::string("Image::hostTexels: image '") + (mDesc.name ? mDesc.name : "unnamed") +
+                            "' is not host-written, or has no such mip or layer");
+    const VkImageSubresource subresource{aspect(), mip, layer};
+    VkSubresourceLayout layout;
+    vkGetImageSubresourceLayout(mContext->device(), mImage, &subresource, &layout);
+    return {mAllocation.mapped + layout.offset, layout.rowPitch};
 }
 
 Image::~Image() { release(); }

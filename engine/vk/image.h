@@ -8,6 +8,7 @@
 
 #include <vulkan/vulkan_core.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -27,6 +28,11 @@ struct ImageDesc {
     MemoryUsage memory = MemoryUsage::GpuOnly;
     const char* name = nullptr;
     uint32_t samples = 1;  // a power of two; > 1: a multisampled attachment (one mip, one layer)
+    // Linearly tiled in host-visible, coherent memory (MemoryUsage::Stream, whatever `memory` says),
+    // created PREINITIALIZED: the host writes its texels in place (Image::hostTexels), then
+    // Uploader::hostWritten moves it to its layout. No staging copy: for devices whose images are
+    // host memory anyway (DeviceCaps::hostWrittenTextures says where it may be used).
+    bool hostWritten = false;
 
     // e.g. ImageDesc::renderTarget(w, h, VK_FORMAT_R16G16B16A16_SFLOAT)
     static ImageDesc renderTarget(uint32_t width, uint32_t height, VkFormat format);
@@ -59,6 +65,15 @@ public:
     explicit operator bool() const { return mImage != VK_NULL_HANDLE; }
     // The device memory bound to the image (its allocation's size; 0 for external memory).
     VkDeviceSize memoryBytes() const { return mAllocation.size; }
+
+    // Where the host writes mip `mip`, layer `layer` of a hostWritten image: its first texel in the
+    // mapped memory and the bytes from one row to the next. Precondition: desc().hostWritten, and no
+    // device work reads the image while the host writes.
+    struct HostTexels {
+        std::byte* data;
+        VkDeviceSize rowPitch;
+    };
+    HostTexels hostTexels(uint32_t mip, uint32_t layer = 0) const;
 
     // A view of mips [baseMip, baseMip + mipCount) and layers [baseLayer, baseLayer + layerCount).
     ImageView createView(VkImageViewType type, uint32_t baseMip, uint32_t mipCount, uint32_t baseLayer,

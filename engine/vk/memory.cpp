@@ -1,8 +1,10 @@
 #include "vk/memory.h"
 
+#include "core/process_memory.h"
 #include "vk/check.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 
 namespace candela::vk {
@@ -134,6 +136,7 @@ VkDeviceMemory MemoryAllocator::allocateDeviceMemory(VkDeviceSize size, uint32_t
             VK_CHECK(result);
         }
         *mapped = static_cast<std::byte*>(pointer);
+        if (mHugePages) candela::adviseHugePages(pointer, size);
     }
     mStats.deviceMemoryBytes += size;
     ++mStats.deviceMemoryObjects;

@@ -255,6 +255,7 @@ DeviceCaps narrowCaps(const DeviceCaps& device, options::DeviceProfile profile) 
     if (!f.samplerAnisotropy) l.maxSamplerAnisotropy = 1.0f;
 
     caps.extensions.memoryBudget = caps.extensions.memoryBudget && data->extensions.memoryBudget;
+    caps.hostWrittenTextures = false;  // a profile stands for a GPU (DeviceCaps::hostWrittenTextures)
     // VK_KHR_portability_subset is not narrowed: a device that has it must have it enabled.
 
     if (!data->lazyMemory)

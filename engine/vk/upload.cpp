@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 
 namespace candela::vk {
 
@@ -61,7 +62,8 @@ void Uploader::image(const Image& dst, std::span<const std::byte> data, uint32_t
     if (data.empty()) throw InternalError("Uploader: no texels for an image");
     const ImageDesc& d = dst.desc();
     const VkExtent3D extent{std::max(1u, d.width >> mip), std::max(1u, d.height >> mip), std::max(1u, d.depth >> mip)};
-    mImages.push_back({dst.handle(), dst.aspect(), finalLayout, imageReaders(d.usage, finalLayout), generateMips, mip,
+    if (d.hostWritten) throw InternalError("Uploader: image '" + std::string(d.name ? d.name : "unnamed") + "' is host-written");
+    mImages.push_back({dst.handle(), dst.aspect(), finalLayout, imageReaders(d.usage, finalLayout), generateMips, false, mip,
                        layer, d.mipLevels, {d.width, d.height, d.depth}});
     // Whole rows per piece: as many as fit the chunk.
     const uint64_t rows = uint64_t(extent.height) * extent.depth;
@@ -81,6 +83,13 @@ void Uploader::image(const Image& dst, std::span<const std::byte> data, uint32_t
                                     {extent.width, count, 1}, mip, layer, at.offset});
             y += count;
         }
+}
+
+void Uploader::hostWritten(const Image& dst, VkImageLayout finalLayout) {
+    const ImageDesc& d = dst.desc();
+    if (!d.hostWritten) throw InternalError("Uploader: image '" + std::string(d.name ? d.name : "unnamed") + "' is not host-written");
+    mImages.push_back({dst.handle(), dst.aspect(), finalLayout, imageReaders(d.usage, finalLayout), false, true, 0, 0,
+                       d.mipLevels, {d.width, d.height, d.depth}});
 }
 
 void Uploader::flush(bool finish) {
@@ -113,6 +122,12 @@ void Uploader::flush(bool finish) {
         for (const ImageFinish& f : mImages) {
             if (std::find(done.begin(), done.end(), f.image) != done.end()) continue;
             done.push_back(f.image);
+            if (f.fromHost) {
+                // Host writes before the submit are visible to it (the submit's memory domain operation).
+                imageBarrier(cmd, f.image, f.aspect, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_WRITE_BIT,
+                             VK_IMAGE_LAYOUT_PREINITIALIZED, f.readers.stages, f.readers.access, f.finalLayout);
+                continue;
+            }
             if (f.generateMips && f.mipLevels > f.mip + 1) {
                 recordMipChain(cmd, f.image, f.aspect, f.baseExtent, f.mip, f.mipLevels, f.layer, f.finalLayout, f.readers);
                 continue;

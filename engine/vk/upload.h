@@ -41,6 +41,11 @@ public:
     void image(const Image& dst, std::span<const std::byte> data, uint32_t mip, uint32_t layer, VkImageLayout finalLayout,
                bool generateMips = false);
 
+    // Queues the move of a hostWritten image, its texels written by the host (Image::hostTexels),
+    // from PREINITIALIZED to `finalLayout`, where after submit they are visible to the reads its usage
+    // allows (vk::imageReaders). Precondition: dst.desc().hostWritten; the host writes are done.
+    void hostWritten(const Image& dst, VkImageLayout finalLayout);
+
     // Records and submits all queued copies and waits for them; every image reaches its final
     // layout. The staging chunk is released.
     void submitAndWait();
@@ -65,6 +70,7 @@ private:
         VkImageLayout finalLayout;
         ReadScope readers;
         bool generateMips;
+        bool fromHost;  // a hostWritten image: from PREINITIALIZED, after host writes, without copies
         uint32_t mip, layer, mipLevels;
         VkExtent3D baseExtent;
     };

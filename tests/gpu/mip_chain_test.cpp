@@ -2,9 +2,11 @@
 // as the CPU makes it for CPU devices (geometry/image_mips.h), each level compared with the exact
 // 2 × 2 box average of the level above it (the level as that chain made it), in double precision:
 // in linear light for sRGB images, as it is for UNORM ones. A chain that rounds correctly is within
-// half a code of the exact average at every texel.
+// half a code of the exact average at every texel. And the CPU chain written in place into a
+// host-written texture reaches the device as written.
 #include "gpu_test.h"
 
+#include "core/errors.h"
 #include "geometry/image_mips.h"
 #include "vk/buffer.h"
 #include "vk/commands.h"
@@ -13,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <random>
@@ -67,6 +70,12 @@ protected:
         vk::Uploader uploader(context());
         uploader.image(image, std::as_bytes(std::span(texels)), 0, 0, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, true);
         uploader.submitAndWait();
+        return readLevels(image);
+    }
+
+    // Every level of `image` (RGBA8, in TRANSFER_SRC_OPTIMAL), tightly packed, as the device holds it.
+    std::vector<std::vector<uint8_t>> readLevels(const vk::Image& image) {
+        const uint32_t width = image.desc().width, height = image.desc().height, levels = image.desc().mipLevels;
         vk::Buffer readback(context(), {.size = VkDeviceSize(width) * height * 4 * 2,
                                         .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                         .memory = vk::MemoryUsage::Readback});
@@ -126,6 +135,47 @@ TEST_F(MipChainTest, TheCpuChainRoundsTheBoxAverageAndBlitsStayWithinOneCode) {
             EXPECT_LE(blit.largest, 1.0 + 1e-6) << "blits, level " << m << (srgb ? " sRGB" : " UNORM");
         }
     }
+}
+
+// A host-written texture (linear tiling, written in place: how textures reach a CPU device,
+// DeviceCaps::hostWrittenTextures) holds every level as written, at an odd size whose small levels'
+// rows the driver may pad: read back through the device, each level equals the CPU chain.
+TEST_F(MipChainTest, HostWrittenLevelsReachTheDeviceAsWritten) {
+    if (context().caps().driver == VK_DRIVER_ID_MESA_LLVMPIPE) {
+        EXPECT_TRUE(context().caps().hostWrittenTextures);
+    }
+    if (!context().caps().hostWrittenTextures) GTEST_SKIP() << "this device's textures are not host-written";
+    std::mt19937 random(11);
+    scene::Image source{.name = "random", .width = 37, .height = 19, .srgb = true};
+    source.rgba8.resize(size_t(source.width) * source.height * 4);
+    for (uint8_t& b : source.rgba8) b = uint8_t(random() & 255u);
+    const uint32_t levels = geometry::mipLevelCount(source.width, source.height);
+    vk::Image image(context(), {.width = source.width,
+                                .height = source.height,
+                                .mipLevels = levels,
+                                .format = VK_FORMAT_R8G8B8A8_SRGB,
+                                .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                .name = "host-written",
+                                .hostWritten = true});
+    std::vector<geometry::TexelLevel> views;
+    for (uint32_t m = 0; m < levels; ++m) {
+        const vk::Image::HostTexels at = image.hostTexels(m);
+        views.push_back({reinterpret_cast<uint8_t*>(at.data), size_t(at.rowPitch), std::max(1u, source.width >> m),
+                         std::max(1u, source.height >> m)});
+    }
+    for (uint32_t y = 0; y < source.height; ++y)
+        std::copy_n(source.rgba8.begin() + ptrdiff_t(y) * source.width * 4, source.width * 4, views[0].row(y));
+    geometry::writeBoxMipChain(source, std::span(views).subspan(1));
+    vk::Uploader uploader(context());
+    uploader.hostWritten(image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    uploader.submitAndWait();
+
+    std::vector<std::vector<uint8_t>> expected = geometry::boxMipChain(source);
+    expected.insert(expected.begin(), source.rgba8);
+    EXPECT_EQ(readLevels(image), expected);
+    // The staging path refuses a host-written image.
+    EXPECT_THROW(uploader.image(image, std::as_bytes(std::span(source.rgba8)), 0, 0, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL),
+                 InternalError);
 }
 
 }  // namespace

@@ -42,6 +42,7 @@ DeviceCaps generousDevice() {
     caps.features = {.samplerAnisotropy = true, .alphaToOne = true, .fullDrawIndexUint32 = true,
                      .shaderStorageImageExtendedFormats = true, .geometryShader = true};
     caps.extensions = {.memoryBudget = true};
+    caps.hostWrittenTextures = true;
     caps.memory.memoryTypeCount = 2;
     caps.memory.memoryTypes[0].propertyFlags = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
     caps.memory.memoryTypes[1].propertyFlags = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT;
@@ -61,7 +62,16 @@ TEST(DeviceProfile, NativeChangesNothing) {
     const DeviceCaps caps = narrowCaps(device, options::DeviceProfile::Native);
     EXPECT_EQ(caps.limits.maxPerStageDescriptorSamplers, device.limits.maxPerStageDescriptorSamplers);
     EXPECT_EQ(caps.memoryTypeMask, device.memoryTypeMask);
+    EXPECT_TRUE(caps.hostWrittenTextures);
     EXPECT_TRUE(chooseForDevice(caps).fallbacks.empty());
+}
+
+// Profiles stand for GPUs: their textures go through staging copies, as on a GPU, even on lavapipe.
+TEST(DeviceProfile, EveryProfileTakesHostWrittenTexturesAway) {
+    for (const auto& [profile, name] : options::kDeviceProfileNames)
+        if (profile != options::DeviceProfile::Native) {
+            EXPECT_FALSE(narrowCaps(generousDevice(), profile).hostWrittenTextures) << name;
+        }
 }
 
 TEST(DeviceProfile, MinimumIsWhatVulkan13Guarantees) {
