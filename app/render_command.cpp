@@ -513,15 +513,26 @@ int runRender(const RenderOptions& options) {
     const auto environmentStart = Clock::now();
     Session session(options.common, options.env);
     const double environmentMs = msSince(environmentStart);
-    std::optional<LoadedScene> first;
-    if (single && !pending.empty()) {
-        // Bad input fails before the device starts, as it always has for one scene.
-        first = next.get();
-        if (first->error) std::rethrow_exception(first->error);
-    }
+    // The device starts while the first file loads. Of one scene, bad input is reported rather than
+    // a device that failed to start (as when the device started only after the load).
     const auto deviceStart = Clock::now();
-    session.start();
+    std::exception_ptr deviceError;
+    try {
+        session.start();
+    } catch (...) {
+        if (!single || pending.empty()) throw;
+        deviceError = std::current_exception();
+    }
     const double deviceMs = msSince(deviceStart);
+    std::optional<LoadedScene> first;
+    double firstWaitMs = 0.0;
+    if (single && !pending.empty()) {
+        const auto waitStart = Clock::now();
+        first = next.get();
+        firstWaitMs = msSince(waitStart);
+        if (first->error) std::rethrow_exception(first->error);
+        if (deviceError) std::rethrow_exception(deviceError);
+    }
     Run run{options, session, format, !single, sequence};
     const vk::Context& context = session.context();
     const assets::Environment* environment = session.environment();
@@ -553,14 +564,13 @@ int runRender(const RenderOptions& options) {
         for (; reported < i; ++reported) addResumed(reported);
         const auto waitStart = Clock::now();
         LoadedScene loaded = first ? std::move(*first) : next.get();
-        const double waitMs = msSince(waitStart);
+        const double waitMs = first ? firstWaitMs : msSince(waitStart);
         first.reset();
         if (k + 1 < pending.size()) startLoad(pending[k + 1]);  // the next file is read while this one renders
         SceneReport& r = report.scenes.emplace_back();
         r.input = scenes[i];
         r.loadMs = loaded.ms;
-        // The first load overlaps the device's start-up only: counted whole.
-        r.loadWaitMs = k == 0 ? loaded.ms : waitMs;
+        r.loadWaitMs = waitMs;  // the rest of the load overlapped the device's start-up or the scene before
         runScene(run, std::move(loaded), r, report, progress);
         if (run.batch) progress.step(i + 1, r.input.name);
         reported = i + 1;

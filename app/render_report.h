@@ -28,7 +28,7 @@ struct SceneReport {
     double imageDecodeMs = 0.0;     // decoding the images (PNG, JPEG, WebP, KTX2)
     double decompressionMs = 0.0;   // Draco and meshopt geometry
     double geometryMs = 0.0;        // preparing the geometry (optimized orders, levels of detail)
-    double loadWaitMs = 0.0;  // how long rendering waited for the load; the rest overlapped the previous scene
+    double loadWaitMs = 0.0;  // how long rendering waited for the load; the rest overlapped the device's start or the previous scene
     double parseMs = 0.0;   // of loadMs, the rest: reading and parsing the file, converting its data
     double lodMs = 0.0;     // building its levels of detail before its frames (the cost model's choice)
     double uploadMs = 0.0;  // to device memory, waited for
