@@ -6,7 +6,10 @@
 
 #include <array>
 #include <cstdlib>
+#include <memory>
+#include <span>
 #include <string>
+#include <vector>
 
 namespace candela::assets {
 
@@ -37,11 +40,14 @@ std::vector<uint8_t> encodePng(uint32_t width, uint32_t height, std::span<const 
     if (width == 0 || height == 0 || rgba.size() != stride * height) throw InternalError("encodePng: pixels do not match the size");
     // Filtered rows: a filter-type byte (4: Paeth) then each byte less its Paeth predictor from the
     // byte to its left (a), above (b) and above-left (c), 0 outside the image.
-    std::vector<uint8_t> filtered((stride + 1) * height);
+    // Buffers left uninitialized: every byte is written before it is read, and zeroing them first
+    // would touch (and fault in) the deflate bound's pages that are never used.
+    const size_t filteredBytes = (stride + 1) * height;
+    const std::unique_ptr<uint8_t[]> filtered(new uint8_t[filteredBytes]);
     for (uint32_t y = 0; y < height; ++y) {
         const uint8_t* row = rgba.data() + y * stride;
         const uint8_t* above = y > 0 ? row - stride : nullptr;
-        uint8_t* out = filtered.data() + y * (stride + 1);
+        uint8_t* out = filtered.get() + y * (stride + 1);
         *out++ = 4;
         for (size_t i = 0; i < stride; ++i) {
             const int a = i >= 4 ? row[i - 4] : 0, b = above ? above[i] : 0, c = above && i >= 4 ? above[i - 4] : 0;
@@ -50,13 +56,14 @@ std::vector<uint8_t> encodePng(uint32_t width, uint32_t height, std::span<const 
     }
     z_stream stream{};
     if (deflateInit2(&stream, 1, Z_DEFLATED, 15, 9, Z_RLE) != Z_OK) throw InternalError("encodePng: deflateInit2 failed");
-    std::vector<uint8_t> deflated(deflateBound(&stream, uLong(filtered.size())));
-    stream.next_in = filtered.data();
-    stream.avail_in = uInt(filtered.size());
-    stream.next_out = deflated.data();
-    stream.avail_out = uInt(deflated.size());
+    const uLong bound = deflateBound(&stream, uLong(filteredBytes));
+    const std::unique_ptr<uint8_t[]> deflatedBytes(new uint8_t[bound]);
+    stream.next_in = filtered.get();
+    stream.avail_in = uInt(filteredBytes);
+    stream.next_out = deflatedBytes.get();
+    stream.avail_out = uInt(bound);
     const int result = deflate(&stream, Z_FINISH);
-    deflated.resize(stream.total_out);
+    const std::span<const uint8_t> deflated(deflatedBytes.get(), stream.total_out);
     deflateEnd(&stream);
     if (result != Z_STREAM_END) throw InternalError("encodePng: deflate failed (" + std::to_string(result) + ")");
 
