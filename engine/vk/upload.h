@@ -5,7 +5,9 @@
 // submitted and waited for and the same staging buffers are filled again, so no upload holds more
 // staging than the bound (a 2 GiB texture set or a 16384 × 8192 environment never asks for one
 // allocation of its size; Vulkan guarantees only 1 GiB per allocation and buffer). Data is copied
-// in pieces of at most half the bound: buffers by byte ranges, images by rows.
+// in pieces of at most half the bound: buffers by byte ranges, images by rows. Host-written images
+// (ImageDesc::hostWritten: on CPU devices, textures the host writes in place) need no copy: the
+// Uploader only moves them to their layout with the other images (hostWritten).
 
 #include "vk/buffer.h"
 #include "vk/commands.h"
