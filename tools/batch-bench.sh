@@ -62,7 +62,7 @@ load = sum(x["loadMs"] for x in s); wait = sum(x["loadWaitMs"] for x in s); uplo
 print(f"last batch: {r['scenesRendered']} rendered, {r['scenesFailed']} failed; total {r['totalMs'] / 1000:.2f} s, "
       f"start-up {r['startupMs'] / 1000:.2f} s, precompute {r['precomputeMs'] / 1000:.2f} s ({r['precomputes']}x)")
 print(f"  summed over scenes: load {load / 1000:.2f} s on the loading thread, of which rendering waited for "
-      f"{wait / 1000:.2f} s (the rest overlapped the previous scene); upload {upload / 1000:.2f} s, frames {frame / 1000:.2f} s")
+      f"{wait / 1000:.2f} s (the rest overlapped the previous scene, or for the first the device's start); upload {upload / 1000:.2f} s, frames {frame / 1000:.2f} s")
 print(f"  peak: host {mib(r['peakHostBytes']):.0f} MiB resident, device {mib(r['peakDeviceBytes']):.0f} MiB in use "
       f"({mib(r['peakDeviceMemoryBytes']):.0f} MiB held)")
 ok = [x for x in s if x["status"] == "ok"]

@@ -54,7 +54,12 @@ std::vector<uint8_t> encodePng(uint32_t width, uint32_t height, std::span<const 
             out[i] = uint8_t(row[i] - paeth(a, b, c));
         }
     }
-    z_stream stream{};
+    // The stream ends with the scope, also when an allocation below throws.
+    struct Deflater {
+        z_stream stream{};
+        ~Deflater() { deflateEnd(&stream); }
+    } deflater;
+    z_stream& stream = deflater.stream;
     if (deflateInit2(&stream, 1, Z_DEFLATED, 15, 9, Z_RLE) != Z_OK) throw InternalError("encodePng: deflateInit2 failed");
     const uLong bound = deflateBound(&stream, uLong(filteredBytes));
     const std::unique_ptr<uint8_t[]> deflatedBytes(new uint8_t[bound]);
@@ -64,7 +69,6 @@ std::vector<uint8_t> encodePng(uint32_t width, uint32_t height, std::span<const 
     stream.avail_out = uInt(bound);
     const int result = deflate(&stream, Z_FINISH);
     const std::span<const uint8_t> deflated(deflatedBytes.get(), stream.total_out);
-    deflateEnd(&stream);
     if (result != Z_STREAM_END) throw InternalError("encodePng: deflate failed (" + std::to_string(result) + ")");
 
     std::vector<uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};

@@ -19,11 +19,12 @@ uint64_t heapMappedBytes();
 // Gives the memory the C heap holds free back to the system (glibc: malloc_trim), so that the
 // resident size shows what is in use (a run over many scenes, between scenes). No-op elsewhere.
 void returnFreedHeapMemory();
-// Advises the kernel that the 2 MiB-aligned interior of [data, data + bytes), memory not touched
-// yet, is best backed by transparent huge pages (Linux madvise MADV_HUGEPAGE, where the system's THP
-// mode allows it): its first touches then fault 2 MiB at a time instead of 4 KiB (large decoded
-// images, a CPU device's memory). Advice only: a no-op elsewhere, for small ranges, or where THP is
-// off.
+// Advises the kernel that the 2 MiB-aligned interior of [data, data + bytes) is best backed by
+// transparent huge pages (Linux madvise MADV_HUGEPAGE, where the system's THP mode allows it): the
+// range's first touches then fault 2 MiB at a time instead of 4 KiB (large decoded images, a CPU
+// device's memory). Best effort: pages already touched stay as they are, the advice outlives the
+// caller's use of heap memory (a later allocation there may get huge pages too), and it is a no-op
+// elsewhere, for ranges under 2 MiB, or where THP is off.
 void adviseHugePages(void* data, size_t bytes);
 // Milliseconds since the process was created (Linux: /proc/self/stat's start time, in clock ticks
 // of 10 ms, against CLOCK_BOOTTIME); negative where not available.

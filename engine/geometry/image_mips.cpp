@@ -134,7 +134,7 @@ void writeBoxMipChain(const scene::Image& image, std::span<const TexelLevel> mip
                                                  (1.0f - tx.weight) * ty.weight, tx.weight * ty.weight};
             for (int c = 0; c < 4; ++c) {
                 float sum = 0.0f;
-                if (image.srgb && c < 3) {
+                if (c < linearLightChannels) {
                     for (int k = 0; k < 4; ++k) sum += weight[size_t(k)] * tables.linear[source[size_t(k)][c]];
                     out[c] = tables.encode(sum);
                 } else {

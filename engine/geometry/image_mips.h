@@ -24,7 +24,8 @@ struct TexelLevel {
     uint8_t* row(uint32_t y) const { return data + size_t(y) * rowPitch; }
 };
 
-// The mip levels of a width × height image, as Vulkan sizes them: ⌊log2 max(width, height)⌋ + 1.
+// The mip levels of a width × height image, as Vulkan sizes them: ⌊log2 max(width, height)⌋ + 1
+// (1 for an empty image, which no loader makes).
 uint32_t mipLevelCount(uint32_t width, uint32_t height);
 
 // The sizes of levels [first, mipLevelCount) of a width × height image, tightly packed, backed by

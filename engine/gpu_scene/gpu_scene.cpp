@@ -187,6 +187,16 @@ void checkIndexValues(const scene::Scene& scene, const vk::DeviceCaps& caps) {
                     "): the scene has too many vertices for it");
 }
 
+std::vector<geometry::TexelLevel> hostWrittenLevels(const vk::Image& image) {
+    const vk::ImageDesc& d = image.desc();
+    std::vector<geometry::TexelLevel> levels;
+    for (uint32_t mip = 0; mip < d.mipLevels; ++mip) {
+        const vk::Image::HostTexels at = image.hostTexels(mip);
+        levels.push_back({reinterpret_cast<uint8_t*>(at.data), size_t(at.rowPitch), std::max(1u, d.width >> mip), std::max(1u, d.height >> mip)});
+    }
+    return levels;
+}
+
 GpuScene::GpuScene(vk::Context& context, const scene::Scene& scene, const std::vector<scene::Light>& extraLights, float maxAnisotropy,
                    bool sceneLights)
     : mScene(&scene), mContext(&context) {
@@ -260,13 +270,11 @@ GpuScene::GpuScene(vk::Context& context, const scene::Scene& scene, const std::v
                                   .hostWritten = hostWritten});
         const VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
         if (hostWritten) {
-            std::vector<geometry::TexelLevel> levels;
-            for (uint32_t mip = 0; mip < mips; ++mip) {
-                const vk::Image::HostTexels at = image.hostTexels(mip);
-                levels.push_back({reinterpret_cast<uint8_t*>(at.data), size_t(at.rowPitch), std::max(1u, source.width >> mip),
-                                  std::max(1u, source.height >> mip)});
-            }
-            const auto copyLevel = [](const geometry::TexelLevel& to, const std::vector<uint8_t>& texels) {
+            const std::vector<geometry::TexelLevel> levels = hostWrittenLevels(image);
+            const auto copyLevel = [&](const geometry::TexelLevel& to, const std::vector<uint8_t>& texels) {
+                if (texels.size() != size_t(to.width) * to.height * 4)
+                    throw InternalError("GpuScene: " + std::to_string(texels.size()) + " bytes are not the " + std::to_string(to.width) +
+                                        " x " + std::to_string(to.height) + " texels of a level of '" + source.name + "'");
                 parallelForRows(to.width, to.height, [&](uint32_t y) {
                     std::memcpy(to.row(y), texels.data() + size_t(y) * to.width * 4, size_t(to.width) * 4);
                 });

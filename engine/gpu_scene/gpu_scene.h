@@ -5,6 +5,7 @@
 // keep, in A, the length their averaging loses (geometry/normal_map_mips.h), for specular anti-aliasing. Geometry and textures are immutable after
 // upload (re-upload on change); the light and material buffers can be rewritten (live edits).
 
+#include "geometry/image_mips.h"
 #include "scene/scene.h"
 #include "shared/scene_data.h"
 #include "vk/buffer.h"
@@ -42,6 +43,11 @@ uint32_t deformationRecordWords(const scene::Deformation& deformation);
 // Appends the records of `deformation`'s vertices, in vertex order, to `words` (vertex-major, so
 // the records of a run of vertices are contiguous: the skin_morph pass binds only those).
 void appendDeformationRecords(const scene::Deformation& deformation, std::vector<uint32_t>& words);
+
+// The levels of a host-written image (vk::ImageDesc::hostWritten, RGBA8) as the mip chains write
+// them (geometry/image_mips.h): each level's mapped texels, row pitch and size. Precondition: the
+// image is host-written and still PREINITIALIZED (vk::Image::hostTexels).
+std::vector<geometry::TexelLevel> hostWrittenLevels(const vk::Image& image);
 
 // Throws UserError (one line) when an index value of `scene` passes `caps`'s
 // maxDrawIndexedIndexValue — 2^24−1 on a device without fullDrawIndexUint32 (the minimum profile),

@@ -97,7 +97,7 @@ DeviceCaps queryDeviceCaps(VkPhysicalDevice device) {
     };
     caps.hostWrittenTextures = properties.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU &&
                                caps.hasMemoryType(VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                                  VK_MEMORY_PROPERTY_HOST_COHERENT_BIT) &&
+                                                  VK_MEMORY_PROPERTY_HOST_COHERENT_BIT | VK_MEMORY_PROPERTY_HOST_CACHED_BIT) &&
                                linearTextures(VK_FORMAT_R8G8B8A8_UNORM) && linearTextures(VK_FORMAT_R8G8B8A8_SRGB);
     return caps;
 }

@@ -98,7 +98,8 @@ struct DeviceCaps {
     // linear tiling in host-visible memory, written in place, no staging copy): on a CPU device
     // (lavapipe: its images are host memory, laid out linearly either way) whose linear tiling
     // samples both formats with linear filtering, with full mip chains up to maxImageDimension2D,
-    // and which has a host-visible, coherent, device-local memory type. SwiftShader's linear images
+    // and which has a host-visible, coherent, cached, device-local memory type (cached: the chains
+    // read each level back to make the next). SwiftShader's linear images
     // have one mip, so it has not. Profiles clear it: they stand for GPUs, which sample linear images
     // slowly when at all.
     bool hostWrittenTextures = false;

@@ -67,8 +67,9 @@ public:
     VkDeviceSize memoryBytes() const { return mAllocation.size; }
 
     // Where the host writes mip `mip`, layer `layer` of a hostWritten image: its first texel in the
-    // mapped memory and the bytes from one row to the next. Precondition: desc().hostWritten, and no
-    // device work reads the image while the host writes.
+    // mapped memory and the bytes from one row to the next. Preconditions: desc().hostWritten; the
+    // host writes only while the image is PREINITIALIZED, before Uploader::hostWritten moves it (host
+    // access is defined in that layout, not in the one the shaders read).
     struct HostTexels {
         std::byte* data;
         VkDeviceSize rowPitch;

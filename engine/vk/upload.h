@@ -45,7 +45,8 @@ public:
 
     // Queues the move of a hostWritten image, its texels written by the host (Image::hostTexels),
     // from PREINITIALIZED to `finalLayout`, where after submit they are visible to the reads its usage
-    // allows (vk::imageReaders). Precondition: dst.desc().hostWritten; the host writes are done.
+    // allows (vk::imageReaders). Preconditions: dst.desc().hostWritten; the host writes are done; once
+    // per image, while it is still PREINITIALIZED (the barrier's old layout).
     void hostWritten(const Image& dst, VkImageLayout finalLayout);
 
     // Records and submits all queued copies and waits for them; every image reaches its final

@@ -183,6 +183,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"SceneJsonSyntaxError", "render --scene {dir}/syntax.gltf --out {dir}/x.png", "{dir}/syntax.gltf: invalid glTF: [json.exception.parse_error.101] parse error at line 1, column 30"},
                       // The loader tells .gltf from .glb by content and ignores the extension (a glTF file
                       // named .obj loads): an OBJ file fails as JSON that does not parse.
+                      // The device starts while a single scene loads: a bad file is still what is
+                      // reported, not a device that could not start.
+                      BadInput{"SceneErrorBeforeDeviceError", "render --device no-such-gpu --scene {dir}/syntax.gltf --out {dir}/x.png",
+                               "{dir}/syntax.gltf: invalid glTF: [json.exception.parse_error.101]"},
                       BadInput{"SceneNotGltf", "render --scene {dir}/scene.obj --out {dir}/x.png", "{dir}/scene.obj: invalid glTF: [json.exception.parse_error.101] parse error at line 1, column 1"},
                       BadInput{"CameraBeyondSceneCameras", "render --scene {dir}/triangle.gltf --camera 3 --out {dir}/x.png", "--camera 3: the scene has 0 cameras"},
                       BadInput{"CameraOrbitTwoNumbers", "render --camera-orbit 30,45 --out {dir}/x.png", "--camera-orbit: expected three comma-separated numbers, got '30,45'"},

@@ -8,6 +8,7 @@
 
 #include "core/errors.h"
 #include "geometry/image_mips.h"
+#include "gpu_scene/gpu_scene.h"
 #include "vk/buffer.h"
 #include "vk/commands.h"
 #include "vk/image.h"
@@ -157,12 +158,7 @@ TEST_F(MipChainTest, HostWrittenLevelsReachTheDeviceAsWritten) {
                                 .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                 .name = "host-written",
                                 .hostWritten = true});
-    std::vector<geometry::TexelLevel> views;
-    for (uint32_t m = 0; m < levels; ++m) {
-        const vk::Image::HostTexels at = image.hostTexels(m);
-        views.push_back({reinterpret_cast<uint8_t*>(at.data), size_t(at.rowPitch), std::max(1u, source.width >> m),
-                         std::max(1u, source.height >> m)});
-    }
+    const std::vector<geometry::TexelLevel> views = gpu_scene::hostWrittenLevels(image);
     for (uint32_t y = 0; y < source.height; ++y)
         std::copy_n(source.rgba8.begin() + ptrdiff_t(y) * source.width * 4, source.width * 4, views[0].row(y));
     geometry::writeBoxMipChain(source, std::span(views).subspan(1));

@@ -1,8 +1,10 @@
 // geometry::boxMipChain (geometry/image_mips.h) on small images: the levels' sizes halve as
 // Vulkan's, a constant image stays constant at every level, and a 2 × 2 block averages in linear
 // light when the image is sRGB, as it is otherwise; both chains write the same texels into rows
-// with padding between them, and refuse views of the wrong levels. The chain against the exact box average on a
+// with padding between them, keep the texels pinned for a seeded image, and refuse views of the
+// wrong levels. The chain against the exact box average on a
 // random image, next to the device's blits: tests/gpu/mip_chain_test.cpp.
+#include "core/cache_files.h"
 #include "geometry/image_mips.h"
 #include "geometry/normal_map_mips.h"
 
@@ -80,6 +82,25 @@ TEST(ImageMips, ChainsWrittenIntoPaddedRowsMatchThePackedOnes) {
                 EXPECT_TRUE(std::all_of(row + levels[i].width * 4, row + levels[i].rowPitch, [](uint8_t b) { return b == kPad; }));
             }
     }
+}
+
+// The chains' exact texels, pinned: FNV-1a 64 of every level of a seeded 61 × 37 image (odd sizes:
+// the filtered path too), as the chains made them before they were rewritten for speed (the values
+// come from that code). A change that moves a texel changes images: look at them, then update these.
+TEST(ImageMips, ChainsOfASeededImageKeepTheirTexels) {
+    std::mt19937 random(5);
+    scene::Image image{.name = "seeded", .width = 61, .height = 37};
+    image.rgba8.resize(size_t(image.width) * image.height * 4);
+    for (uint8_t& b : image.rgba8) b = uint8_t(random() & 255u);
+    const auto hash = [](const std::vector<std::vector<uint8_t>>& chain) {
+        uint64_t h = kFnv1a64Basis;
+        for (const std::vector<uint8_t>& level : chain) h = fnv1a64Update(h, level.data(), level.size());
+        return h;
+    };
+    EXPECT_EQ(hash(boxMipChain(image)), 0x7e39495230bd7227ull);
+    EXPECT_EQ(hash(normalMapMipChain(image)), 0xacbb5b401b467cf1ull);
+    image.srgb = true;
+    EXPECT_EQ(hash(boxMipChain(image)), 0xa8618a1384004061ull);
 }
 
 TEST(ImageMips, ViewsOfTheWrongLevelsAreRefused) {
