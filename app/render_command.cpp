@@ -328,7 +328,8 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
               .trianglesSubmitted = stats.submittedTriangles, .pipelineBinds = stats.pipelineBinds,
               .descriptorBinds = stats.descriptorBinds, .texelsDecoded = scene.report.textureDecoding.decodedBytes / 4,
               .simplifiedMeshes = scene.report.geometry.simplifiedMeshes,
-              .iblPrecomputes = run.session.renderer().precomputeCount() - precomputesBefore};
+              .iblPrecomputes = run.session.renderer().precomputeCount() - precomputesBefore,
+              .pipelinesCreated = r.pipelines};
     const graph::GraphDecl& graph = run.session.renderer().lastGraph().declaration();
     for (uint32_t pass : run.session.renderer().lastGraph().compiled().order) r.work.passes.push_back(graph.passes[pass].name);
     if (const gpu_scene::GpuScene* uploaded = run.session.renderer().uploadedScene())

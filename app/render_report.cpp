@@ -58,7 +58,8 @@ Json sceneJson(const SceneReport& s) {
                    {"passes", w.passes},
                    {"texelsDecoded", w.texelsDecoded},
                    {"simplifiedMeshes", w.simplifiedMeshes},
-                   {"iblPrecomputes", w.iblPrecomputes}};
+                   {"iblPrecomputes", w.iblPrecomputes},
+                   {"pipelinesCreated", w.pipelinesCreated}};
     Json textures = Json::array();
     uint64_t encoded = 0, device = 0;
     for (const TextureReport& t : s.textures) {

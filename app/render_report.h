@@ -53,6 +53,9 @@ struct SceneReport {
         uint64_t texelsDecoded = 0;
         uint64_t simplifiedMeshes = 0;
         uint32_t iblPrecomputes = 0;
+        // Pipelines created for the scene's frames (as `pipelines`); of one scene per run, a count
+        // that does not vary (in a batch, those compiled ahead for a scene may land in the one before).
+        uint64_t pipelinesCreated = 0;
     } work;
     std::vector<TextureReport> textures;
     std::vector<std::string> extensions;  // the file's extensionsUsed

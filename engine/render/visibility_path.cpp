@@ -10,6 +10,7 @@ namespace candela {
 VisibilityPath::VisibilityPath(vk::Context& context) : mContext(context), mRaster(context), mClassify(context), mShade(context) {}
 
 void VisibilityPath::setScene(const gpu_scene::GpuScene& scene, const passes::MaterialKeys& keys) {
+    mScene = nullptr, mKeys = nullptr, mBound = false;
     mUnsupported = mContext.choices().visibilityUnsupported;
     if (!mUnsupported.empty()) return;
     const uint64_t range = mContext.caps().limits.maxStorageBufferRange;
@@ -20,8 +21,8 @@ void VisibilityPath::setScene(const gpu_scene::GpuScene& scene, const passes::Ma
             return;
         }
     mTextureSets = passes::textureSetsOf(scene);
-    mRaster.setScene(scene, mTextureSets);
-    mShade.setScene(scene, keys, mTextureSets);
+    mScene = &scene;
+    mKeys = &keys;
 }
 
 std::pair<options::ShadingPath, std::string> defaultShadingPath(const vk::Context& context) {
@@ -46,6 +47,12 @@ std::optional<passes::VisibilityFrameTables> VisibilityPath::tables(const FrameD
 }
 
 passes::DrawTarget VisibilityPath::add(Frame& frame, const FrameDesc& desc, const passes::VisibilityFrameTables& tables) {
+    if (!mBound) {
+        if (!mScene || !mKeys) throw InternalError("VisibilityPath::add: no scene");
+        mRaster.setScene(*mScene, mTextureSets);
+        mShade.setScene(*mScene, *mKeys, mTextureSets);
+        mBound = true;
+    }
     const std::span<const passes::DrawListItem> items = desc.list.ranges(passes::DrawRange::Opaque, passes::DrawRange::Masked);
     graph::RenderGraph& graph = *frame.graph;
     const shading::VisibilityFrame extent =

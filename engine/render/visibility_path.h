@@ -25,8 +25,10 @@ class VisibilityPath {
 public:
     explicit VisibilityPath(vk::Context& context);
 
-    // Binds the scene, or records why it cannot take the path (unsupported()). Preconditions:
-    // the GPU no longer uses the previous scene's sets; `scene` and `keys` outlive their use.
+    // Takes the scene, or records why it cannot take the path (unsupported()). The path's passes
+    // bind it (their pipelines, programs and descriptor sets) at its first frame on this path, so a
+    // scene drawn on the forward path builds none of them. Preconditions: the GPU no longer uses the
+    // previous scene's sets; `scene` and `keys` outlive their use.
     void setScene(const gpu_scene::GpuScene& scene, const passes::MaterialKeys& keys);
     // Why frames of the current scene cannot take the path ("" if they can): the device's reason,
     // or the scene's (its vertices or indices past maxStorageBufferRange).
@@ -56,6 +58,10 @@ private:
     passes::VisibilityShadePass mShade;
     passes::TextureSets mTextureSets;
     std::string mUnsupported;
+    // The scene setScene took, until the passes bind it (add).
+    const gpu_scene::GpuScene* mScene = nullptr;
+    const passes::MaterialKeys* mKeys = nullptr;
+    bool mBound = false;
 };
 
 }  // namespace candela

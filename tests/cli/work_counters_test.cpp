@@ -1,7 +1,7 @@
 // The work of the default views, pinned: `candela render --report` on the default scene,
 // DamagedHelmet, MetalRoughSpheresNoTextures and a batch of samples, and each scene's `work`
 // counters (draws and triangles submitted, levels chosen, state changes, passes scheduled, texels
-// decoded, meshes given levels of detail, environment precomputes) against
+// decoded, meshes given levels of detail, environment precomputes, pipelines created) against
 // tests/data/work-counters.json. A change that multiplies the work — as the framing change of
 // issue 31 did, drawing 194,432 triangles where 25,872 had done, unnoticed — fails here with the
 // counter that moved; the times stay in `candela bench` and the reports. After a deliberate change,
@@ -89,6 +89,9 @@ TEST(WorkCounters, TheDefaultViewsDoThePinnedWork) {
     for (const fs::path& file : batch) files += " '" + file.string() + "'";
     now["a batch at 512x512"] =
         workOf("batch", files + " --width 512 --height 512 --out '" + (dir.path() / "{name}.png").string() + "'", dir);
+    // In a batch, pipelines compiled ahead for the next scene while one draws may be counted in
+    // either: pinned for the single scenes only.
+    for (auto& [scene, counters] : now["a batch at 512x512"].items()) counters.erase("pipelinesCreated");
 
     if (const char* approve = std::getenv("CANDELA_APPROVE_WORK_COUNTERS"); approve && std::string(approve) == "1") {
         std::ofstream(kPinned) << now.dump(2) << "\n";
