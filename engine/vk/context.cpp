@@ -108,7 +108,7 @@ Context::Context(const ContextDesc& desc)
         mAllocator = std::make_unique<MemoryAllocator>(mPhysicalDevice, mDevice.handle, mCaps.memoryTypeMask);
         mAllocator->setBudget(desc.deviceMemoryBudget);
         mAllocator->useHeapBudgets(mCaps.extensions.memoryBudget);
-        mAllocator->adviseHugePages(mProperties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU);
+        mAllocator->useHugePages(mProperties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU);
     });
     step("pipeline cache", [&] {
         mPipelineCache = std::make_unique<PipelineCacheFile>(mDevice.handle, mProperties, desc.pipelineCacheFolder);

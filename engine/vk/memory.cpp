@@ -136,7 +136,7 @@ VkDeviceMemory MemoryAllocator::allocateDeviceMemory(VkDeviceSize size, uint32_t
             VK_CHECK(result);
         }
         *mapped = static_cast<std::byte*>(pointer);
-        if (mHugePages) candela::adviseHugePages(pointer, size);
+        if (mHugePages) adviseHugePages(pointer, size);
     }
     mStats.deviceMemoryBytes += size;
     ++mStats.deviceMemoryObjects;

@@ -105,7 +105,7 @@ public:
     // heap). With it, each new mapped allocation is advised to the kernel as a transparent-huge-page
     // candidate (core/process_memory.h adviseHugePages), so that first touches fault 2 MiB at a time
     // rather than 4 KiB: a DamagedHelmet render touched ~27,000 fresh pages of texture memory.
-    void adviseHugePages(bool enabled) { mHugePages = enabled; }
+    void useHugePages(bool enabled) { mHugePages = enabled; }
     // Per heap: bytes this process uses and may use (VK_EXT_memory_budget); empty without it.
     std::vector<std::pair<VkDeviceSize, VkDeviceSize>> heapBudgets() const;
 
