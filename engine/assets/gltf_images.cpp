@@ -2,6 +2,7 @@
 
 #include "assets/gltf_accessors.h"
 #include "assets/image_file.h"
+#include "assets/stb_image_decoder.h"
 
 #include "core/errors.h"
 #include "core/parallel_for.h"
@@ -9,7 +10,6 @@
 #include "textures/ktx2_file.h"
 #include "textures/webp_image.h"
 
-#include <stb_image.h>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -21,10 +21,6 @@
 
 namespace candela::assets::gltf {
 namespace {
-
-struct StbiFree {
-    void operator()(void* p) const { stbi_image_free(p); }
-};
 
 // The size a PNG declares in its IHDR chunk. stb_image refuses (in stbi_info too) PNGs whose
 // decoded size would pass 1 GiB, with a reason that names no size; this finds the size to report.
@@ -46,7 +42,7 @@ std::string sizeProblem(uint32_t width, uint32_t height, uint32_t maxDimension) 
 }
 
 std::string stbiReason() {
-    const char* reason = stbi_failure_reason();
+    const char* reason = stb::failureReason();
     return reason ? reason : "unknown reason";
 }
 
@@ -86,10 +82,9 @@ ImageHeader checkImageHeader(const LoadContext& ctx, std::span<const uint8_t> by
         }
     }
     if (bytes.size() > size_t(std::numeric_limits<int>::max())) ctx.fail(what + ": image data larger than 2 GiB");
-    const int length = int(bytes.size());
     int width = 0, height = 0, channels = 0;
     // Read only the header first: an absurd declared size must not reach the decoder's allocation.
-    if (!stbi_info_from_memory(bytes.data(), length, &width, &height, &channels)) {
+    if (!stb::info(bytes, width, height, channels)) {
         const std::string reason = stbiReason();
         uint32_t pngWidth = 0, pngHeight = 0;
         if (pngDeclaredSize(bytes, pngWidth, pngHeight) && (pngWidth > maxDimension || pngHeight > maxDimension))
@@ -132,23 +127,22 @@ DecodedImage decodeImage(const LoadContext& ctx, std::span<const uint8_t> bytes,
         return image;
     }
     const uint32_t width = header.width, height = header.height;
-    const int length = int(bytes.size());
     image.format = pngDeclaredSize(bytes, image.width, image.height) ? "PNG"
                    : bytes.size() >= 2 && bytes[0] == 0xFF && bytes[1] == 0xD8 ? "JPEG"
                                                                                : "other";
     if (image.format == "PNG")
         if (const std::string problem = assets::pngChunkProblem(bytes); !problem.empty()) ctx.fail(what + ": " + problem);
-    int w = 0, h = 0, channels = 0;
+    int w = 0, h = 0;
     const size_t texels = size_t(width) * size_t(height);
-    if (stbi_is_16_bit_from_memory(bytes.data(), length)) {
-        std::unique_ptr<uint16_t, StbiFree> pixels(stbi_load_16_from_memory(bytes.data(), length, &w, &h, &channels, 4));
+    if (stb::is16Bit(bytes)) {
+        const stb::Pixels<uint16_t> pixels = stb::loadRgba16(bytes, w, h);
         if (!pixels) ctx.fail(what + ": cannot decode image (" + stbiReason() + ")");
         if (uint32_t(w) != width || uint32_t(h) != height) ctx.fail(what + ": image size changed while decoding");
         // Round to nearest (stb_image's own 16→8 path truncates).
         image.rgba8.resize(texels * 4);
         for (size_t i = 0; i < texels * 4; ++i) image.rgba8[i] = uint8_t((uint32_t(pixels.get()[i]) * 255u + 32767u) / 65535u);
     } else {
-        std::unique_ptr<uint8_t, StbiFree> pixels(stbi_load_from_memory(bytes.data(), length, &w, &h, &channels, 4));
+        const stb::Pixels<uint8_t> pixels = stb::loadRgba8(bytes, w, h);
         if (!pixels) ctx.fail(what + ": cannot decode image (" + stbiReason() + ")");
         if (uint32_t(w) != width || uint32_t(h) != height) ctx.fail(what + ": image size changed while decoding");
         // Huge pages for the copy's first touches: a 2048² image is 4,096 fresh 4 KiB pages otherwise.

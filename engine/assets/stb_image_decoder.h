@@ -1,0 +1,34 @@
+#pragma once
+// Internal to the glTF loader: stb_image (Debian's header, the same version as its libstb) compiled
+// into this library with its own allocator, so that the large buffers it decodes into (a 2048²
+// JPEG's output and component planes: some 22 MiB) are advised as transparent huge pages before
+// their first touch (core/process_memory.h adviseHugePages): 4 KiB page faults otherwise cost a
+// CPU device's single render more than the copies themselves. The functions are stb_image's,
+// renamed; its implementation is private to stb_image_decoder.cpp.
+
+#include <cstdint>
+#include <memory>
+#include <span>
+
+namespace candela::assets::stb {
+
+// Frees what loadRgba8 / loadRgba16 return.
+struct PixelsFree {
+    void operator()(void* pixels) const;
+};
+template <typename T>
+using Pixels = std::unique_ptr<T, PixelsFree>;
+
+// stbi_info_from_memory: the declared size and channel count, without decoding. Precondition:
+// bytes.size() fits in an int. False for data stb_image cannot read (failureReason() says why).
+bool info(std::span<const uint8_t> bytes, int& width, int& height, int& channels);
+// stbi_is_16_bit_from_memory: whether the image holds 16 bits per channel (PNG).
+bool is16Bit(std::span<const uint8_t> bytes);
+// stbi_load_from_memory / stbi_load_16_from_memory with 4 channels (RGBA, top row first): null
+// where decoding fails (failureReason() says why); width and height are the decoded size.
+Pixels<uint8_t> loadRgba8(std::span<const uint8_t> bytes, int& width, int& height);
+Pixels<uint16_t> loadRgba16(std::span<const uint8_t> bytes, int& width, int& height);
+// stbi_failure_reason of the calling thread's last call above; null where there is none.
+const char* failureReason();
+
+}  // namespace candela::assets::stb
