@@ -1,24 +1,22 @@
 #include "geometry/normal_map_mips.h"
 
 #include "core/parallel_for.h"
-
-#include <glm/glm.hpp>
+#include "core/process_memory.h"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 
 namespace candela::geometry {
 
 namespace {
 
-// The nearest code of value ∈ [0, 1] (clamped), halves rounded up: std::lround's result without its
-// library call (v − ⌊v⌋ is exact for v ≥ 0).
-uint8_t encode(float value) {
-    const float v = std::clamp(value, 0.0f, 1.0f) * 255.0f;
-    const uint32_t whole = uint32_t(v);
-    return uint8_t(whole + (v - float(whole) >= 0.5f ? 1u : 0u));
-}
+// Four floats (GCC/Clang vector extensions: SSE on x86-64, NEON on Arm, plain code elsewhere). Each
+// lane's arithmetic is the scalar operation's, rounded the same: the chain's texels do not depend on
+// whether the vectors are real.
+using Floats4 = float __attribute__((vector_size(16)));
+using Ints4 = int32_t __attribute__((vector_size(16)));
 
 // A normal map's code c decoded to c / 127.5 − 1, as a table (the same division, done once per code).
 struct Decoded {
@@ -27,6 +25,26 @@ struct Decoded {
         for (int c = 0; c < 256; ++c) value[size_t(c)] = float(c) / 127.5f - 1.0f;
     }
 };
+
+// The length of v's first three lanes, summed as (x² + y²) + z².
+float length3(Floats4 v) { return std::sqrt((v[0] * v[0] + v[1] * v[1]) + v[2] * v[2]); }
+
+// v's first three lanes over their length; (0, 0, 1) where that is 1e-6 or less.
+Floats4 direction3(Floats4 v, float length) { return length > 1e-6f ? v / length : Floats4{0.0f, 0.0f, 1.0f, 0.0f}; }
+
+// The texel of a mean normal m of length `length`: RGB its direction · 0.5 + 0.5 and A its length,
+// each the nearest code of its value clamped to [0, 1], halves rounded up (std::lround's result).
+void encodeTexel(Floats4 m, float length, uint8_t* texel) {
+    const Floats4 direction = direction3(m, length);
+    Floats4 v = direction * 0.5f + 0.5f;
+    v[3] = length;
+    v = v < 0.0f ? Floats4{} : v;
+    v = v > 1.0f ? Floats4{1.0f, 1.0f, 1.0f, 1.0f} : v;
+    v *= 255.0f;
+    const Ints4 whole = __builtin_convertvector(v, Ints4);  // truncation: v ≥ 0
+    const Ints4 code = whole - (v - __builtin_convertvector(whole, Floats4) >= 0.5f);  // a true lane is −1
+    for (int c = 0; c < 4; ++c) texel[c] = uint8_t(code[c]);
+}
 
 }  // namespace
 
@@ -44,39 +62,38 @@ void writeNormalMapMipChain(const scene::Image& image, std::span<const TexelLeve
     // reads each texel once, but at an odd size's clamped edge).
     const auto unitNormal = [&](uint32_t x, uint32_t y) {
         const uint8_t* t = source + (size_t(y) * image.width + x) * 4;
-        const glm::vec3 n(decoded.value[t[0]], decoded.value[t[1]], decoded.value[t[2]]);
-        const float length = glm::length(n);
-        return length > 1e-6f ? n / length : glm::vec3(0.0f, 0.0f, 1.0f);
+        const Floats4 n{decoded.value[t[0]], decoded.value[t[1]], decoded.value[t[2]], 0.0f};
+        return direction3(n, length3(n));
     };
-    // The mean unit normal per texel of the level above (from mip 1 on; mip 0's is unitNormal).
-    std::vector<glm::vec3> mean;
+    // The mean unit normal per texel of the level above (from mip 1 on; mip 0's is unitNormal), in
+    // two buffers taking turns: the level written and the one above it. Fresh memory, advised as
+    // huge pages (a 2048² map's mip 1 is 16 MiB of means).
+    std::array<std::vector<Floats4>, 2> means;
+    if (levels.size() > 1) means[0].reserve(size_t(levels[1].width) * levels[1].height);
+    if (levels.size() > 2) means[1].reserve(size_t(levels[2].width) * levels[2].height);
+    for (std::vector<Floats4>& m : means) adviseHugePages(m.data(), m.capacity() * sizeof(Floats4));
     uint32_t width = image.width, height = image.height;
     for (size_t level = 1; level < levels.size(); ++level) {
         const TexelLevel& mip = levels[level];
         const uint32_t w = mip.width, h = mip.height;
-        std::vector<glm::vec3> next(size_t(w) * h);
+        const std::vector<Floats4>& mean = means[level % 2];  // the level above's (unused for mip 1)
+        std::vector<Floats4>& next = means[(level + 1) % 2];
+        next.resize(size_t(w) * h);
         // Each row's texels depend on the level above alone: the result does not depend on the threads.
         parallelForRows(w, h, [&](uint32_t y) {
             uint8_t* out = mip.row(y);
             for (uint32_t x = 0; x < w; ++x) {
-                glm::vec3 sum(0.0f);
+                Floats4 sum{};
                 for (uint32_t dy = 0; dy < 2; ++dy)
                     for (uint32_t dx = 0; dx < 2; ++dx) {
                         const uint32_t sx = std::min(2 * x + dx, width - 1), sy = std::min(2 * y + dy, height - 1);
                         sum += level == 1 ? unitNormal(sx, sy) : mean[size_t(sy) * width + sx];
                     }
-                const glm::vec3 m = sum * 0.25f;
+                const Floats4 m = sum * 0.25f;
                 next[size_t(y) * w + x] = m;
-                const float length = glm::length(m);
-                const glm::vec3 direction = length > 1e-6f ? m / length : glm::vec3(0.0f, 0.0f, 1.0f);
-                uint8_t* texel = out + size_t(x) * 4;
-                texel[0] = encode(direction.x * 0.5f + 0.5f);
-                texel[1] = encode(direction.y * 0.5f + 0.5f);
-                texel[2] = encode(direction.z * 0.5f + 0.5f);
-                texel[3] = encode(length);
+                encodeTexel(m, length3(m), out + size_t(x) * 4);
             }
         });
-        mean = std::move(next);
         width = w, height = h;
     }
 }

@@ -87,20 +87,31 @@ TEST(ImageMips, ChainsWrittenIntoPaddedRowsMatchThePackedOnes) {
 // The chains' exact texels, pinned: FNV-1a 64 of every level of a seeded 61 × 37 image (odd sizes:
 // the filtered path too), as the chains made them before they were rewritten for speed (the values
 // come from that code). A change that moves a texel changes images: look at them, then update these.
+// The hashes of each chain as the code written before each of its rewrites made it: 61 × 37 starts
+// with odd sizes (filtered levels, then halved ones); 142 × 72 halves exactly down to 71 × 36, with
+// row lengths that are not a multiple of the halving's step of several texels.
 TEST(ImageMips, ChainsOfASeededImageKeepTheirTexels) {
-    std::mt19937 random(5);
-    scene::Image image{.name = "seeded", .width = 61, .height = 37};
-    image.rgba8.resize(size_t(image.width) * image.height * 4);
-    for (uint8_t& b : image.rgba8) b = uint8_t(random() & 255u);
-    const auto hash = [](const std::vector<std::vector<uint8_t>>& chain) {
-        uint64_t h = kFnv1a64Basis;
-        for (const std::vector<uint8_t>& level : chain) h = fnv1a64Update(h, level.data(), level.size());
-        return h;
+    struct Pinned {
+        uint32_t width, height;
+        uint64_t unorm, normalMap, srgb;
     };
-    EXPECT_EQ(hash(boxMipChain(image)), 0x7e39495230bd7227ull);
-    EXPECT_EQ(hash(normalMapMipChain(image)), 0xacbb5b401b467cf1ull);
-    image.srgb = true;
-    EXPECT_EQ(hash(boxMipChain(image)), 0xa8618a1384004061ull);
+    for (const Pinned& pinned : {Pinned{61, 37, 0x7e39495230bd7227ull, 0xacbb5b401b467cf1ull, 0xa8618a1384004061ull},
+                                 Pinned{142, 72, 0xb0313b0527c539eeull, 0x36313a86f515cc30ull, 0x42e5d9233912d5f8ull}}) {
+        SCOPED_TRACE(std::to_string(pinned.width) + " x " + std::to_string(pinned.height));
+        std::mt19937 random(5);
+        scene::Image image{.name = "seeded", .width = pinned.width, .height = pinned.height};
+        image.rgba8.resize(size_t(image.width) * image.height * 4);
+        for (uint8_t& b : image.rgba8) b = uint8_t(random() & 255u);
+        const auto hash = [](const std::vector<std::vector<uint8_t>>& chain) {
+            uint64_t h = kFnv1a64Basis;
+            for (const std::vector<uint8_t>& level : chain) h = fnv1a64Update(h, level.data(), level.size());
+            return h;
+        };
+        EXPECT_EQ(hash(boxMipChain(image)), pinned.unorm);
+        EXPECT_EQ(hash(normalMapMipChain(image)), pinned.normalMap);
+        image.srgb = true;
+        EXPECT_EQ(hash(boxMipChain(image)), pinned.srgb);
+    }
 }
 
 TEST(ImageMips, ViewsOfTheWrongLevelsAreRefused) {
