@@ -29,10 +29,26 @@ FrameBuilder::FrameBuilder(vk::Context& context, SceneState& scene, shader::Para
       mForward(context), mSkybox(context), mExpand(context), mTransmissionBackground(context), mSkinMorph(context), mTonemap(context),
       mCalibration(context), mAov(context), mVisibility(context) {}
 
-void FrameBuilder::prepareAhead(const passes::MaterialKeys& keys, std::span<const scene::Light> lights) {
+void FrameBuilder::prepareAhead(const passes::MaterialKeys& keys, const RenderSettings& settings, std::span<const scene::Light> lights) {
     std::vector<shading::LightData> data;
     for (const scene::Light& light : lights) data.push_back(gpu_scene::lightData(light));
-    mForward.prepareAhead(keys, !lights.empty(), passes::lightTypeBits(data));
+    mForward.prepareAhead(keys, firstFrameVariant(settings), !lights.empty(), passes::lightTypeBits(data));
+}
+
+std::optional<passes::FrameVariant> FrameBuilder::firstFrameVariant(const RenderSettings& settings) const {
+    const uint32_t samples = msaa(settings.msaa).samples;
+    if (samples > 1) return std::nullopt;
+    // As makeFrameInputs fills it from addIbl's inputs: the maps have an environment when the
+    // settings give one; their irradiance is the quality's.
+    const bool ibl = settings.environment != nullptr;
+    return passes::FrameVariant{.model = settings.shading,
+                                .ibl = ibl,
+                                .irradianceSh = !ibl || settings.iblQuality.irradiance == ibl::IrradianceMode::Sh9,
+                                .multiscatter = !ibl || settings.ibl.multiscatter,
+                                .referenceSamples = ibl ? settings.ibl.referenceSamples : 0,
+                                .debugView = settings.debugView,
+                                .specularAa = settings.shadingOptions.specularAntiAliasing,
+                                .samples = samples};
 }
 
 void FrameBuilder::sceneUploaded() {

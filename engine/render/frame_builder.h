@@ -46,9 +46,15 @@ public:
     // The scene was uploaded anew (SceneState::prepareScene): the forward pass binds it.
     void sceneUploaded();
     // Before a scene whose materials have `keys` (passes::MaterialKeys::of) is uploaded, drawn with
-    // `lights`: queues its forward pipelines for a frame like the last one
-    // (ForwardPass::prepareAhead), so that they compile while it uploads.
-    void prepareAhead(const passes::MaterialKeys& keys, std::span<const scene::Light> lights);
+    // `lights`: queues its forward pipelines for a frame like the last one, or before any for the
+    // one `settings` give (firstFrameVariant) (ForwardPass::prepareAhead), so that they compile
+    // while it uploads.
+    void prepareAhead(const passes::MaterialKeys& keys, const RenderSettings& settings, std::span<const scene::Light> lights);
+    // The forward variant bits (passes::FrameVariant, lights aside) of a scene frame of `settings`,
+    // known before its scene and environment are uploaded: what buildScene will find, from the
+    // same settings (GpuTest.AFirstScenesPipelinesCompileWhileItUploadsForTheFrameItsSettingsGive). Nullopt with MSAA, where
+    // alpha to coverage is the frame plan's choice.
+    std::optional<passes::FrameVariant> firstFrameVariant(const RenderSettings& settings) const;
     // Declares the scene frame for `settings` (a scene is uploaded, the environment prepared): the
     // tonemap writes `target` when given (a presentable image), else a new transient "ldr".
     // Throws UserError for a bad camera choice.

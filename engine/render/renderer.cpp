@@ -46,7 +46,7 @@ void Renderer::upload(const RenderSettings& settings) {
     if (mScene.uploads(choice)) {
         passes::MaterialKeys keys = passes::MaterialKeys::of(*settings.scene);
         // A new scene's pipelines compile on the workers while its textures upload.
-        if (settings.precompile != options::Precompile::Off) mBuilder.prepareAhead(keys, SceneState::lightsOf(choice));
+        if (settings.precompile != options::Precompile::Off) mBuilder.prepareAhead(keys, settings, SceneState::lightsOf(choice));
         mScene.prepareScene(choice, std::move(keys));
         mBuilder.sceneUploaded();
     }

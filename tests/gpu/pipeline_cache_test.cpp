@@ -9,6 +9,7 @@
 #include "temp_dir.h"
 
 #include "assets/builtin_scenes.h"
+#include "assets/procedural_sky.h"
 #include "render/renderer.h"
 #include "vk/pipeline_cache.h"
 #include "vk/pipeline_cache_file.h"
@@ -244,6 +245,44 @@ TEST_F(GpuTest, ANewScenesPipelinesCompileWhileItUploadsForAFrameLikeTheLast) {
     const CapturedFrame frame = renderer.capture(settings);
     EXPECT_EQ(context().pipelineCreation().count - before, ahead) << "its first frame found every pipeline built";
     EXPECT_EQ(frame.rgba8, reference.rgba8);
+}
+
+TEST_F(GpuTest, AFirstScenesPipelinesCompileWhileItUploadsForTheFrameItsSettingsGive) {
+    // Before any frame, uploading a scene queues its forward pipelines for the frame its settings
+    // give (FrameBuilder::firstFrameVariant): they are built by its first frame, which then creates
+    // no pipeline a renderer that never queued ahead would not; a wrong guess would show as more.
+    const scene::Scene grid = assets::makeSphereGrid();
+    const assets::Environment sky = assets::makeProceduralSky();
+    std::vector<RenderSettings> cases(3, RenderSettings{.width = 48, .height = 27, .scene = &grid});
+    cases[1].environment = &sky;
+    cases[2].environment = &sky;
+    cases[2].iblQuality.irradiance = ibl::IrradianceMode::Cube;
+    cases[2].ibl.multiscatter = false;
+    cases[2].shadingOptions.specularAntiAliasing = true;
+    cases[2].shading = options::ShadingModel::BlinnPhong;
+    cases[2].debugView = options::DebugView::Roughness;
+    for (size_t c = 0; c < cases.size(); ++c) {
+        SCOPED_TRACE("case " + std::to_string(c));
+        RenderSettings settings = cases[c];
+        settings.precompile = options::Precompile::Off;
+        uint64_t before = context().pipelineCreation().count;
+        CapturedFrame reference;
+        {
+            Renderer renderer(context());
+            reference = renderer.capture(settings);
+        }
+        const uint64_t withoutAhead = context().pipelineCreation().count - before;
+        settings.precompile = options::Precompile::Frame;
+        before = context().pipelineCreation().count;
+        Renderer renderer(context());
+        renderer.upload(settings);
+        renderer.finishPipelineBuilds();
+        const uint64_t ahead = context().pipelineCreation().count - before;
+        EXPECT_GT(ahead, 0u) << "the grid's variants compile before its first frame";
+        const CapturedFrame frame = renderer.capture(settings);
+        EXPECT_EQ(context().pipelineCreation().count - before, withoutAhead) << "the variants built ahead were the frame's";
+        EXPECT_EQ(frame.rgba8, reference.rgba8);
+    }
 }
 
 TEST_F(GpuTest, RendererDestroyedWhileBackgroundBuildsRunLeaksNothing) {

@@ -78,9 +78,9 @@ bool ForwardPass::prepare(const FrameVariant& frame) {
     return true;
 }
 
-void ForwardPass::prepareAhead(const MaterialKeys& keys, bool lights, uint32_t lightTypes) {
-    if (!mLastFrame) return;
-    FrameVariant frame = *mLastFrame;
+void ForwardPass::prepareAhead(const MaterialKeys& keys, const std::optional<FrameVariant>& first, bool lights, uint32_t lightTypes) {
+    if (!mLastFrame && !first) return;
+    FrameVariant frame = mLastFrame ? *mLastFrame : *first;
     frame.lights = lights;
     frame.lightTypes = lightTypes;
     queue(keys, frame, WorkerPool::Priority::Soon);

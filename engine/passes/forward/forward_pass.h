@@ -78,11 +78,12 @@ public:
     // was not (something may have been queued). Precondition: a scene is set.
     bool prepare(const FrameVariant& frame);
     // Queues (priority Soon) the pipelines of `keys` — a scene about to be uploaded — for a frame
-    // with the bits of the last one prepared and these lights (`lights`: any; `lightTypes`: bit
-    // 1 << CANDELA_LIGHT_* of each), so that they compile on the workers while the scene uploads:
-    // a batch's next scene is most often drawn like the one before. A frame of other bits queues
-    // its own in prepare() and leaves these unused. Nothing before a first frame.
-    void prepareAhead(const MaterialKeys& keys, bool lights, uint32_t lightTypes);
+    // with the bits of the last one prepared, or of `first` before any, and these lights (`lights`:
+    // any; `lightTypes`: bit 1 << CANDELA_LIGHT_* of each), so that they compile on the workers
+    // while the scene uploads: a batch's next scene is most often drawn like the one before, a first
+    // scene as its settings say (FrameBuilder::firstFrameVariant). A frame of other bits queues its
+    // own in prepare() and leaves these unused. Nothing before a first frame without `first`.
+    void prepareAhead(const MaterialKeys& keys, const std::optional<FrameVariant>& first, bool lights, uint32_t lightTypes);
     // Queues, in the background, the same for every debug view (None included) of `frame`'s other
     // bits, so that a switch of the view finds them built. Cheap when done already for `frame`.
     void prepareDebugViews(const FrameVariant& frame);
