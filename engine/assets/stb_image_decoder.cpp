@@ -6,17 +6,11 @@
 
 namespace {
 
-// Buffers of at least a huge page are aligned to one and advised, so that all but their last
-// partial huge page fault 2 MiB at a time (the aligned allocation only reserves the padding).
+// Buffers of at least half a huge page (a 2048² JPEG's chroma planes are 1 MiB) take whole huge
+// pages (core/process_memory.h allocateInHugePages).
 constexpr size_t kHugePage = size_t(2) << 20;
 
-void* decoderMalloc(size_t bytes) {
-    if (bytes < kHugePage) return std::malloc(bytes);
-    void* data = nullptr;
-    if (posix_memalign(&data, kHugePage, bytes) != 0) return nullptr;
-    candela::adviseHugePages(data, bytes);
-    return data;
-}
+void* decoderMalloc(size_t bytes) { return bytes < kHugePage / 2 ? std::malloc(bytes) : candela::allocateInHugePages(bytes); }
 
 void* decoderRealloc(void* data, size_t bytes) {
     void* grown = std::realloc(data, bytes);

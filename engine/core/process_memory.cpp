@@ -1,6 +1,8 @@
 #include "core/process_memory.h"
 
+#include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <ctime>
 #include <fstream>
 #include <iterator>
@@ -54,6 +56,15 @@ void adviseHugePages(void* data, size_t bytes) {
 #else
     (void)data, (void)bytes;
 #endif
+}
+
+void* allocateInHugePages(size_t bytes) {
+    constexpr size_t kHugePage = size_t(2) << 20;
+    const size_t rounded = (std::max<size_t>(bytes, 1) + kHugePage - 1) / kHugePage * kHugePage;
+    void* data = nullptr;
+    if (posix_memalign(&data, kHugePage, rounded) != 0) return nullptr;
+    adviseHugePages(data, rounded);
+    return data;
 }
 
 double processAgeMs() {

@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <memory>
+#include <new>
 
 namespace candela::geometry {
 
@@ -66,19 +69,22 @@ void writeNormalMapMipChain(const scene::Image& image, std::span<const TexelLeve
         return direction3(n, length3(n));
     };
     // The mean unit normal per texel of the level above (from mip 1 on; mip 0's is unitNormal), in
-    // two buffers taking turns: the level written and the one above it. Fresh memory, advised as
-    // huge pages (a 2048² map's mip 1 is 16 MiB of means).
-    std::array<std::vector<Floats4>, 2> means;
-    if (levels.size() > 1) means[0].reserve(size_t(levels[1].width) * levels[1].height);
-    if (levels.size() > 2) means[1].reserve(size_t(levels[2].width) * levels[2].height);
-    for (std::vector<Floats4>& m : means) adviseHugePages(m.data(), m.capacity() * sizeof(Floats4));
+    // two buffers taking turns: the level written and the one above it, each written before it is
+    // read. In huge pages (a 2048² map's mip 1 is 16 MiB of means).
+    struct Free {
+        void operator()(Floats4* p) const { std::free(p); }
+    };
+    std::array<std::unique_ptr<Floats4[], Free>, 2> means;
+    for (size_t i = 0; i < 2 && i + 1 < levels.size(); ++i) {
+        means[i].reset(static_cast<Floats4*>(allocateInHugePages(size_t(levels[i + 1].width) * levels[i + 1].height * sizeof(Floats4))));
+        if (!means[i]) throw std::bad_alloc();
+    }
     uint32_t width = image.width, height = image.height;
     for (size_t level = 1; level < levels.size(); ++level) {
         const TexelLevel& mip = levels[level];
         const uint32_t w = mip.width, h = mip.height;
-        const std::vector<Floats4>& mean = means[level % 2];  // the level above's (unused for mip 1)
-        std::vector<Floats4>& next = means[(level + 1) % 2];
-        next.resize(size_t(w) * h);
+        const Floats4* mean = means[level % 2].get();  // the level above's (unused for mip 1)
+        Floats4* next = means[(level + 1) % 2].get();
         // Each row's texels depend on the level above alone: the result does not depend on the threads.
         parallelForRows(w, h, [&](uint32_t y) {
             uint8_t* out = mip.row(y);
