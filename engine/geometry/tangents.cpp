@@ -55,10 +55,11 @@ struct Triangle {
     std::array<int, 3> group{-1, -1, -1};     // group of corner i
 };
 
+// A group's triangles are groupTriangles[begin, end): each group is grown whole before the next starts.
 struct Group {
     uint32_t vertex;
     bool orient;
-    std::vector<uint32_t> triangles;
+    uint32_t begin = 0, end = 0;
 };
 
 int cornerOf(const Triangle& t, uint32_t vertex) {
@@ -67,10 +68,13 @@ int cornerOf(const Triangle& t, uint32_t vertex) {
     return -1;
 }
 
-// MikkTSpace's AssignRecur, iteratively (a vertex can have thousands of triangles around it). Pushing
+// MikkTSpace's AssignRecur from triangle `start`, iteratively (a vertex can have thousands of
+// triangles around it), appending the group's triangles to `triangles`; `stack` is scratch. Pushing
 // the right neighbour before the left one visits triangles in the recursive version's order, which
 // matters for which group a group-with-any triangle's orientation comes from.
-void growGroup(std::vector<Triangle>& tris, int groupIndex, Group& group, std::vector<int> stack) {
+void growGroup(std::vector<Triangle>& tris, int groupIndex, const Group& group, int start, std::vector<uint32_t>& triangles,
+               std::vector<int>& stack) {
+    stack.assign(1, start);
     while (!stack.empty()) {
         const int t = stack.back();
         stack.pop_back();
@@ -79,7 +83,7 @@ void growGroup(std::vector<Triangle>& tris, int groupIndex, Group& group, std::v
         if (i < 0 || tri.group[size_t(i)] >= 0) continue;
         if (tri.groupWithAny && tri.group[0] < 0 && tri.group[1] < 0 && tri.group[2] < 0) tri.orient = group.orient;
         if (tri.orient != group.orient) continue;
-        group.triangles.push_back(uint32_t(t));
+        triangles.push_back(uint32_t(t));
         tri.group[size_t(i)] = groupIndex;
         const int left = tri.neighbor[size_t(i)];
         const int right = tri.neighbor[size_t(i > 0 ? i - 1 : 2)];
@@ -108,6 +112,7 @@ std::vector<glm::vec4> generateTangents(std::span<const glm::vec3> positions, st
     std::vector<glm::vec2> wUv;
     std::vector<int64_t> weldOf(positions.size(), -1);
     std::unordered_map<WeldKey, uint32_t, WeldKeyHash> welded;
+    welded.reserve(positions.size());
     auto weld = [&](uint32_t v) {
         if (weldOf[v] >= 0) return uint32_t(weldOf[v]);
         const glm::vec3& p = positions[v];
@@ -151,23 +156,36 @@ std::vector<glm::vec4> generateTangents(std::span<const glm::vec3> positions, st
         }
     }
 
-    // 3. Neighbours across shared edges of consistently wound, non-degenerate triangles.
-    std::unordered_map<uint64_t, std::vector<std::pair<uint32_t, uint8_t>>> edges;
-    auto edgeKey = [](uint32_t a, uint32_t b) { return uint64_t(a) << 32 | b; };
-    for (size_t t = 0; t < triangleCount; ++t) {
-        if (tris[t].degenerate) continue;
-        for (uint8_t e = 0; e < 3; ++e) edges[edgeKey(tris[t].v[e], tris[t].v[(e + 1) % 3])].push_back({uint32_t(t), e});
+    // 3. Neighbours across shared edges of consistently wound, non-degenerate triangles. The directed
+    // edges a → b, bucketed by a (a counting sort: within a bucket in triangle and edge order, so
+    // an edge's candidates are met in the order they were made).
+    struct Edge {
+        uint32_t to, triangle;
+        uint8_t edge;
+    };
+    std::vector<uint32_t> edgeStart(wPos.size() + 1, 0);
+    for (size_t t = 0; t < triangleCount; ++t)
+        if (!tris[t].degenerate)
+            for (size_t e = 0; e < 3; ++e) ++edgeStart[tris[t].v[e] + 1];
+    for (size_t v = 0; v < wPos.size(); ++v) edgeStart[v + 1] += edgeStart[v];
+    std::vector<Edge> edges(edgeStart.back());
+    {
+        std::vector<uint32_t> fill(edgeStart.begin(), edgeStart.end() - 1);
+        for (size_t t = 0; t < triangleCount; ++t)
+            if (!tris[t].degenerate)
+                for (uint8_t e = 0; e < 3; ++e) edges[fill[tris[t].v[e]]++] = {tris[t].v[(e + 1) % 3], uint32_t(t), e};
     }
     for (size_t t = 0; t < triangleCount; ++t) {
         if (tris[t].degenerate) continue;
         for (size_t e = 0; e < 3; ++e) {
             if (tris[t].neighbor[e] >= 0) continue;
-            auto it = edges.find(edgeKey(tris[t].v[(e + 1) % 3], tris[t].v[e]));
-            if (it == edges.end()) continue;
-            for (auto [other, otherEdge] : it->second) {
-                if (other == t || tris[other].neighbor[otherEdge] >= 0) continue;
-                tris[t].neighbor[e] = int(other);
-                tris[other].neighbor[otherEdge] = int(t);
+            // The opposite edge, v[e + 1] → v[e].
+            const uint32_t from = tris[t].v[(e + 1) % 3], to = tris[t].v[e];
+            for (uint32_t k = edgeStart[from]; k < edgeStart[from + 1]; ++k) {
+                const Edge& other = edges[k];
+                if (other.to != to || other.triangle == t || tris[other.triangle].neighbor[other.edge] >= 0) continue;
+                tris[t].neighbor[e] = int(other.triangle);
+                tris[other.triangle].neighbor[other.edge] = int(t);
                 break;
             }
         }
@@ -175,19 +193,22 @@ std::vector<glm::vec4> generateTangents(std::span<const glm::vec3> positions, st
 
     // 4. Groups: per welded vertex, edge-connected triangles of one orientation (Build4RuleGroups).
     std::vector<Group> groups;
+    std::vector<uint32_t> groupTriangles;
+    std::vector<int> stack;
     for (size_t t = 0; t < triangleCount; ++t) {
         Triangle& tri = tris[t];
         if (tri.degenerate || tri.groupWithAny) continue;
         for (size_t i = 0; i < 3; ++i) {
             if (tri.group[i] >= 0) continue;
             const int groupIndex = int(groups.size());
-            groups.push_back({tri.v[i], tri.orient, {uint32_t(t)}});
+            Group& group = groups.emplace_back(Group{tri.v[i], tri.orient, uint32_t(groupTriangles.size())});
+            groupTriangles.push_back(uint32_t(t));
             tri.group[i] = groupIndex;
-            std::vector<int> stack;
             const int left = tri.neighbor[i], right = tri.neighbor[i > 0 ? i - 1 : 2];
             // The recursive original handles the left neighbour's whole fan before the right one.
-            if (left >= 0) growGroup(tris, groupIndex, groups.back(), {left});
-            if (right >= 0) growGroup(tris, groupIndex, groups.back(), {right});
+            if (left >= 0) growGroup(tris, groupIndex, group, left, groupTriangles, stack);
+            if (right >= 0) growGroup(tris, groupIndex, group, right, groupTriangles, stack);
+            group.end = uint32_t(groupTriangles.size());
         }
     }
 
@@ -197,8 +218,8 @@ std::vector<glm::vec4> generateTangents(std::span<const glm::vec3> positions, st
         const Group& group = groups[g];
         const glm::vec3& n = wNormal[group.vertex];
         glm::vec3 sum(0.0f);
-        for (uint32_t t : group.triangles) {
-            const Triangle& tri = tris[t];
+        for (uint32_t k = group.begin; k < group.end; ++k) {
+            const Triangle& tri = tris[groupTriangles[k]];
             if (tri.groupWithAny) continue;
             const int i = cornerOf(tri, group.vertex);
             const glm::vec3& p0 = wPos[tri.v[size_t(i > 0 ? i - 1 : 2)]];
