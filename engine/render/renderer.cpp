@@ -52,6 +52,11 @@ void Renderer::upload(const RenderSettings& settings) {
     }
     mScene.prepareEnvironment(settings.environment, settings.iblQuality, settings.iblCacheDir);
 }
+void Renderer::prepareEnvironment(const assets::Environment* environment, const ibl::IblQuality& quality,
+                                  const std::filesystem::path& cacheDir) {
+    mScene.prepareEnvironment(environment, quality, cacheDir);
+}
+
 void Renderer::shadersReplaced(const std::vector<std::string>& names) { mScene.shadersReplaced(names); }
 void Renderer::recomputeIbl() { mScene.recomputeIbl(); }
 

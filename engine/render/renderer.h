@@ -114,6 +114,12 @@ public:
     // in that frame). Lets a caller time the upload apart from the frame. Throws UserError as
     // capture() does. Precondition: settings.scene is set.
     void upload(const RenderSettings& settings);
+    // Gives the maps `environment` for frames of `quality` with its IBL cache in `cacheDir`, as
+    // upload() would after its scene: read from the cache, or their precompute set up for the next
+    // frame. Lets a caller do it before it has the scene (while the scene loads); a scene with a
+    // sheen asks for the maps again with the sheen's. Null `environment`: none.
+    void prepareEnvironment(const assets::Environment* environment, const ibl::IblQuality& quality,
+                            const std::filesystem::path& cacheDir);
     // Frees the device memory of the scene last drawn (after waiting for the frames in flight),
     // so that a run over many scenes holds one at a time; the next frame uploads its scene,
     // whatever its address. The environment's maps, the pipelines and the caches stay.

@@ -196,6 +196,38 @@ TEST_F(IblGraphTest, CacheReplacesThePrecomputeOfALaterRunAndACorruptFileIsRecom
     std::filesystem::remove_all(dir);
 }
 
+TEST_F(IblGraphTest, MapsPreparedBeforeTheSceneServeItsUploadAndASheenAsksAgain) {
+    // Renderer::prepareEnvironment before any scene (a render command does it while the file
+    // loads): the upload that follows keeps those maps, and the frame draws what a renderer that
+    // prepared nothing ahead draws; a scene with a sheen gets the maps with the sheen's cube.
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("candela_ibl_prepare_test_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    scene::Scene sheen = assets::makeSphereGrid();
+    for (scene::Material& material : sheen.materials) material.sheenColorFactor = glm::vec3(0.8f, 0.5f, 0.3f);
+    for (const scene::Scene* drawn : {&mScene, &sheen}) {
+        SCOPED_TRACE(drawn == &sheen ? "with a sheen" : "without a sheen");
+        RenderSettings s = settings(&mSky);
+        s.scene = drawn;
+        s.iblCacheDir = dir;
+        std::vector<uint8_t> reference;
+        {
+            Renderer renderer(context());
+            reference = renderer.capture(s).rgba8;  // computes the maps and fills the cache
+        }
+        Renderer renderer(context());
+        renderer.prepareEnvironment(&mSky, s.iblQuality, dir);
+        EXPECT_EQ(renderer.iblMaps().source(), ibl_maps::MapsSource::Cache) << "read before the scene";
+        EXPECT_EQ(renderer.capture(s).rgba8, reference);
+        // No map computed: the environment's from the cache (the sheen's LUT is the renderer's own, made once).
+        for (const std::string& pass : ranPasses(renderer))
+            EXPECT_TRUE(pass.rfind("ibl_", 0) != 0 || pass == "ibl_sheen_lut") << pass;
+        EXPECT_EQ(renderer.iblMaps().lastFrame().maps, ibl_maps::IblFrame::Maps::FromCache);
+        EXPECT_EQ(renderer.iblMaps().lastFrame().sheen, drawn == &sheen);
+    }
+    std::filesystem::remove_all(dir);
+}
+
 TEST_F(IblGraphTest, MapsReplacedBetweenFramesAreTheOnesBound) {
     // The forward and skybox passes resolve the maps through the graph each frame, so replacing
     // the environment and the maps' size between frames must give exactly the image of a renderer
