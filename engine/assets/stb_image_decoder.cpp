@@ -2,27 +2,59 @@
 
 #include "core/process_memory.h"
 
+#include <algorithm>
 #include <cstdlib>
+#include <cstring>
 
 namespace {
 
-// Buffers of at least half a huge page (a 2048² JPEG's chroma planes are 1 MiB) take whole huge
-// pages (core/process_memory.h allocateInHugePages).
+// Every allocation stb_image makes starts 16 bytes into a block whose first 16 bytes say how many
+// bytes were asked and where the block came from: the C heap, or for buffers of at least half a
+// huge page (a 2048² JPEG's chroma planes are 1 MiB) whole huge pages mapped on their own
+// (core/process_memory.h allocateInHugePages), given back to the system when freed.
 constexpr size_t kHugePage = size_t(2) << 20;
+struct Prefix {
+    size_t bytes;
+    size_t hugePages;
+};
+static_assert(sizeof(Prefix) == 16);
 
-void* decoderMalloc(size_t bytes) { return bytes < kHugePage / 2 ? std::malloc(bytes) : candela::allocateInHugePages(bytes); }
+void* decoderMalloc(size_t bytes) {
+    const bool huge = bytes >= kHugePage / 2;
+    void* block = huge ? candela::allocateInHugePages(bytes + sizeof(Prefix)) : std::malloc(bytes + sizeof(Prefix));
+    if (!block) return nullptr;
+    *static_cast<Prefix*>(block) = {bytes, huge ? 1u : 0u};
+    return static_cast<char*>(block) + sizeof(Prefix);
+}
+
+void decoderFree(void* data) {
+    if (!data) return;
+    Prefix* prefix = reinterpret_cast<Prefix*>(static_cast<char*>(data) - sizeof(Prefix));
+    if (prefix->hugePages) candela::freeHugePages(prefix);
+    else std::free(prefix);
+}
 
 void* decoderRealloc(void* data, size_t bytes) {
-    void* grown = std::realloc(data, bytes);
-    if (grown && bytes >= kHugePage) candela::adviseHugePages(grown, bytes);
-    return grown;
+    if (!data) return decoderMalloc(bytes);
+    Prefix* prefix = reinterpret_cast<Prefix*>(static_cast<char*>(data) - sizeof(Prefix));
+    if (!prefix->hugePages && bytes < kHugePage / 2) {
+        void* block = std::realloc(prefix, bytes + sizeof(Prefix));
+        if (!block) return nullptr;
+        static_cast<Prefix*>(block)->bytes = bytes;
+        return static_cast<char*>(block) + sizeof(Prefix);
+    }
+    void* moved = decoderMalloc(bytes);
+    if (!moved) return nullptr;
+    std::memcpy(moved, data, std::min(bytes, prefix->bytes));
+    decoderFree(data);
+    return moved;
 }
 
 }  // namespace
 
 #define STBI_MALLOC(bytes) decoderMalloc(bytes)
 #define STBI_REALLOC(data, bytes) decoderRealloc(data, bytes)
-#define STBI_FREE(data) std::free(data)
+#define STBI_FREE(data) decoderFree(data)
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
 #include <stb_image.h>

@@ -61,10 +61,34 @@ void adviseHugePages(void* data, size_t bytes) {
 void* allocateInHugePages(size_t bytes) {
     constexpr size_t kHugePage = size_t(2) << 20;
     const size_t rounded = (std::max<size_t>(bytes, 1) + kHugePage - 1) / kHugePage * kHugePage;
-    void* data = nullptr;
-    if (posix_memalign(&data, kHugePage, rounded) != 0) return nullptr;
-    adviseHugePages(data, rounded);
+#if defined(__linux__)
+    // A mapping with one 4 KiB page before the buffer, whose last word holds the buffer's size for
+    // freeHugePages; the slack mapped to align the buffer is given back at once.
+    constexpr size_t kPage = 4096;
+    const size_t reserved = kPage + rounded + kHugePage;
+    void* mapped = mmap(nullptr, reserved, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (mapped == MAP_FAILED) return nullptr;
+    char* base = static_cast<char*>(mapped);
+    char* data = reinterpret_cast<char*>((reinterpret_cast<uintptr_t>(base) + kPage + kHugePage - 1) & ~uintptr_t(kHugePage - 1));
+    char* start = data - kPage;
+    if (start > base) munmap(base, size_t(start - base));
+    if (base + reserved > data + rounded) munmap(data + rounded, size_t(base + reserved - (data + rounded)));
+    madvise(data, rounded, MADV_HUGEPAGE);  // refused without THP: no matter
+    reinterpret_cast<size_t*>(data)[-1] = rounded;
     return data;
+#else
+    return std::aligned_alloc(kHugePage, rounded);
+#endif
+}
+
+void freeHugePages(void* data) {
+    if (!data) return;
+#if defined(__linux__)
+    constexpr size_t kPage = 4096;
+    munmap(static_cast<char*>(data) - kPage, kPage + static_cast<size_t*>(data)[-1]);
+#else
+    std::free(data);
+#endif
 }
 
 double processAgeMs() {

@@ -72,7 +72,7 @@ void writeNormalMapMipChain(const scene::Image& image, std::span<const TexelLeve
     // two buffers taking turns: the level written and the one above it, each written before it is
     // read. In huge pages (a 2048² map's mip 1 is 16 MiB of means).
     struct Free {
-        void operator()(Floats4* p) const { std::free(p); }
+        void operator()(Floats4* p) const { freeHugePages(p); }
     };
     std::array<std::unique_ptr<Floats4[], Free>, 2> means;
     for (size_t i = 0; i < 2 && i + 1 < levels.size(); ++i) {
