@@ -37,7 +37,7 @@ void decoderFree(void* data) {
 void* decoderRealloc(void* data, size_t bytes) {
     if (!data) return decoderMalloc(bytes);
     Prefix* prefix = reinterpret_cast<Prefix*>(static_cast<char*>(data) - sizeof(Prefix));
-    if (!prefix->hugePages && bytes < kHugePage / 2) {
+    if (!prefix->hugePages && !(bytes >= kHugePage / 2)) {
         void* block = std::realloc(prefix, bytes + sizeof(Prefix));
         if (!block) return nullptr;
         static_cast<Prefix*>(block)->bytes = bytes;

@@ -58,9 +58,34 @@ void adviseHugePages(void* data, size_t bytes) {
 #endif
 }
 
+namespace {
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
+#if defined(__linux__)
+constexpr bool kMappedApart = !kAddressSanitizer;
+#else
+constexpr bool kMappedApart = false;
+#endif
+
+}  // namespace
+
+bool hugePagesMappedApart() { return kMappedApart; }
+
 void* allocateInHugePages(size_t bytes) {
     constexpr size_t kHugePage = size_t(2) << 20;
     const size_t rounded = (std::max<size_t>(bytes, 1) + kHugePage - 1) / kHugePage * kHugePage;
+    if (!kMappedApart) return std::aligned_alloc(kHugePage, rounded);
 #if defined(__linux__)
     // A mapping with one 4 KiB page before the buffer, whose last word holds the buffer's size for
     // freeHugePages; the slack mapped to align the buffer is given back at once.
@@ -77,17 +102,16 @@ void* allocateInHugePages(size_t bytes) {
     reinterpret_cast<size_t*>(data)[-1] = rounded;
     return data;
 #else
-    return std::aligned_alloc(kHugePage, rounded);
+    return nullptr;
 #endif
 }
 
 void freeHugePages(void* data) {
     if (!data) return;
+    if (!kMappedApart) return std::free(data);
 #if defined(__linux__)
     constexpr size_t kPage = 4096;
     munmap(static_cast<char*>(data) - kPage, kPage + static_cast<size_t*>(data)[-1]);
-#else
-    std::free(data);
 #endif
 }
 

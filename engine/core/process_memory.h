@@ -28,12 +28,16 @@ void returnFreedHeapMemory();
 void adviseHugePages(void* data, size_t bytes);
 // Uninitialized memory for a large buffer its user fills: `bytes` rounded up to whole 2 MiB pages,
 // aligned to 2 MiB and advised as above, so that all of it faults 2 MiB at a time (a huge page is
-// cleared for a fraction of the cost of 512 faults of 4 KiB). Linux: mapped on its own, so that
-// freeing it returns it to the system at once (the C heap would keep it, huge pages and all). Null
-// when the allocation fails. Worth it from about 1 MiB (half a huge page) up.
+// cleared for a fraction of the cost of 512 faults of 4 KiB). Where hugePagesMappedApart(), mapped
+// on its own, so that freeing it returns it to the system at once (the C heap would keep it, huge
+// pages and all); elsewhere from the C heap. Null when the allocation fails. Worth it from about
+// 1 MiB (half a huge page) up.
 void* allocateInHugePages(size_t bytes);
 // Frees what allocateInHugePages returned; null: nothing.
 void freeHugePages(void* data);
+// Whether allocateInHugePages maps its buffers apart: on Linux, but not under AddressSanitizer,
+// which checks every byte's use of heap blocks only.
+bool hugePagesMappedApart();
 // Milliseconds since the process was created (Linux: /proc/self/stat's start time, in clock ticks
 // of 10 ms, against CLOCK_BOOTTIME); negative where not available.
 double processAgeMs();
