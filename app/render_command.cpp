@@ -79,6 +79,9 @@ struct Run {
     // The report of the scene being drawn (null between scenes): an image of it that fails to be
     // written stops it.
     const SceneReport* rendering = nullptr;
+    // The pipelines created before the first scene's environment maps were prepared ahead of it:
+    // those the maps created count with that scene (unset: from the scene's start).
+    std::optional<vk::Context::PipelineCreation> firstScenePipelinesFrom;
 };
 
 // printf into a std::string.
@@ -238,7 +241,8 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
     log::Capture capture;  // what the renderer logs from here on belongs to this scene
     const uint32_t precomputesBefore = run.session.renderer().precomputeCount();
     const double lodBefore = scene.report.geometry.lodMilliseconds;
-    const vk::Context::PipelineCreation pipelinesBefore = run.session.context().pipelineCreation();
+    const vk::Context::PipelineCreation pipelinesBefore = run.firstScenePipelinesFrom.value_or(run.session.context().pipelineCreation());
+    run.firstScenePipelinesFrom.reset();
     warnAnimationConflicts(options, scene);  // once per scene, whatever the variants
 
     std::vector<std::string> variants;  // "": the default materials
@@ -527,13 +531,20 @@ int runRender(const RenderOptions& options) {
     const double deviceMs = msSince(deviceStart);
     // One scene: its environment's maps are read from the IBL cache (or their precompute set up)
     // while the file still loads, as its upload would after it (the upload asks again only for a
-    // scene with a sheen). Timed with the environment.
+    // scene with a sheen). Timed with the environment. A failure here is left to the upload, which
+    // asks again and reports it as a scene's failure is reported (a bad file first, the report
+    // written).
     double environmentMapsMs = 0.0;
+    std::optional<vk::Context::PipelineCreation> pipelinesBeforeMaps;
     if (single && !pending.empty() && !deviceError && session.environment()) {
+        pipelinesBeforeMaps = session.context().pipelineCreation();
         const auto mapsStart = Clock::now();
         RenderSettings flags;
         applyRenderFlags(options, flags);
-        session.renderer().prepareEnvironment(session.environment(), flags.iblQuality, flags.iblCacheDir);
+        try {
+            session.renderer().prepareEnvironment(session.environment(), flags.iblQuality, flags.iblCacheDir);
+        } catch (...) {
+        }
         environmentMapsMs = msSince(mapsStart);
     }
     std::optional<LoadedScene> first;
@@ -546,6 +557,7 @@ int runRender(const RenderOptions& options) {
         if (deviceError) std::rethrow_exception(deviceError);
     }
     Run run{options, session, format, !single, sequence};
+    run.firstScenePipelinesFrom = pipelinesBeforeMaps;
     const vk::Context& context = session.context();
     const assets::Environment* environment = session.environment();
     RunReport report{.version = versionText(),

@@ -5,47 +5,54 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
+#include <unordered_map>
 
 namespace {
 
-// Every allocation stb_image makes starts 16 bytes into a block whose first 16 bytes say how many
-// bytes were asked and where the block came from: the C heap, or for buffers of at least half a
-// huge page (a 2048² JPEG's chroma planes are 1 MiB) whole huge pages mapped on their own
-// (core/process_memory.h allocateInHugePages), given back to the system when freed.
-constexpr size_t kHugePage = size_t(2) << 20;
-struct Prefix {
-    size_t bytes;
-    size_t hugePages;
-};
-static_assert(sizeof(Prefix) == 16);
+// stb_image's blocks of at least half a huge page (a 2048² JPEG's output, its 1 MiB chroma planes)
+// come from allocateInHugePages (core/process_memory.h: whole huge pages, given back when freed),
+// and are remembered here with their sizes; the rest from the C heap.
+std::mutex gHugeBlocksMutex;
+std::unordered_map<void*, size_t> gHugeBlocks;
 
 void* decoderMalloc(size_t bytes) {
-    const bool huge = bytes >= kHugePage / 2;
-    void* block = huge ? candela::allocateInHugePages(bytes + sizeof(Prefix)) : std::malloc(bytes + sizeof(Prefix));
-    if (!block) return nullptr;
-    *static_cast<Prefix*>(block) = {bytes, huge ? 1u : 0u};
-    return static_cast<char*>(block) + sizeof(Prefix);
+    if (bytes < candela::kHugePagesWorthBytes) return std::malloc(bytes);
+    void* data = candela::allocateInHugePages(bytes);
+    if (!data) return nullptr;
+    try {
+        const std::lock_guard lock(gHugeBlocksMutex);
+        gHugeBlocks.emplace(data, bytes);
+    } catch (...) {
+        candela::freeHugePages(data);
+        return nullptr;
+    }
+    return data;
+}
+
+// The size of `data` when it is a huge block (forgotten with `forget`), else 0.
+size_t hugeBlockBytes(void* data, bool forget) {
+    const std::lock_guard lock(gHugeBlocksMutex);
+    const auto it = gHugeBlocks.find(data);
+    if (it == gHugeBlocks.end()) return 0;
+    const size_t bytes = it->second;
+    if (forget) gHugeBlocks.erase(it);
+    return bytes;
 }
 
 void decoderFree(void* data) {
     if (!data) return;
-    Prefix* prefix = reinterpret_cast<Prefix*>(static_cast<char*>(data) - sizeof(Prefix));
-    if (prefix->hugePages) candela::freeHugePages(prefix);
-    else std::free(prefix);
+    if (hugeBlockBytes(data, true)) candela::freeHugePages(data);
+    else std::free(data);
 }
 
+// A heap block stays in the heap (realloc); a huge block moves to a new block of `bytes`.
 void* decoderRealloc(void* data, size_t bytes) {
-    if (!data) return decoderMalloc(bytes);
-    Prefix* prefix = reinterpret_cast<Prefix*>(static_cast<char*>(data) - sizeof(Prefix));
-    if (!prefix->hugePages && !(bytes >= kHugePage / 2)) {
-        void* block = std::realloc(prefix, bytes + sizeof(Prefix));
-        if (!block) return nullptr;
-        static_cast<Prefix*>(block)->bytes = bytes;
-        return static_cast<char*>(block) + sizeof(Prefix);
-    }
+    const size_t oldBytes = data ? hugeBlockBytes(data, false) : 0;
+    if (oldBytes == 0) return std::realloc(data, bytes);
     void* moved = decoderMalloc(bytes);
     if (!moved) return nullptr;
-    std::memcpy(moved, data, std::min(bytes, prefix->bytes));
+    std::memcpy(moved, data, std::min(bytes, oldBytes));
     decoderFree(data);
     return moved;
 }

@@ -1,10 +1,10 @@
 #pragma once
 // Internal to the glTF loader: stb_image (Debian's header, the same version as its libstb) compiled
 // into this library with its own allocator, so that the large buffers it decodes into (a 2048²
-// JPEG's output and component planes: some 22 MiB) are advised as transparent huge pages before
-// their first touch (core/process_memory.h adviseHugePages): 4 KiB page faults otherwise cost a
-// CPU device's single render more than the copies themselves. The functions are stb_image's,
-// renamed; its implementation is private to stb_image_decoder.cpp.
+// JPEG's output and component planes: some 22 MiB) are whole transparent huge pages, mapped for
+// them and given back when freed (core/process_memory.h allocateInHugePages): 4 KiB page faults
+// otherwise cost a CPU device's single render more than the copies themselves. The functions are
+// stb_image's, renamed; its implementation is private to stb_image_decoder.cpp.
 
 #include <cstdint>
 #include <memory>

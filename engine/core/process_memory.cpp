@@ -6,6 +6,7 @@
 #include <ctime>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <malloc.h>
@@ -49,7 +50,7 @@ void returnFreedHeapMemory() {
 
 void adviseHugePages(void* data, size_t bytes) {
 #if defined(__linux__)
-    constexpr uintptr_t kHugePage = uintptr_t(2) << 20;
+    constexpr uintptr_t kHugePage = kHugePageBytes;
     const uintptr_t begin = (reinterpret_cast<uintptr_t>(data) + kHugePage - 1) & ~(kHugePage - 1);
     const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) & ~(kHugePage - 1);
     if (data && end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);  // refused without THP: no matter
@@ -83,13 +84,13 @@ constexpr bool kMappedApart = false;
 bool hugePagesMappedApart() { return kMappedApart; }
 
 void* allocateInHugePages(size_t bytes) {
-    constexpr size_t kHugePage = size_t(2) << 20;
-    const size_t rounded = (std::max<size_t>(bytes, 1) + kHugePage - 1) / kHugePage * kHugePage;
-    if (!kMappedApart) return std::aligned_alloc(kHugePage, rounded);
+    constexpr size_t kHugePage = kHugePageBytes, kPage = 4096;
+    if (bytes > std::numeric_limits<size_t>::max() / 2) return nullptr;
+    if (!kMappedApart) return std::malloc(std::max<size_t>(bytes, 1));
 #if defined(__linux__)
     // A mapping with one 4 KiB page before the buffer, whose last word holds the buffer's size for
     // freeHugePages; the slack mapped to align the buffer is given back at once.
-    constexpr size_t kPage = 4096;
+    const size_t rounded = (std::max<size_t>(bytes, 1) + kHugePage - 1) / kHugePage * kHugePage;
     const size_t reserved = kPage + rounded + kHugePage;
     void* mapped = mmap(nullptr, reserved, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (mapped == MAP_FAILED) return nullptr;
@@ -108,7 +109,10 @@ void* allocateInHugePages(size_t bytes) {
 
 void freeHugePages(void* data) {
     if (!data) return;
-    if (!kMappedApart) return std::free(data);
+    if (!kMappedApart) {
+        std::free(data);
+        return;
+    }
 #if defined(__linux__)
     constexpr size_t kPage = 4096;
     munmap(static_cast<char*>(data) - kPage, kPage + static_cast<size_t*>(data)[-1]);

@@ -6,10 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
-#include <memory>
-#include <new>
 
 namespace candela::geometry {
 
@@ -70,21 +67,15 @@ void writeNormalMapMipChain(const scene::Image& image, std::span<const TexelLeve
     };
     // The mean unit normal per texel of the level above (from mip 1 on; mip 0's is unitNormal), in
     // two buffers taking turns: the level written and the one above it, each written before it is
-    // read. In huge pages (a 2048² map's mip 1 is 16 MiB of means).
-    struct Free {
-        void operator()(Floats4* p) const { freeHugePages(p); }
-    };
-    std::array<std::unique_ptr<Floats4[], Free>, 2> means;
-    for (size_t i = 0; i < 2 && i + 1 < levels.size(); ++i) {
-        means[i].reset(static_cast<Floats4*>(allocateInHugePages(size_t(levels[i + 1].width) * levels[i + 1].height * sizeof(Floats4))));
-        if (!means[i]) throw std::bad_alloc();
-    }
+    // read. In huge pages where they pay (a 2048² map's mip 1 is 16 MiB of means).
+    const auto texels = [&](size_t level) { return level < levels.size() ? size_t(levels[level].width) * levels[level].height : 0; };
+    const std::array<ScratchBuffer<Floats4>, 2> means{ScratchBuffer<Floats4>(texels(1)), ScratchBuffer<Floats4>(texels(2))};
     uint32_t width = image.width, height = image.height;
     for (size_t level = 1; level < levels.size(); ++level) {
         const TexelLevel& mip = levels[level];
         const uint32_t w = mip.width, h = mip.height;
-        const Floats4* mean = means[level % 2].get();  // the level above's (unused for mip 1)
-        Floats4* next = means[(level + 1) % 2].get();
+        const Floats4* mean = means[level % 2].data();  // the level above's (unused for mip 1)
+        Floats4* next = means[(level + 1) % 2].data();
         // Each row's texels depend on the level above alone: the result does not depend on the threads.
         parallelForRows(w, h, [&](uint32_t y) {
             uint8_t* out = mip.row(y);

@@ -38,17 +38,21 @@ void FrameBuilder::prepareAhead(const passes::MaterialKeys& keys, const RenderSe
 std::optional<passes::FrameVariant> FrameBuilder::firstFrameVariant(const RenderSettings& settings) const {
     const uint32_t samples = msaa(settings.msaa).samples;
     if (samples > 1) return std::nullopt;
-    // As makeFrameInputs fills it from addIbl's inputs: the maps have an environment when the
-    // settings give one; their irradiance is the quality's.
-    const bool ibl = settings.environment != nullptr;
-    return passes::FrameVariant{.model = settings.shading,
-                                .ibl = ibl,
-                                .irradianceSh = !ibl || settings.iblQuality.irradiance == ibl::IrradianceMode::Sh9,
-                                .multiscatter = !ibl || settings.ibl.multiscatter,
-                                .referenceSamples = ibl ? settings.ibl.referenceSamples : 0,
-                                .debugView = settings.debugView,
-                                .specularAa = settings.shadingOptions.specularAntiAliasing,
-                                .samples = samples};
+    // A frame asked for the visibility path (or the device's default) may not draw on the forward one.
+    if (settings.shadingPath == options::ShadingPath::Visibility ||
+        (settings.shadingPath == options::ShadingPath::Auto && defaultShadingPath(mContext).first == options::ShadingPath::Visibility))
+        return std::nullopt;
+    // As addIbl gives them: the maps have an environment when the settings give one, with the
+    // quality's irradiance.
+    return passes::frameVariantOf({.model = settings.shading,
+                                   .ibl = settings.environment != nullptr,
+                                   .irradianceSh = settings.iblQuality.irradiance == ibl::IrradianceMode::Sh9,
+                                   .multiscatter = settings.ibl.multiscatter,
+                                   .referenceSamples = settings.ibl.referenceSamples,
+                                   .debugView = settings.debugView,
+                                   .specularAa = settings.shadingOptions.specularAntiAliasing,
+                                   .samples = samples},
+                                  false, 0);
 }
 
 void FrameBuilder::sceneUploaded() {

@@ -46,7 +46,8 @@ public:
     static std::vector<scene::Light> lightsOf(const SceneChoice& choice);
     // Gives the maps `environment` at `quality` (the sheen cube when `quality` asks for it or a
     // material has a sheen; maps with it also serve scenes without) unless they have it already.
-    // Precondition: a scene is uploaded.
+    // Before any scene (Renderer::prepareEnvironment), no material has a sheen: a scene with one
+    // asks again.
     void prepareEnvironment(const assets::Environment* environment, ibl::IblQuality quality,
                             const std::filesystem::path& cacheDir);
     // Waits for the GPU and gives the maps this environment and quality (see IblMaps::setEnvironment);

@@ -283,6 +283,14 @@ TEST_F(GpuTest, AFirstScenesPipelinesCompileWhileItUploadsForTheFrameItsSettings
         EXPECT_EQ(context().pipelineCreation().count - before, withoutAhead) << "the variants built ahead were the frame's";
         EXPECT_EQ(frame.rgba8, reference.rgba8);
     }
+    // With MSAA the frame plan chooses alpha to coverage: nothing is guessed, nothing queued.
+    RenderSettings msaa = cases[0];
+    msaa.msaa = 4;
+    Renderer renderer(context());
+    const uint64_t before = context().pipelineCreation().count;
+    renderer.upload(msaa);
+    renderer.finishPipelineBuilds();
+    EXPECT_EQ(context().pipelineCreation().count, before);
 }
 
 TEST_F(GpuTest, RendererDestroyedWhileBackgroundBuildsRunLeaksNothing) {

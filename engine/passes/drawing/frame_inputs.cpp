@@ -10,19 +10,32 @@ uint32_t lightTypeBits(std::span<const shading::LightData> lights) {
     return types;
 }
 
+FrameVariant frameVariantOf(const FrameVariantSource& source, bool lights, uint32_t lightTypes) {
+    return {.model = source.model,
+            .lights = lights,
+            .lightTypes = lightTypes,
+            .ibl = source.ibl,
+            .irradianceSh = !source.ibl || source.irradianceSh,
+            .multiscatter = !source.ibl || source.multiscatter,
+            .referenceSamples = source.ibl ? source.referenceSamples : 0,
+            .debugView = source.debugView,
+            .specularAa = source.specularAa,
+            .samples = source.samples,
+            .alphaToCoverage = source.samples > 1 && source.alphaToCoverage};
+}
+
 FrameInputs makeFrameInputs(const FrameInputsDesc& desc, const gpu_scene::GpuScene& scene) {
     FrameInputs out;
-    out.variant = {.model = desc.model,
-                   .lights = scene.lightCount() > 0,
-                   .lightTypes = lightTypeBits(scene.lights()),
-                   .ibl = desc.ibl != nullptr,
-                   .irradianceSh = !desc.ibl || desc.ibl->irradianceSh,
-                   .multiscatter = !desc.ibl || desc.ibl->multiscatter,
-                   .referenceSamples = desc.ibl ? desc.ibl->referenceSamples : 0,
-                   .debugView = desc.debugView,
-                   .specularAa = desc.shading.specularAntiAliasing,
-                   .samples = desc.samples,
-                   .alphaToCoverage = desc.samples > 1 && desc.alphaToCoverage};
+    out.variant = frameVariantOf({.model = desc.model,
+                                  .ibl = desc.ibl != nullptr,
+                                  .irradianceSh = desc.ibl && desc.ibl->irradianceSh,
+                                  .multiscatter = desc.ibl && desc.ibl->multiscatter,
+                                  .referenceSamples = desc.ibl ? desc.ibl->referenceSamples : 0,
+                                  .debugView = desc.debugView,
+                                  .specularAa = desc.shading.specularAntiAliasing,
+                                  .samples = desc.samples,
+                                  .alphaToCoverage = desc.alphaToCoverage},
+                                 scene.lightCount() > 0, lightTypeBits(scene.lights()));
     out.push.viewProjection = desc.view.viewProjection;
     out.push.eye = glm::vec4(desc.view.eye, 1.0f);
     out.push.counts = glm::uvec4(scene.lightCount(), 0, 0, 0);

@@ -92,6 +92,23 @@ struct FrameInputs {
 // count and the IBL parameters (the user's edits are applied by the caller).
 FrameInputs makeFrameInputs(const FrameInputsDesc& desc, const gpu_scene::GpuScene& scene);
 
+// What selects a frame's forward variant bits besides its lights: makeFrameInputs reads them from
+// the frame's inputs, FrameBuilder::firstFrameVariant from the settings before a first frame.
+struct FrameVariantSource {
+    options::ShadingModel model = options::ShadingModel::Pbr;
+    bool ibl = false;               // an environment's maps light the frame
+    bool irradianceSh = true;       // with them: their irradiance is SH9
+    bool multiscatter = true;       // with them: multiple-scattering compensation
+    uint32_t referenceSamples = 0;  // with them: the ground truth's samples
+    options::DebugView debugView = options::DebugView::None;
+    bool specularAa = false;
+    uint32_t samples = 1;
+    bool alphaToCoverage = false;  // asked by the frame plan (used with samples > 1 only)
+};
+// The variant bits `source` gives a frame lit by `lights` of types `lightTypes` (bit 1 <<
+// CANDELA_LIGHT_* of each): the IBL bits only with an environment, alpha to coverage only with MSAA.
+FrameVariant frameVariantOf(const FrameVariantSource& source, bool lights, uint32_t lightTypes);
+
 // FrameVariant::lightTypes of a frame drawing `lights`: bit 1 << CANDELA_LIGHT_* of each.
 uint32_t lightTypeBits(std::span<const shading::LightData> lights);
 

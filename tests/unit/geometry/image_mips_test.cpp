@@ -84,12 +84,12 @@ TEST(ImageMips, ChainsWrittenIntoPaddedRowsMatchThePackedOnes) {
     }
 }
 
-// The chains' exact texels, pinned: FNV-1a 64 of every level of a seeded 61 × 37 image (odd sizes:
-// the filtered path too), as the chains made them before they were rewritten for speed (the values
-// come from that code). A change that moves a texel changes images: look at them, then update these.
-// The hashes of each chain as the code written before each of its rewrites made it: 61 × 37 starts
-// with odd sizes (filtered levels, then halved ones); 142 × 72 halves exactly down to 71 × 36, with
-// row lengths that are not a multiple of the halving's step of several texels.
+// The chains' exact texels, pinned: FNV-1a 64 of every level of seeded images, as the chains made
+// them before they were rewritten for speed (the values come from that code: 61 × 37 from the code
+// before the first rewrite, 142 × 72 from the code before the vectors). 61 × 37 starts with odd sizes
+// (filtered levels, then halved ones); 142 × 72 halves exactly down to 71 × 36, rows whose length is
+// not a multiple of the vectors' four texels. A change that moves a texel changes images: look at
+// them, then update these.
 TEST(ImageMips, ChainsOfASeededImageKeepTheirTexels) {
     struct Pinned {
         uint32_t width, height;
