@@ -9,6 +9,7 @@
 #include "candela/device.h"
 #include "failures.h"
 #include "image_writer.h"
+#include "render_outputs.h"
 #include "render_page.h"
 #include "render_report.h"
 #include "scene_batch.h"
@@ -128,69 +129,6 @@ void failScene(Run& run, SceneReport& r, const std::exception_ptr& error, Progre
     progress.clear();
     if (run.batch) log::error(r.error);
 }
-
-// The files scene `input` writes for `variantName` ("default": the default materials): one, or
-// one per frame of a sequence.
-// The API's outputs of --outputs.
-std::vector<candela::Output> apiOutputs(const RenderOptions& options) {
-    std::vector<candela::Output> out;
-    for (candela::Output o : candela::allOutputs())
-        if (options.outputs.has(options::PixelOutput(uint32_t(o)))) out.push_back(o);
-    return out;
-}
-
-// The files one image at `path` is written as: the colour image and the other --outputs
-// (candela::outputFiles).
-std::vector<std::string> filesOf(const RenderOptions& options, const std::string& path) {
-    return candela::outputFiles(path, apiOutputs(options), candela::OutputFileFormat(uint32_t(options.outputsFormat)));
-}
-
-std::vector<std::string> outputsOf(const RenderOptions& options, const SceneInput& input, const std::string& variantName) {
-    if (!options.sequence()) return {expandOutPattern(options.out, {input.name, input.path, variantName, std::nullopt})};
-    std::vector<std::string> out;
-    for (uint32_t i = 0; i < options.frameCount(); ++i)
-        out.push_back(expandOutPattern(options.out, {input.name, input.path, variantName, i}));
-    return out;
-}
-
-// The file of a sequence's cameras, in the folder of its first frame: transforms.json when that
-// folder holds one sequence — the run has one scene or the --out pattern's folder has {name} or
-// {path}, and one variant or {variant} in the folder — else NAME.transforms.json (NAME-VARIANT
-// with --variant all), beside the other scenes' frames.
-fs::path transformsFileOf(const RenderOptions& options, const SceneInput& input, const std::string& variantName,
-                          bool oneScene) {
-    const std::string folderPattern = fs::path(options.out).parent_path().string();
-    const bool sceneFolder = oneScene || folderPattern.find("{name}") != std::string::npos ||
-                             folderPattern.find("{path}") != std::string::npos;
-    const bool variantFolder = options.variant != "all" || folderPattern.find("{variant}") != std::string::npos;
-    const fs::path folder = fs::path(expandOutPattern(options.out, {input.name, input.path, variantName, 0u})).parent_path();
-    if (sceneFolder && variantFolder) return folder / "transforms.json";
-    return folder / (input.name + (options.variant == "all" ? "-" + variantName : "") + ".transforms.json");
-}
-
-// --resume: whether every file scene `input` writes for `variantName` is there and a whole image,
-// and for a sequence its transforms file a JSON document with a camera for each; removes what a
-// killed writer left beside each (its temporary files) either way.
-bool outputsComplete(const RenderOptions& options, const SceneInput& input, const std::string& variantName, bool oneScene) {
-    const std::vector<std::string> outputs = outputsOf(options, input, variantName);
-    bool complete = true;
-    for (const std::string& out : outputs)
-        for (const std::string& file : filesOf(options, out)) {
-            assets::removeStaleTemporaries(file);
-            complete = complete && assets::imageFileComplete(file);
-        }
-    if (options.sequence()) {
-        const fs::path transforms = transformsFileOf(options, input, variantName, oneScene);
-        assets::removeStaleTemporaries(transforms);
-        std::ifstream in(transforms);
-        const nlohmann::json json = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-        complete = complete && json.is_object() && json.contains("frames") && json["frames"].size() == outputs.size();
-    }
-    return complete;
-}
-
-// The name of `variant` in --out patterns: "default" for the default materials ("").
-std::string variantNameOf(const std::string& variant) { return variant.empty() ? "default" : variant; }
 
 // What an output shows, in the report and the page: "render", the variant, "frame 3", "blue, frame 3".
 std::string outputLabel(const std::string& variant, std::optional<uint32_t> frame) {
@@ -529,22 +467,14 @@ int runRender(const RenderOptions& options) {
         deviceError = std::current_exception();
     }
     const double deviceMs = msSince(deviceStart);
-    // One scene: its environment's maps are read from the IBL cache (or their precompute set up)
-    // while the file still loads, as its upload would after it (the upload asks again only for a
-    // scene with a sheen). Timed with the environment. A failure here is left to the upload, which
-    // asks again and reports it as a scene's failure is reported (a bad file first, the report
-    // written).
+    // One scene: its environment's maps are read while the file still loads (the upload asks
+    // again only for a scene with a sheen), timed with the environment.
     double environmentMapsMs = 0.0;
     std::optional<vk::Context::PipelineCreation> pipelinesBeforeMaps;
     if (single && !pending.empty() && !deviceError && session.environment()) {
         pipelinesBeforeMaps = session.context().pipelineCreation();
         const auto mapsStart = Clock::now();
-        RenderSettings flags;
-        applyRenderFlags(options, flags);
-        try {
-            session.renderer().prepareEnvironment(session.environment(), flags.iblQuality, flags.iblCacheDir);
-        } catch (...) {
-        }
+        session.prepareEnvironmentMaps(options);
         environmentMapsMs = msSince(mapsStart);
     }
     std::optional<LoadedScene> first;

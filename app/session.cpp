@@ -28,6 +28,15 @@ Session::Session(const CommonOptions& common, const EnvironmentChoice& env) : de
 
 void Session::start(const RendererOptions& options) { device_.emplace(Access::device(desc_, options)); }
 
+void Session::prepareEnvironmentMaps(const SceneRenderOptions& options) {
+    RenderSettings flags;
+    applyRenderFlags(options, flags);
+    try {
+        renderer().prepareEnvironment(environment(), flags.iblQuality, flags.iblCacheDir);
+    } catch (...) {
+    }
+}
+
 vk::Context& Session::context() { return Access::impl(*device_).context; }
 Renderer& Session::renderer() { return Access::impl(*device_).renderer; }
 

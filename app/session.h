@@ -46,6 +46,11 @@ public:
 
     // The environment; null for --env none.
     const assets::Environment* environment() const;
+    // Gives the renderer the environment's maps for frames of `options`, as a render's upload would
+    // (read from the IBL cache, or their precompute set up), before it has the scene: a single
+    // render does this while its file loads. A failure is left to the upload, which asks again and
+    // reports it as a scene's failure. Precondition: started.
+    void prepareEnvironmentMaps(const SceneRenderOptions& options);
     const candela::Environment* apiEnvironment() const { return environment_ ? &*environment_ : nullptr; }
     // Hands the environment over (to the viewer, which owns what it draws); null for --env none.
     std::unique_ptr<assets::Environment> takeEnvironment();

@@ -50,7 +50,7 @@ void Renderer::upload(const RenderSettings& settings) {
         mScene.prepareScene(choice, std::move(keys));
         mBuilder.sceneUploaded();
     }
-    mScene.prepareEnvironment(settings.environment, settings.iblQuality, settings.iblCacheDir);
+    prepareEnvironment(settings.environment, settings.iblQuality, settings.iblCacheDir);
 }
 void Renderer::prepareEnvironment(const assets::Environment* environment, const ibl::IblQuality& quality,
                                   const std::filesystem::path& cacheDir) {
