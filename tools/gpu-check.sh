@@ -8,21 +8,25 @@
 #      every render kept, compared with the approved lavapipe images by ꟻLIP (`candela diff`)
 #   3. 1280x720 renders of the default scene and DamagedHelmet on both paths, under validation
 #   4. `candela bench` of DamagedHelmet and the 10x10 grid (as ratios to the calibration pass)
-#   5. the rest of the GPU test binary, if the tarball has it (every test under validation)
+#   5. time to image: `candela bench --cold` (fresh processes, from process start to the PNG written,
+#      the first with the caches as the fresh machine has them) of the default scene and DamagedHelmet,
+#      a `render --verbose` breakdown of the helmet, and the assets' models at 512x512 in one run
+#   6. the rest of the GPU test binary, if the tarball has it (every test under validation)
 # Steps 2 and 5 need the GPU test binary; without the validation layer in the tarball (the plain
 # one) every step runs without validation, which the report says.
 #   ./gpu-check.sh [--assets DIR] [--out DIR] [--tests-timeout SECONDS]
 #                  [--golden-filter GTEST_PATTERN] [--tests-filter GTEST_PATTERN] [--bench-frames N]
+#                  [--cold-runs N]
 # --assets: the shared sample assets (models/, environments/); without them the golden cases of
-# sample models are skipped and the helmet is not rendered or benched. The filters and the frame
-# count narrow the run (its own test, tests/cli/gpu_check_test.sh, runs one golden case and one
+# sample models are skipped, the helmet is not rendered or benched and no batch runs. The filters,
+# the frame count and the cold runs narrow the run (its own test, tests/cli/gpu_check_test.sh, runs one golden case and one
 # test). The machine's Vulkan driver must be found by the loader (VK_DRIVER_FILES may name its
 # manifest).
 # Exit status 0 when every step ran (failed tests and golden differences are in the report: a
 # GPU's images differ from lavapipe's within what the report shows), 1 when a step could not run.
 set -uo pipefail
 bundle=$(cd "$(dirname "$0")" && pwd)
-assets="" out=$PWD/gpu-check tests_timeout=900 golden_filter='*' tests_filter='*' bench_frames=100
+assets="" out=$PWD/gpu-check tests_timeout=900 golden_filter='*' tests_filter='*' bench_frames=100 cold_runs=10
 while [ $# -gt 0 ]; do
   case $1 in
     --assets) assets=$(cd "$2" && pwd) || exit 1; shift 2 ;;
@@ -31,8 +35,9 @@ while [ $# -gt 0 ]; do
     --golden-filter) golden_filter=$2; shift 2 ;;
     --tests-filter) tests_filter=$2; shift 2 ;;
     --bench-frames) bench_frames=$2; shift 2 ;;
+    --cold-runs) cold_runs=$2; shift 2 ;;
     *) echo "usage: gpu-check.sh [--assets DIR] [--out DIR] [--tests-timeout SECONDS] [--golden-filter PATTERN]" \
-         "[--tests-filter PATTERN] [--bench-frames N]" >&2; exit 2 ;;
+         "[--tests-filter PATTERN] [--bench-frames N] [--cold-runs N]" >&2; exit 2 ;;
   esac
 done
 mkdir -p "$out" && out=$(cd "$out" && pwd)
@@ -120,6 +125,24 @@ timed bench-grid "$candela" bench --grid 10 --width 1280 --height 720 --frames "
 if [ -f "$helmet" ]; then
   timed bench-helmet "$candela" bench --scene "$helmet" --width 1280 --height 720 --frames "$bench_frames" --json || status=1
 fi
+
+step "time to image"
+# Without validation: the time a user waits. Each bench starts with empty pipeline, environment and
+# level-of-detail caches (a folder of their own), so its first run is a cold start and the rest warm;
+# the helmet's breakdown and the batch then find the helmet's caches.
+export XDG_CACHE_HOME=$out/cache
+rm -rf "$XDG_CACHE_HOME"
+timed cold-default "$candela" bench --cold "$cold_runs" --json || status=1
+rm -rf "$XDG_CACHE_HOME"
+if [ -f "$helmet" ]; then
+  timed cold-helmet "$candela" bench --cold "$cold_runs" --scene "$helmet" --json || status=1
+  timed ttfi-helmet "$candela" render --scene "$helmet" --out "$out/ttfi-helmet.png" --verbose || status=1
+  rm -rf "$out/batch"
+  timed batch "$candela" render "$assets/models" --width 512 --height 512 --out "$out/batch/{path}.png" --quiet || status=1
+  find "$out/batch" -name '*.png' | wc -l > "$out/batch.files"
+  rm -rf "$out/batch" "$XDG_CACHE_HOME"
+fi
+unset XDG_CACHE_HOME
 
 step "GPU tests"
 # In 4 processes (gtest's sharding): a crash ends one share, not the run.
@@ -239,6 +262,25 @@ for scene in ("helmet", "grid"):
     passes = ", ".join("%s %.3f ms" % (p["name"], p.get("gpuMedianMs", 0.0)) for p in b.get("passes", []))
     print("| %s | %.3f ms | %.2fx | %s |" % (os.path.basename(b["scene"]), b["frame"]["medianMs"], b["frame"]["medianRatio"], passes))
 print()
+print("## Time to image (no validation; process start to the PNG written)\n")
+print("| scene | first run (caches empty) | warm median | warm min | warm / calibration |")
+print("|---|---|---|---|---|")
+for scene in ("default", "helmet"):
+    try:
+        c = json.loads(text("cold-%s.log" % scene))
+    except ValueError:
+        if os.path.exists(os.path.join(out, "cold-%s.log" % scene)):
+            print("| %s | failed: %s | | | |" % (scene, text("cold-%s.log" % scene).strip().splitlines()[-1:]))
+        continue
+    print("| %s | %.0f ms | %.0f ms | %.0f ms | %.1fx |" % (scene, c["firstMs"], c["warmMedianMs"], c["warmMinMs"],
+                                                          c["warmRatio"]))
+print()
+breakdown = [l for l in text("ttfi-helmet.log").splitlines() if "time to image" in l]
+if breakdown:
+    print("DamagedHelmet, `render --verbose` (caches warm):\n\n```\n" + "\n".join(breakdown) + "\n```\n")
+if os.path.exists(os.path.join(out, "batch.seconds")):
+    print("The assets' models at 512x512 in one run: %s files, %.1f s, exit %s\n" % (
+        text("batch.files", "?").strip(), seconds("batch"), text("batch.rc", "?").strip()))
 show_tests("GPU tests (every test but the goldens, under validation; 4 shares)", ["gpu-tests-%d" % i for i in range(4)])
 EOF
 echo "report: $out/report.md" >&2

@@ -2,8 +2,8 @@
 # The GPU check's tarball (`cpack -G TGZ -D CANDELA_GPU_CHECK=ON`) and tools/gpu-check.sh on
 # lavapipe: the tarball holds every library its programs and the validation layer link but glibc's
 # (its programs find them by their run path, the layer by the loader's), and the check, run from
-# the unpacked tarball in another folder on one golden case, one GPU test and 2 bench frames, writes a report
-# whose every step ran and whose figures are lavapipe's own (the golden renders equal the approved
+# the unpacked tarball in another folder on one golden case, one GPU test, 2 bench frames and 2 cold
+# runs, writes a report whose every step ran and whose figures are lavapipe's own (the golden renders equal the approved
 # images within the goldens' tolerances; a still scene's repeated frames are identical).
 #   tests/cli/gpu_check_test.sh BUILD_DIR
 set -euo pipefail
@@ -38,7 +38,7 @@ grep -Eq '"library_path" *: *"../../libVkLayer_khronos_validation.so"' \
 
 cd "$tmp"
 "$bundle/gpu-check.sh" --out "$tmp/report" --golden-filter '/default_scene' --tests-filter 'ContextLifetime.*' \
-  --bench-frames 2 --tests-timeout 120 2> "$tmp/steps" || { cat "$tmp/steps" >&2; fail "gpu-check.sh exited non-zero"; }
+  --bench-frames 2 --cold-runs 2 --tests-timeout 120 2> "$tmp/steps" || { cat "$tmp/steps" >&2; fail "gpu-check.sh exited non-zero"; }
 report=$tmp/report/report.md
 expect() { grep -qF -- "$1" "$report" || { cat "$report" >&2; fail "report lacks: $1"; }; }
 expect "layers enabled: VK_LAYER_KHRONOS_validation"
@@ -54,6 +54,9 @@ done
 expect "- render-default-forward: exit 0"
 expect "- render-default-visibility: exit 0"
 expect "| built-in: sphere grid 10x10 |"
+grep -Eq '^\| default \| [0-9]+ ms \| [0-9]+ ms \| [0-9]+ ms \| [0-9.]+x \|$' "$report" ||
+  { cat "$report" >&2; fail "report lacks the default scene's time to image"; }
+[ ! -e "$tmp/report/cache" ] || fail "the time-to-image caches were left behind"
 total=$(grep -o "gpu-tests-[0-3]: [0-9]* run, [0-9]* passed, 0 failed" "$report" | awk '{s += $2; p += $4} END {print s, p}')
 [ "$total" = "1 1" ] || { cat "$report" >&2; fail "GPU tests: expected 1 run and passed over the shards, got $total"; }
 echo "gpu-check: bundle and report as expected"
