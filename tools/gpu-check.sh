@@ -70,7 +70,8 @@ timed() {  # NAME COMMAND...: runs COMMAND, its output in OUT/NAME.log, its seco
   echo "commit: $(cat "$bundle/share/candela/commit" 2>/dev/null || echo unknown)"
   echo "date: $(date -u +%FT%TZ)"
   echo "kernel: $(uname -srm)"
-  echo "validation: ${validate:+on (the layer in the tarball, with synchronization validation)}${validate:-off (no validation layer in the tarball)}"
+  if [ -n "$validate" ]; then echo "validation: on (the layer in the tarball, with synchronization validation)"
+  else echo "validation: off (no validation layer in the tarball)"; fi
   echo "cpu: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //') ($(nproc) threads)"
   command -v nvidia-smi > /dev/null && nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader | sed 's/^/gpu: /'
 } > "$out/machine.txt"

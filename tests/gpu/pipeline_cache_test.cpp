@@ -258,9 +258,10 @@ TEST_F(GpuTest, AFirstScenesPipelinesCompileWhileItUploadsForTheFrameItsSettings
     // Before any frame, uploading a scene queues its forward pipelines for the frame its settings
     // give (FrameBuilder::firstFrameVariant): they are built by its first frame, which then creates
     // no pipeline a renderer that never queued ahead would not; a wrong guess would show as more.
+    // One sample, as on lavapipe: a GPU's default of 4 leaves the guess out (below).
     const scene::Scene grid = assets::makeSphereGrid();
     const assets::Environment sky = assets::makeProceduralSky();
-    std::vector<RenderSettings> cases(3, RenderSettings{.width = 48, .height = 27, .scene = &grid});
+    std::vector<RenderSettings> cases(3, RenderSettings{.width = 48, .height = 27, .scene = &grid, .msaa = 1});
     cases[1].environment = &sky;
     cases[2].environment = &sky;
     cases[2].iblQuality.irradiance = ibl::IrradianceMode::Cube;
@@ -274,15 +275,18 @@ TEST_F(GpuTest, AFirstScenesPipelinesCompileWhileItUploadsForTheFrameItsSettings
         settings.precompile = options::Precompile::Off;
         uint64_t before = context().pipelineCreation().count;
         CapturedFrame reference;
+        uint64_t uploadAlone = 0;  // what an upload builds without the guess: the environment's precompute
         {
             Renderer renderer(context());
+            uploadAlone = pipelinesBuiltByUpload(context(), renderer, settings);
             reference = renderer.capture(settings);
         }
         const uint64_t withoutAhead = context().pipelineCreation().count - before;
         settings.precompile = options::Precompile::Frame;
         before = context().pipelineCreation().count;
         Renderer renderer(context());
-        EXPECT_GT(pipelinesBuiltByUpload(context(), renderer, settings), 0u) << "the grid's variants compile before its first frame";
+        EXPECT_GT(pipelinesBuiltByUpload(context(), renderer, settings), uploadAlone)
+            << "the grid's variants compile before its first frame";
         const CapturedFrame frame = renderer.capture(settings);
         EXPECT_EQ(context().pipelineCreation().count - before, withoutAhead) << "the variants built ahead were the frame's";
         EXPECT_EQ(frame.rgba8, reference.rgba8);
