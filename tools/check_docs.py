@@ -33,7 +33,7 @@ COMMANDS = ["render", "view", "bench", "ibl-report", "scale-report", "quality-re
 OTHER_TOOLS_FLAGS = {"--preset", "--build", "--install", "--prefix", "--test-dir", "--target", "--target-env", "--gtest_filter", "--array",
                      "--basisu", "--gtest_brief",
                      "--write-docs",  # tools/check_layers.py's
-                     "--assets",  # tools/gpu-check.sh's
+                     "--assets", "--cold-runs",  # tools/gpu-check.sh's
                      "--size",  # tools/python-overhead.py's
                      "--doc", "--samples",  # tools/validator/oracle.py's
                      "--set-spec-const-default-value", "--freeze-spec-const", "--fold-spec-const-op-composite",  # spirv-opt's
