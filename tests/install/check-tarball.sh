@@ -51,7 +51,9 @@ fi
 site=$(find "$top/lib" -maxdepth 2 -name dist-packages -type d)
 [ -n "$site" ] || fail "no Python package in the tarball"
 module=$(find "$site/candela" -name '_candela*.so')
-env -u LD_LIBRARY_PATH ldd "$module" | grep -q "libcandela.so.* => $top/lib/" || fail "the Python module does not load the tarball's libcandela.so"
+linked=$(env -u LD_LIBRARY_PATH ldd "$module" 2>&1 || true)
+grep -q "libcandela.so.* => $top/lib/" <<< "$linked" ||
+  fail "the Python module ($module) does not load the tarball's libcandela.so; ldd says: $(grep -i -e candela -e 'not found' <<< "$linked" | tr -s ' \t\n' ' ')"
 env -u LD_LIBRARY_PATH PYTHONPATH="$site" /usr/bin/python3 "$source/tests/install/check-python.py" "$top" || fail "import candela"
 
 # The GPU check runs from it too: without the test binary and the layer, what the executable can.
