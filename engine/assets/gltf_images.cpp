@@ -142,13 +142,13 @@ DecodedImage decodeImage(const LoadContext& ctx, std::span<const uint8_t> bytes,
         image.rgba8.resize(texels * 4);
         for (size_t i = 0; i < texels * 4; ++i) image.rgba8[i] = uint8_t((uint32_t(pixels.get()[i]) * 255u + 32767u) / 65535u);
     } else {
-        const stb::Pixels<uint8_t> pixels = stb::loadRgba8(bytes, w, h);
-        if (!pixels) ctx.fail(what + ": cannot decode image (" + stbiReason() + ")");
-        if (uint32_t(w) != width || uint32_t(h) != height) ctx.fail(what + ": image size changed while decoding");
-        // Huge pages for the copy's first touches: a 2048² image is 4,096 fresh 4 KiB pages otherwise.
-        image.rgba8.reserve(texels * 4);
+        // Decoded in place (stb::loadRgba8Into), in huge pages: a 2048² image is 4,096 fresh 4 KiB
+        // pages otherwise.
+        image.rgba8.reserve(texels * 4 + 1);
         adviseHugePages(image.rgba8.data(), image.rgba8.capacity());
-        image.rgba8.assign(pixels.get(), pixels.get() + texels * 4);
+        image.rgba8.resize(texels * 4);
+        if (!stb::loadRgba8Into(bytes, w, h, image.rgba8)) ctx.fail(what + ": cannot decode image (" + stbiReason() + ")");
+        if (uint32_t(w) != width || uint32_t(h) != height) ctx.fail(what + ": image size changed while decoding");
     }
     image.width = width;
     image.height = height;

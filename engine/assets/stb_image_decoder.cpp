@@ -16,7 +16,21 @@ namespace {
 std::mutex gHugeBlocksMutex;
 std::unordered_map<void*, size_t> gHugeBlocks;
 
+// The caller's buffer for this thread's decode (loadRgba8Into): handed out once, to the first
+// allocation of its size or one byte more (a JPEG's output asks for width × height × 4 + 1), and
+// never freed or resized here (a block moved out of it is copied, the buffer left as it is).
+struct Adopted {
+    uint8_t* buffer = nullptr;
+    size_t bytes = 0;  // the buffer holds bytes + 1
+    bool handedOut = false;
+};
+thread_local Adopted tAdopted;
+
 void* decoderMalloc(size_t bytes) {
+    if (tAdopted.buffer && !tAdopted.handedOut && (bytes == tAdopted.bytes || bytes == tAdopted.bytes + 1)) {
+        tAdopted.handedOut = true;
+        return tAdopted.buffer;
+    }
     if (bytes < candela::kHugePagesWorthBytes) return std::malloc(bytes);
     void* data = candela::allocateInHugePages(bytes);
     if (!data) return nullptr;
@@ -41,13 +55,18 @@ size_t hugeBlockBytes(void* data, bool forget) {
 }
 
 void decoderFree(void* data) {
-    if (!data) return;
+    if (!data || data == tAdopted.buffer) return;
     if (hugeBlockBytes(data, true)) candela::freeHugePages(data);
     else std::free(data);
 }
 
 // A heap block stays in the heap (realloc); a huge block moves to a new block of `bytes`.
 void* decoderRealloc(void* data, size_t bytes) {
+    if (data && data == tAdopted.buffer) {
+        void* moved = decoderMalloc(bytes);
+        if (moved) std::memcpy(moved, data, std::min(bytes, tAdopted.bytes + 1));
+        return moved;
+    }
     const size_t oldBytes = data ? hugeBlockBytes(data, false) : 0;
     if (oldBytes == 0) return std::realloc(data, bytes);
     void* moved = decoderMalloc(bytes);
@@ -76,9 +95,21 @@ bool info(std::span<const uint8_t> bytes, int& width, int& height, int& channels
 
 bool is16Bit(std::span<const uint8_t> bytes) { return stbi_is_16_bit_from_memory(bytes.data(), int(bytes.size())) != 0; }
 
-Pixels<uint8_t> loadRgba8(std::span<const uint8_t> bytes, int& width, int& height) {
+bool loadRgba8Into(std::span<const uint8_t> bytes, int& width, int& height, std::vector<uint8_t>& out) {
+    const size_t size = out.size();
+    out.resize(size + 1);  // the byte a JPEG's output asks for beyond the pixels, inside out's size
+    tAdopted = {out.data(), size, false};
     int channels = 0;
-    return Pixels<uint8_t>(stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 4));
+    stbi_uc* pixels = stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 4);
+    const bool adopted = pixels && pixels == tAdopted.buffer;
+    tAdopted = {};
+    out.resize(size);
+    if (!pixels) return false;
+    if (!adopted) {
+        if (size_t(width) * size_t(height) * 4 == size) std::memcpy(out.data(), pixels, size);
+        stbi_image_free(pixels);
+    }
+    return true;
 }
 
 Pixels<uint16_t> loadRgba16(std::span<const uint8_t> bytes, int& width, int& height) {

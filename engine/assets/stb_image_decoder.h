@@ -9,10 +9,11 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <vector>
 
 namespace candela::assets::stb {
 
-// Frees what loadRgba8 / loadRgba16 return.
+// Frees what loadRgba16 returns.
 struct PixelsFree {
     void operator()(void* pixels) const;
 };
@@ -24,9 +25,15 @@ using Pixels = std::unique_ptr<T, PixelsFree>;
 bool info(std::span<const uint8_t> bytes, int& width, int& height, int& channels);
 // stbi_is_16_bit_from_memory: whether the image holds 16 bits per channel (PNG).
 bool is16Bit(std::span<const uint8_t> bytes);
-// stbi_load_from_memory / stbi_load_16_from_memory with 4 channels (RGBA, top row first): null
-// where decoding fails (failureReason() says why); width and height are the decoded size.
-Pixels<uint8_t> loadRgba8(std::span<const uint8_t> bytes, int& width, int& height);
+// stbi_load_from_memory with 4 channels (RGBA, top row first) into `out`, which the caller sized
+// to the declared width × height × 4 (with a byte of spare capacity, or it is reallocated once):
+// stb_image decodes into out's own storage (its first allocation of that size, or a byte more, is
+// given out's), so the pixels are not copied; where it decodes elsewhere they are copied in. False where decoding fails
+// (failureReason() says why); width and height are the decoded size, and out holds the pixels only
+// where that is the declared one (the caller checks). Not reentrant within one thread.
+bool loadRgba8Into(std::span<const uint8_t> bytes, int& width, int& height, std::vector<uint8_t>& out);
+// stbi_load_16_from_memory with 4 channels: null where decoding fails (failureReason() says why);
+// width and height are the decoded size.
 Pixels<uint16_t> loadRgba16(std::span<const uint8_t> bytes, int& width, int& height);
 // stbi_failure_reason of the calling thread's last call above; null where there is none.
 const char* failureReason();
