@@ -7,8 +7,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <span>
 #include <string>
@@ -92,8 +92,12 @@ std::vector<uint8_t> encodePng(uint32_t width, uint32_t height, std::span<const 
     // run to the cut. The pieces depend on the image alone: the file is the same on any machine.
     const size_t pieceBytes = size_t(kPieceRows) * (stride + 1);
     const size_t pieces = (filteredBytes + pieceBytes - 1) / pieceBytes;
-    std::vector<std::vector<uint8_t>> deflated(pieces);
-    std::vector<uLong> adlers(pieces);
+    struct Piece {
+        std::unique_ptr<uint8_t[]> bytes;  // uninitialized, as `filtered`
+        size_t size = 0;
+        uLong adler = 0;  // of the piece's filtered rows
+    };
+    std::vector<Piece> deflated(pieces);
     parallelFor(pieces, [&](size_t p) {
         const size_t begin = p * pieceBytes, bytes = std::min(pieceBytes, filteredBytes - begin);
         const bool last = p + 1 == pieces;
@@ -104,25 +108,26 @@ std::vector<uint8_t> encodePng(uint32_t width, uint32_t height, std::span<const 
         } deflater;
         z_stream& stream = deflater.stream;
         if (deflateInit2(&stream, 1, Z_DEFLATED, -15, 9, Z_RLE) != Z_OK) throw InternalError("encodePng: deflateInit2 failed");
-        std::vector<uint8_t>& out = deflated[p];
-        out.resize(deflateBound(&stream, uLong(bytes)) + 16);  // + a sync flush's empty stored block
+        Piece& out = deflated[p];
+        const size_t bound = deflateBound(&stream, uLong(bytes)) + 16;  // + a sync flush's empty stored block
+        out.bytes.reset(new uint8_t[bound]);
         stream.next_in = filtered.get() + begin;
         stream.avail_in = uInt(bytes);
-        stream.next_out = out.data();
-        stream.avail_out = uInt(out.size());
+        stream.next_out = out.bytes.get();
+        stream.avail_out = uInt(bound);
         const int result = deflate(&stream, last ? Z_FINISH : Z_SYNC_FLUSH);
         if (result != (last ? Z_STREAM_END : Z_OK) || stream.avail_in != 0)
             throw InternalError("encodePng: deflate failed (" + std::to_string(result) + ")");
-        out.resize(stream.total_out);
-        adlers[p] = adler32(adler32(0, nullptr, 0), filtered.get() + begin, uInt(bytes));
+        out.size = stream.total_out;
+        out.adler = adler32(adler32(0, nullptr, 0), filtered.get() + begin, uInt(bytes));
     });
     // The zlib stream: its header (deflate, 32 KiB window, level 1's "fastest" flag), the pieces,
     // and the Adler-32 of all the filtered rows, combined from the pieces'.
     std::vector<uint8_t> idat = {0x78, 0x01};
-    uLong adler = adlers[0];
+    uLong adler = deflated[0].adler;
     for (size_t p = 0; p < pieces; ++p) {
-        idat.insert(idat.end(), deflated[p].begin(), deflated[p].end());
-        if (p > 0) adler = adler32_combine(adler, adlers[p], z_off_t(std::min(pieceBytes, filteredBytes - p * pieceBytes)));
+        idat.insert(idat.end(), deflated[p].bytes.get(), deflated[p].bytes.get() + deflated[p].size);
+        if (p > 0) adler = adler32_combine(adler, deflated[p].adler, z_off_t(std::min(pieceBytes, filteredBytes - p * pieceBytes)));
     }
     putU32(idat, uint32_t(adler));
 
