@@ -9,10 +9,10 @@
 #   3. 1280x720 renders of the default scene and DamagedHelmet on both paths, under validation
 #   4. `candela bench` of DamagedHelmet and the 10x10 grid (as ratios to the calibration pass)
 #   5. time to image: `candela bench --cold` (fresh processes, from process start to the PNG written,
-#      the first with the caches as the fresh machine has them) of the default scene and DamagedHelmet,
+#      the first with empty caches) of the default scene and DamagedHelmet,
 #      a `render --verbose` breakdown of the helmet, and the assets' models at 512x512 in one run
 #   6. the rest of the GPU test binary, if the tarball has it (every test under validation)
-# Steps 2 and 5 need the GPU test binary; without the validation layer in the tarball (the plain
+# Steps 2 and 6 need the GPU test binary; without the validation layer in the tarball (the plain
 # one) every step runs without validation, which the report says.
 #   ./gpu-check.sh [--assets DIR] [--out DIR] [--tests-timeout SECONDS]
 #                  [--golden-filter GTEST_PATTERN] [--tests-filter GTEST_PATTERN] [--bench-frames N]
@@ -133,10 +133,12 @@ step "time to image"
 # the helmet's breakdown and the batch then find the helmet's caches.
 export XDG_CACHE_HOME=$out/cache
 rm -rf "$XDG_CACHE_HOME"
-timed cold-default "$candela" bench --cold "$cold_runs" --json || status=1
+# bench's JSON in a file of its own (OUT/cold-*.json), its messages in the log.
+timed cold-default sh -c '"$0" bench --cold "$1" --json > "$2"' "$candela" "$cold_runs" "$out/cold-default.json" || status=1
 rm -rf "$XDG_CACHE_HOME"
 if [ -f "$helmet" ]; then
-  timed cold-helmet "$candela" bench --cold "$cold_runs" --scene "$helmet" --json || status=1
+  timed cold-helmet sh -c '"$0" bench --cold "$1" --scene "$2" --json > "$3"' "$candela" "$cold_runs" "$helmet" \
+    "$out/cold-helmet.json" || status=1
   timed ttfi-helmet "$candela" render --scene "$helmet" --out "$out/ttfi-helmet.png" --verbose || status=1
   rm -rf "$out/batch"
   timed batch "$candela" render "$assets/models" --width 512 --height 512 --out "$out/batch/{path}.png" --quiet || status=1
@@ -267,14 +269,15 @@ print("## Time to image (no validation; process start to the PNG written)\n")
 print("| scene | first run (caches empty) | warm median | warm min | warm / calibration |")
 print("|---|---|---|---|---|")
 for scene in ("default", "helmet"):
-    try:
-        c = json.loads(text("cold-%s.log" % scene))
-    except ValueError:
-        if os.path.exists(os.path.join(out, "cold-%s.log" % scene)):
-            print("| %s | failed: %s | | | |" % (scene, text("cold-%s.log" % scene).strip().splitlines()[-1:]))
+    if not os.path.exists(os.path.join(out, "cold-%s.log" % scene)):
         continue
-    print("| %s | %.0f ms | %.0f ms | %.0f ms | %.1fx |" % (scene, c["firstMs"], c["warmMedianMs"], c["warmMinMs"],
-                                                          c["warmRatio"]))
+    try:
+        c = json.loads(text("cold-%s.json" % scene))
+        print("| %s | %.0f ms | %.0f ms | %.0f ms | %.1fx |" % (scene, c["firstMs"], c["warmMedianMs"], c["warmMinMs"],
+                                                              c["warmRatio"]))
+    except (ValueError, KeyError, TypeError):  # no JSON, or one run only (no warm runs)
+        last = text("cold-%s.log" % scene).strip().splitlines()[-1:]
+        print("| %s | exit %s%s | | | |" % (scene, text("cold-%s.rc" % scene, "?").strip(), (": " + last[0]) if last else ""))
 print()
 breakdown = [l for l in text("ttfi-helmet.log").splitlines() if "time to image" in l]
 if breakdown:

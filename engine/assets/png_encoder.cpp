@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
@@ -89,8 +90,10 @@ std::vector<uint8_t> encodePng(uint32_t width, uint32_t height, std::span<const 
     // Deflated in pieces of kPieceRows rows on every core, each its own raw deflate stream, the
     // pieces but the last ending on a byte with a sync flush (as pigz does): joined, they are one
     // zlib stream. Z_RLE's matches are runs at distance 1, so a piece loses only its first byte's
-    // run to the cut. The pieces depend on the image alone: the file is the same on any machine.
+    // run to the cut. The pieces depend on the image alone: the file is the same whatever the core
+    // count (for the same zlib).
     const size_t pieceBytes = size_t(kPieceRows) * (stride + 1);
+    if (pieceBytes > std::numeric_limits<uInt>::max() / 2) throw InternalError("encodePng: rows too wide for a deflate piece");
     const size_t pieces = (filteredBytes + pieceBytes - 1) / pieceBytes;
     struct Piece {
         std::unique_ptr<uint8_t[]> bytes;  // uninitialized, as `filtered`
@@ -116,7 +119,8 @@ std::vector<uint8_t> encodePng(uint32_t width, uint32_t height, std::span<const 
         stream.next_out = out.bytes.get();
         stream.avail_out = uInt(bound);
         const int result = deflate(&stream, last ? Z_FINISH : Z_SYNC_FLUSH);
-        if (result != (last ? Z_STREAM_END : Z_OK) || stream.avail_in != 0)
+        // A sync flush that filled the buffer exactly may not have written all of itself.
+        if (result != (last ? Z_STREAM_END : Z_OK) || stream.avail_in != 0 || stream.avail_out == 0)
             throw InternalError("encodePng: deflate failed (" + std::to_string(result) + ")");
         out.size = stream.total_out;
         out.adler = adler32(adler32(0, nullptr, 0), filtered.get() + begin, uInt(bytes));
@@ -124,6 +128,9 @@ std::vector<uint8_t> encodePng(uint32_t width, uint32_t height, std::span<const 
     // The zlib stream: its header (deflate, 32 KiB window, level 1's "fastest" flag), the pieces,
     // and the Adler-32 of all the filtered rows, combined from the pieces'.
     std::vector<uint8_t> idat = {0x78, 0x01};
+    size_t idatBytes = 2 + 4;
+    for (const Piece& piece : deflated) idatBytes += piece.size;
+    idat.reserve(idatBytes);
     uLong adler = deflated[0].adler;
     for (size_t p = 0; p < pieces; ++p) {
         idat.insert(idat.end(), deflated[p].bytes.get(), deflated[p].bytes.get() + deflated[p].size);

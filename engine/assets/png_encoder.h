@@ -12,7 +12,7 @@
 namespace candela::assets {
 
 // The PNG file (8-bit RGBA, non-interlaced) of the `width` × `height` pixels `rgba`, rows top first;
-// the same bytes whatever the machine's core count.
+// the same bytes whatever the machine's core count (for the same zlib).
 // Preconditions: width, height ≥ 1; rgba.size() == width × height × 4.
 std::vector<uint8_t> encodePng(uint32_t width, uint32_t height, std::span<const uint8_t> rgba);
 

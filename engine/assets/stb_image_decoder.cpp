@@ -97,12 +97,19 @@ bool is16Bit(std::span<const uint8_t> bytes) { return stbi_is_16_bit_from_memory
 
 bool loadRgba8Into(std::span<const uint8_t> bytes, int& width, int& height, std::vector<uint8_t>& out) {
     const size_t size = out.size();
+    if (size == 0) return false;
     out.resize(size + 1);  // the byte a JPEG's output asks for beyond the pixels, inside out's size
-    tAdopted = {out.data(), size, false};
-    int channels = 0;
-    stbi_uc* pixels = stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 4);
-    const bool adopted = pixels && pixels == tAdopted.buffer;
-    tAdopted = {};
+    stbi_uc* pixels = nullptr;
+    bool adopted = false;
+    {
+        struct Handed {  // this thread's record, cleared however the decode ends
+            Handed(uint8_t* buffer, size_t bytes) { tAdopted = {buffer, bytes, false}; }
+            ~Handed() { tAdopted = {}; }
+        } handed(out.data(), size);
+        int channels = 0;
+        pixels = stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 4);
+        adopted = pixels && pixels == tAdopted.buffer;
+    }
     out.resize(size);
     if (!pixels) return false;
     if (!adopted) {

@@ -29,9 +29,9 @@ bool is16Bit(std::span<const uint8_t> bytes);
 // to the declared width × height × 4 (with a byte of spare capacity, or it is reallocated once):
 // stb_image decodes into out's own storage (its first allocation of that size, or a byte more, is
 // given out's), so the pixels are not copied; where it decodes elsewhere they are copied in.
-// False where decoding fails (failureReason() says why); width and height are the decoded size,
-// and out holds the pixels only where that is the declared one (the caller checks). Safe on several
-// threads at once: the storage handed to stb_image is the calling thread's.
+// False where decoding fails (failureReason() says why) or out is empty; width and height are the
+// decoded size, and out holds the pixels only where that is the declared one (the caller checks).
+// Safe on several threads at once: the storage handed to stb_image is the calling thread's.
 bool loadRgba8Into(std::span<const uint8_t> bytes, int& width, int& height, std::vector<uint8_t>& out);
 // stbi_load_16_from_memory with 4 channels: null where decoding fails (failureReason() says why);
 // width and height are the decoded size.

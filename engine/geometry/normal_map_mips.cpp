@@ -53,8 +53,10 @@ void encodeTexel(Floats4 m, float length, uint8_t* texel) {
 // Four texels' floats, channel by channel (a structure of arrays), for mip 1, whose texels are
 // each the mean of four of mip 0's unit normals: most of a chain's work. Each lane's arithmetic is
 // the scalar code's above, operation for operation, so the texels are the same (ImageMips pins them).
+// A texel read as one 32-bit word has R in its low byte on little-endian machines only; elsewhere
+// the one-texel code does the whole level.
 using Uints4 = uint32_t __attribute__((vector_size(16)));
-static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "a texel's R is its uint32's low byte");
+constexpr bool kTexelWordsLittleEndian = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
 constexpr Floats4 kOnes{1.0f, 1.0f, 1.0f, 1.0f};
 
 // Each lane's square root, correctly rounded (as std::sqrt).
@@ -156,7 +158,7 @@ void writeNormalMapMipChain(const scene::Image& image, std::span<const TexelLeve
         parallelForRows(w, h, [&](uint32_t y) {
             uint8_t* out = mip.row(y);
             uint32_t x = 0;
-            if (level == 1) {
+            if (level == 1 && kTexelWordsLittleEndian) {
                 const uint8_t* row0 = source + size_t(2 * y) * image.width * 4;
                 const uint8_t* row1 = source + size_t(std::min(2 * y + 1, height - 1)) * image.width * 4;
                 for (; x + 4 <= image.width / 2; x += 4) meanTexels4(decoded, row0, row1, x, out, next + size_t(y) * w);
