@@ -98,7 +98,8 @@ std::vector<uint8_t> encodePng(uint32_t width, uint32_t height, std::span<const 
     struct Piece {
         std::unique_ptr<uint8_t[]> bytes;  // uninitialized, as `filtered`
         size_t size = 0;
-        uLong adler = 0;  // of the piece's filtered rows
+        size_t rowsBytes = 0;  // of the filtered rows it holds
+        uLong adler = 0;       // of those rows
     };
     std::vector<Piece> deflated(pieces);
     parallelFor(pieces, [&](size_t p) {
@@ -123,6 +124,7 @@ std::vector<uint8_t> encodePng(uint32_t width, uint32_t height, std::span<const 
         if (result != (last ? Z_STREAM_END : Z_OK) || stream.avail_in != 0 || stream.avail_out == 0)
             throw InternalError("encodePng: deflate failed (" + std::to_string(result) + ")");
         out.size = stream.total_out;
+        out.rowsBytes = bytes;
         out.adler = adler32(adler32(0, nullptr, 0), filtered.get() + begin, uInt(bytes));
     });
     // The zlib stream: its header (deflate, 32 KiB window, level 1's "fastest" flag), the pieces,
@@ -134,7 +136,7 @@ std::vector<uint8_t> encodePng(uint32_t width, uint32_t height, std::span<const 
     uLong adler = deflated[0].adler;
     for (size_t p = 0; p < pieces; ++p) {
         idat.insert(idat.end(), deflated[p].bytes.get(), deflated[p].bytes.get() + deflated[p].size);
-        if (p > 0) adler = adler32_combine(adler, deflated[p].adler, z_off_t(std::min(pieceBytes, filteredBytes - p * pieceBytes)));
+        if (p > 0) adler = adler32_combine(adler, deflated[p].adler, z_off_t(deflated[p].rowsBytes));
     }
     putU32(idat, uint32_t(adler));
 

@@ -60,14 +60,10 @@ void decoderFree(void* data) {
     else std::free(data);
 }
 
-// A heap block stays in the heap (realloc); a huge block moves to a new block of `bytes`.
+// A heap block stays in the heap (realloc); a huge block, or the caller's buffer, moves to a new
+// block of `bytes` (decoderFree then gives back the huge block and leaves the buffer alone).
 void* decoderRealloc(void* data, size_t bytes) {
-    if (data && data == tAdopted.buffer) {
-        void* moved = decoderMalloc(bytes);
-        if (moved) std::memcpy(moved, data, std::min(bytes, tAdopted.bytes + 1));
-        return moved;
-    }
-    const size_t oldBytes = data ? hugeBlockBytes(data, false) : 0;
+    const size_t oldBytes = !data ? 0 : data == tAdopted.buffer ? tAdopted.bytes + 1 : hugeBlockBytes(data, false);
     if (oldBytes == 0) return std::realloc(data, bytes);
     void* moved = decoderMalloc(bytes);
     if (!moved) return nullptr;

@@ -100,7 +100,6 @@ void halveRowSrgb(const SrgbTables& tables, const uint8_t* top, const uint8_t* b
     }
 }
 
-
 // A level of an odd size from the one above: each texel the bilinear sample of `above` at its
 // centre, clamped at the edges, RGB in linear light when srgb, as writeBoxMipChain says.
 void writeFilteredLevel(const SrgbTables& tables, bool srgb, const TexelLevel& above, const TexelLevel& mip) {

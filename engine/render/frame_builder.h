@@ -52,9 +52,9 @@ public:
     void prepareAhead(const passes::MaterialKeys& keys, const RenderSettings& settings, std::span<const scene::Light> lights);
     // The forward variant bits (passes::FrameVariant, lights aside) of a scene frame of `settings`,
     // known before its scene and environment are uploaded: what buildScene will find, from the
-    // same settings (GpuTest.AFirstScenesPipelinesCompileWhileItUploadsForTheFrameItsSettingsGive). Nullopt with MSAA, where
-    // alpha to coverage is the frame plan's choice, and for the visibility path (asked, or the
-    // device's default), whose frames may not draw on the forward path.
+    // same settings (GpuTest.AFirstScenesPipelinesCompileWhileItUploadsForTheFrameItsSettingsGive).
+    // Nullopt with MSAA, where alpha to coverage is the frame plan's choice, and for the visibility
+    // path (asked, or the device's default), whose frames may not draw on the forward path.
     std::optional<passes::FrameVariant> firstFrameVariant(const RenderSettings& settings) const;
     // Declares the scene frame for `settings` (a scene is uploaded, the environment prepared): the
     // tonemap writes `target` when given (a presentable image), else a new transient "ldr".
