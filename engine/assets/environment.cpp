@@ -3,9 +3,12 @@
 #include "assets/exr_reader.h"
 #include "assets/hdr_reader.h"
 #include "assets/image_file.h"
+#include "core/cache_files.h"
 #include "core/errors.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -108,21 +111,23 @@ uint32_t sanitizeEnvironment(Environment& env) {
 }
 
 uint64_t contentHash(const Environment& env) {
-    uint64_t hash = 0xcbf29ce484222325ull;
-    auto mix = [&hash](uint32_t word) {
-        for (int i = 0; i < 4; ++i) {
-            hash ^= (word >> (8 * i)) & 0xffu;
-            hash *= 0x100000001b3ull;
+    WordHasher hasher;
+    const auto words = [&hasher](const uint32_t* values, size_t count) {
+        if constexpr (std::endian::native == std::endian::little) {
+            hasher.update(values, count * sizeof(uint32_t));
+        } else {
+            for (size_t i = 0; i < count; ++i) {
+                const uint32_t v = values[i];
+                const std::array<uint8_t, 4> le = {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
+                hasher.update(le.data(), le.size());
+            }
         }
     };
-    mix(env.width);
-    mix(env.height);
-    for (float v : env.rgb) {
-        uint32_t bits;
-        std::memcpy(&bits, &v, sizeof bits);
-        mix(bits);
-    }
-    return hash;
+    const std::array<uint32_t, 2> size = {env.width, env.height};
+    words(size.data(), size.size());
+    static_assert(sizeof(float) == sizeof(uint32_t));
+    words(reinterpret_cast<const uint32_t*>(env.rgb.data()), env.rgb.size());
+    return hasher.value();
 }
 
 }  // namespace candela::assets

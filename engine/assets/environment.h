@@ -69,8 +69,9 @@ uint32_t sanitizeEnvironment(Environment& env);
 void checkEnvironmentSize(const std::string& source, uint64_t width, uint64_t height,
                           const EnvironmentLoadOptions& options);
 
-// A 64-bit FNV-1a hash of the width, height and texel bits (the source and warnings are not
-// hashed): the key of the on-disk IBL cache. Equal maps give equal hashes on every platform.
+// wordHash64 (core/cache_files.h) of the width, height and texel bits as little-endian 32-bit
+// words (the source and warnings are not hashed): the key of the on-disk IBL cache. Equal maps give
+// equal hashes on every platform.
 uint64_t contentHash(const Environment& env);
 
 }  // namespace candela::assets

@@ -1,7 +1,7 @@
 #pragma once
 // The little-endian fields of Candela's cache files (the IBL maps' `.cibl`, the levels of detail's
-// `.clod`): written and read with a running FNV-1a 64 of every byte, which those files end with as
-// their checksum. Each file format keeps its own layout and checks; these are only the fields.
+// `.clod`): written and read with a running wordHash64 (core/cache_files.h) of every byte, which
+// those files end with as their checksum. Each file format keeps its own layout and checks; these are only the fields.
 
 #include "core/cache_files.h"
 
@@ -25,7 +25,7 @@ public:
     explicit CacheFieldWriter(Sink sink) : mSink(std::move(sink)) {}
     void bytes(const void* data, size_t size) {
         mSink(data, size);
-        mHash = fnv1a64Update(mHash, data, size);
+        mHasher.update(data, size);
     }
     void u32(uint32_t v) {
         const std::array<uint8_t, 4> b = {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
@@ -35,12 +35,12 @@ public:
         u32(uint32_t(v));
         u32(uint32_t(v >> 32));
     }
-    // The FNV-1a 64 of every byte written so far.
-    uint64_t hash() const { return mHash; }
+    // wordHash64(0, every byte written so far).
+    uint64_t hash() const { return mHasher.value(); }
 
 private:
     Sink mSink;
-    uint64_t mHash = kFnv1a64Basis;
+    WordHasher mHasher;
 };
 
 // Reads little-endian fields from `source`, a callable bool(void* out, size_t size) that reads the
@@ -54,8 +54,8 @@ public:
     CacheFieldReader(uint64_t size, Source source) : mSource(std::move(source)), mSize(size) {}
     uint64_t offset() const { return mOffset; }
     uint64_t remaining() const { return mSize - mOffset; }
-    // The FNV-1a 64 of every byte read so far.
-    uint64_t hash() const { return mHash; }
+    // wordHash64(0, every byte read so far).
+    uint64_t hash() const { return mHasher.value(); }
     const std::string& problem() const { return mProblem; }
     // Sets problem() to `problem` and returns false.
     bool fail(std::string problem) {
@@ -68,7 +68,7 @@ public:
         if (size == 0) return true;
         if (!mSource(out, size_t(size)))
             return fail("read failed at byte " + std::to_string(mOffset) + " (" + std::string(what) + "): " + std::strerror(errno));
-        mHash = fnv1a64Update(mHash, out, size_t(size));
+        mHasher.update(out, size_t(size));
         mOffset += size;
         return true;
     }
@@ -89,7 +89,7 @@ private:
     Source mSource;
     uint64_t mSize;
     uint64_t mOffset = 0;
-    uint64_t mHash = kFnv1a64Basis;
+    WordHasher mHasher;
     std::string mProblem;
 };
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -69,25 +70,47 @@ fs::path lodCacheFolder(const std::string& choice) {
     return user.empty() ? fs::path() : user / "lod";
 }
 
-uint64_t wordHash64(uint64_t hash, const void* bytes, size_t size) {
-    // Each word: xor in, multiply by a large odd constant (every input bit reaches the high half),
-    // fold the high half down (and so into the next multiply's low bits).
-    constexpr uint64_t kMultiplier = 0x9e3779b97f4a7c15ull;
-    const auto mix = [](uint64_t h, uint64_t word) {
-        h = (h ^ word) * kMultiplier;
-        return h ^ (h >> 32);
-    };
+namespace {
+
+// One word into the state: xor in, multiply by a large odd constant (every input bit reaches the
+// high half), fold the high half down (and so into the next multiply's low bits).
+uint64_t mixWord(uint64_t h, uint64_t word) {
+    h = (h ^ word) * 0x9e3779b97f4a7c15ull;
+    return h ^ (h >> 32);
+}
+
+// The 8 bytes at `p` as a little-endian word, on any host.
+uint64_t loadLe64(const unsigned char* p) {
+    uint64_t word;
+    std::memcpy(&word, p, sizeof word);
+    if constexpr (std::endian::native == std::endian::big) word = __builtin_bswap64(word);
+    return word;
+}
+
+}  // namespace
+
+void WordHasher::update(const void* bytes, size_t size) {
     const auto* p = static_cast<const unsigned char*>(bytes);
+    mSize += size;
     size_t i = 0;
-    for (; i + 8 <= size; i += 8) {
-        uint64_t word = 0;
-        for (int b = 0; b < 8; ++b) word |= uint64_t(p[i + size_t(b)]) << (8 * b);  // little-endian on any host
-        hash = mix(hash, word);
+    for (; mPendingBytes != 0 && i < size; ++i) {  // complete the word begun
+        mPending |= uint64_t(p[i]) << (8 * mPendingBytes);
+        if (++mPendingBytes == 8) {
+            mHash = mixWord(mHash, mPending);
+            mPending = 0;
+            mPendingBytes = 0;
+        }
     }
-    uint64_t last = 0;
-    for (size_t b = 0; i + b < size; ++b) last |= uint64_t(p[i + b]) << (8 * b);
-    hash = mix(hash, last);
-    return mix(hash, uint64_t(size));
+    for (; i + 8 <= size; i += 8) mHash = mixWord(mHash, loadLe64(p + i));
+    for (; i < size; ++i, ++mPendingBytes) mPending |= uint64_t(p[i]) << (8 * mPendingBytes);
+}
+
+uint64_t WordHasher::value() const { return mixWord(mixWord(mHash, mPending), mSize); }
+
+uint64_t wordHash64(uint64_t hash, const void* bytes, size_t size) {
+    WordHasher hasher(hash);
+    hasher.update(bytes, size);
+    return hasher.value();
 }
 
 std::string hex16(uint64_t v) {

@@ -48,12 +48,28 @@ constexpr uint64_t fnv1a64Update(uint64_t hash, const void* bytes, size_t size) 
 // FNV-1a 64 (offset basis 0xcbf29ce484222325, prime 0x100000001b3) of `bytes`.
 inline uint64_t fnv1a64(std::string_view bytes) { return fnv1a64Update(kFnv1a64Basis, bytes.data(), bytes.size()); }
 
-// A 64-bit hash of `size` bytes at `bytes` for keying caches by large contents (a mesh's
-// positions and indices), continuing from `hash` (0 to start): the bytes as little-endian 64-bit
-// words (the last one zero-padded, the length mixed in), each multiplied into the state and the
-// state's bits folded down — several bytes a cycle where fnv1a64 takes one. Not for security;
-// like fnv1a64, its value is part of cache file names and must not change.
+// A 64-bit hash of `size` bytes at `bytes` for keying and checksumming caches by large contents (a
+// mesh's positions and indices, an environment's texels, a cache file's bytes), continuing from
+// `hash` (0 to start): the bytes as little-endian 64-bit words (the last one zero-padded, the
+// length mixed in), each multiplied into the state and the state's bits folded down — several bytes
+// a cycle where fnv1a64 takes one. Not for security; like fnv1a64, its value is part of cache file
+// names and must not change.
 uint64_t wordHash64(uint64_t hash, const void* bytes, size_t size);
+
+// wordHash64 of bytes given in pieces: value() is wordHash64(seed, every byte given so far, in
+// order), however they were split — for the checksum of a file written and read field by field.
+class WordHasher {
+public:
+    explicit WordHasher(uint64_t seed = 0) : mHash(seed) {}
+    void update(const void* bytes, size_t size);
+    uint64_t value() const;
+
+private:
+    uint64_t mHash;
+    uint64_t mPending = 0;        // the bytes of the word begun, little-endian
+    unsigned mPendingBytes = 0;   // 0..7
+    uint64_t mSize = 0;           // bytes given so far
+};
 
 // `value` as 16 lowercase hex digits.
 std::string hex16(uint64_t value);

@@ -7,7 +7,7 @@
 //
 // File layout, all integers little-endian, no padding:
 //     magic          12 bytes  "CANDELA-LOD\0"
-//     version        u32       kLodCacheVersion (1)
+//     version        u32       kLodCacheVersion (2)
 //     contentHash    u64       LodCacheKey::contentHash
 //     settingsLength u32       ≤ kLodCacheMaxSettingsLength, then that many bytes: LodCacheKey::settings
 //     framesDrawn    u64       LodCacheRecord::framesDrawn
@@ -16,7 +16,7 @@
 //             error  f32       finite, ≥ 0, not below the previous level's
 //             count  u32       indices: a positive multiple of 3, fewer than the mesh's (and the previous level's)
 //             indices u32 × count, each < the mesh's vertex count
-//     checksum       u64       FNV-1a 64 of every byte before it
+//     checksum       u64       wordHash64(0, every byte before it) (core/cache_files.h)
 
 #include "geometry/mesh_lod.h"
 
@@ -30,7 +30,8 @@
 
 namespace candela::geometry {
 
-inline constexpr uint32_t kLodCacheVersion = 1;
+// 2: the checksum is wordHash64, not FNV-1a.
+inline constexpr uint32_t kLodCacheVersion = 2;
 inline constexpr uint32_t kLodCacheMaxLevels = 16;
 inline constexpr uint32_t kLodCacheMaxSettingsLength = 4096;
 // At most this much of a cache folder's .clod files is kept (evictCacheFiles).

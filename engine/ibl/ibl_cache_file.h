@@ -13,7 +13,7 @@
 //
 // File layout, all integers little-endian, no padding:
 //     magic           12 bytes  "CANDELA-IBL\0"
-//     version         u32       kIblCacheVersion (1)
+//     version         u32       kIblCacheVersion (2)
 //     environmentHash u64       IblCacheKey::environmentHash
 //     settingsLength  u32       then that many bytes: IblCacheKey::settings (no terminator)
 //     imageCount      u32       ≤ kIblCacheMaxImages, then per image:
@@ -25,10 +25,10 @@
 //         layers      u32       1..kIblCacheMaxLayers
 //         mips        u32       1..kIblCacheMaxMips and ≤ 1 + floor(log2(max(width, height)))
 //         dataBytes   u64       == CachedImage::expectedBytes(), then the texels (CachedImage::data)
-//     checksum        u64       FNV-1a 64 of every byte before it
+//     checksum        u64       wordHash64(0, every byte before it) (core/cache_files.h)
 // The images' dataBytes sum to at most kIblCacheMaxPayloadBytes.
 
-#include "core/cache_files.h"  // fnv1a64: the settings part of file names and the checksum
+#include "core/cache_files.h"  // fnv1a64: the settings part of file names; wordHash64: the checksum
 
 #include <cstddef>
 #include <cstdint>
@@ -40,7 +40,8 @@
 
 namespace candela::ibl {
 
-inline constexpr uint32_t kIblCacheVersion = 1;
+// 2: the checksum is wordHash64, not FNV-1a (a quarter of the time to read a file).
+inline constexpr uint32_t kIblCacheVersion = 2;
 inline constexpr uint32_t kIblCacheMaxImages = 16;
 inline constexpr uint32_t kIblCacheMaxNameLength = 64;
 inline constexpr uint32_t kIblCacheMaxExtent = 16384;   // width and height

@@ -100,10 +100,11 @@ TEST(LodCacheFolder, OffIsNoneEmptyIsTheUsersLodFolderAnythingElseThatFolder) {
 }
 
 TEST(WordHash64, ValueIsFixedAndEveryByteAndTheLengthCount) {
-    // Part of cache file names: the value must not change between versions.
-    EXPECT_EQ(hex16(wordHash64(0, "", 0)), hex16(wordHash64(0, "", 0)));
+    // Part of cache file names: the value must not change between versions (pinned).
+    EXPECT_EQ(hex16(wordHash64(0, "", 0)), "0000000000000000");
     const std::string text = "levels of detail, keyed by content";
     const uint64_t h = wordHash64(0, text.data(), text.size());
+    EXPECT_EQ(hex16(h), "2fc7718f3fbb869b");
     for (size_t i = 0; i < text.size(); ++i)
         for (int bit = 0; bit < 8; ++bit) {
             std::string flipped = text;
@@ -116,6 +117,32 @@ TEST(WordHash64, ValueIsFixedAndEveryByteAndTheLengthCount) {
     // Continuing from a hash differs from starting anew; the seed matters.
     EXPECT_NE(wordHash64(h, text.data(), text.size()), h);
     EXPECT_NE(wordHash64(1, text.data(), text.size()), h);
+}
+
+TEST(WordHasher, AnySplitOfTheBytesHashesAsOneCall) {
+    std::string text;
+    for (int i = 0; i < 61; ++i) text.push_back(char(i * 37 + 11));
+    for (uint64_t seed : {uint64_t(0), uint64_t(0x1234)}) {
+        for (size_t n = 0; n <= text.size(); ++n) {
+            const uint64_t whole = wordHash64(seed, text.data(), n);
+            // Every split into two pieces, and the bytes one at a time.
+            for (size_t cut = 0; cut <= n; ++cut) {
+                WordHasher hasher(seed);
+                hasher.update(text.data(), cut);
+                hasher.update(text.data() + cut, n - cut);
+                ASSERT_EQ(hasher.value(), whole) << "length " << n << " cut at " << cut;
+            }
+            WordHasher bytewise(seed);
+            for (size_t i = 0; i < n; ++i) bytewise.update(text.data() + i, 1);
+            ASSERT_EQ(bytewise.value(), whole) << "length " << n << " byte by byte";
+        }
+    }
+    // value() does not end the stream.
+    WordHasher hasher;
+    hasher.update(text.data(), 5);
+    EXPECT_EQ(hasher.value(), wordHash64(0, text.data(), 5));
+    hasher.update(text.data() + 5, 20);
+    EXPECT_EQ(hasher.value(), wordHash64(0, text.data(), 25));
 }
 
 TEST(CacheEviction, RemovesTheLeastRecentlyUsedOfItsKindBeyondTheCap) {
