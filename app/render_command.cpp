@@ -162,6 +162,15 @@ void writeTransforms(const fs::path& file, std::vector<candela::DatasetFrame> fr
     writeText(file.string(), candela::transformsJson(frames));
 }
 
+// The public API's render options for images in files of `format`.
+candela::RenderOptions apiOptionsOf(const RenderOptions& options, assets::ImageFileFormat format) {
+    candela::RenderOptions api = apiRenderOptions(options);
+    api.dither = options.dither;
+    api.format = assets::isFloatFormat(format) ? candela::PixelFormat::Rgba32Float : candela::PixelFormat::Rgba8Srgb;
+    api.outputs = apiOutputs(options);
+    return api;
+}
+
 // Renders every image of one scene (each variant asked for, each frame of a sequence) through the
 // public API (candela::Device::renderSequence, with the flags the API does not have applied to
 // each frame's settings: engine/api/access.h) and fills `r` with what it took. Throws what the
@@ -186,10 +195,7 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
     std::vector<std::string> variants;  // "": the default materials
     if (options.variant == "all") variants = scene.variants;
     if (variants.empty()) variants.push_back(options.variant == "all" ? "" : options.variant);
-    candela::RenderOptions api = apiRenderOptions(options);
-    api.dither = options.dither;
-    api.format = assets::isFloatFormat(run.format) ? candela::PixelFormat::Rgba32Float : candela::PixelFormat::Rgba8Srgb;
-    api.outputs = apiOutputs(options);
+    candela::RenderOptions api = apiOptionsOf(options, run.format);
     const float aspect = float(options.width) / float(options.height);
     const candela::SequenceOptions sequence = sequenceOptions(options);
     std::string cameraLine;  // the last camera printed (--verbose)
@@ -467,12 +473,25 @@ int runRender(const RenderOptions& options) {
         deviceError = std::current_exception();
     }
     const double deviceMs = msSince(deviceStart);
+    // One scene: the pipelines its first frame takes whatever the scene compile on the workers
+    // while the file still loads (on an idle core, at low priority). They, and what the maps
+    // build, count as the scene's.
+    std::optional<vk::Context::PipelineCreation> pipelinesBeforeScene;
+    if (single && !pending.empty() && !deviceError) {
+        pipelinesBeforeScene = session.context().pipelineCreation();
+        const scene::Scene none;
+        try {
+            RenderSettings settings = candela::renderSettings(apiOptionsOf(options, format), none, session.environment());
+            applyRenderFlags(options, settings);
+            session.renderer().prepareFirstFrame(settings);
+        } catch (const UserError&) {
+            // Settings the frame will refuse, with this error, once it has its scene.
+        }
+    }
     // One scene: its environment's maps are read while the file still loads (the upload asks
     // again only for a scene with a sheen), timed with the environment.
     double environmentMapsMs = 0.0;
-    std::optional<vk::Context::PipelineCreation> pipelinesBeforeMaps;
     if (single && !pending.empty() && !deviceError && session.environment()) {
-        pipelinesBeforeMaps = session.context().pipelineCreation();
         const auto mapsStart = Clock::now();
         session.prepareEnvironmentMaps(options);
         environmentMapsMs = msSince(mapsStart);
@@ -487,7 +506,7 @@ int runRender(const RenderOptions& options) {
         if (deviceError) std::rethrow_exception(deviceError);
     }
     Run run{options, session, format, !single, sequence};
-    run.firstScenePipelinesFrom = pipelinesBeforeMaps;
+    run.firstScenePipelinesFrom = pipelinesBeforeScene;
     const vk::Context& context = session.context();
     const assets::Environment* environment = session.environment();
     RunReport report{.version = versionText(),

@@ -22,6 +22,9 @@ using namespace graph;
 
 namespace {
 constexpr VkFormat kLdrFormat = VK_FORMAT_R8G8B8A8_SRGB;
+// A scene frame's 8-bit target when it draws no presentable image: UNORM, the tonemap shader
+// encodes sRGB itself, which also lets it dither.
+constexpr VkFormat kSceneLdrFormat = VK_FORMAT_R8G8B8A8_UNORM;
 }  // namespace
 
 FrameBuilder::FrameBuilder(vk::Context& context, SceneState& scene, shader::ParameterRegistry& parameters)
@@ -33,6 +36,20 @@ void FrameBuilder::prepareAhead(const passes::MaterialKeys& keys, const RenderSe
     std::vector<shading::LightData> data;
     for (const scene::Light& light : lights) data.push_back(gpu_scene::lightData(light));
     mForward.prepareAhead(keys, firstFrameVariant(settings), !lights.empty(), passes::lightTypeBits(data));
+    prepareTonemapAhead(settings, std::any_of(keys.keys.begin(), keys.keys.end(), [](const passes::MaterialKey& k) { return k.transmissive; }));
+}
+
+void FrameBuilder::prepareTonemapAhead(const RenderSettings& settings, bool transmissive) {
+    if (settings.precompile == options::Precompile::Off) return;
+    FrameFacts facts = this->facts(settings, msaa(settings.msaa).samples);
+    facts.environment = settings.environment != nullptr;  // the maps may be given it only later
+    facts.transmissiveDraws = transmissive && planDrawList(facts).transmissionRange;
+    const FramePlan plan = planFrame(facts);
+    using SkyDraw = passes::TonemapPass::SkyDraw;
+    const SkyDraw sky = plan.sky != SkyPlacement::Tonemap ? SkyDraw::None
+                        : plan.skyWhereUncovered          ? SkyDraw::WhereUncovered
+                                                          : SkyDraw::Everywhere;
+    mTonemap.prepare(mForward.workers(), kSceneLdrFormat, tonemapOf(settings, plan), sky);
 }
 
 std::optional<passes::FrameVariant> FrameBuilder::firstFrameVariant(const RenderSettings& settings) const {
@@ -353,11 +370,10 @@ passes::DrawTarget FrameBuilder::addDraws(Frame& frame, const FramePlan& plan, c
 void FrameBuilder::addTonemap(Frame& frame, const RenderSettings& settings, const FramePlan& plan, std::optional<TextureId> target,
                               const scene::ViewSetup& view, const passes::IblInputs* ibl, TextureId depth) {
     RenderGraph& graph = *frame.graph;
-    // UNORM target: the tonemap shader encodes sRGB itself, which also lets it dither.
     const TextureId ldr = target ? *target
                                  : graph.createTexture("ldr", {.width = settings.width,
                                                                .height = settings.height,
-                                                               .format = VK_FORMAT_R8G8B8A8_UNORM});
+                                                               .format = kSceneLdrFormat});
     std::optional<passes::TonemapPass::Sky> sky;
     if (plan.sky == SkyPlacement::Tonemap)
         sky = passes::TonemapPass::Sky{

@@ -49,7 +49,14 @@ public:
     // `lights`: queues its forward pipelines for a frame like the last one, or before any for the
     // one `settings` give (firstFrameVariant) (ForwardPass::prepareAhead), so that they compile
     // while it uploads.
+    // The tonemap's pipelines too (prepareTonemapAhead).
     void prepareAhead(const passes::MaterialKeys& keys, const RenderSettings& settings, std::span<const scene::Light> lights);
+    // Queues on the forward pass's workers the tonemap pipelines of a first scene frame of
+    // `settings` whose draws include transmissive ones or not (the frame plan of the facts the
+    // settings and the device give), so that they compile before that frame — while its scene
+    // loads or uploads. A frame planned otherwise (transmissive draws all culled) builds its own at
+    // its tonemap and leaves these unused. Nothing with --precompile off.
+    void prepareTonemapAhead(const RenderSettings& settings, bool transmissive);
     // The forward variant bits (passes::FrameVariant, lights aside) of a scene frame of `settings`,
     // known before its scene and environment are uploaded: what buildScene will find, from the
     // same settings (GpuTest.AFirstScenesPipelinesCompileWhileItUploadsForTheFrameItsSettingsGive).
@@ -74,7 +81,10 @@ public:
     vk::MsaaChoice msaa(std::optional<uint32_t> requested) const;
     passes::ForwardPass& forward() { return mForward; }
     // Waits for the pipelines queued ahead of use (RenderSettings::precompile) to be built.
-    void finishPipelineBuilds() { mForward.finishBuilds(); }
+    void finishPipelineBuilds() {
+        mForward.finishBuilds();
+        mTonemap.finishBuilds();
+    }
 
     // The view `camera` selects for `scene` at `aspect` (width / height). With an animated `pose`,
     // glTF cameras are where the pose puts them and framing fits the pose as it stands.

@@ -291,11 +291,55 @@ TEST_F(GpuTest, AFirstScenesPipelinesCompileWhileItUploadsForTheFrameItsSettings
         EXPECT_EQ(context().pipelineCreation().count - before, withoutAhead) << "the variants built ahead were the frame's";
         EXPECT_EQ(frame.rgba8, reference.rgba8);
     }
-    // With MSAA the frame plan chooses alpha to coverage: nothing is guessed, nothing queued.
+    // With MSAA the frame plan chooses alpha to coverage: no forward variant is guessed; the
+    // tonemap's one pipeline (no sky: no environment) is queued, which does not depend on it.
     RenderSettings msaa = cases[0];
     msaa.msaa = 4;
     Renderer renderer(context());
-    EXPECT_EQ(pipelinesBuiltByUpload(context(), renderer, msaa), 0u);
+    EXPECT_EQ(pipelinesBuiltByUpload(context(), renderer, msaa), 1u);
+}
+
+TEST_F(GpuTest, AFirstFramesTonemapPipelinesCompileBeforeItsSceneIsKnown) {
+    // Renderer::prepareFirstFrame, given the settings without their scene (as `candela render`
+    // while the file loads), queues the tonemap's pipelines of a frame without transmissive draws:
+    // with the sky where nothing was drawn, the covered pixels' and the sky's. The frame then
+    // creates no pipeline a renderer that never prepared would not. A scene with transmissive draws
+    // takes other ones: what was prepared stays unused, and its frame builds its own.
+    const scene::Scene grid = assets::makeSphereGrid();
+    scene::Scene glass = assets::makeSphereGrid(2);
+    glass.materials[0].transmissionFactor = 1.0f;  // one transmissive sphere
+    const assets::Environment sky = assets::makeProceduralSky();
+    for (const scene::Scene* scene : {&grid, static_cast<const scene::Scene*>(&glass)}) {
+        SCOPED_TRACE(scene == &grid ? "sphere grid" : "a transmissive scene");
+        RenderSettings settings{.width = 48, .height = 27, .scene = scene, .msaa = 1, .environment = &sky};
+        settings.precompile = options::Precompile::Off;
+        uint64_t before = context().pipelineCreation().count;
+        CapturedFrame reference;
+        {
+            Renderer renderer(context());
+            reference = renderer.capture(settings);
+        }
+        const uint64_t withoutAhead = context().pipelineCreation().count - before;
+        settings.precompile = options::Precompile::Frame;
+        before = context().pipelineCreation().count;
+        Renderer renderer(context());
+        RenderSettings early = settings;
+        early.scene = nullptr;
+        const uint64_t beforePrepare = context().pipelineCreation().count;
+        renderer.prepareFirstFrame(early);
+        renderer.finishPipelineBuilds();
+        EXPECT_EQ(context().pipelineCreation().count - beforePrepare, 2u) << "the covered pixels' and the sky's";
+        const CapturedFrame frame = renderer.capture(settings);
+        EXPECT_EQ(context().pipelineCreation().count - before, withoutAhead + (scene == &glass ? 2u : 0u))
+            << "the frame took the pipelines prepared (a transmissive scene's: none of them)";
+        EXPECT_EQ(frame.rgba8, reference.rgba8);
+    }
+    // --precompile off prepares nothing.
+    Renderer renderer(context());
+    const uint64_t before = context().pipelineCreation().count;
+    renderer.prepareFirstFrame(RenderSettings{.width = 48, .height = 27, .msaa = 1, .precompile = options::Precompile::Off, .environment = &sky});
+    renderer.finishPipelineBuilds();
+    EXPECT_EQ(context().pipelineCreation().count, before);
 }
 
 TEST_F(GpuTest, RendererDestroyedWhileBackgroundBuildsRunLeaksNothing) {

@@ -89,6 +89,9 @@ public:
     void prepareDebugViews(const FrameVariant& frame);
     // Waits for every queued pipeline build (benchmarks: a measurement that must not include them).
     void finishBuilds() { mPipelines.finish(); }
+    // The workers this pass builds pipelines ahead on, which other passes' ahead builds share
+    // (FrameBuilder: TonemapPass::prepare). Lives as long as the pass.
+    WorkerPool& workers() { return mWorkers; }
     // Forward variants built so far, and queued builds not yet drawn with (of which finished).
     struct BuildCounts {
         size_t built = 0, queued = 0, queuedFinished = 0;

@@ -1,5 +1,6 @@
 #include "passes/post/tonemap_pass.h"
 
+#include "passes/drawing/draw_target.h"
 #include "passes/recording/fullscreen.h"
 #include "shared/specialization_ids.h"
 #include "shared/tonemap.h"
@@ -20,6 +21,45 @@ bool isSrgbFormat(VkFormat format) {
 TonemapPass::TonemapPass(vk::Context& context)
     : mContext(context),
       mSampler(vk::createSampler(context, vk::kNearestSampler)), mTrilinear(vk::createSampler(context, {})) {}
+
+std::vector<TonemapPass::Variant> TonemapPass::variants(VkFormat format, const TonemapSettings& settings, SkyDraw sky,
+                                                      VkFormat depthFormat) {
+    const std::vector<uint32_t> specialization =
+        shader::specializationValues({{CANDELA_SPEC_TONEMAP_OPERATOR, static_cast<uint32_t>(settings.op)},
+                                      {CANDELA_SPEC_TONEMAP_ENCODE_SRGB, !isSrgbFormat(format)},
+                                      {CANDELA_SPEC_TONEMAP_DITHER, settings.dither},
+                                      {CANDELA_SPEC_TONEMAP_BACKGROUND, settings.background.has_value()}});
+    // Program: 0 tonemap.frag, 1 tonemap_sky.frag; depth: 0 none, 1 covered pixels (stored depth
+    // above the far plane's 0), 2 the sky's (stored depth 0). The key's last two entries select
+    // them (they are no constants of the shaders).
+    const auto variant = [&](uint32_t program, uint32_t depth) {
+        std::vector<uint32_t> key = specialization;
+        key.insert(key.end(), {program, depth});
+        return Variant{.key = {format, std::move(key)},
+                       .fragment = program ? "tonemap_sky.frag" : "tonemap.frag",
+                       .desc = {.colorFormats = {format},
+                                .depthFormat = depth ? depthFormat : VK_FORMAT_UNDEFINED,
+                                .depthTest = depth != 0,
+                                .depthCompare = depth == 1 ? VK_COMPARE_OP_LESS : VK_COMPARE_OP_GREATER_OR_EQUAL,
+                                .specialization = specialization}};
+    };
+    switch (sky) {
+        case SkyDraw::None: return {variant(0, 0)};
+        case SkyDraw::Everywhere: return {variant(1, 0)};
+        case SkyDraw::WhereUncovered: return {variant(0, 1), variant(1, 2)};
+    }
+    return {};
+}
+
+void TonemapPass::prepare(WorkerPool& workers, VkFormat targetFormat, const TonemapSettings& settings, SkyDraw sky) {
+    for (Variant& v : variants(targetFormat, settings, sky, kDepthFormat))
+        mPipelines.prepare(
+            workers, v.key,
+            [context = &mContext, fragment = v.fragment, desc = std::move(v.desc)] {
+                return vk::Pipeline::graphics(*context, "fullscreen.vert", fragment, desc);
+            },
+            WorkerPool::Priority::Soon);
+}
 
 TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, const TonemapSettings& settings,
                            shader::ParameterRegistry* parameters, const Sky* sky) {
@@ -43,36 +83,16 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
             d.hdr = builder.sample(hdr);
             d.target = builder.write(target, Usage::ColorAttachment, WriteMode::Discard);
             const VkFormat format = builder.desc(target).format;
-            const std::vector<uint32_t> specialization =
-                shader::specializationValues({{CANDELA_SPEC_TONEMAP_OPERATOR, static_cast<uint32_t>(settings.op)},
-                                              {CANDELA_SPEC_TONEMAP_ENCODE_SRGB, !isSrgbFormat(format)},
-                                              {CANDELA_SPEC_TONEMAP_DITHER, settings.dither},
-                                              {CANDELA_SPEC_TONEMAP_BACKGROUND, settings.background.has_value()}});
             if (sky && sky->depth.valid()) d.depth = builder.read(sky->depth, Usage::DepthRead);
-            const VkFormat depthFormat = d.depth.valid() ? builder.desc(d.depth).format : VK_FORMAT_UNDEFINED;
-            // Program: 0 tonemap.frag, 1 tonemap_sky.frag; depth: 0 none, 1 covered pixels (stored
-            // depth above the far plane's 0), 2 the sky's (stored depth 0). The key's last two
-            // entries select them (they are no constants of the shaders).
-            const auto pipeline = [&](uint32_t program, uint32_t depth) {
-                std::vector<uint32_t> key = specialization;
-                key.insert(key.end(), {program, depth});
-                return &mPipelines.get(mContext, {format, key}, [&] {
-                    return vk::Pipeline::graphics(mContext, "fullscreen.vert", program ? "tonemap_sky.frag" : "tonemap.frag",
-                                                  {.colorFormats = {format},
-                                                   .depthFormat = depth ? depthFormat : VK_FORMAT_UNDEFINED,
-                                                   .depthTest = depth != 0,
-                                                   .depthCompare = depth == 1 ? VK_COMPARE_OP_LESS : VK_COMPARE_OP_GREATER_OR_EQUAL,
-                                                   .specialization = specialization});
-                });
-            };
-            if (!sky) {
-                d.pipeline = pipeline(0, 0);
-            } else if (d.depth.valid()) {
-                d.pipeline = pipeline(0, 1);
-                d.skyPipeline = pipeline(1, 2);
-            } else {
-                d.skyPipeline = pipeline(1, 0);
-            }
+            const SkyDraw skyDraw = !sky ? SkyDraw::None : d.depth.valid() ? SkyDraw::WhereUncovered : SkyDraw::Everywhere;
+            std::vector<const vk::Pipeline*> pipelines;
+            for (const Variant& v : variants(format, settings, skyDraw, d.depth.valid() ? builder.desc(d.depth).format : VK_FORMAT_UNDEFINED))
+                pipelines.push_back(&mPipelines.get(mContext, v.key, [&] {
+                    return vk::Pipeline::graphics(mContext, "fullscreen.vert", v.fragment, v.desc);
+                }));
+            if (skyDraw == SkyDraw::None) d.pipeline = pipelines[0];
+            else if (skyDraw == SkyDraw::Everywhere) d.skyPipeline = pipelines[0];
+            else d.pipeline = pipelines[0], d.skyPipeline = pipelines[1];
             d.push.params.background = settings.background ? glm::vec4(*settings.background, 1.0f) : glm::vec4(0.0f);
             d.push.params.exposureEv = settings.exposureEv;
             if (sky) {

@@ -4,6 +4,7 @@
 // under the image first when it is given (tonemap_sky.frag), instead of a skybox pass: one pass
 // over the image fewer where nothing reads the HDR image with its sky.
 
+#include "core/worker_pool.h"
 #include "graph/render_graph.h"
 #include "options/tonemap_operator.h"
 #include "shader/parameter_registry.h"
@@ -48,7 +49,29 @@ public:
                          const TonemapSettings& settings, shader::ParameterRegistry* parameters = nullptr,
                          const Sky* sky = nullptr);
 
+    // Where a pass draws the sky: not at all, under every pixel, or only where nothing was drawn
+    // (add() with a Sky, and the Sky's depth).
+    enum class SkyDraw : uint8_t { None, Everywhere, WhereUncovered };
+    // Queues on `workers` the builds of the pipelines add() takes for a `target` of `targetFormat`
+    // with `settings` and `sky` (the depth of WhereUncovered: kDepthFormat), so that a first frame
+    // finds them built (PipelineCache::prepare). Nothing for those built or queued already.
+    // Precondition: `workers` outlives this pass's builds (PipelineCache::prepare).
+    void prepare(WorkerPool& workers, VkFormat targetFormat, const TonemapSettings& settings, SkyDraw sky);
+    // Waits for the builds prepare() queued (benchmarks).
+    void finishBuilds() { mPipelines.finish(); }
+
 private:
+    // A pipeline of the pass: its key in mPipelines and how it is built.
+    struct Variant {
+        std::pair<VkFormat, std::vector<uint32_t>> key;
+        const char* fragment;
+        vk::GraphicsPipelineDesc desc;
+    };
+    // The pipelines add() draws with: for SkyDraw::WhereUncovered the covered pixels' then the
+    // sky's, else the one. `depthFormat`: the scene's depth, for WhereUncovered.
+    static std::vector<Variant> variants(VkFormat targetFormat, const TonemapSettings& settings, SkyDraw sky,
+                                         VkFormat depthFormat);
+
     vk::Context& mContext;
     // Pipelines by target format and specialization (operator, sRGB encode, dither, background; sky).
     vk::PipelineCache<std::pair<VkFormat, std::vector<uint32_t>>> mPipelines;
