@@ -14,6 +14,10 @@ layout(constant_id = CANDELA_SPEC_TONEMAP_OPERATOR) const uint kOperator = CANDE
 layout(constant_id = CANDELA_SPEC_TONEMAP_ENCODE_SRGB) const bool kEncodeSrgb = true;
 layout(constant_id = CANDELA_SPEC_TONEMAP_DITHER) const bool kDither = false;
 layout(constant_id = CANDELA_SPEC_TONEMAP_BACKGROUND) const bool kBackground = true;
+// The sky's pixels hold the image's clear value, transparent black: drawn only where nothing was
+// drawn, in a frame without blended draws (which leave the depth as it was). The image is then not
+// read, which on llvmpipe is a fifth of the pass.
+layout(constant_id = CANDELA_SPEC_TONEMAP_IMAGE_CLEAR) const bool kImageClear = false;
 
 layout(set = 0, binding = 0) uniform sampler2D hdrImage;
 #ifdef CANDELA_TONEMAP_SKY
@@ -43,7 +47,8 @@ float ditherNoise(uvec2 p) {
 }
 
 void main() {
-    vec4 hdr = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0);
+    vec4 hdr = vec4(0.0f);
+    if (!kImageClear) hdr = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0);
 #ifdef CANDELA_TONEMAP_SKY
     // Under the image, as the skybox pass blends it: colour += (1 − coverage) · sky, coverage 1.
     vec3 behind = skyRadiance(sky.rays, gl_FragCoord.xy, sky.intensityLod.y, sky.intensityLod.x);

@@ -85,7 +85,9 @@ std::vector<std::string> explainPasses(const FramePlan& plan, const FrameFacts& 
                       (plan.tonemapLook == TonemapLook::DataAsIs ? " (shown as data: linear tonemap at exposure 0)"
                                                                   : " (tonemapped as the image is)"));
     if (plan.sky == SkyPlacement::Tonemap)
-        out.emplace_back(plan.skyWhereUncovered
+        out.emplace_back(plan.skyOverClearImage ? "sky: composited by the tonemap where nothing was drawn (depth-tested, the "
+                                                  "image not read there: no blended draws; no skybox pass)"
+                         : plan.skyWhereUncovered
                              ? "sky: composited by the tonemap where nothing was drawn (depth-tested; no skybox pass)"
                              : "sky: composited under the image by the tonemap (no skybox pass)");
     for (const std::string& line : explainLeftOut(plan, facts, {PlannedPart::Skybox})) out.push_back(line);

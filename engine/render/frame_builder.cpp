@@ -36,17 +36,24 @@ void FrameBuilder::prepareAhead(const passes::MaterialKeys& keys, const RenderSe
     std::vector<shading::LightData> data;
     for (const scene::Light& light : lights) data.push_back(gpu_scene::lightData(light));
     mForward.prepareAhead(keys, firstFrameVariant(settings), !lights.empty(), passes::lightTypeBits(data));
-    prepareTonemapAhead(settings, std::any_of(keys.keys.begin(), keys.keys.end(), [](const passes::MaterialKey& k) { return k.transmissive; }));
+    prepareTonemapAhead(settings, &keys);
 }
 
-void FrameBuilder::prepareTonemapAhead(const RenderSettings& settings, bool transmissive) {
+void FrameBuilder::prepareTonemapAhead(const RenderSettings& settings, const passes::MaterialKeys* keys) {
     if (settings.precompile == options::Precompile::Off) return;
     FrameFacts facts = this->facts(settings, msaa(settings.msaa).samples);
     facts.environment = settings.environment != nullptr;  // the maps may be given it only later
-    facts.transmissiveDraws = transmissive && planDrawList(facts).transmissionRange;
+    // The ranges the scene's materials fill when every draw is drawn.
+    const bool transmissionRange = planDrawList(facts).transmissionRange;
+    for (const passes::MaterialKey& key : keys ? keys->keys : std::vector<passes::MaterialKey>{}) {
+        const passes::DrawRange range = passes::rangeOf(key, transmissionRange);
+        facts.transmissiveDraws = facts.transmissiveDraws || range == passes::DrawRange::Transmissive;
+        facts.blendedDraws = facts.blendedDraws || range == passes::DrawRange::Blended;
+    }
     const FramePlan plan = planFrame(facts);
     using SkyDraw = passes::TonemapPass::SkyDraw;
     const SkyDraw sky = plan.sky != SkyPlacement::Tonemap ? SkyDraw::None
+                        : plan.skyOverClearImage          ? SkyDraw::WhereUncoveredImageClear
                         : plan.skyWhereUncovered          ? SkyDraw::WhereUncovered
                                                           : SkyDraw::Everywhere;
     mTonemap.prepare(mForward.workers(), kSceneLdrFormat, tonemapOf(settings, plan), sky);
@@ -380,7 +387,8 @@ void FrameBuilder::addTonemap(Frame& frame, const RenderSettings& settings, cons
             .specular = ibl->maps.specular,
             .params = {.rays = passes::skyRays(view.viewProjection, view.eye, ibl->params.rotation, settings.width, settings.height),
                        .intensityLod = glm::vec4(ibl->params.intensity, ibl->params.skyboxLod, 0.0f, 0.0f)},
-            .depth = plan.skyWhereUncovered ? depth : TextureId{}};
+            .depth = plan.skyWhereUncovered ? depth : TextureId{},
+            .imageClear = plan.skyOverClearImage};
     const passes::TonemapSettings tonemap = tonemapOf(settings, plan);
     frame.solidBackground = tonemap.background.has_value();
     frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemap, &mParameters, sky ? &*sky : nullptr);

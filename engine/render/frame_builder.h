@@ -52,11 +52,12 @@ public:
     // The tonemap's pipelines too (prepareTonemapAhead).
     void prepareAhead(const passes::MaterialKeys& keys, const RenderSettings& settings, std::span<const scene::Light> lights);
     // Queues on the forward pass's workers the tonemap pipelines of a first scene frame of
-    // `settings` whose draws include transmissive ones or not (the frame plan of the facts the
-    // settings and the device give), so that they compile before that frame — while its scene
-    // loads or uploads. A frame planned otherwise (transmissive draws all culled) builds its own at
-    // its tonemap and leaves these unused. Nothing with --precompile off.
-    void prepareTonemapAhead(const RenderSettings& settings, bool transmissive);
+    // `settings` drawing every draw of materials with `keys` (null: none transmissive or blended;
+    // the frame plan of the facts the settings and the device give), so that they compile before
+    // that frame — while its scene loads or uploads. A frame planned otherwise (its transmissive or
+    // blended draws all culled) builds its own at its tonemap and leaves these unused. Nothing with
+    // --precompile off.
+    void prepareTonemapAhead(const RenderSettings& settings, const passes::MaterialKeys* keys);
     // The forward variant bits (passes::FrameVariant, lights aside) of a scene frame of `settings`,
     // known before its scene and environment are uploaded: what buildScene will find, from the
     // same settings (GpuTest.AFirstScenesPipelinesCompileWhileItUploadsForTheFrameItsSettingsGive).

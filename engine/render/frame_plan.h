@@ -131,6 +131,10 @@ struct FramePlan {
     // and may let the sky through). Depth-tested, so the rasterizer leaves covered pixels out of
     // the sky's program, which a branch in the shader does not do on llvmpipe.
     bool skyWhereUncovered = false;
+    // And no blended draws either, which leave the depth as it was but not the image: where the
+    // depth is the far plane's the image then holds its clear value, which the sky's draw does not
+    // read (TonemapPass::Sky::imageClear).
+    bool skyOverClearImage = false;
     bool sheenLut = false;       // the layered program reads the sheen LUT (computed once, then imported)
     bool msaaExpand = false;     // visibility path at MSAA: forward draws after it need a multisampled image
     bool pointsAndLinesPass = false;  // visibility path: forward_points_lines draws the points and lines

@@ -121,10 +121,10 @@ public:
     void prepareEnvironment(const assets::Environment* environment, const ibl::IblQuality& quality,
                             const std::filesystem::path& cacheDir);
     // Queues on the workers the builds of the pipelines a first frame of `settings` will take
-    // whatever its scene (the tonemap's, for a scene without transmissive draws:
+    // whatever its scene (the tonemap's, for a scene without transmissive or blended draws:
     // FrameBuilder::prepareTonemapAhead), so that they compile while the scene loads. settings.scene
     // may be null. Nothing with --precompile off.
-    void prepareFirstFrame(const RenderSettings& settings) { mBuilder.prepareTonemapAhead(settings, false); }
+    void prepareFirstFrame(const RenderSettings& settings) { mBuilder.prepareTonemapAhead(settings, nullptr); }
     // Frees the device memory of the scene last drawn (after waiting for the frames in flight),
     // so that a run over many scenes holds one at a time; the next frame uploads its scene,
     // whatever its address. The environment's maps, the pipelines and the caches stay.

@@ -36,6 +36,7 @@
 #define CANDELA_SPEC_TONEMAP_ENCODE_SRGB 1
 #define CANDELA_SPEC_TONEMAP_DITHER 2
 #define CANDELA_SPEC_TONEMAP_BACKGROUND 3
+#define CANDELA_SPEC_TONEMAP_IMAGE_CLEAR 4  // tonemap_sky.frag: the image holds its clear value (not read)
 
 // ---- ibl_filter_cube.comp: the lobe's weights (GGX prefilter, else the irradiance cube).
 #define CANDELA_SPEC_FILTER_WEIGHT_BY_COSINE 0

@@ -159,13 +159,14 @@ TEST_F(DebugViewTest, IsAGraphVariantWithoutTheSkybox) {
               lines.end());
     EXPECT_NE(std::find(lines.begin(), lines.end(), "left out: skybox (debug view)"), lines.end());
     // Without the debug view the sky is back: composited by the tonemap (depth-tested at one
-    // sample, under the resolved image with MSAA, a GPU's default), or by the skybox pass into a
-    // float capture.
+    // sample, the grid having no blended draws, under the resolved image with MSAA, a GPU's
+    // default), or by the skybox pass into a float capture.
     settings.debugView = options::DebugView::None;
     renderer().capture(settings);
     const std::vector<std::string> shaded = renderer().explain();
     const std::string skyLine = renderer().msaa(settings.msaa).samples == 1
-                                ? "sky: composited by the tonemap where nothing was drawn (depth-tested; no skybox pass)"
+                                ? "sky: composited by the tonemap where nothing was drawn (depth-tested, the image not "
+                                  "read there: no blended draws; no skybox pass)"
                                 : "sky: composited under the image by the tonemap (no skybox pass)";
     EXPECT_NE(std::find(shaded.begin(), shaded.end(), skyLine), shaded.end());
     settings.floatOutput = true;

@@ -19,6 +19,8 @@
 #include <fstream>
 #include <iterator>
 #include <random>
+#include <tuple>
+#include <vector>
 
 namespace candela::test {
 namespace {
@@ -301,16 +303,21 @@ TEST_F(GpuTest, AFirstScenesPipelinesCompileWhileItUploadsForTheFrameItsSettings
 
 TEST_F(GpuTest, AFirstFramesTonemapPipelinesCompileBeforeItsSceneIsKnown) {
     // Renderer::prepareFirstFrame, given the settings without their scene (as `candela render`
-    // while the file loads), queues the tonemap's pipelines of a frame without transmissive draws:
-    // with the sky where nothing was drawn, the covered pixels' and the sky's. The frame then
-    // creates no pipeline a renderer that never prepared would not. A scene with transmissive draws
-    // takes other ones: what was prepared stays unused, and its frame builds its own.
+    // while the file loads), queues the tonemap's pipelines of a frame without transmissive or
+    // blended draws: with the sky where nothing was drawn, the covered pixels' and the sky's (which
+    // does not read the image). The frame then creates no pipeline a renderer that never prepared
+    // would not. A scene with transmissive draws takes other ones: what was prepared stays unused,
+    // and its frame builds its own two; one with blended draws, the sky's that reads the image.
     const scene::Scene grid = assets::makeSphereGrid();
     scene::Scene glass = assets::makeSphereGrid(2);
     glass.materials[0].transmissionFactor = 1.0f;  // one transmissive sphere
+    scene::Scene blended = assets::makeSphereGrid(2);
+    blended.materials[0].alphaMode = scene::AlphaMode::Blend;
     const assets::Environment sky = assets::makeProceduralSky();
-    for (const scene::Scene* scene : {&grid, static_cast<const scene::Scene*>(&glass)}) {
-        SCOPED_TRACE(scene == &grid ? "sphere grid" : "a transmissive scene");
+    const std::vector<std::tuple<const scene::Scene*, const char*, uint64_t>> scenes = {
+        {&grid, "sphere grid", 0}, {&glass, "a transmissive scene", 2}, {&blended, "a blended draw", 1}};
+    for (const auto& [scene, name, extra] : scenes) {
+        SCOPED_TRACE(name);
         RenderSettings settings{.width = 48, .height = 27, .scene = scene, .msaa = 1, .environment = &sky};
         settings.precompile = options::Precompile::Off;
         uint64_t before = context().pipelineCreation().count;
@@ -330,8 +337,7 @@ TEST_F(GpuTest, AFirstFramesTonemapPipelinesCompileBeforeItsSceneIsKnown) {
         renderer.finishPipelineBuilds();
         EXPECT_EQ(context().pipelineCreation().count - beforePrepare, 2u) << "the covered pixels' and the sky's";
         const CapturedFrame frame = renderer.capture(settings);
-        EXPECT_EQ(context().pipelineCreation().count - before, withoutAhead + (scene == &glass ? 2u : 0u))
-            << "the frame took the pipelines prepared (a transmissive scene's: none of them)";
+        EXPECT_EQ(context().pipelineCreation().count - before, withoutAhead + extra) << "the frame took the pipelines prepared";
         EXPECT_EQ(frame.rgba8, reference.rgba8);
     }
     // --precompile off prepares nothing.

@@ -27,12 +27,6 @@ scene::LodLevel levelOf(const scene::Scene& scene, const scene::Draw& draw, cons
     return chain.levels[geometry::selectLod(chain, scale, geometry::pixelsPerUnit(view, height, draw.bounds), maxPixels)];
 }
 
-DrawRange rangeOf(const MaterialKey& key, bool transmission) {
-    if (key.transmissive && transmission) return DrawRange::Transmissive;
-    if (key.blend) return DrawRange::Blended;
-    if (key.topology != scene::Topology::Triangles) return DrawRange::PointsAndLines;
-    return key.alphaMask ? DrawRange::Masked : DrawRange::Opaque;
-}
 
 bool sortedBackToFront(DrawRange range) { return range == DrawRange::Transmissive || range == DrawRange::Blended; }
 
@@ -43,6 +37,13 @@ std::string formatPixels(float pixels) {
 }
 
 }  // namespace
+
+DrawRange rangeOf(const MaterialKey& key, bool transmission) {
+    if (key.transmissive && transmission) return DrawRange::Transmissive;
+    if (key.blend) return DrawRange::Blended;
+    if (key.topology != scene::Topology::Triangles) return DrawRange::PointsAndLines;
+    return key.alphaMask ? DrawRange::Masked : DrawRange::Opaque;
+}
 
 const char* drawRangeName(DrawRange range) {
     switch (range) {

@@ -71,6 +71,10 @@ struct MaterialKeys {
     uint32_t keyOf(uint32_t material, const scene::Draw& draw) const;
 };
 
+// The range a draw of a material with `key` goes in; `transmission`: transmissive draws get their
+// own range (DrawListPlan::transmissionRange), else they are drawn with the others of their alpha mode.
+DrawRange rangeOf(const MaterialKey& key, bool transmission);
+
 // One draw the frame submits.
 struct DrawListItem {
     uint32_t draw = 0;       // index into the frame's draws (the scene's, or its pose's: same order)

@@ -32,8 +32,10 @@ std::vector<TonemapPass::Variant> TonemapPass::variants(VkFormat format, const T
     // Program: 0 tonemap.frag, 1 tonemap_sky.frag; depth: 0 none, 1 covered pixels (stored depth
     // above the far plane's 0), 2 the sky's (stored depth 0). The key's last two entries select
     // them (they are no constants of the shaders).
-    const auto variant = [&](uint32_t program, uint32_t depth) {
-        std::vector<uint32_t> key = specialization;
+    const auto variant = [&](uint32_t program, uint32_t depth, bool imageClear = false) {
+        std::vector<uint32_t> values = specialization;
+        shader::setSpecialization(values, CANDELA_SPEC_TONEMAP_IMAGE_CLEAR, imageClear);
+        std::vector<uint32_t> key = values;
         key.insert(key.end(), {program, depth});
         return Variant{.key = {format, std::move(key)},
                        .fragment = program ? "tonemap_sky.frag" : "tonemap.frag",
@@ -41,12 +43,13 @@ std::vector<TonemapPass::Variant> TonemapPass::variants(VkFormat format, const T
                                 .depthFormat = depth ? depthFormat : VK_FORMAT_UNDEFINED,
                                 .depthTest = depth != 0,
                                 .depthCompare = depth == 1 ? VK_COMPARE_OP_LESS : VK_COMPARE_OP_GREATER_OR_EQUAL,
-                                .specialization = specialization}};
+                                .specialization = std::move(values)}};
     };
     switch (sky) {
         case SkyDraw::None: return {variant(0, 0)};
         case SkyDraw::Everywhere: return {variant(1, 0)};
         case SkyDraw::WhereUncovered: return {variant(0, 1), variant(1, 2)};
+        case SkyDraw::WhereUncoveredImageClear: return {variant(0, 1), variant(1, 2, true)};
     }
     return {};
 }
@@ -84,7 +87,10 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
             d.target = builder.write(target, Usage::ColorAttachment, WriteMode::Discard);
             const VkFormat format = builder.desc(target).format;
             if (sky && sky->depth.valid()) d.depth = builder.read(sky->depth, Usage::DepthRead);
-            const SkyDraw skyDraw = !sky ? SkyDraw::None : d.depth.valid() ? SkyDraw::WhereUncovered : SkyDraw::Everywhere;
+            const SkyDraw skyDraw = !sky                ? SkyDraw::None
+                                    : !d.depth.valid()  ? SkyDraw::Everywhere
+                                    : sky->imageClear   ? SkyDraw::WhereUncoveredImageClear
+                                                        : SkyDraw::WhereUncovered;
             std::vector<const vk::Pipeline*> pipelines;
             for (const Variant& v : variants(format, settings, skyDraw, d.depth.valid() ? builder.desc(d.depth).format : VK_FORMAT_UNDEFINED))
                 pipelines.push_back(&mPipelines.get(mContext, v.key, [&] {
@@ -92,7 +98,7 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
                 }));
             if (skyDraw == SkyDraw::None) d.pipeline = pipelines[0];
             else if (skyDraw == SkyDraw::Everywhere) d.skyPipeline = pipelines[0];
-            else d.pipeline = pipelines[0], d.skyPipeline = pipelines[1];
+            else d.pipeline = pipelines[0], d.skyPipeline = pipelines[1];  // where uncovered
             d.push.params.background = settings.background ? glm::vec4(*settings.background, 1.0f) : glm::vec4(0.0f);
             d.push.params.exposureEv = settings.exposureEv;
             if (sky) {

@@ -39,21 +39,24 @@ public:
     // With the sky's `depth` (the scene's reverse-Z depth at the target's size, one sample), the
     // sky is computed only where nothing was drawn (depth 0): the pass draws twice, the covered
     // pixels without the sky and the others with it, each depth-tested, so that the rasterizer
-    // leaves the sky's program out of covered blocks (on llvmpipe a branch would not).
+    // leaves the sky's program out of covered blocks (on llvmpipe a branch would not). With
+    // `imageClear` too (the frame has no blended draws, which leave the depth as it was), the sky's
+    // pixels hold `hdr`'s clear value: the sky's draw does not read it.
     struct Sky {
         graph::TextureId specular;
         shading::TonemapSky params;
         graph::TextureId depth;
+        bool imageClear = false;
     };
     graph::TextureId add(graph::RenderGraph& graph, graph::TextureId hdr, graph::TextureId target,
                          const TonemapSettings& settings, shader::ParameterRegistry* parameters = nullptr,
                          const Sky* sky = nullptr);
 
     // Where a pass draws the sky: not at all, under every pixel, or only where nothing was drawn
-    // (add() with a Sky, and the Sky's depth).
-    enum class SkyDraw : uint8_t { None, Everywhere, WhereUncovered };
+    // (add() with a Sky, and the Sky's depth), there reading the image or not (Sky::imageClear).
+    enum class SkyDraw : uint8_t { None, Everywhere, WhereUncovered, WhereUncoveredImageClear };
     // Queues on `workers` the builds of the pipelines add() takes for a `target` of `targetFormat`
-    // with `settings` and `sky` (the depth of WhereUncovered: kDepthFormat), so that a first frame
+    // with `settings` and `sky` (the depth where uncovered: kDepthFormat), so that a first frame
     // finds them built (PipelineCache::prepare). Nothing for those built or queued already.
     // Precondition: `workers` outlives this pass's builds (PipelineCache::prepare).
     void prepare(WorkerPool& workers, VkFormat targetFormat, const TonemapSettings& settings, SkyDraw sky);
@@ -67,8 +70,8 @@ private:
         const char* fragment;
         vk::GraphicsPipelineDesc desc;
     };
-    // The pipelines add() draws with: for SkyDraw::WhereUncovered the covered pixels' then the
-    // sky's, else the one. `depthFormat`: the scene's depth, for WhereUncovered.
+    // The pipelines add() draws with: where uncovered, the covered pixels' then the sky's, else the
+    // one. `depthFormat`: the scene's depth, for WhereUncovered.
     static std::vector<Variant> variants(VkFormat targetFormat, const TonemapSettings& settings, SkyDraw sky,
                                          VkFormat depthFormat);
 

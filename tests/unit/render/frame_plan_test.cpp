@@ -100,11 +100,20 @@ TEST(FramePlan, TheTonemapsSkyIsDepthTestedAtOneSampleWithoutTransmissiveDraws) 
     FrameFacts facts = visibilityFrame();
     facts.samples = 1;
     EXPECT_TRUE(planFrame(facts).skyWhereUncovered);
+    EXPECT_TRUE(planFrame(facts).skyOverClearImage);
     EXPECT_EQ(explainPasses(planFrame(facts), facts, false).back(),
+              "sky: composited by the tonemap where nothing was drawn (depth-tested, the image not read there: no "
+              "blended draws; no skybox pass)");
+    FrameFacts blended = facts;
+    blended.blendedDraws = true;  // they leave the depth as it was, not the image: it is read
+    EXPECT_TRUE(planFrame(blended).skyWhereUncovered);
+    EXPECT_FALSE(planFrame(blended).skyOverClearImage);
+    EXPECT_EQ(explainPasses(planFrame(blended), blended, false).back(),
               "sky: composited by the tonemap where nothing was drawn (depth-tested; no skybox pass)");
     FrameFacts msaa = facts;
     msaa.samples = 4;  // the depth is multisampled, the image the tonemap reads is not
     EXPECT_FALSE(planFrame(msaa).skyWhereUncovered);
+    EXPECT_FALSE(planFrame(msaa).skyOverClearImage);
     EXPECT_EQ(explainPasses(planFrame(msaa), msaa, false).back(), "sky: composited under the image by the tonemap (no skybox pass)");
     FrameFacts blind = facts;
     blind.transmissiveDraws = blind.transmissionBackgroundDisabled = true;  // they write depth and may be seen through
