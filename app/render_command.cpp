@@ -180,6 +180,7 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
     scene::Scene& scene = Access::impl(held).scene;
     r.extensions = scene.report.extensionsUsed;
     r.imageDecodeMs = scene.report.textureDecoding.milliseconds;
+    r.imageDecodeWaitMs = scene.report.textureDecoding.waitMilliseconds;
     r.decompressionMs = scene.report.decompression.milliseconds;
     for (const std::string& warning : scene.report.warnings) log::warn(scene.source + ": " + warning);
     for (const std::string& note : scene.report.notes) log::info(scene.source + ": " + note);
@@ -265,7 +266,7 @@ void renderScene(Run& run, candela::Scene& held, SceneReport& r, Progress& progr
     }
     r.geometryMs = scene.report.geometry.milliseconds;  // with the levels of detail, if they were built
     r.lodMs = scene.report.geometry.lodMilliseconds - lodBefore;
-    r.parseMs = std::max(0.0, r.loadMs - r.imageDecodeMs - r.decompressionMs - (r.geometryMs - r.lodMs));
+    r.parseMs = std::max(0.0, r.loadMs - r.imageDecodeWaitMs - r.decompressionMs - (r.geometryMs - r.lodMs));
     const vk::Context::PipelineCreation pipelines = run.session.context().pipelineCreation();
     r.pipelines = pipelines.count - pipelinesBefore.count;
     r.pipelineMs = pipelines.milliseconds - pipelinesBefore.milliseconds;

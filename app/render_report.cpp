@@ -35,6 +35,7 @@ Json sceneJson(const SceneReport& s) {
     out["loadMs"] = ms(s.loadMs);
     out["loadWaitMs"] = ms(s.loadWaitMs);
     out["imageDecodeMs"] = ms(s.imageDecodeMs);
+    out["imageDecodeWaitMs"] = ms(s.imageDecodeWaitMs);
     out["decompressionMs"] = ms(s.decompressionMs);
     out["geometryMs"] = ms(s.geometryMs);
     out["parseMs"] = ms(s.parseMs);
@@ -114,7 +115,8 @@ double sum(const std::vector<double>& values) {
 
 std::string sceneTimeLine(const SceneReport& s) {
     return "time to image, " + s.input.name + ": parse " + millis(s.parseMs) + ", texture decode " + millis(s.imageDecodeMs) +
-           ", Draco/meshopt " + millis(s.decompressionMs) + ", geometry " + millis(s.geometryMs - s.lodMs) +
+           " (the rest of the load waited " + millis(s.imageDecodeWaitMs) + " for it), Draco/meshopt " +
+           millis(s.decompressionMs) + ", geometry " + millis(s.geometryMs - s.lodMs) +
            " (waited for the load " + millis(s.loadWaitMs) + "), levels of detail " + millis(s.lodMs) + ", upload " +
            millis(s.uploadMs) + ", " + std::to_string(s.frameMs.size()) + (s.frameMs.size() == 1 ? " frame " : " frames ") +
            millis(sum(s.frameMs)) + " (of it read-back " + millis(sum(s.readbackMs)) + "; " + std::to_string(s.pipelines) +

@@ -25,7 +25,8 @@ struct SceneReport {
     std::string error;  // the one-line message of a failed scene
     int exitCode = 0;   // what a run of this scene alone would have exited with
     double loadMs = 0.0;    // reading and decoding the file (on the loading thread), of which:
-    double imageDecodeMs = 0.0;     // decoding the images (PNG, JPEG, WebP, KTX2)
+    double imageDecodeMs = 0.0;     // decoding the images (PNG, JPEG, WebP, KTX2): its wall time,
+    double imageDecodeWaitMs = 0.0; //   of which the rest of the load waited this (it ran beside the meshes)
     double decompressionMs = 0.0;   // Draco and meshopt geometry
     double geometryMs = 0.0;        // preparing the geometry (optimized orders, levels of detail)
     double loadWaitMs = 0.0;  // how long rendering waited for the load; the rest overlapped the device's start or the previous scene

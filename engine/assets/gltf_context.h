@@ -45,6 +45,17 @@ struct LoadContext {
     // Writes the tallied facts as warnings and notes. Call once, when the load is complete.
     void finish() const;
 
+    // Lines taken out of the lists (takeSince) to be recorded again after others (restore).
+    struct Lines {
+        std::vector<std::string> warnings, notes;
+    };
+    // Takes out the warnings recorded after the first `warningsAt` and the notes after the first
+    // `notesAt` (as recorded: printable, each once, the cap's "further … suppressed" line included).
+    Lines takeSince(size_t warningsAt, size_t notesAt) const;
+    // Records `lines` (from takeSince) again after what was recorded since: each kept once, within
+    // the cap, as if recorded now.
+    void restore(const Lines& lines) const;
+
     struct Count {
         Severity severity = Severity::Warning;
         Fact fact{};

@@ -18,6 +18,7 @@
 #include <exception>
 #include <limits>
 #include <memory>
+#include <system_error>
 
 namespace candela::assets::gltf {
 namespace {
@@ -223,42 +224,111 @@ DecodedImage& ImageTable::decoded(int index) {
     return keep(index, std::move(image), decodedBytes);
 }
 
-void ImageTable::decodeAll(const std::set<std::pair<int, bool>>& uses) {
-    // Each image once, the largest files first; their encoded bytes and declared sizes found here
-    // (bufferViews range-checked, limits applied) before any decoding starts.
-    struct Job {
-        int index;
-        std::string what;
-        std::span<const uint8_t> bytes;
-        uint64_t declaredBytes;
-    };
-    std::vector<Job> jobs;
-    for (const auto& [index, srgb] : uses) {
-        if (index < 0 || size_t(index) >= mModel.images.size() || mDecoded.count(index) ||
-            (!jobs.empty() && jobs.back().index == index))
-            continue;
-        const std::string what = label("image", index, mModel.images[size_t(index)].name);
-        jobs.push_back({index, what, encoded(index, what), declaredBytes(index)});
-    }
-    std::vector<size_t> order(jobs.size());
+ImageTable::~ImageTable() {
+    if (mDecode && mDecode->thread.joinable()) mDecode->thread.join();
+}
+
+void ImageTable::run(Decode& decode, const LoadContext& ctx, uint32_t maxDimension) {
+    std::vector<size_t> order(decode.jobs.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return jobs[a].bytes.size() > jobs[b].bytes.size(); });
-    std::vector<DecodedImage> images(jobs.size());
-    std::vector<std::exception_ptr> errors(jobs.size());
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return decode.jobs[a].bytes.size() > decode.jobs[b].bytes.size(); });
     const auto start = std::chrono::steady_clock::now();
     parallelFor(order.size(), [&](size_t k) {
-        const Job& job = jobs[order[k]];
+        const Job& job = decode.jobs[order[k]];
         try {
-            images[order[k]] = decodeImage(mCtx, job.bytes, job.what, mOptions.maxImageDimension);
-            images[order[k]].encodedBytes = job.bytes.size();
+            decode.images[order[k]] = decodeImage(ctx, job.bytes, job.what, maxDimension);
+            decode.images[order[k]].encodedBytes = job.bytes.size();
         } catch (...) {
-            errors[order[k]] = std::current_exception();
+            decode.errors[order[k]] = std::current_exception();
         }
     });
-    mScene.report.textureDecoding.milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    for (size_t j = 0; j < jobs.size(); ++j) {
-        if (errors[j]) std::rethrow_exception(errors[j]);
-        keep(jobs[j].index, std::move(images[j]), jobs[j].declaredBytes);
+    decode.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+const ImageTable::Job* ImageTable::pendingJob(int index) const {
+    if (!mDecode) return nullptr;
+    for (const Job& job : mDecode->jobs)
+        if (job.index == index) return &job;
+    return nullptr;
+}
+
+void ImageTable::decodeAll(const std::set<std::pair<int, bool>>& uses, bool inBackground) {
+    finishDecodes();  // one decode at a time
+    // Each image once; their encoded bytes and declared sizes found here (bufferViews range-checked,
+    // limits applied) before any decoding starts.
+    auto decode = std::make_unique<Decode>();
+    for (const auto& [index, srgb] : uses) {
+        if (index < 0 || size_t(index) >= mModel.images.size() || mDecoded.count(index) ||
+            (!decode->jobs.empty() && decode->jobs.back().index == index))
+            continue;
+        const std::string what = label("image", index, mModel.images[size_t(index)].name);
+        decode->jobs.push_back({index, what, encoded(index, what), declaredBytes(index)});
+    }
+    if (decode->jobs.empty()) return;
+    decode->images.resize(decode->jobs.size());
+    decode->errors.resize(decode->jobs.size());
+    decode->warningsAt = mCtx.warnings->size();
+    decode->notesAt = mCtx.notes ? mCtx.notes->size() : 0;
+    const bool background = inBackground && std::none_of(decode->jobs.begin(), decode->jobs.end(),
+                                                         [](const Job& job) { return textures::isKtx2(job.bytes); });
+    mDecode = std::move(decode);
+    if (background) {
+        try {
+            mDecode->thread = std::thread([decode = mDecode.get(), ctx = &mCtx, maxDimension = mOptions.maxImageDimension] {
+                run(*decode, *ctx, maxDimension);
+            });
+            return;
+        } catch (const std::system_error&) {
+            // No thread to be had: decoded here.
+        }
+    }
+    run(*mDecode, mCtx, mOptions.maxImageDimension);
+    finishDecodes();
+}
+
+void ImageTable::finishDecodes() {
+    if (!mDecode) return;
+    const std::unique_ptr<Decode> decode = std::move(mDecode);
+    scene::SceneLoadReport::TextureDecoding& report = mScene.report.textureDecoding;
+    if (decode->thread.joinable()) {
+        const auto start = std::chrono::steady_clock::now();
+        decode->thread.join();
+        report.waitMilliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    } else {
+        report.waitMilliseconds += decode->milliseconds;
+    }
+    report.milliseconds += decode->milliseconds;
+    // The lines recorded while it ran go after its own, as if it had ended where it began.
+    const LoadContext::Lines later = mCtx.takeSince(decode->warningsAt, decode->notesAt);
+    for (size_t j = 0; j < decode->jobs.size(); ++j) {
+        if (decode->errors[j]) std::rethrow_exception(decode->errors[j]);
+        keep(decode->jobs[j].index, std::move(decode->images[j]), decode->jobs[j].declaredBytes);
+    }
+    mCtx.restore(later);
+    // The entries resolve() made meanwhile: the first of an image takes its pixels, a second use
+    // (the other encoding) copies them.
+    std::map<int, int> first;  // glTF image → its first entry
+    for (const auto& [entry, index] : decode->entries) {
+        scene::Image& image = mScene.images[size_t(entry)];
+        if (const auto it = first.find(index); it != first.end()) {
+            const scene::Image& from = mScene.images[size_t(it->second)];
+            image.width = from.width;
+            image.height = from.height;
+            image.rgba8 = from.rgba8;
+            image.mips = from.mips;
+            image.format = from.format;
+            image.encodedBytes = from.encodedBytes;
+            continue;
+        }
+        first[index] = entry;
+        DecodedImage& pixels = mDecoded.at(index);
+        image.width = pixels.width;
+        image.height = pixels.height;
+        image.format = pixels.format;
+        image.encodedBytes = pixels.encodedBytes;
+        image.rgba8 = std::move(pixels.rgba8);
+        image.mips = std::move(pixels.mips);
     }
 }
 
@@ -270,8 +340,11 @@ int ImageTable::resolve(int index, bool srgb) {
                  : (!source.uri.empty() && source.uri.rfind("data:", 0) != 0) ? source.uri
                                                                                : "image " + std::to_string(index);
     image.srgb = srgb;
-    // The pixels move into the first entry; a second use (other encoding) copies from there.
-    if (auto other = mEntries.find({index, !srgb}); other != mEntries.end()) {
+    // The pixels move into the first entry; a second use (other encoding) copies from there. An
+    // image still decoding gets them when finishDecodes takes it in.
+    if (pendingJob(index)) {
+        mDecode->entries.emplace_back(int(mScene.images.size()), index);
+    } else if (auto other = mEntries.find({index, !srgb}); other != mEntries.end()) {
         const scene::Image& first = mScene.images[size_t(other->second)];
         image.width = first.width;
         image.height = first.height;

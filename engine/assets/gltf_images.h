@@ -8,11 +8,14 @@
 #include "scene/scene.h"
 
 #include <cstdint>
+#include <exception>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <span>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -70,6 +73,10 @@ class ImageTable {
 public:
     ImageTable(const LoadContext& ctx, const tinygltf::Model& model, std::map<int, std::vector<uint8_t>> uriImages,
                const LoadOptions& options, scene::Scene& scene);
+    // Waits for a decode decodeAll left running (its result dropped: the load failed).
+    ~ImageTable();
+    ImageTable(const ImageTable&) = delete;
+    ImageTable& operator=(const ImageTable&) = delete;
 
     // Fails, before anything is decoded, when the entries `uses` ((glTF image, srgb) pairs) would
     // exceed the options' per-image or per-scene decoded size. Indices out of range are skipped
@@ -79,8 +86,18 @@ public:
     // Decodes every image of `uses` ((glTF image, srgb) pairs; indices out of range skipped) at
     // once, on every core (parallelFor, the largest files first), for resolve to take; their notes
     // and warnings go to the log in image order, and the first failure in image order is thrown.
-    // The report's decode time is the wall time this takes.
-    void decodeAll(const std::set<std::pair<int, bool>>& uses);
+    // The report's decode time is the decode's wall time. With `inBackground` (unless an image is
+    // KTX2, whose transfer function resolve() compares), the decode runs on a thread of its own
+    // while the caller goes on: resolve() makes the images' entries at once and finishDecodes()
+    // gives them their pixels. Otherwise it returns when done.
+    void decodeAll(const std::set<std::pair<int, bool>>& uses, bool inBackground);
+
+    // Waits for the decode decodeAll left running and takes its images in as if it had ended
+    // where decodeAll was called: their notes and warnings go before every line recorded since
+    // (dropping a later copy of one, as LoadContext keeps a line once), the first failure in image
+    // order is thrown, and the entries resolve() made meanwhile get their pixels. The report's
+    // decodeWaitMilliseconds adds the wait. Nothing when none is running.
+    void finishDecodes();
 
     // The Scene::images index for glTF image `image` used with the given encoding; decodes it on first
     // use unless decodeAll did (bufferView images are range-checked here). Precondition: 0 <= image
@@ -88,6 +105,29 @@ public:
     int resolve(int image, bool srgb);
 
 private:
+    // One image a decodeAll decodes.
+    struct Job {
+        int index;
+        std::string what;
+        std::span<const uint8_t> bytes;
+        uint64_t declaredBytes;
+    };
+    // A decode decodeAll started: its jobs in image order, their results, and what resolve()
+    // made of them meanwhile.
+    struct Decode {
+        std::vector<Job> jobs;
+        std::vector<DecodedImage> images;
+        std::vector<std::exception_ptr> errors;
+        double milliseconds = 0.0;                 // its wall time
+        size_t warningsAt = 0, notesAt = 0;        // where its lines go
+        std::vector<std::pair<int, int>> entries;  // (Scene::images index, glTF image) awaiting pixels
+        std::thread thread;                        // joinable while it runs in the background
+    };
+    // Runs `decode`'s jobs on every core, the largest files first.
+    static void run(Decode& decode, const LoadContext& ctx, uint32_t maxDimension);
+    // The job of glTF image `image` in the decode running, or null.
+    const Job* pendingJob(int image) const;
+
     DecodedImage& decoded(int image);
     // Takes a decoded image into the table: its notes and warnings to the log, its sizes to the report.
     DecodedImage& keep(int image, DecodedImage decoded, uint64_t declaredBytes);
@@ -103,6 +143,7 @@ private:
     const LoadOptions& mOptions;
     scene::Scene& mScene;
     std::map<std::pair<int, bool>, int> mEntries;  // (glTF image, srgb) → Scene::images index
+    std::unique_ptr<Decode> mDecode;                // a decode not yet taken in (finishDecodes)
 };
 
 }  // namespace candela::assets::gltf

@@ -49,9 +49,36 @@ void record(std::vector<std::string>& list, const std::string& text, const char*
     else if (list.size() == kMaxWarnings) list.push_back(std::string("further ") + kind + " suppressed");
 }
 
+// Records again a line `record` recorded once (already printable); its "further … suppressed" line
+// stays once.
+void recordAgain(std::vector<std::string>& list, const std::string& line, const char* kind) {
+    const std::string suppressed = std::string("further ") + kind + " suppressed";
+    if (std::find(list.begin(), list.end(), line) != list.end()) return;
+    if (line == suppressed || list.size() < kMaxWarnings) list.push_back(line);
+    else if (list.size() == kMaxWarnings) list.push_back(suppressed);
+}
+
 }  // namespace
 
 void LoadContext::warn(const std::string& text) const { record(*warnings, text, "warnings"); }
+
+LoadContext::Lines LoadContext::takeSince(size_t warningsAt, size_t notesAt) const {
+    Lines out;
+    const auto take = [](std::vector<std::string>* list, size_t at, std::vector<std::string>& to) {
+        if (!list || at >= list->size()) return;
+        to.assign(std::make_move_iterator(list->begin() + std::ptrdiff_t(at)), std::make_move_iterator(list->end()));
+        list->resize(at);
+    };
+    take(warnings, warningsAt, out.warnings);
+    take(notes, notesAt, out.notes);
+    return out;
+}
+
+void LoadContext::restore(const Lines& lines) const {
+    for (const std::string& line : lines.warnings) recordAgain(*warnings, line, "warnings");
+    if (notes)
+        for (const std::string& line : lines.notes) recordAgain(*notes, line, "notes");
+}
 
 void LoadContext::note(const std::string& text) const {
     if (notes) record(*notes, text, "notes");
@@ -138,13 +165,22 @@ void loadInto(const gltf::LoadContext& ctx, std::span<const uint8_t> bytes, cons
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     gltf::loadSamplers(ctx, model, scene);
     gltf::ImageTable images(ctx, model, std::move(parsed.uriImages), options, scene);
-    gltf::loadMaterials(ctx, model, images, scene);
-    gltf::noteAnimatedMaterials(model, scene);  // before loadNodes: tangent frames follow animated layers
-    gltf::loadVariantNames(ctx, model, scene);
-    gltf::loadNodes(ctx, model, options.sceneIndex, scene);
-    gltf::loadAnimations(ctx, model, scene);
-    if (options.prepareGeometry)
-        geometry::prepareGeometry(scene, options.deferLevelsOfDetail ? geometry::LevelsOfDetail::Defer : geometry::LevelsOfDetail::Build);
+    // The images decode on other threads while the materials, nodes, animations and geometry load
+    // (ImageTable::decodeAll, started by loadMaterials). A decode's failure is the load's error
+    // before any found after the decode began, as when the decode came first.
+    try {
+        gltf::loadMaterials(ctx, model, images, scene);
+        gltf::noteAnimatedMaterials(model, scene);  // before loadNodes: tangent frames follow animated layers
+        gltf::loadVariantNames(ctx, model, scene);
+        gltf::loadNodes(ctx, model, options.sceneIndex, scene);
+        gltf::loadAnimations(ctx, model, scene);
+        if (options.prepareGeometry)
+            geometry::prepareGeometry(scene, options.deferLevelsOfDetail ? geometry::LevelsOfDetail::Defer : geometry::LevelsOfDetail::Build);
+    } catch (...) {
+        images.finishDecodes();  // throws the decode's failure, if it had one
+        throw;
+    }
+    images.finishDecodes();
 }
 
 }  // namespace

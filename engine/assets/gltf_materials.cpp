@@ -349,6 +349,7 @@ void loadSpecularGlossiness(const LoadContext& ctx, const tinygltf::Model& model
     out.specularColor = extensionTexture(ctx, model, images, e, "specularGlossinessTexture", true, what);
     out.metallicRoughness = out.specularColor;
     if (out.specularColor.present()) {
+        images.finishDecodes();  // the pixels are needed now
         out.metallicRoughness.image = roughnessFromGlossiness(scene, out.specularColor.image, glossiness, derived);
         out.roughnessFactor = 1.0f;
     } else {
@@ -391,7 +392,7 @@ void loadSamplers(const LoadContext& ctx, const tinygltf::Model& model, scene::S
 void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images, scene::Scene& scene) {
     const std::set<std::pair<int, bool>> uses = imageUses(model);
     images.checkDecodedSize(uses);
-    images.decodeAll(uses);
+    images.decodeAll(uses, true);  // beside the rest of the load, until loadInto takes it in
     std::map<std::pair<int, float>, int> derivedImages;  // roughness images made from glossiness
     for (size_t i = 0; i < model.materials.size(); ++i) {
         const tinygltf::Material& m = model.materials[i];

@@ -409,8 +409,11 @@ struct SceneLoadReport : LoadReport {
     // What decoding the images the materials use cost (PNG, JPEG, WebP, KTX2): wall time, the
     // files decoded by format name ("PNG", "WebP", "KTX2 ETC1S", "KTX2 UASTC+zstd", …), their
     // encoded bytes and the RGBA8 bytes they became (every level a KTX2 file stores included).
+    // `milliseconds` is the decode's wall time; `waitMilliseconds` the share of it the load waited
+    // for (the rest ran beside the meshes and the geometry: glTF files of PNG, JPEG and WebP).
     struct TextureDecoding {
         double milliseconds = 0.0;
+        double waitMilliseconds = 0.0;
         std::map<std::string, size_t> formats;
         uint64_t encodedBytes = 0;
         uint64_t decodedBytes = 0;

@@ -3,6 +3,7 @@
 // tests write themselves (WebP) or commit (KTX2, tests/data/ktx2, made by the reference encoder).
 #include "gltf_test_util.h"
 #include "webp_test_writer.h"
+#include "assets/gltf_context.h"
 
 #include <random>
 
@@ -117,6 +118,76 @@ TEST(GltfTextureFormatsTest, WebpAboveTheSizeLimitFailsBeforeDecoding) {
     options.maxImageDimension = 8;
     const std::string error = loadError(webpTriangle(encodeWebp(16, 4, noise(16, 4, 4), true)).writeGlb(dir.path()), options);
     EXPECT_NE(error.find("image 0: WebP: image size 16x4 exceeds the limit of 8 pixels per side"), std::string::npos) << error;
+}
+
+// The images decode beside the rest of the load (ImageTable::decodeAll); the result is as if they
+// had decoded first. A broken image is the load's error even when a later step fails meanwhile.
+TEST(GltfTextureFormatsTest, ABrokenImageIsTheErrorBeforeOneFoundWhileItDecoded) {
+    test::TempDir dir;
+    Bytes webp = encodeWebp(16, 16, noise(16, 16, 3), true);
+    webp.resize(webp.size() / 2);  // truncated bitstream
+    GltfBuilder b = webpTriangle(webp);
+    b.doc["nodes"][0]["mesh"] = 7;  // loadNodes fails on it
+    const std::string error = loadError(b.writeGlb(dir.path()));
+    EXPECT_NE(error.find("image 0: WebP: "), std::string::npos) << error;
+    // The same file with a good image fails on the node.
+    GltfBuilder good = webpTriangle(encodeWebp(16, 16, noise(16, 16, 3), true));
+    good.doc["nodes"][0]["mesh"] = 7;
+    const std::string nodeError = loadError(good.writeGlb(dir.path()));
+    EXPECT_EQ(nodeError.find("image 0"), std::string::npos) << nodeError;
+    EXPECT_NE(nodeError.find("node 0"), std::string::npos) << nodeError;
+}
+
+// ... and the decoders' notes come before the lines the materials recorded while they ran.
+TEST(GltfTextureFormatsTest, DecodeNotesComeBeforeTheMaterialsNotes) {
+    test::TempDir dir;
+    GltfBuilder b = webpTriangle(encodeAnimatedWebp(8, 4, {noise(8, 4, 2), solid(8, 4, {10, 20, 30, 255})}));
+    b.doc["materials"][0]["extensions"]["KHR_materials_dispersion"] = {{"dispersion", 1.0}};
+    b.doc["extensionsUsed"].push_back("KHR_materials_dispersion");
+    const scene::Scene scene = loadGltf(b.writeGlb(dir.path()));
+    const std::vector<std::string>& notes = scene.report.notes;
+    const auto at = [&](const std::string& fragment) {
+        for (size_t i = 0; i < notes.size(); ++i)
+            if (notes[i].find(fragment) != std::string::npos) return i;
+        return notes.size();
+    };
+    ASSERT_LT(at("animated WebP: drawn from its first frame"), notes.size()) << testing::PrintToString(notes);
+    ASSERT_LT(at("dispersion 1 has no effect"), notes.size()) << testing::PrintToString(notes);
+    EXPECT_LT(at("animated WebP: drawn from its first frame"), at("dispersion 1 has no effect")) << testing::PrintToString(notes);
+    EXPECT_EQ(scene.images.size(), 1u);
+    EXPECT_EQ(scene.images[0].width, 8u);
+    EXPECT_EQ(scene.images[0].rgba8.size(), 8u * 4 * 4);
+}
+
+// How the decode's lines go before those recorded while it ran: each line once, where it was first
+// recorded in that order, within the cap (64 lines, then "further warnings suppressed").
+TEST(GltfLoadContext, LinesTakenOutAreRecordedAgainAfterThoseThatGoBeforeThem) {
+    std::vector<std::string> warnings, notes;
+    const gltf::LoadContext ctx{"f.gltf", &warnings, &notes};
+    ctx.warn("a");
+    ctx.note("n");
+    ctx.warn("b");  // recorded while the decode ran...
+    ctx.warn("d");
+    const gltf::LoadContext::Lines later = ctx.takeSince(1, 1);
+    EXPECT_EQ(warnings, std::vector<std::string>{"a"});
+    EXPECT_EQ(notes, std::vector<std::string>{"n"});
+    ctx.warn("d");  // ... the decode's own lines ...
+    ctx.warn("c");
+    ctx.restore(later);  // ... then the rest, without a second "d"
+    EXPECT_EQ(warnings, (std::vector<std::string>{"a", "d", "c", "b"}));
+    // At the cap: what no longer fits gives way to the suppression line, once.
+    std::vector<std::string> full;
+    const gltf::LoadContext capped{"f.gltf", &full, nullptr};
+    for (int i = 0; i < 70; ++i) capped.warn("late " + std::to_string(i));
+    const gltf::LoadContext::Lines taken = capped.takeSince(0, 0);
+    ASSERT_EQ(taken.warnings.size(), 65u);
+    EXPECT_EQ(taken.warnings.back(), "further warnings suppressed");
+    capped.warn("decoded");
+    capped.restore(taken);
+    ASSERT_EQ(full.size(), 65u);
+    EXPECT_EQ(full.front(), "decoded");
+    EXPECT_EQ(full[63], "late 62");
+    EXPECT_EQ(full.back(), "further warnings suppressed");
 }
 
 TEST(GltfTextureFormatsTest, AnUnusedBrokenWebpIsNeverRead) {
