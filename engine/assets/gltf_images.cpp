@@ -224,6 +224,30 @@ DecodedImage& ImageTable::decoded(int index) {
     return keep(index, std::move(image), decodedBytes);
 }
 
+namespace {
+
+// An image's pixels (and what describes them) moved from its decode into its first entry.
+void takePixels(DecodedImage& from, scene::Image& to) {
+    to.width = from.width;
+    to.height = from.height;
+    to.format = from.format;
+    to.encodedBytes = from.encodedBytes;
+    to.rgba8 = std::move(from.rgba8);
+    to.mips = std::move(from.mips);
+}
+
+// The same image's pixels copied into its entry of the other encoding.
+void copyPixels(const scene::Image& from, scene::Image& to) {
+    to.width = from.width;
+    to.height = from.height;
+    to.format = from.format;
+    to.encodedBytes = from.encodedBytes;
+    to.rgba8 = from.rgba8;
+    to.mips = from.mips;
+}
+
+}  // namespace
+
 ImageTable::~ImageTable() {
     if (mDecode && mDecode->thread.joinable()) mDecode->thread.join();
 }
@@ -312,23 +336,11 @@ void ImageTable::finishDecodes() {
     for (const auto& [entry, index] : decode->entries) {
         scene::Image& image = mScene.images[size_t(entry)];
         if (const auto it = first.find(index); it != first.end()) {
-            const scene::Image& from = mScene.images[size_t(it->second)];
-            image.width = from.width;
-            image.height = from.height;
-            image.rgba8 = from.rgba8;
-            image.mips = from.mips;
-            image.format = from.format;
-            image.encodedBytes = from.encodedBytes;
-            continue;
+            copyPixels(mScene.images[size_t(it->second)], image);
+        } else {
+            first[index] = entry;
+            takePixels(mDecoded.at(index), image);
         }
-        first[index] = entry;
-        DecodedImage& pixels = mDecoded.at(index);
-        image.width = pixels.width;
-        image.height = pixels.height;
-        image.format = pixels.format;
-        image.encodedBytes = pixels.encodedBytes;
-        image.rgba8 = std::move(pixels.rgba8);
-        image.mips = std::move(pixels.mips);
     }
 }
 
@@ -345,21 +357,9 @@ int ImageTable::resolve(int index, bool srgb) {
     if (pendingJob(index)) {
         mDecode->entries.emplace_back(int(mScene.images.size()), index);
     } else if (auto other = mEntries.find({index, !srgb}); other != mEntries.end()) {
-        const scene::Image& first = mScene.images[size_t(other->second)];
-        image.width = first.width;
-        image.height = first.height;
-        image.rgba8 = first.rgba8;
-        image.mips = first.mips;
-        image.format = first.format;
-        image.encodedBytes = first.encodedBytes;
+        copyPixels(mScene.images[size_t(other->second)], image);
     } else {
-        DecodedImage& pixels = decoded(index);
-        image.width = pixels.width;
-        image.height = pixels.height;
-        image.format = pixels.format;
-        image.encodedBytes = pixels.encodedBytes;
-        image.rgba8 = std::move(pixels.rgba8);
-        image.mips = std::move(pixels.mips);
+        takePixels(decoded(index), image);
     }
     if (const auto it = mDecoded.find(index); it != mDecoded.end() && it->second.fileSrgb && *it->second.fileSrgb != srgb)
         mCtx.warn(label("image", index, source.name) + ": the KTX2 file's transfer function is " +
