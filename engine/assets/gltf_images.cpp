@@ -277,7 +277,7 @@ const ImageTable::Job* ImageTable::pendingJob(int index) const {
     return nullptr;
 }
 
-void ImageTable::decodeAll(const std::set<std::pair<int, bool>>& uses, bool inBackground) {
+void ImageTable::decodeAll(const std::set<std::pair<int, bool>>& uses) {
     finishDecodes();  // one decode at a time
     // Each image once; their encoded bytes and declared sizes found here (bufferViews range-checked,
     // limits applied) before any decoding starts.
@@ -294,7 +294,7 @@ void ImageTable::decodeAll(const std::set<std::pair<int, bool>>& uses, bool inBa
     decode->errors.resize(decode->jobs.size());
     decode->warningsAt = mCtx.warnings->size();
     decode->notesAt = mCtx.notes ? mCtx.notes->size() : 0;
-    const bool background = inBackground && std::none_of(decode->jobs.begin(), decode->jobs.end(),
+    const bool background = mOptions.decodeBesideTheLoad && std::none_of(decode->jobs.begin(), decode->jobs.end(),
                                                          [](const Job& job) { return textures::isKtx2(job.bytes); });
     mDecode = std::move(decode);
     if (background) {

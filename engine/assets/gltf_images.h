@@ -86,11 +86,11 @@ public:
     // Decodes every image of `uses` ((glTF image, srgb) pairs; indices out of range skipped) at
     // once, on every core (parallelFor, the largest files first), for resolve to take; their notes
     // and warnings go to the log in image order, and the first failure in image order is thrown.
-    // The report's decode time is the decode's wall time. With `inBackground` (unless an image is
-    // KTX2, whose transfer function resolve() compares), the decode runs on a thread of its own
-    // while the caller goes on: resolve() makes the images' entries at once and finishDecodes()
-    // gives them their pixels. Otherwise it returns when done.
-    void decodeAll(const std::set<std::pair<int, bool>>& uses, bool inBackground);
+    // The report's decode time is the decode's wall time. With LoadOptions::decodeBesideTheLoad
+    // (unless an image is KTX2, whose transfer function resolve() compares), the decode runs on a
+    // thread of its own while the caller goes on: resolve() makes the images' entries at once and
+    // finishDecodes() gives them their pixels. Otherwise it returns when done.
+    void decodeAll(const std::set<std::pair<int, bool>>& uses);
 
     // Waits for the decode decodeAll left running and takes its images in as if it had ended
     // where decodeAll was called: their notes and warnings go before every line recorded since

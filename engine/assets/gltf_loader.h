@@ -36,6 +36,10 @@ struct LoadOptions {
     // Leave the levels of detail for later (geometry::buildLevelsOfDetail, when a cost model says
     // they pay: the API decides from the frames it is asked for; Scene::report.geometry.lodDeferred).
     bool deferLevelsOfDetail = false;
+    // Decode the images (PNG, JPEG, WebP) on their own thread beside the rest of the load (the
+    // materials, nodes, animations and geometry); false: before it, with nothing else on the cores
+    // (the decode term of a render's floor: candela_decode_floor_bench). The scene is the same.
+    bool decodeBesideTheLoad = true;
     // Where external URIs are read from; unset: the files in the model's folder.
     UriReader uriReader;
 };

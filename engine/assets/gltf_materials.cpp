@@ -392,7 +392,7 @@ void loadSamplers(const LoadContext& ctx, const tinygltf::Model& model, scene::S
 void loadMaterials(const LoadContext& ctx, const tinygltf::Model& model, ImageTable& images, scene::Scene& scene) {
     const std::set<std::pair<int, bool>> uses = imageUses(model);
     images.checkDecodedSize(uses);
-    images.decodeAll(uses, true);  // beside the rest of the load, until loadInto takes it in
+    images.decodeAll(uses);  // beside the rest of the load, until loadInto takes it in
     std::map<std::pair<int, float>, int> derivedImages;  // roughness images made from glossiness
     for (size_t i = 0; i < model.materials.size(); ++i) {
         const tinygltf::Material& m = model.materials[i];

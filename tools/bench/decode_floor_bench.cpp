@@ -1,8 +1,9 @@
 // The texture-decode term of a render's floor (docs/measurements.md, "The floor of one render"):
 // loads a glTF file with the glTF loader alone, in this fresh process, with no device starting and
-// nothing else on the cores, and prints the wall time of decoding its textures (every image the
-// materials use, on every core, by the code a render runs) and of the whole load. Run it several
-// times: each run is one fresh process, as a render is.
+// nothing else on the cores (the decode before the rest of the load: LoadOptions::decodeBesideTheLoad
+// false), and prints the wall time of decoding its textures (every image the materials use, on every
+// core, by the code a render runs) and of the whole load. Run it several times: each run is one
+// fresh process, as a render is.
 //
 //   build/release/tools/bench/candela_decode_floor_bench FILE.glb
 
@@ -21,7 +22,7 @@ int main(int argc, char** argv) {
     }
     try {
         const auto start = std::chrono::steady_clock::now();
-        const scene::Scene scene = assets::loadGltf(argv[1]);
+        const scene::Scene scene = assets::loadGltf(argv[1], {.decodeBesideTheLoad = false});
         const double loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         const auto& decoding = scene.report.textureDecoding;
         size_t files = 0;
