@@ -45,11 +45,12 @@ void FrameBuilder::prepareTonemapAhead(const RenderSettings& settings, const pas
     facts.environment = settings.environment != nullptr;  // the maps may be given it only later
     // The ranges the scene's materials fill when every draw is drawn.
     const bool transmissionRange = planDrawList(facts).transmissionRange;
-    for (const passes::MaterialKey& key : keys ? keys->keys : std::vector<passes::MaterialKey>{}) {
-        const passes::DrawRange range = passes::rangeOf(key, transmissionRange);
-        facts.transmissiveDraws = facts.transmissiveDraws || range == passes::DrawRange::Transmissive;
-        facts.blendedDraws = facts.blendedDraws || range == passes::DrawRange::Blended;
-    }
+    if (keys)
+        for (const passes::MaterialKey& key : keys->keys) {
+            const passes::DrawRange range = passes::rangeOf(key, transmissionRange);
+            facts.transmissiveDraws = facts.transmissiveDraws || range == passes::DrawRange::Transmissive;
+            facts.blendedDraws = facts.blendedDraws || range == passes::DrawRange::Blended;
+        }
     const FramePlan plan = planFrame(facts);
     using SkyDraw = passes::TonemapPass::SkyDraw;
     const SkyDraw sky = plan.sky != SkyPlacement::Tonemap ? SkyDraw::None
