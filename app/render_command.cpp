@@ -474,7 +474,7 @@ int runRender(const RenderOptions& options) {
         deviceError = std::current_exception();
     }
     const double deviceMs = msSince(deviceStart);
-    // One scene: the pipelines its first frame takes whatever the scene compile on the workers
+    // One scene: the pipelines its first frame takes, whatever its scene, compile on the workers
     // while the file still loads (on an idle core, at low priority). They, and what the maps
     // build, count as the scene's.
     std::optional<vk::Context::PipelineCreation> pipelinesBeforeScene;
@@ -485,8 +485,9 @@ int runRender(const RenderOptions& options) {
             RenderSettings settings = candela::renderSettings(apiOptionsOf(options, format), none, session.environment());
             applyRenderFlags(options, settings);
             session.renderer().prepareFirstFrame(settings);
-        } catch (const UserError&) {
-            // Settings the frame will refuse, with this error, once it has its scene.
+        } catch (const std::exception&) {
+            // Settings the frame will refuse, with this error, once it has its scene (or a
+            // failure the frame meets again): an optimization only.
         }
     }
     // One scene: its environment's maps are read while the file still loads (the upload asks

@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstddef>
 #include <cstring>
 #include <fstream>
 #include <limits>
@@ -112,12 +113,14 @@ uint32_t sanitizeEnvironment(Environment& env) {
 
 uint64_t contentHash(const Environment& env) {
     WordHasher hasher;
-    const auto words = [&hasher](const uint32_t* values, size_t count) {
+    // 32-bit values (unsigned or float) as little-endian words.
+    const auto words = [&hasher](const void* values, size_t count) {
         if constexpr (std::endian::native == std::endian::little) {
-            hasher.update(values, count * sizeof(uint32_t));
+            hasher.update(values, count * 4);
         } else {
             for (size_t i = 0; i < count; ++i) {
-                const uint32_t v = values[i];
+                uint32_t v;
+                std::memcpy(&v, static_cast<const std::byte*>(values) + 4 * i, 4);
                 const std::array<uint8_t, 4> le = {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
                 hasher.update(le.data(), le.size());
             }
@@ -125,8 +128,8 @@ uint64_t contentHash(const Environment& env) {
     };
     const std::array<uint32_t, 2> size = {env.width, env.height};
     words(size.data(), size.size());
-    static_assert(sizeof(float) == sizeof(uint32_t));
-    words(reinterpret_cast<const uint32_t*>(env.rgb.data()), env.rgb.size());
+    static_assert(sizeof(float) == 4);
+    words(env.rgb.data(), env.rgb.size());
     return hasher.value();
 }
 

@@ -220,7 +220,9 @@ DecodedImage& ImageTable::decoded(int index) {
     const std::span<const uint8_t> bytes = encoded(index, what);
     DecodedImage image = decodeImage(mCtx, bytes, what, mOptions.maxImageDimension);
     image.encodedBytes = bytes.size();
-    mScene.report.textureDecoding.milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    mScene.report.textureDecoding.milliseconds += ms;
+    mScene.report.textureDecoding.waitMilliseconds += ms;  // on the loading thread
     return keep(index, std::move(image), decodedBytes);
 }
 
@@ -253,20 +255,24 @@ ImageTable::~ImageTable() {
 }
 
 void ImageTable::run(Decode& decode, const LoadContext& ctx, uint32_t maxDimension) {
-    std::vector<size_t> order(decode.jobs.size());
-    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](size_t a, size_t b) { return decode.jobs[a].bytes.size() > decode.jobs[b].bytes.size(); });
     const auto start = std::chrono::steady_clock::now();
-    parallelFor(order.size(), [&](size_t k) {
-        const Job& job = decode.jobs[order[k]];
-        try {
-            decode.images[order[k]] = decodeImage(ctx, job.bytes, job.what, maxDimension);
-            decode.images[order[k]].encodedBytes = job.bytes.size();
-        } catch (...) {
-            decode.errors[order[k]] = std::current_exception();
-        }
-    });
+    try {
+        std::vector<size_t> order(decode.jobs.size());
+        for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::stable_sort(order.begin(), order.end(),
+                         [&](size_t a, size_t b) { return decode.jobs[a].bytes.size() > decode.jobs[b].bytes.size(); });
+        parallelFor(order.size(), [&](size_t k) {
+            const Job& job = decode.jobs[order[k]];
+            try {
+                decode.images[order[k]] = decodeImage(ctx, job.bytes, job.what, maxDimension);
+                decode.images[order[k]].encodedBytes = job.bytes.size();
+            } catch (...) {
+                decode.errors[order[k]] = std::current_exception();
+            }
+        });
+    } catch (...) {
+        decode.failure = std::current_exception();
+    }
     decode.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -323,6 +329,7 @@ void ImageTable::finishDecodes() {
         report.waitMilliseconds += decode->milliseconds;
     }
     report.milliseconds += decode->milliseconds;
+    if (decode->failure) std::rethrow_exception(decode->failure);
     // The lines recorded while it ran go after its own, as if it had ended where it began.
     const LoadContext::Lines later = mCtx.takeSince(decode->warningsAt, decode->notesAt);
     for (size_t j = 0; j < decode->jobs.size(); ++j) {

@@ -118,12 +118,14 @@ private:
         std::vector<Job> jobs;
         std::vector<DecodedImage> images;
         std::vector<std::exception_ptr> errors;
+        std::exception_ptr failure;                // of the decode itself (no thread, no memory)
         double milliseconds = 0.0;                 // its wall time
         size_t warningsAt = 0, notesAt = 0;        // where its lines go
         std::vector<std::pair<int, int>> entries;  // (Scene::images index, glTF image) awaiting pixels
         std::thread thread;                        // joinable while it runs in the background
     };
-    // Runs `decode`'s jobs on every core, the largest files first.
+    // Runs `decode`'s jobs on every core, the largest files first; throws nothing (what fails is
+    // kept in `decode`).
     static void run(Decode& decode, const LoadContext& ctx, uint32_t maxDimension);
     // The job of glTF image `image` in the decode running, or null.
     const Job* pendingJob(int image) const;

@@ -57,7 +57,8 @@ void FrameBuilder::prepareTonemapAhead(const RenderSettings& settings, const pas
                         : plan.skyOverClearImage          ? SkyDraw::WhereUncoveredImageClear
                         : plan.skyWhereUncovered          ? SkyDraw::WhereUncovered
                                                           : SkyDraw::Everywhere;
-    mTonemap.prepare(mForward.workers(), kSceneLdrFormat, tonemapOf(settings, plan), sky);
+    // The target of the frames so far (the viewer's presentable image), else a capture's.
+    mTonemap.prepare(mForward.workers(), mTonemap.lastTargetFormat().value_or(kSceneLdrFormat), tonemapOf(settings, plan), sky);
 }
 
 std::optional<passes::FrameVariant> FrameBuilder::firstFrameVariant(const RenderSettings& settings) const {
@@ -244,6 +245,7 @@ void FrameBuilder::buildScene(Frame& frame, const RenderSettings& settings, std:
     // The facts the plan decides from: the settings, the device, the pose's deformed draws and
     // the draw list's ranges.
     FrameFacts facts = this->facts(settings, msaa.samples);
+    facts.farPlaneAtInfinity = scene::farPlaneAtInfinity(view.projection);
     passes::SkinMorphFrame work;
     if (pose && !scene.deformations.empty()) {
         work = passes::skinMorphFrame(mScene.gpuScene(), *pose);

@@ -67,7 +67,7 @@ FramePlan planFrame(const FrameFacts& facts) {
         const bool inTonemap = plan.transmission != TransmissionPlan::SeesOpaqueImage && !facts.floatOutput && !facts.skyboxDisabled;
         plan.sky = inTonemap ? SkyPlacement::Tonemap : SkyPlacement::SkyboxPass;
         plan.skyWhereUncovered = inTonemap && facts.samples == 1 && plan.transmission == TransmissionPlan::None;
-        plan.skyOverClearImage = plan.skyWhereUncovered && !facts.blendedDraws;
+        plan.skyOverClearImage = plan.skyWhereUncovered && !facts.blendedDraws && facts.farPlaneAtInfinity;
     } else if (facts.environment) {
         plan.leftOut.push_back({PlannedPart::Skybox, debugView ? LeftOutReason::DebugView : LeftOutReason::NotTheBackground});
     }

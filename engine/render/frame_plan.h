@@ -39,6 +39,7 @@ struct FrameFacts {
     bool blendedDraws = false;
     bool pointAndLineDraws = false;  // the draw list has opaque or masked point or line draws
     bool shadingListsFit = true;    // the visibility path's shading lists fit a tile's mask
+    bool farPlaneAtInfinity = true; // the view's (scene::farPlaneAtInfinity): else geometry at its far plane has the cleared depth 0
     // ---- The device's.
     options::ShadingPath devicePath = options::ShadingPath::Forward;  // what `auto` takes
     std::string devicePathReason;   // why (the device's words)
@@ -131,9 +132,10 @@ struct FramePlan {
     // and may let the sky through). Depth-tested, so the rasterizer leaves covered pixels out of
     // the sky's program, which a branch in the shader does not do on llvmpipe.
     bool skyWhereUncovered = false;
-    // And no blended draws either, which leave the depth as it was but not the image: where the
-    // depth is the far plane's the image then holds its clear value, which the sky's draw does not
-    // read (TonemapPass::Sky::imageClear).
+    // And no blended draws either, which leave the depth as it was but not the image, and a far
+    // plane at infinity, whose depth no geometry reaches: where the depth is the far plane's the
+    // image then holds its clear value, which the sky's draw does not read
+    // (TonemapPass::Sky::imageClear).
     bool skyOverClearImage = false;
     bool sheenLut = false;       // the layered program reads the sheen LUT (computed once, then imported)
     bool msaaExpand = false;     // visibility path at MSAA: forward draws after it need a multisampled image

@@ -33,6 +33,10 @@ glm::mat4 perspectiveReverseZ(float fovY, float aspect, float znear);
 glm::mat4 perspectiveReverseZ(float fovY, float aspect, float znear, float zfar);
 // Orthographic, reverse-Z (depth 1 at znear, 0 at zfar). xmag, ymag: half extents.
 glm::mat4 orthographicReverseZ(float xmag, float ymag, float znear, float zfar);
+// Whether a reverse-Z `projection` puts the far plane at infinity (perspectiveReverseZ without zfar,
+// and the intrinsics' projection): depth then never reaches the cleared 0 on geometry, which a
+// finite far plane's depth does at the plane.
+inline bool farPlaneAtInfinity(const glm::mat4& projection) { return projection[2][2] == 0.0f; }
 
 // A pinhole camera's intrinsics as fractions of the image: focal lengths fx, cx in widths and fy,
 // cy in heights. In pixels (multiplied by width, height) they are OpenCV's K = [fx 0 cx; 0 fy cy;

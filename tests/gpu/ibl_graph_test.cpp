@@ -13,6 +13,8 @@
 #include "ibl/ibl_cache_file.h"
 #include "render/renderer.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -150,6 +152,37 @@ TEST_F(IblGraphTest, SkyboxToggleLeavesOutOnlyTheSkybox) {
     EXPECT_TRUE(has(ranPasses(renderer), "ibl_prefilter"));
     EXPECT_EQ(renderer.lastPlan()->sky, SkyPlacement::None);
     EXPECT_TRUE(renderer.lastPlan()->leavesOut(PlannedPart::Skybox));
+}
+
+TEST_F(IblGraphTest, TheSkyReadsTheImageUnderItOnlyWhereADrawCanHaveWrittenIt) {
+    // The grid from the default camera: where the depth is still the far plane's, the image holds
+    // its clear value, and the sky's draw does not read it.
+    Renderer renderer(context());
+    RenderSettings s = settings(&mSky);
+    renderer.capture(s);
+    ASSERT_TRUE(renderer.lastPlan());
+    EXPECT_TRUE(renderer.lastPlan()->skyWhereUncovered);
+    EXPECT_TRUE(renderer.lastPlan()->skyOverClearImage);
+    // Through a glTF camera with a far plane, geometry on it keeps the cleared depth 0.
+    scene::Scene framed = mScene;
+    scene::Camera camera;
+    camera.zfar = 100.0f;
+    camera.world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 12.0f));
+    framed.cameras.push_back(camera);
+    RenderSettings finite = settings(&mSky);
+    finite.scene = &framed;
+    finite.camera.gltfCamera = 0;
+    renderer.capture(finite);
+    EXPECT_TRUE(renderer.lastPlan()->skyWhereUncovered);
+    EXPECT_FALSE(renderer.lastPlan()->skyOverClearImage);
+    // A blended draw leaves the depth as it was, not the image.
+    scene::Scene blended = mScene;
+    blended.materials[0].alphaMode = scene::AlphaMode::Blend;
+    RenderSettings withBlend = settings(&mSky);
+    withBlend.scene = &blended;
+    renderer.capture(withBlend);
+    EXPECT_TRUE(renderer.lastPlan()->skyWhereUncovered);
+    EXPECT_FALSE(renderer.lastPlan()->skyOverClearImage);
 }
 
 TEST_F(IblGraphTest, CacheReplacesThePrecomputeOfALaterRunAndACorruptFileIsRecomputed) {

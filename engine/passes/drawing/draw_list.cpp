@@ -27,7 +27,6 @@ scene::LodLevel levelOf(const scene::Scene& scene, const scene::Draw& draw, cons
     return chain.levels[geometry::selectLod(chain, scale, geometry::pixelsPerUnit(view, height, draw.bounds), maxPixels)];
 }
 
-
 bool sortedBackToFront(DrawRange range) { return range == DrawRange::Transmissive || range == DrawRange::Blended; }
 
 std::string formatPixels(float pixels) {

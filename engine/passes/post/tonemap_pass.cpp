@@ -30,13 +30,13 @@ std::vector<TonemapPass::Variant> TonemapPass::variants(VkFormat format, const T
                                       {CANDELA_SPEC_TONEMAP_DITHER, settings.dither},
                                       {CANDELA_SPEC_TONEMAP_BACKGROUND, settings.background.has_value()}});
     // Program: 0 tonemap.frag, 1 tonemap_sky.frag; depth: 0 none, 1 covered pixels (stored depth
-    // above the far plane's 0), 2 the sky's (stored depth 0). The key's last two entries select
-    // them (they are no constants of the shaders).
+    // above the far plane's 0), 2 the sky's (stored depth 0). The key's last three entries select
+    // them and the depth's format (they are no constants of the shaders).
     const auto variant = [&](uint32_t program, uint32_t depth, bool imageClear = false) {
         std::vector<uint32_t> values = specialization;
         shader::setSpecialization(values, CANDELA_SPEC_TONEMAP_IMAGE_CLEAR, imageClear);
         std::vector<uint32_t> key = values;
-        key.insert(key.end(), {program, depth});
+        key.insert(key.end(), {program, depth, uint32_t(depth ? depthFormat : VK_FORMAT_UNDEFINED)});
         return Variant{.key = {format, std::move(key)},
                        .fragment = program ? "tonemap_sky.frag" : "tonemap.frag",
                        .desc = {.colorFormats = {format},
@@ -86,6 +86,7 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
             d.hdr = builder.sample(hdr);
             d.target = builder.write(target, Usage::ColorAttachment, WriteMode::Discard);
             const VkFormat format = builder.desc(target).format;
+            mLastTargetFormat = format;
             if (sky && sky->depth.valid()) d.depth = builder.read(sky->depth, Usage::DepthRead);
             const SkyDraw skyDraw = !sky                ? SkyDraw::None
                                     : !d.depth.valid()  ? SkyDraw::Everywhere

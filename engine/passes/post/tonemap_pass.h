@@ -62,6 +62,9 @@ public:
     void prepare(WorkerPool& workers, VkFormat targetFormat, const TonemapSettings& settings, SkyDraw sky);
     // Waits for the builds prepare() queued (benchmarks).
     void finishBuilds() { mPipelines.finish(); }
+    // The format of the target the last add() wrote (a presentable image's, or a capture's); none
+    // before the first.
+    std::optional<VkFormat> lastTargetFormat() const { return mLastTargetFormat; }
 
 private:
     // A pipeline of the pass: its key in mPipelines and how it is built.
@@ -80,6 +83,7 @@ private:
     vk::PipelineCache<std::pair<VkFormat, std::vector<uint32_t>>> mPipelines;
     vk::Sampler mSampler;     // nearest (the HDR image)
     vk::Sampler mTrilinear;   // the specular cube
+    std::optional<VkFormat> mLastTargetFormat;
 };
 
 }  // namespace candela::passes

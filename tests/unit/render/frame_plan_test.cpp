@@ -104,6 +104,10 @@ TEST(FramePlan, TheTonemapsSkyIsDepthTestedAtOneSampleWithoutTransmissiveDraws) 
     EXPECT_EQ(explainPasses(planFrame(facts), facts, false).back(),
               "sky: composited by the tonemap where nothing was drawn (depth-tested, the image not read there: no "
               "blended draws; no skybox pass)");
+    FrameFacts finite = facts;
+    finite.farPlaneAtInfinity = false;  // geometry at the far plane has its depth 0: the image is read
+    EXPECT_TRUE(planFrame(finite).skyWhereUncovered);
+    EXPECT_FALSE(planFrame(finite).skyOverClearImage);
     FrameFacts blended = facts;
     blended.blendedDraws = true;  // they leave the depth as it was, not the image: it is read
     EXPECT_TRUE(planFrame(blended).skyWhereUncovered);

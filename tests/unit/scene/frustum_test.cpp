@@ -74,5 +74,11 @@ TEST(Frustum, FollowsTheCamerasTransform) {
     EXPECT_FALSE(f.intersects(box({15, 0, 0}, 1)));
 }
 
+TEST(Projection, OnlyTheInfiniteFarPlaneIsAtInfinity) {
+    EXPECT_TRUE(farPlaneAtInfinity(perspectiveReverseZ(glm::radians(60.0f), 1.5f, 0.1f)));
+    EXPECT_FALSE(farPlaneAtInfinity(perspectiveReverseZ(glm::radians(60.0f), 1.5f, 0.1f, 100.0f)));
+    EXPECT_FALSE(farPlaneAtInfinity(orthographicReverseZ(2.0f, 1.0f, 0.1f, 50.0f)));
+}
+
 }  // namespace
 }  // namespace candela::scene
