@@ -41,22 +41,16 @@ void LoadContext::fail(const std::string& problem) const { throw UserError(path 
 
 namespace {
 
-// `kind`: "warnings" or "notes", for the line that ends a full list.
-void record(std::vector<std::string>& list, const std::string& text, const char* kind) {
-    const std::string message = printable(text);
+// Appends `message` unless the list has it, up to the cap; the cap's line, once, then ends the
+// list. `kind`: "warnings" or "notes", for that line. Also records again a line taken out
+// (LoadContext::restore): the cap's line among them is kept once, as a line of its own.
+void keepOnce(std::vector<std::string>& list, const std::string& message, const char* kind) {
     if (std::find(list.begin(), list.end(), message) != list.end()) return;
     if (list.size() < kMaxWarnings) list.push_back(message);
     else if (list.size() == kMaxWarnings) list.push_back(std::string("further ") + kind + " suppressed");
 }
 
-// Records again a line `record` recorded once (already printable); its "further … suppressed" line
-// stays once.
-void recordAgain(std::vector<std::string>& list, const std::string& line, const char* kind) {
-    const std::string suppressed = std::string("further ") + kind + " suppressed";
-    if (std::find(list.begin(), list.end(), line) != list.end()) return;
-    if (line == suppressed || list.size() < kMaxWarnings) list.push_back(line);
-    else if (list.size() == kMaxWarnings) list.push_back(suppressed);
-}
+void record(std::vector<std::string>& list, const std::string& text, const char* kind) { keepOnce(list, printable(text), kind); }
 
 }  // namespace
 
@@ -75,9 +69,9 @@ LoadContext::Lines LoadContext::takeSince(size_t warningsAt, size_t notesAt) con
 }
 
 void LoadContext::restore(const Lines& lines) const {
-    for (const std::string& line : lines.warnings) recordAgain(*warnings, line, "warnings");
+    for (const std::string& line : lines.warnings) keepOnce(*warnings, line, "warnings");
     if (notes)
-        for (const std::string& line : lines.notes) recordAgain(*notes, line, "notes");
+        for (const std::string& line : lines.notes) keepOnce(*notes, line, "notes");
 }
 
 void LoadContext::note(const std::string& text) const {

@@ -25,6 +25,14 @@ constexpr VkFormat kLdrFormat = VK_FORMAT_R8G8B8A8_SRGB;
 // A scene frame's 8-bit target when it draws no presentable image: UNORM, the tonemap shader
 // encodes sRGB itself, which also lets it dither.
 constexpr VkFormat kSceneLdrFormat = VK_FORMAT_R8G8B8A8_UNORM;
+
+// How the tonemap draws the sky the plan places there.
+passes::TonemapPass::SkyDraw skyDrawOf(const FramePlan& plan) {
+    using SkyDraw = passes::TonemapPass::SkyDraw;
+    if (plan.sky != SkyPlacement::Tonemap) return SkyDraw::None;
+    if (plan.skyOverClearImage) return SkyDraw::WhereUncoveredImageClear;
+    return plan.skyWhereUncovered ? SkyDraw::WhereUncovered : SkyDraw::Everywhere;
+}
 }  // namespace
 
 FrameBuilder::FrameBuilder(vk::Context& context, SceneState& scene, shader::ParameterRegistry& parameters)
@@ -52,13 +60,8 @@ void FrameBuilder::prepareTonemapAhead(const RenderSettings& settings, const pas
             facts.blendedDraws = facts.blendedDraws || range == passes::DrawRange::Blended;
         }
     const FramePlan plan = planFrame(facts);
-    using SkyDraw = passes::TonemapPass::SkyDraw;
-    const SkyDraw sky = plan.sky != SkyPlacement::Tonemap ? SkyDraw::None
-                        : plan.skyOverClearImage          ? SkyDraw::WhereUncoveredImageClear
-                        : plan.skyWhereUncovered          ? SkyDraw::WhereUncovered
-                                                          : SkyDraw::Everywhere;
     // The target of the frames so far (the viewer's presentable image), else a capture's.
-    mTonemap.prepare(mForward.workers(), mTonemap.lastTargetFormat().value_or(kSceneLdrFormat), tonemapOf(settings, plan), sky);
+    mTonemap.prepare(mForward.workers(), mTonemap.lastTargetFormat().value_or(kSceneLdrFormat), tonemapOf(settings, plan), skyDrawOf(plan));
 }
 
 std::optional<passes::FrameVariant> FrameBuilder::firstFrameVariant(const RenderSettings& settings) const {
@@ -390,8 +393,8 @@ void FrameBuilder::addTonemap(Frame& frame, const RenderSettings& settings, cons
             .specular = ibl->maps.specular,
             .params = {.rays = passes::skyRays(view.viewProjection, view.eye, ibl->params.rotation, settings.width, settings.height),
                        .intensityLod = glm::vec4(ibl->params.intensity, ibl->params.skyboxLod, 0.0f, 0.0f)},
-            .depth = plan.skyWhereUncovered ? depth : TextureId{},
-            .imageClear = plan.skyOverClearImage};
+            .draw = skyDrawOf(plan),
+            .depth = depth};
     const passes::TonemapSettings tonemap = tonemapOf(settings, plan);
     frame.solidBackground = tonemap.background.has_value();
     frame.ldr = mTonemap.add(graph, frame.hdr, ldr, tonemap, &mParameters, sky ? &*sky : nullptr);

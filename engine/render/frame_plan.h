@@ -135,7 +135,7 @@ struct FramePlan {
     // And no blended draws either, which leave the depth as it was but not the image, and a far
     // plane at infinity, whose depth no geometry reaches: where the depth is the far plane's the
     // image then holds its clear value, which the sky's draw does not read
-    // (TonemapPass::Sky::imageClear).
+    // (TonemapPass::SkyDraw::WhereUncoveredImageClear).
     bool skyOverClearImage = false;
     bool sheenLut = false;       // the layered program reads the sheen LUT (computed once, then imported)
     bool msaaExpand = false;     // visibility path at MSAA: forward draws after it need a multisampled image

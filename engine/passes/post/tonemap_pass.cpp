@@ -6,6 +6,7 @@
 #include "shared/tonemap.h"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace candela::passes {
 
@@ -87,11 +88,11 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
             d.target = builder.write(target, Usage::ColorAttachment, WriteMode::Discard);
             const VkFormat format = builder.desc(target).format;
             mLastTargetFormat = format;
-            if (sky && sky->depth.valid()) d.depth = builder.read(sky->depth, Usage::DepthRead);
-            const SkyDraw skyDraw = !sky                ? SkyDraw::None
-                                    : !d.depth.valid()  ? SkyDraw::Everywhere
-                                    : sky->imageClear   ? SkyDraw::WhereUncoveredImageClear
-                                                        : SkyDraw::WhereUncovered;
+            const SkyDraw skyDraw = sky ? sky->draw : SkyDraw::None;
+            if (skyDraw == SkyDraw::WhereUncovered || skyDraw == SkyDraw::WhereUncoveredImageClear) {
+                if (!sky->depth.valid()) throw std::logic_error("TonemapPass: a sky where uncovered without the depth");
+                d.depth = builder.read(sky->depth, Usage::DepthRead);
+            }
             std::vector<const vk::Pipeline*> pipelines;
             for (const Variant& v : variants(format, settings, skyDraw, d.depth.valid() ? builder.desc(d.depth).format : VK_FORMAT_UNDEFINED))
                 pipelines.push_back(&mPipelines.get(mContext, v.key, [&] {

@@ -32,29 +32,30 @@ class TonemapPass {
 public:
     explicit TonemapPass(vk::Context& context);
 
+    // Where a pass draws the sky: not at all; under every pixel; or only where nothing was drawn
+    // (the scene's depth still 0, the far plane's: the pass draws twice, the covered pixels
+    // without the sky and the others with it, each depth-tested, so that the rasterizer leaves the
+    // sky's program out of covered blocks, which on llvmpipe a branch would not) — there reading
+    // the image under it, or not where it holds its clear value (no blended draw, which leaves the
+    // depth as it was, and no geometry at a finite far plane: FramePlan::skyOverClearImage).
+    enum class SkyDraw : uint8_t { None, Everywhere, WhereUncovered, WhereUncoveredImageClear };
+
     // Adds the pass: samples `hdr` (RGBA16F, alpha = coverage), writes all of `target` (same size;
     // an _SRGB format is encoded by the hardware, a UNORM one by the shader). Returns its new version.
     // With `parameters`, the user's values for its push constants apply ("tonemap", "Push").
-    // With `sky`, the sky (the specular cube, shared/sky.glsl) is composited under `hdr` first.
-    // With the sky's `depth` (the scene's reverse-Z depth at the target's size, one sample), the
-    // sky is computed only where nothing was drawn (depth 0): the pass draws twice, the covered
-    // pixels without the sky and the others with it, each depth-tested, so that the rasterizer
-    // leaves the sky's program out of covered blocks (on llvmpipe a branch would not). With
-    // `imageClear` too (the frame has no blended draws, which leave the depth as it was), the sky's
-    // pixels hold `hdr`'s clear value: the sky's draw does not read it.
+    // With `sky`, the sky (the specular cube, shared/sky.glsl) is composited under `hdr` first, as
+    // its `draw` says (not None); where uncovered, `depth` is the scene's reverse-Z depth at the
+    // target's size, one sample (else unused). Throws std::logic_error for such a draw without it.
     struct Sky {
         graph::TextureId specular;
         shading::TonemapSky params;
+        SkyDraw draw = SkyDraw::Everywhere;
         graph::TextureId depth;
-        bool imageClear = false;
     };
     graph::TextureId add(graph::RenderGraph& graph, graph::TextureId hdr, graph::TextureId target,
                          const TonemapSettings& settings, shader::ParameterRegistry* parameters = nullptr,
                          const Sky* sky = nullptr);
 
-    // Where a pass draws the sky: not at all, under every pixel, or only where nothing was drawn
-    // (add() with a Sky, and the Sky's depth), there reading the image or not (Sky::imageClear).
-    enum class SkyDraw : uint8_t { None, Everywhere, WhereUncovered, WhereUncoveredImageClear };
     // Queues on `workers` the builds of the pipelines add() takes for a `target` of `targetFormat`
     // with `settings` and `sky` (the depth where uncovered: kDepthFormat), so that a first frame
     // finds them built (PipelineCache::prepare). Nothing for those built or queued already.
