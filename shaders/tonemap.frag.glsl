@@ -56,7 +56,7 @@ void main() {
 #endif
     float coverage = clamp(hdr.a, 0.0f, 1.0f);
     vec3 radiance = coverage > 0.0f ? hdr.rgb / coverage : vec3(0.0f);
-    vec3 display = applyTonemap(radiance * exp2(params.exposureEv), kOperator);
+    vec3 display = applyTonemap(radiance * params.exposureScale, kOperator);
     float alpha = coverage;
     if (kBackground) {
         display = mix(params.background.rgb, display, coverage);

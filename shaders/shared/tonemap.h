@@ -20,7 +20,8 @@ CANDELA_NAMESPACE_BEGIN
 struct TonemapParams {
     /*Color*/ vec4 background;      // rgb: linear display colour of a solid background (when composited)
     /*Range(-10, 10)*/ float exposureEv;  // exposure in stops: radiance × 2^EV
-    /*Ignore*/ float pad0, pad1, pad2;
+    /*Ignore*/ float exposureScale;       // 2^exposureEv, set by the pass (an exp2 per pixel less)
+    /*Ignore*/ float pad1, pad2;
 };
 
 // The sky tonemap_sky.frag composites under the image (shared/sky.glsl), after TonemapParams in its
@@ -97,10 +98,21 @@ CANDELA_FN vec3 applyTonemap(vec3 color, uint op) {
     return clamp(color, vec3(0.0f), vec3(1.0f));
 }
 
-// The sRGB OETF (IEC 61966-2-1), per channel, for values in [0,1].
+// The sRGB OETF (IEC 61966-2-1), per channel, for values in [0,1]. Its curved part,
+// 1.055 x^(1/2.4) − 0.055 on [0.0031308, 1], is a degree-6 polynomial in q = x^(1/4) (two square
+// roots), fitted (minimax) to within 1.7e-6 in float arithmetic, 4e-4 of an 8-bit level
+// (SrgbEncode.WithinAFewMillionthsOfTheTransferFunction): on llvmpipe a pow is a log2 and an exp2
+// polynomial per channel, a quarter of the sky's draw in the tonemap pass (shading.md).
 CANDELA_FN vec3 srgbEncode(vec3 linear) {
     vec3 lo = linear * 12.92f;
-    vec3 hi = 1.055f * pow(linear, vec3(1.0f / 2.4f)) - vec3(0.055f);
+    vec3 q = sqrt(sqrt(max(linear, vec3(0.0f))));
+    vec3 hi = vec3(0.0682079345f);
+    hi = hi * q + vec3(-0.31841585f);
+    hi = hi * q + vec3(0.657188058f);
+    hi = hi * q + vec3(-0.852957308f);
+    hi = hi * q + vec3(1.36592102f);
+    hi = hi * q + vec3(0.139604151f);
+    hi = hi * q + vec3(-0.0595466085f);
     return mix(hi, lo, vec3(lessThanEqual(linear, vec3(0.0031308f))));
 }
 

@@ -111,6 +111,7 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
                 const vk::Pipeline& reflected = d.skyPipeline ? *d.skyPipeline : *d.pipeline;
                 parameters->apply("tonemap", "Push", reflected.program().reflection().pushConstants.members, d.push);
             }
+            d.push.params.exposureScale = std::exp2(d.push.params.exposureEv);  // after the user's EV
         },
         [sampler = mSampler.get(), trilinear = mTrilinear.get()](const Data& d, PassContext& ctx) {
             ctx.beginRendering();
