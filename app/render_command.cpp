@@ -456,24 +456,18 @@ int runRender(const RenderOptions& options) {
         for (const std::string& path : {options.graphDot, options.graphJson, options.report, options.html})
             if (!path.empty()) assets::removeStaleTemporaries(path);
 
-    // The first scene is read while the environment loads and the device starts.
+    // The first scene is read while the environment loads and the device starts, each of the three
+    // on a thread of its own. Of one scene, bad input is reported rather than a device that failed
+    // to start (as when the device started only after the load); a bad environment comes first.
     std::future<LoadedScene> next;
     const auto startLoad = [&](size_t i) { next = std::async(std::launch::async, load, std::cref(scenes[i]), std::cref(options)); };
     if (!pending.empty()) startLoad(pending[0]);
-    const auto environmentStart = Clock::now();
-    Session session(options.common, options.env);
-    const double environmentMs = msSince(environmentStart);
-    // The device starts while the first file loads. Of one scene, bad input is reported rather than
-    // a device that failed to start (as when the device started only after the load).
-    const auto deviceStart = Clock::now();
-    std::exception_ptr deviceError;
-    try {
-        session.start();
-    } catch (...) {
-        if (!single || pending.empty()) throw;
-        deviceError = std::current_exception();
-    }
-    const double deviceMs = msSince(deviceStart);
+    Session session(options.common);
+    const Session::Started started = session.loadWhileStarting(options.env);
+    const double environmentMs = started.environmentMs;
+    const double deviceMs = started.deviceMs;
+    const std::exception_ptr deviceError = started.deviceError;
+    if (deviceError && (!single || pending.empty())) std::rethrow_exception(deviceError);
     // One scene: the pipelines its first frame takes, whatever its scene, compile on the workers
     // while the file still loads (on an idle core, at low priority). They, and what the maps
     // build, count as the scene's.

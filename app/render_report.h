@@ -87,8 +87,8 @@ struct RunReport {
     size_t scenesListed = 0;   // before --shard took this machine's share
     double totalMs = 0.0;      // the whole run, device creation included
     double processStartMs = -1.0;  // from the process's creation to the render command (negative: unknown)
-    double startupMs = 0.0;    // device creation and environment loading, of which:
-    double environmentMs = 0.0;  //   reading (or making) the environment
+    double startupMs = 0.0;    // device creation and environment loading, side by side (Session::loadWhileStarting):
+    double environmentMs = 0.0;  //   reading (or making) the environment, and its maps (after the device)
     double deviceMs = 0.0;       //   starting the device and the renderer
     double precomputeMs = -1.0;  // the environment's precompute (negative: none)
     uint32_t precomputes = 0;    // how often the environment was precomputed (1 with an environment)

@@ -2,6 +2,7 @@
 
 #include "session.h"
 
+#include "stopwatch.h"
 #include "api/access.h"
 #include "assets/builtin_scenes.h"
 #include "assets/gltf_loader.h"
@@ -10,6 +11,8 @@
 #include "core/log.h"
 #include "pose/animation_conflicts.h"
 #include "scene/material_variants.h"
+
+#include <future>
 
 namespace candela::app {
 
@@ -22,11 +25,40 @@ vk::ContextDesc contextDesc(const CommonOptions& common) {
             .pipelineCacheFolder = pipelineCacheFolder(common.pipelineCache)};
 }
 
-Session::Session(const CommonOptions& common, const EnvironmentChoice& env) : desc_(app::contextDesc(common)) {
+Session::Session(const CommonOptions& common) : desc_(app::contextDesc(common)) {}
+
+Session::Session(const CommonOptions& common, const EnvironmentChoice& env) : Session(common) {
     if (std::optional<assets::Environment> loaded = loadEnvironment(env)) environment_.emplace(Access::environment(std::move(*loaded)));
 }
 
 void Session::start(const RendererOptions& options) { device_.emplace(Access::device(desc_, options)); }
+
+Session::Started Session::loadWhileStarting(const EnvironmentChoice& env, const RendererOptions& options) {
+    Started started;
+    // The device's thread writes device_ and started.deviceMs/deviceError only; this one
+    // environment_ and started.environmentMs.
+    std::future<void> device = std::async(std::launch::async, [this, &options, &started] {
+        const auto start = Clock::now();
+        try {
+            this->start(options);
+        } catch (...) {
+            started.deviceError = std::current_exception();
+        }
+        started.deviceMs = msSince(start);
+    });
+    const auto environmentStart = Clock::now();
+    std::optional<assets::Environment> loaded;
+    try {
+        loaded = loadEnvironment(env);
+    } catch (...) {
+        device.wait();
+        throw;
+    }
+    if (loaded) environment_.emplace(Access::environment(std::move(*loaded)));
+    started.environmentMs = msSince(environmentStart);
+    device.wait();
+    return started;
+}
 
 void Session::prepareEnvironmentMaps(const SceneRenderOptions& options) {
     RenderSettings flags;

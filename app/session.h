@@ -16,6 +16,7 @@
 #include "scene/scene.h"
 #include "vk/context.h"
 
+#include <exception>
 #include <memory>
 #include <optional>
 #include <string>
@@ -31,6 +32,8 @@ public:
     // Loads the environment `env` asks for: a file, the procedural sky, or none; its warnings are
     // logged, and its notes with --verbose. The device does not start yet (start()).
     Session(const CommonOptions& common, const EnvironmentChoice& env);
+    // Loads no environment yet: loadWhileStarting() does, with the device's start.
+    explicit Session(const CommonOptions& common);
     Session(const Session&) = delete;  // the renderer points at the context
     Session& operator=(const Session&) = delete;
 
@@ -39,6 +42,20 @@ public:
     vk::ContextDesc& contextDesc() { return desc_; }
     // Starts the device and a renderer made with `options`. Precondition: not started.
     void start(const RendererOptions& options = {});
+    // What loadWhileStarting() took, each on its own thread.
+    struct Started {
+        double environmentMs = 0.0;      // loading (or making) the environment
+        double deviceMs = 0.0;           // starting the device and the renderer
+        std::exception_ptr deviceError;  // why the device did not start; null when it did
+    };
+    // Loads the environment `env` asks for (as the constructor that takes it does) while the device
+    // and a renderer made with `options` start on a thread of their own (start()): neither needs
+    // the other, and a device's start is the longest wait before a single render's first frame on a
+    // GPU (docs/measurements.md). An environment's error is thrown, once the device's thread has
+    // ended, whether or not the device started (as when the device started only after it); a
+    // device's failure is returned, for the caller to report when it chooses. Preconditions: made
+    // by Session(common), not started.
+    Started loadWhileStarting(const EnvironmentChoice& env, const RendererOptions& options = {});
     // Precondition: started.
     candela::Device& device() { return *device_; }
     vk::Context& context();

@@ -197,6 +197,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"BackgroundSkyboxWithoutEnvironment", "render --env none --background skybox --out {dir}/x.png", "--background skybox: there is no environment to show (--env none)"},
                       // Environments and image-based lighting.
                       BadInput{"EnvironmentMissing", "render --env {dir}/missing.hdr --out {dir}/x.png", "{dir}/missing.hdr: "},
+                      // The device starts while the environment loads: a bad environment is still
+                      // what is reported, as when the device started after it.
+                      BadInput{"EnvironmentErrorBeforeDeviceError", "render --device no-such-gpu --env {dir}/missing.hdr --out {dir}/x.png",
+                               "{dir}/missing.hdr: cannot open"},
                       BadInput{"EnvironmentTruncated", "render --env {dir}/truncated.hdr --out {dir}/x.png", "{dir}/truncated.hdr: "},
                       BadInput{"EnvironmentIntensityNegative", "render --env-intensity -1 --out {dir}/x.png", "--env-intensity: must be ≥ 0, got '-1'"},
                       BadInput{"EnvironmentRotationNotANumber", "render --env-rotation east --out {dir}/x.png", "--env-rotation: expected a number, got 'east'"},
