@@ -19,6 +19,7 @@
 #include <limits>
 #include <memory>
 #include <system_error>
+#include <utility>
 
 namespace candela::assets::gltf {
 namespace {
@@ -228,24 +229,16 @@ DecodedImage& ImageTable::decoded(int index) {
 
 namespace {
 
-// An image's pixels (and what describes them) moved from its decode into its first entry.
-void takePixels(DecodedImage& from, scene::Image& to) {
+// An image's pixels and what describes them, from its decode (moved: its first entry) or from its
+// entry of the other encoding (copied).
+template <typename From>
+void setPixels(From&& from, scene::Image& to) {
     to.width = from.width;
     to.height = from.height;
     to.format = from.format;
     to.encodedBytes = from.encodedBytes;
-    to.rgba8 = std::move(from.rgba8);
-    to.mips = std::move(from.mips);
-}
-
-// The same image's pixels copied into its entry of the other encoding.
-void copyPixels(const scene::Image& from, scene::Image& to) {
-    to.width = from.width;
-    to.height = from.height;
-    to.format = from.format;
-    to.encodedBytes = from.encodedBytes;
-    to.rgba8 = from.rgba8;
-    to.mips = from.mips;
+    to.rgba8 = std::forward<From>(from).rgba8;
+    to.mips = std::forward<From>(from).mips;
 }
 
 }  // namespace
@@ -343,10 +336,10 @@ void ImageTable::finishDecodes() {
     for (const auto& [entry, index] : decode->entries) {
         scene::Image& image = mScene.images[size_t(entry)];
         if (const auto it = first.find(index); it != first.end()) {
-            copyPixels(mScene.images[size_t(it->second)], image);
+            setPixels(mScene.images[size_t(it->second)], image);
         } else {
             first[index] = entry;
-            takePixels(mDecoded.at(index), image);
+            setPixels(std::move(mDecoded.at(index)), image);
         }
     }
 }
@@ -364,9 +357,9 @@ int ImageTable::resolve(int index, bool srgb) {
     if (pendingJob(index)) {
         mDecode->entries.emplace_back(int(mScene.images.size()), index);
     } else if (auto other = mEntries.find({index, !srgb}); other != mEntries.end()) {
-        copyPixels(mScene.images[size_t(other->second)], image);
+        setPixels(mScene.images[size_t(other->second)], image);
     } else {
-        takePixels(decoded(index), image);
+        setPixels(std::move(decoded(index)), image);
     }
     if (const auto it = mDecoded.find(index); it != mDecoded.end() && it->second.fileSrgb && *it->second.fileSrgb != srgb)
         mCtx.warn(label("image", index, source.name) + ": the KTX2 file's transfer function is " +

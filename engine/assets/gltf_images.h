@@ -96,7 +96,7 @@ public:
     // where decodeAll was called: their notes and warnings go before every line recorded since
     // (dropping a later copy of one, as LoadContext keeps a line once), the first failure in image
     // order is thrown, and the entries resolve() made meanwhile get their pixels. The report's
-    // decodeWaitMilliseconds adds the wait. Nothing when none is running.
+    // textureDecoding.waitMilliseconds adds the wait. Nothing when none is running.
     void finishDecodes();
 
     // The Scene::images index for glTF image `image` used with the given encoding; decodes it on first

@@ -55,14 +55,16 @@ std::vector<TonemapPass::Variant> TonemapPass::variants(VkFormat format, const T
     return {};
 }
 
+vk::Pipeline TonemapPass::build(vk::Context& context, const Variant& variant) {
+    return vk::Pipeline::graphics(context, "fullscreen.vert", variant.fragment, variant.desc);
+}
+
 void TonemapPass::prepare(WorkerPool& workers, VkFormat targetFormat, const TonemapSettings& settings, SkyDraw sky) {
-    for (Variant& v : variants(targetFormat, settings, sky, kDepthFormat))
-        mPipelines.prepare(
-            workers, v.key,
-            [context = &mContext, fragment = v.fragment, desc = std::move(v.desc)] {
-                return vk::Pipeline::graphics(*context, "fullscreen.vert", fragment, desc);
-            },
-            WorkerPool::Priority::Soon);
+    for (Variant& v : variants(targetFormat, settings, sky, kDepthFormat)) {
+        const auto key = v.key;
+        mPipelines.prepare(workers, key, [context = &mContext, v = std::move(v)] { return build(*context, v); },
+                           WorkerPool::Priority::Soon);
+    }
 }
 
 TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, const TonemapSettings& settings,
@@ -95,9 +97,7 @@ TextureId TonemapPass::add(RenderGraph& graph, TextureId hdr, TextureId target, 
             }
             std::vector<const vk::Pipeline*> pipelines;
             for (const Variant& v : variants(format, settings, skyDraw, d.depth.valid() ? builder.desc(d.depth).format : VK_FORMAT_UNDEFINED))
-                pipelines.push_back(&mPipelines.get(mContext, v.key, [&] {
-                    return vk::Pipeline::graphics(mContext, "fullscreen.vert", v.fragment, v.desc);
-                }));
+                pipelines.push_back(&mPipelines.get(mContext, v.key, [&] { return build(mContext, v); }));
             if (skyDraw == SkyDraw::None) d.pipeline = pipelines[0];
             else if (skyDraw == SkyDraw::Everywhere) d.skyPipeline = pipelines[0];
             else d.pipeline = pipelines[0], d.skyPipeline = pipelines[1];  // where uncovered

@@ -78,6 +78,8 @@ private:
     // one. `depthFormat`: the scene's depth, for WhereUncovered.
     static std::vector<Variant> variants(VkFormat targetFormat, const TonemapSettings& settings, SkyDraw sky,
                                          VkFormat depthFormat);
+    // The pipeline of `variant`.
+    static vk::Pipeline build(vk::Context& context, const Variant& variant);
 
     vk::Context& mContext;
     // Pipelines by target format and specialization (operator, sRGB encode, dither, background; sky).
